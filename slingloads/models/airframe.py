@@ -1,0 +1,272 @@
+"""Airframe model of the carried helicopter: lumped masses, cut stations, hardpoints.
+
+Axes (see ``docs/conventions.md``): x aft along the fuselage station (FS), y right along the
+butt line (BL), z up along the water line (WL); origin at the airframe's datum. SI inside.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from slingloads.errors import InputError
+from slingloads.units import G0
+
+
+def _ids(ids, what):
+    ids = tuple(str(i) for i in ids)
+    seen = set()
+    for i in ids:
+        if i in seen:
+            raise InputError(f"{what} ids must be unique", i)
+        seen.add(i)
+    return ids
+
+
+@dataclass(frozen=True)
+class MassItems:
+    """Lumped mass items of the airframe.
+
+    Parameters
+    ----------
+    ids : sequence of str
+        Unique item names.
+    mass : array_like, shape (n,)
+        Item masses, each > 0. [kg]
+    position : array_like, shape (n, 3)
+        Item centres of gravity (x aft, y right, z up). [m]
+    inertia : array_like, shape (n, 3, 3), optional
+        Each item's own inertia tensor about its own CG (zero for point masses). [kg m^2]
+    description : sequence of str, optional
+        Readable text per item.
+    """
+
+    ids: tuple
+    mass: np.ndarray
+    position: np.ndarray
+    inertia: np.ndarray | None = None
+    description: tuple = ()
+
+    def __post_init__(self):
+        ids = _ids(self.ids, "mass item")
+        mass = np.asarray(self.mass, dtype=float)
+        pos = np.asarray(self.position, dtype=float)
+        n = len(ids)
+        if n == 0:
+            raise InputError("an airframe needs at least one mass item")
+        if mass.shape != (n,) or pos.shape != (n, 3):
+            raise InputError("mass items need one mass and one (x, y, z) position each")
+        bad = ~np.isfinite(mass) | (mass <= 0)
+        if np.any(bad):
+            i = int(np.argmax(bad))
+            raise InputError(f"mass of item {ids[i]!r} must be > 0", mass[i].item())
+        if not np.all(np.isfinite(pos)):
+            raise InputError("mass item positions must be finite numbers")
+        inertia = np.zeros((n, 3, 3)) if self.inertia is None else np.asarray(
+            self.inertia, dtype=float)
+        if inertia.shape != (n, 3, 3) or not np.all(np.isfinite(inertia)):
+            raise InputError("own inertias must be finite 3 x 3 tensors, one per item")
+        if not np.allclose(inertia, np.swapaxes(inertia, 1, 2)):
+            raise InputError("own inertia tensors must be symmetric")
+        eig = np.linalg.eigvalsh(inertia)
+        scale = max(np.abs(eig).max(), 1.0)
+        if np.any(eig < -1e-9 * scale):
+            i = int(np.argmax(np.any(eig < -1e-9 * scale, axis=1)))
+            raise InputError(
+                f"own inertia of item {ids[i]!r} is not physical (negative principal moment)",
+                eig[i].tolist(),
+            )
+        desc = tuple(self.description) or ("",) * n
+        object.__setattr__(self, "ids", ids)
+        object.__setattr__(self, "mass", mass)
+        object.__setattr__(self, "position", pos)
+        object.__setattr__(self, "inertia", inertia)
+        object.__setattr__(self, "description", desc)
+
+    @property
+    def total_mass(self):
+        """Total mass. [kg]"""
+        return float(self.mass.sum())
+
+    @property
+    def weight(self):
+        """Total weight at standard gravity. [N]"""
+        return self.total_mass * G0
+
+    @property
+    def cg(self):
+        """Centre of gravity (x, y, z). [m]"""
+        return self.mass @ self.position / self.total_mass
+
+    @property
+    def inertia_about_cg(self):
+        """Inertia tensor about the CG, own inertias plus parallel-axis terms. [kg m^2]"""
+        d = self.position - self.cg
+        parallel = (np.einsum("n,nk,nk->n", self.mass, d, d)[:, None, None] * np.eye(3)
+                    - np.einsum("n,ni,nj->nij", self.mass, d, d))
+        return (self.inertia + parallel).sum(axis=0)
+
+    def to_frame(self):
+        """Mass items as a DataFrame (SI)."""
+        return pd.DataFrame({
+            "id": self.ids, "description": self.description, "mass [kg]": self.mass,
+            "x [m]": self.position[:, 0], "y [m]": self.position[:, 1],
+            "z [m]": self.position[:, 2],
+            "Ixx [kg m^2]": self.inertia[:, 0, 0], "Iyy [kg m^2]": self.inertia[:, 1, 1],
+            "Izz [kg m^2]": self.inertia[:, 2, 2], "Ixy [kg m^2]": self.inertia[:, 0, 1],
+            "Ixz [kg m^2]": self.inertia[:, 0, 2], "Iyz [kg m^2]": self.inertia[:, 1, 2],
+        })
+
+
+@dataclass(frozen=True)
+class Hardpoints:
+    """Where external loads enter the airframe.
+
+    Parameters
+    ----------
+    hub : array_like, shape (3,)
+        Rotor hub centre, where the carrier's cable is hooked. [m]
+    mast_feet : array_like, shape (k, 3)
+        Mast attachment points on the transmission deck. [m]
+    mast_weights : array_like, shape (k,), optional
+        Weights of the rigid-body share of the hub load among the feet (default equal). [-]
+    mast_axis : array_like, shape (3,), optional
+        Direction of the mast, from the deck towards the hub (default +z). [-]
+    chute : array_like, shape (3,), optional
+        Parachute attachment on the fin. [m]
+    """
+
+    hub: np.ndarray
+    mast_feet: np.ndarray
+    mast_weights: np.ndarray | None = None
+    mast_axis: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
+    chute: np.ndarray | None = None
+    mast_feet_ids: tuple = ()
+
+    def __post_init__(self):
+        hub = np.asarray(self.hub, dtype=float).reshape(3)
+        feet = np.asarray(self.mast_feet, dtype=float).reshape(-1, 3)
+        weights = (np.ones(len(feet)) if self.mast_weights is None
+                   else np.asarray(self.mast_weights, dtype=float))
+        if len(feet) == 0:
+            raise InputError("the mast needs at least one attachment point")
+        if weights.shape != (len(feet),) or np.any(~np.isfinite(weights) | (weights <= 0)):
+            raise InputError("mast attachment weights must be > 0, one per point",
+                             weights.tolist())
+        axis = np.asarray(self.mast_axis, dtype=float).reshape(3)
+        norm = np.linalg.norm(axis)
+        if not np.isfinite(norm) or norm == 0:
+            raise InputError("mast axis must be a non-zero vector", axis.tolist())
+        chute = None if self.chute is None else np.asarray(self.chute, dtype=float).reshape(3)
+        ids = tuple(self.mast_feet_ids) or tuple(f"mast foot {i + 1}" for i in range(len(feet)))
+        object.__setattr__(self, "hub", hub)
+        object.__setattr__(self, "mast_feet", feet)
+        object.__setattr__(self, "mast_weights", weights)
+        object.__setattr__(self, "mast_axis", axis / norm)
+        object.__setattr__(self, "chute", chute)
+        object.__setattr__(self, "mast_feet_ids", _ids(ids, "mast attachment"))
+
+
+@dataclass(frozen=True)
+class Airframe:
+    """The carried helicopter as a free-free beam of lumped masses.
+
+    Parameters
+    ----------
+    mass_items : MassItems
+    stations : array_like, shape (s,)
+        Cut stations where internal loads are reported, strictly increasing x. [m]
+    hardpoints : Hardpoints
+    reference_axis : tuple of float, optional
+        (y, z) of the loads reference axis, parallel to x; moments are taken about the point
+        of this axis at each cut. [m]
+    station_ids : sequence of str, optional
+        Names of the cut stations (default ``FS<x in m>``).
+    aero_points : array_like, shape (a,), optional
+        x of the points on the reference axis that take the fuselage aerodynamic load
+        (default: mid-points between consecutive cut stations). [m]
+    aero_weights : array_like, shape (a,), optional
+        Share weights of those points (default equal). [-]
+    name : str
+    """
+
+    mass_items: MassItems
+    stations: np.ndarray
+    hardpoints: Hardpoints
+    reference_axis: tuple = (0.0, 0.0)
+    station_ids: tuple = ()
+    aero_points: np.ndarray | None = None
+    aero_weights: np.ndarray | None = None
+    name: str = "airframe"
+
+    def __post_init__(self):
+        x = np.asarray(self.stations, dtype=float)
+        if x.ndim != 1 or x.size < 1 or not np.all(np.isfinite(x)):
+            raise InputError("cut stations must be a non-empty list of finite x values")
+        steps = np.diff(x)
+        if np.any(steps <= 0):
+            i = int(np.argmax(steps <= 0)) + 1
+            rule = ("cut stations must not repeat" if steps[i - 1] == 0
+                    else "cut stations must be sorted by increasing x")
+            raise InputError(rule, x[i].item())
+        ids = tuple(self.station_ids) or tuple(f"FS{v:.3f}" for v in x)
+        if len(ids) != x.size:
+            raise InputError("one id per cut station is needed")
+        object.__setattr__(self, "stations", x)
+        object.__setattr__(self, "station_ids", _ids(ids, "cut station"))
+        object.__setattr__(self, "reference_axis",
+                           tuple(float(v) for v in np.asarray(self.reference_axis).reshape(2)))
+        if self.aero_points is None:
+            pts = 0.5 * (x[1:] + x[:-1]) if x.size > 1 else x.copy()
+        else:
+            pts = np.asarray(self.aero_points, dtype=float).reshape(-1)
+        w = np.ones(pts.size) if self.aero_weights is None else np.asarray(
+            self.aero_weights, dtype=float).reshape(-1)
+        if w.shape != pts.shape or np.any(~np.isfinite(w) | (w <= 0)):
+            raise InputError("aerodynamic share weights must be > 0, one per point",
+                             w.tolist())
+        object.__setattr__(self, "aero_points", pts)
+        object.__setattr__(self, "aero_weights", w)
+        self._check_inside()
+
+    @property
+    def extent(self):
+        """(x_min, x_max) of the mass items: the length over which the beam exists. [m]"""
+        x = self.mass_items.position[:, 0]
+        return float(x.min()), float(x.max())
+
+    @property
+    def length(self):
+        """Length of the mass distribution along x. [m]"""
+        lo, hi = self.extent
+        return hi - lo
+
+    def _check_inside(self):
+        lo, hi = self.extent
+        reach = max(self.length, 1.0)
+        y0, z0 = self.reference_axis
+        named = [("rotor hub", self.hardpoints.hub)]
+        named += [(f, p) for f, p in zip(self.hardpoints.mast_feet_ids,
+                                         self.hardpoints.mast_feet, strict=True)]
+        if self.hardpoints.chute is not None:
+            named.append(("parachute attachment", self.hardpoints.chute))
+        named += [(f"aerodynamic point x = {p:.4g} m", np.array([p, y0, z0]))
+                  for p in self.aero_points]
+        for label, p in named:
+            if not (lo <= p[0] <= hi):
+                raise InputError(
+                    f"hardpoint {label} lies outside the airframe: x must be within the mass "
+                    f"items' range [{lo:.4g}, {hi:.4g}] m", float(p[0]))
+            if np.hypot(p[1] - y0, p[2] - z0) > reach:
+                raise InputError(
+                    f"hardpoint {label} lies outside the airframe: its distance from the "
+                    f"loads reference axis must not exceed the airframe length {reach:.4g} m",
+                    [float(v) for v in p])
+
+    def station_points(self):
+        """Points of the reference axis at the cut stations, shape (s, 3). [m]"""
+        y0, z0 = self.reference_axis
+        return np.column_stack([self.stations, np.full(self.stations.shape, y0),
+                                np.full(self.stations.shape, z0)])

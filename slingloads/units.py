@@ -1,0 +1,133 @@
+"""Units at the boundary: unit strings from workbook headers to SI, and SI to report units.
+
+Inside slingloads every quantity is SI (m, kg, s, N, rad). Units appear only where data
+enter (workbook headers such as ``x [in]``) and where they leave (reports). Unit strings are
+parsed by `pint <https://pint.readthedocs.io>`_, so any spelling pint knows is accepted
+(``in``, ``inch``, ``ft``, ``lb``, ``lbf*in``, ``slug*ft^2``, ``kt``...), and each column
+checks the dimension of its unit (a length column refuses ``kg``).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+import pint
+
+from slingloads.errors import UnitError
+
+#: Standard gravity [m/s^2] (ICAO Doc 7488/3).
+G0 = 9.80665
+#: One knot [m/s].
+KNOT = 1852.0 / 3600.0
+#: One foot [m].
+FOOT = 0.3048
+#: One inch [m].
+INCH = 0.0254
+#: One pound mass [kg].
+POUND = 0.45359237
+#: One pound force [N].
+POUND_FORCE = POUND * G0
+
+_REGISTRY = pint.UnitRegistry()
+
+#: Quantity kinds and their SI unit, as pint strings.
+SI_UNITS = {
+    "length": "m",
+    "mass": "kg",
+    "force": "N",
+    "moment": "N*m",
+    "inertia": "kg*m^2",
+    "angle": "rad",
+    "speed": "m/s",
+    "acceleration": "m/s^2",
+    "area": "m^2",
+    "density": "kg/m^3",
+    "time": "s",
+    "frequency": "rad/s",
+    "stiffness": "N/m",
+    "dimensionless": "",
+}
+
+#: Report unit systems: the unit in which each kind is written.
+REPORT_UNITS = {
+    "SI": {
+        "length": "m", "mass": "kg", "force": "N", "moment": "N*m", "inertia": "kg*m^2",
+        "angle": "deg", "speed": "m/s", "acceleration": "m/s^2", "area": "m^2",
+        "density": "kg/m^3", "time": "s", "frequency": "rad/s", "stiffness": "N/m",
+        "dimensionless": "",
+    },
+    "US": {
+        "length": "in", "mass": "lb", "force": "lbf", "moment": "lbf*in",
+        "inertia": "slug*ft^2", "angle": "deg", "speed": "kt", "acceleration": "ft/s^2",
+        "area": "ft^2", "density": "slug/ft^3", "time": "s", "frequency": "rad/s",
+        "stiffness": "lbf/in", "dimensionless": "",
+    },
+}
+
+#: How report headers spell each unit (pint strings are not pretty).
+UNIT_LABELS = {
+    "N*m": "N m", "kg*m^2": "kg m^2", "lbf*in": "lbf in", "slug*ft^2": "slug ft^2",
+    "m/s^2": "m/s^2", "ft/s^2": "ft/s^2", "slug/ft^3": "slug/ft^3", "": "-",
+}
+
+
+def unit_label(unit):
+    """Human spelling of a pint unit string, for report headers."""
+    return UNIT_LABELS.get(unit, unit)
+
+
+@lru_cache(maxsize=512)
+def si_factor(unit, kind):
+    """Factor that converts a value in ``unit`` to the SI unit of ``kind``.
+
+    Parameters
+    ----------
+    unit : str
+        Unit string as written by a user (``"in"``, ``"lbf*in"``, ``"-"`` for none).
+    kind : str
+        One of the keys of :data:`SI_UNITS`.
+
+    Returns
+    -------
+    float
+        Multiply a value in ``unit`` by this to get SI.
+
+    Raises
+    ------
+    UnitError
+        If the unit is unknown or its dimension does not fit ``kind``.
+    """
+    if kind not in SI_UNITS:
+        raise UnitError(f"unknown quantity kind; valid kinds are {sorted(SI_UNITS)}", kind)
+    text = unit.strip()
+    if text in ("", "-", "1"):
+        text = ""
+    if kind == "dimensionless" and text == "":
+        return 1.0
+    if text == "":
+        raise UnitError(f"a {kind} needs a unit, such as {SI_UNITS[kind]!r}", unit)
+    try:
+        quantity = _REGISTRY.Quantity(1.0, text)
+        return float(quantity.to(SI_UNITS[kind] or "dimensionless").magnitude)
+    except pint.errors.DimensionalityError:
+        raise UnitError(
+            f"unit is not a {kind} (expected something convertible to {SI_UNITS[kind]!r})",
+            unit,
+        ) from None
+    except (pint.errors.UndefinedUnitError, AttributeError, TypeError, ValueError,
+            AssertionError):
+        raise UnitError("unknown unit", unit) from None
+
+
+def to_si(values, unit, kind):
+    """Convert ``values`` given in ``unit`` to SI for a quantity of ``kind``.
+
+    Angles in degrees become radians; temperatures are not supported (no offset units).
+    """
+    return np.asarray(values, dtype=float) * si_factor(unit, kind)
+
+
+def from_si(values, unit, kind):
+    """Convert SI ``values`` of ``kind`` to ``unit`` (the inverse of :func:`to_si`)."""
+    return np.asarray(values, dtype=float) / si_factor(unit, kind)
