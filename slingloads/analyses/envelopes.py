@@ -1,0 +1,164 @@
+"""Envelopes of internal loads: extremes with critical and correlated loads, 2-D convex hulls
+("potato" plots), and the comparison with a previous design envelope.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+from scipy.spatial import ConvexHull, QhullError
+
+from slingloads.analyses.sfbm import COMPONENTS
+from slingloads.errors import InputError
+
+
+def component_index(name):
+    """Array index of an internal-load component name (``"Vy"`` -> 1)."""
+    try:
+        return COMPONENTS.index(name)
+    except ValueError:
+        raise InputError(f"unknown load component; valid components are {list(COMPONENTS)}",
+                         name) from None
+
+
+def envelope_table(loads, case_ids, stations, station_ids):
+    """Maximum and minimum of every component at every station, with the critical case.
+
+    Parameters
+    ----------
+    loads : ndarray, shape (c, s, 6)
+        Internal loads. [N, N m]
+    case_ids : sequence of str, length c
+    stations : ndarray, shape (s,)
+        Station x. [m]
+    station_ids : sequence of str, length s
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per station, component and bound (``max``/``min``): ``value``, the critical
+        ``case`` and the six correlated loads of that case at that station (SI).
+    """
+    case_ids = np.asarray(case_ids, dtype=object)
+    c, s, k = loads.shape
+    frames = []
+    for bound, pick in (("max", np.argmax), ("min", np.argmin)):
+        idx = pick(loads, axis=0)  # (s, 6)
+        stn = np.broadcast_to(np.arange(s)[:, None], idx.shape)
+        correlated = loads[idx, stn, :]  # (s, 6, 6)
+        frame = pd.DataFrame({
+            "station": np.repeat(np.asarray(station_ids, dtype=object), k),
+            "x [m]": np.repeat(stations, k),
+            "component": np.tile(COMPONENTS, s),
+            "bound": bound,
+            "value": loads[idx, stn, np.arange(k)[None, :]].ravel(),
+            "case": case_ids[idx.ravel()],
+        })
+        for j, name in enumerate(COMPONENTS):
+            frame[name] = correlated[:, :, j].ravel()
+        frames.append(frame)
+    out = pd.concat(frames, ignore_index=True)
+    order = {name: i for i, name in enumerate(COMPONENTS)}
+    out["_s"] = np.concatenate([np.repeat(np.arange(s), k)] * 2)
+    out["_c"] = out["component"].map(order)
+    out = out.sort_values(["_s", "_c", "bound"], ascending=[True, True, True], kind="stable")
+    return out.drop(columns=["_s", "_c"]).reset_index(drop=True)
+
+
+def envelope_arrays(loads):
+    """Per-station maximum and minimum, shapes (s, 6) each. [N, N m]"""
+    return loads.max(axis=0), loads.min(axis=0)
+
+
+def convex_hull(loads, case_ids, station_index, pair):
+    """2-D envelope ("potato") of two components at one station.
+
+    Parameters
+    ----------
+    loads : ndarray, shape (c, s, 6)
+    case_ids : sequence of str
+    station_index : int
+    pair : tuple of str
+        Component names, e.g. ``("Vy", "Mz")``.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Hull vertices in counter-clockwise order: ``case`` and the two components. Degenerate
+        clouds (all cases on a line or a point) return the extreme cases along the line.
+    """
+    i, j = component_index(pair[0]), component_index(pair[1])
+    pts = loads[:, station_index, :][:, [i, j]]
+    case_ids = np.asarray(case_ids, dtype=object)
+    scale = np.abs(pts).max(axis=0)
+    scale[scale == 0] = 1.0
+    unique, first = np.unique(np.round(pts / scale, 12), axis=0, return_index=True)
+    try:
+        if len(unique) < 3:
+            raise QhullError("fewer than three distinct points")
+        vertices = first[ConvexHull(pts[first] / scale).vertices]
+    except QhullError:
+        centred = pts[first] / scale - (pts[first] / scale).mean(axis=0)
+        direction = np.linalg.svd(centred, full_matrices=False)[2][0]
+        t = centred @ direction
+        vertices = np.unique(first[[int(np.argmin(t)), int(np.argmax(t))]])
+    return pd.DataFrame({"case": case_ids[vertices], pair[0]: pts[vertices, 0],
+                         pair[1]: pts[vertices, 1]})
+
+
+def compare_with_previous(loads, stations, station_ids, previous):
+    """Exceedance of the new envelope over a previous design envelope.
+
+    The previous envelope is interpolated linearly in x between its own stations; a cut
+    station outside its x range is reported as not covered (never extrapolated).
+
+    Parameters
+    ----------
+    loads : ndarray, shape (c, s, 6)
+    stations : ndarray, shape (s,)
+        [m]
+    station_ids : sequence of str
+    previous : pandas.DataFrame
+        Columns ``x [m]``, ``component``, ``min``, ``max`` (SI), one row per station and
+        component, x strictly increasing within each component.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Per station and component: new and previous max/min, the exceedance ratio
+        ``max(new_max+/prev_max+, new_min-/prev_min-)`` (magnitudes of the positive and the
+        negative sides), ``exceeds`` (ratio > 1) and ``status``.
+    """
+    new_max, new_min = envelope_arrays(loads)
+    rows = []
+    for k, name in enumerate(COMPONENTS):
+        prev = previous[previous["component"] == name].sort_values("x [m]")
+        xp = prev["x [m]"].to_numpy(float)
+        covered = (stations >= xp[0]) & (stations <= xp[-1]) if len(xp) else np.zeros(
+            stations.shape, bool)
+        pmax = np.interp(stations, xp, prev["max"].to_numpy(float)) if len(xp) else np.zeros(
+            stations.shape)
+        pmin = np.interp(stations, xp, prev["min"].to_numpy(float)) if len(xp) else np.zeros(
+            stations.shape)
+        ratio = np.maximum(_ratio(np.maximum(new_max[:, k], 0), np.maximum(pmax, 0)),
+                           _ratio(np.maximum(-new_min[:, k], 0), np.maximum(-pmin, 0)))
+        status = np.where(~covered, "not covered by previous envelope",
+                          np.where(ratio > 1, "EXCEEDS previous envelope", "within"))
+        rows.append(pd.DataFrame({
+            "station": station_ids, "x [m]": stations, "component": name,
+            "new max": new_max[:, k], "new min": new_min[:, k],
+            "previous max": np.where(covered, pmax, np.nan),
+            "previous min": np.where(covered, pmin, np.nan),
+            "exceedance ratio": np.where(covered, ratio, np.nan),
+            "exceeds": covered & (ratio > 1), "status": status,
+        }))
+    out = pd.concat(rows, ignore_index=True)
+    out["_s"] = np.tile(np.arange(len(stations)), len(COMPONENTS))
+    return out.sort_values(["_s"], kind="stable").drop(columns="_s").reset_index(drop=True)
+
+
+def _ratio(new, old):
+    """new / old for magnitudes >= 0; 0/0 -> 0, x/0 -> inf."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = np.where(old > 0, new / np.where(old > 0, old, 1.0), np.where(new > 0, np.inf, 0.0))
+    return r

@@ -1,0 +1,508 @@
+"""The structural loads analysis (paper, section 6): every limit load case of the carried
+helicopter, combined and balanced by inertia relief, into shear force and bending moment.
+
+A :class:`LoadsStudy` gathers the airframe, its aerodynamics, the parachute, the flight
+condition and the load-case options; :meth:`LoadsStudy.run` returns a :class:`LoadsResult`
+whose methods give pandas DataFrames (long SFBM table, envelope with critical and correlated
+loads, convex hulls, comparison with the previous design envelope).
+
+Each case combines, in airframe axes:
+
+* a CS-29.865 hook load ``nz x weight`` at the hub along one of the cone's directions, shared
+  among the mast feet by the rigid-body weighted rule (:mod:`slingloads.models.load_sharing`);
+* the fuselage aerodynamic load at one point of the (alpha, beta) envelope, shared along the
+  loads reference axis by the same rule so that its resultant equals the tabulated one, and
+  the fin's side force at its centre of pressure;
+* optionally the parachute drag at its attachment, along the relative wind (or along +x);
+* gravity at every mass item, and the inertia relief that balances all of it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from slingloads.analyses.envelopes import compare_with_previous, convex_hull, envelope_table
+from slingloads.analyses.hook_loads import HookLoadOptions, describe_direction, hook_directions
+from slingloads.analyses.inertia_relief import (
+    gravity_forces,
+    inertia_loads,
+    rigid_body_acceleration,
+)
+from slingloads.analyses.sfbm import COMPONENTS, closure_residual, internal_loads
+from slingloads.errors import ClosureError, InputError
+from slingloads.models.aerodynamics import airflow_direction
+from slingloads.models.airframe import Airframe
+from slingloads.models.atmosphere import RHO0, isa_density
+from slingloads.models.load_sharing import rigid_share
+from slingloads.units import KNOT
+
+#: Relative tolerance of the free-free closure check (residual over the load scale).
+CLOSURE_TOLERANCE = 1e-8
+
+CHUTE_LINE_DIRECTIONS = ("relative wind", "fuselage axis")
+
+
+@dataclass(frozen=True)
+class FlightCondition:
+    """Airspeed and air density of the loads cases.
+
+    Parameters
+    ----------
+    eas : float
+        Equivalent airspeed, >= 0 (the paper: 100 KEAS). [m/s]
+    density_altitude : float
+        Density altitude in the ISA troposphere (paper: 0, 5000 ft, 10000 ft). [m]
+    """
+
+    eas: float = 100 * KNOT
+    density_altitude: float = 0.0
+
+    def __post_init__(self):
+        eas = float(self.eas)
+        if not np.isfinite(eas) or eas < 0:
+            raise InputError("equivalent airspeed must be >= 0 [m/s]", eas)
+        object.__setattr__(self, "eas", eas)
+        object.__setattr__(self, "density_altitude", float(self.density_altitude))
+        isa_density(self.density_altitude)  # validates the altitude
+
+    @property
+    def density(self):
+        """Air density at the density altitude. [kg/m^3]"""
+        return float(isa_density(self.density_altitude))
+
+    @property
+    def dynamic_pressure(self):
+        """q = 1/2 rho0 V_EAS^2. [Pa]"""
+        return 0.5 * RHO0 * self.eas**2
+
+    @property
+    def tas(self):
+        """True airspeed. [m/s]"""
+        return self.eas * np.sqrt(RHO0 / self.density)
+
+
+@dataclass(frozen=True)
+class AeroEnvelope:
+    """Points of the angle-of-attack / sideslip envelope at which aerodynamic loads are taken.
+
+    Parameters
+    ----------
+    ids : sequence of str
+    alpha, beta : array_like
+        [rad]
+    """
+
+    ids: tuple
+    alpha: np.ndarray
+    beta: np.ndarray
+
+    def __post_init__(self):
+        ids = tuple(str(i) for i in self.ids)
+        if len(set(ids)) != len(ids):
+            dup = next(i for i in ids if ids.count(i) > 1)
+            raise InputError("aerodynamic envelope point ids must be unique", dup)
+        alpha = np.asarray(self.alpha, float).reshape(-1)
+        beta = np.asarray(self.beta, float).reshape(-1)
+        if not (len(ids) == alpha.size == beta.size) or not ids:
+            raise InputError("the aerodynamic envelope needs at least one point, each with "
+                             "an id, alpha and beta")
+        object.__setattr__(self, "ids", ids)
+        object.__setattr__(self, "alpha", alpha)
+        object.__setattr__(self, "beta", beta)
+
+    @classmethod
+    def corners_and_centre(cls, alpha_range, beta_range):
+        """The four corners and the centre of a rectangular envelope. [rad]"""
+        (a0, a1), (b0, b1) = alpha_range, beta_range
+        ids = ("CENTRE", "A+B+", "A+B-", "A-B+", "A-B-")
+        return cls(ids, np.array([(a0 + a1) / 2, a1, a1, a0, a0]),
+                   np.array([(b0 + b1) / 2, b1, b0, b1, b0]))
+
+
+@dataclass(frozen=True)
+class ListedCase:
+    """A load case listed by the user rather than generated.
+
+    Parameters
+    ----------
+    id : str
+    hook : str
+        Hook direction id (``AXIAL``, ``AZ000``...) or ``NONE``.
+    aero : str
+        Aerodynamic envelope point id or ``NONE``.
+    chute : bool
+        Parachute drag on.
+    description : str
+    """
+
+    id: str
+    hook: str
+    aero: str
+    chute: bool
+    description: str = ""
+
+
+@dataclass(frozen=True)
+class LoadsStudy:
+    """Everything the loads analysis needs (SI).
+
+    Parameters
+    ----------
+    airframe : Airframe
+    flight : FlightCondition
+    hook : HookLoadOptions
+    envelope : AeroEnvelope, optional
+        Required when ``fuselage`` or ``fin`` is given.
+    fuselage : FuselageAero, optional
+    fin : Fin, optional
+    parachute : Parachute, optional
+    chute_line : str
+        ``"relative wind"`` (default) or ``"fuselage axis"``.
+    generate : bool
+        Generate the full combination matrix hook x aero point x parachute on/off.
+    listed : tuple of ListedCase
+        Cases listed by the user (added to the generated ones).
+    previous_envelope : pandas.DataFrame, optional
+        Columns ``x [m]``, ``component``, ``min``, ``max`` (SI).
+    ultimate_factor : float
+        Factor of safety (CS 29.303: 1.5).
+    name : str
+    """
+
+    airframe: Airframe
+    flight: FlightCondition = field(default_factory=FlightCondition)
+    hook: HookLoadOptions = field(default_factory=HookLoadOptions)
+    envelope: AeroEnvelope | None = None
+    fuselage: object | None = None
+    fin: object | None = None
+    parachute: object | None = None
+    chute_line: str = "relative wind"
+    generate: bool = True
+    listed: tuple = ()
+    previous_envelope: pd.DataFrame | None = None
+    ultimate_factor: float = 1.5
+    name: str = "study"
+
+    def __post_init__(self):
+        if self.chute_line not in CHUTE_LINE_DIRECTIONS:
+            raise InputError(f"parachute line direction must be one of "
+                             f"{list(CHUTE_LINE_DIRECTIONS)}", self.chute_line)
+        if (self.fuselage is not None or self.fin is not None) and self.envelope is None:
+            raise InputError("aerodynamic data are given but no angle-of-attack / sideslip "
+                             "envelope points")
+        if self.parachute is not None and self.airframe.hardpoints.chute is None:
+            raise InputError("a parachute is given but the airframe has no parachute "
+                             "attachment hardpoint")
+        uf = float(self.ultimate_factor)
+        if not np.isfinite(uf) or uf < 1:
+            raise InputError("ultimate factor must be >= 1", uf)
+        if not self.generate and not self.listed:
+            raise InputError("no load case: generation is off and none is listed")
+        if self.envelope is not None:
+            for table in (t for t in (self.fuselage,) if t is not None):
+                table.table("CD", self.envelope.alpha, self.envelope.beta)
+            if self.fin is not None:
+                self.fin.table("CY", self.envelope.beta)
+            if self.parachute is not None:
+                self.parachute.cd("CD", self._chute_alpha(self.envelope.alpha,
+                                                          self.envelope.beta))
+        if self.previous_envelope is not None:
+            _check_previous(self.previous_envelope)
+
+    def with_hook(self, **changes):
+        """A copy of the study with hook options changed (``angle=``, ``nz=``...)."""
+        from dataclasses import replace
+        return replace(self, hook=replace(self.hook, **changes))
+
+    def _chute_alpha(self, alpha, beta):
+        if self.chute_line == "relative wind":
+            return np.zeros_like(np.asarray(alpha, float))
+        return np.arccos(np.clip(np.cos(alpha) * np.cos(beta), -1.0, 1.0))
+
+    def hook_table(self):
+        """The hook-load directions (see :func:`hook_directions`)."""
+        return hook_directions(self.hook, self.airframe.hardpoints.mast_axis)
+
+    def case_matrix(self):
+        """The load-case combination matrix as a DataFrame, one row per case."""
+        hooks = self.hook_table()
+        aero_ids = list(self.envelope.ids) if self.envelope is not None else ["NONE"]
+        chute_states = [True, False] if self.parachute is not None else [False]
+        rows = []
+        if self.generate:
+            for h in hooks["hook"]:
+                for a in aero_ids:
+                    for c in chute_states:
+                        rows.append(("", h, a, c, ""))
+        rows += [(c.id, c.hook, c.aero, bool(c.chute), c.description) for c in self.listed]
+        frame = pd.DataFrame(rows, columns=["case", "hook", "aero", "chute", "description"])
+        n_gen = len(frame) - len(self.listed)
+        frame.loc[: n_gen - 1, "case"] = [f"LC{i + 1:04d}" for i in range(n_gen)]
+        self._check_listed(frame, hooks, aero_ids)
+        hook_rows = hooks.set_index("hook").reindex(frame["hook"])
+        frame["azimuth [deg]"] = hook_rows["azimuth [deg]"].to_numpy()
+        frame["inclination [deg]"] = hook_rows["inclination [deg]"].to_numpy()
+        if self.envelope is not None:
+            env = pd.DataFrame({"alpha [deg]": np.degrees(self.envelope.alpha),
+                                "beta [deg]": np.degrees(self.envelope.beta)},
+                               index=list(self.envelope.ids)).reindex(frame["aero"])
+            frame["alpha [deg]"] = env["alpha [deg]"].to_numpy()
+            frame["beta [deg]"] = env["beta [deg]"].to_numpy()
+        else:
+            frame["alpha [deg]"] = np.nan
+            frame["beta [deg]"] = np.nan
+        generated = frame["description"] == ""
+        frame.loc[generated, "description"] = [
+            _describe(r) for r in frame[generated].itertuples(index=False)]
+        return frame
+
+    def _check_listed(self, frame, hooks, aero_ids):
+        dup = frame["case"].duplicated()
+        if dup.any():
+            raise InputError("load case ids must be unique", frame["case"][dup].iloc[0])
+        valid_hooks = set(hooks["hook"]) | {"NONE"}
+        valid_aero = set(aero_ids) | {"NONE"}
+        for c in self.listed:
+            if c.hook not in valid_hooks:
+                raise InputError(f"load case {c.id!r}: unknown hook direction; valid ids are "
+                                 f"{sorted(valid_hooks)}", c.hook)
+            if c.aero not in valid_aero:
+                raise InputError(f"load case {c.id!r}: unknown aerodynamic point; valid ids "
+                                 f"are {sorted(valid_aero)}", c.aero)
+            if c.chute and self.parachute is None:
+                raise InputError(f"load case {c.id!r} asks for the parachute but none is "
+                                 "defined", c.chute)
+
+    def run(self, check_closure=True):
+        """Compute every case. Returns a :class:`LoadsResult`."""
+        cases = self.case_matrix()
+        positions, forces, moments = self.applied_loads(cases)
+        items = self.airframe.mass_items
+        n = len(items.mass)
+        accel = rigid_body_acceleration(items, positions, forces, moments)
+        f_in, m_in = inertia_loads(items, accel)
+        forces[:, :n, :] += f_in
+        moments[:, :n, :] += m_in
+        residual = closure_residual(positions, forces, moments, items.cg)
+        scale = self._load_scale(forces)
+        bad = np.abs(residual).max(axis=1) > CLOSURE_TOLERANCE * scale
+        if check_closure and np.any(bad):
+            i = int(np.argmax(bad))
+            hint = ""
+            if np.linalg.matrix_rank(items.inertia_about_cg) < 3:
+                hint = ("; the mass items have no inertia about some axis (all on one line?), "
+                        "so a moment about that axis cannot be balanced by inertia relief")
+            raise ClosureError(f"case {cases['case'].iloc[i]}: free-free residual "
+                               f"{np.abs(residual[i]).max():.3g} exceeds the tolerance "
+                               f"{CLOSURE_TOLERANCE * scale:.3g}{hint}")
+        loads = internal_loads(positions, forces, moments, self.airframe.station_points())
+        return LoadsResult(self, cases, loads, accel.linear, accel.angular,
+                           accel.load_factor, residual, scale)
+
+    def _load_scale(self, forces):
+        """Scale for the closure check: largest force times max(1 m, airframe length)."""
+        return max(np.abs(forces).max(), 1.0) * max(self.airframe.length, 1.0)
+
+    def applied_loads(self, cases):
+        """Applied loads (gravity, hook, aerodynamics, parachute) at every load point.
+
+        Returns
+        -------
+        positions : ndarray, shape (p, 3)
+            Mass items first, then mast feet, aerodynamic points, fin, parachute. [m]
+        forces, moments : ndarray, shape (c, p, 3)
+            [N], [N m]
+        """
+        af = self.airframe
+        items, hp = af.mass_items, af.hardpoints
+        y0, z0 = af.reference_axis
+        aero_pts = np.column_stack([af.aero_points, np.full(af.aero_points.size, y0),
+                                    np.full(af.aero_points.size, z0)])
+        blocks = [items.position, hp.mast_feet, aero_pts]
+        if self.fin is not None:
+            blocks.append(self.fin.centre_of_pressure[None, :])
+        if self.parachute is not None:
+            blocks.append(hp.chute[None, :])
+        positions = np.concatenate(blocks)
+        c = len(cases)
+        forces = np.zeros((c, len(positions), 3))
+        moments = np.zeros_like(forces)
+        forces[:, : len(items.mass), :] = gravity_forces(items)
+        start = len(items.mass)
+        k = len(hp.mast_feet)
+        forces[:, start:start + k], moments[:, start:start + k] = self._hook_loads(cases)
+        start += k
+        q = self.flight.dynamic_pressure
+        alpha = np.radians(cases["alpha [deg]"].to_numpy(float))
+        beta = np.radians(cases["beta [deg]"].to_numpy(float))
+        aero_on = (cases["aero"] != "NONE").to_numpy()
+        alpha_q, beta_q = np.where(aero_on, alpha, 0.0), np.where(aero_on, beta, 0.0)
+        a = aero_pts.shape[0]
+        if self.fuselage is not None and np.any(aero_on):
+            f, m = self.fuselage.loads(alpha_q, beta_q, q)
+            f, m = f * aero_on[:, None], m * aero_on[:, None]
+            forces[:, start:start + a], moments[:, start:start + a] = rigid_share(
+                aero_pts, af.aero_weights, f, m, self.fuselage.moment_reference)
+        start += a
+        if self.fin is not None:
+            forces[:, start] = self.fin.force(beta_q, q) * aero_on[:, None]
+            start += 1
+        if self.parachute is not None:
+            on = cases["chute"].to_numpy(bool)
+            # the wind direction exists even when no aero point is set: alpha = beta = 0
+            drag = self.parachute.drag(q, self._chute_alpha(alpha_q, beta_q), opening=True)
+            direction = (airflow_direction(alpha_q, beta_q) if self.chute_line == "relative wind"
+                         else np.tile([1.0, 0.0, 0.0], (c, 1)))
+            forces[:, start] = (drag * on)[:, None] * direction
+        return positions, forces, moments
+
+    def _hook_loads(self, cases):
+        hooks = self.hook_table().set_index("hook")
+        hp = self.airframe.hardpoints
+        on = (cases["hook"] != "NONE").to_numpy()
+        u = np.zeros((len(cases), 3))
+        u[on] = hooks.loc[cases["hook"][on], ["ux", "uy", "uz"]].to_numpy()
+        force = self.hook.nz * self.airframe.mass_items.weight * u
+        return rigid_share(hp.mast_feet, hp.mast_weights, force, np.zeros_like(force), hp.hub)
+
+
+def _check_previous(frame):
+    needed = {"x [m]", "component", "min", "max"}
+    if not needed <= set(frame.columns):
+        raise InputError(f"previous envelope needs columns {sorted(needed)}",
+                         sorted(frame.columns))
+    unknown = set(frame["component"]) - set(COMPONENTS)
+    if unknown:
+        raise InputError(f"previous envelope: unknown component; valid are {list(COMPONENTS)}",
+                         sorted(unknown)[0])
+    for name, group in frame.groupby("component"):
+        x = group["x [m]"].to_numpy(float)
+        if np.any(np.diff(x) <= 0):
+            raise InputError(f"previous envelope {name}: stations must be sorted by "
+                             "increasing x without repeats", x.tolist())
+        if np.any(group["min"].to_numpy(float) > group["max"].to_numpy(float)):
+            raise InputError(f"previous envelope {name}: min must not exceed max")
+
+
+def _describe(row):
+    parts = ["hook " + (describe_direction(row[5], row[6]) if row.hook != "NONE" else "off")]
+    if row.aero != "NONE":
+        parts.append(f"aero point {row.aero} (alpha {row[7]:+g} deg, beta {row[8]:+g} deg)")
+    parts.append("parachute on" if row.chute else "parachute off")
+    return "; ".join(parts)
+
+
+@dataclass(frozen=True)
+class LoadsResult:
+    """Limit internal loads of every case, with what produced them.
+
+    Attributes
+    ----------
+    study : LoadsStudy
+    cases : pandas.DataFrame
+        Case matrix (see :meth:`LoadsStudy.case_matrix`).
+    loads : ndarray, shape (c, s, 6)
+        Limit internal loads Vx, Vy, Vz [N], Mx, My, Mz [N m].
+    linear_acceleration, angular_acceleration : ndarray, shape (c, 3)
+        Inertia-relief accelerations. [m/s^2], [rad/s^2]
+    load_factor : ndarray, shape (c, 3)
+        Load factor at the CG. [-]
+    residual : ndarray, shape (c, 6)
+        Free-free closure residual (force [N], moment about the CG [N m]).
+    residual_scale : float
+        Load scale the residual is judged against. [N m]
+    """
+
+    study: LoadsStudy
+    cases: pd.DataFrame
+    loads: np.ndarray
+    linear_acceleration: np.ndarray
+    angular_acceleration: np.ndarray
+    load_factor: np.ndarray
+    residual: np.ndarray
+    residual_scale: float
+
+    @property
+    def case_ids(self):
+        return self.cases["case"].tolist()
+
+    @property
+    def stations(self):
+        return self.study.airframe.stations
+
+    @property
+    def station_ids(self):
+        return self.study.airframe.station_ids
+
+    @property
+    def ultimate(self):
+        """Ultimate internal loads = ultimate factor x limit, shape (c, s, 6)."""
+        return self.study.ultimate_factor * self.loads
+
+    def case_table(self):
+        """Case matrix with load factors, angular accelerations and closure residual."""
+        out = self.cases.copy()
+        for j, axis in enumerate("xyz"):
+            out[f"n{axis} [-]"] = self.load_factor[:, j]
+        for j, axis in enumerate("xyz"):
+            out[f"alpha_dot_{axis} [rad/s^2]"] = self.angular_acceleration[:, j]
+        out["closure force residual [N]"] = np.abs(self.residual[:, :3]).max(axis=1)
+        out["closure moment residual [N m]"] = np.abs(self.residual[:, 3:]).max(axis=1)
+        return out
+
+    def to_frame(self, ultimate=False):
+        """Long SFBM table: ``case, station, x_m, Vx_N, Vy_N, Vz_N, Mx_Nm, My_Nm, Mz_Nm``."""
+        loads = self.ultimate if ultimate else self.loads
+        c, s, _ = loads.shape
+        flat = loads.reshape(c * s, 6)
+        frame = pd.DataFrame({
+            "case": np.repeat(np.asarray(self.case_ids, dtype=object), s),
+            "station": np.tile(np.asarray(self.station_ids, dtype=object), c),
+            "x_m": np.tile(self.stations, c),
+        })
+        for j, name in enumerate(("Vx_N", "Vy_N", "Vz_N", "Mx_Nm", "My_Nm", "Mz_Nm")):
+            frame[name] = flat[:, j]
+        return frame
+
+    def envelope(self, ultimate=False):
+        """Envelope with critical case and correlated loads (see :func:`envelope_table`)."""
+        loads = self.ultimate if ultimate else self.loads
+        return envelope_table(loads, self.case_ids, self.stations, self.station_ids)
+
+    def governing_cases(self):
+        """For each component: the case and station of the largest |load| over the airframe."""
+        rows = []
+        for j, name in enumerate(COMPONENTS):
+            flat = np.abs(self.loads[:, :, j])
+            ci, si = np.unravel_index(int(np.argmax(flat)), flat.shape)
+            rows.append({"component": name, "case": self.case_ids[ci],
+                         "station": self.station_ids[si], "x [m]": self.stations[si],
+                         "value": self.loads[ci, si, j],
+                         "description": self.cases["description"].iloc[ci]})
+        return pd.DataFrame(rows)
+
+    def hull(self, station, pair=("Vy", "Mz")):
+        """Convex hull of two components at a station (id or index)."""
+        index = self._station_index(station)
+        return convex_hull(self.loads, self.case_ids, index, pair)
+
+    def comparison(self):
+        """Exceedance over the previous design envelope, or None if none was given."""
+        prev = self.study.previous_envelope
+        if prev is None:
+            return None
+        return compare_with_previous(self.loads, self.stations, self.station_ids, prev)
+
+    def _station_index(self, station):
+        if isinstance(station, (int, np.integer)):
+            if not 0 <= station < len(self.stations):
+                raise InputError("station index out of range", int(station))
+            return int(station)
+        try:
+            return self.station_ids.index(str(station))
+        except ValueError:
+            raise InputError(f"unknown station; valid ids are {list(self.station_ids)}",
+                             station) from None
