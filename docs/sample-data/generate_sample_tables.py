@@ -1,0 +1,123 @@
+"""Generate the GENERIC sample aerodynamic tables of HC1 and HC2 (slingloads/data/*.csv).
+
+These tables describe no real aircraft. They are smooth analytic shapes whose magnitudes follow
+the UH-60-class fuselage and fin data summarised in the project's reference facts (section 3),
+scaled to a light-twin helicopter (about 2.9 t, fuselage about 11 m long) through the reference
+area and length that go with the tables (see ``slingloads/data/SAMPLE_DATA.md``). Being
+coefficients, the magnitudes carry over unchanged when the reference area scales with the square
+and the reference length with the first power of the fuselage length.
+
+Run from the repository root to rewrite the CSV files::
+
+    .venv/bin/python docs/sample-data/generate_sample_tables.py
+
+The output is deterministic (no random numbers); rerunning reproduces the committed files.
+
+Fuselage alone (blades and tailplane removed), angles alpha, beta in radians, ``s = sin``:
+
+.. math::
+
+    C_{F_y}(\\beta) &= -(a_1 \\sin\\beta\\cos\\beta + a_2 \\sin\\beta\\,|\\sin\\beta|)
+        \\quad\\text{(body-axis lateral force)} \\\\
+    C_D &= C_{D0}(1 + 2\\sin^2\\alpha)\\cos^2\\beta + a_2\\sin^2\\beta \\\\
+    C_Y &= C_{F_y} + C_D \\sin\\beta \\\\
+    C_L &= (C_{L0} + C_{L\\alpha}\\sin\\alpha\\cos\\alpha)\\cos^2\\beta \\\\
+    C_l &= -c_l \\sin\\beta\\cos\\beta \\\\
+    C_m &= (C_{m0} + C_{m\\alpha}\\sin\\alpha)\\cos^2\\beta \\\\
+    C_n &= -A_n \\sin 4\\beta \\,(1 - 0.5\\sin^2\\alpha)
+
+``C_Y`` is defined as in :mod:`slingloads.models.aerodynamics`: the force is
+``q S (CD d + CY y + CL l)`` with the drag along the airflow ``d`` whose y component is
+``-sin(beta)``. Writing ``CY = C_Fy + CD sin(beta)`` makes the total body-axis lateral force
+equal to the shaped curve ``C_Fy`` and avoids counting the broadside drag twice at 90 deg
+(there ``CD = a2`` carries all of it and ``CY = 0``).
+
+``Cn = -A_n sin(4 beta)`` is directionally unstable near zero (dCn/dbeta = -4 A_n), peaks at
+22.5 deg and returns to zero at 45 deg, as the UH-60-class data do (|Cn| 0.03 / 0.06 / 0.08 at
+5 / 10 / 20 deg for A_n = 0.085); beyond 45 deg it is weakly stabilising (the tail boom
+weathervanes broadside).
+
+Fin (intact, side force on its own area, sideslip only): a tanh lift curve that blends into a
+flat plate after the stall,
+
+.. math::
+
+    w &= \\tfrac12 [1 + \\tanh((|\\beta| - \\beta_{stall})/\\Delta)] \\\\
+    C_Y &= -[(1 - w)\\, C_{Y,max} \\tanh(\\beta/\\beta_s) + w\\, C_{N,plate} \\sin\\beta]
+
+with ``C_N,plate = 1.17`` (square flat plate normal to the flow, Hoerner).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+OUT = Path(__file__).resolve().parents[2] / "slingloads" / "data"
+
+ALPHA_DEG = np.arange(-20.0, 20.0 + 1e-9, 5.0)
+BETA_DEG = np.arange(-90.0, 90.0 + 1e-9, 2.0)
+
+#: Shape parameters of each generic aircraft. HC2 is the less stable in yaw (larger fuselage
+#: yawing-moment amplitude, and a smaller fin: see slingloads/models/sample_aircraft.py).
+SHAPES = {
+    "HC1": dict(a1=2.1, a2=2.0, cd0=0.30, cl0=0.05, cla=0.9, cl_roll=0.05, cm0=-0.02,
+                cma=0.6, an=0.10, fin_cymax=1.1, fin_beta_s=19.0, fin_stall=28.0,
+                fin_width=3.0, fin_plate=1.17),
+    "HC2": dict(a1=2.3, a2=2.1, cd0=0.33, cl0=0.04, cla=0.8, cl_roll=0.06, cm0=-0.03,
+                cma=0.7, an=0.12, fin_cymax=1.0, fin_beta_s=18.0, fin_stall=26.0,
+                fin_width=3.0, fin_plate=1.17),
+}
+
+
+def fuselage_table(p):
+    """Long-format fuselage table for shape parameters ``p`` (angles in degrees)."""
+    a_deg, b_deg = np.meshgrid(ALPHA_DEG, BETA_DEG, indexing="ij")
+    a, b = np.radians(a_deg), np.radians(b_deg)
+    sa, sb, cb = np.sin(a), np.sin(b), np.cos(b)
+    c_fy = -(p["a1"] * sb * cb + p["a2"] * sb * np.abs(sb))
+    cd = p["cd0"] * (1.0 + 2.0 * sa**2) * cb**2 + p["a2"] * sb**2
+    cy = c_fy + cd * sb
+    cl = (p["cl0"] + p["cla"] * sa * np.cos(a)) * cb**2
+    roll = -p["cl_roll"] * sb * cb
+    cm = (p["cm0"] + p["cma"] * sa) * cb**2
+    cn = -p["an"] * np.sin(4.0 * b) * (1.0 - 0.5 * sa**2)
+    frame = pd.DataFrame({
+        "alpha [deg]": a_deg.ravel(), "beta [deg]": b_deg.ravel(),
+        "CD": cd.ravel(), "CY": cy.ravel(), "CL": cl.ravel(),
+        "Cl": roll.ravel(), "Cm": cm.ravel(), "Cn": cn.ravel(),
+    })
+    return _clean(frame)
+
+
+def fin_table(p):
+    """Intact-fin side-force table for shape parameters ``p`` (beta in degrees)."""
+    b_deg = BETA_DEG
+    b = np.radians(b_deg)
+    w = 0.5 * (1.0 + np.tanh((np.abs(b_deg) - p["fin_stall"]) / p["fin_width"]))
+    attached = p["fin_cymax"] * np.tanh(b_deg / p["fin_beta_s"])
+    plate = p["fin_plate"] * np.sin(b)
+    cy = -((1.0 - w) * attached + w * plate)
+    return _clean(pd.DataFrame({"beta [deg]": b_deg, "CY": cy}))
+
+
+def _clean(frame):
+    """Round to 6 decimals and remove negative zeros so the files diff cleanly."""
+    frame = frame.round(6)
+    return frame + 0.0
+
+
+def main():
+    OUT.mkdir(parents=True, exist_ok=True)
+    for name, p in SHAPES.items():
+        stem = name.lower()
+        fuselage_table(p).to_csv(OUT / f"{stem}_fuselage.csv", index=False,
+                                 float_format="%.6f")
+        fin_table(p).to_csv(OUT / f"{stem}_fin.csv", index=False, float_format="%.6f")
+        print(f"wrote {stem}_fuselage.csv and {stem}_fin.csv to {OUT}")
+
+
+if __name__ == "__main__":
+    main()
