@@ -169,6 +169,28 @@ class Hardpoints:
         object.__setattr__(self, "mast_feet_ids", _ids(ids, "mast attachment"))
 
 
+def check_inside(mass_items, reference_axis, label, point):
+    """Raise :class:`InputError` if ``point`` [m] lies outside the airframe.
+
+    Inside means: x within the mass items' x range (where the beam exists), and a distance
+    from the loads reference axis (y0, z0) [m] no larger than that x range (at least 1 m).
+    """
+    point = np.asarray(point, dtype=float)
+    x = mass_items.position[:, 0]
+    lo, hi = float(x.min()), float(x.max())
+    reach = max(hi - lo, 1.0)
+    y0, z0 = reference_axis
+    if not (lo <= point[0] <= hi):
+        raise InputError(
+            f"hardpoint {label} lies outside the airframe: x must be within the mass "
+            f"items' range [{lo:.4g}, {hi:.4g}] m", float(point[0]))
+    if np.hypot(point[1] - y0, point[2] - z0) > reach:
+        raise InputError(
+            f"hardpoint {label} lies outside the airframe: its distance from the loads "
+            f"reference axis must not exceed the airframe length {reach:.4g} m",
+            [float(v) for v in point])
+
+
 @dataclass(frozen=True)
 class Airframe:
     """The carried helicopter as a free-free beam of lumped masses.
@@ -244,26 +266,16 @@ class Airframe:
         return hi - lo
 
     def _check_inside(self):
-        lo, hi = self.extent
-        reach = max(self.length, 1.0)
+        hp = self.hardpoints
+        named = [("rotor hub", hp.hub)]
+        named += list(zip(hp.mast_feet_ids, hp.mast_feet, strict=True))
+        if hp.chute is not None:
+            named.append(("parachute attachment", hp.chute))
         y0, z0 = self.reference_axis
-        named = [("rotor hub", self.hardpoints.hub)]
-        named += [(f, p) for f, p in zip(self.hardpoints.mast_feet_ids,
-                                         self.hardpoints.mast_feet, strict=True)]
-        if self.hardpoints.chute is not None:
-            named.append(("parachute attachment", self.hardpoints.chute))
         named += [(f"aerodynamic point x = {p:.4g} m", np.array([p, y0, z0]))
                   for p in self.aero_points]
-        for label, p in named:
-            if not (lo <= p[0] <= hi):
-                raise InputError(
-                    f"hardpoint {label} lies outside the airframe: x must be within the mass "
-                    f"items' range [{lo:.4g}, {hi:.4g}] m", float(p[0]))
-            if np.hypot(p[1] - y0, p[2] - z0) > reach:
-                raise InputError(
-                    f"hardpoint {label} lies outside the airframe: its distance from the "
-                    f"loads reference axis must not exceed the airframe length {reach:.4g} m",
-                    [float(v) for v in p])
+        for label, point in named:
+            check_inside(self.mass_items, self.reference_axis, label, point)
 
     def station_points(self):
         """Points of the reference axis at the cut stations, shape (s, 3). [m]"""
