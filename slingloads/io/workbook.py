@@ -123,7 +123,10 @@ class WorkbookReader:
         if not rows or all(v is None for v in rows[0]):
             raise self.error("sheet has no header row (row 1)", sheet=spec.name, cell="A1")
         header = rows[0]
-        wanted = {c.name.lower(): c for c in spec.columns}
+        exact = {c.name: c for c in spec.columns}
+        folded = {}
+        for c in spec.columns:
+            folded.setdefault(c.name.lower(), []).append(c)
         found = {}
         for col, text in enumerate(header, start=1):
             if text is None or str(text).strip() == "":
@@ -131,17 +134,19 @@ class WorkbookReader:
             match = _HEADER.match(str(text))
             name = (match.group("name") if match else str(text)).strip()
             unit = match.group("unit") if match and match.group("unit") is not None else None
-            key = name.lower()
-            if key in NOTE_COLUMNS:
+            if name.lower() in NOTE_COLUMNS:
                 continue
-            if key not in wanted:
+            # exact names first (CL and Cl differ), else a unique case-insensitive match
+            candidates = folded.get(name.lower(), [])
+            column = exact.get(name) or (candidates[0] if len(candidates) == 1 else None)
+            if column is None:
                 raise self.error(f"unknown column; valid columns are "
                                  f"{[c.header for c in spec.columns]}", str(text),
                                  spec.name, cell_name(1, col))
+            key = column.name
             if key in found:
                 raise self.error("column appears twice", str(text), spec.name,
                                  cell_name(1, col))
-            column = wanted[key]
             factor = 1.0
             if column.kind not in (TEXT, FLAG, INTEGER):
                 if unit is None and column.kind != "dimensionless":
@@ -152,10 +157,10 @@ class WorkbookReader:
                     factor = si_factor(unit or "", column.kind)
             found[key] = (col, column, factor, unit or "")
         for column in spec.columns:
-            if column.required and column.name.lower() not in found:
+            if column.required and column.name not in found:
                 raise self.error(f"missing column {column.header!r}", sheet=spec.name,
                                  cell=cell_name(1, len(header) + 1))
-        values = {c.name: [] for c in spec.columns if c.name.lower() in found}
+        values = {c.name: [] for c in spec.columns if c.name in found}
         cells = {name: [] for name in values}
         for r, row in enumerate(rows[1:], start=2):
             if all(v is None or (isinstance(v, str) and not v.strip()) for v in row):

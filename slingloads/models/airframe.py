@@ -208,7 +208,8 @@ class Airframe:
         Names of the cut stations (default ``FS<x in m>``).
     aero_points : array_like, shape (a,), optional
         x of the points on the reference axis that take the fuselage aerodynamic load
-        (default: mid-points between consecutive cut stations). [m]
+        (default: the mid-points between consecutive cut stations that lie within the mass
+        items' x range). [m]
     aero_weights : array_like, shape (a,), optional
         Share weights of those points (default equal). [-]
     name : str
@@ -241,7 +242,11 @@ class Airframe:
         object.__setattr__(self, "reference_axis",
                            tuple(float(v) for v in np.asarray(self.reference_axis).reshape(2)))
         if self.aero_points is None:
+            lo, hi = self.extent
             pts = 0.5 * (x[1:] + x[:-1]) if x.size > 1 else x.copy()
+            pts = pts[(pts >= lo) & (pts <= hi)]
+            if pts.size == 0:
+                pts = self.mass_items.cg[:1].copy()
         else:
             pts = np.asarray(self.aero_points, dtype=float).reshape(-1)
         w = np.ones(pts.size) if self.aero_weights is None else np.asarray(

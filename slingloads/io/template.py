@@ -1,0 +1,165 @@
+"""Write input workbooks: the blank, self-explaining template, or one filled with data."""
+
+from __future__ import annotations
+
+import numpy as np
+from openpyxl import Workbook
+from openpyxl.comments import Comment
+from openpyxl.styles import Alignment, Font, PatternFill
+
+from slingloads.io.atomic import atomic_outputs
+from slingloads.io.schema import FLAG, INTEGER, SECTIONS, STUDY_SHEET, TEXT
+
+_BOLD = Font(bold=True)
+_HEAD_FILL = PatternFill("solid", fgColor="DDEBF7")
+
+INTRO = (
+    "slingloads input workbook. Fill the sheets below and run: slingloads run THIS.xlsx "
+    "--out reports/. Axes: x aft (fuselage station), y right (butt line), z up (water line); "
+    "see docs/conventions.md. Every column header carries its unit in brackets, e.g. 'x [in]' "
+    "or 'mass [lb]': change the unit to any unit of the same kind (SI or US customary). "
+    "Parameters on the Study sheet carry theirs in the 'unit' column; delete a parameter row "
+    "to use its default. Extra columns named 'note' or 'source' are ignored. Empty rows are "
+    "skipped. Sheets marked optional may be deleted."
+)
+
+
+def _text(cell, value):
+    """Store ``value`` as plain text, never as a formula."""
+    cell.value = value
+    if isinstance(value, str):
+        cell.data_type = "s"
+
+
+def write_input_workbook(path, parameters=None, tables=None, notes=None, inputs=()):
+    """Write an input workbook following :mod:`slingloads.io.schema`.
+
+    Parameters
+    ----------
+    path : path-like
+        The ``.xlsx`` to write (atomically).
+    parameters : dict, optional
+        ``{parameter name: (value, unit)}``; parameters not given are listed with their
+        default (the blank template lists every parameter so).
+    tables : dict, optional
+        ``{sheet name: pandas.DataFrame}`` whose column labels are full headers (``x [in]``).
+        Sheets not given are written with their headers only.
+    notes : list of str, optional
+        Lines added to the README sheet (sources and assumptions of the data).
+    inputs : iterable of path-like
+        Files that must not be overwritten.
+    """
+    from pathlib import Path
+
+    path = Path(path)
+    parameters = parameters or {}
+    tables = tables or {}
+    book = Workbook()
+    readme = book.active
+    readme.title = "README"
+    _readme(readme, notes or [])
+    _study_sheet(book.create_sheet(STUDY_SHEET), parameters)
+    for section in SECTIONS:
+        for spec in section.sheets:
+            if tables and spec.name not in tables and not spec.required:
+                continue
+            _table_sheet(book.create_sheet(spec.name), spec, tables.get(spec.name))
+    with atomic_outputs(path.parent if str(path.parent) else ".", inputs=inputs) as out:
+        book.save(out.path(path.name))
+    return path
+
+
+def _readme(ws, notes):
+    ws.column_dimensions["A"].width = 24
+    ws.column_dimensions["B"].width = 30
+    ws.column_dimensions["C"].width = 110
+    _text(ws.cell(1, 1), "slingloads input workbook")
+    ws.cell(1, 1).font = Font(bold=True, size=14)
+    _text(ws.cell(2, 1), INTRO)
+    ws.merge_cells("A2:C2")
+    ws.cell(2, 1).alignment = Alignment(wrap_text=True, vertical="top")
+    ws.row_dimensions[2].height = 75
+    row = 4
+    for line in notes:
+        _text(ws.cell(row, 1), line)
+        ws.merge_cells(start_row=row, start_column=1, end_row=row, end_column=3)
+        row += 1
+    row += 1
+    for col, title in enumerate(("sheet", "column", "meaning"), start=1):
+        _text(ws.cell(row, col), title)
+        ws.cell(row, col).font = _BOLD
+        ws.cell(row, col).fill = _HEAD_FILL
+    row += 1
+    _text(ws.cell(row, 1), STUDY_SHEET)
+    _text(ws.cell(row, 3), "Parameters: one per row, 'parameter | value | unit | "
+          "description'. See the sheet for every parameter and its default.")
+    row += 1
+    for section in SECTIONS:
+        for spec in section.sheets:
+            _text(ws.cell(row, 1), spec.name)
+            _text(ws.cell(row, 3), ("(required) " if spec.required else "(optional) ")
+                  + spec.help)
+            ws.cell(row, 1).font = _BOLD
+            row += 1
+            for c in spec.columns:
+                _text(ws.cell(row, 2), c.header)
+                kind = {TEXT: "text", FLAG: "yes/no", INTEGER: "whole number"}.get(c.kind,
+                                                                                 c.kind)
+                need = "required" if c.required else f"optional, default {c.default!r}"
+                _text(ws.cell(row, 3), f"{kind}; {need}. {c.help}".strip())
+                row += 1
+
+
+def _study_sheet(ws, parameters):
+    heads = ("parameter", "value", "unit", "description")
+    for col, title in enumerate(heads, start=1):
+        _text(ws.cell(1, col), title)
+        ws.cell(1, col).font = _BOLD
+        ws.cell(1, col).fill = _HEAD_FILL
+    ws.column_dimensions["A"].width = 30
+    ws.column_dimensions["B"].width = 16
+    ws.column_dimensions["C"].width = 10
+    ws.column_dimensions["D"].width = 100
+    row = 2
+    for section in SECTIONS:
+        for p in section.parameters:
+            value, unit = parameters.get(p.name, (p.default, p.unit))
+            _text(ws.cell(row, 1), p.name)
+            _text(ws.cell(row, 2), _plain(value))
+            _text(ws.cell(row, 3), unit)
+            _text(ws.cell(row, 4), f"[{section.name}] {p.help}")
+            row += 1
+    ws.freeze_panes = "A2"
+
+
+def _table_sheet(ws, spec, frame):
+    headers = list(frame.columns) if frame is not None else [c.header for c in spec.columns]
+    helps = {c.name.lower(): c for c in spec.columns}
+    for col, title in enumerate(headers, start=1):
+        cell = ws.cell(1, col)
+        _text(cell, str(title))
+        cell.font = _BOLD
+        cell.fill = _HEAD_FILL
+        key = str(title).split("[")[0].strip().lower()
+        if key in helps:
+            c = helps[key]
+            text = c.help or c.name
+            if c.kind not in (TEXT, FLAG, INTEGER) and c.unit:
+                text += f" Unit: any {c.kind} unit in the brackets."
+            cell.comment = Comment(text, "slingloads")
+        ws.column_dimensions[cell.column_letter].width = max(12, len(str(title)) + 3)
+    if frame is not None:
+        for r, values in enumerate(frame.itertuples(index=False), start=2):
+            for col, value in enumerate(values, start=1):
+                _text(ws.cell(r, col), _plain(value))
+    ws.freeze_panes = "A2"
+
+
+def _plain(value):
+    if isinstance(value, (np.floating, np.integer)):
+        return value.item()
+    if isinstance(value, np.bool_):
+        return "yes" if value else "no"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    return value
