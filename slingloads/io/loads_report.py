@@ -1,0 +1,414 @@
+"""The loads report: an Excel workbook, CSV tables and PNG plots of a loads analysis.
+
+:func:`write_loads_outputs` writes, all at once or not at all
+(:mod:`slingloads.io.atomic`):
+
+* ``<stem>-loads.xlsx``: sheets *Summary* (input digest, study settings, units, closure check,
+  governing cases), *LoadCases*, *Envelope* (critical case and correlated loads),
+  *Exceedance* (ratio to the previous design envelope, red above 1), *SFBM* (every case and
+  station, split as ``SFBM_1``, ``SFBM_2``... past Excel's row limit), *Ultimate* (envelope
+  at ultimate = factor x limit), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
+  system with the unit in every header (``x [in]``, ``Vy [lbf]``, ``Mz [lbf in]``);
+* ``<stem>-sfbm.csv`` (columns ``case,station,x_m,Vx_N,Vy_N,Vz_N,Mx_Nm,My_Nm,Mz_Nm``) and
+  ``<stem>-envelope.csv``: limit loads, always SI;
+* ``<stem>-X_shear.png``... ``<stem>-Z_moment.png`` (one per component, the paper's
+  figures 19 and 20 are X and Y shear), ``<stem>-sfbm_all.png`` (2 x 3 grid) and
+  ``<stem>-hull_<A>_<B>_<station>.png``.
+
+The DataFrame conversion helpers (:func:`convert_columns`, :func:`convert_by_component`)
+are shared by the other reports.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+import pandas as pd
+
+import slingloads
+from slingloads.analyses.envelopes import component_index
+from slingloads.analyses.loads import CLOSURE_TOLERANCE
+from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
+from slingloads.errors import InputError
+from slingloads.io.atomic import atomic_outputs
+from slingloads.io.excel import (
+    EXCEL_MAX_ROWS,
+    Highlight,
+    Section,
+    figure_png,
+    format_by_header,
+    write_workbook,
+)
+from slingloads.io.plots_loads import (
+    COMPONENT_TAGS,
+    check_units,
+    in_report_units,
+    labelled,
+    plot_hull,
+    plot_sfbm,
+    plot_sfbm_grid,
+    report_unit,
+)
+from slingloads.units import unit_label
+
+#: Columns of the SFBM CSV file (SI, limit loads).
+SFBM_CSV_COLUMNS = ("case", "station", "x_m", "Vx_N", "Vy_N", "Vz_N", "Mx_Nm", "My_Nm",
+                    "Mz_Nm")
+
+#: Number formats of the report columns, by header pattern (first match wins).
+NUMBER_FORMATS = format_by_header([
+    (r"residual", "0.00E+00"),
+    (r"ratio", "0.000"),
+    (r"^x \[", "0.000"),
+    (r"\[(N|lbf|N m|lbf in)\]$", "#,##0.0"),
+    (r"^(value|new max|new min|previous max|previous min)$", "#,##0.0"),
+    (r"\[deg\]$", "0.0##"),
+    (r"\[(-|rad/s\^2)\]$", "0.000"),
+])
+
+_PNG_DPI = 120
+
+
+def convert_columns(frame, spec, units):
+    """Convert SI columns of a DataFrame to report units and label them with the unit.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        Table with SI columns.
+    spec : mapping of str to (str, str)
+        SI column name -> (new base name, quantity kind); ``{"x [m]": ("x", "length")}``
+        gives ``x [in]`` in US units. Other columns are left as they are.
+    units : str
+        ``"SI"`` or ``"US"``.
+
+    Returns
+    -------
+    pandas.DataFrame
+        A converted copy.
+    """
+    check_units(units)
+    out = frame.copy()
+    renames = {}
+    for column, (name, kind) in spec.items():
+        if column not in out.columns:
+            raise InputError(f"column to convert is missing; columns are {list(out.columns)}",
+                             column)
+        out[column] = in_report_units(out[column].to_numpy(float), kind, units)
+        renames[column] = labelled(name, kind, units)
+    return out.rename(columns=renames)
+
+
+def convert_by_component(frame, columns, units, component="component"):
+    """Convert columns whose unit depends on the row's load component (force or moment).
+
+    Adds a ``unit`` column after the first converted column.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        Table with a ``component`` column (``"Vx"``... ``"Mz"``) and SI load columns.
+    columns : sequence of str
+        Load columns to convert (e.g. ``["value"]``). [N] or [N m] by row
+    units : str
+        ``"SI"`` or ``"US"``.
+    component : str
+        Name of the component column.
+
+    Returns
+    -------
+    pandas.DataFrame
+    """
+    check_units(units)
+    out = frame.copy()
+    kinds = out[component].map(lambda c: COMPONENT_KINDS[component_index(c)])
+    factor = np.ones(len(out))
+    labels = np.empty(len(out), dtype=object)
+    for kind in set(kinds):
+        mask = (kinds == kind).to_numpy()
+        factor[mask] = float(in_report_units(1.0, kind, units))
+        labels[mask] = unit_label(report_unit(kind, units))
+    for column in columns:
+        out[column] = out[column].to_numpy(float) * factor
+    out.insert(list(out.columns).index(columns[0]) + 1, "unit", labels)
+    return out
+
+
+def _loads_spec(names=COMPONENTS):
+    return {n: (n, COMPONENT_KINDS[component_index(n)]) for n in names}
+
+
+def sfbm_table(result, units="SI", ultimate=False):
+    """Long SFBM table in report units: ``case, station, x [..], Vx [..] ... Mz [..]``."""
+    frame = result.to_frame(ultimate=ultimate)
+    spec = {"x_m": ("x", "length")}
+    for name, column in zip(COMPONENTS, SFBM_CSV_COLUMNS[3:], strict=True):
+        spec[column] = (name, COMPONENT_KINDS[component_index(name)])
+    return convert_columns(frame, spec, units)
+
+
+def envelope_report_table(result, units="SI", ultimate=False):
+    """Envelope (critical case, correlated loads) in report units, with a ``unit`` column."""
+    frame = convert_by_component(result.envelope(ultimate=ultimate), ["value"], units)
+    spec = {"x [m]": ("x", "length"), **_loads_spec()}
+    return convert_columns(frame, spec, units)
+
+
+def case_report_table(result, units="SI"):
+    """Load-case table in report units (closure residuals converted)."""
+    return convert_columns(result.case_table(), {
+        "closure force residual [N]": ("closure force residual", "force"),
+        "closure moment residual [N m]": ("closure moment residual", "moment"),
+    }, units)
+
+
+def comparison_report_table(result, units="SI"):
+    """Exceedance over the previous design envelope in report units, or None."""
+    comparison = result.comparison()
+    if comparison is None:
+        return None
+    frame = convert_by_component(
+        comparison, ["new max", "new min", "previous max", "previous min"], units)
+    return convert_columns(frame, {"x [m]": ("x", "length")}, units)
+
+
+def hull_report_table(result, pair, stations, units="SI"):
+    """Hull vertices of ``pair`` at each station, one block of rows per station."""
+    frames = []
+    for station in stations:
+        hull = result.hull(station, pair)
+        index = _station_index(result, station)
+        hull.insert(0, "vertex", np.arange(1, len(hull) + 1))
+        hull.insert(0, "x [m]", result.stations[index])
+        hull.insert(0, "station", result.station_ids[index])
+        frames.append(hull)
+    frame = pd.concat(frames, ignore_index=True)
+    return convert_columns(frame, {"x [m]": ("x", "length"), **_loads_spec(pair)}, units)
+
+
+def _station_index(result, station):
+    if isinstance(station, (int, np.integer)):
+        if not 0 <= int(station) < len(result.stations):
+            raise InputError("station index out of range", int(station))
+        return int(station)
+    ids = list(result.station_ids)
+    if str(station) not in ids:
+        raise InputError(f"unknown station; valid ids are {ids}", station)
+    return ids.index(str(station))
+
+
+def _digest_frame(inputs_digest):
+    if inputs_digest is None:
+        return None
+    if isinstance(inputs_digest, pd.DataFrame):
+        return inputs_digest
+    if isinstance(inputs_digest, Mapping):
+        return pd.DataFrame({"input": [str(k) for k in inputs_digest],
+                             "entry": list(inputs_digest.values())})
+    raise InputError("inputs_digest must be a dict or a DataFrame",
+                     type(inputs_digest).__name__)
+
+
+def study_table(result, units="SI"):
+    """Settings of the study (mass, CG, flight condition, hook, cases) in report units."""
+    study = result.study
+    items = study.airframe.mass_items
+
+    def unit(kind):
+        return unit_label(report_unit(kind, units))
+
+    def conv(value, kind):
+        return float(in_report_units(value, kind, units))
+
+    alt_unit = "ft" if units == "US" else "m"
+    altitude = study.flight.density_altitude / (0.3048 if units == "US" else 1.0)
+    cg = items.cg
+    c, s = len(result.case_ids), len(result.stations)
+    rows = [
+        ("study", study.name, ""),
+        ("slingloads version", slingloads.__version__, ""),
+        ("report unit system", units, ", ".join(unit(k) for k in ("length", "force",
+                                                                  "moment"))),
+        ("CSV files", "SI (m, N, N m), limit loads", ""),
+        ("aircraft mass", conv(items.total_mass, "mass"), unit("mass")),
+        ("CG x", conv(cg[0], "length"), unit("length")),
+        ("CG y", conv(cg[1], "length"), unit("length")),
+        ("CG z", conv(cg[2], "length"), unit("length")),
+        ("equivalent airspeed", conv(study.flight.eas, "speed"), unit("speed")),
+        ("density altitude", altitude, alt_unit),
+        ("air density", conv(study.flight.density, "density"), unit("density")),
+        ("hook load factor Nz", study.hook.nz, "-"),
+        ("hook cone angle from the mast axis", float(np.degrees(study.hook.angle)), "deg"),
+        ("hook azimuths", study.hook.n_azimuth, "-"),
+        ("hook load along the mast axis included", "yes" if study.hook.include_axial else "no",
+         ""),
+        ("aerodynamic envelope points",
+         len(study.envelope.ids) if study.envelope is not None else 0, "-"),
+        ("parachute", "yes" if study.parachute is not None else "no", ""),
+        ("parachute line direction", study.chute_line if study.parachute is not None else "-",
+         ""),
+        ("ultimate factor", study.ultimate_factor, "-"),
+        ("load cases", c, "-"),
+        ("cut stations", s, "-"),
+        ("SFBM rows (cases x stations)", c * s, "-"),
+        ("previous design envelope",
+         "given" if study.previous_envelope is not None else "none", ""),
+    ]
+    return pd.DataFrame(rows, columns=["item", "setting", "unit"])
+
+
+def closure_table(result):
+    """Free-free closure check (SI, as applied by the analysis): residuals vs tolerance."""
+    residual = np.abs(result.residual)
+    tol = CLOSURE_TOLERANCE * result.residual_scale
+    worst = int(np.argmax(residual.max(axis=1)))
+    largest = float(residual.max())
+    rows = [
+        ("relative tolerance", CLOSURE_TOLERANCE, "-"),
+        ("load scale (largest force x max(1 m, airframe length))", result.residual_scale,
+         "N m"),
+        ("tolerance on every residual component", tol, "N or N m"),
+        ("max |force residual|", float(residual[:, :3].max()), "N"),
+        ("max |moment residual| about the CG", float(residual[:, 3:].max()), "N m"),
+        ("case with the largest residual", result.case_ids[worst], ""),
+        ("result", "PASS" if largest <= tol else "FAIL", ""),
+    ]
+    return pd.DataFrame(rows, columns=["item", "setting", "unit"])
+
+
+def governing_report_table(result, units="SI"):
+    """Case and station of the largest |limit load| of each component, in report units."""
+    frame = convert_by_component(result.governing_cases(), ["value"], units)
+    return convert_columns(frame, {"x [m]": ("x", "length")}, units)
+
+
+def _safe(text):
+    """A file-name-safe version of a station id."""
+    return re.sub(r"[^A-Za-z0-9._-]+", "_", str(text)).strip("_") or "station"
+
+
+def _default_hull_station(result, pair):
+    """The station where the first component of the pair has its largest magnitude."""
+    j = component_index(pair[0])
+    return result.station_ids[int(np.argmax(np.abs(result.loads[:, :, j]).max(axis=0)))]
+
+
+def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
+                        hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
+                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS):
+    """Write the loads report (workbook, CSV tables, PNG plots) atomically.
+
+    Parameters
+    ----------
+    result : slingloads.analyses.loads.LoadsResult
+    out_dir : path-like
+        Output directory (created if needed).
+    stem : str
+        File-name stem: ``<stem>-loads.xlsx``, ``<stem>-sfbm.csv``...
+    units : str
+        Unit system of the workbook and plots, ``"SI"`` (m, N, N m) or ``"US"`` (in, lbf,
+        lbf in). The CSV files are always SI.
+    inputs_digest : dict or pandas.DataFrame, optional
+        What the analysis was run from (input file name, SHA-256, ...), shown first on the
+        Summary sheet.
+    hull_pairs : sequence of (str, str)
+        Component pairs of the 2-D envelopes.
+    hull_stations : sequence of (str or int), optional
+        Stations of the hull tables and plots. Default: the tables at every station, and
+        one plot per pair at the station where its first component is largest.
+    input_paths : sequence of path-like
+        Input files: an output onto one of them is refused.
+    max_rows : int
+        Rows per sheet including the header (Excel's limit by default).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    InputError
+        On an unknown unit system, component or station, or an output onto an input file;
+        nothing is written then.
+    """
+    check_units(units)
+    for pair in hull_pairs:
+        if len(pair) != 2:
+            raise InputError("a hull pair needs two components", pair)
+        for name in pair:
+            component_index(name)
+    stations = list(hull_stations) if hull_stations is not None else list(result.station_ids)
+    for station in stations:
+        _station_index(result, station)
+    plot_stations = {pair: (stations if hull_stations is not None
+                            else [_default_hull_station(result, pair)]) for pair in hull_pairs}
+
+    figures = {}
+    for name in COMPONENTS:
+        figures[COMPONENT_TAGS[name]] = plot_sfbm(result, name, units)
+    figures["sfbm_all"] = plot_sfbm_grid(result, units)
+    for pair, where in plot_stations.items():
+        for station in where:
+            index = _station_index(result, station)
+            tag = f"hull_{pair[0]}_{pair[1]}_{_safe(result.station_ids[index])}"
+            figures[tag] = plot_hull(result, station, pair, units)
+    pngs = {tag: figure_png(fig, dpi=_PNG_DPI) for tag, fig in figures.items()}
+
+    sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations)
+    embedded = {"X shear (Vx)": pngs["X_shear"], "Y shear (Vy)": pngs["Y_shear"],
+                "All six components": pngs["sfbm_all"]}
+    embedded.update({tag: png for tag, png in pngs.items() if tag.startswith("hull_")})
+
+    with atomic_outputs(out_dir, inputs=input_paths) as out:
+        write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,
+                       number_format=NUMBER_FORMATS,
+                       highlight={"Exceedance": Highlight(["exceedance ratio"], 1.0)},
+                       max_rows=max_rows)
+        result.to_frame().to_csv(out.path(f"{stem}-sfbm.csv"), index=False,
+                                 columns=list(SFBM_CSV_COLUMNS), lineterminator="\n")
+        result.envelope().to_csv(out.path(f"{stem}-envelope.csv"), index=False,
+                                 lineterminator="\n")
+        for tag, png in pngs.items():
+            out.path(f"{stem}-{tag}.png").write_bytes(png)
+    return out.written
+
+
+def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations):
+    """The sheets of the loads workbook, in order."""
+    digest = _digest_frame(inputs_digest)
+    summary = [
+        Section("Inputs", digest) if digest is not None
+        else Section("Inputs", note="no input digest given"),
+        Section("Study", study_table(result, units)),
+        Section("Closure check (free-free equilibrium, SI as checked)", closure_table(result)),
+        Section("Governing cases (largest |limit load| of each component)",
+                governing_report_table(result, units)),
+    ]
+    comparison = comparison_report_table(result, units)
+    exceedance = (
+        [Section("Exceedance over the previous design envelope",
+                 comparison,
+                 note="ratio = max(new max+/previous max+, |new min-|/|previous min-|); "
+                      "above 1 the new envelope exceeds the previous one (red)")]
+        if comparison is not None else "no previous envelope given")
+    factor = result.study.ultimate_factor
+    ultimate = [Section(f"Ultimate loads = {factor:g} x limit loads",
+                        envelope_report_table(result, units, ultimate=True),
+                        note=f"Ultimate factor of safety {factor:g} (CS 29.303). The "
+                             "envelope below is at ultimate; every other sheet, and the "
+                             "CSV files, hold limit loads.")]
+    hulls = [Section(f"{a}-{b} convex hull vertices (counter-clockwise), limit loads",
+                     hull_report_table(result, (a, b), stations, units))
+             for a, b in hull_pairs] or "no hull pair requested"
+    return {
+        "Summary": summary,
+        "LoadCases": case_report_table(result, units),
+        "Envelope": envelope_report_table(result, units),
+        "Exceedance": exceedance,
+        "SFBM": sfbm_table(result, units),
+        "Ultimate": ultimate,
+        "Hulls": hulls,
+    }
