@@ -98,12 +98,15 @@ def file_digest(path):
     return h.hexdigest()
 
 
-def read_study(path):
+def read_study(path, only=None):
     """Read an input workbook and build every analysis it asks for.
 
     Parameters
     ----------
     path : str or Path
+    only : iterable of str, optional
+        Build these analyses (``"loads"``, ``"lateral"``, ``"chute sizing"``) whatever the
+        workbook's ``run ...`` parameters say.
 
     Returns
     -------
@@ -119,6 +122,8 @@ def read_study(path):
     sheets = all_sheets()
     run = {"loads": params("run loads"), "lateral": params("run lateral"),
            "chute sizing": params("run chute sizing")}
+    if only is not None:
+        run = {name: name in set(only) for name in run}
     airframe, refs = _airframe(reader, params, sheets)
     loads = _loads_study(reader, params, sheets, airframe, refs) if run["loads"] else None
     study = WorkbookStudy(name=str(params("study name")), path=str(path),

@@ -1,0 +1,155 @@
+"""Command line: ``slingloads template | run | loads | lateral | chute``.
+
+Exit codes: 0 success, 2 bad input (nothing written), 1 an unexpected failure.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from tqdm import tqdm
+
+from slingloads import __version__
+from slingloads.errors import ClosureError, InputError, SlingloadsError
+
+EXIT_BAD_INPUT = 2
+
+#: Analyses the ``run`` command may perform, in order:
+#: name -> (subcommand, workbook flag, compute(study) -> result or None,
+#:          write(result, outputs, stem, units, study) -> None)
+ANALYSES = {}
+
+
+def register(name, subcommand, compute, write):
+    """Make an analysis available to ``slingloads run`` and as its own subcommand."""
+    ANALYSES[name] = (subcommand, compute, write)
+
+
+def _loads_compute(study):
+    if study.loads is None:
+        raise InputError("the workbook does not ask for the loads analysis (Study sheet: "
+                         "'run loads' is no)", file=study.path, sheet="Study")
+    return study.loads.run()
+
+
+def _loads_write(result, outputs, stem, units, study):
+    from slingloads.io.loads_report import write_loads_outputs
+
+    write_loads_outputs(result, outputs, stem, units=units, study=study)
+
+
+register("loads", "loads", _loads_compute, _loads_write)
+
+
+def _parser():
+    parser = argparse.ArgumentParser(
+        prog="slingloads",
+        description="Loads and dynamics of a helicopter carried as a sling load under another "
+                    "rotorcraft, stabilised by a drogue parachute.")
+    parser.add_argument("--version", action="version", version=f"slingloads {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    t = sub.add_parser("template", help="write a blank, self-explaining input workbook",
+                       description="Write a blank input workbook in which every sheet and "
+                                   "column is explained (README sheet, header comments).")
+    t.add_argument("out", metavar="OUT.xlsx", help="workbook to write (not overwritten if it "
+                   "exists, unless --force)")
+    t.add_argument("--force", action="store_true", help="replace an existing file")
+    commands = {
+        "run": "run every analysis the workbook asks for (Study sheet: run loads, run "
+               "lateral, run chute sizing)",
+        "loads": "structural loads only: CS-29.865 cases, inertia relief, SFBM, envelopes",
+        "lateral": "lateral-step pendulum study only",
+        "chute": "parachute sizing only",
+    }
+    for name, text in commands.items():
+        p = sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".")
+        p.add_argument("workbook", metavar="IN.xlsx", help="input workbook")
+        p.add_argument("--out", metavar="DIR", default="reports",
+                       help="output directory (default: reports)")
+        p.add_argument("--units", choices=("SI", "US"), default="SI",
+                       help="units of the Excel report (CSV files are always SI)")
+        p.add_argument("--quiet", action="store_true", help="no progress bar")
+    return parser
+
+
+def main(argv=None):
+    """Entry point of the ``slingloads`` command. Returns the exit code."""
+    args = _parser().parse_args(argv)
+    try:
+        if args.command == "template":
+            return _template(args)
+        return _analyse(args)
+    except InputError as err:
+        print(f"slingloads: error: {err}", file=sys.stderr)
+        print("slingloads: nothing was written.", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except ClosureError as err:
+        print(f"slingloads: error: {err}", file=sys.stderr)
+        print("slingloads: nothing was written.", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except SlingloadsError as err:  # pragma: no cover - defensive
+        print(f"slingloads: error: {err}", file=sys.stderr)
+        return 1
+
+
+def _template(args):
+    from slingloads.io.template import write_input_workbook
+
+    out = Path(args.out)
+    if out.suffix.lower() != ".xlsx":
+        raise InputError("the template must be an .xlsx file", str(out))
+    if out.exists() and not args.force:
+        raise InputError("file exists; use --force to replace it", str(out))
+    write_input_workbook(out)
+    print(f"wrote {out}")
+    return 0
+
+
+def _selected(args, study):
+    if args.command == "run":
+        wanted = [n for n in ANALYSES if study.run.get(n)]
+        if not wanted:
+            raise InputError("the workbook asks for no analysis (Study sheet: run loads, run "
+                             "lateral, run chute sizing are all no)", file=study.path,
+                             sheet="Study")
+        return wanted
+    return [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
+
+
+def _analyse(args):
+    from slingloads.io.atomic import atomic_outputs
+    from slingloads.io.study_reader import read_study
+
+    show = not args.quiet
+    with tqdm(total=3, desc="reading", disable=not show, unit="step",
+              bar_format="{desc:<28}{bar:20}| {n_fmt}/{total_fmt} [{elapsed}]") as bar:
+        only = None
+        if args.command != "run":
+            only = [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
+        study = read_study(args.workbook, only=only)
+        names = _selected(args, study)
+        bar.total = 2 + 2 * len(names)
+        bar.update(1)
+        results = {}
+        for name in names:
+            bar.set_description(f"computing {name}")
+            results[name] = ANALYSES[name][1](study)
+            bar.update(1)
+        stem = Path(args.workbook).stem
+        with atomic_outputs(args.out, inputs=[args.workbook]) as outputs:
+            for name in names:
+                bar.set_description(f"writing {name}")
+                ANALYSES[name][2](results[name], outputs, stem, args.units, study)
+                bar.update(1)
+            bar.set_description("publishing")
+        bar.update(1)
+        bar.set_description("done")
+    for path in outputs.written:
+        print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
