@@ -59,12 +59,27 @@ def rigid_body_acceleration(mass_items, positions, forces, moments):
     """
     cg = mass_items.cg
     resultant = forces.sum(axis=1)
-    moment_cg = (np.cross(positions - cg, forces) + moments).sum(axis=1)
+    moment_cg = moment_sum(np.asarray(positions) - cg, forces) + moments.sum(axis=1)
     linear = resultant / mass_items.total_mass
     # pinv: a line of point masses has no inertia about its own axis; a moment about that
     # axis then stays unbalanced and the closure check reports it.
     angular = moment_cg @ np.linalg.pinv(mass_items.inertia_about_cg, hermitian=True).T
     return RigidBodyAcceleration(linear, angular)
+
+
+def moment_sum(positions, forces):
+    """Sum over points of r x F per case, shape (c, 3), by matrix products (no (c, p, 3) temp).
+
+    Parameters
+    ----------
+    positions : ndarray, shape (p, 3)
+        Lever arms. [m]
+    forces : ndarray, shape (c, p, 3)
+        [N]
+    """
+    rx, ry, rz = np.asarray(positions, float).T
+    fx, fy, fz = forces[..., 0], forces[..., 1], forces[..., 2]
+    return np.stack([fz @ ry - fy @ rz, fx @ rz - fz @ rx, fy @ rx - fx @ ry], axis=-1)
 
 
 def inertia_loads(mass_items, acceleration):

@@ -26,12 +26,8 @@ import pandas as pd
 
 from slingloads.analyses.envelopes import compare_with_previous, convex_hull, envelope_table
 from slingloads.analyses.hook_loads import HookLoadOptions, describe_direction, hook_directions
-from slingloads.analyses.inertia_relief import (
-    gravity_forces,
-    inertia_loads,
-    rigid_body_acceleration,
-)
-from slingloads.analyses.sfbm import COMPONENTS, closure_residual, internal_loads
+from slingloads.analyses.inertia_relief import gravity_forces
+from slingloads.analyses.sfbm import COMPONENTS, free_free_internal_loads
 from slingloads.errors import ClosureError, InputError
 from slingloads.models.aerodynamics import airflow_direction
 from slingloads.models.airframe import Airframe
@@ -277,16 +273,21 @@ class LoadsStudy:
                                  "defined", c.chute)
 
     def run(self, check_closure=True):
-        """Compute every case. Returns a :class:`LoadsResult`."""
+        """Compute every case. Returns a :class:`LoadsResult`.
+
+        Raises
+        ------
+        ClosureError
+            If a case's free-free residual exceeds :data:`CLOSURE_TOLERANCE` times the load
+            scale (and ``check_closure``).
+        """
         cases = self.case_matrix()
         positions, forces, moments = self.applied_loads(cases)
         items = self.airframe.mass_items
         n = len(items.mass)
-        accel = rigid_body_acceleration(items, positions, forces, moments)
-        f_in, m_in = inertia_loads(items, accel)
-        forces[:, :n, :] += f_in
-        moments[:, :n, :] += m_in
-        residual = closure_residual(positions, forces, moments, items.cg)
+        loads, accel, residual = free_free_internal_loads(
+            items, positions[n:], forces[:, n:], moments[:, n:],
+            self.airframe.station_points())
         scale = self._load_scale(forces)
         bad = np.abs(residual).max(axis=1) > CLOSURE_TOLERANCE * scale
         if check_closure and np.any(bad):
@@ -298,7 +299,6 @@ class LoadsStudy:
             raise ClosureError(f"case {cases['case'].iloc[i]}: free-free residual "
                                f"{np.abs(residual[i]).max():.3g} exceeds the tolerance "
                                f"{CLOSURE_TOLERANCE * scale:.3g}{hint}")
-        loads = internal_loads(positions, forces, moments, self.airframe.station_points())
         return LoadsResult(self, cases, loads, accel.linear, accel.angular,
                            accel.load_factor, residual, scale)
 
@@ -411,7 +411,8 @@ class LoadsResult:
     load_factor : ndarray, shape (c, 3)
         Load factor at the CG. [-]
     residual : ndarray, shape (c, 6)
-        Free-free closure residual (force [N], moment about the CG [N m]).
+        Free-free closure residual: the internal loads at a cut aft of every load and mass
+        item (force [N], moment [N m]).
     residual_scale : float
         Load scale the residual is judged against. [N m]
     """

@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from slingloads.errors import InputError
+
 #: Names of the six internal-load components, in array order.
 COMPONENTS = ("Vx", "Vy", "Vz", "Mx", "My", "Mz")
 #: Kind of each component (for units).
@@ -36,31 +38,79 @@ def internal_loads(positions, forces, moments, station_points):
     moments : ndarray, shape (c, p, 3) or None
         Point moments per case. [N m]
     station_points : ndarray, shape (s, 3)
-        Points of the loads reference axis at the cuts (x increasing). [m]
+        Points of the loads reference axis at the cuts: x increasing, y and z the same for
+        all (the axis is parallel to x). [m]
 
     Returns
     -------
     ndarray, shape (c, s, 6)
         Vx, Vy, Vz [N], Mx, My, Mz [N m].
     """
+    out = _forward_sums(positions, forces, moments, station_points)
+    np.negative(out, out=out)
+    return out
+
+
+def _forward_sums(positions, forces, moments, station_points):
+    """Minus the internal loads: forward sums of force and moment about each cut's point.
+
+    Moments are first summed about the axis point (0, y0, z0); moving them to the cut's point
+    (x_c, y0, z0) changes only My and Mz, by x_c times the force sums, so the per-case work
+    is one cumulative sum over the load points and one gather at the stations.
+    """
     positions = np.asarray(positions, float)
+    station_points = np.asarray(station_points, float)
+    axis = station_points[0, 1:]
+    if np.any(station_points[:, 1:] != axis):
+        raise InputError("cut-station points must lie on one line parallel to x (the loads "
+                         "reference axis)", station_points[:, 1:].tolist())
     order = np.argsort(positions[:, 0], kind="stable")
     pos = positions[order]
     f = forces[:, order, :]
-    per_point = np.empty(f.shape[:2] + (6,))
-    per_point[..., :3] = f
-    per_point[..., 3:] = np.cross(pos, f)
+    per_point = np.zeros((f.shape[0], f.shape[1] + 1, 6))
+    per_point[:, 1:, :3] = f
+    _cross_into(pos - np.array([0.0, axis[0], axis[1]]), f, per_point[:, 1:, 3:])
     if moments is not None:
-        per_point[..., 3:] += moments[:, order, :]
+        per_point[:, 1:, 3:] += moments[:, order, :]
     np.cumsum(per_point, axis=1, out=per_point)
     count = np.searchsorted(pos[:, 0], station_points[:, 0], side="right")
-    out = np.zeros(f.shape[:1] + (station_points.shape[0], 6))
-    has = count > 0
-    out[:, has, :] = per_point[:, count[has] - 1, :]
-    # out now holds the forward sums S_F, S_rxF; internal = -S_F, -(S_rxF - p x S_F)
-    out[..., 3:] -= np.cross(station_points, out[..., :3])
-    np.negative(out, out=out)
+    out = np.take(per_point, count, axis=1)
+    x = station_points[:, 0]
+    out[..., 4] += x * out[..., 2]
+    out[..., 5] -= x * out[..., 1]
     return out
+
+
+def _cross_into(r, f, out):
+    """out = r x f, r of shape (p, 3) broadcast over the cases of f (c, p, 3)."""
+    rx, ry, rz = r[:, 0], r[:, 1], r[:, 2]
+    fx, fy, fz = f[..., 0], f[..., 1], f[..., 2]
+    np.multiply(ry, fz, out=out[..., 0])
+    out[..., 0] -= rz * fy
+    np.multiply(rz, fx, out=out[..., 1])
+    out[..., 1] -= rx * fz
+    np.multiply(rx, fy, out=out[..., 2])
+    out[..., 2] -= ry * fx
+    return out
+
+
+def unit_inertia_responses(mass_items, station_points):
+    """Internal loads of the inertia field of each unit rigid-body acceleration.
+
+    The inertia loads are linear in the six accelerations (a_x, a_y, a_z, alpha_x, alpha_y,
+    alpha_z), so the internal loads of any case's inertia relief are ``acc @ U`` with these
+    unit responses: the classic superposition of unit-load solutions.
+
+    Returns
+    -------
+    ndarray, shape (6, s, 6)
+        Response to a unit acceleration [per m/s^2] or angular acceleration [per rad/s^2].
+    """
+    from slingloads.analyses.inertia_relief import RigidBodyAcceleration, inertia_loads
+
+    eye = np.eye(6)
+    forces, moments = inertia_loads(mass_items, RigidBodyAcceleration(eye[:, :3], eye[:, 3:]))
+    return internal_loads(mass_items.position, forces, moments, station_points)
 
 
 def closure_residual(positions, forces, moments, reference):
@@ -68,8 +118,67 @@ def closure_residual(positions, forces, moments, reference):
 
     This is the internal load aft of every load: zero for a free-free body in equilibrium.
     """
+    from slingloads.analyses.inertia_relief import moment_sum
+
     total_f = forces.sum(axis=1)
-    total_m = np.cross(np.asarray(positions) - reference, forces).sum(axis=1)
+    total_m = moment_sum(np.asarray(positions) - reference, forces)
     if moments is not None:
         total_m = total_m + moments.sum(axis=1)
     return np.concatenate([total_f, total_m], axis=1)
+
+
+def free_free_internal_loads(mass_items, positions, forces, moments, station_points):
+    """Internal loads of the free-free airframe: applied loads, gravity and inertia relief.
+
+    Gravity acts at every mass item; the rigid-body accelerations balance gravity and the
+    applied loads (:mod:`slingloads.analyses.inertia_relief`), and their inertia loads enter
+    through the unit-acceleration responses (:func:`unit_inertia_responses`), so only the few
+    applied load points are summed per case.
+
+    Parameters
+    ----------
+    mass_items : MassItems
+    positions : ndarray, shape (p, 3)
+        Points of the applied loads (gravity excluded). [m]
+    forces, moments : ndarray, shape (c, p, 3)
+        Applied forces [N] and moments [N m].
+    station_points : ndarray, shape (s, 3)
+        [m]
+
+    Returns
+    -------
+    loads : ndarray, shape (c, s, 6)
+        Internal loads. [N, N m]
+    acceleration : RigidBodyAcceleration
+    residual : ndarray, shape (c, 6)
+        Internal loads at a cut aft of every load and mass item, which free-free closure
+        makes zero. [N, N m]
+    """
+    from slingloads.analyses.inertia_relief import (
+        RigidBodyAcceleration,
+        gravity_forces,
+        moment_sum,
+    )
+
+    cg = mass_items.cg
+    weight = gravity_forces(mass_items).sum(axis=0)
+    resultant = forces.sum(axis=1) + weight
+    moment_cg = moment_sum(np.asarray(positions) - cg, forces)
+    if moments is not None:
+        moment_cg += moments.sum(axis=1)
+    moment_cg += np.cross(mass_items.position - cg, gravity_forces(mass_items)).sum(axis=0)
+    linear = resultant / mass_items.total_mass
+    angular = moment_cg @ np.linalg.pinv(mass_items.inertia_about_cg, hermitian=True).T
+    acceleration = RigidBodyAcceleration(linear, angular)
+    x_end = max(np.max(positions[:, 0]), mass_items.position[:, 0].max(),
+                station_points[:, 0].max()) + 1.0
+    cuts = np.vstack([station_points, [x_end, station_points[0, 1], station_points[0, 2]]])
+    # gravity and the six unit inertia fields, superposed by one matrix product
+    basis = np.concatenate([
+        unit_inertia_responses(mass_items, cuts),
+        internal_loads(mass_items.position, gravity_forces(mass_items)[None], None, cuts),
+    ]).reshape(7, -1)
+    weights = np.concatenate([linear, angular, np.ones((len(linear), 1))], axis=1)
+    total = np.matmul(weights, basis).reshape(len(linear), len(cuts), 6)
+    total -= _forward_sums(positions, forces, moments, cuts)
+    return total[:, :-1, :], acceleration, total[:, -1, :]

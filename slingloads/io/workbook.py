@@ -165,7 +165,7 @@ class WorkbookReader:
         for r, row in enumerate(rows[1:], start=2):
             if all(v is None or (isinstance(v, str) and not v.strip()) for v in row):
                 continue
-            for key, (col, column, factor, _) in found.items():
+            for col, column, factor, _ in found.values():
                 raw = row[col - 1] if col - 1 < len(row) else None
                 where = cell_name(r, col)
                 values[column.name].append(self._value(raw, column, factor, spec.name, where))
