@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping, Sequence
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -32,7 +33,7 @@ from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
-from slingloads.io.atomic import atomic_outputs
+from slingloads.io.atomic import atomic_outputs, check_not_input
 from slingloads.io.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
@@ -297,7 +298,7 @@ def _default_hull_station(result, pair):
 
 def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
-                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS):
+                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -322,6 +323,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Input files: an output onto one of them is refused.
     max_rows : int
         Rows per sheet including the header (Excel's limit by default).
+    plots : bool
+        Draw the PNG plots and the Plots sheet (False for fast batch runs).
 
     Returns
     -------
@@ -346,21 +349,31 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     plot_stations = {pair: (stations if hull_stations is not None
                             else [_default_hull_station(result, pair)]) for pair in hull_pairs}
 
-    figures = {}
-    for name in COMPONENTS:
-        figures[COMPONENT_TAGS[name]] = plot_sfbm(result, name, units)
-    figures["sfbm_all"] = plot_sfbm_grid(result, units)
+    hull_plots = {}
     for pair, where in plot_stations.items():
         for station in where:
             index = _station_index(result, station)
-            tag = f"hull_{pair[0]}_{pair[1]}_{_safe(result.station_ids[index])}"
-            figures[tag] = plot_hull(result, station, pair, units)
-    pngs = {tag: figure_png(fig, dpi=_PNG_DPI) for tag, fig in figures.items()}
+            hull_plots[f"hull_{pair[0]}_{pair[1]}_{_safe(result.station_ids[index])}"] = (
+                pair, index)
+    tags = [COMPONENT_TAGS[n] for n in COMPONENTS] + ["sfbm_all", *hull_plots] if plots else []
+    names = [f"{stem}-loads.xlsx", f"{stem}-sfbm.csv", f"{stem}-envelope.csv",
+             *(f"{stem}-{tag}.png" for tag in tags)]
+    for name in names:  # fail before the slow work, not after it
+        check_not_input(Path(out_dir) / name, input_paths)
 
+    pngs = {}
+    if plots:
+        for name in COMPONENTS:
+            pngs[COMPONENT_TAGS[name]] = figure_png(plot_sfbm(result, name, units), _PNG_DPI)
+        pngs["sfbm_all"] = figure_png(plot_sfbm_grid(result, units), _PNG_DPI)
+        for tag, (pair, index) in hull_plots.items():
+            pngs[tag] = figure_png(plot_hull(result, index, pair, units), _PNG_DPI)
+    embedded = {}
+    if plots:
+        embedded = {"X shear (Vx)": pngs["X_shear"], "Y shear (Vy)": pngs["Y_shear"],
+                    "All six components": pngs["sfbm_all"]}
+        embedded.update({tag: pngs[tag] for tag in hull_plots})
     sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations)
-    embedded = {"X shear (Vx)": pngs["X_shear"], "Y shear (Vy)": pngs["Y_shear"],
-                "All six components": pngs["sfbm_all"]}
-    embedded.update({tag: png for tag, png in pngs.items() if tag.startswith("hull_")})
 
     with atomic_outputs(out_dir, inputs=input_paths) as out:
         write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,

@@ -178,7 +178,7 @@ def plot_sfbm(result, component, units="SI", show_previous=True, figsize=(9.0, 5
     draw_sfbm(ax, result.stations, result.loads[:, :, j], component, units,
               previous=_previous(result, component) if show_previous else None,
               case_ids=result.case_ids,
-              title=f"Limit {COMPONENT_TITLES[component].lower()} ({component}), "
+              title=f"{COMPONENT_TITLES[component]} ({component}), limit loads, "
                     f"{result.study.name}")
     ax.legend(loc="best", fontsize=8)
     return fig
@@ -238,6 +238,7 @@ def draw_hull(ax, points, case_ids, hull, pair, units="SI"):
     ax.scatter(px, py, s=10, color=_CASE_COLOUR, zorder=2, label=f"load cases ({len(px)})")
     hx = in_report_units(hull[pair[0]].to_numpy(float), kinds[0], units)
     hy = in_report_units(hull[pair[1]].to_numpy(float), kinds[1], units)
+    ax.fill(hx, hy, color=_MAX_COLOUR, alpha=0.08, lw=0)
     ax.plot(np.append(hx, hx[:1]), np.append(hy, hy[:1]), color=_MAX_COLOUR, lw=1.8,
             marker="o", ms=5, zorder=3, label="convex hull")
     cx, cy = hx.mean(), hy.mean()

@@ -1,0 +1,360 @@
+"""Tests of the loads report writer (slingloads.io.loads_report), the generic Excel writer
+(slingloads.io.excel) and atomic output writing (slingloads.io.atomic).
+
+Numbers are read back from the written files with openpyxl / pandas and compared with the
+LoadsResult they came from; unit conversions are checked against constants written out here
+independently of slingloads.units: 1 in = 0.0254 m exactly (international inch, 1959) and
+1 lbf = 0.45359237 kg x 9.80665 m/s^2 = 4.4482216152605 N exactly.
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import zipfile
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
+import pytest
+from numpy.testing import assert_allclose
+from openpyxl import load_workbook
+
+from slingloads.analyses.loads import ListedCase, LoadsStudy
+from slingloads.errors import InputError
+from slingloads.io import loads_report
+from slingloads.io.atomic import TEMP_PREFIX, atomic_outputs
+from slingloads.io.excel import Highlight, Section, write_workbook
+from slingloads.io.loads_report import SFBM_CSV_COLUMNS, write_loads_outputs
+from slingloads.models.airframe import Airframe, Hardpoints, MassItems
+
+INCH = 0.0254  # m, exact
+LBF = 4.4482216152605  # N, exact
+HOSTILE = '=HYPERLINK("x")'
+COMPONENTS = ("Vx", "Vy", "Vz", "Mx", "My", "Mz")
+
+
+def _airframe():
+    n = 30
+    x = np.linspace(0.5, 10, n)
+    items = MassItems([f"m{i}" for i in range(n)], np.full(n, 95.0),
+                      np.c_[x, 0.3 * np.sin(x), 0.2 * np.cos(x)])
+    hp = Hardpoints(hub=[4.0, 0, 2.5], mast_feet=[[3.5, -0.4, 1.5], [3.5, 0.4, 1.5],
+                                                  [4.5, -0.4, 1.5], [4.5, 0.4, 1.5]])
+    return Airframe(items, stations=np.linspace(0.6, 9.9, 25), hardpoints=hp)
+
+
+@pytest.fixture(scope="module")
+def result():
+    """A crude beam with the generated hook cases plus a listed case whose description is a
+    formula-like string, and a previous design envelope at 80 % of the new one (so that the
+    exceedance ratio is 1.25 wherever the loads are not zero)."""
+    listed = (ListedCase("HOSTILE", "AXIAL", "NONE", False, HOSTILE),)
+    study = LoadsStudy(_airframe(), listed=listed, name="crude beam")
+    first = study.run()
+    env = first.envelope()
+    rows = []
+    for name in COMPONENTS:
+        e = env[env["component"] == name]
+        mx = e[e["bound"] == "max"]["value"].to_numpy()
+        mn = e[e["bound"] == "min"]["value"].to_numpy()
+        rows.append(pd.DataFrame({"x [m]": first.stations, "component": name,
+                                  "min": 0.8 * np.minimum(mn, 0), "max": 0.8 * np.maximum(mx, 0)}))
+    return replace(study, previous_envelope=pd.concat(rows, ignore_index=True)).run()
+
+
+@pytest.fixture(scope="module")
+def reports(result, tmp_path_factory):
+    """The report written once in SI and once in US units."""
+    out = {}
+    for units in ("SI", "US"):
+        d = tmp_path_factory.mktemp(units)
+        paths = write_loads_outputs(result, d, "demo", units=units,
+                                    inputs_digest={"input file": "demo.xlsx",
+                                                   "SHA-256": "0" * 64})
+        out[units] = (d, paths)
+    return out
+
+
+def _sheet_rows(path, sheet):
+    wb = load_workbook(path, read_only=True)
+    try:
+        return [list(r) for r in wb[sheet].iter_rows(values_only=True)]
+    finally:
+        wb.close()
+
+
+def _table_after(rows, first_header):
+    """The table of a sections sheet whose header row starts with ``first_header``."""
+    start = next(i for i, r in enumerate(rows) if r and r[0] == first_header)
+    header = [h for h in rows[start] if h is not None]
+    body = []
+    for r in rows[start + 1:]:
+        if not r or all(v is None for v in r):
+            break
+        body.append(r[:len(header)])
+    return pd.DataFrame(body, columns=header)
+
+
+def test_written_files(reports):
+    """The report writes the workbook, both CSV files and at least the X and Y shear plots
+    (the paper's figures 19 and 20), and nothing else is left in the directory."""
+    d, paths = reports["SI"]
+    names = {p.name for p in paths}
+    assert {"demo-loads.xlsx", "demo-sfbm.csv", "demo-envelope.csv", "demo-X_shear.png",
+            "demo-Y_shear.png", "demo-sfbm_all.png"} <= names
+    assert {p.name for p in d.iterdir()} == names
+    for p in paths:
+        if p.suffix == ".png":
+            assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_csv_columns_and_rows(result, reports):
+    """The SFBM CSV has exactly the columns case,station,x_m,Vx_N..Mz_Nm and one row per case
+    and station (c x s), in SI and equal to the limit loads of the result, whatever the
+    workbook units."""
+    for units in ("SI", "US"):
+        d, _ = reports[units]
+        with open(d / "demo-sfbm.csv") as f:
+            assert f.readline().strip() == ",".join(SFBM_CSV_COLUMNS)
+        frame = pd.read_csv(d / "demo-sfbm.csv")
+        c, s, _ = result.loads.shape
+        assert len(frame) == c * s
+        assert_allclose(frame[list(SFBM_CSV_COLUMNS[3:])].to_numpy(),
+                        result.loads.reshape(c * s, 6), rtol=1e-15, atol=0)
+        assert_allclose(frame["x_m"].to_numpy(), np.tile(result.stations, c), rtol=1e-15)
+        env = pd.read_csv(d / "demo-envelope.csv")
+        assert_allclose(env["value"].to_numpy(), result.envelope()["value"].to_numpy(),
+                        rtol=1e-15)
+
+
+def test_si_workbook_numbers(result, reports):
+    """SI workbook: the SFBM, Envelope and Ultimate sheets read back with pandas/openpyxl hold
+    the result's numbers (full double precision: the number format only changes display)."""
+    path = reports["SI"][0] / "demo-loads.xlsx"
+    sfbm = pd.read_excel(path, sheet_name="SFBM")
+    assert list(sfbm.columns) == ["case", "station", "x [m]", "Vx [N]", "Vy [N]", "Vz [N]",
+                                  "Mx [N m]", "My [N m]", "Mz [N m]"]
+    c, s, _ = result.loads.shape
+    assert_allclose(sfbm.iloc[:, 3:].to_numpy(), result.loads.reshape(c * s, 6), rtol=1e-15)
+    assert sfbm["case"].tolist() == result.to_frame()["case"].tolist()
+    env = pd.read_excel(path, sheet_name="Envelope")
+    ref = result.envelope()
+    assert_allclose(env["value"].to_numpy(), ref["value"].to_numpy(), rtol=1e-15)
+    assert env["case"].tolist() == ref["case"].tolist()
+    assert set(env["unit"]) == {"N", "N m"}
+    ult = _table_after(_sheet_rows(path, "Ultimate"), "station")
+    assert_allclose(ult["value"].to_numpy(float), 1.5 * ref["value"].to_numpy(), rtol=1e-14)
+
+
+def test_us_workbook_conversion(result, reports):
+    """US workbook: x [in] = x / 0.0254, forces [lbf] = F / 4.4482216152605 and moments
+    [lbf in] = M / (4.4482216152605 x 0.0254), with the unit in every header; the envelope's
+    per-row value is in lbf for shears and lbf in for moments."""
+    path = reports["US"][0] / "demo-loads.xlsx"
+    sfbm = pd.read_excel(path, sheet_name="SFBM")
+    assert list(sfbm.columns) == ["case", "station", "x [in]", "Vx [lbf]", "Vy [lbf]",
+                                  "Vz [lbf]", "Mx [lbf in]", "My [lbf in]", "Mz [lbf in]"]
+    c, s, _ = result.loads.shape
+    flat = result.loads.reshape(c * s, 6)
+    assert_allclose(sfbm["x [in]"], np.tile(result.stations, c) / INCH, rtol=1e-12)
+    assert_allclose(sfbm.iloc[:, 3:6].to_numpy(), flat[:, :3] / LBF, rtol=1e-12)
+    assert_allclose(sfbm.iloc[:, 6:].to_numpy(), flat[:, 3:] / (LBF * INCH), rtol=1e-12)
+    env = pd.read_excel(path, sheet_name="Envelope")
+    ref = result.envelope()
+    moment = ref["component"].str.startswith("M").to_numpy()
+    expected = ref["value"].to_numpy() / np.where(moment, LBF * INCH, LBF)
+    assert_allclose(env["value"].to_numpy(), expected, rtol=1e-12)
+    assert env["unit"].tolist() == np.where(moment, "lbf in", "lbf").tolist()
+    assert_allclose(env["Mz [lbf in]"], ref["Mz"] / (LBF * INCH), rtol=1e-12)
+    study = _table_after(_sheet_rows(path, "Summary"), "item")
+    mass = study.set_index("item").loc["aircraft mass"]
+    assert mass["unit"] == "lb"
+    assert mass["setting"] == pytest.approx(30 * 95.0 / 0.45359237, rel=1e-12)
+
+
+def test_summary_closure_and_governing(result, reports):
+    """Summary: the input digest as given, the closure check with PASS (residuals of the
+    crude beam are at round-off), and one governing case per component matching
+    LoadsResult.governing_cases()."""
+    rows = _sheet_rows(reports["SI"][0] / "demo-loads.xlsx", "Summary")
+    digest = _table_after(rows, "input").set_index("input")["entry"]
+    assert digest["SHA-256"] == "0" * 64
+    closure = _table_after(rows[next(i for i, r in enumerate(rows)
+                                     if r and str(r[0]).startswith("Closure")):], "item")
+    assert closure.set_index("item").loc["result", "setting"] == "PASS"
+    gov = _table_after(rows, "component")
+    ref = result.governing_cases()
+    assert gov["case"].tolist() == ref["case"].tolist()
+    assert_allclose(gov["value"].to_numpy(float), ref["value"].to_numpy(), rtol=1e-15)
+
+
+def test_hostile_description_is_text(reports):
+    """A case description '=HYPERLINK("x")' is stored as a string cell (data_type 's') with
+    the text unchanged, and no sheet of the workbook contains a formula element <f>:
+    spreadsheet formula injection through input text is impossible."""
+    path = reports["SI"][0] / "demo-loads.xlsx"
+    wb = load_workbook(path)
+    hits = [cell for row in wb["LoadCases"].iter_rows() for cell in row
+            if cell.value == HOSTILE]
+    assert len(hits) == 1
+    assert hits[0].data_type == "s"
+    with zipfile.ZipFile(path) as z:
+        for name in z.namelist():
+            if name.startswith("xl/worksheets/") and name.endswith(".xml"):
+                xml = z.read(name).decode()
+                assert "<f>" not in xml and "<f " not in xml, name
+
+
+def test_generic_writer_text_never_formula(tmp_path):
+    """write_workbook stores '=...', '+cmd|...', '-1+2' and '@SUM(A1)' strings as text cells,
+    NaN as an empty cell and inf as the text 'inf' (Excel has no NaN or inf)."""
+    frame = pd.DataFrame({"text": [HOSTILE, "+cmd|' /C calc'!A0", "-1+2", "@SUM(A1)"],
+                          "number": [1.5, np.nan, np.inf, -2.0]})
+    path = tmp_path / "t.xlsx"
+    write_workbook(path, {"T": frame})
+    wb = load_workbook(path)
+    col = [c for c in wb["T"]["A"]][1:]
+    assert [c.value for c in col] == frame["text"].tolist()
+    assert all(c.data_type == "s" for c in col)
+    assert [c.value for c in wb["T"]["B"]][1:] == [1.5, None, "inf", -2.0]
+    assert wb["T"].freeze_panes == "B2"
+    assert wb["T"]["A1"].font.b
+
+
+def test_split_keeps_every_row(result, tmp_path):
+    """With a row limit of 50 per sheet (header included), the SFBM table of c x s rows is
+    split over SFBM_1, SFBM_2... with the header on each, and concatenating them gives every
+    row of the result exactly once, in order (never truncated)."""
+    write_loads_outputs(result, tmp_path, "split", max_rows=50, plots=False)
+    path = tmp_path / "split-loads.xlsx"
+    names = load_workbook(path, read_only=True).sheetnames
+    c, s, _ = result.loads.shape
+    parts = [n for n in names if n.startswith("SFBM_")]
+    assert "SFBM" not in names
+    assert parts == [f"SFBM_{k + 1}" for k in range(int(np.ceil(c * s / 49)))]
+    frames = [pd.read_excel(path, sheet_name=n) for n in parts]
+    assert all(len(f) <= 49 for f in frames)
+    whole = pd.concat(frames, ignore_index=True)
+    assert len(whole) == c * s
+    assert_allclose(whole.iloc[:, 3:].to_numpy(), result.loads.reshape(c * s, 6), rtol=1e-15)
+
+
+def test_exceedance_sheet(result, reports, tmp_path):
+    """Exceedance: the ratio read back equals LoadsResult.comparison() (1.25 where the
+    previous envelope is 80 % of the new one), a red conditional format covers the ratio
+    column, and without a previous envelope the sheet says 'no previous envelope given'."""
+    path = reports["SI"][0] / "demo-loads.xlsx"
+    table = _table_after(_sheet_rows(path, "Exceedance"), "station")
+    ref = result.comparison()
+    got = pd.to_numeric(table["exceedance ratio"].replace("inf", np.inf))
+    assert_allclose(got.to_numpy(float), ref["exceedance ratio"].to_numpy(), rtol=1e-15)
+    assert np.nanmax(got.to_numpy(float)[np.isfinite(got)]) == pytest.approx(1.25)
+    ws = load_workbook(path)["Exceedance"]
+    col = list(table.columns).index("exceedance ratio")
+    letter = "ABCDEFGHIJKLMNOP"[col]
+    ranges = [str(cf.sqref) for cf in ws.conditional_formatting]
+    assert any(r.startswith(letter) for r in ranges)
+    bare = replace(result, study=replace(result.study, previous_envelope=None))
+    write_loads_outputs(bare, tmp_path, "bare", hull_pairs=(), plots=False)
+    rows = _sheet_rows(tmp_path / "bare-loads.xlsx", "Exceedance")
+    assert rows[0][0] == "no previous envelope given"
+
+
+def test_atomic_failure_keeps_earlier_report(result, tmp_path, monkeypatch):
+    """An exception after the workbook is written but before the files are published leaves
+    the earlier report byte for byte intact and no temporary file or directory behind."""
+    first = write_loads_outputs(result, tmp_path, "demo", hull_pairs=(), plots=False)
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert {p.name for p in first} == set(before)
+    real = loads_report.write_workbook
+
+    def write_then_fail(path, *args, **kwargs):
+        real(path, *args, **kwargs)
+        raise OSError("disk full (simulated)")
+
+    monkeypatch.setattr(loads_report, "write_workbook", write_then_fail)
+    with pytest.raises(OSError, match="simulated"):
+        write_loads_outputs(result, tmp_path, "demo", units="US", hull_pairs=(),
+                            plots=False)
+    after = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert after == before
+    assert not any(n.startswith(TEMP_PREFIX) for n in after)
+
+
+def test_atomic_outputs_helper(tmp_path):
+    """atomic_outputs: inside the block the final path is untouched; on success the file is
+    moved into place; on an exception nothing is published and the temporary directory is
+    gone; a new output directory that failed is removed again."""
+    target = tmp_path / "a.txt"
+    target.write_text("old")
+    with atomic_outputs(tmp_path) as out:
+        out.path("a.txt").write_text("new")
+        assert target.read_text() == "old"
+    assert target.read_text() == "new" and out.written == [target]
+    with pytest.raises(RuntimeError, match="boom"), atomic_outputs(tmp_path) as out:
+        out.path("a.txt").write_text("newer")
+        out.path("b.txt").write_text("b")
+        raise RuntimeError("boom")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.txt"]
+    assert target.read_text() == "new"
+    fresh = tmp_path / "fresh"
+    with pytest.raises(RuntimeError), atomic_outputs(fresh) as out:
+        raise RuntimeError("boom")
+    assert not fresh.exists()
+
+
+def test_refuses_to_overwrite_input(result, tmp_path):
+    """An output whose path is an input file, directly or through a symbolic link, raises
+    InputError naming the input; the input is unchanged and nothing is written."""
+    source = tmp_path / "demo-loads.xlsx"
+    source.write_bytes(b"input workbook")
+    with pytest.raises(InputError, match="demo-loads.xlsx") as info:
+        write_loads_outputs(result, tmp_path, "demo", input_paths=[source])
+    assert "input" in str(info.value)
+    assert source.read_bytes() == b"input workbook"
+    assert [p.name for p in tmp_path.iterdir()] == ["demo-loads.xlsx"]
+    link_dir = tmp_path / "links"
+    link_dir.mkdir()
+    (link_dir / "x.csv").symlink_to(source)
+    with pytest.raises(InputError, match="input"), atomic_outputs(link_dir,
+                                                                  inputs=[source]) as out:
+        out.path("x.csv")
+
+
+def test_rejects_bad_arguments(result, tmp_path):
+    """Unknown unit systems and sheet names Excel refuses are errors naming the value."""
+    with pytest.raises(InputError, match="'metric'"):
+        write_loads_outputs(result, tmp_path, "x", units="metric")
+    with pytest.raises(InputError, match="sheet name"):
+        write_workbook(tmp_path / "t.xlsx", {"a/b": pd.DataFrame({"a": [1]})})
+    assert not list(tmp_path.iterdir())
+
+
+def test_generic_writer_sections_and_highlight(tmp_path):
+    """Sections (title, note, table) are written one under another, and the highlight rule
+    is a conditional format on the named column of that table only."""
+    path = tmp_path / "s.xlsx"
+    table = pd.DataFrame({"id": ["a", "b"], "ratio": [0.5, 1.5]})
+    write_workbook(path, {"S": [Section("Title", table, note="line 1\nline 2")]},
+                   highlight={"S": Highlight(["ratio"], 1.0)})
+    rows = _sheet_rows(path, "S")
+    assert rows[:3] == [["Title"], ["line 1"], ["line 2"]]
+    assert rows[3:] == [["id", "ratio"], ["a", 0.5], ["b", 1.5]]
+    ws = load_workbook(path)["S"]
+    assert [str(cf.sqref) for cf in ws.conditional_formatting] == ["B5:B6"]
+
+
+@pytest.mark.skipif(shutil.which("soffice") is None, reason="LibreOffice (soffice) not found")
+def test_libreoffice_opens_workbook(reports, tmp_path):
+    """LibreOffice converts the workbook headless to PDF without error: the file opens
+    without repair (a workbook Calc must repair fails the conversion or is empty)."""
+    path = reports["US"][0] / "demo-loads.xlsx"
+    done = subprocess.run(
+        ["soffice", f"-env:UserInstallation=file://{tmp_path}/profile", "--headless",
+         "--convert-to", "pdf", "--outdir", str(tmp_path), str(path)],
+        capture_output=True, text=True, timeout=180)
+    assert done.returncode == 0, done.stderr
+    pdf = tmp_path / "demo-loads.pdf"
+    assert pdf.exists() and pdf.read_bytes()[:5] == b"%PDF-"
+    assert pdf.stat().st_size > 10_000
