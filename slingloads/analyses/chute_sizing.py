@@ -1,0 +1,675 @@
+"""Drogue-parachute sizing for yaw: linearisation, neutral static stability, line length,
+1-DOF gust runs and the sizing sweep (paper sections 3.2-4.2).
+
+Method (``docs/parachute-sizing.md``):
+
+1. Linearise the yawing-moment coefficients of the fuselage and of the cut-down fin against
+   sideslip over a chosen range (paper figures 4 and 5): :func:`yaw_linearisation`.
+2. Neutral yaw static stability: the parachute flat-plate area for which the total yawing-moment
+   derivative about the suspension axis is zero, the parachute's drag acting at the fin
+   attachment with the wake's dynamic-pressure ratio: :func:`neutral_area`.
+3. Parachute line length from the wake ratio and the carrier-cable check: :func:`line_length`.
+4. 1-DOF yaw runs with the full nonlinear tables and lateral gusts: :func:`run_yaw`; the sizing
+   sweep from 1x to 2x the static area: :func:`sizing_sweep`.
+
+Sign conventions are those of :mod:`slingloads.models.yaw_dynamics`: psi, N nose right
+positive; beta positive wind from the right; stable means dN/dbeta > 0.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+import pandas as pd
+
+from slingloads.errors import InputError
+from slingloads.models.aero_tables import linear_fit
+from slingloads.models.gusts import standard_gusts
+from slingloads.models.wake import CABLE_MARGIN, TARGET_RATIO, check_cable_length
+from slingloads.models.yaw_dynamics import (
+    SolverSettings,
+    YawModel,
+    integrate_reference,
+    integrate_rk4,
+)
+
+#: Default sideslip range of the local linearisation. [rad]
+FIT_RANGE = (np.radians(-10.0), np.radians(10.0))
+
+
+def _deg(x):
+    return np.degrees(x)
+
+
+# --------------------------------------------------------------------------- linearisation
+@dataclass(frozen=True)
+class LinearisationResult:
+    """Table and straight-line fit of the fuselage and fin yawing-moment coefficients.
+
+    The fuselage coefficient is the table's Cn about the suspension axis (side-force transfer
+    included), on the fuselage's S and L; the fin's is Cn_fin = N_fin / (q S_fin l_fin) =
+    -eta CY on the fin area and its arm l_fin from the axis (dimensionless either way).
+
+    Attributes
+    ----------
+    beta : ndarray
+        Sideslip of the curves. [rad]
+    fuselage_cn, fin_cn : ndarray or None
+        Tabulated coefficients at ``beta``. [-]
+    fuselage_slope, fin_slope : float or None
+        Least-squares dCn/dbeta over ``fit_range``. [1/rad]
+    fuselage_intercept, fin_intercept : float or None
+    fit_range : tuple of float
+        [rad]
+    """
+
+    beta: np.ndarray
+    fuselage_cn: np.ndarray | None
+    fin_cn: np.ndarray | None
+    fuselage_slope: float | None
+    fuselage_intercept: float | None
+    fin_slope: float | None
+    fin_intercept: float | None
+    fit_range: tuple
+
+    def to_frame(self):
+        """Slopes and intercepts, one row per component."""
+        rows = []
+        for name, slope, icpt in (("fuselage", self.fuselage_slope, self.fuselage_intercept),
+                                  ("fin", self.fin_slope, self.fin_intercept)):
+            if slope is not None:
+                rows.append({"component": name, "dCn/dbeta [1/rad]": slope,
+                             "dCn/dbeta [1/deg]": slope * np.pi / 180,
+                             "Cn at beta 0 [-]": icpt,
+                             "fit from [deg]": _deg(self.fit_range[0]),
+                             "fit to [deg]": _deg(self.fit_range[1])})
+        return pd.DataFrame(rows)
+
+    def curves_frame(self):
+        """Table against fit along sideslip (the paper's figures 4 and 5)."""
+        frame = pd.DataFrame({"beta [deg]": _deg(self.beta)})
+        if self.fuselage_cn is not None:
+            frame["fuselage Cn table [-]"] = self.fuselage_cn
+            frame["fuselage Cn fit [-]"] = self.fuselage_intercept + self.fuselage_slope * self.beta
+        if self.fin_cn is not None:
+            frame["fin Cn table [-]"] = self.fin_cn
+            frame["fin Cn fit [-]"] = self.fin_intercept + self.fin_slope * self.beta
+        return frame
+
+    def frames(self):
+        return {"yaw linearisation": self.to_frame(), "yaw Cn curves": self.curves_frame()}
+
+
+def yaw_linearisation(model, fit_range=FIT_RANGE):
+    """Local linearisation of the yawing-moment coefficients against sideslip.
+
+    Parameters
+    ----------
+    model : YawModel
+    fit_range : (float, float)
+        Sideslip range of the least-squares fit. [rad]
+
+    Returns
+    -------
+    LinearisationResult
+    """
+    lo, hi = _check_range(fit_range)
+    fus_cn = fin_cn = fus = fin = None
+    grids = []
+    if model.fuselage is not None:
+        grid, n_per_q = model._fus[:2]
+        fus_cn = n_per_q / (model.fuselage.area * model.fuselage.length)
+        fus = linear_fit(grid, fus_cn, lo, hi, "fuselage")
+        grids.append((grid, fus_cn))
+    if model.fin is not None:
+        grid, k, dx = model._fin[:3]
+        if dx == 0:
+            raise InputError("the fin's centre of pressure lies on the suspension axis", dx)
+        fin_cn = -k / model.fin.area  # -eta CY: N_fin / (q S_fin dx)
+        fin = linear_fit(grid, fin_cn, lo, hi, "fin")
+        grids.append((grid, fin_cn))
+    if not grids:
+        raise InputError("the yaw model has neither fuselage nor fin to linearise")
+    beta = np.unique(np.concatenate([g for g, _ in grids]))
+    blo, bhi = model.beta_range()
+    beta = beta[(beta >= blo) & (beta <= bhi)]
+    fus_vals = None if fus is None else np.interp(beta, model._fus[0], fus_cn)
+    fin_vals = None if fin is None else np.interp(beta, model._fin[0], fin_cn)
+    return LinearisationResult(
+        beta, fus_vals, fin_vals, None if fus is None else fus[0],
+        None if fus is None else fus[1], None if fin is None else fin[0],
+        None if fin is None else fin[1], (lo, hi))
+
+
+def _check_range(fit_range):
+    lo, hi = (float(v) for v in fit_range)
+    if not (np.isfinite(lo) and np.isfinite(hi) and lo < hi):
+        raise InputError("fit range must be two finite sideslips, low < high [rad]",
+                         (lo, hi))
+    return lo, hi
+
+
+# --------------------------------------------------------------------- linear yaw model
+@dataclass(frozen=True)
+class LinearYaw:
+    """Linearised 1-DOF yaw: I psi'' + c psi' + k psi = k gamma(t) about the trim.
+
+    Attributes
+    ----------
+    inertia : float
+        [kg m^2]
+    stiffness : float
+        k = dN/dbeta, fuselage + fin + parachute. [N m/rad]
+    damping : float
+        c = -dN/dr, fin + parachute. [N m s/rad]
+    parts : dict
+        Stiffness and damping of each component. [N m/rad], [N m s/rad]
+    tas : float
+        True airspeed, for the gust angle. [m/s]
+    """
+
+    inertia: float
+    stiffness: float
+    damping: float
+    parts: dict
+    tas: float
+    beta_trim: float = 0.0
+
+    @property
+    def natural_frequency(self):
+        """Undamped natural frequency sqrt(k/I), NaN when k <= 0. [rad/s]"""
+        return float(np.sqrt(self.stiffness / self.inertia)) if self.stiffness > 0 else np.nan
+
+    @property
+    def damping_ratio(self):
+        """c / (2 sqrt(k I)), NaN when k <= 0. [-]"""
+        if self.stiffness <= 0:
+            return np.nan
+        return float(self.damping / (2.0 * np.sqrt(self.stiffness * self.inertia)))
+
+    @property
+    def eigenvalues(self):
+        """Roots of I s^2 + c s + k = 0. [1/s]"""
+        return np.roots([self.inertia, self.damping, self.stiffness])
+
+    @property
+    def stable(self):
+        """True when both roots have negative real parts (k > 0 and c > 0)."""
+        return bool(self.stiffness > 0 and self.damping > 0)
+
+    # The same interface as YawModel, so the same integrators run it.
+    condition = property(lambda self: _Tas(self.tas))
+
+    def beta_range(self):
+        return -np.pi / 2, np.pi / 2
+
+    def relative_wind(self, gust):
+        v = np.asarray(gust, dtype=float)
+        return np.arctan2(v, self.tas), np.hypot(self.tas, v)
+
+    def derivatives(self, psi, rate, gamma, v_rel, area):
+        acc = (self.stiffness * (gamma - psi - self.beta_trim) - self.damping * rate) / self.inertia
+        return rate, acc, np.zeros(np.shape(acc), dtype=bool)
+
+
+@dataclass(frozen=True)
+class _Tas:
+    tas: float
+
+
+def linear_yaw(model, area, fit_range=FIT_RANGE):
+    """Linearise the yaw model about beta = 0, r = 0 with parachute ``area`` [m^2].
+
+    The fuselage and fin stiffnesses come from the least-squares slopes of
+    :func:`yaw_linearisation`; the parachute's from its drag at the attachment,
+    ``q eta_w CD A dx_c``. Damping: fin ``-1/2 rho V S_f eta CY_beta dx_f^2`` and parachute
+    ``1/2 rho V eta_w CD A dx_c^2`` (attachment-point velocity, Apollo legacy model).
+
+    Returns
+    -------
+    LinearYaw
+    """
+    area = float(area)
+    if not np.isfinite(area) or area < 0:
+        raise InputError("parachute area must be >= 0 [m^2]", area)
+    lin = yaw_linearisation(model, fit_range)
+    q, rho, v = model.condition.q, model.condition.density, model.condition.tas
+    parts = {}
+    if lin.fuselage_slope is not None:
+        f = model.fuselage
+        parts["fuselage"] = (q * f.area * f.length * lin.fuselage_slope, 0.0)
+    if lin.fin_slope is not None:
+        dx = model._fin[2]
+        k = q * model.fin.area * dx * lin.fin_slope
+        c = (0.5 * rho * v * model.fin.area * dx**2 * lin.fin_slope
+             if model.fin_rate_damping else 0.0)
+        parts["fin"] = (k, c)
+    if model.parachute is not None:
+        cd, dx, _ = model._chute
+        parts["parachute"] = (q * cd * area * dx, 0.5 * rho * v * cd * area * dx**2)
+    elif area > 0:
+        raise InputError("a parachute area was given but the model has no parachute", area)
+    stiffness = sum(p[0] for p in parts.values())
+    damping = sum(p[1] for p in parts.values())
+    return LinearYaw(model.yaw_inertia, stiffness, damping, parts, v)
+
+
+# ---------------------------------------------------------------------- neutral area
+@dataclass(frozen=True)
+class NeutralAreaResult:
+    """Parachute area for neutral yaw static stability, with its breakdown.
+
+    Attributes
+    ----------
+    area : float
+        Flat-plate area that makes the total dN/dbeta zero (negative: already stable). [m^2]
+    derivatives : dict
+        dN/dbeta of the fuselage, the fin and the parachute at ``area``. [N m/rad]
+    per_area : float
+        Parachute dN/dbeta per unit area, q eta_w CD dx_c. [N m/rad/m^2]
+    q : float
+        Dynamic pressure. [Pa]
+    beta : ndarray
+        Sideslip of the moment curves. [rad]
+    moments : dict of ndarray
+        Nonlinear static yawing moments at ``area`` against ``beta``, per component. [N m]
+    linearisation : LinearisationResult
+    """
+
+    area: float
+    derivatives: dict
+    per_area: float
+    q: float
+    chute_arm: float
+    beta: np.ndarray
+    moments: dict
+    linearisation: LinearisationResult
+
+    @property
+    def already_stable(self):
+        """True when fuselage and fin alone are statically stable (no parachute needed)."""
+        return self.area <= 0
+
+    def to_frame(self):
+        """Breakdown: one row per contribution and their sum."""
+        rows = [{"component": k, "dN/dbeta [N m/rad]": v,
+                 "dN/dbeta [N m/deg]": v * np.pi / 180} for k, v in self.derivatives.items()]
+        total = sum(self.derivatives.values())
+        rows.append({"component": "total", "dN/dbeta [N m/rad]": total,
+                     "dN/dbeta [N m/deg]": total * np.pi / 180})
+        frame = pd.DataFrame(rows)
+        frame["area [m^2]"] = [np.nan] * (len(rows) - 2) + [self.area, np.nan]
+        return frame
+
+    def summary_frame(self):
+        return pd.DataFrame([{"neutral area [m^2]": self.area, "q [Pa]": self.q,
+                              "chute arm [m]": self.chute_arm,
+                              "chute dN/dbeta per area [N m/rad/m^2]": self.per_area,
+                              "already stable": self.already_stable}])
+
+    def curves_frame(self):
+        frame = pd.DataFrame({"beta [deg]": _deg(self.beta)})
+        for k, v in self.moments.items():
+            frame[f"N {k} [N m]"] = v
+        return frame
+
+    def frames(self):
+        return {"chute neutral area": self.summary_frame(),
+                "chute breakdown": self.to_frame(),
+                "chute static moments": self.curves_frame(),
+                **self.linearisation.frames()}
+
+
+def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
+    """Parachute flat-plate area for neutral yaw static stability (paper section 4.1).
+
+    .. math:: \\frac{dN_{fus}}{d\\beta} + \\frac{dN_{fin}}{d\\beta}
+              + q\\,\\eta_w C_D A\\, l_c = 0
+
+    with the fuselage and fin derivatives from the linearised tables and l_c the parachute
+    attachment's distance aft of the suspension axis.
+
+    Parameters
+    ----------
+    model : YawModel
+        Must have a parachute (its CD and wake ratio are used; its area is not).
+    fit_range : (float, float)
+        [rad]
+    beta_plot : array_like, optional
+        Sideslip of the moment curves (default: -45..45 deg within the tables). [rad]
+
+    Returns
+    -------
+    NeutralAreaResult
+    """
+    if model.parachute is None:
+        raise InputError("neutral-area sizing needs a parachute (its CD and wake ratio)")
+    dx = model._chute[1]
+    if dx <= 0:
+        raise InputError("the parachute attachment must lie aft of the suspension axis "
+                         "(dx > 0 [m]) to stabilise", float(dx))
+    base = linear_yaw(model, 0.0, fit_range)
+    per_area = model.condition.q * model._chute[0] * dx
+    others = sum(k for name, (k, _) in base.parts.items() if name != "parachute")
+    area = -others / per_area
+    derivs = {name: k for name, (k, _) in base.parts.items() if name != "parachute"}
+    derivs["parachute"] = per_area * area
+    lo, hi = model.beta_range()
+    if beta_plot is None:
+        beta_plot = np.radians(np.arange(-45.0, 45.0 + 1e-9, 0.5))
+        beta_plot = beta_plot[(beta_plot >= lo) & (beta_plot <= hi)]
+    beta_plot = np.asarray(beta_plot, dtype=float)
+    n_fus, n_fin, n_chute = model.static_moments(beta_plot, max(area, 0.0))
+    moments = {}
+    if model.fuselage is not None:
+        moments["fuselage"] = n_fus
+    if model.fin is not None:
+        moments["fin"] = n_fin
+    moments["parachute"] = n_chute
+    moments["total"] = n_fus + n_fin + n_chute
+    return NeutralAreaResult(float(area), derivs, float(per_area), model.condition.q, float(dx),
+                             beta_plot, moments, yaw_linearisation(model, fit_range))
+
+
+# ------------------------------------------------------------------------ line length
+@dataclass(frozen=True)
+class LineLengthResult:
+    """Parachute line length from the wake, and the carrier-cable check."""
+
+    line_length: float
+    target: float
+    wake_source: str
+    distance: np.ndarray
+    ratio: np.ndarray
+    cable: object | None
+
+    def to_frame(self):
+        row = {"line length [m]": self.line_length, "target q ratio [-]": self.target,
+               "wake source": self.wake_source}
+        if self.cable is not None:
+            row.update({"cable length [m]": self.cable.cable_length,
+                        "required cable [m]": self.cable.required,
+                        "cable check": "ok" if self.cable.ok else "FAIL",
+                        "message": self.cable.message})
+        return pd.DataFrame([row])
+
+    def curve_frame(self):
+        return pd.DataFrame({"distance [m]": self.distance, "q ratio [-]": self.ratio})
+
+    def frames(self):
+        return {"chute line": self.to_frame(), "wake q ratio": self.curve_frame()}
+
+
+def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGIN,
+                distance=None):
+    """Shortest parachute line at which the wake ratio reaches ``target``, and the cable check.
+
+    Parameters
+    ----------
+    wake : TabulatedWake or BluffBodyWake
+    target : float
+        Dynamic-pressure ratio to reach (paper: 0.95). [-]
+    cable_length : float, optional
+        Carrier cable; if given it is checked against the line with ``margin``. [m]
+    margin : float
+        [-]
+    distance : array_like, optional
+        Distances for the ratio curve (default: the table, or up to 1.5 x the line). [m]
+    """
+    length = wake.line_length(target)
+    if distance is None:
+        if hasattr(wake, "distance"):
+            distance = wake.distance
+        else:
+            distance = np.linspace(wake.min_distance, max(1.5 * length, 2 * wake.min_distance),
+                                   200)
+    distance = np.asarray(distance, dtype=float)
+    cable = None if cable_length is None else check_cable_length(cable_length, length, margin)
+    return LineLengthResult(float(length), float(target), wake.source, distance,
+                            np.asarray(wake(distance)), cable)
+
+
+# ----------------------------------------------------------------------------- runs
+@dataclass(frozen=True)
+class MetricSettings:
+    """How the run metrics are taken.
+
+    Parameters
+    ----------
+    settle_fraction : float
+        Settling band as a share of the peak sideslip excursion. [-]
+    final_tolerance : float
+        A run whose sideslip has not come back within this of the trim at the end (gusts that
+        end or become steady) is divergent. [rad]
+    peak_threshold : float
+        Yaw-rate peaks smaller than this are ignored by the logarithmic decrement. [rad/s]
+    """
+
+    settle_fraction: float = 0.05
+    final_tolerance: float = np.radians(1.0)
+    peak_threshold: float = 1e-5
+
+
+@dataclass(frozen=True)
+class YawRuns:
+    """Histories and metrics of a batch of 1-DOF yaw runs.
+
+    Attributes
+    ----------
+    areas : ndarray, shape (runs,)
+        [m^2]
+    gusts : tuple
+    histories : Histories
+    metrics : pandas.DataFrame
+        One row per run: peak |beta| and |psi|; linear damping ratio c / (2 sqrt(k I)) and
+        natural frequency; damping ratio from the logarithmic decrement of the first two
+        positive yaw-rate peaks after the gust ends (NaN for continuous gusts or no
+        oscillation); settling time from the gust onset until |beta - beta_trim| stays within
+        ``settle_fraction`` of its peak (NaN if never, or continuous gust); verdict
+        "stable", "neutral" (zero linear stiffness) or "divergent" (linearly unstable, left
+        the tables, or sideslip not restored within ``final_tolerance`` at the end).
+    """
+
+    areas: np.ndarray
+    gusts: tuple
+    histories: object
+    metrics: pd.DataFrame
+    beta_trim: float
+    settings: SolverSettings
+
+    def to_frame(self):
+        """Metrics per run, unit-labelled columns."""
+        return self.metrics.copy()
+
+    def history_frame(self, runs=None):
+        """Wide table of sideslip and yaw [deg] against time for the chosen run indices."""
+        runs = range(len(self.areas)) if runs is None else runs
+        h = self.histories
+        frame = pd.DataFrame({"time [s]": h.time})
+        for j in runs:
+            tag = f"A={self.areas[j]:.3f} m^2 {self.gusts[j].kind}"
+            frame[f"beta [deg] {tag}"] = _deg(h.beta[j])
+            frame[f"psi [deg] {tag}"] = _deg(h.psi[j])
+        return frame
+
+    def frames(self):
+        return {"yaw runs": self.to_frame(), "yaw histories": self.history_frame()}
+
+
+def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
+    """Metrics of every run, vectorised over runs (no per-run loop on the histories)."""
+    t = hist.time
+    dbeta = hist.beta - beta_trim
+    peak_beta = np.abs(hist.beta).max(axis=1)
+    peak_psi = np.abs(hist.psi).max(axis=1)
+    onset = np.array([g.breakpoints[0] for g in gusts])
+    free = np.array([np.nan if g.end is None else g.end for g in gusts])
+    # Settling: last time |dbeta| is outside the band, from the gust onset.
+    excursion = np.abs(dbeta).max(axis=1)
+    band = metric.settle_fraction * excursion
+    outside = np.abs(dbeta) > band[:, None]
+    last = t.size - 1 - np.argmax(outside[:, ::-1], axis=1)
+    settled_at = np.where(last + 1 < t.size, t[np.minimum(last + 1, t.size - 1)], np.nan)
+    settling = np.where(np.isfinite(free) & (last + 1 < t.size),
+                        np.maximum(settled_at - onset, 0.0), np.nan)
+    # Logarithmic decrement of successive positive yaw-rate peaks after the gust ends.
+    r = hist.rate
+    peaks = np.zeros_like(r, dtype=bool)
+    peaks[:, 1:-1] = (r[:, 1:-1] > r[:, :-2]) & (r[:, 1:-1] >= r[:, 2:])
+    peaks &= (r > metric.peak_threshold) & (t[None, :] > free[:, None])
+    ym, y0, yp = np.roll(r, 1, axis=1), r, np.roll(r, -1, axis=1)
+    curvature = ym - 2 * y0 + yp
+    with np.errstate(divide="ignore", invalid="ignore"):
+        refined = np.where(curvature < 0, y0 - (yp - ym) ** 2 / (8 * curvature), y0)
+    rank = np.cumsum(peaks, axis=1)
+    p1 = np.where(peaks & (rank == 1), refined, -np.inf).max(axis=1)
+    p2 = np.where(peaks & (rank == 2), refined, -np.inf).max(axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        delta = np.where((p1 > 0) & (p2 > 0), np.log(p1 / p2), np.nan)
+    zeta_log = delta / np.sqrt(4 * np.pi**2 + delta**2)
+    # Linear damping ratios per distinct area (cheap closed form).
+    lin = [linear_yaw(model, a, fit_range) for a in np.unique(areas)]
+    by_area = dict(zip(np.unique(areas), lin, strict=True))
+    zeta_lin = np.array([by_area[a].damping_ratio for a in areas])
+    omega = np.array([by_area[a].natural_frequency for a in areas])
+    lin_stable = np.array([by_area[a].stable for a in areas])
+    scale = max(sum(abs(k) for k, _ in lin[0].parts.values()), 1e-300)
+    neutral = np.array([abs(by_area[a].stiffness) <= 1e-9 * scale for a in areas])
+    final_off = np.abs(dbeta[:, -1]) > metric.final_tolerance
+    divergent = hist.left_table | ~lin_stable | (np.isfinite(free) & final_off)
+    verdict = np.where(divergent, "divergent", "stable")
+    verdict = np.where(neutral & ~hist.left_table, "neutral", verdict)
+    return pd.DataFrame({
+        "area [m^2]": areas,
+        "gust": [g.kind for g in gusts],
+        "gust label": [g.label for g in gusts],
+        "peak beta [deg]": _deg(peak_beta),
+        "peak psi [deg]": _deg(peak_psi),
+        "final beta [deg]": _deg(hist.beta[:, -1]),
+        "final psi [deg]": _deg(hist.psi[:, -1]),
+        "damping ratio linear [-]": zeta_lin,
+        "damping ratio log decrement [-]": zeta_log,
+        "natural frequency [rad/s]": omega,
+        "settling time [s]": settling,
+        "left table": hist.left_table,
+        "verdict": verdict,
+    })
+
+
+def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=None,
+            integrator="rk4"):
+    """Run the nonlinear 1-DOF yaw model from trim for each (area, gust) pair.
+
+    Parameters
+    ----------
+    model : YawModel
+    areas : array_like
+        Parachute flat-plate areas, one per run or one for all. [m^2]
+    gusts : gust or sequence of gusts
+        One per run or one for all (:mod:`slingloads.models.gusts`).
+    settings : SolverSettings, optional
+    fit_range : (float, float)
+        Range of the linearisation behind the linear damping ratio. [rad]
+    metrics : MetricSettings, optional
+    integrator : {"rk4", "solve_ivp"}
+        Vectorised fixed-step RK4 (all runs at once), or one solve_ivp call per run.
+
+    Returns
+    -------
+    YawRuns
+    """
+    if integrator not in ("rk4", "solve_ivp"):
+        raise InputError(f"{integrator=!r} is not a valid option. Valid options are: "
+                         f"'rk4', 'solve_ivp'", integrator)
+    settings = SolverSettings() if settings is None else settings
+    metrics = MetricSettings() if metrics is None else metrics
+    areas = np.atleast_1d(np.asarray(areas, dtype=float))
+    gust_list = tuple(gusts) if isinstance(gusts, (list, tuple)) else (gusts,)
+    runs = max(areas.size, len(gust_list))
+    areas = np.broadcast_to(areas, (runs,)).copy() if areas.size == 1 else areas
+    gust_list = gust_list * runs if len(gust_list) == 1 else gust_list
+    # Trim: the static equilibrium nearest beta = 0 (per distinct area).
+    trims = {a: model.trim_beta(a) for a in np.unique(areas)}
+    beta_trim = np.array([trims[a] for a in areas])
+    run = integrate_rk4 if integrator == "rk4" else integrate_reference
+    hist = run(model, areas, gust_list, psi0=-beta_trim, rate0=0.0, settings=settings)
+    frame = _run_metrics(model, areas, gust_list, hist, beta_trim[:, None], fit_range, metrics)
+    return YawRuns(areas, gust_list, hist, frame, float(np.max(np.abs(beta_trim))), settings)
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    """Sizing sweep: metrics against parachute area for each gust shape."""
+
+    static: NeutralAreaResult
+    factors: np.ndarray
+    runs: YawRuns
+    gusts: tuple = field(default_factory=tuple)
+
+    def to_frame(self):
+        frame = self.runs.to_frame()
+        frame.insert(1, "area / neutral area [-]", frame["area [m^2]"] / self.static.area)
+        return frame
+
+    def history_frame(self, factors=(1.0, 1.5, 2.0)):
+        """Histories of the runs whose area ratio is nearest each of ``factors``."""
+        ratio = self.runs.areas / self.static.area
+        chosen = []
+        for f in factors:
+            nearest = ratio[np.argmin(np.abs(ratio - f))]
+            chosen += list(np.nonzero(np.isclose(ratio, nearest))[0])
+        return self.runs.history_frame(sorted(set(chosen)))
+
+    def frames(self):
+        return {**self.static.frames(), "chute sweep": self.to_frame(),
+                "chute histories": self.history_frame()}
+
+
+def sizing_sweep(model, factors=None, gusts=None, settings=None, fit_range=FIT_RANGE,
+                 metrics=None, static=None, integrator="rk4"):
+    """Sweep the parachute area from 1x to 2x the neutral static area over several gusts.
+
+    Parameters
+    ----------
+    model : YawModel
+    factors : array_like, optional
+        Area over neutral area (default 100 values from 1 to 2). [-]
+    gusts : sequence, optional
+        Gust shapes (default: step, 10 s finite, 10 s 1-cosine and 10 s-period continuous, 30
+        ft/s, at t = 30 s).
+    settings : SolverSettings, optional
+    static : NeutralAreaResult, optional
+        Reuse a neutral-area result.
+
+    Returns
+    -------
+    SweepResult
+        All runs are integrated at once (vectorised over area x gust).
+    """
+    static = neutral_area(model, fit_range) if static is None else static
+    if static.already_stable:
+        raise InputError("fuselage and fin are already statically stable: the neutral "
+                         "parachute area is not positive; sweep explicit areas with run_yaw",
+                         static.area)
+    factors = np.linspace(1.0, 2.0, 100) if factors is None else np.asarray(factors, float)
+    if factors.ndim != 1 or factors.size == 0 or np.any(~np.isfinite(factors) | (factors < 0)):
+        raise InputError("area factors must be a non-empty list of numbers >= 0",
+                         np.atleast_1d(factors).tolist())
+    gusts = standard_gusts() if gusts is None else tuple(gusts)
+    areas = np.repeat(factors * static.area, len(gusts))
+    gust_runs = tuple(gusts) * factors.size
+    runs = run_yaw(model, areas, gust_runs, settings, fit_range, metrics, integrator)
+    return SweepResult(static, factors, runs, gusts)
+
+
+def with_area(model, area):
+    """A copy of ``model`` whose parachute template has ``area`` (convenience for reports)."""
+    return replace(model, parachute=replace(model.parachute, area=area))
+
+
+__all__ = [
+    "FIT_RANGE", "LineLengthResult", "LinearYaw", "LinearisationResult", "MetricSettings",
+    "NeutralAreaResult", "SweepResult", "YawModel", "YawRuns", "line_length", "linear_yaw",
+    "neutral_area", "run_yaw", "sizing_sweep", "with_area", "yaw_linearisation",
+]

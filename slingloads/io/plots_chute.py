@@ -1,0 +1,141 @@
+"""Plots of the parachute sizing (object API only: every function returns a new Figure).
+
+No pyplot state is touched, so the functions are safe in scripts, servers and tests. Angles are
+shown in degrees; the results carry SI.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+
+def plot_yaw_linearisation(result):
+    """Yawing-moment coefficient table against its linear fit, fuselage and fin (paper figs 4-5).
+
+    Parameters
+    ----------
+    result : LinearisationResult
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig = Figure(figsize=(10, 4), layout="constrained")
+    beta = np.degrees(result.beta)
+    lo, hi = np.degrees(result.fit_range)
+    panels = [("fuselage (about the suspension axis)", result.fuselage_cn,
+               result.fuselage_slope, result.fuselage_intercept),
+              ("cut-down fin (Cn_fin = -eta CY)", result.fin_cn, result.fin_slope,
+               result.fin_intercept)]
+    panels = [p for p in panels if p[1] is not None]
+    axes = fig.subplots(1, len(panels), squeeze=False)[0]
+    for ax, (title, cn, slope, icpt) in zip(axes, panels, strict=True):
+        ax.plot(beta, cn, "o-", ms=3, label="table")
+        fit = icpt + slope * result.beta
+        ax.plot(beta, fit, "--", label=f"fit: {slope * np.pi / 180:.4g} /deg")
+        ax.axvspan(lo, hi, color="0.9", zorder=0, label="fit range")
+        ax.set_ylim(1.2 * min(cn.min(), 0) - 0.01, 1.2 * max(cn.max(), 0) + 0.01)
+        ax.set(title=title, xlabel="sideslip beta [deg]", ylabel="Cn [-]")
+        ax.grid(True, alpha=0.4)
+        ax.legend(fontsize=8)
+    return fig
+
+
+def plot_static_moments(result):
+    """Yawing moment of each contribution and their sum against sideslip, at the neutral area.
+
+    Parameters
+    ----------
+    result : NeutralAreaResult
+    """
+    fig = Figure(figsize=(7, 4.5), layout="constrained")
+    ax = fig.subplots()
+    beta = np.degrees(result.beta)
+    for name, values in result.moments.items():
+        style = {"lw": 2.5, "color": "k"} if name == "total" else {}
+        ax.plot(beta, values / 1e3, label=name, **style)
+    ax.axhline(0, color="0.5", lw=0.8)
+    ax.set(title=f"Yawing moment about the suspension axis, parachute {result.area:.3g} m^2",
+           xlabel="sideslip beta [deg]", ylabel="N, nose right [kN m]")
+    ax.grid(True, alpha=0.4)
+    ax.legend()
+    return fig
+
+
+def plot_wake(result):
+    """Wake dynamic-pressure ratio against distance, with the target and the chosen line.
+
+    Parameters
+    ----------
+    result : LineLengthResult
+    """
+    fig = Figure(figsize=(7, 4), layout="constrained")
+    ax = fig.subplots()
+    ax.plot(result.distance, result.ratio, label=result.wake_source)
+    ax.axhline(result.target, color="C1", ls="--", label=f"target {result.target:.3g}")
+    ax.axvline(result.line_length, color="C2", ls=":",
+               label=f"line {result.line_length:.3g} m")
+    if result.cable is not None:
+        ax.axvline(result.cable.cable_length, color="C3" if not result.cable.ok else "C4",
+                   ls="-.", label=f"carrier cable {result.cable.cable_length:.3g} m")
+    ax.set(xlabel="distance behind the attachment [m]", ylabel="q_wake / q [-]",
+           title="Dynamic pressure in the fuselage wake")
+    ax.grid(True, alpha=0.4)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_sweep_metrics(sweep):
+    """Peak sideslip, peak yaw, damping ratios and settling time against area, per gust shape.
+
+    Parameters
+    ----------
+    sweep : SweepResult
+    """
+    frame = sweep.to_frame()
+    fig = Figure(figsize=(11, 7), layout="constrained")
+    axes = fig.subplots(2, 2).ravel()
+    columns = [("peak beta [deg]", "peak sideslip [deg]"), ("peak psi [deg]", "peak yaw [deg]"),
+               ("damping ratio log decrement [-]", "damping ratio [-]"),
+               ("settling time [s]", "settling time [s]")]
+    for ax, (col, label) in zip(axes, columns, strict=True):
+        for kind, group in frame.groupby("gust", sort=False):
+            ax.plot(group["area [m^2]"], group[col], label=kind)
+        if col.startswith("damping"):
+            first = frame.drop_duplicates("area [m^2]")
+            ax.plot(first["area [m^2]"], first["damping ratio linear [-]"], "k--",
+                    label="linearised")
+        ax.set(xlabel="parachute flat-plate area [m^2]", ylabel=label)
+        ax.axvline(sweep.static.area, color="0.5", ls=":", lw=1)
+        ax.grid(True, alpha=0.4)
+    axes[0].legend(fontsize=8)
+    axes[2].legend(fontsize=8)
+    fig.suptitle("Parachute sizing sweep (dotted: neutral static area)")
+    return fig
+
+
+def plot_time_histories(runs, indices=None, title=None):
+    """Sideslip and yaw against time for chosen runs (the paper's figure 7).
+
+    Parameters
+    ----------
+    runs : YawRuns or SweepResult
+    indices : sequence of int, optional
+        Runs to draw (default: all, at most 12).
+    """
+    runs = getattr(runs, "runs", runs)
+    h = runs.histories
+    indices = list(range(min(len(runs.areas), 12))) if indices is None else list(indices)
+    fig = Figure(figsize=(10, 6), layout="constrained")
+    ax_b, ax_p = fig.subplots(2, 1, sharex=True)
+    for j in indices:
+        label = f"{runs.areas[j]:.3g} m^2, {runs.gusts[j].kind}"
+        ax_b.plot(h.time, np.degrees(h.beta[j]), label=label)
+        ax_p.plot(h.time, np.degrees(h.psi[j]), label=label)
+    ax_b.set(ylabel="sideslip beta [deg]", title=title or "1-DOF yaw response to lateral gusts")
+    ax_p.set(ylabel="yaw psi [deg]", xlabel="time [s]")
+    for ax in (ax_b, ax_p):
+        ax.grid(True, alpha=0.4)
+    ax_b.legend(fontsize=7, ncol=2)
+    return fig
