@@ -133,6 +133,7 @@ def draw_sfbm(ax, x, values, component, units="SI", previous=None, case_ids=None
                         textcoords="offset points", ha="center", va=va, fontsize=8,
                         color=colour)
     ax.axhline(0.0, color="k", lw=0.6)
+    ax.ticklabel_format(axis="y", style="plain", useOffset=False)
     ax.autoscale_view()
     ax.margins(x=0.02, y=0.12)
     ax.grid(True, lw=0.4, alpha=0.6)
