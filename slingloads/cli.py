@@ -17,8 +17,10 @@ from slingloads.errors import ClosureError, InputError, SlingloadsError
 EXIT_BAD_INPUT = 2
 
 #: Analyses the ``run`` command may perform, in order:
-#: name -> (subcommand, workbook flag, compute(study) -> result or None,
-#:          write(result, outputs, stem, units, study) -> None)
+#: name -> (subcommand, compute(study) -> result,
+#:          write(result, out_dir, stem, units, study) -> list of written paths)
+#: Every analysis is computed (and every input checked) before anything is written, and each
+#: writer publishes its files atomically.
 ANALYSES = {}
 
 
@@ -34,10 +36,24 @@ def _loads_compute(study):
     return study.loads.run()
 
 
-def _loads_write(result, outputs, stem, units, study):
+def _loads_write(result, out_dir, stem, units, study):
     from slingloads.io.loads_report import write_loads_outputs
 
-    write_loads_outputs(result, outputs, stem, units=units, study=study)
+    return write_loads_outputs(result, out_dir, stem, units=units,
+                               inputs_digest=inputs_digest(study),
+                               hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
+                               hull_stations=study.options.get("hull stations"),
+                               input_paths=[study.path])
+
+
+def inputs_digest(study):
+    """What a report was computed from: file, SHA-256, which analyses."""
+    from pathlib import Path
+
+    return {"input workbook": Path(study.path).name, "SHA-256": study.sha256,
+            "study": study.name,
+            "analyses": ", ".join(k for k, v in study.run.items() if v),
+            "slingloads version": __version__}
 
 
 register("loads", "loads", _loads_compute, _loads_write)
@@ -119,7 +135,6 @@ def _selected(args, study):
 
 
 def _analyse(args):
-    from slingloads.io.atomic import atomic_outputs
     from slingloads.io.study_reader import read_study
 
     show = not args.quiet
@@ -138,15 +153,14 @@ def _analyse(args):
             results[name] = ANALYSES[name][1](study)
             bar.update(1)
         stem = Path(args.workbook).stem
-        with atomic_outputs(args.out, inputs=[args.workbook]) as outputs:
-            for name in names:
-                bar.set_description(f"writing {name}")
-                ANALYSES[name][2](results[name], outputs, stem, args.units, study)
-                bar.update(1)
-            bar.set_description("publishing")
+        written = []
+        for name in names:
+            bar.set_description(f"writing {name}")
+            written += ANALYSES[name][2](results[name], args.out, stem, args.units, study)
+            bar.update(1)
         bar.update(1)
         bar.set_description("done")
-    for path in outputs.written:
+    for path in written:
         print(f"wrote {path}")
     return 0
 

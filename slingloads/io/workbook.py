@@ -89,7 +89,11 @@ class WorkbookReader:
         try:
             self.book = load_workbook(self.path, read_only=False, data_only=True)
         except Exception as err:  # openpyxl raises many kinds on corrupt or hostile files
-            raise InputError(f"not a readable .xlsx workbook ({type(err).__name__}: {err})",
+            root = err
+            while root.__cause__ is not None or root.__context__ is not None:
+                root = root.__cause__ or root.__context__
+            raise InputError(f"not a readable .xlsx workbook ({type(root).__name__}: "
+                             f"{str(root).splitlines()[0] if str(root) else ''})",
                              file=self.file) from None
 
     def _check_container(self):

@@ -1,0 +1,251 @@
+"""Bad input: each kind of error names the file, sheet, cell, the value and the rule it broke;
+the command exits with code 2 and writes nothing (an earlier report is left intact).
+
+The reference for every test is the rule written in the input workbook's own documentation
+(README sheet of ``slingloads template``, ``docs/loads-method.md``): each test breaks one rule
+in an otherwise valid copy of the example workbook and checks that exactly that rule is named
+at exactly that place.
+"""
+
+from __future__ import annotations
+
+import shutil
+import zipfile
+from pathlib import Path
+
+import openpyxl
+import pytest
+
+from slingloads.cli import main
+from slingloads.errors import InputError
+from slingloads.io.study_reader import read_study
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+
+
+@pytest.fixture(scope="module")
+def example_book():
+    return openpyxl.load_workbook(EXAMPLE)
+
+
+def edited(tmp_path, example_book, edit, name="bad.xlsx"):
+    """Save a copy of the example with ``edit(workbook)`` applied; return its path."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    edit(book)
+    path = tmp_path / name
+    book.save(path)
+    return path
+
+
+def study_row(book, name):
+    ws = book["Study"]
+    for row in ws.iter_rows(min_row=2):
+        if row[0].value == name:
+            return row[0].row
+    raise KeyError(name)
+
+
+def expect_error(path, *fragments):
+    with pytest.raises(InputError) as info:
+        read_study(path)
+    message = str(info.value)
+    assert str(path) in message
+    for fragment in fragments:
+        assert fragment in message, message
+    return info.value
+
+
+def test_missing_sheet(tmp_path, example_book):
+    """Rule: the Stations sheet is required."""
+    path = edited(tmp_path, example_book, lambda b: b.remove(b["Stations"]))
+    expect_error(path, "sheet 'Stations'", "missing sheet 'Stations'")
+
+
+def test_missing_column(tmp_path, example_book):
+    """Rule: MassItems needs a mass column (header in row 1)."""
+    def edit(b):
+        b["MassItems"]["C1"] = "weight note"
+    path = edited(tmp_path, example_book, edit)
+    expect_error(path, "sheet 'MassItems'", "unknown column", "weight note")
+
+    def drop(b):
+        b["MassItems"].delete_cols(3)
+    path = edited(tmp_path, example_book, drop, "drop.xlsx")
+    expect_error(path, "sheet 'MassItems'", "missing column 'mass [kg]'")
+
+
+def test_unknown_unit(tmp_path, example_book):
+    """Rule: a header's unit must be a unit pint knows."""
+    def edit(b):
+        b["MassItems"]["C1"] = "mass [lbz]"
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'MassItems'", "cell C1",
+                 "unknown unit", "'lbz'")
+
+
+def test_unit_of_wrong_kind(tmp_path, example_book):
+    """Rule: a length column takes a length unit."""
+    def edit(b):
+        b["MassItems"]["D1"] = "x [kg]"
+    expect_error(edited(tmp_path, example_book, edit), "cell D1", "unit is not a length")
+
+
+def test_non_numeric_cell(tmp_path, example_book):
+    """Rule: masses are numbers."""
+    def edit(b):
+        b["MassItems"]["C5"] = "heavy"
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'MassItems'", "cell C5",
+                 "must be a number", "'heavy'")
+
+
+def test_empty_cell(tmp_path, example_book):
+    """Rule: a required cell may not be empty."""
+    def edit(b):
+        b["MassItems"]["D7"] = None
+    expect_error(edited(tmp_path, example_book, edit), "cell D7", "empty cell")
+
+
+@pytest.mark.parametrize("mass", [0, -12.5])
+def test_zero_or_negative_mass(tmp_path, example_book, mass):
+    """Rule: every mass is > 0."""
+    def edit(b):
+        b["MassItems"]["C3"] = mass
+    expect_error(edited(tmp_path, example_book, edit), "cell C3", "mass must be > 0",
+                 repr(float(mass)))
+
+
+def test_duplicate_ids(tmp_path, example_book):
+    """Rule: mass item ids are unique."""
+    def edit(b):
+        b["MassItems"]["A4"] = b["MassItems"]["A2"].value
+    expect_error(edited(tmp_path, example_book, edit), "cell A4", "duplicate id", "A2")
+
+
+def test_unsorted_stations(tmp_path, example_book):
+    """Rule: cut stations are sorted by increasing x."""
+    def edit(b):
+        ws = b["Stations"]
+        ws["B4"], ws["B5"] = ws["B5"].value, ws["B4"].value
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'Stations'", "cell B5",
+                 "sorted by increasing x")
+
+
+def test_duplicated_stations(tmp_path, example_book):
+    """Rule: cut stations do not repeat."""
+    def edit(b):
+        ws = b["Stations"]
+        ws["B5"] = ws["B4"].value
+    expect_error(edited(tmp_path, example_book, edit), "cell B5", "must not repeat")
+
+
+def test_hardpoint_outside_airframe(tmp_path, example_book):
+    """Rule: a hardpoint lies within the mass items' x range."""
+    def edit(b):
+        ws = b["Hardpoints"]
+        ws["C2"] = 2000  # the hub, 2000 in aft of the nose: beyond the tail
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'Hardpoints'", "cell C2",
+                 "outside the airframe")
+
+
+def test_envelope_outside_aero_table(tmp_path, example_book):
+    """Rule: no extrapolation of the aerodynamic tables (fuselage alpha range -20..20 deg)."""
+    def edit(b):
+        b["AeroEnvelope"]["B3"] = 35
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'AeroEnvelope'", "cell B3",
+                 "outside the fuselage table's range", "no extrapolation")
+
+
+def test_parachute_wake_ratio_above_one(tmp_path, example_book):
+    """Rule: the wake dynamic-pressure ratio lies in (0, 1]."""
+    def edit(b):
+        b["Study"].cell(study_row(b, "parachute wake ratio"), 2).value = 1.5
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'Study'", "wake",
+                 "(0, 1]", "1.5")
+
+
+def test_parachute_without_attachment(tmp_path, example_book):
+    """Rule: a parachute area needs a 'chute' hardpoint."""
+    def edit(b):
+        ws = b["Hardpoints"]
+        for row in ws.iter_rows(min_row=2):
+            if row[1].value == "chute":
+                ws.delete_rows(row[0].row)
+                break
+    expect_error(edited(tmp_path, example_book, edit), "parachute area",
+                 "no row of kind 'chute'")
+
+
+def test_unknown_parameter(tmp_path, example_book):
+    """Rule: Study-sheet parameters are the documented ones."""
+    def edit(b):
+        b["Study"].cell(study_row(b, "fin area"), 1).value = "fin areaa"
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'Study'", "unknown parameter",
+                 "'fin areaa'")
+
+
+def test_file_that_is_not_a_workbook(tmp_path):
+    """Rule: the input is an .xlsx (zip) container."""
+    path = tmp_path / "notes.xlsx"
+    path.write_text("this is plain text, not a workbook\n")
+    expect_error(path, "not a workbook")
+
+
+def test_corrupt_workbook(tmp_path):
+    """Rule: the workbook must be readable: a truncated file is refused."""
+    path = tmp_path / "truncated.xlsx"
+    path.write_bytes(EXAMPLE.read_bytes()[:5000])
+    expect_error(path, "not a workbook")
+
+
+def test_xml_bomb_is_refused(tmp_path):
+    """Hostile workbook: a 'billion laughs' entity expansion in a sheet's XML is refused by
+    defusedxml (through openpyxl) instead of exhausting memory (defusedxml documentation)."""
+    bomb = ('<?xml version="1.0"?><!DOCTYPE lolz [<!ENTITY lol "lol">'
+            + "".join(f'<!ENTITY lol{i} "{("&lol%s;" % (i - 1 if i > 1 else "")) * 10}">'
+                      for i in range(1, 10))
+            + ']><worksheet xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main">'
+            '<sheetData><row r="1"><c r="A1" t="inlineStr"><is><t>&lol9;</t></is></c></row>'
+            '</sheetData></worksheet>')
+    path = tmp_path / "bomb.xlsx"
+    with zipfile.ZipFile(EXAMPLE) as src, zipfile.ZipFile(path, "w") as dst:
+        for item in src.infolist():
+            data = src.read(item.filename)
+            if item.filename == "xl/worksheets/sheet2.xml":
+                data = bomb.encode()
+            dst.writestr(item, data)
+    error = expect_error(path, "not a readable .xlsx workbook")
+    assert "Entities" in str(error) or "DTD" in str(error)
+
+
+def test_cli_bad_input_exit_code_and_nothing_written(tmp_path, example_book, capsys):
+    """Rule: bad input -> exit code 2, no output at all, an earlier report left intact."""
+    good = tmp_path / "study.xlsx"
+    shutil.copy(EXAMPLE, good)
+    out = tmp_path / "reports"
+    out.mkdir()
+    earlier = out / "study-loads.xlsx"
+    earlier.write_bytes(b"earlier report")
+
+    def edit(b):
+        b["MassItems"]["C3"] = -1
+    bad = edited(tmp_path, example_book, edit, "study.xlsx")
+    assert bad == good
+    code = main(["run", str(bad), "--out", str(out), "--quiet"])
+    assert code == 2
+    err = capsys.readouterr().err
+    assert "cell C3" in err and "nothing was written" in err
+    assert sorted(p.name for p in out.iterdir()) == ["study-loads.xlsx"]
+    assert earlier.read_bytes() == b"earlier report"
+
+
+def test_cli_refuses_to_overwrite_the_input(tmp_path, capsys):
+    """Rule: an input is never overwritten, even through a link named like an output."""
+    source = tmp_path / "study.xlsx"
+    shutil.copy(EXAMPLE, source)
+    before = source.read_bytes()
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "study-loads.xlsx").symlink_to(source)
+    code = main(["loads", str(source), "--out", str(out), "--quiet"])
+    assert code == 2
+    assert "never overwritten" in capsys.readouterr().err
+    assert source.read_bytes() == before
