@@ -1,0 +1,114 @@
+"""End to end: the example workbook through the command line to the report and back.
+
+References: the numbers read back from the report equal those of the Python API run on the
+same workbook (workbook -> report -> read-back); inputs in US customary units equal the same
+inputs converted by hand to SI with the exact definitions 1 in = 0.0254 m and
+1 lb = 0.45359237 kg (NIST SP 811), so the loads must not change.
+"""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import openpyxl
+import pandas as pd
+import pytest
+
+from slingloads.cli import main
+from slingloads.io.study_reader import read_study
+from slingloads.io.workbook import WorkbookReader
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+
+
+@pytest.fixture(scope="module")
+def run_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("reports")
+    assert main(["loads", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+    return out
+
+
+@pytest.fixture(scope="module")
+def api_result():
+    return read_study(EXAMPLE).loads.run()
+
+
+def test_csv_and_workbook_read_back(run_dir, api_result):
+    """The SFBM CSV and the report's SFBM sheet hold the API's numbers (SI, limit)."""
+    csv = pd.read_csv(run_dir / "example-light-twin-sfbm.csv")
+    assert list(csv.columns) == ["case", "station", "x_m", "Vx_N", "Vy_N", "Vz_N", "Mx_Nm",
+                                 "My_Nm", "Mz_Nm"]
+    c, s, _ = api_result.loads.shape
+    assert len(csv) == c * s
+    np.testing.assert_allclose(csv.iloc[:, 3:].to_numpy().reshape(c, s, 6), api_result.loads,
+                               rtol=1e-12, atol=1e-6)
+    sheet = pd.read_excel(run_dir / "example-light-twin-loads.xlsx", sheet_name="SFBM")
+    vy = [col for col in sheet.columns if col.startswith("Vy")][0]
+    np.testing.assert_allclose(sheet[vy].to_numpy().reshape(c, s), api_result.loads[..., 1],
+                               rtol=1e-9, atol=1e-6)
+
+
+def test_example_has_twenty_stations_and_closes(api_result):
+    """The example reports at least 20 cut stations; free-free closure holds to round-off."""
+    assert len(api_result.stations) >= 20
+    assert np.abs(api_result.residual).max() < 1e-8 * api_result.residual_scale
+
+
+def test_us_and_si_inputs_give_the_same_loads(tmp_path, api_result):
+    """MassItems, Stations and Hardpoints rewritten from [lb]/[in] to [kg]/[m] by hand give
+    identical loads (exact conversion constants)."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    for name in ("MassItems", "Stations", "Hardpoints"):
+        ws = book[name]
+        for col in ws.iter_cols(min_row=1):
+            head = str(col[0].value)
+            factor = {"[in]": 0.0254, "[lb]": 0.45359237}.get(head[head.find("["):], None)
+            if factor is None:
+                continue
+            col[0].value = head.replace("[in]", "[m]").replace("[lb]", "[kg]")
+            for cell in col[1:]:
+                if cell.value is not None:
+                    cell.value = cell.value * factor
+    path = tmp_path / "si.xlsx"
+    book.save(path)
+    si = read_study(path).loads.run()
+    np.testing.assert_allclose(si.loads, api_result.loads, rtol=1e-9, atol=1e-6)
+
+
+def test_template_is_a_valid_blank_workbook(tmp_path, capsys):
+    """`slingloads template` writes every documented sheet; its Study sheet reads back with
+    every parameter at its default; running it fails cleanly (no data yet) with exit code 2."""
+    path = tmp_path / "blank.xlsx"
+    assert main(["template", str(path)]) == 0
+    reader = WorkbookReader(path)
+    for sheet in ("README", "Study", "MassItems", "Stations", "Hardpoints", "FuselageAero",
+                  "AeroEnvelope", "PreviousEnvelope"):
+        assert reader.has_sheet(sheet)
+    assert reader.parameters()["hook load factor nz"][0] == pytest.approx(2.5)
+    assert main(["template", str(path)]) == 2  # exists: not replaced without --force
+    assert main(["run", str(path), "--out", str(tmp_path / "r"), "--quiet"]) == 2
+    assert "no data rows" in capsys.readouterr().err
+    assert not (tmp_path / "r").exists()
+
+
+@pytest.mark.parametrize("command", ["template", "run", "loads", "lateral", "chute"])
+def test_every_command_has_help(command, capsys):
+    """`--help` on each command prints its usage and exits 0."""
+    with pytest.raises(SystemExit) as info:
+        main([command, "--help"])
+    assert info.value.code == 0
+    assert "usage: slingloads" in capsys.readouterr().out
+
+
+def test_us_report(tmp_path):
+    """--units US writes the report in in / lbf / lbf in; the Vy column equals SI / 4.4482216."""
+    src = tmp_path / "ex.xlsx"
+    shutil.copy(EXAMPLE, src)
+    assert main(["loads", str(src), "--out", str(tmp_path), "--units", "US", "--quiet"]) == 0
+    sheet = pd.read_excel(tmp_path / "ex-loads.xlsx", sheet_name="SFBM")
+    csv = pd.read_csv(tmp_path / "ex-sfbm.csv")
+    assert "Vy [lbf]" in sheet.columns and "x [in]" in sheet.columns
+    np.testing.assert_allclose(sheet["Vy [lbf]"], csv["Vy_N"] / 4.4482216152605, rtol=1e-9,
+                               atol=1e-6)
