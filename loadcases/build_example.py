@@ -157,7 +157,7 @@ def main():
         "parachute wake ratio": (0.95, ""),
         "parachute line length": (12.0, "m"),
         "parachute opening factor": (1.0, ""),
-        "hull stations": ("FS0143, FS0179, FS0215, FS0342", ""),
+        "hull stations": ("FS0161, FS0342", ""),
     }
     tables = {"MassItems": mass_items, "Stations": stations, "Hardpoints": hardpoints,
               "FuselageAero": fuselage, "FinAero": fin, "AeroEnvelope": envelope,

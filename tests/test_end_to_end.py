@@ -112,3 +112,22 @@ def test_us_report(tmp_path):
     assert "Vy [lbf]" in sheet.columns and "x [in]" in sheet.columns
     np.testing.assert_allclose(sheet["Vy [lbf]"], csv["Vy_N"] / 4.4482216152605, rtol=1e-9,
                                atol=1e-6)
+
+
+def test_hostile_text_from_the_workbook_stays_text(tmp_path):
+    """A case listed on the LoadCases sheet with the id and description `=HYPERLINK("x")`
+    reaches the report as a text cell, never a formula (OWASP CSV/formula injection)."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    ws = book.create_sheet("LoadCases")
+    ws.append(["id", "hook", "aero", "chute", "description"])
+    ws.append(['=HYPERLINK("x")', "AXIAL", "CENTRE", "no", '=HYPERLINK("http://x","y")'])
+    for cell in ws[2]:
+        cell.data_type = "s"  # typed as text in the input, as a user would with a quote
+    path = tmp_path / "hostile.xlsx"
+    book.save(path)
+    assert main(["loads", str(path), "--out", str(tmp_path), "--quiet"]) == 0
+    report = openpyxl.load_workbook(tmp_path / "hostile-loads.xlsx")
+    cells = [c for row in report["LoadCases"].iter_rows() for c in row
+             if isinstance(c.value, str) and "HYPERLINK" in c.value]
+    assert {c.value for c in cells} == {'=HYPERLINK("x")', '=HYPERLINK("http://x","y")'}
+    assert all(c.data_type == "s" for c in cells)

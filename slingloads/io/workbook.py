@@ -27,6 +27,8 @@ from slingloads.units import si_factor
 #: Largest uncompressed workbook content accepted. [bytes]
 MAX_UNCOMPRESSED = 256 * 1024**2
 _HEADER = re.compile(r"^\s*(?P<name>[^\[\]]*?)\s*(\[(?P<unit>[^\[\]]*)\])?\s*$")
+_FORMULA_HINT = (" (or a formula whose value was never computed: open and save the workbook "
+                 "in Excel or LibreOffice first)")
 _TRUE = {"yes", "y", "true", "1", "on", "x"}
 _FALSE = {"no", "n", "false", "0", "off", ""}
 
@@ -188,8 +190,8 @@ class WorkbookReader:
         if column.kind == TEXT:
             if raw is None or (isinstance(raw, str) and not raw.strip()):
                 if column.required:
-                    raise self.error(f"empty cell in required column {column.header!r}",
-                                     None, sheet, where)
+                    raise self.error(f"empty cell in required column {column.header!r}"
+                                     f"{_FORMULA_HINT}", None, sheet, where)
                 return column.default
             if isinstance(raw, float) and raw.is_integer():
                 raw = int(raw)
@@ -198,8 +200,8 @@ class WorkbookReader:
             return parse_flag(raw, column.header, self.error, sheet, where, column.default)
         if raw is None or (isinstance(raw, str) and not raw.strip()):
             if column.required:
-                raise self.error(f"empty cell in required column {column.header!r}", None,
-                                 sheet, where)
+                raise self.error(f"empty cell in required column {column.header!r}"
+                                 f"{_FORMULA_HINT}", None, sheet, where)
             return column.default
         number = parse_number(raw, column.header, self.error, sheet, where)
         if column.kind == INTEGER:
