@@ -194,9 +194,15 @@ class RunMetrics:
         }
 
     @classmethod
-    def from_histories(cls, t, load_angle, rope_angle_, tension_ratio):
-        """Metrics of sampled time histories (last axis = time)."""
+    def from_histories(cls, t, load_angle, rope_angle_, tension_ratio, rigid=False):
+        """Metrics of sampled time histories (last axis = time).
+
+        For the rigid rope (``rigid=True``) the angles count only until the tension first
+        goes negative, after which that model is not valid.
+        """
         taut = np.asarray(tension_ratio) > 0
+        if rigid:
+            taut = np.logical_and.accumulate(taut, axis=-1)
         a, ta = _peak(t, np.abs(load_angle), taut)
         r, tr = _peak(t, np.abs(rope_angle_), taut)
         n, tn = _peak(t, tension_ratio, smooth=taut)
@@ -276,7 +282,7 @@ class LateralRun:
     def metrics(self):
         """Peak values and when they occur: :class:`RunMetrics`."""
         return RunMetrics.from_histories(self.t, self.load_angle, self.theta1,
-                                         self.tension_ratio)
+                                         self.tension_ratio, self.pendulum.rigid)
 
     def to_frame(self):
         """Time histories with unit-labelled columns (angles in degrees)."""
@@ -297,7 +303,7 @@ class LateralRun:
         return frame
 
 
-def simulate(pendulum, motion, *, t_end=None, solver=None):
+def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
     """One run of the lateral pendulum with :func:`scipy.integrate.solve_ivp`.
 
     Starts hanging at rest under the hook; a jump of the hook's speed at t = 0 (velocity step)
@@ -311,6 +317,9 @@ def simulate(pendulum, motion, *, t_end=None, solver=None):
     t_end : float, optional
         Run length, > 0 (default :func:`default_end_time`). [s]
     solver : SolverSettings, optional
+    x0 : array_like, optional
+        Initial state in the order of ``pendulum.state_names`` (default: hanging at rest,
+        plus the motion's velocity jump). [rad, m, rad/s, m/s]
 
     Returns
     -------
@@ -319,7 +328,7 @@ def simulate(pendulum, motion, *, t_end=None, solver=None):
     Raises
     ------
     InputError
-        For a bad run length, or if the integrator fails.
+        For a bad run length or initial state, or if the integrator fails.
     """
     solver = SolverSettings() if solver is None else solver
     if t_end is None:
@@ -338,7 +347,13 @@ def simulate(pendulum, motion, *, t_end=None, solver=None):
     n_out = max(int(np.ceil(t_end / solver.output_step - 1e-9)), 2)
     t_out = np.linspace(0.0, t_end, n_out + 1)
     cuts = np.unique(np.clip([0.0, *motion.breakpoints, t_end], 0.0, t_end))
-    x = pendulum.initial_state(motion.velocity_jump)
+    if x0 is None:
+        x = pendulum.initial_state(motion.velocity_jump)
+    else:
+        x = np.asarray(x0, dtype=float).reshape(-1)
+        if x.size != len(pendulum.state_names) or not np.all(np.isfinite(x)):
+            raise InputError(f"initial state needs {len(pendulum.state_names)} finite values "
+                             f"{pendulum.state_names}", x.tolist())
     states = np.empty((x.size, t_out.size))
     which = np.clip(np.searchsorted(cuts, t_out, side="right") - 1, 0, cuts.size - 2)
     for k in range(cuts.size - 1):
@@ -429,11 +444,17 @@ def _rk4_group(pendulums, motions, n_steps, h, rigid):
     def f(kin, x):
         return derivatives(x, kin[1], kin[2], **params)
 
+    alive = np.ones(len(pendulums), bool)  # rigid rope: valid until the tension first goes < 0
+
     def signals(x, tension):
         th1 = x[0] if rigid else np.arctan2(x[0], -x[1])
         th2 = x[1] if rigid else x[2]
         ratio = tension / weight
-        return np.stack([np.abs(th1 - th2), np.abs(th1), ratio, -ratio]), ratio > 0
+        taut = ratio > 0
+        if rigid:
+            alive[:] = alive & taut
+            taut = alive.copy()
+        return np.stack([np.abs(th1 - th2), np.abs(th1), ratio, -ratio]), taut
 
     kin = batch.kinematics(0.0)
     k1, tension = f(kin, x)

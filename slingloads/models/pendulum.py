@@ -209,14 +209,14 @@ class LateralPendulum:
 
         with l the hanging (stretched) length for the elastic cable.
         """
-        m, e, l = self.body.mass, self.body.cg_below_hub, self.hanging_length
+        m, e, length = self.body.mass, self.body.cg_below_hub, self.hanging_length
         k2 = self.body.roll_inertia / m
-        return m * np.array([[l * l, l * e], [l * e, e * e + k2]])
+        return m * np.array([[length**2, length * e], [length * e, e * e + k2]])
 
     def stiffness_matrix(self):
         """Linearised stiffness matrix in (theta1, theta2): diag(m g l, m g e). [N m]"""
-        w, e, l = self.weight, self.body.cg_below_hub, self.hanging_length
-        return np.diag([w * l, w * e])
+        w, e, length = self.weight, self.body.cg_below_hub, self.hanging_length
+        return np.diag([w * length, w * e])
 
     def linear_modes(self):
         """Natural frequencies and mode shapes about the hanging equilibrium.

@@ -1,0 +1,127 @@
+"""Carrier lateral motions S(t): closed forms, calculus consistency and bad input."""
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+from scipy.integrate import cumulative_trapezoid
+
+from slingloads.errors import InputError
+from slingloads.models.carrier_motion import (
+    ConstantAcceleration,
+    MotionBatch,
+    SmoothStep,
+    TimeHistory,
+    VelocityStep,
+    make_motion,
+)
+
+
+def _integrate_twice(t, acc):
+    vel = cumulative_trapezoid(acc, t, initial=0.0)
+    return cumulative_trapezoid(vel, t, initial=0.0), vel
+
+
+def test_smooth_step_closed_form():
+    """Quintic minimum-jerk step: S(T) = A, S'(T) = S''(T) = 0, S(T/2) = A/2, and peak
+    acceleration (10/sqrt 3) A/T^2 at tau = (3 - sqrt 3)/6 (from d3S/dt3 = 0 by hand)."""
+    step = SmoothStep(amplitude=12.0, duration=3.0)
+    s, v, a = step.kinematics(np.array([3.0, 1.5, 10.0]))
+    assert_allclose(s, [12.0, 6.0, 12.0], rtol=1e-14)
+    assert_allclose(v[[0, 2]], 0.0, atol=1e-14)
+    assert_allclose(a[[0, 2]], 0.0, atol=1e-14)
+    tau = (3.0 - np.sqrt(3.0)) / 6.0
+    assert step.acceleration(tau * 3.0) == pytest.approx(10.0 / np.sqrt(3.0) * 12.0 / 9.0,
+                                                           rel=1e-12)
+    assert step.peak_acceleration == pytest.approx(10.0 / np.sqrt(3.0) * 12.0 / 9.0, rel=1e-12)
+    made = SmoothStep.from_peak_acceleration(4.9, 2.0)
+    assert made.peak_acceleration == pytest.approx(4.9, rel=1e-12)
+
+
+@pytest.mark.parametrize("motion", [
+    SmoothStep(5.0, 2.0),
+    ConstantAcceleration(2.0, 1.5, "hold"),
+    ConstantAcceleration(-3.0, 1.0, "stop"),
+])
+def test_velocity_and_displacement_are_integrals_of_acceleration(motion):
+    """Calculus check: integrating S'' twice by the trapezoid rule (an independent quadrature)
+    recovers S' and S, from rest at S = 0 (the trapezoid rule errs by h |jump| / 2 across a
+    jump of the acceleration, 1.5e-4 m/s here)."""
+    t = np.linspace(0.0, 5.0, 50001)
+    s, v, a = motion.kinematics(t)
+    s_num, v_num = _integrate_twice(t, a)
+    assert_allclose(v_num, v, atol=5e-4)
+    assert_allclose(s_num, s, atol=5e-4 * 5.0)
+
+
+def test_constant_acceleration_closed_form():
+    """Uniform acceleration: after T, S = a T^2 / 2 and S' = a T; holding speed, S grows by
+    a T per second; stopping at -a for T, the hook ends at rest at a T^2."""
+    hold = ConstantAcceleration(2.0, 3.0, "hold")
+    assert_allclose(hold.kinematics(3.0), [9.0, 6.0, 0.0])
+    assert hold.displacement(5.0) == pytest.approx(9.0 + 12.0)
+    stop = ConstantAcceleration(2.0, 3.0, "stop")
+    assert_allclose(stop.kinematics(7.0), [18.0, 0.0, 0.0], atol=1e-12)
+    assert stop.acceleration(4.0) == -2.0
+    assert stop.end_time == 6.0
+
+
+def test_velocity_step():
+    """Velocity step dV: S = dV t after t = 0, no acceleration after the jump."""
+    step = VelocityStep(3.0)
+    assert_allclose(step.kinematics(2.0), [6.0, 3.0, 0.0])
+    assert step.velocity_jump == 3.0
+
+
+def test_time_history_reproduces_a_sampled_smooth_step():
+    """A finely sampled smooth step fed back as a time history: the spline passes through the
+    samples and its acceleration matches the analytic quintic's to 1 % of the peak."""
+    step = SmoothStep(10.0, 4.0)
+    t = np.linspace(0.0, 6.0, 601)
+    history = TimeHistory(t + 2.0, step.displacement(t) + 1.0)  # shifted to start at 0, 0
+    assert_allclose(history.displacement(t), step.displacement(t), atol=1e-12)
+    mid = np.linspace(0.1, 3.9, 77)
+    assert_allclose(history.acceleration(mid), step.acceleration(mid),
+                    atol=0.01 * step.peak_acceleration)
+    assert abs(history.velocity_jump) < 1e-3
+    # beyond the last sample: the final speed is kept, no acceleration
+    assert history.acceleration(10.0) == 0.0
+
+
+def test_motion_batch_matches_closed_forms():
+    """A batch of mixed motions evaluated at one time equals each motion's closed form:
+    S'' = a for constant acceleration, dV t for the velocity step, A/2 at mid smooth step."""
+    history = TimeHistory([0.0, 1.0, 2.0], [0.0, 0.0, 0.0])
+    motions = [ConstantAcceleration(1.0, 2.0), ConstantAcceleration(-2.0, 2.0, "stop"),
+               VelocityStep(4.0), SmoothStep(6.0, 1.0), history, history]
+    s, v, a = MotionBatch(motions).kinematics(0.5)
+    assert_allclose(a[:2], [1.0, -2.0])
+    assert_allclose(s[2:4], [2.0, 3.0])
+    assert_allclose(s[4:], 0.0)
+    assert_allclose(MotionBatch(motions).velocity_jump, [0, 0, 4.0, 0, 0, 0])
+
+
+def test_make_motion_by_name():
+    """The workbook route: a type name and SI parameters give the same motion object."""
+    motion = make_motion("constant_acceleration", rate=4.9, duration=2.0, then="stop")
+    assert motion == ConstantAcceleration(4.9, 2.0, "stop")
+
+
+@pytest.mark.parametrize("build, match", [
+    (lambda: make_motion("zigzag", duration=1.0), r"unknown carrier motion type.*'zigzag'"),
+    (lambda: make_motion("smooth_step", amplitude=1.0, duration=1.0, speed=3.0),
+     r"unknown parameter: value 'speed'"),
+    (lambda: SmoothStep(1.0, 0.0), r"duration must be > 0 \[s\]: value 0.0"),
+    (lambda: ConstantAcceleration(1.0, -2.0), r"duration must be > 0 \[s\]: value -2.0"),
+    (lambda: ConstantAcceleration(1.0, 2.0, "coast"), r"valid options.*'coast'"),
+    (lambda: VelocityStep(float("nan")), r"velocity step must be a finite number"),
+    (lambda: TimeHistory([0.0, 1.0, 1.0, 2.0], [0, 1, 2, 3]),
+     r"strictly increasing; sample 3 \(t = 1 s\).*value 1.0"),
+    (lambda: TimeHistory([0.0, 2.0, 1.0], [0, 1, 2]),
+     r"strictly increasing; sample 3 \(t = 1 s\).*value 1.0"),
+    (lambda: TimeHistory([0.0, 1.0], [0.0]), r"one displacement per time"),
+    (lambda: TimeHistory([0.0], [0.0]), r"at least two samples"),
+])
+def test_bad_motion_input(build, match):
+    """Bad motion input raises InputError naming the rule and echoing the value."""
+    with pytest.raises(InputError, match=match):
+        build()

@@ -1,0 +1,238 @@
+"""Lateral pendulum model: verification against closed forms, limits and conservation laws.
+
+The oracles are the analytic results for the planar pendulum with a moving support (rope
+length l, rigid body of mass m, radius of gyration k, CG a distance e below the hub):
+
+* small-oscillation frequencies, the roots of l k^2 w^4 - g (k^2 + e^2 + e l) w^2 + g^2 e = 0,
+  with the limits w^2 = g/(l + e) as k -> 0 and the compound pendulum w^2 = g e/(k^2 + e^2)
+  as l -> 0 (derived from M = m[[l^2, l e], [l e, e^2 + k^2]], K = diag(m g l, m g e));
+* point mass under a step in support acceleration a: peak swing 2 atan(a/g);
+* point mass under a step in support velocity dV: cos(theta_max) = 1 - dV^2/(2 g L), tension
+  m (g + dV^2/L) at the bottom of the swing;
+* energy conserved with a fixed support and no damping;
+* static tension equal to the weight.
+"""
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+from slingloads.analyses.lateral import SolverSettings, simulate, sweep
+from slingloads.errors import InputError
+from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep, VelocityStep
+from slingloads.models.pendulum import LateralPendulum, SlungBody, hub_load_airframe_axes
+from slingloads.units import FOOT, G0
+
+UH60 = SlungBody(7439.0, 7632.0, 1.722, "UH-60A")  # NASA TM 85890 mass, Ixx, hub above CG
+TIGHT = SolverSettings(method="DOP853", rtol=1e-10, atol=1e-12, output_step=0.005)
+FIXED = VelocityStep(0.0)  # the hook does not move
+
+
+def quartic_omegas(length, k, e, g=G0):
+    """Roots of l k^2 w^4 - g (k^2 + e^2 + e l) w^2 + g^2 e = 0, ascending [rad/s]."""
+    w2 = np.roots([length * k**2, -g * (k**2 + e**2 + e * length), g**2 * e])
+    return np.sort(np.sqrt(w2.real))
+
+
+@pytest.mark.parametrize("rope_ft", [18.0, 60.0, 100.0])
+@pytest.mark.parametrize("body", [UH60, SlungBody(2096.0, 1803.0, 0.95, "BO-105C")])
+def test_frequencies_match_closed_form_quartic(body, rope_ft):
+    """Rigid-rope frequencies equal the roots of the closed-form quartic (FACTS 5)."""
+    pendulum = LateralPendulum(body, rope_ft * FOOT)
+    expected = quartic_omegas(rope_ft * FOOT, body.radius_of_gyration, body.cg_below_hub)
+    assert_allclose(pendulum.linear_modes().omega, expected, rtol=1e-10)
+
+
+def test_frequency_limit_point_mass():
+    """k -> 0: the low root tends to the simple pendulum of length l + e, w^2 = g/(l + e)."""
+    l, e, k = 10.0, 1.5, 1e-4
+    pendulum = LateralPendulum(SlungBody(1000.0, 1000.0 * k**2, e), l)
+    assert pendulum.linear_modes().omega[0] ** 2 == pytest.approx(G0 / (l + e), rel=1e-6)
+
+
+def test_frequency_limit_compound_pendulum():
+    """l -> 0: the low root tends to the compound pendulum w^2 = g e/(k^2 + e^2)."""
+    l, e, k = 1e-7, 1.5, 1.2
+    pendulum = LateralPendulum(SlungBody(1000.0, 1000.0 * k**2, e), l)
+    assert pendulum.linear_modes().omega[0] ** 2 == pytest.approx(G0 * e / (k**2 + e**2),
+                                                                 rel=1e-6)
+
+
+def test_elastic_cable_modes():
+    """Elastic cable: the bounce mode is the spring-mass w^2 = (EA/l)/m, and the swing modes
+    are the quartic's with the rope stretched by m g/(EA/l)."""
+    ea, l = 2e7, 18.0 * FOOT
+    pendulum = LateralPendulum(UH60, l, cable_ea=ea)
+    modes = pendulum.linear_modes()
+    stretched = l * (1.0 + UH60.mass * G0 / ea)
+    expected = quartic_omegas(stretched, UH60.radius_of_gyration, UH60.cg_below_hub)
+    assert_allclose(modes.omega[:2], expected, rtol=1e-10)
+    assert modes.omega[2] == pytest.approx(np.sqrt(ea / l / UH60.mass), rel=1e-12)
+    assert modes.kinds == ("swing", "swing", "bounce")
+
+
+@pytest.mark.parametrize("mode", [0, 1])
+def test_nonlinear_small_swing_period_matches_quartic(mode):
+    """Started in a mode shape at 1e-4 rad, the nonlinear equations oscillate at that mode's
+    closed-form frequency (quartic root): checks the equations of motion, not only M and K."""
+    l = 60.0 * FOOT
+    pendulum = LateralPendulum(UH60, l)
+    modes = pendulum.linear_modes()
+    shape = modes.shapes[mode, :2] * 1e-4
+    omega = quartic_omegas(l, UH60.radius_of_gyration, UH60.cg_below_hub)[mode]
+    period = 2 * np.pi / omega
+    run = simulate(pendulum, FIXED, t_end=5 * period, solver=TIGHT,
+                   x0=[shape[0], shape[1], 0.0, 0.0])
+    theta = run.theta1
+    # upward zero crossings of theta1 (a cosine started at its maximum), interpolated
+    i = np.flatnonzero((theta[:-1] < 0) & (theta[1:] >= 0))
+    t0 = run.t[i] - theta[i] * (run.t[i + 1] - run.t[i]) / (theta[i + 1] - theta[i])
+    assert np.mean(np.diff(t0)) == pytest.approx(period, rel=1e-6)
+
+
+@pytest.mark.parametrize("accel_g", [0.2, 0.5])
+def test_point_mass_acceleration_step_peak_swing(accel_g):
+    """Point mass (e = 0) under a step in support acceleration a from rest: the peak swing is
+    2 atan(a/g), twice the steady angle (FACTS 5). The swing is away from the motion."""
+    l, a = 10.0, accel_g * G0
+    pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), l)
+    period = 2 * np.pi * np.sqrt(l / G0)
+    run = simulate(pendulum, ConstantAcceleration(a, 10 * period), t_end=1.5 * period,
+                   solver=TIGHT)
+    expected = 2 * np.arctan(a / G0)
+    assert run.metrics.max_rope_angle == pytest.approx(expected, rel=1e-6)
+    assert run.theta1.min() == pytest.approx(-expected, rel=1e-6)
+    # with the CG at the hub the airframe does not rotate: the load angle is the rope angle
+    assert run.metrics.max_load_angle == pytest.approx(expected, rel=1e-6)
+
+
+def test_point_mass_velocity_step():
+    """Point mass under a step dV in support velocity: cos(theta_max) = 1 - dV^2/(2 g L), and
+    the tension at the bottom of the swing m (g + dV^2/L) (FACTS 5), rigid rope. (An elastic
+    cable would see that tension applied suddenly and overshoot it: not this oracle.)"""
+    l, dv = 10.0, 4.0
+    pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), l)
+    period = 2 * np.pi * np.sqrt(l / G0)
+    run = simulate(pendulum, VelocityStep(dv), t_end=period, solver=TIGHT)
+    assert np.cos(run.metrics.max_rope_angle) == pytest.approx(1 - dv**2 / (2 * G0 * l),
+                                                               rel=1e-7)
+    assert run.metrics.max_tension_ratio == pytest.approx(1 + dv**2 / (G0 * l), rel=1e-9)
+    assert run.metrics.t_max_tension_ratio == 0.0
+
+
+def _energy(run):
+    """Kinetic + potential (+ strain) energy from the states, written from the geometry."""
+    p = run.pendulum
+    m, inertia, e, g = p.body.mass, p.body.roll_inertia, p.body.cg_below_hub, p.gravity
+    if p.rigid:
+        th1, th2, w1, w2 = run.states
+        l = p.rope_length
+        vy = l * np.cos(th1) * w1 + e * np.cos(th2) * w2
+        vz = l * np.sin(th1) * w1 + e * np.sin(th2) * w2
+        z = -l * np.cos(th1) - e * np.cos(th2)
+        strain = 0.0
+    else:
+        ry, rz, th2, vry, vrz, w2 = run.states
+        vy = vry + e * np.cos(th2) * w2
+        vz = vrz + e * np.sin(th2) * w2
+        z = rz - e * np.cos(th2)
+        stretch = np.maximum(np.hypot(ry, rz) - p.rope_length, 0.0)
+        strain = 0.5 * p.cable_stiffness * stretch**2
+    return 0.5 * m * (vy**2 + vz**2) + 0.5 * inertia * w2**2 + m * g * z + strain
+
+
+def test_energy_conserved_rigid_rope():
+    """Fixed support, no damping: total energy is conserved (to 1e-8 of m g l) through a
+    large-amplitude swing with both modes excited."""
+    pendulum = LateralPendulum(UH60, 18.0 * FOOT)
+    run = simulate(pendulum, FIXED, t_end=10.0, solver=TIGHT, x0=[0.6, -0.4, 0.0, 0.5])
+    energy = _energy(run)
+    scale = pendulum.weight * pendulum.rope_length
+    assert np.ptp(energy) < 1e-8 * scale
+
+
+def test_energy_conserved_elastic_cable_through_slack():
+    """Fixed support, no damping, elastic cable started from a large swing that slackens the
+    cable: kinetic + potential + strain energy is conserved (the tension-only law is
+    conservative)."""
+    pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=2e7)
+    x0 = [0.0, -pendulum.hanging_length, 0.0, 7.0, 4.0, 1.5]
+    run = simulate(pendulum, FIXED, t_end=6.0, x0=x0,
+                   solver=SolverSettings("DOP853", 1e-11, 1e-12, output_step=0.002))
+    assert run.metrics.slack  # the case does go slack
+    energy = _energy(run)
+    assert np.ptp(energy) < 1e-6 * pendulum.weight * pendulum.rope_length
+
+
+def test_damping_only_dissipates():
+    """With aerodynamic damping and a fixed support, energy never increases (dissipation)."""
+    pendulum = LateralPendulum(UH60, 18.0 * FOOT, lateral_damping=2000.0, roll_damping=5000.0)
+    run = simulate(pendulum, FIXED, t_end=15.0, solver=TIGHT, x0=[0.4, -0.2, 0.0, 0.3])
+    energy = _energy(run)
+    assert np.all(np.diff(energy) <= 1e-9 * pendulum.weight)
+    assert energy[-1] < energy[0]
+
+
+def test_elastic_cable_converges_to_rigid_rope():
+    """As EA grows, the elastic cable's peak load angle and peak tension tend to the rigid
+    rope's (the rigid-rope limit): EA = 1e6, 1e7, 1e8 N give load-angle differences of about
+    8 %, 0.3 %, 0.04 %; the peak tension, which carries the bounce mode's dynamic overshoot,
+    converges more slowly."""
+    l = 18.0 * FOOT
+    motion = SmoothStep.from_peak_acceleration(0.3 * G0, 2.0)
+    eas = [1e6, 1e7, 1e8]
+    pendulums = [LateralPendulum(UH60, l, cable_ea=ea) for ea in eas]
+    pendulums.append(LateralPendulum(UH60, l))
+    metrics, _ = sweep(pendulums, [motion] * len(pendulums), t_end=8.0)
+    angle = metrics.max_load_angle
+    error = np.abs(angle[:-1] - angle[-1]) / angle[-1]
+    assert np.all(np.diff(error) < 0)
+    assert error[-1] < 1e-3
+    tension_error = np.abs(metrics.max_tension_ratio[:-1] - metrics.max_tension_ratio[-1])
+    assert np.all(np.diff(tension_error) < 0)
+    assert tension_error[-1] < 5e-3
+
+
+@pytest.mark.parametrize("cable_ea", [None, 2e7])
+def test_static_tension_equals_weight(cable_ea):
+    """Hanging at rest under a fixed hook: tension equals the weight, the hub load is axial
+    (static equilibrium), and the elastic cable is stretched by m g/(EA/l)."""
+    l = 60.0 * FOOT
+    pendulum = LateralPendulum(UH60, l, cable_ea=cable_ea)
+    run = simulate(pendulum, FIXED, t_end=5.0)
+    assert_allclose(run.tension, UH60.mass * G0, rtol=1e-7)
+    fy, fz = run.hub_load
+    assert_allclose(fy, 0.0, atol=1e-9 * UH60.mass * G0)
+    assert_allclose(fz, UH60.mass * G0, rtol=1e-7)
+    if cable_ea is not None:
+        assert pendulum.hanging_length - l == pytest.approx(UH60.mass * G0 * l / cable_ea)
+
+
+def test_hub_load_in_airframe_axes():
+    """Hand calculation: 1000 N along a rope 30 deg from the vertical, hub right of the hook,
+    pulls the hub up and to the left: with the airframe level, Fy = -500 N, Fz = 866 N; with
+    the airframe tilted the same 30 deg, the load is along the mast."""
+    fy, fz = hub_load_airframe_axes(1000.0, np.radians(30.0), 0.0)
+    assert (fy, fz) == (pytest.approx(-500.0), pytest.approx(1000 * np.sqrt(3) / 2))
+    fy, fz = hub_load_airframe_axes(1000.0, np.radians(30.0), np.radians(30.0))
+    assert (fy, fz) == (pytest.approx(0.0, abs=1e-12), pytest.approx(1000.0))
+
+
+@pytest.mark.parametrize("build, match", [
+    (lambda: SlungBody(0.0, 1.0, 1.0), r"mass of 'HC' must be > 0 \[kg\]: value 0.0"),
+    (lambda: SlungBody(-5.0, 1.0, 1.0), r"mass of 'HC' must be > 0 \[kg\]: value -5.0"),
+    (lambda: SlungBody(1.0, 0.0, 1.0), r"roll inertia of 'HC' must be > 0.*value 0.0"),
+    (lambda: SlungBody(1.0, -3.0, 1.0), r"roll inertia of 'HC' must be > 0.*value -3.0"),
+    (lambda: SlungBody(1.0, 1.0, -0.5), r"CG distance below the hub.*>= 0.*value -0.5"),
+    (lambda: SlungBody(float("nan"), 1.0, 1.0), r"mass of 'HC' must be > 0.*value nan"),
+    (lambda: LateralPendulum(UH60, 0.0), r"rope length must be > 0 \[m\]: value 0.0"),
+    (lambda: LateralPendulum(UH60, -10.0), r"rope length must be > 0 \[m\]: value -10.0"),
+    (lambda: LateralPendulum(UH60, 10.0, cable_ea=0.0), r"EA must be > 0.*value 0.0"),
+    (lambda: LateralPendulum(UH60, 10.0, lateral_damping=-1.0), r"damping.*value -1.0"),
+    (lambda: SolverSettings(method="Euler"), r"valid options.*value 'Euler'"),
+    (lambda: SolverSettings(rtol=0.0), r"rtol must be > 0: value 0.0"),
+])
+def test_bad_model_input(build, match):
+    """Bad model input raises InputError naming the rule and echoing the value."""
+    with pytest.raises(InputError, match=match):
+        build()
