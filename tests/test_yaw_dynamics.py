@@ -1,0 +1,197 @@
+"""1-DOF yaw model (paper section 4.2): closed-form checks, signs, drogue damping, integrators.
+
+Closed-form reference: the damped single-degree-of-freedom oscillator I x'' + c x' + k x = f(t)
+(e.g. W. T. Thomson, "Theory of Vibration with Applications", ch. 2 and 4): free response
+x0 e^(-zeta w t) (cos wd t + zeta / sqrt(1 - zeta^2) sin wd t) and step response
+x_s (1 - e^(-zeta w t) (cos wd t + zeta / sqrt(1 - zeta^2) sin wd t)).
+"""
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+from slingloads.analyses.chute_sizing import LinearYaw, neutral_area, run_yaw
+from slingloads.errors import InputError
+from slingloads.models.aero_tables import Table1D, Table2D
+from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
+from slingloads.models.airframe import Hardpoints
+from slingloads.models.gusts import FiniteGust, StepGust, standard_gusts
+from slingloads.models.parachute import Parachute
+from slingloads.models.sample_aircraft import (
+    sample_fin,
+    sample_fuselage,
+    sample_hardpoints,
+    sample_reference,
+)
+from slingloads.models.yaw_dynamics import (
+    FlightCondition,
+    SolverSettings,
+    YawModel,
+    integrate_reference,
+    integrate_rk4,
+)
+from slingloads.units import KNOT
+
+INERTIA, K, C, V = 9000.0, 5000.0, 1500.0, 41.0
+
+
+def oscillator(t, k=K, c=C, inertia=INERTIA):
+    """Unit step response of I x'' + c x' + k x = k u(t), and the free-response shape."""
+    w = np.sqrt(k / inertia)
+    z = c / (2 * np.sqrt(k * inertia))
+    wd = w * np.sqrt(1 - z * z)
+    shape = np.exp(-z * w * t) * (np.cos(wd * t) + z / np.sqrt(1 - z * z) * np.sin(wd * t))
+    return 1.0 - shape, shape
+
+
+def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=1.0471975511965976, fin=True, chute=True):
+    """Fuselage Cn = cn_beta * beta exactly, fin CY linear, reference point on the hub axis."""
+    beta = np.linspace(-span, span, 25)
+    alpha = np.radians([-5.0, 0.0, 5.0])
+    coeffs = {k: np.zeros((3, beta.size)) for k in FUSELAGE_COEFFICIENTS}
+    coeffs["Cn"] = np.tile(cn_beta * beta, (3, 1))
+    fus = FuselageAero(Table2D(alpha, beta, coeffs), 3.0, 11.0, np.array([0.0, 0.0, 0.0]))
+    f = Fin(Table1D(beta, {"CY": cy_fin * beta}), 1.0, np.array([5.0, 0.0, 1.0]), 0.5)
+    hp = Hardpoints(hub=[0.0, 0.0, 1.0], mast_feet=[[0.0, 0.0, 0.5]], chute=[6.0, 0.0, 1.5])
+    return YawModel(fus, f if fin else None, hp, 9000.0, FlightCondition(80 * KNOT),
+                    Parachute(1.0) if chute else None)
+
+
+def test_linear_free_response_matches_closed_form():
+    """Free response of the linearised model (RK4 integrator) against the closed form."""
+    lin = LinearYaw(INERTIA, K, C, {}, V)
+    s = SolverSettings(t_end=30.0, dt=0.01, output_interval=0.1)
+    h = integrate_rk4(lin, 0.0, StepGust(0.0), psi0=0.02, settings=s)
+    _, shape = oscillator(h.time)
+    assert_allclose(h.psi[0], 0.02 * shape, atol=1e-9)
+
+
+def test_linear_step_and_finite_gust_match_closed_form():
+    """Step gust: psi -> gamma0 = atan(v/V) as a step response from the onset; finite gust: the
+    superposition of a step at the onset and a negative step at its end."""
+    lin = LinearYaw(INERTIA, K, C, {}, V)
+    s = SolverSettings(t_end=60.0, dt=0.02, output_interval=0.1)
+    gusts = [StepGust(3.0, 10.0), FiniteGust(3.0, 10.0, 10.0)]
+    h = integrate_rk4(lin, [0.0, 0.0], gusts, settings=s)
+    g0 = np.arctan2(3.0, V)
+    t = h.time
+    step_on = np.where(t >= 10, oscillator(np.maximum(t - 10, 0))[0], 0.0)
+    step_off = np.where(t >= 20, oscillator(np.maximum(t - 20, 0))[0], 0.0)
+    assert_allclose(h.psi[0], g0 * step_on, atol=1e-8)
+    assert_allclose(h.psi[1], g0 * (step_on - step_off), atol=1e-8)
+
+
+def test_nonlinear_model_small_gust_matches_hand_linearisation():
+    """Full model with exactly linear tables and a tiny gust against the closed-form response
+    with stiffness and damping derived by hand from the geometry:
+    k = q (S L n_b - S_f eta y_b l_f + eta_w CD A l_c),
+    c = 1/2 rho V (-S_f eta y_b l_f^2 + eta_w CD A l_c^2)."""
+    model = linear_model()
+    cond = model.condition
+    area = 2.0
+    k = cond.q * (3 * 11 * -0.4 - 1 * 0.5 * -3.0 * 5 + 0.95 * 0.95 * area * 6)
+    c = 0.5 * cond.density * cond.tas * (-1 * 0.5 * -3.0 * 25 + 0.95 * 0.95 * area * 36)
+    s = SolverSettings(t_end=40.0, dt=0.02, output_interval=0.1)
+    h = integrate_rk4(model, area, StepGust(0.02, 5.0), settings=s)
+    g0 = np.arctan2(0.02, cond.tas)
+    expected = g0 * np.where(h.time >= 5, oscillator(np.maximum(h.time - 5, 0), k, c)[0], 0.0)
+    assert_allclose(h.psi[0], expected, atol=2e-3 * g0)
+
+
+def test_drogue_damping_equals_hand_derivation():
+    """Apollo legacy model (Currin et al. 2012): drag along the attachment point's relative
+    velocity u = (V cos b, -V sin b + r l_c). At b = 0, N = -l_c F_y with
+    F_y = 1/2 rho eta CD A |u| u_y, so dN/dr = -1/2 rho V eta CD A l_c^2 and
+    dN/dbeta = q eta CD A l_c (hand derivation)."""
+    model = linear_model()
+    rho, v, area, l_c = model.condition.density, model.condition.tas, 1.7, 6.0
+    r = 1e-6
+    _, _, plus, _ = model.moments(0.0, r, v, area)
+    _, _, minus, _ = model.moments(0.0, -r, v, area)
+    assert float(plus - minus) / (2 * r) == pytest.approx(
+        -0.5 * rho * v * 0.95 * 0.95 * area * l_c**2, rel=1e-6)
+    b = 1e-6
+    _, _, plus, _ = model.moments(b, 0.0, v, area)
+    _, _, minus, _ = model.moments(-b, 0.0, v, area)
+    assert float(plus - minus) / (2 * b) == pytest.approx(
+        0.5 * rho * v * v * 0.95 * 0.95 * area * l_c, rel=1e-6)
+
+
+def test_signs_fuselage_diverges_fin_and_chute_converge():
+    """Facts s.3: the fuselage alone is directionally unstable, so a small yaw grows; with the
+    fin and a parachute of twice the neutral area it decays (paper s.4.2)."""
+    ref = sample_reference("HC1")
+    s = SolverSettings(t_end=60.0, dt=0.05, output_interval=0.5)
+    alone = YawModel(sample_fuselage("HC1"), None, sample_hardpoints("HC1"), ref.yaw_inertia)
+    h = integrate_rk4(alone, 0.0, StepGust(0.0), psi0=np.radians(0.5), settings=s)
+    assert np.degrees(h.psi[0]).max() > 10.0
+    full = YawModel(sample_fuselage("HC1"), sample_fin("HC1"), sample_hardpoints("HC1"),
+                    ref.yaw_inertia, parachute=Parachute(1.0))
+    area = 2 * neutral_area(full).area
+    h = integrate_rk4(full, area, StepGust(0.0), psi0=np.radians(0.5), settings=s)
+    assert abs(h.psi[0, -1]) < 0.01 * np.radians(0.5)
+
+
+def test_log_decrement_matches_linear_damping_ratio():
+    """Logarithmic decrement delta = 2 pi zeta / sqrt(1 - zeta^2) of the free decay after a
+    small finite gust equals the hand-derived linear damping ratio (linear tables)."""
+    model = linear_model()
+    cond = model.condition
+    area = 2.0
+    k = cond.q * (3 * 11 * -0.4 + 7.5 + 0.9025 * area * 6)
+    c = 0.5 * cond.density * cond.tas * (37.5 + 0.9025 * area * 36)
+    zeta = c / (2 * np.sqrt(k * 9000.0))
+    runs = run_yaw(model, area, FiniteGust(0.05, 5.0, 5.0),
+                   SolverSettings(t_end=80.0, dt=0.02, output_interval=0.02))
+    row = runs.to_frame().iloc[0]
+    assert row["damping ratio log decrement [-]"] == pytest.approx(zeta, rel=5e-3)
+    assert row["damping ratio linear [-]"] == pytest.approx(zeta, rel=1e-9)
+    assert row["verdict"] == "stable"
+
+
+def test_vectorised_rk4_agrees_with_solve_ivp():
+    """The vectorised fixed-step RK4 against scipy's adaptive RK45 (rtol 1e-9), one call per
+    run, on the four gust shapes (HC2, 1.5 x neutral area)."""
+    ref = sample_reference("HC2")
+    model = YawModel(sample_fuselage("HC2"), sample_fin("HC2"), sample_hardpoints("HC2"),
+                     ref.yaw_inertia, parachute=Parachute(1.0))
+    area = 1.5 * neutral_area(model).area
+    s = SolverSettings(t_end=60.0, dt=0.05, output_interval=0.5, rtol=1e-9, atol=1e-11)
+    gusts = standard_gusts()
+    fast = integrate_rk4(model, area, gusts, settings=s)
+    slow = integrate_reference(model, area, gusts, settings=s)
+    assert np.degrees(np.abs(fast.psi - slow.psi)).max() < 2e-3
+    assert np.degrees(np.abs(fast.beta - slow.beta)).max() < 2e-3
+
+
+def test_run_leaving_the_table_is_flagged_divergent():
+    """No silent clamping: an unstable fuselage driven out of a +-60 deg table is flagged and
+    judged divergent."""
+    model = linear_model(fin=False, chute=False)
+    runs = run_yaw(model, 0.0, StepGust(2.0, 1.0), SolverSettings(t_end=60.0))
+    row = runs.to_frame().iloc[0]
+    assert bool(row["left table"]) and row["verdict"] == "divergent"
+
+
+def test_bad_dynamic_input():
+    """Zero or negative speed, inertia, area; a gust beyond the tables; bad solver settings and
+    a non-monotonic table: each an InputError echoing the value."""
+    with pytest.raises(InputError, match=r"airspeed must be > 0.*0.0"):
+        FlightCondition(ias=0.0)
+    with pytest.raises(InputError, match=r"airspeed must be > 0.*-5"):
+        FlightCondition(ias=-5.0)
+    m = linear_model()
+    with pytest.raises(InputError, match=r"yaw inertia must be > 0.*0.0"):
+        YawModel(m.fuselage, m.fin, m.hardpoints, 0.0)
+    with pytest.raises(InputError, match=r"parachute area must be >= 0.*-1"):
+        run_yaw(m, -1.0, StepGust())
+    with pytest.raises(InputError, match=r"gust of 100 m/s .* outside the tables' range"):
+        run_yaw(m, 1.0, StepGust(100.0))
+    with pytest.raises(InputError, match="t_end must be a whole multiple of dt.*100.01"):
+        SolverSettings(t_end=100.01, dt=0.05)
+    with pytest.raises(InputError, match=r"dt must be > 0.*-0.05"):
+        SolverSettings(dt=-0.05)
+    with pytest.raises(InputError, match="strictly increasing"):
+        Table1D(np.radians([0.0, 10.0, 10.0]), {"CY": [0.0, -0.5, -0.5]})
+    with pytest.raises(InputError, match=r"flat-plate area must be > 0.*0.0"):
+        Parachute(0.0)

@@ -1,0 +1,127 @@
+"""Neutral yaw static stability (paper section 4.1) and the local linearisation."""
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from slingloads.analyses.chute_sizing import linear_yaw, neutral_area, sizing_sweep
+from slingloads.errors import InputError
+from slingloads.models.aero_tables import Table1D, Table2D
+from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
+from slingloads.models.airframe import Hardpoints
+from slingloads.models.parachute import Parachute
+from slingloads.models.sample_aircraft import (
+    sample_fin,
+    sample_fuselage,
+    sample_hardpoints,
+    sample_reference,
+)
+from slingloads.models.yaw_dynamics import FlightCondition, YawModel
+from slingloads.units import KNOT
+
+ROOT = __import__("pathlib").Path(__file__).resolve().parents[1]
+
+
+def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=1.0471975511965976, ref=(0.0, 0.0, 0.0)):
+    """Fuselage with Cn = cn_beta * beta exactly (other coefficients zero), fin CY linear."""
+    beta = np.linspace(-span, span, 25)
+    alpha = np.radians([-5.0, 0.0, 5.0])
+    coeffs = {k: np.zeros((3, beta.size)) for k in FUSELAGE_COEFFICIENTS}
+    coeffs["Cn"] = np.tile(cn_beta * beta, (3, 1))
+    fus = FuselageAero(Table2D(alpha, beta, coeffs), 3.0, 11.0, np.array(ref))
+    fin = Fin(Table1D(beta, {"CY": cy_fin * beta}), 1.0, np.array([5.0, 0.0, 1.0]), 0.5)
+    hp = Hardpoints(hub=[0.0, 0.0, 1.0], mast_feet=[[0.0, 0.0, 0.5]], chute=[6.0, 0.0, 1.5])
+    return YawModel(fus, fin, hp, 9000.0, FlightCondition(80 * KNOT), Parachute(1.0))
+
+
+def test_neutral_area_by_hand():
+    """Paper s.4.1, sum of yaw moments zero: q S L Cn_b - q S_f eta CY_b l_f + q eta_w CD A l_c = 0
+    worked by hand: A = -(3 * 11 * (-0.4) - 1 * 0.5 * (-3) * 5) / (0.95 * 0.95 * 6)
+    = (13.2 - 7.5) / 5.415 = 1.052632 m^2 (q cancels)."""
+    result = neutral_area(linear_model())
+    assert result.area == pytest.approx(5.7 / 5.415, rel=1e-9)
+    assert result.derivatives["fuselage"] == pytest.approx(
+        FlightCondition(80 * KNOT).q * 3 * 11 * -0.4, rel=1e-9)
+    assert sum(result.derivatives.values()) == pytest.approx(0.0, abs=1e-8)
+
+
+def test_neutral_area_gives_zero_stiffness():
+    """At the neutral area the linearised model's yaw stiffness is zero, and so is the slope at
+    beta = 0 of the full nonlinear static moment (central difference, independent of the fit;
+    the parachute moment there is l_c q eta_w CD A sin(beta), whose slope at 0 is exact)."""
+    model = linear_model()
+    area = neutral_area(model).area
+    assert linear_yaw(model, area).stiffness == pytest.approx(0.0, abs=1e-8)
+    h = np.radians(0.01)
+    plus = sum(model.static_moments(h, area))
+    minus = sum(model.static_moments(-h, area))
+    scale = model.condition.q * 3 * 11 * 0.4
+    assert (plus - minus) / (2 * h) == pytest.approx(0.0, abs=1e-6 * scale)
+
+
+def test_side_force_transfer_to_suspension_axis():
+    """Moment transfer M_axis = M_ref + (r_ref - r_hub) x F: a pure side force CY at a moment
+    reference 1 m aft of the hub adds N = -dx * q S CY (nose right positive), by hand."""
+    beta = np.linspace(-0.5, 0.5, 11)
+    alpha = np.array([-0.1, 0.1])
+    coeffs = {k: np.zeros((2, beta.size)) for k in FUSELAGE_COEFFICIENTS}
+    coeffs["CY"] = np.tile(-2.0 * beta, (2, 1))
+    fus = FuselageAero(Table2D(alpha, beta, coeffs), 3.0, 11.0, np.array([1.0, 0.0, 0.0]))
+    hp = Hardpoints(hub=[0.0, 0.0, 1.0], mast_feet=[[0.0, 0.0, 0.5]])
+    model = YawModel(fus, None, hp, 9000.0)
+    n_fus, _, _ = model.static_moments(np.array([0.2]))
+    assert float(n_fus[0]) == pytest.approx(-1.0 * model.condition.q * 3.0 * (-2.0 * 0.2))
+
+
+def test_sample_neutral_area_from_raw_csv():
+    """Independent recomputation for HC1 from the CSV file with pandas and np.polyfit: fuselage
+    Cn about the hub axis is Cn - dx_ref (CY - CD sin beta) / L at alpha 0, fin Cn = -eta CY;
+    least squares over +-10 deg; area = -(q S L n_b + q S_f l_f (-eta) y_b) / (q eta_w CD l_c)."""
+    ref = sample_reference("HC1")
+    raw = pd.read_csv(ROOT / "slingloads" / "data" / "hc1_fuselage.csv")
+    raw = raw[(raw["alpha [deg]"] == 0) & (raw["beta [deg]"].abs() <= 10)]
+    b = np.radians(raw["beta [deg]"].to_numpy())
+    dx_ref = ref.moment_reference[0] - ref.hub[0]
+    cn = raw["Cn"] - dx_ref * (raw["CY"] - raw["CD"] * np.sin(b)) / ref.fuselage_length
+    n_b = np.polyfit(b, cn, 1)[0]
+    fin = pd.read_csv(ROOT / "slingloads" / "data" / "hc1_fin.csv")
+    fin = fin[fin["beta [deg]"].abs() <= 10]
+    y_b = np.polyfit(np.radians(fin["beta [deg]"]), fin["CY"], 1)[0]
+    l_f = ref.fin_centre_of_pressure[0] - ref.hub[0]
+    l_c = ref.chute[0] - ref.hub[0]
+    expected = -(ref.fuselage_area * ref.fuselage_length * n_b
+                 - ref.fin_area * 0.5 * y_b * l_f) / (0.95 * 0.95 * l_c)
+    model = YawModel(sample_fuselage("HC1"), sample_fin("HC1"), sample_hardpoints("HC1"),
+                     ref.yaw_inertia, parachute=Parachute(1.0))
+    result = neutral_area(model)
+    assert result.area == pytest.approx(expected, rel=1e-9)
+    assert result.area > 0
+    frame = result.to_frame()
+    assert list(frame["component"]) == ["fuselage", "fin", "parachute", "total"]
+    curves = result.curves_frame()
+    parts = curves["N fuselage [N m]"] + curves["N fin [N m]"] + curves["N parachute [N m]"]
+    assert np.allclose(parts, curves["N total [N m]"])
+
+
+def test_already_stable_configuration():
+    """A stabilising fuselage (dCn/dbeta > 0) needs no parachute: the neutral area is negative
+    and the sweep refuses to run from it."""
+    model = linear_model(cn_beta=+0.2)
+    result = neutral_area(model)
+    assert result.already_stable and result.area < 0
+    with pytest.raises(InputError, match="already statically stable"):
+        sizing_sweep(model)
+
+
+def test_bad_static_input():
+    """A parachute attached ahead of the axis cannot stabilise; a reversed fit range is
+    refused; beta outside the tables is refused with the angle echoed."""
+    m = linear_model()
+    hp = Hardpoints(hub=[0.0, 0.0, 1.0], mast_feet=[[0.0, 0.0, 0.5]], chute=[-2.0, 0.0, 1.0])
+    ahead = YawModel(m.fuselage, m.fin, hp, 9000.0, parachute=Parachute(1.0))
+    with pytest.raises(InputError, match=r"aft of the suspension axis.*-2"):
+        neutral_area(ahead)
+    with pytest.raises(InputError, match="fit range"):
+        neutral_area(m, fit_range=(0.2, -0.2))
+    with pytest.raises(InputError, match="beta = 70 deg is outside"):
+        m.static_moments(np.radians(70.0))
