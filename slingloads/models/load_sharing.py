@@ -62,8 +62,16 @@ def rigid_share(points, weights, force, moment, reference):
     moment_g = moment + np.cross(np.asarray(reference, dtype=float) - centroid, force)
     j = np.einsum("k,kl,ij->ij", weights, d * d, np.eye(3)) - np.einsum("k,ki,kj->ij",
                                                                         weights, d, d)
-    scale = max(np.trace(j), 1e-300)
-    j_pinv = np.linalg.pinv(j, rcond=1e-10, hermitian=True) if scale > 0 else np.zeros((3, 3))
+    # Pseudo-inverse of J with an absolute floor as well as a relative one: the centroid of a
+    # single point (or of coincident points) carries round-off of order eps |p|, which makes
+    # J tiny but not zero; inverting that would give huge, spurious opposing forces. Directions
+    # with less stiffness than 1e-10 W |p|max^2 are treated as not carried by forces (their
+    # moment goes into point moments below, so the resultants stay exact).
+    vals, vecs = np.linalg.eigh(j)
+    floor = max(1e-10 * total * float(np.abs(points).max()) ** 2, 1e-10 * vals.max(initial=0))
+    keep = vals > floor
+    inv = np.where(keep, 1.0 / np.where(keep, vals, 1.0), 0.0)
+    j_pinv = (vecs * inv) @ vecs.T
     mu = moment_g @ j_pinv.T
     carried = mu @ j.T
     residual = moment_g - carried
