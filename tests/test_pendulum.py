@@ -1,11 +1,11 @@
 """Lateral pendulum model: verification against closed forms, limits and conservation laws.
 
 The oracles are the analytic results for the planar pendulum with a moving support (rope
-length l, rigid body of mass m, radius of gyration k, CG a distance e below the hub):
+length L, rigid body of mass m, radius of gyration k, CG a distance e below the hub):
 
-* small-oscillation frequencies, the roots of l k^2 w^4 - g (k^2 + e^2 + e l) w^2 + g^2 e = 0,
-  with the limits w^2 = g/(l + e) as k -> 0 and the compound pendulum w^2 = g e/(k^2 + e^2)
-  as l -> 0 (derived from M = m[[l^2, l e], [l e, e^2 + k^2]], K = diag(m g l, m g e));
+* small-oscillation frequencies, the roots of L k^2 w^4 - g (k^2 + e^2 + e L) w^2 + g^2 e = 0,
+  with the limits w^2 = g/(L + e) as k -> 0 and the compound pendulum w^2 = g e/(k^2 + e^2)
+  as L -> 0 (derived from M = m[[L^2, L e], [L e, e^2 + k^2]], K = diag(m g L, m g e));
 * point mass under a step in support acceleration a: peak swing 2 atan(a/g);
 * point mass under a step in support velocity dV: cos(theta_max) = 1 - dV^2/(2 g L), tension
   m (g + dV^2/L) at the bottom of the swing;
@@ -29,7 +29,7 @@ FIXED = VelocityStep(0.0)  # the hook does not move
 
 
 def quartic_omegas(length, k, e, g=G0):
-    """Roots of l k^2 w^4 - g (k^2 + e^2 + e l) w^2 + g^2 e = 0, ascending [rad/s]."""
+    """Roots of L k^2 w^4 - g (k^2 + e^2 + e L) w^2 + g^2 e = 0, ascending [rad/s]."""
     w2 = np.roots([length * k**2, -g * (k**2 + e**2 + e * length), g**2 * e])
     return np.sort(np.sqrt(w2.real))
 
@@ -44,30 +44,30 @@ def test_frequencies_match_closed_form_quartic(body, rope_ft):
 
 
 def test_frequency_limit_point_mass():
-    """k -> 0: the low root tends to the simple pendulum of length l + e, w^2 = g/(l + e)."""
-    l, e, k = 10.0, 1.5, 1e-4
-    pendulum = LateralPendulum(SlungBody(1000.0, 1000.0 * k**2, e), l)
-    assert pendulum.linear_modes().omega[0] ** 2 == pytest.approx(G0 / (l + e), rel=1e-6)
+    """k -> 0: the low root tends to the simple pendulum of length L + e, w^2 = g/(L + e)."""
+    L, e, k = 10.0, 1.5, 1e-4
+    pendulum = LateralPendulum(SlungBody(1000.0, 1000.0 * k**2, e), L)
+    assert pendulum.linear_modes().omega[0] ** 2 == pytest.approx(G0 / (L + e), rel=1e-6)
 
 
 def test_frequency_limit_compound_pendulum():
-    """l -> 0: the low root tends to the compound pendulum w^2 = g e/(k^2 + e^2)."""
-    l, e, k = 1e-7, 1.5, 1.2
-    pendulum = LateralPendulum(SlungBody(1000.0, 1000.0 * k**2, e), l)
+    """L -> 0: the low root tends to the compound pendulum w^2 = g e/(k^2 + e^2)."""
+    L, e, k = 1e-7, 1.5, 1.2
+    pendulum = LateralPendulum(SlungBody(1000.0, 1000.0 * k**2, e), L)
     assert pendulum.linear_modes().omega[0] ** 2 == pytest.approx(G0 * e / (k**2 + e**2),
                                                                  rel=1e-6)
 
 
 def test_elastic_cable_modes():
-    """Elastic cable: the bounce mode is the spring-mass w^2 = (EA/l)/m, and the swing modes
-    are the quartic's with the rope stretched by m g/(EA/l)."""
-    ea, l = 2e7, 18.0 * FOOT
-    pendulum = LateralPendulum(UH60, l, cable_ea=ea)
+    """Elastic cable: the bounce mode is the spring-mass w^2 = (EA/L)/m, and the swing modes
+    are the quartic's with the rope stretched by m g/(EA/L)."""
+    ea, L = 2e7, 18.0 * FOOT
+    pendulum = LateralPendulum(UH60, L, cable_ea=ea)
     modes = pendulum.linear_modes()
-    stretched = l * (1.0 + UH60.mass * G0 / ea)
+    stretched = L * (1.0 + UH60.mass * G0 / ea)
     expected = quartic_omegas(stretched, UH60.radius_of_gyration, UH60.cg_below_hub)
     assert_allclose(modes.omega[:2], expected, rtol=1e-10)
-    assert modes.omega[2] == pytest.approx(np.sqrt(ea / l / UH60.mass), rel=1e-12)
+    assert modes.omega[2] == pytest.approx(np.sqrt(ea / L / UH60.mass), rel=1e-12)
     assert modes.kinds == ("swing", "swing", "bounce")
 
 
@@ -75,11 +75,11 @@ def test_elastic_cable_modes():
 def test_nonlinear_small_swing_period_matches_quartic(mode):
     """Started in a mode shape at 1e-4 rad, the nonlinear equations oscillate at that mode's
     closed-form frequency (quartic root): checks the equations of motion, not only M and K."""
-    l = 60.0 * FOOT
-    pendulum = LateralPendulum(UH60, l)
+    L = 60.0 * FOOT
+    pendulum = LateralPendulum(UH60, L)
     modes = pendulum.linear_modes()
     shape = modes.shapes[mode, :2] * 1e-4
-    omega = quartic_omegas(l, UH60.radius_of_gyration, UH60.cg_below_hub)[mode]
+    omega = quartic_omegas(L, UH60.radius_of_gyration, UH60.cg_below_hub)[mode]
     period = 2 * np.pi / omega
     run = simulate(pendulum, FIXED, t_end=5 * period, solver=TIGHT,
                    x0=[shape[0], shape[1], 0.0, 0.0])
@@ -94,9 +94,9 @@ def test_nonlinear_small_swing_period_matches_quartic(mode):
 def test_point_mass_acceleration_step_peak_swing(accel_g):
     """Point mass (e = 0) under a step in support acceleration a from rest: the peak swing is
     2 atan(a/g), twice the steady angle (FACTS 5). The swing is away from the motion."""
-    l, a = 10.0, accel_g * G0
-    pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), l)
-    period = 2 * np.pi * np.sqrt(l / G0)
+    L, a = 10.0, accel_g * G0
+    pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), L)
+    period = 2 * np.pi * np.sqrt(L / G0)
     run = simulate(pendulum, ConstantAcceleration(a, 10 * period), t_end=1.5 * period,
                    solver=TIGHT)
     expected = 2 * np.arctan(a / G0)
@@ -110,13 +110,13 @@ def test_point_mass_velocity_step():
     """Point mass under a step dV in support velocity: cos(theta_max) = 1 - dV^2/(2 g L), and
     the tension at the bottom of the swing m (g + dV^2/L) (FACTS 5), rigid rope. (An elastic
     cable would see that tension applied suddenly and overshoot it: not this oracle.)"""
-    l, dv = 10.0, 4.0
-    pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), l)
-    period = 2 * np.pi * np.sqrt(l / G0)
+    L, dv = 10.0, 4.0
+    pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), L)
+    period = 2 * np.pi * np.sqrt(L / G0)
     run = simulate(pendulum, VelocityStep(dv), t_end=period, solver=TIGHT)
-    assert np.cos(run.metrics.max_rope_angle) == pytest.approx(1 - dv**2 / (2 * G0 * l),
+    assert np.cos(run.metrics.max_rope_angle) == pytest.approx(1 - dv**2 / (2 * G0 * L),
                                                                rel=1e-7)
-    assert run.metrics.max_tension_ratio == pytest.approx(1 + dv**2 / (G0 * l), rel=1e-9)
+    assert run.metrics.max_tension_ratio == pytest.approx(1 + dv**2 / (G0 * L), rel=1e-9)
     assert run.metrics.t_max_tension_ratio == 0.0
 
 
@@ -126,10 +126,10 @@ def _energy(run):
     m, inertia, e, g = p.body.mass, p.body.roll_inertia, p.body.cg_below_hub, p.gravity
     if p.rigid:
         th1, th2, w1, w2 = run.states
-        l = p.rope_length
-        vy = l * np.cos(th1) * w1 + e * np.cos(th2) * w2
-        vz = l * np.sin(th1) * w1 + e * np.sin(th2) * w2
-        z = -l * np.cos(th1) - e * np.cos(th2)
+        L = p.rope_length
+        vy = L * np.cos(th1) * w1 + e * np.cos(th2) * w2
+        vz = L * np.sin(th1) * w1 + e * np.sin(th2) * w2
+        z = -L * np.cos(th1) - e * np.cos(th2)
         strain = 0.0
     else:
         ry, rz, th2, vry, vrz, w2 = run.states
@@ -142,7 +142,7 @@ def _energy(run):
 
 
 def test_energy_conserved_rigid_rope():
-    """Fixed support, no damping: total energy is conserved (to 1e-8 of m g l) through a
+    """Fixed support, no damping: total energy is conserved (to 1e-8 of m g L) through a
     large-amplitude swing with both modes excited."""
     pendulum = LateralPendulum(UH60, 18.0 * FOOT)
     run = simulate(pendulum, FIXED, t_end=10.0, solver=TIGHT, x0=[0.6, -0.4, 0.0, 0.5])
@@ -178,11 +178,11 @@ def test_elastic_cable_converges_to_rigid_rope():
     rope's (the rigid-rope limit): EA = 1e6, 1e7, 1e8 N give load-angle differences of about
     8 %, 0.3 %, 0.04 %; the peak tension, which carries the bounce mode's dynamic overshoot,
     converges more slowly."""
-    l = 18.0 * FOOT
+    L = 18.0 * FOOT
     motion = SmoothStep.from_peak_acceleration(0.3 * G0, 2.0)
     eas = [1e6, 1e7, 1e8]
-    pendulums = [LateralPendulum(UH60, l, cable_ea=ea) for ea in eas]
-    pendulums.append(LateralPendulum(UH60, l))
+    pendulums = [LateralPendulum(UH60, L, cable_ea=ea) for ea in eas]
+    pendulums.append(LateralPendulum(UH60, L))
     metrics, _ = sweep(pendulums, [motion] * len(pendulums), t_end=8.0)
     angle = metrics.max_load_angle
     error = np.abs(angle[:-1] - angle[-1]) / angle[-1]
@@ -196,16 +196,16 @@ def test_elastic_cable_converges_to_rigid_rope():
 @pytest.mark.parametrize("cable_ea", [None, 2e7])
 def test_static_tension_equals_weight(cable_ea):
     """Hanging at rest under a fixed hook: tension equals the weight, the hub load is axial
-    (static equilibrium), and the elastic cable is stretched by m g/(EA/l)."""
-    l = 60.0 * FOOT
-    pendulum = LateralPendulum(UH60, l, cable_ea=cable_ea)
+    (static equilibrium), and the elastic cable is stretched by m g/(EA/L)."""
+    L = 60.0 * FOOT
+    pendulum = LateralPendulum(UH60, L, cable_ea=cable_ea)
     run = simulate(pendulum, FIXED, t_end=5.0)
     assert_allclose(run.tension, UH60.mass * G0, rtol=1e-7)
     fy, fz = run.hub_load
     assert_allclose(fy, 0.0, atol=1e-9 * UH60.mass * G0)
     assert_allclose(fz, UH60.mass * G0, rtol=1e-7)
     if cable_ea is not None:
-        assert pendulum.hanging_length - l == pytest.approx(UH60.mass * G0 * l / cable_ea)
+        assert pendulum.hanging_length - L == pytest.approx(UH60.mass * G0 * L / cable_ea)
 
 
 def test_hub_load_in_airframe_axes():

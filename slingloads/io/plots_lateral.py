@@ -1,0 +1,114 @@
+"""Plots of the lateral-step pendulum: time histories of one run, and the largest load angle
+against the carrier's acceleration for each rope length.
+
+Every function builds and returns a :class:`matplotlib.figure.Figure` through the object API
+(no pyplot, no global state). Angles are drawn in degrees beside the CS-29.865 30 deg line.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from slingloads.analyses.lateral import REGULATORY_ANGLE
+from slingloads.units import FOOT, G0
+
+_REG_STYLE = {"color": "tab:red", "linestyle": "--", "linewidth": 1.0}
+
+
+def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
+    """Time histories of one run: angles, tension and hub load, carrier motion.
+
+    Parameters
+    ----------
+    run : slingloads.analyses.lateral.LateralRun
+    regulatory_angle : float
+        Angle drawn as the reference line (CS-29.865: 30 deg). [rad]
+    title : str, optional
+        Figure title (default: the body, rope length and motion).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Three axes: angles [deg] with +-30 deg lines; T/(m g) [-]; carrier S [m] and S'' [g].
+    """
+    fig = Figure(figsize=(8.0, 8.0), layout="constrained")
+    ax_angle, ax_tension, ax_carrier = fig.subplots(3, 1, sharex=True)
+    t = run.t
+    ax_angle.plot(t, np.degrees(run.theta1), label="rope angle theta1")
+    ax_angle.plot(t, np.degrees(run.theta2), label="airframe angle theta2")
+    ax_angle.plot(t, np.degrees(run.load_angle), color="black", linewidth=1.6,
+                  label="load angle theta1 - theta2")
+    reg = np.degrees(regulatory_angle)
+    ax_angle.axhline(reg, label=f"CS-29.865 {reg:.0f} deg", **_REG_STYLE)
+    ax_angle.axhline(-reg, **_REG_STYLE)
+    metrics = run.metrics
+    t_peak = float(metrics.t_max_load_angle)
+    peak = np.degrees(np.interp(t_peak, t, run.load_angle))
+    ax_angle.plot([t_peak], [peak], "o", color="black",
+                  label=f"max |theta1 - theta2| = {np.degrees(metrics.max_load_angle):.2f} deg")
+    ax_angle.set_ylabel("angle [deg]")
+    ax_angle.legend(loc="best", fontsize="small")
+    ax_angle.grid(True, alpha=0.3)
+
+    ax_tension.plot(t, run.tension_ratio, color="tab:purple", label="T/(m g)")
+    ax_tension.axhline(1.0, color="0.5", linewidth=0.8)
+    if np.any(run.tension <= 0):
+        ax_tension.fill_between(t, 0, 1, where=run.tension <= 0, color="tab:orange", alpha=0.3,
+                                transform=ax_tension.get_xaxis_transform(), label="slack")
+    ax_tension.set_ylabel("T/(m g) [-]")
+    ax_tension.legend(loc="best", fontsize="small")
+    ax_tension.grid(True, alpha=0.3)
+
+    ax_carrier.plot(t, run.carrier[0], color="tab:green", label="S")
+    ax_carrier.set_ylabel("carrier S [m]")
+    ax_carrier.set_xlabel("t [s]")
+    twin = ax_carrier.twinx()
+    twin.plot(t, run.carrier[2] / G0, color="tab:olive", linestyle=":", label="S''")
+    twin.set_ylabel("carrier S'' [g]")
+    ax_carrier.grid(True, alpha=0.3)
+
+    if title is None:
+        p = run.pendulum
+        title = (f"{p.body.name}, rope {p.rope_length:.3g} m "
+                 f"({p.rope_length / FOOT:.0f} ft): {run.motion.describe()}")
+    fig.suptitle(title, fontsize="medium")
+    return fig
+
+
+def plot_max_angle_vs_acceleration(study, title=None):
+    """Largest load angle against the carrier's peak acceleration, one line per rope length.
+
+    Each point is the largest max |theta1 - theta2| over the bodies, durations and motion
+    kinds at that rope length and acceleration (velocity steps are left out). The 30 deg line
+    and the recommended design angle are drawn beside.
+
+    Parameters
+    ----------
+    study : slingloads.analyses.lateral.LateralStudy
+    title : str, optional
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig = Figure(figsize=(7.0, 4.8), layout="constrained")
+    ax = fig.subplots()
+    envelope = study.envelope_frame()
+    for length, rows in envelope.groupby("rope length [m]"):
+        rows = rows.sort_values("peak S'' [g]")
+        ax.plot(rows["peak S'' [g]"], rows["max |theta1 - theta2| [deg]"], marker="o",
+                label=f"rope {length:.3g} m ({length / FOOT:.0f} ft)")
+    reg = np.degrees(study.regulatory_angle)
+    ax.axhline(reg, label=f"CS-29.865 {reg:.0f} deg", **_REG_STYLE)
+    ax.axhline(np.degrees(study.recommended_angle), color="tab:green", linestyle="-.",
+               label=f"recommended {np.degrees(study.recommended_angle):.1f} deg "
+                     f"(margin {study.margin:g})")
+    ax.set_xlabel("carrier peak lateral acceleration [g]")
+    ax.set_ylabel("max |theta1 - theta2| [deg]")
+    ax.set_ylim(bottom=0.0)
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    ax.set_title(title or "Largest load angle from the mast against carrier acceleration",
+                 fontsize="medium")
+    return fig
