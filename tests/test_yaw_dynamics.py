@@ -32,6 +32,8 @@ from slingloads.models.yaw_dynamics import (
 )
 from slingloads.units import KNOT
 
+SPAN = np.radians(60.0)
+
 INERTIA, K, C, V = 9000.0, 5000.0, 1500.0, 41.0
 
 
@@ -44,7 +46,7 @@ def oscillator(t, k=K, c=C, inertia=INERTIA):
     return 1.0 - shape, shape
 
 
-def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=1.0471975511965976, fin=True, chute=True):
+def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=SPAN, fin=True, chute=True):
     """Fuselage Cn = cn_beta * beta exactly, fin CY linear, reference point on the hub axis."""
     beta = np.linspace(-span, span, 25)
     alpha = np.radians([-5.0, 0.0, 5.0])

@@ -19,10 +19,12 @@ from slingloads.models.sample_aircraft import (
 from slingloads.models.yaw_dynamics import FlightCondition, YawModel
 from slingloads.units import KNOT
 
+SPAN = np.radians(60.0)
+
 ROOT = __import__("pathlib").Path(__file__).resolve().parents[1]
 
 
-def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=1.0471975511965976, ref=(0.0, 0.0, 0.0)):
+def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=SPAN, ref=(0.0, 0.0, 0.0)):
     """Fuselage with Cn = cn_beta * beta exactly (other coefficients zero), fin CY linear."""
     beta = np.linspace(-span, span, 25)
     alpha = np.radians([-5.0, 0.0, 5.0])
