@@ -236,3 +236,19 @@ def test_bad_model_input(build, match):
     """Bad model input raises InputError naming the rule and echoing the value."""
     with pytest.raises(InputError, match=match):
         build()
+
+
+def test_load_angle_is_an_angle_between_directions():
+    """Regression: an airframe tumbling on a slack cable (theta2 counting whole turns) once gave
+    load angles of thousands of degrees; the angle between the cable force and the mast is at
+    most 180 deg, and a full extra turn of the airframe does not change it."""
+    from slingloads.models.pendulum import load_angle
+
+    assert load_angle(0.1, 0.1 - 2 * np.pi) == pytest.approx(0.0, abs=1e-12)
+    assert load_angle(0.0, np.radians(190.0)) == pytest.approx(np.radians(170.0))
+    pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=2e7)
+    x0 = [0.0, -pendulum.hanging_length, 0.0, 0.0, 0.0, 6.0]  # airframe spun fast
+    run = simulate(pendulum, FIXED, t_end=4.0, x0=x0)
+    assert np.ptp(run.theta2) > 2 * np.pi
+    assert np.all(np.abs(run.load_angle) <= np.pi)
+    assert run.metrics.max_load_angle <= np.pi

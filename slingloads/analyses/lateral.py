@@ -42,13 +42,21 @@ from slingloads.models.pendulum import (
     airframe_angle,
     elastic_cable_derivatives,
     hub_load_airframe_axes,
+    load_angle,
     rigid_rope_derivatives,
     rope_angle,
 )
-from slingloads.units import G0
+from slingloads.units import FOOT, G0
 
 #: CS-29.865 minimum angle of the hook load from the mast. [rad]
 REGULATORY_ANGLE = np.radians(30.0)
+
+#: The paper's rope lengths, 18, 60 and 100 ft. [m]
+PAPER_ROPE_LENGTHS = tuple(ft * FOOT for ft in (18.0, 60.0, 100.0))
+#: A default sweep of carrier peak accelerations, 0.1 to 0.5 g. [m/s^2]
+DEFAULT_ACCELERATIONS = tuple(n * G0 for n in (0.1, 0.2, 0.3, 0.4, 0.5))
+#: A default sweep of motion durations. [s]
+DEFAULT_DURATIONS = (0.5, 1.0, 2.0, 4.0)
 
 _SOLVE_IVP_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 
@@ -194,20 +202,25 @@ class RunMetrics:
         }
 
     @classmethod
-    def from_histories(cls, t, load_angle, rope_angle_, tension_ratio, rigid=False):
+    def from_histories(cls, t, angle, rope_angle_, tension_ratio, rigid=False):
         """Metrics of sampled time histories (last axis = time).
 
-        For the rigid rope (``rigid=True``) the angles count only until the tension first
-        goes negative, after which that model is not valid.
+        ``angle`` is theta1 - theta2 (wrapped here to [-pi, pi)). For the rigid rope
+        (``rigid=True``) the angles count only until the tension first goes negative, after
+        which that model is not valid.
         """
         taut = np.asarray(tension_ratio) > 0
         if rigid:
             taut = np.logical_and.accumulate(taut, axis=-1)
-        a, ta = _peak(t, np.abs(load_angle), taut)
+        a, ta = _peak(t, np.abs(load_angle(angle, 0.0)), taut)
+        a = np.minimum(a, np.pi)  # a parabola through the wrap at pi must not pass it
         r, tr = _peak(t, np.abs(rope_angle_), taut)
         n, tn = _peak(t, tension_ratio, smooth=taut)
         low, _ = _peak(t, -np.asarray(tension_ratio), smooth=taut)
-        return cls(a, ta, r, tr, n, tn, -low)
+        values = [a, ta, r, tr, n, tn, -low]
+        if np.ndim(a) == 0:  # one run: plain floats
+            values = [float(v) for v in values]
+        return cls(*values)
 
 
 def default_end_time(pendulums, motions, periods=3.0):
@@ -265,8 +278,8 @@ class LateralRun:
 
     @property
     def load_angle(self):
-        """theta1 - theta2: angle of the cable force from the mast. [rad]"""
-        return self.theta1 - self.theta2
+        """theta1 - theta2, wrapped to [-pi, pi): angle of the cable force from the mast. [rad]"""
+        return load_angle(self.theta1, self.theta2)
 
     @property
     def tension_ratio(self):
@@ -455,7 +468,7 @@ def _rk4_group(pendulums, motions, n_steps, h, rigid):
         if rigid:
             alive[:] = alive & taut
             taut = alive.copy()
-        return np.stack([np.abs(th1 - th2), np.abs(th1), ratio, -ratio]), taut
+        return np.stack([np.abs(load_angle(th1, th2)), np.abs(th1), ratio, -ratio]), taut
 
     kin = batch.kinematics(0.0)
     k1, tension = f(kin, x)
@@ -485,6 +498,7 @@ def _rk4_group(pendulums, motions, n_steps, h, rigid):
         t_best = np.where(better, t + h, t_best)
         y0, y1, ok0, ok1 = y1, y2, ok1, ok2
     best = np.where(np.isfinite(best), best, np.nan)
+    best[0] = np.minimum(best[0], np.pi)  # a parabola through the wrap at pi must not pass it
     return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3])
 
 
@@ -615,7 +629,7 @@ class LateralStudy:
     @property
     def critical_index(self):
         """Index of the case with the largest load angle."""
-        return int(np.argmax(self.metrics.max_load_angle))
+        return int(np.nanargmax(self.metrics.max_load_angle))
 
     @property
     def max_load_angle(self):
@@ -626,6 +640,13 @@ class LateralStudy:
     def critical_case(self):
         """The row of :meth:`to_frame` of the case with the largest load angle (a Series)."""
         return self.to_frame().iloc[self.critical_index]
+
+    @property
+    def max_load_angle_taut(self):
+        """Largest |theta1 - theta2| over the cases whose cable never went slack (NaN if
+        none). [rad]"""
+        values = np.where(self.metrics.slack, np.nan, self.metrics.max_load_angle)
+        return float(np.nanmax(values)) if np.any(np.isfinite(values)) else np.nan
 
     @property
     def recommended_angle(self):
@@ -666,11 +687,14 @@ class LateralStudy:
             ("  rope length", case["rope length [m]"], "m"),
             ("  carrier motion", case["motion description"], "-"),
             ("  time of the maximum", case["t at max |theta1 - theta2| [s]"], "s"),
+            ("  cable slack in that case", bool(case["slack [-]"]), "-"),
+            ("cases whose cable went slack", int(np.sum(self.metrics.slack)), "-"),
+            ("largest load angle, cases that stayed taut",
+             np.degrees(self.max_load_angle_taut), "deg"),
             ("margin", self.margin, "-"),
             ("recommended design angle", np.degrees(self.recommended_angle), "deg"),
             ("CS-29.865 angle", np.degrees(self.regulatory_angle), "deg"),
             ("recommended angle exceeds CS-29.865 angle", self.exceeds_regulatory_angle, "-"),
-            ("any cable slack", bool(np.any(self.metrics.slack)), "-"),
             ("run length", self.t_end, "s"),
             ("RK4 step", self.step, "s"),
         ]

@@ -403,6 +403,15 @@ def airframe_angle(x, rigid):
     return x[1] if rigid else x[2]
 
 
+def load_angle(theta1, theta2):
+    """theta1 - theta2 wrapped to [-pi, pi): the angle of the cable force from the mast. [rad]
+
+    The airframe angle theta2 is continuous (it counts whole turns if the airframe tumbles on
+    a slack cable); the angle between two directions is taken modulo a turn.
+    """
+    return np.mod(np.asarray(theta1) - np.asarray(theta2) + np.pi, 2.0 * np.pi) - np.pi
+
+
 def hub_load_airframe_axes(tension, theta1, theta2):
     """Cable force on the airframe at the hub, in airframe axes.
 
