@@ -247,7 +247,7 @@ def test_load_angle_is_an_angle_between_directions():
     assert load_angle(0.1, 0.1 - 2 * np.pi) == pytest.approx(0.0, abs=1e-12)
     assert load_angle(0.0, np.radians(190.0)) == pytest.approx(np.radians(170.0))
     pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=2e7)
-    x0 = [0.0, -pendulum.hanging_length, 0.0, 0.0, 0.0, 6.0]  # airframe spun fast
+    x0 = [0.0, -pendulum.hanging_length, 0.0, 0.0, 0.0, 12.0]  # airframe spun fast
     run = simulate(pendulum, FIXED, t_end=4.0, x0=x0)
     assert np.ptp(run.theta2) > 2 * np.pi
     assert np.all(np.abs(run.load_angle) <= np.pi)
