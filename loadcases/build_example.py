@@ -9,6 +9,7 @@ are written into the workbook's README sheet.
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +24,7 @@ from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sampl
 from slingloads.units import INCH, POUND
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
 OUT = HERE / "example-light-twin.xlsx"
 
 # id, description, mass [kg], x, y, z [m]  (x aft from the nose, z up from the skid plane)
@@ -170,9 +172,21 @@ def main():
 
 #: Flat-plate area of the example's parachute [m^2] (1.4 x the static neutral area).
 PARACHUTE_AREA = 4.0
-#: Sheets and parameters of the lateral-pendulum and parachute-sizing studies.
+#: Sheets and parameters of the lateral-pendulum and parachute-sizing studies, from
+#: loadcases/example_lateral.py and loadcases/example_chute.py (each defines TABLES and
+#: PARAMETERS, and may define NOTES).
 EXTRA_TABLES = {}
 EXTRA_PARAMETERS = {}
+for _module in ("example_lateral", "example_chute"):
+    try:
+        _part = __import__(_module)
+    except ModuleNotFoundError as _err:
+        if _err.name != _module:
+            raise
+        continue
+    EXTRA_TABLES.update(_part.TABLES)
+    EXTRA_PARAMETERS.update(_part.PARAMETERS)
+    NOTES += list(getattr(_part, "NOTES", []))
 
 if __name__ == "__main__":
     main()

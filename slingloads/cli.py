@@ -6,6 +6,7 @@ Exit codes: 0 success, 2 bad input (nothing written), 1 an unexpected failure.
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 from pathlib import Path
 
@@ -57,6 +58,21 @@ def inputs_digest(study):
 
 
 register("loads", "loads", _loads_compute, _loads_write)
+
+
+def _lazy(module, name):
+    """A function of ``module`` imported on first call (keeps ``slingloads --help`` fast)."""
+    def call(*args, **kwargs):
+        return getattr(importlib.import_module(module), name)(*args, **kwargs)
+    return call
+
+
+# Each report module has compute(study) -> result, reading study.extra[<analysis name>], and
+# write(result, out_dir, stem, units, study) -> list of written paths (atomic).
+register("lateral", "lateral", _lazy("slingloads.io.lateral_report", "compute"),
+         _lazy("slingloads.io.lateral_report", "write"))
+register("chute sizing", "chute", _lazy("slingloads.io.chute_report", "compute"),
+         _lazy("slingloads.io.chute_report", "write"))
 
 
 def _parser():

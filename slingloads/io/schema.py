@@ -215,8 +215,18 @@ LOADS = Section("loads", parameters=(
     ), help="Optional: the previous design envelope (limit loads) for the exceedance check."),
 ))
 
-#: Every section known to the reader; other analyses append theirs.
+#: Every section known to the reader, the template and the study builder.
 SECTIONS = [GENERAL, LOADS]
+
+
+def _other_sections():
+    """Sections of the other analyses, defined in their own modules."""
+    from slingloads.io import schema_chute, schema_lateral
+
+    return [schema_lateral.SECTION, schema_chute.SECTION]
+
+
+SECTIONS += _other_sections()
 
 
 def all_parameters():

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import hashlib
+import importlib
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -130,14 +131,17 @@ def read_study(path, only=None):
                           sha256=file_digest(path), run=run, loads=loads, airframe=airframe,
                           parameters={k: v[0] for k, v in params.given.items()},
                           options=_report_options(params, airframe))
-    for name, builder in EXTRA_READERS.items():
+    for name, module in EXTRA_READERS.items():
         if run.get(name):
-            study.extra[name] = builder(reader, params, study)
+            study.extra[name] = importlib.import_module(module).read(reader, params, study)
     return study
 
 
-#: Builders of the other analyses' inputs: name -> f(reader, params, study) -> object.
-EXTRA_READERS = {}
+#: Modules that build the other analyses' inputs, by analysis name; each has a function
+#: ``read(reader, params, study) -> inputs`` (``params(name)`` gives a Study-sheet parameter
+#: in SI with its default; ``params.cell(name)`` its cell; ``reader.table(spec)`` a table).
+EXTRA_READERS = {"lateral": "slingloads.io.lateral_reader",
+                 "chute sizing": "slingloads.io.chute_reader"}
 
 
 def _airframe(reader, params, sheets):

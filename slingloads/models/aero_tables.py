@@ -151,7 +151,7 @@ class Table2D:
         return self._interp[name](points).reshape(a.shape)
 
     def beta_slice(self, name, alpha):
-        """Coefficient ``name`` at the table's sideslip breakpoints, at angle of attack ``alpha``."""
+        """Coefficient ``name`` at the sideslip breakpoints, at angle of attack ``alpha``."""
         return self(name, np.full(self.beta.shape, alpha), self.beta)
 
     def slope(self, name, alpha, lo, hi):
