@@ -42,6 +42,9 @@ class WorkbookStudy:
         Report options (hull stations and pairs).
     extra : dict
         Inputs of the other analyses, by analysis name.
+    points : dict
+        Hardpoints by kind that the Airframe does not keep (``fin_cp``, ``aero_reference``:
+        position or None). [m]
     """
 
     name: str
@@ -53,6 +56,7 @@ class WorkbookStudy:
     parameters: dict
     options: dict = field(default_factory=dict)
     extra: dict = field(default_factory=dict)
+    points: dict = field(default_factory=dict)
 
 
 class _Params:
@@ -130,7 +134,7 @@ def read_study(path, only=None):
     study = WorkbookStudy(name=str(params("study name")), path=str(path),
                           sha256=file_digest(path), run=run, loads=loads, airframe=airframe,
                           parameters={k: v[0] for k, v in params.given.items()},
-                          options=_report_options(params, airframe))
+                          options=_report_options(params, airframe), points=refs)
     for name, module in EXTRA_READERS.items():
         if run.get(name):
             study.extra[name] = importlib.import_module(module).read(reader, params, study)
@@ -236,41 +240,83 @@ def _unique(reader, table, column):
         seen[value] = i
 
 
+def read_fuselage_aero(reader, params, refs, sheets=None):
+    """The FuselageAero sheet with its reference area, length and point, or None if absent.
+
+    Parameters
+    ----------
+    reader : WorkbookReader
+    params : _Params
+        Study-sheet parameters ('fuselage reference area', 'fuselage reference length').
+    refs : dict
+        Hardpoints by kind (``refs["aero_reference"]``: moment reference point [m]).
+
+    Returns
+    -------
+    FuselageAero or None
+    """
+    sheets = all_sheets() if sheets is None else sheets
+    if not reader.has_sheet("FuselageAero"):
+        return None
+    t = reader.table(sheets["FuselageAero"])
+    if refs["aero_reference"] is None:
+        raise reader.error("the FuselageAero sheet needs a Hardpoints row of kind "
+                           "'aero_reference' (moment reference point)", sheet="Hardpoints")
+    area = params.positive("fuselage reference area")
+    length = params.positive("fuselage reference length")
+    with located(reader.file, t.sheet):
+        table = Table2D.from_long(t["alpha"], t["beta"],
+                                  {c: t[c] for c in ("CD", "CY", "CL", "Cl", "Cm", "Cn")})
+        return FuselageAero(table, area, length, refs["aero_reference"])
+
+
+def read_fin_aero(reader, params, refs, sheets=None):
+    """The FinAero sheet with 'fin area', 'fin efficiency' and the fin_cp hardpoint, or None.
+
+    Returns
+    -------
+    Fin or None
+    """
+    sheets = all_sheets() if sheets is None else sheets
+    if not reader.has_sheet("FinAero"):
+        return None
+    t = reader.table(sheets["FinAero"])
+    if refs["fin_cp"] is None:
+        raise reader.error("the FinAero sheet needs a Hardpoints row of kind 'fin_cp'",
+                           sheet="Hardpoints")
+    area = params.positive("fin area")
+    eff = params("fin efficiency")
+    with located(reader.file, t.sheet):
+        table = Table1D(t["beta"], {"CY": t["CY"]}, angle_name="beta", what="fin")
+    with located(reader.file, STUDY_SHEET, params.cell("fin efficiency")):
+        return Fin(table, area, refs["fin_cp"], eff)
+
+
+def read_parachute_cd(reader, sheets=None):
+    """The optional ParachuteCD sheet as a table, or None (the paper's CD is then used).
+
+    Returns
+    -------
+    Table1D or None
+    """
+    sheets = all_sheets() if sheets is None else sheets
+    if not reader.has_sheet("ParachuteCD"):
+        return None
+    t = reader.table(sheets["ParachuteCD"])
+    with located(reader.file, t.sheet):
+        return Table1D(t["alpha"], {"CD": t["CD"]}, angle_name="alpha", what="parachute")
+
+
 def _loads_study(reader, params, sheets, airframe, refs):
-    fuselage = fin = parachute = envelope = None
-    if reader.has_sheet("FuselageAero"):
-        t = reader.table(sheets["FuselageAero"])
-        if refs["aero_reference"] is None:
-            raise reader.error("the FuselageAero sheet needs a Hardpoints row of kind "
-                               "'aero_reference' (moment reference point)", sheet="Hardpoints")
-        area = params.positive("fuselage reference area")
-        length = params.positive("fuselage reference length")
-        with located(reader.file, t.sheet):
-            table = Table2D.from_long(t["alpha"], t["beta"],
-                                      {c: t[c] for c in ("CD", "CY", "CL", "Cl", "Cm", "Cn")})
-            fuselage = FuselageAero(table, area, length, refs["aero_reference"])
-    if reader.has_sheet("FinAero"):
-        t = reader.table(sheets["FinAero"])
-        if refs["fin_cp"] is None:
-            raise reader.error("the FinAero sheet needs a Hardpoints row of kind 'fin_cp'",
-                               sheet="Hardpoints")
-        area = params.positive("fin area")
-        eff = params("fin efficiency")
-        with located(reader.file, t.sheet):
-            table = Table1D(t["beta"], {"CY": t["CY"]}, angle_name="beta", what="fin")
-        with located(reader.file, STUDY_SHEET, params.cell("fin efficiency")):
-            fin = Fin(table, area, refs["fin_cp"], eff)
+    parachute = envelope = None
+    fuselage = read_fuselage_aero(reader, params, refs, sheets)
+    fin = read_fin_aero(reader, params, refs, sheets)
     chute_area = params.positive("parachute area", allow_zero=True)
     if chute_area > 0:
         if refs["chute"] is None:
             raise params.error("parachute area", "a parachute area is given but the "
                                "Hardpoints sheet has no row of kind 'chute'", chute_area)
-        cd = None
-        if reader.has_sheet("ParachuteCD"):
-            t = reader.table(sheets["ParachuteCD"])
-            with located(reader.file, t.sheet):
-                cd = Table1D(t["alpha"], {"CD": t["CD"]}, angle_name="alpha",
-                             what="parachute")
+        cd = read_parachute_cd(reader, sheets)
         for name in ("parachute wake ratio", "parachute line length",
                      "parachute opening factor"):
             with located(reader.file, STUDY_SHEET, params.cell(name)):
