@@ -35,7 +35,12 @@ import pandas as pd
 from scipy.integrate import solve_ivp
 
 from slingloads.errors import InputError
-from slingloads.models.carrier_motion import MotionBatch, TimeHistory
+from slingloads.models.carrier_motion import (
+    ConstantAcceleration,
+    MotionBatch,
+    SmoothStep,
+    TimeHistory,
+)
 from slingloads.models.pendulum import (
     LateralPendulum,
     SlungBody,
@@ -520,8 +525,6 @@ def acceleration_sweep(accelerations, durations, kinds=("smooth_step", "constant
     -------
     list of motions
     """
-    from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep
-
     makers = {
         "smooth_step": lambda a, d: SmoothStep.from_peak_acceleration(a, d),
         "constant_acceleration": lambda a, d: ConstantAcceleration(a, d, then),
