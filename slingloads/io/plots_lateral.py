@@ -32,7 +32,7 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
     matplotlib.figure.Figure
         Three axes: angles [deg] with +-30 deg lines; T/(m g) [-]; carrier S [m] and S'' [g].
     """
-    fig = Figure(figsize=(8.0, 8.0), layout="constrained")
+    fig = Figure(figsize=(10.0, 8.0), layout="constrained")
     ax_angle, ax_tension, ax_carrier = fig.subplots(3, 1, sharex=True)
     t = run.t
     ax_angle.plot(t, np.degrees(run.theta1), label="rope angle theta1")
@@ -48,7 +48,7 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
     ax_angle.plot([t_peak], [peak], "o", color="black",
                   label=f"max |theta1 - theta2| = {np.degrees(metrics.max_load_angle):.2f} deg")
     ax_angle.set_ylabel("angle [deg]")
-    ax_angle.legend(loc="best", fontsize="small")
+    ax_angle.legend(loc="upper left", bbox_to_anchor=(1.08, 1.0), fontsize="small")
     ax_angle.grid(True, alpha=0.3)
 
     ax_tension.plot(t, run.tension_ratio, color="tab:purple", label="T/(m g)")
@@ -57,7 +57,7 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
         ax_tension.fill_between(t, 0, 1, where=run.tension <= 0, color="tab:orange", alpha=0.3,
                                 transform=ax_tension.get_xaxis_transform(), label="slack")
     ax_tension.set_ylabel("T/(m g) [-]")
-    ax_tension.legend(loc="best", fontsize="small")
+    ax_tension.legend(loc="upper left", bbox_to_anchor=(1.08, 1.0), fontsize="small")
     ax_tension.grid(True, alpha=0.3)
 
     ax_carrier.plot(t, run.carrier[0], color="tab:green", label="S")
