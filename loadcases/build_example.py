@@ -115,6 +115,7 @@ def previous_envelope(frame):
 
 def main():
     frame, fin_cp, aero_ref = airframe()
+    chute_area, chute_line = parachute_size(frame, fin_cp, aero_ref)
     items = frame.mass_items
     mass_items = pd.DataFrame({
         "id": items.ids, "description": items.description,
@@ -155,9 +156,9 @@ def main():
         "fuselage reference length": (ref.fuselage_length, "m"),
         "fin area": (ref.fin_area, "m^2"),
         "fin efficiency": (ref.fin_efficiency, ""),
-        "parachute area": (PARACHUTE_AREA, "m^2"),
+        "parachute area": (chute_area, "m^2"),
         "parachute wake ratio": (0.95, ""),
-        "parachute line length": (12.0, "m"),
+        "parachute line length": (chute_line, "m"),
         "parachute opening factor": (1.0, ""),
         "hull stations": ("FS0161, FS0342", ""),
     }
@@ -170,8 +171,19 @@ def main():
     print(f"wrote {OUT}")
 
 
-#: Flat-plate area of the example's parachute [m^2] (1.4 x the static neutral area).
-PARACHUTE_AREA = 4.0
+def parachute_size(frame, fin_cp, aero_ref):
+    """Parachute flat-plate area [m^2] and line length [m] of the example: 1.4 x the neutral
+    static area and the wake line of its own sizing, computed through the API
+    (loadcases/example_chute.py); (4.0, 12.0) without that file."""
+    try:
+        import example_chute
+    except ModuleNotFoundError as err:
+        if err.name != "example_chute":
+            raise
+        return 4.0, 12.0
+    return example_chute.parachute_size(frame, fin_cp, aero_ref)
+
+
 #: Sheets and parameters of the lateral-pendulum and parachute-sizing studies, from
 #: loadcases/example_lateral.py and loadcases/example_chute.py (each defines TABLES and
 #: PARAMETERS, and may define NOTES).

@@ -1,0 +1,113 @@
+"""Parachute-sizing part of the example workbook (merged by ``loadcases/build_example.py``).
+
+Defines ``TABLES`` (the ``ChuteWake`` sheet), ``PARAMETERS`` (the Study rows of the sizing)
+and ``NOTES`` (README lines), and :func:`parachute_size`, which runs the sizing through the
+Python API on the example's own airframe so that the example's 'parachute area' is 1.4 x its
+neutral static area (the paper's FPA + 40 %) and its 'parachute line length' is the wake line.
+
+Wake: a GENERIC illustrative ``ChuteWake`` table, not CFD of any aircraft. It is shaped like
+the self-similar far wake (centreline defect ~ x^(-2/3), ratio (1 - defect)^2) with the
+0.95 point placed at about 10 m (33 ft) behind the fin, so that the line and a 60 ft carrier
+cable fall in the paper's range (cables of 18 to 100 ft, at least 20 % longer than the line).
+A table was chosen rather than the far-wake model because the model's constant K is not
+calibrated on helicopter fuselages (with K = 1 it asks for lines of hundreds of metres), and
+because a table is what a user pastes from CFD, as in the paper's section 3.2.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
+
+from slingloads.analyses.chute_sizing import line_length, neutral_area
+from slingloads.io.chute_reader import yaw_inertia_about_hub
+from slingloads.models.aerodynamics import Fin
+from slingloads.models.parachute import Parachute
+from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
+from slingloads.models.wake import TabulatedWake
+from slingloads.models.yaw_dynamics import FlightCondition, YawModel
+from slingloads.units import FOOT, KNOT
+
+#: Sizing airspeed of the example (the paper's 80 KIAS). [kt]
+AIRSPEED_KT = 80.0
+#: Recommended area over the neutral area (paper: FPA + 40 %). [-]
+RECOMMENDED_FACTOR = 1.4
+#: Distance at which the generic wake reaches a q ratio of 0.95. [m]
+_Q95_DISTANCE = 10.0
+_WAKE_FT = np.array([5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 50.0, 60.0, 80.0, 100.0])
+
+
+def _generic_wake_ratio(distance_ft):
+    """(1 - u)^2 with u = u95 (x / x95)^(-2/3): the far-wake shape, 0.95 at 10 m."""
+    u95 = 1.0 - np.sqrt(0.95)
+    u = u95 * (distance_ft * FOOT / _Q95_DISTANCE) ** (-2.0 / 3.0)
+    return np.round((1.0 - u) ** 2, 3)
+
+
+WAKE = pd.DataFrame({"distance [ft]": _WAKE_FT, "q ratio [-]": _generic_wake_ratio(_WAKE_FT)})
+
+TABLES = {"ChuteWake": WAKE}
+
+PARAMETERS = {
+    "run chute sizing": ("yes", ""),
+    "chute sizing airspeed IAS": (AIRSPEED_KT, "kt"),
+    "chute sizing density altitude": (0, "ft"),
+    "chute sizing alpha trim": (0, "deg"),
+    "chute sizing linearisation range": (10, "deg"),
+    "chute sizing yaw inertia source": ("mass items", ""),
+    "chute sizing wake source": ("table", ""),
+    "chute sizing target q ratio": (0.95, ""),
+    "chute sizing carrier cable length": (60, "ft"),
+    "chute sizing cable margin": (0.20, ""),
+    "chute sizing gust shapes": ("step, finite, 1-cosine, continuous", ""),
+    "chute sizing gust amplitude": (30, "ft/s"),
+    "chute sizing gust onset": (30, "s"),
+    "chute sizing gust duration": (10, "s"),
+    "chute sizing simulation time": (120, "s"),
+    "chute sizing time step": (0.1, "s"),
+    "chute sizing area factor min": (1.0, ""),
+    "chute sizing area factor max": (2.0, ""),
+    "chute sizing number of areas": (6, ""),
+    "chute sizing recommended factor": (RECOMMENDED_FACTOR, ""),
+}
+
+NOTES = [
+    "Parachute sizing (sheet ChuteWake, Study rows 'chute sizing ...'): 80 KIAS ISA sea "
+    "level, HC1 fuselage and fin tables, yaw inertia from the mass items about the hub axis. "
+    "The ChuteWake table is a GENERIC ILLUSTRATIVE table, NOT CFD of any aircraft: the "
+    "self-similar far-wake shape (defect ~ x^-2/3) with q ratio 0.95 placed at about 10 m "
+    "(33 ft), so that the line and the 60 ft carrier cable fall in the paper's range (18-100 "
+    "ft, cable >= 1.2 x line). Replace it with CFD or test data for a real study.",
+    "The 'parachute area' and 'parachute line length' rows are computed when the workbook is "
+    "built (loadcases/example_chute.py): 1.4 x the neutral static area and the wake line.",
+]
+
+
+def parachute_size(frame, fin_cp, aero_ref):
+    """Parachute area and line length of the example, from its own sizing via the API.
+
+    Parameters
+    ----------
+    frame : Airframe
+        The example's airframe (hub and parachute attachment in ``frame.hardpoints``).
+    fin_cp, aero_ref : array_like, shape (3,)
+        Fin centre of pressure and fuselage moment reference point. [m]
+
+    Returns
+    -------
+    area : float
+        1.4 x the neutral static area, rounded to 0.1 m^2. [m^2]
+    line : float
+        Wake line length for q ratio 0.95, rounded up to 0.1 m. [m]
+    """
+    ref = sample_reference("HC1")
+    fuselage = replace(sample_fuselage("HC1"), moment_reference=np.asarray(aero_ref, float))
+    fin = Fin(sample_fin("HC1").table, ref.fin_area, fin_cp, ref.fin_efficiency)
+    model = YawModel(fuselage, fin, frame.hardpoints, yaw_inertia_about_hub(frame),
+                     FlightCondition(AIRSPEED_KT * KNOT), Parachute(1.0))
+    static = neutral_area(model)
+    wake = TabulatedWake(WAKE["distance [ft]"].to_numpy() * FOOT, WAKE["q ratio [-]"])
+    line = line_length(wake).line_length
+    return round(RECOMMENDED_FACTOR * static.area, 1), float(np.ceil(line * 10) / 10)

@@ -1,0 +1,318 @@
+"""Build the parachute-sizing inputs from an input workbook (``run chute sizing = yes``).
+
+Called by :func:`slingloads.io.study_reader.read_study` as ``read(reader, params, study)``.
+It reads the Study parameters of :mod:`slingloads.io.schema_chute`, the optional ``ChuteWake``
+sheet, and the loads core's aerodynamic sheets (``FuselageAero``, ``FinAero``,
+``ParachuteCD``) and hardpoints, so that the sizing also runs on its own
+(``slingloads chute``). Every value is SI after reading; every bad value raises
+:class:`~slingloads.errors.InputError` naming the file, sheet, cell, value and rule.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from slingloads.errors import InputError
+from slingloads.io.schema import STUDY_SHEET
+from slingloads.io.schema_chute import INERTIA_SOURCES, INTEGRATORS, SHEETS, WAKE_SOURCES
+from slingloads.io.study_reader import read_fin_aero, read_fuselage_aero, read_parachute_cd
+from slingloads.io.workbook import located
+from slingloads.models.gusts import GUST_KINDS, make_gust
+from slingloads.models.parachute import Parachute
+from slingloads.models.wake import BluffBodyWake, TabulatedWake
+from slingloads.models.yaw_dynamics import FlightCondition, SolverSettings, YawModel
+
+ANALYSIS = "chute sizing"
+_SOLVE_IVP_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+
+
+@dataclass(frozen=True)
+class ChuteSizingInputs:
+    """Everything the parachute sizing needs, in SI.
+
+    Attributes
+    ----------
+    model : YawModel
+        Fuselage, fin, hardpoints, yaw inertia about the suspension axis, condition, and a
+        parachute template (its CD and wake ratio; the area is swept).
+    fit_range : tuple of float
+        Sideslip range of the linearisation. [rad]
+    wake : TabulatedWake or BluffBodyWake
+    target : float
+        Dynamic-pressure ratio the canopy must see. [-]
+    cable_length : float or None
+        Carrier cable; None skips the check. [m]
+    margin : float
+        Required excess of the cable over the line. [-]
+    gusts : tuple
+        Gust shapes of the sweep.
+    settings : SolverSettings
+    factors : ndarray
+        Swept areas over the neutral area. [-]
+    recommended_factor : float
+        Recommended area over the neutral area. [-]
+    integrator : str
+        ``"rk4"`` or ``"solve_ivp"``.
+    inertia_source : str
+        ``"mass items"`` or ``"parameter"``.
+    study_area : float
+        The Study's 'parachute area' (used by the loads; 0 if none). [m^2]
+    study_line : float
+        The Study's 'parachute line length'. [m]
+    """
+
+    model: YawModel
+    fit_range: tuple
+    wake: object
+    target: float
+    cable_length: float | None
+    margin: float
+    gusts: tuple
+    settings: SolverSettings
+    factors: np.ndarray
+    recommended_factor: float
+    integrator: str
+    inertia_source: str
+    study_area: float
+    study_line: float
+
+
+def _raw(reader, params, name):
+    """The value as the user typed it (for error messages), or the default."""
+    cell = params.cell(name)
+    if cell is None:
+        return params.specs[name.lower()].default
+    return reader.book[STUDY_SHEET][cell].value
+
+
+def _where(params, name):
+    return params.cell(name) or "(default)"
+
+
+def _check(reader, params, name, ok, rule):
+    if not ok:
+        raise reader.error(rule, _raw(reader, params, name), STUDY_SHEET, _where(params, name))
+
+
+def _choice(reader, params, name, valid):
+    text = str(params(name) or "").strip()
+    key = text.lower()
+    for v in valid:
+        if v.lower() == key:
+            return v
+    raise reader.error(f"{name!r} is not valid; valid values are {list(valid)}", text,
+                       STUDY_SHEET, _where(params, name))
+
+
+def _positive(reader, params, name, allow_zero=False):
+    value = params(name)
+    ok = np.isfinite(value) and (value > 0 or (allow_zero and value == 0))
+    _check(reader, params, name, ok, f"{name!r} must be {'>= 0' if allow_zero else '> 0'}")
+    return float(value)
+
+
+def yaw_inertia_about_hub(airframe):
+    """Yaw inertia of the mass items about the vertical through the rotor hub.
+
+    .. math:: I = I_{zz,CG} + m\\,[(x_{CG} - x_{hub})^2 + (y_{CG} - y_{hub})^2]
+
+    Parameters
+    ----------
+    airframe : Airframe
+
+    Returns
+    -------
+    float
+        [kg m^2]
+    """
+    items = airframe.mass_items
+    d = items.cg[:2] - airframe.hardpoints.hub[:2]
+    return float(items.inertia_about_cg[2, 2] + items.total_mass * (d @ d))
+
+
+def read(reader, params, study):
+    """Build :class:`ChuteSizingInputs` from the workbook.
+
+    Parameters
+    ----------
+    reader : WorkbookReader
+    params : slingloads.io.study_reader._Params
+        Study-sheet parameters (SI, with defaults).
+    study : WorkbookStudy
+        The airframe and the hardpoints by kind already read.
+
+    Returns
+    -------
+    ChuteSizingInputs
+
+    Raises
+    ------
+    InputError
+        With the file, sheet, cell, value and rule.
+    """
+    file = reader.file
+    # ---- condition
+    ias = _positive(reader, params, "chute sizing airspeed IAS")
+    with located(file, STUDY_SHEET, _where(params, "chute sizing density altitude")):
+        condition = FlightCondition(ias, params("chute sizing density altitude"),
+                                    params("chute sizing alpha trim"))
+    half = _positive(reader, params, "chute sizing linearisation range")
+    _check(reader, params, "chute sizing linearisation range", half < np.pi / 2,
+           "'chute sizing linearisation range' must be below 90 deg")
+    # ---- aerodynamics and geometry (the loads core's sheets)
+    refs = study.points
+    fuselage = read_fuselage_aero(reader, params, refs)
+    fin = read_fin_aero(reader, params, refs)
+    if fuselage is None and fin is None:
+        raise reader.error("the parachute sizing needs a FuselageAero or a FinAero sheet",
+                           sheet="FuselageAero")
+    hardpoints = study.airframe.hardpoints
+    if hardpoints.chute is None:
+        raise reader.error("the parachute sizing needs a Hardpoints row of kind 'chute' (the "
+                           "parachute attachment)", sheet="Hardpoints", cell="B1")
+    arm = hardpoints.chute[0] - hardpoints.hub[0]
+    if arm <= 0:
+        raise reader.error("the parachute attachment (kind 'chute') must lie aft of the rotor "
+                           "hub (x greater) to stabilise in yaw; x distance [m]", float(arm),
+                           "Hardpoints")
+    cd = read_parachute_cd(reader)
+    for name, arg in (("parachute wake ratio", "wake_ratio"),
+                      ("parachute line length", "line_length")):
+        with located(file, STUDY_SHEET, _where(params, name)):
+            Parachute(1.0, cd, **{arg: params(name)})
+    with located(file, "ParachuteCD" if cd is not None else STUDY_SHEET):
+        parachute = Parachute(1.0, cd, params("parachute wake ratio"),
+                              params("parachute line length"))
+    # ---- yaw inertia
+    source = _choice(reader, params, "chute sizing yaw inertia source", INERTIA_SOURCES)
+    given = params("chute sizing yaw inertia")
+    if source == "parameter":
+        inertia = _positive(reader, params, "chute sizing yaw inertia")
+    else:
+        _check(reader, params, "chute sizing yaw inertia", np.isfinite(given) and given == 0,
+               "'chute sizing yaw inertia' is used only with 'chute sizing yaw inertia source' "
+               "= parameter (it must then be > 0); leave it 0 with 'mass items'"
+               if np.isfinite(given) and given > 0 else "'chute sizing yaw inertia' must be "
+               "> 0 (with the source 'parameter') or 0 (with 'mass items')")
+        inertia = yaw_inertia_about_hub(study.airframe)
+        if not inertia > 0:
+            raise reader.error("yaw inertia about the hub computed from the mass items must be "
+                               "> 0 [kg m^2]", inertia, "MassItems")
+    with located(file, STUDY_SHEET, _where(params, "chute sizing alpha trim")):
+        model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute)
+    lo, hi = model.beta_range()
+    _check(reader, params, "chute sizing linearisation range", half <= min(-lo, hi),
+           f"the linearisation range must lie inside the tables' sideslip range "
+           f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+    # ---- wake and line
+    target = params("chute sizing target q ratio")
+    _check(reader, params, "chute sizing target q ratio", 0 < target <= 1,
+           "'chute sizing target q ratio' must lie in (0, 1]")
+    wake_source = _choice(reader, params, "chute sizing wake source", WAKE_SOURCES)
+    if wake_source == "table":
+        wake = _wake_table(reader)
+        where = ("ChuteWake", "B1")
+    else:
+        k = _positive(reader, params, "chute sizing wake coefficient")
+        area = _positive(reader, params, "chute sizing wake drag area", allow_zero=True)
+        if area == 0:
+            if fuselage is None:
+                raise reader.error("the wake model needs 'chute sizing wake drag area' > 0 "
+                                   "when there is no FuselageAero sheet", 0.0, STUDY_SHEET,
+                                   _where(params, "chute sizing wake drag area"))
+            with located(file, "FuselageAero"):
+                area = float(fuselage.table("CD", condition.alpha, 0.0)) * fuselage.area
+        with located(file, STUDY_SHEET, _where(params, "chute sizing wake coefficient")):
+            wake = BluffBodyWake(area, k)
+        where = (STUDY_SHEET, _where(params, "chute sizing target q ratio"))
+    with located(file, *where):
+        wake.line_length(target)
+    cable = _positive(reader, params, "chute sizing carrier cable length", allow_zero=True)
+    margin = _positive(reader, params, "chute sizing cable margin", allow_zero=True)
+    # ---- solver
+    t_end = _positive(reader, params, "chute sizing simulation time")
+    dt = _positive(reader, params, "chute sizing time step")
+    interval = _positive(reader, params, "chute sizing output interval")
+    integrator = _choice(reader, params, "chute sizing integrator", INTEGRATORS)
+    method = _choice(reader, params, "chute sizing reference method", _SOLVE_IVP_METHODS)
+    rtol = _positive(reader, params, "chute sizing reference rtol")
+    try:
+        settings = SolverSettings(t_end, dt, interval, method, rtol)
+    except InputError as err:
+        name = ("chute sizing output interval" if "output_interval" in err.rule
+                else "chute sizing simulation time")
+        raise err.located(file=file, sheet=STUDY_SHEET, cell=_where(params, name)) from None
+    # ---- gusts
+    gusts = _gusts(reader, params, model, t_end)
+    # ---- sweep
+    fmin = _positive(reader, params, "chute sizing area factor min")
+    fmax = params("chute sizing area factor max")
+    _check(reader, params, "chute sizing area factor max", np.isfinite(fmax) and fmax >= fmin,
+           "'chute sizing area factor max' must be >= 'chute sizing area factor min'")
+    count = params("chute sizing number of areas")
+    _check(reader, params, "chute sizing number of areas", count >= 1,
+           "'chute sizing number of areas' must be >= 1")
+    _check(reader, params, "chute sizing number of areas", count == 1 or fmax > fmin,
+           "several areas need 'chute sizing area factor max' > min")
+    recommended = _positive(reader, params, "chute sizing recommended factor")
+    return ChuteSizingInputs(
+        model=model, fit_range=(-half, half), wake=wake, target=float(target),
+        cable_length=cable if cable > 0 else None, margin=margin, gusts=gusts,
+        settings=settings, factors=np.linspace(fmin, fmax, int(count)),
+        recommended_factor=recommended, integrator=integrator, inertia_source=source,
+        study_area=float(params("parachute area")),
+        study_line=float(params("parachute line length")))
+
+
+def _wake_table(reader):
+    """The ChuteWake sheet as a TabulatedWake, each bad value located at its cell."""
+    t = reader.table(SHEETS[0])
+    x, r = t["distance"], t["q ratio"]
+    if len(t) < 2:
+        raise reader.error("the ChuteWake table needs at least two rows", len(t), t.sheet, "A3")
+    for i in range(len(t)):
+        if x[i] < 0:
+            raise reader.error("wake distance must be >= 0", float(x[i]), t.sheet,
+                               t.cell("distance", i))
+        if i and x[i] <= x[i - 1]:
+            raise reader.error("wake distances must be strictly increasing (first at "
+                               f"{t.cell('distance', i - 1)})", float(x[i]), t.sheet,
+                               t.cell("distance", i))
+        if not 0 < r[i] <= 1.2:
+            raise reader.error("wake q ratio must lie in (0, 1.2]", float(r[i]), t.sheet,
+                               t.cell("q ratio", i))
+    with located(reader.file, t.sheet):
+        return TabulatedWake(x, r, source="ChuteWake sheet")
+
+
+def _gusts(reader, params, model, t_end):
+    name = "chute sizing gust shapes"
+    shapes = [s.strip().lower() for s in str(params(name) or "").split(",") if s.strip()]
+    if not shapes:
+        raise reader.error(f"{name!r} needs at least one shape of {list(GUST_KINDS)}", "",
+                           STUDY_SHEET, _where(params, name))
+    for s in shapes:
+        if s not in GUST_KINDS:
+            raise reader.error(f"unknown gust shape; valid shapes are {list(GUST_KINDS)}", s,
+                               STUDY_SHEET, _where(params, name))
+        if shapes.count(s) > 1:
+            raise reader.error("gust shape listed twice", s, STUDY_SHEET, _where(params, name))
+    amplitude = _positive(reader, params, "chute sizing gust amplitude")
+    onset = _positive(reader, params, "chute sizing gust onset", allow_zero=True)
+    duration = _positive(reader, params, "chute sizing gust duration")
+    _check(reader, params, "chute sizing gust onset", onset < t_end,
+           f"the gust must start before the end of the simulation ({t_end:g} s)")
+    if any(s in ("finite", "1-cosine") for s in shapes):
+        _check(reader, params, "chute sizing gust duration", onset + duration < t_end,
+               f"finite and 1-cosine gusts must end (onset + duration) before the end of the "
+               f"simulation ({t_end:g} s) so that the free response is seen")
+    lo, hi = model.beta_range()
+    tas = model.condition.tas
+    gamma = np.arctan(amplitude / tas)
+    _check(reader, params, "chute sizing gust amplitude", gamma < min(-lo, hi),
+           f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at {tas:.4g} m/s true "
+           f"airspeed, outside the aerodynamic tables' range [{np.degrees(lo):.4g}, "
+           f"{np.degrees(hi):.4g}] deg")
+    return tuple(make_gust(s, amplitude, onset, duration) for s in shapes)

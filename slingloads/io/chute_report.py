@@ -1,0 +1,367 @@
+"""The parachute-sizing report: an Excel workbook and PNG plots (paper sections 3.2-4.2).
+
+:func:`compute` runs the sizing on the inputs read by :mod:`slingloads.io.chute_reader`:
+linearisation of the fuselage and fin yawing moments, neutral static area with its breakdown,
+wake ratio and line length with the carrier-cable check, and the 1-DOF sweep of the parachute
+area over the gust shapes. :func:`write` publishes, all at once or not at all
+(:mod:`slingloads.io.atomic`):
+
+* ``<stem>-chute.xlsx``: sheets *Summary* (inputs digest, condition, neutral area and its
+  breakdown, recommended area, line length and cable check), *Linearisation*,
+  *StaticMoments*, *Wake*, *Sweep* (metrics of every run), *Histories* (sideslip and yaw of
+  the runs at the smallest, recommended and largest swept areas, every 0.5 s) and *Plots*;
+* ``<stem>-chute-histories.csv``: the same histories at every stored sample (SI, degrees);
+* ``<stem>-chute-linearisation.png``, ``-chute-static-moments.png``, ``-chute-wake.png``,
+  ``-chute-sweep.png``, ``-chute-histories.png``.
+
+Lengths, areas, speeds and moments are in the report unit system (``--units``); the plots
+are SI.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from slingloads.analyses.chute_sizing import line_length, neutral_area, sizing_sweep
+from slingloads.errors import InputError
+from slingloads.io.atomic import atomic_outputs, check_not_input
+from slingloads.io.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.loads_report import convert_columns
+from slingloads.io.plots_chute import (
+    plot_static_moments,
+    plot_sweep_metrics,
+    plot_time_histories,
+    plot_wake,
+    plot_yaw_linearisation,
+)
+from slingloads.io.plots_loads import check_units, in_report_units, report_unit
+from slingloads.io.workbook import located
+from slingloads.units import FOOT, POUND_FORCE, unit_label
+
+ANALYSIS = "chute sizing"
+#: PNG files written, by tag: ``<stem>-chute-<tag>.png``.
+PLOTS = ("linearisation", "static-moments", "wake", "sweep", "histories")
+_PNG_DPI = 90
+#: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
+HISTORY_INTERVAL = 0.5
+NUMBER_FORMATS = format_by_header([
+    (r"\[deg\]", "0.00"),
+    (r"ratio|factor|\[-\]", "0.000"),
+    (r"\[(m\^2|ft\^2)\]", "0.000"),
+    (r"\[(N m|lbf in)", "#,##0"),
+    (r"\[(m|in)\]", "0.00"),
+])
+
+
+@dataclass(frozen=True)
+class ChuteSizingReport:
+    """Results of the parachute sizing of one workbook.
+
+    Attributes
+    ----------
+    inputs : ChuteSizingInputs
+    static : NeutralAreaResult
+    line : LineLengthResult
+    sweep : SweepResult or None
+        None when fuselage and fin are already statically stable (no positive neutral area).
+    recommended_area : float
+        ``recommended_factor`` x neutral area (0 when already stable). [m^2]
+    """
+
+    inputs: object
+    static: object
+    line: object
+    sweep: object
+    recommended_area: float
+
+    def stability_by_area(self):
+        """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""
+        if self.sweep is None:
+            return pd.DataFrame()
+        frame = self.sweep.to_frame()
+        grouped = frame.groupby("area [m^2]", sort=True)
+        return pd.DataFrame({
+            "area / neutral area [-]": grouped["area / neutral area [-]"].first(),
+            "all gusts stable": grouped["verdict"].agg(lambda v: bool((v == "stable").all())),
+            "worst peak beta [deg]": grouped["peak beta [deg]"].max(),
+            "worst peak psi [deg]": grouped["peak psi [deg]"].max(),
+        }).reset_index()
+
+    @property
+    def smallest_stable_area(self):
+        """Smallest swept area at which every gust run is stable (NaN if none). [m^2]"""
+        table = self.stability_by_area()
+        ok = table[table["all gusts stable"]] if len(table) else table
+        return float(ok["area [m^2]"].min()) if len(ok) else float("nan")
+
+    def history_runs(self):
+        """Indices of the runs at the smallest, recommended and largest swept areas."""
+        if self.sweep is None:
+            return []
+        ratio = self.sweep.runs.areas / self.static.area
+        f = self.inputs.factors
+        chosen = []
+        for target in (f.min(), self.inputs.recommended_factor, f.max()):
+            nearest = ratio[np.argmin(np.abs(ratio - target))]
+            chosen += list(np.nonzero(np.isclose(ratio, nearest))[0])
+        return sorted(set(chosen))
+
+
+def compute(study):
+    """Run the parachute sizing read from a workbook.
+
+    Parameters
+    ----------
+    study : WorkbookStudy
+        With ``study.extra["chute sizing"]`` (:class:`ChuteSizingInputs`).
+
+    Returns
+    -------
+    ChuteSizingReport
+
+    Raises
+    ------
+    InputError
+        If the workbook does not ask for the sizing, or the analysis refuses its inputs (the
+        file is named).
+    """
+    inputs = study.extra.get(ANALYSIS)
+    if inputs is None:
+        raise InputError("the workbook does not ask for the parachute sizing (Study sheet: "
+                         "'run chute sizing' is no)", file=study.path, sheet="Study")
+    with located(study.path):
+        static = neutral_area(inputs.model, inputs.fit_range)
+        line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
+        sweep = None
+        if not static.already_stable:
+            sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
+                                 inputs.fit_range, static=static,
+                                 integrator=inputs.integrator)
+    recommended = inputs.recommended_factor * static.area if sweep is not None else 0.0
+    return ChuteSizingReport(inputs, static, line, sweep, float(recommended))
+
+
+# ------------------------------------------------------------------------------- tables
+def _value(value, kind, units):
+    """(value in report units, unit label)."""
+    if kind is None or kind in ("deg", "-"):
+        return value, kind or ""
+    if kind == "pressure":
+        return (value, "Pa") if units == "SI" else (value / (POUND_FORCE / FOOT**2), "psf")
+    return float(in_report_units(value, kind, units)), unit_label(report_unit(kind, units))
+
+
+def _items(rows, units):
+    """Rows (item, SI value, kind or None, note) as a table in report units."""
+    out = []
+    for item, value, kind, note in rows:
+        shown, unit = _value(value, kind, units) if isinstance(value, float) else (value, "")
+        out.append({"item": item, "value": shown, "unit": unit, "note": note})
+    return pd.DataFrame(out)
+
+
+def summary_tables(result, units="SI"):
+    """The Summary's tables: condition, neutral area and recommendation, line and cable."""
+    inp, static, line = result.inputs, result.static, result.line
+    m = inp.model
+    c = m.condition
+    condition = _items([
+        ("airspeed IAS (= EAS)", c.ias, "speed", ""),
+        ("true airspeed", c.tas, "speed", ""),
+        ("density altitude", c.altitude, "length", "ISA"),
+        ("air density", c.density, "density", ""),
+        ("dynamic pressure q", c.q, "pressure", "1/2 rho0 V_EAS^2"),
+        ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),
+        ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
+         f"source: {inp.inertia_source}"),
+        ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg", "fit over +- this"),
+        ("parachute CD x wake ratio", float(m.chute_drag_coefficient), "-", ""),
+        ("parachute arm aft of the hub axis", float(m.chute_arm[0]), "length", ""),
+    ], units)
+    sweep_rows = []
+    if result.sweep is not None:
+        stable = result.stability_by_area()
+        ratio = stable["area / neutral area [-]"].to_numpy()
+        at = stable.iloc[int(np.argmin(np.abs(ratio - inp.recommended_factor)))]
+        sweep_rows = [
+            ("smallest swept area with every gust stable", result.smallest_stable_area,
+             "area", "1-DOF; NaN: none"),
+            ("1-DOF verdict near the recommended area",
+             "stable" if at["all gusts stable"] else "NOT stable for every gust", None,
+             f"swept area {float(at['area / neutral area [-]']):.3g} x neutral"),
+        ]
+    sizing = _items([
+        ("neutral static area", static.area, "area",
+         "fuselage and fin already stable" if static.already_stable
+         else "total dN/dbeta = 0 (paper 4.1)"),
+        ("recommended factor", inp.recommended_factor, "-", "x neutral area (paper: +40 %)"),
+        ("recommended area", result.recommended_area, "area", ""),
+        *sweep_rows,
+        ("Study 'parachute area' (loads)", inp.study_area, "area",
+         f"{inp.study_area / static.area:.3g} x neutral" if static.area > 0 else ""),
+    ], units)
+    breakdown = static.to_frame()[["component", "dN/dbeta [N m/rad]"]].copy()
+    factor, unit = _value(1.0, "moment", units)
+    breakdown["dN/dbeta [N m/rad]"] *= factor
+    breakdown["dN/dbeta [N m/deg]"] = breakdown["dN/dbeta [N m/rad]"] * np.pi / 180
+    breakdown = breakdown.rename(columns={"dN/dbeta [N m/rad]": f"dN/dbeta [{unit}/rad]",
+                                          "dN/dbeta [N m/deg]": f"dN/dbeta [{unit}/deg]"})
+    cable = line.cable
+    rows = [("wake source", line.wake_source, None, ""),
+            ("target q ratio", line.target, "-", ""),
+            ("parachute line length (from the wake)", line.line_length, "length", ""),
+            ("Study 'parachute line length'", inp.study_line, "length",
+             "ok" if inp.study_line >= line.line_length * (1 - 1e-9)
+             else "SHORTER than the wake line: the canopy sees less than the target q")]
+    if cable is None:
+        rows.append(("carrier cable check", "not done", None,
+                     "'chute sizing carrier cable length' not given"))
+    else:
+        rows += [("carrier cable length", cable.cable_length, "length", ""),
+                 ("required cable length", cable.required, "length",
+                  f"(1 + {cable.margin:g}) x line"),
+                 ("carrier cable check", "ok" if cable.ok else "FAIL", None,
+                  _cable_message(cable, units))]
+    return {"condition": condition, "sizing": sizing, "breakdown": breakdown,
+            "line": _items(rows, units)}
+
+
+def _cable_message(cable, units):
+    """The check's message in report units."""
+    def show(x):
+        v, u = _value(x, "length", units)
+        return f"{v:.4g} {u}"
+    if cable.ok:
+        return (f"the cable is at least {cable.margin:.0%} longer than the parachute line "
+                f"{show(cable.line_length)}")
+    return (f"carrier cable too short: it must be at least {cable.margin:.0%} longer than the "
+            f"parachute line {show(cable.line_length)}, i.e. >= {show(cable.required)}; "
+            f"lengthen the cable by {show(cable.required - cable.cable_length)} or shorten "
+            f"the line to <= {show(cable.cable_length / (1 + cable.margin))}")
+
+
+def history_table(result, units="SI", interval=None):
+    """Sideslip and yaw [deg] against time for :meth:`ChuteSizingReport.history_runs`.
+
+    Parameters
+    ----------
+    interval : float, optional
+        Keep one sample every ``interval`` (rounded to a whole number of stored samples);
+        default: every stored sample. [s]
+    """
+    runs = result.sweep.runs
+    h = runs.histories
+    step = 1
+    if interval is not None and h.time.size > 1:
+        step = max(1, int(round(interval / (h.time[1] - h.time[0]))))
+    frame = {"time [s]": h.time[::step]}
+    for j in result.history_runs():
+        area, unit = _value(float(runs.areas[j]), "area", units)
+        tag = f"A={area:.4g} {unit} {runs.gusts[j].kind}"
+        frame[f"beta [deg] {tag}"] = np.degrees(h.beta[j, ::step])
+        frame[f"psi [deg] {tag}"] = np.degrees(h.psi[j, ::step])
+    return pd.DataFrame(frame)
+
+
+def _sheets(result, units, digest):
+    tables = summary_tables(result, units)
+    lin = result.static.linearisation
+    static = result.static.curves_frame()
+    moment_spec = {c: (c[:c.index(" [")], "moment") for c in static.columns if c.startswith("N ")}
+    wake = convert_columns(result.line.curve_frame(), {"distance [m]": ("distance", "length")},
+                           units)
+    summary = [Section("Inputs", digest),
+               Section("Condition", tables["condition"]),
+               Section("Parachute area", tables["sizing"]),
+               Section("Yaw stiffness breakdown at the neutral area", tables["breakdown"]),
+               Section("Parachute line and carrier cable", tables["line"])]
+    sheets = {
+        "Summary": summary,
+        "Linearisation": [Section("Least-squares fit of Cn against sideslip", lin.to_frame()),
+                          Section("Table against fit", lin.curves_frame())],
+        "StaticMoments": [Section("Static yawing moments about the suspension axis at the "
+                                  "neutral area", convert_columns(static, moment_spec, units))],
+        "Wake": [Section(f"Wake dynamic-pressure ratio ({result.line.wake_source})", wake)],
+    }
+    if result.sweep is not None:
+        area = {"area [m^2]": ("area", "area")}
+        sheets["Sweep"] = [
+            Section("Stability by area", convert_columns(result.stability_by_area(), area,
+                                                         units)),
+            Section("Every run", convert_columns(result.sweep.to_frame(), area, units))]
+        sheets["Histories"] = [
+            Section(f"Sideslip and yaw every {HISTORY_INTERVAL:g} s (every stored sample: "
+                    f"the -chute-histories.csv file)",
+                    history_table(result, units, HISTORY_INTERVAL))]
+    else:
+        sheets["Sweep"] = ("Fuselage and fin are already statically stable in yaw: the neutral "
+                           "area is not positive, so no sweep was run.")
+    return sheets
+
+
+def _digest(study):
+    from slingloads.cli import inputs_digest
+
+    d = inputs_digest(study)
+    return pd.DataFrame({"input": list(d), "entry": [str(v) for v in d.values()]})
+
+
+def _figures(result):
+    figs = {"linearisation": plot_yaw_linearisation(result.static.linearisation),
+            "static-moments": plot_static_moments(result.static),
+            "wake": plot_wake(result.line)}
+    if result.sweep is not None:
+        figs["sweep"] = plot_sweep_metrics(result.sweep)
+        runs = result.sweep.runs
+        chosen = result.history_runs()
+        kinds = [g.kind for g in runs.gusts]
+        pick = "finite" if "finite" in kinds else kinds[0]
+        figs["histories"] = plot_time_histories(
+            runs, [j for j in chosen if runs.gusts[j].kind == pick],
+            title=f"1-DOF yaw response, {pick} gust (paper figure 7)")
+    return figs
+
+
+def write(result, out_dir, stem, units, study):
+    """Write ``<stem>-chute.xlsx`` and ``<stem>-chute-*.png`` atomically.
+
+    Parameters
+    ----------
+    result : ChuteSizingReport
+    out_dir : path-like
+    stem : str
+    units : str
+        ``"SI"`` or ``"US"`` (lengths in in, areas in ft^2, speeds in kt, moments in lbf in).
+    study : WorkbookStudy
+        For the inputs digest; its input file is never overwritten.
+
+    Returns
+    -------
+    list of pathlib.Path
+    """
+    check_units(units)
+    inputs = [study.path]
+    names = ([f"{stem}-chute.xlsx", f"{stem}-chute-histories.csv"]
+             + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
+    for name in names:
+        check_not_input(Path(out_dir) / name, inputs)
+    pngs = {tag: figure_png(fig, _PNG_DPI) for tag, fig in _figures(result).items()}
+    sheets = _sheets(result, units, _digest(study))
+    titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
+              "static-moments": "Static yawing moments at the neutral area",
+              "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
+              "histories": "Time histories (paper figure 7)"}
+    with atomic_outputs(out_dir, inputs=inputs) as out:
+        write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
+                       {titles[t]: png for t, png in pngs.items()},
+                       number_format=NUMBER_FORMATS)
+        if result.sweep is not None:
+            history_table(result, "SI").to_csv(out.path(f"{stem}-chute-histories.csv"),
+                                               index=False, lineterminator="\n")
+        for tag, png in pngs.items():
+            out.path(f"{stem}-chute-{tag}.png").write_bytes(png)
+    return out.written
