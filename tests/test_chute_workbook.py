@@ -1,0 +1,199 @@
+"""Parachute sizing driven from the input workbook: round trip, report read-back, bad input.
+
+References: the neutral area read through the workbook equals the one computed with the
+Python API from the same data (the generic HC1 tables of ``slingloads/data`` placed at the
+workbook's hardpoints, and a yaw inertia summed by hand about the hub axis, parallel-axis
+theorem); the report's numbers read back equal those of the API run; each bad-input test
+breaks one rule written in ``slingloads.io.schema_chute`` and checks exit code 2, the sheet
+and cell in the message, and that nothing is written.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import openpyxl
+import pandas as pd
+import pytest
+
+from slingloads.analyses.chute_sizing import neutral_area
+from slingloads.cli import main
+from slingloads.io.chute_report import PLOTS, compute
+from slingloads.io.study_reader import read_study
+from slingloads.models.aerodynamics import Fin, FuselageAero
+from slingloads.models.parachute import Parachute
+from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
+from slingloads.models.yaw_dynamics import FlightCondition, YawModel
+from slingloads.units import FOOT, KNOT
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+STEM = EXAMPLE.stem
+
+
+@pytest.fixture(scope="module")
+def study():
+    return read_study(EXAMPLE, only=["chute sizing"])
+
+
+@pytest.fixture(scope="module")
+def result(study):
+    return compute(study)
+
+
+@pytest.fixture(scope="module")
+def run_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("chute")
+    assert main(["chute", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+    return out
+
+
+def test_neutral_area_workbook_equals_api(study, result):
+    """Same data, two paths: the workbook reader and the API (HC1 tables, hand inertia)."""
+    frame, points = study.airframe, study.points
+    ref = sample_reference("HC1")
+    hc1 = sample_fuselage("HC1")
+    fuselage = FuselageAero(hc1.table, ref.fuselage_area, ref.fuselage_length,
+                            points["aero_reference"])
+    fin = Fin(sample_fin("HC1").table, ref.fin_area, points["fin_cp"], ref.fin_efficiency)
+    items, hub = frame.mass_items, frame.hardpoints.hub
+    # parallel-axis theorem item by item about the vertical through the hub
+    inertia = float(np.sum(items.inertia[:, 2, 2] + items.mass * (
+        (items.position[:, 0] - hub[0]) ** 2 + (items.position[:, 1] - hub[1]) ** 2)))
+    model = YawModel(fuselage, fin, frame.hardpoints, inertia, FlightCondition(80 * KNOT),
+                     Parachute(1.0))
+    api = neutral_area(model)
+    assert result.inputs.model.yaw_inertia == pytest.approx(inertia, rel=1e-12)
+    assert result.static.area == pytest.approx(api.area, rel=1e-9)
+    assert result.static.area > 0
+    # the example's Study parachute area is 1.4 x neutral, rounded to 0.1 m^2
+    assert result.inputs.study_area == pytest.approx(round(1.4 * api.area, 1), abs=1e-12)
+    # its line length is the wake line rounded up to 0.1 m, and the 60 ft cable passes
+    assert 0 <= result.inputs.study_line - result.line.line_length < 0.1 + 1e-12
+    assert result.line.cable.cable_length == pytest.approx(60 * FOOT)
+    assert result.line.cable.ok
+
+
+def test_report_reads_back(run_dir, result):
+    """`slingloads chute` writes the workbook, CSV and PNGs; the numbers read back."""
+    for tag in PLOTS:
+        assert (run_dir / f"{STEM}-chute-{tag}.png").stat().st_size > 1000
+    summary = pd.read_excel(run_dir / f"{STEM}-chute.xlsx", sheet_name="Summary", header=None)
+    row = summary[summary[0] == "neutral static area"].iloc[0]
+    assert float(row[1]) == pytest.approx(result.static.area, rel=1e-12)
+    assert row[2] == "m^2"
+    rec = summary[summary[0] == "recommended area"].iloc[0]
+    assert float(rec[1]) == pytest.approx(1.4 * result.static.area, rel=1e-12)
+    line = summary[summary[0] == "parachute line length (from the wake)"].iloc[0]
+    assert float(line[1]) == pytest.approx(result.line.line_length, rel=1e-12)
+    assert summary[summary[0] == "carrier cable check"].iloc[0][1] == "ok"
+    sweep = pd.read_excel(run_dir / f"{STEM}-chute.xlsx", sheet_name="Sweep", header=None)
+    head = int(np.nonzero(sweep[0].to_numpy() == "Every run")[0][0]) + 1
+    runs = sweep.iloc[head + 1:].copy()
+    runs.columns = sweep.iloc[head]
+    api = result.sweep.to_frame()
+    assert len(runs) == len(api) == 24
+    np.testing.assert_allclose(runs["peak beta [deg]"].astype(float), api["peak beta [deg]"],
+                               rtol=1e-12)
+    assert list(runs["verdict"]) == list(api["verdict"])
+    csv = pd.read_csv(run_dir / f"{STEM}-chute-histories.csv")
+    j = result.history_runs()[0]
+    col = [c for c in csv.columns if c.startswith("beta [deg]")][0]
+    np.testing.assert_allclose(csv[col], np.degrees(result.sweep.runs.histories.beta[j]),
+                               rtol=1e-12, atol=1e-12)
+
+
+def test_us_report(tmp_path, result):
+    """--units US: areas in ft^2 (1 ft = 0.3048 m exactly), lengths in in."""
+    assert main(["chute", str(EXAMPLE), "--out", str(tmp_path), "--units", "US",
+                 "--quiet"]) == 0
+    summary = pd.read_excel(tmp_path / f"{STEM}-chute.xlsx", sheet_name="Summary", header=None)
+    row = summary[summary[0] == "neutral static area"].iloc[0]
+    assert row[2] == "ft^2"
+    assert float(row[1]) == pytest.approx(result.static.area / FOOT**2, rel=1e-12)
+    line = summary[summary[0] == "parachute line length (from the wake)"].iloc[0]
+    assert float(line[1]) == pytest.approx(result.line.line_length / 0.0254, rel=1e-12)
+
+
+# ---------------------------------------------------------------------------- bad input
+def _row(book, name):
+    for row in book["Study"].iter_rows(min_row=2):
+        if row[0].value == name:
+            return row[0].row
+    raise KeyError(name)
+
+
+def _bad(tmp_path, capsys, edits, sheet, cell, *fragments):
+    """Apply ``edits`` {(sheet, cell or Study parameter name): value} to a copy; expect exit 2
+    located at ``cell`` of ``sheet`` (a parameter's value cell on the Study sheet)."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    for (name, where), value in edits.items():
+        if name == "Study":
+            where = f"B{_row(book, where)}"
+        book[name][where] = value
+    path = tmp_path / "bad.xlsx"
+    book.save(path)
+    out = tmp_path / "out"
+    capsys.readouterr()
+    assert main(["chute", str(path), "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    if sheet == "Study":
+        cell = f"B{_row(book, cell)}"
+    assert f"sheet '{sheet}'" in err and f"cell {cell}" in err, err
+    for fragment in fragments:
+        assert fragment in err, err
+    assert "nothing was written" in err
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("speed", [0, -80])
+def test_bad_airspeed(tmp_path, capsys, speed):
+    """Rule: 'chute sizing airspeed IAS' > 0."""
+    name = "chute sizing airspeed IAS"
+    _bad(tmp_path, capsys, {("Study", name): speed}, "Study", name, "must be > 0",
+         f"value {speed!r}")
+
+
+def test_zero_fin_area(tmp_path, capsys):
+    """Rule: 'fin area' > 0 (the sizing reads FinAero on its own, without the loads)."""
+    _bad(tmp_path, capsys, {("Study", "fin area"): 0}, "Study", "fin area", "'fin area'")
+
+
+def test_negative_area_factor(tmp_path, capsys):
+    """Rule: 'chute sizing area factor min' > 0."""
+    name = "chute sizing area factor min"
+    _bad(tmp_path, capsys, {("Study", name): -1}, "Study", name, "must be > 0")
+
+
+def test_zero_yaw_inertia_parameter(tmp_path, capsys):
+    """Rule: with the source 'parameter', 'chute sizing yaw inertia' > 0."""
+    name = "chute sizing yaw inertia"
+    _bad(tmp_path, capsys, {("Study", "chute sizing yaw inertia source"): "parameter",
+                            ("Study", name): 0}, "Study", name, "must be > 0")
+
+
+def test_negative_yaw_inertia(tmp_path, capsys):
+    """Rule: a yaw inertia is never negative."""
+    name = "chute sizing yaw inertia"
+    _bad(tmp_path, capsys, {("Study", name): -5000}, "Study", name, "> 0", "-5000")
+
+
+def test_non_monotonic_wake_table(tmp_path, capsys):
+    """Rule: ChuteWake distances strictly increasing (A4 repeats A3)."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    repeat = book["ChuteWake"]["A3"].value
+    _bad(tmp_path, capsys, {("ChuteWake", "A4"): repeat}, "ChuteWake", "A4",
+         "strictly increasing")
+
+
+def test_unknown_gust_shape(tmp_path, capsys):
+    """Rule: gust shapes among step, finite, 1-cosine, continuous."""
+    name = "chute sizing gust shapes"
+    _bad(tmp_path, capsys, {("Study", name): "step, gusty"}, "Study", name,
+         "unknown gust shape", "'gusty'", "1-cosine")
+
+
+def test_gust_after_the_end(tmp_path, capsys):
+    """Rule: the gust starts before the end of the simulation."""
+    name = "chute sizing gust onset"
+    _bad(tmp_path, capsys, {("Study", name): 500}, "Study", name, "before the end")
