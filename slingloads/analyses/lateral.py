@@ -207,21 +207,26 @@ class RunMetrics:
         }
 
     @classmethod
-    def from_histories(cls, t, angle, rope_angle_, tension_ratio, rigid=False):
+    def from_histories(cls, t, angle, rope_angle_, tension_ratio, rigid=False,
+                       breakpoints=()):
         """Metrics of sampled time histories (last axis = time).
 
         ``angle`` is theta1 - theta2 (wrapped here to [-pi, pi)). For the rigid rope
         (``rigid=True``) the angles count only until the tension first goes negative, after
-        which that model is not valid.
+        which that model is not valid. No peak is refined by a parabola across one of the
+        ``breakpoints`` [s] (where S'' and so the tension jump).
         """
         taut = np.asarray(tension_ratio) > 0
         if rigid:
             taut = np.logical_and.accumulate(taut, axis=-1)
-        a, ta = _peak(t, np.abs(load_angle(angle, 0.0)), taut)
+        smooth = taut.copy()
+        for b in breakpoints:
+            smooth[..., 1:-1] &= ~((t[:-2] < b) & (b <= t[2:]))
+        a, ta = _peak(t, np.abs(load_angle(angle, 0.0)), taut, smooth)
         a = np.minimum(a, np.pi)  # a parabola through the wrap at pi must not pass it
-        r, tr = _peak(t, np.abs(rope_angle_), taut)
-        n, tn = _peak(t, tension_ratio, smooth=taut)
-        low, _ = _peak(t, -np.asarray(tension_ratio), smooth=taut)
+        r, tr = _peak(t, np.abs(rope_angle_), taut, smooth)
+        n, tn = _peak(t, tension_ratio, smooth=smooth)
+        low, _ = _peak(t, -np.asarray(tension_ratio), smooth=smooth)
         values = [a, ta, r, tr, n, tn, -low]
         if np.ndim(a) == 0:  # one run: plain floats
             values = [float(v) for v in values]
@@ -300,7 +305,8 @@ class LateralRun:
     def metrics(self):
         """Peak values and when they occur: :class:`RunMetrics`."""
         return RunMetrics.from_histories(self.t, self.load_angle, self.theta1,
-                                         self.tension_ratio, self.pendulum.rigid)
+                                         self.tension_ratio, self.pendulum.rigid,
+                                         self.motion.breakpoints)
 
     def to_frame(self):
         """Time histories with unit-labelled columns (angles in degrees)."""
@@ -398,10 +404,12 @@ def _stack_parameters(pendulums):
 def sweep(pendulums, motions, *, t_end=None, step=None):
     """Per-run metrics of many runs, integrated together by vectorised RK4.
 
-    Run i is ``pendulums[i]`` under ``motions[i]``. All runs share one time grid; the state
-    is an array of shape (states, runs) and one RK4 step is a few numpy operations over all
-    runs (rigid-rope and elastic-cable runs form two such groups). Peaks between grid points
-    are refined by a parabola through the three samples around them.
+    Run i is ``pendulums[i]`` under ``motions[i]``. All runs share one time grid: uniform,
+    with the breakpoints of every motion (where S'' jumps) inserted, so that no step
+    straddles a jump (RK4 across a jump would be only first-order accurate). The state is an
+    array of shape (states, runs) and one RK4 step is a few numpy operations over all runs
+    (rigid-rope and elastic-cable runs form two such groups). Peaks between grid points are
+    refined by a parabola through the three samples around them.
 
     Parameters
     ----------
@@ -410,10 +418,9 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
     t_end : float, optional
         Common run length (default :func:`default_end_time` over all runs). [s]
     step : float, optional
-        RK4 step. Default: min(0.01 s, 0.15/omega_max) with omega_max the fastest natural
+        RK4 step. Default: min(0.01 s, 0.25/omega_max) with omega_max the fastest natural
         mode of any run (the elastic cable's bounce mode when present); this keeps the
-        peak load angle and tension within about 5e-4 of a tight solve_ivp solution,
-        including motions whose acceleration jumps between grid points. [s]
+        peak load angle and tension within about 1e-4 of a tight solve_ivp solution. [s]
 
     Returns
     -------
@@ -432,12 +439,13 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
     if not np.isfinite(t_end) or t_end <= 0:
         raise InputError("run length t_end must be > 0 [s]", t_end)
     if step is None:
-        step = min(0.01, 0.15 / max(_fastest_mode(p) for p in pendulums))
+        step = min(0.01, 0.25 / max(_fastest_mode(p) for p in pendulums))
     step = float(step)
     if not np.isfinite(step) or step <= 0:
         raise InputError("RK4 step must be > 0 [s]", step)
     n_steps = max(int(np.ceil(t_end / step - 1e-9)), 2)
     h = t_end / n_steps
+    nodes, jumps = _time_nodes(t_end, n_steps, motions)
     rigid = np.array([p.rigid for p in pendulums])
     out = {f.name: np.empty(len(pendulums)) for f in fields(RunMetrics)}
     for flag in (True, False):
@@ -445,13 +453,31 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
         if idx.size == 0:
             continue
         group = [pendulums[i] for i in idx]
-        metrics = _rk4_group(group, [motions[i] for i in idx], n_steps, h, flag)
+        metrics = _rk4_group(group, [motions[i] for i in idx], nodes, jumps, flag)
         for name in out:
             out[name][idx] = getattr(metrics, name)
     return RunMetrics(**out), h
 
 
-def _rk4_group(pendulums, motions, n_steps, h, rigid):
+def _time_nodes(t_end, n_steps, motions):
+    """The uniform grid with every motion breakpoint inserted (nodes closer than 1 % of a step
+    to a breakpoint are moved onto it), so that no RK4 step straddles a jump of S''.
+
+    Returns the nodes and a flag per node: True where S'' may jump (the step ending there
+    samples S'' just before it, the step starting there just after).
+    """
+    h = t_end / n_steps
+    grid = np.linspace(0.0, t_end, n_steps + 1)
+    unique = {id(m): m for m in motions}.values()
+    breaks = np.unique([b for m in unique for b in m.breakpoints if 0.0 < b < t_end])
+    if breaks.size:
+        near = np.abs(grid[:, None] - breaks[None, :]).min(axis=1) < 0.01 * h
+        near[[0, -1]] = False
+        grid = np.union1d(grid[~near], breaks)
+    return grid, np.isin(grid, breaks)
+
+
+def _rk4_group(pendulums, motions, nodes, jumps, rigid):
     """Vectorised RK4 over runs sharing one cable model; running parabola-refined peaks."""
     params = _stack_parameters(pendulums)
     weight = params["mass"] * params["g"]
@@ -481,18 +507,31 @@ def _rk4_group(pendulums, motions, n_steps, h, rigid):
     counts = np.array([True, True, False, False])[:, None]  # angles count only when taut
     best = np.where(counts & ~ok1, -np.inf, y1)
     t_best = np.zeros_like(y1)
-    y0 = ok0 = None
-    for i in range(n_steps):
-        t = i * h
+    y0 = ok0 = h_prev = None
+    for i in range(nodes.size - 1):
+        t, t_next = nodes[i], nodes[i + 1]
+        h = t_next - t
         kin_half = batch.kinematics(t + 0.5 * h)
         k2, _ = f(kin_half, x + 0.5 * h * k1)
         k3, _ = f(kin_half, x + 0.5 * h * k2)
-        kin = batch.kinematics(t + h)
+        # at a breakpoint, this step ends with S'' just before the jump
+        kin = batch.kinematics(np.nextafter(t_next, -np.inf) if jumps[i + 1] else t_next)
         k4, _ = f(kin, x + h * k3)
         x = x + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+        if jumps[i + 1]:
+            # the tension jumps with S'': count its value just before, then go on after
+            _, tension_left = f(kin, x)
+            y_left, ok_left = signals(x, tension_left)
+            better = (y_left > best) & (~counts | ok_left)
+            best = np.where(better, y_left, best)
+            t_best = np.where(better, t_next, t_best)
+            kin = batch.kinematics(t_next)
         k1, tension = f(kin, x)
         y2, ok2 = signals(x, tension)
-        if y0 is not None:  # parabola through the samples at t - h, t, t + h
+        if (y0 is not None and abs(h - h_prev) <= 1e-9 * h
+                and not (jumps[i] or jumps[i + 1])):
+            # parabola through the equally spaced samples at t - h, t, t + h, none of them
+            # across a jump of S'' (the sample at a breakpoint is taken just after it)
             peak = (y1 >= y0) & (y1 >= y2) & ok0 & ok1 & ok2  # no parabola through a kink
             value, offset = _refine(y0, y1, y2)
             better = peak & (value > best)
@@ -500,8 +539,8 @@ def _rk4_group(pendulums, motions, n_steps, h, rigid):
             t_best = np.where(better, t + offset * h, t_best)
         better = (y2 > best) & (~counts | ok2)
         best = np.where(better, y2, best)
-        t_best = np.where(better, t + h, t_best)
-        y0, y1, ok0, ok1 = y1, y2, ok1, ok2
+        t_best = np.where(better, t_next, t_best)
+        y0, y1, ok0, ok1, h_prev = y1, y2, ok1, ok2, h
     best = np.where(np.isfinite(best), best, np.nan)
     best[0] = np.minimum(best[0], np.pi)  # a parabola through the wrap at pi must not pass it
     return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3])
