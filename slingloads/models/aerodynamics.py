@@ -27,6 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from slingloads.checks import positive
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 
@@ -58,10 +59,7 @@ def lift_direction(alpha):
 
 
 def _positive(value, name, unit):
-    value = float(value)
-    if not np.isfinite(value) or value <= 0:
-        raise InputError(f"{name} must be > 0 [{unit}]", value)
-    return value
+    return positive(value, f"{name} must be > 0 [{unit}]")
 
 
 @dataclass(frozen=True)

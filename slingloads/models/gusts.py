@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from slingloads.checks import finite, positive
 from slingloads.errors import InputError
 from slingloads.units import FOOT
 
@@ -30,17 +31,12 @@ GUST_DURATION = 10.0
 
 
 def _finite(value, name, unit):
-    value = float(value)
-    if not np.isfinite(value):
-        raise InputError(f"gust {name} must be a finite number [{unit}]", value)
-    return value
+    return finite(value, f"gust {name} must be a finite number [{unit}]")
 
 
 def _positive(value, name, unit):
-    value = _finite(value, name, unit)
-    if value <= 0:
-        raise InputError(f"gust {name} must be > 0 [{unit}]", value)
-    return value
+    _finite(value, name, unit)
+    return positive(value, f"gust {name} must be > 0 [{unit}]")
 
 
 @dataclass(frozen=True)

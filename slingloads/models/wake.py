@@ -47,6 +47,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from slingloads.checks import positive
 from slingloads.errors import InputError
 
 #: Default target dynamic-pressure ratio at the canopy (the paper's 0.95).
@@ -56,10 +57,7 @@ CABLE_MARGIN = 0.20
 
 
 def _positive(value, name, unit):
-    value = float(value)
-    if not np.isfinite(value) or value <= 0:
-        raise InputError(f"{name} must be > 0 [{unit}]", value)
-    return value
+    return positive(value, f"{name} must be > 0 [{unit}]")
 
 
 @dataclass(frozen=True)
