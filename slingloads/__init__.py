@@ -2,6 +2,42 @@
 
 Structural loads (CS-29.865 hook loads, aerodynamics, parachute drag, inertia relief, shear
 force and bending moment), the lateral-step pendulum and the drogue-parachute sizing.
+
+The names below are importable from the package root (loaded on first use)::
+
+    import slingloads as sl
+    study = sl.read_study("loadcases/example-light-twin.xlsx")
 """
 
+from importlib import import_module
+
 __version__ = "0.1.0"
+
+_EXPORTS = {
+    "read_study": "slingloads.io.study_reader",
+    "write_input_workbook": "slingloads.io.template",
+    "write_loads_outputs": "slingloads.io.loads_report",
+    "MassItems": "slingloads.models.airframe",
+    "Hardpoints": "slingloads.models.airframe",
+    "Airframe": "slingloads.models.airframe",
+    "FuselageAero": "slingloads.models.aerodynamics",
+    "Fin": "slingloads.models.aerodynamics",
+    "Parachute": "slingloads.models.parachute",
+    "Table1D": "slingloads.models.aero_tables",
+    "Table2D": "slingloads.models.aero_tables",
+    "LoadsStudy": "slingloads.analyses.loads",
+    "LoadsResult": "slingloads.analyses.loads",
+    "FlightCondition": "slingloads.analyses.loads",
+    "AeroEnvelope": "slingloads.analyses.loads",
+    "ListedCase": "slingloads.analyses.loads",
+    "HookLoadOptions": "slingloads.analyses.hook_loads",
+    "InputError": "slingloads.errors",
+}
+
+__all__ = ["__version__", *_EXPORTS]
+
+
+def __getattr__(name):
+    if name in _EXPORTS:
+        return getattr(import_module(_EXPORTS[name]), name)
+    raise AttributeError(f"module 'slingloads' has no attribute {name!r}")
