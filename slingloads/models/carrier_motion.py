@@ -28,24 +28,12 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from slingloads.checks import finite as _finite
+from slingloads.checks import positive as _positive
 from slingloads.errors import InputError
 
 #: Peak acceleration of the unit quintic step over unit time: 10/sqrt(3). [-]
 QUINTIC_PEAK = 10.0 / np.sqrt(3.0)
-
-
-def _finite(value, rule):
-    value = float(value)
-    if not np.isfinite(value):
-        raise InputError(rule, value)
-    return value
-
-
-def _positive(value, rule):
-    value = float(value)
-    if not np.isfinite(value) or value <= 0:
-        raise InputError(rule, value)
-    return value
 
 
 @dataclass(frozen=True)

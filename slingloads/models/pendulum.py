@@ -40,26 +40,14 @@ import numpy as np
 import pandas as pd
 from scipy.linalg import eigh
 
+from slingloads.checks import non_negative as _non_negative
+from slingloads.checks import positive as _positive
 from slingloads.errors import InputError
 from slingloads.units import G0
 
 #: Names of the states of each cable model, in order.
 RIGID_STATES = ("theta1", "theta2", "theta1_dot", "theta2_dot")
 ELASTIC_STATES = ("ry", "rz", "theta2", "ry_dot", "rz_dot", "theta2_dot")
-
-
-def _positive(value, rule):
-    value = float(value)
-    if not np.isfinite(value) or value <= 0:
-        raise InputError(rule, value)
-    return value
-
-
-def _non_negative(value, rule):
-    value = float(value)
-    if not np.isfinite(value) or value < 0:
-        raise InputError(rule, value)
-    return value
 
 
 @dataclass(frozen=True)
