@@ -160,7 +160,7 @@ def main():
         "parachute wake ratio": (0.95, ""),
         "parachute line length": (chute_line, "m"),
         "parachute opening factor": (1.0, ""),
-        "hull stations": ("FS0161, FS0342", ""),
+        "hull stations": ("FS0161", ""),
     }
     tables = {"MassItems": mass_items, "Stations": stations, "Hardpoints": hardpoints,
               "FuselageAero": fuselage, "FinAero": fin, "AeroEnvelope": envelope,

@@ -11,8 +11,8 @@
   system with the unit in every header (``x [in]``, ``Vy [lbf]``, ``Mz [lbf in]``);
 * ``<stem>-sfbm.csv`` (columns ``case,station,x_m,Vx_N,Vy_N,Vz_N,Mx_Nm,My_Nm,Mz_Nm``) and
   ``<stem>-envelope.csv``: limit loads, always SI;
-* ``<stem>-X_shear.png``... ``<stem>-Z_moment.png`` (one per component, the paper's
-  figures 19 and 20 are X and Y shear), ``<stem>-sfbm_all.png`` (2 x 3 grid) and
+* ``<stem>-X_shear.png`` and ``<stem>-Y_shear.png`` (the paper's figures 19 and 20),
+  ``<stem>-sfbm_all.png`` (all six components, 2 x 3 grid) and
   ``<stem>-hull_<A>_<B>_<station>.png``.
 
 The DataFrame conversion helpers (:func:`convert_columns`, :func:`convert_by_component`)
@@ -53,6 +53,9 @@ from slingloads.io.plots_loads import (
     report_unit,
 )
 from slingloads.units import unit_label
+
+#: Components drawn on their own PNG (the paper's figures 19 and 20); all six are on the grid.
+PNG_COMPONENTS = ("Vx", "Vy")
 
 #: Columns of the SFBM CSV file (SI, limit loads).
 SFBM_CSV_COLUMNS = ("case", "station", "x_m", "Vx_N", "Vy_N", "Vz_N", "Mx_Nm", "My_Nm",
@@ -355,7 +358,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
             index = _station_index(result, station)
             hull_plots[f"hull_{pair[0]}_{pair[1]}_{_safe(result.station_ids[index])}"] = (
                 pair, index)
-    tags = [COMPONENT_TAGS[n] for n in COMPONENTS] + ["sfbm_all", *hull_plots] if plots else []
+    tags = ([COMPONENT_TAGS[n] for n in PNG_COMPONENTS] + ["sfbm_all", *hull_plots]
+            if plots else [])
     names = [f"{stem}-loads.xlsx", f"{stem}-sfbm.csv", f"{stem}-envelope.csv",
              *(f"{stem}-{tag}.png" for tag in tags)]
     for name in names:  # fail before the slow work, not after it
@@ -363,7 +367,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
 
     pngs = {}
     if plots:
-        for name in COMPONENTS:
+        for name in PNG_COMPONENTS:
             pngs[COMPONENT_TAGS[name]] = figure_png(plot_sfbm(result, name, units), _PNG_DPI)
         pngs["sfbm_all"] = figure_png(plot_sfbm_grid(result, units), _PNG_DPI)
         for tag, (pair, index) in hull_plots.items():
