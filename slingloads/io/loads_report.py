@@ -275,7 +275,7 @@ def closure_table(result):
          "N m"),
         ("tolerance on every residual component", tol, "N or N m"),
         ("max |force residual|", float(residual[:, :3].max()), "N"),
-        ("max |moment residual| about the CG", float(residual[:, 3:].max()), "N m"),
+        ("max |moment residual| at a cut aft of every load", float(residual[:, 3:].max()), "N m"),
         ("case with the largest residual", result.case_ids[worst], ""),
         ("result", "PASS" if largest <= tol else "FAIL", ""),
     ]
