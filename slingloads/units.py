@@ -46,6 +46,8 @@ SI_UNITS = {
     "time": "s",
     "frequency": "rad/s",
     "stiffness": "N/m",
+    "linear damping": "N*s/m",
+    "rotational damping": "N*m*s/rad",
     "dimensionless": "",
 }
 
@@ -55,13 +57,14 @@ REPORT_UNITS = {
         "length": "m", "mass": "kg", "force": "N", "moment": "N*m", "inertia": "kg*m^2",
         "angle": "deg", "speed": "m/s", "acceleration": "m/s^2", "area": "m^2",
         "density": "kg/m^3", "time": "s", "frequency": "rad/s", "stiffness": "N/m",
-        "dimensionless": "",
+        "linear damping": "N*s/m", "rotational damping": "N*m*s/rad", "dimensionless": "",
     },
     "US": {
         "length": "in", "mass": "lb", "force": "lbf", "moment": "lbf*in",
         "inertia": "slug*ft^2", "angle": "deg", "speed": "kt", "acceleration": "ft/s^2",
         "area": "ft^2", "density": "slug/ft^3", "time": "s", "frequency": "rad/s",
-        "stiffness": "lbf/in", "dimensionless": "",
+        "stiffness": "lbf/in", "linear damping": "lbf*s/ft",
+        "rotational damping": "lbf*ft*s/rad", "dimensionless": "",
     },
 }
 
@@ -69,6 +72,8 @@ REPORT_UNITS = {
 UNIT_LABELS = {
     "N*m": "N m", "kg*m^2": "kg m^2", "lbf*in": "lbf in", "slug*ft^2": "slug ft^2",
     "m/s^2": "m/s^2", "ft/s^2": "ft/s^2", "slug/ft^3": "slug/ft^3", "": "-",
+    "N*s/m": "N s/m", "N*m*s/rad": "N m s/rad", "lbf*s/ft": "lbf s/ft",
+    "lbf*ft*s/rad": "lbf ft s/rad",
 }
 
 

@@ -112,3 +112,46 @@ def plot_max_angle_vs_acceleration(study, title=None):
     ax.set_title(title or "Largest load angle from the mast against carrier acceleration",
                  fontsize="medium")
     return fig
+
+
+def plot_shear_at_angles(comparison, component="Vy", units="SI", title=None):
+    """Envelope max |load| of the hook cases along the stations at 30 deg and at the
+    recommended angle.
+
+    Parameters
+    ----------
+    comparison : slingloads.io.lateral_report.HookAngleComparison
+    component : str
+        Load component, default the Y shear ``"Vy"``.
+    units : str
+        ``"SI"`` or ``"US"``: axes in the report unit system.
+    title : str, optional
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
+    from slingloads.io.plots_loads import in_report_units, labelled
+
+    j = COMPONENTS.index(component)
+    kind = COMPONENT_KINDS[j]
+    x = in_report_units(comparison.stations, "length", units)
+    fig = Figure(figsize=(8.0, 4.5), layout="constrained")
+    ax = fig.subplots()
+    ref, at = np.degrees(comparison.reference_angle), np.degrees(comparison.angle)
+    ax.plot(x, in_report_units(comparison.reference[:, j], kind, units), color="tab:red",
+            marker=".", label=f"hook cone {ref:.4g} deg (CS-29.865)")
+    ax.plot(x, in_report_units(comparison.at_angle[:, j], kind, units), color="tab:green",
+            marker=".", label=f"hook cone {at:.4g} deg (recommended)")
+    big_ref, big_at = comparison.reference[:, j].max(), comparison.at_angle[:, j].max()
+    if big_ref > 0:
+        ax.plot([], [], " ", label=f"largest value: {100.0 * (big_at / big_ref - 1.0):+.1f} %")
+    ax.set_xlabel(labelled("x", "length", units))
+    ax.set_ylabel(labelled(f"max |{component}|", kind, units))
+    ax.set_ylim(bottom=0.0)
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    ax.set_title(title or f"Envelope of the hook cases, {component}, limit loads",
+                 fontsize="medium")
+    return fig

@@ -1,0 +1,437 @@
+"""Build the lateral-step pendulum inputs from an input workbook (``run lateral = yes``).
+
+Called by :func:`slingloads.io.study_reader.read_study` as ``read(reader, params, study)``.
+It reads the Study parameters of :mod:`slingloads.io.schema_lateral`, the sheets
+``LateralMotions``, ``LateralRopes``, and the optional ``LateralHistory`` (or CSV files named
+in ``LateralMotions``) and ``LateralBodies``; without ``LateralBodies`` the one body comes from
+the ``MassItems`` and the ``Hardpoints`` hub. For the link to the loads it keeps the loads
+study (``study.loads``, or one built from the same workbook when only the lateral study was
+asked for). Every value is SI after reading; every bad value raises
+:class:`~slingloads.errors.InputError` naming the file, sheet, cell, value and rule.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from slingloads.analyses.lateral import SolverSettings
+from slingloads.errors import InputError
+from slingloads.io.schema import STUDY_SHEET, all_sheets
+from slingloads.io.schema_lateral import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
+from slingloads.io.study_reader import _loads_study
+from slingloads.io.workbook import located
+from slingloads.models.carrier_motion import (
+    ConstantAcceleration,
+    SmoothStep,
+    TimeHistory,
+    VelocityStep,
+)
+from slingloads.models.pendulum import SlungBody
+from slingloads.units import si_factor
+
+ANALYSIS = "lateral"
+_SPEC = {s.name: s for s in SHEETS}
+
+
+@dataclass(frozen=True)
+class LateralInputs:
+    """Everything the lateral study needs, in SI.
+
+    Attributes
+    ----------
+    bodies : tuple of SlungBody
+    body_source : str
+        ``"LateralBodies"`` or ``"MassItems"``.
+    rope_lengths : tuple of float
+        [m]
+    motions : tuple
+        Carrier motions (:mod:`slingloads.models.carrier_motion`).
+    motion_ids : tuple of str
+        The LateralMotions ids, one per motion.
+    margin : float
+        Design-angle margin, >= 1. [-]
+    cable_ea : float or None
+        None: rigid rope. [N]
+    lateral_damping : float
+        [N s/m]
+    roll_damping : float
+        [N m s/rad]
+    t_end : float or None
+        Run length; None: automatic. [s]
+    step : float or None
+        RK4 step; None: automatic. [s]
+    solver : SolverSettings
+        Settings of the critical case's time-history re-run.
+    loads : LoadsStudy or None
+        The loads study of the workbook (for the hook cases at the recommended angle).
+    """
+
+    bodies: tuple
+    body_source: str
+    rope_lengths: tuple
+    motions: tuple
+    motion_ids: tuple
+    margin: float
+    cable_ea: float | None
+    lateral_damping: float
+    roll_damping: float
+    t_end: float | None
+    step: float | None
+    solver: SolverSettings
+    loads: object
+
+
+def _where(params, name):
+    return params.cell(name) or "(default)"
+
+
+def _raw(reader, params, name):
+    cell = params.cell(name)
+    if cell is None:
+        return params.specs[name.lower()].default
+    return reader.book[STUDY_SHEET][cell].value
+
+
+def _check(reader, params, name, ok, rule):
+    if not ok:
+        raise reader.error(rule, _raw(reader, params, name), STUDY_SHEET, _where(params, name))
+
+
+def _choice(reader, params, name, valid):
+    text = str(params(name) or "").strip()
+    for v in valid:
+        if v.lower() == text.lower():
+            return v
+    raise reader.error(f"{name!r} is not valid; valid values are {list(valid)}", text,
+                       STUDY_SHEET, _where(params, name))
+
+
+def _non_negative(reader, params, name, strict=False):
+    value = params(name)
+    ok = np.isfinite(value) and (value > 0 or (not strict and value == 0))
+    _check(reader, params, name, ok, f"{name!r} must be {'> 0' if strict else '>= 0'}")
+    return float(value)
+
+
+def _shown(table, column, i):
+    """The value of a numeric cell in the unit of its header (for error messages)."""
+    value = float(table[column][i])
+    unit = table.units.get(column, "")
+    kind = next(c.kind for c in _all_columns() if c.name == column)
+    try:
+        return value / si_factor(unit, kind)
+    except Exception:  # the unit was checked on reading; this is only for display
+        return value
+
+
+def _all_columns():
+    return [c for s in SHEETS for c in s.columns]
+
+
+def read(reader, params, study):
+    """Build :class:`LateralInputs` from the workbook.
+
+    Parameters
+    ----------
+    reader : WorkbookReader
+    params : slingloads.io.study_reader._Params
+        Study-sheet parameters (SI, with defaults).
+    study : WorkbookStudy
+        The airframe (mass items, hub) and the loads study if it was built.
+
+    Returns
+    -------
+    LateralInputs
+
+    Raises
+    ------
+    InputError
+        With the file, sheet, cell, value and rule.
+    """
+    margin = params("lateral design-angle margin")
+    _check(reader, params, "lateral design-angle margin", np.isfinite(margin) and margin >= 1,
+           "'lateral design-angle margin' must be >= 1 (recommended angle = margin x the "
+           "largest load angle found)")
+    model = _choice(reader, params, "lateral cable model", CABLE_MODELS)
+    ea = params("lateral cable EA")
+    if model == "elastic":
+        cable_ea = _non_negative(reader, params, "lateral cable EA", strict=True)
+    else:
+        _check(reader, params, "lateral cable EA", np.isfinite(ea) and ea == 0,
+               "'lateral cable EA' is used only with 'lateral cable model' = elastic; leave "
+               "it 0 with the rigid rope")
+        cable_ea = None
+    damping = _non_negative(reader, params, "lateral damping")
+    roll_damping = _non_negative(reader, params, "lateral roll damping")
+    t_end = _non_negative(reader, params, "lateral simulation time")
+    step = _non_negative(reader, params, "lateral RK4 step")
+    if t_end > 0 and step > 0:
+        _check(reader, params, "lateral RK4 step", step < t_end,
+               "'lateral RK4 step' must be shorter than 'lateral simulation time'")
+    method = _choice(reader, params, "lateral history method", SOLVER_METHODS)
+    rtol = _non_negative(reader, params, "lateral history rtol", strict=True)
+    output = _non_negative(reader, params, "lateral history output step", strict=True)
+    solver = SolverSettings(method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2),
+                            output_step=output)
+    ropes = _ropes(reader)
+    bodies, source = _bodies(reader, study)
+    histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
+    motions, ids = _motions(reader, histories)
+    loads = study.loads
+    if loads is None:
+        with located(reader.file):
+            loads = _loads_study(reader, params, all_sheets(), study.airframe, study.points)
+    return LateralInputs(
+        bodies=bodies, body_source=source, rope_lengths=ropes, motions=motions,
+        motion_ids=ids, margin=float(margin), cable_ea=cable_ea, lateral_damping=damping,
+        roll_damping=roll_damping, t_end=t_end if t_end > 0 else None,
+        step=step if step > 0 else None, solver=solver, loads=loads)
+
+
+def _require(reader, name):
+    if not reader.has_sheet(name):
+        raise reader.error(f"the lateral study ('run lateral' = yes) needs the {name} sheet "
+                           f"(columns {[c.header for c in _SPEC[name].columns]})", sheet=name)
+    return reader.table(_SPEC[name])
+
+
+def _ropes(reader):
+    t = _require(reader, "LateralRopes")
+    lengths = t["rope length"]
+    for i, length in enumerate(lengths):
+        if not length > 0:
+            raise reader.error("rope length must be > 0", _shown(t, "rope length", i), t.sheet,
+                               t.cell("rope length", i))
+    return tuple(float(x) for x in lengths)
+
+
+def _unique(reader, t, column):
+    seen = {}
+    for i, value in enumerate(t[column]):
+        if value in seen:
+            raise reader.error(f"duplicate {column} (first at {t.cell(column, seen[value])})",
+                               value, t.sheet, t.cell(column, i))
+        seen[value] = i
+
+
+def _bodies(reader, study):
+    if not reader.has_sheet("LateralBodies"):
+        return (_airframe_body(reader, study.airframe),), "MassItems"
+    t = reader.table(_SPEC["LateralBodies"])
+    _unique(reader, t, "id")
+    bodies = []
+    for i, name in enumerate(t["id"]):
+        for column, rule in (("mass", "mass must be > 0"),
+                             ("roll inertia", "roll inertia must be > 0"),
+                             ("CG below hub", "CG distance below the hub must be >= 0")):
+            value = t[column][i]
+            bad = value < 0 if column == "CG below hub" else not value > 0
+            if bad:
+                raise reader.error(rule, _shown(t, column, i), t.sheet, t.cell(column, i))
+        with located(reader.file, t.sheet, t.cell("mass", i)):
+            bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
+                                    name))
+    return tuple(bodies), "LateralBodies"
+
+
+def airframe_body(airframe, name="MassItems"):
+    """The lateral-pendulum body of an airframe: total mass, Ixx about the CG, CG below hub.
+
+    The CG distance below the hub is measured along the mast axis:
+    :math:`e = (\\mathbf{r}_{hub} - \\mathbf{r}_{CG})\\cdot\\mathbf{m}`.
+
+    Parameters
+    ----------
+    airframe : Airframe
+    name : str
+
+    Returns
+    -------
+    SlungBody
+
+    Raises
+    ------
+    InputError
+        If the CG lies above the hub or the roll inertia is not positive.
+    """
+    items = airframe.mass_items
+    mast = np.asarray(airframe.hardpoints.mast_axis, float)
+    mast = mast / np.linalg.norm(mast)
+    e = float((airframe.hardpoints.hub - items.cg) @ mast)
+    inertia = float(items.inertia_about_cg[0, 0])
+    if e < 0:
+        raise InputError("the CG of the mass items lies above the rotor hub along the mast; "
+                         "the lateral pendulum needs it below (e >= 0) [m]", e)
+    if not inertia > 0:
+        raise InputError("the mass items' roll inertia Ixx about the CG must be > 0 [kg m^2]",
+                         inertia)
+    return SlungBody(items.total_mass, inertia, e, name)
+
+
+def _airframe_body(reader, airframe):
+    with located(reader.file, "MassItems"):
+        return airframe_body(airframe)
+
+
+def _histories(reader):
+    t = reader.table(_SPEC["LateralHistory"])
+    rows = {}
+    for i, hid in enumerate(t["history id"]):
+        rows.setdefault(hid, []).append(i)
+    out = {}
+    for hid, idx in rows.items():
+        time = t["t"][idx]
+        if len(idx) < 2:
+            raise reader.error("a time history needs at least two samples", hid, t.sheet,
+                               t.cell("history id", idx[0]))
+        for k in range(1, len(idx)):
+            if not time[k] > time[k - 1]:
+                raise reader.error(
+                    f"time-history times must be strictly increasing within history {hid!r} "
+                    f"(previous sample at {t.cell('t', idx[k - 1])})", _shown(t, "t", idx[k]),
+                    t.sheet, t.cell("t", idx[k]))
+        with located(reader.file, t.sheet, t.cell("t", idx[0])):
+            out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
+    return out
+
+
+def _csv_history(reader, text, t, i):
+    where = (t.sheet, t.cell("history", i))
+    path = Path(text)
+    if not path.is_absolute():
+        path = Path(reader.file).resolve().parent / path
+    if not path.is_file():
+        raise reader.error("time-history CSV file not found (path relative to the workbook)",
+                           text, *where)
+    try:
+        frame = pd.read_csv(path)
+    except (OSError, ValueError, pd.errors.ParserError) as err:
+        raise reader.error(f"cannot read the time-history CSV file ({err})", text,
+                           *where) from None
+    cols = {}
+    for header in frame.columns:
+        name, _, unit = str(header).partition("[")
+        cols[name.strip().lower()] = (header, unit.rstrip("] ").strip())
+    if "t" not in cols or "s" not in cols:
+        raise reader.error("the time-history CSV file needs the columns 't [s]' and 'S [m]'",
+                           list(map(str, frame.columns)), *where)
+    values = []
+    for key, kind in (("t", "time"), ("s", "length")):
+        header, unit = cols[key]
+        if not unit:
+            raise reader.error(f"CSV column {header!r} needs a unit in brackets", text, *where)
+        with located(reader.file, *where):
+            factor = si_factor(unit, kind)
+        data = pd.to_numeric(frame[header], errors="coerce").to_numpy(float)
+        if not np.all(np.isfinite(data)):
+            bad = int(np.argmax(~np.isfinite(data)))
+            raise reader.error(f"CSV {path.name}: column {header!r}, data row {bad + 1} is not "
+                               "a finite number", str(frame[header].iloc[bad]), *where)
+        values.append(data * factor)
+    time, s = values
+    steps = np.diff(time)
+    if np.any(steps <= 0):
+        k = int(np.argmax(steps <= 0)) + 1
+        raise reader.error(f"CSV {path.name}: times must be strictly increasing (data row "
+                           f"{k + 1} does not come after row {k})", float(time[k]), *where)
+    with located(reader.file, *where):
+        return TimeHistory(time, s, name=f"CSV {path.name}")
+
+
+def _motion_type(reader, t, i):
+    text = str(t["type"][i]).strip().lower().replace("_", " ").replace("-", " ")
+    text = " ".join(text.split())
+    if text not in MOTION_TYPES:
+        raise reader.error(f"unknown motion type; valid types are {list(MOTION_TYPES)}",
+                           t["type"][i], t.sheet, t.cell("type", i))
+    return text
+
+
+def _motions(reader, histories):
+    t = _require(reader, "LateralMotions")
+    _unique(reader, t, "id")
+
+    def number(column, i):
+        return float(t[column][i]) if t.has(column) else np.nan
+
+    def need(column, i, kind, rule):
+        value = number(column, i)
+        if np.isnan(value):
+            cell = t.cell(column, i) if t.has(column) else "A1"
+            raise reader.error(f"a {kind} needs the column {column!r} filled", None,
+                               t.sheet, cell)
+        if not rule(value):
+            raise reader.error(f"{column!r} of a {kind} must be "
+                               f"{'> 0' if column == 'duration' else 'finite and not 0'}",
+                               _shown(t, column, i), t.sheet, t.cell(column, i))
+        return value
+
+    def unused(columns, i, kind):
+        for column in columns:
+            filled = (t.has(column) and (not np.isnan(t[column][i]) if column not in
+                                         ("then", "history") else bool(t[column][i])))
+            if filled:
+                raise reader.error(f"a {kind} does not use the column {column!r}; leave it "
+                                   "empty", t[column][i], t.sheet, t.cell(column, i))
+
+    def nonzero(v):
+        return v != 0
+
+    def positive(v):
+        return v > 0
+
+    motions = []
+    for i in range(len(t)):
+        kind = _motion_type(reader, t, i)
+        where = (reader.file, t.sheet, t.cell("type", i))
+        if kind == "smooth step":
+            unused(("then", "delta V", "history"), i, kind)
+            duration = need("duration", i, kind, positive)
+            has_acc = not np.isnan(number("acceleration", i))
+            has_amp = not np.isnan(number("amplitude", i))
+            if has_acc == has_amp:
+                raise reader.error("a smooth step needs either 'acceleration' (peak) or "
+                                   "'amplitude', not both nor neither", None, t.sheet,
+                                   t.cell("type", i))
+            with located(*where):
+                if has_acc:
+                    motion = SmoothStep.from_peak_acceleration(
+                        need("acceleration", i, kind, nonzero), duration)
+                else:
+                    motion = SmoothStep(need("amplitude", i, kind, nonzero), duration)
+        elif kind == "constant acceleration":
+            unused(("amplitude", "delta V", "history"), i, kind)
+            rate = need("acceleration", i, kind, nonzero)
+            duration = need("duration", i, kind, positive)
+            then = str(t["then"][i] if t.has("then") else "").strip().lower()
+            if then not in THEN:
+                raise reader.error(f"a constant acceleration needs 'then' = one of "
+                                   f"{list(THEN)}", then,
+                                   t.sheet, t.cell("then", i) if t.has("then") else "A1")
+            with located(*where):
+                motion = ConstantAcceleration(rate, duration, then)
+        elif kind == "velocity step":
+            unused(("acceleration", "duration", "amplitude", "then", "history"), i, kind)
+            with located(*where):
+                motion = VelocityStep(need("delta V", i, kind, nonzero))
+        else:
+            unused(("acceleration", "duration", "amplitude", "then", "delta V"), i, kind)
+            text = str(t["history"][i] if t.has("history") else "").strip()
+            if not text:
+                raise reader.error("a time history needs the column 'history' filled (a "
+                                   "LateralHistory id or a CSV file)", None, t.sheet,
+                                   t.cell("history", i) if t.has("history") else "A1")
+            if text in histories:
+                motion = histories[text]
+            elif text.lower().endswith(".csv"):
+                motion = _csv_history(reader, text, t, i)
+            else:
+                raise reader.error(f"unknown history; LateralHistory ids are "
+                                   f"{sorted(histories)} (or give a .csv file)", text,
+                                   t.sheet, t.cell("history", i))
+        motions.append(motion)
+    return tuple(motions), tuple(t["id"])
