@@ -1,0 +1,260 @@
+"""Lateral-step pendulum driven from the input workbook: round trip, loads link, bad input.
+
+References: the recommended angle read through the workbook equals the one of the Python API
+on the same data (the body summed by hand from the MassItems: parallel-axis theorem for Ixx
+about the CG, e = hub z - CG z for the vertical mast; the motions built from the
+LateralMotions rows); the report's numbers read back equal those of the API run. The loads
+link is checked against closed forms: the hook load's lateral component is Nz W sin(angle)
+and the airframe is symmetric in y, so the Y-shear envelope scales as sin(angle) (reduction
+1 - sin(rec)/sin(30 deg)); at a zero cone angle every hook direction is the mast axis, so the
+envelope equals the vertical hook case alone, run independently. Each bad-input test breaks
+one rule of ``slingloads.io.schema_lateral`` and checks exit code 2, the sheet and cell in
+the message, and that nothing is written.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import openpyxl
+import pandas as pd
+import pytest
+
+from slingloads.analyses.hook_loads import HookLoadOptions
+from slingloads.analyses.lateral import lateral_study
+from slingloads.cli import main
+from slingloads.io.lateral_report import PLOTS, compute, hook_angle_comparison
+from slingloads.io.study_reader import read_study
+from slingloads.models.carrier_motion import (
+    ConstantAcceleration,
+    SmoothStep,
+    TimeHistory,
+    VelocityStep,
+)
+from slingloads.models.pendulum import SlungBody
+from slingloads.units import FOOT, G0, POUND_FORCE
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+STEM = EXAMPLE.stem
+
+
+@pytest.fixture(scope="module")
+def study():
+    return read_study(EXAMPLE, only=["lateral"])
+
+
+@pytest.fixture(scope="module")
+def result(study):
+    return compute(study)
+
+
+@pytest.fixture(scope="module")
+def run_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("lateral")
+    assert main(["lateral", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+    return out
+
+
+def _sheet(path, name, title):
+    """The table under the section ``title`` of a report sheet."""
+    raw = pd.read_excel(path, sheet_name=name, header=None)
+    start = int(np.nonzero(raw[0].astype(str).str.startswith(title).to_numpy())[0][0])
+    head = start + 1
+    while str(raw.iloc[head, 1]) == "nan":  # skip the section's note lines
+        head += 1
+    block = raw.iloc[head + 1:].copy()
+    block.columns = raw.iloc[head]
+    end = block.iloc[:, 0].isna().to_numpy()
+    return block.iloc[: int(np.argmax(end)) if end.any() else len(block)]
+
+
+def test_recommended_angle_workbook_equals_api(study, result):
+    """Same data, two paths: the workbook reader and the API (body summed by hand)."""
+    frame = study.airframe
+    items = frame.mass_items
+    m = float(np.sum(items.mass))
+    cg = items.mass @ items.position / m
+    d = items.position - cg
+    ixx = float(np.sum(items.inertia[:, 0, 0] + items.mass * (d[:, 1] ** 2 + d[:, 2] ** 2)))
+    body = SlungBody(m, ixx, frame.hardpoints.hub[2] - cg[2])
+    rows = pd.read_excel(EXAMPLE, sheet_name="LateralMotions")
+    hist = pd.read_excel(EXAMPLE, sheet_name="LateralHistory")
+    motions = []
+    for _, r in rows.iterrows():
+        if r["type"] == "smooth step":
+            motions.append(SmoothStep.from_peak_acceleration(r["acceleration [g0]"] * G0,
+                                                             r["duration [s]"]))
+        elif r["type"] == "constant acceleration":
+            motions.append(ConstantAcceleration(r["acceleration [g0]"] * G0, r["duration [s]"],
+                                                r["then"]))
+        elif r["type"] == "velocity step":
+            motions.append(VelocityStep(r["delta V [m/s]"]))
+        else:
+            h = hist[hist["history id"] == r["history"]]
+            motions.append(TimeHistory(h["t [s]"].to_numpy(), h["S [m]"].to_numpy()))
+    ropes = [ft * FOOT for ft in (18.0, 60.0, 100.0)]
+    api = lateral_study([body], ropes, motions, margin=1.5, t_end=30.0, step=0.05)
+    got = result.inputs.bodies[0]
+    assert (got.mass, got.roll_inertia, got.cg_below_hub) == pytest.approx(
+        (body.mass, body.roll_inertia, body.cg_below_hub), rel=1e-12)
+    assert result.recommended_angle == pytest.approx(api.recommended_angle, rel=1e-12)
+    assert result.study.critical_index == api.critical_index
+    # the example: the worst motion is the 0.3 g accelerate-then-brake on the 18 ft rope,
+    # and the recommended angle stays below the CS-29.865 30 deg
+    assert result.motion_id(api.critical_index) == "ACC-0.3g-2.5s-STOP"
+    assert np.degrees(result.recommended_angle) < 30.0
+
+
+def test_report_reads_back(run_dir, result):
+    """`slingloads lateral` writes the workbook and PNGs; the numbers read back."""
+    path = run_dir / f"{STEM}-lateral.xlsx"
+    for tag in PLOTS:
+        assert (run_dir / f"{STEM}-lateral-{tag}.png").stat().st_size > 1000
+    sheets = pd.ExcelFile(path).sheet_names
+    assert sheets == ["Summary", "Runs", "Modes", "Histories", "LoadsAtAngle", "Plots"]
+    angle = _sheet(path, "Summary", "Design angle")
+    rec = angle[angle["item"] == "recommended design angle"].iloc[0]
+    assert float(rec["value"]) == pytest.approx(np.degrees(result.recommended_angle),
+                                                rel=1e-12)
+    big = angle[angle["item"] == "largest load angle |theta1 - theta2|"].iloc[0]
+    assert float(big["value"]) == pytest.approx(np.degrees(result.study.max_load_angle),
+                                                rel=1e-12)
+    runs = _sheet(path, "Runs", "Every case")
+    np.testing.assert_allclose(runs["max |theta1 - theta2| [deg]"].astype(float),
+                               np.degrees(result.study.metrics.max_load_angle), rtol=1e-12)
+    loads = _sheet(path, "LoadsAtAngle", "Envelope")
+    c = result.comparison
+    at = f"{np.degrees(c.angle):.4g}"
+    np.testing.assert_allclose(loads["max |Vy| at 30 deg [N]"].astype(float),
+                               c.reference[:, 1], rtol=1e-12)
+    np.testing.assert_allclose(loads[f"max |Vy| at {at} deg [N]"].astype(float),
+                               c.at_angle[:, 1], rtol=1e-12)
+
+
+def test_us_report(tmp_path, result):
+    """--units US: forces in lbf (1 lbf = 0.45359237 kg x 9.80665 m/s^2 exactly)."""
+    assert main(["lateral", str(EXAMPLE), "--out", str(tmp_path), "--units", "US",
+                 "--quiet"]) == 0
+    loads = _sheet(tmp_path / f"{STEM}-lateral.xlsx", "LoadsAtAngle", "Envelope")
+    np.testing.assert_allclose(loads["max |Vy| at 30 deg [lbf]"].astype(float),
+                               result.comparison.reference[:, 1] / POUND_FORCE, rtol=1e-12)
+
+
+def test_y_shear_scales_with_sine_of_the_angle(result):
+    """Not larger at the recommended angle; reduction 1 - sin(rec)/sin(30 deg) (lateral hook
+    component Nz W sin(angle), airframe symmetric in y)."""
+    c = result.comparison
+    vy_ref, vy_at = c.reference[:, 1], c.at_angle[:, 1]
+    assert np.all(vy_at <= vy_ref * (1 + 1e-12))
+    expected = 1.0 - np.sin(c.angle) / np.sin(np.radians(30.0))
+    loaded = vy_ref > 1e-6 * vy_ref.max()
+    np.testing.assert_allclose(c.reduction[loaded, 1], 100.0 * expected, rtol=1e-9)
+    summary = c.summary_frame()
+    assert summary["component"].iloc[0] == "Vy"
+    assert summary["reduction [%]"].iloc[0] == pytest.approx(100.0 * expected, rel=1e-9)
+
+
+def test_zero_angle_equals_the_vertical_hook_case(study, result):
+    """At a zero cone angle the envelope is the mast-axis hook case alone (run on its own)."""
+    loads = result.inputs.loads
+    zero = hook_angle_comparison(loads, 0.0)
+    alone = replace(loads, hook=HookLoadOptions(nz=loads.hook.nz, n_azimuth=0,
+                                                include_axial=True),
+                    envelope=None, fuselage=None, fin=None, parachute=None, listed=(),
+                    previous_envelope=None).run()
+    assert alone.cases["hook"].tolist() == ["AXIAL"]
+    scale = np.abs(alone.loads).max()
+    np.testing.assert_allclose(zero.at_angle, np.abs(alone.loads[0]), rtol=1e-12,
+                               atol=1e-12 * scale)
+    assert np.all(zero.at_angle[:, 1] <= 1e-9 * scale)  # no Y shear without a lateral load
+
+
+# ---------------------------------------------------------------------------- bad input
+def _bad(tmp_path, capsys, edit, sheet, cell, *fragments):
+    """Apply ``edit(book)`` to a copy of the example; expect exit 2 located at ``cell``."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    edit(book)
+    path = tmp_path / "bad.xlsx"
+    book.save(path)
+    out = tmp_path / "out"
+    capsys.readouterr()
+    assert main(["lateral", str(path), "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert f"sheet '{sheet}'" in err and f"cell {cell}" in err, err
+    for fragment in fragments:
+        assert fragment in err, err
+    assert "nothing was written" in err
+    assert not out.exists()
+
+
+def _bodies(mass=2900.0, inertia=900.0, cg=1.07):
+    def edit(book):
+        ws = book.create_sheet("LateralBodies")
+        ws.append(["id", "mass [kg]", "roll inertia [kg m^2]", "CG below hub [m]"])
+        ws.append(["HEAVY", 2900.0, 900.0, 1.07])
+        ws.append(["LIGHT", mass, inertia, cg])
+    return edit
+
+
+@pytest.mark.parametrize("length", [0.0, -18.0])
+def test_bad_rope_length(tmp_path, capsys, length):
+    def edit(book):
+        book["LateralRopes"]["A3"] = length
+    _bad(tmp_path, capsys, edit, "LateralRopes", "A3", "rope length must be > 0")
+
+
+@pytest.mark.parametrize("mass", [0.0, -100.0])
+def test_bad_body_mass(tmp_path, capsys, mass):
+    _bad(tmp_path, capsys, _bodies(mass=mass), "LateralBodies", "B3", "mass must be > 0")
+
+
+@pytest.mark.parametrize("inertia", [0.0, -5.0])
+def test_bad_body_inertia(tmp_path, capsys, inertia):
+    _bad(tmp_path, capsys, _bodies(inertia=inertia), "LateralBodies", "C3",
+         "roll inertia must be > 0")
+
+
+def test_history_not_increasing(tmp_path, capsys):
+    def edit(book):
+        ws = book["LateralHistory"]
+        ws["B5"] = ws["B3"].value  # the 4th sample goes back in time
+    _bad(tmp_path, capsys, edit, "LateralHistory", "B5", "strictly increasing")
+
+
+def test_unknown_motion_type(tmp_path, capsys):
+    def edit(book):
+        book["LateralMotions"]["B2"] = "zigzag"
+    _bad(tmp_path, capsys, edit, "LateralMotions", "B2", "unknown motion type", "zigzag")
+
+
+def test_run_command_includes_lateral(tmp_path):
+    """`slingloads run` on the example writes the lateral report beside the others."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    study_rows = {row[0].value: row[0].row for row in book["Study"].iter_rows(min_row=2)}
+    for name in ("run loads", "run chute sizing"):
+        book["Study"][f"B{study_rows[name]}"] = "no"
+    path = tmp_path / "only-lateral.xlsx"
+    book.save(path)
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out), "--quiet"]) == 0
+    assert sorted(p.name for p in out.iterdir()) == sorted(
+        ["only-lateral-lateral.xlsx"] + [f"only-lateral-lateral-{t}.png" for t in PLOTS])
+
+
+def test_recommended_angle_above_30_deg_is_flagged(tmp_path):
+    """Margin 3 puts the example's recommendation above 30 deg: the report says so and the
+    hook cases at that angle give a larger Y shear (sin(rec) > sin(30 deg))."""
+    from slingloads.io.lateral_report import verdict
+
+    book = openpyxl.load_workbook(EXAMPLE)
+    rows = {row[0].value: row[0].row for row in book["Study"].iter_rows(min_row=2)}
+    book["Study"][f"B{rows['lateral design-angle margin']}"] = 3.0
+    path = tmp_path / "margin3.xlsx"
+    book.save(path)
+    res = compute(read_study(path, only=["lateral"]))
+    assert np.degrees(res.recommended_angle) > 30.0
+    assert res.study.exceeds_regulatory_angle
+    assert "EXCEEDS" in verdict(res)
+    assert res.comparison.summary_frame()["reduction [%]"].iloc[0] < 0
