@@ -238,7 +238,7 @@ def _bodies(reader, study):
     return tuple(bodies), "LateralBodies"
 
 
-def airframe_body(airframe, name="MassItems"):
+def airframe_body(airframe, name="airframe (MassItems)"):
     """The lateral-pendulum body of an airframe: total mass, Ixx about the CG, CG below hub.
 
     The CG distance below the hub is measured along the mast axis:
