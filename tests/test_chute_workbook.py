@@ -197,3 +197,30 @@ def test_gust_after_the_end(tmp_path, capsys):
     """Rule: the gust starts before the end of the simulation."""
     name = "chute sizing gust onset"
     _bad(tmp_path, capsys, {("Study", name): 500}, "Study", name, "before the end")
+
+
+def test_gust_outside_the_tables(tmp_path, capsys):
+    """Rule: no extrapolation: the gust's sideslip atan(v_gust / V) must lie inside the
+    aerodynamic tables. The fin table is cut to +-30 deg (FinAero rows beyond removed, the
+    loads envelope's +-15 deg still inside) and the gust raised to 100 ft/s: at 80 kt
+    (41.16 m/s TAS at sea level) atan(30.48 / 41.16) = 36.5 deg > 30 deg."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    ws = book["FinAero"]
+    keep = [r for r in ws.iter_rows(min_row=2, values_only=True)
+            if r[0] is not None and abs(r[0]) <= 30]
+    ws.delete_rows(2, ws.max_row)
+    for r in keep:
+        ws.append(r)
+    name = "chute sizing gust amplitude"
+    row = _row(book, name)
+    ws_study = book["Study"]
+    ws_study[f"B{row}"] = 100
+    ws_study[f"C{row}"] = "ft/s"
+    path = tmp_path / "narrow.xlsx"
+    book.save(path)
+    out = tmp_path / "out"
+    assert main(["chute", str(path), "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert f"cell B{row}" in err and "outside the aerodynamic tables' range" in err, err
+    assert "36.5" in err
+    assert not out.exists()
