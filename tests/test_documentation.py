@@ -33,6 +33,6 @@ def test_python_examples_run(doc, tmp_path, monkeypatch):
 
 
 def test_readme_api_example_is_short():
-    """The README's API example is at most 15 lines (issue requirement)."""
+    """The README's API example stays short: at most 15 lines."""
     blocks = python_blocks(ROOT / "README.md")
     assert len(blocks[0].strip().splitlines()) <= 15

@@ -105,8 +105,8 @@ def test_study_outputs_layout(point_mass_study):
 
 
 def test_run_case_time_histories(point_mass_study):
-    """Re-running the critical case gives the time-history columns named in the issue, and a
-    static hub load m g along the mast at t = 0 (hanging at rest: statics)."""
+    """Re-running the critical case gives the documented time-history columns, and a static
+    hub load m g along the mast at t = 0 (hanging at rest: statics)."""
     run = point_mass_study.run_case()
     frame = run.to_frame()
     for column in ("t [s]", "theta1 [deg]", "theta2 [deg]", "theta1 - theta2 [deg]",
