@@ -258,3 +258,30 @@ def test_recommended_angle_above_30_deg_is_flagged(tmp_path):
     assert res.study.exceeds_regulatory_angle
     assert "EXCEEDS" in verdict(res)
     assert res.comparison.summary_frame()["reduction [%]"].iloc[0] < 0
+
+
+def test_time_history_from_a_csv_file_equals_the_sheet(tmp_path):
+    """The same carrier displacement samples given as a CSV file beside the workbook (S in
+    feet, converted with 1 ft = 0.3048 m exactly) and on the LateralHistory sheet (in m) give
+    the same peak load angle, swing and tension: two input routes, one motion."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    rows = [r for r in book["LateralHistory"].iter_rows(min_row=2, values_only=True)
+            if r[0] == "REPOSITION"]
+    pd.DataFrame({"t [s]": [r[1] for r in rows],
+                  "S [ft]": [r[2] / 0.3048 for r in rows]}).to_csv(tmp_path / "hist.csv",
+                                                                    index=False)
+    ws = book["LateralMotions"]
+    header = [c.value for c in ws[1]]
+    history_col = header.index("history") + 1
+    for row in ws.iter_rows(min_row=2):
+        if row[0].value == "REPOSITION":
+            row[history_col - 1].value = "hist.csv"
+    path = tmp_path / "csv-history.xlsx"
+    book.save(path)
+    columns = ["max |theta1 - theta2| [deg]", "max |theta1| [deg]", "max T/(m g) [-]"]
+
+    def reposition(source):
+        frame = compute(read_study(source, only=["lateral"])).study.to_frame()
+        return frame[frame["motion"] == "time_history"][columns].to_numpy()
+
+    np.testing.assert_allclose(reposition(path), reposition(EXAMPLE), rtol=1e-9)
