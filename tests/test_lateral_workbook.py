@@ -285,3 +285,28 @@ def test_time_history_from_a_csv_file_equals_the_sheet(tmp_path):
         return frame[frame["motion"] == "time_history"][columns].to_numpy()
 
     np.testing.assert_allclose(reposition(path), reposition(EXAMPLE), rtol=1e-9)
+
+
+def test_elastic_cable_from_the_workbook_tends_to_the_rigid_rope(tmp_path):
+    """'lateral cable model' = elastic with a stiff cable (EA = 2e8 N: static stretch
+    W l / EA under 1 mm on the 18 ft rope) gives the rigid rope's peak load angle and
+    tension (limit case: the elastic model converges to the inextensible one)."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    rows = {row[0].value: row[0].row for row in book["Study"].iter_rows(min_row=2)}
+    ws = book["LateralMotions"]
+    ws.delete_rows(4, ws.max_row)                   # keep two smooth steps
+    book["LateralRopes"].delete_rows(3, 10)         # keep the 18 ft rope
+    book["Study"][f"B{rows['lateral RK4 step']}"] = 0  # automatic step for both models
+    book["Study"][f"B{rows['lateral simulation time']}"] = 8.0  # the peaks come within 5 s
+
+    def peaks(model, ea):
+        book["Study"][f"B{rows['lateral cable model']}"] = model
+        book["Study"][f"B{rows['lateral cable EA']}"] = ea
+        path = tmp_path / f"{model}.xlsx"
+        book.save(path)
+        frame = compute(read_study(path, only=["lateral"])).study.to_frame()
+        return frame[["max |theta1 - theta2| [deg]", "max T/(m g) [-]"]].to_numpy()
+
+    rigid, elastic = peaks("rigid", 0), peaks("elastic", 2e8)
+    assert rigid.shape == (2, 2)
+    np.testing.assert_allclose(elastic, rigid, rtol=5e-3)
