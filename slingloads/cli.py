@@ -19,9 +19,10 @@ EXIT_BAD_INPUT = 2
 
 #: Analyses the ``run`` command may perform, in order:
 #: name -> (subcommand, compute(study) -> result,
-#:          write(result, out_dir, stem, units, study) -> list of written paths)
-#: Every analysis is computed (and every input checked) before anything is written, and each
-#: writer publishes its files atomically.
+#:          write(result, out_dir, stem, units, study), out_dir being the shared
+#:          AtomicOutputs of the run (a writer opens atomic_outputs(out_dir) on it))
+#: Every analysis is computed (and every input checked) before anything is written, and the
+#: files of all the analyses are published together at the end (or none of them).
 ANALYSES = {}
 
 
@@ -68,7 +69,7 @@ def _lazy(module, name):
 
 
 # Each report module has compute(study) -> result, reading study.extra[<analysis name>], and
-# write(result, out_dir, stem, units, study) -> list of written paths (atomic).
+# write(result, out_dir, stem, units, study), publishing through atomic_outputs(out_dir).
 register("lateral", "lateral", _lazy("slingloads.io.lateral_report", "compute"),
          _lazy("slingloads.io.lateral_report", "write"))
 register("chute sizing", "chute", _lazy("slingloads.io.chute_report", "compute"),
@@ -151,6 +152,7 @@ def _selected(args, study):
 
 
 def _analyse(args):
+    from slingloads.io.atomic import atomic_outputs
     from slingloads.io.study_reader import read_study
 
     show = not args.quiet
@@ -169,11 +171,13 @@ def _analyse(args):
             results[name] = ANALYSES[name][1](study)
             bar.update(1)
         stem = Path(args.workbook).stem
-        written = []
-        for name in names:
-            bar.set_description(f"writing {name}")
-            written += ANALYSES[name][2](results[name], args.out, stem, args.units, study)
-            bar.update(1)
+        # one set of outputs for every analysis: all published together, or none
+        with atomic_outputs(args.out, inputs=[args.workbook]) as outputs:
+            for name in names:
+                bar.set_description(f"writing {name}")
+                ANALYSES[name][2](results[name], outputs, stem, args.units, study)
+                bar.update(1)
+        written = outputs.written
         bar.update(1)
         bar.set_description("done")
     for path in written:

@@ -131,3 +131,24 @@ def test_hostile_text_from_the_workbook_stays_text(tmp_path):
              if isinstance(c.value, str) and "HYPERLINK" in c.value]
     assert {c.value for c in cells} == {'=HYPERLINK("x")', '=HYPERLINK("http://x","y")'}
     assert all(c.data_type == "s" for c in cells)
+
+
+def test_run_publishes_all_analyses_or_none(tmp_path, monkeypatch):
+    """If one analysis fails while writing, no analysis's file is published (the loads
+    report, written first, is not left alone in the output directory) and an earlier file at
+    the same path is intact: `run` publishes its outputs as one set."""
+    from slingloads import cli
+
+    def failing_writer(result, out_dir, stem, units, study):
+        raise RuntimeError("disk full")
+
+    name = "chute sizing"
+    subcommand, compute, _ = cli.ANALYSES[name]
+    monkeypatch.setitem(cli.ANALYSES, name, (subcommand, compute, failing_writer))
+    out = tmp_path / "reports"
+    out.mkdir()
+    (out / "example-light-twin-loads.xlsx").write_bytes(b"earlier")
+    with pytest.raises(RuntimeError, match="disk full"):
+        main(["run", str(EXAMPLE), "--out", str(out), "--quiet"])
+    assert [p.name for p in out.iterdir()] == ["example-light-twin-loads.xlsx"]
+    assert (out / "example-light-twin-loads.xlsx").read_bytes() == b"earlier"

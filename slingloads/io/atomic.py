@@ -99,6 +99,10 @@ class AtomicOutputs:
         self._tmp = Path(tempfile.mkdtemp(prefix=TEMP_PREFIX, dir=self.out_dir))
         return self
 
+    def __fspath__(self):
+        """The output directory, so that ``Path(outputs) / name`` is a final path."""
+        return str(self.out_dir)
+
     def path(self, name):
         """Temporary path at which to write the output file ``name``.
 
@@ -164,9 +168,11 @@ def atomic_outputs(out_dir, inputs=()):
 
     Parameters
     ----------
-    out_dir : path-like
+    out_dir : path-like or AtomicOutputs
         Output directory (created if needed). The temporary directory is made inside it so
-        that the final :func:`os.replace` is a rename on one file system.
+        that the final :func:`os.replace` is a rename on one file system. Given an open
+        :class:`AtomicOutputs`, the files join its set and are published with it, so that
+        several writers publish all their files together, or none.
     inputs : iterable of path-like
         Input files that must never be overwritten.
 
@@ -181,5 +187,10 @@ def atomic_outputs(out_dir, inputs=()):
     InputError
         If an output would overwrite an input file.
     """
+    if isinstance(out_dir, AtomicOutputs):
+        # nested: the files join the outer set, which the outer block publishes
+        out_dir.inputs.extend(Path(p) for p in inputs)
+        yield out_dir
+        return
     with AtomicOutputs(out_dir, inputs) as out:
         yield out
