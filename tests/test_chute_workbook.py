@@ -224,3 +224,19 @@ def test_gust_outside_the_tables(tmp_path, capsys):
     assert f"cell B{row}" in err and "outside the aerodynamic tables' range" in err, err
     assert "36.5" in err
     assert not out.exists()
+
+
+def test_us_plots_convert_lengths_and_moments(result):
+    """--units US plots: wake distances in ft (1 ft = 0.3048 m) and yawing moments in
+    1000 lbf ft (1 lbf ft = 4.4482216152605 x 0.3048 N m), converted from the SI results."""
+    from slingloads.io.plots_chute import plot_static_moments, plot_wake
+
+    wake = plot_wake(result.line, "US").axes[0]
+    assert "[ft]" in wake.get_xlabel()
+    np.testing.assert_allclose(wake.lines[0].get_xdata(),
+                               np.asarray(result.line.distance) / 0.3048, rtol=1e-12)
+    moments = plot_static_moments(result.static, "US").axes[0]
+    assert "[1000 lbf ft]" in moments.get_ylabel()
+    first = next(iter(result.static.moments.values()))
+    np.testing.assert_allclose(moments.lines[0].get_ydata(),
+                               first / (1000 * 4.4482216152605 * 0.3048), rtol=1e-12)

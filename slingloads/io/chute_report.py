@@ -310,19 +310,19 @@ def _digest(study):
     return pd.DataFrame({"input": list(d), "entry": [str(v) for v in d.values()]})
 
 
-def _figures(result):
+def _figures(result, units="SI"):
     figs = {"linearisation": plot_yaw_linearisation(result.static.linearisation),
-            "static-moments": plot_static_moments(result.static),
-            "wake": plot_wake(result.line)}
+            "static-moments": plot_static_moments(result.static, units),
+            "wake": plot_wake(result.line, units)}
     if result.sweep is not None:
-        figs["sweep"] = plot_sweep_metrics(result.sweep)
+        figs["sweep"] = plot_sweep_metrics(result.sweep, units)
         runs = result.sweep.runs
         chosen = result.history_runs()
         kinds = [g.kind for g in runs.gusts]
         pick = "finite" if "finite" in kinds else kinds[0]
         figs["histories"] = plot_time_histories(
             runs, [j for j in chosen if runs.gusts[j].kind == pick],
-            title=f"1-DOF yaw response, {pick} gust (paper figure 7)")
+            title=f"1-DOF yaw response, {pick} gust (paper figure 7)", units=units)
     return figs
 
 
@@ -349,7 +349,7 @@ def write(result, out_dir, stem, units, study):
              + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)
-    pngs = {tag: figure_png(fig, _PNG_DPI) for tag, fig in _figures(result).items()}
+    pngs = {tag: figure_png(fig, _PNG_DPI) for tag, fig in _figures(result, units).items()}
     sheets = _sheets(result, units, _digest(study))
     titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
               "static-moments": "Static yawing moments at the neutral area",

@@ -1,13 +1,17 @@
 """Plots of the parachute sizing (object API only: every function returns a new Figure).
 
 No pyplot state is touched, so the functions are safe in scripts, servers and tests. Angles are
-shown in degrees; the results carry SI.
+shown in degrees; the results carry SI, and lengths, areas and moments are drawn in the unit
+system asked for (``"SI"`` or ``"US"``).
 """
 
 from __future__ import annotations
 
 import numpy as np
 from matplotlib.figure import Figure
+
+from slingloads.errors import InputError
+from slingloads.units import si_factor
 
 
 def plot_yaw_linearisation(result):
@@ -42,58 +46,85 @@ def plot_yaw_linearisation(result):
     return fig
 
 
-def plot_static_moments(result):
+#: Units of the sizing plots: length, area, moment (pint strings) and their labels.
+PLOT_UNITS = {"SI": {"length": ("m", "m"), "area": ("m^2", "m^2"), "moment": ("kN*m", "kN m")},
+              "US": {"length": ("ft", "ft"), "area": ("ft^2", "ft^2"),
+                     "moment": ("kilolbf*ft", "1000 lbf ft")}}
+
+
+def _unit(units, kind):
+    """(factor from SI, label) of ``kind`` in the unit system ``units``."""
+    if units not in PLOT_UNITS:
+        raise InputError(f"unknown unit system; valid are {sorted(PLOT_UNITS)}", units)
+    unit, label = PLOT_UNITS[units][kind]
+    return 1.0 / si_factor(unit, kind), label
+
+
+def plot_static_moments(result, units="SI"):
     """Yawing moment of each contribution and their sum against sideslip, at the neutral area.
 
     Parameters
     ----------
     result : NeutralAreaResult
+    units : str
+        ``"SI"`` (kN m, m^2) or ``"US"`` (1000 lbf ft, ft^2).
     """
+    moment, m_label = _unit(units, "moment")
+    area, a_label = _unit(units, "area")
     fig = Figure(figsize=(7, 4.5), layout="constrained")
     ax = fig.subplots()
     beta = np.degrees(result.beta)
     for name, values in result.moments.items():
         style = {"lw": 2.5, "color": "k"} if name == "total" else {}
-        ax.plot(beta, values / 1e3, label=name, **style)
+        ax.plot(beta, values * moment, label=name, **style)
     ax.axhline(0, color="0.5", lw=0.8)
-    ax.set(title=f"Yawing moment about the suspension axis, parachute {result.area:.3g} m^2",
-           xlabel="sideslip beta [deg]", ylabel="N, nose right [kN m]")
+    ax.set(title=f"Yawing moment about the suspension axis, parachute "
+                 f"{result.area * area:.3g} {a_label}",
+           xlabel="sideslip beta [deg]", ylabel=f"N, nose right [{m_label}]")
     ax.grid(True, alpha=0.4)
     ax.legend()
     return fig
 
 
-def plot_wake(result):
+def plot_wake(result, units="SI"):
     """Wake dynamic-pressure ratio against distance, with the target and the chosen line.
 
     Parameters
     ----------
     result : LineLengthResult
+    units : str
+        ``"SI"`` (m) or ``"US"`` (ft).
     """
+    length, label = _unit(units, "length")
     fig = Figure(figsize=(7, 4), layout="constrained")
     ax = fig.subplots()
-    ax.plot(result.distance, result.ratio, label=result.wake_source)
+    ax.plot(np.asarray(result.distance) * length, result.ratio, label=result.wake_source)
     ax.axhline(result.target, color="C1", ls="--", label=f"target {result.target:.3g}")
-    ax.axvline(result.line_length, color="C2", ls=":",
-               label=f"line {result.line_length:.3g} m")
+    ax.axvline(result.line_length * length, color="C2", ls=":",
+               label=f"line {result.line_length * length:.3g} {label}")
     if result.cable is not None:
-        ax.axvline(result.cable.cable_length, color="C3" if not result.cable.ok else "C4",
-                   ls="-.", label=f"carrier cable {result.cable.cable_length:.3g} m")
-    ax.set(xlabel="distance behind the attachment [m]", ylabel="q_wake / q [-]",
+        cable = result.cable.cable_length * length
+        ax.axvline(cable, color="C3" if not result.cable.ok else "C4",
+                   ls="-.", label=f"carrier cable {cable:.3g} {label}")
+    ax.set(xlabel=f"distance behind the attachment [{label}]", ylabel="q_wake / q [-]",
            title="Dynamic pressure in the fuselage wake")
     ax.grid(True, alpha=0.4)
     ax.legend(fontsize=8)
     return fig
 
 
-def plot_sweep_metrics(sweep):
+def plot_sweep_metrics(sweep, units="SI"):
     """Peak sideslip, peak yaw, damping ratios and settling time against area, per gust shape.
 
     Parameters
     ----------
     sweep : SweepResult
+    units : str
+        ``"SI"`` (m^2) or ``"US"`` (ft^2).
     """
+    area, a_label = _unit(units, "area")
     frame = sweep.to_frame()
+    frame["area [m^2]"] = frame["area [m^2]"] * area
     fig = Figure(figsize=(11, 7), layout="constrained")
     axes = fig.subplots(2, 2).ravel()
     columns = [("peak beta [deg]", "peak sideslip [deg]"), ("peak psi [deg]", "peak yaw [deg]"),
@@ -106,8 +137,8 @@ def plot_sweep_metrics(sweep):
             first = frame.drop_duplicates("area [m^2]")
             ax.plot(first["area [m^2]"], first["damping ratio linear [-]"], "k--",
                     label="linearised")
-        ax.set(xlabel="parachute flat-plate area [m^2]", ylabel=label)
-        ax.axvline(sweep.static.area, color="0.5", ls=":", lw=1)
+        ax.set(xlabel=f"parachute flat-plate area [{a_label}]", ylabel=label)
+        ax.axvline(sweep.static.area * area, color="0.5", ls=":", lw=1)
         ax.grid(True, alpha=0.4)
     axes[0].legend(fontsize=8)
     axes[2].legend(fontsize=8)
@@ -115,7 +146,7 @@ def plot_sweep_metrics(sweep):
     return fig
 
 
-def plot_time_histories(runs, indices=None, title=None):
+def plot_time_histories(runs, indices=None, title=None, units="SI"):
     """Sideslip and yaw against time for chosen runs (the paper's figure 7).
 
     Parameters
@@ -124,13 +155,14 @@ def plot_time_histories(runs, indices=None, title=None):
     indices : sequence of int, optional
         Runs to draw (default: all, at most 12).
     """
+    area, a_label = _unit(units, "area")
     runs = getattr(runs, "runs", runs)
     h = runs.histories
     indices = list(range(min(len(runs.areas), 12))) if indices is None else list(indices)
     fig = Figure(figsize=(10, 6), layout="constrained")
     ax_b, ax_p = fig.subplots(2, 1, sharex=True)
     for j in indices:
-        label = f"{runs.areas[j]:.3g} m^2, {runs.gusts[j].kind}"
+        label = f"{runs.areas[j] * area:.3g} {a_label}, {runs.gusts[j].kind}"
         ax_b.plot(h.time, np.degrees(h.beta[j]), label=label)
         ax_p.plot(h.time, np.degrees(h.psi[j]), label=label)
     ax_b.set(ylabel="sideslip beta [deg]", title=title or "1-DOF yaw response to lateral gusts")
