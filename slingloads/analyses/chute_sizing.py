@@ -118,12 +118,12 @@ def yaw_linearisation(model, fit_range=FIT_RANGE):
     fus_cn = fin_cn = fus = fin = None
     grids = []
     if model.fuselage is not None:
-        grid, n_per_q = model._fus[:2]
+        grid, n_per_q = model.fuselage_moment_table
         fus_cn = n_per_q / (model.fuselage.area * model.fuselage.length)
         fus = linear_fit(grid, fus_cn, lo, hi, "fuselage")
         grids.append((grid, fus_cn))
     if model.fin is not None:
-        grid, k, dx = model._fin[:3]
+        (grid, k), dx = model.fin_side_force_table, model.fin_arm[0]
         if dx == 0:
             raise InputError("the fin's centre of pressure lies on the suspension axis", dx)
         fin_cn = -k / model.fin.area  # -eta CY: N_fin / (q S_fin dx)
@@ -134,8 +134,9 @@ def yaw_linearisation(model, fit_range=FIT_RANGE):
     beta = np.unique(np.concatenate([g for g, _ in grids]))
     blo, bhi = model.beta_range()
     beta = beta[(beta >= blo) & (beta <= bhi)]
-    fus_vals = None if fus is None else np.interp(beta, model._fus[0], fus_cn)
-    fin_vals = None if fin is None else np.interp(beta, model._fin[0], fin_cn)
+    fus_vals = None if fus is None else np.interp(beta, model.fuselage_moment_table[0],
+                                                  fus_cn)
+    fin_vals = None if fin is None else np.interp(beta, model.fin_side_force_table[0], fin_cn)
     return LinearisationResult(
         beta, fus_vals, fin_vals, None if fus is None else fus[0],
         None if fus is None else fus[1], None if fin is None else fin[0],
@@ -240,13 +241,13 @@ def linear_yaw(model, area, fit_range=FIT_RANGE):
         f = model.fuselage
         parts["fuselage"] = (q * f.area * f.length * lin.fuselage_slope, 0.0)
     if lin.fin_slope is not None:
-        dx = model._fin[2]
+        dx = model.fin_arm[0]
         k = q * model.fin.area * dx * lin.fin_slope
         c = (0.5 * rho * v * model.fin.area * dx**2 * lin.fin_slope
              if model.fin_rate_damping else 0.0)
         parts["fin"] = (k, c)
     if model.parachute is not None:
-        cd, dx, _ = model._chute
+        cd, dx = model.chute_drag_coefficient, model.chute_arm[0]
         parts["parachute"] = (q * cd * area * dx, 0.5 * rho * v * cd * area * dx**2)
     elif area > 0:
         raise InputError("a parachute area was given but the model has no parachute", area)
@@ -345,12 +346,12 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
     """
     if model.parachute is None:
         raise InputError("neutral-area sizing needs a parachute (its CD and wake ratio)")
-    dx = model._chute[1]
+    dx = model.chute_arm[0]
     if dx <= 0:
         raise InputError("the parachute attachment must lie aft of the suspension axis "
                          "(dx > 0 [m]) to stabilise", float(dx))
     base = linear_yaw(model, 0.0, fit_range)
-    per_area = model.condition.q * model._chute[0] * dx
+    per_area = model.condition.q * model.chute_drag_coefficient * dx
     others = sum(k for name, (k, _) in base.parts.items() if name != "parachute")
     area = -others / per_area
     derivs = {name: k for name, (k, _) in base.parts.items() if name != "parachute"}

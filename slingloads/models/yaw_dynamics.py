@@ -243,6 +243,17 @@ class YawModel:
         return None if self.fin is None else self._fin[2:4]
 
     @property
+    def fuselage_moment_table(self):
+        """(beta grid [rad], yawing moment about the suspension axis per unit q [m^3]) of the
+        fuselage at the trim angle of attack, or None."""
+        return None if self.fuselage is None else self._fus[:2]
+
+    @property
+    def fin_side_force_table(self):
+        """(beta grid [rad], S_fin eta CY [m^2]) of the fin, or None."""
+        return None if self.fin is None else self._fin[:2]
+
+    @property
     def chute_drag_coefficient(self):
         """Wake ratio times canopy CD at alpha 0. [-]"""
         return 0.0 if self.parachute is None else self._chute[0]
