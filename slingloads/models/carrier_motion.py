@@ -36,8 +36,30 @@ from slingloads.errors import InputError
 QUINTIC_PEAK = 10.0 / np.sqrt(3.0)
 
 
+class _Motion:
+    """What every carrier motion offers; a motion defines ``_params()`` and a static
+    ``_kinematics(t, **params)`` (vectorised, used by :class:`MotionBatch`), or overrides
+    :meth:`kinematics`."""
+
+    def kinematics(self, t):
+        """Displacement [m], velocity [m/s] and acceleration [m/s^2] at times ``t`` [s]."""
+        return self._kinematics(np.asarray(t, dtype=float), **self._params())
+
+    def displacement(self, t):
+        """S(t). [m]"""
+        return self.kinematics(t)[0]
+
+    def velocity(self, t):
+        """S'(t). [m/s]"""
+        return self.kinematics(t)[1]
+
+    def acceleration(self, t):
+        """S''(t). [m/s^2]"""
+        return self.kinematics(t)[2]
+
+
 @dataclass(frozen=True)
-class SmoothStep:
+class SmoothStep(_Motion):
     """Smooth lateral displacement step of the hook (quintic, minimum-jerk profile).
 
     .. math::
@@ -107,25 +129,9 @@ class SmoothStep:
                      0.0)
         return s, v, a
 
-    def kinematics(self, t):
-        """Displacement [m], velocity [m/s] and acceleration [m/s^2] at times ``t`` [s]."""
-        return self._kinematics(np.asarray(t, dtype=float), **self._params())
-
-    def displacement(self, t):
-        """S(t). [m]"""
-        return self.kinematics(t)[0]
-
-    def velocity(self, t):
-        """S'(t). [m/s]"""
-        return self.kinematics(t)[1]
-
-    def acceleration(self, t):
-        """S''(t). [m/s^2]"""
-        return self.kinematics(t)[2]
-
 
 @dataclass(frozen=True)
-class ConstantAcceleration:
+class ConstantAcceleration(_Motion):
     """Hook accelerated at a constant rate, then holding its speed or stopping.
 
     ``then="hold"``: :math:`S'' = a` for :math:`0 \\le t < T`, then 0 (speed :math:`aT` kept).
@@ -197,25 +203,9 @@ class ConstantAcceleration:
                - np.where((t >= T) & (t < 2.0 * T), a * stop, 0.0))
         return s, v, acc
 
-    def kinematics(self, t):
-        """Displacement [m], velocity [m/s] and acceleration [m/s^2] at times ``t`` [s]."""
-        return self._kinematics(np.asarray(t, dtype=float), **self._params())
-
-    def displacement(self, t):
-        """S(t). [m]"""
-        return self.kinematics(t)[0]
-
-    def velocity(self, t):
-        """S'(t). [m/s]"""
-        return self.kinematics(t)[1]
-
-    def acceleration(self, t):
-        """S''(t). [m/s^2]"""
-        return self.kinematics(t)[2]
-
 
 @dataclass(frozen=True)
-class VelocityStep:
+class VelocityStep(_Motion):
     """Hook speed jumping from 0 to ``delta_v`` at t = 0: S(t) = dV t for t > 0.
 
     The acceleration is an impulse at t = 0; the models take it as a jump in the initial
@@ -258,14 +248,6 @@ class VelocityStep:
         v = np.where(after, delta_v + 0.0 * t, 0.0)
         return s, v, np.zeros_like(s)
 
-    def kinematics(self, t):
-        """Displacement [m], velocity [m/s] and acceleration [m/s^2] at times ``t`` [s]."""
-        return self._kinematics(np.asarray(t, dtype=float), **self._params())
-
-    def displacement(self, t):
-        """S(t). [m]"""
-        return self.kinematics(t)[0]
-
     def velocity(self, t):
         """S'(t) (dV for t > 0). [m/s]"""
         return self.kinematics(t)[1]
@@ -276,7 +258,7 @@ class VelocityStep:
 
 
 @dataclass(frozen=True, eq=False)
-class TimeHistory:
+class TimeHistory(_Motion):
     """Hook displacement given as samples, interpolated by a natural cubic spline.
 
     Times are taken relative to the first sample, which becomes t = 0 of a run. The hook is
@@ -371,18 +353,6 @@ class TimeHistory:
         v = np.where(t < 0, 0.0, self._d1(inside))
         a = np.where((t < 0) | (t > t_end), 0.0, self._d2(inside))
         return s, v, a
-
-    def displacement(self, t):
-        """S(t). [m]"""
-        return self.kinematics(t)[0]
-
-    def velocity(self, t):
-        """S'(t). [m/s]"""
-        return self.kinematics(t)[1]
-
-    def acceleration(self, t):
-        """S''(t). [m/s^2]"""
-        return self.kinematics(t)[2]
 
 
 #: The motion kinds by name.
