@@ -42,20 +42,10 @@ def _loads_write(result, out_dir, stem, units, study):
     from slingloads.io.loads_report import write_loads_outputs
 
     return write_loads_outputs(result, out_dir, stem, units=units,
-                               inputs_digest=inputs_digest(study),
+                               inputs_digest=study.digest(),
                                hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
                                hull_stations=study.options.get("hull stations"),
                                input_paths=[study.path])
-
-
-def inputs_digest(study):
-    """What a report was computed from: file, SHA-256, which analyses."""
-    from pathlib import Path
-
-    return {"input workbook": Path(study.path).name, "SHA-256": study.sha256,
-            "study": study.name,
-            "analyses": ", ".join(k for k, v in study.run.items() if v),
-            "slingloads version": __version__}
 
 
 register("loads", "loads", _loads_compute, _loads_write)

@@ -403,9 +403,7 @@ def _sheets(result, units, digest):
 
 
 def _digest(study):
-    from slingloads.cli import inputs_digest
-
-    d = inputs_digest(study)
+    d = study.digest()
     return pd.DataFrame({"input": list(d), "entry": [str(v) for v in d.values()]})
 
 

@@ -56,6 +56,17 @@ class WorkbookStudy:
     parameters: dict
     options: dict = field(default_factory=dict)
     extra: dict = field(default_factory=dict)
+
+    def digest(self):
+        """What a report is computed from: input file, SHA-256, study, analyses, version."""
+        from pathlib import Path
+
+        from slingloads import __version__
+
+        return {"input workbook": Path(self.path).name, "SHA-256": self.sha256,
+                "study": self.name,
+                "analyses": ", ".join(k for k, v in self.run.items() if v),
+                "slingloads version": __version__}
     points: dict = field(default_factory=dict)
 
 
