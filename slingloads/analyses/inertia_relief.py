@@ -42,8 +42,8 @@ class RigidBodyAcceleration:
         return (self.linear - np.array([0.0, 0.0, -G0])) / G0
 
 
-def rigid_body_acceleration(mass_items, positions, forces, moments):
-    """Accelerations that balance applied loads (gravity included).
+def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=False):
+    """Accelerations that balance applied loads.
 
     Parameters
     ----------
@@ -51,7 +51,9 @@ def rigid_body_acceleration(mass_items, positions, forces, moments):
     positions : ndarray, shape (p, 3)
         Points of application. [m]
     forces, moments : ndarray, shape (c, p, 3)
-        Applied forces [N] and moments [N m] per case.
+        Applied forces [N] and moments [N m] per case (``moments`` may be None).
+    add_gravity : bool
+        Add the weight of every mass item (when ``forces`` does not already hold it).
 
     Returns
     -------
@@ -59,7 +61,13 @@ def rigid_body_acceleration(mass_items, positions, forces, moments):
     """
     cg = mass_items.cg
     resultant = forces.sum(axis=1)
-    moment_cg = moment_sum(np.asarray(positions) - cg, forces) + moments.sum(axis=1)
+    moment_cg = moment_sum(np.asarray(positions) - cg, forces)
+    if moments is not None:
+        moment_cg += moments.sum(axis=1)
+    if add_gravity:
+        weight = gravity_forces(mass_items)
+        resultant += weight.sum(axis=0)
+        moment_cg += np.cross(mass_items.position - cg, weight).sum(axis=0)
     linear = resultant / mass_items.total_mass
     # pinv: a line of point masses has no inertia about its own axis; a moment about that
     # axis then stays unbalanced and the closure check reports it.

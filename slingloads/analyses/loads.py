@@ -252,7 +252,7 @@ class LoadsStudy:
             frame["beta [deg]"] = np.nan
         generated = frame["description"] == ""
         frame.loc[generated, "description"] = [
-            _describe(r) for r in frame[generated].itertuples(index=False)]
+            _describe(r) for _, r in frame[generated].iterrows()]
         return frame
 
     def _check_listed(self, frame, hooks, aero_ids):
@@ -388,10 +388,14 @@ def _check_previous(frame):
 
 
 def _describe(row):
-    parts = ["hook " + (describe_direction(row[5], row[6]) if row.hook != "NONE" else "off")]
-    if row.aero != "NONE":
-        parts.append(f"aero point {row.aero} (alpha {row[7]:+g} deg, beta {row[8]:+g} deg)")
-    parts.append("parachute on" if row.chute else "parachute off")
+    """Readable text of one row of the case matrix (a pandas Series)."""
+    hook = ("off" if row["hook"] == "NONE"
+            else describe_direction(row["azimuth [deg]"], row["inclination [deg]"]))
+    parts = [f"hook {hook}"]
+    if row["aero"] != "NONE":
+        parts.append(f"aero point {row['aero']} (alpha {row['alpha [deg]']:+g} deg, "
+                     f"beta {row['beta [deg]']:+g} deg)")
+    parts.append("parachute on" if row["chute"] else "parachute off")
     return "; ".join(parts)
 
 

@@ -154,22 +154,11 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
         Internal loads at a cut aft of every load and mass item, which free-free closure
         makes zero. [N, N m]
     """
-    from slingloads.analyses.inertia_relief import (
-        RigidBodyAcceleration,
-        gravity_forces,
-        moment_sum,
-    )
+    from slingloads.analyses.inertia_relief import gravity_forces, rigid_body_acceleration
 
-    cg = mass_items.cg
-    weight = gravity_forces(mass_items).sum(axis=0)
-    resultant = forces.sum(axis=1) + weight
-    moment_cg = moment_sum(np.asarray(positions) - cg, forces)
-    if moments is not None:
-        moment_cg += moments.sum(axis=1)
-    moment_cg += np.cross(mass_items.position - cg, gravity_forces(mass_items)).sum(axis=0)
-    linear = resultant / mass_items.total_mass
-    angular = moment_cg @ np.linalg.pinv(mass_items.inertia_about_cg, hermitian=True).T
-    acceleration = RigidBodyAcceleration(linear, angular)
+    acceleration = rigid_body_acceleration(mass_items, positions, forces, moments,
+                                           add_gravity=True)
+    linear, angular = acceleration.linear, acceleration.angular
     x_end = max(np.max(positions[:, 0]), mass_items.position[:, 0].max(),
                 station_points[:, 0].max()) + 1.0
     cuts = np.vstack([station_points, [x_end, station_points[0, 1], station_points[0, 2]]])
