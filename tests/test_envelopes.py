@@ -127,6 +127,7 @@ def test_convex_hull_of_vertical_line_and_single_point():
 
 
 def test_convex_hull_rejects_unknown_component():
+    """Rule: hull components are among Vx, Vy, Vz, Mx, My, Mz; an unknown one is refused."""
     with pytest.raises(InputError, match="'Vq'"):
         convex_hull(cloud([[0, 0], [1, 0], [0, 1]]), ["a", "b", "c"], 0, ("Vq", "Mz"))
 

@@ -200,6 +200,7 @@ def _bodies(mass=2900.0, inertia=900.0, cg=1.07):
 
 @pytest.mark.parametrize("length", [0.0, -18.0])
 def test_bad_rope_length(tmp_path, capsys, length):
+    """Rule: every rope length of LateralRopes is > 0."""
     def edit(book):
         book["LateralRopes"]["A3"] = length
     _bad(tmp_path, capsys, edit, "LateralRopes", "A3", "rope length must be > 0")
@@ -207,16 +208,19 @@ def test_bad_rope_length(tmp_path, capsys, length):
 
 @pytest.mark.parametrize("mass", [0.0, -100.0])
 def test_bad_body_mass(tmp_path, capsys, mass):
+    """Rule: every body mass of LateralBodies is > 0."""
     _bad(tmp_path, capsys, _bodies(mass=mass), "LateralBodies", "B3", "mass must be > 0")
 
 
 @pytest.mark.parametrize("inertia", [0.0, -5.0])
 def test_bad_body_inertia(tmp_path, capsys, inertia):
+    """Rule: every roll inertia of LateralBodies is > 0."""
     _bad(tmp_path, capsys, _bodies(inertia=inertia), "LateralBodies", "C3",
          "roll inertia must be > 0")
 
 
 def test_history_not_increasing(tmp_path, capsys):
+    """Rule: the times of a LateralHistory are strictly increasing."""
     def edit(book):
         ws = book["LateralHistory"]
         ws["B5"] = ws["B3"].value  # the 4th sample goes back in time
@@ -224,6 +228,7 @@ def test_history_not_increasing(tmp_path, capsys):
 
 
 def test_unknown_motion_type(tmp_path, capsys):
+    """Rule: a motion type is one of the documented kinds."""
     def edit(book):
         book["LateralMotions"]["B2"] = "zigzag"
     _bad(tmp_path, capsys, edit, "LateralMotions", "B2", "unknown motion type", "zigzag")
