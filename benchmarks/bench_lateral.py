@@ -32,9 +32,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from slingloads.analyses.lateral import RunMetrics, default_end_time, sweep
+from slingloads.constants import FOOT, G0
 from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep
 from slingloads.models.pendulum import LateralPendulum, SlungBody
-from slingloads.units import FOOT, G0
 
 BODIES = [
     SlungBody(7439.0, 7632.0, 1.722, "UH-60A"),      # NASA TM 85890

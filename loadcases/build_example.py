@@ -18,10 +18,10 @@ import pandas as pd
 from slingloads.analyses.hook_loads import HookLoadOptions
 from slingloads.analyses.loads import LoadsStudy
 from slingloads.analyses.sfbm import COMPONENTS
+from slingloads.constants import INCH, POUND
 from slingloads.io.template import write_input_workbook
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
-from slingloads.units import INCH, POUND
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))

@@ -22,13 +22,13 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.chute_sizing import line_length, neutral_area
+from slingloads.constants import FOOT, KNOT
 from slingloads.io.chute_reader import yaw_inertia_about_hub
 from slingloads.models.aerodynamics import Fin
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
 from slingloads.models.wake import TabulatedWake
 from slingloads.models.yaw_dynamics import FlightCondition, YawModel
-from slingloads.units import FOOT, KNOT
 
 #: Sizing airspeed of the example (the paper's 80 KIAS). [kt]
 AIRSPEED_KT = 80.0

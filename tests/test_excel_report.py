@@ -3,7 +3,7 @@
 
 Numbers are read back from the written files with openpyxl / pandas and compared with the
 LoadsResult they came from; unit conversions are checked against constants written out here
-independently of slingloads.units: 1 in = 0.0254 m exactly (international inch, 1959) and
+independently of slingloads.io.common.units: 1 in = 0.0254 m exactly (international inch, 1959) and
 1 lbf = 0.45359237 kg x 9.80665 m/s^2 = 4.4482216152605 N exactly.
 """
 

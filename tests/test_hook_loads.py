@@ -17,9 +17,9 @@ from numpy.testing import assert_allclose
 
 from slingloads.analyses.hook_loads import HookLoadOptions, hook_directions
 from slingloads.analyses.loads import LoadsStudy
+from slingloads.constants import G0
 from slingloads.errors import InputError
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
-from slingloads.units import G0
 
 TILTED = np.array([0.2, -0.1, 1.0]) / np.linalg.norm([0.2, -0.1, 1.0])
 

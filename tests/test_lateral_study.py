@@ -16,6 +16,7 @@ from slingloads.analyses.lateral import (
     simulate,
     sweep,
 )
+from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
 from slingloads.io.plots_lateral import plot_max_angle_vs_acceleration, plot_time_histories
 from slingloads.models.carrier_motion import (
@@ -25,7 +26,6 @@ from slingloads.models.carrier_motion import (
     VelocityStep,
 )
 from slingloads.models.pendulum import LateralPendulum, SlungBody
-from slingloads.units import FOOT, G0
 
 UH60 = SlungBody(7439.0, 7632.0, 1.722, "UH-60A")   # NASA TM 85890
 BO105 = SlungBody(2096.0, 1803.0, 0.95, "BO-105C")  # NASA CR-3144

@@ -25,6 +25,7 @@ import pytest
 from slingloads.analyses.hook_loads import HookLoadOptions
 from slingloads.analyses.lateral import lateral_study
 from slingloads.cli import main
+from slingloads.constants import FOOT, G0, POUND_FORCE
 from slingloads.io.lateral_report import PLOTS, compute, hook_angle_comparison
 from slingloads.io.study_reader import read_study
 from slingloads.models.carrier_motion import (
@@ -34,7 +35,6 @@ from slingloads.models.carrier_motion import (
     VelocityStep,
 )
 from slingloads.models.pendulum import SlungBody
-from slingloads.units import FOOT, G0, POUND_FORCE
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem

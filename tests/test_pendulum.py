@@ -18,10 +18,10 @@ import pytest
 from numpy.testing import assert_allclose
 
 from slingloads.analyses.lateral import SolverSettings, simulate, sweep
+from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
 from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep, VelocityStep
 from slingloads.models.pendulum import LateralPendulum, SlungBody, hub_load_airframe_axes
-from slingloads.units import FOOT, G0
 
 UH60 = SlungBody(7439.0, 7632.0, 1.722, "UH-60A")  # NASA TM 85890 mass, Ixx, hub above CG
 TIGHT = SolverSettings(method="DOP853", rtol=1e-10, atol=1e-12, output_step=0.005)

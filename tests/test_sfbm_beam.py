@@ -25,8 +25,8 @@ from numpy.testing import assert_allclose
 
 from slingloads.analyses.hook_loads import HookLoadOptions
 from slingloads.analyses.loads import LoadsStudy
+from slingloads.constants import G0
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
-from slingloads.units import G0
 
 
 def beam_study(weight, length, n, n_masses, extra_stations=()):

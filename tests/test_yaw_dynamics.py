@@ -11,6 +11,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from slingloads.analyses.chute_sizing import LinearYaw, neutral_area, run_yaw
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
@@ -30,7 +31,6 @@ from slingloads.models.yaw_dynamics import (
     integrate_reference,
     integrate_rk4,
 )
-from slingloads.units import KNOT
 
 SPAN = np.radians(60.0)
 

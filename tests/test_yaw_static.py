@@ -5,6 +5,7 @@ import pandas as pd
 import pytest
 
 from slingloads.analyses.chute_sizing import linear_yaw, neutral_area, sizing_sweep
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
@@ -17,7 +18,6 @@ from slingloads.models.sample_aircraft import (
     sample_reference,
 )
 from slingloads.models.yaw_dynamics import FlightCondition, YawModel
-from slingloads.units import KNOT
 
 SPAN = np.radians(60.0)
 

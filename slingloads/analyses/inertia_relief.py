@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from slingloads.units import G0
+from slingloads.constants import G0
 
 
 @dataclass(frozen=True)

@@ -34,6 +34,7 @@ import numpy as np
 import pandas as pd
 from scipy.integrate import solve_ivp
 
+from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
@@ -51,7 +52,6 @@ from slingloads.models.pendulum import (
     rigid_rope_derivatives,
     rope_angle,
 )
-from slingloads.units import FOOT, G0
 
 #: CS-29.865 minimum angle of the hook load from the mast. [rad]
 REGULATORY_ANGLE = np.radians(30.0)

@@ -28,12 +28,12 @@ from slingloads.analyses.envelopes import compare_with_previous, convex_hull, en
 from slingloads.analyses.hook_loads import HookLoadOptions, describe_direction, hook_directions
 from slingloads.analyses.inertia_relief import gravity_forces
 from slingloads.analyses.sfbm import COMPONENTS, free_free_internal_loads
+from slingloads.constants import KNOT
 from slingloads.errors import ClosureError, InputError
 from slingloads.models.aerodynamics import airflow_direction
 from slingloads.models.airframe import Airframe
 from slingloads.models.atmosphere import RHO0, isa_density
 from slingloads.models.load_sharing import rigid_share
-from slingloads.units import KNOT
 
 #: Relative tolerance of the free-free closure check (residual over the load scale).
 CLOSURE_TOLERANCE = 1e-8

@@ -27,8 +27,10 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.chute_sizing import line_length, neutral_area, sizing_sweep
+from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
 from slingloads.io.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.units import unit_label
 from slingloads.io.excel import Section, figure_png, format_by_header, write_workbook
 from slingloads.io.loads_report import convert_columns
 from slingloads.io.plots_chute import (
@@ -40,7 +42,6 @@ from slingloads.io.plots_chute import (
 )
 from slingloads.io.plots_loads import check_units, in_report_units, report_unit
 from slingloads.io.workbook import located
-from slingloads.units import FOOT, POUND_FORCE, unit_label
 
 ANALYSIS = "chute sizing"
 #: PNG files written, by tag: ``<stem>-chute-<tag>.png``.

@@ -20,6 +20,7 @@ import pandas as pd
 
 from slingloads.analyses.lateral import SolverSettings
 from slingloads.errors import InputError
+from slingloads.io.common.units import si_factor
 from slingloads.io.schema import STUDY_SHEET, all_sheets
 from slingloads.io.schema_lateral import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
 from slingloads.io.study_reader import _loads_study
@@ -31,7 +32,6 @@ from slingloads.models.carrier_motion import (
     VelocityStep,
 )
 from slingloads.models.pendulum import SlungBody
-from slingloads.units import si_factor
 
 ANALYSIS = "lateral"
 _SPEC = {s.name: s for s in SHEETS}

@@ -29,8 +29,10 @@ import pandas as pd
 
 from slingloads.analyses.lateral import REGULATORY_ANGLE, lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
+from slingloads.constants import FOOT
 from slingloads.errors import InputError
 from slingloads.io.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.units import unit_label
 from slingloads.io.excel import Section, figure_png, format_by_header, write_workbook
 from slingloads.io.loads_report import convert_columns
 from slingloads.io.plots_lateral import (
@@ -40,7 +42,6 @@ from slingloads.io.plots_lateral import (
 )
 from slingloads.io.plots_loads import check_units, in_report_units, labelled, report_unit
 from slingloads.io.workbook import located
-from slingloads.units import FOOT, unit_label
 
 ANALYSIS = "lateral"
 #: PNG files written, by tag: ``<stem>-lateral-<tag>.png``.

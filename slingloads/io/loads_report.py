@@ -34,6 +34,7 @@ from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
 from slingloads.io.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.units import unit_label
 from slingloads.io.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
@@ -52,7 +53,6 @@ from slingloads.io.plots_loads import (
     plot_sfbm_grid,
     report_unit,
 )
-from slingloads.units import unit_label
 
 #: Components drawn on their own PNG (the paper's figures 19 and 20); all six are on the grid.
 PNG_COMPONENTS = ("Vx", "Vy")

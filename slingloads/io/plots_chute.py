@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.errors import InputError
-from slingloads.units import si_factor
+from slingloads.io.common.units import si_factor
 
 
 def plot_yaw_linearisation(result):

@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.analyses.lateral import REGULATORY_ANGLE
-from slingloads.units import FOOT, G0
+from slingloads.constants import FOOT, G0
 
 _REG_STYLE = {"color": "tab:red", "linestyle": "--", "linewidth": 1.0}
 

@@ -3,9 +3,9 @@ the 2-D envelopes ("potato" plots) of two components at a station.
 
 Every function builds and returns a :class:`matplotlib.figure.Figure` through the object API
 (no pyplot, no global state, the Agg renderer when saved), so plots can be drawn from threads
-and in batch runs. Values are SI inside and converted to the report unit system (``"SI"`` or
-``"US"``, see :data:`slingloads.units.REPORT_UNITS`) when drawn; axis labels carry the unit
-(``x [in]``, ``Vy [lbf]``, ``Mz [lbf in]``).
+and in batch runs. Values are SI inside and converted to the report unit system (``"SI"``
+or ``"US"``, see :data:`slingloads.io.common.units.REPORT_UNITS`) when drawn; axis labels
+carry the unit (``x [in]``, ``Vy [lbf]``, ``Mz [lbf in]``).
 
 The sign convention of the internal loads is that of :mod:`slingloads.analyses.sfbm`: the
 load that the part aft of the cut exerts on the part forward of it.
@@ -20,7 +20,7 @@ from matplotlib.figure import Figure
 from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
-from slingloads.units import REPORT_UNITS, from_si, unit_label
+from slingloads.io.common.units import REPORT_UNITS, from_si, unit_label
 
 #: Plain-language names of the components, as in the paper's figures ("X shear").
 COMPONENT_TITLES = {

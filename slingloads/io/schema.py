@@ -26,7 +26,8 @@ class Column:
     name : str
         Header text without the unit (matched case-insensitively).
     kind : str
-        A quantity kind of :data:`slingloads.units.SI_UNITS`, or ``text``, ``flag``, ``integer``.
+        A quantity kind of :data:`slingloads.io.common.units.SI_UNITS`, or ``text``,
+        ``flag``, ``integer``.
     unit : str
         Unit written in the template header (the user may change it to any unit of the kind).
     required : bool

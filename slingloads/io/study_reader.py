@@ -13,13 +13,13 @@ from slingloads.analyses.hook_loads import HookLoadOptions
 from slingloads.analyses.loads import AeroEnvelope, FlightCondition, ListedCase, LoadsStudy
 from slingloads.analyses.sfbm import COMPONENTS
 from slingloads.errors import InputError
+from slingloads.io.common.units import si_factor
 from slingloads.io.schema import STUDY_SHEET, all_parameters, all_sheets
 from slingloads.io.workbook import WorkbookReader, located
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems, check_inside
 from slingloads.models.parachute import Parachute
-from slingloads.units import si_factor
 
 HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference")
 

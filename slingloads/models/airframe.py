@@ -11,8 +11,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from slingloads.constants import G0
 from slingloads.errors import InputError
-from slingloads.units import G0
 
 
 def _ids(ids, what):

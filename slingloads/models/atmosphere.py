@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from slingloads.constants import G0
 from slingloads.errors import InputError
-from slingloads.units import G0
 
 #: Sea-level temperature [K], pressure [Pa], density [kg/m^3].
 T0, P0, RHO0 = 288.15, 101325.0, 1.225

@@ -19,8 +19,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.checks import finite, positive
+from slingloads.constants import FOOT
 from slingloads.errors import InputError
-from slingloads.units import FOOT
 
 #: CS 29.341 gust velocity, 30 ft/s. [m/s]
 GUST_VELOCITY = 30.0 * FOOT

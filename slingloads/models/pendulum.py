@@ -42,8 +42,8 @@ from scipy.linalg import eigh
 
 from slingloads.checks import non_negative as _non_negative
 from slingloads.checks import positive as _positive
+from slingloads.constants import G0
 from slingloads.errors import InputError
-from slingloads.units import G0
 
 #: Names of the states of each cable model, in order.
 RIGID_STATES = ("theta1", "theta2", "theta1_dot", "theta2_dot")

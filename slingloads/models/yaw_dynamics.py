@@ -56,12 +56,12 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
 from slingloads.models.atmosphere import dynamic_pressure_eas, isa_density, true_airspeed
 from slingloads.models.parachute import Parachute
-from slingloads.units import KNOT
 
 #: The paper's 1-DOF condition: 80 KIAS at ISA sea level.
 DEFAULT_SPEED = 80.0 * KNOT

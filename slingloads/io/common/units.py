@@ -4,7 +4,9 @@ Inside slingloads every quantity is SI (m, kg, s, N, rad). Units appear only whe
 enter (workbook headers such as ``x [in]``) and where they leave (reports). Unit strings are
 parsed by `pint <https://pint.readthedocs.io>`_, so any spelling pint knows is accepted
 (``in``, ``inch``, ``ft``, ``lb``, ``lbf*in``, ``slug*ft^2``, ``kt``...), and each column
-checks the dimension of its unit (a length column refuses ``kg``).
+checks the dimension of its unit (a length column refuses ``kg``). The physical constants
+and exact unit factors the physics uses (``G0``, ``KNOT``, ``FOOT``...) are in
+:mod:`slingloads.constants`, which needs no unit library.
 """
 
 from __future__ import annotations
@@ -15,19 +17,6 @@ import numpy as np
 import pint
 
 from slingloads.errors import UnitError
-
-#: Standard gravity [m/s^2] (ICAO Doc 7488/3).
-G0 = 9.80665
-#: One knot [m/s].
-KNOT = 1852.0 / 3600.0
-#: One foot [m].
-FOOT = 0.3048
-#: One inch [m].
-INCH = 0.0254
-#: One pound mass [kg].
-POUND = 0.45359237
-#: One pound force [N].
-POUND_FORCE = POUND * G0
 
 _REGISTRY = pint.UnitRegistry()
 
