@@ -14,9 +14,9 @@ from importlib import import_module
 __version__ = "0.1.0"
 
 _EXPORTS = {
-    "read_study": "slingloads.io.study_reader",
+    "read_study": "slingloads.io.study",
     "write_input_workbook": "slingloads.io.template",
-    "write_loads_outputs": "slingloads.io.loads_report",
+    "write_loads_outputs": "slingloads.io.loads.report",
     "MassItems": "slingloads.models.airframe",
     "Hardpoints": "slingloads.models.airframe",
     "Airframe": "slingloads.models.airframe",

@@ -39,7 +39,7 @@ def _loads_compute(study):
 
 
 def _loads_write(result, out_dir, stem, units, study):
-    from slingloads.io.loads_report import write_loads_outputs
+    from slingloads.io.loads.report import write_loads_outputs
 
     return write_loads_outputs(result, out_dir, stem, units=units,
                                inputs_digest=study.digest(),
@@ -60,10 +60,10 @@ def _lazy(module, name):
 
 # Each report module has compute(study) -> result, reading study.extra[<analysis name>], and
 # write(result, out_dir, stem, units, study), publishing through atomic_outputs(out_dir).
-register("lateral", "lateral", _lazy("slingloads.io.lateral_report", "compute"),
-         _lazy("slingloads.io.lateral_report", "write"))
-register("chute sizing", "chute", _lazy("slingloads.io.chute_report", "compute"),
-         _lazy("slingloads.io.chute_report", "write"))
+register("lateral", "lateral", _lazy("slingloads.io.lateral.report", "compute"),
+         _lazy("slingloads.io.lateral.report", "write"))
+register("chute sizing", "chute", _lazy("slingloads.io.chute.report", "compute"),
+         _lazy("slingloads.io.chute.report", "write"))
 
 
 def _parser():
@@ -142,8 +142,8 @@ def _selected(args, study):
 
 
 def _analyse(args):
-    from slingloads.io.atomic import atomic_outputs
-    from slingloads.io.study_reader import read_study
+    from slingloads.io.common.atomic import atomic_outputs
+    from slingloads.io.study import read_study
 
     show = not args.quiet
     with tqdm(total=3, desc="reading", disable=not show, unit="step",

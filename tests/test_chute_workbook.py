@@ -4,7 +4,7 @@ References: the neutral area read through the workbook equals the one computed w
 Python API from the same data (the generic HC1 tables of ``slingloads/data`` placed at the
 workbook's hardpoints, and a yaw inertia summed by hand about the hub axis, parallel-axis
 theorem); the report's numbers read back equal those of the API run; each bad-input test
-breaks one rule written in ``slingloads.io.schema_chute`` and checks exit code 2, the sheet
+breaks one rule written in ``slingloads.io.chute.schema`` and checks exit code 2, the sheet
 and cell in the message, and that nothing is written.
 """
 
@@ -20,8 +20,8 @@ import pytest
 from slingloads.analyses.chute_sizing import neutral_area
 from slingloads.cli import main
 from slingloads.constants import FOOT, KNOT
-from slingloads.io.chute_report import PLOTS, compute
-from slingloads.io.study_reader import read_study
+from slingloads.io.chute.report import PLOTS, compute
+from slingloads.io.study import read_study
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
@@ -229,7 +229,7 @@ def test_gust_outside_the_tables(tmp_path, capsys):
 def test_us_plots_convert_lengths_and_moments(result):
     """--units US plots: wake distances in ft (1 ft = 0.3048 m) and yawing moments in
     1000 lbf ft (1 lbf ft = 4.4482216152605 x 0.3048 N m), converted from the SI results."""
-    from slingloads.io.plots_chute import plot_static_moments, plot_wake
+    from slingloads.io.chute.plots import plot_static_moments, plot_wake
 
     wake = plot_wake(result.line, "US").axes[0]
     assert "[ft]" in wake.get_xlabel()

@@ -17,8 +17,8 @@ import pandas as pd
 import pytest
 
 from slingloads.cli import main
-from slingloads.io.study_reader import read_study
-from slingloads.io.workbook import WorkbookReader
+from slingloads.io.common.workbook import WorkbookReader
+from slingloads.io.study import read_study
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 

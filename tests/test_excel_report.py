@@ -1,5 +1,5 @@
-"""Tests of the loads report writer (slingloads.io.loads_report), the generic Excel writer
-(slingloads.io.excel) and atomic output writing (slingloads.io.atomic).
+"""Tests of the loads report writer (slingloads.io.loads.report), the generic Excel writer
+(slingloads.io.common.excel) and atomic output writing (slingloads.io.common.atomic).
 
 Numbers are read back from the written files with openpyxl / pandas and compared with the
 LoadsResult they came from; unit conversions are checked against constants written out here
@@ -22,10 +22,10 @@ from openpyxl import load_workbook
 
 from slingloads.analyses.loads import ListedCase, LoadsStudy
 from slingloads.errors import InputError
-from slingloads.io import loads_report
-from slingloads.io.atomic import TEMP_PREFIX, atomic_outputs
-from slingloads.io.excel import Highlight, Section, write_workbook
-from slingloads.io.loads_report import SFBM_CSV_COLUMNS, write_loads_outputs
+from slingloads.io.common.atomic import TEMP_PREFIX, atomic_outputs
+from slingloads.io.common.excel import Highlight, Section, write_workbook
+from slingloads.io.loads import report as loads_report
+from slingloads.io.loads.report import SFBM_CSV_COLUMNS, write_loads_outputs
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
 
 INCH = 0.0254  # m, exact

@@ -18,7 +18,7 @@ import pytest
 
 from slingloads.cli import main
 from slingloads.errors import InputError
-from slingloads.io.study_reader import read_study
+from slingloads.io.study import read_study
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 

@@ -18,7 +18,7 @@ from slingloads.analyses.lateral import (
 )
 from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
-from slingloads.io.plots_lateral import plot_max_angle_vs_acceleration, plot_time_histories
+from slingloads.io.lateral.plots import plot_max_angle_vs_acceleration, plot_time_histories
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
     SmoothStep,

@@ -8,7 +8,7 @@ link is checked against closed forms: the hook load's lateral component is Nz W 
 and the airframe is symmetric in y, so the Y-shear envelope scales as sin(angle) (reduction
 1 - sin(rec)/sin(30 deg)); at a zero cone angle every hook direction is the mast axis, so the
 envelope equals the vertical hook case alone, run independently. Each bad-input test breaks
-one rule of ``slingloads.io.schema_lateral`` and checks exit code 2, the sheet and cell in
+one rule of ``slingloads.io.lateral.schema`` and checks exit code 2, the sheet and cell in
 the message, and that nothing is written.
 """
 
@@ -26,8 +26,8 @@ from slingloads.analyses.hook_loads import HookLoadOptions
 from slingloads.analyses.lateral import lateral_study
 from slingloads.cli import main
 from slingloads.constants import FOOT, G0, POUND_FORCE
-from slingloads.io.lateral_report import PLOTS, compute, hook_angle_comparison
-from slingloads.io.study_reader import read_study
+from slingloads.io.lateral.report import PLOTS, compute, hook_angle_comparison
+from slingloads.io.study import read_study
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
     SmoothStep,
@@ -251,7 +251,7 @@ def test_run_command_includes_lateral(tmp_path):
 def test_recommended_angle_above_30_deg_is_flagged(tmp_path):
     """Margin 3 puts the example's recommendation above 30 deg: the report says so and the
     hook cases at that angle give a larger Y shear (sin(rec) > sin(30 deg))."""
-    from slingloads.io.lateral_report import verdict
+    from slingloads.io.lateral.report import verdict
 
     book = openpyxl.load_workbook(EXAMPLE)
     rows = {row[0].value: row[0].row for row in book["Study"].iter_rows(min_row=2)}

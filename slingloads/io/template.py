@@ -7,8 +7,8 @@ from openpyxl import Workbook
 from openpyxl.comments import Comment
 from openpyxl.styles import Alignment, Font, PatternFill
 
-from slingloads.io.atomic import atomic_outputs
-from slingloads.io.schema import FLAG, INTEGER, SECTIONS, STUDY_SHEET, TEXT
+from slingloads.io.common.atomic import atomic_outputs
+from slingloads.io.common.schema import FLAG, INTEGER, SECTIONS, STUDY_SHEET, TEXT
 
 _BOLD = Font(bold=True)
 _HEAD_FILL = PatternFill("solid", fgColor="DDEBF7")
@@ -32,7 +32,7 @@ def _text(cell, value):
 
 
 def write_input_workbook(path, parameters=None, tables=None, notes=None, inputs=()):
-    """Write an input workbook following :mod:`slingloads.io.schema`.
+    """Write an input workbook following :mod:`slingloads.io.common.schema`.
 
     Parameters
     ----------

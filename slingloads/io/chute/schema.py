@@ -1,4 +1,4 @@
-"""Study-sheet parameters and sheets of the parachute sizing (see :mod:`slingloads.io.schema`).
+"""Study-sheet parameters and sheets of the parachute sizing (types in ``io.common.schema``).
 
 The sizing also reads the loads core's sheets and parameters: ``FuselageAero``, ``FinAero``,
 ``ParachuteCD``, the ``Hardpoints`` of kind ``hub``, ``chute``, ``fin_cp`` and
@@ -9,7 +9,7 @@ ratio' and 'parachute line length'. Method and signs: ``docs/parachute-sizing.md
 
 from __future__ import annotations
 
-from slingloads.io.schema import INTEGER, TEXT, Column, Parameter, Section, TableSheet
+from slingloads.io.common.schema import INTEGER, TEXT, Column, Parameter, Section, TableSheet
 
 #: Valid values of 'chute sizing wake source'.
 WAKE_SOURCES = ("model", "table")

@@ -1,7 +1,7 @@
 """Build the lateral-step pendulum inputs from an input workbook (``run lateral = yes``).
 
-Called by :func:`slingloads.io.study_reader.read_study` as ``read(reader, params, study)``.
-It reads the Study parameters of :mod:`slingloads.io.schema_lateral`, the sheets
+Called by :func:`slingloads.io.study.read_study` as ``read(reader, params, study)``.
+It reads the Study parameters of :mod:`slingloads.io.lateral.schema`, the sheets
 ``LateralMotions``, ``LateralRopes``, and the optional ``LateralHistory`` (or CSV files named
 in ``LateralMotions``) and ``LateralBodies``; without ``LateralBodies`` the one body comes from
 the ``MassItems`` and the ``Hardpoints`` hub. For the link to the loads it keeps the loads
@@ -20,11 +20,11 @@ import pandas as pd
 
 from slingloads.analyses.lateral import SolverSettings
 from slingloads.errors import InputError
+from slingloads.io.common.schema import STUDY_SHEET, all_sheets
 from slingloads.io.common.units import si_factor
-from slingloads.io.schema import STUDY_SHEET, all_sheets
-from slingloads.io.schema_lateral import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
-from slingloads.io.study_reader import _loads_study
-from slingloads.io.workbook import located
+from slingloads.io.common.workbook import located
+from slingloads.io.lateral.schema import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
+from slingloads.io.study import _loads_study
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
     SmoothStep,
@@ -138,7 +138,7 @@ def read(reader, params, study):
     Parameters
     ----------
     reader : WorkbookReader
-    params : slingloads.io.study_reader._Params
+    params : slingloads.io.study._Params
         Study-sheet parameters (SI, with defaults).
     study : WorkbookStudy
         The airframe (mass items, hub) and the loads study if it was built.

@@ -1,7 +1,7 @@
 """The loads report: an Excel workbook, CSV tables and PNG plots of a loads analysis.
 
 :func:`write_loads_outputs` writes, all at once or not at all
-(:mod:`slingloads.io.atomic`):
+(:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-loads.xlsx``: sheets *Summary* (input digest, study settings, units, closure check,
   governing cases), *LoadCases*, *Envelope* (critical case and correlated loads),
@@ -33,9 +33,8 @@ from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
-from slingloads.io.atomic import atomic_outputs, check_not_input
-from slingloads.io.common.units import unit_label
-from slingloads.io.excel import (
+from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
     Section,
@@ -43,7 +42,8 @@ from slingloads.io.excel import (
     format_by_header,
     write_workbook,
 )
-from slingloads.io.plots_loads import (
+from slingloads.io.common.units import unit_label
+from slingloads.io.loads.plots import (
     COMPONENT_TAGS,
     check_units,
     in_report_units,

@@ -1,4 +1,4 @@
-"""Build the analyses' inputs from an input workbook (see :mod:`slingloads.io.schema`)."""
+"""Build the analyses' inputs from an input workbook (see :mod:`slingloads.io.common.schema`)."""
 
 from __future__ import annotations
 
@@ -13,9 +13,9 @@ from slingloads.analyses.hook_loads import HookLoadOptions
 from slingloads.analyses.loads import AeroEnvelope, FlightCondition, ListedCase, LoadsStudy
 from slingloads.analyses.sfbm import COMPONENTS
 from slingloads.errors import InputError
+from slingloads.io.common.schema import STUDY_SHEET, all_parameters, all_sheets
 from slingloads.io.common.units import si_factor
-from slingloads.io.schema import STUDY_SHEET, all_parameters, all_sheets
-from slingloads.io.workbook import WorkbookReader, located
+from slingloads.io.common.workbook import WorkbookReader, located
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems, check_inside
@@ -155,8 +155,8 @@ def read_study(path, only=None):
 #: Modules that build the other analyses' inputs, by analysis name; each has a function
 #: ``read(reader, params, study) -> inputs`` (``params(name)`` gives a Study-sheet parameter
 #: in SI with its default; ``params.cell(name)`` its cell; ``reader.table(spec)`` a table).
-EXTRA_READERS = {"lateral": "slingloads.io.lateral_reader",
-                 "chute sizing": "slingloads.io.chute_reader"}
+EXTRA_READERS = {"lateral": "slingloads.io.lateral.reader",
+                 "chute sizing": "slingloads.io.chute.reader"}
 
 
 def _airframe(reader, params, sheets):

@@ -1,7 +1,7 @@
 """Build the parachute-sizing inputs from an input workbook (``run chute sizing = yes``).
 
-Called by :func:`slingloads.io.study_reader.read_study` as ``read(reader, params, study)``.
-It reads the Study parameters of :mod:`slingloads.io.schema_chute`, the optional ``ChuteWake``
+Called by :func:`slingloads.io.study.read_study` as ``read(reader, params, study)``.
+It reads the Study parameters of :mod:`slingloads.io.chute.schema`, the optional ``ChuteWake``
 sheet, and the loads core's aerodynamic sheets (``FuselageAero``, ``FinAero``,
 ``ParachuteCD``) and hardpoints, so that the sizing also runs on its own
 (``slingloads chute``). Every value is SI after reading; every bad value raises
@@ -15,10 +15,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.errors import InputError
-from slingloads.io.schema import STUDY_SHEET
-from slingloads.io.schema_chute import INERTIA_SOURCES, INTEGRATORS, SHEETS, WAKE_SOURCES
-from slingloads.io.study_reader import read_fin_aero, read_fuselage_aero, read_parachute_cd
-from slingloads.io.workbook import located
+from slingloads.io.chute.schema import INERTIA_SOURCES, INTEGRATORS, SHEETS, WAKE_SOURCES
+from slingloads.io.common.schema import STUDY_SHEET
+from slingloads.io.common.workbook import located
+from slingloads.io.study import read_fin_aero, read_fuselage_aero, read_parachute_cd
 from slingloads.models.gusts import GUST_KINDS, make_gust
 from slingloads.models.parachute import Parachute
 from slingloads.models.wake import BluffBodyWake, TabulatedWake
@@ -138,7 +138,7 @@ def read(reader, params, study):
     Parameters
     ----------
     reader : WorkbookReader
-    params : slingloads.io.study_reader._Params
+    params : slingloads.io.study._Params
         Study-sheet parameters (SI, with defaults).
     study : WorkbookStudy
         The airframe and the hardpoints by kind already read.

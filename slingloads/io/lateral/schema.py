@@ -1,4 +1,4 @@
-"""Study-sheet parameters and sheets of the lateral-step pendulum (see :mod:`slingloads.io.schema`).
+"""Study-sheet parameters and sheets of the lateral-step pendulum (types in ``io.common.schema``).
 
 The study sweeps every carrier motion of ``LateralMotions`` x every rope length of
 ``LateralRopes`` x every body of ``LateralBodies`` (default: one body built from the
@@ -10,7 +10,7 @@ CS-29.865 hook cases at the recommended angle. Method, signs and limits:
 
 from __future__ import annotations
 
-from slingloads.io.schema import TEXT, Column, Parameter, Section, TableSheet
+from slingloads.io.common.schema import TEXT, Column, Parameter, Section, TableSheet
 
 #: Valid values of 'lateral cable model'.
 CABLE_MODELS = ("rigid", "elastic")

@@ -21,8 +21,15 @@ from openpyxl import load_workbook
 from openpyxl.utils import get_column_letter
 
 from slingloads.errors import InputError
+from slingloads.io.common.schema import (
+    FLAG,
+    INTEGER,
+    NOTE_COLUMNS,
+    STUDY_SHEET,
+    TEXT,
+    all_parameters,
+)
 from slingloads.io.common.units import si_factor
-from slingloads.io.schema import FLAG, INTEGER, NOTE_COLUMNS, STUDY_SHEET, TEXT, all_parameters
 
 #: Largest uncompressed workbook content accepted. [bytes]
 MAX_UNCOMPRESSED = 256 * 1024**2

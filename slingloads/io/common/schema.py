@@ -1,6 +1,6 @@
 """What an input workbook contains: its sheets, columns and parameters, in one place.
 
-The reader (:mod:`slingloads.io.workbook`), the study builder (:mod:`slingloads.io.study_reader`)
+The reader (:mod:`slingloads.io.common.workbook`), the study builder (:mod:`slingloads.io.study`)
 and the blank template (:mod:`slingloads.io.template`) all follow these definitions, so the
 template's explanations are always those the reader enforces.
 
@@ -222,7 +222,8 @@ SECTIONS = [GENERAL, LOADS]
 
 def _other_sections():
     """Sections of the other analyses, defined in their own modules."""
-    from slingloads.io import schema_chute, schema_lateral
+    from slingloads.io.chute import schema as schema_chute
+    from slingloads.io.lateral import schema as schema_lateral
 
     return [schema_lateral.SECTION, schema_chute.SECTION]
 

@@ -1,10 +1,10 @@
 """The parachute-sizing report: an Excel workbook and PNG plots (paper sections 3.2-4.2).
 
-:func:`compute` runs the sizing on the inputs read by :mod:`slingloads.io.chute_reader`:
+:func:`compute` runs the sizing on the inputs read by :mod:`slingloads.io.chute.reader`:
 linearisation of the fuselage and fin yawing moments, neutral static area with its breakdown,
 wake ratio and line length with the carrier-cable check, and the 1-DOF sweep of the parachute
 area over the gust shapes. :func:`write` publishes, all at once or not at all
-(:mod:`slingloads.io.atomic`):
+(:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-chute.xlsx``: sheets *Summary* (inputs digest, condition, neutral area and its
   breakdown, recommended area, line length and cable check), *Linearisation*,
@@ -29,19 +29,19 @@ import pandas as pd
 from slingloads.analyses.chute_sizing import line_length, neutral_area, sizing_sweep
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
-from slingloads.io.atomic import atomic_outputs, check_not_input
-from slingloads.io.common.units import unit_label
-from slingloads.io.excel import Section, figure_png, format_by_header, write_workbook
-from slingloads.io.loads_report import convert_columns
-from slingloads.io.plots_chute import (
+from slingloads.io.chute.plots import (
     plot_static_moments,
     plot_sweep_metrics,
     plot_time_histories,
     plot_wake,
     plot_yaw_linearisation,
 )
-from slingloads.io.plots_loads import check_units, in_report_units, report_unit
-from slingloads.io.workbook import located
+from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.common.units import unit_label
+from slingloads.io.common.workbook import located
+from slingloads.io.loads.plots import check_units, in_report_units, report_unit
+from slingloads.io.loads.report import convert_columns
 
 ANALYSIS = "chute sizing"
 #: PNG files written, by tag: ``<stem>-chute-<tag>.png``.

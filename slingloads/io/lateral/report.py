@@ -1,11 +1,11 @@
 """The lateral-step pendulum report: design angle, its effect on the hook loads, plots.
 
-:func:`compute` runs the study read by :mod:`slingloads.io.lateral_reader` (every motion x
+:func:`compute` runs the study read by :mod:`slingloads.io.lateral.reader` (every motion x
 rope length x body in one vectorised RK4 sweep), re-runs the critical case with
 :func:`scipy.integrate.solve_ivp` for its time histories, computes the natural modes about the
 hanging equilibrium, and, the link to the loads, re-runs the CS-29.865 hook cases at the
 recommended angle and at the 30 deg of CS-29.865 (:func:`hook_angle_comparison`).
-:func:`write` publishes, all at once or not at all (:mod:`slingloads.io.atomic`):
+:func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-lateral.xlsx``: sheets *Summary* (inputs digest, largest load angle and the case
   that produced it, margin, recommended angle beside the 30 deg of CS-29.865, solve_ivp check
@@ -31,17 +31,17 @@ from slingloads.analyses.lateral import REGULATORY_ANGLE, lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
 from slingloads.errors import InputError
-from slingloads.io.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
 from slingloads.io.common.units import unit_label
-from slingloads.io.excel import Section, figure_png, format_by_header, write_workbook
-from slingloads.io.loads_report import convert_columns
-from slingloads.io.plots_lateral import (
+from slingloads.io.common.workbook import located
+from slingloads.io.lateral.plots import (
     plot_max_angle_vs_acceleration,
     plot_shear_at_angles,
     plot_time_histories,
 )
-from slingloads.io.plots_loads import check_units, in_report_units, labelled, report_unit
-from slingloads.io.workbook import located
+from slingloads.io.loads.plots import check_units, in_report_units, labelled, report_unit
+from slingloads.io.loads.report import convert_columns
 
 ANALYSIS = "lateral"
 #: PNG files written, by tag: ``<stem>-lateral-<tag>.png``.
@@ -214,7 +214,7 @@ def compute(study):
     Parameters
     ----------
     study : WorkbookStudy
-        With ``study.extra["lateral"]`` (:class:`~slingloads.io.lateral_reader.LateralInputs`).
+        With ``study.extra["lateral"]`` (:class:`~slingloads.io.lateral.reader.LateralInputs`).
 
     Returns
     -------

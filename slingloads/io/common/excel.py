@@ -417,7 +417,7 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
     ----------
     path : path-like
         ``.xlsx`` file to write (normally a temporary path from
-        :func:`slingloads.io.atomic.atomic_outputs`).
+        :func:`slingloads.io.common.atomic.atomic_outputs`).
     sheets : mapping of str to (DataFrame, sequence of Section, or str)
         Sheet name -> content, in workbook order. A DataFrame is one table (split over
         ``NAME_1``, ``NAME_2``... when longer than ``max_rows``); a sequence of
