@@ -23,8 +23,8 @@ import pandas as pd
 
 from slingloads.analyses.chute_sizing import line_length, neutral_area
 from slingloads.constants import FOOT, KNOT
-from slingloads.io.chute.reader import yaw_inertia_about_hub
 from slingloads.models.aerodynamics import Fin
+from slingloads.models.airframe import yaw_inertia_about_hub
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
 from slingloads.models.wake import TabulatedWake

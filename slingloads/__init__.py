@@ -15,8 +15,10 @@ __version__ = "0.1.0"
 
 _EXPORTS = {
     "read_study": "slingloads.io.study",
+    "WorkbookStudy": "slingloads.io.study",
     "write_input_workbook": "slingloads.io.template",
     "write_loads_outputs": "slingloads.io.loads.report",
+    "hook_angle_comparison": "slingloads.analyses.hook_angle",
     "MassItems": "slingloads.models.airframe",
     "Hardpoints": "slingloads.models.airframe",
     "Airframe": "slingloads.models.airframe",

@@ -6,7 +6,6 @@ Exit codes: 0 success, 2 bad input (nothing written), 1 an unexpected failure.
 from __future__ import annotations
 
 import argparse
-import importlib
 import sys
 from pathlib import Path
 
@@ -14,56 +13,17 @@ from tqdm import tqdm
 
 from slingloads import __version__
 from slingloads.errors import ClosureError, InputError, SlingloadsError
+from slingloads.io.analyses import ANALYSES as REGISTRY
 
 EXIT_BAD_INPUT = 2
 
-#: Analyses the ``run`` command may perform, in order:
-#: name -> (subcommand, compute(study) -> result,
-#:          write(result, out_dir, stem, units, study), out_dir being the shared
-#:          AtomicOutputs of the run (a writer opens atomic_outputs(out_dir) on it))
-#: Every analysis is computed (and every input checked) before anything is written, and the
-#: files of all the analyses are published together at the end (or none of them).
-ANALYSES = {}
-
-
-def register(name, subcommand, compute, write):
-    """Make an analysis available to ``slingloads run`` and as its own subcommand."""
-    ANALYSES[name] = (subcommand, compute, write)
-
-
-def _loads_compute(study):
-    if study.loads is None:
-        raise InputError("the workbook does not ask for the loads analysis (Study sheet: "
-                         "'run loads' is no)", file=study.path, sheet="Study")
-    return study.loads.run()
-
-
-def _loads_write(result, out_dir, stem, units, study):
-    from slingloads.io.loads.report import write_loads_outputs
-
-    return write_loads_outputs(result, out_dir, stem, units=units,
-                               inputs_digest=study.digest(),
-                               hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
-                               hull_stations=study.options.get("hull stations"),
-                               input_paths=[study.path])
-
-
-register("loads", "loads", _loads_compute, _loads_write)
-
-
-def _lazy(module, name):
-    """A function of ``module`` imported on first call (keeps ``slingloads --help`` fast)."""
-    def call(*args, **kwargs):
-        return getattr(importlib.import_module(module), name)(*args, **kwargs)
-    return call
-
-
-# Each report module has compute(study) -> result, reading study.extra[<analysis name>], and
-# write(result, out_dir, stem, units, study), publishing through atomic_outputs(out_dir).
-register("lateral", "lateral", _lazy("slingloads.io.lateral.report", "compute"),
-         _lazy("slingloads.io.lateral.report", "write"))
-register("chute sizing", "chute", _lazy("slingloads.io.chute.report", "compute"),
-         _lazy("slingloads.io.chute.report", "write"))
+#: Analyses the ``run`` command may perform, in order (from the registry
+#: :mod:`slingloads.io.analyses`): name -> (subcommand, compute(study) -> result,
+#: write(result, out_dir, stem, units, study)), out_dir being the shared AtomicOutputs of the
+#: run. Every analysis is computed (and every input checked) before anything is written, and
+#: the files of all the analyses are published together at the end (or none of them). The
+#: analyses' modules are imported on first use (keeps ``slingloads --help`` fast).
+ANALYSES = {a.name: (a.subcommand, a.compute, a.write) for a in REGISTRY}
 
 
 def _parser():
@@ -79,13 +39,9 @@ def _parser():
     t.add_argument("out", metavar="OUT.xlsx", help="workbook to write (not overwritten if it "
                    "exists, unless --force)")
     t.add_argument("--force", action="store_true", help="replace an existing file")
-    commands = {
-        "run": "run every analysis the workbook asks for (Study sheet: run loads, run "
-               "lateral, run chute sizing)",
-        "loads": "structural loads only: CS-29.865 cases, inertia relief, SFBM, envelopes",
-        "lateral": "lateral-step pendulum study only",
-        "chute": "parachute sizing only",
-    }
+    runs = ", ".join(a.run_parameter for a in REGISTRY)
+    commands = {"run": f"run every analysis the workbook asks for (Study sheet: {runs})",
+                **{a.subcommand: a.summary for a in REGISTRY}}
     for name, text in commands.items():
         p = sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".")
         p.add_argument("workbook", metavar="IN.xlsx", help="input workbook")
@@ -134,9 +90,9 @@ def _selected(args, study):
     if args.command == "run":
         wanted = [n for n in ANALYSES if study.run.get(n)]
         if not wanted:
-            raise InputError("the workbook asks for no analysis (Study sheet: run loads, run "
-                             "lateral, run chute sizing are all no)", file=study.path,
-                             sheet="Study")
+            runs = ", ".join(a.run_parameter for a in REGISTRY)
+            raise InputError(f"the workbook asks for no analysis (Study sheet: {runs} are "
+                             "all no)", file=study.path, sheet="Study")
         return wanted
     return [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
 

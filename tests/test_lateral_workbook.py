@@ -22,11 +22,12 @@ import openpyxl
 import pandas as pd
 import pytest
 
+from slingloads.analyses.hook_angle import hook_angle_comparison
 from slingloads.analyses.hook_loads import HookLoadOptions
 from slingloads.analyses.lateral import lateral_study
 from slingloads.cli import main
 from slingloads.constants import FOOT, G0, POUND_FORCE
-from slingloads.io.lateral.report import PLOTS, compute, hook_angle_comparison
+from slingloads.io.lateral.report import PLOTS, compute
 from slingloads.io.study import read_study
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,

@@ -585,6 +585,40 @@ def _motion_row(motion):
     }
 
 
+def airframe_body(airframe, name="airframe (MassItems)"):
+    """The lateral-pendulum body of an airframe: total mass, Ixx about the CG, CG below hub.
+
+    The CG distance below the hub is measured along the mast axis:
+    :math:`e = (\\mathbf{r}_{hub} - \\mathbf{r}_{CG})\\cdot\\mathbf{m}`.
+
+    Parameters
+    ----------
+    airframe : Airframe
+    name : str
+
+    Returns
+    -------
+    SlungBody
+
+    Raises
+    ------
+    InputError
+        If the CG lies above the hub or the roll inertia is not positive.
+    """
+    items = airframe.mass_items
+    mast = np.asarray(airframe.hardpoints.mast_axis, float)
+    mast = mast / np.linalg.norm(mast)
+    e = float((airframe.hardpoints.hub - items.cg) @ mast)
+    inertia = float(items.inertia_about_cg[0, 0])
+    if e < 0:
+        raise InputError("the CG of the mass items lies above the rotor hub along the mast; "
+                         "the lateral pendulum needs it below (e >= 0) [m]", e)
+    if not inertia > 0:
+        raise InputError("the mass items' roll inertia Ixx about the CG must be > 0 [kg m^2]",
+                         inertia)
+    return SlungBody(items.total_mass, inertia, e, name)
+
+
 def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None,
                   lateral_damping=0.0, roll_damping=0.0, t_end=None, step=None,
                   gravity=G0, regulatory_angle=REGULATORY_ANGLE):

@@ -7,8 +7,9 @@ from openpyxl import Workbook
 from openpyxl.comments import Comment
 from openpyxl.styles import Alignment, Font, PatternFill
 
+from slingloads.io.analyses import sections
 from slingloads.io.common.atomic import atomic_outputs
-from slingloads.io.common.schema import FLAG, INTEGER, SECTIONS, STUDY_SHEET, TEXT
+from slingloads.io.common.schema import FLAG, INTEGER, STUDY_SHEET, TEXT
 
 _BOLD = Font(bold=True)
 _HEAD_FILL = PatternFill("solid", fgColor="DDEBF7")
@@ -32,7 +33,7 @@ def _text(cell, value):
 
 
 def write_input_workbook(path, parameters=None, tables=None, notes=None, inputs=()):
-    """Write an input workbook following :mod:`slingloads.io.common.schema`.
+    """Write an input workbook following the sections of :mod:`slingloads.io.analyses`.
 
     Parameters
     ----------
@@ -59,7 +60,7 @@ def write_input_workbook(path, parameters=None, tables=None, notes=None, inputs=
     readme.title = "README"
     _readme(readme, notes or [])
     _study_sheet(book.create_sheet(STUDY_SHEET), parameters)
-    for section in SECTIONS:
+    for section in sections():
         for spec in section.sheets:
             if tables and spec.name not in tables and not spec.required:
                 continue
@@ -94,7 +95,7 @@ def _readme(ws, notes):
     _text(ws.cell(row, 3), "Parameters: one per row, 'parameter | value | unit | "
           "description'. See the sheet for every parameter and its default.")
     row += 1
-    for section in SECTIONS:
+    for section in sections():
         for spec in section.sheets:
             _text(ws.cell(row, 1), spec.name)
             _text(ws.cell(row, 3), ("(required) " if spec.required else "(optional) ")
@@ -121,7 +122,7 @@ def _study_sheet(ws, parameters):
     ws.column_dimensions["C"].width = 10
     ws.column_dimensions["D"].width = 100
     row = 2
-    for section in SECTIONS:
+    for section in sections():
         for p in section.parameters:
             value, unit = parameters.get(p.name, (p.default, p.unit))
             _text(ws.cell(row, 1), p.name)

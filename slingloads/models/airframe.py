@@ -287,3 +287,22 @@ class Airframe:
         y0, z0 = self.reference_axis
         return np.column_stack([self.stations, np.full(self.stations.shape, y0),
                                 np.full(self.stations.shape, z0)])
+
+
+def yaw_inertia_about_hub(airframe):
+    """Yaw inertia of the mass items about the vertical through the rotor hub.
+
+    .. math:: I = I_{zz,CG} + m\\,[(x_{CG} - x_{hub})^2 + (y_{CG} - y_{hub})^2]
+
+    Parameters
+    ----------
+    airframe : Airframe
+
+    Returns
+    -------
+    float
+        [kg m^2]
+    """
+    items = airframe.mass_items
+    d = items.cg[:2] - airframe.hardpoints.hub[:2]
+    return float(items.inertia_about_cg[2, 2] + items.total_mass * (d @ d))

@@ -1,8 +1,9 @@
 """Build the parachute-sizing inputs from an input workbook (``run chute sizing = yes``).
 
-Called by :func:`slingloads.io.study.read_study` as ``read(reader, params, study)``.
+Called through the registry (:mod:`slingloads.io.analyses`) as
+``read(reader, params, study)``.
 It reads the Study parameters of :mod:`slingloads.io.chute.schema`, the optional ``ChuteWake``
-sheet, and the loads core's aerodynamic sheets (``FuselageAero``, ``FinAero``,
+sheet, and the airframe's aerodynamic sheets (``FuselageAero``, ``FinAero``,
 ``ParachuteCD``) and hardpoints, so that the sizing also runs on its own
 (``slingloads chute``). Every value is SI after reading; every bad value raises
 :class:`~slingloads.errors.InputError` naming the file, sheet, cell, value and rule.
@@ -15,12 +16,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.errors import InputError
+from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
 from slingloads.io.chute.schema import INERTIA_SOURCES, INTEGRATORS, SHEETS, WAKE_SOURCES
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import located
-from slingloads.io.study import read_fin_aero, read_fuselage_aero, read_parachute_cd
+from slingloads.models.airframe import yaw_inertia_about_hub
 from slingloads.models.gusts import GUST_KINDS, make_gust
-from slingloads.models.parachute import Parachute
 from slingloads.models.wake import BluffBodyWake, TabulatedWake
 from slingloads.models.yaw_dynamics import FlightCondition, SolverSettings, YawModel
 
@@ -79,66 +80,13 @@ class ChuteSizingInputs:
     study_line: float
 
 
-def _raw(reader, params, name):
-    """The value as the user typed it (for error messages), or the default."""
-    cell = params.cell(name)
-    if cell is None:
-        return params.specs[name.lower()].default
-    return reader.book[STUDY_SHEET][cell].value
-
-
-def _where(params, name):
-    return params.cell(name) or "(default)"
-
-
-def _check(reader, params, name, ok, rule):
-    if not ok:
-        raise reader.error(rule, _raw(reader, params, name), STUDY_SHEET, _where(params, name))
-
-
-def _choice(reader, params, name, valid):
-    text = str(params(name) or "").strip()
-    key = text.lower()
-    for v in valid:
-        if v.lower() == key:
-            return v
-    raise reader.error(f"{name!r} is not valid; valid values are {list(valid)}", text,
-                       STUDY_SHEET, _where(params, name))
-
-
-def _positive(reader, params, name, allow_zero=False):
-    value = params(name)
-    ok = np.isfinite(value) and (value > 0 or (allow_zero and value == 0))
-    _check(reader, params, name, ok, f"{name!r} must be {'>= 0' if allow_zero else '> 0'}")
-    return float(value)
-
-
-def yaw_inertia_about_hub(airframe):
-    """Yaw inertia of the mass items about the vertical through the rotor hub.
-
-    .. math:: I = I_{zz,CG} + m\\,[(x_{CG} - x_{hub})^2 + (y_{CG} - y_{hub})^2]
-
-    Parameters
-    ----------
-    airframe : Airframe
-
-    Returns
-    -------
-    float
-        [kg m^2]
-    """
-    items = airframe.mass_items
-    d = items.cg[:2] - airframe.hardpoints.hub[:2]
-    return float(items.inertia_about_cg[2, 2] + items.total_mass * (d @ d))
-
-
 def read(reader, params, study):
     """Build :class:`ChuteSizingInputs` from the workbook.
 
     Parameters
     ----------
     reader : WorkbookReader
-    params : slingloads.io.study._Params
+    params : slingloads.io.common.parameters.StudyParameters
         Study-sheet parameters (SI, with defaults).
     study : WorkbookStudy
         The airframe and the hardpoints by kind already read.
@@ -154,14 +102,14 @@ def read(reader, params, study):
     """
     file = reader.file
     # ---- condition
-    ias = _positive(reader, params, "chute sizing airspeed IAS")
-    with located(file, STUDY_SHEET, _where(params, "chute sizing density altitude")):
+    ias = params.positive("chute sizing airspeed IAS")
+    with located(file, STUDY_SHEET, params.where("chute sizing density altitude")):
         condition = FlightCondition(ias, params("chute sizing density altitude"),
                                     params("chute sizing alpha trim"))
-    half = _positive(reader, params, "chute sizing linearisation range")
-    _check(reader, params, "chute sizing linearisation range", half < np.pi / 2,
+    half = params.positive("chute sizing linearisation range")
+    params.check("chute sizing linearisation range", half < np.pi / 2,
            "'chute sizing linearisation range' must be below 90 deg")
-    # ---- aerodynamics and geometry (the loads core's sheets)
+    # ---- aerodynamics and geometry (the airframe sheets)
     refs = study.points
     fuselage = read_fuselage_aero(reader, params, refs)
     fin = read_fin_aero(reader, params, refs)
@@ -177,21 +125,14 @@ def read(reader, params, study):
         raise reader.error("the parachute attachment (kind 'chute') must lie aft of the rotor "
                            "hub (x greater) to stabilise in yaw; x distance [m]", float(arm),
                            "Hardpoints")
-    cd = read_parachute_cd(reader)
-    for name, arg in (("parachute wake ratio", "wake_ratio"),
-                      ("parachute line length", "line_length")):
-        with located(file, STUDY_SHEET, _where(params, name)):
-            Parachute(1.0, cd, **{arg: params(name)})
-    with located(file, "ParachuteCD" if cd is not None else STUDY_SHEET):
-        parachute = Parachute(1.0, cd, params("parachute wake ratio"),
-                              params("parachute line length"))
+    parachute = read_parachute(reader, params, 1.0)
     # ---- yaw inertia
-    source = _choice(reader, params, "chute sizing yaw inertia source", INERTIA_SOURCES)
+    source = params.choice("chute sizing yaw inertia source", INERTIA_SOURCES)
     given = params("chute sizing yaw inertia")
     if source == "parameter":
-        inertia = _positive(reader, params, "chute sizing yaw inertia")
+        inertia = params.positive("chute sizing yaw inertia")
     else:
-        _check(reader, params, "chute sizing yaw inertia", np.isfinite(given) and given == 0,
+        params.check("chute sizing yaw inertia", np.isfinite(given) and given == 0,
                "'chute sizing yaw inertia' is used only with 'chute sizing yaw inertia source' "
                "= parameter (it must then be > 0); leave it 0 with 'mass items'"
                if np.isfinite(given) and given > 0 else "'chute sizing yaw inertia' must be "
@@ -200,63 +141,63 @@ def read(reader, params, study):
         if not inertia > 0:
             raise reader.error("yaw inertia about the hub computed from the mass items must be "
                                "> 0 [kg m^2]", inertia, "MassItems")
-    with located(file, STUDY_SHEET, _where(params, "chute sizing alpha trim")):
+    with located(file, STUDY_SHEET, params.where("chute sizing alpha trim")):
         model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute)
     lo, hi = model.beta_range()
-    _check(reader, params, "chute sizing linearisation range", half <= min(-lo, hi),
+    params.check("chute sizing linearisation range", half <= min(-lo, hi),
            f"the linearisation range must lie inside the tables' sideslip range "
            f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
     # ---- wake and line
     target = params("chute sizing target q ratio")
-    _check(reader, params, "chute sizing target q ratio", 0 < target <= 1,
+    params.check("chute sizing target q ratio", 0 < target <= 1,
            "'chute sizing target q ratio' must lie in (0, 1]")
-    wake_source = _choice(reader, params, "chute sizing wake source", WAKE_SOURCES)
+    wake_source = params.choice("chute sizing wake source", WAKE_SOURCES)
     if wake_source == "table":
         wake = _wake_table(reader)
         where = ("ChuteWake", "B1")
     else:
-        k = _positive(reader, params, "chute sizing wake coefficient")
-        area = _positive(reader, params, "chute sizing wake drag area", allow_zero=True)
+        k = params.positive("chute sizing wake coefficient")
+        area = params.positive("chute sizing wake drag area", allow_zero=True)
         if area == 0:
             if fuselage is None:
                 raise reader.error("the wake model needs 'chute sizing wake drag area' > 0 "
                                    "when there is no FuselageAero sheet", 0.0, STUDY_SHEET,
-                                   _where(params, "chute sizing wake drag area"))
+                                   params.where("chute sizing wake drag area"))
             with located(file, "FuselageAero"):
                 area = float(fuselage.table("CD", condition.alpha, 0.0)) * fuselage.area
-        with located(file, STUDY_SHEET, _where(params, "chute sizing wake coefficient")):
+        with located(file, STUDY_SHEET, params.where("chute sizing wake coefficient")):
             wake = BluffBodyWake(area, k)
-        where = (STUDY_SHEET, _where(params, "chute sizing target q ratio"))
+        where = (STUDY_SHEET, params.where("chute sizing target q ratio"))
     with located(file, *where):
         wake.line_length(target)
-    cable = _positive(reader, params, "chute sizing carrier cable length", allow_zero=True)
-    margin = _positive(reader, params, "chute sizing cable margin", allow_zero=True)
+    cable = params.positive("chute sizing carrier cable length", allow_zero=True)
+    margin = params.positive("chute sizing cable margin", allow_zero=True)
     # ---- solver
-    t_end = _positive(reader, params, "chute sizing simulation time")
-    dt = _positive(reader, params, "chute sizing time step")
-    interval = _positive(reader, params, "chute sizing output interval")
-    integrator = _choice(reader, params, "chute sizing integrator", INTEGRATORS)
-    method = _choice(reader, params, "chute sizing reference method", _SOLVE_IVP_METHODS)
-    rtol = _positive(reader, params, "chute sizing reference rtol")
+    t_end = params.positive("chute sizing simulation time")
+    dt = params.positive("chute sizing time step")
+    interval = params.positive("chute sizing output interval")
+    integrator = params.choice("chute sizing integrator", INTEGRATORS)
+    method = params.choice("chute sizing reference method", _SOLVE_IVP_METHODS)
+    rtol = params.positive("chute sizing reference rtol")
     try:
         settings = SolverSettings(t_end, dt, interval, method, rtol)
     except InputError as err:
         name = ("chute sizing output interval" if "output_interval" in err.rule
                 else "chute sizing simulation time")
-        raise err.located(file=file, sheet=STUDY_SHEET, cell=_where(params, name)) from None
+        raise err.located(file=file, sheet=STUDY_SHEET, cell=params.where(name)) from None
     # ---- gusts
     gusts = _gusts(reader, params, model, t_end)
     # ---- sweep
-    fmin = _positive(reader, params, "chute sizing area factor min")
+    fmin = params.positive("chute sizing area factor min")
     fmax = params("chute sizing area factor max")
-    _check(reader, params, "chute sizing area factor max", np.isfinite(fmax) and fmax >= fmin,
+    params.check("chute sizing area factor max", np.isfinite(fmax) and fmax >= fmin,
            "'chute sizing area factor max' must be >= 'chute sizing area factor min'")
     count = params("chute sizing number of areas")
-    _check(reader, params, "chute sizing number of areas", count >= 1,
+    params.check("chute sizing number of areas", count >= 1,
            "'chute sizing number of areas' must be >= 1")
-    _check(reader, params, "chute sizing number of areas", count == 1 or fmax > fmin,
+    params.check("chute sizing number of areas", count == 1 or fmax > fmin,
            "several areas need 'chute sizing area factor max' > min")
-    recommended = _positive(reader, params, "chute sizing recommended factor")
+    recommended = params.positive("chute sizing recommended factor")
     return ChuteSizingInputs(
         model=model, fit_range=(-half, half), wake=wake, target=float(target),
         cable_length=cable if cable > 0 else None, margin=margin, gusts=gusts,
@@ -292,26 +233,26 @@ def _gusts(reader, params, model, t_end):
     shapes = [s.strip().lower() for s in str(params(name) or "").split(",") if s.strip()]
     if not shapes:
         raise reader.error(f"{name!r} needs at least one shape of {list(GUST_KINDS)}", "",
-                           STUDY_SHEET, _where(params, name))
+                           STUDY_SHEET, params.where(name))
     for s in shapes:
         if s not in GUST_KINDS:
             raise reader.error(f"unknown gust shape; valid shapes are {list(GUST_KINDS)}", s,
-                               STUDY_SHEET, _where(params, name))
+                               STUDY_SHEET, params.where(name))
         if shapes.count(s) > 1:
-            raise reader.error("gust shape listed twice", s, STUDY_SHEET, _where(params, name))
-    amplitude = _positive(reader, params, "chute sizing gust amplitude")
-    onset = _positive(reader, params, "chute sizing gust onset", allow_zero=True)
-    duration = _positive(reader, params, "chute sizing gust duration")
-    _check(reader, params, "chute sizing gust onset", onset < t_end,
+            raise reader.error("gust shape listed twice", s, STUDY_SHEET, params.where(name))
+    amplitude = params.positive("chute sizing gust amplitude")
+    onset = params.positive("chute sizing gust onset", allow_zero=True)
+    duration = params.positive("chute sizing gust duration")
+    params.check("chute sizing gust onset", onset < t_end,
            f"the gust must start before the end of the simulation ({t_end:g} s)")
     if any(s in ("finite", "1-cosine") for s in shapes):
-        _check(reader, params, "chute sizing gust duration", onset + duration < t_end,
+        params.check("chute sizing gust duration", onset + duration < t_end,
                f"finite and 1-cosine gusts must end (onset + duration) before the end of the "
                f"simulation ({t_end:g} s) so that the free response is seen")
     lo, hi = model.beta_range()
     tas = model.condition.tas
     gamma = np.arctan(amplitude / tas)
-    _check(reader, params, "chute sizing gust amplitude", gamma < min(-lo, hi),
+    params.check("chute sizing gust amplitude", gamma < min(-lo, hi),
            f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at {tas:.4g} m/s true "
            f"airspeed, outside the aerodynamic tables' range [{np.degrees(lo):.4g}, "
            f"{np.degrees(hi):.4g}] deg")

@@ -38,10 +38,15 @@ from slingloads.io.chute.plots import (
 )
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
 from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.common.report import (
+    check_units,
+    convert_columns,
+    digest_frame,
+    in_report_units,
+    report_unit,
+)
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
-from slingloads.io.loads.plots import check_units, in_report_units, report_unit
-from slingloads.io.loads.report import convert_columns
 
 ANALYSIS = "chute sizing"
 #: PNG files written, by tag: ``<stem>-chute-<tag>.png``.
@@ -118,7 +123,7 @@ def compute(study):
     Parameters
     ----------
     study : WorkbookStudy
-        With ``study.extra["chute sizing"]`` (:class:`ChuteSizingInputs`).
+        With ``study.inputs["chute sizing"]`` (:class:`ChuteSizingInputs`).
 
     Returns
     -------
@@ -130,7 +135,7 @@ def compute(study):
         If the workbook does not ask for the sizing, or the analysis refuses its inputs (the
         file is named).
     """
-    inputs = study.extra.get(ANALYSIS)
+    inputs = study.inputs.get(ANALYSIS)
     if inputs is None:
         raise InputError("the workbook does not ask for the parachute sizing (Study sheet: "
                          "'run chute sizing' is no)", file=study.path, sheet="Study")
@@ -304,11 +309,6 @@ def _sheets(result, units, digest):
     return sheets
 
 
-def _digest(study):
-    d = study.digest()
-    return pd.DataFrame({"input": list(d), "entry": [str(v) for v in d.values()]})
-
-
 def _figures(result, units="SI"):
     figs = {"linearisation": plot_yaw_linearisation(result.static.linearisation),
             "static-moments": plot_static_moments(result.static, units),
@@ -349,7 +349,7 @@ def write(result, out_dir, stem, units, study):
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)
     pngs = {tag: figure_png(fig, _PNG_DPI) for tag, fig in _figures(result, units).items()}
-    sheets = _sheets(result, units, _digest(study))
+    sheets = _sheets(result, units, digest_frame(study.digest()))
     titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
               "static-moments": "Static yawing moments at the neutral area",
               "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",

@@ -1,10 +1,11 @@
 """Study-sheet parameters and sheets of the parachute sizing (types in ``io.common.schema``).
 
-The sizing also reads the loads core's sheets and parameters: ``FuselageAero``, ``FinAero``,
-``ParachuteCD``, the ``Hardpoints`` of kind ``hub``, ``chute``, ``fin_cp`` and
-``aero_reference``, the ``MassItems`` (yaw inertia) and the Study parameters 'fuselage
-reference area', 'fuselage reference length', 'fin area', 'fin efficiency', 'parachute wake
-ratio' and 'parachute line length'. Method and signs: ``docs/parachute-sizing.md``.
+The sizing also reads the airframe's sheets and parameters
+(:mod:`slingloads.io.airframe.schema`): ``FuselageAero``, ``FinAero``, ``ParachuteCD``, the
+``Hardpoints`` of kind ``hub``, ``chute``, ``fin_cp`` and ``aero_reference``, the
+``MassItems`` (yaw inertia) and the Study parameters 'fuselage reference area', 'fuselage
+reference length', 'fin area', 'fin efficiency', 'parachute wake ratio' and 'parachute line
+length'. Method and signs: ``docs/parachute-sizing.md``.
 """
 
 from __future__ import annotations

@@ -27,7 +27,6 @@ from slingloads.io.common.schema import (
     NOTE_COLUMNS,
     STUDY_SHEET,
     TEXT,
-    all_parameters,
 )
 from slingloads.io.common.units import si_factor
 
@@ -217,10 +216,13 @@ class WorkbookReader:
             return int(number)
         return number * factor
 
-    def parameters(self, sheet=STUDY_SHEET):
-        """Read the ``Study`` sheet: ``{name: (SI value, cell)}`` for every row present."""
+    def parameters(self, known, sheet=STUDY_SHEET):
+        """Read the ``Study`` sheet: ``{name: (SI value, cell)}`` for every row present.
+
+        ``known`` gives every valid :class:`~slingloads.io.common.schema.Parameter` by
+        lower-case name (:func:`slingloads.io.analyses.all_parameters`).
+        """
         rows = self._rows(sheet)
-        known = all_parameters()
         header = [str(v).strip().lower() if v is not None else "" for v in rows[0]] if rows \
             else []
         for col, title in enumerate(("parameter", "value", "unit"), start=1):
@@ -273,6 +275,16 @@ class WorkbookReader:
                              None, sheet, cell_name(r, 3))
         with located(self.file, sheet, cell_name(r, 3)):
             return number * si_factor(unit_text, spec.kind)
+
+
+def check_unique(reader, table, column):
+    """Raise an InputError at the second occurrence of a value repeated in ``column``."""
+    seen = {}
+    for i, value in enumerate(table[column]):
+        if value in seen:
+            raise reader.error(f"duplicate {column} (first at {table.cell(column, seen[value])})",
+                               value, table.sheet, table.cell(column, i))
+        seen[value] = i
 
 
 def parse_number(raw, what, error, sheet, where):

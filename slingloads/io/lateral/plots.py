@@ -120,7 +120,7 @@ def plot_shear_at_angles(comparison, component="Vy", units="SI", title=None):
 
     Parameters
     ----------
-    comparison : slingloads.io.lateral.report.HookAngleComparison
+    comparison : slingloads.analyses.hook_angle.HookAngleComparison
     component : str
         Load component, default the Y shear ``"Vy"``.
     units : str
@@ -132,7 +132,7 @@ def plot_shear_at_angles(comparison, component="Vy", units="SI", title=None):
     matplotlib.figure.Figure
     """
     from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
-    from slingloads.io.loads.plots import in_report_units, labelled
+    from slingloads.io.common.report import in_report_units, labelled
 
     j = COMPONENTS.index(component)
     kind = COMPONENT_KINDS[j]

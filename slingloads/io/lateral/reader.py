@@ -1,6 +1,7 @@
 """Build the lateral-step pendulum inputs from an input workbook (``run lateral = yes``).
 
-Called by :func:`slingloads.io.study.read_study` as ``read(reader, params, study)``.
+Called through the registry (:mod:`slingloads.io.analyses`) as
+``read(reader, params, study)``.
 It reads the Study parameters of :mod:`slingloads.io.lateral.schema`, the sheets
 ``LateralMotions``, ``LateralRopes``, and the optional ``LateralHistory`` (or CSV files named
 in ``LateralMotions``) and ``LateralBodies``; without ``LateralBodies`` the one body comes from
@@ -18,13 +19,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.lateral import SolverSettings
-from slingloads.errors import InputError
-from slingloads.io.common.schema import STUDY_SHEET, all_sheets
+from slingloads.analyses.lateral import SolverSettings, airframe_body
 from slingloads.io.common.units import si_factor
-from slingloads.io.common.workbook import located
+from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.lateral.schema import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
-from slingloads.io.study import _loads_study
+from slingloads.io.loads import reader as loads_reader
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
     SmoothStep,
@@ -85,38 +84,6 @@ class LateralInputs:
     loads: object
 
 
-def _where(params, name):
-    return params.cell(name) or "(default)"
-
-
-def _raw(reader, params, name):
-    cell = params.cell(name)
-    if cell is None:
-        return params.specs[name.lower()].default
-    return reader.book[STUDY_SHEET][cell].value
-
-
-def _check(reader, params, name, ok, rule):
-    if not ok:
-        raise reader.error(rule, _raw(reader, params, name), STUDY_SHEET, _where(params, name))
-
-
-def _choice(reader, params, name, valid):
-    text = str(params(name) or "").strip()
-    for v in valid:
-        if v.lower() == text.lower():
-            return v
-    raise reader.error(f"{name!r} is not valid; valid values are {list(valid)}", text,
-                       STUDY_SHEET, _where(params, name))
-
-
-def _non_negative(reader, params, name, strict=False):
-    value = params(name)
-    ok = np.isfinite(value) and (value > 0 or (not strict and value == 0))
-    _check(reader, params, name, ok, f"{name!r} must be {'> 0' if strict else '>= 0'}")
-    return float(value)
-
-
 def _shown(table, column, i):
     """The value of a numeric cell in the unit of its header (for error messages)."""
     value = float(table[column][i])
@@ -138,7 +105,7 @@ def read(reader, params, study):
     Parameters
     ----------
     reader : WorkbookReader
-    params : slingloads.io.study._Params
+    params : slingloads.io.common.parameters.StudyParameters
         Study-sheet parameters (SI, with defaults).
     study : WorkbookStudy
         The airframe (mass items, hub) and the loads study if it was built.
@@ -153,28 +120,28 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule.
     """
     margin = params("lateral design-angle margin")
-    _check(reader, params, "lateral design-angle margin", np.isfinite(margin) and margin >= 1,
+    params.check("lateral design-angle margin", np.isfinite(margin) and margin >= 1,
            "'lateral design-angle margin' must be >= 1 (recommended angle = margin x the "
            "largest load angle found)")
-    model = _choice(reader, params, "lateral cable model", CABLE_MODELS)
+    model = params.choice("lateral cable model", CABLE_MODELS)
     ea = params("lateral cable EA")
     if model == "elastic":
-        cable_ea = _non_negative(reader, params, "lateral cable EA", strict=True)
+        cable_ea = params.positive("lateral cable EA")
     else:
-        _check(reader, params, "lateral cable EA", np.isfinite(ea) and ea == 0,
+        params.check("lateral cable EA", np.isfinite(ea) and ea == 0,
                "'lateral cable EA' is used only with 'lateral cable model' = elastic; leave "
                "it 0 with the rigid rope")
         cable_ea = None
-    damping = _non_negative(reader, params, "lateral damping")
-    roll_damping = _non_negative(reader, params, "lateral roll damping")
-    t_end = _non_negative(reader, params, "lateral simulation time")
-    step = _non_negative(reader, params, "lateral RK4 step")
+    damping = params.positive("lateral damping", allow_zero=True)
+    roll_damping = params.positive("lateral roll damping", allow_zero=True)
+    t_end = params.positive("lateral simulation time", allow_zero=True)
+    step = params.positive("lateral RK4 step", allow_zero=True)
     if t_end > 0 and step > 0:
-        _check(reader, params, "lateral RK4 step", step < t_end,
+        params.check("lateral RK4 step", step < t_end,
                "'lateral RK4 step' must be shorter than 'lateral simulation time'")
-    method = _choice(reader, params, "lateral history method", SOLVER_METHODS)
-    rtol = _non_negative(reader, params, "lateral history rtol", strict=True)
-    output = _non_negative(reader, params, "lateral history output step", strict=True)
+    method = params.choice("lateral history method", SOLVER_METHODS)
+    rtol = params.positive("lateral history rtol")
+    output = params.positive("lateral history output step")
     solver = SolverSettings(method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2),
                             output_step=output)
     ropes = _ropes(reader)
@@ -184,7 +151,7 @@ def read(reader, params, study):
     loads = study.loads
     if loads is None:
         with located(reader.file):
-            loads = _loads_study(reader, params, all_sheets(), study.airframe, study.points)
+            loads = loads_reader.read(reader, params, study)
     return LateralInputs(
         bodies=bodies, body_source=source, rope_lengths=ropes, motions=motions,
         motion_ids=ids, margin=float(margin), cable_ea=cable_ea, lateral_damping=damping,
@@ -209,20 +176,11 @@ def _ropes(reader):
     return tuple(float(x) for x in lengths)
 
 
-def _unique(reader, t, column):
-    seen = {}
-    for i, value in enumerate(t[column]):
-        if value in seen:
-            raise reader.error(f"duplicate {column} (first at {t.cell(column, seen[value])})",
-                               value, t.sheet, t.cell(column, i))
-        seen[value] = i
-
-
 def _bodies(reader, study):
     if not reader.has_sheet("LateralBodies"):
         return (_airframe_body(reader, study.airframe),), "MassItems"
     t = reader.table(_SPEC["LateralBodies"])
-    _unique(reader, t, "id")
+    check_unique(reader, t, "id")
     bodies = []
     for i, name in enumerate(t["id"]):
         for column, rule in (("mass", "mass must be > 0"),
@@ -236,40 +194,6 @@ def _bodies(reader, study):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))
     return tuple(bodies), "LateralBodies"
-
-
-def airframe_body(airframe, name="airframe (MassItems)"):
-    """The lateral-pendulum body of an airframe: total mass, Ixx about the CG, CG below hub.
-
-    The CG distance below the hub is measured along the mast axis:
-    :math:`e = (\\mathbf{r}_{hub} - \\mathbf{r}_{CG})\\cdot\\mathbf{m}`.
-
-    Parameters
-    ----------
-    airframe : Airframe
-    name : str
-
-    Returns
-    -------
-    SlungBody
-
-    Raises
-    ------
-    InputError
-        If the CG lies above the hub or the roll inertia is not positive.
-    """
-    items = airframe.mass_items
-    mast = np.asarray(airframe.hardpoints.mast_axis, float)
-    mast = mast / np.linalg.norm(mast)
-    e = float((airframe.hardpoints.hub - items.cg) @ mast)
-    inertia = float(items.inertia_about_cg[0, 0])
-    if e < 0:
-        raise InputError("the CG of the mass items lies above the rotor hub along the mast; "
-                         "the lateral pendulum needs it below (e >= 0) [m]", e)
-    if not inertia > 0:
-        raise InputError("the mass items' roll inertia Ixx about the CG must be > 0 [kg m^2]",
-                         inertia)
-    return SlungBody(items.total_mass, inertia, e, name)
 
 
 def _airframe_body(reader, airframe):
@@ -353,7 +277,7 @@ def _motion_type(reader, t, i):
 
 def _motions(reader, histories):
     t = _require(reader, "LateralMotions")
-    _unique(reader, t, "id")
+    check_unique(reader, t, "id")
 
     def number(column, i):
         return float(t[column][i]) if t.has(column) else np.nan

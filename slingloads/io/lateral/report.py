@@ -4,7 +4,8 @@
 rope length x body in one vectorised RK4 sweep), re-runs the critical case with
 :func:`scipy.integrate.solve_ivp` for its time histories, computes the natural modes about the
 hanging equilibrium, and, the link to the loads, re-runs the CS-29.865 hook cases at the
-recommended angle and at the 30 deg of CS-29.865 (:func:`hook_angle_comparison`).
+recommended angle and at the 30 deg of CS-29.865
+(:func:`slingloads.analyses.hook_angle.hook_angle_comparison`).
 :func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-lateral.xlsx``: sheets *Summary* (inputs digest, largest load angle and the case
@@ -21,18 +22,31 @@ Lengths, forces, moments, masses, speeds and accelerations are in the report uni
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.lateral import REGULATORY_ANGLE, lateral_study
+from slingloads.analyses.hook_angle import (
+    COMPARISON_ORDER,
+    SI_LABELS,
+    HookAngleComparison,
+    hook_angle_comparison,
+)
+from slingloads.analyses.lateral import lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
 from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.common.report import (
+    check_units,
+    convert_columns,
+    digest_frame,
+    in_report_units,
+    report_unit,
+)
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
 from slingloads.io.lateral.plots import (
@@ -40,14 +54,10 @@ from slingloads.io.lateral.plots import (
     plot_shear_at_angles,
     plot_time_histories,
 )
-from slingloads.io.loads.plots import check_units, in_report_units, labelled, report_unit
-from slingloads.io.loads.report import convert_columns
 
 ANALYSIS = "lateral"
 #: PNG files written, by tag: ``<stem>-lateral-<tag>.png``.
 PLOTS = ("histories", "max-angle", "shear")
-#: Order of the load components in the comparison: Y shear first (the paper's point).
-COMPARISON_ORDER = ("Vy", "Mz", "Mx", "Vx", "Vz", "My")
 _PNG_DPI = 80
 NUMBER_FORMATS = format_by_header([
     (r"\[deg\]", "0.00"),
@@ -55,124 +65,6 @@ NUMBER_FORMATS = format_by_header([
     (r"\[(N|lbf|N m|lbf in)\]", "#,##0"),
     (r"\[-\]", "0.000"),
 ])
-
-
-@dataclass(frozen=True, eq=False)
-class HookAngleComparison:
-    """Envelopes max |load| of the CS-29.865 hook cases at two cone angles.
-
-    Attributes
-    ----------
-    reference_angle : float
-        The CS-29.865 angle (30 deg). [rad]
-    angle : float
-        The compared angle (the recommended design angle). [rad]
-    station_ids : tuple of str
-    stations : ndarray, shape (s,)
-        [m]
-    reference : ndarray, shape (s, 6)
-        max over the hook cases of |load| at ``reference_angle``. [N, N m]
-    at_angle : ndarray, shape (s, 6)
-        The same at ``angle``. [N, N m]
-    cases : tuple of str
-        Hook directions run (AXIAL, AZ000...).
-    """
-
-    reference_angle: float
-    angle: float
-    station_ids: tuple
-    stations: np.ndarray
-    reference: np.ndarray
-    at_angle: np.ndarray
-    cases: tuple
-
-    @property
-    def reduction(self):
-        """100 (1 - at_angle / reference) per station and component; 0 where both are
-        zero. [%]"""
-        scale = np.abs(self.reference).max(axis=0, keepdims=True)
-        tiny = 1e-12 * np.maximum(scale, 1.0)
-        ok = self.reference > tiny
-        out = np.zeros_like(self.reference)
-        np.divide(self.at_angle, self.reference, out=out, where=ok)
-        return np.where(ok, 100.0 * (1.0 - out), np.where(self.at_angle > tiny, -np.inf, 0.0))
-
-    def _labels(self):
-        return (f"at {np.degrees(self.reference_angle):.4g} deg",
-                f"at {np.degrees(self.angle):.4g} deg")
-
-    def station_frame(self, units="SI"):
-        """Per station: each component's envelope at both angles and the reduction, Y shear
-        first, in report units."""
-        ref, at = self._labels()
-        frame = {"station": list(self.station_ids),
-                 labelled("x", "length", units): in_report_units(self.stations, "length", units)}
-        red = self.reduction
-        for name in COMPARISON_ORDER:
-            j = COMPONENTS.index(name)
-            kind = COMPONENT_KINDS[j]
-            frame[labelled(f"max |{name}| {ref}", kind, units)] = in_report_units(
-                self.reference[:, j], kind, units)
-            frame[labelled(f"max |{name}| {at}", kind, units)] = in_report_units(
-                self.at_angle[:, j], kind, units)
-            frame[f"{name} reduction [%]"] = red[:, j]
-        return pd.DataFrame(frame)
-
-    def summary_frame(self, units="SI"):
-        """Per component: the largest envelope value along the airframe at both angles, where
-        it occurs, and the reduction, Y shear first."""
-        ref, at = self._labels()
-        rows = []
-        for name in COMPARISON_ORDER:
-            j = COMPONENTS.index(name)
-            kind = COMPONENT_KINDS[j]
-            i_ref = int(np.argmax(self.reference[:, j]))
-            i_at = int(np.argmax(self.at_angle[:, j]))
-            big_ref, big_at = self.reference[i_ref, j], self.at_angle[i_at, j]
-            rows.append({
-                "component": name,
-                f"largest {ref}": float(in_report_units(big_ref, kind, units)),
-                f"station {ref}": self.station_ids[i_ref],
-                f"largest {at}": float(in_report_units(big_at, kind, units)),
-                f"station {at}": self.station_ids[i_at],
-                "unit": unit_label(report_unit(kind, units)),
-                "reduction [%]": 100.0 * (1.0 - big_at / big_ref) if big_ref > 0 else 0.0,
-            })
-        return pd.DataFrame(rows)
-
-
-def hook_angle_comparison(loads_study, angle, reference_angle=REGULATORY_ANGLE):
-    """Envelopes of the CS-29.865 hook cases alone at two cone angles.
-
-    The hook cases are the loads study's hook directions (mast axis and the azimuths of the
-    cone) with gravity and inertia relief, without the aerodynamic and parachute loads, which
-    do not depend on the cone angle. Each angle is one run of
-    :meth:`LoadsStudy.run <slingloads.analyses.loads.LoadsStudy.run>`.
-
-    Parameters
-    ----------
-    loads_study : LoadsStudy
-    angle : float
-        Cone angle to compare, in [0, 90) deg (e.g. the recommended design angle). [rad]
-    reference_angle : float
-        The CS-29.865 angle. [rad]
-
-    Returns
-    -------
-    HookAngleComparison
-
-    Raises
-    ------
-    InputError
-        For an angle outside [0, 90) deg.
-    """
-    hooks = replace(loads_study, envelope=None, fuselage=None, fin=None, parachute=None,
-                    listed=(), generate=True, previous_envelope=None)
-    runs = [hooks.with_hook(angle=float(a)).run() for a in (reference_angle, angle)]
-    ref, at = (np.abs(r.loads).max(axis=0) for r in runs)
-    return HookAngleComparison(float(reference_angle), float(angle),
-                               tuple(runs[0].station_ids), np.asarray(runs[0].stations),
-                               ref, at, tuple(runs[0].cases["hook"]))
 
 
 @dataclass(frozen=True, eq=False)
@@ -214,7 +106,8 @@ def compute(study):
     Parameters
     ----------
     study : WorkbookStudy
-        With ``study.extra["lateral"]`` (:class:`~slingloads.io.lateral.reader.LateralInputs`).
+        With ``study.inputs["lateral"]``
+        (:class:`~slingloads.io.lateral.reader.LateralInputs`).
 
     Returns
     -------
@@ -226,7 +119,7 @@ def compute(study):
         If the workbook does not ask for the lateral study, or the analysis refuses its
         inputs (the file is named).
     """
-    inputs = study.extra.get(ANALYSIS)
+    inputs = study.inputs.get(ANALYSIS)
     if inputs is None:
         raise InputError("the workbook does not ask for the lateral study (Study sheet: "
                          "'run lateral' is no)", file=study.path, sheet="Study")
@@ -366,6 +259,29 @@ def modes_table(result, units="SI"):
     return convert_columns(result.modes, {"rope length [m]": ("rope length", "length")}, units)
 
 
+def comparison_station_table(comparison, units="SI"):
+    """The hook cases' envelopes per station at both angles, in report units."""
+    spec = {"x [m]": ("x", "length")}
+    for name in COMPARISON_ORDER:
+        kind = COMPONENT_KINDS[COMPONENTS.index(name)]
+        for label in comparison.labels():
+            spec[f"max |{name}| {label} [{SI_LABELS[kind]}]"] = (f"max |{name}| {label}", kind)
+    return convert_columns(comparison.station_frame(), spec, units)
+
+
+def comparison_summary_table(comparison, units="SI"):
+    """The largest envelope value of each component at both angles, in report units."""
+    check_units(units)
+    frame = comparison.summary_frame()
+    kinds = [COMPONENT_KINDS[COMPONENTS.index(name)] for name in frame["component"]]
+    for label in comparison.labels():
+        column = f"largest {label}"
+        frame[column] = [float(in_report_units(value, kind, units))
+                         for value, kind in zip(frame[column], kinds, strict=True)]
+    frame["unit"] = [unit_label(report_unit(kind, units)) for kind in kinds]
+    return frame
+
+
 def _sheets(result, units, digest):
     tables = summary_tables(result, units)
     comparison = result.comparison
@@ -377,11 +293,11 @@ def _sheets(result, units, digest):
     if comparison is not None:
         summary.append(Section(
             "Hook cases at the recommended angle against 30 deg (largest along the airframe)",
-            comparison.summary_frame(units),
+            comparison_summary_table(comparison, units),
             note="CS-29.865 hook cases alone (mast axis and the cone's azimuths, Nz x weight, "
                  "inertia relief), without aerodynamic and parachute loads."))
         loads_sheet = [Section("Envelope max |load| of the hook cases per station",
-                               comparison.station_frame(units),
+                               comparison_station_table(comparison, units),
                                note=f"Hook directions: {', '.join(comparison.cases)}. Limit "
                                     "loads. Reduction = 1 - (at the recommended angle) / "
                                     "(at 30 deg); negative = increase.")]
@@ -401,11 +317,6 @@ def _sheets(result, units, digest):
                               history_table(result, units))],
         "LoadsAtAngle": loads_sheet,
     }
-
-
-def _digest(study):
-    d = study.digest()
-    return pd.DataFrame({"input": list(d), "entry": [str(v) for v in d.values()]})
 
 
 def _figures(result, units):
@@ -442,7 +353,7 @@ def write(result, out_dir, stem, units, study):
     titles = {"histories": "Critical case: time histories (30 deg line)",
               "max-angle": "Largest load angle against carrier acceleration",
               "shear": "Y shear of the hook cases: 30 deg against the recommended angle"}
-    sheets = _sheets(result, units, _digest(study))
+    sheets = _sheets(result, units, digest_frame(study.digest()))
     with atomic_outputs(out_dir, inputs=inputs) as out:
         write_workbook(out.path(f"{stem}-lateral.xlsx"), sheets,
                        {titles[t]: png for t, png in pngs.items()},

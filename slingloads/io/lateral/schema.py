@@ -2,9 +2,9 @@
 
 The study sweeps every carrier motion of ``LateralMotions`` x every rope length of
 ``LateralRopes`` x every body of ``LateralBodies`` (default: one body built from the
-``MassItems`` and the ``Hardpoints`` hub). It also reads the loads core's Study parameters
-'hook load factor Nz', 'hook azimuths', 'hook along mast axis' and the mast axis to re-run the
-CS-29.865 hook cases at the recommended angle. Method, signs and limits:
+``MassItems`` and the ``Hardpoints`` hub). It also reads the loads' Study parameters
+'hook load factor Nz', 'hook azimuths', 'hook along mast axis' and the airframe's mast axis to
+re-run the CS-29.865 hook cases at the recommended angle. Method, signs and limits:
 ``docs/lateral-pendulum.md``.
 """
 

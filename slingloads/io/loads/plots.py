@@ -19,8 +19,8 @@ from matplotlib.figure import Figure
 
 from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
-from slingloads.errors import InputError
-from slingloads.io.common.units import REPORT_UNITS, from_si, unit_label
+from slingloads.io.common.report import check_units, in_report_units, labelled, report_unit
+from slingloads.io.common.units import unit_label
 
 #: Plain-language names of the components, as in the paper's figures ("X shear").
 COMPONENT_TITLES = {
@@ -36,45 +36,6 @@ COMPONENT_TAGS = {
 _MAX_COLOUR = "tab:red"
 _MIN_COLOUR = "tab:blue"
 _CASE_COLOUR = "0.6"
-
-
-def check_units(units):
-    """Return ``units`` if it is a report unit system, else raise :class:`InputError`."""
-    if units not in REPORT_UNITS:
-        raise InputError(f"{units=!r} is not a report unit system; valid are "
-                         f"{sorted(REPORT_UNITS)}", units)
-    return units
-
-
-def report_unit(kind, units):
-    """Unit string (pint spelling) of a quantity ``kind`` in the report system ``units``."""
-    return REPORT_UNITS[check_units(units)][kind]
-
-
-def in_report_units(values, kind, units):
-    """Convert SI ``values`` of quantity ``kind`` to the report unit system.
-
-    Parameters
-    ----------
-    values : array_like
-        SI values. [m, N, N m...]
-    kind : str
-        Quantity kind (``"length"``, ``"force"``, ``"moment"``...).
-    units : str
-        ``"SI"`` or ``"US"``.
-
-    Returns
-    -------
-    ndarray
-        Values in the report unit of ``kind`` (in, lbf, lbf in for ``"US"``).
-    """
-    return from_si(values, report_unit(kind, units), kind)
-
-
-def labelled(name, kind, units):
-    """Header or axis label with the report unit: ``labelled("Vy", "force", "US")`` is
-    ``"Vy [lbf]"``."""
-    return f"{name} [{unit_label(report_unit(kind, units))}]"
 
 
 def component_label(component, units):

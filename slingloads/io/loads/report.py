@@ -15,14 +15,14 @@
   ``<stem>-sfbm_all.png`` (all six components, 2 x 3 grid) and
   ``<stem>-hull_<A>_<B>_<station>.png``.
 
-The DataFrame conversion helpers (:func:`convert_columns`, :func:`convert_by_component`)
-are shared by the other reports.
+:func:`convert_by_component` converts the columns whose unit depends on the row's load
+component; the conversions shared by every report are in :mod:`slingloads.io.common.report`.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
@@ -42,17 +42,15 @@ from slingloads.io.common.excel import (
     format_by_header,
     write_workbook,
 )
-from slingloads.io.common.units import unit_label
-from slingloads.io.loads.plots import (
-    COMPONENT_TAGS,
+from slingloads.io.common.report import (
     check_units,
+    convert_columns,
+    digest_frame,
     in_report_units,
-    labelled,
-    plot_hull,
-    plot_sfbm,
-    plot_sfbm_grid,
     report_unit,
 )
+from slingloads.io.common.units import unit_label
+from slingloads.io.loads.plots import COMPONENT_TAGS, plot_hull, plot_sfbm, plot_sfbm_grid
 
 #: Components drawn on their own PNG (the paper's figures 19 and 20); all six are on the grid.
 PNG_COMPONENTS = ("Vx", "Vy")
@@ -73,36 +71,6 @@ NUMBER_FORMATS = format_by_header([
 ])
 
 _PNG_DPI = 120
-
-
-def convert_columns(frame, spec, units):
-    """Convert SI columns of a DataFrame to report units and label them with the unit.
-
-    Parameters
-    ----------
-    frame : pandas.DataFrame
-        Table with SI columns.
-    spec : mapping of str to (str, str)
-        SI column name -> (new base name, quantity kind); ``{"x [m]": ("x", "length")}``
-        gives ``x [in]`` in US units. Other columns are left as they are.
-    units : str
-        ``"SI"`` or ``"US"``.
-
-    Returns
-    -------
-    pandas.DataFrame
-        A converted copy.
-    """
-    check_units(units)
-    out = frame.copy()
-    renames = {}
-    for column, (name, kind) in spec.items():
-        if column not in out.columns:
-            raise InputError(f"column to convert is missing; columns are {list(out.columns)}",
-                             column)
-        out[column] = in_report_units(out[column].to_numpy(float), kind, units)
-        renames[column] = labelled(name, kind, units)
-    return out.rename(columns=renames)
 
 
 def convert_by_component(frame, columns, units, component="component"):
@@ -201,18 +169,6 @@ def _station_index(result, station):
     if str(station) not in ids:
         raise InputError(f"unknown station; valid ids are {ids}", station)
     return ids.index(str(station))
-
-
-def _digest_frame(inputs_digest):
-    if inputs_digest is None:
-        return None
-    if isinstance(inputs_digest, pd.DataFrame):
-        return inputs_digest
-    if isinstance(inputs_digest, Mapping):
-        return pd.DataFrame({"input": [str(k) for k in inputs_digest],
-                             "entry": list(inputs_digest.values())})
-    raise InputError("inputs_digest must be a dict or a DataFrame",
-                     type(inputs_digest).__name__)
 
 
 def study_table(result, units="SI"):
@@ -395,7 +351,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
 
 def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations):
     """The sheets of the loads workbook, in order."""
-    digest = _digest_frame(inputs_digest)
+    digest = digest_frame(inputs_digest)
     summary = [
         Section("Inputs", digest) if digest is not None
         else Section("Inputs", note="no input digest given"),
@@ -429,3 +385,36 @@ def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations):
         "Ultimate": ultimate,
         "Hulls": hulls,
     }
+
+
+def compute(study):
+    """Run the loads analysis read from a workbook.
+
+    Parameters
+    ----------
+    study : WorkbookStudy
+        With ``study.loads`` (:class:`~slingloads.analyses.loads.LoadsStudy`).
+
+    Returns
+    -------
+    LoadsResult
+
+    Raises
+    ------
+    InputError
+        If the workbook does not ask for the loads analysis.
+    """
+    if study.loads is None:
+        raise InputError("the workbook does not ask for the loads analysis (Study sheet: "
+                         "'run loads' is no)", file=study.path, sheet="Study")
+    return study.loads.run()
+
+
+def write(result, out_dir, stem, units, study):
+    """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
+    run's outputs ``out_dir``, with the study's inputs digest and hull options."""
+    return write_loads_outputs(result, out_dir, stem, units=units,
+                               inputs_digest=study.digest(),
+                               hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
+                               hull_stations=study.options.get("hull stations"),
+                               input_paths=[study.path])

@@ -1,0 +1,91 @@
+"""Study-sheet parameters and sheets of the airframe, which every analysis reads.
+
+The carried helicopter's mass items, cut stations and hardpoints, the loads reference axis and
+the mast axis, and the aerodynamic tables of the fuselage, the fin and the parachute with
+their reference values. Conventions: ``docs/conventions.md``. Types:
+:mod:`slingloads.io.common.schema`.
+"""
+
+from __future__ import annotations
+
+from slingloads.io.common.schema import TEXT, Column, Parameter, Section, TableSheet
+
+#: Kinds of the Hardpoints rows.
+HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference")
+
+PARAMETERS = (
+    Parameter("reference axis y", "length", "m", 0.0,
+              "Butt line of the loads reference axis (parallel to x).", "airframe"),
+    Parameter("reference axis z", "length", "m", 0.0,
+              "Water line of the loads reference axis.", "airframe"),
+    Parameter("mast axis x", "dimensionless", "", 0.0, "Mast direction, x component.", "hook"),
+    Parameter("mast axis y", "dimensionless", "", 0.0, "Mast direction, y component.", "hook"),
+    Parameter("mast axis z", "dimensionless", "", 1.0, "Mast direction, z component.", "hook"),
+    Parameter("fuselage reference area", "area", "m^2", 0.0,
+              "Reference area of the FuselageAero coefficients (needed with that sheet).",
+              "aero"),
+    Parameter("fuselage reference length", "length", "m", 0.0,
+              "Reference length of the FuselageAero moment coefficients.", "aero"),
+    Parameter("fin area", "area", "m^2", 0.0, "Reference area of the FinAero table.", "aero"),
+    Parameter("fin efficiency", "dimensionless", "", 0.5,
+              "Share of the intact fin's side force kept by the cut-down fin (paper: ~0.5).",
+              "aero"),
+    Parameter("parachute wake ratio", "dimensionless", "", 0.95,
+              "Dynamic pressure at the canopy / free stream (paper: 0.95).", "parachute"),
+    Parameter("parachute line length", "length", "m", 10.0,
+              "Line length from the fin attachment to the canopy.", "parachute"),
+)
+
+SHEETS = (
+    TableSheet("MassItems", (
+        Column("id", TEXT, help="Unique name of the mass item."),
+        Column("description", TEXT, required=False, default="", help="Free text."),
+        Column("mass", "mass", "kg", help="Mass, > 0."),
+        Column("x", "length", "m", help="Fuselage station of the item's CG (x aft)."),
+        Column("y", "length", "m", help="Butt line (y right)."),
+        Column("z", "length", "m", help="Water line (z up)."),
+        Column("Ixx", "inertia", "kg m^2", False, 0.0, "Own inertia about the item's CG."),
+        Column("Iyy", "inertia", "kg m^2", False, 0.0, "Own inertia about the item's CG."),
+        Column("Izz", "inertia", "kg m^2", False, 0.0, "Own inertia about the item's CG."),
+        Column("Ixy", "inertia", "kg m^2", False, 0.0, "Product of inertia (tensor sign)."),
+        Column("Ixz", "inertia", "kg m^2", False, 0.0, "Product of inertia (tensor sign)."),
+        Column("Iyz", "inertia", "kg m^2", False, 0.0, "Product of inertia (tensor sign)."),
+    ), required=True, help="Lumped masses of the carried helicopter in its transport "
+       "configuration."),
+    TableSheet("Stations", (
+        Column("id", TEXT, help="Station name, e.g. FS2300."),
+        Column("x", "length", "m", help="Cut station x, strictly increasing."),
+    ), required=True, help="Cut stations where internal loads are reported."),
+    TableSheet("Hardpoints", (
+        Column("id", TEXT, help="Unique name."),
+        Column("kind", TEXT, help="hub | mast_foot | chute | fin_cp | aero_reference"),
+        Column("x", "length", "m"),
+        Column("y", "length", "m"),
+        Column("z", "length", "m"),
+        Column("weight", "dimensionless", "", False, 1.0,
+               "Share weight of a mast foot in the rigid-body (RBE3-like) distribution."),
+    ), required=True, help="Where external loads enter: rotor hub (hook), mast feet on the "
+       "transmission deck, parachute attachment on the fin, fin centre of pressure, moment "
+       "reference point of the fuselage aerodynamic coefficients."),
+    TableSheet("AeroPoints", (
+        Column("x", "length", "m", help="Point of the loads reference axis."),
+        Column("weight", "dimensionless", "", help="Share of the fuselage aero load, > 0."),
+    ), help="Optional: how the fuselage aerodynamic load is spread along the reference axis "
+       "(default: mid-points between stations, equal weights)."),
+    TableSheet("FuselageAero", (
+        Column("alpha", "angle", "deg"), Column("beta", "angle", "deg"),
+        Column("CD", "dimensionless"), Column("CY", "dimensionless"),
+        Column("CL", "dimensionless"), Column("Cl", "dimensionless"),
+        Column("Cm", "dimensionless"), Column("Cn", "dimensionless"),
+    ), help="Fuselage coefficients on a full alpha x beta grid (conventions: docs/"
+       "conventions.md). Never extrapolated."),
+    TableSheet("FinAero", (
+        Column("beta", "angle", "deg"), Column("CY", "dimensionless"),
+    ), help="Intact fin side-force coefficient against sideslip, on 'fin area'."),
+    TableSheet("ParachuteCD", (
+        Column("alpha", "angle", "deg"), Column("CD", "dimensionless"),
+    ), help="Optional parachute drag coefficient against canopy angle of attack "
+       "(default: 0.95 within +-8 deg)."),
+)
+
+SECTION = Section("airframe", parameters=PARAMETERS, sheets=SHEETS)

@@ -1,0 +1,123 @@
+"""The registry of analyses: what a workbook may ask for, and where each analysis's io lives.
+
+Each analysis has a folder ``slingloads/io/<folder>/`` with
+
+* ``schema.py``: ``SECTION``, its Study-sheet parameters and sheets
+  (:mod:`slingloads.io.common.schema` types);
+* ``reader.py``: ``read(reader, params, study) -> inputs``, building the analysis's inputs
+  (SI) from the workbook, with located errors;
+* ``report.py``: ``compute(study) -> result`` (orchestration: the physics is in
+  :mod:`slingloads.analyses`) and ``write(result, out_dir, stem, units, study)``, publishing
+  through :func:`slingloads.io.common.atomic.atomic_outputs`;
+* ``plots.py``: the figures of the report.
+
+The study builder (:func:`slingloads.io.study.read_study`), the blank template
+(:mod:`slingloads.io.template`) and the command line (:mod:`slingloads.cli`) all follow this
+list. Modules are imported on first use, so listing the analyses costs nothing
+(``slingloads --help`` stays fast).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from importlib import import_module
+
+from slingloads.io.airframe.schema import SECTION as AIRFRAME
+from slingloads.io.common.schema import FLAG, TEXT, Parameter, Section
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """One analysis a workbook may ask for.
+
+    Parameters
+    ----------
+    name : str
+        Name in the Study sheet (``run <name>``) and in the reports.
+    subcommand : str
+        Its command of ``slingloads``.
+    folder : str
+        Its io package under ``slingloads.io``.
+    summary : str
+        One line for ``slingloads --help``.
+    run_help : str
+        Description of the ``run <name>`` Study parameter.
+    run_default : str
+        ``"yes"`` or ``"no"``.
+    options : str
+        Name of a function of its reader, ``options(params, study) -> dict``, called for every
+        workbook whether or not the analysis runs (report options); empty for none.
+    """
+
+    name: str
+    subcommand: str
+    folder: str
+    summary: str
+    run_help: str
+    run_default: str = "no"
+    options: str = ""
+
+    @property
+    def run_parameter(self):
+        """The Study parameter that asks for this analysis."""
+        return f"run {self.name}"
+
+    def module(self, part):
+        """Its ``schema``, ``reader``, ``report`` or ``plots`` module (imported on first use)."""
+        return import_module(f"slingloads.io.{self.folder}.{part}")
+
+    @property
+    def section(self):
+        """Its Study-sheet parameters and sheets."""
+        return self.module("schema").SECTION
+
+    def read(self, reader, params, study):
+        """Build its inputs from the workbook."""
+        return self.module("reader").read(reader, params, study)
+
+    def report_options(self, params, study):
+        """Its report options (checked for every workbook), or an empty dict."""
+        if not self.options:
+            return {}
+        return getattr(self.module("reader"), self.options)(params, study)
+
+    def compute(self, study):
+        """Run it on a study read from a workbook."""
+        return self.module("report").compute(study)
+
+    def write(self, result, out_dir, stem, units, study):
+        """Write its report into the run's outputs ``out_dir``."""
+        return self.module("report").write(result, out_dir, stem, units, study)
+
+
+#: Every analysis, in the order they are read, run and written.
+ANALYSES = (
+    Analysis("loads", "loads", "loads",
+             "structural loads only: CS-29.865 cases, inertia relief, SFBM, envelopes",
+             "Run the structural loads analysis (SFBM).", "yes", options="report_options"),
+    Analysis("lateral", "lateral", "lateral", "lateral-step pendulum study only",
+             "Run the lateral-step pendulum study (sheets Lateral*)."),
+    Analysis("chute sizing", "chute", "chute", "parachute sizing only",
+             "Run the parachute sizing (sheets Chute*)."),
+)
+
+#: Parameters of the whole study: its name and which analyses to run.
+GENERAL = Section("general", parameters=(
+    Parameter("study name", TEXT, "", "study", "Name printed on the reports."),
+    *(Parameter(a.run_parameter, FLAG, "", a.run_default, a.run_help) for a in ANALYSES),
+))
+
+
+def sections():
+    """Every section: the general parameters, the airframe, then each analysis."""
+    return [GENERAL, AIRFRAME, *(a.section for a in ANALYSES)]
+
+
+def all_parameters():
+    """Every Study-sheet parameter by lower-case name."""
+    return {p.name.lower(): p for s in sections() for p in s.parameters}
+
+
+def all_sheets():
+    """Every table sheet by name."""
+    return {t.name: t for s in sections() for t in s.sheets}

@@ -1,0 +1,65 @@
+"""Study-sheet parameters and sheets of the structural loads analysis.
+
+The loads also read the airframe's sheets and parameters (:mod:`slingloads.io.airframe.schema`).
+Method: ``docs/loads-method.md``. Types: :mod:`slingloads.io.common.schema`.
+"""
+
+from __future__ import annotations
+
+from slingloads.io.common.schema import FLAG, INTEGER, TEXT, Column, Parameter, Section, TableSheet
+
+PARAMETERS = (
+    Parameter("airspeed EAS", "speed", "kt", 100.0,
+              "Equivalent airspeed of the loads cases (paper: 100 KEAS).", "flight"),
+    Parameter("density altitude", "length", "ft", 0.0,
+              "ISA density altitude (paper: 0, 5000, 10000 ft).", "flight"),
+    Parameter("hook load factor Nz", "dimensionless", "", 2.5,
+              "CS-29.865(a): limit hook load = Nz x carried aircraft weight.", "hook"),
+    Parameter("hook angle from mast", "angle", "deg", 30.0,
+              "Inclination of the off-axis hook loads (CS-29.865: 30 deg unless a smaller "
+              "angle is justified).", "hook"),
+    Parameter("hook azimuths", INTEGER, "", 8,
+              "Number of off-axis hook directions evenly spread in azimuth.", "hook"),
+    Parameter("hook along mast axis", FLAG, "", "yes",
+              "Include the hook load along the mast axis.", "hook"),
+    Parameter("generate case matrix", FLAG, "", "yes",
+              "Generate hook direction x aero point x parachute on/off (cases on the "
+              "LoadCases sheet are added).", "cases"),
+    Parameter("ultimate factor", "dimensionless", "", 1.5,
+              "Factor of safety, CS 29.303 (ultimate = factor x limit).", "cases"),
+    Parameter("parachute area", "area", "m^2", 0.0,
+              "Flat-plate area of the drogue parachute; 0 = no parachute.", "parachute"),
+    Parameter("parachute opening factor", "dimensionless", "", 1.0,
+              "Opening-load factor on the parachute drag (>= 1).", "parachute"),
+    Parameter("parachute line direction", TEXT, "", "relative wind",
+              "'relative wind' or 'fuselage axis'.", "parachute"),
+    Parameter("hull stations", TEXT, "", "",
+              "Comma-separated station ids for the 2-D envelopes (empty: three stations "
+              "around the mast).", "report"),
+    Parameter("hull pairs", TEXT, "", "Vy-Mz, Vz-My",
+              "Comma-separated component pairs for the 2-D envelopes.", "report"),
+)
+
+SHEETS = (
+    TableSheet("AeroEnvelope", (
+        Column("id", TEXT), Column("alpha", "angle", "deg"), Column("beta", "angle", "deg"),
+    ), help="Points of the angle-of-attack / sideslip envelope (corners and centre)."),
+    TableSheet("LoadCases", (
+        Column("id", TEXT, help="Unique case id."),
+        Column("hook", TEXT, help="AXIAL, AZ000, AZ045, ... or NONE."),
+        Column("aero", TEXT, help="An AeroEnvelope id or NONE."),
+        Column("chute", FLAG, help="Parachute drag on (yes/no)."),
+        Column("description", TEXT, required=False, default=""),
+    ), help="Optional: cases listed by hand (added to the generated matrix)."),
+    TableSheet("PreviousEnvelope", (
+        Column("x", "length", "m"),
+        Column("Vx min", "force", "N"), Column("Vx max", "force", "N"),
+        Column("Vy min", "force", "N"), Column("Vy max", "force", "N"),
+        Column("Vz min", "force", "N"), Column("Vz max", "force", "N"),
+        Column("Mx min", "moment", "N m"), Column("Mx max", "moment", "N m"),
+        Column("My min", "moment", "N m"), Column("My max", "moment", "N m"),
+        Column("Mz min", "moment", "N m"), Column("Mz max", "moment", "N m"),
+    ), help="Optional: the previous design envelope (limit loads) for the exceedance check."),
+)
+
+SECTION = Section("loads", parameters=PARAMETERS, sheets=SHEETS)
