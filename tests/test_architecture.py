@@ -127,3 +127,18 @@ def test_the_cycle_check_finds_a_circle():
     """The check above can fail: a made-up graph with a circle is caught."""
     assert _cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}}) == ["a", "b", "c", "a"]
     assert _cycle({"a": {"b"}, "b": set()}) is None
+
+
+def test_help_imports_no_heavy_library():
+    """`slingloads --help` lists the analyses from the registry without importing numpy,
+    pandas, pint, openpyxl, matplotlib or scipy (the analyses' modules load on first use)."""
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom slingloads import cli\ntry:\n    cli.main(['--help'])\n"
+            "except SystemExit:\n    pass\n"
+            "heavy = ('numpy', 'pandas', 'pint', 'openpyxl', 'matplotlib', 'scipy')\n"
+            "print('loaded:' + ','.join(m for m in heavy if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.strip().splitlines()
+    assert out[-1] == "loaded:", f"--help imported {out[-1]}"
