@@ -46,6 +46,20 @@ flat plate after the stall,
     C_Y &= -[(1 - w)\\, C_{Y,max} \\tanh(\\beta/\\beta_s) + w\\, C_{N,plate} \\sin\\beta]
 
 with ``C_N,plate = 1.17`` (square flat plate normal to the flow, Hoerner).
+
+Sideslip runs over the whole circle, -180 to 180 deg, so that a carried helicopter that turns
+broadside or tail first stays inside its tables. The formulas above are continued unchanged
+beyond +-90 deg (they are periodic); the fin beyond its stall is the flat plate, whose normal
+force keeps the physical sign in reverse flow.
+
+Horizontal tail (full-tail configuration of the transport without parachute, paper section 5),
+normal force along +z on its own area against its local angle of attack, the same shape as the
+fin with ``alpha`` in place of ``beta`` and the opposite sign (a flow from below pushes the
+tail up):
+
+.. math::
+
+    C_N = (1 - w)\, C_{N,max} \tanh(\alpha/\alpha_s) + w\, C_{N,plate} \sin\alpha
 """
 
 from __future__ import annotations
@@ -57,18 +71,22 @@ import pandas as pd
 
 OUT = Path(__file__).resolve().parents[2] / "slingloads" / "data"
 
-ALPHA_DEG = np.arange(-20.0, 20.0 + 1e-9, 5.0)
-BETA_DEG = np.arange(-90.0, 90.0 + 1e-9, 2.0)
+ALPHA_DEG = np.arange(-40.0, 40.0 + 1e-9, 5.0)
+BETA_DEG = np.arange(-180.0, 180.0 + 1e-9, 2.0)
+#: Local angle of attack of the horizontal tail (full-tail configuration only). [deg]
+TAIL_ALPHA_DEG = np.arange(-180.0, 180.0 + 1e-9, 2.0)
 
 #: Shape parameters of each generic aircraft. HC2 is the less stable in yaw (larger fuselage
 #: yawing-moment amplitude, and a smaller fin: see slingloads/models/sample_aircraft.py).
 SHAPES = {
     "HC1": dict(a1=2.1, a2=2.0, cd0=0.30, cl0=0.05, cla=0.9, cl_roll=0.05, cm0=-0.02,
                 cma=0.6, an=0.10, fin_cymax=1.1, fin_beta_s=19.0, fin_stall=28.0,
-                fin_width=3.0, fin_plate=1.17),
+                fin_width=3.0, fin_plate=1.17, ht_cnmax=0.9, ht_alpha_s=12.0,
+                ht_stall=16.0, ht_width=3.0),
     "HC2": dict(a1=2.3, a2=2.1, cd0=0.33, cl0=0.04, cla=0.8, cl_roll=0.06, cm0=-0.03,
                 cma=0.7, an=0.12, fin_cymax=1.0, fin_beta_s=18.0, fin_stall=26.0,
-                fin_width=3.0, fin_plate=1.17),
+                fin_width=3.0, fin_plate=1.17, ht_cnmax=0.85, ht_alpha_s=12.0,
+                ht_stall=15.0, ht_width=3.0),
 }
 
 
@@ -103,6 +121,16 @@ def fin_table(p):
     return _clean(pd.DataFrame({"beta [deg]": b_deg, "CY": cy}))
 
 
+def htail_table(p):
+    """Horizontal-tail normal-force table (full-tail configuration) against its local alpha."""
+    a_deg = TAIL_ALPHA_DEG
+    a = np.radians(a_deg)
+    w = 0.5 * (1.0 + np.tanh((np.abs(a_deg) - p["ht_stall"]) / p["ht_width"]))
+    attached = p["ht_cnmax"] * np.tanh(a_deg / p["ht_alpha_s"])
+    plate = p["fin_plate"] * np.sin(a)
+    return _clean(pd.DataFrame({"alpha [deg]": a_deg, "CN": (1.0 - w) * attached + w * plate}))
+
+
 def _clean(frame):
     """Round to 6 decimals and remove negative zeros so the files diff cleanly."""
     frame = frame.round(6)
@@ -116,7 +144,8 @@ def main():
         fuselage_table(p).to_csv(OUT / f"{stem}_fuselage.csv", index=False,
                                  float_format="%.6f")
         fin_table(p).to_csv(OUT / f"{stem}_fin.csv", index=False, float_format="%.6f")
-        print(f"wrote {stem}_fuselage.csv and {stem}_fin.csv to {OUT}")
+        htail_table(p).to_csv(OUT / f"{stem}_htail.csv", index=False, float_format="%.6f")
+        print(f"wrote {stem}_fuselage.csv, {stem}_fin.csv and {stem}_htail.csv to {OUT}")
 
 
 if __name__ == "__main__":

@@ -30,6 +30,31 @@ def paper_cd_table():
                    what="parachute")
 
 
+#: Canopy drag coefficient the extended table keeps broadside and in reverse flow. [-]
+COLLAPSED_CD = 0.4
+
+
+def extended_cd_table(cd=PAPER_CD, valid=PAPER_CD_RANGE, collapsed=COLLAPSED_CD):
+    """GENERIC canopy drag table over the whole circle of canopy angle of attack.
+
+    The paper's CD (0.95) over +-8 deg, then a cosine-squared fall to ``collapsed`` at 90 deg,
+    held beyond (flow from the side or from behind: a partly collapsed canopy). Only the
+    +-8 deg part comes from the paper; the rest is an assumption of this generic set, there so
+    that a hinged parachute can be flown from hover, where it hangs below its attachment and
+    meets the flow at up to 90 deg as the airspeed builds.
+
+    Returns
+    -------
+    Table1D
+        ``CD`` against alpha, -180 to 180 deg every 2 deg (and at +-``valid``).
+    """
+    grid = np.union1d(np.radians(np.arange(-180.0, 180.0 + 1e-9, 2.0)), [-valid, valid])
+    a = np.abs(grid)
+    fall = np.clip((a - valid) / (0.5 * np.pi - valid), 0.0, 1.0)
+    values = collapsed + (cd - collapsed) * np.cos(0.5 * np.pi * fall) ** 2
+    return Table1D(grid, {"CD": values}, angle_name="alpha", what="parachute")
+
+
 @dataclass(frozen=True)
 class Parachute:
     """Stabilising drogue parachute.

@@ -1,0 +1,21 @@
+"""Multibody analyses of the towed system (paper sections 4.3-5.3): trim, linear modes,
+manoeuvres and their metrics, built on :mod:`slingloads.models.multibody`.
+
+>>> from slingloads.analyses.multibody import trim, linearise, simulate  # doctest: +SKIP
+"""
+
+from .manoeuvres import (
+    DISTURBANCES,
+    Manoeuvre,
+    forward_acceleration,
+    free_response,
+    gust_response,
+    paper_manoeuvres,
+    wind_ramp,
+)
+from .simulate import RunResult, Simulation, simulate, simulate_runs
+from .trim import LinearModel, Trim, linearise, trim
+
+__all__ = ["DISTURBANCES", "LinearModel", "Manoeuvre", "RunResult", "Simulation", "Trim",
+           "forward_acceleration", "free_response", "gust_response", "linearise",
+           "paper_manoeuvres", "simulate", "simulate_runs", "trim", "wind_ramp"]

@@ -1,0 +1,169 @@
+"""Manoeuvres of the towed system (paper sections 4.4 and 5.2).
+
+A :class:`Manoeuvre` is what the carrier does, what the air does and how the run starts:
+
+* a carrier trajectory (:mod:`slingloads.models.multibody.carrier`: steady flight, forward
+  acceleration from hover, a lateral hook motion);
+* a wind (:class:`~slingloads.models.multibody.environment.Wind`: steady, gust in any
+  direction, frontal ramp);
+* the start: trimmed at the system airspeed, or in hover (zero airspeed) for the forward
+  accelerations and wind ramps, plus an optional initial disturbance (free response).
+
+Builders for the paper's manoeuvres: :func:`free_response`, :func:`gust_response`,
+:func:`forward_acceleration`, :func:`wind_ramp`, and :func:`paper_manoeuvres` (the whole list:
+free response, +-30 ft/s lateral gusts of four shapes, accelerations to 40/60/80/100 KIAS, wind
+ramps to 20/30/40/60/80 kt).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from slingloads.errors import InputError
+from slingloads.models.atmosphere import true_airspeed
+from slingloads.models.gusts import GUST_VELOCITY, make_gust
+from slingloads.models.multibody.carrier import ForwardAcceleration, SteadyFlight
+from slingloads.models.multibody.environment import Wind, WindRamp
+from slingloads.units import KNOT
+
+#: Initial disturbances a free response may apply, and their units.
+DISTURBANCES = {"yaw": "rad", "pitch": "rad", "roll": "rad", "yaw_rate": "rad/s",
+                "longitudinal": "m", "lateral": "m", "vertical": "m", "theta": "rad",
+                "psi": "rad"}
+#: Default disturbance of the free response: 10 deg of yaw.
+DEFAULT_DISTURBANCE = {"yaw": np.radians(10.0)}
+#: Default seed of the runs from hover: 2 deg of yaw, so that a symmetric system's lateral and
+#: directional modes are excited at all (a perfectly symmetric start stays symmetric).
+HOVER_SEED = {"yaw": np.radians(2.0)}
+
+
+@dataclass(frozen=True)
+class Manoeuvre:
+    """One manoeuvre (module notes).
+
+    Parameters
+    ----------
+    name : str
+    trajectory : carrier trajectory
+        Default: steady flight at the system airspeed.
+    wind : Wind
+    disturbance : dict
+        Initial offsets from trim, keys of :data:`DISTURBANCES` (yaw, pitch, roll [rad] added
+        to the trim attitude; yaw_rate [rad/s]; longitudinal, lateral, vertical [m] CG
+        displacement in earth axes; theta, psi [rad] of the parachute line).
+    from_hover : bool, optional
+        Start trimmed in hover rather than at the system airspeed (default: the trajectory's
+        choice, True for a forward acceleration, and True for a wind ramp).
+    """
+
+    name: str
+    trajectory: object = field(default_factory=SteadyFlight)
+    wind: Wind = field(default_factory=Wind)
+    disturbance: dict = field(default_factory=dict)
+    from_hover: bool | None = None
+
+    def __post_init__(self):
+        bad = [k for k in self.disturbance if k not in DISTURBANCES]
+        if bad:
+            raise InputError(f"{bad[0]!r} is not a valid disturbance; valid disturbances are "
+                             f"{list(DISTURBANCES)}", bad[0])
+        for key, value in self.disturbance.items():
+            if not np.isfinite(float(value)):
+                raise InputError(f"disturbance {key} must be a finite number "
+                                 f"[{DISTURBANCES[key]}]", value)
+        if not hasattr(self.trajectory, "command"):
+            raise InputError("a manoeuvre's trajectory needs command(t, v0)",
+                             type(self.trajectory).__name__)
+        if not isinstance(self.wind, Wind):
+            raise InputError("a manoeuvre's wind must be a Wind", type(self.wind).__name__)
+        if self.from_hover is None:
+            hover = bool(getattr(self.trajectory, "from_hover", False)) or (
+                self.wind.ramp is not None)
+            object.__setattr__(self, "from_hover", hover)
+
+    @property
+    def breakpoints(self):
+        """Times at which an input jumps or kinks. [s]"""
+        return tuple(sorted(set(tuple(self.trajectory.breakpoints) + self.wind.breakpoints)))
+
+    @property
+    def input_end(self):
+        """Time after which nothing is commanded any more (0 for a free response; None for a
+        sustained input). [s]"""
+        gust = self.wind.gust
+        ends = [0.0]
+        if gust is not None:
+            end = getattr(gust, "end", None)
+            if end is None:
+                return None
+            ends.append(end)
+        if self.wind.ramp is not None:
+            ends.append(self.wind.ramp.end_time)
+        ends.extend(self.trajectory.breakpoints)
+        return max(ends)
+
+    def describe(self):
+        parts = [self.trajectory.describe(), self.wind.describe()]
+        if self.disturbance:
+            parts.append("initial " + ", ".join(
+                f"{k} {np.degrees(v) if DISTURBANCES[k].startswith('rad') else v:.3g}"
+                f"{' deg' if DISTURBANCES[k] == 'rad' else ' deg/s' if k == 'yaw_rate' else ' m'}"
+                for k, v in self.disturbance.items()))
+        return "; ".join(parts) + ("; from hover" if self.from_hover else "")
+
+
+def free_response(disturbance=None, name="free response"):
+    """Free response from an initial disturbance (default: 10 deg of yaw) at trim."""
+    return Manoeuvre(name, disturbance=dict(DEFAULT_DISTURBANCE if disturbance is None
+                                            else disturbance))
+
+
+def gust_response(kind="finite", amplitude=GUST_VELOCITY, onset=5.0, duration=10.0,
+                  direction="lateral", name=None):
+    """Response to a gust of :mod:`slingloads.models.gusts` (default: 30 ft/s lateral, 10 s).
+
+    Parameters
+    ----------
+    kind : str
+        "step", "finite", "1-cosine" or "continuous" (sustained).
+    amplitude : float
+        [m/s]
+    onset, duration : float
+        [s]
+    direction : str or array_like
+        See :data:`~slingloads.models.multibody.environment.GUST_DIRECTIONS`.
+    """
+    gust = make_gust(kind, amplitude, onset, duration)
+    label = name or f"{direction} gust {kind} {amplitude / 0.3048:+.0f} ft/s"
+    return Manoeuvre(label, wind=Wind(gust=gust, direction=direction))
+
+
+def forward_acceleration(target_ias, density_altitude=0.0, acceleration=1.0, onset=5.0,
+                         jerk_time=2.0, name=None, disturbance=None):
+    """Forward acceleration from hover to ``target_ias`` (equivalent airspeed) [m/s], from
+    :data:`HOVER_SEED` unless another ``disturbance`` is given."""
+    tas = float(true_airspeed(target_ias, density_altitude))
+    label = name or f"accelerate to {target_ias / KNOT:.0f} KIAS"
+    return Manoeuvre(label, trajectory=ForwardAcceleration(tas, acceleration, onset, jerk_time),
+                     disturbance=dict(HOVER_SEED if disturbance is None else disturbance))
+
+
+def wind_ramp(target, rate=0.5, onset=5.0, name=None, disturbance=None):
+    """Hovering carrier, head wind rising from 0 to ``target`` [m/s] at ``rate`` [m/s^2], from
+    :data:`HOVER_SEED` unless another ``disturbance`` is given."""
+    label = name or f"wind ramp to {target / KNOT:.0f} kt"
+    return Manoeuvre(label, wind=Wind(ramp=WindRamp(target, rate, onset)),
+                     disturbance=dict(HOVER_SEED if disturbance is None else disturbance))
+
+
+def paper_manoeuvres(density_altitude=0.0):
+    """The paper's manoeuvre list (sections 4.4 and 5.2)."""
+    out = [free_response()]
+    for sign in (1.0, -1.0):
+        for kind in ("step", "finite", "1-cosine", "continuous"):
+            out.append(gust_response(kind, sign * GUST_VELOCITY))
+    out += [forward_acceleration(v * KNOT, density_altitude) for v in (40, 60, 80, 100)]
+    out += [wind_ramp(v * KNOT) for v in (20, 30, 40, 60, 80)]
+    return out

@@ -1,0 +1,343 @@
+"""Equations of motion of the towed system, compiled (derivation: ``docs/multibody.md``).
+
+State vector (earth axes X aft along the flight path, Y right, Z up; body axes x aft, y right,
+z up), :data:`STATES`:
+
+==========  ===========================================================================
+0-2         carrier (hook) velocity V_c, earth axes [m/s]
+3-5         HC centre of gravity relative to the hook, p = r - r_hook, earth axes [m]
+6-8         HC CG velocity v, earth axes [m/s]
+9-12        attitude quaternion q (body to earth) [-]
+13-15       body rates omega = (p, q, r), body axes [rad/s]
+16-19       parachute hinge angles theta, psi and their rates [rad, rad/s]
+==========  ===========================================================================
+
+Newton-Euler for the HC about its CG, with the hinged canopy (mass m_p at s = A + L_p e) and
+the line tension T_l as the unknowns of one 3 x 3 system (body axes, a the CG acceleration):
+
+.. math::
+
+    m a &= F + T_l e \\\\
+    I \\dot\\omega &= M - \\omega \\times I\\omega + T_l\\, A \\times e \\\\
+    m_p [a + \\dot\\omega \\times s + L_p (e_\\theta \\ddot\\theta + e_\\psi \\ddot\\psi)]
+        + T_l e &= D + m_p g - m_p [\\omega\\times(\\omega\\times s)
+        + 2 L_p\\, \\omega \\times \\dot e + L_p\\, e_2]
+
+F, M: cable, gravity and aerodynamic loads on the HC (M about the CG); D: canopy drag;
+e_2 the velocity-squared part of the line's second derivative. Eliminating a and omega-dot
+(both affine in T_l) leaves three equations in theta'', psi'', T_l, solved by Cramer's rule.
+
+Parameters of a run are one float64 vector, :data:`PARAMETERS` (positions from the CG, body
+axes). The carrier's drive at a time (wind, commanded acceleration and velocity) is a vector of
+nine, :data:`DRIVE`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from slingloads.models.multibody._jit import jit
+from slingloads.models.multibody.cable import cable_tension
+from slingloads.models.multibody.lookup import interp1
+from slingloads.models.multibody.local_flow import flow_at, fuselage_loads, surface_force
+from slingloads.models.multibody.parachute_line import (
+    HINGE_MARGIN,
+    line_curvature,
+    line_direction,
+)
+from slingloads.models.multibody.rigid_body import (
+    cross,
+    dcm,
+    quaternion_rate,
+    to_body,
+    to_earth,
+)
+
+STATES = ("Vc_X", "Vc_Y", "Vc_Z", "p_X", "p_Y", "p_Z", "v_X", "v_Y", "v_Z",
+          "q0", "q1", "q2", "q3", "p", "q", "r", "theta", "psi", "theta_dot", "psi_dot")
+N_STATES = len(STATES)
+
+PARAMETERS = (
+    "mass", "Iinv_xx", "Iinv_xy", "Iinv_xz", "Iinv_yx", "Iinv_yy", "Iinv_yz", "Iinv_zx",
+    "Iinv_zy", "Iinv_zz", "I_xx", "I_xy", "I_xz", "I_yx", "I_yy", "I_yz", "I_zx", "I_zy", "I_zz",
+    "hub_x", "hub_y", "hub_z", "ref_x", "ref_y", "ref_z", "fuselage_area", "fuselage_length",
+    "fin_x", "fin_y", "fin_z", "fin_area_eff", "tail_x", "tail_y", "tail_z", "tail_area_eff",
+    "chute_x", "chute_y", "chute_z", "chute_mode", "chute_drag_area", "chute_mass",
+    "chute_line", "cable_length", "cable_stiffness", "cable_damping", "carrier_free",
+    "carrier_mass", "carrier_drag_area", "carrier_gain", "pull_X", "pull_Y", "pull_Z", "density",
+    "gravity", "v_cut", "lock_translation", "lock_tilt", "lock_yaw", "mast_x", "mast_y",
+    "mast_z")
+N_PARAMETERS = len(PARAMETERS)
+DRIVE = ("wind_X", "wind_Y", "wind_Z", "accel_X", "accel_Y", "accel_Z", "cmd_X", "cmd_Y",
+         "cmd_Z")
+
+#: Parachute models (``chute_mode``).
+CHUTE_NONE, CHUTE_HINGED, CHUTE_QUASI_STATIC = 0.0, 1.0, 2.0
+
+#: Quantities :func:`evaluate` reports besides the derivative (``want=True``).
+INFO = ("tension", "cable_span", "d_X", "d_Y", "d_Z", "hub_x", "hub_y", "hub_z", "alpha",
+        "beta", "airspeed", "fin_angle", "tail_angle", "line_tension", "chute_alpha",
+        "line_x", "line_y", "line_z", "thrust_X", "thrust_Y", "thrust_Z", "fus_fx", "fus_fy",
+        "fus_fz", "fus_mx", "fus_my", "fus_mz", "chute_drag", "fin_force", "tail_force")
+N_INFO = len(INFO)
+
+#: Bits of the flag :func:`evaluate` returns: the table or limit a run left.
+FLAGS = {1: "fuselage table's alpha range", 32: "fuselage table's beta range",
+         2: "fin table", 4: "horizontal-tail table", 8: "parachute CD table",
+         16: "parachute hinge range (line along body y)"}
+
+_HINGE_COS = math.sin(HINGE_MARGIN)
+
+
+@jit
+def _solve3(c1, c2, c3, b):
+    """Solve [c1 c2 c3] y = b (columns given) by Cramer's rule."""
+    x23 = cross(c2[0], c2[1], c2[2], c3[0], c3[1], c3[2])
+    det = c1[0] * x23[0] + c1[1] * x23[1] + c1[2] * x23[2]
+    xb3 = cross(b[0], b[1], b[2], c3[0], c3[1], c3[2])
+    y1 = (b[0] * x23[0] + b[1] * x23[1] + b[2] * x23[2]) / det
+    y2 = (c1[0] * xb3[0] + c1[1] * xb3[1] + c1[2] * xb3[2]) / det
+    x2b = cross(c2[0], c2[1], c2[2], b[0], b[1], b[2])
+    y3 = (c1[0] * x2b[0] + c1[1] * x2b[1] + c1[2] * x2b[2]) / det
+    return y1, y2, y3
+
+
+@jit
+def _mat(P, k, x, y, z):
+    """3 x 3 matrix stored row-major from P[k] times (x, y, z)."""
+    return (P[k] * x + P[k + 1] * y + P[k + 2] * z,
+            P[k + 3] * x + P[k + 4] * y + P[k + 5] * z,
+            P[k + 6] * x + P[k + 7] * y + P[k + 8] * z)
+
+
+@jit
+def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v,
+             dx, info, want):
+    """State derivative ``dx`` of state ``x``; the quantities :data:`INFO` in ``info`` if
+    ``want``. Returns the flag of :data:`FLAGS` (0 when every table was inside its range)."""
+    flag = 0
+    vc0, vc1, vc2 = x[0], x[1], x[2]
+    p0, p1, p2 = x[3], x[4], x[5]
+    v0, v1, v2 = x[6], x[7], x[8]
+    qn = math.sqrt(x[9] * x[9] + x[10] * x[10] + x[11] * x[11] + x[12] * x[12])
+    q0, q1, q2, q3 = x[9] / qn, x[10] / qn, x[11] / qn, x[12] / qn
+    wp, wq, wr = x[13], x[14], x[15]
+    R = dcm(q0, q1, q2, q3)
+    mass = P[0]
+    half_rho = 0.5 * P[52]
+    grav = P[53]
+    v_cut = P[54]
+
+    # air velocity relative to the CG, body axes
+    ub = to_body(R, drive[0] - v0, drive[1] - v1, drive[2] - v2)
+    fx, fy, fz = 0.0, 0.0, 0.0
+    mx, my, mz = 0.0, 0.0, 0.0
+
+    # fuselage at its reference point
+    alpha, beta, speed_ref = 0.0, 0.0, 0.0
+    ffx, ffy, ffz, fmx, fmy, fmz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    if P[25] > 0.0:
+        rx, ry, rz = P[22], P[23], P[24]
+        u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, rx, ry, rz)
+        speed_ref = math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
+        ffx, ffy, ffz, gx, gy, gz, alpha, beta, ok_a, ok_b = fuselage_loads(
+            u[0], u[1], u[2], half_rho, P[25], P[26], fus_a, fus_b, fus_c, v_cut)
+        if not ok_a:
+            flag |= 1
+        if not ok_b:
+            flag |= 32
+        t = cross(rx, ry, rz, ffx, ffy, ffz)
+        fmx, fmy, fmz = gx + t[0], gy + t[1], gz + t[2]
+        fx += ffx
+        fy += ffy
+        fz += ffz
+        mx += fmx
+        my += fmy
+        mz += fmz
+
+    # fin: normal force along body y from its local flow
+    fin_force, fin_angle = 0.0, 0.0
+    if P[30] > 0.0:
+        rx, ry, rz = P[27], P[28], P[29]
+        u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, rx, ry, rz)
+        fin_force, fin_angle, ok = surface_force(u[0], u[1], u[2], 1, -1.0, half_rho, P[30],
+                                                 fin_g, fin_v, v_cut)
+        if not ok:
+            flag |= 2
+        fy += fin_force
+        mx += -rz * fin_force
+        mz += rx * fin_force
+
+    # horizontal tail: normal force along body z
+    tail_force, tail_angle = 0.0, 0.0
+    if P[34] > 0.0:
+        rx, ry, rz = P[31], P[32], P[33]
+        u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, rx, ry, rz)
+        tail_force, tail_angle, ok = surface_force(u[0], u[1], u[2], 2, 1.0, half_rho, P[34],
+                                                   tail_g, tail_v, v_cut)
+        if not ok:
+            flag |= 4
+        fz += tail_force
+        mx += ry * tail_force
+        my += -rx * tail_force
+
+    # gravity
+    gb = to_body(R, 0.0, 0.0, -mass * grav)
+    fx += gb[0]
+    fy += gb[1]
+    fz += gb[2]
+
+    # cable, hook to hub
+    hx, hy, hz = P[19], P[20], P[21]
+    he = to_earth(R, hx, hy, hz)
+    d0, d1, d2 = p0 + he[0], p1 + he[1], p2 + he[2]
+    wh = cross(wp, wq, wr, hx, hy, hz)
+    whe = to_earth(R, wh[0], wh[1], wh[2])
+    dd0, dd1, dd2 = v0 - vc0 + whe[0], v1 - vc1 + whe[1], v2 - vc2 + whe[2]
+    span = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+    rate = (d0 * dd0 + d1 * dd1 + d2 * dd2) / span
+    tension = cable_tension(span, rate, P[42], P[43], P[44])
+    cb = to_body(R, -tension * d0 / span, -tension * d1 / span, -tension * d2 / span)
+    fx += cb[0]
+    fy += cb[1]
+    fz += cb[2]
+    t = cross(hx, hy, hz, cb[0], cb[1], cb[2])
+    mx += t[0]
+    my += t[1]
+    mz += t[2]
+
+    # gyroscopic moment
+    iw = _mat(P, 10, wp, wq, wr)
+    t = cross(wp, wq, wr, iw[0], iw[1], iw[2])
+    mx -= t[0]
+    my -= t[1]
+    mz -= t[2]
+
+    # parachute
+    ax, ay, az = P[35], P[36], P[37]
+    mode = P[38]
+    line_tension, chute_alpha, chute_drag = 0.0, 0.0, 0.0
+    lx, ly, lz = 1.0, 0.0, 0.0
+    thdd, psdd = 0.0, 0.0
+    if mode == CHUTE_QUASI_STATIC:
+        u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, ax, ay, az)
+        speed = math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
+        if speed >= v_cut:
+            k = half_rho * P[39] * speed
+            dbx, dby, dbz = k * u[0], k * u[1], k * u[2]
+            fx += dbx
+            fy += dby
+            fz += dbz
+            t = cross(ax, ay, az, dbx, dby, dbz)
+            mx += t[0]
+            my += t[1]
+            mz += t[2]
+            chute_drag = k * speed
+            line_tension = chute_drag
+            lx, ly, lz = u[0] / speed, u[1] / speed, u[2] / speed
+    a0x, a0y, a0z = fx / mass, fy / mass, fz / mass
+    w0 = _mat(P, 1, mx, my, mz)
+    abx, aby, abz = a0x, a0y, a0z
+    wdx, wdy, wdz = w0[0], w0[1], w0[2]
+    if mode == CHUTE_HINGED:
+        mp, lp = P[40], P[41]
+        th, ps, thd, psd = x[16], x[17], x[18], x[19]
+        e, et, ep = line_direction(th, ps)
+        if abs(math.cos(ps)) < _HINGE_COS:
+            flag |= 16
+        lx, ly, lz = e[0], e[1], e[2]
+        s = (ax + lp * e[0], ay + lp * e[1], az + lp * e[2])
+        ed = (et[0] * thd + ep[0] * psd, et[1] * thd + ep[1] * psd, et[2] * thd + ep[2] * psd)
+        ws = cross(wp, wq, wr, s[0], s[1], s[2])
+        up = (ub[0] - ws[0] - lp * ed[0], ub[1] - ws[1] - lp * ed[1],
+              ub[2] - ws[2] - lp * ed[2])
+        speed = math.sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2])
+        dbx, dby, dbz = 0.0, 0.0, 0.0
+        if speed >= v_cut:
+            cosa = (e[0] * up[0] + e[1] * up[1] + e[2] * up[2]) / speed
+            chute_alpha = math.acos(min(1.0, max(-1.0, cosa)))
+            # an axisymmetric canopy: the table is read at the total angle, 0 to 180 deg
+            cd, ok = interp1(cd_g, cd_v, chute_alpha)
+            if not ok:
+                flag |= 8
+            k = half_rho * P[39] * cd * speed
+            dbx, dby, dbz = k * up[0], k * up[1], k * up[2]
+            chute_drag = k * speed
+        gp = to_body(R, 0.0, 0.0, -mp * grav)
+        e2 = line_curvature(th, ps, thd, psd)
+        wws = cross(wp, wq, wr, ws[0], ws[1], ws[2])
+        wed = cross(wp, wq, wr, ed[0], ed[1], ed[2])
+        g0x = dbx + gp[0] - mp * (wws[0] + 2.0 * lp * wed[0] + lp * e2[0])
+        g0y = dby + gp[1] - mp * (wws[1] + 2.0 * lp * wed[1] + lp * e2[1])
+        g0z = dbz + gp[2] - mp * (wws[2] + 2.0 * lp * wed[2] + lp * e2[2])
+        a1x, a1y, a1z = e[0] / mass, e[1] / mass, e[2] / mass
+        axe = cross(ax, ay, az, e[0], e[1], e[2])
+        w1 = _mat(P, 1, axe[0], axe[1], axe[2])
+        w1s = cross(w1[0], w1[1], w1[2], s[0], s[1], s[2])
+        w0s = cross(w0[0], w0[1], w0[2], s[0], s[1], s[2])
+        c1 = (mp * lp * et[0], mp * lp * et[1], mp * lp * et[2])
+        c2 = (mp * lp * ep[0], mp * lp * ep[1], mp * lp * ep[2])
+        c3 = (e[0] + mp * (a1x + w1s[0]), e[1] + mp * (a1y + w1s[1]),
+              e[2] + mp * (a1z + w1s[2]))
+        b = (g0x - mp * (a0x + w0s[0]), g0y - mp * (a0y + w0s[1]),
+             g0z - mp * (a0z + w0s[2]))
+        thdd, psdd, line_tension = _solve3(c1, c2, c3, b)
+        abx, aby, abz = a0x + line_tension * a1x, a0y + line_tension * a1y, \
+            a0z + line_tension * a1z
+        wdx, wdy, wdz = (w0[0] + line_tension * w1[0], w0[1] + line_tension * w1[1],
+                         w0[2] + line_tension * w1[2])
+
+    # restrictions used by the verification tests
+    if P[55] > 0.0:
+        abx, aby, abz = 0.0, 0.0, 0.0
+    if P[56] > 0.0:
+        wdx, wdy = 0.0, 0.0
+    if P[57] > 0.0:
+        wdz = 0.0
+
+    # carrier
+    pull0, pull1, pull2 = tension * d0 / span, tension * d1 / span, tension * d2 / span
+    if P[45] > 0.0:
+        mc, kv = P[46], P[48]
+        dx[0] = drive[3] + kv * (drive[6] - vc0) + (pull0 - P[49]) / mc
+        dx[1] = drive[4] + kv * (drive[7] - vc1) + (pull1 - P[50]) / mc
+        dx[2] = drive[5] + kv * (drive[8] - vc2) + (pull2 - P[51]) / mc
+    else:
+        dx[0], dx[1], dx[2] = drive[3], drive[4], drive[5]
+    dx[3], dx[4], dx[5] = v0 - vc0, v1 - vc1, v2 - vc2
+    ae = to_earth(R, abx, aby, abz)
+    dx[6], dx[7], dx[8] = ae[0], ae[1], ae[2]
+    dq = quaternion_rate(q0, q1, q2, q3, wp, wq, wr)
+    dx[9], dx[10], dx[11], dx[12] = dq[0], dq[1], dq[2], dq[3]
+    dx[13], dx[14], dx[15] = wdx, wdy, wdz
+    if mode == CHUTE_HINGED:
+        dx[16], dx[17], dx[18], dx[19] = x[18], x[19], thdd, psdd
+    else:
+        dx[16], dx[17], dx[18], dx[19] = 0.0, 0.0, 0.0, 0.0
+
+    if want:
+        info[0] = tension
+        info[1] = span
+        info[2], info[3], info[4] = d0, d1, d2
+        info[5], info[6], info[7] = cb[0], cb[1], cb[2]
+        info[8], info[9], info[10] = alpha, beta, speed_ref
+        info[11], info[12] = fin_angle, tail_angle
+        info[13], info[14] = line_tension, chute_alpha
+        info[15], info[16], info[17] = lx, ly, lz
+        if P[45] > 0.0:
+            mc, kv = P[46], P[48]
+            uc0, uc1, uc2 = drive[0] - vc0, drive[1] - vc1, drive[2] - vc2
+            kd = half_rho * P[47] * math.sqrt(uc0 * uc0 + uc1 * uc1 + uc2 * uc2)
+            info[18] = mc * (drive[3] + kv * (drive[6] - vc0)) - kd * uc0 - P[49]
+            info[19] = mc * (drive[4] + kv * (drive[7] - vc1)) - kd * uc1 - P[50]
+            info[20] = mc * (drive[5] + kv * (drive[8] - vc2)) - kd * uc2 - P[51] + mc * grav
+        else:
+            info[18], info[19], info[20] = np.nan, np.nan, np.nan
+        info[21], info[22], info[23] = ffx, ffy, ffz
+        info[24], info[25], info[26] = fmx, fmy, fmz
+        info[27] = chute_drag
+        info[28], info[29] = fin_force, tail_force
+    return flag
+

@@ -1,0 +1,86 @@
+"""Table lookups for the compiled kernels: linear interpolation that reports, never extrapolates.
+
+Each lookup returns the interpolated value and whether the query lay inside the table. Outside,
+the value is the end value (never used: the integrator stops the run at that step and reports
+which table it left and when). The tables themselves are the project's
+:class:`~slingloads.models.aero_tables.Table1D` / :class:`~slingloads.models.aero_tables.Table2D`;
+:func:`table_arrays` hands their breakpoints and values to the kernels.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from slingloads.models.multibody._jit import jit
+
+#: Round-off allowance at the ends of a table, relative to its span. [-]
+EDGE = 1e-9
+
+
+@jit
+def _cell(grid, x):
+    """Index i with grid[i] <= x <= grid[i + 1], the weight of grid[i + 1], and inside."""
+    n = grid.shape[0]
+    lo, hi = grid[0], grid[n - 1]
+    tol = EDGE * (hi - lo)
+    if not (x >= lo - tol and x <= hi + tol):  # also catches NaN
+        return 0, 0.0, False
+    if x <= lo:
+        return 0, 0.0, True
+    if x >= hi:
+        return n - 2, 1.0, True
+    a, b = 0, n - 1
+    while b - a > 1:
+        m = (a + b) // 2
+        if grid[m] <= x:
+            a = m
+        else:
+            b = m
+    return a, (x - grid[a]) / (grid[a + 1] - grid[a]), True
+
+
+@jit
+def interp1(grid, values, x):
+    """Linear interpolation of ``values`` on ``grid`` at ``x``; returns (value, inside)."""
+    i, w, inside = _cell(grid, x)
+    return values[i] + w * (values[i + 1] - values[i]), inside
+
+
+@jit
+def interp2(grid_a, grid_b, values, k, a, b):
+    """Bilinear interpolation of ``values[k]`` (shape (n, na, nb)) at (a, b); (value, inside)."""
+    i, wa, in_a = _cell(grid_a, a)
+    j, wb, in_b = _cell(grid_b, b)
+    v00 = values[k, i, j]
+    v01 = values[k, i, j + 1]
+    v10 = values[k, i + 1, j]
+    v11 = values[k, i + 1, j + 1]
+    low = v00 + wb * (v01 - v00)
+    high = v10 + wb * (v11 - v10)
+    return low + wa * (high - low), in_a and in_b
+
+
+def table_arrays(table, names):
+    """Breakpoints and stacked coefficient values of a Table1D or Table2D, for the kernels.
+
+    Parameters
+    ----------
+    table : Table1D or Table2D or None
+    names : sequence of str
+        Coefficients to stack, in order.
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(angle, values)`` for a Table1D (values shape (n,) for one name), ``(alpha, beta,
+        values)`` for a Table2D (values shape (len(names), na, nb)); a flat dummy table when
+        ``table`` is None.
+    """
+    if table is None:
+        return np.array([-np.pi, np.pi]), np.zeros(2)
+    if hasattr(table, "beta"):
+        values = np.stack([table.coefficients[n] for n in names]).astype(float)
+        return (np.ascontiguousarray(table.alpha), np.ascontiguousarray(table.beta),
+                np.ascontiguousarray(values))
+    return (np.ascontiguousarray(table.angle),
+            np.ascontiguousarray(table.coefficients[names[0]], dtype=float))

@@ -1,0 +1,278 @@
+"""The towed system assembled: carrier, cable, carried helicopter, parachute, air.
+
+:class:`SlingSystem` gathers the physical parts (each validated by its own class), turns them
+into the parameter vector and tables of the compiled equations
+(:mod:`slingloads.models.multibody.equations`) and checks the geometry rules between parts
+(carrier cable at least 20 % longer than the parachute line; the canopy must not be able to
+reach the carrier). Positions are given in airframe axes (``docs/conventions.md``) and passed
+to the equations relative to the CG.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from slingloads.checks import finite, non_negative, positive
+from slingloads.errors import InputError
+from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, FuselageAero
+from slingloads.models.airframe import Hardpoints
+from slingloads.models.atmosphere import isa_density, true_airspeed
+from slingloads.models.multibody.cable import Cable
+from slingloads.models.multibody.carrier import FreeCarrier, FrozenCarrier
+from slingloads.models.multibody.equations import (
+    CHUTE_HINGED,
+    CHUTE_NONE,
+    CHUTE_QUASI_STATIC,
+    N_PARAMETERS,
+    PARAMETERS,
+)
+from slingloads.models.multibody.local_flow import LiftingSurface
+from slingloads.models.multibody.lookup import table_arrays
+from slingloads.models.multibody.parachute_line import HingedParachute, QuasiStaticParachute
+from slingloads.models.multibody.rigid_body import RigidBody
+from slingloads.models.wake import CABLE_MARGIN, check_cable_length
+from slingloads.units import G0
+
+#: Airspeed below which aerodynamic loads are neglected and tables not consulted. [m/s]
+AERO_CUTOFF = 1.0
+
+_INDEX = {name: i for i, name in enumerate(PARAMETERS)}
+
+
+@dataclass(frozen=True)
+class SlingSystem:
+    """Carrier, cable, carried helicopter (HC) and parachute in their air.
+
+    Parameters
+    ----------
+    body : RigidBody
+        HC mass, CG and inertia tensor about the CG (e.g. ``RigidBody.from_mass_items``).
+    hardpoints : Hardpoints
+        ``hub`` (cable attachment), ``chute`` (parachute attachment on the fin), ``mast_axis``.
+    cable : Cable
+    fuselage : FuselageAero or None
+        Fuselage-alone table with its reference area, length and moment reference point.
+    surfaces : sequence of LiftingSurface
+        At most one fin (normal "y") and one horizontal tail (normal "z").
+    parachute : HingedParachute, QuasiStaticParachute or None
+        ``None``: the configuration without parachute (paper section 5).
+    carrier : FrozenCarrier or FreeCarrier
+    airspeed : float
+        Equivalent airspeed of the towed flight (the trim of the gust and free-response runs),
+        >= 0. [m/s]
+    density_altitude : float
+        ISA density altitude. [m]
+    aero_cutoff : float
+        Airspeed below which the aerodynamic loads are neglected, > 0. [m/s]
+    gravity : float
+        [m/s^2]
+    name : str
+    """
+
+    body: RigidBody
+    hardpoints: Hardpoints
+    cable: Cable
+    fuselage: FuselageAero | None = None
+    surfaces: tuple = ()
+    parachute: HingedParachute | QuasiStaticParachute | None = None
+    carrier: FrozenCarrier | FreeCarrier = field(default_factory=FrozenCarrier)
+    airspeed: float = 0.0
+    density_altitude: float = 0.0
+    aero_cutoff: float = AERO_CUTOFF
+    gravity: float = G0
+    name: str = "system"
+
+    def __post_init__(self):
+        self._check_types()
+        object.__setattr__(self, "surfaces", tuple(self.surfaces))
+        normals = [s.normal for s in self.surfaces]
+        for axis in set(normals):
+            if normals.count(axis) > 1:
+                what = "fin" if axis == "y" else "horizontal tail"
+                raise InputError(f"at most one {what} (surface normal {axis!r})",
+                                 normals.count(axis))
+        object.__setattr__(self, "airspeed", non_negative(
+            self.airspeed, "airspeed must be >= 0 [m/s]"))
+        object.__setattr__(self, "density_altitude", finite(
+            self.density_altitude, "density altitude must be a finite number [m]"))
+        isa_density(self.density_altitude)
+        object.__setattr__(self, "aero_cutoff", positive(
+            self.aero_cutoff, "aerodynamic cut-off airspeed must be > 0 [m/s]"))
+        object.__setattr__(self, "gravity", positive(self.gravity, "gravity must be > 0"))
+        if self.parachute is not None:
+            self._check_parachute_reach()
+
+    def _check_types(self):
+        expected = (("body", RigidBody), ("hardpoints", Hardpoints), ("cable", Cable),
+                    ("carrier", (FrozenCarrier, FreeCarrier)))
+        for name, kind in expected:
+            if not isinstance(getattr(self, name), kind):
+                raise InputError(f"the system's {name} has the wrong type",
+                                 type(getattr(self, name)).__name__)
+        if self.fuselage is not None and not isinstance(self.fuselage, FuselageAero):
+            raise InputError("the fuselage must be a FuselageAero", type(self.fuselage).__name__)
+        for s in self.surfaces:
+            if not isinstance(s, LiftingSurface):
+                raise InputError("surfaces must be LiftingSurface objects", type(s).__name__)
+        if self.parachute is not None and not isinstance(
+                self.parachute, (HingedParachute, QuasiStaticParachute)):
+            raise InputError("the parachute must be a HingedParachute or a QuasiStaticParachute "
+                             "(or None)", type(self.parachute).__name__)
+        if self.parachute is not None and self.hardpoints.chute is None:
+            raise InputError("a parachute needs its attachment point (Hardpoints.chute)")
+
+    def _check_parachute_reach(self):
+        line = self.parachute.line_length
+        reach = line + float(np.linalg.norm(self.hardpoints.chute - self.hardpoints.hub))
+        if reach >= self.cable.length:
+            raise InputError(
+                f"the parachute could reach the carrier: its line ({line:.4g} m) plus the "
+                f"distance from the hub to its attachment reaches {reach:.4g} m from the hub, "
+                f"not less than the carrier cable ({self.cable.length:.4g} m); lengthen the "
+                f"cable", self.cable.length)
+
+    # ------------------------------------------------------------------ derived quantities
+    @property
+    def density(self):
+        """Air density at the density altitude. [kg/m^3]"""
+        return float(isa_density(self.density_altitude))
+
+    @property
+    def true_airspeed(self):
+        """True airspeed of the towed flight. [m/s]"""
+        return float(true_airspeed(self.airspeed, self.density_altitude))
+
+    @property
+    def canopy_mass(self):
+        """Mass of the hinged canopy (0 otherwise). [kg]"""
+        return float(getattr(self.parachute, "mass", 0.0)) if self.parachute else 0.0
+
+    @property
+    def hung_mass(self):
+        """HC plus canopy mass. [kg]"""
+        return self.body.mass + self.canopy_mass
+
+    @property
+    def weight(self):
+        """Weight of the hung mass. [N]"""
+        return self.hung_mass * self.gravity
+
+    @property
+    def fin(self):
+        """The fin (surface with normal y), or None."""
+        return next((s for s in self.surfaces if s.normal == "y"), None)
+
+    @property
+    def tail(self):
+        """The horizontal tail (surface with normal z), or None."""
+        return next((s for s in self.surfaces if s.normal == "z"), None)
+
+    @property
+    def chute_kind(self):
+        """"hinged", "quasi-static" or "none"."""
+        return "none" if self.parachute is None else self.parachute.kind
+
+    def cable_check(self, margin=CABLE_MARGIN):
+        """The 20 % rule: carrier cable against the parachute line (None without parachute)."""
+        if self.parachute is None:
+            return None
+        return check_cable_length(self.cable.length, self.parachute.line_length, margin)
+
+    def warnings(self):
+        """Rules that are broken but do not prevent a run (the report shows them)."""
+        check = self.cable_check()
+        return [] if check is None or check.ok else [check.message]
+
+    def with_(self, **changes):
+        """A copy with fields replaced (validated again)."""
+        return replace(self, **changes)
+
+    # ------------------------------------------------------------------ for the equations
+    def parameters(self, pull=(0.0, 0.0, 0.0), locks=(False, False, False)):
+        """Parameter vector of the compiled equations.
+
+        Parameters
+        ----------
+        pull : array_like, shape (3,)
+            Cable pull on the carrier at the trim the run starts from (free carrier's
+            feed-forward), earth axes. [N]
+        locks : (bool, bool, bool)
+            Restrictions for verification: no CG acceleration, no roll/pitch acceleration, no
+            yaw acceleration.
+        """
+        p = np.zeros(N_PARAMETERS)
+
+        def put(name, values):
+            i = _INDEX[name]
+            values = np.atleast_1d(np.asarray(values, float)).ravel()
+            p[i:i + values.size] = values
+
+        cg = self.body.cg
+        inertia = self.body.inertia
+        put("mass", self.body.mass)
+        put("Iinv_xx", np.linalg.inv(inertia))
+        put("I_xx", inertia)
+        put("hub_x", self.hardpoints.hub - cg)
+        put("mast_x", self.hardpoints.mast_axis)
+        if self.fuselage is not None:
+            put("ref_x", self.fuselage.moment_reference - cg)
+            put("fuselage_area", self.fuselage.area)
+            put("fuselage_length", self.fuselage.length)
+        if self.fin is not None:
+            put("fin_x", self.fin.centre_of_pressure - cg)
+            put("fin_area_eff", self.fin.area * self.fin.efficiency)
+        if self.tail is not None:
+            put("tail_x", self.tail.centre_of_pressure - cg)
+            put("tail_area_eff", self.tail.area * self.tail.efficiency)
+        if self.parachute is not None:
+            chute = self.parachute.parachute
+            put("chute_x", self.hardpoints.chute - cg)
+            put("chute_line", chute.line_length)
+            if self.parachute.kind == "hinged":
+                put("chute_mode", CHUTE_HINGED)
+                put("chute_drag_area", chute.wake_ratio * chute.area)
+                put("chute_mass", self.parachute.mass)
+            else:
+                put("chute_mode", CHUTE_QUASI_STATIC)
+                put("chute_drag_area", float(chute.drag_area(0.0)))
+        else:
+            put("chute_mode", CHUTE_NONE)
+        put("cable_length", self.cable.length)
+        put("cable_stiffness", self.cable.stiffness)
+        put("cable_damping", self.cable.damping(self.hung_mass))
+        if isinstance(self.carrier, FreeCarrier):
+            put("carrier_free", 1.0)
+            put("carrier_mass", self.carrier.mass)
+            put("carrier_drag_area", self.carrier.drag_area)
+            put("carrier_gain", self.carrier.speed_gain)
+            put("pull_X", pull)
+        put("density", self.density)
+        put("gravity", self.gravity)
+        put("v_cut", self.aero_cutoff)
+        put("lock_translation", float(locks[0]))
+        put("lock_tilt", float(locks[1]))
+        put("lock_yaw", float(locks[2]))
+        return p
+
+    def tables(self):
+        """Aerodynamic tables for the equations: fuselage (alpha, beta, coefficients), fin,
+        horizontal tail and parachute CD (breakpoints, values)."""
+        fus = table_arrays(None if self.fuselage is None else self.fuselage.table,
+                           FUSELAGE_COEFFICIENTS)
+        if self.fuselage is None:
+            fus = (np.array([-np.pi, np.pi]), np.array([-np.pi, np.pi]), np.zeros((6, 2, 2)))
+        fin = table_arrays(None if self.fin is None else self.fin.table, ("CY",))
+        tail = table_arrays(None if self.tail is None else self.tail.table, ("CN",))
+        cd = table_arrays(None if self.parachute is None else self.parachute.parachute.cd,
+                          ("CD",))
+        return fus + fin + tail + cd
+
+    def table_key(self):
+        """Identity of the tables (runs with the same key can share one batch)."""
+        parts = (self.fuselage.table if self.fuselage is not None else None,
+                 self.fin.table if self.fin is not None else None,
+                 self.tail.table if self.tail is not None else None,
+                 self.parachute.parachute.cd if self.parachute is not None else None)
+        return tuple(id(p) for p in parts)
