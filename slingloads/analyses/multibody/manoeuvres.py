@@ -56,6 +56,9 @@ class Manoeuvre:
     from_hover : bool, optional
         Start trimmed in hover rather than at the system airspeed (default: the trajectory's
         choice, True for a forward acceleration, and True for a wind ramp).
+    start_state : array_like, shape (20,), optional
+        A full state of the equations to start from instead of trim plus disturbance (e.g.
+        :meth:`~slingloads.analyses.multibody.LinearModel.mode_state`).
     """
 
     name: str
@@ -63,8 +66,14 @@ class Manoeuvre:
     wind: Wind = field(default_factory=Wind)
     disturbance: dict = field(default_factory=dict)
     from_hover: bool | None = None
+    start_state: np.ndarray | None = None
 
     def __post_init__(self):
+        if self.start_state is not None:
+            x = np.asarray(self.start_state, float).reshape(-1)
+            if x.size != 20 or not np.all(np.isfinite(x)):
+                raise InputError("a start state needs 20 finite values", x.size)
+            object.__setattr__(self, "start_state", x)
         bad = [k for k in self.disturbance if k not in DISTURBANCES]
         if bad:
             raise InputError(f"{bad[0]!r} is not a valid disturbance; valid disturbances are "

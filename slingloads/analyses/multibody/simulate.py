@@ -319,25 +319,31 @@ class RunResult:
 
     def _verdict(self, h):
         rule = ("divergent: left a table, or the envelope of the motion (largest |rate| of "
-                f"yaw, lateral and longitudinal swing) grows by > 10 % from the third to the "
-                f"last quarter of the run; convergent: it shrinks by > 10 % or stays below "
-                f"{QUIET} deg/s; otherwise undamped (bounded under a sustained input)")
+                "yaw, lateral and longitudinal swing) grows by > 10 % from the first to the "
+                "second half of the time after the input ends (after its onset for a sustained "
+                f"input); convergent: it shrinks by > 10 % or stays below {QUIET} deg/s; "
+                "otherwise undamped (bounded under a sustained input); inconclusive when less "
+                "than 10 s are left after the input")
         if self.flag:
             return "divergent", rule
         t = self.time
         dt = t[1] - t[0]
+        sustained = self.manoeuvre.input_end is None
+        start = (min(self.manoeuvre.breakpoints or (0.0,)) if sustained
+                 else self.manoeuvre.input_end)
+        if t[-1] - start < 10.0:
+            return "inconclusive", rule
         rates = np.vstack([np.abs(h["yaw rate"]),
                            np.abs(np.gradient(h["swing lateral"], dt)),
                            np.abs(np.gradient(h["swing longitudinal"], dt))])
         activity = np.degrees(rates.max(axis=0))
-        n = t.size
-        third = activity[n // 2:3 * n // 4].max()
-        last = activity[3 * n // 4:].max()
-        if last > 1.1 * third and last > QUIET:
+        middle = 0.5 * (start + t[-1])
+        first = activity[(t >= start) & (t < middle)].max()
+        second = activity[t >= middle].max()
+        if second > 1.1 * first and second > QUIET:
             return "divergent", rule
-        if last < 0.9 * third or last <= QUIET:
+        if second < 0.9 * first or second <= QUIET:
             return "convergent", rule
-        sustained = self.manoeuvre.input_end is None
         return ("bounded" if sustained else "undamped"), rule
 
 
@@ -457,10 +463,11 @@ def _integrate_group(prepared, members, results, dt, n_steps, every, time):
     seen = {}
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        x0[j] = _disturbed(tr, manoeuvre.disturbance)
+        x0[j] = (_disturbed(tr, manoeuvre.disturbance) if manoeuvre.start_state is None
+                 else manoeuvre.start_state)
         pull = tr.info[_INFO["d_X"]:_INFO["d_Z"] + 1]
         pull = tr.quantity("tension") * pull / np.linalg.norm(pull)
-        params[j] = system.parameters(pull=pull)
+        params[j] = system.parameters(pull=pull, locks=system.locks)
         key = (id(manoeuvre), tuple(np.round(tr.state[0:3], 12)))
         if key not in seen:
             seen[key] = len(profiles)

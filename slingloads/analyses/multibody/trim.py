@@ -57,7 +57,7 @@ def steady_drive(wind, carrier_velocity):
 
 def evaluate_state(system, x, drive, parameters=None, tables=None):
     """(derivative, info, flag) of the equations at state ``x`` with ``drive``."""
-    p = system.parameters() if parameters is None else parameters
+    p = system.parameters(locks=system.locks) if parameters is None else parameters
     t = system.tables() if tables is None else tables
     dx, info = np.zeros(N_STATES), np.zeros(N_INFO)
     flag = evaluate(np.asarray(x, float), p, np.asarray(drive, float), *t, dx, info, True)
@@ -198,7 +198,7 @@ def trim(system, airspeed=None, *, wind=(0.0, 0.0, 0.0), yaw_guess=0.0):
         raise InputError("trim airspeed must be >= 0 [m/s]", eas)
     sys_at = system.with_(airspeed=eas)
     tas = sys_at.true_airspeed
-    params, tables = sys_at.parameters(), sys_at.tables()
+    params, tables = sys_at.parameters(), sys_at.tables()  # trim the unrestricted system
     x0 = _initial_state(sys_at, tas, wind)
     drive = steady_drive(wind, x0[0:3])
     hinged = sys_at.parachute is not None and sys_at.parachute.kind == "hinged"
@@ -334,30 +334,77 @@ class LinearModel:
             out[k] = np.array(rows) / total if total > 0 else 0.0
         return out
 
+    def angles(self):
+        """Angular amplitude of each motion group in each mode, largest 1, shape (n, 4):
+        longitudinal (cable swing or pitch), lateral (cable swing or roll), yaw, parachute line.
+        Swing angles are CG displacements over the cable span."""
+        idx = {name: i for i, name in enumerate(self.names)}
+        span = self.trim.quantity("cable_span")
+        out = np.zeros((self.eigenvalues.size, 4))
+        for k in range(self.eigenvalues.size):
+            v = np.abs(self.vectors[:, k])
+            swing_x, swing_y = v[idx["p_X"]] / span, v[idx["p_Y"]] / span
+            chute = max(v[idx["theta"]], v[idx["psi"]]) if "theta" in idx else 0.0
+            row = np.array([max(swing_x, v[idx["phi_y"]]), max(swing_y, v[idx["phi_x"]]),
+                            v[idx["phi_z"]], chute])
+            out[k] = row / row.max() if row.max() > 0 else row
+        return out
+
+    def _name(self, k, shares, angles):
+        """Name of mode k: cable stretch, carrier or parachute by kinetic energy (> 50 %),
+        otherwise the group of largest angular amplitude among longitudinal, lateral and yaw
+        (swing when the cable angle is at least 30 % of the airframe angle, else pitch or roll),
+        with the second group if >= 25 % of it. (The line's hinge angles are measured in body
+        axes and follow every airframe rotation, so they do not name a mode.)"""
+        if shares[k][MOTIONS.index("cable stretch")] > 0.5:
+            return "cable stretch"
+        if shares[k][MOTIONS.index("carrier")] > 0.5:
+            return "carrier"
+        if shares[k][MOTIONS.index("parachute")] > 0.5:
+            return "parachute"
+        idx = {name: i for i, name in enumerate(self.names)}
+        v = np.abs(self.vectors[:, k])
+        span = self.trim.quantity("cable_span")
+
+        def label(group):
+            if group == 0:
+                return ("longitudinal swing" if v[idx["p_X"]] / span >= 0.3 * v[idx["phi_y"]]
+                        else "pitch")
+            if group == 1:
+                return ("lateral swing" if v[idx["p_Y"]] / span >= 0.3 * v[idx["phi_x"]]
+                        else "roll")
+            return ("yaw", "parachute")[group - 2]
+
+        order = np.argsort(angles[k][:3])[::-1]
+        name = label(order[0])
+        if angles[k][order[1]] >= 0.25:
+            name = f"{name} / {label(order[1])}"
+        return name
+
     def modes_frame(self):
-        """One row per mode (complex pairs once): eigenvalue, frequency, damping, name."""
+        """One row per mode (complex pairs once): eigenvalue, frequency, damping, name, the
+        share of each motion in its kinetic energy and the angular amplitudes of the groups."""
         lam = self.eigenvalues
         keep = lam.imag >= -1e-12
         shares = self.shares()
+        angles = self.angles()
         rows = []
         for k in np.nonzero(keep)[0]:
             value = lam[k]
-            order = np.argsort(shares[k])[::-1]
-            name = MOTIONS[order[0]]
-            if shares[k][order[1]] > 0.25:
-                name = f"{name} / {MOTIONS[order[1]]}"
             wn = abs(value)
             oscillatory = value.imag > 1e-9
-            row = {"mode": name, "real [1/s]": value.real, "imag [rad/s]": value.imag,
-                   "natural frequency [rad/s]": wn,
+            row = {"mode": self._name(k, shares, angles), "real [1/s]": value.real,
+                   "imag [rad/s]": value.imag, "natural frequency [rad/s]": wn,
                    "damping ratio [-]": -value.real / wn if wn > 0 else np.nan,
                    "period [s]": 2 * np.pi / value.imag if oscillatory else np.inf,
                    "time to half or double [s]": (np.log(2) / abs(value.real)
                                                   if abs(value.real) > 0 else np.inf),
                    "kind": "oscillatory" if oscillatory else "aperiodic",
                    "stable": bool(value.real <= STABILITY_TOLERANCE)}
+            for j, group in enumerate(("longitudinal", "lateral", "yaw", "parachute")):
+                row[f"{group} amplitude [-]"] = angles[k][j]
             for j, motion in enumerate(MOTIONS):
-                row[f"{motion} share [-]"] = shares[k][j]
+                row[f"{motion} energy share [-]"] = shares[k][j]
             rows.append(row)
         frame = pd.DataFrame(rows)
         return frame.sort_values("natural frequency [rad/s]", kind="stable").reset_index(
@@ -366,6 +413,20 @@ class LinearModel:
     def to_frame(self):
         """The modes (see :meth:`modes_frame`)."""
         return self.modes_frame()
+
+    def mode_state(self, eigenvalue, amplitude=0.01):
+        """Full state of the trim perturbed along the real part of the mode nearest to
+        ``eigenvalue`` [1/s], scaled so that its largest angle or swing angle is ``amplitude``
+        [rad] (a free response that excites that mode alone, to linear order)."""
+        k = int(np.argmin(np.abs(self.eigenvalues - eigenvalue)))
+        vec = self.vectors[:, k]
+        vec = vec * np.exp(-1j * np.angle(vec[np.argmax(np.abs(vec))]))
+        z = vec.real
+        idx = {name: i for i, name in enumerate(self.names)}
+        span = self.trim.quantity("cable_span")
+        biggest = max(abs(z[idx["phi_x"]]), abs(z[idx["phi_y"]]), abs(z[idx["phi_z"]]),
+                      abs(z[idx["p_X"]]) / span, abs(z[idx["p_Y"]]) / span)
+        return perturbed_state(self.trim, self.names, z * amplitude / biggest)
 
 
 def _coordinates(system):
@@ -394,6 +455,17 @@ def _quat_conj_mul(a, b):
                      a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0])
 
 
+def perturbed_state(trim_point, names, z):
+    """Full state of the trim plus the perturbation ``z`` in the coordinates ``names``."""
+    x = trim_point.state.copy()
+    for k, name in enumerate(names):
+        if name in _FULL:
+            x[_FULL[name]] += z[k]
+    phi = [z[names.index(n)] for n in ("phi_x", "phi_y", "phi_z")]
+    x[9:13] = small_rotation(trim_point.state[9:13], phi)
+    return x
+
+
 def linearise(trim_point, *, step=1e-6):
     """Linear model about a trim (module notes).
 
@@ -411,21 +483,11 @@ def linearise(trim_point, *, step=1e-6):
     trim_point._require()
     system = trim_point.system
     names = _coordinates(system)
-    params, tables = system.parameters(), system.tables()
-    x_trim = trim_point.state
-    q_trim = x_trim[9:13]
-
-    def full(z):
-        x = x_trim.copy()
-        for k, name in enumerate(names):
-            if name in _FULL:
-                x[_FULL[name]] += z[k]
-        phi = [z[names.index(n)] for n in ("phi_x", "phi_y", "phi_z")]
-        x[9:13] = small_rotation(q_trim, phi)
-        return x
+    params, tables = system.parameters(locks=system.locks), system.tables()
+    q_trim = trim_point.state[9:13]
 
     def rate(z):
-        x = full(z)
+        x = perturbed_state(trim_point, names, z)
         dx, _, _ = evaluate_state(system, x, trim_point.drive, params, tables)
         out = np.zeros(len(names))
         dphi = 2.0 * _quat_conj_mul(q_trim, dx[9:13])[1:]

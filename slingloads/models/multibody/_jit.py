@@ -1,14 +1,46 @@
 """The compiler used by the multibody kernels.
 
 The right-hand side of the multibody equations and the fixed-step integrator are compiled with
-`numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept beside the sources
-after the first call, so only the first run on a machine pays the compilation). Every kernel is
-written on scalars and small tuples so that it allocates nothing per evaluation.
+`numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept in the package's
+``__pycache__`` after the first call, so only the first run on a machine pays the compilation).
+Every kernel is written on scalars and small tuples so that it allocates nothing per evaluation.
+
+numba invalidates a cached function when its own source file changes, not when a function it
+calls from another module does. The kernels span several modules, so the cache files of this
+package are dropped whenever any of its sources changes (:func:`_drop_stale_cache`).
 """
 
 from __future__ import annotations
 
+import hashlib
+from pathlib import Path
+
 import numba
+
+_HERE = Path(__file__).resolve().parent
+_STAMP = "multibody-sources.sha256"
+
+
+def _drop_stale_cache(folder=_HERE):
+    """Delete the numba cache files of ``folder`` if its sources changed since they were made."""
+    digest = hashlib.sha256()
+    for path in sorted(folder.glob("*.py")):
+        digest.update(path.name.encode())
+        digest.update(path.read_bytes())
+    cache = folder / "__pycache__"
+    stamp = cache / _STAMP
+    try:
+        if stamp.exists() and stamp.read_text() == digest.hexdigest():
+            return
+        cache.mkdir(exist_ok=True)
+        for old in list(cache.glob("*.nbi")) + list(cache.glob("*.nbc")):
+            old.unlink()
+        stamp.write_text(digest.hexdigest())
+    except OSError:  # a read-only installation: numba then compiles in memory
+        pass
+
+
+_drop_stale_cache()
 
 #: Compile a scalar kernel (no Python objects, cached on disk).
 jit = numba.njit(cache=True, fastmath=False, nogil=True)

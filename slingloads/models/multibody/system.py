@@ -39,6 +39,8 @@ from slingloads.units import G0
 AERO_CUTOFF = 1.0
 
 _INDEX = {name: i for i, name in enumerate(PARAMETERS)}
+#: Motions a verification run may hold at zero acceleration.
+RESTRICTIONS = ("translation", "tilt", "yaw")
 
 
 @dataclass(frozen=True)
@@ -69,6 +71,10 @@ class SlingSystem:
     gravity : float
         [m/s^2]
     name : str
+    restrict : tuple of str
+        For verification only: motions held at zero acceleration, any of "translation" (the
+        CG), "tilt" (roll and pitch) and "yaw" (e.g. ("translation", "tilt") leaves the
+        1-DOF yaw model).
     """
 
     body: RigidBody
@@ -83,6 +89,7 @@ class SlingSystem:
     aero_cutoff: float = AERO_CUTOFF
     gravity: float = G0
     name: str = "system"
+    restrict: tuple = ()
 
     def __post_init__(self):
         self._check_types()
@@ -101,6 +108,14 @@ class SlingSystem:
         object.__setattr__(self, "aero_cutoff", positive(
             self.aero_cutoff, "aerodynamic cut-off airspeed must be > 0 [m/s]"))
         object.__setattr__(self, "gravity", positive(self.gravity, "gravity must be > 0"))
+        object.__setattr__(self, "restrict", tuple(self.restrict))
+        bad = [r for r in self.restrict if r not in RESTRICTIONS]
+        if bad:
+            raise InputError(f"{bad[0]!r} is not a valid restriction; valid restrictions are "
+                             f"{list(RESTRICTIONS)}", bad[0])
+        if self.restrict and self.chute_kind == "hinged":
+            raise InputError("restrictions cannot be combined with a hinged parachute (its "
+                             "line would not see the constraint forces)", self.restrict)
         if self.parachute is not None:
             self._check_parachute_reach()
 
@@ -132,6 +147,11 @@ class SlingSystem:
                 f"distance from the hub to its attachment reaches {reach:.4g} m from the hub, "
                 f"not less than the carrier cable ({self.cable.length:.4g} m); lengthen the "
                 f"cable", self.cable.length)
+
+    @property
+    def locks(self):
+        """(translation, tilt, yaw) restrictions as booleans."""
+        return tuple(name in self.restrict for name in RESTRICTIONS)
 
     # ------------------------------------------------------------------ derived quantities
     @property

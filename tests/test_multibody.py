@@ -1,0 +1,353 @@
+"""Multibody model of the towed system: verification against independent references.
+
+References used below:
+- the lateral-plane pendulum of the lateral study (``slingloads.models.pendulum``): its
+  small-oscillation quartic l k^2 w^4 - g (k^2 + e^2 + e l) w^2 + g^2 e = 0 and its elastic
+  cable equations (Meirovitch, Methods of Analytical Dynamics);
+- the 1-DOF yaw model of the parachute sizing (``slingloads.models.yaw_dynamics``);
+- statics: cable stretch W L / EA, trail angle atan(D / W) of a drag-only body;
+- conservation of energy without aerodynamics or damping;
+- the damped oscillator: period 2 pi / Im(lambda), damping ratio -Re(lambda) / |lambda| against
+  the log decrement of the simulated free response.
+"""
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+from scipy.integrate import solve_ivp
+
+from slingloads.analyses.multibody import (
+    Manoeuvre,
+    free_response,
+    gust_response,
+    linearise,
+    simulate,
+    trim,
+)
+from slingloads.analyses.multibody.simulate import _damping_from_peaks
+from slingloads.errors import InputError
+from slingloads.models.aero_tables import Table1D, Table2D
+from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
+from slingloads.models.airframe import Hardpoints
+from slingloads.models.carrier_motion import SmoothStep
+from slingloads.models.gusts import FiniteGust
+from slingloads.models.multibody import (
+    Cable,
+    FreeCarrier,
+    HingedParachute,
+    LateralHookMotion,
+    LiftingSurface,
+    QuasiStaticParachute,
+    RigidBody,
+    SlingSystem,
+    Wind,
+)
+from slingloads.models.multibody.rigid_body import (
+    euler_angles,
+    quaternion_from_euler,
+    rotation_matrix,
+)
+from slingloads.models.parachute import Parachute, extended_cd_table
+from slingloads.models.pendulum import LateralPendulum, SlungBody, elastic_cable_derivatives
+from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
+from slingloads.models.yaw_dynamics import (
+    FlightCondition,
+    SolverSettings,
+    YawModel,
+    integrate_reference,
+)
+from slingloads.units import G0, KNOT
+
+MASS, IXX, IYY, IZZ, E = 2900.0, 2500.0, 7000.0, 9000.0, 1.0
+EA, LENGTH = 5e6, 18.3
+
+
+def hardpoints(chute=(6.4, 0.0, 1.6)):
+    return Hardpoints(hub=[0.0, 0.0, E], mast_feet=[[0.0, 0.0, 0.5]], chute=list(chute))
+
+
+def bare_system(**kw):
+    """Rigid body hung at its hub, no aerodynamics."""
+    body = RigidBody(MASS, np.zeros(3), np.diag([IXX, IYY, IZZ]))
+    return SlingSystem(body, hardpoints(), Cable(LENGTH, EA, kw.pop("zeta", 0.0)), **kw)
+
+
+def hc1_system(parachute="hinged", airspeed=80 * KNOT, **kw):
+    ref = sample_reference("HC1")
+    chute = Parachute(1.1, extended_cd_table())
+    kinds = {"hinged": HingedParachute(chute), "quasi-static": QuasiStaticParachute(chute),
+             None: None}
+    body = RigidBody(ref.mass, np.zeros(3), np.diag([IXX, IYY, ref.yaw_inertia]))
+    return SlingSystem(body, hardpoints(ref.chute), Cable(LENGTH, EA), sample_fuselage("HC1"),
+                       (LiftingSurface.from_fin(sample_fin("HC1")),), kinds[parachute],
+                       airspeed=airspeed, **kw)
+
+
+# ------------------------------------------------------------------------ kinematics
+def test_euler_conventions():
+    """docs/conventions.md: yaw nose right turns the aft-pointing x axis towards -Y, pitch nose
+    up turns it towards -Z, roll right side down turns body y towards -Z; round trip exact."""
+    r = rotation_matrix(quaternion_from_euler(0.3, 0.0, 0.0))
+    assert r[1, 0] < 0
+    r = rotation_matrix(quaternion_from_euler(0.0, 0.2, 0.0))
+    assert r[2, 0] < 0
+    r = rotation_matrix(quaternion_from_euler(0.0, 0.0, 0.1))
+    assert r[2, 1] < 0
+    angles = (0.7, -0.4, 0.25)
+    assert_allclose(euler_angles(quaternion_from_euler(*angles)), angles, atol=1e-14)
+
+
+# ------------------------------------------------------------------------ statics
+def test_static_stretch_in_hover():
+    """Hanging at rest the cable carries the hung weight (HC plus canopy) and stretches by
+    W L / EA; with 2900 + 3 kg, L = 18.3 m, EA = 5e6 N: 0.10624 m."""
+    system = bare_system(parachute=HingedParachute(Parachute(1.0, extended_cd_table())))
+    tr = trim(system)
+    weight = (MASS + 3.0) * G0
+    assert tr.converged
+    assert_allclose(tr.quantity("cable_span") - LENGTH, weight * LENGTH / EA, rtol=1e-9)
+    assert_allclose(tr.quantity("tension"), weight, rtol=1e-10)
+
+
+def test_trim_swing_angle_of_a_drag_only_body():
+    """A body with drag only (CD = 1 on 2 m^2, no side force, lift or moment) trails at
+    atan(D / W). At 80 KEAS and 5000 ft density altitude q = 1/2 rho0 V_EAS^2 = 1037.5 Pa, so
+    D = 2074.9 N and the swing from the vertical is atan(2074.9 / (2900 g0)) = 4.173 deg."""
+    alpha, beta = np.radians([-40.0, 40.0]), np.radians([-180.0, 180.0])
+    coeffs = {c: np.zeros((2, 2)) for c in FUSELAGE_COEFFICIENTS}
+    coeffs["CD"] = np.ones((2, 2))
+    fuselage = FuselageAero(Table2D(alpha, beta, coeffs), 2.0, 10.0, np.zeros(3))
+    system = bare_system(fuselage=fuselage, airspeed=80 * KNOT, density_altitude=1524.0)
+    tr = trim(system)
+    drag = 0.5 * 1.225 * (80 * KNOT) ** 2 * 2.0
+    assert tr.converged
+    assert_allclose(np.tan(tr.swing_angle), drag / (MASS * G0), rtol=1e-8)
+    assert_allclose(np.degrees(tr.swing_angle), 4.173, atol=1e-3)
+
+
+# ------------------------------------------------------------------------ small oscillations
+@pytest.mark.parametrize("inertia, plane", [(IXX, "lateral swing"),
+                                            (IYY, "longitudinal swing")])
+def test_small_oscillations_match_the_pendulum_quartic(inertia, plane):
+    """Without aerodynamics the swing modes in each vertical plane solve the lateral study's
+    quartic l k^2 w^4 - g (k^2 + e^2 + e l) w^2 + g^2 e = 0 (FACTS s.5, models/pendulum.py)
+    with k^2 = Ixx/m (lateral) or Iyy/m (longitudinal), l the stretched length; the bounce
+    mode has w^2 = (EA/L)/m; the yaw mode is neutral (w = 0)."""
+    model = linearise(trim(bare_system()))
+    modes = model.modes_frame()
+    pendulum = LateralPendulum(SlungBody(MASS, inertia, E), LENGTH, cable_ea=EA)
+    expected = pendulum.linear_modes().omega
+    plane_modes = modes[modes["mode"].str.startswith(plane)
+                        | modes["mode"].str.startswith("roll" if inertia == IXX else "pitch")]
+    assert_allclose(np.sort(plane_modes["natural frequency [rad/s]"]), expected[:2],
+                    rtol=1e-6)
+    bounce = modes[modes["mode"] == "cable stretch"]["natural frequency [rad/s]"]
+    assert_allclose(bounce, np.sqrt(EA / LENGTH / MASS), rtol=1e-6)
+    assert np.min(np.abs(model.eigenvalues)) < 1e-6
+
+
+def test_lateral_plane_response_matches_the_pendulum():
+    """A lateral smooth step of the hook in hover (no aerodynamics) keeps the motion in the
+    lateral plane; hub position and airframe roll equal the lateral pendulum's elastic-cable
+    equations integrated by solve_ivp (theta2 = -roll: the pendulum's angle is right-handed
+    about +x, the report's roll is right side down)."""
+    motion = SmoothStep(3.0, 4.0)
+    system = bare_system()
+    sim = simulate(system, Manoeuvre("step", trajectory=LateralHookMotion(motion)),
+                   t_end=12.0, dt=0.005, output_interval=0.05)
+    run = sim.runs[0]
+    d = run.info[:, 2:5]
+    roll = euler_angles(run.states[:, 9:13])[2]
+    pend = LateralPendulum(SlungBody(MASS, IXX, E), LENGTH, cable_ea=EA)
+    args = pend.arrays()
+
+    def rhs(t, x):
+        _, vel, acc = motion.kinematics(t)
+        return elastic_cable_derivatives(x, vel, acc, **args)[0]
+
+    x0 = pend.initial_state()
+    ref = solve_ivp(rhs, (0, 12.0), x0, t_eval=run.time, rtol=1e-10, atol=1e-12, max_step=0.01)
+    assert np.max(np.abs(ref.y[0])) > 0.5  # the hub really swings
+    assert_allclose(d[:, 1], ref.y[0], atol=2e-5 * 3.0)
+    assert_allclose(d[:, 2], ref.y[1], atol=1e-5)
+    assert_allclose(-roll, ref.y[2], atol=2e-5)
+    assert_allclose(d[:, 0], 0.0, atol=1e-9)
+
+
+def test_yaw_alone_matches_the_one_dof_model():
+    """Held in translation, roll and pitch (level, straight flight at 80 KEAS), the HC yaws as
+    the 1-DOF yaw model of the parachute sizing: same fuselage table (reference point on the
+    hub axis), fin at its local sideslip and quasi-static drogue, 10 s lateral gust of
+    30 ft/s. The yaw histories agree to 0.01 deg (RK4 at 0.005 s against solve_ivp at 1e-10)."""
+    ref = sample_reference("HC1")
+    fus = sample_fuselage("HC1")
+    fuselage = FuselageAero(fus.table, fus.area, fus.length, np.array([0.0, 0.0, -0.3]))
+    fin = sample_fin("HC1")
+    chute = Parachute(0.8)
+    hp = hardpoints(ref.chute)
+    body = RigidBody(ref.mass, np.zeros(3), np.diag([IXX, IYY, ref.yaw_inertia]))
+    system = SlingSystem(body, hp, Cable(LENGTH, EA), fuselage, (LiftingSurface.from_fin(fin),),
+                         QuasiStaticParachute(chute), airspeed=80 * KNOT,
+                         restrict=("translation", "tilt"))
+    gust = FiniteGust(9.144, 2.0, 10.0)
+    tr = trim(system)
+    level = {"pitch": -tr.attitude[1], "roll": -tr.attitude[2]}
+    sim = simulate(system, Manoeuvre("gust", wind=Wind(gust=gust), disturbance=level),
+                   t_end=30.0, dt=0.005, output_interval=0.05)
+    yaw = sim.runs[0].histories()["yaw"]
+    model = YawModel(fuselage, fin, hp, ref.yaw_inertia, FlightCondition(80 * KNOT), chute)
+    one = integrate_reference(model, 0.8, gust, settings=SolverSettings(
+        t_end=30.0, dt=0.005, output_interval=0.05, rtol=1e-10, atol=1e-12))
+    assert np.max(np.abs(one.psi[0])) > np.radians(3)
+    assert_allclose(np.degrees(yaw), np.degrees(one.psi[0]), atol=0.01)
+
+
+# ------------------------------------------------------------------------ conservation
+def energy(system, states):
+    """Kinetic + potential + cable strain energy, computed here from the states (hover)."""
+    m, inertia = system.body.mass, system.body.inertia
+    chute = system.parachute
+    mp, lp = chute.mass, chute.line_length
+    attach = system.hardpoints.chute - system.body.cg
+    hub = system.hardpoints.hub - system.body.cg
+    out = []
+    for x in states:
+        r = rotation_matrix(x[9:13])
+        v, w = x[6:9] - x[0:3], x[13:16]
+        th, ps, thd, psd = x[16:20]
+        e = np.array([np.cos(th) * np.cos(ps), np.sin(ps), np.sin(th) * np.cos(ps)])
+        e_t = np.array([-np.sin(th) * np.cos(ps), 0.0, np.cos(th) * np.cos(ps)])
+        e_p = np.array([-np.cos(th) * np.sin(ps), np.cos(ps), -np.sin(th) * np.sin(ps)])
+        s = attach + lp * e
+        vp = v + r @ (np.cross(w, s) + lp * (e_t * thd + e_p * psd))
+        kinetic = 0.5 * m * v @ v + 0.5 * w @ inertia @ w + 0.5 * mp * vp @ vp
+        potential = m * G0 * x[5] + mp * G0 * (x[5] + (r @ s)[2])
+        span = np.linalg.norm(x[3:6] + r @ hub)
+        strain = 0.5 * system.cable.stiffness * max(span - system.cable.length, 0.0) ** 2
+        out.append(kinetic + potential + strain)
+    return np.array(out)
+
+
+def test_energy_is_conserved_without_aerodynamics_or_damping():
+    """Hover, aerodynamics off (cut-off speed above any speed reached), undamped cable,
+    20 kg canopy on its hinged line: the total energy of the swinging, rolling, yawing system
+    stays constant (RK4 at 2 ms: drift < 1e-6 of the energy exchanged)."""
+    chute = HingedParachute(Parachute(1.0, extended_cd_table()), mass=20.0)
+    system = bare_system(parachute=chute, aero_cutoff=1e3)
+    start = {"lateral": 1.0, "longitudinal": -0.5, "roll": 0.1, "yaw_rate": 0.2,
+             "theta": 0.4, "psi": 0.3, "vertical": -0.05}
+    sim = simulate(system, Manoeuvre("free", disturbance=start), t_end=10.0, dt=0.002,
+                   output_interval=0.02)
+    total = energy(system, sim.runs[0].states)
+    exchanged = np.ptp(energy(system, sim.runs[0].states[:1])) + 0.5 * MASS * 1.0
+    assert np.ptp(sim.runs[0].states[:, 4]) > 1.0  # it really swings
+    assert np.ptp(total) < 1e-6 * exchanged * 1e3
+
+
+# ------------------------------------------------------------------------ limits
+def test_free_carrier_of_huge_mass_equals_frozen():
+    """A free carrier whose mass is 1e12 kg is not moved by the cable and holds its speed: the
+    gust response equals the frozen carrier's (paper figure 13's comparison, in the limit)."""
+    gust = gust_response("finite", onset=2.0, duration=5.0)
+    frozen = simulate(hc1_system(), gust, t_end=20.0).runs[0].histories()
+    heavy = simulate(hc1_system(carrier=FreeCarrier(1e12, 3.0)), gust,
+                     t_end=20.0).runs[0].histories()
+    for key in ("yaw", "swing lateral", "tension"):
+        assert_allclose(heavy[key], frozen[key], rtol=1e-7, atol=1e-9)
+    light = simulate(hc1_system(carrier=FreeCarrier(5000.0, 3.0)), gust,
+                     t_end=20.0).runs[0].histories()
+    assert np.max(np.abs(light["carrier speed"] - frozen["carrier speed"])) > 1e-3
+
+
+def test_small_canopy_mass_tends_to_the_quasi_static_drogue():
+    """As the canopy mass goes to zero the hinged parachute's trim tends to the quasi-static
+    (Apollo legacy) drogue's: the drag then acts along the relative wind of the attachment;
+    the differences in swing and pitch shrink in proportion to the canopy mass."""
+    qs = trim(hc1_system("quasi-static"))
+    diffs = []
+    for mass in (3.0, 0.3, 0.03):
+        system = hc1_system()
+        system = system.with_(parachute=HingedParachute(system.parachute.parachute, mass))
+        tr = trim(system)
+        diffs.append(abs(tr.attitude[1] - qs.attitude[1]))
+    assert diffs[2] < 1e-3 * 3
+    assert_allclose(diffs[1] / diffs[0], 0.1, rtol=0.05)
+    assert_allclose(diffs[2] / diffs[1], 0.1, rtol=0.05)
+
+
+def test_eigenvalue_matches_the_simulated_free_response():
+    """The yaw mode of the linear model (period 2 pi / Im, damping ratio -Re / |lambda|)
+    against the period and log decrement of the simulated free response started on that mode
+    (0.5 deg of yaw) with the quasi-static drogue at 80 KEAS: within 1 % and 0.005."""
+    system = hc1_system("quasi-static")
+    model = linearise(trim(system))
+    modes = model.modes_frame()
+    yaw = modes[modes["mode"].str.startswith("yaw")].iloc[0]
+    start = model.mode_state(yaw["real [1/s]"] + 1j * yaw["imag [rad/s]"], np.radians(0.5))
+    sim = simulate(system, Manoeuvre("mode", start_state=start), t_end=60.0,
+                   dt=0.005, output_interval=0.02)
+    h = sim.runs[0].histories()
+    period, zeta = _damping_from_peaks(h["time"], h["yaw rate"])
+    assert_allclose(period, yaw["period [s]"], rtol=0.01)
+    assert_allclose(zeta, yaw["damping ratio [-]"], atol=0.005)
+
+
+# ------------------------------------------------------------------------ verdicts
+def test_a_run_that_leaves_a_table_stops_with_its_verdict_and_the_batch_goes_on():
+    """Fuselage table limited to beta +-12 deg: a 30 ft/s gust at 60 kt takes the sideslip
+    past it; the run stops (verdict divergent, table and time named, NaN after), while the
+    free response in the same batch runs to the end. No extrapolation."""
+    full = sample_fuselage("HC1")
+    keep = np.abs(full.table.beta) <= np.radians(12.01)
+    table = Table2D(full.table.alpha, full.table.beta[keep],
+                    {k: v[:, keep] for k, v in full.table.coefficients.items()})
+    fus = FuselageAero(table, full.area, full.length, full.moment_reference)
+    system = hc1_system("quasi-static", airspeed=60 * KNOT).with_(fuselage=fus)
+    sim = simulate(system, [gust_response("step", onset=1.0),
+                            free_response({"yaw": np.radians(2.0)})], t_end=20.0)
+    gust, free = sim.runs
+    assert gust.stopped and "fuselage table's beta range" in gust.stop_reason()
+    assert 1.0 <= gust.stop_time < 20.0
+    assert np.isnan(gust.states[-1, 0])
+    assert gust.metrics()["verdict"] == "divergent"
+    assert not free.stopped and np.all(np.isfinite(free.states))
+
+
+def test_trim_without_solution_is_reported_not_a_number():
+    """A fuselage table covering only alpha +-1 deg cannot hold the nose-down trim at 80 kt:
+    the trim says so (converged False, the table named) and linearise refuses it."""
+    full = sample_fuselage("HC1")
+    alpha = np.radians([-1.0, 1.0])
+    coeffs = {k: np.vstack([full.table.beta_slice(k, a) for a in alpha])
+              for k in FUSELAGE_COEFFICIENTS}
+    fus = FuselageAero(Table2D(alpha, full.table.beta, coeffs), full.area, full.length,
+                       full.moment_reference)
+    tr = trim(hc1_system(None).with_(fuselage=fus))
+    assert not tr.converged
+    assert "alpha" in tr.message
+    with pytest.raises(InputError, match="no trim"):
+        linearise(tr)
+
+
+def test_parachute_that_could_reach_the_carrier_is_refused_and_short_cable_warned():
+    """Paper s.4.3: the carrier cable at least 20 % longer than the parachute line (a warning);
+    a line that reaches the hook is an error naming both lengths."""
+    system = hc1_system().with_(cable=Cable(45.0, EA))  # fin fitting 6.43 m from the hub
+    chute = Parachute(1.0, line_length=38.0)             # 45 < 1.2 x 38 = 45.6: warned
+    warned = system.with_(parachute=HingedParachute(chute))
+    assert warned.warnings() and "too short" in warned.warnings()[0]
+    assert system.warnings() == []
+    with pytest.raises(InputError, match="could reach the carrier"):  # 39 + 6.43 >= 45
+        system.with_(parachute=HingedParachute(Parachute(1.0, line_length=39.0)))
+    with pytest.raises(InputError, match="cable length must be > 0"):
+        Cable(0.0, EA)
+    with pytest.raises(InputError, match="parachute mass must be > 0"):
+        HingedParachute(chute, mass=0.0)
+
+
+def test_fin_from_the_one_dof_model():
+    """LiftingSurface.from_fin keeps the fin's table, area, centre of pressure, efficiency."""
+    fin = Fin(Table1D(np.radians([-180.0, 180.0]), {"CY": [1.0, -1.0]}), 0.9,
+              np.array([5.0, 0.0, 1.0]), 0.5)
+    s = LiftingSurface.from_fin(fin)
+    assert (s.area, s.efficiency, s.normal) == (0.9, 0.5, "y")
