@@ -178,22 +178,22 @@ def test_aero_off_case_has_no_aerodynamic_load():
 
 
 @pytest.mark.parametrize(("alpha", "beta", "message"), [
-    (25.0, 0.0, r"alpha = 25 deg is outside the HC1 fuselage table's range \[-20, 20\]"),
-    (-21.0, 10.0, r"alpha = -21 deg is outside"),
-    (0.0, 95.0, r"beta = 95 deg is outside the HC1 fuselage table's range \[-90, 90\]"),
+    (45.0, 0.0, r"alpha = 45 deg is outside the HC1 fuselage table's range \[-40, 40\]"),
+    (-41.0, 10.0, r"alpha = -41 deg is outside"),
+    (0.0, 185.0, r"beta = 185 deg is outside the HC1 fuselage table's range \[-180, 180\]"),
 ])
 def test_envelope_point_outside_the_table_is_refused(alpha, beta, message):
     """No extrapolation (aero_tables module contract): an envelope point outside the HC1
-    fuselage table (alpha -20..20 deg, beta -90..90 deg) raises InputError naming the angle
+    fuselage table (alpha -40..40 deg, beta -180..180 deg) raises InputError naming the angle
     and the range when the study is built."""
     with pytest.raises(InputError, match=message):
         study_at(alpha, beta, fin=False, chute=False)
 
 
 def test_fin_beta_outside_its_table_is_refused():
-    """The fin table (beta -90..90 deg) does not extrapolate either."""
-    with pytest.raises(InputError, match=r"beta = 100 deg is outside the HC1 fin table"):
-        study_at(0.0, 100.0, fuselage=False, chute=False)
+    """The fin table (beta -180..180 deg) does not extrapolate either."""
+    with pytest.raises(InputError, match=r"beta = 185 deg is outside the HC1 fin table"):
+        study_at(0.0, 185.0, fuselage=False, chute=False)
 
 
 def test_parachute_along_fuselage_axis_outside_its_cd_range_is_refused():

@@ -147,9 +147,9 @@ def test_hardpoint_outside_airframe(tmp_path, example_book):
 
 
 def test_envelope_outside_aero_table(tmp_path, example_book):
-    """Rule: no extrapolation of the aerodynamic tables (fuselage alpha range -20..20 deg)."""
+    """Rule: no extrapolation of the aerodynamic tables (fuselage alpha range -40..40 deg)."""
     def edit(b):
-        b["AeroEnvelope"]["B3"] = 35
+        b["AeroEnvelope"]["B3"] = 45
     expect_error(edited(tmp_path, example_book, edit), "sheet 'AeroEnvelope'", "cell B3",
                  "outside the fuselage table's range", "no extrapolation")
 

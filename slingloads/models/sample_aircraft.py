@@ -32,6 +32,7 @@ from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
+from slingloads.models.multibody.local_flow import LiftingSurface
 
 
 @dataclass(frozen=True)
@@ -74,6 +75,8 @@ class SampleReference:
     fin_efficiency: float
     hub: tuple
     chute: tuple
+    htail_area: float = 1.1
+    htail_centre_of_pressure: tuple = (5.0, 0.0, 0.4)
 
 
 #: The generic sample aircraft. Keep in step with slingloads/data/SAMPLE_DATA.md.
@@ -81,11 +84,13 @@ SAMPLES = {
     "HC1": SampleReference(
         name="HC1", mass=2900.0, yaw_inertia=9000.0, fuselage_area=3.0, fuselage_length=11.5,
         moment_reference=(0.25, 0.0, -0.3), fin_area=0.9, fin_centre_of_pressure=(5.9, 0.0, 1.1),
-        fin_efficiency=0.5, hub=(0.0, 0.0, 1.0), chute=(6.4, 0.0, 1.6)),
+        fin_efficiency=0.5, hub=(0.0, 0.0, 1.0), chute=(6.4, 0.0, 1.6),
+        htail_area=1.2, htail_centre_of_pressure=(5.0, 0.0, 0.4)),
     "HC2": SampleReference(
         name="HC2", mass=2850.0, yaw_inertia=8500.0, fuselage_area=3.2, fuselage_length=11.0,
         moment_reference=(0.2, 0.0, -0.3), fin_area=0.8, fin_centre_of_pressure=(5.5, 0.0, 1.0),
-        fin_efficiency=0.5, hub=(0.0, 0.0, 0.95), chute=(6.0, 0.0, 1.5)),
+        fin_efficiency=0.5, hub=(0.0, 0.0, 0.95), chute=(6.0, 0.0, 1.5),
+        htail_area=1.0, htail_centre_of_pressure=(4.7, 0.0, 0.4)),
 }
 
 
@@ -115,7 +120,7 @@ def sample_fuselage(name="HC1"):
     Returns
     -------
     FuselageAero
-        Table over alpha -20..20 deg and beta -90..90 deg, with the sample's reference area,
+        Table over alpha -40..40 deg and beta -180..180 deg, with the sample's reference area,
         length and moment reference point.
     """
     ref = sample_reference(name)
@@ -157,3 +162,42 @@ def sample_hardpoints(name="HC1"):
     feet = hub + np.array([[-0.4, -0.4, -0.4], [-0.4, 0.4, -0.4],
                            [0.4, -0.4, -0.4], [0.4, 0.4, -0.4]])
     return Hardpoints(hub=hub, mast_feet=feet, chute=np.array(ref.chute))
+
+
+def sample_htail(name="HC1"):
+    """Horizontal tail of a sample aircraft (full-tail configuration of the transport without
+    parachute, paper section 5): normal-force coefficient CN against its local angle of attack,
+    -180..180 deg, on ``htail_area``.
+
+    Returns
+    -------
+    LiftingSurface
+    """
+    ref = sample_reference(name)
+    frame = _read_csv(f"{ref.name.lower()}_htail.csv")
+    table = Table1D(np.radians(frame["alpha [deg]"].to_numpy()), {"CN": frame["CN"].to_numpy()},
+                    angle_name="alpha", what=f"{ref.name} horizontal tail")
+    return LiftingSurface(table, ref.htail_area, np.array(ref.htail_centre_of_pressure), "z",
+                          1.0, "horizontal tail")
+
+
+def sample_surfaces(name="HC1", configuration="transport"):
+    """Lifting surfaces of a sample aircraft for the multibody model.
+
+    Parameters
+    ----------
+    name : str
+    configuration : {"transport", "full tail"}
+        "transport": the cut-down fin alone (paper section 3.1, efficiency 0.5); "full tail":
+        the intact fin (efficiency 1) and the horizontal tail (paper section 5.1).
+
+    Returns
+    -------
+    tuple of LiftingSurface
+    """
+    if configuration == "transport":
+        return (LiftingSurface.from_fin(sample_fin(name)),)
+    if configuration == "full tail":
+        return (LiftingSurface.from_fin(sample_fin(name, efficiency=1.0)), sample_htail(name))
+    raise InputError(f"{configuration=!r} is not a valid configuration; valid configurations "
+                     f"are ['transport', 'full tail']", configuration)
