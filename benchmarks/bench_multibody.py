@@ -32,7 +32,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 T0 = time.perf_counter()
-from slingloads.analyses.multibody import Manoeuvre, gust_response, simulate, simulate_runs  # noqa: E402
+from slingloads.analyses.multibody import gust_response, simulate, simulate_runs  # noqa: E402
 from slingloads.analyses.multibody.simulate import _disturbed  # noqa: E402
 from slingloads.analyses.multibody.trim import trim  # noqa: E402
 from slingloads.models.multibody import (  # noqa: E402

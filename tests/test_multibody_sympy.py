@@ -36,9 +36,9 @@ def kane_model(m, inertia, hub, attach, mp, lp, k, c, l0, drag_factor, rho, wind
     B = me.ReferenceFrame("B")
     B.orient_quaternion(N, (q0, q1, q2, q3))
     B.set_ang_vel(N, w1 * B.x + w2 * B.y + w3 * B.z)
-    O = me.Point("O")  # the hook, moving at constant velocity: an inertial origin
-    O.set_vel(N, 0)
-    G = O.locatenew("G", x * N.x + y * N.y + z * N.z)
+    hook = me.Point("O")  # the hook, moving at constant velocity: an inertial origin
+    hook.set_vel(N, 0)
+    G = hook.locatenew("G", x * N.x + y * N.y + z * N.z)
     G.set_vel(N, u1 * N.x + u2 * N.y + u3 * N.z)
     H = G.locatenew("H", hub[0] * B.x + hub[1] * B.y + hub[2] * B.z)
     H.v2pt_theory(G, N, B)
@@ -51,7 +51,7 @@ def kane_model(m, inertia, hub, attach, mp, lp, k, c, l0, drag_factor, rho, wind
                           for j, b in enumerate((B.x, B.y, B.z))), me.Dyadic(0))
     body = me.RigidBody("HC", G, B, m, (inertia_dyadic, G))
     canopy = me.Particle("canopy", P, mp)
-    d = H.pos_from(O)
+    d = H.pos_from(hook)
     span = sp.sqrt(d.dot(d))
     tension = k * (span - l0) + c * d.dot(H.vel(N)) / span
     air = (wind[0] * N.x + wind[1] * N.y + wind[2] * N.z) - P.vel(N)

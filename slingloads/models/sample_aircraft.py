@@ -32,7 +32,6 @@ from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
-from slingloads.models.multibody.local_flow import LiftingSurface
 
 
 @dataclass(frozen=True)
@@ -173,6 +172,8 @@ def sample_htail(name="HC1"):
     -------
     LiftingSurface
     """
+    from slingloads.models.multibody.local_flow import LiftingSurface  # compiled: load lazily
+
     ref = sample_reference(name)
     frame = _read_csv(f"{ref.name.lower()}_htail.csv")
     table = Table1D(np.radians(frame["alpha [deg]"].to_numpy()), {"CN": frame["CN"].to_numpy()},
@@ -195,6 +196,8 @@ def sample_surfaces(name="HC1", configuration="transport"):
     -------
     tuple of LiftingSurface
     """
+    from slingloads.models.multibody.local_flow import LiftingSurface  # compiled: load lazily
+
     if configuration == "transport":
         return (LiftingSurface.from_fin(sample_fin(name)),)
     if configuration == "full tail":

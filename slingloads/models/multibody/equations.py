@@ -40,8 +40,8 @@ import numpy as np
 
 from slingloads.models.multibody._jit import jit
 from slingloads.models.multibody.cable import cable_tension
-from slingloads.models.multibody.lookup import interp1
 from slingloads.models.multibody.local_flow import flow_at, fuselage_loads, surface_force
+from slingloads.models.multibody.lookup import interp1
 from slingloads.models.multibody.parachute_line import (
     HINGE_MARGIN,
     line_curvature,
