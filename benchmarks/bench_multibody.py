@@ -35,6 +35,7 @@ T0 = time.perf_counter()
 from slingloads.analyses.multibody import gust_response, simulate, simulate_runs  # noqa: E402
 from slingloads.analyses.multibody.simulate import _disturbed  # noqa: E402
 from slingloads.analyses.multibody.trim import trim  # noqa: E402
+from slingloads.constants import FOOT, KNOT  # noqa: E402
 from slingloads.models.multibody import (  # noqa: E402
     Cable,
     HingedParachute,
@@ -50,7 +51,6 @@ from slingloads.models.sample_aircraft import (  # noqa: E402
     sample_reference,
     sample_surfaces,
 )
-from slingloads.units import FOOT, KNOT  # noqa: E402
 
 IMPORT_TIME = time.perf_counter() - T0
 T_END, DT, OUT = 60.0, 0.01, 0.1

@@ -25,6 +25,7 @@ from slingloads.analyses.multibody import (
     trim,
 )
 from slingloads.analyses.multibody.simulate import _damping_from_peaks
+from slingloads.constants import G0, KNOT
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
@@ -56,7 +57,6 @@ from slingloads.models.yaw_dynamics import (
     YawModel,
     integrate_reference,
 )
-from slingloads.units import G0, KNOT
 
 MASS, IXX, IYY, IZZ, E = 2900.0, 2500.0, 7000.0, 9000.0, 1.0
 EA, LENGTH = 5e6, 18.3

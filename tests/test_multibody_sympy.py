@@ -15,6 +15,7 @@ from numpy.testing import assert_allclose
 sp = pytest.importorskip("sympy")
 from sympy.physics import mechanics as me  # noqa: E402
 
+from slingloads.constants import G0  # noqa: E402
 from slingloads.models.aero_tables import Table1D  # noqa: E402
 from slingloads.models.airframe import Hardpoints  # noqa: E402
 from slingloads.models.multibody import (  # noqa: E402
@@ -25,7 +26,6 @@ from slingloads.models.multibody import (  # noqa: E402
 )
 from slingloads.models.multibody.equations import N_INFO, N_STATES, evaluate  # noqa: E402
 from slingloads.models.parachute import Parachute  # noqa: E402
-from slingloads.units import G0  # noqa: E402
 
 
 def kane_model(m, inertia, hub, attach, mp, lp, k, c, l0, drag_factor, rho, wind):

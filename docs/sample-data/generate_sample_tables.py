@@ -59,7 +59,7 @@ tail up):
 
 .. math::
 
-    C_N = (1 - w)\, C_{N,max} \tanh(\alpha/\alpha_s) + w\, C_{N,plate} \sin\alpha
+    C_N = (1 - w)\\, C_{N,max} \\tanh(\\alpha/\\alpha_s) + w\\, C_{N,plate} \\sin\\alpha
 """
 
 from __future__ import annotations

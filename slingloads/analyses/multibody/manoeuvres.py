@@ -21,12 +21,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.atmosphere import true_airspeed
 from slingloads.models.gusts import GUST_VELOCITY, make_gust
 from slingloads.models.multibody.carrier import ForwardAcceleration, SteadyFlight
 from slingloads.models.multibody.environment import Wind, WindRamp
-from slingloads.units import KNOT
 
 #: Initial disturbances a free response may apply, and their units.
 DISTURBANCES = {"yaw": "rad", "pitch": "rad", "roll": "rad", "yaw_rate": "rad/s",

@@ -23,9 +23,9 @@ import numpy as np
 import pandas as pd
 
 from slingloads.checks import positive
+from slingloads.constants import G0
 from slingloads.errors import InputError
 from slingloads.models.multibody._jit import jit
-from slingloads.units import G0
 
 
 # ----------------------------------------------------------------------- compiled helpers

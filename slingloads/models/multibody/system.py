@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from slingloads.checks import finite, non_negative, positive
+from slingloads.constants import G0
 from slingloads.errors import InputError
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, FuselageAero
 from slingloads.models.airframe import Hardpoints
@@ -33,7 +34,6 @@ from slingloads.models.multibody.lookup import table_arrays
 from slingloads.models.multibody.parachute_line import HingedParachute, QuasiStaticParachute
 from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.wake import CABLE_MARGIN, check_cable_length
-from slingloads.units import G0
 
 #: Airspeed below which aerodynamic loads are neglected and tables not consulted. [m/s]
 AERO_CUTOFF = 1.0
