@@ -67,7 +67,9 @@ NOTES = [
     "Aerodynamics: the GENERIC HC1 fuselage and fin tables of slingloads/data (SAMPLE_DATA.md): "
     "UH-60-class coefficient magnitudes scaled to a light twin; Prouty flat-plate areas.",
     "Parachute: flat-plate area 1.4 x the neutral-static-stability area of the sizing (the paper's "
-    "FPA + 40 %), CD 0.95 within +-8 deg, wake ratio 0.95 (paper, sections 3.3 and 4.5).",
+    "FPA + 40 %); canopy CD 1.0 (free stream, the default ParachuteCD) within +-8 deg and wake "
+    "ratio 0.95: the paper's 0.95 in all, the 5 % wake loss counted once, in the wake ratio "
+    "(paper, sections 3.2, 3.3 and 4.5).",
     "Previous design envelope: ILLUSTRATIVE, the same airframe under its own rotor thrust "
     "(hook cone 10 deg, Nz 3.5 of CS 29.337, no parachute), standing in for the loads the "
     "structure was designed to before the sling-load role.",

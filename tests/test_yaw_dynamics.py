@@ -91,8 +91,8 @@ def test_nonlinear_model_small_gust_matches_hand_linearisation():
     model = linear_model()
     cond = model.condition
     area = 2.0
-    k = cond.q * (3 * 11 * -0.4 - 1 * 0.5 * -3.0 * 5 + 0.95 * 0.95 * area * 6)
-    c = 0.5 * cond.density * cond.tas * (-1 * 0.5 * -3.0 * 25 + 0.95 * 0.95 * area * 36)
+    k = cond.q * (3 * 11 * -0.4 - 1 * 0.5 * -3.0 * 5 + 0.95 * 1.0 * area * 6)
+    c = 0.5 * cond.density * cond.tas * (-1 * 0.5 * -3.0 * 25 + 0.95 * 1.0 * area * 36)
     s = SolverSettings(t_end=40.0, dt=0.02, output_interval=0.1)
     h = integrate_rk4(model, area, StepGust(0.02, 5.0), settings=s)
     g0 = np.arctan2(0.02, cond.tas)
@@ -111,12 +111,12 @@ def test_drogue_damping_equals_hand_derivation():
     _, _, plus, _ = model.moments(0.0, r, v, area)
     _, _, minus, _ = model.moments(0.0, -r, v, area)
     assert float(plus - minus) / (2 * r) == pytest.approx(
-        -0.5 * rho * v * 0.95 * 0.95 * area * l_c**2, rel=1e-6)
+        -0.5 * rho * v * 0.95 * 1.0 * area * l_c**2, rel=1e-6)
     b = 1e-6
     _, _, plus, _ = model.moments(b, 0.0, v, area)
     _, _, minus, _ = model.moments(-b, 0.0, v, area)
     assert float(plus - minus) / (2 * b) == pytest.approx(
-        0.5 * rho * v * v * 0.95 * 0.95 * area * l_c, rel=1e-6)
+        0.5 * rho * v * v * 0.95 * 1.0 * area * l_c, rel=1e-6)
 
 
 def test_signs_fuselage_diverges_fin_and_chute_converge():
@@ -140,8 +140,8 @@ def test_log_decrement_matches_linear_damping_ratio():
     model = linear_model()
     cond = model.condition
     area = 2.0
-    k = cond.q * (3 * 11 * -0.4 + 7.5 + 0.9025 * area * 6)
-    c = 0.5 * cond.density * cond.tas * (37.5 + 0.9025 * area * 36)
+    k = cond.q * (3 * 11 * -0.4 + 7.5 + 0.95 * area * 6)
+    c = 0.5 * cond.density * cond.tas * (37.5 + 0.95 * area * 36)
     zeta = c / (2 * np.sqrt(k * 9000.0))
     runs = run_yaw(model, area, FiniteGust(0.05, 5.0, 5.0),
                    SolverSettings(t_end=80.0, dt=0.02, output_interval=0.02))

@@ -38,10 +38,11 @@ def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=SPAN, ref=(0.0, 0.0, 0.0)):
 
 def test_neutral_area_by_hand():
     """Paper s.4.1, sum of yaw moments zero: q S L Cn_b - q S_f eta CY_b l_f + q eta_w CD A l_c = 0
-    worked by hand: A = -(3 * 11 * (-0.4) - 1 * 0.5 * (-3) * 5) / (0.95 * 0.95 * 6)
-    = (13.2 - 7.5) / 5.415 = 1.052632 m^2 (q cancels)."""
+    worked by hand with the paper's effective parachute coefficient eta_w CD = 0.95 x 1.0 = 0.95
+    (section 3.3: the wake loss counted once): A = -(3 * 11 * (-0.4) - 1 * 0.5 * (-3) * 5) /
+    (0.95 * 6) = (13.2 - 7.5) / 5.7 = 1.0 m^2 (q cancels)."""
     result = neutral_area(linear_model())
-    assert result.area == pytest.approx(5.7 / 5.415, rel=1e-9)
+    assert result.area == pytest.approx(5.7 / 5.7, rel=1e-9)
     assert result.derivatives["fuselage"] == pytest.approx(
         FlightCondition(80 * KNOT).q * 3 * 11 * -0.4, rel=1e-9)
     assert sum(result.derivatives.values()) == pytest.approx(0.0, abs=1e-8)
@@ -92,7 +93,7 @@ def test_sample_neutral_area_from_raw_csv():
     l_f = ref.fin_centre_of_pressure[0] - ref.hub[0]
     l_c = ref.chute[0] - ref.hub[0]
     expected = -(ref.fuselage_area * ref.fuselage_length * n_b
-                 - ref.fin_area * 0.5 * y_b * l_f) / (0.95 * 0.95 * l_c)
+                 - ref.fin_area * 0.5 * y_b * l_f) / (0.95 * l_c)
     model = YawModel(sample_fuselage("HC1"), sample_fin("HC1"), sample_hardpoints("HC1"),
                      ref.yaw_inertia, parachute=Parachute(1.0))
     result = neutral_area(model)

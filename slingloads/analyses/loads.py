@@ -203,8 +203,8 @@ class LoadsStudy:
             if self.fin is not None:
                 self.fin.table("CY", self.envelope.beta)
             if self.parachute is not None:
-                self.parachute.cd("CD", self._chute_alpha(self.envelope.alpha,
-                                                          self.envelope.beta))
+                self.parachute.coefficient(self._chute_alpha(self.envelope.alpha,
+                                                             self.envelope.beta))
         if self.previous_envelope is not None:
             _check_previous(self.previous_envelope)
 

@@ -2,11 +2,26 @@
 
 Drag magnitude :math:`D = k_{open}\\, q\\, \\eta_{wake}\\, C_D(\\alpha_p)\\, A`, where
 :math:`\\eta_{wake}` is the ratio of the dynamic pressure at the canopy (in the fuselage wake)
-to the free-stream one and :math:`\\alpha_p` the canopy's angle of attack. The paper takes
-:math:`C_D = 0.95` over +-8 deg, lift and moment zero.
+to the free-stream one and :math:`\\alpha_p` the canopy's angle of attack.
 
-Note: the paper explains its 0.95 drag coefficient by the 5 % wake loss. If a tabulated
-``CD`` already contains the wake loss, set ``wake_ratio`` to 1 so the loss is not counted twice.
+**The wake loss is counted once, in the wake ratio.** The paper's drag coefficient of 0.95
+over +-8 deg (lift and moment zero) is a canopy coefficient of one reduced by the 5 %
+dynamic-pressure loss in the fuselage wake (its sections 3.2 and 3.3). Here the default
+canopy table is the free-stream coefficient, **CD = 1.0** within +-8 deg, and the default
+**wake ratio is 0.95**, so the product is the paper's 0.95. The wake ratio carries the loss
+because it belongs to the installation, not to the canopy: it is what the wake sizing gives
+at the chosen line length (:mod:`slingloads.models.wake`, the 'target q ratio'), and a longer
+line changes it while the canopy's coefficient stays. A user whose tabulated coefficient
+already contains the wake loss (as the paper's 0.95 does) sets the wake ratio to 1.
+
+The table's axes are declared (``docs/conventions.md``, section 5):
+
+* ``"wind"`` (default): column ``CD``, the force along the canopy's relative wind (lift and
+  side force zero, the paper's flat-plate model);
+* ``"canopy"``: column ``CT``, the tangential force along the canopy's symmetry axis, which
+  lies along the line (normal force zero).
+
+With the line along the relative wind (canopy angle of attack 0) both give the same force.
 """
 
 from __future__ import annotations
@@ -18,15 +33,25 @@ import numpy as np
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D
 
-#: The paper's drag coefficient and its angle-of-attack validity range [rad].
+#: The paper's effective drag coefficient (canopy coefficient x wake ratio) and its
+#: angle-of-attack validity range [rad].
 PAPER_CD = 0.95
 PAPER_CD_RANGE = np.radians(8.0)
+#: Free-stream drag coefficient of the canopy (the paper: "equal to one or almost one"). [-]
+CANOPY_CD = 1.0
+#: Dynamic-pressure ratio at the canopy in the fuselage wake (the paper's q_loss = 0.95). [-]
+WAKE_RATIO = 0.95
+#: Axes a parachute table may be given in, with the name of its coefficient column.
+PARACHUTE_AXES = {"wind": "CD", "canopy": "CT"}
 
 
-def paper_cd_table():
-    """The paper's parachute drag table: CD = 0.95 for alpha in [-8, 8] deg."""
+def canopy_cd_table():
+    """Default canopy drag table: free-stream CD = 1.0 for alpha in [-8, 8] deg, wind axes.
+
+    Times the default wake ratio 0.95 it gives the paper's effective 0.95 (section 3.3).
+    """
     return Table1D(np.array([-PAPER_CD_RANGE, PAPER_CD_RANGE]),
-                   {"CD": np.array([PAPER_CD, PAPER_CD])}, angle_name="alpha",
+                   {"CD": np.array([CANOPY_CD, CANOPY_CD])}, angle_name="alpha",
                    what="parachute")
 
 
@@ -34,14 +59,16 @@ def paper_cd_table():
 COLLAPSED_CD = 0.4
 
 
-def extended_cd_table(cd=PAPER_CD, valid=PAPER_CD_RANGE, collapsed=COLLAPSED_CD):
-    """GENERIC canopy drag table over the whole circle of canopy angle of attack.
+def extended_cd_table(cd=CANOPY_CD, valid=PAPER_CD_RANGE, collapsed=COLLAPSED_CD):
+    """GENERIC canopy drag table over the whole circle of canopy angle of attack, free stream.
 
-    The paper's CD (0.95) over +-8 deg, then a cosine-squared fall to ``collapsed`` at 90 deg,
-    held beyond (flow from the side or from behind: a partly collapsed canopy). Only the
-    +-8 deg part comes from the paper; the rest is an assumption of this generic set, there so
-    that a hinged parachute can be flown from hover, where it hangs below its attachment and
-    meets the flow at up to 90 deg as the airspeed builds.
+    The canopy's free-stream CD (1.0; with the default wake ratio 0.95 the paper's 0.95) over
+    +-8 deg, then a cosine-squared fall to ``collapsed`` at 90 deg, held beyond (flow from the
+    side or from behind: a partly collapsed canopy). Only the +-8 deg part comes from the
+    paper; the rest is an assumption of this generic set, there so that a hinged parachute can
+    be flown from hover, where it hangs below its attachment and meets the flow at up to 90 deg
+    as the airspeed builds. Like every canopy table here it carries no wake loss: the
+    parachute's wake ratio does.
 
     Returns
     -------
@@ -64,20 +91,27 @@ class Parachute:
     area : float
         Flat-plate area A. [m^2]
     cd : Table1D
-        Drag coefficient ``CD`` against the canopy angle of attack (default: the paper's).
+        Force coefficient against the canopy angle of attack, free stream (default:
+        :func:`canopy_cd_table`, CD 1.0 within +-8 deg): column ``CD`` in wind axes, ``CT``
+        in canopy axes.
     wake_ratio : float
-        Dynamic pressure at the canopy over free-stream dynamic pressure, 0 < eta <= 1. [-]
+        Dynamic pressure at the canopy over free-stream dynamic pressure, 0 < eta <= 1
+        (default 0.95, the paper's wake loss; 1 if ``cd`` already contains it). [-]
     line_length : float
         Length of the line from the fin attachment to the canopy. [m]
     opening_factor : float
         Opening-load factor applied to the drag in the loads cases, >= 1. [-]
+    axes : str
+        Axes of ``cd``: ``"wind"`` (drag along the relative wind) or ``"canopy"``
+        (tangential force along the canopy axis).
     """
 
     area: float
     cd: Table1D | None = None
-    wake_ratio: float = 0.95
+    wake_ratio: float = WAKE_RATIO
     line_length: float = 10.0
     opening_factor: float = 1.0
+    axes: str = "wind"
 
     def __post_init__(self):
         area = float(self.area)
@@ -92,13 +126,21 @@ class Parachute:
         k = float(self.opening_factor)
         if not np.isfinite(k) or k < 1:
             raise InputError("parachute opening-load factor must be >= 1", k)
-        cd = paper_cd_table() if self.cd is None else self.cd
-        if "CD" not in cd.coefficients:
-            raise InputError("parachute table needs a CD column")
-        values = cd.coefficients["CD"]
+        if self.axes not in PARACHUTE_AXES:
+            raise InputError(f"parachute table axes must be one of {list(PARACHUTE_AXES)}",
+                             self.axes)
+        column = PARACHUTE_AXES[self.axes]
+        cd = canopy_cd_table() if self.cd is None else self.cd
+        if self.cd is None and self.axes == "canopy":
+            cd = Table1D(cd.angle, {"CT": cd.coefficients["CD"]}, "alpha", "parachute")
+        if column not in cd.coefficients:
+            raise InputError(f"a parachute table in {self.axes} axes needs a {column} column",
+                             sorted(cd.coefficients))
+        values = cd.coefficients[column]
         if np.any((values <= 0) | (values > 2.0)):
-            raise InputError("parachute CD must lie in (0, 2] (a flat plate normal to the "
-                             "flow has 1.17)", float(values[(values <= 0) | (values > 2)][0]))
+            raise InputError(f"parachute {column} must lie in (0, 2] (a flat plate normal to "
+                             "the flow has 1.17)",
+                             float(values[(values <= 0) | (values > 2)][0]))
         if not (cd.angle[0] <= 0 <= cd.angle[-1]):
             raise InputError("parachute CD table must include alpha = 0 deg",
                              np.degrees(cd.angle).tolist())
@@ -108,9 +150,23 @@ class Parachute:
         object.__setattr__(self, "opening_factor", k)
         object.__setattr__(self, "cd", cd)
 
+    @property
+    def column(self):
+        """Name of the coefficient column of :attr:`cd` (``CD`` or ``CT``)."""
+        return PARACHUTE_AXES[self.axes]
+
+    def coefficient(self, alpha=0.0):
+        """Free-stream force coefficient CD (wind axes) or CT (canopy axes) at ``alpha``
+        [rad]; no wake ratio. [-]"""
+        return self.cd(self.column, alpha)
+
+    def effective_coefficient(self, alpha=0.0):
+        """Coefficient times the wake ratio: the one factor the drag uses. [-]"""
+        return self.wake_ratio * self.coefficient(alpha)
+
     def drag_area(self, alpha=0.0):
         """Effective drag area eta_wake * CD(alpha) * A [m^2] (no opening factor)."""
-        return self.wake_ratio * self.cd("CD", alpha) * self.area
+        return self.effective_coefficient(alpha) * self.area
 
     def drag(self, q, alpha=0.0, opening=False):
         """Drag magnitude [N] at free-stream dynamic pressure ``q`` [Pa].
@@ -126,3 +182,15 @@ class Parachute:
         """
         factor = self.opening_factor if opening else 1.0
         return factor * np.asarray(q, float) * self.drag_area(alpha)
+
+    def force_direction(self, wind, canopy_axis):
+        """Unit direction of the drag on the airframe, airframe axes, shape (n, 3).
+
+        Parameters
+        ----------
+        wind : ndarray, shape (n, 3)
+            Direction of the relative wind at the canopy (downstream). [-]
+        canopy_axis : ndarray, shape (n, 3)
+            Direction of the line from the attachment to the canopy. [-]
+        """
+        return np.asarray(wind if self.axes == "wind" else canopy_axis, float)

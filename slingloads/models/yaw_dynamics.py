@@ -189,7 +189,8 @@ class YawModel:
         horizontally from the CG by d), > 0. [kg m^2]
     condition : FlightCondition
     parachute : Parachute or None
-        Drag coefficient (at canopy alpha 0: the canopy trails along the flow) and wake ratio;
+        Drag coefficient (at canopy alpha 0: the canopy trails along the flow) times the wake
+        ratio, the one factor that carries the wake loss (:mod:`slingloads.models.parachute`);
         the area comes with each run. ``None`` with area 0 runs models no parachute.
     fin_rate_damping : bool
         Evaluate the fin at its local sideslip (yaw-rate damping); False uses the axis sideslip.
@@ -228,7 +229,7 @@ class YawModel:
             if self.hardpoints.chute is None:
                 raise InputError("a parachute needs the attachment point Hardpoints.chute")
             arm = self.hardpoints.chute - hub
-            cd = float(self.parachute.cd("CD", 0.0)) * self.parachute.wake_ratio
+            cd = float(self.parachute.effective_coefficient(0.0))
             object.__setattr__(self, "_chute", (cd, arm[0], arm[1]))
 
     # ----------------------------------------------------------------------------- helpers
@@ -255,7 +256,8 @@ class YawModel:
 
     @property
     def chute_drag_coefficient(self):
-        """Wake ratio times canopy CD at alpha 0. [-]"""
+        """Wake ratio times the canopy's free-stream CD at alpha 0 (the paper's 0.95 with the
+        defaults 0.95 x 1.0). [-]"""
         return 0.0 if self.parachute is None else self._chute[0]
 
     def beta_range(self):
