@@ -2,9 +2,11 @@
 
 References:
 
-* docs/conventions.md section 3 (flight-mechanics coefficients into airframe axes):
-  d = (cos a cos b, -sin b, sin a cos b), l = (-sin a, 0, cos a),
-  F = q S (CD d + CY (0, 1, 0) + CL l), M = q S L (-Cl, Cm, -Cn) about the moment reference;
+* docs/conventions.md section 3 (flight-mechanics coefficients into airframe axes; the sample
+  tables give forces in wind axes and moments in body axes):
+  d = (cos a cos b, -sin b, sin a cos b), y_W = (cos a sin b, cos b, sin a sin b),
+  l = (-sin a, 0, cos a), F = q S (CD d + CY y_W + CL l), M = q S L (-Cl, Cm, -Cn) about the
+  moment reference;
   fin side force q S_fin eta CY(beta) along +y at the fin centre of pressure.
 * docs/conventions.md section 5: parachute drag D = k_open q eta_wake CD A along the relative
   wind d(alpha, beta); the paper's effective CD of 0.95 (FACTS section 3) is the default
@@ -82,19 +84,22 @@ def blocks(study):
 
 
 def test_fuselage_resultants_equal_the_table_at_a_grid_point():
-    """HC1 fuselage table at alpha = 10 deg, beta = 16 deg (CSV row): CD = 0.445877,
-    CY = -0.585467, CL = 0.188417, Cl = -0.013248, Cm = 0.077793, Cn = -0.088524.
-    q S = 1621.000 * 3.0 = 4863.00 N; d = (0.946658, -0.275637, 0.166921),
+    """HC1 fuselage table (wind-axes forces, body-axes moments, SAMPLE_DATA.md) at alpha = 10
+    deg, beta = 16 deg (CSV row): CD = 0.607253, CY = -0.562787, CL = 0.188417, Cl = -0.013248,
+    Cm = 0.077793, Cn = -0.088524. q S = 1621.000 * 3.0 = 4863.00 N; airflow
+    d = (cos a cos b, -sin b, sin a cos b) = (0.946658, -0.275637, 0.166921), wind y axis
+    y_W = (cos a sin b, cos b, sin a sin b) = (0.271450, 0.961262, 0.047864), lift
     l = (-0.173648, 0, 0.984808); by hand
-    F = 4863.00 (CD d + CY y + CL l) = (1893.53, -3444.79, 1264.29) N,
+    F = 4863.00 (CD d + CY y_W + CL l) = (1893.53, -3444.79, 1264.29) N,
     M = 4863.00 * 11.5 (-Cl, Cm, -Cn) = (740.888, 4350.54, 4950.66) N m about (0.25, 0, -0.3).
     The forces LoadsStudy puts on the aerodynamic points sum to F, and their moment about the
     moment reference (plus any point moments) is M."""
     row = fuselage_row(10.0, 16.0)
     a, b = np.radians(10.0), np.radians(16.0)
     d = np.array([np.cos(a) * np.cos(b), -np.sin(b), np.sin(a) * np.cos(b)])
+    y_w = np.array([np.cos(a) * np.sin(b), np.cos(b), np.sin(a) * np.sin(b)])
     lift = np.array([-np.sin(a), 0.0, np.cos(a)])
-    f_hand = Q * S * (row["CD"] * d + row["CY"] * np.array([0.0, 1.0, 0.0]) + row["CL"] * lift)
+    f_hand = Q * S * (row["CD"] * d + row["CY"] * y_w + row["CL"] * lift)
     m_hand = Q * S * LREF * np.array([-row["Cl"], row["Cm"], -row["Cn"]])
     assert_allclose(f_hand, [1893.53, -3444.79, 1264.29], rtol=1e-5)  # the worked numbers
     assert_allclose(m_hand, [740.888, 4350.54, 4950.66], rtol=1e-5)

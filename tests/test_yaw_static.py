@@ -64,12 +64,14 @@ def test_neutral_area_gives_zero_stiffness():
 
 def test_side_force_transfer_to_suspension_axis():
     """Moment transfer M_axis = M_ref + (r_ref - r_hub) x F: a pure side force CY at a moment
-    reference 1 m aft of the hub adds N = -dx * q S CY (nose right positive), by hand."""
+    reference 1 m aft of the hub adds N = -dx * q S CY (nose right positive), by hand. The
+    table is in body axes (CX, CY, CZ), so CY is exactly the force along +y."""
     beta = np.linspace(-0.5, 0.5, 11)
     alpha = np.array([-0.1, 0.1])
-    coeffs = {k: np.zeros((2, beta.size)) for k in FUSELAGE_COEFFICIENTS}
+    coeffs = {k: np.zeros((2, beta.size)) for k in ("CX", "CY", "CZ", "Cl", "Cm", "Cn")}
     coeffs["CY"] = np.tile(-2.0 * beta, (2, 1))
-    fus = FuselageAero(Table2D(alpha, beta, coeffs), 3.0, 11.0, np.array([1.0, 0.0, 0.0]))
+    fus = FuselageAero(Table2D(alpha, beta, coeffs), 3.0, 11.0, np.array([1.0, 0.0, 0.0]),
+                       force_axes="body")
     hp = Hardpoints(hub=[0.0, 0.0, 1.0], mast_feet=[[0.0, 0.0, 0.5]])
     model = YawModel(fus, None, hp, 9000.0)
     n_fus, _, _ = model.static_moments(np.array([0.2]))
@@ -78,14 +80,16 @@ def test_side_force_transfer_to_suspension_axis():
 
 def test_sample_neutral_area_from_raw_csv():
     """Independent recomputation for HC1 from the CSV file with pandas and np.polyfit: fuselage
-    Cn about the hub axis is Cn - dx_ref (CY - CD sin beta) / L at alpha 0, fin Cn = -eta CY;
+    Cn about the hub axis is Cn - dx_ref F_y / L at alpha 0 with the body-axis side force
+    F_y = CY cos beta - CD sin beta of the wind-axes table (SAMPLE_DATA.md), fin Cn = -eta CY;
     least squares over +-10 deg; area = -(q S L n_b + q S_f l_f (-eta) y_b) / (q eta_w CD l_c)."""
     ref = sample_reference("HC1")
     raw = pd.read_csv(ROOT / "slingloads" / "data" / "hc1_fuselage.csv")
     raw = raw[(raw["alpha [deg]"] == 0) & (raw["beta [deg]"].abs() <= 10)]
     b = np.radians(raw["beta [deg]"].to_numpy())
     dx_ref = ref.moment_reference[0] - ref.hub[0]
-    cn = raw["Cn"] - dx_ref * (raw["CY"] - raw["CD"] * np.sin(b)) / ref.fuselage_length
+    side = raw["CY"] * np.cos(b) - raw["CD"] * np.sin(b)
+    cn = raw["Cn"] - dx_ref * side / ref.fuselage_length
     n_b = np.polyfit(b, cn, 1)[0]
     fin = pd.read_csv(ROOT / "slingloads" / "data" / "hc1_fin.csv")
     fin = fin[fin["beta [deg]"].abs() <= 10]

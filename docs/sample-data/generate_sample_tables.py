@@ -13,32 +13,42 @@ Run from the repository root to rewrite the CSV files::
 
 The output is deterministic (no random numbers); rerunning reproduces the committed files.
 
-Fuselage alone (blades and tailplane removed), angles alpha, beta in radians, ``s = sin``:
+Fuselage alone (blades and tailplane removed), angles alpha, beta in radians. The shapes are
+written first as a body-axis lateral force ``C_Fy``, an along-wind part ``C_A`` and a lift
+``C_L``; the force is
+
+.. math::
+
+    F / (q S) = C_A \\hat d + (C_{F_y} + C_A \\sin\\beta)\\,\\hat y + C_L \\hat l
+
+with :math:`\\hat d` the airflow, :math:`\\hat y` body y and :math:`\\hat l` the lift direction
+(``docs/conventions.md``), so that the body-axis lateral force is exactly ``C_Fy`` and the
+broadside drag is not counted twice at 90 deg. **The tables are written in wind axes** (the
+default force axes of :class:`~slingloads.models.aerodynamics.FuselageAero`): CD = F.d,
+CY = F.y_W with y_W = (cos a sin b, cos b, sin a sin b), CL = F.l; **moments in body axes**:
 
 .. math::
 
     C_{F_y}(\\beta) &= -(a_1 \\sin\\beta\\cos\\beta + a_2 \\sin\\beta\\,|\\sin\\beta|)
         \\quad\\text{(body-axis lateral force)} \\\\
-    C_D &= C_{D0}(1 + 2\\sin^2\\alpha)\\cos^2\\beta + a_2\\sin^2\\beta \\\\
-    C_Y &= C_{F_y} + C_D \\sin\\beta \\\\
+    C_A &= C_{D0}(1 + 2\\sin^2\\alpha)\\cos^2\\beta + a_2\\sin^2\\beta \\\\
+    C_D &= C_A \\cos^2\\beta - C_{F_y} \\sin\\beta \\\\
+    C_Y &= (C_{F_y} + C_A \\sin\\beta) \\cos\\beta \\\\
     C_L &= (C_{L0} + C_{L\\alpha}\\sin\\alpha\\cos\\alpha)\\cos^2\\beta \\\\
     C_l &= -c_l \\sin\\beta\\cos\\beta \\\\
     C_m &= (C_{m0} + C_{m\\alpha}\\sin\\alpha)\\cos^2\\beta \\\\
     C_n &= -A_n \\sin 4\\beta \\,(1 - 0.5\\sin^2\\alpha)
 
-``C_Y`` is defined as in :mod:`slingloads.models.aerodynamics`: the force is
-``q S (CD d + CY y + CL l)`` with the drag along the airflow ``d`` whose y component is
-``-sin(beta)``. Writing ``CY = C_Fy + CD sin(beta)`` makes the total body-axis lateral force
-equal to the shaped curve ``C_Fy`` and avoids counting the broadside drag twice at 90 deg
-(there ``CD = a2`` carries all of it and ``CY = 0``).
+(At 90 deg ``C_A = a2`` and ``C_Fy = -a2``: CD = a2 carries all the broadside force, CY = 0.)
 
 ``Cn = -A_n sin(4 beta)`` is directionally unstable near zero (dCn/dbeta = -4 A_n), peaks at
 22.5 deg and returns to zero at 45 deg, as the UH-60-class data do (|Cn| 0.03 / 0.06 / 0.08 at
 5 / 10 / 20 deg for A_n = 0.085); beyond 45 deg it is weakly stabilising (the tail boom
 weathervanes broadside).
 
-Fin (intact, side force on its own area, sideslip only): a tanh lift curve that blends into a
-flat plate after the stall,
+Fin (intact, side force on its own area, sideslip only, **body axes**: along +y, normal to
+the fin's plane, as a flat plate's normal force is): a tanh lift curve that blends into a flat
+plate after the stall,
 
 .. math::
 
@@ -96,8 +106,9 @@ def fuselage_table(p):
     a, b = np.radians(a_deg), np.radians(b_deg)
     sa, sb, cb = np.sin(a), np.sin(b), np.cos(b)
     c_fy = -(p["a1"] * sb * cb + p["a2"] * sb * np.abs(sb))
-    cd = p["cd0"] * (1.0 + 2.0 * sa**2) * cb**2 + p["a2"] * sb**2
-    cy = c_fy + cd * sb
+    c_a = p["cd0"] * (1.0 + 2.0 * sa**2) * cb**2 + p["a2"] * sb**2
+    cd = c_a * cb**2 - c_fy * sb  # wind axes: the force's component along the airflow
+    cy = (c_fy + c_a * sb) * cb   # and along y_W
     cl = (p["cl0"] + p["cla"] * sa * np.cos(a)) * cb**2
     roll = -p["cl_roll"] * sb * cb
     cm = (p["cm0"] + p["cma"] * sa) * cb**2

@@ -198,10 +198,10 @@ class LoadsStudy:
         if not self.generate and not self.listed:
             raise InputError("no load case: generation is off and none is listed")
         if self.envelope is not None:
-            for table in (t for t in (self.fuselage,) if t is not None):
-                table.table("CD", self.envelope.alpha, self.envelope.beta)
+            if self.fuselage is not None:
+                self.fuselage.airframe_coefficients(self.envelope.alpha, self.envelope.beta)
             if self.fin is not None:
-                self.fin.table("CY", self.envelope.beta)
+                self.fin.force(self.envelope.beta, 0.0)
             if self.parachute is not None:
                 self.parachute.coefficient(self._chute_alpha(self.envelope.alpha,
                                                              self.envelope.beta))
@@ -354,8 +354,10 @@ class LoadsStudy:
             on = cases["chute"].to_numpy(bool)
             # the wind direction exists even when no aero point is set: alpha = beta = 0
             drag = self.parachute.drag(q, self._chute_alpha(alpha_q, beta_q), opening=True)
-            direction = (airflow_direction(alpha_q, beta_q) if self.chute_line == "relative wind"
-                         else np.tile([1.0, 0.0, 0.0], (c, 1)))
+            wind = airflow_direction(alpha_q, beta_q)
+            line = (wind if self.chute_line == "relative wind"
+                    else np.tile([1.0, 0.0, 0.0], (c, 1)))
+            direction = self.parachute.force_direction(wind, line)
             forces[:, start] = (drag * on)[:, None] * direction
         return positions, forces, moments
 

@@ -1,29 +1,41 @@
-"""Fuselage and vertical-fin aerodynamics in airframe axes.
+"""Fuselage and vertical-fin aerodynamics in airframe axes, from tables in declared axes.
 
-Flight-mechanics conventions for the *coefficients* (as the data are usually published):
-angle of attack ``alpha`` positive nose up, sideslip ``beta`` positive with the wind coming
-from the right; drag ``CD`` along the airflow, side force ``CY`` along +y (right), lift ``CL``
-normal to the airflow in the x-z plane, upwards; rolling moment ``Cl`` positive right side
-down, pitching moment ``Cm`` positive nose up, yawing moment ``Cn`` positive nose right. With
-these, a directionally stable body has dCn/dbeta > 0.
+Angles follow the flight-mechanics convention: angle of attack ``alpha`` positive nose up,
+sideslip ``beta`` positive with the wind coming from the right. Each table **declares its
+axes**, and its coefficients are converted **once, on input**, to force and moment
+coefficients in airframe axes (x aft, y right, z up; ``docs/conventions.md``, section 3).
 
-Forces and moments returned here are in airframe axes (x aft, y right, z up), see
-``docs/conventions.md``:
+Flight-mechanics frames, given by their unit vectors in airframe axes (body frame B: x
+forward, y right, z down, so ``x_B = (-1, 0, 0)``, ``y_B = (0, 1, 0)``, ``z_B = (0, 0, -1)``):
 
-.. math::
+* stability S (B turned by alpha about y_B):
+  ``x_S = (-cos a, 0, -sin a)``, ``y_S = y_B``, ``z_S = (sin a, 0, -cos a)``;
+* wind W (S turned by beta about z_S; x_W along the flight velocity relative to the air):
+  ``x_W = (-cos a cos b, sin b, -sin a cos b)``, ``y_W = (cos a sin b, cos b, sin a sin b)``,
+  ``z_W = z_S``.
 
-    F = q S (C_D \\hat d + C_Y \\hat y + C_L \\hat l), \\qquad
-    M = q S L (-C_l, C_m, -C_n)
+Force coefficients by declared axes (``FORCE_AXES``):
 
-with the airflow direction :math:`\\hat d = (\\cos\\alpha\\cos\\beta, -\\sin\\beta,
-\\sin\\alpha\\cos\\beta)` and the lift direction :math:`\\hat l = (-\\sin\\alpha, 0,
-\\cos\\alpha)`. (Roll right-side-down and yaw nose-right are negative rotations about +x aft
-and +z up, hence the two minus signs.)
+* ``"wind"``: ``CD`` drag along the airflow (-x_W), ``CY`` side force along y_W, ``CL`` lift
+  along -z_W (normal to the airflow in the x-z plane, up): ``F = q S (-CD x_W + CY y_W - CL z_W)``;
+* ``"stability"``: ``CD`` along -x_S (the airflow's projection on the plane of symmetry),
+  ``CY`` along y_B, ``CL`` along -z_S: ``F = q S (-CD x_S + CY y_S - CL z_S)``;
+* ``"body"``: ``CX, CY, CZ`` along x_B (forward), y_B (right), z_B (down):
+  ``F = q S (CX x_B + CY y_B + CZ z_B)``.
+
+Moment coefficients ``Cl, Cm, Cn`` about the axes of the declared moment frame
+(``MOMENT_AXES``: ``"body"``, ``"stability"`` or ``"wind"``), right-handed in that frame (so Cl
+positive right side down, Cm nose up, Cn nose right in body axes):
+``M = q S L (Cl x_F + Cm y_F + Cn z_F)``. In airframe axes the body-axes moment is
+``q S L (-Cl, Cm, -Cn)``.
+
+With these, a directionally stable body has dCn/dbeta > 0. A fin's table is against sideslip
+only: it is taken at zero angle of attack, where the stability and body frames coincide.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -31,7 +43,108 @@ from slingloads.checks import positive
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 
-FUSELAGE_COEFFICIENTS = ("CD", "CY", "CL", "Cl", "Cm", "Cn")
+#: Force-coefficient columns of a table in each declared force frame.
+FORCE_AXES = {"wind": ("CD", "CY", "CL"), "stability": ("CD", "CY", "CL"),
+              "body": ("CX", "CY", "CZ")}
+#: Frames the moment coefficients ``Cl, Cm, Cn`` may be given in.
+MOMENT_AXES = ("body", "stability", "wind")
+#: Moment-coefficient columns.
+MOMENT_COLUMNS = ("Cl", "Cm", "Cn")
+#: Columns of a fuselage table in the default axes (forces in wind axes, moments in body axes).
+FUSELAGE_COEFFICIENTS = FORCE_AXES["wind"] + MOMENT_COLUMNS
+#: Frames a fin table may be given in (its side-force column ``CY``).
+FIN_AXES = ("body", "wind")
+#: Names of the internal airframe-axes coefficients (force x, y, z; moment x, y, z).
+AIRFRAME_COLUMNS = ("CFx", "CFy", "CFz", "CMx", "CMy", "CMz")
+#: Signs of the force columns along the frame's (x, y, z) axes: drag and lift oppose x and z.
+_FORCE_SIGNS = {"wind": (-1.0, 1.0, -1.0), "stability": (-1.0, 1.0, -1.0),
+                "body": (1.0, 1.0, 1.0)}
+
+
+def fuselage_columns(force_axes="wind"):
+    """Columns a fuselage table needs with forces in ``force_axes``: e.g. CD, CY, CL, Cl, Cm, Cn."""
+    _check_choice(force_axes, FORCE_AXES, "force axes")
+    return FORCE_AXES[force_axes] + MOMENT_COLUMNS
+
+
+def _check_choice(value, valid, what):
+    if value not in valid:
+        raise InputError(f"aerodynamic {what} must be one of {list(valid)}", value)
+
+
+def frame_axes(axes, alpha, beta):
+    """Unit vectors of a flight-mechanics frame in airframe axes.
+
+    Parameters
+    ----------
+    axes : str
+        ``"body"``, ``"stability"`` or ``"wind"``.
+    alpha, beta : array_like
+        Angle of attack and sideslip. [rad]
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        ``out[..., i, :]`` is the frame's i-th axis (x, y, z) in airframe axes. [-]
+    """
+    _check_choice(axes, MOMENT_AXES, "axes")
+    a, b = np.broadcast_arrays(np.asarray(alpha, float), np.asarray(beta, float))
+    ca, sa, cb, sb = np.cos(a), np.sin(a), np.cos(b), np.sin(b)
+    zero, one = np.zeros_like(a), np.ones_like(a)
+    if axes == "body":
+        rows = [(-one, zero, zero), (zero, one, zero), (zero, zero, -one)]
+    elif axes == "stability":
+        rows = [(-ca, zero, -sa), (zero, one, zero), (sa, zero, -ca)]
+    else:
+        rows = [(-ca * cb, sb, -sa * cb), (ca * sb, cb, sa * sb), (sa, zero, -ca)]
+    return np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
+
+
+def force_to_airframe(coefficients, alpha, beta, axes="wind"):
+    """Force coefficients of a declared frame as airframe-axes coefficients.
+
+    Parameters
+    ----------
+    coefficients : array_like, shape (..., 3)
+        (CD, CY, CL) for ``wind`` and ``stability``, (CX, CY, CZ) for ``body``. [-]
+    alpha, beta : array_like
+        [rad]
+    axes : str
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        Force over q S along airframe x (aft), y (right), z (up). [-]
+    """
+    _check_choice(axes, FORCE_AXES, "force axes")
+    c = np.asarray(coefficients, float) * np.array(_FORCE_SIGNS[axes])
+    return np.einsum("...i,...ij->...j", c, frame_axes(axes, alpha, beta))
+
+
+def force_from_airframe(coefficients, alpha, beta, axes="wind"):
+    """Inverse of :func:`force_to_airframe` (the frames are orthonormal). [-]"""
+    _check_choice(axes, FORCE_AXES, "force axes")
+    c = np.einsum("...ij,...j->...i", frame_axes(axes, alpha, beta),
+                  np.asarray(coefficients, float))
+    return c * np.array(_FORCE_SIGNS[axes])
+
+
+def moment_to_airframe(coefficients, alpha, beta, axes="body"):
+    """Moment coefficients (Cl, Cm, Cn) about a declared frame's axes as airframe-axes ones.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        Moment over q S L about airframe x, y, z (right-handed). [-]
+    """
+    return np.einsum("...i,...ij->...j", np.asarray(coefficients, float),
+                     frame_axes(axes, alpha, beta))
+
+
+def moment_from_airframe(coefficients, alpha, beta, axes="body"):
+    """Inverse of :func:`moment_to_airframe`. [-]"""
+    return np.einsum("...ij,...j->...i", frame_axes(axes, alpha, beta),
+                     np.asarray(coefficients, float))
 
 
 def airflow_direction(alpha, beta):
@@ -45,17 +158,14 @@ def airflow_direction(alpha, beta):
     Returns
     -------
     ndarray, shape (..., 3)
-        Drag direction. [-]
+        Drag direction ``-x_W = (cos a cos b, -sin b, sin a cos b)``. [-]
     """
-    alpha, beta = np.broadcast_arrays(np.asarray(alpha, float), np.asarray(beta, float))
-    return np.stack([np.cos(alpha) * np.cos(beta), -np.sin(beta),
-                     np.sin(alpha) * np.cos(beta)], axis=-1)
+    return -frame_axes("wind", alpha, beta)[..., 0, :]
 
 
 def lift_direction(alpha):
-    """Unit vector of lift (normal to the airflow in the x-z plane, upwards). [-]"""
-    alpha = np.asarray(alpha, float)
-    return np.stack([-np.sin(alpha), np.zeros_like(alpha), np.cos(alpha)], axis=-1)
+    """Unit vector of lift (normal to the airflow in the x-z plane, upwards), ``-z_S``. [-]"""
+    return -frame_axes("stability", alpha, 0.0)[..., 2, :]
 
 
 def _positive(value, name, unit):
@@ -64,40 +174,86 @@ def _positive(value, name, unit):
 
 @dataclass(frozen=True)
 class FuselageAero:
-    """Fuselage aerodynamic coefficients with their reference quantities.
+    """Fuselage aerodynamic coefficients with their reference quantities and axes.
 
     Parameters
     ----------
     table : Table2D
-        Coefficients ``CD, CY, CL, Cl, Cm, Cn`` over alpha and beta.
+        Coefficients over alpha and beta: the force columns of ``force_axes``
+        (``CD, CY, CL`` or ``CX, CY, CZ``) and ``Cl, Cm, Cn``.
     area : float
         Reference area S. [m^2]
     length : float
         Reference length L. [m]
     moment_reference : array_like, shape (3,)
         Point about which the moment coefficients are given. [m]
+    force_axes : str
+        Frame of the force coefficients: ``"wind"`` (default), ``"stability"`` or ``"body"``.
+    moment_axes : str
+        Frame of the moment coefficients: ``"body"`` (default), ``"stability"`` or ``"wind"``.
+
+    Attributes
+    ----------
+    airframe_table : Table2D
+        The same coefficients converted once to airframe axes (``CFx, CFy, CFz`` on S,
+        ``CMx, CMy, CMz`` on S L) on the table's grid; interpolation uses it.
     """
 
     table: Table2D
     area: float
     length: float
     moment_reference: np.ndarray
+    force_axes: str = "wind"
+    moment_axes: str = "body"
+    airframe_table: Table2D = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        missing = [c for c in FUSELAGE_COEFFICIENTS if c not in self.table.coefficients]
+        _check_choice(self.force_axes, FORCE_AXES, "force axes")
+        _check_choice(self.moment_axes, MOMENT_AXES, "moment axes")
+        columns = fuselage_columns(self.force_axes)
+        missing = [c for c in columns if c not in self.table.coefficients]
         if missing:
-            raise InputError(f"fuselage table lacks coefficients {missing}; it needs "
-                             f"{list(FUSELAGE_COEFFICIENTS)}")
+            raise InputError(f"fuselage table lacks coefficients {missing}; with forces in "
+                             f"{self.force_axes} axes it needs {list(columns)}")
         object.__setattr__(self, "area", _positive(self.area, "fuselage reference area",
                                                    "m^2"))
         object.__setattr__(self, "length", _positive(self.length,
                                                      "fuselage reference length", "m"))
         object.__setattr__(self, "moment_reference",
                            np.asarray(self.moment_reference, float).reshape(3))
+        object.__setattr__(self, "airframe_table", self._converted())
+
+    def _converted(self):
+        t = self.table
+        a, b = np.meshgrid(t.alpha, t.beta, indexing="ij")
+        own = np.stack([t.coefficients[c] for c in fuselage_columns(self.force_axes)], -1)
+        force = force_to_airframe(own[..., :3], a, b, self.force_axes)
+        moment = moment_to_airframe(own[..., 3:], a, b, self.moment_axes)
+        values = np.concatenate([force, moment], axis=-1)
+        return Table2D(t.alpha, t.beta,
+                       {c: values[..., j] for j, c in enumerate(AIRFRAME_COLUMNS)},
+                       what=t.what)
+
+    @property
+    def columns(self):
+        """The table's own coefficient columns, in its declared axes."""
+        return fuselage_columns(self.force_axes)
 
     def coefficients(self, alpha, beta):
-        """All six coefficients at ``alpha``, ``beta`` [rad], stacked on the last axis."""
-        return np.stack([self.table(c, alpha, beta) for c in FUSELAGE_COEFFICIENTS], axis=-1)
+        """The table's own coefficients at ``alpha``, ``beta`` [rad] (declared axes), stacked
+        on the last axis in the order of :attr:`columns`."""
+        return np.stack([self.table(c, alpha, beta) for c in self.columns], axis=-1)
+
+    def airframe_coefficients(self, alpha, beta):
+        """Airframe-axes coefficients ``CFx, CFy, CFz, CMx, CMy, CMz`` at ``alpha``, ``beta``
+        [rad], shape (..., 6); an error outside the table (no extrapolation)."""
+        return np.stack([self.airframe_table(c, alpha, beta) for c in AIRFRAME_COLUMNS],
+                        axis=-1)
+
+    def drag_coefficient(self, alpha, beta):
+        """Force coefficient along the airflow (the wind-axes CD), whatever the table's axes."""
+        c = self.airframe_coefficients(alpha, beta)[..., :3]
+        return np.einsum("...i,...i->...", c, airflow_direction(alpha, beta))
 
     def loads(self, alpha, beta, q):
         """Resultant force and moment about :attr:`moment_reference`, airframe axes.
@@ -116,13 +272,9 @@ class FuselageAero:
         moment : ndarray, shape (n, 3)
             [N m]
         """
-        c = self.coefficients(alpha, beta)
+        c = self.airframe_coefficients(alpha, beta)
         qs = np.asarray(q, float)[..., None] * self.area
-        force = qs * (c[..., 0:1] * airflow_direction(alpha, beta)
-                      + c[..., 1:2] * np.array([0.0, 1.0, 0.0])
-                      + c[..., 2:3] * lift_direction(alpha))
-        moment = qs * self.length * np.stack([-c[..., 3], c[..., 4], -c[..., 5]], axis=-1)
-        return force, moment
+        return qs * c[..., :3], qs * self.length * c[..., 3:]
 
 
 @dataclass(frozen=True)
@@ -141,16 +293,28 @@ class Fin:
     efficiency : float
         Share of the intact fin's side force that the (cut-down) fin keeps, 0 < eta <= 1.
         The paper's transport configuration keeps about 0.5. [-]
+    axes : str
+        Frame of ``CY`` (the table is at zero angle of attack): ``"body"`` (default, along
+        +y, normal to the fin's plane) or ``"wind"`` (along y_W = (sin b, cos b, 0), normal to
+        the airflow).
+
+    Attributes
+    ----------
+    airframe_table : Table1D
+        ``CFx, CFy, CFz`` on the fin area against sideslip, airframe axes (converted once).
     """
 
     table: Table1D
     area: float
     centre_of_pressure: np.ndarray
     efficiency: float = 0.5
+    axes: str = "body"
+    airframe_table: Table1D = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         if "CY" not in self.table.coefficients:
             raise InputError("fin table needs a CY column")
+        _check_choice(self.axes, FIN_AXES, "fin axes")
         object.__setattr__(self, "area", _positive(self.area, "fin area", "m^2"))
         eta = float(self.efficiency)
         if not (0 < eta <= 1):
@@ -158,12 +322,24 @@ class Fin:
         object.__setattr__(self, "efficiency", eta)
         object.__setattr__(self, "centre_of_pressure",
                            np.asarray(self.centre_of_pressure, float).reshape(3))
+        beta = self.table.angle
+        cy = self.table.coefficients["CY"]
+        c = force_to_airframe(np.stack([np.zeros_like(cy), cy, np.zeros_like(cy)], -1),
+                              0.0, beta, self.axes)
+        object.__setattr__(self, "airframe_table", Table1D(
+            beta, {"CFx": c[:, 0], "CFy": c[:, 1], "CFz": c[:, 2]}, "beta", self.table.what))
+
+    @property
+    def side_force_coefficients(self):
+        """(beta grid [rad], airframe-y force coefficient CFy on the intact fin area [-])."""
+        return self.airframe_table.angle, self.airframe_table.coefficients["CFy"]
 
     def side_force(self, beta, q):
-        """Fin side force (along +y) [N] at sideslip ``beta`` [rad], dynamic pressure ``q`` [Pa]."""
-        return np.asarray(q, float) * self.area * self.efficiency * self.table("CY", beta)
+        """Fin force along +y [N] at sideslip ``beta`` [rad], dynamic pressure ``q`` [Pa]."""
+        return self.force(beta, q)[..., 1]
 
     def force(self, beta, q):
         """Fin force vector in airframe axes, shape (n, 3). [N]"""
-        fy = self.side_force(beta, q)
-        return np.stack([np.zeros_like(fy), fy, np.zeros_like(fy)], axis=-1)
+        scale = np.asarray(q, float)[..., None] * self.area * self.efficiency
+        c = np.stack([self.airframe_table(n, beta) for n in ("CFx", "CFy", "CFz")], axis=-1)
+        return scale * c

@@ -222,8 +222,8 @@ class YawModel:
             object.__setattr__(self, "_fus", (grid, n_per_q, grid[0], grid[-1]))
         if self.fin is not None:
             arm = self.fin.centre_of_pressure - hub
-            k = self.fin.area * self.fin.efficiency * self.fin.table.coefficients["CY"]
-            grid = self.fin.table.angle
+            grid, cfy = self.fin.side_force_coefficients  # airframe y, whatever the axes
+            k = self.fin.area * self.fin.efficiency * cfy
             object.__setattr__(self, "_fin", (grid, k, arm[0], arm[1], grid[0], grid[-1]))
         if self.parachute is not None:
             if self.hardpoints.chute is None:

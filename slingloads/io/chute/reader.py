@@ -164,7 +164,7 @@ def read(reader, params, study):
                                    "when there is no FuselageAero sheet", 0.0, STUDY_SHEET,
                                    params.where("chute sizing wake drag area"))
             with located(file, "FuselageAero"):
-                area = float(fuselage.table("CD", condition.alpha, 0.0)) * fuselage.area
+                area = float(fuselage.drag_coefficient(condition.alpha, 0.0)) * fuselage.area
         with located(file, STUDY_SHEET, params.where("chute sizing wake coefficient")):
             wake = BluffBodyWake(area, k)
         where = (STUDY_SHEET, params.where("chute sizing target q ratio"))

@@ -94,10 +94,10 @@ def _check_envelope_in_tables(reader, t, fuselage, fin):
     for i in range(len(t)):
         if fuselage is not None:
             with located(reader.file, t.sheet, t.cell("alpha", i)):
-                fuselage.table("CD", t["alpha"][i], t["beta"][i])
+                fuselage.airframe_coefficients(t["alpha"][i], t["beta"][i])
         if fin is not None:
             with located(reader.file, t.sheet, t.cell("beta", i)):
-                fin.table("CY", t["beta"][i])
+                fin.force(t["beta"][i], 0.0)
 
 
 def _previous(reader):
