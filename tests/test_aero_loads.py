@@ -67,7 +67,7 @@ def hc1_airframe():
 
 def study_at(alpha_deg, beta_deg, fuselage=True, fin=True, chute=True, **kwargs):
     env = AeroEnvelope(("P",), [np.radians(alpha_deg)], [np.radians(beta_deg)])
-    return LoadsStudy(hc1_airframe(), hook=HookLoadOptions(n_azimuth=0), envelope=env,
+    return LoadsStudy(hc1_airframe(), hook=HookLoadOptions(n_azimuth=0, towed=False), envelope=env,
                       fuselage=sample_fuselage("HC1") if fuselage else None,
                       fin=sample_fin("HC1") if fin else None,
                       parachute=Parachute(area=CHUTE_AREA) if chute else None, **kwargs)

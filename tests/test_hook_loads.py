@@ -4,11 +4,12 @@ the hub force that LoadsStudy applies at the mast feet.
 References: CS 29.865(a) / 14 CFR 29.865(a) (limit load Nz x weight, vertically and in a cone
 of at least 30 deg from the vertical), FACTS section 1, and docs/conventions.md section 4:
 
-    e_k = cos(theta) m + sin(theta) (cos(psi_k) a0 + sin(psi_k) a90),  psi_k = k 360 deg / N,
+    e_k = cos(theta_k) k + sin(theta_k) (cos(psi_k) a0 + sin(psi_k) a90),  psi_k = k 360 deg / N,
 
-psi = 0 aft (+x), psi = 90 deg right (+y); for a tilted mast a0 is +x projected normal to m
-(normalised) and a90 = m x a0. The expected vectors below are worked by hand from these
-definitions, never from the code.
+with k the earth's upward vertical in airframe axes (the attitude's), psi = 0 aft (+x),
+psi = 90 deg right (+y); for a tilted vertical a0 is +x projected normal to k (normalised) and
+a90 = k x a0. The expected vectors below are worked by hand from these definitions, never from
+the code.
 """
 
 import numpy as np
@@ -28,44 +29,44 @@ def vectors(frame):
     return frame[["ux", "uy", "uz"]].to_numpy()
 
 
-@pytest.mark.parametrize("mast", [np.array([0.0, 0.0, 1.0]), TILTED])
+@pytest.mark.parametrize("up", [np.array([0.0, 0.0, 1.0]), TILTED])
 @pytest.mark.parametrize(("angle_deg", "n"), [(30.0, 8), (20.0, 12), (45.0, 3), (10.0, 5)])
-def test_directions_are_unit_and_at_the_set_angle(mast, angle_deg, n):
-    """|e| = 1 for every direction; AXIAL is the mast axis; every off-axis direction makes
-    exactly theta with the mast axis: arccos(e . m) = theta."""
-    frame = hook_directions(HookLoadOptions(angle=np.radians(angle_deg), n_azimuth=n), mast)
+def test_directions_are_unit_and_at_the_set_angle(up, angle_deg, n):
+    """|e| = 1 for every direction; VERTICAL is the vertical k; every off-vertical direction
+    makes exactly theta with it: arccos(e . k) = theta."""
+    frame = hook_directions(HookLoadOptions(angle=np.radians(angle_deg), n_azimuth=n), up)
     u = vectors(frame)
     assert len(frame) == n + 1
     assert_allclose(np.linalg.norm(u, axis=1), 1.0, rtol=1e-14)
-    axial = frame["hook"] == "AXIAL"
-    assert_allclose(u[axial][0], mast, atol=1e-15)
-    angles = np.degrees(np.arccos(np.clip(u[~axial] @ mast, -1.0, 1.0)))
+    axial = frame["hook"] == "VERTICAL"
+    assert_allclose(u[axial][0], up, atol=1e-15)
+    angles = np.degrees(np.arccos(np.clip(u[~axial] @ up, -1.0, 1.0)))
     assert_allclose(angles, angle_deg, atol=1e-6)
     assert_allclose(frame.loc[~axial, "inclination [deg]"], angle_deg, rtol=1e-14)
 
 
-@pytest.mark.parametrize("mast", [np.array([0.0, 0.0, 1.0]), TILTED])
+@pytest.mark.parametrize("up", [np.array([0.0, 0.0, 1.0]), TILTED])
 @pytest.mark.parametrize("n", [2, 3, 8, 12])
-def test_azimuths_are_evenly_spread(mast, n):
-    """Project the off-axis directions on the plane normal to the mast: consecutive
+def test_azimuths_are_evenly_spread(up, n):
+    """Project the off-vertical directions on the horizontal plane (normal to k): consecutive
     projections are 360/N deg apart (arccos of their normalised dot product, and turning
-    positively about m), and they sum to zero (N >= 2 vectors evenly spread on a circle)."""
-    frame = hook_directions(HookLoadOptions(n_azimuth=n), mast)
-    u = vectors(frame)[frame["hook"] != "AXIAL"]
-    proj = u - (u @ mast)[:, None] * mast
+    positively about k), and they sum to zero (N >= 2 vectors evenly spread on a circle)."""
+    frame = hook_directions(HookLoadOptions(n_azimuth=n), up)
+    u = vectors(frame)[frame["hook"] != "VERTICAL"]
+    proj = u - (u @ up)[:, None] * up
     proj /= np.linalg.norm(proj, axis=1)[:, None]
     nxt = np.roll(proj, -1, axis=0)
     step = np.degrees(np.arccos(np.clip(np.sum(proj * nxt, axis=1), -1.0, 1.0)))
     assert_allclose(step, 360.0 / n, atol=1e-6)
-    turn = np.cross(proj, nxt) @ mast  # > 0: each next azimuth turns positively about m
+    turn = np.cross(proj, nxt) @ up  # > 0: each next azimuth turns positively about k
     assert np.all(turn > 0) or n == 2
     assert_allclose(proj.sum(axis=0), 0.0, atol=1e-14 * n)
-    assert_allclose(frame.loc[frame["hook"] != "AXIAL", "azimuth [deg]"],
+    assert_allclose(frame.loc[frame["hook"] != "VERTICAL", "azimuth [deg]"],
                     np.arange(n) * 360.0 / n, atol=1e-12)
 
 
-def test_vertical_mast_azimuth_0_is_aft_and_90_is_right():
-    """docs/conventions.md section 4 for m = +z, theta = 30 deg, N = 8, by hand:
+def test_level_attitude_azimuth_0_is_aft_and_90_is_right():
+    """docs/conventions.md section 4 for k = +z, theta = 30 deg, N = 8, by hand:
     AZ000 = (sin 30, 0, cos 30) = (0.5, 0, 0.866025) leans aft (+x);
     AZ090 = (0, 0.5, 0.866025) leans right (+y); AZ180 = (-0.5, 0, 0.866025) forward;
     AZ045 = (0.5 cos 45, 0.5 sin 45, 0.866025) = (0.353553, 0.353553, 0.866025)."""
@@ -76,15 +77,16 @@ def test_vertical_mast_azimuth_0_is_aft_and_90_is_right():
     assert_allclose(frame.loc["AZ180", ["ux", "uy", "uz"]], [-0.5, 0.0, c30], atol=1e-15)
     h = 0.5 / np.sqrt(2.0)
     assert_allclose(frame.loc["AZ045", ["ux", "uy", "uz"]], [h, h, c30], atol=1e-15)
-    assert list(frame.index) == ["AXIAL", "AZ000", "AZ045", "AZ090", "AZ135", "AZ180",
+    assert list(frame.index) == ["VERTICAL", "AZ000", "AZ045", "AZ090", "AZ135", "AZ180",
                                  "AZ225", "AZ270", "AZ315"]
 
 
-def test_tilted_mast_basis_by_hand():
-    """Mast tilted forward by 10 deg in the x-z plane: m = (-sin 10, 0, cos 10).
-    a0 = +x projected normal to m, normalised: x - (x.m) m = (1 - s^2, 0, s c) = c (c, 0, s),
-    so a0 = (cos 10, 0, sin 10); a90 = m x a0 = (0, 1, 0) (still right).
-    AZ000 = cos 30 m + sin 30 a0, AZ090 = cos 30 m + sin 30 (0, 1, 0)."""
+def test_tilted_vertical_basis_by_hand():
+    """Airframe pitched 10 deg nose up, so the earth vertical leans forward in airframe axes:
+    k = (-sin 10, 0, cos 10). a0 = +x projected normal to k, normalised:
+    x - (x.k) k = (1 - s^2, 0, s c) = c (c, 0, s), so a0 = (cos 10, 0, sin 10) (horizontal,
+    aft); a90 = k x a0 = (0, 1, 0) (still right).
+    AZ000 = cos 30 k + sin 30 a0, AZ090 = cos 30 k + sin 30 (0, 1, 0)."""
     s, c = np.sin(np.radians(10.0)), np.cos(np.radians(10.0))
     m = np.array([-s, 0.0, c])
     frame = hook_directions(HookLoadOptions(n_azimuth=4), m).set_index("hook")
@@ -97,11 +99,11 @@ def test_tilted_mast_basis_by_hand():
                     c30 * m - s30 * np.array([0.0, 1.0, 0.0]), atol=1e-15)
 
 
-def test_tilted_mast_general_azimuth_zero_leans_aft_in_the_x_m_plane():
-    """For any tilted mast: AZ000 lies in the plane of m and +x (no component along m x x)
-    and leans towards +x relative to the mast (its projection has a positive x component);
-    AZ090 leans along a90 = m x a0, which has a positive y component for a near-vertical
-    mast ("right")."""
+def test_tilted_vertical_azimuth_zero_leans_aft_in_the_x_k_plane():
+    """For any tilted vertical k: AZ000 lies in the plane of k and +x (no component along
+    k x x) and leans towards +x relative to k (its projection has a positive x component);
+    AZ090 leans along a90 = k x a0, which has a positive y component for a near-level
+    attitude ("right")."""
     frame = hook_directions(HookLoadOptions(), TILTED).set_index("hook")
     az0 = frame.loc["AZ000", ["ux", "uy", "uz"]].to_numpy(float)
     az90 = frame.loc["AZ090", ["ux", "uy", "uz"]].to_numpy(float)
@@ -111,12 +113,12 @@ def test_tilted_mast_general_azimuth_zero_leans_aft_in_the_x_m_plane():
     assert (az90 - (az90 @ TILTED) * TILTED)[1] > 0
 
 
-def test_include_axial_false_and_axial_only():
-    """Cone options: without the mast-axis case only the N azimuths; N = 0 the axis alone."""
-    only_cone = hook_directions(HookLoadOptions(n_azimuth=4, include_axial=False))
+def test_include_vertical_false_and_vertical_only():
+    """Cone options: without the vertical case only the N azimuths; N = 0 the vertical alone."""
+    only_cone = hook_directions(HookLoadOptions(n_azimuth=4, include_vertical=False))
     assert list(only_cone["hook"]) == ["AZ000", "AZ090", "AZ180", "AZ270"]
     axis_only = hook_directions(HookLoadOptions(n_azimuth=0))
-    assert list(axis_only["hook"]) == ["AXIAL"]
+    assert list(axis_only["hook"]) == ["VERTICAL"]
     assert_allclose(vectors(axis_only)[0], [0.0, 0.0, 1.0], atol=0)
 
 
@@ -133,15 +135,16 @@ def small_airframe(mast_axis=(0.0, 0.0, 1.0)):
     return Airframe(items, np.linspace(-3.0, 5.0, 9), hp)
 
 
+@pytest.mark.parametrize("attitude", ["hanging", "mast vertical"])
 @pytest.mark.parametrize("mast", [(0.0, 0.0, 1.0), tuple(TILTED)])
 @pytest.mark.parametrize("nz", [2.5, 1.7])
-def test_hub_force_is_nz_times_weight(mast, nz):
+def test_hub_force_is_nz_times_weight(attitude, mast, nz):
     """CS 29.865(a): the limit hook load is Nz x the carried weight. Sum the mast-feet forces
     that LoadsStudy.applied_loads puts on the airframe: for every direction the sum is
     Nz m g0 e, with m = 2000 kg by hand (300 + 900 + 500 + 300), e.g. Nz = 2.5:
     2.5 * 2000 * 9.80665 = 49033.25 N; and their moment about the hub is zero (the cable
     applies a pure force at the hub)."""
-    study = LoadsStudy(small_airframe(mast), hook=HookLoadOptions(nz=nz))
+    study = LoadsStudy(small_airframe(mast), hook=HookLoadOptions(nz=nz), attitude=attitude)
     cases = study.case_matrix()
     positions, forces, moments = study.applied_loads(cases)
     feet = slice(4, 8)
@@ -157,8 +160,10 @@ def test_hub_force_is_nz_times_weight(mast, nz):
 
 def test_vertical_hook_case_feet_share_equally():
     """Hand check of the sharing rule for the vertical case: four equal feet symmetric about
-    the line of the hub force carry 2.5 * 2000 * 9.80665 / 4 = 12258.3125 N each, along +z."""
-    study = LoadsStudy(small_airframe(), hook=HookLoadOptions(n_azimuth=0))
+    the line of the hub force carry 2.5 * 2000 * 9.80665 / 4 = 12258.3125 N each, along +z
+    (mast vertical attitude: the vertical is +z)."""
+    study = LoadsStudy(small_airframe(), hook=HookLoadOptions(n_azimuth=0),
+                       attitude="mast vertical")
     _, forces, moments = study.applied_loads(study.case_matrix())
     assert_allclose(forces[0, 4:8], np.tile([0.0, 0.0, 12258.3125], (4, 1)), atol=1e-9)
     assert_allclose(moments[0, 4:8], 0.0, atol=1e-9)
@@ -173,7 +178,9 @@ def test_vertical_hook_case_feet_share_equally():
     ({"angle": np.radians(-5.0)}, r"\[0, 90\) deg: value -5\.0"),
     ({"n_azimuth": -1}, r"whole number >= 0: value -1"),
     ({"n_azimuth": 2.5}, r"whole number >= 0: value 2\.5"),
-    ({"n_azimuth": 0, "include_axial": False}, r"no direction at all"),
+    ({"n_azimuth": 0, "include_vertical": False}, r"no direction at all"),
+    ({"lateral_angle": np.radians(90.0)}, r"lateral hook-load angle .* value 90\.0"),
+    ({"cone": "round"}, r"cone shape must be one of \['lateral directions', 'elliptical'\]"),
 ])
 def test_bad_options_raise_input_error(kwargs, message):
     """Invalid hook options are refused with InputError naming the rule and the value
@@ -182,7 +189,8 @@ def test_bad_options_raise_input_error(kwargs, message):
         HookLoadOptions(**kwargs)
 
 
-def test_mast_parallel_to_x_is_refused():
-    """A mast along the fuselage axis leaves azimuth 0 (+x projected normal to m) undefined."""
+def test_vertical_parallel_to_x_is_refused():
+    """A vertical along the fuselage axis leaves azimuth 0 (+x projected normal to k)
+    undefined."""
     with pytest.raises(InputError, match="parallel to the fuselage x axis"):
         hook_directions(HookLoadOptions(), (1.0, 0.0, 0.0))

@@ -1,10 +1,12 @@
 """Draw ``docs/figures/conventions.png``: the axes and sign conventions of slingloads.
 
 (a) Side view (x aft, z up, viewed from the left so y points into the page): datum, hub,
-mast feet, fin, parachute line, loads reference axis and a cut station with the positive
-internal loads Vx, Vz, My drawn on the FORWARD part's cut face (the action of the aft part).
+mast feet, CG, the earth vertical of the hanging attitude (through CG and hub) beside the mast
+axis, fin, parachute line, loads reference axis and a cut station with the positive internal
+loads Vx, Vz, My drawn on the FORWARD part's cut face (the action of the aft part).
 (b) Top view (x aft, y right, z out of the page): positive sideslip (wind from the right),
-positive yawing moment Cn (nose right) and the hook-load azimuths (0 deg aft, 90 deg right).
+positive yawing moment Cn (nose right) and the hook-load azimuths about the earth vertical
+(0 deg the horizontal projection of +x, aft; 90 deg of +y, right).
 
 The outline is a generic helicopter made of simple polygons, not any real aircraft.
 Run from anywhere: ``python docs/figures/make_conventions_figure.py``.
@@ -103,13 +105,30 @@ def draw_side(ax):
         ax.plot([f[0], hub[0]], [f[1], hub[1] - 0.1], color=EDGE, lw=2.2, zorder=3)
     ax.plot(*feet.T, "s", color="black", ms=7, zorder=4)
     ax.add_patch(Circle(hub, 0.14, fc="black", zorder=4))
-    ax.plot([hub[0], hub[0]], [hub[1], 4.9], color="black", lw=1.4, ls=(0, (4, 2)))
-    ax.text(hub[0] - 0.15, 4.75, "cable to carrier", fontsize=9, ha="right", va="top")
+    # Hanging attitude: the CG lies under the hub, so the earth vertical k runs through both
+    # (here the hub is aft of the CG: k leans aft in airframe axes, the nose hangs down).
+    cg = np.array([2.85, 1.5])
+    k = (hub - cg) / np.linalg.norm(hub - cg)
+    ax.plot([cg[0], hub[0] + 1.55 * k[0]], [cg[1], hub[1] + 1.55 * k[1]], color=HOOK, lw=1.0,
+            ls=":", zorder=3)
+    ax.add_patch(Circle(cg, 0.13, fc="white", ec="black", lw=1.2, zorder=6))
+    ax.add_patch(Polygon(np.array([cg, cg + [0.13, 0.0], cg + [0.0, 0.13]]) + [0.0, 0.0],
+                         closed=True, fc="black", zorder=7))
+    ax.add_patch(Polygon(np.array([cg, cg - [0.13, 0.0], cg - [0.0, 0.13]]),
+                         closed=True, fc="black", zorder=7))
+    ax.text(cg[0] - 0.2, cg[1] - 0.05, "CG", fontsize=9, ha="right", va="center", zorder=7)
+    top = hub + 1.55 * k
+    ax.plot([hub[0], top[0]], [hub[1], top[1]], color="black", lw=1.4, ls=(0, (4, 2)))
+    ax.text(top[0] - 0.15, top[1] - 0.1, "cable to carrier", fontsize=9, ha="right", va="top")
     ax.text(hub[0] - 0.25, hub[1] + 0.05, "hub", fontsize=9.5, ha="right", va="center")
     ax.text(2.4, 2.75, "mast feet", fontsize=9, ha="right", va="center")
-    arrow(ax, hub + [0.45, -0.2], hub + [0.45, 0.9], HOOK, lw=1.8, ms=13)
-    ax.text(hub[0] + 0.6, hub[1] + 0.35, "mast axis\n(default +z)", color=HOOK, fontsize=9,
+    arrow(ax, hub + [1.0, -0.3], hub + [1.0, 0.5], EDGE, lw=1.2, ms=10)
+    ax.text(hub[0] + 1.1, hub[1] - 0.15, "mast\naxis", color=EDGE, fontsize=8.5,
             va="center")
+    side = hub + [0.45, 0.0]
+    arrow(ax, side, side + 1.1 * k, HOOK, lw=2.0, ms=14, zorder=6)
+    ax.text(side[0] + 0.3, hub[1] + 1.05, "earth vertical k\n(hanging: CG under hub)",
+            color=HOOK, fontsize=9, va="center")
 
     # Fin, parachute line and canopy (on the shifted aft part).
     chute = np.array([10.1 + gap, 2.8])
@@ -202,7 +221,8 @@ def draw_top(ax):
     arc_arrow(ax, hub, 0.8, 8, 80, HOOK, lw=1.4, ms=10)
     ax.text(hub[0] + 0.95, hub[1] + 0.38, "ψ", color=HOOK, fontsize=11, zorder=7)
     ax.text(4.4, -1.75, "hook-load azimuth ψ = horizontal\ndirection of the force on the\n"
-            "airframe (default 8 at 45°)", color=HOOK, fontsize=9, ha="left", va="top")
+            "airframe, about the earth vertical\n(default 8 at 45°)", color=HOOK, fontsize=9,
+            ha="left", va="top")
 
     # Positive sideslip: the wind comes from the right (+y), blowing along (cos b, -sin b).
     b = np.radians(25.0)

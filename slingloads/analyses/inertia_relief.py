@@ -14,7 +14,7 @@ equilibrium, so the free-free internal loads close to zero at both ends.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -35,14 +35,24 @@ class RigidBodyAcceleration:
 
     linear: np.ndarray
     angular: np.ndarray
+    gravity: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, -G0]))
 
     @property
     def load_factor(self):
-        """Load factor at the CG, n = (a - g) / g0, shape (c, 3); +1 on z hanging at rest. [-]"""
-        return (self.linear - np.array([0.0, 0.0, -G0])) / G0
+        """Load factor at the CG, n = (a - g) / g0, airframe axes, shape (c, 3); hanging at
+        rest it is the earth's upward vertical (+1 on z when z is vertical). [-]"""
+        return (self.linear - self.gravity) / G0
+
+    @property
+    def vertical_load_factor(self):
+        """Load factor along the earth's upward vertical, n . k, shape (c,); +1 hanging at
+        rest, Nz in the vertical hook case. [-]"""
+        k = -self.gravity / np.linalg.norm(self.gravity)
+        return self.load_factor @ k
 
 
-def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=False):
+def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=False,
+                            vertical=(0.0, 0.0, 1.0)):
     """Accelerations that balance applied loads.
 
     Parameters
@@ -54,6 +64,8 @@ def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=
         Applied forces [N] and moments [N m] per case (``moments`` may be None).
     add_gravity : bool
         Add the weight of every mass item (when ``forces`` does not already hold it).
+    vertical : array_like, shape (3,)
+        Earth's upward vertical in airframe axes (the attitude's; default +z). [-]
 
     Returns
     -------
@@ -65,14 +77,14 @@ def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=
     if moments is not None:
         moment_cg += moments.sum(axis=1)
     if add_gravity:
-        weight = gravity_forces(mass_items)
+        weight = gravity_forces(mass_items, vertical)
         resultant += weight.sum(axis=0)
         moment_cg += np.cross(mass_items.position - cg, weight).sum(axis=0)
     linear = resultant / mass_items.total_mass
     # pinv: a line of point masses has no inertia about its own axis; a moment about that
     # axis then stays unbalanced and the closure check reports it.
     angular = moment_cg @ np.linalg.pinv(mass_items.inertia_about_cg, hermitian=True).T
-    return RigidBodyAcceleration(linear, angular)
+    return RigidBodyAcceleration(linear, angular, -G0 * _unit(vertical))
 
 
 def moment_sum(positions, forces):
@@ -107,8 +119,18 @@ def inertia_loads(mass_items, acceleration):
     return forces, moments
 
 
-def gravity_forces(mass_items):
-    """Weight of every mass item, shape (n, 3), along -z. [N]"""
-    forces = np.zeros_like(mass_items.position)
-    forces[:, 2] = -G0 * mass_items.mass
-    return forces
+def gravity_forces(mass_items, vertical=(0.0, 0.0, 1.0)):
+    """Weight of every mass item, shape (n, 3), along the earth's downward vertical. [N]
+
+    Parameters
+    ----------
+    mass_items : MassItems
+    vertical : array_like, shape (3,)
+        Earth's upward vertical in airframe axes (default +z: the mast vertical). [-]
+    """
+    return -G0 * mass_items.mass[:, None] * _unit(vertical)[None, :]
+
+
+def _unit(vector):
+    v = np.asarray(vector, float).reshape(3)
+    return v / np.linalg.norm(v)

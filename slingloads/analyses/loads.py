@@ -6,15 +6,21 @@ condition and the load-case options; :meth:`LoadsStudy.run` returns a :class:`Lo
 whose methods give pandas DataFrames (long SFBM table, envelope with critical and correlated
 loads, convex hulls, comparison with the previous design envelope).
 
-Each case combines, in airframe axes:
+The airframe hangs in an attitude (:mod:`slingloads.models.attitude`; by default the hanging
+attitude, CG under the hub) that fixes the earth vertical in airframe axes. Each case
+combines, in airframe axes:
 
-* a CS-29.865 hook load ``nz x weight`` at the hub along one of the cone's directions, shared
-  among the mast feet by the rigid-body weighted rule (:mod:`slingloads.models.load_sharing`);
+* a CS-29.865 hook load ``nz x weight`` at the hub along the vertical or one of the cone's
+  directions about it, or, in a towed-flight equilibrium case (``TOW``), along the trimmed
+  cable: vertical component ``nz x weight``, horizontal component balancing the aerodynamic and
+  parachute forces (no fore-and-aft or lateral acceleration); shared among the mast feet by the
+  rigid-body weighted rule (:mod:`slingloads.models.load_sharing`);
 * the fuselage aerodynamic load at one point of the (alpha, beta) envelope, shared along the
   loads reference axis by the same rule so that its resultant equals the tabulated one, and
   the fin's side force at its centre of pressure;
 * optionally the parachute drag at its attachment, along the relative wind (or along +x);
-* gravity at every mass item, and the inertia relief that balances all of it.
+* gravity at every mass item along the earth vertical, and the inertia relief that balances
+  all of it.
 """
 
 from __future__ import annotations
@@ -25,7 +31,16 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.envelopes import compare_with_previous, convex_hull, envelope_table
-from slingloads.analyses.hook_loads import HookLoadOptions, describe_direction, hook_directions
+from slingloads.analyses.hook_loads import (
+    LEGACY_HOOK_IDS,
+    NO_HOOK,
+    TOWED,
+    HookLoadOptions,
+    cable_geometry,
+    describe_direction,
+    hook_directions,
+    horizontal_basis,
+)
 from slingloads.analyses.inertia_relief import gravity_forces
 from slingloads.analyses.sfbm import COMPONENTS, free_free_internal_loads
 from slingloads.constants import KNOT
@@ -33,12 +48,15 @@ from slingloads.errors import ClosureError, InputError
 from slingloads.models.aerodynamics import airflow_direction
 from slingloads.models.airframe import Airframe
 from slingloads.models.atmosphere import RHO0, isa_density
+from slingloads.models.attitude import resolve_attitude
 from slingloads.models.load_sharing import rigid_share
 
 #: Relative tolerance of the free-free closure check (residual over the load scale).
 CLOSURE_TOLERANCE = 1e-8
 
 CHUTE_LINE_DIRECTIONS = ("relative wind", "fuselage axis")
+#: Aerodynamic point id of a case without aerodynamic load.
+NO_AERO = "NONE"
 
 
 @dataclass(frozen=True)
@@ -126,7 +144,8 @@ class ListedCase:
     ----------
     id : str
     hook : str
-        Hook direction id (``AXIAL``, ``AZ000``...) or ``NONE``.
+        Hook direction id (``VERTICAL``, ``AZ000``...), ``TOW`` (towed-flight equilibrium)
+        or ``NONE``; the former ``AXIAL`` is read as ``VERTICAL``.
     aero : str
         Aerodynamic envelope point id or ``NONE``.
     chute : bool
@@ -139,6 +158,10 @@ class ListedCase:
     aero: str
     chute: bool
     description: str = ""
+
+    def __post_init__(self):
+        hook = str(self.hook).strip().upper()
+        object.__setattr__(self, "hook", LEGACY_HOOK_IDS.get(hook, hook))
 
 
 @dataclass(frozen=True)
@@ -157,6 +180,10 @@ class LoadsStudy:
     parachute : Parachute, optional
     chute_line : str
         ``"relative wind"`` (default) or ``"fuselage axis"``.
+    attitude : str or Attitude
+        Attitude of the airframe, which fixes the earth vertical for gravity, the vertical
+        hook case and the cone: ``"hanging"`` (default: CG under the hub), ``"mast vertical"``
+        or an :class:`~slingloads.models.attitude.Attitude` (pitch and roll).
     generate : bool
         Generate the full combination matrix hook x aero point x parachute on/off.
     listed : tuple of ListedCase
@@ -176,6 +203,7 @@ class LoadsStudy:
     fin: object | None = None
     parachute: object | None = None
     chute_line: str = "relative wind"
+    attitude: object = "hanging"
     generate: bool = True
     listed: tuple = ()
     previous_envelope: pd.DataFrame | None = None
@@ -197,6 +225,7 @@ class LoadsStudy:
             raise InputError("ultimate factor must be >= 1", uf)
         if not self.generate and not self.listed:
             raise InputError("no load case: generation is off and none is listed")
+        horizontal_basis(self.attitude_used.vertical)  # validates the attitude
         if self.envelope is not None:
             if self.fuselage is not None:
                 self.fuselage.airframe_coefficients(self.envelope.alpha, self.envelope.beta)
@@ -209,9 +238,19 @@ class LoadsStudy:
             _check_previous(self.previous_envelope)
 
     def with_hook(self, **changes):
-        """A copy of the study with hook options changed (``angle=``, ``nz=``...)."""
+        """A copy of the study with hook options changed (``lateral_angle=``, ``nz=``...)."""
         from dataclasses import replace
         return replace(self, hook=replace(self.hook, **changes))
+
+    @property
+    def attitude_used(self):
+        """The airframe's :class:`~slingloads.models.attitude.Attitude` in these cases."""
+        return resolve_attitude(self.attitude, self.airframe)
+
+    @property
+    def vertical(self):
+        """Earth's upward vertical in airframe axes, unit vector. [-]"""
+        return self.attitude_used.vertical
 
     def _chute_alpha(self, alpha, beta):
         if self.chute_line == "relative wind":
@@ -219,13 +258,20 @@ class LoadsStudy:
         return np.arccos(np.clip(np.cos(alpha) * np.cos(beta), -1.0, 1.0))
 
     def hook_table(self):
-        """The hook-load directions (see :func:`hook_directions`)."""
-        return hook_directions(self.hook, self.airframe.hardpoints.mast_axis)
+        """The hook-load directions about the attitude's vertical (see
+        :func:`~slingloads.analyses.hook_loads.hook_directions`)."""
+        return hook_directions(self.hook, self.vertical)
 
     def case_matrix(self):
-        """The load-case combination matrix as a DataFrame, one row per case."""
+        """The load-case combination matrix as a DataFrame, one row per case.
+
+        Generated cases come first (``LC0001``...): every hook direction x aerodynamic point x
+        parachute on/off, then the towed-flight equilibrium cases (hook ``TOW``) per
+        aerodynamic point with and without parachute (none without aerodynamic point and
+        parachute: that is the vertical case), then the listed cases.
+        """
         hooks = self.hook_table()
-        aero_ids = list(self.envelope.ids) if self.envelope is not None else ["NONE"]
+        aero_ids = list(self.envelope.ids) if self.envelope is not None else [NO_AERO]
         chute_states = [True, False] if self.parachute is not None else [False]
         rows = []
         if self.generate:
@@ -233,6 +279,9 @@ class LoadsStudy:
                 for a in aero_ids:
                     for c in chute_states:
                         rows.append(("", h, a, c, ""))
+            if self.hook.towed:
+                rows += [("", TOWED, a, c, "") for a in aero_ids for c in chute_states
+                         if a != NO_AERO or c]
         rows += [(c.id, c.hook, c.aero, bool(c.chute), c.description) for c in self.listed]
         frame = pd.DataFrame(rows, columns=["case", "hook", "aero", "chute", "description"])
         n_gen = len(frame) - len(self.listed)
@@ -259,8 +308,8 @@ class LoadsStudy:
         dup = frame["case"].duplicated()
         if dup.any():
             raise InputError("load case ids must be unique", frame["case"][dup].iloc[0])
-        valid_hooks = set(hooks["hook"]) | {"NONE"}
-        valid_aero = set(aero_ids) | {"NONE"}
+        valid_hooks = set(hooks["hook"]) | {TOWED, NO_HOOK}
+        valid_aero = set(aero_ids) | {NO_AERO}
         for c in self.listed:
             if c.hook not in valid_hooks:
                 raise InputError(f"load case {c.id!r}: unknown hook direction; valid ids are "
@@ -287,7 +336,9 @@ class LoadsStudy:
         n = len(items.mass)
         loads, accel, residual = free_free_internal_loads(
             items, positions[n:], forces[:, n:], moments[:, n:],
-            self.airframe.station_points())
+            self.airframe.station_points(), self.vertical)
+        cases = self._with_cable(cases, forces[:, n:n + len(self.airframe.hardpoints.mast_feet)]
+                                 .sum(axis=1))
         scale = self._load_scale(forces)
         bad = np.abs(residual).max(axis=1) > CLOSURE_TOLERANCE * scale
         if check_closure and np.any(bad):
@@ -300,7 +351,29 @@ class LoadsStudy:
                                f"{np.abs(residual[i]).max():.3g} exceeds the tolerance "
                                f"{CLOSURE_TOLERANCE * scale:.3g}{hint}")
         return LoadsResult(self, cases, loads, accel.linear, accel.angular,
-                           accel.load_factor, residual, scale)
+                           accel.load_factor, residual, scale, accel.vertical_load_factor)
+
+    def _with_cable(self, cases, hub_force):
+        """The case matrix with the cable's direction per case and whether it lies inside the
+        hook cone (the cone's inclination at the cable's azimuth; towed cases are judged at
+        the larger of their angle at Nz and at 1 g)."""
+        out = cases.copy()
+        angle, azimuth = cable_geometry(hub_force, self.vertical)
+        on = (cases["hook"] != NO_HOOK).to_numpy()
+        towed = (cases["hook"] == TOWED).to_numpy()
+        weight = self.airframe.mass_items.weight
+        vertical = hub_force @ self.vertical
+        horizontal = np.sqrt(np.maximum((hub_force**2).sum(axis=1) - vertical**2, 0.0))
+        at_1g = np.where(towed, np.arctan2(horizontal, weight), np.nan)
+        judged = np.where(towed, np.maximum(angle, np.nan_to_num(at_1g)), angle)
+        allowed = self.hook.inclination(azimuth)
+        inside = judged <= allowed + 1e-9
+        out["cable angle from vertical [deg]"] = np.where(on, np.degrees(angle), np.nan)
+        out["cable azimuth [deg]"] = np.where(on, np.degrees(azimuth), np.nan)
+        out["cable angle at 1 g [deg]"] = np.degrees(at_1g)
+        out["cone angle at that azimuth [deg]"] = np.where(on, np.degrees(allowed), np.nan)
+        out["inside hook cone"] = np.where(on, np.where(inside, "yes", "OUTSIDE"), "")
+        return out
 
     def _load_scale(self, forces):
         """Scale for the closure check: largest force times max(1 m, airframe length)."""
@@ -330,15 +403,15 @@ class LoadsStudy:
         c = len(cases)
         forces = np.zeros((c, len(positions), 3))
         moments = np.zeros_like(forces)
-        forces[:, : len(items.mass), :] = gravity_forces(items)
+        forces[:, : len(items.mass), :] = gravity_forces(items, self.vertical)
         start = len(items.mass)
         k = len(hp.mast_feet)
-        forces[:, start:start + k], moments[:, start:start + k] = self._hook_loads(cases)
+        feet = slice(start, start + k)
         start += k
         q = self.flight.dynamic_pressure
         alpha = np.radians(cases["alpha [deg]"].to_numpy(float))
         beta = np.radians(cases["beta [deg]"].to_numpy(float))
-        aero_on = (cases["aero"] != "NONE").to_numpy()
+        aero_on = (cases["aero"] != NO_AERO).to_numpy()
         alpha_q, beta_q = np.where(aero_on, alpha, 0.0), np.where(aero_on, beta, 0.0)
         a = aero_pts.shape[0]
         if self.fuselage is not None and np.any(aero_on):
@@ -359,15 +432,41 @@ class LoadsStudy:
                     else np.tile([1.0, 0.0, 0.0], (c, 1)))
             direction = self.parachute.force_direction(wind, line)
             forces[:, start] = (drag * on)[:, None] * direction
+        external = forces[:, feet.stop:].sum(axis=1)  # aerodynamics and parachute
+        forces[:, feet], moments[:, feet] = self._hook_loads(cases, external)
         return positions, forces, moments
 
-    def _hook_loads(self, cases):
+    def hook_forces(self, cases, external):
+        """Hook force on the airframe at the hub per case, airframe axes, shape (c, 3).
+
+        Parameters
+        ----------
+        cases : pandas.DataFrame
+            Case matrix (column ``hook``).
+        external : ndarray, shape (c, 3)
+            Resultant of the aerodynamic and parachute forces per case. [N]
+
+        Returns
+        -------
+        ndarray, shape (c, 3)
+            ``nz W u`` along a cone direction u; for ``TOW``, ``nz W k - P_h external`` with k
+            the vertical and P_h the projection on the horizontal plane; 0 for ``NONE``. [N]
+        """
         hooks = self.hook_table().set_index("hook")
+        hook = cases["hook"].to_numpy()
+        weight = self.hook.nz * self.airframe.mass_items.weight
+        listed = (hook != NO_HOOK) & (hook != TOWED)
+        force = np.zeros((len(cases), 3))
+        force[listed] = weight * hooks.loc[hook[listed], ["ux", "uy", "uz"]].to_numpy()
+        towed = hook == TOWED
+        k = self.vertical
+        horizontal = external[towed] - np.outer(external[towed] @ k, k)
+        force[towed] = weight * k - horizontal
+        return force
+
+    def _hook_loads(self, cases, external):
         hp = self.airframe.hardpoints
-        on = (cases["hook"] != "NONE").to_numpy()
-        u = np.zeros((len(cases), 3))
-        u[on] = hooks.loc[cases["hook"][on], ["ux", "uy", "uz"]].to_numpy()
-        force = self.hook.nz * self.airframe.mass_items.weight * u
+        force = self.hook_forces(cases, external)
         return rigid_share(hp.mast_feet, hp.mast_weights, force, np.zeros_like(force), hp.hub)
 
 
@@ -391,10 +490,15 @@ def _check_previous(frame):
 
 def _describe(row):
     """Readable text of one row of the case matrix (a pandas Series)."""
-    hook = ("off" if row["hook"] == "NONE"
-            else describe_direction(row["azimuth [deg]"], row["inclination [deg]"]))
+    if row["hook"] == NO_HOOK:
+        hook = "off"
+    elif row["hook"] == TOWED:
+        hook = ("along the trimmed cable (towed-flight equilibrium: Nz x weight vertical, "
+                "horizontal balancing aerodynamics and parachute)")
+    else:
+        hook = describe_direction(row["azimuth [deg]"], row["inclination [deg]"])
     parts = [f"hook {hook}"]
-    if row["aero"] != "NONE":
+    if row["aero"] != NO_AERO:
         parts.append(f"aero point {row['aero']} (alpha {row['alpha [deg]']:+g} deg, "
                      f"beta {row['beta [deg]']:+g} deg)")
     parts.append("parachute on" if row["chute"] else "parachute off")
@@ -421,6 +525,8 @@ class LoadsResult:
         item (force [N], moment [N m]).
     residual_scale : float
         Load scale the residual is judged against. [N m]
+    vertical_load_factor : ndarray, shape (c,)
+        Load factor along the earth's upward vertical. [-]
     """
 
     study: LoadsStudy
@@ -431,6 +537,7 @@ class LoadsResult:
     load_factor: np.ndarray
     residual: np.ndarray
     residual_scale: float
+    vertical_load_factor: np.ndarray | None = None
 
     @property
     def case_ids(self):
@@ -449,9 +556,17 @@ class LoadsResult:
         """Ultimate internal loads = ultimate factor x limit, shape (c, s, 6)."""
         return self.study.ultimate_factor * self.loads
 
+    @property
+    def attitude(self):
+        """The airframe's :class:`~slingloads.models.attitude.Attitude` in these cases."""
+        return self.study.attitude_used
+
     def case_table(self):
-        """Case matrix with load factors, angular accelerations and closure residual."""
+        """Case matrix with the cable's direction and the inside-cone flag, load factors
+        (airframe axes and along the vertical), angular accelerations and closure residual."""
         out = self.cases.copy()
+        if self.vertical_load_factor is not None:
+            out["n vertical [-]"] = self.vertical_load_factor
         for j, axis in enumerate("xyz"):
             out[f"n{axis} [-]"] = self.load_factor[:, j]
         for j, axis in enumerate("xyz"):
@@ -459,6 +574,16 @@ class LoadsResult:
         out["closure force residual [N]"] = np.abs(self.residual[:, :3]).max(axis=1)
         out["closure moment residual [N m]"] = np.abs(self.residual[:, 3:]).max(axis=1)
         return out
+
+    def towed_table(self):
+        """The towed-flight equilibrium cases: aerodynamic point, parachute, the trimmed
+        cable's angle from the vertical (at Nz and at 1 g) and azimuth, the cone's
+        inclination there and whether the cable lies inside the hook cone."""
+        columns = ["case", "aero", "alpha [deg]", "beta [deg]", "chute",
+                   "cable angle from vertical [deg]", "cable angle at 1 g [deg]",
+                   "cable azimuth [deg]", "cone angle at that azimuth [deg]",
+                   "inside hook cone"]
+        return self.cases.loc[self.cases["hook"] == TOWED, columns].reset_index(drop=True)
 
     def to_frame(self, ultimate=False):
         """Long SFBM table: ``case, station, x_m, Vx_N, Vy_N, Vz_N, Mx_Nm, My_Nm, Mz_Nm``."""

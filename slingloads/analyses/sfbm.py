@@ -127,7 +127,8 @@ def closure_residual(positions, forces, moments, reference):
     return np.concatenate([total_f, total_m], axis=1)
 
 
-def free_free_internal_loads(mass_items, positions, forces, moments, station_points):
+def free_free_internal_loads(mass_items, positions, forces, moments, station_points,
+                             vertical=(0.0, 0.0, 1.0)):
     """Internal loads of the free-free airframe: applied loads, gravity and inertia relief.
 
     Gravity acts at every mass item; the rigid-body accelerations balance gravity and the
@@ -144,6 +145,9 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
         Applied forces [N] and moments [N m].
     station_points : ndarray, shape (s, 3)
         [m]
+    vertical : array_like, shape (3,)
+        Earth's upward vertical in airframe axes, along which gravity acts downwards (the
+        attitude's, :mod:`slingloads.models.attitude`). [-]
 
     Returns
     -------
@@ -157,7 +161,7 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
     from slingloads.analyses.inertia_relief import gravity_forces, rigid_body_acceleration
 
     acceleration = rigid_body_acceleration(mass_items, positions, forces, moments,
-                                           add_gravity=True)
+                                           add_gravity=True, vertical=vertical)
     linear, angular = acceleration.linear, acceleration.angular
     x_end = max(np.max(positions[:, 0]), mass_items.position[:, 0].max(),
                 station_points[:, 0].max()) + 1.0
@@ -165,7 +169,8 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
     # gravity and the six unit inertia fields, superposed by one matrix product
     basis = np.concatenate([
         unit_inertia_responses(mass_items, cuts),
-        internal_loads(mass_items.position, gravity_forces(mass_items)[None], None, cuts),
+        internal_loads(mass_items.position, gravity_forces(mass_items, vertical)[None], None,
+                       cuts),
     ]).reshape(7, -1)
     weights = np.concatenate([linear, angular, np.ones((len(linear), 1))], axis=1)
     total = np.matmul(weights, basis).reshape(len(linear), len(cuts), 6)

@@ -294,13 +294,15 @@ def _sheets(result, units, digest):
         summary.append(Section(
             "Hook cases at the recommended angle against 30 deg (largest along the airframe)",
             comparison_summary_table(comparison, units),
-            note="CS-29.865 hook cases alone (mast axis and the cone's azimuths, Nz x weight, "
-                 "inertia relief), without aerodynamic and parachute loads."))
+            note="CS-29.865 hook cases alone (the vertical and the cone's azimuths, Nz x "
+                 "weight, inertia relief), without aerodynamic and parachute loads. "
+                 + comparison.reduced_note()))
         loads_sheet = [Section("Envelope max |load| of the hook cases per station",
                                comparison_station_table(comparison, units),
-                               note=f"Hook directions: {', '.join(comparison.cases)}. Limit "
-                                    "loads. Reduction = 1 - (at the recommended angle) / "
-                                    "(at 30 deg); negative = increase.")]
+                               note=f"Hook directions: {', '.join(comparison.cases)}. "
+                                    f"{comparison.reduced_note()} Limit loads. Reduction = 1 - "
+                                    "(at the recommended angle) / (at 30 deg); negative = "
+                                    "increase.")]
     else:
         loads_sheet = ("The recommended angle is 90 deg or more: no hook-load cone can be "
                        "built; the hook cases were not re-run.")
