@@ -22,6 +22,7 @@ from numpy.testing import assert_allclose
 
 from slingloads.analyses.hook_loads import HookLoadOptions, cable_geometry, hook_directions
 from slingloads.analyses.loads import AeroEnvelope, ListedCase, LoadsStudy
+from slingloads.constants import G0
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table2D
 from slingloads.models.aerodynamics import FuselageAero
@@ -29,7 +30,6 @@ from slingloads.models.airframe import Airframe, Hardpoints, MassItems
 from slingloads.models.attitude import Attitude
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage
-from slingloads.constants import G0
 
 Q = 0.5 * 1.225 * (100 * 1852.0 / 3600.0) ** 2  # 1621.000 Pa at 100 KEAS
 

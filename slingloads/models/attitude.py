@@ -27,8 +27,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from slingloads.errors import InputError
 from slingloads.constants import G0
+from slingloads.errors import InputError
 
 #: Attitude sources accepted by the loads analysis besides an explicit :class:`Attitude`.
 ATTITUDE_SOURCES = ("hanging", "mast vertical")
