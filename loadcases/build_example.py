@@ -65,7 +65,12 @@ NOTES = [
     "class of the EC135/H135 (MTOW 2630-2980 kg, length 12.26 m, FACTS: manufacturers' data) "
     "less its blades. Positions in inches, masses in pounds, to show US customary input.",
     "Aerodynamics: the GENERIC HC1 fuselage and fin tables of slingloads/data (SAMPLE_DATA.md): "
-    "UH-60-class coefficient magnitudes scaled to a light twin; Prouty flat-plate areas.",
+    "UH-60-class coefficient magnitudes scaled to a light twin; Prouty flat-plate areas. "
+    "Fuselage forces in wind axes, moments in body axes, fin in body axes (Study rows "
+    "'fuselage force axes', 'fuselage moment axes', 'fin axes').",
+    "Attitude: hanging (CG under the hub: the hub is 0.17 m aft of the CG, so the airframe "
+    "hangs 9.2 deg nose down); gravity, the vertical hook case and the 30 deg cone are taken "
+    "about that vertical. Towed-flight equilibrium cases are added per envelope point.",
     "Parachute: flat-plate area 1.4 x the neutral-static-stability area of the sizing (the paper's "
     "FPA + 40 %); canopy CD 1.0 (free stream, the default ParachuteCD) within +-8 deg and wake "
     "ratio 0.95: the paper's 0.95 in all, the 5 % wake loss counted once, in the wake ratio "
@@ -101,7 +106,9 @@ def airframe():
 
 def previous_envelope(frame):
     """Illustrative previous design envelope: own rotor thrust, 10 deg cone, Nz 3.5."""
-    study = LoadsStudy(frame, hook=HookLoadOptions(nz=3.5, angle=np.radians(10.0)))
+    # rotor thrust along the mast: the mast is the vertical here, not the hanging attitude
+    study = LoadsStudy(frame, hook=HookLoadOptions(nz=3.5, angle=np.radians(10.0), towed=False),
+                       attitude="mast vertical")
     result = study.run()
     hi, lo = result.loads.max(axis=0), result.loads.min(axis=0)
     # a previous envelope also covers the negative manoeuvre (-1 g): mirror the vertical terms
@@ -150,7 +157,14 @@ def main():
         "airspeed EAS": (100, "kt"),
         "density altitude": (0, "ft"),
         "hook load factor Nz": (2.5, ""),
-        "hook angle from mast": (30, "deg"),
+        "attitude": ("hanging", ""),
+        "hook angle from vertical": (30, "deg"),
+        "hook cone shape": ("lateral directions", ""),
+        "towed equilibrium cases": ("yes", ""),
+        "fuselage force axes": ("wind", ""),
+        "fuselage moment axes": ("body", ""),
+        "fin axes": ("body", ""),
+        "parachute table axes": ("wind", ""),
         "hook azimuths": (8, ""),
         "reference axis y": (0, "in"),
         "reference axis z": (round(1.0 / INCH, 2), "in"),

@@ -431,6 +431,19 @@ def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGI
                             np.asarray(wake(distance)), cable)
 
 
+def wake_ratio_at(wake, distance):
+    """The wake's q ratio at ``distance`` [m], NaN outside its data (table range, or nearer
+    than the far-wake model's validity). [-]
+
+    The parachute's wake ratio carries the wake loss once (:mod:`slingloads.models.parachute`);
+    this is the value the wake data give for it at the chosen line length.
+    """
+    lo, hi = wake.range if hasattr(wake, "range") else (wake.min_distance, np.inf)
+    if not (np.isfinite(distance) and lo <= distance <= hi):
+        return float("nan")
+    return float(wake(distance))
+
+
 # ----------------------------------------------------------------------------- runs
 @dataclass(frozen=True)
 class MetricSettings:

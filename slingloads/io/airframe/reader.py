@@ -17,9 +17,16 @@ from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.models.aero_tables import Table1D, Table2D
-from slingloads.models.aerodynamics import Fin, FuselageAero
+from slingloads.models.aerodynamics import (
+    FIN_AXES,
+    FORCE_AXES,
+    MOMENT_AXES,
+    Fin,
+    FuselageAero,
+    fuselage_columns,
+)
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems, check_inside
-from slingloads.models.parachute import Parachute
+from slingloads.models.parachute import PARACHUTE_AXES, Parachute
 
 _SPEC = {s.name: s for s in SHEETS}
 
@@ -166,10 +173,28 @@ def read_fuselage_aero(reader, params, refs):
                            "'aero_reference' (moment reference point)", sheet="Hardpoints")
     area = params.positive("fuselage reference area")
     length = params.positive("fuselage reference length")
+    force_axes = params.choice("fuselage force axes", tuple(FORCE_AXES))
+    moment_axes = params.choice("fuselage moment axes", MOMENT_AXES)
+    columns = fuselage_columns(force_axes)
+    _columns_match(reader, t, columns, ("CD", "CL", "CX", "CZ"),
+                   f"'fuselage force axes' is {force_axes!r}")
     with located(reader.file, t.sheet):
-        table = Table2D.from_long(t["alpha"], t["beta"],
-                                  {c: t[c] for c in ("CD", "CY", "CL", "Cl", "Cm", "Cn")})
-        return FuselageAero(table, area, length, refs["aero_reference"])
+        table = Table2D.from_long(t["alpha"], t["beta"], {c: t[c] for c in columns})
+        return FuselageAero(table, area, length, refs["aero_reference"], force_axes,
+                            moment_axes)
+
+
+def _columns_match(reader, table, needed, optional, why):
+    """Each column of ``needed`` present, none of ``optional`` outside it (the frame's)."""
+    for name in needed:
+        if not table.has(name):
+            raise reader.error(f"missing column {name!r}: {why}, whose columns are "
+                               f"{list(needed)}", sheet=table.sheet, cell="A1")
+    for name in optional:
+        if table.has(name) and name not in needed:
+            raise reader.error(f"column {name!r} does not belong to the declared frame: {why}, "
+                               f"whose columns are {list(needed)}", name, table.sheet,
+                               table.cell(name, 0).rstrip("0123456789") + "1")
 
 
 def read_fin_aero(reader, params, refs):
@@ -187,14 +212,22 @@ def read_fin_aero(reader, params, refs):
                            sheet="Hardpoints")
     area = params.positive("fin area")
     eff = params("fin efficiency")
+    axes = params.choice("fin axes", FIN_AXES)
     with located(reader.file, t.sheet):
         table = Table1D(t["beta"], {"CY": t["CY"]}, angle_name="beta", what="fin")
     with located(reader.file, STUDY_SHEET, params.cell("fin efficiency")):
-        return Fin(table, area, refs["fin_cp"], eff)
+        return Fin(table, area, refs["fin_cp"], eff, axes)
 
 
-def read_parachute_cd(reader):
-    """The optional ParachuteCD sheet as a table, or None (the paper's CD is then used).
+def read_parachute_cd(reader, axes="wind"):
+    """The optional ParachuteCD sheet as a table, or None (the default canopy CD 1.0 within
+    +-8 deg is then used).
+
+    Parameters
+    ----------
+    reader : WorkbookReader
+    axes : str
+        'parachute table axes': ``"wind"`` (column CD) or ``"canopy"`` (column CT).
 
     Returns
     -------
@@ -203,8 +236,11 @@ def read_parachute_cd(reader):
     if not reader.has_sheet("ParachuteCD"):
         return None
     t = reader.table(_SPEC["ParachuteCD"])
+    column = PARACHUTE_AXES[axes]
+    _columns_match(reader, t, (column,), tuple(PARACHUTE_AXES.values()),
+                   f"'parachute table axes' is {axes!r}")
     with located(reader.file, t.sheet):
-        return Table1D(t["alpha"], {"CD": t["CD"]}, angle_name="alpha", what="parachute")
+        return Table1D(t["alpha"], {column: t[column]}, angle_name="alpha", what="parachute")
 
 
 def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
@@ -225,9 +261,11 @@ def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
     -------
     Parachute
     """
-    cd = read_parachute_cd(reader)
+    axes = params.choice("parachute table axes", tuple(PARACHUTE_AXES))
+    cd = read_parachute_cd(reader, axes)
     for name, arg in parameters.items():
         with located(reader.file, STUDY_SHEET, params.where(name)):
-            Parachute(area, cd, **{arg: params(name)})
+            Parachute(area, cd, axes=axes, **{arg: params(name)})
     with located(reader.file, "ParachuteCD" if cd is not None else STUDY_SHEET):
-        return Parachute(area, cd, **{arg: params(name) for name, arg in parameters.items()})
+        return Parachute(area, cd, axes=axes,
+                         **{arg: params(name) for name, arg in parameters.items()})

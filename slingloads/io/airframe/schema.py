@@ -30,8 +30,28 @@ PARAMETERS = (
     Parameter("fin efficiency", "dimensionless", "", 0.5,
               "Share of the intact fin's side force kept by the cut-down fin (paper: ~0.5).",
               "aero"),
+    Parameter("fuselage force axes", TEXT, "", "wind",
+              "Frame of the FuselageAero force coefficients (docs/conventions.md section 3): "
+              "'wind' (CD along the airflow, CY along the wind frame's y axis, CL normal to "
+              "the airflow in the x-z plane, up), 'stability' (CD along the airflow's "
+              "projection on the plane of symmetry, CY along body y, CL up) or 'body' "
+              "(columns CX forward, CY right, CZ down). Converted once to airframe axes. The "
+              "generic sample tables are in wind axes.", "aero"),
+    Parameter("fuselage moment axes", TEXT, "", "body",
+              "Frame of the FuselageAero moment coefficients Cl, Cm, Cn: 'body' (Cl right "
+              "side down, Cm nose up, Cn nose right), 'stability' or 'wind'.", "aero"),
+    Parameter("fin axes", TEXT, "", "body",
+              "Frame of the FinAero CY (at zero angle of attack): 'body' (along +y, normal "
+              "to the fin) or 'wind' (normal to the airflow).", "aero"),
+    Parameter("parachute table axes", TEXT, "", "wind",
+              "Frame of the ParachuteCD table: 'wind' (column CD, along the canopy's "
+              "relative wind) or 'canopy' (column CT, along the canopy axis, i.e. the line).",
+              "parachute"),
     Parameter("parachute wake ratio", "dimensionless", "", 0.95,
-              "Dynamic pressure at the canopy / free stream (paper: 0.95).", "parachute"),
+              "Dynamic pressure at the canopy / free stream. It carries the 5 % wake loss, "
+              "counted once: the default ParachuteCD is the canopy's free-stream CD 1.0, so "
+              "0.95 x 1.0 = the paper's 0.95. Set 1 if your ParachuteCD already contains the "
+              "wake loss.", "parachute"),
     Parameter("parachute line length", "length", "m", 10.0,
               "Line length from the fin attachment to the canopy.", "parachute"),
 )
@@ -74,18 +94,31 @@ SHEETS = (
        "(default: mid-points between stations, equal weights)."),
     TableSheet("FuselageAero", (
         Column("alpha", "angle", "deg"), Column("beta", "angle", "deg"),
-        Column("CD", "dimensionless"), Column("CY", "dimensionless"),
-        Column("CL", "dimensionless"), Column("Cl", "dimensionless"),
-        Column("Cm", "dimensionless"), Column("Cn", "dimensionless"),
-    ), help="Fuselage coefficients on a full alpha x beta grid (conventions: docs/"
-       "conventions.md). Never extrapolated."),
+        Column("CD", "dimensionless", required=False,
+               help="Drag (wind or stability axes)."),
+        Column("CY", "dimensionless", help="Side force along the frame's y axis."),
+        Column("CL", "dimensionless", required=False,
+               help="Lift (wind or stability axes)."),
+        Column("CX", "dimensionless", required=False, help="Body axes: along x forward."),
+        Column("CZ", "dimensionless", required=False, help="Body axes: along z down."),
+        Column("Cl", "dimensionless"), Column("Cm", "dimensionless"),
+        Column("Cn", "dimensionless"),
+    ), help="Fuselage coefficients on a full alpha x beta grid, in the frames declared by "
+       "'fuselage force axes' (CD, CY, CL for wind or stability; CX, CY, CZ for body) and "
+       "'fuselage moment axes' (docs/conventions.md section 3). Never extrapolated."),
     TableSheet("FinAero", (
         Column("beta", "angle", "deg"), Column("CY", "dimensionless"),
-    ), help="Intact fin side-force coefficient against sideslip, on 'fin area'."),
+    ), help="Intact fin side-force coefficient against sideslip, on 'fin area', in the frame "
+       "of 'fin axes'."),
     TableSheet("ParachuteCD", (
-        Column("alpha", "angle", "deg"), Column("CD", "dimensionless"),
-    ), help="Optional parachute drag coefficient against canopy angle of attack "
-       "(default: 0.95 within +-8 deg)."),
+        Column("alpha", "angle", "deg"),
+        Column("CD", "dimensionless", required=False,
+               help="Free-stream drag along the canopy's relative wind ('wind' axes)."),
+        Column("CT", "dimensionless", required=False,
+               help="Free-stream force along the canopy axis ('canopy' axes)."),
+    ), help="Optional parachute force coefficient against canopy angle of attack, free "
+       "stream (the wake loss is in 'parachute wake ratio'; default: CD 1.0 within +-8 deg, "
+       "times the wake ratio 0.95 = the paper's 0.95)."),
 )
 
 SECTION = Section("airframe", parameters=PARAMETERS, sheets=SHEETS)

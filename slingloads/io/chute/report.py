@@ -26,7 +26,12 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.chute_sizing import line_length, neutral_area, sizing_sweep
+from slingloads.analyses.chute_sizing import (
+    line_length,
+    neutral_area,
+    sizing_sweep,
+    wake_ratio_at,
+)
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
 from slingloads.io.chute.plots import (
@@ -185,7 +190,12 @@ def summary_tables(result, units="SI"):
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),
         ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg", "fit over +- this"),
-        ("parachute CD x wake ratio", float(m.chute_drag_coefficient), "-", ""),
+        ("parachute canopy CD (free stream)", float(m.parachute.coefficient(0.0)), "-",
+         "ParachuteCD at canopy alpha 0 (default 1.0)"),
+        ("parachute wake ratio", float(m.parachute.wake_ratio), "-",
+         "carries the wake loss, counted once"),
+        ("parachute CD x wake ratio", float(m.chute_drag_coefficient), "-",
+         "the one factor of the drag (paper: 0.95)"),
         ("parachute arm aft of the hub axis", float(m.chute_arm[0]), "length", ""),
     ], units)
     sweep_rows = []
@@ -222,7 +232,8 @@ def summary_tables(result, units="SI"):
             ("parachute line length (from the wake)", line.line_length, "length", ""),
             ("Study 'parachute line length'", inp.study_line, "length",
              "ok" if inp.study_line >= line.line_length * (1 - 1e-9)
-             else "SHORTER than the wake line: the canopy sees less than the target q")]
+             else "SHORTER than the wake line: the canopy sees less than the target q"),
+            _wake_ratio_row(inp)]
     if cable is None:
         rows.append(("carrier cable check", "not done", None,
                      "'chute sizing carrier cable length' not given"))
@@ -234,6 +245,21 @@ def summary_tables(result, units="SI"):
                   _cable_message(cable, units))]
     return {"condition": condition, "sizing": sizing, "breakdown": breakdown,
             "line": _items(rows, units)}
+
+
+def _wake_ratio_row(inp):
+    """The wake's q ratio at the Study's line against the 'parachute wake ratio' the drag
+    uses: the one factor that carries the wake loss must agree with the wake data."""
+    at_line = wake_ratio_at(inp.wake, inp.study_line)
+    used = float(inp.model.parachute.wake_ratio)
+    if not np.isfinite(at_line):
+        note = "the Study line lies outside the wake data: check 'parachute wake ratio' by hand"
+    elif abs(at_line - used) <= 0.005:
+        note = f"agrees with 'parachute wake ratio' {used:.3g}"
+    else:
+        note = (f"DIFFERS from 'parachute wake ratio' {used:.3g}, which the drag uses: set it "
+                "to the wake's value at the line")
+    return ("wake q ratio at the Study line", at_line, "-", note)
 
 
 def _cable_message(cable, units):

@@ -67,6 +67,8 @@ class Parameter:
     """One row of the ``Study`` sheet: ``parameter | value | unit | description``.
 
     ``default`` is in the unit ``unit`` (converted on reading); ``None`` means required.
+    ``former`` lists names the parameter had before (a workbook using one is told the new
+    name, since the meaning may have changed with it).
     """
 
     name: str
@@ -75,6 +77,7 @@ class Parameter:
     default: object = None
     help: str = ""
     section: str = "general"
+    former: tuple = ()
 
 
 @dataclass(frozen=True)

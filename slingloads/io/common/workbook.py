@@ -242,6 +242,11 @@ class WorkbookReader:
                 continue
             key = str(name).strip().lower()
             if key not in known:
+                renamed = next((p for p in known.values()
+                                if key in (f.lower() for f in p.former)), None)
+                if renamed is not None:
+                    raise self.error(f"parameter renamed: use {renamed.name!r} ({renamed.help})",
+                                     str(name), sheet, cell_name(r, 1))
                 raise self.error(f"unknown parameter; valid parameters are "
                                  f"{sorted(known)}", str(name), sheet, cell_name(r, 1))
             if key in out:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.hook_loads import HookLoadOptions
+from slingloads.analyses.hook_loads import CONE_SHAPES, HookLoadOptions, horizontal_basis
 from slingloads.analyses.loads import AeroEnvelope, FlightCondition, ListedCase, LoadsStudy
 from slingloads.analyses.sfbm import COMPONENTS
 from slingloads.errors import InputError
@@ -26,6 +26,7 @@ from slingloads.io.airframe.reader import (
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.loads.schema import SHEETS
+from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attitude
 
 _SPEC = {s.name: s for s in SHEETS}
 
@@ -73,17 +74,53 @@ def read(reader, params, study):
                                   t["chute"][i], t["description"][i] if t.has("description")
                                   else "") for i in range(len(t)))
     previous = _previous(reader) if reader.has_sheet("PreviousEnvelope") else None
+    hook = _hook_options(reader, params)
     with located(reader.file, STUDY_SHEET):
-        hook = HookLoadOptions(params("hook load factor Nz"), params("hook angle from mast"),
-                               params("hook azimuths"), params("hook along mast axis"))
         flight = FlightCondition(params("airspeed EAS"), params("density altitude"))
+    attitude = _attitude(reader, params, airframe)
     line = str(params("parachute line direction")).strip().lower()
     with located(reader.file, "LoadCases" if listed else STUDY_SHEET):
         return LoadsStudy(airframe, flight, hook, envelope, fuselage, fin, parachute,
-                          chute_line=line, generate=params("generate case matrix"),
+                          chute_line=line, attitude=attitude,
+                          generate=params("generate case matrix"),
                           listed=listed, previous_envelope=previous,
                           ultimate_factor=params("ultimate factor"),
                           name=str(params("study name")))
+
+
+def _hook_options(reader, params):
+    """HookLoadOptions from the Study rows, each bad value located at its own cell."""
+    names = {"nz": "hook load factor Nz", "angle": "hook angle from vertical",
+             "lateral_angle": "hook lateral angle", "n_azimuth": "hook azimuths",
+             "include_vertical": "hook vertical case", "towed": "towed equilibrium cases"}
+    kwargs = {arg: params(name) for arg, name in names.items()}
+    if kwargs["lateral_angle"] == 0:
+        kwargs["lateral_angle"] = None  # 0: the same as 'hook angle from vertical'
+    kwargs["cone"] = params.choice("hook cone shape", CONE_SHAPES)
+    for arg, name in names.items():
+        with located(reader.file, STUDY_SHEET, params.where(name)):
+            HookLoadOptions(**{arg: kwargs[arg]})
+    with located(reader.file, STUDY_SHEET, params.where("hook azimuths")):
+        return HookLoadOptions(**kwargs)
+
+
+def _attitude(reader, params, airframe):
+    """'hanging', 'mast vertical' or the Attitude given by 'attitude pitch' and 'roll'."""
+    source = params.choice("attitude", (*ATTITUDE_SOURCES, "given"))
+    angles = {name: params(name) for name in ("attitude pitch", "attitude roll")}
+    if source != "given":
+        for name, value in angles.items():
+            params.check(name, value == 0, f"{name!r} is used only with 'attitude' = given; "
+                         f"leave it 0 with {source!r}")
+        with located(reader.file, STUDY_SHEET, params.where("attitude")):
+            return resolve_attitude(source, airframe)
+    for name, value in angles.items():
+        with located(reader.file, STUDY_SHEET, params.where(name)):
+            Attitude(**{name.split()[1]: value})
+    with located(reader.file, STUDY_SHEET, params.where("attitude")):
+        attitude = Attitude(angles["attitude pitch"], angles["attitude roll"])
+        horizontal_basis(attitude.vertical)
+    return attitude
 
 
 _PARACHUTE_PARAMETERS = {**PARACHUTE_PARAMETERS, "parachute opening factor": "opening_factor"}

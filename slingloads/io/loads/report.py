@@ -3,8 +3,10 @@
 :func:`write_loads_outputs` writes, all at once or not at all
 (:mod:`slingloads.io.common.atomic`):
 
-* ``<stem>-loads.xlsx``: sheets *Summary* (input digest, study settings, units, closure check,
-  governing cases), *LoadCases*, *Envelope* (critical case and correlated loads),
+* ``<stem>-loads.xlsx``: sheets *Summary* (input digest, study settings, units, the attitude
+  and its vertical, the hook directions with the reduced ones, the towed cases' cable angles
+  with the inside-cone flag, closure check, governing cases), *LoadCases* (with each case's
+  cable angle and inside-cone flag), *Envelope* (critical case and correlated loads),
   *Exceedance* (ratio to the previous design envelope, red above 1), *SFBM* (every case and
   station, split as ``SFBM_1``, ``SFBM_2``... past Excel's row limit), *Ultimate* (envelope
   at ultimate = factor x limit), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
@@ -225,6 +227,50 @@ def study_table(result, units="SI"):
     return pd.DataFrame(rows, columns=["item", "setting", "unit"])
 
 
+def attitude_table(result):
+    """The attitude and its earth vertical in airframe axes (angles in degrees)."""
+    return result.attitude.to_frame()
+
+
+def hook_direction_table(result):
+    """The hook directions: azimuth and inclination from the vertical, whether the
+    inclination was changed from the cone angle ('reduced'), unit vector in airframe axes."""
+    frame = result.study.hook_table().copy()
+    frame["reduced"] = np.where(frame["reduced"], "yes", "no")
+    return frame.rename(columns={"ux": "ux [-]", "uy": "uy [-]", "uz": "uz [-]"})
+
+
+def hook_direction_note(result):
+    """One sentence on the cone's inclinations and the directions a lateral angle changed."""
+    hook = result.study.hook
+    table = result.study.hook_table()
+    reduced = list(table.loc[table["reduced"], "hook"])
+    base = (f"Cone about the earth vertical of the attitude: {np.degrees(hook.angle):.4g} deg "
+            f"from the vertical")
+    if not reduced:
+        return base + " in every direction."
+    where = ("at the pure lateral azimuths only" if hook.cone == "lateral directions"
+             else "along an elliptical cone to the lateral angle")
+    return (f"{base}, except {', '.join(reduced)} at the lateral angle "
+            f"{np.degrees(hook.lateral):.4g} deg ({where}; the lateral-step study justifies "
+            f"lateral directions only).")
+
+
+def towed_note(result):
+    """The towed-case verdict: how many trimmed cables lie outside the hook cone."""
+    towed = result.towed_table()
+    if towed.empty:
+        return "No towed-flight equilibrium case (no aerodynamic point or parachute, or off)."
+    outside = towed[towed["inside hook cone"] != "yes"]
+    rule = ("Cable angle from the vertical at Nz and at 1 g (the steady trail angle), judged "
+            "at the larger against the cone's inclination at the cable's azimuth.")
+    if outside.empty:
+        return f"{rule} Every trimmed cable lies inside the hook cone."
+    return (f"{rule} OUTSIDE THE HOOK CONE: {', '.join(outside['case'])}: the cone does not "
+            "cover the cable angle reached in towed flight; widen it or restrict the flight "
+            "envelope.")
+
+
 def closure_table(result):
     """Free-free closure check (SI, as applied by the analysis): residuals vs tolerance."""
     residual = np.abs(result.residual)
@@ -362,6 +408,14 @@ def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations):
         Section("Inputs", digest) if digest is not None
         else Section("Inputs", note="no input digest given"),
         Section("Study", study_table(result, units)),
+        Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
+                note=result.attitude.describe() + ". Gravity, the vertical hook case and the "
+                     "hook cone are taken about this vertical."),
+        Section("Hook-load directions (CS-29.865)", hook_direction_table(result),
+                note=hook_direction_note(result)),
+        Section("Towed-flight equilibrium cases: trimmed cable angles",
+                result.towed_table() if (result.cases["hook"] == "TOW").any() else None,
+                note=towed_note(result)),
         Section("Closure check (free-free equilibrium, SI as checked)", closure_table(result)),
         Section("Governing cases (largest |limit load| of each component)",
                 governing_report_table(result, units)),

@@ -15,16 +15,43 @@ PARAMETERS = (
               "ISA density altitude (paper: 0, 5000, 10000 ft).", "flight"),
     Parameter("hook load factor Nz", "dimensionless", "", 2.5,
               "CS-29.865(a): limit hook load = Nz x carried aircraft weight.", "hook"),
-    Parameter("hook angle from mast", "angle", "deg", 30.0,
-              "Inclination of the off-axis hook loads (CS-29.865: 30 deg unless a smaller "
-              "angle is justified).", "hook"),
+    Parameter("attitude", TEXT, "", "hanging",
+              "Attitude that fixes the earth vertical for gravity, the vertical hook case and "
+              "the cone: 'hanging' (pitch and roll until the CG lies under the hub, from the "
+              "MassItems and the hub), 'mast vertical' (the mast axis is the vertical) or "
+              "'given' ('attitude pitch' and 'attitude roll').", "attitude"),
+    Parameter("attitude pitch", "angle", "deg", 0.0,
+              "Pitch, nose up positive, within (-90, 90) deg; only with attitude 'given'.",
+              "attitude"),
+    Parameter("attitude roll", "angle", "deg", 0.0,
+              "Roll, right side down positive, within (-90, 90) deg; only with attitude "
+              "'given'.", "attitude"),
+    Parameter("hook angle from vertical", "angle", "deg", 30.0,
+              "Inclination of the off-vertical hook loads from the earth vertical (CS-29.865: "
+              "30 deg unless a smaller angle is shown); the lateral directions may take "
+              "'hook lateral angle'.", "hook", former=("hook angle from mast",)),
+    Parameter("hook lateral angle", "angle", "deg", 0.0,
+              "Inclination of the lateral hook loads where a different angle is shown (e.g. "
+              "the lateral study's recommended angle); 0 = the same as 'hook angle from "
+              "vertical'. Applied as 'hook cone shape' says.", "hook"),
+    Parameter("hook cone shape", TEXT, "", "lateral directions",
+              "Where 'hook lateral angle' applies: 'lateral directions' (azimuths 90 and 270 "
+              "deg only: what the lateral study covers) or 'elliptical' (from the fore-and-aft "
+              "to the lateral angle, when longitudinal evidence exists).", "hook"),
     Parameter("hook azimuths", INTEGER, "", 8,
-              "Number of off-axis hook directions evenly spread in azimuth.", "hook"),
-    Parameter("hook along mast axis", FLAG, "", "yes",
-              "Include the hook load along the mast axis.", "hook"),
+              "Number of off-vertical hook directions evenly spread in azimuth about the "
+              "vertical (0 = aft, 90 deg = right).", "hook"),
+    Parameter("hook vertical case", FLAG, "", "yes",
+              "Include the hook load along the earth vertical (case VERTICAL).", "hook",
+              former=("hook along mast axis",)),
+    Parameter("towed equilibrium cases", FLAG, "", "yes",
+              "Add, per AeroEnvelope point with and without parachute, the towed-flight case "
+              "(hook TOW): cable vertical component Nz x weight, horizontal component "
+              "balancing aerodynamics and parachute; its angle is checked against the cone.",
+              "hook"),
     Parameter("generate case matrix", FLAG, "", "yes",
-              "Generate hook direction x aero point x parachute on/off (cases on the "
-              "LoadCases sheet are added).", "cases"),
+              "Generate hook direction x aero point x parachute on/off, then the towed "
+              "cases (cases on the LoadCases sheet are added).", "cases"),
     Parameter("ultimate factor", "dimensionless", "", 1.5,
               "Factor of safety, CS 29.303 (ultimate = factor x limit).", "cases"),
     Parameter("parachute area", "area", "m^2", 0.0,
@@ -46,7 +73,8 @@ SHEETS = (
     ), help="Points of the angle-of-attack / sideslip envelope (corners and centre)."),
     TableSheet("LoadCases", (
         Column("id", TEXT, help="Unique case id."),
-        Column("hook", TEXT, help="AXIAL, AZ000, AZ045, ... or NONE."),
+        Column("hook", TEXT, help="VERTICAL, AZ000, AZ045, ..., TOW (towed-flight "
+               "equilibrium) or NONE; AXIAL is read as VERTICAL."),
         Column("aero", TEXT, help="An AeroEnvelope id or NONE."),
         Column("chute", FLAG, help="Parachute drag on (yes/no)."),
         Column("description", TEXT, required=False, default=""),
