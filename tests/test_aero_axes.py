@@ -132,13 +132,11 @@ def body_equivalent(fuselage):
 
 
 def small_airframe():
-    x = np.array([-5.0, -2.0, 0.0, 1.5, 4.0, 7.0])
-    position = np.column_stack([x, [0.0, 0.1, -0.2, 0.3, 0.0, 0.5],
-                                [-0.5, -0.3, 0.2, 0.4, 0.3, 1.2]])
-    mass = np.array([200.0, 700.0, 800.0, 600.0, 350.0, 250.0])
-    inertia = np.broadcast_to(np.diag([40.0, 60.0, 60.0]), (6, 3, 3)).copy()
-    items = MassItems(tuple(f"m{i}" for i in range(6)), mass, position, inertia)
-    return Airframe(items, np.linspace(-5.0, 7.0, 13), sample_hardpoints("HC1"))
+    """Four masses of 500 kg at x = -4, -1, 2, 6.5 m, off the x axis so that every inertia is
+    positive, with the HC1 sample's hub, mast feet and parachute attachment (x = 6.4 m)."""
+    position = [[-4.0, 0.3, -0.4], [-1.0, -0.3, 0.2], [2.0, 0.3, 0.5], [6.5, -0.3, 0.9]]
+    items = MassItems(("a", "b", "c", "d"), np.full(4, 500.0), position)
+    return Airframe(items, np.linspace(-4.0, 6.5, 8), sample_hardpoints("HC1"))
 
 
 def test_body_table_and_its_wind_equivalent_give_the_same_loads():

@@ -129,16 +129,22 @@ def test_body_axes_sheet_gives_the_same_loads(tmp_path, example_loads):
                                atol=1e-9 * np.abs(reference).max())
 
 
-def test_parachute_canopy_axes_table(tmp_path, example_loads):
-    """A ParachuteCD sheet in canopy axes (CT 1.0 within +-8 deg) with the line along the
-    relative wind gives the default loads: the canopy axis lies along the wind."""
+def with_parachute_table(column):
+    """An edit adding a flat ParachuteCD sheet (1.0 within +-8 deg) headed ``column``, in
+    canopy axes."""
     def edit(b):
         ws = b.create_sheet("ParachuteCD")
-        ws.append(["alpha [deg]", "CT"])
+        ws.append(["alpha [deg]", column])
         ws.append([-8.0, 1.0])
         ws.append([8.0, 1.0])
         set_row(b, "parachute table axes", "canopy")
-    study = loads_of(edited(tmp_path, edit))
+    return edit
+
+
+def test_parachute_canopy_axes_table(tmp_path, example_loads):
+    """A ParachuteCD sheet in canopy axes (CT 1.0 within +-8 deg) with the line along the
+    relative wind gives the default loads: the canopy axis lies along the wind."""
+    study = loads_of(edited(tmp_path, with_parachute_table("CT")))
     assert study.parachute.axes == "canopy"
     np.testing.assert_allclose(study.run().loads, example_loads.run().loads, rtol=1e-12,
                                atol=1e-9)
@@ -177,15 +183,8 @@ def test_frame_and_columns_must_agree(tmp_path):
     """Rule: a body-axes FuselageAero has CX, CY, CZ; a canopy-axes ParachuteCD has CT."""
     path = edited(tmp_path, lambda b: set_row(b, "fuselage force axes", "body"))
     expect_error(path, "sheet 'FuselageAero'", "missing column 'CX'", "'body'")
-
-    def chute(b):
-        ws = b.create_sheet("ParachuteCD")
-        ws.append(["alpha [deg]", "CD"])
-        ws.append([-8.0, 1.0])
-        ws.append([8.0, 1.0])
-        set_row(b, "parachute table axes", "canopy")
-    expect_error(edited(tmp_path, chute, "chute.xlsx"), "sheet 'ParachuteCD'",
-                 "missing column 'CT'")
+    expect_error(edited(tmp_path, with_parachute_table("CD"), "chute.xlsx"),
+                 "sheet 'ParachuteCD'", "missing column 'CT'")
 
 
 def test_renamed_parameter_is_named(tmp_path):
