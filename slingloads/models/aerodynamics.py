@@ -2,8 +2,12 @@
 
 Angles follow the flight-mechanics convention: angle of attack ``alpha`` positive nose up,
 sideslip ``beta`` positive with the wind coming from the right. Each table **declares its
-axes**, and its coefficients are converted **once, on input**, to force and moment
+axes**; its coefficients are interpolated in that frame (where the table is linear between its
+breakpoints) and converted by one function, at the angles of the query, to force and moment
 coefficients in airframe axes (x aft, y right, z up; ``docs/conventions.md``, section 3).
+Converting on the breakpoints instead and interpolating the airframe-axes values would turn
+the frame's rotation into a chord between breakpoints: exact on a fine grid, wrong on a coarse
+one (a constant drag tabulated at beta = -180 and 180 deg would point backwards at 0).
 
 Flight-mechanics frames, given by their unit vectors in airframe axes (body frame B: x
 forward, y right, z down, so ``x_B = (-1, 0, 0)``, ``y_B = (0, 1, 0)``, ``z_B = (0, 0, -1)``):
@@ -35,7 +39,7 @@ only: it is taken at zero angle of attack, where the stability and body frames c
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -54,8 +58,10 @@ MOMENT_COLUMNS = ("Cl", "Cm", "Cn")
 FUSELAGE_COEFFICIENTS = FORCE_AXES["wind"] + MOMENT_COLUMNS
 #: Frames a fin table may be given in (its side-force column ``CY``).
 FIN_AXES = ("body", "wind")
-#: Names of the internal airframe-axes coefficients (force x, y, z; moment x, y, z).
+#: Names of the airframe-axes coefficients (force x, y, z; moment x, y, z).
 AIRFRAME_COLUMNS = ("CFx", "CFy", "CFz", "CMx", "CMy", "CMz")
+#: Integer codes of the frames, for the compiled kernels of the multibody model.
+FRAME_CODES = {"body": 0, "stability": 1, "wind": 2}
 #: Signs of the force columns along the frame's (x, y, z) axes: drag and lift oppose x and z.
 _FORCE_SIGNS = {"wind": (-1.0, 1.0, -1.0), "stability": (-1.0, 1.0, -1.0),
                 "body": (1.0, 1.0, 1.0)}
@@ -191,12 +197,6 @@ class FuselageAero:
         Frame of the force coefficients: ``"wind"`` (default), ``"stability"`` or ``"body"``.
     moment_axes : str
         Frame of the moment coefficients: ``"body"`` (default), ``"stability"`` or ``"wind"``.
-
-    Attributes
-    ----------
-    airframe_table : Table2D
-        The same coefficients converted once to airframe axes (``CFx, CFy, CFz`` on S,
-        ``CMx, CMy, CMz`` on S L) on the table's grid; interpolation uses it.
     """
 
     table: Table2D
@@ -205,7 +205,6 @@ class FuselageAero:
     moment_reference: np.ndarray
     force_axes: str = "wind"
     moment_axes: str = "body"
-    airframe_table: Table2D = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         _check_choice(self.force_axes, FORCE_AXES, "force axes")
@@ -221,18 +220,6 @@ class FuselageAero:
                                                      "fuselage reference length", "m"))
         object.__setattr__(self, "moment_reference",
                            np.asarray(self.moment_reference, float).reshape(3))
-        object.__setattr__(self, "airframe_table", self._converted())
-
-    def _converted(self):
-        t = self.table
-        a, b = np.meshgrid(t.alpha, t.beta, indexing="ij")
-        own = np.stack([t.coefficients[c] for c in fuselage_columns(self.force_axes)], -1)
-        force = force_to_airframe(own[..., :3], a, b, self.force_axes)
-        moment = moment_to_airframe(own[..., 3:], a, b, self.moment_axes)
-        values = np.concatenate([force, moment], axis=-1)
-        return Table2D(t.alpha, t.beta,
-                       {c: values[..., j] for j, c in enumerate(AIRFRAME_COLUMNS)},
-                       what=t.what)
 
     @property
     def columns(self):
@@ -246,9 +233,12 @@ class FuselageAero:
 
     def airframe_coefficients(self, alpha, beta):
         """Airframe-axes coefficients ``CFx, CFy, CFz, CMx, CMy, CMz`` at ``alpha``, ``beta``
-        [rad], shape (..., 6); an error outside the table (no extrapolation)."""
-        return np.stack([self.airframe_table(c, alpha, beta) for c in AIRFRAME_COLUMNS],
-                        axis=-1)
+        [rad], shape (..., 6): the table interpolated in its declared frames, converted at
+        these angles; an error outside the table (no extrapolation)."""
+        own = self.coefficients(alpha, beta)
+        force = force_to_airframe(own[..., :3], alpha, beta, self.force_axes)
+        moment = moment_to_airframe(own[..., 3:], alpha, beta, self.moment_axes)
+        return np.concatenate([force, moment], axis=-1)
 
     def drag_coefficient(self, alpha, beta):
         """Force coefficient along the airflow (the wind-axes CD), whatever the table's axes."""
@@ -297,11 +287,6 @@ class Fin:
         Frame of ``CY`` (the table is at zero angle of attack): ``"body"`` (default, along
         +y, normal to the fin's plane) or ``"wind"`` (along y_W = (sin b, cos b, 0), normal to
         the airflow).
-
-    Attributes
-    ----------
-    airframe_table : Table1D
-        ``CFx, CFy, CFz`` on the fin area against sideslip, airframe axes (converted once).
     """
 
     table: Table1D
@@ -309,7 +294,6 @@ class Fin:
     centre_of_pressure: np.ndarray
     efficiency: float = 0.5
     axes: str = "body"
-    airframe_table: Table1D = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         if "CY" not in self.table.coefficients:
@@ -322,17 +306,20 @@ class Fin:
         object.__setattr__(self, "efficiency", eta)
         object.__setattr__(self, "centre_of_pressure",
                            np.asarray(self.centre_of_pressure, float).reshape(3))
-        beta = self.table.angle
-        cy = self.table.coefficients["CY"]
-        c = force_to_airframe(np.stack([np.zeros_like(cy), cy, np.zeros_like(cy)], -1),
-                              0.0, beta, self.axes)
-        object.__setattr__(self, "airframe_table", Table1D(
-            beta, {"CFx": c[:, 0], "CFy": c[:, 1], "CFz": c[:, 2]}, "beta", self.table.what))
+
+    def force_coefficients(self, beta):
+        """Airframe-axes force coefficients (CFx, CFy, CFz) on the intact fin area at
+        sideslip ``beta`` [rad], shape (..., 3): CY interpolated, then converted. [-]"""
+        cy = self.table("CY", beta)
+        zero = np.zeros_like(cy)
+        return force_to_airframe(np.stack([zero, cy, zero], axis=-1), 0.0, beta, self.axes)
 
     @property
     def side_force_coefficients(self):
-        """(beta grid [rad], airframe-y force coefficient CFy on the intact fin area [-])."""
-        return self.airframe_table.angle, self.airframe_table.coefficients["CFy"]
+        """(beta grid [rad], airframe-y force coefficient CFy on the intact fin area at the
+        breakpoints [-]); exact between them for body axes, a chord for wind axes."""
+        beta = self.table.angle
+        return beta, self.force_coefficients(beta)[:, 1]
 
     def side_force(self, beta, q):
         """Fin force along +y [N] at sideslip ``beta`` [rad], dynamic pressure ``q`` [Pa]."""
@@ -341,5 +328,4 @@ class Fin:
     def force(self, beta, q):
         """Fin force vector in airframe axes, shape (n, 3). [N]"""
         scale = np.asarray(q, float)[..., None] * self.area * self.efficiency
-        c = np.stack([self.airframe_table(n, beta) for n in ("CFx", "CFy", "CFz")], axis=-1)
-        return scale * c
+        return scale * self.force_coefficients(beta)

@@ -170,7 +170,7 @@ def _drag_estimate(system, tas):
     q = 0.5 * system.density * tas**2
     area = 0.0
     if system.fuselage is not None:
-        area += system.fuselage.area * float(system.fuselage.table("CD", 0.0, 0.0))
+        area += system.fuselage.area * float(system.fuselage.drag_coefficient(0.0, 0.0))
     if system.parachute is not None:
         area += float(system.parachute.parachute.drag_area(0.0))
     return q * area

@@ -68,7 +68,7 @@ PARAMETERS = (
     "chute_line", "cable_length", "cable_stiffness", "cable_damping", "carrier_free",
     "carrier_mass", "carrier_drag_area", "carrier_gain", "pull_X", "pull_Y", "pull_Z", "density",
     "gravity", "v_cut", "lock_translation", "lock_tilt", "lock_yaw", "mast_x", "mast_y",
-    "mast_z")
+    "mast_z", "fuselage_force_frame", "fuselage_moment_frame")
 N_PARAMETERS = len(PARAMETERS)
 DRIVE = ("wind_X", "wind_Y", "wind_Z", "accel_X", "accel_Y", "accel_Z", "cmd_X", "cmd_Y",
          "cmd_Z")
@@ -143,7 +143,8 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
         u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, rx, ry, rz)
         speed_ref = math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
         ffx, ffy, ffz, gx, gy, gz, alpha, beta, ok_a, ok_b = fuselage_loads(
-            u[0], u[1], u[2], half_rho, P[25], P[26], fus_a, fus_b, fus_c, v_cut)
+            u[0], u[1], u[2], half_rho, P[25], P[26], fus_a, fus_b, fus_c, v_cut,
+            int(P[N_PARAMETERS - 2]), int(P[N_PARAMETERS - 1]))
         if not ok_a:
             flag |= 1
         if not ok_b:

@@ -8,8 +8,10 @@ with W the wind and v the CG velocity (earth axes), omega the body rates. So eve
 away from the CG sees the rotation, and its damping comes from the physics (no hand-set rate
 derivative).
 
-* **Fuselage**: the six-coefficient table (:class:`~slingloads.models.aerodynamics.FuselageAero`)
-  at the angle of attack and sideslip of the flow at its moment reference point, with the
+* **Fuselage**: the six-coefficient table (:class:`~slingloads.models.aerodynamics.FuselageAero`,
+  interpolated in its declared frames and converted to airframe axes at the flow's angles,
+  as the loads analysis does) at the angle of attack and sideslip of the flow at its moment
+  reference point, with the
   airflow direction of ``docs/conventions.md``, ``d = u/|u| = (cos a cos b, -sin b,
   sin a cos b)``; inverted with ``cos a >= 0`` so that sideslip covers the whole circle:
   ``b = atan2(-d_y, sign(d_x) sqrt(d_x^2 + d_z^2))``, ``a = atan(d_z / d_x)``.
@@ -98,6 +100,9 @@ class LiftingSurface:
         """The fin of the 1-DOF analyses (:class:`~slingloads.models.aerodynamics.Fin`)."""
         if not isinstance(fin, Fin):
             raise InputError("from_fin needs a Fin", type(fin).__name__)
+        if fin.axes != "body":
+            raise InputError("a lifting surface takes a normal-force table: give the fin's CY "
+                             "in body axes (along +y)", fin.axes)
         eta = fin.efficiency if efficiency is None else efficiency
         return cls(fin.table, fin.area, fin.centre_of_pressure, "y", eta, "fin")
 
@@ -109,7 +114,42 @@ def flow_at(u0, u1, u2, p, q, r, x, y, z):
 
 
 @jit
-def fuselage_loads(u0, u1, u2, half_rho, area, length, alpha_grid, beta_grid, coeffs, v_cut):
+def frame_axis(frame, i, ca, sa, cb, sb):
+    """Axis ``i`` (0 x, 1 y, 2 z) of a flight-mechanics frame (``FRAME_CODES``: 0 body,
+    1 stability, 2 wind) in airframe axes, from the cosines and sines of alpha and beta
+    (docs/conventions.md section 3)."""
+    if frame == 0:
+        if i == 0:
+            return -1.0, 0.0, 0.0
+        if i == 1:
+            return 0.0, 1.0, 0.0
+        return 0.0, 0.0, -1.0
+    if i == 2:
+        return sa, 0.0, -ca
+    if i == 1:
+        if frame == 1:
+            return 0.0, 1.0, 0.0
+        return ca * sb, cb, sa * sb
+    if frame == 1:
+        return -ca, 0.0, -sa
+    return -ca * cb, sb, -sa * cb
+
+
+@jit
+def to_airframe(frame, force, c0, c1, c2, ca, sa, cb, sb):
+    """Coefficients (c0, c1, c2) along a frame's axes as airframe-axes ones; ``force`` makes
+    drag and lift of the wind and stability frames point along -x and -z of the frame."""
+    s = -1.0 if (force and frame != 0) else 1.0
+    x0, y0, z0 = frame_axis(frame, 0, ca, sa, cb, sb)
+    x1, y1, z1 = frame_axis(frame, 1, ca, sa, cb, sb)
+    x2, y2, z2 = frame_axis(frame, 2, ca, sa, cb, sb)
+    a, b = s * c0, s * c2
+    return (a * x0 + c1 * x1 + b * x2, a * y0 + c1 * y1 + b * y2, a * z0 + c1 * z1 + b * z2)
+
+
+@jit
+def fuselage_loads(u0, u1, u2, half_rho, area, length, alpha_grid, beta_grid, coeffs, v_cut,
+                   force_frame, moment_frame):
     """Fuselage force and moment about its reference point, body axes.
 
     Parameters
@@ -121,9 +161,13 @@ def fuselage_loads(u0, u1, u2, half_rho, area, length, alpha_grid, beta_grid, co
     area, length : float
         Reference area [m^2] and length [m].
     alpha_grid, beta_grid, coeffs :
-        The table (coefficients CD, CY, CL, Cl, Cm, Cn stacked on the first axis).
+        The table (its three force and three moment coefficients, ``FuselageAero.columns``,
+        stacked on the first axis), in its declared frames.
     v_cut : float
         Airspeed below which the loads are zero. [m/s]
+    force_frame, moment_frame : int
+        Frames of the force and moment coefficients (``FRAME_CODES``); the interpolated
+        coefficients are converted at the flow's alpha and beta.
 
     Returns
     -------
@@ -147,19 +191,18 @@ def fuselage_loads(u0, u1, u2, half_rho, area, length, alpha_grid, beta_grid, co
     tb = EDGE * (beta_grid[nb - 1] - beta_grid[0])
     in_a = alpha >= alpha_grid[0] - ta and alpha <= alpha_grid[na - 1] + ta
     in_b = beta >= beta_grid[0] - tb and beta <= beta_grid[nb - 1] + tb
-    cd, _ = interp2(alpha_grid, beta_grid, coeffs, 0, alpha, beta)
-    cy, _ = interp2(alpha_grid, beta_grid, coeffs, 1, alpha, beta)
-    cl, _ = interp2(alpha_grid, beta_grid, coeffs, 2, alpha, beta)
-    croll, _ = interp2(alpha_grid, beta_grid, coeffs, 3, alpha, beta)
-    cm, _ = interp2(alpha_grid, beta_grid, coeffs, 4, alpha, beta)
-    cn, _ = interp2(alpha_grid, beta_grid, coeffs, 5, alpha, beta)
+    c0, _ = interp2(alpha_grid, beta_grid, coeffs, 0, alpha, beta)
+    c1, _ = interp2(alpha_grid, beta_grid, coeffs, 1, alpha, beta)
+    c2, _ = interp2(alpha_grid, beta_grid, coeffs, 2, alpha, beta)
+    m0, _ = interp2(alpha_grid, beta_grid, coeffs, 3, alpha, beta)
+    m1, _ = interp2(alpha_grid, beta_grid, coeffs, 4, alpha, beta)
+    m2, _ = interp2(alpha_grid, beta_grid, coeffs, 5, alpha, beta)
+    ca, sa, cb, sb = math.cos(alpha), math.sin(alpha), math.cos(beta), math.sin(beta)
+    cfx, cfy, cfz = to_airframe(force_frame, True, c0, c1, c2, ca, sa, cb, sb)
+    cmx, cmy, cmz = to_airframe(moment_frame, False, m0, m1, m2, ca, sa, cb, sb)
     qs = half_rho * speed2 * area
-    sa, ca = math.sin(alpha), math.cos(alpha)
-    fx = qs * (cd * d0 - cl * sa)
-    fy = qs * (cd * d1 + cy)
-    fz = qs * (cd * d2 + cl * ca)
     qsl = qs * length
-    return fx, fy, fz, -qsl * croll, qsl * cm, -qsl * cn, alpha, beta, in_a, in_b
+    return qs * cfx, qs * cfy, qs * cfz, qsl * cmx, qsl * cmy, qsl * cmz, alpha, beta, in_a, in_b
 
 
 @jit

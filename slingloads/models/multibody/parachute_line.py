@@ -68,6 +68,9 @@ class HingedParachute:
         if not isinstance(self.parachute, Parachute):
             raise InputError("a hinged parachute needs a Parachute",
                              type(self.parachute).__name__)
+        if self.parachute.axes != "wind":
+            raise InputError("the hinged parachute pulls along its relative wind: its table "
+                             "must be in wind axes (CD)", self.parachute.axes)
         object.__setattr__(self, "mass", positive(
             self.mass, "parachute mass must be > 0 [kg] (use the quasi-static model for a "
                        "massless canopy)"))
@@ -97,6 +100,9 @@ class QuasiStaticParachute:
         if not isinstance(self.parachute, Parachute):
             raise InputError("a quasi-static parachute needs a Parachute",
                              type(self.parachute).__name__)
+        if self.parachute.axes != "wind":
+            raise InputError("the quasi-static parachute pulls along its relative wind: its table "
+                             "must be in wind axes (CD)", self.parachute.axes)
 
     @property
     def line_length(self):

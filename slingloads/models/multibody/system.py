@@ -17,7 +17,7 @@ import numpy as np
 from slingloads.checks import finite, non_negative, positive
 from slingloads.constants import G0
 from slingloads.errors import InputError
-from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, FuselageAero
+from slingloads.models.aerodynamics import FRAME_CODES, FuselageAero
 from slingloads.models.airframe import Hardpoints
 from slingloads.models.atmosphere import isa_density, true_airspeed
 from slingloads.models.multibody.cable import Cable
@@ -240,6 +240,8 @@ class SlingSystem:
             put("ref_x", self.fuselage.moment_reference - cg)
             put("fuselage_area", self.fuselage.area)
             put("fuselage_length", self.fuselage.length)
+            put("fuselage_force_frame", FRAME_CODES[self.fuselage.force_axes])
+            put("fuselage_moment_frame", FRAME_CODES[self.fuselage.moment_axes])
         if self.fin is not None:
             put("fin_x", self.fin.centre_of_pressure - cg)
             put("fin_area_eff", self.fin.area * self.fin.efficiency)
@@ -277,10 +279,11 @@ class SlingSystem:
         return p
 
     def tables(self):
-        """Aerodynamic tables for the equations: fuselage (alpha, beta, coefficients), fin,
-        horizontal tail and parachute CD (breakpoints, values)."""
+        """Aerodynamic tables for the equations: fuselage (alpha, beta, coefficients in the
+        table's declared frames, whose codes are parameters), fin, horizontal tail and
+        parachute CD (breakpoints, values)."""
         fus = table_arrays(None if self.fuselage is None else self.fuselage.table,
-                           FUSELAGE_COEFFICIENTS)
+                           () if self.fuselage is None else self.fuselage.columns)
         if self.fuselage is None:
             fus = (np.array([-np.pi, np.pi]), np.array([-np.pi, np.pi]), np.zeros((6, 2, 2)))
         fin = table_arrays(None if self.fin is None else self.fin.table, ("CY",))
