@@ -35,7 +35,7 @@ PARAMETERS = (
               "'wind' (CD along the airflow, CY along the wind frame's y axis, CL normal to "
               "the airflow in the x-z plane, up), 'stability' (CD along the airflow's "
               "projection on the plane of symmetry, CY along body y, CL up) or 'body' "
-              "(columns CX forward, CY right, CZ down). Converted once to airframe axes. The "
+              "(columns CX forward, CY right, CZ down). Converted to airframe axes. The "
               "generic sample tables are in wind axes.", "aero"),
     Parameter("fuselage moment axes", TEXT, "", "body",
               "Frame of the FuselageAero moment coefficients Cl, Cm, Cn: 'body' (Cl right "
