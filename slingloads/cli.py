@@ -50,6 +50,10 @@ def _parser():
         p.add_argument("--units", choices=("SI", "US"), default="SI",
                        help="units of the Excel report (CSV files are always SI)")
         p.add_argument("--quiet", action="store_true", help="no progress bar")
+        if name in ("run", "loads"):
+            p.add_argument("--nastran", action="store_true",
+                           help="also write IN-loads.bdf, the load cases as a Nastran input "
+                                "file in the units of --units (Study rows 'nastran ...')")
     return parser
 
 
@@ -97,6 +101,15 @@ def _selected(args, study):
     return [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
 
 
+def _ask_nastran(study, names):
+    """--nastran: the loads report writes the Nastran file (the loads analysis must run)."""
+    if "loads" not in names:
+        raise InputError("--nastran writes the load cases as Nastran bulk data, but the "
+                         "workbook does not run the loads analysis (Study sheet: 'run loads')",
+                         file=study.path, sheet="Study")
+    study.options["nastran"] = True
+
+
 def _analyse(args):
     from slingloads.io.common.atomic import atomic_outputs
     from slingloads.io.study import read_study
@@ -109,6 +122,8 @@ def _analyse(args):
             only = [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
         study = read_study(args.workbook, only=only)
         names = _selected(args, study)
+        if getattr(args, "nastran", False):
+            _ask_nastran(study, names)
         bar.total = 2 + 2 * len(names)
         bar.update(1)
         results = {}

@@ -628,6 +628,31 @@ class LoadsResult:
             return None
         return compare_with_previous(self.loads, self.stations, self.station_ids, prev)
 
+    def to_nastran(self, path, **options):
+        """Write the load cases as a Nastran input file (``docs/nastran.md``).
+
+        A GRID per mass item (with its CONM2) and per load point, per case a SUBCASE whose
+        LOAD combines the applied FORCE and MOMENT cards, gravity (GRAV along the attitude's
+        vertical) and the inertia relief chosen; in SI or US units, in the model's axes.
+
+        Parameters
+        ----------
+        path : path-like
+            The ``.bdf`` file to write.
+        **options
+            ``units``, ``axes``, ``offset``, ``inertia_relief``, ``hook_at``, the first ids...:
+            see :func:`slingloads.io.loads.nastran.prepare_nastran`.
+
+        Returns
+        -------
+        slingloads.io.loads.nastran.NastranDeck
+            What was written; ``.subcase_table()`` links each subcase to its case id.
+        """
+        # The file format lives in the io layer; the method only hands the result to it.
+        from slingloads.io.loads.nastran import write_nastran
+
+        return write_nastran(self, path, **options)
+
     def _station_index(self, station):
         if isinstance(station, (int, np.integer)):
             if not 0 <= station < len(self.stations):

@@ -15,7 +15,9 @@
   ``<stem>-envelope.csv``: limit loads, always SI;
 * ``<stem>-X_shear.png`` and ``<stem>-Y_shear.png`` (the paper's figures 19 and 20),
   ``<stem>-sfbm_all.png`` (all six components, 2 x 3 grid) and
-  ``<stem>-hull_<A>_<B>_<station>.png``.
+  ``<stem>-hull_<A>_<B>_<station>.png``;
+* on request, ``<stem>-loads.bdf``: the load cases as a Nastran input file
+  (:mod:`slingloads.io.loads.nastran`), with a *Nastran* sheet in the workbook.
 
 :func:`convert_by_component` converts the columns whose unit depends on the row's load
 component; the conversions shared by every report are in :mod:`slingloads.io.common.report`.
@@ -52,6 +54,8 @@ from slingloads.io.common.report import (
     report_unit,
 )
 from slingloads.io.common.units import unit_label
+from slingloads.io.common.workbook import located
+from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.plots import COMPONENT_TAGS, plot_hull, plot_sfbm, plot_sfbm_grid
 
 #: Components drawn on their own PNG (the paper's figures 19 and 20); all six are on the grid.
@@ -309,7 +313,8 @@ def _default_hull_station(result, pair):
 
 def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
-                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True):
+                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
+                        nastran=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -336,6 +341,10 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Rows per sheet including the header (Excel's limit by default).
     plots : bool
         Draw the PNG plots and the Plots sheet (False for fast batch runs).
+    nastran : dict or True, optional
+        Also write ``<stem>-loads.bdf``, the load cases as a Nastran input file in the units
+        ``units``, with these options of :func:`~slingloads.io.loads.nastran.prepare_nastran`
+        (True: the defaults), and a *Nastran* sheet linking each subcase to its case id.
 
     Returns
     -------
@@ -370,6 +379,11 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
             if plots else [])
     names = [f"{stem}-loads.xlsx", f"{stem}-sfbm.csv", f"{stem}-envelope.csv",
              *(f"{stem}-{tag}.png" for tag in tags)]
+    deck = None
+    if nastran is not None and nastran is not False:
+        deck = prepare_nastran(result, units=units, inputs_digest=inputs_digest,
+                               **({} if nastran is True else dict(nastran)))
+        names.append(f"{stem}-loads.bdf")
     for name in names:  # fail before the slow work, not after it
         check_not_input(Path(out_dir) / name, input_paths)
 
@@ -386,6 +400,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                     "All six components": pngs["sfbm_all"]}
         embedded.update({tag: pngs[tag] for tag in hull_plots})
     sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations)
+    if deck is not None:
+        sheets["Nastran"] = nastran_sheet(deck)
 
     with atomic_outputs(out_dir, inputs=input_paths) as out:
         write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,
@@ -398,7 +414,19 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                                  lineterminator="\n")
         for tag, png in pngs.items():
             out.path(f"{stem}-{tag}.png").write_bytes(png)
+        if deck is not None:
+            deck.write(out.path(f"{stem}-loads.bdf"))
     return out.written
+
+
+def nastran_sheet(deck):
+    """The *Nastran* sheet: the file's settings, the subcase -> case id table, the grids."""
+    return [Section("Nastran input file (<stem>-loads.bdf): settings", deck.settings_table()),
+            Section("Subcases: number, LOAD set and the case id each stands for",
+                    deck.subcase_table(),
+                    note="Nastran labels hold printable ASCII; a longer or non-ASCII case id "
+                         "is shortened and ends in '~' and a checksum."),
+            Section("Grids (model axes, file units) and CONM2 elements", deck.grid_table())]
 
 
 def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations):
@@ -473,8 +501,13 @@ def compute(study):
 def write(result, out_dir, stem, units, study):
     """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
     run's outputs ``out_dir``, with the study's inputs digest and hull options."""
-    return write_loads_outputs(result, out_dir, stem, units=units,
-                               inputs_digest=study.digest(),
-                               hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
-                               hull_stations=study.options.get("hull stations"),
-                               input_paths=[study.path])
+    nastran = None
+    if study.options.get("nastran"):
+        nastran = {**study.options["nastran settings"],
+                   "locations": study.options["nastran locations"]}
+    with located(study.path):
+        return write_loads_outputs(result, out_dir, stem, units=units,
+                                   inputs_digest=study.digest(),
+                                   hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
+                                   hull_stations=study.options.get("hull stations"),
+                                   input_paths=[study.path], nastran=nastran)
