@@ -190,7 +190,8 @@ def prepare_nastran(result, *, units="SI", axes="x, y, z", offset=(0.0, 0.0, 0.0
         Refuse more than this many cases x (load points + mass items).
     locations : dict, optional
         Where each option was read from, for error messages: option name or
-        ``("case", case id)`` -> ``{"sheet": ..., "cell": ...}``.
+        ``("case", case id)`` -> ``{"sheet": ..., "cell": ..., "name": ...}`` (``name``: how
+        the message calls the option, e.g. its Study row).
 
     Returns
     -------
@@ -244,7 +245,13 @@ class _Locator:
         self.locations = dict(locations or {})
 
     def get(self, key):
-        return dict(self.locations.get(key) or {})
+        where = dict(self.locations.get(key) or {})
+        where.pop("name", None)
+        return where
+
+    def name(self, key):
+        """How the messages call option ``key`` (its Study row, or the keyword)."""
+        return (self.locations.get(key) or {}).get("name", key)
 
     def error(self, key, rule, value):
         return InputError(rule, value, **self.get(key))
@@ -255,17 +262,17 @@ class _Locator:
         return located(**self.get(key))
 
 
-def _choice(value, valid, name, where):
+def _choice(value, valid, key, where):
     if value not in valid:
-        raise where.error(name, f"{name}={value!r} is not valid; valid values are "
-                                f"{list(valid)}", value)
+        raise where.error(key, f"{where.name(key)}={value!r} is not valid; valid values are "
+                               f"{list(valid)}", value)
 
 
-def _whole(value, name, smallest, where):
+def _whole(value, key, smallest, where):
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not (
             smallest <= int(value) <= MAX_ID):
-        raise where.error(name, f"{name} must be a whole number from {smallest} to {MAX_ID:,}",
-                          value)
+        raise where.error(key, f"{where.name(key)} must be a whole number from {smallest} to "
+                               f"{MAX_ID:,}", value)
     return int(value)
 
 
@@ -292,11 +299,12 @@ def _check_id_ranges(loads, ids, where):
                          f"10 load-set ids per subcase up to subcase "
                          f"{ids['first_subcase'] + loads.n_cases - 1}"),
     }
-    for name, (end, what) in last.items():
+    for key, (end, what) in last.items():
         if end > MAX_ID:
-            raise where.error(name, f"{name}: the ids of {what} would run to {end:,}, past the "
-                                    f"largest Nastran id {MAX_ID:,}; choose a smaller "
-                                    f"{name}", ids[name])
+            name = where.name(key)
+            raise where.error(key, f"{name}: the ids of {what} would run to {end:,}, past the "
+                                   f"largest Nastran id {MAX_ID:,}; choose a smaller {name}",
+                              ids[key])
 
 
 def case_labels(case_ids, where=None):

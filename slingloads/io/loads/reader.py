@@ -222,7 +222,7 @@ def _nastran_options(params, study):
     names = {"axes": "nastran model axes", "offset": "nastran offset x",
              "inertia_relief": "nastran inertia relief", "hook_at": "nastran hook load at",
              **_NASTRAN_IDS}
-    locations = {arg: {"sheet": STUDY_SHEET, "cell": params.where(name)}
+    locations = {arg: {"sheet": STUDY_SHEET, "cell": params.where(name), "name": name}
                  for arg, name in names.items()}
     reader = params.reader
     if study.loads is not None and reader.has_sheet("LoadCases"):
