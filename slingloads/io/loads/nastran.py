@@ -27,10 +27,10 @@ lbf s^2/in); ``PARAM,WTMASS`` must stay 1.0.
 
 from __future__ import annotations
 
-import textwrap
 import unicodedata
 import zlib
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -353,15 +353,24 @@ def _printable(text):
 def _ascii(text):
     """Text for a comment: non-ASCII characters escaped (``\\u00e9``), control characters as
     spaces."""
-    text = str(text).encode("ascii", "backslashreplace").decode("ascii")
+    text = str(text)
+    if text.isascii() and text.isprintable():
+        return text
+    text = text.encode("ascii", "backslashreplace").decode("ascii")
     return "".join(c if " " <= c <= "~" else " " for c in text)
 
 
 def _comment(text, indent=""):
-    """``$`` comment lines of at most :data:`LINE_LENGTH` characters."""
+    """``$`` comment lines of at most :data:`LINE_LENGTH` characters, cut at spaces."""
     width = LINE_LENGTH - 2 - len(indent)
-    lines = textwrap.wrap(_ascii(text), width, break_long_words=True,
-                          break_on_hyphens=False) or [""]
+    text = _ascii(text).rstrip()
+    lines = []
+    while len(text) > width:
+        cut = text.rfind(" ", 0, width + 1)
+        cut = cut if cut > 0 else width
+        lines.append(text[:cut])
+        text = text[cut:].lstrip()
+    lines.append(text)
     return "".join(f"$ {indent}{line}".rstrip() + "\n" for line in lines)
 
 
@@ -395,7 +404,7 @@ class NastranDeck:
 
     # --- numbering -------------------------------------------------------------------------
 
-    @property
+    @cached_property
     def subcases(self):
         """Subcase number of each case, shape (c,)."""
         return self.ids["first_subcase"] + np.arange(self.loads.n_cases)
@@ -563,9 +572,11 @@ class NastranDeck:
     def _case_cards(self, start, stop):
         """Comments, LOAD and load cards of cases ``start`` to ``stop - 1``."""
         blocks = self._card_blocks(start, stop)
+        accelerations = self._acceleration_comments(start, stop)
         out = []
         for i in range(start, stop):
             out.append(self._case_comment(i))
+            out.append(accelerations[i - start])
             out.append(self._load_card(i, blocks))
             out.extend(block.text(i) for block in blocks.values())
         return "".join(out)
@@ -612,14 +623,19 @@ class NastranDeck:
         return force, max(float(np.ptp(points, axis=0).max()), 1.0)
 
     def _case_comment(self, i):
-        loads, u = self.loads, self.units
-        s = int(self.subcases[i])
-        text = _comment(f"---- SUBCASE {s}: case {loads.case_ids[i]}: {loads.descriptions[i]}")
-        a = u(loads.linear_acceleration[i], "acceleration")
-        text += _comment(f"inertia relief: CG acceleration {_vector(a)} "
-                         f"{u.labels['acceleration']}, angular acceleration "
-                         f"{_vector(loads.angular_acceleration[i])} rad/s^2 (model axes)")
-        return text
+        loads = self.loads
+        return _comment(f"---- SUBCASE {self.subcases[i]}: case {loads.case_ids[i]}: "
+                        f"{loads.descriptions[i]}")
+
+    def _acceleration_comments(self, start, stop):
+        """Per case: the inertia relief's CG and angular accelerations, two comment lines."""
+        u, loads = self.units, self.loads
+        a = _clean(u(loads.linear_acceleration[start:stop], "acceleration")).tolist()
+        alpha = _clean(loads.angular_acceleration[start:stop]).tolist()
+        unit = u.labels["acceleration"]
+        return [_comment(f"inertia relief (model axes): CG acceleration ({x:.6g}, {y:.6g}, "
+                         f"{z:.6g}) {unit}, angular acceleration ({p:.6g}, {q:.6g}, {r:.6g}) "
+                         "rad/s^2") for (x, y, z), (p, q, r) in zip(a, alpha, strict=True)]
 
     def _load_card(self, i, blocks):
         """The LOAD combination of case i: every set that has cards, and gravity."""
@@ -651,9 +667,14 @@ _SETS_TEXT = ("{gravity} = gravity GRAV; subcase s: LOAD {base} + 10 s, applied 
 
 def _vector(v):
     """``(x, y, z)`` to six digits, components below :data:`ROUND_OFF` of the largest as 0."""
-    v = np.asarray(v, float)
-    v = np.where(np.abs(v) < ROUND_OFF * np.abs(v).max(initial=0.0), 0.0, v)
-    return "(" + ", ".join(f"{x:.6g}" for x in v) + ")"
+    return "(" + ", ".join(f"{x:.6g}" for x in _clean(v)) + ")"
+
+
+def _clean(vectors):
+    """Vectors (..., 3) with the components below :data:`ROUND_OFF` of their largest as 0."""
+    v = np.asarray(vectors, float)
+    largest = np.abs(v).max(axis=-1, keepdims=True, initial=0.0)
+    return np.where(np.abs(v) < ROUND_OFF * largest, 0.0, v)
 
 
 def _cc(keyword, text, indent):
@@ -671,8 +692,10 @@ _GRID = ("GRID*   " + _INT + _BLANK + _REAL + _REAL + _CONT + _REAL + "\n", "irr
 _CONM2_POINT = ("CONM2*  " + _INT + _INT + _BLANK + _REAL + "\n", "iir")
 _CONM2 = ("CONM2*  " + _INT + _INT + _BLANK + _REAL + _CONT + _REAL * 3 + _CONT + _REAL * 4
           + _CONT + _REAL * 2 + "\n", "iirrrrrrrrrr")
-_FORCE = ("FORCE*  " + _INT + _INT + _BLANK + _REAL + _CONT + _REAL * 3 + "\n", "iirrrr")
-_MOMENT = ("MOMENT* " + _INT + _INT + _BLANK + _REAL + _CONT + _REAL * 3 + "\n", "iirrrr")
+#: FORCE and MOMENT: scale F = 1.0 and the vector's components in N1, N2, N3.
+_FORCE = ("FORCE*  " + _INT + _INT + _BLANK + _REAL % 1.0 + _CONT + _REAL * 3 + "\n", "iirrr")
+_MOMENT = ("MOMENT* " + _INT + _INT + _BLANK + _REAL % 1.0 + _CONT + _REAL * 3 + "\n",
+           "iirrr")
 _GRAV = ("GRAV*   " + _INT + _BLANK + _REAL + _REAL + _CONT + _REAL * 2 + "\n", "irrrr")
 #: RFORCE: no angular velocity (A = 0), the rotation vector through the basic origin (G = 0),
 #: METHOD 1, RACC in revolutions per unit time squared.
@@ -709,16 +732,14 @@ def _magnitude_direction(sids, vectors):
 
 
 class _PointCards:
-    """FORCE or MOMENT cards (magnitude and unit direction) of the vectors of a
+    """FORCE or MOMENT cards (F = 1.0, the components in N) of the vectors of a
     (cases, points, 3) array where ``keep``, one set id per case, formatted at once; the text
     of case i is a slice, every card having the same width."""
 
     def __init__(self, template, sids, grids, vectors, keep, start):
         case, point = np.nonzero(keep)
-        v = vectors[case, point]
-        magnitude = _norm(v)
-        self._set(template, np.column_stack([sids[case], grids[point], magnitude,
-                                             _direction(v, magnitude)]),
+        self._set(template, np.column_stack([sids[case], grids[point],
+                                             _clean(vectors[case, point])]),
                   np.bincount(case, minlength=len(sids)), start)
 
     def _set(self, template, rows, counts, start):
