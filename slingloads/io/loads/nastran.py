@@ -9,12 +9,13 @@ Nastran input file (method, card choices and how to include it in a model: ``doc
   centre of pressure, parachute attachment), in the model's basic system (the project's
   airframe axes through an optional offset and axis map, :class:`ModelAxes`);
 * a ``CONM2`` per mass item at its own grid (its own inertia, no offset);
-* per case a ``LOAD`` combination of ``FORCE`` and ``MOMENT`` cards (the applied loads), the
-  shared ``GRAV`` of gravity along the attitude's downward vertical, and, with
-  ``inertia_relief="accelerations"``, the rigid-body accelerations of the inertia relief as a
-  ``GRAV`` (linear) and an ``RFORCE`` (angular, about the basic origin) with ``MOMENT`` cards
-  for the items' own rotary inertia (which RFORCE does not load); with ``"inrel"``,
-  ``PARAM,INREL,-2`` and no inertia cards: Nastran finds the accelerations from the CONM2s.
+* per case a ``LOAD`` combination of ``FORCE`` and ``MOMENT`` cards (the applied loads;
+  scale 1.0 and the vector's components), the shared ``GRAV`` of gravity along the
+  attitude's downward vertical, and, with ``inertia_relief="accelerations"``, the rigid-body
+  accelerations of the inertia relief as a ``GRAV`` (linear) and an ``RFORCE`` (angular,
+  about the basic origin) with ``MOMENT`` cards for the items' own rotary inertia (which
+  RFORCE does not load); with ``"inrel"``, ``PARAM,INREL,-2`` and no inertia cards: Nastran
+  finds the accelerations from the CONM2s.
 
 Cards are written by hand in **large-field fixed format**: 16-character fields, every real
 with eleven significant digits in Nastran's exponent form without ``E`` (``-2.3853270124+04``),
@@ -40,13 +41,16 @@ import slingloads
 from slingloads.analyses.fe_loads import HOOK_POINTS, ModelAxes, PointLoadCases
 from slingloads.constants import G0, INCH, POUND_FORCE
 from slingloads.errors import InputError
+from slingloads.io.common.atomic import atomic_outputs
+from slingloads.io.common.report import digest_frame
+from slingloads.io.common.workbook import located
 
 #: Inertia-relief set-ups of the deck.
 INERTIA_RELIEF = ("accelerations", "inrel")
 #: Largest Nastran identification number (eight digits).
 MAX_ID = 99_999_999
 #: Most case x point pairs (cases x (load points + mass items)) written in one file: about
-#: 300 MB of cards at the limit.
+#: 120 MB of cards at the limit (the example's airframe: 120 bytes per case and point).
 MAX_CASE_POINTS = 1_000_000
 #: Longest case id kept whole in a LABEL; longer or non-ASCII ids are shortened with a hash.
 LABEL_ID_LENGTH = 40
@@ -142,8 +146,6 @@ def write_nastran(result, path, **options):
     InputError
         On a bad option (see :func:`prepare_nastran`); nothing is written then.
     """
-    from slingloads.io.common.atomic import atomic_outputs
-
     path = Path(path)
     deck = prepare_nastran(result, **options)
     with atomic_outputs(path.parent) as out:
@@ -230,8 +232,6 @@ def prepare_nastran(result, *, units="SI", axes="x, y, z", offset=(0.0, 0.0, 0.0
 
 def _digest(inputs_digest):
     """``{item: entry}`` from a dict or a two-column table (:func:`digest_frame`)."""
-    from slingloads.io.common.report import digest_frame
-
     frame = digest_frame(inputs_digest)
     if frame is None:
         return {}
@@ -257,8 +257,6 @@ class _Locator:
         return InputError(rule, value, **self.get(key))
 
     def of(self, key):
-        from slingloads.io.common.workbook import located
-
         return located(**self.get(key))
 
 
@@ -503,7 +501,6 @@ class NastranDeck:
             handle.write("ENDDATA\n")
 
     def _header(self):
-        u = self.units
         loads = self.loads
         text = [f"slingloads {slingloads.__version__}: the load cases of study "
                 f"{self.title!r} as Nastran bulk data (limit loads)."]
@@ -699,8 +696,8 @@ _MOMENT = ("MOMENT* " + _INT + _INT + _BLANK + _REAL % 1.0 + _CONT + _REAL * 3 +
 _GRAV = ("GRAV*   " + _INT + _BLANK + _REAL + _REAL + _CONT + _REAL * 2 + "\n", "irrrr")
 #: RFORCE: no angular velocity (A = 0), the rotation vector through the basic origin (G = 0),
 #: METHOD 1, RACC in revolutions per unit time squared.
-_RFORCE = ("RFORCE* " + _INT + "%16d" % 0 + _BLANK + _REAL % 0.0 + _CONT + _REAL * 3
-           + "%16d" % 1 + _CONT + _REAL + "\n", "irrrr")
+_RFORCE = ("RFORCE* " + _INT + f"{0:16d}" + _BLANK + _REAL % 0.0 + _CONT + _REAL * 3
+           + f"{1:16d}" + _CONT + _REAL + "\n", "irrrr")
 
 
 def _cards(template, rows):
