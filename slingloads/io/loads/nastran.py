@@ -542,7 +542,7 @@ class NastranDeck:
         n = len(loads.masses)
         names = [f"mass item {i} ({d})" if d else f"mass item {i}"
                  for i, d in zip(loads.mass_ids, loads.mass_descriptions, strict=True)]
-        names += [f"{kind}: {name}" if kind != name else name
+        names += [name if name.startswith(kind) else f"{kind}: {name}"
                   for kind, name in zip(loads.point_kinds, loads.point_ids, strict=True)]
         grids = np.concatenate([self.mass_grids, self.point_grids])
         for grid, name in zip(grids, names, strict=True):
