@@ -344,6 +344,15 @@ def _label(case_id):
     return f"{ascii_text[:LABEL_ID_LENGTH - 9]}~{checksum}"
 
 
+def _without_accents(text):
+    """``text`` with accents dropped (``é`` -> ``e``); other characters kept."""
+    text = str(text)
+    if text.isascii():
+        return text
+    return "".join(c for c in unicodedata.normalize("NFKD", text)
+                   if not unicodedata.combining(c))
+
+
 def _printable(text):
     return all(" " <= c <= "~" and c != "$" for c in text)
 
@@ -675,9 +684,10 @@ def _clean(vectors):
 
 
 def _cc(keyword, text, indent):
-    """A case-control line ``KEYWORD = text`` cut to :data:`LINE_LENGTH` characters."""
+    """A case-control line ``KEYWORD = text`` cut to :data:`LINE_LENGTH` characters (``$``,
+    which could start a comment, written as ``_``)."""
     head = f"{indent}{keyword} = "
-    text = _ascii(text).strip()
+    text = _ascii(_without_accents(text)).replace("$", "_").strip()
     room = LINE_LENGTH - len(head)
     if len(text) > room:
         text = text[:room - 3].rstrip() + "..."
