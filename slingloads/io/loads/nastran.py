@@ -534,7 +534,7 @@ class NastranDeck:
                  "OLOAD = ALL", "SPCFORCES = ALL", "DISPLACEMENT = ALL"]
         for s, load, label, text in zip(self.subcases, self.set_id("LOAD"), self.labels,
                                         self.loads.descriptions, strict=True):
-            lines += [f"SUBCASE {s}", _cc("LABEL", f"{label} {_ascii(text)}", "    "),
+            lines += [f"SUBCASE {s}", _cc("LABEL", f"{label} {text}", "    "),
                       f"    LOAD = {load}"]
         return "\n".join(lines) + "\nBEGIN BULK\n"
 
