@@ -287,23 +287,8 @@ class PointLoadCases:
 
     @property
     def n_cases(self):
+        """Number of load cases."""
         return len(self.case_ids)
-
-    def point_accelerations(self):
-        """Rigid-body acceleration of every mass item per case,
-        ``a + alpha x (r_j - r_cg)``, shape (c, n, 3). [m/s^2]"""
-        rho = self.mass_positions - self.cg
-        return (self.linear_acceleration[:, None, :]
-                + np.cross(self.angular_acceleration[:, None, :], rho[None, :, :]))
-
-    def load_scale(self):
-        """Scale of the loads: the largest applied or gravity force times max(1 m, the size
-        of the model's points). [N m]"""
-        everything = np.vstack([self.point_positions, self.mass_positions])
-        size = max(float(np.ptp(everything, axis=0).max()), 1.0)
-        weight = float(self.masses.sum() * np.linalg.norm(self.gravity))
-        largest = max(float(np.abs(self.forces).max(initial=0.0)), weight)
-        return largest * size
 
 
 def _load_point_names(study):
