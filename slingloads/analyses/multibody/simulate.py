@@ -118,6 +118,27 @@ def _damping_from_peaks(t, y, start=0.0):
     return period, delta / np.sqrt(4 * np.pi**2 + delta**2)
 
 
+#: Columns of :meth:`RunResult.to_frame`: (key of :meth:`RunResult.histories`, label,
+#: 1 if shown in SI as is or 0 if an angle shown in degrees).
+HISTORY_COLUMNS = (("time", "time [s]", 1), ("x", "x from hook [m]", 1),
+                   ("y", "y from hook [m]", 1), ("z", "z from hook [m]", 1),
+                   ("yaw", "yaw (heading from flight path) [deg]", 0),
+                   ("pitch", "pitch [deg]", 0), ("roll", "roll [deg]", 0),
+                   ("yaw rate", "yaw rate [deg/s]", 0), ("alpha", "alpha [deg]", 0),
+                   ("beta", "beta [deg]", 0), ("airspeed", "airspeed [m/s]", 1),
+                   ("swing longitudinal", "swing longitudinal [deg]", 0),
+                   ("swing lateral", "swing lateral [deg]", 0),
+                   ("swing", "swing from vertical [deg]", 0), ("tension", "cable tension [N]", 1),
+                   ("tension ratio", "tension / weight [-]", 1), ("hub Fx", "hub Fx [N]", 1),
+                   ("hub Fy", "hub Fy [N]", 1), ("hub Fz", "hub Fz [N]", 1),
+                   ("hub load angle", "hub load from mast [deg]", 0),
+                   ("line theta", "line theta [deg]", 0), ("line psi", "line psi [deg]", 0),
+                   ("line tension", "line tension [N]", 1),
+                   ("chute alpha", "canopy alpha [deg]", 0),
+                   ("carrier speed", "carrier speed [m/s]", 1),
+                   ("thrust tilt", "carrier thrust tilt [deg]", 0))
+
+
 @dataclass(frozen=True, eq=False)
 class RunResult:
     """One run: its inputs, trim, sampled histories and verdict.
@@ -208,30 +229,12 @@ class RunResult:
                 out[key] = np.full(self.time.shape, np.nan)
         return out
 
-    _COLUMNS = (("time", "time [s]", 1), ("x", "x from hook [m]", 1),
-                ("y", "y from hook [m]", 1), ("z", "z from hook [m]", 1),
-                ("yaw", "yaw (heading from flight path) [deg]", 0),
-                ("pitch", "pitch [deg]", 0), ("roll", "roll [deg]", 0),
-                ("yaw rate", "yaw rate [deg/s]", 0), ("alpha", "alpha [deg]", 0),
-                ("beta", "beta [deg]", 0), ("airspeed", "airspeed [m/s]", 1),
-                ("swing longitudinal", "swing longitudinal [deg]", 0),
-                ("swing lateral", "swing lateral [deg]", 0),
-                ("swing", "swing from vertical [deg]", 0), ("tension", "cable tension [N]", 1),
-                ("tension ratio", "tension / weight [-]", 1), ("hub Fx", "hub Fx [N]", 1),
-                ("hub Fy", "hub Fy [N]", 1), ("hub Fz", "hub Fz [N]", 1),
-                ("hub load angle", "hub load from mast [deg]", 0),
-                ("line theta", "line theta [deg]", 0), ("line psi", "line psi [deg]", 0),
-                ("line tension", "line tension [N]", 1),
-                ("chute alpha", "canopy alpha [deg]", 0),
-                ("carrier speed", "carrier speed [m/s]", 1),
-                ("thrust tilt", "carrier thrust tilt [deg]", 0))
-
     def to_frame(self):
         """Time histories with unit-labelled columns (angles in degrees; body-axis hub load;
         positions of the HC CG relative to the hook in earth axes)."""
         h = self.histories()
         data = {}
-        for key, label, si in self._COLUMNS:
+        for key, label, si in HISTORY_COLUMNS:
             data[label] = h[key] if si else np.degrees(h[key])
         frame = pd.DataFrame(data)
         if self.system.carrier.kind == "frozen":
