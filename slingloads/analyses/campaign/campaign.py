@@ -23,6 +23,7 @@ from slingloads.analyses.chute_sizing import run_yaw
 from slingloads.analyses.multibody import linearise, trim
 from slingloads.errors import InputError
 from slingloads.models.gusts import standard_gusts
+from slingloads.models.yaw_dynamics import SolverSettings
 
 from .execution import MemoryStore, execute, make_executor
 from .keys import KeyMaker
@@ -34,6 +35,9 @@ from .selection import SelectionCriteria, select_parachute
 from .sensitivity import carrier_comparison, sensitivity_tables
 from .setup import CampaignSetup, neutral_area_of, yaw_model_of
 from .stability_map import MapSettings, stability_map
+
+#: Run length and step of the 1-DOF check of the neutral area (the sizing's defaults). [s]
+ONE_DOF_TIME, ONE_DOF_STEP = 120.0, 0.1
 
 
 @dataclass(frozen=True)
@@ -258,14 +262,16 @@ def neutral_check(campaign, metrics):
 
     The 1-DOF verdicts come from :func:`~slingloads.analyses.chute_sizing.run_yaw` at the
     sizing airspeed (the matrix's highest) and first density altitude under the standard
-    30 ft/s lateral gusts; the multibody verdict of every condition of the matrix from its
-    eigenvalues at exactly the neutral area, and from its runs when the matrix has factor 1.
+    30 ft/s lateral gusts (120 s, step 0.1 s); the multibody verdict of every condition of the
+    matrix from its eigenvalues at exactly the neutral area, and from its runs when the matrix
+    has factor 1.
     """
     m = campaign.matrix
     speed = float(m.frame["airspeed EAS [m/s]"].max())
     altitude = float(m.frame["density altitude [m]"].iloc[0])
     model = yaw_model_of(campaign.setup.system, speed, altitude)
-    runs = run_yaw(model, campaign.neutral.area, standard_gusts()).to_frame()
+    runs = run_yaw(model, campaign.neutral.area, standard_gusts(),
+                   SolverSettings(ONE_DOF_TIME, ONE_DOF_STEP)).to_frame()
     rows = [{"model": "1-DOF yaw", "condition": f"{speed:.4g} m/s EAS, {altitude:.4g} m",
              "test": f"lateral gust {g}", "verdict": v,
              "peak beta [deg]": b, "damping ratio [-]": z}

@@ -40,6 +40,8 @@ from .worker import run_batch
 SCHEDULER_TIMEOUT = 10.0
 #: Largest batch sent to a worker (runs).
 MAX_BATCH = 100
+#: Smallest batch worth a call (unless fewer runs are left). [runs]
+MIN_BATCH = 20
 
 
 class MemoryStore:
@@ -191,7 +193,7 @@ class DaskCluster(_Executor):
             future = self.client.submit(run_batch, jobs, settings, self.threads, pure=False)
             futures[future] = index
         try:
-            for future in as_completed(futures):
+            for future in as_completed(futures, loop=self.client.loop):
                 yield futures[future], future.result()
         finally:
             for future in futures:
@@ -245,10 +247,12 @@ class ExecutionReport:
 
 
 def batch_size(missing, workers):
-    """Runs per batch: about four batches per worker, at most :data:`MAX_BATCH`."""
+    """Runs per batch: about four batches per worker (for balance and progress), at least
+    :data:`MIN_BATCH` and at most :data:`MAX_BATCH`."""
     if missing <= 0:
         return 1
-    return max(1, min(MAX_BATCH, math.ceil(missing / (4 * max(1, workers)))))
+    share = math.ceil(missing / (4 * max(1, workers)))
+    return max(1, min(MAX_BATCH, max(share, min(MIN_BATCH, missing))))
 
 
 def execute(groups, store, executor, *, size=None, progress=None):
