@@ -54,7 +54,26 @@ def _parser():
             p.add_argument("--nastran", action="store_true",
                            help="also write IN-loads.bdf, the load cases as a Nastran input "
                                 "file in the units of --units (Study rows 'nastran ...')")
+        if name in ("run", "campaign"):
+            _campaign_options(p)
     return parser
+
+
+def _campaign_options(p):
+    """Execution options of the campaign (docs/campaign.md)."""
+    g = p.add_argument_group("campaign execution")
+    g.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                   help="dask.distributed scheduler to run the batches on, e.g. "
+                        "tcp://10.0.0.5:8786 (default: the workbook's 'campaign scheduler', "
+                        "else local worker processes)")
+    g.add_argument("--workers", metavar="N", type=int, default=None,
+                   help="local worker processes (default: the workbook's 'campaign workers', "
+                        "else one per core, or this process for a small campaign)")
+    g.add_argument("--cache", metavar="DIR", default=None,
+                   help="run cache folder, outside --out (default: $SLINGLOADS_CACHE, else "
+                        "the user cache folder, ~/.cache/slingloads/campaign)")
+    g.add_argument("--scheduler-timeout", metavar="SECONDS", type=float, default=None,
+                   help="time the scheduler has to answer (default: the workbook's, 10 s)")
 
 
 def main(argv=None):
@@ -124,12 +143,15 @@ def _analyse(args):
         names = _selected(args, study)
         if getattr(args, "nastran", False):
             _ask_nastran(study, names)
+        if "campaign" in names:
+            study.runtime.update(_runtime(args, show))
         bar.total = 2 + 2 * len(names)
         bar.update(1)
         results = {}
         for name in names:
             bar.set_description(f"computing {name}")
             results[name] = ANALYSES[name][1](study)
+            study.results.setdefault(name, results[name])
             bar.update(1)
         stem = Path(args.workbook).stem
         # one set of outputs for every analysis: all published together, or none
@@ -144,6 +166,39 @@ def _analyse(args):
     for path in written:
         print(f"wrote {path}")
     return 0
+
+
+def _runtime(args, show):
+    """The campaign's execution options from the command line (checked before any run)."""
+    from slingloads.io.campaign.cache import check_outside, default_cache_dir
+
+    if args.workers is not None and args.workers < 1:
+        raise InputError("--workers must be >= 1", args.workers)
+    if args.scheduler_timeout is not None and not args.scheduler_timeout > 0:
+        raise InputError("--scheduler-timeout must be > 0 [s]", args.scheduler_timeout)
+    cache = Path(args.cache) if args.cache else default_cache_dir()
+    check_outside(cache, args.out)
+    runtime = {"scheduler": args.scheduler, "workers": args.workers, "cache": cache,
+               "timeout": args.scheduler_timeout}
+    if show:
+        runtime["progress"] = _RunsBar()
+    return runtime
+
+
+class _RunsBar:
+    """Progress of the campaign's runs: runs done, rate and time left (tqdm)."""
+
+    def __init__(self):
+        self.bar = None
+
+    def __call__(self, done, total):
+        if self.bar is None:
+            self.bar = tqdm(total=total, initial=done, desc="campaign runs", unit="run",
+                            leave=False, position=1, dynamic_ncols=True)
+        else:
+            self.bar.update(done - self.bar.n)
+        if done >= total:
+            self.bar.close()
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -92,6 +92,11 @@ class Analysis:
 
 #: Every analysis, in the order they are read, run and written.
 ANALYSES = (
+    Analysis("campaign", "campaign", "campaign",
+             "multibody campaign only: parachute selection over the operating envelope, "
+             "sensitivity, stability maps, transport without parachute, loads hand-off",
+             "Run the multibody campaign (Study rows 'campaign ...'; before the loads, which "
+             "then take the dynamics' cases)."),
     Analysis("loads", "loads", "loads",
              "structural loads only: CS-29.865 cases, inertia relief, SFBM, envelopes",
              "Run the structural loads analysis (SFBM).", "yes", options="report_options"),

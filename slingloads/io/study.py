@@ -36,6 +36,11 @@ class WorkbookStudy:
     points : dict
         Hardpoints by kind that the Airframe does not keep (``fin_cp``, ``aero_reference``:
         position or None). [m]
+    runtime : dict
+        How to execute (set by the command line): ``scheduler``, ``workers``, ``cache``,
+        ``timeout``, ``progress`` of the campaign.
+    results : dict
+        Results of the analyses computed so far, by name (the loads read the campaign's).
     """
 
     name: str
@@ -58,6 +63,8 @@ class WorkbookStudy:
                 "analyses": ", ".join(k for k, v in self.run.items() if v),
                 "slingloads version": __version__}
     points: dict = field(default_factory=dict)
+    runtime: dict = field(default_factory=dict)
+    results: dict = field(default_factory=dict)
 
     @property
     def loads(self):

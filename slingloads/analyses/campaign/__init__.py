@@ -46,7 +46,13 @@ from .selection import (
     select_parachute,
     stable_runs,
 )
-from .sensitivity import base_condition, carrier_comparison, sensitivity_tables, sweep_runs
+from .sensitivity import (
+    FACTORS,
+    base_condition,
+    carrier_comparison,
+    sensitivity_tables,
+    sweep_runs,
+)
 from .setup import (
     DEFAULT_FREE_CARRIER,
     CampaignSetup,
@@ -57,7 +63,8 @@ from .setup import (
 from .stability_map import MapSettings, StabilityMap, stability_map
 
 __all__ = [
-    "CARRIERS", "CONDITION_COLUMNS", "DEFAULT_FREE_CARRIER", "HISTORY_LABELS", "MANOEUVRES",
+    "CARRIERS", "CONDITION_COLUMNS", "DEFAULT_FREE_CARRIER", "FACTORS", "HISTORY_LABELS",
+    "MANOEUVRES",
     "MARGIN", "MAX_HALF_TIME", "MIN_DAMPING", "RAMP_TARGETS", "ROW_FACTORS",
     "SCHEDULER_TIMEOUT", "YAW_SHARE",
     "Campaign", "CampaignMatrix", "CampaignResult", "CampaignSetup", "DaskCluster",

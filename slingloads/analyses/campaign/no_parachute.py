@@ -30,7 +30,7 @@ RAMP_TARGETS = tuple(v * KNOT for v in (20.0, 30.0, 40.0, 60.0, 80.0))
 #: Default ramp: rate [m/s^2] and onset [s] (the multibody model's wind ramp).
 RAMP_RATE, RAMP_ONSET = 0.5, 5.0
 #: Seconds of response seen after each ramp ends. [s]
-OBSERVE = 30.0
+OBSERVE = 60.0
 #: Default carrier cable of the sample systems. [m]
 SAMPLE_CABLE = 60 * FOOT
 #: Default cable stiffness EA of the sample systems. [N]
