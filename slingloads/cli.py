@@ -14,6 +14,7 @@ from tqdm import tqdm
 from slingloads import __version__
 from slingloads.errors import ClosureError, InputError, SlingloadsError
 from slingloads.io.analyses import ANALYSES as REGISTRY
+from slingloads.io.analyses import compute_order
 
 EXIT_BAD_INPUT = 2
 
@@ -148,7 +149,7 @@ def _analyse(args):
         bar.total = 2 + 2 * len(names)
         bar.update(1)
         results = {}
-        for name in names:
+        for name in compute_order(names):
             bar.set_description(f"computing {name}")
             results[name] = ANALYSES[name][1](study)
             study.results.setdefault(name, results[name])

@@ -20,7 +20,6 @@ else ``~/.cache/slingloads`` (``%LOCALAPPDATA%\\slingloads`` on Windows), each w
 from __future__ import annotations
 
 import json
-import math
 import os
 import tempfile
 from pathlib import Path
@@ -69,7 +68,17 @@ class RunCache:
         return self.directory / "runs" / key[:2] / f"{key}.parquet"
 
     def __contains__(self, key):
-        return self._path(key).is_file()
+        """True when the run's file is there and its footer (with the metrics) reads."""
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        path = self._path(key)
+        if not path.is_file():
+            return False
+        try:
+            return METRICS_KEY in (pq.read_metadata(path).metadata or {})
+        except (OSError, pa.ArrowException):
+            return False
 
     def __len__(self):
         root = self.directory / "runs"
@@ -123,8 +132,3 @@ def check_outside(cache_dir, out_dir):
         raise InputError("the run cache must lie outside the output folder, which is replaced "
                          "as a whole when the reports are published; choose another --cache",
                          str(cache_dir))
-
-
-def finite_or_none(value):
-    """A float for a report cell (None for NaN)."""
-    return None if value is None or (isinstance(value, float) and math.isnan(value)) else value
