@@ -31,6 +31,10 @@ from slingloads.errors import InputError
 
 #: Metadata key of the metrics in a cached file.
 METRICS_KEY = b"slingloads.metrics"
+#: How the histories are written: zstd on byte-stream-split floats (about a quarter smaller
+#: than zstd alone on these histories; dictionary encoding would forbid the split).
+PARQUET_OPTIONS = {"compression": "zstd", "use_dictionary": False,
+                   "use_byte_stream_split": True}
 
 
 def default_cache_dir():
@@ -116,7 +120,7 @@ class RunCache:
         handle, tmp = tempfile.mkstemp(prefix=".part-", suffix=".parquet", dir=path.parent)
         os.close(handle)
         try:
-            pq.write_table(table, tmp, compression="zstd")
+            pq.write_table(table, tmp, **PARQUET_OPTIONS)
             os.replace(tmp, path)
         except BaseException:
             Path(tmp).unlink(missing_ok=True)

@@ -341,6 +341,10 @@ def write_histories(result, path):
 
     from slingloads.analyses.campaign import HISTORY_LABELS
 
+    # the run ids by dictionary, the float columns split by byte (as in the run cache)
+    options = {"compression": "zstd", "use_dictionary": ["run"],
+               "use_byte_stream_split": list(HISTORY_LABELS)}
+
     runs = [(run, result.keys[run]) for run in result.metrics["run"]]
     if result.no_parachute is not None:
         runs += [(f"NP-{name}-{target / KNOT:.0f}kt", key)
@@ -362,7 +366,7 @@ def write_histories(result, path):
                 [pa.array(names)] + [pa.array(data[:, j]) for j in range(data.shape[1])],
                 names=["run", *HISTORY_LABELS])
             if writer is None:
-                writer = pq.ParquetWriter(path, table.schema, compression="zstd")
+                writer = pq.ParquetWriter(path, table.schema, **options)
             writer.write_table(table)
             count += len(arrays)
         if writer is None:  # no history kept: an empty table with the columns
@@ -370,7 +374,7 @@ def write_histories(result, path):
                 [pa.array([], pa.string())] + [pa.array([], pa.float64())
                                                for _ in HISTORY_LABELS],
                 names=["run", *HISTORY_LABELS])
-            pq.write_table(empty, path, compression="zstd")
+            pq.write_table(empty, path, **options)
     finally:
         if writer is not None:
             writer.close()
