@@ -252,9 +252,10 @@ def test_speed_limits_logic():
 # --------------------------------------------------------------- loads hand-off
 def test_loads_envelope_against_the_histories(local):
     """The extremes handed to the loads are those of the chosen area's stored histories:
-    alpha, beta and line angles min/max, line tension and tension factor max, and the
-    sideways hub-load angle atan2(|Fy|, Fz) (vertical mast); with a margin of 1.5 each bound
-    is 1.5 times as large and the alpha-beta range includes zero."""
+    alpha, beta and line angles min/max, line tension and tension factor max, and the hub-load
+    angles from the hanging vertical (the sample's hub is straight above its CG, so that
+    vertical is z): atan2(|Fy|, Fz) sideways, arccos(Fz / |F|) in total; with a margin of 1.5
+    each bound is 1.5 times as large and the alpha-beta range includes zero."""
     env = dynamics_envelope(local.metrics, 1.6, margin=1.5)
     runs = local.metrics.loc[local.metrics["area factor [-]"] == 1.6, "run"]
     h = pd.concat([local.history(r) for r in runs])
@@ -269,7 +270,9 @@ def test_loads_envelope_against_the_histories(local):
     assert env.tension_factor == pytest.approx(1.5 * h["tension / weight [-]"].max())
     lateral = np.degrees(np.arctan2(h["hub Fy [N]"].abs(), h["hub Fz [N]"])).max()
     assert env.reached["hub load lateral"][1] == pytest.approx(lateral)
-    assert env.hook_angle == pytest.approx(np.radians(1.5 * h["hub load from mast [deg]"].max()))
+    total = np.degrees(np.arccos(h["hub Fz [N]"] / np.sqrt(
+        h["hub Fx [N]"] ** 2 + h["hub Fy [N]"] ** 2 + h["hub Fz [N]"] ** 2))).max()
+    assert env.hook_angle == pytest.approx(np.radians(1.5 * total))
     assert env.runs == 2 and set(env.source["beta"]) <= set(runs)
 
 
@@ -327,3 +330,74 @@ def test_unreachable_scheduler_fails_within_its_time_out():
     with pytest.raises(InputError, match=r"could not reach the Dask scheduler within 1 s"):
         DaskCluster("tcp://127.0.0.1:9", timeout=1.0)
     assert time.perf_counter() - start < 15
+
+
+# ------------------------------------------------------------ loads from the dynamics
+@pytest.fixture(scope="module")
+def example_loads():
+    """The example workbook's hand-entered loads study (GENERIC light twin, HC1 tables)."""
+    from pathlib import Path
+
+    from slingloads.io.study import read_study
+
+    example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+    return read_study(example, only=["loads"]).loads
+
+
+def test_loads_take_the_dynamics_cases(local, example_loads):
+    """The hand-off keeps the hand-entered points and adds the dynamics' corners and centre
+    (the margin bounds); it keeps the CS-29.865 30 deg cone and Nz 2.5, which the dynamics
+    (x 1.25) do not reach; it gives the loads the chosen parachute's area. A LINE case loads
+    the parachute fitting with the line tension x margin along e = (cos t cos p, sin p,
+    sin t cos p), worked here from the line angles' corners."""
+    from slingloads.analyses.campaign import loads_from_dynamics
+
+    env = dynamics_envelope(local.metrics, 1.6, margin=1.25)
+    handoff = loads_from_dynamics(example_loads, env, "CS-29.865")
+    study = handoff.study
+    hand = example_loads.envelope
+    assert study.envelope.ids[:len(hand.ids)] == hand.ids
+    dyn = dict(zip(study.envelope.ids, zip(study.envelope.alpha, study.envelope.beta,
+                                           strict=True), strict=True))
+    a0, a1 = np.radians(env.bounds("alpha"))
+    b0, b1 = np.radians(env.bounds("beta"))
+    assert dyn["DYN-A+B-"] == pytest.approx((a1, b0)) and dyn["DYN-CENTRE"] == (0.0, 0.0)
+    assert study.hook.angle == pytest.approx(np.radians(30.0)) and study.hook.nz == 2.5
+    assert study.parachute.area == pytest.approx(env.area)
+    cases = study.case_matrix()
+    line = cases[cases["chute line"] == "LINE-T+P-"].index[0]
+    _, forces, _ = study.applied_loads(cases.loc[[line]])
+    t1, p0 = np.radians(env.bounds("line theta")[1]), np.radians(env.bounds("line psi")[0])
+    expected = env.chute_drag * np.array([np.cos(t1) * np.cos(p0), np.sin(p0),
+                                          np.sin(t1) * np.cos(p0)])
+    assert_allclose(forces[0, -1], expected, rtol=1e-12)
+    hooks = len(study.hook_table()) + 1  # the cone, the vertical and the towed case
+    assert (cases["source"] == "dynamics").sum() == hooks * 5 * (2 + 5)
+
+
+def test_loads_hook_cone_from_the_dynamics_and_table_limits(example_loads):
+    """With hook source 'dynamics' the cone takes the reached angles x margin (fore-and-aft
+    the larger |longitudinal| extreme, sideways the lateral one, elliptical); a margin bound
+    beyond the fuselage table's alpha range (-35 x 1.25 = -43.75 < -40 deg) is set at the
+    table's edge and flagged; Nz is raised when the tension factor x margin exceeds it."""
+    from slingloads.analyses.campaign import DynamicsEnvelope, loads_from_dynamics
+
+    reached = {"alpha": (-35.0, -5.0), "beta": (-20.0, 18.0), "line theta": (-10.0, 4.0),
+               "line psi": (-12.0, 12.0), "hub load from mast": (None, 22.0),
+               "hub load from vertical": (None, 21.0), "hub load lateral": (None, 8.0),
+               "hub load longitudinal": (-14.0, 6.0), "line tension": (None, 900.0),
+               "tension / weight": (None, 2.2)}
+    env = DynamicsEnvelope(1.4, 1.0, 1.25, reached, {k: (None, "R1") for k in reached}, 4, 0)
+    handoff = loads_from_dynamics(example_loads, env, "dynamics")
+    hook = handoff.study.hook
+    assert hook.angle == pytest.approx(np.radians(1.25 * 14.0))
+    assert hook.lateral_angle == pytest.approx(np.radians(1.25 * 8.0))
+    assert hook.cone == "elliptical" and hook.nz == pytest.approx(1.25 * 2.2)
+    alpha = dict(zip(handoff.study.envelope.ids, handoff.study.envelope.alpha, strict=True))
+    assert alpha["DYN-A-B+"] == pytest.approx(np.radians(-40.0))
+    notes = handoff.comparison.set_index("quantity")["note"]
+    assert "limited to the fuselage alpha table's range" in notes["alpha range"]
+    kept = loads_from_dynamics(example_loads, env, "CS-29.865").study.hook
+    assert kept.angle == pytest.approx(np.radians(30.0))
+    with pytest.raises(InputError, match="not a valid hook-cone source"):
+        loads_from_dynamics(example_loads, env, "guess")

@@ -258,3 +258,22 @@ def test_cache_inside_the_output_folder_is_refused(tmp_path, capsys):
                  "--quiet"]) == 2
     assert "outside the output folder" in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
+    """`slingloads run` with 'run campaign' and 'run loads': the campaign is computed first and
+    the loads report gains the dynamics' cases (LoadCases column 'source') and a Dynamics
+    sheet comparing them with the hand-entered ones; the hook cone stays at the CS-29.865
+    30 deg ('campaign loads hook angle' default)."""
+    path = workbook(tmp_path / "tiny.xlsx", {"run loads": "yes"})
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out), "--cache", str(tiny[2]),
+                 "--quiet"]) == 0
+    cases = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="LoadCases")
+    assert set(cases["source"]) == {"hand", "dynamics"}
+    assert cases.loc[cases["source"] == "dynamics", "aero"].str.startswith("DYN-").any()
+    dynamics = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="Dynamics", header=None)
+    rows = dynamics.set_index(0)
+    assert rows.loc["hook cone, fore-and-aft angle from the vertical", 5] == 30
+    assert "hand-entered cases" in set(dynamics[1])
+    assert (out / "tiny-campaign.xlsx").exists()

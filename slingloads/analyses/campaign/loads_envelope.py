@@ -7,8 +7,9 @@ trims). Over them, the extremes of
 * the angle of attack and sideslip of the fuselage (the loads' aerodynamic envelope);
 * the parachute line angles theta (up) and psi (right) in body axes, and the line tension
   (the parachute load directions and drag);
-* the angle of the hub load from the mast axis, in total, sideways (about the fore-and-aft
-  axis) and fore-and-aft (the hook cone);
+* the angle of the hub load from the mast axis, and from the hanging vertical (hub above CG,
+  about which the loads take their CS-29.865 cone) in total, sideways and fore-and-aft (the
+  hook cone);
 * the cable tension over the weight (against the hook load factor Nz).
 
 **Margin** k >= 1 (default :data:`MARGIN`): every angle bound b becomes k b, and the angle of
@@ -36,6 +37,7 @@ QUANTITIES = (
     ("line theta", "line theta min [deg]", "line theta max [deg]", "angle range"),
     ("line psi", "line psi min [deg]", "line psi max [deg]", "angle range"),
     ("hub load from mast", None, "hub load from mast max [deg]", "angle"),
+    ("hub load from vertical", None, "hub load from hanging vertical max [deg]", "angle"),
     ("hub load lateral", None, "hub load lateral max [deg]", "angle"),
     ("hub load longitudinal", "hub load longitudinal min [deg]",
      "hub load longitudinal max [deg]", "angle"),
@@ -118,8 +120,8 @@ class DynamicsEnvelope:
 
     @property
     def hook_angle(self):
-        """Largest hub-load angle from the mast with the margin. [rad]"""
-        return float(np.radians(self.bounds("hub load from mast")[1]))
+        """Largest hub-load angle from the hanging vertical with the margin. [rad]"""
+        return float(np.radians(self.bounds("hub load from vertical")[1]))
 
     @property
     def lateral_hook_angle(self):

@@ -16,7 +16,9 @@ Every run is measured three ways:
   peak and RMS yaw and sideslip, damping ratio and period from the yaw-rate peaks, settling
   time, tension extremes, slack, response verdict; and the extremes the structural loads take:
   angle of attack and sideslip, parachute line angles and tension, hub-load angle from the
-  mast in total, sideways and fore-and-aft.
+  mast, and from the hanging vertical (hub above CG, the vertical of the loads' hanging
+  attitude and CS-29.865 cone) in total, sideways and fore-and-aft (azimuths 90/270 and 0/180
+  about that vertical, :func:`~slingloads.analyses.hook_loads.horizontal_basis`).
 
 Angles are in degrees in the metric names' units; everything else SI. The per-run record
 holds no name (run id, manoeuvre name): the campaign adds those, so that a stored record is
@@ -27,7 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from slingloads.analyses.hook_loads import mast_basis
+from slingloads.analyses.hook_loads import horizontal_basis
 from slingloads.analyses.multibody.simulate import HISTORY_COLUMNS
 
 #: Share of a mode's largest angular amplitude above which the yaw takes part in it. [-]
@@ -46,7 +48,8 @@ METRIC_ORDER = (
     "yaw change [deg]", "yaw rms [deg]", "beta peak [deg]", "beta rms [deg]",
     "yaw damping ratio from response [-]", "yaw period from response [s]",
     "settling time [s]", "tension / weight max [-]", "tension / weight min [-]",
-    "cable slack", "hub load from mast max [deg]", "hub load lateral max [deg]",
+    "cable slack", "hub load from mast max [deg]",
+    "hub load from hanging vertical max [deg]", "hub load lateral max [deg]",
     "hub load longitudinal min [deg]", "hub load longitudinal max [deg]", "alpha min [deg]",
     "alpha max [deg]", "beta min [deg]", "beta max [deg]", "line theta min [deg]",
     "line theta max [deg]", "line psi min [deg]", "line psi max [deg]",
@@ -135,11 +138,16 @@ def response_metrics(run):
         out[f"{name} max [deg]"] = _extreme(deg(h[key]), np.max)
     out["line tension max [N]"] = _extreme(h["line tension"], np.max)
     out["hub load from mast max [deg]"] = _extreme(deg(h["hub load angle"]), np.max)
-    e1, e2, m = mast_basis(run.system.hardpoints.mast_axis)
+    system = run.system
+    a0, a90, k = horizontal_basis(system.hardpoints.hub - system.body.cg)
     hub = np.column_stack([h["hub Fx"], h["hub Fy"], h["hub Fz"]])
-    along = hub @ m
-    lateral = deg(np.arctan2(hub @ e2, along))
-    longitudinal = deg(np.arctan2(hub @ e1, along))
+    along = hub @ k
+    norm = np.linalg.norm(hub, axis=1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        total = deg(np.arccos(np.clip(along / norm, -1.0, 1.0)))
+    out["hub load from hanging vertical max [deg]"] = _extreme(total, np.max)
+    lateral = deg(np.arctan2(hub @ a90, along))
+    longitudinal = deg(np.arctan2(hub @ a0, along))
     out["hub load lateral max [deg]"] = _extreme(np.abs(lateral), np.max)
     out["hub load longitudinal min [deg]"] = _extreme(longitudinal, np.min)
     out["hub load longitudinal max [deg]"] = _extreme(longitudinal, np.max)

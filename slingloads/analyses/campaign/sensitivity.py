@@ -32,7 +32,7 @@ FACTORS = {"area factor [-]": "parachute area", "airspeed EAS [m/s]": "airspeed"
 #: magnitude) or "min").
 WORST = (("yaw change [deg]", "max"), ("beta peak [deg]", "max"), ("yaw rms [deg]", "max"),
          ("settling time [s]", "max"), ("tension / weight max [-]", "max"),
-         ("hub load from mast max [deg]", "max"), ("swing angle trim [deg]", "max"),
+         ("hub load from hanging vertical max [deg]", "max"), ("swing angle trim [deg]", "max"),
          ("yaw mode damping ratio [-]", "min"),
          ("yaw damping ratio from response [-]", "min"))
 
