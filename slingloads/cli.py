@@ -1,6 +1,7 @@
-"""Command line: ``slingloads template | run | loads | lateral | chute``.
+"""Command line: ``slingloads template | run | loads | lateral | chute | campaign``.
 
-Exit codes: 0 success, 2 bad input (nothing written), 1 an unexpected failure.
+Exit codes: 0 success, 2 bad input (nothing written), 1 an unexpected failure, 130 interrupted
+(nothing written; a campaign's finished runs stay in its run cache).
 """
 
 from __future__ import annotations
@@ -17,6 +18,8 @@ from slingloads.io.analyses import ANALYSES as REGISTRY
 from slingloads.io.analyses import compute_order
 
 EXIT_BAD_INPUT = 2
+#: Exit code after Ctrl-C (128 + SIGINT, the shells' convention).
+EXIT_INTERRUPTED = 130
 
 #: Analyses the ``run`` command may perform, in order (from the registry
 #: :mod:`slingloads.io.analyses`): name -> (subcommand, compute(study) -> result,
@@ -95,6 +98,11 @@ def main(argv=None):
     except SlingloadsError as err:  # pragma: no cover - defensive
         print(f"slingloads: error: {err}", file=sys.stderr)
         return 1
+    except KeyboardInterrupt:
+        print("slingloads: interrupted; nothing was written (the campaign's finished runs "
+              "stay in its run cache: run the same command again to resume).",
+              file=sys.stderr)
+        return EXIT_INTERRUPTED
 
 
 def _template(args):

@@ -277,3 +277,32 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
     assert rows.loc["hook cone, fore-and-aft angle from the vertical", 5] == 30
     assert "hand-entered cases" in set(dynamics[1])
     assert (out / "tiny-campaign.xlsx").exists()
+
+
+def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsys,
+                                                                monkeypatch):
+    """Ctrl-C during the second batch (the wind ramp; the first held the 2 matrix runs): exit
+    130, nothing written, the 2 runs cached; the same command again finds 2 and computes 1."""
+    from slingloads.analyses.campaign import execution
+
+    path = workbook(tmp_path / "tiny.xlsx")
+    out, cache = tmp_path / "out", tmp_path / "cache"
+    calls = []
+    original = execution.run_batch
+
+    def interrupted(jobs, settings, threads=None):
+        calls.append(len(jobs))
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return original(jobs, settings, threads)
+
+    monkeypatch.setattr(execution, "run_batch", interrupted)
+    args = ["campaign", str(path), "--out", str(out), "--cache", str(cache), "--quiet"]
+    assert main(args) == 130
+    assert "interrupted; nothing was written" in capsys.readouterr().err
+    assert not out.exists() and len(RunCache(cache)) == 2
+    monkeypatch.setattr(execution, "run_batch", original)
+    assert main(args) == 0
+    frame = pd.read_excel(out / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
+    rows = dict(zip(frame[0], frame[1], strict=False))
+    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 1)

@@ -95,6 +95,13 @@ class Campaign:
         Airspeed of the neutral-area sizing (default: the matrix's highest; the area does not
         depend on it at zero angle of attack). [m/s]
     name : str
+
+    Attributes
+    ----------
+    neutral : NeutralAreaResult
+        The neutral static area sizing the area factors multiply (computed on construction).
+    matrix : CampaignMatrix
+        The runs.
     """
 
     setup: CampaignSetup
