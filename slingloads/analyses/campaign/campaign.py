@@ -30,7 +30,7 @@ from .keys import KeyMaker
 from .loads_envelope import MARGIN, dynamics_envelope
 from .matrix import CONDITION_COLUMNS, MANOEUVRES, CampaignMatrix, Factors
 from .metrics import HISTORY_LABELS, ordered
-from .no_parachute import NoParachuteResult, NoParachuteStudy, speed_limits
+from .no_parachute import NoParachuteResult, NoParachuteStudy, ramp_verdict, speed_limits
 from .selection import SelectionCriteria, select_parachute
 from .sensitivity import carrier_comparison, sensitivity_tables
 from .setup import CampaignSetup, neutral_area_of, yaw_model_of
@@ -321,7 +321,7 @@ def _map_row(campaign):
 def _map_settings(campaign):
     s = campaign.stability
     frame = campaign.matrix.frame
-    factors = s.area_factors or tuple(np.linspace(frame["area factor [-]"].min(),
+    factors = s.area_factors or tuple(np.linspace(0.5 * frame["area factor [-]"].min(),
                                                   frame["area factor [-]"].max(), 11))
     lo, hi = frame["airspeed EAS [m/s]"].min(), frame["airspeed EAS [m/s]"].max()
     speeds = s.airspeeds or (tuple(np.linspace(lo, hi, 7)) if hi > lo else (lo,))
@@ -380,7 +380,9 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
         for name, target, key, _, manoeuvre in chute_jobs:
             record = ordered(store.get(key)[0])
             rows.append({"helicopter": name, "ramp target [m/s]": target,
-                         "manoeuvre": manoeuvre.name, **record})
+                         "manoeuvre": manoeuvre.name,
+                         "verdict": ramp_verdict(record["response verdict"],
+                                                 record["linear verdict"]), **record})
         runs = pd.DataFrame(rows)
         no_chute = NoParachuteResult(runs, speed_limits(runs),
                                      {(n, t): k for n, t, k, _, _ in chute_jobs})

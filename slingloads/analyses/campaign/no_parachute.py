@@ -5,9 +5,13 @@ Each helicopter hangs without parachute, with its intact fin and horizontal tail
 section 5.1), under a hovering carrier, and meets a head wind rising from 0 at ``rate`` to each
 target speed (paper figure 15: 20, 30, 40, 60 and 80 kt here; the paper shows 20, 30 and 40 kIAS
 in figures 16 to 18). A run is long enough to see the response for :data:`OBSERVE` seconds
-after the ramp ends. Its verdict is the multibody response verdict (``docs/multibody.md``):
-convergent, divergent (the motion grows, or it left a table), undamped, inconclusive. Every
-ramp runs for the same time, :data:`OBSERVE` s after the highest ramp ends.
+after the ramp ends; every ramp runs for the same time, :data:`OBSERVE` s after the highest
+ramp ends. Its **verdict**: "convergent" when the response converges (the multibody response
+verdict, ``docs/multibody.md``) and the towed equilibrium at the ramp's final airspeed is
+stable (eigenvalues of its linear model); "departs" when the response settles but that
+equilibrium is unstable (the helicopter weathervanes away from the flight path to another
+heading, a static divergence); otherwise the response verdict (divergent: the motion grows or
+it left a table; undamped; inconclusive).
 
 **Speed limit** of a helicopter: the largest ramp target whose run, and the run of every lower
 target, is convergent (NaN when even the lowest is not).
@@ -128,7 +132,10 @@ class NoParachuteStudy:
             for target in self.targets:
                 manoeuvre = wind_ramp(target, self.rate, self.onset,
                                       name=f"wind ramp to {target / KNOT:.0f} kt")
-                out.append((name, target, system.with_(airspeed=0.0), manoeuvre))
+                # the run starts in hover (the ramp's choice); the system's airspeed is the
+                # ramp's final one, where its linear model is taken (sea-level samples: EAS
+                # equals the wind's true speed)
+                out.append((name, target, system.with_(airspeed=target), manoeuvre))
         return out
 
 
@@ -151,13 +158,20 @@ class NoParachuteResult:
     keys: dict
 
 
+def ramp_verdict(response, linear):
+    """Verdict of a ramp (module notes) from its response and linear verdicts."""
+    if response == "convergent":
+        return "convergent" if linear == "stable" else "departs"
+    return response
+
+
 def speed_limits(runs):
     """Largest target of each helicopter whose run and every lower one converge (module
-    notes)."""
+    notes); ``runs`` has the columns helicopter, ramp target [m/s] and verdict."""
     rows = []
     for name, group in runs.groupby("helicopter", sort=False):
         group = group.sort_values("ramp target [m/s]")
-        ok = (group["response verdict"] == "convergent").to_numpy()
+        ok = (group["verdict"] == "convergent").to_numpy()
         targets = group["ramp target [m/s]"].to_numpy()
         first_bad = np.argmin(ok) if not ok.all() else ok.size
         limit = targets[first_bad - 1] if first_bad > 0 else np.nan
@@ -167,6 +181,6 @@ def speed_limits(runs):
             "largest convergent ramp [kt]": limit / KNOT,
             "first non-convergent ramp [kt]": (beyond["ramp target [m/s]"] / KNOT
                                                if beyond is not None else np.nan),
-            "its verdict": beyond["response verdict"] if beyond is not None else "",
+            "its verdict": beyond["verdict"] if beyond is not None else "",
         })
     return pd.DataFrame(rows)

@@ -36,7 +36,8 @@ class MapSettings:
     Parameters
     ----------
     area_factors : sequence of float, optional
-        Area factors of the grid (default: 11 from the matrix's smallest to largest). [-]
+        Area factors of the grid (default: 11 from half the matrix's smallest, since the
+        minimum stable area may lie below the matrix, to its largest). [-]
     airspeeds : sequence of float, optional
         Equivalent airspeeds (default: 7 from the matrix's slowest to fastest). [m/s]
     density_altitudes : sequence of float, optional

@@ -132,7 +132,7 @@ def plot_no_parachute(result):
                 continue
             h = result.history((name, t))
             verdict = runs[(runs["helicopter"] == name)
-                           & (runs["ramp target [m/s]"] == t)]["response verdict"].iloc[0]
+                           & (runs["ramp target [m/s]"] == t)]["verdict"].iloc[0]
             axes[i, 0].plot(h["time [s]"], h[YAW], label=f"{name} ({verdict})")
             axes[i, 1].plot(h["time [s]"], h[BETA], label=name)
         axes[i, 0].set(ylabel="yaw [deg]", title=f"wind ramp to {target / KNOT:.0f} kt")

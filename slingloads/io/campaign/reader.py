@@ -310,8 +310,7 @@ def _map(factors, rows, n_areas, n_speeds):
         speeds = rows["airspeed EAS [m/s]"].astype(float)
     else:
         areas, speeds = pd.Series(factors.area_factors), pd.Series(factors.airspeeds)
-    a = np.linspace(areas.min(), areas.max(), n_areas) if areas.max() > areas.min() else [
-        areas.min()]
+    a = np.linspace(0.5 * areas.min(), areas.max(), n_areas)  # below the matrix too
     v = np.linspace(speeds.min(), speeds.max(), n_speeds) if speeds.max() > speeds.min() else [
         speeds.min()]
     return MapSettings(tuple(a), tuple(v))

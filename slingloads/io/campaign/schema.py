@@ -93,7 +93,9 @@ PARAMETERS = (
               "justified), raised if the dynamics exceed it; 'dynamics' uses the hub-load "
               "angles the dynamics reach x margin, the justified smaller angle.", _S),
     Parameter("campaign stability map areas", INTEGER, "", 11,
-              "Area factors of the stability map, evenly spread over the matrix's, >= 2.", _S),
+              "Area factors of the stability map, evenly spread from half the matrix's "
+              "smallest to its largest (the minimum stable area may lie below the matrix), "
+              ">= 2.", _S),
     Parameter("campaign stability map airspeeds", INTEGER, "", 7,
               "Airspeeds of the stability map, evenly spread over the matrix's, >= 1.", _S),
     Parameter("campaign no-parachute helicopters", TEXT, "", "HC1, HC2",
