@@ -11,7 +11,7 @@ campaign adds the selection, sensitivity tables, stability map, the 1.0 x neutra
 and the transport without parachute (HC1 and HC2, 5 wind ramps). Histories are not kept
 (metrics only), as a user would not hold 4,000 runs of histories in memory.
 
-By default a random sample of the matrix (``--sample``, 2,000 runs, as listed rows) is run and
+By default a random sample of the matrix (``--sample``, 1,500 runs, as listed rows) is run and
 the wall time scaled to the whole matrix; ``--full`` runs all of it. Target: the full matrix in
 <= 5 min on a 2-core machine. Run from the repository root::
 
@@ -70,7 +70,7 @@ def setup():
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--full", action="store_true", help="run the whole matrix")
-    parser.add_argument("--sample", type=int, default=2000, help="runs of the default sample")
+    parser.add_argument("--sample", type=int, default=1500, help="runs of the default sample")
     parser.add_argument("--workers", type=int, default=None,
                         help="local worker processes (default: automatic)")
     args = parser.parse_args()
