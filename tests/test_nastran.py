@@ -519,13 +519,22 @@ def test_point_loads_are_mapped_once(example):
 # --- the command line and the workbook ---------------------------------------------------------
 
 def with_rows(tmp_path, rows, edit=None, name="nastran.xlsx"):
-    """A copy of the example with Study rows (parameter, value, unit) added."""
+    """A copy of the example with Study rows (parameter, value, unit) set: the row's value
+    and unit replaced where the example has it (a regenerated example lists every parameter),
+    appended otherwise."""
     book = openpyxl.load_workbook(EXAMPLE)
     ws = book["Study"]
+    existing = {r[0].value: r[0].row for r in ws.iter_rows(min_row=2) if r[0].value}
     cells = {}
     for parameter, value, unit in rows:
-        ws.append([parameter, value, unit])
-        cells[parameter] = f"B{ws.max_row}"
+        if parameter in existing:
+            row = existing[parameter]
+            ws.cell(row, 2, value)
+            ws.cell(row, 3, unit)
+        else:
+            ws.append([parameter, value, unit])
+            row = ws.max_row
+        cells[parameter] = f"B{row}"
     if edit is not None:
         edit(book)
     path = tmp_path / name
