@@ -3,10 +3,10 @@ metrics.
 
 Every run starts from a trim (:func:`~.trim.trim`) at the manoeuvre's start condition, plus its
 disturbance, and is integrated with the compiled fixed-step RK4 over all runs at once
-(:func:`slingloads.models.multibody.integrator.rk4_batch`). Runs whose systems share their
-aerodynamic tables go into one batch. Before integrating, the step is checked against the
-fastest mode of each trim's linear model (RK4 is stable for |lambda| dt < 2.8; the step must
-give |lambda| dt <= 1, accurate to about 1e-4 per step on that mode).
+(:func:`slingloads.models.multibody.integrator.integrate`, blocks of runs on every
+processor). Runs whose systems share their aerodynamic tables go into one batch. Before
+integrating, the step is checked against the fastest mode of each trim's linear model (RK4 is
+stable for |lambda| dt < 2.8; the step must give |lambda| dt <= 1).
 
 A run that leaves a table stops there: the verdict says which table and when, the history is NaN
 after it (no extrapolation), and the rest of the batch goes on.
@@ -21,7 +21,7 @@ import pandas as pd
 
 from slingloads.errors import InputError
 from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
-from slingloads.models.multibody.integrator import info_batch, rk4_batch
+from slingloads.models.multibody.integrator import integrate
 from slingloads.models.multibody.parachute_line import line_angles
 from slingloads.models.multibody.rigid_body import (
     euler_angles,
@@ -410,8 +410,18 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
 
 
 def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
-                  check_step=True):
+                  check_step=True, workers=None):
     """Integrate runs given as (system, manoeuvre) pairs, together (module notes).
+
+    Parameters
+    ----------
+    pairs : sequence of (SlingSystem, Manoeuvre)
+    t_end, dt, output_interval : float
+        Run length, RK4 step and sampling interval of the histories. [s]
+    check_step : bool
+        Check the step against the fastest mode of every trim (and keep the linear models).
+    workers : int, optional
+        Threads integrating the runs (default: every processor this process may use).
 
     Returns
     -------
@@ -448,14 +458,29 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
             results[k] = RunResult(system, prepared[k][1], tr, time,
                                    np.full((n_out, N_STATES), np.nan),
                                    np.full((n_out, N_INFO), np.nan), 0, 0.0)
+    drives = _DriveTables(dt, n_steps, every)
     for members in groups.values():
-        _integrate_group(prepared, members, results, dt, n_steps, every, time)
+        _integrate_group(prepared, members, results, drives, time, workers)
     return Simulation(results, linear)
 
 
-def _integrate_group(prepared, members, results, dt, n_steps, every, time):
+class _DriveTables:
+    """The drive of each distinct (manoeuvre, steady carrier velocity), tabulated once."""
+
+    def __init__(self, dt, n_steps, every):
+        self.dt, self.n_steps, self.every = dt, n_steps, every
+        self._tables = {}
+
+    def get(self, manoeuvre, velocity):
+        key = (id(manoeuvre), tuple(np.round(velocity, 12)))
+        if key not in self._tables:
+            table, at_nodes = _drive_table(manoeuvre, velocity, self.dt, self.n_steps)
+            self._tables[key] = (table, at_nodes[::self.every])
+        return key, self._tables[key]
+
+
+def _integrate_group(prepared, members, results, drives, time, workers):
     system0 = prepared[members[0]][0]
-    tables = system0.tables()
     runs = len(members)
     x0 = np.empty((runs, N_STATES))
     params = np.empty((runs, system0.parameters().size))
@@ -468,23 +493,18 @@ def _integrate_group(prepared, members, results, dt, n_steps, every, time):
         pull = tr.info[_INFO["d_X"]:_INFO["d_Z"] + 1]
         pull = tr.quantity("tension") * pull / np.linalg.norm(pull)
         params[j] = system.parameters(pull=pull, locks=system.locks)
-        key = (id(manoeuvre), tuple(np.round(tr.state[0:3], 12)))
+        key, (table, at_nodes) = drives.get(manoeuvre, tr.state[0:3])
         if key not in seen:
             seen[key] = len(profiles)
-            table, at_nodes = _drive_table(manoeuvre, tr.state[0:3], dt, n_steps)
             profiles.append(table)
-            nodes.append(at_nodes[::every])
+            nodes.append(at_nodes)
         index[j] = seen[key]
     drive = np.ascontiguousarray(np.stack(profiles))
-    out = np.full((runs, n_steps // every + 1, N_STATES), np.nan)
-    flags = np.zeros(runs, dtype=np.int64)
-    exit_step = np.full(runs, -1, dtype=np.int64)
-    rk4_batch(x0, params, drive, index, dt, n_steps, every, *tables, out, flags, exit_step)
-    info = np.empty(out.shape[:2] + (N_INFO,))
-    rates = np.empty(out.shape)
-    info_batch(out, params, np.ascontiguousarray(np.stack(nodes)), index, *tables, info, rates)
+    out, info, flags, exit_step = integrate(
+        x0, params, drive, np.ascontiguousarray(np.stack(nodes)), index, drives.dt,
+        drives.n_steps, drives.every, system0.tables(), workers)
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        stop = float(exit_step[j] * dt) if flags[j] else np.nan
+        stop = float(exit_step[j] * drives.dt) if flags[j] else np.nan
         results[k] = RunResult(system, manoeuvre, tr, time, out[j], info[j], int(flags[j]),
                                stop)

@@ -10,7 +10,9 @@ to the equations relative to the CG.
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -211,7 +213,7 @@ class SlingSystem:
 
     # ------------------------------------------------------------------ for the equations
     def parameters(self, pull=(0.0, 0.0, 0.0), locks=(False, False, False)):
-        """Parameter vector of the compiled equations.
+        """Parameter vector of the compiled equations (a new array).
 
         Parameters
         ----------
@@ -222,6 +224,17 @@ class SlingSystem:
             Restrictions for verification: no CG acceleration, no roll/pitch acceleration, no
             yaw acceleration.
         """
+        p = self._base_parameters.copy()
+        if isinstance(self.carrier, FreeCarrier):
+            p[_INDEX["pull_X"]:_INDEX["pull_X"] + 3] = np.asarray(pull, float).reshape(3)
+        p[_INDEX["lock_translation"]] = float(locks[0])
+        p[_INDEX["lock_tilt"]] = float(locks[1])
+        p[_INDEX["lock_yaw"]] = float(locks[2])
+        return p
+
+    @cached_property
+    def _base_parameters(self):
+        """The parameter vector without pull and locks (computed once per system)."""
         p = np.zeros(N_PARAMETERS)
 
         def put(name, values):
@@ -269,19 +282,19 @@ class SlingSystem:
             put("carrier_mass", self.carrier.mass)
             put("carrier_drag_area", self.carrier.drag_area)
             put("carrier_gain", self.carrier.speed_gain)
-            put("pull_X", pull)
         put("density", self.density)
         put("gravity", self.gravity)
         put("v_cut", self.aero_cutoff)
-        put("lock_translation", float(locks[0]))
-        put("lock_tilt", float(locks[1]))
-        put("lock_yaw", float(locks[2]))
         return p
 
     def tables(self):
         """Aerodynamic tables for the equations: fuselage (alpha, beta, coefficients in the
         table's declared frames, whose codes are parameters), fin, horizontal tail and
-        parachute CD (breakpoints, values)."""
+        parachute CD (breakpoints, values), computed once per system."""
+        return self._tables
+
+    @cached_property
+    def _tables(self):
         fus = table_arrays(None if self.fuselage is None else self.fuselage.table,
                            () if self.fuselage is None else self.fuselage.columns)
         if self.fuselage is None:
@@ -293,9 +306,9 @@ class SlingSystem:
         return fus + fin + tail + cd
 
     def table_key(self):
-        """Identity of the tables (runs with the same key can share one batch)."""
-        parts = (self.fuselage.table if self.fuselage is not None else None,
-                 self.fin.table if self.fin is not None else None,
-                 self.tail.table if self.tail is not None else None,
-                 self.parachute.parachute.cd if self.parachute is not None else None)
-        return tuple(id(p) for p in parts)
+        """Identity of the tables' contents (runs with the same key share one batch)."""
+        digest = hashlib.sha1()
+        for array in self.tables():
+            digest.update(str(array.shape).encode())
+            digest.update(array.tobytes())
+        return digest.hexdigest()
