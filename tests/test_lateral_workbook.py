@@ -246,7 +246,7 @@ def test_run_command_includes_lateral(tmp_path):
     """`slingloads run` on the example writes the lateral report beside the others."""
     book = openpyxl.load_workbook(EXAMPLE)
     study_rows = {row[0].value: row[0].row for row in book["Study"].iter_rows(min_row=2)}
-    for name in ("run loads", "run chute sizing"):
+    for name in ("run loads", "run chute sizing", "run multibody"):
         book["Study"][f"B{study_rows[name]}"] = "no"
     path = tmp_path / "only-lateral.xlsx"
     book.save(path)

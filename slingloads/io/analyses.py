@@ -99,6 +99,10 @@ ANALYSES = (
              "Run the lateral-step pendulum study (sheets Lateral*)."),
     Analysis("chute sizing", "chute", "chute", "parachute sizing only",
              "Run the parachute sizing (sheets Chute*)."),
+    Analysis("multibody", "simulate", "multibody",
+             "multibody model only: trim, linear modes, manoeuvres",
+             "Run the multibody model (Study rows 'multibody ...', sheets MultibodyManoeuvres, "
+             "HTailAero)."),
 )
 
 #: Parameters of the whole study: its name and which analyses to run.

@@ -32,14 +32,50 @@ from slingloads.models.multibody.rigid_body import (
 from .manoeuvres import Manoeuvre
 from .trim import flag_text, linearise, trim
 
-#: Default run length [s], RK4 step [s] and sampling interval of the histories [s].
-T_END, DT, OUTPUT_INTERVAL = 60.0, 0.01, 0.1
+#: Default run length [s], RK4 step (None: automatic) and sampling interval of the histories
+#: [s].
+T_END, DT, OUTPUT_INTERVAL = 60.0, None, 0.1
 #: Largest |lambda| dt accepted for the fastest linear mode. [-]
 STEP_LIMIT = 1.0
+#: |lambda| dt of the automatic step for the fastest linear mode (RK4 local error on that
+#: mode about (|lambda| dt)^5 / 120 = 3e-4; the slow swing and yaw modes far less). [-]
+STEP_ACCURACY = 0.5
+#: Most steps per output interval the automatic step takes to land on the inputs' jumps.
+_MOST_SUBSTEPS = 1000
 #: Activity (yaw rate, swing rates) below which a response counts as settled. [deg/s]
 QUIET = 0.5
 
 _INFO = {name: i for i, name in enumerate(INFO)}
+
+
+def automatic_step(fastest, output_interval, breakpoints=()):
+    """The longest step that divides ``output_interval`` with ``fastest * dt <=``
+    :data:`STEP_ACCURACY`, shortened if needed (to at most 1/1000 of the interval) so that
+    every time in ``breakpoints`` falls on a step boundary.
+
+    Parameters
+    ----------
+    fastest : float
+        Largest |eigenvalue| of the linear models of the runs' trims. [1/s]
+    output_interval : float
+        [s]
+    breakpoints : iterable of float
+        Times at which an input jumps or kinks. [s]
+
+    Returns
+    -------
+    float
+        [s]
+    """
+    base = max(1, int(np.ceil(fastest * output_interval / STEP_ACCURACY - 1e-9)))
+    points = np.asarray(sorted(set(breakpoints)), float)
+    for k in range(base, _MOST_SUBSTEPS + 1):
+        if k % base:
+            continue
+        steps = points * k / output_interval
+        if np.all(np.abs(steps - np.round(steps)) <= 1e-6):
+            return output_interval / k
+    return output_interval / base
 
 
 def _check_settings(t_end, dt, output_interval):
@@ -356,10 +392,13 @@ class Simulation:
     runs : list of RunResult
     linear : dict
         Linear model per distinct trim (keyed by (system name, start airspeed [m/s])).
+    dt : float
+        RK4 step the runs were integrated with. [s]
     """
 
     runs: list
     linear: dict
+    dt: float = float("nan")
 
     def __getitem__(self, name):
         for run in self.runs:
@@ -393,7 +432,8 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
     system : SlingSystem
     manoeuvres : Manoeuvre or sequence of Manoeuvre
     t_end, dt, output_interval : float
-        Run length, RK4 step and sampling interval of the histories. [s]
+        Run length, RK4 step (None: :func:`automatic_step` from the fastest linear mode) and
+        sampling interval of the histories. [s]
 
     Returns
     -------
@@ -417,9 +457,11 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
     ----------
     pairs : sequence of (SlingSystem, Manoeuvre)
     t_end, dt, output_interval : float
-        Run length, RK4 step and sampling interval of the histories. [s]
+        Run length, RK4 step (None: :func:`automatic_step` from the fastest linear mode of
+        the runs' trims) and sampling interval of the histories. [s]
     check_step : bool
-        Check the step against the fastest mode of every trim (and keep the linear models).
+        Check a given step against the fastest mode of every trim (and keep the linear
+        models); always done for the automatic step.
     workers : int, optional
         Threads integrating the runs (default: every processor this process may use).
 
@@ -427,8 +469,10 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
     -------
     Simulation
     """
-    n_steps, every = _check_settings(float(t_end), float(dt), float(output_interval))
-    trims, linear = {}, {}
+    t_end, output_interval = float(t_end), float(output_interval)
+    if dt is not None:
+        _check_settings(t_end, float(dt), output_interval)
+    trims, linear, fastest = {}, {}, {}
     prepared = []
     for system, manoeuvre in pairs:
         if not isinstance(manoeuvre, Manoeuvre):
@@ -437,16 +481,23 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         key = (id(system), speed, manoeuvre.wind.steady)
         if key not in trims:
             trims[key] = trim(system, speed, wind=manoeuvre.wind.steady)
-            if trims[key].converged and check_step:
+            if trims[key].converged and (check_step or dt is None):
                 model = linearise(trims[key])
                 linear[(system.name, speed)] = model
-                fastest = float(np.max(np.abs(model.eigenvalues)))
-                if fastest * dt > STEP_LIMIT:
-                    raise InputError(
-                        f"the integration step {dt:.4g} s is too long for the fastest mode of "
-                        f"{system.name!r} at {speed:.4g} m/s (|lambda| = {fastest:.4g} 1/s): "
-                        f"use dt <= {STEP_LIMIT / fastest:.3g} s", dt)
+                fastest[key] = float(np.max(np.abs(model.eigenvalues)))
         prepared.append((system, manoeuvre, trims[key]))
+    if dt is None:
+        breakpoints = {b for _, m, _ in prepared for b in m.breakpoints if 0 < b < t_end}
+        dt = automatic_step(max(fastest.values(), default=0.0), output_interval, breakpoints)
+    dt = float(dt)
+    for key, value in fastest.items():
+        if value * dt > STEP_LIMIT:
+            system = next(s for s, _, _ in prepared if id(s) == key[0])
+            raise InputError(
+                f"the integration step {dt:.4g} s is too long for the fastest mode of "
+                f"{system.name!r} at {key[1]:.4g} m/s (|lambda| = {value:.4g} 1/s): "
+                f"use dt <= {STEP_LIMIT / value:.3g} s", dt)
+    n_steps, every = _check_settings(t_end, dt, output_interval)
     n_out = n_steps // every + 1
     time = np.arange(n_out) * output_interval
     results = [None] * len(prepared)
@@ -461,7 +512,7 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
     drives = _DriveTables(dt, n_steps, every)
     for members in groups.values():
         _integrate_group(prepared, members, results, drives, time, workers)
-    return Simulation(results, linear)
+    return Simulation(results, linear, dt)
 
 
 class _DriveTables:

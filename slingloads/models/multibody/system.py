@@ -202,9 +202,10 @@ class SlingSystem:
             return None
         return check_cable_length(self.cable.length, self.parachute.line_length, margin)
 
-    def warnings(self):
-        """Rules that are broken but do not prevent a run (the report shows them)."""
-        check = self.cable_check()
+    def warnings(self, margin=CABLE_MARGIN):
+        """Rules that are broken but do not prevent a run (the report shows them): the cable
+        shorter than (1 + ``margin``) x the parachute line."""
+        check = self.cable_check(margin)
         return [] if check is None or check.ok else [check.message]
 
     def with_(self, **changes):
