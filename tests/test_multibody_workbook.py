@@ -147,7 +147,9 @@ def test_manoeuvres_from_the_sheet_equal_the_builders(study):
 
 def test_report_reads_back(run_dir, study, result):
     """`slingloads simulate` writes the workbook, CSV and PNGs; trim, modes, metrics and
-    histories read back equal an API run of the same system and manoeuvres."""
+    histories read back equal an API run of the same system and manoeuvres (the histories to
+    1e-5: the two systems' parameters differ by round-off, enough to move the adaptive steps
+    within the integration tolerance, rtol 1e-4)."""
     for tag in ("histories", "eigenvalues", "views"):
         assert (run_dir / f"{STEM}-multibody-{tag}.png").stat().st_size > 5000
     api = api_system(study)
@@ -164,11 +166,11 @@ def test_report_reads_back(run_dir, study, result):
     metrics = pd.read_excel(workbook, sheet_name="Metrics", header=1)
     assert list(metrics["verdict"]) == list(sim.metrics_frame()["verdict"])
     np.testing.assert_allclose(metrics["yaw change [deg]"],
-                               sim.metrics_frame()["yaw change [deg]"], rtol=1e-9)
+                               sim.metrics_frame()["yaw change [deg]"], rtol=1e-5)
     csv = pd.read_csv(run_dir / f"{STEM}-multibody-histories.csv")
     np.testing.assert_allclose(csv["beta [deg]"], sim.histories_frame()["beta [deg]"],
-                               rtol=1e-9, atol=1e-9)
-    assert result.simulation.dt == pytest.approx(0.05)
+                               rtol=1e-5, atol=1e-4)
+    assert result.simulation.dt is None  # adaptive
 
 
 def test_us_report_converts_lengths(small, tmp_path):
@@ -383,8 +385,7 @@ def test_full_tail_needs_its_table(small, tmp_path, capsys):
          "HTailAero")
 
 
-def test_step_must_divide_the_output_interval(small, tmp_path, capsys):
-    """Rule: a given RK4 step divides the output interval a whole number of times."""
-    name = "multibody time step"
-    _bad(small, tmp_path, capsys, {("Study", name): 0.03}, "Study", name, "whole number",
-         "0.03")
+def test_tolerance_must_be_positive(small, tmp_path, capsys):
+    """Rule: the adaptive step's relative tolerance > 0."""
+    name = "multibody relative tolerance"
+    _bad(small, tmp_path, capsys, {("Study", name): 0}, "Study", name, "must be > 0")

@@ -2,11 +2,12 @@
 metrics.
 
 Every run starts from a trim (:func:`~.trim.trim`) at the manoeuvre's start condition, plus its
-disturbance, and is integrated with the compiled fixed-step RK4 over all runs at once
-(:func:`slingloads.models.multibody.integrator.integrate`, blocks of runs on every
-processor). Runs whose systems share their aerodynamic tables go into one batch. Before
-integrating, the step is checked against the fastest mode of each trim's linear model (RK4 is
-stable for |lambda| dt < 2.8; the step must give |lambda| dt <= 1).
+disturbance, and is integrated by the compiled Dormand-Prince 5(4) kernel over all runs at once
+(:func:`slingloads.models.multibody.integrator.integrate`, blocks of runs on every processor),
+each run with its own adaptive step (or a given fixed step), segment by segment between the
+times at which its inputs jump. Runs whose systems share their aerodynamic tables go into one
+batch. A fixed step is checked against the fastest mode of each trim's linear model (the step
+must give |lambda| dt <= 1).
 
 A run that leaves a table stops there: the verdict says which table and when, the history is NaN
 after it (no extrapolation), and the rest of the batch goes on.
@@ -21,7 +22,13 @@ import pandas as pd
 
 from slingloads.errors import InputError
 from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
-from slingloads.models.multibody.integrator import integrate
+from slingloads.models.multibody.integrator import (
+    ATOL,
+    RTOL,
+    integrate,
+    stack_drives,
+    tabulate_drive,
+)
 from slingloads.models.multibody.parachute_line import line_angles
 from slingloads.models.multibody.rigid_body import (
     euler_angles,
@@ -30,66 +37,33 @@ from slingloads.models.multibody.rigid_body import (
 )
 
 from .manoeuvres import Manoeuvre
-from .trim import flag_text, linearise, trim
+from .trim import flag_text, linearise, trim_many
 
-#: Default run length [s], RK4 step (None: automatic) and sampling interval of the histories
-#: [s].
+#: Default run length [s], fixed step (None: adaptive) [s] and sampling interval of the
+#: histories [s].
 T_END, DT, OUTPUT_INTERVAL = 60.0, None, 0.1
-#: Largest |lambda| dt accepted for the fastest linear mode. [-]
+#: Largest |lambda| dt accepted for the fastest linear mode with a fixed step. [-]
 STEP_LIMIT = 1.0
-#: |lambda| dt of the automatic step for the fastest linear mode (RK4 local error on that
-#: mode about (|lambda| dt)^5 / 120 = 3e-4; the slow swing and yaw modes far less). [-]
-STEP_ACCURACY = 0.5
-#: Most steps per output interval the automatic step takes to land on the inputs' jumps.
-_MOST_SUBSTEPS = 1000
 #: Activity (yaw rate, swing rates) below which a response counts as settled. [deg/s]
 QUIET = 0.5
 
 _INFO = {name: i for i, name in enumerate(INFO)}
 
 
-def automatic_step(fastest, output_interval, breakpoints=()):
-    """The longest step that divides ``output_interval`` with ``fastest * dt <=``
-    :data:`STEP_ACCURACY`, shortened if needed (to at most 1/1000 of the interval) so that
-    every time in ``breakpoints`` falls on a step boundary.
-
-    Parameters
-    ----------
-    fastest : float
-        Largest |eigenvalue| of the linear models of the runs' trims. [1/s]
-    output_interval : float
-        [s]
-    breakpoints : iterable of float
-        Times at which an input jumps or kinks. [s]
-
-    Returns
-    -------
-    float
-        [s]
-    """
-    base = max(1, int(np.ceil(fastest * output_interval / STEP_ACCURACY - 1e-9)))
-    points = np.asarray(sorted(set(breakpoints)), float)
-    for k in range(base, _MOST_SUBSTEPS + 1):
-        if k % base:
-            continue
-        steps = points * k / output_interval
-        if np.all(np.abs(steps - np.round(steps)) <= 1e-6):
-            return output_interval / k
-    return output_interval / base
-
-
-def _check_settings(t_end, dt, output_interval):
-    for name, value in (("t_end", t_end), ("dt", dt), ("output_interval", output_interval)):
+def _check_settings(t_end, dt, output_interval, rtol, atol):
+    for name, value in (("t_end", t_end), ("output_interval", output_interval)):
         if not np.isfinite(value) or value <= 0:
             raise InputError(f"simulation {name} must be > 0 [s]", value)
-    every = output_interval / dt
-    if abs(every - round(every)) > 1e-9 * every or round(every) < 1:
-        raise InputError("simulation output_interval must be a whole multiple of dt [s]",
-                         output_interval)
-    steps = t_end / dt
-    if abs(steps - round(steps)) > 1e-9 * steps:
-        raise InputError("simulation t_end must be a whole multiple of dt [s]", t_end)
-    return int(round(steps)), int(round(every))
+    if dt is not None and (not np.isfinite(dt) or dt <= 0):
+        raise InputError("simulation dt must be > 0 [s] (or None: adaptive)", dt)
+    for name, value in (("rtol", rtol), ("atol", atol)):
+        if not np.isfinite(value) or value <= 0:
+            raise InputError(f"simulation {name} must be > 0", value)
+    samples = t_end / output_interval
+    if abs(samples - round(samples)) > 1e-9 * samples:
+        raise InputError("simulation t_end must be a whole multiple of output_interval [s]",
+                         t_end)
+    return int(round(samples)) + 1
 
 
 def _disturbed(trim_point, disturbance):
@@ -111,20 +85,12 @@ def _disturbed(trim_point, disturbance):
     return x
 
 
-def _drive_table(manoeuvre, base_velocity, dt, n_steps):
-    """Drive (n_steps, 3, 9) at the start (just after), middle and end (just before) of every
-    step, and (n_steps + 1, 9) at the step boundaries."""
-    t = np.arange(n_steps + 1) * dt
-    samples = (t[:-1], t[:-1] + 0.5 * dt, t[1:] - 1e-9 * dt)
-    out = np.empty((n_steps, 3, 9))
-    for k, when in enumerate(samples):
-        acc, vel = manoeuvre.trajectory.command(when, base_velocity)
-        out[:, k, 0:3] = manoeuvre.wind.velocity(when)
-        out[:, k, 3:6] = acc
-        out[:, k, 6:9] = vel
-    acc, vel = manoeuvre.trajectory.command(t, base_velocity)
-    at_nodes = np.concatenate([manoeuvre.wind.velocity(t), acc, vel], axis=1)
-    return out, at_nodes
+def _drive(manoeuvre, base_velocity):
+    """The manoeuvre's drive d(t) (n, 9): wind, commanded acceleration and velocity."""
+    def drive(t):
+        acc, vel = manoeuvre.trajectory.command(t, base_velocity)
+        return np.concatenate([manoeuvre.wind.velocity(t), acc, vel], axis=1)
+    return drive
 
 
 def _damping_from_peaks(t, y, start=0.0):
@@ -391,14 +357,26 @@ class Simulation:
     ----------
     runs : list of RunResult
     linear : dict
-        Linear model per distinct trim (keyed by (system name, start airspeed [m/s])).
-    dt : float
-        RK4 step the runs were integrated with. [s]
+        Linear model per distinct trim (keyed by (system name, start airspeed [m/s])), when
+        a fixed step was checked against the modes.
+    dt : float or None
+        Fixed step the runs were integrated with (None: adaptive). [s]
+    rtol, atol : float
+        Tolerances of the adaptive step. [-], [SI]
     """
 
     runs: list
     linear: dict
-    dt: float = float("nan")
+    dt: float | None = None
+    rtol: float = RTOL
+    atol: float = ATOL
+
+    def describe_integration(self):
+        """How the runs were integrated, in words."""
+        if self.dt is None:
+            return (f"Dormand-Prince 5(4), adaptive step per run (rtol {self.rtol:g}, atol "
+                    f"{self.atol:g}), split at the inputs' jumps")
+        return f"Dormand-Prince 5(4), fixed step {self.dt:g} s, split at the inputs' jumps"
 
     def __getitem__(self, name):
         for run in self.runs:
@@ -424,7 +402,8 @@ class Simulation:
         return pd.concat(frames, ignore_index=True)
 
 
-def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL):
+def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
+             rtol=RTOL, atol=ATOL):
     """Fly ``system`` through ``manoeuvres`` (all integrated together).
 
     Parameters
@@ -432,8 +411,11 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
     system : SlingSystem
     manoeuvres : Manoeuvre or sequence of Manoeuvre
     t_end, dt, output_interval : float
-        Run length, RK4 step (None: :func:`automatic_step` from the fastest linear mode) and
-        sampling interval of the histories. [s]
+        Run length, fixed integration step (None: adaptive) and sampling interval of the
+        histories. [s]
+    rtol, atol : float
+        Tolerances of the adaptive step: local error below atol + rtol |x| (root mean square
+        over the states, SI units). [-], [SI]
 
     Returns
     -------
@@ -446,22 +428,24 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
         dup = next(n for n in names if names.count(n) > 1)
         raise InputError("manoeuvre names must be unique", dup)
     return simulate_runs([(system, m) for m in manoeuvres], t_end=t_end, dt=dt,
-                         output_interval=output_interval)
+                         output_interval=output_interval, rtol=rtol, atol=atol)
 
 
-def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
-                  check_step=True, workers=None):
+def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL, rtol=RTOL,
+                  atol=ATOL, check_step=True, workers=None):
     """Integrate runs given as (system, manoeuvre) pairs, together (module notes).
 
     Parameters
     ----------
     pairs : sequence of (SlingSystem, Manoeuvre)
     t_end, dt, output_interval : float
-        Run length, RK4 step (None: :func:`automatic_step` from the fastest linear mode of
-        the runs' trims) and sampling interval of the histories. [s]
+        Run length, fixed integration step (None: adaptive) and sampling interval of the
+        histories. [s]
+    rtol, atol : float
+        Tolerances of the adaptive step. [-], [SI]
     check_step : bool
-        Check a given step against the fastest mode of every trim (and keep the linear
-        models); always done for the automatic step.
+        Check a fixed step against the fastest mode of every trim (and keep the linear
+        models).
     workers : int, optional
         Threads integrating the runs (default: every processor this process may use).
 
@@ -470,35 +454,25 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
     Simulation
     """
     t_end, output_interval = float(t_end), float(output_interval)
-    if dt is not None:
-        _check_settings(t_end, float(dt), output_interval)
-    trims, linear, fastest = {}, {}, {}
-    prepared = []
+    dt = None if dt is None else float(dt)
+    n_out = _check_settings(t_end, dt, output_interval, float(rtol), float(atol))
+    pairs = list(pairs)
+    requests, keys = {}, []
     for system, manoeuvre in pairs:
         if not isinstance(manoeuvre, Manoeuvre):
             raise InputError("runs need Manoeuvre objects", type(manoeuvre).__name__)
         speed = 0.0 if manoeuvre.from_hover else system.airspeed
         key = (id(system), speed, manoeuvre.wind.steady)
-        if key not in trims:
-            trims[key] = trim(system, speed, wind=manoeuvre.wind.steady)
-            if trims[key].converged and (check_step or dt is None):
-                model = linearise(trims[key])
-                linear[(system.name, speed)] = model
-                fastest[key] = float(np.max(np.abs(model.eigenvalues)))
-        prepared.append((system, manoeuvre, trims[key]))
-    if dt is None:
-        breakpoints = {b for _, m, _ in prepared for b in m.breakpoints if 0 < b < t_end}
-        dt = automatic_step(max(fastest.values(), default=0.0), output_interval, breakpoints)
-    dt = float(dt)
-    for key, value in fastest.items():
-        if value * dt > STEP_LIMIT:
-            system = next(s for s, _, _ in prepared if id(s) == key[0])
-            raise InputError(
-                f"the integration step {dt:.4g} s is too long for the fastest mode of "
-                f"{system.name!r} at {key[1]:.4g} m/s (|lambda| = {value:.4g} 1/s): "
-                f"use dt <= {STEP_LIMIT / value:.3g} s", dt)
-    n_steps, every = _check_settings(t_end, dt, output_interval)
-    n_out = n_steps // every + 1
+        requests.setdefault(key, (system, speed, manoeuvre.wind.steady))
+        keys.append(key)
+    trims = dict(zip(requests, trim_many(list(requests.values())), strict=True))
+    linear = {}
+    if check_step and dt is not None:
+        for point in trims.values():
+            if point.converged:
+                _check_step(point, dt, linear)
+    prepared = [(system, manoeuvre, trims[key])
+                for (system, manoeuvre), key in zip(pairs, keys, strict=True)]
     time = np.arange(n_out) * output_interval
     results = [None] * len(prepared)
     groups = {}
@@ -509,33 +483,48 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
             results[k] = RunResult(system, prepared[k][1], tr, time,
                                    np.full((n_out, N_STATES), np.nan),
                                    np.full((n_out, N_INFO), np.nan), 0, 0.0)
-    drives = _DriveTables(dt, n_steps, every)
+    drives = _DriveTables(t_end, output_interval)
+    settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers}
     for members in groups.values():
-        _integrate_group(prepared, members, results, drives, time, workers)
-    return Simulation(results, linear, dt)
+        _integrate_group(prepared, members, results, drives, time, settings)
+    return Simulation(results, linear, dt, float(rtol), float(atol))
+
+
+def _check_step(point, dt, linear):
+    """Refuse a fixed step too long for the fastest mode of the trim ``point``."""
+    model = linearise(point)
+    system, speed = point.system, point.airspeed
+    linear[(system.name, speed)] = model
+    fastest = float(np.max(np.abs(model.eigenvalues)))
+    if fastest * dt > STEP_LIMIT:
+        raise InputError(
+            f"the integration step {dt:.4g} s is too long for the fastest mode of "
+            f"{system.name!r} at {speed:.4g} m/s (|lambda| = {fastest:.4g} 1/s): "
+            f"use dt <= {STEP_LIMIT / fastest:.3g} s", dt)
 
 
 class _DriveTables:
     """The drive of each distinct (manoeuvre, steady carrier velocity), tabulated once."""
 
-    def __init__(self, dt, n_steps, every):
-        self.dt, self.n_steps, self.every = dt, n_steps, every
+    def __init__(self, t_end, interval):
+        self.t_end, self.interval = t_end, interval
         self._tables = {}
 
     def get(self, manoeuvre, velocity):
         key = (id(manoeuvre), tuple(np.round(velocity, 12)))
         if key not in self._tables:
-            table, at_nodes = _drive_table(manoeuvre, velocity, self.dt, self.n_steps)
-            self._tables[key] = (table, at_nodes[::self.every])
+            self._tables[key] = tabulate_drive(_drive(manoeuvre, velocity),
+                                               manoeuvre.breakpoints, self.t_end,
+                                               self.interval)
         return key, self._tables[key]
 
 
-def _integrate_group(prepared, members, results, drives, time, workers):
+def _integrate_group(prepared, members, results, drives, time, settings):
     system0 = prepared[members[0]][0]
     runs = len(members)
     x0 = np.empty((runs, N_STATES))
     params = np.empty((runs, system0.parameters().size))
-    profiles, nodes, index = [], [], np.empty(runs, dtype=np.int64)
+    profiles, index = [], np.empty(runs, dtype=np.int64)
     seen = {}
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
@@ -544,18 +533,15 @@ def _integrate_group(prepared, members, results, drives, time, workers):
         pull = tr.info[_INFO["d_X"]:_INFO["d_Z"] + 1]
         pull = tr.quantity("tension") * pull / np.linalg.norm(pull)
         params[j] = system.parameters(pull=pull, locks=system.locks)
-        key, (table, at_nodes) = drives.get(manoeuvre, tr.state[0:3])
+        key, table = drives.get(manoeuvre, tr.state[0:3])
         if key not in seen:
             seen[key] = len(profiles)
             profiles.append(table)
-            nodes.append(at_nodes)
         index[j] = seen[key]
-    drive = np.ascontiguousarray(np.stack(profiles))
-    out, info, flags, exit_step = integrate(
-        x0, params, drive, np.ascontiguousarray(np.stack(nodes)), index, drives.dt,
-        drives.n_steps, drives.every, system0.tables(), workers)
+    out, _, info, flags, stops = integrate(
+        x0, params, stack_drives(profiles), index, drives.interval, time.size,
+        system0.tables(), **settings)
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        stop = float(exit_step[j] * drives.dt) if flags[j] else np.nan
         results[k] = RunResult(system, manoeuvre, tr, time, out[j], info[j], int(flags[j]),
-                               stop)
+                               float(stops[j]))

@@ -67,12 +67,9 @@ class MultibodyInputs:
     ----------
     system : SlingSystem
     manoeuvres : tuple of Manoeuvre
-    t_end : float
-        Length of every run. [s]
-    dt : float or None
-        RK4 step (None: automatic). [s]
-    output_interval : float
-        [s]
+    settings : dict
+        Keywords of :func:`~slingloads.analyses.multibody.simulate`: ``t_end``, ``dt`` (None:
+        adaptive), ``output_interval`` [s], ``rtol`` [-], ``atol`` [SI].
     configuration, tail, carrier, parachute_model, canopy_table : str
         The Study's choices, as spelt in :mod:`slingloads.io.multibody.schema`.
     margin : float
@@ -85,9 +82,7 @@ class MultibodyInputs:
 
     system: SlingSystem
     manoeuvres: tuple
-    t_end: float
-    dt: float | None
-    output_interval: float
+    settings: dict
     configuration: str
     tail: str
     carrier: str
@@ -117,13 +112,12 @@ def read(reader, params, study):
     InputError
         With the file, sheet, cell, value and rule.
     """
-    t_end, dt, interval = read_settings(reader, params)
+    settings = read_settings(reader, params)
     system, choices = read_system(reader, params, study)
-    manoeuvres, source = read_manoeuvres(reader, params, system, t_end)
+    manoeuvres, source = read_manoeuvres(reader, params, system, settings["t_end"])
     warnings = tuple(system.warnings(choices["margin"]))
-    return MultibodyInputs(system=system, manoeuvres=manoeuvres, t_end=t_end, dt=dt,
-                           output_interval=interval, warnings=warnings,
-                           manoeuvre_source=source, **choices)
+    return MultibodyInputs(system=system, manoeuvres=manoeuvres, settings=settings,
+                           warnings=warnings, manoeuvre_source=source, **choices)
 
 
 def load_workbook_system(path):
@@ -140,23 +134,21 @@ def load_workbook_system(path):
 
 # --------------------------------------------------------------------------- settings
 def read_settings(reader, params):
-    """(run length [s], RK4 step [s] or None for automatic, output interval [s])."""
+    """Run length [s], fixed step [s] (None: adaptive), output interval [s] and the adaptive
+    step's tolerances (relative [-], absolute [SI]), as a dict of :func:`simulate`'s
+    keywords."""
     t_end = params.positive("multibody simulation time")
     interval = params.positive("multibody output interval")
     params.check("multibody output interval", interval <= t_end,
                  "'multibody output interval' must not exceed 'multibody simulation time'")
-    steps = t_end / interval
-    params.check("multibody simulation time", abs(steps - round(steps)) <= 1e-9 * steps,
+    samples = t_end / interval
+    params.check("multibody simulation time", abs(samples - round(samples)) <= 1e-9 * samples,
                  "'multibody simulation time' must be a whole multiple of 'multibody output "
                  "interval'")
     dt = params.positive("multibody time step", allow_zero=True)
-    if dt == 0:
-        return t_end, None, interval
-    every = interval / dt
-    params.check("multibody time step", abs(every - round(every)) <= 1e-9 * every,
-                 "'multibody time step' must divide 'multibody output interval' a whole "
-                 "number of times (or be 0: automatic)")
-    return t_end, dt, interval
+    return {"t_end": t_end, "dt": dt if dt > 0 else None, "output_interval": interval,
+            "rtol": params.positive("multibody relative tolerance"),
+            "atol": params.positive("multibody absolute tolerance")}
 
 
 # --------------------------------------------------------------------------- the system

@@ -126,8 +126,7 @@ def compute(study):
     with located(study.path):
         point = trim(inputs.system)
         linear = linearise(point) if point.converged else None
-        sim = simulate(inputs.system, inputs.manoeuvres, t_end=inputs.t_end, dt=inputs.dt,
-                       output_interval=inputs.output_interval)
+        sim = simulate(inputs.system, inputs.manoeuvres, **inputs.settings)
     return MultibodyReport(inputs, point, linear, sim, airframe_outline(study.airframe))
 
 
@@ -215,11 +214,9 @@ def system_table(result, units="SI"):
     sim = result.simulation
     rows += [
         _row("manoeuvres", f"{len(inp.manoeuvres)} from {inp.manoeuvre_source}", None, units),
-        _row("run length", inp.t_end, "s", units),
-        _row("RK4 step", sim.dt, "s", units,
-             "automatic: |lambda| dt <= 0.5 for the fastest mode" if inp.dt is None
-             else "from the Study sheet"),
-        _row("output interval", inp.output_interval, "s", units),
+        _row("run length", inp.settings["t_end"], "s", units),
+        _row("integration", sim.describe_integration(), None, units),
+        _row("output interval", inp.settings["output_interval"], "s", units),
     ]
     return pd.DataFrame(rows)
 
@@ -255,8 +252,9 @@ def history_table(result, units="SI", interval=None):
     """Every run's histories in long format, every ``interval`` (default: every sample)."""
     frame = result.simulation.histories_frame()
     if interval is not None:
-        step = max(1, int(round(interval / result.inputs.output_interval)))
-        keep = np.round(frame["time [s]"].to_numpy() / result.inputs.output_interval) % step
+        every = result.inputs.settings["output_interval"]
+        step = max(1, int(round(interval / every)))
+        keep = np.round(frame["time [s]"].to_numpy() / every) % step
         frame = frame[keep == 0].reset_index(drop=True)
     return in_units(frame, units)
 

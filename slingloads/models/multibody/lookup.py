@@ -30,7 +30,12 @@ def cell(grid, x):
         return 0, 0.0, True
     if x >= hi:
         return n - 2, 1.0, True
-    a, b = 0, n - 1
+    # guess where the point would lie on an evenly spaced grid (right at once for the even
+    # sample tables), else bisect the side of the guess that holds it
+    i = min(max(int((x - lo) / (hi - lo) * (n - 1)), 0), n - 2)
+    if grid[i] <= x <= grid[i + 1]:
+        return i, (x - grid[i]) / (grid[i + 1] - grid[i]), True
+    a, b = (0, i) if grid[i] > x else (i + 1, n - 1)
     while b - a > 1:
         m = (a + b) // 2
         if grid[m] <= x:

@@ -196,6 +196,17 @@ class SlingSystem:
         """"hinged", "quasi-static" or "none"."""
         return "none" if self.parachute is None else self.parachute.kind
 
+    @cached_property
+    def drag_area(self):
+        """Rough drag area of the fuselage (CD at zero angles) and the parachute (CD(0)), to
+        start a trim at a sensible swing angle. [m^2]"""
+        area = 0.0
+        if self.fuselage is not None:
+            area += self.fuselage.area * float(self.fuselage.drag_coefficient(0.0, 0.0))
+        if self.parachute is not None:
+            area += float(self.parachute.parachute.drag_area(0.0))
+        return area
+
     def cable_check(self, margin=CABLE_MARGIN):
         """The 20 % rule: carrier cable against the parachute line (None without parachute)."""
         if self.parachute is None:
@@ -308,6 +319,10 @@ class SlingSystem:
 
     def table_key(self):
         """Identity of the tables' contents (runs with the same key share one batch)."""
+        return self._table_key
+
+    @cached_property
+    def _table_key(self):
         digest = hashlib.sha1()
         for array in self.tables():
             digest.update(str(array.shape).encode())
