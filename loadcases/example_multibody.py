@@ -5,12 +5,12 @@ multibody model) and ``NOTES`` (README lines). A SHORT list of four runs, so tha
 first command stays quick: a free response, a 30 ft/s lateral gust, a forward acceleration from
 hover and a head-wind ramp; the whole list of the paper is flown when the sheet is deleted.
 
-The towed flight is at 70 KEAS, below the speed limit of the GENERIC example data: the
+The towed flight is at 80 KEAS (the paper's sizing speed). With the GENERIC example data the
+helicopter hangs nose down: its CG lies 0.17 m ahead of the hub (-9 deg in hover) and its
 fuselage alone (horizontal tailplane removed, as in the paper's transport configuration) is
-strongly unstable in pitch, so the trimmed nose-down attitude grows with speed (about -15 deg at
-60 KEAS, -22 deg at 80, -30 deg at 90 KEAS) and above about 95 KEAS the trim leaves the
-fuselage table (alpha -40..40 deg). The paper transports its helicopter up to 100 KEAS: with
-real fuselage data the limit is whatever the data give.
+unstable in pitch, so the trimmed attitude grows with speed: -14.6 deg at 60 KEAS, -21.4 deg
+at 80, -29.0 deg at 100 KEAS; above about 115 KEAS there is no trim. The paper transports its
+helicopter up to 100 KEAS; with real fuselage data the attitudes are whatever the data give.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ from __future__ import annotations
 import pandas as pd
 
 #: Airspeed of the towed flight of the example. [kt]
-AIRSPEED_KT = 70.0
+AIRSPEED_KT = 80.0
 
 MANOEUVRES = pd.DataFrame({
     "name": ["free response 10 deg yaw", "lateral gust +30 ft/s 10 s", "accelerate to 60 KIAS",
@@ -64,9 +64,9 @@ NOTES = [
     "Multibody model (Study rows 'multibody ...', sheet MultibodyManoeuvres): the example "
     "airframe (MassItems inertia, HC1 fuselage and cut-down fin) hung on a 60 ft cable (EA "
     "5e6 N, GENERIC), the example's drogue (its 'parachute area' and line) as a hinged 3 kg "
-    "canopy with the GENERIC extended CD table, frozen carrier, four runs at 70 KEAS or from "
-    "hover. SPEED LIMIT of the generic data: the fuselage alone is strongly unstable in "
-    "pitch; the trimmed attitude is about -15 deg at 60 KEAS and -30 deg at 90 KEAS, and "
-    "above about 95 KEAS the trim leaves the fuselage table (accelerations to 100 KIAS stop "
-    "there). Delete the MultibodyManoeuvres sheet to fly the paper's whole list.",
+    "canopy with the GENERIC extended CD table, frozen carrier, four runs at 80 KEAS or from "
+    "hover. With the generic data the helicopter hangs nose down (CG 0.17 m ahead of the "
+    "hub; the fuselage alone is unstable in pitch): trimmed pitch -14.6 deg at 60 KEAS, "
+    "-21.4 deg at 80, -29.0 deg at 100 KEAS, no trim above about 115 KEAS. Delete the "
+    "MultibodyManoeuvres sheet to fly the paper's whole list.",
 ]

@@ -2,7 +2,7 @@
 
 References: the system read through the workbook equals the one built with the Python API from
 the same data (the example's mass items, hardpoints and GENERIC HC1 tables; 60 ft = 18.288 m
-and 70 kt = 36.0111 m/s exactly by the definitions of the foot and the knot); the manoeuvres
+and 80 kt = 41.1556 m/s exactly by the definitions of the foot and the knot); the manoeuvres
 read from the MultibodyManoeuvres sheet equal those of the API builders; the report's numbers
 read back equal those of the API run. Each bad-input test breaks one rule written in
 ``slingloads.io.multibody.schema`` and checks exit code 2, the sheet and cell, the value as
@@ -109,16 +109,16 @@ def api_system(study):
     chute = Parachute(1.1, extended_cd_table(), line_length=10.1)
     return SlingSystem(RigidBody.from_mass_items(frame.mass_items), frame.hardpoints,
                        Cable(60 * FOOT, 5e6, 0.05), fuselage, (LiftingSurface.from_fin(fin),),
-                       HingedParachute(chute, 3.0), airspeed=70 * KNOT)
+                       HingedParachute(chute, 3.0), airspeed=80 * KNOT)
 
 
 def test_workbook_system_equals_api(study):
     """Same data, two paths: the parameter vector and the tables of the compiled equations
-    are equal (60 ft = 18.288 m, 70 kt = 36.0111 m/s)."""
+    are equal (60 ft = 18.288 m, 80 kt = 41.1556 m/s)."""
     system = study.inputs["multibody"].system
     api = api_system(study)
     assert system.cable.length == pytest.approx(18.288, rel=1e-15)
-    assert system.airspeed == pytest.approx(70 * 1852 / 3600, rel=1e-15)
+    assert system.airspeed == pytest.approx(80 * 1852 / 3600, rel=1e-15)
     np.testing.assert_allclose(system.parameters(), api.parameters(), rtol=1e-12, atol=0)
     for mine, theirs in zip(system.tables(), api.tables(), strict=True):
         np.testing.assert_allclose(mine, theirs, rtol=1e-12, atol=1e-12)
@@ -147,9 +147,9 @@ def test_manoeuvres_from_the_sheet_equal_the_builders(study):
 
 def test_report_reads_back(run_dir, study, result):
     """`slingloads simulate` writes the workbook, CSV and PNGs; trim, modes, metrics and
-    histories read back equal an API run of the same system and manoeuvres (the histories to
-    1e-5: the two systems' parameters differ by round-off, enough to move the adaptive steps
-    within the integration tolerance, rtol 1e-4)."""
+    histories read back equal an API run of the same system and manoeuvres (the runs within
+    the integration's accuracy, 0.002 deg: the two systems' parameters differ by round-off,
+    enough to move the adaptive steps within the tolerance, rtol 1e-4)."""
     for tag in ("histories", "eigenvalues", "views"):
         assert (run_dir / f"{STEM}-multibody-{tag}.png").stat().st_size > 5000
     api = api_system(study)
@@ -166,10 +166,10 @@ def test_report_reads_back(run_dir, study, result):
     metrics = pd.read_excel(workbook, sheet_name="Metrics", header=1)
     assert list(metrics["verdict"]) == list(sim.metrics_frame()["verdict"])
     np.testing.assert_allclose(metrics["yaw change [deg]"],
-                               sim.metrics_frame()["yaw change [deg]"], rtol=1e-5)
+                               sim.metrics_frame()["yaw change [deg]"], atol=2e-3)
     csv = pd.read_csv(run_dir / f"{STEM}-multibody-histories.csv")
     np.testing.assert_allclose(csv["beta [deg]"], sim.histories_frame()["beta [deg]"],
-                               rtol=1e-5, atol=1e-4)
+                               atol=2e-3)
     assert result.simulation.dt is None  # adaptive
 
 

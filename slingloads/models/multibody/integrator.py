@@ -342,6 +342,16 @@ def stack_drives(profiles):
     return out
 
 
+#: What the kernel's arrays must be: one compiled signature (a read-only or non-contiguous
+#: array would compile the kernel, and the equations in it, a second time).
+_KERNEL_ARRAYS = ("C", "W", "A")
+
+
+def _plain(values):
+    """A C-contiguous, writeable float64 array (a copy when needed)."""
+    return np.require(values, np.float64, _KERNEL_ARRAYS)
+
+
 def worker_count():
     """Threads used for a batch: the processors this process may run on."""
     try:
@@ -392,9 +402,8 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     info = np.full((runs, n_out, N_INFO), np.nan)
     flags = np.zeros(runs, dtype=np.int64)
     stop_time = np.full(runs, np.nan)
-    x0 = np.ascontiguousarray(x0, dtype=float)
-    P = np.ascontiguousarray(P, dtype=float)
-    profile = np.ascontiguousarray(profile, dtype=np.int64)
+    x0, P = _plain(x0), _plain(P)
+    profile = np.require(profile, np.int64, _KERNEL_ARRAYS)
     fixed = 0.0 if step is None else float(step)
 
     def block(start):
@@ -435,10 +444,10 @@ def evaluate_many(states, P, drives, tables):
     info : ndarray, shape (n, N_INFO)
     flags : ndarray of int, shape (n,)
     """
-    states = np.ascontiguousarray(np.atleast_2d(states), dtype=float)
+    states = _plain(np.atleast_2d(states))
     n = states.shape[0]
-    P = np.ascontiguousarray(np.broadcast_to(P, (n, np.shape(P)[-1])), dtype=float)
-    nodes = np.ascontiguousarray(np.broadcast_to(drives, (n, 9))[:, None, :], dtype=float)
+    P = _plain(np.broadcast_to(P, (n, np.shape(P)[-1])))
+    nodes = _plain(np.broadcast_to(drives, (n, 9))[:, None, :])
     none = np.zeros((n, 1))
     rates = np.empty((n, 1, N_STATES))
     info = np.empty((n, 1, N_INFO))
