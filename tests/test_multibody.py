@@ -449,3 +449,20 @@ def test_drive_table_interpolation():
     assert out[0] == 9.0  # the gust's start: after the jump
     _drive_at(5.0, 0, 1, *args)
     assert out[0] == 9.0  # the end of its segment: before it stops
+
+
+def test_trims_of_a_batch_equal_single_trims():
+    """The batch trims (damped Newton on all at once) equal Powell's hybrid method on each
+    system alone: hinged, quasi-static and no parachute, in towed flight and in hover (where
+    the yaw is held), with a steady wind."""
+    from slingloads.analyses.multibody.trim import trim_many
+
+    systems = [hc1_system("hinged"), hc1_system("quasi-static", 60 * KNOT),
+               hc1_system(None, 20 * KNOT), hc1_system("hinged", 100 * KNOT)]
+    requests = [(s, None, (0.0, 0.0, 0.0)) for s in systems]
+    requests += [(systems[0], 0.0, (0.0, 0.0, 0.0)), (systems[1], None, (0.0, 2.0, 0.0))]
+    together = trim_many(requests)
+    for (system, speed, wind), point in zip(requests, together, strict=True):
+        alone = trim(system, speed, wind=wind)
+        assert point.converged and alone.converged
+        assert_allclose(point.state, alone.state, atol=1e-8)
