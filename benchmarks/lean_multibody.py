@@ -4,8 +4,9 @@ What a competent engineer would write to integrate one run with :func:`scipy.int
 without the product's compiled kernel: the equations of ``docs/multibody.md`` (frozen carrier in
 steady flight, elastic cable, 6-DOF helicopter with fuselage table and fin, hinged canopy) on
 Python floats with the ``math`` module, tables as Python lists searched with :mod:`bisect`, and
-the gust shapes written out. No numpy inside the right-hand side (numpy calls on three-element
-vectors cost more than they save).
+the gust shapes written out. The fuselage table's forces are in wind axes and its moments in
+body axes (the sample tables' frames); the fin's side force in body axes. No numpy inside the
+right-hand side (numpy calls on three-element vectors cost more than they save).
 
 It is built from a :class:`~slingloads.models.multibody.SlingSystem`'s public fields (not from
 the product's parameter vector), so comparing it with the compiled equations at random states
@@ -66,6 +67,9 @@ def lean_rhs(system, manoeuvre):
             for c in range(3)] for r in range(3)]
     hx, hy, hz = (float(hp.hub[i]) - cg[i] for i in range(3))
     fus = system.fuselage
+    if (fus.force_axes, fus.moment_axes) != ("wind", "body"):
+        raise ValueError("the lean baseline takes fuselage forces in wind axes and moments in "
+                         "body axes (the sample tables' frames)")
     rx, ry, rz = (float(fus.moment_reference[i]) - cg[i] for i in range(3))
     f_area, f_len = fus.area, fus.length
     alphas = [float(a) for a in fus.table.alpha]
@@ -147,9 +151,12 @@ def lean_rhs(system, manoeuvre):
                 lo = row[j] + wb * (row[j + 1] - row[j])
                 c.append(lo + wa * (nxt[j] + wb * (nxt[j + 1] - nxt[j]) - lo))
             qs = half_rho * sp2 * f_area
-            sa, ca = sin(alpha), cos(alpha)
-            g0, g1, g2 = (qs * (c[0] * d0 - c[2] * sa), qs * (c[0] * d1 + c[1]),
-                          qs * (c[0] * d2 + c[2] * ca))
+            sa, ca, sb, cb = sin(alpha), cos(alpha), sin(beta), cos(beta)
+            # wind axes: CD along the airflow d, CY along y_W = (ca sb, cb, sa sb), CL along
+            # the lift direction (-sa, 0, ca)
+            g0 = qs * (c[0] * d0 + c[1] * ca * sb - c[2] * sa)
+            g1 = qs * (c[0] * d1 + c[1] * cb)
+            g2 = qs * (c[0] * d2 + c[1] * sa * sb + c[2] * ca)
             qsl = qs * f_len
             fx += g0
             fy += g1

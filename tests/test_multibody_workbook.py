@@ -106,7 +106,8 @@ def api_system(study):
     fuselage = FuselageAero(hc1.table, ref.fuselage_area, ref.fuselage_length,
                             points["aero_reference"])
     fin = Fin(sample_fin("HC1").table, ref.fin_area, points["fin_cp"], ref.fin_efficiency)
-    chute = Parachute(1.1, extended_cd_table(), line_length=10.1)
+    chute = Parachute(study.parameters["parachute area"], extended_cd_table(),
+                      line_length=study.parameters["parachute line length"])
     return SlingSystem(RigidBody.from_mass_items(frame.mass_items), frame.hardpoints,
                        Cable(60 * FOOT, 5e6, 0.05), fuselage, (LiftingSurface.from_fin(fin),),
                        HingedParachute(chute, 3.0), airspeed=80 * KNOT)
@@ -389,3 +390,11 @@ def test_tolerance_must_be_positive(small, tmp_path, capsys):
     """Rule: the adaptive step's relative tolerance > 0."""
     name = "multibody relative tolerance"
     _bad(small, tmp_path, capsys, {("Study", name): 0}, "Study", name, "must be > 0")
+
+
+def test_canopy_table_must_pull_along_the_wind(small, tmp_path, capsys):
+    """Rule: the hinged canopy's table from the sheet must be in wind axes (a CD pulling along
+    the canopy's relative wind); a canopy-axes (CT) table is refused with the way out."""
+    _bad(small, tmp_path, capsys, {("Study", "parachute table axes"): "canopy",
+                                   ("Study", "multibody canopy CD"): "sheet"}, "Study",
+         "parachute table axes", "wind axes", "'canopy'", "extended")

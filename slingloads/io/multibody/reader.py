@@ -212,6 +212,9 @@ def _body(reader, study):
 def _surfaces(reader, params, refs, tail_choice):
     """The fin (cut down, or intact with the full tail) and the horizontal tail."""
     fin = read_fin_aero(reader, params, refs)
+    if fin is not None:
+        with located(reader.file, STUDY_SHEET, params.where("fin axes")):
+            LiftingSurface.from_fin(fin)  # a normal-force table: body axes
     if tail_choice == "cut-down fin":
         return (LiftingSurface.from_fin(fin),) if fin is not None else ()
     if fin is None:
@@ -249,7 +252,12 @@ def _parachute(reader, params, hardpoints, model, canopy_table):
                                "area' > 0 when it is 0", params.raw("multibody parachute area"))
     chute = read_parachute(reader, params, area)
     if canopy_table == "extended":
-        chute = replace(chute, cd=extended_cd_table())
+        chute = replace(chute, cd=extended_cd_table(), axes="wind")
+    elif chute.axes != "wind":
+        raise params.error("parachute table axes", "the multibody canopy pulls along its "
+                           "relative wind: its table must be in wind axes (CD), or set "
+                           "'multibody canopy CD' to extended", params.raw(
+                               "parachute table axes"))
     if model == "quasi-static":
         return QuasiStaticParachute(chute)
     mass = params.positive("multibody canopy mass")
