@@ -97,7 +97,7 @@ PARAMETERS = (
     Parameter("multibody relative tolerance", "dimensionless", "", 1e-4,
               "Relative tolerance of the adaptive step, > 0 (1e-4: peaks within about 0.02 % "
               "of a tight reference).", _S),
-    Parameter("multibody absolute tolerance", "dimensionless", "", 1e-6,
+    Parameter("multibody absolute tolerance", "dimensionless", "", 1e-5,
               "Absolute tolerance of the adaptive step in SI units of the states (m, m/s, "
               "rad, rad/s), > 0.", _S),
     Parameter("multibody output interval", "time", "s", 0.1,

@@ -45,7 +45,7 @@ from slingloads.models.multibody.equations import N_INFO, N_STATES, evaluate
 #: Runs per block handed to one thread (small blocks balance the load of uneven runs).
 BLOCK = 16
 #: Default tolerances of the adaptive step (states in SI: m, m/s, rad, rad/s). [-], [SI]
-RTOL, ATOL = 1e-4, 1e-6
+RTOL, ATOL = 1e-4, 1e-5
 #: Sampling step of the drive tables (finer where a segment is shorter). [s]
 DRIVE_STEP = 0.01
 #: Smallest adaptive step before a run that leaves a table is stopped. [s]
