@@ -13,10 +13,11 @@ elastic cable, frozen carrier. Every run lasts 60 s of flight, histories every 0
 * **baseline**: the loop a competent engineer writes by hand: one
   :func:`scipy.integrate.solve_ivp` call per run on a lean right-hand side in plain Python
   (``benchmarks/lean_multibody.py``: math-module scalars, not the product's compiled kernel),
-  the integration split at the gust's jumps, and the method and tolerance that just meet the
-  accuracy asked (:data:`BASELINE`, found with ``--calibrate``). The loop is handed the trimmed
-  initial states for free (its trims are not timed, which favours it). It is timed on a
-  sample of runs and scaled to 1,000 (``--full``: every run).
+  the integration split at the gust's jumps, and the method and tolerances that just meet the
+  accuracy asked (:data:`BASELINE`, found with ``--calibrate``: the cheapest that met it on
+  every sampled run and finished them all; looser ones let a trial step leave a table). The
+  loop is handed the trimmed initial states for free (its trims are not timed, which favours
+  it). It is timed on a sample of runs and scaled to 1,000 (``--full``: every run).
 * **accuracy**: peak yaw change and peak lateral swing of the sampled runs, from the batch and
   from the baseline, against a tight reference (DOP853, rtol 1e-10, on the same lean
   right-hand side; split at the jumps); both must lie within 0.5 %.
@@ -70,8 +71,9 @@ DT = None
 #: Accuracy asked of peak yaw and peak lateral swing against the tight reference. [-]
 ACCURACY = 0.005
 #: The baseline's solve_ivp method and tolerances: the cheapest that met ACCURACY on the
-#: calibration runs (``--calibrate``), atol in SI units of the states.
-BASELINE = {"method": "RK45", "rtol": 1e-3, "atol": 1e-6}
+#: sampled runs and finished all of them (``--calibrate``: RK23, RK45, DOP853 and LSODA at
+#: atol 1e-4, 1e-5, 1e-6 and rtol from 0.1 down), atol in SI units of the states.
+BASELINE = {"method": "RK45", "rtol": 3e-3, "atol": 1e-4}
 REFERENCE = {"method": "DOP853", "rtol": 1e-10, "atol": 1e-12}
 
 
@@ -193,19 +195,23 @@ def calibrate(pairs, chosen, x0, references):
     """Print, per method, the loosest rtol meeting ACCURACY and its CPU time per run; then
     the cheapest of them (the baseline to put in :data:`BASELINE`)."""
     best = None
-    for method in ("RK23", "RK45", "DOP853", "LSODA"):
+    for method, atol in itertools.product(("RK23", "RK45", "DOP853", "LSODA"),
+                                          (1e-4, 1e-5, 1e-6)):
         for rtol in (1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 1e-6):
-            settings = {"method": method, "rtol": rtol, "atol": 1e-6}
+            settings = {"method": method, "rtol": rtol, "atol": atol}
             start, worst = time.process_time(), 0.0
             for k in chosen:
                 got = solve_loop(*pairs[k], x0[k], settings)
-                if got is None or references[k] is None:
+                if references[k] is None:
                     continue
+                if got is None:  # a trial step left a table: the run did not finish
+                    worst = np.inf
+                    break
                 worst = max(worst, *(relative_error(g, r) for g, r in
                                      zip(got, references[k], strict=True)))
             per_run = (time.process_time() - start) / len(chosen)
-            print(f"  {method:6s} rtol {rtol:.0e}: worst peak error {100 * worst:.3f} %, "
-                  f"{per_run:.3f} s CPU per run")
+            print(f"  {method:6s} rtol {rtol:.0e} atol {atol:.0e}: worst peak error "
+                  f"{100 * worst:.3f} %, {per_run:.3f} s CPU per run")
             if worst <= ACCURACY:
                 if best is None or per_run < best[0]:
                     best = (per_run, settings)
@@ -265,6 +271,7 @@ def main():
         lambda: {k: solve_loop(*pairs[k], x0[k], BASELINE) for k in chosen})
     batch_worst = loop_worst = 0.0
     compared = 0
+    unfinished = sum(loop_results[k] is None and references[k] is not None for k in checked)
     for k in checked:
         ref, got = references[k], loop_results[k]
         if ref is None or got is None or sim.runs[k].stopped:
@@ -283,7 +290,8 @@ def main():
           f"({scaled_cpu:.0f} s CPU) scaled to {len(pairs)} runs")
     print(f"peak yaw change and peak lateral swing against the tight reference ({compared} "
           f"runs that stayed inside their tables): batch {100 * batch_worst:.3f} %, solve_ivp "
-          f"loop {100 * loop_worst:.3f} % (each must be <= {100 * ACCURACY:.1f} %)")
+          f"loop {100 * loop_worst:.3f} % (each must be <= {100 * ACCURACY:.1f} %); runs the "
+          f"loop could not finish (a trial step left a table): {unfinished}")
     print(f"ratio of the solve_ivp loop to the batch, same process: {scaled / batch:.0f}x wall, "
           f"{scaled_cpu / batch_cpu:.0f}x CPU (target >= 30)")
 
