@@ -4,12 +4,12 @@ System: GENERIC sample aircraft HC1 (blades off, cut-down fin), hinged drogue on
 elastic cable, frozen carrier. Every run lasts 60 s of flight, histories every 0.1 s.
 
 * **one run**: a 10 s lateral gust of 30 ft/s at 80 KEAS, through :func:`simulate` (trim,
-  linear model, integration, histories), cold (first call in the process: compilation or
-  loading of the compiled kernels) and warm.
+  integration, histories), cold (first call in the process: compilation or loading of the
+  compiled kernels) and warm.
 * **batch**: 1,000 different runs through one :func:`simulate_runs` call: 10 parachute areas
   (0.6-1.5 m^2) x 5 airspeeds (60-100 KEAS) x 4 lateral gusts (step, 10 s finite, 1-cosine,
   continuous; 30 ft/s at 5 s) x 5 cable lengths (60-140 ft); where its time goes (trims,
-  linear models, integration) is printed.
+  drive tables, integration) is printed.
 * **baseline**: the loop a competent engineer writes by hand: one
   :func:`scipy.integrate.solve_ivp` call per run on a lean right-hand side in plain Python
   (``benchmarks/lean_multibody.py``: math-module scalars, not the product's compiled kernel),
@@ -66,7 +66,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from lean_multibody import LeftTable, lean_rhs  # noqa: E402
 
 T_END, OUT = 60.0, 0.1
-#: RK4 step of the product: its default, automatic from the fastest linear mode.
+#: Step of the product: its default (None: adaptive, rtol 1e-4, atol 1e-5).
 DT = None
 #: Accuracy asked of peak yaw and peak lateral swing against the tight reference. [-]
 ACCURACY = 0.005
