@@ -9,7 +9,7 @@ all (:mod:`slingloads.io.common.atomic`):
   verdict, one line per run), *Modes* (eigenvalues, frequencies, damping ratios, names, energy
   shares), *StateMatrix* (the A matrix of the linear model), *Metrics* (every run: peaks and
   when, RMS, damping from the response, settling time, verdict and its rule), *Histories*
-  (every run every 0.5 s) and *Plots*;
+  (every run every 1 s) and *Plots*;
 * ``<stem>-multibody-histories.csv``: every run at every stored sample (SI, degrees);
 * ``<stem>-multibody-histories.png`` (yaw, sideslip, swing angles, tension),
   ``-multibody-eigenvalues.png`` (the complex plane) and ``-multibody-views.png`` (side and top
@@ -49,7 +49,7 @@ ANALYSIS = "multibody"
 PLOTS = ("histories", "eigenvalues", "views")
 _PNG_DPI = 80
 #: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
-HISTORY_INTERVAL = 0.5
+HISTORY_INTERVAL = 1.0
 #: Quantity kind of the SI units that appear in the analysis' column headers.
 _KINDS = {"m": "length", "N": "force", "m/s": "speed", "kg": "mass", "m^2": "area"}
 _HEADER_UNIT = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
