@@ -34,6 +34,7 @@ from scipy.integrate import solve_ivp
 from slingloads.analyses.lateral import RunMetrics, default_end_time, sweep
 from slingloads.constants import FOOT, G0
 from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import LateralPendulum, SlungBody
 
 BODIES = [
@@ -107,7 +108,7 @@ def main(argv=None):
           f"{t_end:.1f} s each")
 
     wall, cpu = time.perf_counter(), time.process_time()
-    metrics, h = sweep(pendulums, motions, t_end=t_end, step=args.step)
+    metrics, h = sweep(pendulums, motions, solver=SolverSettings(t_end=t_end, step=args.step))
     t_vec, c_vec = time.perf_counter() - wall, time.process_time() - cpu
     print(f"  vectorised RK4 (step {h:.4g} s): {t_vec:8.2f} s wall, {c_vec:8.2f} s CPU")
 

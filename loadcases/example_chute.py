@@ -25,10 +25,11 @@ from slingloads.analyses.chute_sizing import line_length, neutral_area
 from slingloads.constants import FOOT, KNOT
 from slingloads.models.aerodynamics import Fin
 from slingloads.models.airframe import yaw_inertia_about_hub
+from slingloads.models.flight import FlightCondition
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
 from slingloads.models.wake import TabulatedWake
-from slingloads.models.yaw_dynamics import FlightCondition, YawModel
+from slingloads.models.yaw_dynamics import YawModel
 
 #: Sizing airspeed of the example (the paper's 80 KIAS). [kt]
 AIRSPEED_KT = 80.0

@@ -10,7 +10,6 @@ from scipy.special import ellipk
 
 from slingloads.analyses.lateral import (
     REGULATORY_ANGLE,
-    SolverSettings,
     acceleration_sweep,
     lateral_study,
     simulate,
@@ -25,6 +24,7 @@ from slingloads.models.carrier_motion import (
     TimeHistory,
     VelocityStep,
 )
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import LateralPendulum, SlungBody
 
 UH60 = SlungBody(7439.0, 7632.0, 1.722, "UH-60A")   # NASA TM 85890
@@ -47,10 +47,11 @@ def test_vectorised_sweep_agrees_with_solve_ivp():
         (LateralPendulum(UH60, ROPES[1]), history),
     ]
     pendulums, motions = zip(*cases, strict=True)
-    metrics, _ = sweep(pendulums, motions, t_end=12.0)
-    solver = SolverSettings("DOP853", rtol=1e-10, atol=1e-12, output_step=0.002)
+    metrics, _ = sweep(pendulums, motions, solver=SolverSettings(t_end=12.0))
+    solver = SolverSettings(t_end=12.0, output_interval=0.002, method="DOP853", rtol=1e-10,
+                            atol=1e-12)
     for i, (p, m) in enumerate(cases):
-        ref = simulate(p, m, t_end=12.0, solver=solver).metrics
+        ref = simulate(p, m, solver=solver).metrics
         assert metrics.max_load_angle[i] == pytest.approx(ref.max_load_angle, rel=1e-3)
         assert metrics.max_rope_angle[i] == pytest.approx(ref.max_rope_angle, rel=1e-3)
         assert metrics.max_tension_ratio[i] == pytest.approx(ref.max_tension_ratio, rel=1e-3)
@@ -61,7 +62,8 @@ def test_vectorised_sweep_agrees_with_solve_ivp():
 def point_mass_study():
     accelerations = [0.1 * G0, 0.3 * G0, 0.5 * G0]
     motions = [ConstantAcceleration(a, 100.0) for a in accelerations]  # held throughout
-    return lateral_study([POINT], ROPES, motions, margin=1.25, t_end=12.0)
+    return lateral_study([POINT], ROPES, motions, margin=1.25,
+                         solver=SolverSettings(t_end=12.0))
 
 
 def test_point_mass_study_against_closed_form(point_mass_study):
@@ -131,7 +133,7 @@ def test_acceleration_sweep_peaks():
     ({"margin": 1.5, "rope_lengths": [18.0, 0.0]}, r"rope length must be > 0 \[m\]: value 0.0"),
     ({"margin": 1.5, "motions": []}, r"at least one motion"),
     ({"margin": 1.5, "bodies": [1000.0]}, r"SlungBody.*'float'"),
-    ({"margin": 1.5, "t_end": -1.0}, r"t_end must be > 0 \[s\]: value -1.0"),
+    ({"margin": 1.5, "solver": 12.0}, r"must be a SolverSettings: value 'float'"),
 ])
 def test_bad_study_input(kwargs, match):
     """Bad study input raises InputError naming the rule and echoing the value."""
@@ -145,7 +147,8 @@ def test_plots_draw_the_results(point_mass_study):
     """The plots draw the data they are given: the load-angle curve is the run's
     theta1 - theta2 in degrees, the 30 deg line is drawn, and the envelope plot has one line
     per rope length at the closed-form 2 atan(a/g)."""
-    run = simulate(LateralPendulum(UH60, ROPES[0]), SmoothStep(5.0, 2.0), t_end=8.0)
+    run = simulate(LateralPendulum(UH60, ROPES[0]), SmoothStep(5.0, 2.0),
+                   solver=SolverSettings(t_end=8.0))
     fig = plot_time_histories(run)
     assert isinstance(fig, Figure)
     lines = fig.axes[0].get_lines()

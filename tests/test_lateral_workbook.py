@@ -35,6 +35,7 @@ from slingloads.models.carrier_motion import (
     TimeHistory,
     VelocityStep,
 )
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
@@ -96,7 +97,8 @@ def test_recommended_angle_workbook_equals_api(study, result):
             h = hist[hist["history id"] == r["history"]]
             motions.append(TimeHistory(h["t [s]"].to_numpy(), h["S [m]"].to_numpy()))
     ropes = [ft * FOOT for ft in (18.0, 60.0, 100.0)]
-    api = lateral_study([body], ropes, motions, margin=1.5, t_end=30.0, step=0.05)
+    api = lateral_study([body], ropes, motions, margin=1.5,
+                        solver=SolverSettings(t_end=30.0, step=0.05))
     got = result.inputs.bodies[0]
     assert (got.mass, got.roll_inertia, got.cg_below_hub) == pytest.approx(
         (body.mass, body.roll_inertia, body.cg_below_hub), rel=1e-12)

@@ -13,18 +13,21 @@ length L, rigid body of mass m, radius of gyration k, CG a distance e below the 
 * static tension equal to the weight.
 """
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from slingloads.analyses.lateral import SolverSettings, simulate, sweep
+from slingloads.analyses.lateral import simulate, sweep
 from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
 from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep, VelocityStep
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import LateralPendulum, SlungBody, hub_load_airframe_axes
 
 UH60 = SlungBody(7439.0, 7632.0, 1.722, "UH-60A")  # NASA TM 85890 mass, Ixx, hub above CG
-TIGHT = SolverSettings(method="DOP853", rtol=1e-10, atol=1e-12, output_step=0.005)
+TIGHT = SolverSettings(output_interval=0.005, method="DOP853", rtol=1e-10, atol=1e-12)
 FIXED = VelocityStep(0.0)  # the hook does not move
 
 
@@ -81,7 +84,7 @@ def test_nonlinear_small_swing_period_matches_quartic(mode):
     shape = modes.shapes[mode, :2] * 1e-4
     omega = quartic_omegas(L, UH60.radius_of_gyration, UH60.cg_below_hub)[mode]
     period = 2 * np.pi / omega
-    run = simulate(pendulum, FIXED, t_end=5 * period, solver=TIGHT,
+    run = simulate(pendulum, FIXED, solver=replace(TIGHT, t_end=5 * period),
                    x0=[shape[0], shape[1], 0.0, 0.0])
     theta = run.theta1
     # upward zero crossings of theta1 (a cosine started at its maximum), interpolated
@@ -97,8 +100,8 @@ def test_point_mass_acceleration_step_peak_swing(accel_g):
     L, a = 10.0, accel_g * G0
     pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), L)
     period = 2 * np.pi * np.sqrt(L / G0)
-    run = simulate(pendulum, ConstantAcceleration(a, 10 * period), t_end=1.5 * period,
-                   solver=TIGHT)
+    run = simulate(pendulum, ConstantAcceleration(a, 10 * period),
+                   solver=replace(TIGHT, t_end=1.5 * period))
     expected = 2 * np.arctan(a / G0)
     assert run.metrics.max_rope_angle == pytest.approx(expected, rel=1e-6)
     assert run.theta1.min() == pytest.approx(-expected, rel=1e-6)
@@ -113,7 +116,7 @@ def test_point_mass_velocity_step():
     L, dv = 10.0, 4.0
     pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), L)
     period = 2 * np.pi * np.sqrt(L / G0)
-    run = simulate(pendulum, VelocityStep(dv), t_end=period, solver=TIGHT)
+    run = simulate(pendulum, VelocityStep(dv), solver=replace(TIGHT, t_end=period))
     assert np.cos(run.metrics.max_rope_angle) == pytest.approx(1 - dv**2 / (2 * G0 * L),
                                                                rel=1e-7)
     assert run.metrics.max_tension_ratio == pytest.approx(1 + dv**2 / (G0 * L), rel=1e-9)
@@ -145,7 +148,7 @@ def test_energy_conserved_rigid_rope():
     """Fixed support, no damping: total energy is conserved (to 1e-8 of m g L) through a
     large-amplitude swing with both modes excited."""
     pendulum = LateralPendulum(UH60, 18.0 * FOOT)
-    run = simulate(pendulum, FIXED, t_end=10.0, solver=TIGHT, x0=[0.6, -0.4, 0.0, 0.5])
+    run = simulate(pendulum, FIXED, solver=replace(TIGHT, t_end=10.0), x0=[0.6, -0.4, 0.0, 0.5])
     energy = _energy(run)
     scale = pendulum.weight * pendulum.rope_length
     assert np.ptp(energy) < 1e-8 * scale
@@ -157,8 +160,9 @@ def test_energy_conserved_elastic_cable_through_slack():
     conservative)."""
     pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=2e7)
     x0 = [0.0, -pendulum.hanging_length, 0.0, 7.0, 4.0, 1.5]
-    run = simulate(pendulum, FIXED, t_end=6.0, x0=x0,
-                   solver=SolverSettings("DOP853", 1e-11, 1e-12, output_step=0.002))
+    run = simulate(pendulum, FIXED, x0=x0,
+                   solver=SolverSettings(t_end=6.0, output_interval=0.002, method="DOP853",
+                                         rtol=1e-11, atol=1e-12))
     assert run.metrics.slack  # the case does go slack
     energy = _energy(run)
     assert np.ptp(energy) < 1e-6 * pendulum.weight * pendulum.rope_length
@@ -167,7 +171,7 @@ def test_energy_conserved_elastic_cable_through_slack():
 def test_damping_only_dissipates():
     """With aerodynamic damping and a fixed support, energy never increases (dissipation)."""
     pendulum = LateralPendulum(UH60, 18.0 * FOOT, lateral_damping=2000.0, roll_damping=5000.0)
-    run = simulate(pendulum, FIXED, t_end=15.0, solver=TIGHT, x0=[0.4, -0.2, 0.0, 0.3])
+    run = simulate(pendulum, FIXED, solver=replace(TIGHT, t_end=15.0), x0=[0.4, -0.2, 0.0, 0.3])
     energy = _energy(run)
     assert np.all(np.diff(energy) <= 1e-9 * pendulum.weight)
     assert energy[-1] < energy[0]
@@ -183,7 +187,7 @@ def test_elastic_cable_converges_to_rigid_rope():
     eas = [1e6, 1e7, 1e8]
     pendulums = [LateralPendulum(UH60, L, cable_ea=ea) for ea in eas]
     pendulums.append(LateralPendulum(UH60, L))
-    metrics, _ = sweep(pendulums, [motion] * len(pendulums), t_end=8.0)
+    metrics, _ = sweep(pendulums, [motion] * len(pendulums), solver=SolverSettings(t_end=8.0))
     angle = metrics.max_load_angle
     error = np.abs(angle[:-1] - angle[-1]) / angle[-1]
     assert np.all(np.diff(error) < 0)
@@ -199,7 +203,7 @@ def test_static_tension_equals_weight(cable_ea):
     (static equilibrium), and the elastic cable is stretched by m g/(EA/L)."""
     L = 60.0 * FOOT
     pendulum = LateralPendulum(UH60, L, cable_ea=cable_ea)
-    run = simulate(pendulum, FIXED, t_end=5.0)
+    run = simulate(pendulum, FIXED, solver=SolverSettings(t_end=5.0))
     assert_allclose(run.tension, UH60.mass * G0, rtol=1e-7)
     fy, fz = run.hub_load
     assert_allclose(fy, 0.0, atol=1e-9 * UH60.mass * G0)
@@ -248,7 +252,7 @@ def test_load_angle_is_an_angle_between_directions():
     assert load_angle(0.0, np.radians(190.0)) == pytest.approx(np.radians(170.0))
     pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=2e7)
     x0 = [0.0, -pendulum.hanging_length, 0.0, 0.0, 0.0, 12.0]  # airframe spun fast
-    run = simulate(pendulum, FIXED, t_end=4.0, x0=x0)
+    run = simulate(pendulum, FIXED, solver=SolverSettings(t_end=4.0), x0=x0)
     assert np.ptp(run.theta2) > 2 * np.pi
     assert np.all(np.abs(run.load_angle) <= np.pi)
     assert run.metrics.max_load_angle <= np.pi

@@ -26,12 +26,13 @@ import pandas as pd
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import linear_fit
 from slingloads.models.gusts import standard_gusts
+from slingloads.models.integration import SolverSettings
 from slingloads.models.wake import CABLE_MARGIN, TARGET_RATIO, check_cable_length
 from slingloads.models.yaw_dynamics import (
-    SolverSettings,
     YawModel,
     integrate_reference,
     integrate_rk4,
+    yaw_solver_settings,
 )
 
 #: Default sideslip range of the local linearisation. [rad]
@@ -235,7 +236,7 @@ def linear_yaw(model, area, fit_range=FIT_RANGE):
     if not np.isfinite(area) or area < 0:
         raise InputError("parachute area must be >= 0 [m^2]", area)
     lin = yaw_linearisation(model, fit_range)
-    q, rho, v = model.condition.q, model.condition.density, model.condition.tas
+    q, rho, v = model.condition.dynamic_pressure, model.condition.density, model.condition.tas
     parts = {}
     if lin.fuselage_slope is not None:
         f = model.fuselage
@@ -351,7 +352,7 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
         raise InputError("the parachute attachment must lie aft of the suspension axis "
                          "(dx > 0 [m]) to stabilise", float(dx))
     base = linear_yaw(model, 0.0, fit_range)
-    per_area = model.condition.q * model.chute_drag_coefficient * dx
+    per_area = model.condition.dynamic_pressure * model.chute_drag_coefficient * dx
     others = sum(k for name, (k, _) in base.parts.items() if name != "parachute")
     area = -others / per_area
     derivs = {name: k for name, (k, _) in base.parts.items() if name != "parachute"}
@@ -369,8 +370,9 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
         moments["fin"] = n_fin
     moments["parachute"] = n_chute
     moments["total"] = n_fus + n_fin + n_chute
-    return NeutralAreaResult(float(area), derivs, float(per_area), model.condition.q, float(dx),
-                             beta_plot, moments, yaw_linearisation(model, fit_range))
+    return NeutralAreaResult(float(area), derivs, float(per_area),
+                             model.condition.dynamic_pressure, float(dx), beta_plot, moments,
+                             yaw_linearisation(model, fit_range))
 
 
 # ------------------------------------------------------------------------ line length
@@ -596,7 +598,7 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     if integrator not in ("rk4", "solve_ivp"):
         raise InputError(f"{integrator=!r} is not a valid option. Valid options are: "
                          f"'rk4', 'solve_ivp'", integrator)
-    settings = SolverSettings() if settings is None else settings
+    settings = yaw_solver_settings(settings)
     metrics = MetricSettings() if metrics is None else metrics
     areas = np.atleast_1d(np.asarray(areas, dtype=float))
     gust_list = tuple(gusts) if isinstance(gusts, (list, tuple)) else (gusts,)

@@ -10,13 +10,14 @@ The recommended design angle is that maximum times a stated margin.
 
 Two integrators:
 
-* :func:`simulate`: one run with :func:`scipy.integrate.solve_ivp` (solver settings in
-  :class:`SolverSettings`), integrated piecewise between the motion's breakpoints; gives
-  time histories.
+* :func:`simulate`: one run with :func:`scipy.integrate.solve_ivp` (settings in
+  :class:`~slingloads.models.integration.SolverSettings`: ``method``, ``rtol``, ``atol``,
+  ``max_step``, ``t_end``, ``output_interval``), integrated piecewise between the motion's
+  breakpoints; gives time histories.
 * :func:`sweep`: many runs at once, a fixed-step classical Runge-Kutta (RK4) scheme whose
   state is an array of shape (states, runs), so that each step is a handful of numpy
   operations for all runs; gives the per-run metrics. Its step is chosen from the fastest
-  natural mode unless given.
+  natural mode unless given (``SolverSettings.step``).
 
 References
 ----------
@@ -28,7 +29,7 @@ References
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 import pandas as pd
@@ -42,6 +43,7 @@ from slingloads.models.carrier_motion import (
     SmoothStep,
     TimeHistory,
 )
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import (
     LateralPendulum,
     SlungBody,
@@ -63,50 +65,8 @@ DEFAULT_ACCELERATIONS = tuple(n * G0 for n in (0.1, 0.2, 0.3, 0.4, 0.5))
 #: A default sweep of motion durations. [s]
 DEFAULT_DURATIONS = (0.5, 1.0, 2.0, 4.0)
 
-_SOLVE_IVP_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
-
-
-@dataclass(frozen=True)
-class SolverSettings:
-    """Settings of :func:`scipy.integrate.solve_ivp` for single runs.
-
-    The defaults resolve the peak load angle to about 1e-6 relative. Tighten ``rtol`` when
-    comparing against closed forms at better than 1e-5; set ``max_step`` below the shortest
-    feature of the input (the run is already split at the motion's breakpoints, and a
-    time history limits the step to its smallest sample interval); prefer ``"DOP853"`` for
-    tight tolerances and ``"Radau"`` or ``"LSODA"`` for a very stiff elastic cable
-    (EA/l over m much above the swing frequencies squared).
-
-    Parameters
-    ----------
-    method : str
-        A solve_ivp method: "RK45", "RK23", "DOP853", "Radau", "BDF" or "LSODA".
-    rtol : float
-        Relative tolerance, > 0. [-]
-    atol : float
-        Absolute tolerance, > 0 (states in rad, m, rad/s, m/s).
-    max_step : float
-        Largest step, > 0 (inf: no limit). [s]
-    output_step : float
-        Interval of the time histories, > 0; peaks between samples are refined by a
-        parabola through the three samples around them. [s]
-    """
-
-    method: str = "RK45"
-    rtol: float = 1e-8
-    atol: float = 1e-10
-    max_step: float = np.inf
-    output_step: float = 0.01
-
-    def __post_init__(self):
-        if self.method not in _SOLVE_IVP_METHODS:
-            raise InputError(f"solver method is not a valid option; valid options are "
-                             f"{list(_SOLVE_IVP_METHODS)}", self.method)
-        for name in ("rtol", "atol", "max_step", "output_step"):
-            value = float(getattr(self, name))
-            if np.isnan(value) or value <= 0:
-                raise InputError(f"solver {name} must be > 0", value)
-            object.__setattr__(self, name, value)
+#: Default interval of the time histories of single runs. [s]
+OUTPUT_INTERVAL = 0.01
 
 
 def _refine(y0, y1, y2):
@@ -327,7 +287,7 @@ class LateralRun:
         return frame
 
 
-def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
+def simulate(pendulum, motion, *, solver=None, x0=None):
     """One run of the lateral pendulum with :func:`scipy.integrate.solve_ivp`.
 
     Starts hanging at rest under the hook; a jump of the hook's speed at t = 0 (velocity step)
@@ -338,9 +298,9 @@ def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
     ----------
     pendulum : LateralPendulum
     motion : carrier motion (see :mod:`slingloads.models.carrier_motion`)
-    t_end : float, optional
-        Run length, > 0 (default :func:`default_end_time`). [s]
     solver : SolverSettings, optional
+        ``method``, ``rtol``, ``atol``, ``max_step``; ``t_end`` (default
+        :func:`default_end_time`) and ``output_interval`` (default 0.01 s). [s]
     x0 : array_like, optional
         Initial state in the order of ``pendulum.state_names`` (default: hanging at rest,
         plus the motion's velocity jump). [rad, m, rad/s, m/s]
@@ -352,14 +312,12 @@ def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
     Raises
     ------
     InputError
-        For a bad run length or initial state, or if the integrator fails.
+        For a bad initial state, or if the integrator fails.
     """
-    solver = SolverSettings() if solver is None else solver
-    if t_end is None:
-        t_end = default_end_time([pendulum], [motion])
-    t_end = float(t_end)
-    if not np.isfinite(t_end) or t_end <= 0:
-        raise InputError("run length t_end must be > 0 [s]", t_end)
+    solver = _settings(solver).with_defaults(output_interval=OUTPUT_INTERVAL)
+    if solver.t_end is None:
+        solver = solver.with_defaults(t_end=default_end_time([pendulum], [motion]))
+    t_end = solver.t_end
     max_step = solver.max_step
     if isinstance(motion, TimeHistory):
         max_step = min(max_step, motion.min_interval)
@@ -368,7 +326,7 @@ def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
         _, v, a = motion.kinematics(t)
         return pendulum.derivatives(x, v, a)[0]
 
-    n_out = max(int(np.ceil(t_end / solver.output_step - 1e-9)), 2)
+    n_out = max(int(np.ceil(t_end / solver.output_interval - 1e-9)), 2)
     t_out = np.linspace(0.0, t_end, n_out + 1)
     cuts = np.unique(np.clip([0.0, *motion.breakpoints, t_end], 0.0, t_end))
     if x0 is None:
@@ -396,12 +354,20 @@ def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
     return LateralRun(pendulum, motion, t_out, states, carrier, tension, solver)
 
 
+def _settings(solver):
+    if solver is None:
+        return SolverSettings()
+    if not isinstance(solver, SolverSettings):
+        raise InputError("solver settings must be a SolverSettings", type(solver).__name__)
+    return solver
+
+
 def _stack_parameters(pendulums):
     rows = [p.arrays() for p in pendulums]
     return {k: np.array([r[k] for r in rows]) for k in rows[0]}
 
 
-def sweep(pendulums, motions, *, t_end=None, step=None):
+def sweep(pendulums, motions, *, solver=None):
     """Per-run metrics of many runs, integrated together by vectorised RK4.
 
     Run i is ``pendulums[i]`` under ``motions[i]``. All runs share one time grid: uniform,
@@ -415,12 +381,12 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
     ----------
     pendulums : sequence of LateralPendulum, length runs
     motions : sequence of carrier motions, length runs
-    t_end : float, optional
-        Common run length (default :func:`default_end_time` over all runs). [s]
-    step : float, optional
-        RK4 step. Default: min(0.01 s, 0.25/omega_max) with omega_max the fastest natural
-        mode of any run (the elastic cable's bounce mode when present); this keeps the
-        peak load angle and tension within about 1e-4 of a tight solve_ivp solution. [s]
+    solver : SolverSettings, optional
+        ``t_end``: common run length (default :func:`default_end_time` over all runs) [s];
+        ``step``: RK4 step, default min(0.01 s, 0.25/omega_max) with omega_max the fastest
+        natural mode of any run (the elastic cable's bounce mode when present), which keeps
+        the peak load angle and tension within about 1e-4 of a tight solve_ivp solution. [s]
+        The grid has a whole number of steps, so the step used may be slightly shorter.
 
     Returns
     -------
@@ -433,16 +399,8 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
     if len(pendulums) != len(motions) or not pendulums:
         raise InputError("a sweep needs one motion per pendulum, and at least one run",
                          (len(pendulums), len(motions)))
-    if t_end is None:
-        t_end = default_end_time(pendulums, motions)
-    t_end = float(t_end)
-    if not np.isfinite(t_end) or t_end <= 0:
-        raise InputError("run length t_end must be > 0 [s]", t_end)
-    if step is None:
-        step = min(0.01, 0.25 / max(_fastest_mode(p) for p in pendulums))
-    step = float(step)
-    if not np.isfinite(step) or step <= 0:
-        raise InputError("RK4 step must be > 0 [s]", step)
+    solver = sweep_settings(pendulums, motions, solver)
+    t_end, step = solver.t_end, solver.step
     n_steps = max(int(np.ceil(t_end / step - 1e-9)), 2)
     h = t_end / n_steps
     nodes, jumps = _time_nodes(t_end, n_steps, motions)
@@ -457,6 +415,18 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
         for name in out:
             out[name][idx] = getattr(metrics, name)
     return RunMetrics(**out), h
+
+
+def sweep_settings(pendulums, motions, solver=None):
+    """``solver`` with the sweep's automatic run length and RK4 step filled in where unset
+    (see :func:`sweep`)."""
+    solver = _settings(solver)
+    if solver.t_end is None:
+        solver = solver.with_defaults(t_end=default_end_time(pendulums, motions))
+    if solver.step is None:
+        solver = solver.with_defaults(
+            step=min(0.01, 0.25 / max(_fastest_mode(p) for p in pendulums)))
+    return solver
 
 
 def _time_nodes(t_end, n_steps, motions):
@@ -620,7 +590,7 @@ def airframe_body(airframe, name="airframe (MassItems)"):
 
 
 def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None,
-                  lateral_damping=0.0, roll_damping=0.0, t_end=None, step=None,
+                  lateral_damping=0.0, roll_damping=0.0, solver=None,
                   gravity=G0, regulatory_angle=REGULATORY_ANGLE):
     """The design-angle study: every body x rope length x carrier motion.
 
@@ -638,8 +608,10 @@ def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None,
         Cable EA (None: rigid rope). [N]
     lateral_damping, roll_damping : float
         Aerodynamic damping, off by default. [N s/m], [N m s/rad]
-    t_end, step : float, optional
-        Run length and RK4 step, see :func:`sweep`. [s]
+    solver : SolverSettings, optional
+        ``t_end`` and ``step`` of the sweep (see :func:`sweep`; default: the longest motion
+        plus three periods of the slowest swing mode, and a step from the fastest mode); the
+        solve_ivp settings and ``output_interval`` of :meth:`LateralStudy.run_case`.
     gravity : float
         [m/s^2]
     regulatory_angle : float
@@ -673,11 +645,12 @@ def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None,
                                    range(len(motions))))
     case_pendulums = [pendulums[ib, il] for ib, il, _ in cases]
     case_motions = [motions[im] for _, _, im in cases]
-    if t_end is None:
-        t_end = default_end_time(pendulums.values(), motions)
-    metrics, h = sweep(case_pendulums, case_motions, t_end=t_end, step=step)
+    solver = _settings(solver)
+    if solver.t_end is None:
+        solver = solver.with_defaults(t_end=default_end_time(pendulums.values(), motions))
+    metrics, h = sweep(case_pendulums, case_motions, solver=solver)
     return LateralStudy(tuple(case_pendulums), tuple(case_motions), metrics, margin,
-                        float(t_end), h, float(regulatory_angle))
+                        solver.t_end, h, float(regulatory_angle), solver)
 
 
 @dataclass(frozen=True, eq=False)
@@ -692,6 +665,7 @@ class LateralStudy:
     t_end : float, common run length [s]
     step : float, RK4 step used [s]
     regulatory_angle : float [rad]
+    solver : SolverSettings, the settings of :meth:`run_case` (its ``t_end`` is the sweep's)
     """
 
     pendulums: tuple
@@ -701,6 +675,7 @@ class LateralStudy:
     t_end: float
     step: float
     regulatory_angle: float = REGULATORY_ANGLE
+    solver: SolverSettings = SolverSettings()
 
     @property
     def critical_index(self):
@@ -799,6 +774,7 @@ class LateralStudy:
         index : int, optional
             0-based case index (the ``case`` column minus 1).
         solver : SolverSettings, optional
+            solve_ivp settings (default the study's); the run length is the study's.
 
         Returns
         -------
@@ -807,5 +783,6 @@ class LateralStudy:
         index = self.critical_index if index is None else int(index)
         if not 0 <= index < len(self.pendulums):
             raise InputError(f"case index must lie in [0, {len(self.pendulums) - 1}]", index)
-        return simulate(self.pendulums[index], self.motions[index], t_end=self.t_end,
-                        solver=solver)
+        solver = self.solver if solver is None else _settings(solver)
+        return simulate(self.pendulums[index], self.motions[index],
+                        solver=replace(solver, t_end=self.t_end))

@@ -56,120 +56,17 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
-from slingloads.models.atmosphere import dynamic_pressure_eas, isa_density, true_airspeed
+from slingloads.models.flight import SIZING_SPEED, FlightCondition
+from slingloads.models.integration import SolverSettings
 from slingloads.models.parachute import Parachute
 
-#: The paper's 1-DOF condition: 80 KIAS at ISA sea level.
-DEFAULT_SPEED = 80.0 * KNOT
+#: Defaults of the yaw runs: 120 s at a 0.05 s RK4 step, stored every 0.1 s. [s]
+YAW_SOLVER_DEFAULTS = {"t_end": 120.0, "step": 0.05, "output_interval": 0.1}
 #: Half-width of the sideslip interval searched for the yaw trim. [rad]
 TRIM_SEARCH = np.radians(20.0)
-
-
-@dataclass(frozen=True)
-class FlightCondition:
-    """Flight condition of the carrier, and the trimmed angle of attack of the carried HC.
-
-    Parameters
-    ----------
-    ias : float
-        Indicated airspeed, taken equal to equivalent airspeed, > 0. [m/s]
-    altitude : float
-        ISA (density) altitude. [m]
-    alpha : float
-        Angle of attack of the carried helicopter in trim. [rad]
-    """
-
-    ias: float = DEFAULT_SPEED
-    altitude: float = 0.0
-    alpha: float = 0.0
-
-    def __post_init__(self):
-        v = float(self.ias)
-        if not np.isfinite(v) or v <= 0:
-            raise InputError("airspeed must be > 0 [m/s]", v)
-        alpha = float(self.alpha)
-        if not np.isfinite(alpha):
-            raise InputError("trim angle of attack must be finite [rad]", alpha)
-        object.__setattr__(self, "ias", v)
-        object.__setattr__(self, "alpha", alpha)
-        object.__setattr__(self, "altitude", float(self.altitude))
-        isa_density(self.altitude)  # validates the altitude
-
-    @property
-    def density(self):
-        """Air density. [kg/m^3]"""
-        return float(isa_density(self.altitude))
-
-    @property
-    def tas(self):
-        """True airspeed. [m/s]"""
-        return float(true_airspeed(self.ias, self.altitude))
-
-    @property
-    def q(self):
-        """Free-stream dynamic pressure 1/2 rho0 V_EAS^2. [Pa]"""
-        return float(dynamic_pressure_eas(self.ias))
-
-
-@dataclass(frozen=True)
-class SolverSettings:
-    """Time integration settings.
-
-    Parameters
-    ----------
-    t_end : float
-        Simulated time. [s]
-    dt : float
-        Fixed step of the vectorised RK4 integrator. Put gust onsets and ends on multiples of
-        it (the defaults do); a jump inside a step costs accuracy there. Halve it and compare
-        if in doubt: RK4's error falls 16-fold. [s]
-    output_interval : float
-        Sampling interval of the stored histories, a multiple of ``dt``. [s]
-    method, rtol, atol, max_step :
-        Settings of the :func:`scipy.integrate.solve_ivp` reference integrator. Tighten
-        ``rtol`` when comparing against RK4 at small ``dt``. The step is also capped at
-        ``output_interval``: from a trimmed rest an adaptive solver would otherwise take steps
-        long enough to jump over a finite gust without seeing it.
-    """
-
-    t_end: float = 120.0
-    dt: float = 0.05
-    output_interval: float = 0.1
-    method: str = "RK45"
-    rtol: float = 1e-8
-    atol: float = 1e-10
-    max_step: float = np.inf
-
-    def __post_init__(self):
-        for name in ("t_end", "dt", "output_interval", "rtol", "atol", "max_step"):
-            value = float(getattr(self, name))
-            if np.isnan(value) or value <= 0:
-                raise InputError(f"solver setting {name} must be > 0", value)
-            object.__setattr__(self, name, value)
-        ratio = self.output_interval / self.dt
-        if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
-            raise InputError("solver output_interval must be a whole multiple of dt [s]",
-                             self.output_interval)
-        steps = self.t_end / self.dt
-        if abs(steps - round(steps)) > 1e-9 * steps:
-            raise InputError("solver t_end must be a whole multiple of dt [s]", self.t_end)
-
-    @property
-    def n_steps(self):
-        return int(round(self.t_end / self.dt))
-
-    @property
-    def output_every(self):
-        return int(round(self.output_interval / self.dt))
-
-    @property
-    def output_times(self):
-        """Times of the stored samples. [s]"""
-        return np.arange(self.n_steps // self.output_every + 1) * self.output_interval
 
 
 @dataclass(frozen=True)
@@ -188,6 +85,7 @@ class YawModel:
         Yaw inertia about the suspension axis (Izz about the CG plus m d^2 for a hub offset
         horizontally from the CG by d), > 0. [kg m^2]
     condition : FlightCondition
+        Airspeed > 0 (default the paper's 80 KIAS at ISA sea level) and trim angle of attack.
     parachute : Parachute or None
         Drag coefficient (at canopy alpha 0: the canopy trails along the flow) times the wake
         ratio, the one factor that carries the wake loss (:mod:`slingloads.models.parachute`);
@@ -200,7 +98,8 @@ class YawModel:
     fin: Fin | None
     hardpoints: Hardpoints
     yaw_inertia: float
-    condition: FlightCondition = field(default_factory=FlightCondition)
+    condition: FlightCondition = field(
+        default_factory=lambda: FlightCondition(SIZING_SPEED))
     parachute: Parachute | None = None
     fin_rate_damping: bool = True
 
@@ -209,6 +108,12 @@ class YawModel:
         if not np.isfinite(inertia) or inertia <= 0:
             raise InputError("yaw inertia must be > 0 [kg m^2]", inertia)
         object.__setattr__(self, "yaw_inertia", inertia)
+        if not isinstance(self.condition, FlightCondition):
+            raise InputError("the yaw model's condition must be a FlightCondition",
+                             type(self.condition).__name__)
+        if self.condition.hover:
+            raise InputError("the yaw model needs an airspeed > 0 [m/s] (its stiffness and "
+                             "damping come from the free stream)", self.condition.eas)
         object.__setattr__(self, "_half_rho", 0.5 * self.condition.density)
         object.__setattr__(self, "_tas", self.condition.tas)
         hub = self.hardpoints.hub
@@ -393,6 +298,18 @@ class Histories:
     exit_time: np.ndarray
 
 
+def yaw_solver_settings(settings=None):
+    """``settings`` (default :class:`SolverSettings`) with the yaw runs' defaults filled in
+    (:data:`YAW_SOLVER_DEFAULTS`) and its fixed grid checked: ``t_end`` and
+    ``output_interval`` must be whole multiples of ``step``."""
+    settings = SolverSettings() if settings is None else settings
+    if not isinstance(settings, SolverSettings):
+        raise InputError("solver settings must be a SolverSettings", type(settings).__name__)
+    settings = settings.with_defaults(**YAW_SOLVER_DEFAULTS)
+    settings.fixed_grid()
+    return settings
+
+
 def _distinct(gusts):
     """Distinct gust objects (by identity) and each run's index into them."""
     seen, unique, index = {}, [], []
@@ -456,9 +373,10 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     tables' breakpoints; a run that leaves a table is flagged and frozen, never clamped
     silently.
     """
-    settings = SolverSettings() if settings is None else settings
+    settings = yaw_solver_settings(settings)
+    n, every = settings.fixed_grid()
     areas, gusts, psi, rate = _check_runs(model, areas, gusts, psi0, rate0)
-    runs, dt, n = areas.size, settings.dt, settings.n_steps
+    runs, dt = areas.size, settings.step
     unique, index = _distinct(gusts)
     t = np.arange(n + 1) * dt
     tables = []
@@ -467,7 +385,6 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
         gamma, v_rel = model.relative_wind(v)
         tables.append((gamma.T.copy(), v_rel.T.copy()))  # (times, unique)
     (g0, w0), (gm, wm), (g1, w1), (gt, _) = tables
-    every = settings.output_every
     n_out = n // every + 1
     out_psi, out_rate = np.empty((runs, n_out)), np.empty((runs, n_out))
     out_psi[:, 0], out_rate[:, 0] = psi, rate
@@ -509,9 +426,9 @@ def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None)
     times. It is the reference for runs that stay inside their tables: a run found outside
     them at an output time is flagged (``left_table``) but not frozen.
     """
-    settings = SolverSettings() if settings is None else settings
+    settings = yaw_solver_settings(settings)
     areas, gusts, psi0, rate0 = _check_runs(model, areas, gusts, psi0, rate0)
-    times = settings.output_times
+    times = settings.output_times()
     runs = areas.size
     # From a trimmed rest the adaptive step grows without bound and could jump over a finite
     # gust entirely; the step is therefore capped at the output interval.

@@ -21,12 +21,13 @@ from slingloads.io.chute.schema import INERTIA_SOURCES, INTEGRATORS, SHEETS, WAK
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import located
 from slingloads.models.airframe import yaw_inertia_about_hub
+from slingloads.models.flight import FlightCondition
 from slingloads.models.gusts import GUST_KINDS, make_gust
+from slingloads.models.integration import SOLVE_IVP_METHODS, SolverSettings
 from slingloads.models.wake import BluffBodyWake, TabulatedWake
-from slingloads.models.yaw_dynamics import FlightCondition, SolverSettings, YawModel
+from slingloads.models.yaw_dynamics import YawModel
 
 ANALYSIS = "chute sizing"
-_SOLVE_IVP_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 
 
 @dataclass(frozen=True)
@@ -101,11 +102,12 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule.
     """
     file = reader.file
-    # ---- condition
+    # ---- condition (IAS taken equal to EAS)
     ias = params.positive("chute sizing airspeed IAS")
     with located(file, STUDY_SHEET, params.where("chute sizing density altitude")):
-        condition = FlightCondition(ias, params("chute sizing density altitude"),
-                                    params("chute sizing alpha trim"))
+        condition = FlightCondition(eas=ias,
+                                    density_altitude=params("chute sizing density altitude"),
+                                    alpha=params("chute sizing alpha trim"))
     half = params.positive("chute sizing linearisation range")
     params.check("chute sizing linearisation range", half < np.pi / 2,
            "'chute sizing linearisation range' must be below 90 deg")
@@ -177,10 +179,11 @@ def read(reader, params, study):
     dt = params.positive("chute sizing time step")
     interval = params.positive("chute sizing output interval")
     integrator = params.choice("chute sizing integrator", INTEGRATORS)
-    method = params.choice("chute sizing reference method", _SOLVE_IVP_METHODS)
+    method = params.choice("chute sizing reference method", SOLVE_IVP_METHODS)
     rtol = params.positive("chute sizing reference rtol")
     try:
         settings = SolverSettings(t_end, dt, interval, method, rtol)
+        settings.fixed_grid()
     except InputError as err:
         name = ("chute sizing output interval" if "output_interval" in err.rule
                 else "chute sizing simulation time")

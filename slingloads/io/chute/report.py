@@ -183,9 +183,9 @@ def summary_tables(result, units="SI"):
     condition = _items([
         ("airspeed IAS (= EAS)", c.ias, "speed", ""),
         ("true airspeed", c.tas, "speed", ""),
-        ("density altitude", c.altitude, "length", "ISA"),
+        ("density altitude", c.density_altitude, "length", "ISA"),
         ("air density", c.density, "density", ""),
-        ("dynamic pressure q", c.q, "pressure", "1/2 rho0 V_EAS^2"),
+        ("dynamic pressure q", c.dynamic_pressure, "pressure", "1/2 rho0 V_EAS^2"),
         ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),

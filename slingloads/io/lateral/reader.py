@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.lateral import SolverSettings, airframe_body
+from slingloads.analyses.lateral import airframe_body
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.lateral.schema import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
@@ -30,6 +30,7 @@ from slingloads.models.carrier_motion import (
     TimeHistory,
     VelocityStep,
 )
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 
 ANALYSIS = "lateral"
@@ -59,12 +60,9 @@ class LateralInputs:
         [N s/m]
     roll_damping : float
         [N m s/rad]
-    t_end : float or None
-        Run length; None: automatic. [s]
-    step : float or None
-        RK4 step; None: automatic. [s]
     solver : SolverSettings
-        Settings of the critical case's time-history re-run.
+        Run length ``t_end`` and RK4 ``step`` of the sweep (None: automatic), and the
+        solve_ivp settings of the critical case's time-history re-run.
     loads : LoadsStudy or None
         The loads study of the workbook (for the hook cases at the recommended angle).
     """
@@ -78,8 +76,6 @@ class LateralInputs:
     cable_ea: float | None
     lateral_damping: float
     roll_damping: float
-    t_end: float | None
-    step: float | None
     solver: SolverSettings
     loads: object
 
@@ -142,8 +138,9 @@ def read(reader, params, study):
     method = params.choice("lateral history method", SOLVER_METHODS)
     rtol = params.positive("lateral history rtol")
     output = params.positive("lateral history output step")
-    solver = SolverSettings(method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2),
-                            output_step=output)
+    solver = SolverSettings(t_end=t_end if t_end > 0 else None,
+                            step=step if step > 0 else None, output_interval=output,
+                            method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2))
     ropes = _ropes(reader)
     bodies, source = _bodies(reader, study)
     histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
@@ -155,8 +152,7 @@ def read(reader, params, study):
     return LateralInputs(
         bodies=bodies, body_source=source, rope_lengths=ropes, motions=motions,
         motion_ids=ids, margin=float(margin), cable_ea=cable_ea, lateral_damping=damping,
-        roll_damping=roll_damping, t_end=t_end if t_end > 0 else None,
-        step=step if step > 0 else None, solver=solver, loads=loads)
+        roll_damping=roll_damping, solver=solver, loads=loads)
 
 
 def _require(reader, name):

@@ -127,9 +127,8 @@ def compute(study):
         result = lateral_study(inputs.bodies, inputs.rope_lengths, inputs.motions,
                                margin=inputs.margin, cable_ea=inputs.cable_ea,
                                lateral_damping=inputs.lateral_damping,
-                               roll_damping=inputs.roll_damping, t_end=inputs.t_end,
-                               step=inputs.step)
-        run = result.run_case(solver=inputs.solver)
+                               roll_damping=inputs.roll_damping, solver=inputs.solver)
+        run = result.run_case()
         comparison = None
         if result.recommended_angle < np.pi / 2:
             comparison = hook_angle_comparison(inputs.loads, result.recommended_angle)
@@ -223,8 +222,8 @@ def summary_tables(result, units="SI"):
          "0: rigid"),
         ("lateral damping", inp.lateral_damping, "linear damping", "0 = off"),
         ("roll damping", inp.roll_damping, "rotational damping", "0 = off"),
-        ("run length", st.t_end, "s", "automatic" if inp.t_end is None else "input"),
-        ("RK4 step", st.step, "s", "automatic" if inp.step is None else "input"),
+        ("run length", st.t_end, "s", "automatic" if inp.solver.t_end is None else "input"),
+        ("RK4 step", st.step, "s", "automatic" if inp.solver.step is None else "input"),
     ], units)
     return {"angle": angle, "check": check, "settings": settings}
 

@@ -11,6 +11,7 @@ re-run the CS-29.865 hook cases at the recommended angle. Method, signs and limi
 from __future__ import annotations
 
 from slingloads.io.common.schema import TEXT, Column, Parameter, Section, TableSheet
+from slingloads.models.integration import SOLVE_IVP_METHODS
 
 #: Valid values of 'lateral cable model'.
 CABLE_MODELS = ("rigid", "elastic")
@@ -19,7 +20,7 @@ MOTION_TYPES = ("smooth step", "constant acceleration", "velocity step", "time h
 #: Valid values of the LateralMotions 'then' column.
 THEN = ("hold", "stop")
 #: solve_ivp methods of the time histories of the critical case.
-SOLVER_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+SOLVER_METHODS = SOLVE_IVP_METHODS
 
 _S = "lateral"
 

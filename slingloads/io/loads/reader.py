@@ -14,7 +14,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.hook_loads import CONE_SHAPES, HookLoadOptions, horizontal_basis
-from slingloads.analyses.loads import AeroEnvelope, FlightCondition, ListedCase, LoadsStudy
+from slingloads.analyses.loads import AeroEnvelope, ListedCase, LoadsStudy
 from slingloads.analyses.sfbm import COMPONENTS
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import (
@@ -27,6 +27,7 @@ from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.loads.schema import SHEETS
 from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attitude
+from slingloads.models.flight import FlightCondition
 
 _SPEC = {s.name: s for s in SHEETS}
 
