@@ -20,7 +20,7 @@ from slingloads.errors import InputError
 from slingloads.io.lateral.plots import plot_max_angle_vs_acceleration, plot_time_histories
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
-    SmoothStep,
+    QuinticStep,
     TimeHistory,
     VelocityStep,
 )
@@ -38,9 +38,9 @@ def test_vectorised_sweep_agrees_with_solve_ivp():
     per-run solve_ivp (DOP853, rtol 1e-10) within 0.1 %, for rigid and elastic cables and every
     kind of carrier motion (the accuracy the benchmark's 10x claim is made at)."""
     t = np.linspace(0.0, 4.0, 41)
-    history = TimeHistory(t, SmoothStep(3.0, 4.0).displacement(t), name="sampled step")
+    history = TimeHistory(t, QuinticStep(3.0, 4.0).displacement(t), name="sampled step")
     cases = [
-        (LateralPendulum(UH60, ROPES[0]), SmoothStep.from_peak_acceleration(0.3 * G0, 2.0)),
+        (LateralPendulum(UH60, ROPES[0]), QuinticStep.from_peak_acceleration(0.3 * G0, 2.0)),
         (LateralPendulum(BO105, ROPES[1]), ConstantAcceleration(0.5 * G0, 1.0, "stop")),
         (LateralPendulum(UH60, ROPES[0], cable_ea=2e7), ConstantAcceleration(2.0, 3.0)),
         (LateralPendulum(BO105, ROPES[0], cable_ea=2e7), VelocityStep(2.0)),
@@ -147,7 +147,7 @@ def test_plots_draw_the_results(point_mass_study):
     """The plots draw the data they are given: the load-angle curve is the run's
     theta1 - theta2 in degrees, the 30 deg line is drawn, and the envelope plot has one line
     per rope length at the closed-form 2 atan(a/g)."""
-    run = simulate(LateralPendulum(UH60, ROPES[0]), SmoothStep(5.0, 2.0),
+    run = simulate(LateralPendulum(UH60, ROPES[0]), QuinticStep(5.0, 2.0),
                    solver=SolverSettings(t_end=8.0))
     fig = plot_time_histories(run)
     assert isinstance(fig, Figure)

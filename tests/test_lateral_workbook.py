@@ -31,7 +31,8 @@ from slingloads.io.lateral.report import PLOTS, compute
 from slingloads.io.study import read_study
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
-    SmoothStep,
+    CycloidalStep,
+    QuinticStep,
     TimeHistory,
     VelocityStep,
 )
@@ -85,8 +86,8 @@ def test_recommended_angle_workbook_equals_api(study, result):
     hist = pd.read_excel(EXAMPLE, sheet_name="LateralHistory")
     motions = []
     for _, r in rows.iterrows():
-        if r["type"] == "smooth step":
-            motions.append(SmoothStep.from_peak_acceleration(r["acceleration [g0]"] * G0,
+        if r["type"] == "quintic step":
+            motions.append(QuinticStep.from_peak_acceleration(r["acceleration [g0]"] * G0,
                                                              r["duration [s]"]))
         elif r["type"] == "constant acceleration":
             motions.append(ConstantAcceleration(r["acceleration [g0]"] * G0, r["duration [s]"],
@@ -309,7 +310,7 @@ def test_elastic_cable_from_the_workbook_tends_to_the_rigid_rope(tmp_path):
     book = openpyxl.load_workbook(EXAMPLE)
     rows = {row[0].value: row[0].row for row in book["Study"].iter_rows(min_row=2)}
     ws = book["LateralMotions"]
-    ws.delete_rows(4, ws.max_row)                   # keep two smooth steps
+    ws.delete_rows(4, ws.max_row)                   # keep two quintic steps
     book["LateralRopes"].delete_rows(3, 10)         # keep the 18 ft rope
     book["Study"][f"B{rows['lateral RK4 step']}"] = 0  # automatic step for both models
     book["Study"][f"B{rows['lateral simulation time']}"] = 8.0  # the peaks come within 5 s
@@ -325,3 +326,21 @@ def test_elastic_cable_from_the_workbook_tends_to_the_rigid_rope(tmp_path):
     rigid, elastic = peaks("rigid", 0), peaks("elastic", 2e8)
     assert rigid.shape == (2, 2)
     np.testing.assert_allclose(elastic, rigid, rtol=5e-3)
+
+
+def test_step_laws_by_type_name_and_the_former_name(tmp_path):
+    """Motion types name their laws: 'cycloidal step' reads a CycloidalStep whose peak
+    acceleration is the row's (0.1 g0 = 0.980665 m/s^2, so A = a T^2 / (2 pi)); the former
+    name 'smooth step' still reads the quintic step."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    ws = book["LateralMotions"]
+    ws["B2"] = "cycloidal step"
+    ws["B3"] = "Smooth Step"
+    path = tmp_path / "laws.xlsx"
+    book.save(path)
+    motions = read_study(path, only=["lateral"]).inputs["lateral"].motions
+    duration = float(ws["D2"].value)
+    assert isinstance(motions[0], CycloidalStep)
+    assert motions[0].amplitude == pytest.approx(0.1 * G0 * duration**2 / (2 * np.pi),
+                                                 rel=1e-12)
+    assert isinstance(motions[1], QuinticStep)

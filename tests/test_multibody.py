@@ -30,7 +30,7 @@ from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
-from slingloads.models.carrier_motion import SmoothStep
+from slingloads.models.carrier_motion import QuinticStep
 from slingloads.models.flight import FlightCondition
 from slingloads.models.gusts import FiniteGust
 from slingloads.models.integration import SolverSettings
@@ -144,11 +144,11 @@ def test_small_oscillations_match_the_pendulum_quartic(inertia, plane):
 
 
 def test_lateral_plane_response_matches_the_pendulum():
-    """A lateral smooth step of the hook in hover (no aerodynamics) keeps the motion in the
+    """A lateral quintic step of the hook in hover (no aerodynamics) keeps the motion in the
     lateral plane; hub position and airframe roll equal the lateral pendulum's elastic-cable
     equations integrated by solve_ivp (theta2 = -roll: the pendulum's angle is right-handed
     about +x, the report's roll is right side down)."""
-    motion = SmoothStep(3.0, 4.0)
+    motion = QuinticStep(3.0, 4.0)
     system = bare_system()
     sim = simulate(system, Manoeuvre("step", trajectory=LateralHookMotion(motion)),
                    t_end=12.0, dt=0.005, output_interval=0.05)

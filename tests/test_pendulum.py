@@ -22,7 +22,7 @@ from numpy.testing import assert_allclose
 from slingloads.analyses.lateral import simulate, sweep
 from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
-from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep, VelocityStep
+from slingloads.models.carrier_motion import ConstantAcceleration, QuinticStep, VelocityStep
 from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import LateralPendulum, SlungBody, hub_load_airframe_axes
 
@@ -183,7 +183,7 @@ def test_elastic_cable_converges_to_rigid_rope():
     8 %, 0.3 %, 0.04 %; the peak tension, which carries the bounce mode's dynamic overshoot,
     converges more slowly."""
     L = 18.0 * FOOT
-    motion = SmoothStep.from_peak_acceleration(0.3 * G0, 2.0)
+    motion = QuinticStep.from_peak_acceleration(0.3 * G0, 2.0)
     eas = [1e6, 1e7, 1e8]
     pendulums = [LateralPendulum(UH60, L, cable_ea=ea) for ea in eas]
     pendulums.append(LateralPendulum(UH60, L))

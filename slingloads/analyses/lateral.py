@@ -38,9 +38,11 @@ from scipy.integrate import solve_ivp
 from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
 from slingloads.models.carrier_motion import (
+    MOTION_ALIASES,
     ConstantAcceleration,
+    CycloidalStep,
     MotionBatch,
-    SmoothStep,
+    QuinticStep,
     TimeHistory,
 )
 from slingloads.models.integration import SolverSettings
@@ -516,8 +518,8 @@ def _rk4_group(pendulums, motions, nodes, jumps, rigid):
     return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3])
 
 
-def acceleration_sweep(accelerations, durations, kinds=("smooth_step", "constant_acceleration"),
-                       then="stop"):
+def acceleration_sweep(accelerations, durations,
+                       kinds=("quintic_step", "constant_acceleration"), then="stop"):
     """Carrier motions for every (kind, peak acceleration, duration) combination.
 
     Parameters
@@ -525,8 +527,9 @@ def acceleration_sweep(accelerations, durations, kinds=("smooth_step", "constant
     accelerations : sequence of float
         Peak lateral accelerations of the hook (sign gives the direction). [m/s^2]
     durations : sequence of float
-        Step durations (smooth step) or acceleration-phase durations. [s]
-    kinds : sequence of {"smooth_step", "constant_acceleration"}
+        Step durations (quintic and cycloidal steps) or acceleration-phase durations. [s]
+    kinds : sequence of {"quintic_step", "cycloidal_step", "constant_acceleration"}
+        (``"smooth_step"``, the former name of the quintic step, is accepted).
     then : {"hold", "stop"}
         What follows a constant-acceleration phase.
 
@@ -535,9 +538,11 @@ def acceleration_sweep(accelerations, durations, kinds=("smooth_step", "constant
     list of motions
     """
     makers = {
-        "smooth_step": lambda a, d: SmoothStep.from_peak_acceleration(a, d),
+        "quintic_step": QuinticStep.from_peak_acceleration,
+        "cycloidal_step": CycloidalStep.from_peak_acceleration,
         "constant_acceleration": lambda a, d: ConstantAcceleration(a, d, then),
     }
+    kinds = [MOTION_ALIASES.get(k, k) for k in kinds]
     for kind in kinds:
         if kind not in makers:
             raise InputError(f"acceleration sweeps take the motion types {sorted(makers)}",

@@ -22,11 +22,19 @@ import pandas as pd
 from slingloads.analyses.lateral import airframe_body
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.workbook import check_unique, located
-from slingloads.io.lateral.schema import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
+from slingloads.io.lateral.schema import (
+    CABLE_MODELS,
+    MOTION_ALIASES,
+    MOTION_TYPES,
+    SHEETS,
+    SOLVER_METHODS,
+    THEN,
+)
 from slingloads.io.loads import reader as loads_reader
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
-    SmoothStep,
+    CycloidalStep,
+    QuinticStep,
     TimeHistory,
     VelocityStep,
 )
@@ -34,6 +42,8 @@ from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 
 ANALYSIS = "lateral"
+#: The displacement steps of the LateralMotions sheet, by type.
+STEP_LAWS = {"quintic step": QuinticStep, "cycloidal step": CycloidalStep}
 _SPEC = {s.name: s for s in SHEETS}
 
 
@@ -265,6 +275,7 @@ def _csv_history(reader, text, t, i):
 def _motion_type(reader, t, i):
     text = str(t["type"][i]).strip().lower().replace("_", " ").replace("-", " ")
     text = " ".join(text.split())
+    text = MOTION_ALIASES.get(text, text)
     if text not in MOTION_TYPES:
         raise reader.error(f"unknown motion type; valid types are {list(MOTION_TYPES)}",
                            t["type"][i], t.sheet, t.cell("type", i))
@@ -308,21 +319,22 @@ def _motions(reader, histories):
     for i in range(len(t)):
         kind = _motion_type(reader, t, i)
         where = (reader.file, t.sheet, t.cell("type", i))
-        if kind == "smooth step":
+        if kind in STEP_LAWS:
             unused(("then", "delta V", "history"), i, kind)
             duration = need("duration", i, kind, positive)
             has_acc = not np.isnan(number("acceleration", i))
             has_amp = not np.isnan(number("amplitude", i))
             if has_acc == has_amp:
-                raise reader.error("a smooth step needs either 'acceleration' (peak) or "
+                raise reader.error(f"a {kind} needs either 'acceleration' (peak) or "
                                    "'amplitude', not both nor neither", None, t.sheet,
                                    t.cell("type", i))
+            law = STEP_LAWS[kind]
             with located(*where):
                 if has_acc:
-                    motion = SmoothStep.from_peak_acceleration(
+                    motion = law.from_peak_acceleration(
                         need("acceleration", i, kind, nonzero), duration)
                 else:
-                    motion = SmoothStep(need("amplitude", i, kind, nonzero), duration)
+                    motion = law(need("amplitude", i, kind, nonzero), duration)
         elif kind == "constant acceleration":
             unused(("amplitude", "delta V", "history"), i, kind)
             rate = need("acceleration", i, kind, nonzero)

@@ -16,7 +16,10 @@ from slingloads.models.integration import SOLVE_IVP_METHODS
 #: Valid values of 'lateral cable model'.
 CABLE_MODELS = ("rigid", "elastic")
 #: Valid motion types of the LateralMotions sheet (spaces or underscores).
-MOTION_TYPES = ("smooth step", "constant acceleration", "velocity step", "time history")
+MOTION_TYPES = ("quintic step", "cycloidal step", "constant acceleration", "velocity step",
+                "time history")
+#: Former motion type names still accepted, and what they now are.
+MOTION_ALIASES = {"smooth step": "quintic step"}
 #: Valid values of the LateralMotions 'then' column.
 THEN = ("hold", "stop")
 #: solve_ivp methods of the time histories of the critical case.
@@ -59,17 +62,23 @@ PARAMETERS = (
 SHEETS = (
     TableSheet("LateralMotions", (
         Column("id", TEXT, help="Unique name of the carrier motion."),
-        Column("type", TEXT, help="smooth step | constant acceleration | velocity step | "
-                                  "time history."),
+        Column("type", TEXT, help="quintic step (minimum-jerk law S = A (10 tau^3 - 15 "
+                                  "tau^4 + 6 tau^5), peak acceleration 5.77 A/T^2; 'smooth "
+                                  "step' is its former name) | cycloidal step (S = A (tau - "
+                                  "sin(2 pi tau)/(2 pi)), peak 2 pi A/T^2) | constant "
+                                  "acceleration | velocity step | time history."),
         Column("acceleration", "acceleration", "m/s^2", False, None,
-               "Smooth step: peak lateral acceleration of the hook; constant acceleration: "
+               "Quintic or cycloidal step: peak lateral acceleration of the hook; constant "
+               "acceleration: "
                "the rate. Finite, not 0 (sign = direction). Any acceleration unit: m/s^2, "
                "ft/s^2, or g0 (standard gravity; 'g' would be the gram)."),
         Column("duration", "time", "s", False, None,
-               "Smooth step: time to complete the step; constant acceleration: time of the "
+               "Quintic or cycloidal step: time T to complete the step; constant "
+               "acceleration: time of the "
                "acceleration phase. > 0."),
         Column("amplitude", "length", "m", False, None,
-               "Smooth step only, instead of the acceleration: the step's displacement."),
+               "Quintic or cycloidal step only, instead of the acceleration: the step's "
+               "displacement A."),
         Column("then", TEXT, required=False, default="",
                help="Constant acceleration only: 'hold' (keep the speed reached) or 'stop' "
                     "(decelerate at the same rate for the same time)."),
