@@ -33,6 +33,10 @@ from slingloads.models.yaw_dynamics import YawModel
 
 #: Sizing airspeed of the example (the paper's 80 KIAS). [kt]
 AIRSPEED_KT = 80.0
+#: Half-width of the sideslip range of the linearisation: it covers the 12.5 deg that the
+#: 30 ft/s gust makes at 80 KIAS (a run that leaves the range is never called stable) and
+#: equals the loads' sideslip envelope (+-15 deg). [deg]
+LINEARISATION_DEG = 15.0
 #: Recommended area over the neutral area (paper: FPA + 40 %). [-]
 RECOMMENDED_FACTOR = 1.4
 #: Distance at which the generic wake reaches a q ratio of 0.95. [m]
@@ -56,7 +60,7 @@ PARAMETERS = {
     "chute sizing airspeed IAS": (AIRSPEED_KT, "kt"),
     "chute sizing density altitude": (0, "ft"),
     "chute sizing alpha trim": (0, "deg"),
-    "chute sizing linearisation range": (10, "deg"),
+    "chute sizing linearisation range": (LINEARISATION_DEG, "deg"),
     "chute sizing yaw inertia source": ("mass items", ""),
     "chute sizing wake source": ("table", ""),
     "chute sizing target q ratio": (0.95, ""),
@@ -76,7 +80,9 @@ PARAMETERS = {
 
 NOTES = [
     "Parachute sizing (sheet ChuteWake, Study rows 'chute sizing ...'): 80 KIAS ISA sea "
-    "level, HC1 fuselage and fin tables, yaw inertia from the mass items about the hub axis. "
+    "level, HC1 fuselage and fin tables, yaw inertia from the mass items about the hub axis, "
+    "tables linearised over +-15 deg so that the 30 ft/s gust's 12.5 deg of sideslip at 80 "
+    "kt lies inside the range (a run leaving it is never called stable). "
     "The ChuteWake table is a GENERIC ILLUSTRATIVE table, NOT CFD of any aircraft: the "
     "self-similar far-wake shape (defect ~ x^-2/3) with q ratio 0.95 placed at about 10 m "
     "(33 ft), so that the line and the 60 ft carrier cable fall in the paper's range (18-100 "
@@ -108,7 +114,8 @@ def parachute_size(frame, fin_cp, aero_ref):
     fin = Fin(sample_fin("HC1").table, ref.fin_area, fin_cp, ref.fin_efficiency)
     model = YawModel(fuselage, fin, frame.hardpoints, yaw_inertia_about_hub(frame),
                      FlightCondition(AIRSPEED_KT * KNOT), Parachute(1.0))
-    static = neutral_area(model)
+    half = np.radians(LINEARISATION_DEG)
+    static = neutral_area(model, (-half, half))
     wake = TabulatedWake(WAKE["distance [ft]"].to_numpy() * FOOT, WAKE["q ratio [-]"])
     line = line_length(wake).line_length
     return round(RECOMMENDED_FACTOR * static.area, 1), float(np.ceil(line * 10) / 10)

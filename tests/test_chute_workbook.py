@@ -63,7 +63,9 @@ def test_neutral_area_workbook_equals_api(study, result):
         (items.position[:, 0] - hub[0]) ** 2 + (items.position[:, 1] - hub[1]) ** 2)))
     model = YawModel(fuselage, fin, frame.hardpoints, inertia, FlightCondition(80 * KNOT),
                      Parachute(1.0))
-    api = neutral_area(model)
+    half = np.radians(15.0)                        # the example's linearisation range
+    api = neutral_area(model, (-half, half))
+    assert result.inputs.fit_range == pytest.approx((-half, half), rel=1e-12)
     assert result.inputs.model.yaw_inertia == pytest.approx(inertia, rel=1e-12)
     assert result.static.area == pytest.approx(api.area, rel=1e-9)
     assert result.static.area > 0

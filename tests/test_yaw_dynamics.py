@@ -10,14 +10,20 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from slingloads.analyses.chute_sizing import LinearYaw, neutral_area, run_yaw
+from slingloads.analyses.chute_sizing import LinearYaw, MetricSettings, neutral_area, run_yaw
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
 from slingloads.models.flight import FlightCondition
-from slingloads.models.gusts import FiniteGust, StepGust, standard_gusts
+from slingloads.models.gusts import (
+    DrydenTurbulence,
+    FiniteGust,
+    StepGust,
+    SustainedGust,
+    standard_gusts,
+)
 from slingloads.models.integration import SolverSettings
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import (
@@ -164,6 +170,49 @@ def test_vectorised_rk4_agrees_with_solve_ivp():
     slow = integrate_reference(model, area, gusts, settings=s)
     assert np.degrees(np.abs(fast.psi - slow.psi)).max() < 2e-3
     assert np.degrees(np.abs(fast.beta - slow.beta)).max() < 2e-3
+
+
+def test_rk4_steps_on_gust_breakpoints_off_the_grid():
+    """Gust breakpoints off the step grid (a finite gust from 10.03 s for 7.31 s, a sustained
+    crosswind rising from 10.03 s over 3.33 s) and a Dryden turbulence realisation: the RK4
+    integrator inserts the breakpoints into its grid, so it keeps its fourth-order agreement
+    with solve_ivp (rtol 1e-10, integrated piecewise between the same breakpoints): within
+    2e-4 deg here, where the uniform grid alone (a step straddling the 10.03 s jump) errs by
+    0.05 deg."""
+    ref = sample_reference("HC2")
+    model = YawModel(sample_fuselage("HC2"), sample_fin("HC2"), sample_hardpoints("HC2"),
+                     ref.yaw_inertia, parachute=Parachute(1.0))
+    area = 1.5 * neutral_area(model).area
+    s = SolverSettings(t_end=30.0, step=0.05, output_interval=0.5, rtol=1e-10, atol=1e-12)
+    gusts = [FiniteGust(6.0, 10.03, 7.31), SustainedGust(6.0, 10.03, 3.33),
+             DrydenTurbulence(2.0, 250.0, model.condition.tas, onset=10.0, duration=15.0,
+                              seed=1)]
+    fast = integrate_rk4(model, area, gusts, settings=s)
+    slow = integrate_reference(model, area, gusts, settings=s)
+    assert np.degrees(np.abs(fast.beta - slow.beta)).max() < 2e-4
+    assert np.degrees(np.abs(fast.psi).max()) > 1.0      # the gusts did move the aircraft
+
+
+def test_run_beyond_the_linearised_range_or_the_limit_is_never_stable():
+    """A stable aircraft (linear tables, a 2 m^2 parachute) under a sharp-edged crosswind of
+    tan(beta) = v/V: the run returns to trim, but a gust angle of 12.6 deg leaves a +-10 deg
+    linearisation range, and 7.0 deg passes a 5 deg sideslip limit: neither is called
+    stable, and the reason says which rule; the same 7.0 deg run with the +-10 deg range and
+    the default 20 deg limit is stable (the rules, not the dynamics, decide)."""
+    model = linear_model()
+    tas = model.condition.tas
+    s = SolverSettings(t_end=60.0)
+    big = SustainedGust(tas * np.tan(np.radians(12.6)), 5.0, 0.0)
+    small = SustainedGust(tas * np.tan(np.radians(7.0)), 5.0, 0.0)
+    ten = (np.radians(-10.0), np.radians(10.0))
+    runs = run_yaw(model, 2.0, [big, small], s, fit_range=ten).to_frame()
+    assert list(runs["verdict"]) == ["beyond limits", "stable"]
+    assert "leaves the linearisation range [-10, 10] deg" in runs["verdict reason"][0]
+    assert runs["peak beta [deg]"][0] == pytest.approx(12.6, rel=1e-3)
+    tight = run_yaw(model, 2.0, small, s, fit_range=ten,
+                    metrics=MetricSettings(sideslip_limit=np.radians(5.0))).to_frame()
+    assert tight["verdict"][0] == "beyond limits"
+    assert "passes the sideslip limit 5 deg" in tight["verdict reason"][0]
 
 
 def test_run_leaving_the_table_is_flagged_divergent():

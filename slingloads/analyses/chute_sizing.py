@@ -37,6 +37,11 @@ from slingloads.models.yaw_dynamics import (
 
 #: Default sideslip range of the local linearisation. [rad]
 FIT_RANGE = (np.radians(-10.0), np.radians(10.0))
+#: Default sideslip past which no run is called stable (see :class:`MetricSettings`). [rad]
+SIDESLIP_LIMIT = np.radians(20.0)
+
+#: Verdicts of a run.
+VERDICTS = ("stable", "neutral", "divergent", "beyond limits")
 
 
 def _deg(x):
@@ -460,11 +465,30 @@ class MetricSettings:
         end or become steady) is divergent. [rad]
     peak_threshold : float
         Yaw-rate peaks smaller than this are ignored by the logarithmic decrement. [rad/s]
+    sideslip_limit : float
+        A run whose |beta| passes this is never called stable, > 0. Default 20 deg: past it
+        the yawing-moment curves of helicopter-class fuselages turn over (|Cn| peaks near 20
+        deg and falls back to zero near 45 deg) and a cut-down fin approaches its stall, so
+        the stiffness the sizing counts on is no longer there; set it to the sideslip
+        envelope of the loads analysis to keep the two consistent. [rad]
+
+    A run whose sideslip also leaves the range over which the tables were linearised (the
+    ``fit_range`` of the runs) is never called stable either: the linear stiffness and
+    damping behind the verdict no longer describe it.
     """
 
     settle_fraction: float = 0.05
     final_tolerance: float = np.radians(1.0)
     peak_threshold: float = 1e-5
+    sideslip_limit: float = SIDESLIP_LIMIT
+
+    def __post_init__(self):
+        for name in ("settle_fraction", "final_tolerance", "peak_threshold",
+                     "sideslip_limit"):
+            value = float(getattr(self, name))
+            if not np.isfinite(value) or value <= 0:
+                raise InputError(f"metric setting {name} must be > 0", value)
+            object.__setattr__(self, name, value)
 
 
 @dataclass(frozen=True)
@@ -482,9 +506,12 @@ class YawRuns:
         natural frequency; damping ratio from the logarithmic decrement of the first two
         positive yaw-rate peaks after the gust ends (NaN for continuous gusts or no
         oscillation); settling time from the gust onset until |beta - beta_trim| stays within
-        ``settle_fraction`` of its peak (NaN if never, or continuous gust); verdict
-        "stable", "neutral" (zero linear stiffness) or "divergent" (linearly unstable, left
-        the tables, or sideslip not restored within ``final_tolerance`` at the end).
+        ``settle_fraction`` of its peak (NaN if never, or a gust that never ends); verdict
+        "divergent" (linearly unstable, left the tables, or sideslip not restored within
+        ``final_tolerance`` at the end of a gust that ends), "neutral" (zero linear
+        stiffness, inside the tables), else "beyond limits" (the sideslip left the
+        linearisation range or passed ``sideslip_limit``: never called stable), else
+        "stable"; "verdict reason" says why.
     """
 
     areas: np.ndarray
@@ -553,9 +580,17 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     scale = max(sum(abs(k) for k, _ in lin[0].parts.values()), 1e-300)
     neutral = np.array([abs(by_area[a].stiffness) <= 1e-9 * scale for a in areas])
     final_off = np.abs(dbeta[:, -1]) > metric.final_tolerance
-    divergent = hist.left_table | ~lin_stable | (np.isfinite(free) & final_off)
-    verdict = np.where(divergent, "divergent", "stable")
-    verdict = np.where(neutral & ~hist.left_table, "neutral", verdict)
+    not_restored = np.isfinite(free) & final_off
+    lo, hi = fit_range
+    beta_min, beta_max = hist.beta.min(axis=1), hist.beta.max(axis=1)
+    unlinear = (beta_min < lo) | (beta_max > hi)
+    over = peak_beta > metric.sideslip_limit
+    verdict = np.select(
+        [hist.left_table, neutral, ~lin_stable | not_restored, unlinear | over],
+        ["divergent", "neutral", "divergent", "beyond limits"], default="stable")
+    reasons = [_reason(*row, fit_range, metric) for row in zip(
+        hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, dbeta[:, -1],
+        unlinear, over, peak_beta, beta_min, beta_max, strict=True)]
     return pd.DataFrame({
         "area [m^2]": areas,
         "gust": [g.kind for g in gusts],
@@ -570,7 +605,33 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
         "settling time [s]": settling,
         "left table": hist.left_table,
         "verdict": verdict,
+        "verdict reason": reasons,
     })
+
+
+def _reason(left, exit_time, lin_stable, neutral, not_restored, final, unlinear, over, peak,
+            low, high, fit_range, metric):
+    """Why a run got its verdict, in words."""
+    why = []
+    if left:
+        why.append(f"left the aerodynamic tables at t = {exit_time:.4g} s")
+    if neutral:
+        why.append("zero linear yaw stiffness (neutral)")
+    elif not lin_stable:
+        why.append("linearly unstable (stiffness or damping <= 0)")
+    if not_restored:
+        why.append(f"sideslip {_deg(final):.3g} deg from trim at the end, not back within "
+                   f"{_deg(metric.final_tolerance):.3g} deg")
+    if unlinear:
+        why.append(f"sideslip {_deg(low):.3g} to {_deg(high):.3g} deg leaves the linearisation "
+                   f"range [{_deg(fit_range[0]):.3g}, {_deg(fit_range[1]):.3g}] deg")
+    if over:
+        why.append(f"peak |beta| {_deg(peak):.3g} deg passes the sideslip limit "
+                   f"{_deg(metric.sideslip_limit):.3g} deg")
+    if not why:
+        why.append(f"back to trim; peak |beta| {_deg(peak):.3g} deg within the linearisation "
+                   f"range and the {_deg(metric.sideslip_limit):.3g} deg limit")
+    return "; ".join(why)
 
 
 def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=None,

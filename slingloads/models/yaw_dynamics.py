@@ -367,32 +367,38 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
 
     Notes
     -----
-    Gust velocities are tabulated once per distinct gust on the step grid (at the start, middle
+    The step grid is uniform with every gust breakpoint (jump or kink: onsets, ends, the end
+    of a rise) inserted, so that no step straddles one; histories are stored on the uniform
+    output grid. Gust velocities are tabulated once per distinct gust (at the start, middle
     and end of each step, the end value taken just before the step end so that a jump on a
-    step boundary is seen on the correct side). Table lookups are ``np.interp`` on the
-    tables' breakpoints; a run that leaves a table is flagged and frozen, never clamped
-    silently.
+    step boundary is seen on the correct side); a turbulence realisation is a function of
+    time, so every stage sees the same gust. Table lookups are ``np.interp`` on the tables'
+    breakpoints; a run that leaves a table is flagged and frozen, never clamped silently.
     """
     settings = yaw_solver_settings(settings)
     n, every = settings.fixed_grid()
     areas, gusts, psi, rate = _check_runs(model, areas, gusts, psi0, rate0)
-    runs, dt = areas.size, settings.step
+    runs = areas.size
     unique, index = _distinct(gusts)
-    t = np.arange(n + 1) * dt
+    times = settings.output_times()
+    nodes, stored = _time_nodes(settings, unique)
+    start, step = nodes[:-1], np.diff(nodes)
     tables = []
-    for when in (t[:-1], t[:-1] + 0.5 * dt, t[1:] - 1e-9 * dt, t):
-        v = np.stack([g.velocity(when) for g in unique])  # (unique, times)
+    # gust at the start (after a jump there), middle and end (just before a jump) of each step
+    for when in (start, start + 0.5 * step, nodes[1:] - 1e-9 * step):
+        v = np.stack([g.velocity(when) for g in unique])  # (unique, steps)
         gamma, v_rel = model.relative_wind(v)
-        tables.append((gamma.T.copy(), v_rel.T.copy()))  # (times, unique)
-    (g0, w0), (gm, wm), (g1, w1), (gt, _) = tables
-    n_out = n // every + 1
-    out_psi, out_rate = np.empty((runs, n_out)), np.empty((runs, n_out))
+        tables.append((gamma.T.copy(), v_rel.T.copy()))  # (steps, unique)
+    (g0, w0), (gm, wm), (g1, w1) = tables
+    out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
     out_psi[:, 0], out_rate[:, 0] = psi, rate
     left = np.zeros(runs, dtype=bool)
     exit_time = np.full(runs, np.nan)
     deriv = model.derivatives
-    half = 0.5 * dt
-    for i in range(n):
+    k_out = 1
+    for i in range(start.size):
+        dt = step[i]
+        half = 0.5 * dt
         ga, va = g0[i, index], w0[i, index]
         gb, vb = gm[i, index], wm[i, index]
         gc, vc = g1[i, index], w1[i, index]
@@ -405,25 +411,49 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
         bad = o1 | o2 | o3 | o4
         if bad.any():
             fresh = bad & ~left
-            exit_time[fresh] = t[i]
+            exit_time[fresh] = start[i]
             left |= bad
             new_psi = np.where(left, psi, new_psi)
             new_rate = np.where(left, 0.0, new_rate)
         psi, rate = new_psi, new_rate
-        if (i + 1) % every == 0:
-            out_psi[:, (i + 1) // every] = psi
-            out_rate[:, (i + 1) // every] = rate
-    sample = slice(None, None, every)
-    gust_out = np.stack([g.velocity(t[sample]) for g in unique])[index]
-    beta = gt[sample][:, index].T - out_psi
-    return Histories(t[sample], out_psi, out_rate, beta, gust_out, left, exit_time)
+        if stored[i + 1]:
+            out_psi[:, k_out] = psi
+            out_rate[:, k_out] = rate
+            k_out += 1
+    gust_out = np.stack([g.velocity(times) for g in unique])
+    gamma_out = model.relative_wind(gust_out)[0]
+    beta = gamma_out[index] - out_psi
+    return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
+
+
+def _time_nodes(settings, gusts):
+    """The uniform RK4 grid with every gust breakpoint (jump or kink) inserted, so that no
+    step straddles one; and a flag per node: True at the stored (uniform output) times.
+
+    A breakpoint closer than 1e-6 of a step to a grid node is taken as that node.
+    """
+    n, every = settings.fixed_grid()
+    grid = np.arange(n + 1) * settings.step
+    stored = np.zeros(n + 1, dtype=bool)
+    stored[::every] = True
+    breaks = np.unique([b for g in gusts for b in g.breakpoints
+                        if b is not None and 0.0 < b < settings.t_end])
+    if breaks.size:
+        near = np.abs(breaks[:, None] - grid[None, :]).min(axis=1) < 1e-6 * settings.step
+        extra = breaks[~near]
+        if extra.size:
+            order = np.argsort(np.concatenate([grid, extra]), kind="stable")
+            grid = np.concatenate([grid, extra])[order]
+            stored = np.concatenate([stored, np.zeros(extra.size, dtype=bool)])[order]
+    return grid, stored
 
 
 def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     """The same runs as :func:`integrate_rk4`, one :func:`scipy.integrate.solve_ivp` per run.
 
     Adaptive (``settings.method``, ``rtol``, ``atol``, ``max_step``), sampled at the same output
-    times. It is the reference for runs that stay inside their tables: a run found outside
+    times, integrated piecewise between the gust's breakpoints (so that no step straddles a
+    jump). It is the reference for runs that stay inside their tables: a run found outside
     them at an output time is flagged (``left_table``) but not frozen.
     """
     settings = yaw_solver_settings(settings)
@@ -442,12 +472,19 @@ def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None)
             dpsi, drate, _ = model.derivatives(y[0], y[1], gamma, v_rel, area)
             return [float(dpsi), float(drate)]
 
-        sol = solve_ivp(rhs, (0.0, times[-1]), [psi0[j], rate0[j]], method=settings.method,
-                        t_eval=times, rtol=settings.rtol, atol=settings.atol,
-                        max_step=max_step)
-        if not sol.success:
-            raise InputError(f"solve_ivp failed: {sol.message}", j)
-        out_psi[j], out_rate[j] = sol.y
+        cuts = np.unique([0.0, *(b for b in gust.breakpoints
+                                 if b is not None and 0.0 < b < times[-1]), times[-1]])
+        which = np.clip(np.searchsorted(cuts, times, side="right") - 1, 0, cuts.size - 2)
+        y = [psi0[j], rate0[j]]
+        for k in range(cuts.size - 1):
+            sol = solve_ivp(rhs, (cuts[k], cuts[k + 1]), y, method=settings.method,
+                            rtol=settings.rtol, atol=settings.atol, max_step=max_step,
+                            dense_output=True)
+            if not sol.success:
+                raise InputError(f"solve_ivp failed: {sol.message}", j)
+            inside = which == k
+            out_psi[j, inside], out_rate[j, inside] = sol.sol(times[inside])
+            y = sol.y[:, -1]
     gust_out = np.stack([g.velocity(times) for g in gusts])
     gamma, v_rel = model.relative_wind(gust_out)
     beta = gamma - out_psi

@@ -259,4 +259,5 @@ def _gusts(reader, params, model, t_end):
            f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at {tas:.4g} m/s true "
            f"airspeed, outside the aerodynamic tables' range [{np.degrees(lo):.4g}, "
            f"{np.degrees(hi):.4g}] deg")
-    return tuple(make_gust(s, amplitude, onset, duration) for s in shapes)
+    return tuple(make_gust(s, amplitude, onset, duration, rise_time=0.5 * duration,
+                           period=duration) for s in shapes)

@@ -59,13 +59,16 @@ PARAMETERS = (
               "Required excess of the carrier cable over the parachute line (paper: 20 %).",
               _S),
     Parameter("chute sizing gust shapes", TEXT, "", "step, finite, 1-cosine, continuous",
-              "Comma-separated lateral gust shapes: step, finite, 1-cosine, continuous.", _S),
+              "Comma-separated lateral gust shapes: step, finite, 1-cosine, continuous (a "
+              "sustained crosswind rising over half the gust duration, then held), harmonic "
+              "(a sine whose period is the gust duration).", _S),
     Parameter("chute sizing gust amplitude", "speed", "ft/s", 30.0,
               "Lateral gust velocity, > 0 (CS 29.341 / paper: 30 ft/s).", _S),
     Parameter("chute sizing gust onset", "time", "s", 30.0,
               "Time at which the gust starts, >= 0 and before the end of the simulation.", _S),
     Parameter("chute sizing gust duration", "time", "s", 10.0,
-              "Duration of the finite and 1-cosine gusts, period of the continuous one, > 0.",
+              "Duration of the finite and 1-cosine gusts, twice the rise of the continuous "
+              "one, period of the harmonic one, > 0.",
               _S),
     Parameter("chute sizing simulation time", "time", "s", 120.0,
               "Simulated time of each 1-DOF run, a whole multiple of the time step.", _S),
