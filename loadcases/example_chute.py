@@ -66,10 +66,17 @@ PARAMETERS = {
     "chute sizing target q ratio": (0.95, ""),
     "chute sizing carrier cable length": (60, "ft"),
     "chute sizing cable margin": (0.20, ""),
-    "chute sizing gust shapes": ("step, finite, 1-cosine, continuous", ""),
+    "chute sizing gust shapes": ("step, finite, 1-cosine, continuous, turbulence", ""),
     "chute sizing gust amplitude": (30, "ft/s"),
     "chute sizing gust onset": (30, "s"),
     "chute sizing gust duration": (10, "s"),
+    "chute sizing gust rise time": (5, "s"),
+    "chute sizing harmonic period": (10, "s"),
+    "chute sizing turbulence altitude": (300, "ft"),
+    "chute sizing turbulence severity": ("moderate", ""),
+    "chute sizing turbulence duration": (60, "s"),
+    "chute sizing turbulence seed": (1, ""),
+    "chute sizing sideslip limit": (20, "deg"),
     "chute sizing simulation time": (120, "s"),
     "chute sizing time step": (0.1, "s"),
     "chute sizing area factor min": (1.0, ""),
@@ -87,6 +94,11 @@ NOTES = [
     "self-similar far-wake shape (defect ~ x^-2/3) with q ratio 0.95 placed at about 10 m "
     "(33 ft), so that the line and the 60 ft carrier cable fall in the paper's range (18-100 "
     "ft, cable >= 1.2 x line). Replace it with CFD or test data for a real study.",
+    "Gusts: the CS 29.341 30 ft/s gust as a step, the paper's 10 s 'impulsive' (finite) gust, "
+    "a 10 s 1-cosine, the paper's continuous gust (a sustained crosswind rising over 5 s, then "
+    "held), and 60 s of moderate Dryden turbulence at 300 ft above ground (MIL-F-8785C: "
+    "sigma_v 2.18 m/s, L_v 256 m; seed 1). Add 'harmonic' to the shapes for a resonance test "
+    "(a 10 s sine near the yaw period drives the sideslip past 40 deg).",
     "The 'parachute area' and 'parachute line length' rows are computed when the workbook is "
     "built (loadcases/example_chute.py): 1.4 x the neutral static area and the wake line.",
 ]

@@ -675,6 +675,20 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     return YawRuns(areas, gust_list, hist, frame, float(np.max(np.abs(beta_trim))), settings)
 
 
+def gust_frame(gusts, tas):
+    """The gust shapes as a table: shape, description, largest velocity [m/s], the sideslip
+    angle atan(v/V) it makes at true airspeed ``tas`` [m/s], onset [s] and the time after
+    which it no longer changes [s] (NaN: never, as the harmonic gust)."""
+    return pd.DataFrame({
+        "shape": [g.kind for g in gusts],
+        "description": [g.label for g in gusts],
+        "peak gust [m/s]": [g.peak for g in gusts],
+        "gust angle [deg]": [_deg(np.arctan(g.peak / tas)) for g in gusts],
+        "onset [s]": [g.breakpoints[0] for g in gusts],
+        "steady from [s]": [np.nan if g.end is None else g.end for g in gusts],
+    })
+
+
 @dataclass(frozen=True)
 class SweepResult:
     """Sizing sweep: metrics against parachute area for each gust shape."""
@@ -683,6 +697,7 @@ class SweepResult:
     factors: np.ndarray
     runs: YawRuns
     gusts: tuple = field(default_factory=tuple)
+    tas: float = np.nan
 
     def to_frame(self):
         frame = self.runs.to_frame()
@@ -698,9 +713,14 @@ class SweepResult:
             chosen += list(np.nonzero(np.isclose(ratio, nearest))[0])
         return self.runs.history_frame(sorted(set(chosen)))
 
+    def gust_frame(self):
+        """One row per gust shape: what it is, its largest velocity and the sideslip that
+        makes at the condition's true airspeed, when it starts and when it stops changing."""
+        return gust_frame(self.gusts, self.tas)
+
     def frames(self):
-        return {**self.static.frames(), "chute sweep": self.to_frame(),
-                "chute histories": self.history_frame()}
+        return {**self.static.frames(), "chute gusts": self.gust_frame(),
+                "chute sweep": self.to_frame(), "chute histories": self.history_frame()}
 
 
 def sizing_sweep(model, factors=None, gusts=None, settings=None, fit_range=FIT_RANGE,
@@ -737,7 +757,7 @@ def sizing_sweep(model, factors=None, gusts=None, settings=None, fit_range=FIT_R
     areas = np.repeat(factors * static.area, len(gusts))
     gust_runs = tuple(gusts) * factors.size
     runs = run_yaw(model, areas, gust_runs, settings, fit_range, metrics, integrator)
-    return SweepResult(static, factors, runs, gusts)
+    return SweepResult(static, factors, runs, gusts, model.condition.tas)
 
 
 def with_area(model, area):
@@ -746,7 +766,8 @@ def with_area(model, area):
 
 
 __all__ = [
-    "FIT_RANGE", "LineLengthResult", "LinearYaw", "LinearisationResult", "MetricSettings",
-    "NeutralAreaResult", "SweepResult", "YawModel", "YawRuns", "line_length", "linear_yaw",
-    "neutral_area", "run_yaw", "sizing_sweep", "with_area", "yaw_linearisation",
+    "FIT_RANGE", "SIDESLIP_LIMIT", "VERDICTS", "LineLengthResult", "LinearYaw",
+    "LinearisationResult", "MetricSettings", "NeutralAreaResult", "SweepResult", "YawModel",
+    "YawRuns", "gust_frame", "line_length", "linear_yaw", "neutral_area", "run_yaw",
+    "sizing_sweep", "with_area", "yaw_linearisation",
 ]

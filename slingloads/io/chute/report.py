@@ -150,7 +150,7 @@ def compute(study):
         sweep = None
         if not static.already_stable:
             sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
-                                 inputs.fit_range, static=static,
+                                 inputs.fit_range, metrics=inputs.metrics, static=static,
                                  integrator=inputs.integrator)
     recommended = inputs.recommended_factor * static.area if sweep is not None else 0.0
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended))
@@ -189,7 +189,10 @@ def summary_tables(result, units="SI"):
         ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),
-        ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg", "fit over +- this"),
+        ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg",
+         "fit over +- this; a run leaving it is never called stable"),
+        ("sideslip limit", float(np.degrees(inp.metrics.sideslip_limit)), "deg",
+         "a run passing it is never called stable"),
         ("parachute canopy CD (free stream)", float(m.parachute.coefficient(0.0)), "-",
          "ParachuteCD at canopy alpha 0 (default 1.0)"),
         ("parachute wake ratio", float(m.parachute.wake_ratio), "-",
@@ -321,7 +324,9 @@ def _sheets(result, units, digest):
     }
     if result.sweep is not None:
         area = {"area [m^2]": ("area", "area")}
+        speed = {c: (c[:c.index(" [")], "speed") for c in ("peak gust [m/s]",)}
         sheets["Sweep"] = [
+            Section("Gust shapes", convert_columns(result.sweep.gust_frame(), speed, units)),
             Section("Stability by area", convert_columns(result.stability_by_area(), area,
                                                          units)),
             Section("Every run", convert_columns(result.sweep.to_frame(), area, units))]
