@@ -62,6 +62,12 @@ PARAMETERS = {
     "run lateral": ("yes", ""),
     "lateral design-angle margin": (1.5, ""),
     "lateral cable model": ("rigid", ""),
+    "lateral damping source": ("aerodynamic tables", ""),
+    "lateral airspeed EAS": (0, "kt"),
+    "lateral roll inertia spread": (0.2, ""),
+    "lateral CG below hub spread": (0.2, ""),
+    "lateral rope length spread": (0.2, ""),
+    "lateral spread points": (5, ""),
     "lateral simulation time": (30, "s"),
     "lateral RK4 step": (0.05, "s"),
     "lateral history method": ("DOP853", ""),
@@ -80,8 +86,12 @@ NOTES = [
     " match the operation being certified (accelerations, durations, and braking timed at "
     "half the swing period if the operation allows it), or the recommended angle does not "
     "show that it 'cannot be exceeded in service' (CS 29.865).",
+    "Uncertainty: roll inertia, CG distance below the hub and rope length each +-20 % "
+    "(five values each, every combination: 125 variants of every motion and rope); the "
+    "recommended angle is taken over that envelope. Damping from the aerodynamic tables at 0 "
+    "kt: the paper's hover step, where there is no linear aerodynamic damping (zero).",
     "Solver: RK4 step 0.05 s over 30 s for the sweep, chosen for a fast example run (the "
     "report re-runs the critical case with solve_ivp, DOP853 rtol 1e-6, and shows the "
-    "difference, about 0.2 %); damping off (the paper's assumption). For a real study leave "
+    "difference); no damping in hover (the paper's assumption). For a real study leave "
     "'lateral RK4 step' and 'lateral simulation time' at 0 (automatic) or check convergence.",
 ]

@@ -177,6 +177,55 @@ def test_damping_only_dissipates():
     assert energy[-1] < energy[0]
 
 
+@pytest.mark.parametrize("cable_ea", [None, 5e8])
+def test_damping_power_is_the_dampers_work(cable_ea):
+    """Work-energy theorem with the damping applied at a point h = 1.5 m above the CG and a
+    fixed hook: dE/dt = -c y_P'^2 - c_r theta2'^2 along the run (y_P' the damped point's
+    lateral speed, from the geometry: y_P = y_hub + (e - h) sin theta2), for the rigid rope
+    (Lagrange) and the elastic cable (Newton-Euler): the generalised damping forces of each
+    derivation do exactly the dampers' work."""
+    c, c_r, h = 3000.0, 4000.0, 1.5
+    pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=cable_ea, lateral_damping=c,
+                               roll_damping=c_r, damping_height=h)
+    r = pendulum.hanging_length                         # swung out 0.3 rad, cable at rest
+    x0 = ([0.3, -0.2, 0.0, 0.4] if cable_ea is None else
+          [r * np.sin(0.3), -r * np.cos(0.3), -0.2, 0.0, 0.0, 0.4])
+    run = simulate(pendulum, FIXED, x0=x0,
+                   solver=SolverSettings(t_end=4.0, output_interval=0.001, method="DOP853",
+                                         rtol=1e-11, atol=1e-12))
+    energy = _energy(run)
+    th2, w2 = run.theta2, (run.states[3] if cable_ea is None else run.states[5])
+    e = UH60.cg_below_hub
+    if cable_ea is None:
+        hub_vy = run.pendulum.rope_length * np.cos(run.states[0]) * run.states[2]
+    else:
+        hub_vy = run.states[3]
+    vp = hub_vy + (e - h) * np.cos(th2) * w2
+    power = -c * vp**2 - c_r * w2**2
+    rate = np.gradient(energy, run.t)
+    scale = np.abs(power).max()
+    assert_allclose(rate[2:-2], power[2:-2], atol=2e-4 * scale)
+
+
+def test_lateral_damping_of_a_point_mass_decays_at_the_closed_form_rate():
+    """Point mass (CG at the hub, e = 0) on a rope with lateral damping c: m l^2 theta'' +
+    c l^2 theta' + m g l theta = 0, so the swing decays as exp(-c t/(2 m)) with the damped
+    period 2 pi / sqrt(g/l - (c/2m)^2): successive peaks of a small swing (0.01 rad) have
+    the ratio exp(-c T_d/(2 m))."""
+    body = SlungBody(1000.0, 1.0, 0.0, "point")
+    L, c = 10.0, 400.0
+    pendulum = LateralPendulum(body, L, lateral_damping=c)
+    sigma = c / (2 * body.mass)
+    period = 2 * np.pi / np.sqrt(G0 / L - sigma**2)
+    run = simulate(pendulum, FIXED, x0=[0.01, 0.0, 0.0, 0.0],
+                   solver=replace(TIGHT, t_end=2.2 * period, output_interval=0.001))
+    th = run.theta1
+    i1 = int(np.argmax(th[run.t > 0.5 * period])) + int(np.sum(run.t <= 0.5 * period))
+    i2 = int(np.argmax(th[run.t > 1.5 * period])) + int(np.sum(run.t <= 1.5 * period))
+    assert run.t[i2] - run.t[i1] == pytest.approx(period, abs=2e-3)
+    assert th[i2] / th[i1] == pytest.approx(np.exp(-sigma * period), rel=1e-4)
+
+
 def test_elastic_cable_converges_to_rigid_rope():
     """As EA grows, the elastic cable's peak load angle and peak tension tend to the rigid
     rope's (the rigid-rope limit): EA = 1e6, 1e7, 1e8 N give load-angle differences of about
