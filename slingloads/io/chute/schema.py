@@ -118,8 +118,11 @@ PARAMETERS = (
     Parameter("chute sizing number of areas", INTEGER, "", 11,
               "Number of swept areas, evenly spaced, >= 1.", _S),
     Parameter("chute sizing recommended factor", "dimensionless", "", 1.4,
-              "Recommended area over the neutral static area (paper: FPA + 40 % from the "
-              "multibody study), > 0.", _S),
+              "Recommended area over the neutral static area, > 0. 1.4 is the paper's optimum "
+              "for its own aircraft (FPA + 40 %, found by its multibody campaign: the 1-DOF "
+              "model had confirmed the neutral area, the shortfall came from inter-axis "
+              "coupling); a placeholder until a multibody campaign computes this aircraft's.",
+              _S),
 )
 
 SHEETS = (

@@ -309,7 +309,8 @@ def _default_hull_station(result, pair):
 
 def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
-                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True):
+                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
+                        checks=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -336,6 +337,9 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Rows per sheet including the header (Excel's limit by default).
     plots : bool
         Draw the PNG plots and the Plots sheet (False for fast batch runs).
+    checks : pandas.DataFrame, optional
+        Checks against the other analyses of the run (:mod:`slingloads.io.consistency`),
+        shown on the Summary sheet with a warning when one fails.
 
     Returns
     -------
@@ -385,7 +389,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         embedded = {"X shear (Vx)": pngs["X_shear"], "Y shear (Vy)": pngs["Y_shear"],
                     "All six components": pngs["sfbm_all"]}
         embedded.update({tag: pngs[tag] for tag in hull_plots})
-    sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations)
+    sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks)
 
     with atomic_outputs(out_dir, inputs=input_paths) as out:
         write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,
@@ -401,12 +405,20 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     return out.written
 
 
-def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations):
+def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks=None):
     """The sheets of the loads workbook, in order."""
     digest = digest_frame(inputs_digest)
     summary = [
         Section("Inputs", digest) if digest is not None
         else Section("Inputs", note="no input digest given"),
+    ]
+    if checks is not None and len(checks):
+        failed = checks[checks["status"] != "ok"]
+        summary.append(Section(
+            "Consistency with the other analyses of this run", checks,
+            note=("WARNING: " + " ".join(failed["note"])) if len(failed) else
+                 "Every check against the other analyses of this run passes."))
+    summary += [
         Section("Study", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
                 note=result.attitude.describe() + ". Gravity, the vertical hook case and the "
@@ -470,11 +482,12 @@ def compute(study):
     return study.loads.run()
 
 
-def write(result, out_dir, stem, units, study):
+def write(result, out_dir, stem, units, study, checks=None):
     """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
-    run's outputs ``out_dir``, with the study's inputs digest and hull options."""
+    run's outputs ``out_dir``, with the study's inputs digest and hull options, and the
+    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`)."""
     return write_loads_outputs(result, out_dir, stem, units=units,
                                inputs_digest=study.digest(),
                                hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
                                hull_stations=study.options.get("hull stations"),
-                               input_paths=[study.path])
+                               input_paths=[study.path], checks=checks)
