@@ -29,8 +29,8 @@ def results():
 
 
 def test_peak_sideslip_outside_the_envelope_is_a_warning(results):
-    """The example: at its Study 'parachute area' (1.0 m^2) the finite gust drives the
-    sideslip to about 17.9 deg, outside the loads' AeroEnvelope beta of +-15 deg: WARNING,
+    """The example: at its Study 'parachute area' (0.9 m^2) the finite gust drives the
+    sideslip to about 17.7 deg, outside the loads' AeroEnvelope beta of +-15 deg: WARNING,
     the value being the largest peak |beta| of the gust runs at that area."""
     row = consistency_checks(results)["loads"].iloc[0]
     runs = results["chute sizing"].study_area_runs.to_frame()
