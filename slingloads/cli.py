@@ -140,6 +140,7 @@ def _ask_nastran(study, names):
 
 def _analyse(args):
     from slingloads.io.common.atomic import atomic_outputs
+    from slingloads.io.consistency import consistency_checks
     from slingloads.io.study import read_study
 
     show = not args.quiet
@@ -163,11 +164,13 @@ def _analyse(args):
             study.results.setdefault(name, results[name])
             bar.update(1)
         stem = Path(args.workbook).stem
+        checks = consistency_checks(results)
         # one set of outputs for every analysis: all published together, or none
         with atomic_outputs(args.out, inputs=[args.workbook]) as outputs:
             for name in names:
                 bar.set_description(f"writing {name}")
-                ANALYSES[name][2](results[name], outputs, stem, args.units, study)
+                extra = {"checks": checks[name]} if name in checks else {}
+                ANALYSES[name][2](results[name], outputs, stem, args.units, study, **extra)
                 bar.update(1)
         written = outputs.written
         bar.update(1)

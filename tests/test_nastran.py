@@ -519,22 +519,20 @@ def test_point_loads_are_mapped_once(example):
 # --- the command line and the workbook ---------------------------------------------------------
 
 def with_rows(tmp_path, rows, edit=None, name="nastran.xlsx"):
-    """A copy of the example with Study rows (parameter, value, unit) set: the row's value
-    and unit replaced where the example has it (a regenerated example lists every parameter),
-    appended otherwise."""
+    """A copy of the example with Study rows (parameter, value, unit) set, or added where the
+    example does not list them."""
     book = openpyxl.load_workbook(EXAMPLE)
     ws = book["Study"]
-    existing = {r[0].value: r[0].row for r in ws.iter_rows(min_row=2) if r[0].value}
+    listed = {row[0].value: row[0].row for row in ws.iter_rows(min_row=2)}
     cells = {}
     for parameter, value, unit in rows:
-        if parameter in existing:
-            row = existing[parameter]
-            ws.cell(row, 2, value)
-            ws.cell(row, 3, unit)
+        if parameter in listed:
+            r = listed[parameter]
+            ws[f"B{r}"], ws[f"C{r}"] = value, unit
         else:
             ws.append([parameter, value, unit])
-            row = ws.max_row
-        cells[parameter] = f"B{row}"
+            r = ws.max_row
+        cells[parameter] = f"B{r}"
     if edit is not None:
         edit(book)
     path = tmp_path / name

@@ -11,7 +11,7 @@ from __future__ import annotations
 from slingloads.io.common.schema import TEXT, Column, Parameter, Section, TableSheet
 
 #: Kinds of the Hardpoints rows.
-HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference")
+HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference", "htail_cp")
 
 PARAMETERS = (
     Parameter("reference axis y", "length", "m", 0.0,
@@ -78,7 +78,8 @@ SHEETS = (
     ), required=True, help="Cut stations where internal loads are reported."),
     TableSheet("Hardpoints", (
         Column("id", TEXT, help="Unique name."),
-        Column("kind", TEXT, help="hub | mast_foot | chute | fin_cp | aero_reference"),
+        Column("kind", TEXT, help="hub | mast_foot | chute | fin_cp | aero_reference | "
+                                  "htail_cp"),
         Column("x", "length", "m"),
         Column("y", "length", "m"),
         Column("z", "length", "m"),
@@ -86,7 +87,8 @@ SHEETS = (
                "Share weight of a mast foot in the rigid-body (RBE3-like) distribution."),
     ), required=True, help="Where external loads enter: rotor hub (hook), mast feet on the "
        "transmission deck, parachute attachment on the fin, fin centre of pressure, moment "
-       "reference point of the fuselage aerodynamic coefficients."),
+       "reference point of the fuselage aerodynamic coefficients, horizontal-tail centre of "
+       "pressure (the multibody model's full-tail configuration)."),
     TableSheet("AeroPoints", (
         Column("x", "length", "m", help="Point of the loads reference axis."),
         Column("weight", "dimensionless", "", help="Share of the fuselage aero load, > 0."),

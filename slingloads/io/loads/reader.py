@@ -15,7 +15,7 @@ import pandas as pd
 
 from slingloads.analyses.fe_loads import HOOK_POINTS, ModelAxes
 from slingloads.analyses.hook_loads import CONE_SHAPES, HookLoadOptions, horizontal_basis
-from slingloads.analyses.loads import AeroEnvelope, FlightCondition, ListedCase, LoadsStudy
+from slingloads.analyses.loads import AeroEnvelope, ListedCase, LoadsStudy
 from slingloads.analyses.sfbm import COMPONENTS
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import (
@@ -29,6 +29,7 @@ from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
 from slingloads.io.loads.schema import SHEETS
 from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attitude
+from slingloads.models.flight import FlightCondition
 
 _SPEC = {s.name: s for s in SHEETS}
 

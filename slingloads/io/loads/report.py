@@ -314,7 +314,7 @@ def _default_hull_station(result, pair):
 def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
                         input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
-                        nastran=None, dynamics=None):
+                        nastran=None, checks=None, dynamics=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -345,6 +345,9 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Also write ``<stem>-loads.bdf``, the load cases as a Nastran input file in the units
         ``units``, with these options of :func:`~slingloads.io.loads.nastran.prepare_nastran`
         (True: the defaults), and a *Nastran* sheet linking each subcase to its case id.
+    checks : pandas.DataFrame, optional
+        Checks against the other analyses of the run (:mod:`slingloads.io.consistency`),
+        shown on the Summary sheet with a warning when one fails.
     dynamics : pandas.DataFrame, optional
         The campaign's hand-off comparison (:class:`~slingloads.analyses.campaign.Handoff`
         ``.comparison``): written on a *Dynamics* sheet with the largest loads of the
@@ -403,7 +406,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         embedded = {"X shear (Vx)": pngs["X_shear"], "Y shear (Vy)": pngs["Y_shear"],
                     "All six components": pngs["sfbm_all"]}
         embedded.update({tag: pngs[tag] for tag in hull_plots})
-    sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations)
+    sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks)
     if deck is not None:
         sheets["Nastran"] = nastran_sheet(deck)
     if dynamics is not None:
@@ -435,12 +438,20 @@ def nastran_sheet(deck):
             Section("Grids (model axes, file units) and CONM2 elements", deck.grid_table())]
 
 
-def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations):
+def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks=None):
     """The sheets of the loads workbook, in order."""
     digest = digest_frame(inputs_digest)
     summary = [
         Section("Inputs", digest) if digest is not None
         else Section("Inputs", note="no input digest given"),
+    ]
+    if checks is not None and len(checks):
+        failed = checks[checks["status"] != "ok"]
+        summary.append(Section(
+            "Consistency with the other analyses of this run", checks,
+            note=("WARNING: " + " ".join(failed["note"])) if len(failed) else
+                 "Every check against the other analyses of this run passes."))
+    summary += [
         Section("Study", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
                 note=result.attitude.describe() + ". Gravity, the vertical hook case and the "
@@ -551,9 +562,10 @@ def compute(study):
     return handoff.study.run()
 
 
-def write(result, out_dir, stem, units, study):
+def write(result, out_dir, stem, units, study, checks=None):
     """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
-    run's outputs ``out_dir``, with the study's inputs digest and hull options."""
+    run's outputs ``out_dir``, with the study's inputs digest and hull options, and the
+    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`)."""
     nastran = None
     if study.options.get("nastran"):
         nastran = {**study.options["nastran settings"],
@@ -564,5 +576,5 @@ def write(result, out_dir, stem, units, study):
                                    inputs_digest=study.digest(),
                                    hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
                                    hull_stations=study.options.get("hull stations"),
-                                   input_paths=[study.path], nastran=nastran,
+                                   input_paths=[study.path], nastran=nastran, checks=checks,
                                    dynamics=None if handoff is None else handoff.comparison)
