@@ -95,7 +95,7 @@ class ClosureError(SlingloadsError):
     """A load case whose free-free internal loads do not close to zero within tolerance."""
 
 
-class OutputError(SlingloadsError):
+class OutputError(SlingloadsError, OSError):
     """The outputs cannot be written: a failure of the environment, not of the input.
 
     Parameters
@@ -110,3 +110,6 @@ class OutputError(SlingloadsError):
         self.rule = rule
         self.path = None if path is None else str(path)
         super().__init__(f"{rule}: {self.path}" if self.path else rule)
+
+    def __str__(self):
+        return f"{self.rule}: {self.path}" if self.path else self.rule

@@ -112,7 +112,7 @@ MAX_HISTORY_SAMPLES = MAX_CSV_ROWS
 #: Stored samples of the critical lateral run's time histories (run length / output step).
 MAX_HISTORY_OUTPUT = 200_000
 #: Right-hand-side evaluations of one adaptive (solve_ivp) run before it is stopped.
-MAX_ODE_EVALUATIONS = 2_000_000
+MAX_ODE_EVALUATIONS = 500_000
 #: Swept parachute areas.
 MAX_CHUTE_AREAS = 500
 #: Runs of the parachute sweep: areas x gust shapes.
@@ -132,7 +132,7 @@ MAX_CHUTE_REFERENCE_RUNS = 50
 MAX_OUTPUT_ENTRIES = 20_000
 
 
-def check_count(count, limit, what):
+def check_count(count, limit, what, field=None):
     """Return ``count`` if it is at most ``limit``, else raise an InputError naming ``what``.
 
     Parameters
@@ -141,6 +141,9 @@ def check_count(count, limit, what):
     limit : int
     what : str
         What is counted, e.g. ``"lateral runs (motions x ropes x bodies)"``.
+    field : str, optional
+        The argument that sets the count (``"step"``), so that the io layer can point at the
+        cell it came from.
 
     Raises
     ------
@@ -150,6 +153,38 @@ def check_count(count, limit, what):
     from slingloads.errors import InputError
 
     if count > limit:
-        raise InputError(f"too much work: at most {limit:,} {what} are allowed "
-                         f"(limits of slingloads.limits)", int(count))
+        raise InputError(f"too much work: at most {limit:,} {what} are allowed (limits of "
+                         "slingloads)", int(count), field=field)
     return count
+
+
+def evaluation_budget(function, what, field=None, limit=None):
+    """Wrap an ODE right-hand side so that more than ``limit`` calls raise an InputError.
+
+    An adaptive integrator may take any number of steps (a stiff problem, a tolerance at the
+    round-off): the budget turns a run that would take hours into a located error.
+
+    Parameters
+    ----------
+    function : callable
+    what : str
+        What is integrated, for the message.
+    field : str, optional
+        The setting to change (``"rtol"``), for the io layer.
+    limit : int, optional
+        Default :data:`MAX_ODE_EVALUATIONS`.
+    """
+    from slingloads.errors import InputError
+
+    limit = MAX_ODE_EVALUATIONS if limit is None else limit
+    calls = [0]
+
+    def counted(*args):
+        calls[0] += 1
+        if calls[0] > limit:
+            raise InputError(f"too much work: {what} needs more than {limit:,} evaluations "
+                             "(limits of slingloads); loosen the tolerance, shorten the run or "
+                             "check the inputs for a very stiff case", limit, field=field)
+        return function(*args)
+
+    return counted

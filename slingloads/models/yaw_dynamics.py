@@ -58,6 +58,7 @@ from scipy.integrate import solve_ivp
 
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
+from slingloads.limits import MAX_ODE_EVALUATIONS, evaluation_budget
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
 from slingloads.models.atmosphere import dynamic_pressure_eas, isa_density, true_airspeed
@@ -525,7 +526,9 @@ def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None)
             dpsi, drate, _ = model.derivatives(y[0], y[1], gamma, v_rel, area)
             return [float(dpsi), float(drate)]
 
-        sol = solve_ivp(rhs, (0.0, times[-1]), [psi0[j], rate0[j]], method=settings.method,
+        budget = evaluation_budget(rhs, "the solve_ivp reference runs", field="rtol",
+                                   limit=MAX_ODE_EVALUATIONS // runs)
+        sol = solve_ivp(budget, (0.0, times[-1]), [psi0[j], rate0[j]], method=settings.method,
                         t_eval=times, rtol=settings.rtol, atol=settings.atol,
                         max_step=max_step)
         if not sol.success:

@@ -57,19 +57,39 @@ class Bounds:
                     and (value > self.hi or (self.hi_open and value == self.hi)))
 
     def text(self, scale=1.0, unit=""):
-        """The rule in words, bounds divided by ``scale`` and followed by ``unit``:
-        ``"> 0"``, ``">= 0 and < 90 deg"``, ``"nonzero"``."""
-        parts = []
-        if self.lo is not None:
-            parts.append(f"{'>' if self.lo_open else '>='} {self.lo / scale:.6g}")
-        if self.hi is not None:
-            parts.append(f"{'<' if self.hi_open else '<='} {self.hi / scale:.6g}")
-        text = " and ".join(parts)
-        if parts and unit:
-            text += f" {unit}"
+        """The allowed range in words, bounds divided by ``scale`` and followed by ``unit``:
+        ``"> 0 kg"``, ``"in [0, 90) deg"``, ``"not 0"``."""
+        suffix = f" {unit}" if unit else ""
+        if self.lo is not None and self.hi is not None:
+            text = (f"in {'(' if self.lo_open else '['}{self.lo / scale:.6g}, "
+                    f"{self.hi / scale:.6g}{')' if self.hi_open else ']'}{suffix}")
+        elif self.lo is not None:
+            text = f"{'>' if self.lo_open else '>='} {self.lo / scale:.6g}{suffix}"
+        elif self.hi is not None:
+            text = f"{'<' if self.hi_open else '<='} {self.hi / scale:.6g}{suffix}"
+        else:
+            text = ""
         if self.nonzero:
             text = f"{text}, not 0" if text else "not 0"
         return text
+
+    def rule(self, value, scale=1.0, unit=""):
+        """The rule ``value`` (in the bounds' unit) breaks: ``"must be > 0 kg"``, followed by
+        the allowed range when it has two ends."""
+        suffix = f" {unit}" if unit else ""
+        if self.nonzero and value == 0:
+            side = "must not be 0"
+        elif self.lo is not None and (value < self.lo or (self.lo_open and value == self.lo)):
+            side = f"must be {'>' if self.lo_open else '>='} {self.lo / scale:.6g}{suffix}"
+        else:
+            side = f"must be {'<' if self.hi_open else '<='} {self.hi / scale:.6g}{suffix}"
+        if self.lo is not None and self.hi is not None:
+            side += f" (allowed: {self.text(scale, unit)})"
+        return side
+
+
+#: Bounds of a relative tolerance of solve_ivp (below 1e-13 it is under the round-off).
+RELATIVE_TOLERANCE = Bounds(1e-13, 0.1)
 
 
 def above(lo, **kw):

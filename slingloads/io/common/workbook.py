@@ -146,6 +146,8 @@ class Table:
         """``(value as written, unit of the header)`` of column ``name`` in record ``index``."""
         raw = self.raw.get(name)
         value = raw[index] if raw is not None else self.values[name][index]
+        if isinstance(self.values[name], np.ndarray):
+            value = _number_echo(value)
         return value, self.units.get(name) or None
 
     def error(self, name, index, rule):
@@ -290,6 +292,8 @@ class WorkbookReader:
         self.path = Path(path)
         self.file = str(path)
         self._referenced = []
+        #: Implausible but possible inputs, shown on the reports' Summary.
+        self.warnings = []
         self._tables = {}
         self._cells_read = {}
         if _source is None:
@@ -555,7 +559,7 @@ class WorkbookReader:
             return column.default
         number = parse_number(raw, column.header, self.error, sheet, where)
         return check_quantity(number, raw, column.kind, factor, unit, column.bounds,
-                              column.unit, column.header, self.error, sheet, where)
+                              column.unit, column.name, self.error, sheet, where)
 
     # ---- the Study sheet ------------------------------------------------------------------
     def parameters(self, known, sheet=STUDY_SHEET):
@@ -721,7 +725,7 @@ class WorkbookReader:
                              f"{[f'{wanted[c][0]} [unit]' for c in wanted]}",
                              _echo(", ".join(header)), *where)
         factors = {}
-        for key, (label, kind) in wanted.items():
+        for key, (_label, kind) in wanted.items():
             _, head, unit = index[key]
             if not unit:
                 raise self.error(f"CSV {name}: column {head!r} needs a unit in brackets",
@@ -736,7 +740,7 @@ class WorkbookReader:
                 if k > max_rows:
                     raise self.error(f"CSV {name}: at most {max_rows:,} data rows are "
                                      "allowed", text, *where)
-                for key, (label, kind) in wanted.items():
+                for key, (_label, kind) in wanted.items():
                     j, head, unit = index[key]
                     cell_text = row[j] if j < len(row) else ""
                     try:
@@ -858,19 +862,32 @@ def check_quantity(number, raw, kind, factor, unit, bounds, spec_unit, what, err
     """
     value = number * factor
     shown = unit or None
+    echo = _number_echo(raw)
     if kind == INTEGER and not float(number).is_integer():
-        raise error(f"{what!r} must be a whole number", _echo(raw), sheet, where)
+        raise error(f"{what} must be a whole number", echo, sheet, where)
     limit = MAX_MAGNITUDE.get(kind)
     if limit is not None and not abs(value) <= limit:
-        raise error(f"{what!r} must not exceed {limit / factor:.6g} in magnitude (limit of "
-                    f"its kind, {kind})", _echo(raw), sheet, where, shown)
+        raise error(f"{what} must not exceed {limit / factor:.6g}{' ' + unit if unit else ''} "
+                    f"in magnitude (limit of every {kind} in slingloads)", echo, sheet, where,
+                    shown)
     if bounds is not None:
         b_unit = bounds.unit if bounds.unit is not None else spec_unit
         b_factor = 1.0 if kind == INTEGER else si_factor(b_unit or "", kind)
         if not bounds.contains(value / b_factor):
-            rule = bounds.text(scale=factor / b_factor, unit=unit)
-            raise error(f"{what!r} must be {rule}", _echo(raw), sheet, where, shown)
+            rule = bounds.rule(value / b_factor, scale=factor / b_factor, unit=unit)
+            raise error(f"{what} {rule}", echo, sheet, where, shown)
     return int(number) if kind == INTEGER else value
+
+
+def _number_echo(raw):
+    """A numeric cell's value for a message: numbers as floats (``0.0``, ``-12.5``), text as
+    written."""
+    if isinstance(raw, (int, float)) and not isinstance(raw, bool):
+        try:
+            return float(raw)
+        except OverflowError:
+            return raw
+    return _echo(raw)
 
 
 def parse_flag(raw, what, error, sheet, where, default):

@@ -23,7 +23,6 @@ component; the conversions shared by every report are in :mod:`slingloads.io.com
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -35,7 +34,8 @@ from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.atomic import atomic_outputs, check_not_input, safe_file_part
+from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
@@ -53,6 +53,11 @@ from slingloads.io.common.report import (
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.loads.plots import COMPONENT_TAGS, plot_hull, plot_sfbm, plot_sfbm_grid
+
+#: Names of the files of a loads report (``*``: a part made from a station id), for the
+#: publisher: a new report replaces every earlier file of these names.
+OUTPUTS = ("{stem}-loads.xlsx", "{stem}-sfbm.csv", "{stem}-envelope.csv", "{stem}-X_shear.png",
+           "{stem}-Y_shear.png", "{stem}-sfbm_all.png", "{stem}-hull_*.png")
 
 #: Components drawn on their own PNG (the paper's figures 19 and 20); all six are on the grid.
 PNG_COMPONENTS = ("Vx", "Vy")
@@ -297,8 +302,9 @@ def governing_report_table(result, units="SI"):
 
 
 def _safe(text):
-    """A file-name-safe version of a station id."""
-    return re.sub(r"[^A-Za-z0-9._-]+", "_", str(text)).strip("_") or "station"
+    """A file-name-safe version of a station id (the Stations reader refuses ids that give
+    the same one)."""
+    return safe_file_part(text)
 
 
 def _default_hull_station(result, pair):
@@ -392,10 +398,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                        number_format=NUMBER_FORMATS,
                        highlight={"Exceedance": Highlight(["exceedance ratio"], 1.0)},
                        max_rows=max_rows)
-        result.to_frame().to_csv(out.path(f"{stem}-sfbm.csv"), index=False,
-                                 columns=list(SFBM_CSV_COLUMNS), lineterminator="\n")
-        result.envelope().to_csv(out.path(f"{stem}-envelope.csv"), index=False,
-                                 lineterminator="\n")
+        write_csv(result.to_frame(), out.path(f"{stem}-sfbm.csv"), columns=SFBM_CSV_COLUMNS)
+        write_csv(result.envelope(), out.path(f"{stem}-envelope.csv"))
         for tag, png in pngs.items():
             out.path(f"{stem}-{tag}.png").write_bytes(png)
     return out.written
@@ -477,4 +481,4 @@ def write(result, out_dir, stem, units, study):
                                inputs_digest=study.digest(),
                                hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
                                hull_stations=study.options.get("hull stations"),
-                               input_paths=[study.path])
+                               input_paths=study.input_files)
