@@ -223,7 +223,7 @@ def linear_fit(angle, values, lo, hi, what="aerodynamic"):
     if np.count_nonzero(inside) < 2:
         raise InputError(
             f"the {what} table has fewer than two breakpoints in the fitting range "
-            f"[{np.degrees(lo):.6g}, {np.degrees(hi):.6g}] deg",
+            f"[{np.degrees(lo):.6g}, {np.degrees(hi):.6g}] deg", field="fit_range",
         )
     slope, intercept = np.polyfit(angle[inside], np.asarray(values)[inside], 1)
     return float(slope), float(intercept)

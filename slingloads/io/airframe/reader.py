@@ -12,10 +12,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from slingloads.errors import InputError
 from slingloads.io.airframe.schema import HARDPOINT_KINDS, SHEETS
 from slingloads.io.common.atomic import safe_file_part
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.common.workbook import cell_name, check_unique, located
 from slingloads.limits import MAX_AIRFRAME_SIZE
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import (
@@ -50,8 +51,9 @@ def read_airframe(reader, params):
     airframe : Airframe
     points : dict
         Hardpoint position by kind (``hub``, ``mast_foot``, ``chute``, ``fin_cp``,
-        ``aero_reference``: the first row of that kind, or None) [m], and ``chute_row``: the
-        0-based row of the chute hardpoint, or None.
+        ``aero_reference``: the first row of that kind, or None) [m], ``chute_row``: the
+        0-based row of the chute hardpoint, or None, and ``rows``: the 0-based rows of each
+        kind (to locate errors on derived quantities).
 
     Raises
     ------
@@ -89,6 +91,7 @@ def read_airframe(reader, params):
     _check_stations_span(reader, stations, items_t, hp_t, airframe)
     refs = {k: (v[0][1] if v else None) for k, v in points.items()}
     refs["chute_row"] = points["chute"][0][3] if points["chute"] else None
+    refs["rows"] = {k: [p[3] for p in v] for k, v in points.items()}
     return airframe, refs
 
 
@@ -165,7 +168,33 @@ def _mass_items(reader):
     with items_t.located(fields):
         items = MassItems(tuple(items_t["id"]), masses, position, inertia,
                           tuple(items_t["description"]) if items_t.has("description") else ())
+    if items.total_mass < MIN_TOTAL_MASS:
+        raise items_t.error("mass", int(np.argmax(masses)), f"the mass items weigh "
+                            f"{items.total_mass:.3g} kg in all, less than the "
+                            f"{MIN_TOTAL_MASS:g} kg of any aircraft (check the header's unit)")
+    _check_rigid_inertia(items_t, items)
     return items, items_t
+
+
+#: Smallest total mass of the mass items. [kg]
+MIN_TOTAL_MASS = 1.0
+
+
+def _check_rigid_inertia(items_t, items):
+    """The mass items must have inertia about every axis through their CG, else inertia
+    relief cannot balance a moment about that axis (the loads would not close)."""
+    tensor = items.inertia_about_cg
+    values, vectors = np.linalg.eigh(tensor)
+    if values[0] <= 1e-9 * max(values[-1], 1e-300):
+        axis = vectors[:, 0] * np.sign(vectors[np.argmax(np.abs(vectors[:, 0])), 0])
+        names = [c for c in ("Ixx", "Iyy", "Izz") if items_t.has(c)]
+        cell = items_t.cell(names[0], 0) if names else cell_name(1, len(items_t.cells) + 1)
+        raise InputError(f"the mass items have no inertia about the axis "
+                         f"({axis[0]:.3g}, {axis[1]:.3g}, {axis[2]:.3g}) through their CG (all "
+                         "on one line, without own inertias): inertia relief cannot balance a "
+                         "moment about it; give the items their own inertias (Ixx, Iyy, Izz "
+                         "columns) or their true positions", file=items_t.file,
+                         sheet=items_t.sheet, cell=cell)
 
 
 def _check_extent(items_t, position):

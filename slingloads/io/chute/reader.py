@@ -157,6 +157,13 @@ def read(reader, params, study):
     params.check("chute sizing linearisation range", half <= min(-lo, hi),
            f"the linearisation range must lie inside the tables' sideslip range "
            f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+    for what, grid in (("FuselageAero", None if fuselage is None else fuselage.table.beta),
+                       ("FinAero", None if fin is None else fin.table.angle)):
+        if grid is not None:
+            inside = np.count_nonzero(np.abs(grid) <= half + 1e-12)
+            params.check("chute sizing linearisation range", inside >= 2,
+                         f"the {what} table has {inside} sideslip breakpoint(s) within the "
+                         "linearisation range: the least-squares fit needs at least two")
     # ---- wake and line
     target = params("chute sizing target q ratio")
     params.check("chute sizing target q ratio", 0 < target <= 1,

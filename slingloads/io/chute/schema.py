@@ -130,4 +130,5 @@ SHEETS = (
 SECTION = Section("chute sizing", parameters=PARAMETERS, sheets=SHEETS)
 
 #: The Study parameter behind each setting the analysis may refuse while computing.
-COMPUTE_FIELDS = {"rtol": "chute sizing reference rtol"}
+COMPUTE_FIELDS = {"rtol": "chute sizing reference rtol",
+                  "fit_range": "chute sizing linearisation range"}

@@ -220,21 +220,18 @@ class AtomicOutputs:
             raise OutputError("the output folder is a mount point or the root folder, which "
                               "cannot be replaced as a whole: write the reports to a "
                               "sub-folder of it", self.out_dir)
-        try:
-            if os.path.samefile(real, os.getcwd()):
-                raise InputError("the output folder is the current folder: the report set "
-                                 "is published by replacing the output folder as a whole, "
-                                 "which would leave your shell in a removed folder; write to "
-                                 "a sub-folder, e.g. --out reports", str(self.out_dir))
-        except (OSError, ValueError):
-            pass  # no current folder, or the output folder does not exist yet
+        if _is_current_folder(real):
+            raise InputError("the output folder is the current folder: the report set is "
+                             "published by replacing the output folder as a whole, which "
+                             "would leave your shell in a removed folder; write to a "
+                             "sub-folder, e.g. --out reports", str(self.out_dir))
         existing = self._existing_ancestor(real)
         if existing == real:
             self._check_folder(real)
-        elif not os.access(existing, os.W_OK | os.X_OK):
-            raise OutputError("cannot create the output folder: permission denied in "
+        elif not _writable(existing):
+            raise OutputError("cannot create the output folder: no write permission in "
                               f"{existing}", self.out_dir)
-        if existing in (real, parent) and not os.access(parent, os.W_OK | os.X_OK):
+        if existing in (real, parent) and not _writable(parent):
             raise OutputError("cannot write beside the output folder (the report set is "
                               f"staged in its parent folder {parent} and swapped in): "
                               "permission denied; choose a folder whose parent you may "
@@ -291,8 +288,7 @@ class AtomicOutputs:
 
     def _check_folder(self, real):
         """An existing output folder: writable, files only, not too many entries."""
-        info = os.stat(real)
-        if not os.access(real, os.W_OK | os.X_OK) or not info.st_mode & 0o222:
+        if not _writable(real):
             raise OutputError("the output folder is read-only (no write permission)",
                               self.out_dir)
         count = 0
@@ -586,6 +582,23 @@ def _stage_prefix(real, kind):
     return f"{TEMP_PREFIX}{tag}.{kind}."
 
 
+def _is_current_folder(real):
+    try:
+        return os.path.samefile(real, os.getcwd())
+    except (OSError, ValueError):  # no current folder, or the output folder is not there yet
+        return False
+
+
+def _writable(folder):
+    """True if files may be created in ``folder``: permitted to this user, and not marked
+    read-only by its mode (which is respected even by an administrator)."""
+    try:
+        mode = os.stat(folder).st_mode
+    except OSError:
+        return False
+    return os.access(folder, os.W_OK | os.X_OK) and bool(mode & 0o222)
+
+
 def _name_max(folder):
     try:
         return int(os.pathconf(folder, "PC_NAME_MAX"))
@@ -664,7 +677,7 @@ def _recover(parent, real):
     fallback publishing: the new set is put in place (or else the old one back). Every other
     folder of dead runs is removed.
     """
-    prefix = _stage_prefix(real, "")
+    prefix = _stage_prefix(real, "")[:-1]
     try:
         leftovers = sorted(e.name for e in os.scandir(parent)
                            if e.name.startswith(prefix) and e.is_dir(follow_symlinks=False))

@@ -363,9 +363,19 @@ def figure_png(figure, dpi=120):
     """
     if isinstance(figure, (bytes, bytearray)):
         return bytes(figure)
+    _plain_text(figure)
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None})
     return buffer.getvalue()
+
+
+def _plain_text(figure):
+    """Draw every text of ``figure`` literally: ids from the inputs (a station ``FS$1$``, a
+    case ``$\\frac$``) are never parsed as mathtext, which could fail or mislead."""
+    from matplotlib.text import Text
+
+    for text in figure.findobj(Text):
+        text.set_parse_math(False)
 
 
 def write_images_sheet(wb, name, images, *, display_width=900):

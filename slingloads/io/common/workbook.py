@@ -390,7 +390,16 @@ class WorkbookReader:
         return self._source.sheetnames
 
     def has_sheet(self, name):
-        return name in self._source.sheetnames
+        return self._sheet(name) is not None
+
+    def _sheet(self, name):
+        """The workbook's name of sheet ``name``: exact, else the one sheet whose name matches
+        it with case and surrounding spaces ignored; None if there is none."""
+        names = self._source.sheetnames
+        if name in names:
+            return name
+        matches = [n for n in names if n.strip().casefold() == name.casefold()]
+        return matches[0] if len(matches) == 1 else None
 
     def error(self, rule, value=None, sheet=None, cell=None, unit=None):
         """An InputError located in this file."""
@@ -414,7 +423,8 @@ class WorkbookReader:
             :data:`~slingloads.limits.MAX_SHEET_CELLS` cells, has more rows than allowed, or
             is corrupt.
         """
-        if name not in self._source.sheetnames:
+        actual = self._sheet(name)
+        if actual is None:
             raise self.error(f"missing sheet {name!r}; the workbook has "
                              f"{_shorten(self._source.sheetnames)}", sheet=name)
         out = []
@@ -422,7 +432,7 @@ class WorkbookReader:
         last = 0
         data_rows = 0
         try:
-            for r, row in self._source.rows(name):
+            for r, row in self._source.rows(actual):
                 cells += len(row)
                 if cells > MAX_SHEET_CELLS:
                     raise self.error(f"the sheet stores more than {MAX_SHEET_CELLS:,} cells "

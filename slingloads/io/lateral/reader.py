@@ -16,8 +16,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from openpyxl.utils import get_column_letter
 
 from slingloads.analyses.lateral import SolverSettings, airframe_body
+from slingloads.errors import InputError
+from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.lateral.schema import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
 from slingloads.io.loads import reader as loads_reader
@@ -38,6 +41,7 @@ from slingloads.models.carrier_motion import (
 from slingloads.models.pendulum import SlungBody
 
 ANALYSIS = "lateral"
+AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
 #: Longest time history (LateralHistory id or CSV file). [s]
 MAX_MAGNITUDE_TIME_HISTORY = 3600.0
 _SPEC = {s.name: s for s in SHEETS}
@@ -189,7 +193,7 @@ def _ropes(reader):
 
 def _bodies(reader, study):
     if not reader.has_sheet("LateralBodies"):
-        return (_airframe_body(reader, study.airframe),), "MassItems"
+        return (_airframe_body(reader, study),), "MassItems"
     t = reader.table(_SPEC["LateralBodies"])
     check_unique(reader, t, "id")
     bodies = []
@@ -200,9 +204,19 @@ def _bodies(reader, study):
     return tuple(bodies), "LateralBodies"
 
 
-def _airframe_body(reader, airframe):
-    with located(reader.file, "MassItems"):
-        return airframe_body(airframe)
+def _airframe_body(reader, study):
+    """The body built from the MassItems; its errors located at the cells to change: the
+    hub's z (a CG above the hub), or the MassItems inertias (no roll inertia)."""
+    try:
+        return airframe_body(study.airframe)
+    except InputError as err:
+        if "inertia" in err.rule:
+            items = reader.table(AIRFRAME_SHEETS["MassItems"])
+            cell = (items.cells["Ixx"][0] if items.has("Ixx")
+                    else f"{get_column_letter(len(items.cells) + 1)}1")
+            raise err.located(file=reader.file, sheet="MassItems", cell=cell) from None
+        hardpoints = reader.table(AIRFRAME_SHEETS["Hardpoints"])
+        raise hardpoints.error("z", study.points["rows"]["hub"][0], err.rule) from None
 
 
 def _histories(reader):

@@ -471,7 +471,12 @@ def compute(study):
     if study.loads is None:
         raise InputError("the workbook does not ask for the loads analysis (Study sheet: "
                          "'run loads' is no)", file=study.path, sheet="Study")
-    return study.loads.run()
+    result = study.loads.run()
+    if not np.all(np.isfinite(result.loads)):
+        raise InputError("the loads are not finite numbers (an input far out of scale?): check "
+                         "the magnitudes and units of the MassItems, FuselageAero and Study "
+                         "values", file=study.path)
+    return result
 
 
 def write(result, out_dir, stem, units, study):
