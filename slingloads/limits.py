@@ -24,15 +24,19 @@ MiB = 1024 * 1024
 MAX_WORKBOOK_BYTES = 64 * MiB
 #: Largest uncompressed content of a workbook (all its parts). [bytes]
 MAX_UNCOMPRESSED_BYTES = 128 * MiB
-#: Largest uncompressed part of a workbook, by kind of part. [bytes] Styles and shared
-#: strings are read whole (openpyxl builds an object per entry); worksheets are streamed.
-MAX_PART_BYTES = {"worksheet": 64 * MiB, "sharedStrings": 16 * MiB, "styles": 8 * MiB,
-                  "other": 8 * MiB}
+#: Largest uncompressed part of a workbook, by kind of part. [bytes] Worksheets are streamed;
+#: shared strings, styles and the other XML parts are parsed whole (openpyxl builds an object
+#: per entry, through the safe but slow pure-Python parser of defusedxml); parts that are not
+#: parsed (images) count only towards MAX_UNCOMPRESSED_BYTES.
+MAX_PART_BYTES = {"worksheet": 64 * MiB, "sharedStrings": 4 * MiB, "styles": 4 * MiB,
+                  "other": 4 * MiB}
 #: Most parts (files) in a workbook's ZIP container.
 MAX_ZIP_MEMBERS = 2000
 #: Most cells stored in one read sheet, formatted empty cells included: beyond it the sheet is
 #: refused (clear its unused rows and columns) rather than parsed for minutes.
-MAX_SHEET_CELLS = 1_000_000
+MAX_SHEET_CELLS = 500_000
+#: Most XML elements of one read sheet (cells, their values, merged ranges, formats...).
+MAX_SHEET_ELEMENTS = 4_000_000
 #: Most data rows of a table sheet unless its schema says otherwise.
 MAX_TABLE_ROWS = 100_000
 #: Most rows of the Study sheet.

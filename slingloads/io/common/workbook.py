@@ -32,6 +32,7 @@ import csv
 import io
 import math
 import os
+import pyexpat
 import re
 import stat
 import warnings
@@ -40,9 +41,9 @@ from dataclasses import dataclass, field
 from datetime import date, datetime, time, timedelta
 from pathlib import Path
 from typing import NamedTuple
+from xml.etree.ElementTree import iterparse
 
 import numpy as np
-from defusedxml.ElementTree import iterparse
 from openpyxl.utils import get_column_letter
 
 from slingloads.errors import InputError
@@ -61,6 +62,7 @@ from slingloads.limits import (
     MAX_PART_BYTES,
     MAX_PATH_CHARS,
     MAX_SHEET_CELLS,
+    MAX_SHEET_ELEMENTS,
     MAX_STUDY_ROWS,
     MAX_TEXT_CHARS,
     MAX_UNCOMPRESSED_BYTES,
@@ -80,6 +82,48 @@ _FORMULA_HINT = (" (or a formula whose value was never computed: open and save t
 ILLEGAL_CHARACTERS_RE = re.compile(r"[\000-\010]|[\013-\014]|[\016-\037]")
 _TRUE = {"yes", "y", "true", "1", "on", "x"}
 _FALSE = {"no", "n", "false", "0", "off", ""}
+
+
+_MAIN = "{http://schemas.openxmlformats.org/spreadsheetml/2006/main}"
+_ROW_TAG, _CELL_TAG = f"{_MAIN}row", f"{_MAIN}c"
+#: Elements that may be part of a cell (kept until their row is read).
+_CELL_PARTS = frozenset(f"{_MAIN}{t}" for t in (
+    "c", "v", "f", "is", "t", "r", "rPr", "rFont", "b", "i", "strike", "condense", "extend",
+    "outline", "shadow", "u", "vertAlign", "sz", "color", "family", "charset", "scheme",
+    "rPh", "phoneticPr"))
+
+
+class _RootReached(Exception):
+    """The prolog of an XML part was read to its first element."""
+
+
+def _check_prolog(source, error):
+    """Refuse an XML part with a document type declaration (entity definitions: "billion
+    laughs", external entities) before the fast C parser reads it. A DOCTYPE can only come
+    before the first element, so expat reads the prolog alone and stops there."""
+    parser = pyexpat.ParserCreate()
+
+    def refuse(*_):
+        raise error("refused: the sheet's XML declares a document type or entities (a "
+                    "possible XML bomb); save the workbook again in Excel or LibreOffice",
+                    None)
+
+    def root(*_):
+        raise _RootReached
+
+    parser.StartDoctypeDeclHandler = refuse
+    parser.EntityDeclHandler = refuse
+    parser.StartElementHandler = root
+    try:
+        while True:
+            chunk = source.read(1 << 16)
+            parser.Parse(chunk, not chunk)
+            if not chunk:
+                return
+    except _RootReached:
+        return
+    except pyexpat.ExpatError as err:
+        raise error(f"corrupt sheet: not well-formed XML ({err})", None) from None
 
 
 class CellError(str):
@@ -198,10 +242,25 @@ class _MemorySource:
     def rows(self, name):
         for r, row in enumerate(self.sheets[name], start=1):
             values = list(row)
-            yield r, [(c, v) for c, v in enumerate(values, start=1)]
+            yield r, [(c, v) for c, v in enumerate(values, start=1)], len(values)
 
     def close(self):
         pass
+
+
+@contextlib.contextmanager
+def _no_dimension_scan():
+    """Open read-only sheets without openpyxl's search for their ``<dimension>``: a sheet
+    without one would be parsed whole (slowly) just to size it, and the rows are streamed
+    here anyway."""
+    from openpyxl.worksheet._read_only import ReadOnlyWorksheet
+
+    original = ReadOnlyWorksheet._get_size
+    ReadOnlyWorksheet._get_size = lambda self: None
+    try:
+        yield
+    finally:
+        ReadOnlyWorksheet._get_size = original
 
 
 class _XlsxSource:
@@ -212,7 +271,7 @@ class _XlsxSource:
 
         self.error = error
         try:
-            with warnings.catch_warnings():
+            with warnings.catch_warnings(), _no_dimension_scan():
                 warnings.simplefilter("ignore")  # unsupported extensions, data validation...
                 self.book = load_workbook(path, read_only=True, data_only=True)
         except Exception as err:  # noqa: BLE001 - openpyxl raises many kinds on corrupt files
@@ -225,29 +284,41 @@ class _XlsxSource:
         self.sheetnames = list(self.book.sheetnames)
 
     def rows(self, name):
-        """``(row number, [(column, value), ...])`` for each row element of the sheet."""
+        """``(row number, [(column, value), ...], cells stored)`` for each row element of the
+        sheet (empty cells are counted, not listed).
+
+        Only end events are handled: a row is read when it ends and then cleared, and every
+        element that cannot be part of a cell is cleared when it ends, so memory stays flat;
+        the number of elements is capped (:data:`~slingloads.limits.MAX_SHEET_ELEMENTS`).
+        """
         from openpyxl.worksheet._reader import WorkSheetParser
 
         ws = self.book[name]
         parser = WorkSheetParser(None, ws._shared_strings, data_only=True,
                                  epoch=self.book.epoch, date_formats=self.book._date_formats,
                                  timedelta_formats=self.book._timedelta_formats)
-        stack = []
+        count = in_row = 0
         with ws._get_source() as source:
-            for event, element in iterparse(source, events=("start", "end")):
-                if event == "start":
-                    stack.append(element)
-                    continue
-                stack.pop()
-                local = element.tag.rpartition("}")[2]
-                parent = stack[-1] if stack else None
-                if local == "row":
+            _check_prolog(source, self.error)
+        with ws._get_source() as source:
+            for _, element in iterparse(source):
+                count += 1
+                if count > MAX_SHEET_ELEMENTS:
+                    raise self.error(f"the sheet holds more than {MAX_SHEET_ELEMENTS:,} XML "
+                                     "elements (cells, merged ranges, formats...): delete its "
+                                     "unused rows and columns", None)
+                tag = element.tag
+                if tag == _ROW_TAG:
+                    in_row = 0
                     yield self._row(parser, element)
-                elif parent is not None and parent.tag.rpartition("}")[2] in ("row", "c",
-                                                                               "is", "r"):
-                    continue  # part of a row: kept until the row is read
-                if parent is not None:
-                    parent.remove(element)  # the only child left: O(1), memory stays flat
+                    element.clear()
+                elif tag not in _CELL_PARTS:
+                    element.clear()
+                else:
+                    in_row += 1  # kept until its row ends: bounded by Excel's row width
+                    if in_row > 8 * EXCEL_COLUMNS:
+                        raise self.error("corrupt sheet: a row holds more cells than Excel "
+                                         "allows", None)
 
     def _row(self, parser, element):
         r = element.get("r")
@@ -258,7 +329,9 @@ class _XlsxSource:
         parser.col_counter = 0
         cells = []
         for c in element:
-            if c.tag.rpartition("}")[2] != "c":
+            if c.tag != _CELL_TAG:
+                continue
+            if not len(c) and c.text is None:  # an empty (formatted) cell: nothing to read
                 continue
             try:
                 cell = parser.parse_cell(c)
@@ -270,7 +343,7 @@ class _XlsxSource:
             if cell["row"] != parser.row_counter:
                 raise self.error("corrupt sheet: a cell lies outside its row", c.get("r"))
             cells.append((cell["column"], value))
-        return parser.row_counter, cells
+        return parser.row_counter, cells, len(element)
 
     def close(self):
         self.book.close()
@@ -374,8 +447,8 @@ class WorkbookReader:
         total = 0
         for info in infos:
             total += info.file_size
-            limit = MAX_PART_BYTES[_part_kind(info.filename)]
-            if info.file_size > limit:
+            limit = MAX_PART_BYTES.get(_part_kind(info.filename))
+            if limit is not None and info.file_size > limit:
                 raise InputError(f"workbook refused: its part {info.filename[:100]!r} expands "
                                  f"to {info.file_size:,} bytes, more than the {limit:,} "
                                  "accepted (possible zip bomb)", file=self.file)
@@ -432,8 +505,8 @@ class WorkbookReader:
         last = 0
         data_rows = 0
         try:
-            for r, row in self._source.rows(actual):
-                cells += len(row)
+            for r, row, stored in self._source.rows(actual):
+                cells += stored
                 if cells > MAX_SHEET_CELLS:
                     raise self.error(f"the sheet stores more than {MAX_SHEET_CELLS:,} cells "
                                      "(formatted empty cells count): delete its unused rows "
@@ -444,11 +517,12 @@ class WorkbookReader:
                 last = r
                 values = {}
                 for c, v in row:
+                    if _is_empty(v):
+                        continue
                     if not 1 <= c <= EXCEL_COLUMNS:
                         raise self.error("corrupt sheet: a column beyond Excel's limit", c,
                                          name)
-                    if not _is_empty(v):
-                        values[c] = v
+                    values[c] = v
                 if not values:
                     continue
                 if r >= first_data_row:
@@ -772,14 +846,18 @@ class WorkbookReader:
 
 
 def _part_kind(name):
+    """Kind of a workbook part for MAX_PART_BYTES: worksheets are streamed; shared strings,
+    styles and the other XML parts are parsed whole; other parts (images) are not parsed."""
     base = name.rsplit("/", 1)[-1]
-    if name.startswith("xl/worksheets/"):
+    if name.startswith("xl/worksheets/") and base.endswith(".xml"):
         return "worksheet"
     if base == "sharedStrings.xml":
         return "sharedStrings"
     if base == "styles.xml":
         return "styles"
-    return "other"
+    if base.endswith((".xml", ".rels", ".vml")):
+        return "other"
+    return "binary"
 
 
 def _why(err):

@@ -25,6 +25,7 @@ from slingloads.limits import (
     MAX_HISTORY_SAMPLES,
     MAX_LATERAL_RUNS,
     MAX_LATERAL_STEPS,
+    MAX_TABLE_ROWS,
 )
 
 #: Valid values of 'lateral cable model'.
@@ -107,7 +108,8 @@ SHEETS = (
         Column("S", "length", "m", help="Lateral hook displacement, + right."),
     ), help="Optional: measured or planned hook displacement histories, one block of rows per "
        f"history id (natural cubic spline between samples), at most "
-       f"{MAX_HISTORY_SAMPLES:,} samples in all.", max_rows=MAX_HISTORY_SAMPLES),
+       f"{MAX_TABLE_ROWS:,} samples in all (longer histories: a CSV file, up to "
+       f"{MAX_HISTORY_SAMPLES:,} samples).", max_rows=MAX_TABLE_ROWS),
     TableSheet("LateralRopes", (
         Column("rope length", "length", "ft",
                help="Unstretched cable length, hook to hub, > 0 (paper: 18, 60, 100 ft).",
