@@ -70,7 +70,7 @@ def small_workbook():
         "AeroEnvelope": [("id", "alpha [deg]", "beta [deg]"), ("C", 0.0, 0.0),
                          ("A+B+", 5.0, 10.0)],
         "LoadCases": [("id", "hook", "aero", "chute", "description"),
-                      ("L1", "AXIAL", "C", "no", "hand-listed")],
+                      ("L1", "VERTICAL", "C", "no", "hand-listed")],
         "LateralMotions": [
             ("id", "type", "acceleration [m/s^2]", "duration [s]", "history", "then"),
             ("step", "smooth step", 2.0, 1.5, None, None),

@@ -69,8 +69,8 @@ def test_table_not_increasing():
 def test_hook_angle_out_of_range(value, unit, fragment):
     """'hook angle from mast' lies in [0, 90) deg; the value and the bound are shown in the
     user's unit."""
-    book, cell = with_parameter("hook angle from mast", value, unit)
-    error(book, "Study", cell, "hook angle from mast", repr(value), fragment)
+    book, cell = with_parameter("hook angle from vertical", value, unit)
+    error(book, "Study", cell, "hook angle from vertical", repr(value), fragment)
 
 
 def test_negative_nz():
