@@ -111,6 +111,9 @@ MAX_LATERAL_RUN_STEPS = 5_000_000
 #: Motion-steps of the lateral sweep: distinct motions x steps (each motion's kinematics is
 #: evaluated at every step).
 MAX_LATERAL_MOTION_STEPS = 400_000
+#: Shortest interval between the samples of a time history (a spline through samples closer
+#: than this overflows; measured histories are sampled at 1 kHz at most). [s]
+MIN_SAMPLE_INTERVAL = 1e-4
 #: Samples of one time history (LateralHistory id or CSV file).
 MAX_HISTORY_SAMPLES = MAX_CSV_ROWS
 #: Stored samples of the critical lateral run's time histories (run length / output step).

@@ -185,11 +185,13 @@ SETTINGS = settings(max_examples=1100, derandomize=True, deadline=None, database
                     suppress_health_check=list(HealthCheck), print_blob=True)
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")
 @SETTINGS
 @given(edits())
 def test_reader_ends_in_a_study_or_a_located_error(edit_list):
     """1,100 random edits of the small workbook (cells, headers, units, Study parameters,
-    rows and sheets): reading gives a study or an InputError naming file, sheet and cell."""
+    rows and sheets): reading gives a study or an InputError naming file, sheet and cell,
+    and no numerical warning (an overflow would be a silent infinity or NaN)."""
     check_outcome(apply(edit_list))
 
 

@@ -184,11 +184,18 @@ def test_cells_that_are_not_numbers(value, fragment):
     error(book, "Stations", "B3", fragment)
 
 
-def test_cg_above_the_hub_is_blamed_on_the_hub():
-    """A CG above the rotor hub (the lateral pendulum needs it below): the hub's z cell."""
+def test_cg_above_the_hub_is_located():
+    """A CG above the rotor hub (the airframe cannot hang from it, the lateral pendulum needs
+    it below): an error derived from several values is still located, at the hub's z (the
+    lateral body) or at the Study row that resolves it (the hanging attitude)."""
     book = small_workbook()
     book["Hardpoints"][1][4] = 0.1
-    error(book, "Hardpoints", "E2", "above the rotor hub")
+    with pytest.raises(InputError) as info:
+        read(book)
+    err = info.value
+    assert err.file == FILE and err.cell, str(err)
+    assert (err.sheet, err.cell) in (("Hardpoints", "E2"), ("Study", "(default)")), str(err)
+    assert "hub" in str(err)
 
 
 def test_mass_items_on_one_line():

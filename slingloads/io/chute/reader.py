@@ -196,6 +196,9 @@ def read(reader, params, study):
     integrator = params.choice("chute sizing integrator", INTEGRATORS)
     method = params.choice("chute sizing reference method", _SOLVE_IVP_METHODS)
     rtol = params.positive("chute sizing reference rtol")
+    shapes = [s for s in str(params("chute sizing gust shapes") or "").split(",") if s.strip()]
+    _check_work(params, int(params("chute sizing number of areas")) * max(len(shapes), 1),
+                t_end, dt, interval, integrator)
     try:
         settings = SolverSettings(t_end, dt, interval, method, rtol)
     except InputError as err:
@@ -215,7 +218,6 @@ def read(reader, params, study):
     params.check("chute sizing number of areas", count == 1 or fmax > fmin,
            "several areas need 'chute sizing area factor max' > min")
     recommended = params.positive("chute sizing recommended factor")
-    _check_work(params, int(count) * len(gusts), t_end, dt, interval, integrator)
     return ChuteSizingInputs(
         model=model, fit_range=(-half, half), wake=wake, target=float(target),
         cable_length=cable if cable > 0 else None, margin=margin, gusts=gusts,

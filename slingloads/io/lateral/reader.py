@@ -31,6 +31,7 @@ from slingloads.limits import (
     MAX_LATERAL_RUN_STEPS,
     MAX_LATERAL_RUNS,
     MAX_LATERAL_STEPS,
+    MIN_SAMPLE_INTERVAL,
 )
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
@@ -235,6 +236,10 @@ def _histories(reader):
                 raise t.error("t", idx[k], f"time-history times must be strictly increasing "
                               f"within history {hid!r} (previous sample at "
                               f"{t.cell('t', idx[k - 1])})")
+            if time[k] - time[k - 1] < MIN_SAMPLE_INTERVAL:
+                raise t.error("t", idx[k], f"time-history samples must be at least "
+                              f"{MIN_SAMPLE_INTERVAL:g} s apart (previous sample at "
+                              f"{t.cell('t', idx[k - 1])})")
         with located(reader.file, t.sheet, t.cell("t", idx[0])):
             out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
     return out
@@ -254,6 +259,10 @@ def _csv_history(reader, text, t, i):
         k = int(np.argmax(steps <= 0)) + 1
         raise reader.error(f"CSV {name}: times must be strictly increasing (data row "
                            f"{k + 1} does not come after row {k})", float(time[k]), *where)
+    if np.any(steps < MIN_SAMPLE_INTERVAL):
+        k = int(np.argmax(steps < MIN_SAMPLE_INTERVAL)) + 1
+        raise reader.error(f"CSV {name}: samples must be at least {MIN_SAMPLE_INTERVAL:g} s "
+                           f"apart (data rows {k} and {k + 1})", float(time[k]), *where)
     if time[-1] - time[0] > MAX_MAGNITUDE_TIME_HISTORY:
         raise reader.error(f"CSV {name}: a time history may last at most "
                            f"{MAX_MAGNITUDE_TIME_HISTORY:g} s", float(time[-1] - time[0]),
