@@ -40,6 +40,13 @@ TEXTS = ["=cmd|' /C calc'!A0", "+1", "-1", "@SUM(A1)", "\tx", "yes", "no", "AXIA
          "  ", "1e300", "-1e300", "nan", "inf", "0x10", "1,5", "12 kg", "#DIV/0!", "S 2",
          "s_2", "relative wind", "rk4", "solve_ivp", "table", "model", "rigid", "elastic"]
 
+#: Valid-looking choices of the text parameters (they open the less travelled paths).
+CHOICES = ["given", "mast vertical", "hanging", "body", "stability", "wind", "canopy",
+           "elliptical", "lateral directions", "parameter", "mass items", "fuselage axis",
+           "relative wind", "RK23", "Radau", "BDF", "LSODA", "DOP853", "table", "model",
+           "elastic", "rigid", "solve_ivp", "rk4", "step", "finite, continuous", "1-cosine",
+           "S1, S4", "Vx-My, Mz-Vz", ""]
+TEXT_PARAMETERS = sorted(n for n, p in all_parameters().items() if p.kind == "text")
 numbers = st.one_of(
     st.integers(min_value=-10**30, max_value=10**30),
     st.floats(allow_nan=True, allow_infinity=True),
@@ -73,8 +80,9 @@ def edits(draw):
     for _ in range(draw(st.integers(1, 3))):
         kind = draw(st.sampled_from(["cell", "cell", "scale", "scale", "scale", "header",
                                      "parameter", "parameter", "scale parameter",
-                                     "scale parameter", "drop sheet", "drop row", "copy row",
-                                     "add row", "empty sheet"]))
+                                     "scale parameter", "choice", "choice", "drop sheet",
+                                     "drop row", "copy row", "add row", "empty sheet",
+                                     "drop column"]))
         sheet = draw(sheet_names)
         rows = BASE[sheet]
         width = max(len(r) for r in rows)
@@ -84,6 +92,11 @@ def edits(draw):
         elif kind == "scale":
             out.append((kind, sheet, draw(st.integers(1, len(rows) - 1)),
                         draw(st.integers(0, width - 1)), draw(factors)))
+        elif kind == "choice":
+            out.append(("parameter", draw(st.sampled_from(TEXT_PARAMETERS)),
+                        draw(st.sampled_from(CHOICES)), None))
+        elif kind == "drop column":
+            out.append((kind, sheet, draw(st.integers(0, width - 1))))
         elif kind == "scale parameter":
             out.append((kind, draw(st.integers(1, len(BASE["Study"]) - 1)), draw(factors)))
         elif kind == "header":
@@ -146,6 +159,10 @@ def apply(edit_list):
                 rows[0][col] = text
         elif kind == "drop sheet":
             del book[sheet]
+        elif kind == "drop column":
+            for row in rows:
+                if args[1] < len(row):
+                    del row[args[1]]
         elif kind == "empty sheet":
             book[sheet] = []
         elif kind == "drop row" and args[1] < len(rows):

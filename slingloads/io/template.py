@@ -113,7 +113,9 @@ def _readme(ws, notes):
                 kind = {TEXT: "text", FLAG: "yes/no", INTEGER: "whole number"}.get(c.kind,
                                                                                  c.kind)
                 need = "required" if c.required else f"optional, default {c.default!r}"
-                _text(ws.cell(row, 3), f"{kind}; {need}. {c.help}{_limit_text(c)}".strip())
+                text = " ".join(t for t in (f"{kind}; {need}.", c.help,
+                                            _limit_text(c).strip()) if t)
+                _text(ws.cell(row, 3), text)
                 row += 1
 
 
