@@ -134,3 +134,12 @@ def test_libreoffice_evaluates_nothing(hostile_reports, tmp_path):
                        for p in (tmp_path / "sheets").glob("*.csv"))
     for key in ("case", "station", "study"):
         assert HOSTILE[key] in exported, key
+
+
+def test_header_footer_text_has_no_control_codes():
+    """In a printed header or footer '&' starts a control code (&P, &[Path]): text from an
+    input has it doubled, so 'R&D' prints as written."""
+    from slingloads.io.common.excel import header_footer_text
+
+    assert header_footer_text("R&D &P &[Path]") == "R&&D &&P &&[Path]"
+    assert header_footer_text("a\x01b") == "ab"

@@ -706,13 +706,18 @@ def _exchange(a, b):
     ready = a.with_name(a.name.replace(".new.", ".ready.", 1))
     old = a.with_name(a.name.replace(".new.", ".old.", 1))
     os.rename(a, ready)  # the complete new set, marked ready
-    os.rename(b, old)
-    _pause()
     try:
+        os.rename(b, old)
+    except BaseException:
+        os.rename(ready, a)  # back under the staging name, which the caller removes
+        raise
+    try:
+        _pause()
         os.rename(ready, b)
     except BaseException:
         if not os.path.lexists(b):
             os.rename(old, b)  # put the previous set back
+        os.rename(ready, a)
         raise
     os.rename(old, a)  # the old set under the staging name, removed by the caller
 
