@@ -70,9 +70,6 @@ from slingloads.limits import (
     MAX_ZIP_MEMBERS,
 )
 
-#: Largest uncompressed workbook content accepted. [bytes] (kept for compatibility: see
-#: :data:`slingloads.limits.MAX_UNCOMPRESSED_BYTES`)
-MAX_UNCOMPRESSED = MAX_UNCOMPRESSED_BYTES
 #: Excel's sheet size [rows, columns].
 EXCEL_ROWS, EXCEL_COLUMNS = 1_048_576, 16_384
 _HEADER = re.compile(r"^\s*(?P<name>[^\[\]]*?)\s*(\[(?P<unit>[^\[\]]*)\])?\s*$")
@@ -104,9 +101,9 @@ def _check_prolog(source, error):
     parser = pyexpat.ParserCreate()
 
     def refuse(*_):
-        raise error("refused: the sheet's XML declares a document type or entities (a "
-                    "possible XML bomb); save the workbook again in Excel or LibreOffice",
-                    None)
+        raise error("not a readable .xlsx workbook: a sheet's XML declares a document type "
+                    "(DTD) or entities, refused as a possible XML bomb; save the workbook "
+                    "again in Excel or LibreOffice", None)
 
     def root(*_):
         raise _RootReached
@@ -437,10 +434,19 @@ class WorkbookReader:
         try:
             with zipfile.ZipFile(self.path) as archive:
                 infos = archive.infolist()
-        except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, ValueError,
-                EOFError) as err:
+                self._check_sizes(infos)
+                for info in infos:  # every worksheet, read or not: no DTD, no entities
+                    if _part_kind(info.filename) == "worksheet":
+                        with archive.open(info) as source:
+                            _check_prolog(source, lambda rule, value: self.error(rule, value))
+        except InputError:
+            raise
+        except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, ValueError, EOFError,
+                NotImplementedError) as err:
             raise InputError(f"not a workbook: the file is not an .xlsx (zip) container "
                              f"({str(err)[:200]})", file=self.file) from None
+
+    def _check_sizes(self, infos):
         if len(infos) > MAX_ZIP_MEMBERS:
             raise InputError(f"workbook refused: {len(infos):,} parts in its container, more "
                              f"than the {MAX_ZIP_MEMBERS:,} accepted", file=self.file)

@@ -207,17 +207,6 @@ def _check_case_count(reader, params, hook, airframe, envelope, parachute, gener
             raise reader.error(rule, count, "LoadCases", "A1")
 
 
-def _check_envelope_in_tables(reader, t, fuselage, fin):
-    """Each envelope point must lie inside the aerodynamic tables (no extrapolation)."""
-    for i in range(len(t)):
-        if fuselage is not None:
-            with located(reader.file, t.sheet, t.cell("alpha", i)):
-                fuselage.table("CD", t["alpha"][i], t["beta"][i])
-        if fin is not None:
-            with located(reader.file, t.sheet, t.cell("beta", i)):
-                fin.table("CY", t["beta"][i])
-
-
 _PARACHUTE_PARAMETERS = {**PARACHUTE_PARAMETERS, "parachute opening factor": "opening_factor"}
 
 

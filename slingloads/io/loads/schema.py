@@ -37,10 +37,10 @@ PARAMETERS = (
               "'given' ('attitude pitch' and 'attitude roll').", "attitude"),
     Parameter("attitude pitch", "angle", "deg", 0.0,
               "Pitch, nose up positive, within (-90, 90) deg; only with attitude 'given'.",
-              "attitude", Bounds(-90, 90, lo_open=True, hi_open=True, unit="deg")),
+              "attitude"),
     Parameter("attitude roll", "angle", "deg", 0.0,
               "Roll, right side down positive, within (-90, 90) deg; only with attitude "
-              "'given'.", "attitude", Bounds(-90, 90, lo_open=True, hi_open=True, unit="deg")),
+              "'given'.", "attitude"),
     Parameter("hook angle from vertical", "angle", "deg", 30.0,
               "Inclination of the off-vertical hook loads from the earth vertical (CS-29.865: "
               "30 deg unless a smaller angle is shown); the lateral directions may take "
@@ -49,8 +49,7 @@ PARAMETERS = (
     Parameter("hook lateral angle", "angle", "deg", 0.0,
               "Inclination of the lateral hook loads where a different angle is shown (e.g. "
               "the lateral study's recommended angle); 0 = the same as 'hook angle from "
-              "vertical'. Applied as 'hook cone shape' says.", "hook",
-              Bounds(0, 90, hi_open=True, unit="deg")),
+              "vertical'. Applied as 'hook cone shape' says.", "hook"),
     Parameter("hook cone shape", TEXT, "", "lateral directions",
               "Where 'hook lateral angle' applies: 'lateral directions' (azimuths 90 and 270 "
               "deg only: what the lateral study covers) or 'elliptical' (from the fore-and-aft "
