@@ -18,7 +18,6 @@ import zipfile
 import pytest
 from hostile import save_xlsx, set_parameter, small_workbook
 
-
 #: Peak resident memory allowed to a command on a hostile input. [KiB]
 MEMORY_LIMIT_KB = 1024 * 1024
 
