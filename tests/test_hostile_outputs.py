@@ -353,3 +353,21 @@ def test_template_refusals(tmp_path, capsys):
     _refused(capsys, ["template", str(tmp_path / "dir.xlsx"), "--force"], 1, "folder")
     _refused(capsys, ["template", str(target / "x.xlsx")], 1, "")
     assert not [p for p in tmp_path.iterdir() if p.name.endswith(".partial")]
+
+
+def test_a_full_disk_ends_in_exit_code_1(small, tmp_path, capsys, monkeypatch):
+    """A disk that fills while the reports are written (ENOSPC): exit 1, a message naming the
+    cause, nothing published, no staging folder left."""
+    import errno
+
+    from slingloads.io.loads import report
+
+    def full(*args, **kwargs):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(report, "write_workbook", full)
+    out = tmp_path / "reports"
+    _refused(capsys, ["loads", str(small), "--out", str(out), "--quiet"], 1,
+             "no space left on the device")
+    assert not out.exists()
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(TEMP_PREFIX)]
