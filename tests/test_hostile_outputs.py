@@ -105,20 +105,17 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
     old_input, new_input = inputs
     sources = {"old": old_input, "new": new_input}
     digest = {k: hashlib.sha256(p.read_bytes()).hexdigest() for k, p in sources.items()}
-    out = tmp_path / "a" / "reports"
-    out.mkdir(parents=True)
-    (out / "notes.txt").write_text("the user's own file")
-    reference = {}
+    out, other = tmp_path / "a" / "reports", tmp_path / "b" / "reports"
+    for folder in (out, other):
+        folder.mkdir(parents=True)
+        (folder / "notes.txt").write_text("the user's own file")
     start = time.monotonic()
-    for label in ("old", "new"):  # the two sets, each published once in full
-        assert _run(sources[label], out).wait() == 0
-        reference[label] = _fingerprint(out)
-    duration = (time.monotonic() - start) / 2
+    # the two sets, each published once in full: the old one in a, the new one in b
+    procs = [_run(sources["old"], out), _run(sources["new"], other)]
+    assert [p.wait() for p in procs] == [0, 0]
+    duration = time.monotonic() - start
+    reference = {"old": _fingerprint(out), "new": _fingerprint(other)}
     assert set(reference["old"]) != set(reference["new"])  # the hull plot's name changes
-    other = tmp_path / "b" / "reports"
-    other.parent.mkdir()
-    import shutil
-    shutil.copytree(out, other)
 
     def state(folder, mode):
         if mode == "rename" and not folder.exists():
@@ -133,7 +130,7 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
         raise AssertionError(f"the output folder holds a mix: {sorted(got)} {origin}")
 
     def sequence(folder, kills):
-        current, outcomes = "new", []
+        current, outcomes = ("old" if folder == out else "new"), []
         for kill in kills:
             target = "old" if current == "new" else "new"
             mode = kill[2] if kill[0] == "publish" else "exchange"
@@ -165,8 +162,8 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
         results = list(pool.map(sequence, (out, other), KILLS))
     seen = [label for outcomes, _ in results for label in outcomes]
     assert len(seen) == 16
-    changed = sum(a != b for outcomes, _ in results
-                  for a, b in zip(["new", *outcomes], outcomes, strict=False))
+    changed = sum(a != b for start, (outcomes, _) in zip(("old", "new"), results, strict=True)
+                  for a, b in zip([start, *outcomes], outcomes, strict=False))
     assert 0 < changed < len(seen), seen  # some kills came too early, some too late
     finals = [(folder, "old" if current == "new" else "new")
               for folder, (_, current) in zip((out, other), results, strict=True)]
