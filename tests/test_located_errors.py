@@ -271,3 +271,22 @@ def test_mass_item_far_to_the_side_is_flagged(tmp_path, capsys):
     summary = load_workbook(tmp_path / "out" / "side-loads.xlsx", read_only=True)["Summary"]
     assert any("mass item(s) left" in str(v) for row in summary.iter_rows(values_only=True)
                for v in row)
+
+
+def test_work_found_too_large_while_computing_is_located(tmp_path, capsys):
+    """The automatic RK4 step is only known while computing: a stiff elastic cable on a very
+    light body would take 27 million steps; the analysis refuses it and the message points at
+    the Study row that sets the step ('lateral RK4 step')."""
+    book = small_workbook()
+    for name, value, unit in (("lateral cable model", "elastic", None),
+                              ("lateral cable EA", 1e9, "N"), ("lateral simulation time", 0, "s"),
+                              ("lateral RK4 step", 0, "s"), ("run loads", "no", None),
+                              ("run chute sizing", "no", None)):
+        set_parameter(book, name, value, unit)
+    book["LateralBodies"] = [["id", "mass [kg]", "roll inertia [kg m^2]", "CG below hub [m]"],
+                             ["tiny", 0.001, 0.001, 0.5]]
+    path = save_xlsx(book, tmp_path / "stiff.xlsx")
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert f"sheet 'Study', cell {study_cell(book, 'lateral RK4 step')}" in err, err
+    assert "RK4 steps per run" in err

@@ -90,7 +90,7 @@ class WorkbookStudy:
             yield
         except InputError as err:
             name = fields.get(err.field)
-            if err.file is None and name is not None:
+            if err.cell is None and err.sheet in (None, STUDY_SHEET) and name is not None:
                 cell = self.cells.get(name.lower(), "(default)")
                 raise err.located(file=self.path, sheet=STUDY_SHEET, cell=cell) from None
             raise err.located(file=self.path) from None
