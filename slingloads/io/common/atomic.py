@@ -618,18 +618,27 @@ def _pause():
             time.sleep(seconds)
 
 
+def _flock(folder, blocking):
+    """Open ``folder`` and take an exclusive lock on it: ``(descriptor, locked)``, the
+    descriptor None where folders cannot be opened or locks do not exist."""
+    if fcntl is None:
+        return None, False
+    try:
+        fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    except OSError:
+        return None, False
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX if blocking else fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        return fd, False
+    return fd, True
+
+
 @contextmanager
 def _locked(folder):
-    """Hold an exclusive lock on ``folder`` (serialises the runs publishing beside it)."""
-    fd = None
-    if fcntl is not None:
-        try:
-            fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
-            fcntl.flock(fd, fcntl.LOCK_EX)
-        except OSError:  # a folder that cannot be opened or locked: publish unserialised
-            if fd is not None:
-                os.close(fd)
-            fd = None
+    """Hold an exclusive lock on ``folder`` (serialises the runs publishing beside it; where
+    the folder cannot be locked, publishing goes on unserialised)."""
+    fd, _ = _flock(folder, blocking=True)
     try:
         yield
     finally:
@@ -639,34 +648,15 @@ def _locked(folder):
 
 def _lock_folder(folder):
     """Open and lock a staging folder for the life of this run; the descriptor, or None."""
-    if fcntl is None:
-        return None
-    try:
-        fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
-    except OSError:
-        return None
-    try:
-        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except OSError:
-        pass
-    return fd
+    return _flock(folder, blocking=False)[0]
 
 
 def _owner_alive(folder):
     """True if a live run holds the lock of a staging folder."""
-    if fcntl is None:
-        return False
-    try:
-        fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
-    except OSError:
-        return False
-    try:
-        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except OSError:
-        return True
-    finally:
+    fd, locked = _flock(folder, blocking=False)
+    if fd is not None:
         os.close(fd)
-    return False
+    return fd is not None and not locked
 
 
 def _recover(parent, real):
