@@ -65,6 +65,10 @@ def _parser():
                        help="units of the Excel report (CSV files are always SI)")
         p.add_argument("--quiet", action="store_true", help="no progress bar")
         _debug_option(p)
+        if name in ("run", "loads"):
+            p.add_argument("--nastran", action="store_true",
+                           help="also write IN-loads.bdf, the load cases as a Nastran input "
+                                "file in the units of --units (Study rows 'nastran ...')")
     return parser
 
 
@@ -177,9 +181,19 @@ def _outputs(args, study, names):
     return outputs, stem
 
 
+def _ask_nastran(study, names):
+    """--nastran: the loads report writes the Nastran file (the loads analysis must run)."""
+    if "loads" not in names:
+        raise InputError("--nastran writes the load cases as Nastran bulk data, but the "
+                         "workbook does not run the loads analysis (Study sheet: 'run loads')",
+                         file=study.path, sheet="Study")
+    study.options["nastran"] = True
+
+
 def _analyse(args):
     from tqdm import tqdm
 
+    from slingloads.io.consistency import consistency_checks
     from slingloads.io.study import read_study
 
     show = not args.quiet
@@ -190,6 +204,8 @@ def _analyse(args):
             only = [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
         study = read_study(args.workbook, only=only)
         names = _selected(args, study)
+        if getattr(args, "nastran", False):
+            _ask_nastran(study, names)
         outputs, stem = _outputs(args, study, names)
         bar.total = 2 + 2 * len(names)
         bar.update(1)
@@ -198,11 +214,13 @@ def _analyse(args):
             bar.set_description(f"computing {name}")
             results[name] = ANALYSES[name][1](study)
             bar.update(1)
+        checks = consistency_checks(results)
         # one set of outputs for every analysis: all published together, or none
         with outputs:
             for name in names:
                 bar.set_description(f"writing {name}")
-                ANALYSES[name][2](results[name], outputs, stem, args.units, study)
+                extra = {"checks": checks[name]} if name in checks else {}
+                ANALYSES[name][2](results[name], outputs, stem, args.units, study, **extra)
                 bar.update(1)
         written = outputs.written
         bar.update(1)

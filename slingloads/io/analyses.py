@@ -8,7 +8,9 @@ Each analysis has a folder ``slingloads/io/<folder>/`` with
   (SI) from the workbook, with located errors;
 * ``report.py``: ``compute(study) -> result`` (orchestration: the physics is in
   :mod:`slingloads.analyses`) and ``write(result, out_dir, stem, units, study)``, publishing
-  through :func:`slingloads.io.common.atomic.atomic_outputs`;
+  through :func:`slingloads.io.common.atomic.atomic_outputs` (the loads report also takes
+  ``checks``, the checks against the other analyses of the run:
+  :mod:`slingloads.io.consistency`);
 * ``plots.py``: the figures of the report.
 
 The study builder (:func:`slingloads.io.study.read_study`), the blank template
@@ -101,9 +103,12 @@ class Analysis:
         return [t.format(stem=stem) for t in getattr(self.module("report"), "OUTPUTS", ())
                 if "*" not in t]
 
-    def write(self, result, out_dir, stem, units, study):
-        """Write its report into the run's outputs ``out_dir``."""
-        return self.module("report").write(result, out_dir, stem, units, study)
+    def write(self, result, out_dir, stem, units, study, checks=None):
+        """Write its report into the run's outputs ``out_dir``; ``checks``, a DataFrame of
+        checks against the other analyses of the run (:mod:`slingloads.io.consistency`), is
+        passed to the reports that show them."""
+        extra = {} if checks is None else {"checks": checks}
+        return self.module("report").write(result, out_dir, stem, units, study, **extra)
 
 
 #: Every analysis, in the order they are read, run and written.

@@ -15,10 +15,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from slingloads.analyses.chute_sizing import MetricSettings
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME_SHEETS
-from slingloads.io.chute.schema import INERTIA_SOURCES, INTEGRATORS, SHEETS, WAKE_SOURCES
+from slingloads.io.chute.schema import (
+    INERTIA_SOURCES,
+    INTEGRATORS,
+    SEVERITIES,
+    SHEETS,
+    WAKE_SOURCES,
+)
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import located
 from slingloads.limits import (
@@ -29,13 +36,14 @@ from slingloads.limits import (
     MAX_CHUTE_STEPS,
 )
 from slingloads.models.airframe import yaw_inertia_about_hub
-from slingloads.models.gusts import GUST_KINDS, make_gust
+from slingloads.models.flight import FlightCondition
+from slingloads.models.gusts import GUST_SHAPES, DrydenTurbulence, make_gust
+from slingloads.models.integration import SOLVE_IVP_METHODS, SolverSettings
 from slingloads.models.wake import BluffBodyWake, TabulatedWake
-from slingloads.models.yaw_dynamics import FlightCondition, SolverSettings, YawModel
+from slingloads.models.yaw_dynamics import YawModel
 
 ANALYSIS = "chute sizing"
 HARDPOINT_SHEETS = {s.name: s for s in _AIRFRAME_SHEETS}
-_SOLVE_IVP_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 
 
 @dataclass(frozen=True)
@@ -59,6 +67,8 @@ class ChuteSizingInputs:
     gusts : tuple
         Gust shapes of the sweep.
     settings : SolverSettings
+    metrics : MetricSettings
+        With the sideslip limit past which no run is called stable.
     factors : ndarray
         Swept areas over the neutral area. [-]
     recommended_factor : float
@@ -81,6 +91,7 @@ class ChuteSizingInputs:
     margin: float
     gusts: tuple
     settings: SolverSettings
+    metrics: MetricSettings
     factors: np.ndarray
     recommended_factor: float
     integrator: str
@@ -110,11 +121,12 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule.
     """
     file = reader.file
-    # ---- condition
+    # ---- condition (IAS taken equal to EAS)
     ias = params.positive("chute sizing airspeed IAS")
     with located(file, STUDY_SHEET, params.where("chute sizing density altitude")):
-        condition = FlightCondition(ias, params("chute sizing density altitude"),
-                                    params("chute sizing alpha trim"))
+        condition = FlightCondition(eas=ias,
+                                    density_altitude=params("chute sizing density altitude"),
+                                    alpha=params("chute sizing alpha trim"))
     half = params.positive("chute sizing linearisation range")
     params.check("chute sizing linearisation range", half < np.pi / 2,
            "'chute sizing linearisation range' must be below 90 deg")
@@ -194,19 +206,23 @@ def read(reader, params, study):
     dt = params.positive("chute sizing time step")
     interval = params.positive("chute sizing output interval")
     integrator = params.choice("chute sizing integrator", INTEGRATORS)
-    method = params.choice("chute sizing reference method", _SOLVE_IVP_METHODS)
+    method = params.choice("chute sizing reference method", SOLVE_IVP_METHODS)
     rtol = params.positive("chute sizing reference rtol")
     shapes = [s for s in str(params("chute sizing gust shapes") or "").split(",") if s.strip()]
     _check_work(params, int(params("chute sizing number of areas")) * max(len(shapes), 1),
                 t_end, dt, interval, integrator)
     try:
         settings = SolverSettings(t_end, dt, interval, method, rtol)
+        settings.fixed_grid()
     except InputError as err:
         name = ("chute sizing output interval" if "output_interval" in err.rule
                 else "chute sizing simulation time")
         raise params.error(name, err.rule) from None
     # ---- gusts
     gusts = _gusts(reader, params, model, t_end)
+    limit = params.positive("chute sizing sideslip limit")
+    params.check("chute sizing sideslip limit", limit < np.pi / 2,
+                 "'chute sizing sideslip limit' must be below 90 deg")
     # ---- sweep
     fmin = params.positive("chute sizing area factor min")
     fmax = params("chute sizing area factor max")
@@ -221,7 +237,8 @@ def read(reader, params, study):
     return ChuteSizingInputs(
         model=model, fit_range=(-half, half), wake=wake, target=float(target),
         cable_length=cable if cable > 0 else None, margin=margin, gusts=gusts,
-        settings=settings, factors=np.linspace(fmin, fmax, int(count)),
+        settings=settings, metrics=MetricSettings(sideslip_limit=limit),
+        factors=np.linspace(fmin, fmax, int(count)),
         recommended_factor=recommended, integrator=integrator, inertia_source=source,
         study_area=float(params("parachute area")),
         study_line=float(params("parachute line length")))
@@ -273,28 +290,64 @@ def _gusts(reader, params, model, t_end):
     name = "chute sizing gust shapes"
     shapes = [s.strip().lower() for s in str(params(name) or "").split(",") if s.strip()]
     if not shapes:
-        raise reader.error(f"{name!r} needs at least one shape of {list(GUST_KINDS)}", "",
+        raise reader.error(f"{name!r} needs at least one shape of {list(GUST_SHAPES)}", "",
                            STUDY_SHEET, params.where(name))
     for s in shapes:
-        if s not in GUST_KINDS:
-            raise reader.error(f"unknown gust shape; valid shapes are {list(GUST_KINDS)}", s,
+        if s not in GUST_SHAPES:
+            raise reader.error(f"unknown gust shape; valid shapes are {list(GUST_SHAPES)}", s,
                                STUDY_SHEET, params.where(name))
         if shapes.count(s) > 1:
             raise reader.error("gust shape listed twice", s, STUDY_SHEET, params.where(name))
     amplitude = params.positive("chute sizing gust amplitude")
     onset = params.positive("chute sizing gust onset", allow_zero=True)
     duration = params.positive("chute sizing gust duration")
+    rise = params.positive("chute sizing gust rise time", allow_zero=True)
+    period = params.positive("chute sizing harmonic period")
     params.check("chute sizing gust onset", onset < t_end,
-           f"the gust must start before the end of the simulation ({t_end:g} s)")
+                 f"the gust must start before the end of the simulation ({t_end:g} s)")
     if any(s in ("finite", "1-cosine") for s in shapes):
         params.check("chute sizing gust duration", onset + duration < t_end,
-               f"finite and 1-cosine gusts must end (onset + duration) before the end of the "
-               f"simulation ({t_end:g} s) so that the free response is seen")
+                     f"finite and 1-cosine gusts must end (onset + duration) before the end "
+                     f"of the simulation ({t_end:g} s) so that the free response is seen")
+    if "continuous" in shapes:
+        params.check("chute sizing gust rise time", onset + rise < t_end,
+                     f"the continuous crosswind must have risen (onset + rise time) before "
+                     f"the end of the simulation ({t_end:g} s)")
     lo, hi = model.beta_range()
     tas = model.condition.tas
     gamma = np.arctan(amplitude / tas)
     params.check("chute sizing gust amplitude", gamma < min(-lo, hi),
-           f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at {tas:.4g} m/s true "
-           f"airspeed, outside the aerodynamic tables' range [{np.degrees(lo):.4g}, "
-           f"{np.degrees(hi):.4g}] deg")
-    return tuple(make_gust(s, amplitude, onset, duration) for s in shapes)
+                 f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at {tas:.4g} m/s "
+                 f"true airspeed, outside the aerodynamic tables' range "
+                 f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+    gusts = []
+    for s in shapes:
+        if s == DrydenTurbulence.kind:
+            gusts.append(_turbulence(reader, params, model, onset, t_end))
+        else:
+            gusts.append(make_gust(s, amplitude, onset, duration, rise_time=rise,
+                                   period=period))
+    return tuple(gusts)
+
+
+def _turbulence(reader, params, model, onset, t_end):
+    """The Dryden realisation of the 'chute sizing turbulence ...' rows."""
+    severity = params.choice("chute sizing turbulence severity", SEVERITIES)
+    length = params.positive("chute sizing turbulence duration")
+    params.check("chute sizing turbulence duration", onset + length < t_end,
+                 f"the turbulence must end (onset + duration) before the end of the "
+                 f"simulation ({t_end:g} s) so that the free response is seen")
+    seed = params("chute sizing turbulence seed")
+    params.check("chute sizing turbulence seed", float(seed) == int(seed) and seed >= 0,
+                 "'chute sizing turbulence seed' must be a whole number >= 0")
+    altitude = params("chute sizing turbulence altitude")
+    with located(reader.file, STUDY_SHEET, params.where("chute sizing turbulence altitude")):
+        gust = DrydenTurbulence.low_altitude(altitude, model.condition.tas, severity,
+                                             onset=onset, duration=length, seed=int(seed))
+    lo, hi = model.beta_range()
+    gamma = np.arctan(gust.peak / model.condition.tas)
+    params.check("chute sizing turbulence altitude", gamma < min(-lo, hi),
+                 f"the turbulence's largest gust ({gust.peak:.4g} m/s) makes a sideslip of "
+                 f"{np.degrees(gamma):.4g} deg, outside the aerodynamic tables' range "
+                 f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+    return gust

@@ -29,6 +29,7 @@ import pandas as pd
 from slingloads.analyses.chute_sizing import (
     line_length,
     neutral_area,
+    run_yaw,
     sizing_sweep,
     wake_ratio_at,
 )
@@ -85,6 +86,8 @@ class ChuteSizingReport:
         None when fuselage and fin are already statically stable (no positive neutral area).
     recommended_area : float
         ``recommended_factor`` x neutral area (0 when already stable). [m^2]
+    study_area_runs : YawRuns or None
+        Every gust at the Study's 'parachute area', the one the loads use (None if it is 0).
     """
 
     inputs: object
@@ -92,6 +95,17 @@ class ChuteSizingReport:
     line: object
     sweep: object
     recommended_area: float
+    study_area_runs: object = None
+
+    @property
+    def study_area_peak_sideslip(self):
+        """Largest |sideslip| of the gusts at the Study's 'parachute area', and the gust
+        that gives it (NaN, "" without that area). [rad], str"""
+        if self.study_area_runs is None:
+            return float("nan"), ""
+        frame = self.study_area_runs.to_frame()
+        i = int(np.argmax(frame["peak beta [deg]"].to_numpy()))
+        return float(np.radians(frame["peak beta [deg]"].iloc[i])), str(frame["gust"].iloc[i])
 
     def stability_by_area(self):
         """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""
@@ -126,6 +140,14 @@ class ChuteSizingReport:
         return sorted(set(chosen))
 
 
+#: How the paper found the parachute area (the Summary's note on the sizing).
+PAPER_NOTE = ("As the paper found it: its 1-DOF model (section 4.2) confirmed the neutral "
+              "static area; the complete multibody model (4.5) found it insufficient, the "
+              "shortfall coming from the inter-axis coupling of helicopter and parachute (the "
+              "carrier's coupling was negligible). This sizing reproduces 4.1-4.2 only; the "
+              "factor 1.4 is the paper's optimum for its own aircraft, not this one's.")
+
+
 def compute(study):
     """Run the parachute sizing read from a workbook.
 
@@ -154,10 +176,14 @@ def compute(study):
         sweep = None
         if not static.already_stable:
             sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
-                                 inputs.fit_range, static=static,
+                                 inputs.fit_range, metrics=inputs.metrics, static=static,
                                  integrator=inputs.integrator)
+        at_study = None
+        if inputs.study_area > 0:
+            at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
+                               inputs.fit_range, inputs.metrics, inputs.integrator)
     recommended = inputs.recommended_factor * static.area if sweep is not None else 0.0
-    return ChuteSizingReport(inputs, static, line, sweep, float(recommended))
+    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study)
 
 
 # ------------------------------------------------------------------------------- tables
@@ -187,13 +213,16 @@ def summary_tables(result, units="SI"):
     condition = _items([
         ("airspeed IAS (= EAS)", c.ias, "speed", ""),
         ("true airspeed", c.tas, "speed", ""),
-        ("density altitude", c.altitude, "length", "ISA"),
+        ("density altitude", c.density_altitude, "length", "ISA"),
         ("air density", c.density, "density", ""),
-        ("dynamic pressure q", c.q, "pressure", "1/2 rho0 V_EAS^2"),
+        ("dynamic pressure q", c.dynamic_pressure, "pressure", "1/2 rho0 V_EAS^2"),
         ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),
-        ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg", "fit over +- this"),
+        ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg",
+         "fit over +- this; a run leaving it is never called stable"),
+        ("sideslip limit", float(np.degrees(inp.metrics.sideslip_limit)), "deg",
+         "a run passing it is never called stable"),
         ("parachute canopy CD (free stream)", float(m.parachute.coefficient(0.0)), "-",
          "ParachuteCD at canopy alpha 0 (default 1.0)"),
         ("parachute wake ratio", float(m.parachute.wake_ratio), "-",
@@ -218,11 +247,15 @@ def summary_tables(result, units="SI"):
         ("neutral static area", static.area, "area",
          "fuselage and fin already stable" if static.already_stable
          else "total dN/dbeta = 0 (paper 4.1)"),
-        ("recommended factor", inp.recommended_factor, "-", "x neutral area (paper: +40 %)"),
+        ("recommended factor", inp.recommended_factor, "-",
+         "x neutral area: the paper's optimum for its own aircraft (FPA + 40 %, from its "
+         "multibody campaign, section 4.5); a placeholder until a multibody campaign "
+         "computes this aircraft's"),
         ("recommended area", result.recommended_area, "area", ""),
         *sweep_rows,
         ("Study 'parachute area' (loads)", inp.study_area, "area",
          f"{inp.study_area / static.area:.3g} x neutral" if static.area > 0 else ""),
+        *_study_area_rows(result),
     ], units)
     breakdown = static.to_frame()[["component", "dN/dbeta [N m/rad]"]].copy()
     factor, unit = _value(1.0, "moment", units)
@@ -264,6 +297,19 @@ def _wake_ratio_row(inp):
         note = (f"DIFFERS from 'parachute wake ratio' {used:.3g}, which the drag uses: set it "
                 "to the wake's value at the line")
     return ("wake q ratio at the Study line", at_line, "-", note)
+
+
+def _study_area_rows(result):
+    """Peak sideslip and verdicts of the gusts at the Study's 'parachute area'."""
+    if result.study_area_runs is None:
+        return []
+    peak, gust = result.study_area_peak_sideslip
+    frame = result.study_area_runs.to_frame()
+    verdicts = ", ".join(f"{g}: {v}" for g, v in zip(frame["gust"], frame["verdict"],
+                                                      strict=True))
+    return [("peak sideslip at the Study 'parachute area'", float(np.degrees(peak)), "deg",
+             f"{gust} gust; the loads' aerodynamic envelope must cover it"),
+            ("1-DOF verdicts at the Study 'parachute area'", verdicts, None, "")]
 
 
 def _cable_message(cable, units):
@@ -312,7 +358,7 @@ def _sheets(result, units, digest):
                            units)
     summary = [Section("Inputs", digest),
                Section("Condition", tables["condition"]),
-               Section("Parachute area", tables["sizing"]),
+               Section("Parachute area", tables["sizing"], note=PAPER_NOTE),
                Section("Yaw stiffness breakdown at the neutral area", tables["breakdown"]),
                Section("Parachute line and carrier cable", tables["line"])]
     sheets = {
@@ -325,7 +371,9 @@ def _sheets(result, units, digest):
     }
     if result.sweep is not None:
         area = {"area [m^2]": ("area", "area")}
+        speed = {c: (c[:c.index(" [")], "speed") for c in ("peak gust [m/s]",)}
         sheets["Sweep"] = [
+            Section("Gust shapes", convert_columns(result.sweep.gust_frame(), speed, units)),
             Section("Stability by area", convert_columns(result.stability_by_area(), area,
                                                          units)),
             Section("Every run", convert_columns(result.sweep.to_frame(), area, units))]

@@ -23,6 +23,7 @@ from slingloads.io.common.schema import (
     at_least,
 )
 from slingloads.limits import MAX_AERO_ROWS, MAX_CHUTE_AREAS, MAX_CHUTE_RUNS, MAX_CHUTE_STEPS
+from slingloads.models.gusts import GUST_SHAPES, W20
 
 #: Valid values of 'chute sizing wake source'.
 WAKE_SOURCES = ("model", "table")
@@ -30,6 +31,8 @@ WAKE_SOURCES = ("model", "table")
 INERTIA_SOURCES = ("mass items", "parameter")
 #: Valid values of 'chute sizing integrator'.
 INTEGRATORS = ("rk4", "solve_ivp")
+#: Valid values of 'chute sizing turbulence severity' (MIL-F-8785C W20 = 15, 30, 45 kt).
+SEVERITIES = tuple(W20)
 
 _S = "chute sizing"
 
@@ -74,15 +77,45 @@ PARAMETERS = (
               "Required excess of the carrier cable over the parachute line (paper: 20 %).",
               _S, Bounds(0, 10)),
     Parameter("chute sizing gust shapes", TEXT, "", "step, finite, 1-cosine, continuous",
-              "Comma-separated lateral gust shapes: step, finite, 1-cosine, continuous.", _S),
+              f"Comma-separated lateral gust shapes, of {list(GUST_SHAPES)}: step (sharp-edged, "
+              "held), finite (rectangular, the paper's 'impulsive' gust), 1-cosine, continuous "
+              "(a sustained crosswind: rises over 'chute sizing gust rise time', then held; the "
+              "paper's continuous gust), harmonic (a sine of period 'chute sizing harmonic "
+              "period', never ending: a resonance test), turbulence (Dryden, MIL-F-8785C; "
+              "rows 'chute sizing turbulence ...').", _S),
     Parameter("chute sizing gust amplitude", "speed", "ft/s", 30.0,
               "Lateral gust velocity, > 0 (CS 29.341 / paper: 30 ft/s).", _S, above(0)),
     Parameter("chute sizing gust onset", "time", "s", 30.0,
               "Time at which the gust starts, >= 0 and before the end of the simulation.", _S,
               at_least(0)),
     Parameter("chute sizing gust duration", "time", "s", 10.0,
-              "Duration of the finite and 1-cosine gusts, period of the continuous one, > 0.",
-              _S, above(0)),
+              "Duration of the finite and 1-cosine gusts, > 0.", _S, above(0)),
+    Parameter("chute sizing gust rise time", "time", "s", 5.0,
+              "Time the continuous (sustained) crosswind takes to build up along a half "
+              "cosine, >= 0 (0: a sharp-edged step; 5 s: the rise of the 10 s 1-cosine gust).",
+              _S, Bounds(0, 3600)),
+    Parameter("chute sizing harmonic period", "time", "s", 10.0,
+              "Period of the harmonic gust, > 0 (the worst case is near the yaw period).", _S,
+              Bounds(0, 3600, lo_open=True)),
+    Parameter("chute sizing turbulence altitude", "length", "ft", 300.0,
+              "Height above ground of the Dryden turbulence, 10 to 1000 ft (MIL-F-8785C "
+              "low-altitude scale length L_v = h/(0.177 + 0.000823 h)^1.2 and intensity).", _S),
+    Parameter("chute sizing turbulence severity", TEXT, "", "moderate",
+              f"MIL-F-8785C turbulence level, one of {list(W20)} (wind at 20 ft: 15, 30, 45 "
+              "kt; sigma_v = 0.1 W20/(0.177 + 0.000823 h)^0.4).", _S),
+    Parameter("chute sizing turbulence duration", "time", "s", 60.0,
+              "Time the turbulence acts from the gust onset, > 0; it must end before the end "
+              "of the simulation so that the free response is seen.", _S,
+              Bounds(0, 3600, lo_open=True)),
+    Parameter("chute sizing turbulence seed", INTEGER, "", 1,
+              "Seed of the turbulence realisation (the same seed gives the same history).", _S,
+              Bounds(0, 2**32 - 1)),
+    Parameter("chute sizing sideslip limit", "angle", "deg", 20.0,
+              "A run whose |sideslip| passes it is never called stable, > 0 (past about 20 "
+              "deg helicopter fuselage Cn curves turn over and a cut-down fin nears stall; "
+              "set it to the loads' sideslip envelope to keep the two consistent). A run that "
+              "leaves the linearisation range is not called stable either.", _S,
+              Bounds(0, 90, lo_open=True)),
     Parameter("chute sizing simulation time", "time", "s", 120.0,
               "Simulated time of each 1-DOF run, a whole multiple of the time step; at most "
               f"{MAX_CHUTE_STEPS:,} steps.", _S, Bounds(0, 3600, lo_open=True)),
@@ -109,8 +142,11 @@ PARAMETERS = (
               f"Number of swept areas, evenly spaced, >= 1 (at most {MAX_CHUTE_RUNS:,} runs "
               "areas x gust shapes).", _S, Bounds(1, MAX_CHUTE_AREAS)),
     Parameter("chute sizing recommended factor", "dimensionless", "", 1.4,
-              "Recommended area over the neutral static area (paper: FPA + 40 % from the "
-              "multibody study), > 0.", _S,
+              "Recommended area over the neutral static area, > 0. 1.4 is the paper's optimum "
+              "for its own aircraft (FPA + 40 %, found by its multibody campaign: the 1-DOF "
+              "model had confirmed the neutral area, the shortfall came from inter-axis "
+              "coupling); a placeholder until a multibody campaign computes this aircraft's.",
+              _S,
               Bounds(0, 100, lo_open=True)),
 )
 

@@ -1,5 +1,6 @@
-"""Plots of the lateral-step pendulum: time histories of one run, and the largest load angle
-against the carrier's acceleration for each rope length.
+"""Plots of the lateral-step pendulum: time histories of one run, the largest load angle
+against the carrier's acceleration for each rope length, and its sensitivity to the
+uncertain inputs.
 
 Every function builds and returns a :class:`matplotlib.figure.Figure` through the object API
 (no pyplot, no global state). Angles are drawn in degrees beside the CS-29.865 30 deg line.
@@ -79,9 +80,10 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
 def plot_max_angle_vs_acceleration(study, title=None):
     """Largest load angle against the carrier's peak acceleration, one line per rope length.
 
-    Each point is the largest max |theta1 - theta2| over the bodies, durations and motion
-    kinds at that rope length and acceleration (velocity steps are left out). The 30 deg line
-    and the recommended design angle are drawn beside.
+    Each point is the largest max |theta1 - theta2| over the bodies, durations, motion kinds
+    and the stated ranges of roll inertia, CG and rope length at that nominal rope length
+    and acceleration (velocity steps are left out). The 30 deg line and the recommended
+    design angle are drawn beside.
 
     Parameters
     ----------
@@ -95,7 +97,7 @@ def plot_max_angle_vs_acceleration(study, title=None):
     fig = Figure(figsize=(7.0, 4.8), layout="constrained")
     ax = fig.subplots()
     envelope = study.envelope_frame()
-    for length, rows in envelope.groupby("rope length [m]"):
+    for length, rows in envelope.groupby("nominal rope length [m]"):
         rows = rows.sort_values("peak S'' [g]")
         ax.plot(rows["peak S'' [g]"], rows["max |theta1 - theta2| [deg]"], marker="o",
                 label=f"rope {length:.3g} m ({length / FOOT:.0f} ft)")
@@ -154,4 +156,55 @@ def plot_shear_at_angles(comparison, component="Vy", units="SI", title=None):
     ax.legend(loc="best", fontsize="small")
     ax.set_title(title or f"Envelope of the hook cases, {component}, limit loads",
                  fontsize="medium")
+    return fig
+
+
+def plot_sensitivity(study, title=None):
+    """Largest load angle and cable tension factor against the factor on each uncertain
+    parameter (roll inertia, CG below hub, rope length).
+
+    Solid lines: the other two parameters nominal (one at a time); dashed: over their whole
+    ranges (the envelope). The 30 deg line, the recommended angle and the hook load factor
+    Nz (when given) are drawn beside.
+
+    Parameters
+    ----------
+    study : slingloads.analyses.lateral.LateralStudy
+    title : str, optional
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two axes: load angle [deg] and T/(m g) [-] against the factor [-].
+    """
+    fig = Figure(figsize=(10.0, 4.6), layout="constrained")
+    ax_angle, ax_tension = fig.subplots(1, 2, sharex=True)
+    frame = study.sensitivity_frame()
+    for (name, rows), color in zip(frame.groupby("parameter", sort=False),
+                                   ("tab:blue", "tab:orange", "tab:purple"), strict=False):
+        f = rows["factor [-]"]
+        ax_angle.plot(f, rows["max load angle, others nominal [deg]"], marker="o",
+                      color=color, label=f"{name} (others nominal)")
+        ax_angle.plot(f, rows["max load angle, others over their ranges [deg]"], marker=".",
+                      color=color, linestyle="--", label=f"{name} (others over ranges)")
+        ax_tension.plot(f, rows["max T/(m g), others nominal [-]"], marker="o", color=color)
+        ax_tension.plot(f, rows["max T/(m g), others over their ranges [-]"], marker=".",
+                        color=color, linestyle="--")
+    reg = np.degrees(study.regulatory_angle)
+    ax_angle.axhline(reg, label=f"CS-29.865 {reg:.0f} deg", **_REG_STYLE)
+    ax_angle.axhline(np.degrees(study.recommended_angle), color="tab:green", linestyle="-.",
+                     label=f"recommended {np.degrees(study.recommended_angle):.1f} deg")
+    if study.hook_load_factor is not None:
+        ax_tension.axhline(study.hook_load_factor, label=f"Nz {study.hook_load_factor:g}",
+                           **_REG_STYLE)
+        ax_tension.legend(loc="best", fontsize="small")
+    ax_angle.set_ylabel("max |theta1 - theta2| [deg]")
+    ax_tension.set_ylabel("max T/(m g) [-]")
+    for ax in (ax_angle, ax_tension):
+        ax.set_xlabel("factor on the nominal value [-]")
+        ax.grid(True, alpha=0.3)
+    ax_angle.set_ylim(bottom=0.0)
+    ax_angle.legend(loc="best", fontsize="x-small")
+    fig.suptitle(title or "Sensitivity of the largest load angle and cable tension to roll "
+                 "inertia, CG below hub and rope length", fontsize="medium")
     return fig

@@ -18,11 +18,25 @@ from dataclasses import dataclass
 import numpy as np
 from openpyxl.utils import get_column_letter
 
-from slingloads.analyses.lateral import SolverSettings, airframe_body
+from slingloads.analyses.lateral import ParameterRanges, airframe_body
+from slingloads.analyses.lateral_damping import (
+    DAMPING_SOURCES,
+    LateralDamping,
+    aerodynamic_damping,
+)
 from slingloads.errors import InputError
+from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
+from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
-from slingloads.io.lateral.schema import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
+from slingloads.io.lateral.schema import (
+    CABLE_MODELS,
+    MOTION_ALIASES,
+    MOTION_TYPES,
+    SHEETS,
+    SOLVER_METHODS,
+    THEN,
+)
 from slingloads.io.loads import reader as loads_reader
 from slingloads.limits import (
     MAX_HISTORY_OUTPUT,
@@ -35,16 +49,21 @@ from slingloads.limits import (
 )
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
-    SmoothStep,
+    CycloidalStep,
+    QuinticStep,
     TimeHistory,
     VelocityStep,
 )
+from slingloads.models.flight import FlightCondition
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 
 ANALYSIS = "lateral"
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
 #: Longest time history (LateralHistory id or CSV file). [s]
 MAX_MAGNITUDE_TIME_HISTORY = 3600.0
+#: The displacement steps of the LateralMotions sheet, by type.
+STEP_LAWS = {"quintic step": QuinticStep, "cycloidal step": CycloidalStep}
 _SPEC = {s.name: s for s in SHEETS}
 
 
@@ -67,16 +86,13 @@ class LateralInputs:
         Design-angle margin, >= 1. [-]
     cable_ea : float or None
         None: rigid rope. [N]
-    lateral_damping : float
-        [N s/m]
-    roll_damping : float
-        [N m s/rad]
-    t_end : float or None
-        Run length; None: automatic. [s]
-    step : float or None
-        RK4 step; None: automatic. [s]
+    damping : LateralDamping
+        From the parameters or derived from the aerodynamic tables.
+    ranges : ParameterRanges
+        Uncertainty of roll inertia, CG below hub and rope length.
     solver : SolverSettings
-        Settings of the critical case's time-history re-run.
+        Run length ``t_end`` and RK4 ``step`` of the sweep (None: automatic), and the
+        solve_ivp settings of the critical case's time-history re-run.
     loads : LoadsStudy or None
         The loads study of the workbook (for the hook cases at the recommended angle).
     """
@@ -88,10 +104,8 @@ class LateralInputs:
     motion_ids: tuple
     margin: float
     cable_ea: float | None
-    lateral_damping: float
-    roll_damping: float
-    t_end: float | None
-    step: float | None
+    damping: LateralDamping
+    ranges: ParameterRanges
     solver: SolverSettings
     loads: object
 
@@ -126,8 +140,8 @@ def read(reader, params, study):
                "'lateral cable EA' is used only with 'lateral cable model' = elastic; leave "
                "it 0 with the rigid rope")
         cable_ea = None
-    damping = params.positive("lateral damping", allow_zero=True)
-    roll_damping = params.positive("lateral roll damping", allow_zero=True)
+    damping = _damping(reader, params, study)
+    ranges = _ranges(params)
     t_end = params.positive("lateral simulation time", allow_zero=True)
     step = params.positive("lateral RK4 step", allow_zero=True)
     if t_end > 0 and step > 0:
@@ -136,8 +150,9 @@ def read(reader, params, study):
     method = params.choice("lateral history method", SOLVER_METHODS)
     rtol = params.positive("lateral history rtol")
     output = params.positive("lateral history output step")
-    solver = SolverSettings(method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2),
-                            output_step=output)
+    solver = SolverSettings(t_end=t_end if t_end > 0 else None,
+                            step=step if step > 0 else None, output_interval=output,
+                            method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2))
     ropes = _ropes(reader)
     bodies, source = _bodies(reader, study)
     histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
@@ -149,9 +164,47 @@ def read(reader, params, study):
             loads = loads_reader.read(reader, params, study)
     return LateralInputs(
         bodies=bodies, body_source=source, rope_lengths=ropes, motions=motions,
-        motion_ids=ids, margin=float(margin), cable_ea=cable_ea, lateral_damping=damping,
-        roll_damping=roll_damping, t_end=t_end if t_end > 0 else None,
-        step=step if step > 0 else None, solver=solver, loads=loads)
+        motion_ids=ids, margin=float(margin), cable_ea=cable_ea, damping=damping,
+        ranges=ranges, solver=solver, loads=loads)
+
+
+def _damping(reader, params, study):
+    """The damping of the 'lateral damping ...' rows, or derived from the aerodynamic
+    tables at 'lateral airspeed EAS' (zero in hover)."""
+    source = params.choice("lateral damping source", DAMPING_SOURCES)
+    lateral = params.positive("lateral damping", allow_zero=True)
+    roll = params.positive("lateral roll damping", allow_zero=True)
+    speed = params.positive("lateral airspeed EAS", allow_zero=True)
+    if source == "parameters":
+        return LateralDamping(lateral, roll)
+    for name, value in (("lateral damping", lateral), ("lateral roll damping", roll)):
+        params.check(name, value == 0, f"{name!r} is used only with 'lateral damping source' "
+                     "= parameters; leave it 0 with 'aerodynamic tables'")
+    with located(reader.file, STUDY_SHEET, params.where("lateral density altitude")):
+        condition = FlightCondition(speed, params("lateral density altitude"))
+    fuselage = read_fuselage_aero(reader, params, study.points)
+    fin = read_fin_aero(reader, params, study.points)
+    if fuselage is None and fin is None:
+        raise params.error("lateral damping source", "'aerodynamic tables' needs a "
+                           "FuselageAero or a FinAero sheet", "aerodynamic tables")
+    hardpoints = study.airframe.hardpoints
+    with located(reader.file, "FuselageAero" if fuselage is not None else "FinAero"):
+        return aerodynamic_damping(condition, hardpoints.hub, hardpoints.mast_axis,
+                                   fuselage, fin)
+
+
+def _ranges(params):
+    """The stated uncertainty of roll inertia, CG below hub and rope length."""
+    spreads = []
+    for name in ("lateral roll inertia spread", "lateral CG below hub spread",
+                 "lateral rope length spread"):
+        value = params.positive(name, allow_zero=True)
+        params.check(name, value < 1, f"{name!r} must lie in [0, 1) (factors 1 -+ spread)")
+        spreads.append(value)
+    points = params("lateral spread points")
+    params.check("lateral spread points", float(points) == int(points) and points >= 1,
+                 "'lateral spread points' must be a whole number >= 1")
+    return ParameterRanges.spread(*spreads, points=int(points))
 
 
 def _require(reader, name):
@@ -274,6 +327,7 @@ def _csv_history(reader, text, t, i):
 def _motion_type(reader, t, i):
     text = str(t["type"][i]).strip().lower().replace("_", " ").replace("-", " ")
     text = " ".join(text.split())
+    text = MOTION_ALIASES.get(text, text)
     if text not in MOTION_TYPES:
         raise reader.error(f"unknown motion type; valid types are {list(MOTION_TYPES)}",
                            t["type"][i], t.sheet, t.cell("type", i))
@@ -316,21 +370,22 @@ def _motions(reader, histories):
     for i in range(len(t)):
         kind = _motion_type(reader, t, i)
         where = (reader.file, t.sheet, t.cell("type", i))
-        if kind == "smooth step":
+        if kind in STEP_LAWS:
             unused(("then", "delta V", "history"), i, kind)
             duration = need("duration", i, kind, positive)
             has_acc = not np.isnan(number("acceleration", i))
             has_amp = not np.isnan(number("amplitude", i))
             if has_acc == has_amp:
-                raise reader.error("a smooth step needs either 'acceleration' (peak) or "
+                raise reader.error(f"a {kind} needs either 'acceleration' (peak) or "
                                    "'amplitude', not both nor neither", None, t.sheet,
                                    t.cell("type", i))
+            law = STEP_LAWS[kind]
             with located(*where):
                 if has_acc:
-                    motion = SmoothStep.from_peak_acceleration(
+                    motion = law.from_peak_acceleration(
                         need("acceleration", i, kind, nonzero), duration)
                 else:
-                    motion = SmoothStep(need("amplitude", i, kind, nonzero), duration)
+                    motion = law(need("amplitude", i, kind, nonzero), duration)
         elif kind == "constant acceleration":
             unused(("amplitude", "delta V", "history"), i, kind)
             rate = need("acceleration", i, kind, nonzero)

@@ -10,7 +10,9 @@ re-run the CS-29.865 hook cases at the recommended angle. Method, signs and limi
 
 from __future__ import annotations
 
+from slingloads.analyses.lateral_damping import DAMPING_SOURCES
 from slingloads.io.common.schema import (
+    INTEGER,
     RELATIVE_TOLERANCE,
     TEXT,
     Bounds,
@@ -27,15 +29,19 @@ from slingloads.limits import (
     MAX_LATERAL_STEPS,
     MAX_TABLE_ROWS,
 )
+from slingloads.models.integration import SOLVE_IVP_METHODS
 
 #: Valid values of 'lateral cable model'.
 CABLE_MODELS = ("rigid", "elastic")
 #: Valid motion types of the LateralMotions sheet (spaces or underscores).
-MOTION_TYPES = ("smooth step", "constant acceleration", "velocity step", "time history")
+MOTION_TYPES = ("quintic step", "cycloidal step", "constant acceleration", "velocity step",
+                "time history")
+#: Former motion type names still accepted, and what they now are.
+MOTION_ALIASES = {"smooth step": "quintic step"}
 #: Valid values of the LateralMotions 'then' column.
 THEN = ("hold", "stop")
 #: solve_ivp methods of the time histories of the critical case.
-SOLVER_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+SOLVER_METHODS = SOLVE_IVP_METHODS
 
 _S = "lateral"
 
@@ -49,12 +55,41 @@ PARAMETERS = (
     Parameter("lateral cable EA", "force", "N", 0.0,
               "Axial stiffness EA of the cable, > 0 with the 'elastic' model; leave 0 with "
               "'rigid'.", _S, at_least(0)),
+    Parameter("lateral damping source", TEXT, "", "parameters",
+              f"Where the damping of the swing and roll comes from, one of "
+              f"{list(DAMPING_SOURCES)}: 'parameters' = the two rows below (0 = off, the "
+              "paper's hover assumption); 'aerodynamic tables' = derived from the FuselageAero "
+              "and FinAero side-force slopes at 'lateral airspeed EAS' (zero in hover: no "
+              "free stream; docs/lateral-pendulum.md).", _S),
     Parameter("lateral damping", "linear damping", "N*s/m", 0.0,
-              "Linear aerodynamic damping of the CG's lateral speed, >= 0 (0 = off, the "
-              "paper's assumption).", _S, at_least(0)),
-    Parameter("lateral roll damping", "rotational damping", "N*m*s/rad", 0.0,
-              "Linear aerodynamic damping of the airframe's roll rate, >= 0 (0 = off).", _S,
+              "With the source 'parameters': linear damping of the CG's lateral speed, >= 0 "
+              "(0 = off, the paper's assumption); leave 0 with 'aerodynamic tables'.", _S,
               at_least(0)),
+    Parameter("lateral roll damping", "rotational damping", "N*m*s/rad", 0.0,
+              "With the source 'parameters': linear damping of the airframe's roll rate, >= 0 "
+              "(0 = off); leave 0 with 'aerodynamic tables'.", _S,
+              at_least(0)),
+    Parameter("lateral airspeed EAS", "speed", "kt", 0.0,
+              "Airspeed at which the aerodynamic damping is derived, >= 0 (0 = hover, the "
+              "paper's lateral step: no linear aerodynamic damping).", _S,
+              Bounds(0, 400, unit="kt")),
+    Parameter("lateral density altitude", "length", "ft", 0.0,
+              "ISA density altitude of the aerodynamic damping.", _S,
+              Bounds(-610, 11000, unit="m")),
+    Parameter("lateral roll inertia spread", "dimensionless", "", 0.2,
+              "Uncertainty of the roll inertia: the study runs factors 1 -+ this, in [0, 1) "
+              "(default 20 %); the recommended angle covers the whole range.", _S,
+              Bounds(0, 1, hi_open=True)),
+    Parameter("lateral CG below hub spread", "dimensionless", "", 0.2,
+              "Uncertainty of the CG distance below the hub, as the roll inertia's.", _S,
+              Bounds(0, 1, hi_open=True)),
+    Parameter("lateral rope length spread", "dimensionless", "", 0.2,
+              "Uncertainty of every rope length, as the roll inertia's.", _S,
+              Bounds(0, 1, hi_open=True)),
+    Parameter("lateral spread points", INTEGER, "", 5,
+              "Values per range, evenly spaced (nominal included), >= 1; the study runs "
+              "every combination (points^3 x bodies x ropes x motions runs).", _S,
+              Bounds(1, 21)),
     Parameter("lateral simulation time", "time", "s", 0.0,
               "Length of every run, > 0; 0 = automatic: the longest motion plus three periods "
               "of the slowest swing mode. Lengthen it (or add damping) to check that the "
@@ -76,17 +111,23 @@ PARAMETERS = (
 SHEETS = (
     TableSheet("LateralMotions", (
         Column("id", TEXT, help="Unique name of the carrier motion."),
-        Column("type", TEXT, help="smooth step | constant acceleration | velocity step | "
-                                  "time history."),
+        Column("type", TEXT, help="quintic step (minimum-jerk law S = A (10 tau^3 - 15 "
+                                  "tau^4 + 6 tau^5), peak acceleration 5.77 A/T^2; 'smooth "
+                                  "step' is its former name) | cycloidal step (S = A (tau - "
+                                  "sin(2 pi tau)/(2 pi)), peak 2 pi A/T^2) | constant "
+                                  "acceleration | velocity step | time history."),
         Column("acceleration", "acceleration", "m/s^2", False, None,
-               "Smooth step: peak lateral acceleration of the hook; constant acceleration: "
+               "Quintic or cycloidal step: peak lateral acceleration of the hook; constant "
+               "acceleration: "
                "the rate. Finite, not 0 (sign = direction). Any acceleration unit: m/s^2, "
                "ft/s^2, or g0 (standard gravity; 'g' would be the gram)."),
         Column("duration", "time", "s", False, None,
-               "Smooth step: time to complete the step; constant acceleration: time of the "
+               "Quintic or cycloidal step: time T to complete the step; constant "
+               "acceleration: time of the "
                "acceleration phase. > 0.", Bounds(0, 3600, lo_open=True)),
         Column("amplitude", "length", "m", False, None,
-               "Smooth step only, instead of the acceleration: the step's displacement."),
+               "Quintic or cycloidal step only, instead of the acceleration: the step's "
+               "displacement A."),
         Column("then", TEXT, required=False, default="",
                help="Constant acceleration only: 'hold' (keep the speed reached) or 'stop' "
                     "(decelerate at the same rate for the same time)."),
@@ -137,4 +178,5 @@ SECTION = Section("lateral", parameters=PARAMETERS, sheets=SHEETS)
 #: The Study parameter behind each setting the analysis may refuse while computing (to locate
 #: its error): the automatic run length and step are only known then.
 COMPUTE_FIELDS = {"step": "lateral RK4 step", "t_end": "lateral simulation time",
-                  "rtol": "lateral history rtol", "output_step": "lateral history output step"}
+                  "rtol": "lateral history rtol",
+                  "output_interval": "lateral history output step"}

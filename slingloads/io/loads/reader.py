@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from slingloads.analyses.fe_loads import HOOK_POINTS, ModelAxes
 from slingloads.analyses.hook_loads import (
     CONE_SHAPES,
     NO_HOOK,
@@ -25,7 +26,6 @@ from slingloads.analyses.loads import (
     CHUTE_LINE_DIRECTIONS,
     NO_AERO,
     AeroEnvelope,
-    FlightCondition,
     ListedCase,
     LoadsStudy,
 )
@@ -38,9 +38,11 @@ from slingloads.io.airframe.reader import (
 )
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
 from slingloads.io.loads.schema import SHEETS
 from slingloads.limits import MAX_CASE_POINTS, MAX_LOAD_CASES, MAX_SFBM_ROWS
 from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attitude
+from slingloads.models.flight import FlightCondition
 
 _SPEC = {s.name: s for s in SHEETS}
 
@@ -241,12 +243,14 @@ def _previous(reader):
 
 def report_options(params, study):
     """The report options of the loads, checked for every workbook: the stations and
-    component pairs of the 2-D envelopes ('hull stations', 'hull pairs').
+    component pairs of the 2-D envelopes ('hull stations', 'hull pairs') and the Nastran file
+    ('nastran ...' rows).
 
     Returns
     -------
     dict
-        ``{"hull stations": [station id, ...], "hull pairs": [(component, component), ...]}``
+        ``{"hull stations": [station id, ...], "hull pairs": [(component, component), ...],
+        "nastran": bool, "nastran settings": {...}, "nastran locations": {...}}``
     """
     airframe = study.airframe
     ids = list(airframe.station_ids)
@@ -274,4 +278,42 @@ def report_options(params, study):
     if not pairs and params("hull pairs"):
         raise params.error("hull pairs", "no hull pair given (e.g. 'Vy-Mz, Vz-My', or leave "
                            "the cell empty for none)")
-    return {"hull stations": stations, "hull pairs": pairs}
+    return {"hull stations": stations, "hull pairs": pairs, **_nastran_options(params, study)}
+
+
+_NASTRAN_IDS = {"first_grid_id": "nastran first grid id",
+                "first_element_id": "nastran first element id",
+                "load_id_base": "nastran load id base", "first_subcase": "nastran first subcase"}
+
+
+def _nastran_options(params, study):
+    """The Study rows 'nastran ...', checked at their cells: ``nastran`` (write the file),
+    ``nastran settings`` (options of :func:`~slingloads.io.loads.nastran.prepare_nastran`)
+    and ``nastran locations`` (the cell of each option and of each listed case id, for the
+    errors found when the file is laid out)."""
+    file = params.reader.file
+    settings = {"inertia_relief": params.choice("nastran inertia relief", INERTIA_RELIEF),
+                "hook_at": params.choice("nastran hook load at", HOOK_POINTS),
+                "axes": str(params("nastran model axes") or "").strip(),
+                "offset": tuple(float(params(f"nastran offset {a}")) for a in "xyz")}
+    with located(file, STUDY_SHEET, params.where("nastran model axes")):
+        ModelAxes(settings["axes"])
+    for arg, name in _NASTRAN_IDS.items():
+        value = params(name)
+        smallest = 0 if arg == "load_id_base" else 1
+        params.check(name, smallest <= value <= MAX_ID,
+                     f"{name!r} must be a whole number from {smallest} to {MAX_ID:,}")
+        settings[arg] = int(value)
+    names = {"axes": "nastran model axes", "offset": "nastran offset x",
+             "inertia_relief": "nastran inertia relief", "hook_at": "nastran hook load at",
+             **_NASTRAN_IDS}
+    locations = {arg: {"sheet": STUDY_SHEET, "cell": params.where(name), "name": name}
+                 for arg, name in names.items()}
+    reader = params.reader
+    if study.loads is not None and reader.has_sheet("LoadCases"):
+        t = reader.table(_SPEC["LoadCases"])
+        locations.update({("case", str(t["id"][i])): {"sheet": t.sheet,
+                                                      "cell": t.cell("id", i)}
+                          for i in range(len(t))})
+    return {"nastran": bool(params("nastran bulk data")), "nastran settings": settings,
+            "nastran locations": locations}

@@ -15,7 +15,9 @@
   ``<stem>-envelope.csv``: limit loads, always SI;
 * ``<stem>-X_shear.png`` and ``<stem>-Y_shear.png`` (the paper's figures 19 and 20),
   ``<stem>-sfbm_all.png`` (all six components, 2 x 3 grid) and
-  ``<stem>-hull_<A>_<B>_<station>.png``.
+  ``<stem>-hull_<A>_<B>_<station>.png``;
+* on request, ``<stem>-loads.bdf``: the load cases as a Nastran input file
+  (:mod:`slingloads.io.loads.nastran`), with a *Nastran* sheet in the workbook.
 
 :func:`convert_by_component` converts the columns whose unit depends on the row's load
 component; the conversions shared by every report are in :mod:`slingloads.io.common.report`.
@@ -52,12 +54,14 @@ from slingloads.io.common.report import (
     report_unit,
 )
 from slingloads.io.common.units import unit_label
+from slingloads.io.common.workbook import located
+from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.plots import COMPONENT_TAGS, plot_hull, plot_sfbm, plot_sfbm_grid
 
 #: Names of the files of a loads report (``*``: a part made from a station id), for the
 #: publisher: a new report replaces every earlier file of these names.
 OUTPUTS = ("{stem}-loads.xlsx", "{stem}-sfbm.csv", "{stem}-envelope.csv", "{stem}-X_shear.png",
-           "{stem}-Y_shear.png", "{stem}-sfbm_all.png", "{stem}-hull_*.png")
+           "{stem}-Y_shear.png", "{stem}-sfbm_all.png", "{stem}-hull_*.png", "{stem}-loads.bdf")
 
 #: Components drawn on their own PNG (the paper's figures 19 and 20); all six are on the grid.
 PNG_COMPONENTS = ("Vx", "Vy")
@@ -315,7 +319,8 @@ def _default_hull_station(result, pair):
 
 def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
-                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True):
+                        input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
+                        nastran=None, checks=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -342,6 +347,13 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Rows per sheet including the header (Excel's limit by default).
     plots : bool
         Draw the PNG plots and the Plots sheet (False for fast batch runs).
+    nastran : dict or True, optional
+        Also write ``<stem>-loads.bdf``, the load cases as a Nastran input file in the units
+        ``units``, with these options of :func:`~slingloads.io.loads.nastran.prepare_nastran`
+        (True: the defaults), and a *Nastran* sheet linking each subcase to its case id.
+    checks : pandas.DataFrame, optional
+        Checks against the other analyses of the run (:mod:`slingloads.io.consistency`),
+        shown on the Summary sheet with a warning when one fails.
 
     Returns
     -------
@@ -376,6 +388,11 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
             if plots else [])
     names = [f"{stem}-loads.xlsx", f"{stem}-sfbm.csv", f"{stem}-envelope.csv",
              *(f"{stem}-{tag}.png" for tag in tags)]
+    deck = None
+    if nastran is not None and nastran is not False:
+        deck = prepare_nastran(result, units=units, inputs_digest=inputs_digest,
+                               **({} if nastran is True else dict(nastran)))
+        names.append(f"{stem}-loads.bdf")
     for name in names:  # fail before the slow work, not after it
         check_not_input(Path(out_dir) / name, input_paths)
 
@@ -391,7 +408,9 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         embedded = {"X shear (Vx)": pngs["X_shear"], "Y shear (Vy)": pngs["Y_shear"],
                     "All six components": pngs["sfbm_all"]}
         embedded.update({tag: pngs[tag] for tag in hull_plots})
-    sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations)
+    sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks)
+    if deck is not None:
+        sheets["Nastran"] = nastran_sheet(deck)
 
     with atomic_outputs(out_dir, inputs=input_paths) as out:
         write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,
@@ -402,15 +421,35 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         write_csv(result.envelope(), out.path(f"{stem}-envelope.csv"))
         for tag, png in pngs.items():
             out.path(f"{stem}-{tag}.png").write_bytes(png)
+        if deck is not None:
+            deck.write(out.path(f"{stem}-loads.bdf"))
     return out.written
 
 
-def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations):
+def nastran_sheet(deck):
+    """The *Nastran* sheet: the file's settings, the subcase -> case id table, the grids."""
+    return [Section("Nastran input file (<stem>-loads.bdf): settings", deck.settings_table()),
+            Section("Subcases: number, LOAD set and the case id each stands for",
+                    deck.subcase_table(),
+                    note="Nastran labels hold printable ASCII; a longer or non-ASCII case id "
+                         "is shortened and ends in '~' and a checksum."),
+            Section("Grids (model axes, file units) and CONM2 elements", deck.grid_table())]
+
+
+def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks=None):
     """The sheets of the loads workbook, in order."""
     digest = digest_frame(inputs_digest)
     summary = [
         Section("Inputs", digest) if digest is not None
         else Section("Inputs", note="no input digest given"),
+    ]
+    if checks is not None and len(checks):
+        failed = checks[checks["status"] != "ok"]
+        summary.append(Section(
+            "Consistency with the other analyses of this run", checks,
+            note=("WARNING: " + " ".join(failed["note"])) if len(failed) else
+                 "Every check against the other analyses of this run passes."))
+    summary += [
         Section("Study", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
                 note=result.attitude.describe() + ". Gravity, the vertical hook case and the "
@@ -479,11 +518,18 @@ def compute(study):
     return result
 
 
-def write(result, out_dir, stem, units, study):
+def write(result, out_dir, stem, units, study, checks=None):
     """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
-    run's outputs ``out_dir``, with the study's inputs digest and hull options."""
-    return write_loads_outputs(result, out_dir, stem, units=units,
-                               inputs_digest=study.digest(),
-                               hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
-                               hull_stations=study.options.get("hull stations"),
-                               input_paths=study.input_files)
+    run's outputs ``out_dir``, with the study's inputs digest and hull options, and the
+    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`)."""
+    nastran = None
+    if study.options.get("nastran"):
+        nastran = {**study.options["nastran settings"],
+                   "locations": study.options["nastran locations"]}
+    with located(study.path):
+        return write_loads_outputs(result, out_dir, stem, units=units,
+                                   inputs_digest=study.digest(),
+                                   hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
+                                   hull_stations=study.options.get("hull stations"),
+                                   input_paths=study.input_files, nastran=nastran,
+                                   checks=checks)

@@ -20,6 +20,40 @@ from slingloads.io.common.schema import (
 )
 from slingloads.limits import MAX_HOOK_AZIMUTHS, MAX_LOAD_CASES, MAX_SFBM_ROWS, MAX_STATIONS
 
+#: The Nastran input file of the load cases (docs/nastran.md), in the units of --units.
+NASTRAN_PARAMETERS = (
+    Parameter("nastran bulk data", FLAG, "", "no",
+              "Also write <input>-loads.bdf, the load cases as a Nastran input file (GRID, "
+              "CONM2, FORCE, MOMENT, GRAV, RFORCE, a SUBCASE per case; docs/nastran.md); the "
+              "option --nastran does the same. Units of --units: SI (m, N, kg, s) or US (in, "
+              "lbf, s, mass in lbf s^2/in).", "nastran"),
+    Parameter("nastran model axes", TEXT, "", "x, y, z",
+              "The finite-element model's X, Y, Z as signed project axes (x aft, y right, z "
+              "up), e.g. '-x, y, -z' for X forward, Y right, Z down; must be a rotation.",
+              "nastran"),
+    *(Parameter(f"nastran offset {axis}", "length", "m", 0.0,
+                f"Position of the project's origin (the airframe datum) in the model's axes: "
+                f"{axis.upper()}.", "nastran") for axis in "xyz"),
+    Parameter("nastran inertia relief", TEXT, "", "accelerations",
+              "'accelerations' (each subcase carries the inertia loads of the rigid-body "
+              "accelerations as GRAV and RFORCE: self-balanced, constrain the model "
+              "statically determinate) or 'inrel' (PARAM,INREL,-2: Nastran computes them "
+              "from the CONM2 masses).", "nastran"),
+    Parameter("nastran hook load at", TEXT, "", "mast feet",
+              "'mast feet' (shared among the feet as the loads analysis does) or 'hub' (one "
+              "force at the rotor hub grid).", "nastran"),
+    Parameter("nastran first grid id", INTEGER, "", 900001,
+              "Id of the first GRID (mass items, then hub, mast feet, aerodynamic points, fin, "
+              "parachute).", "nastran"),
+    Parameter("nastran first element id", INTEGER, "", 900001,
+              "Id of the first CONM2 (one per mass item).", "nastran"),
+    Parameter("nastran load id base", INTEGER, "", 100000,
+              "Load-set ids: base + 1 is gravity; subcase s uses base + 10 s (LOAD) to "
+              "base + 10 s + 4.", "nastran"),
+    Parameter("nastran first subcase", INTEGER, "", 1,
+              "Number of the first SUBCASE (one per load case, in case order).", "nastran"),
+)
+
 PARAMETERS = (
     Parameter("airspeed EAS", "speed", "kt", 100.0,
               "Equivalent airspeed of the loads cases (paper: 100 KEAS).", "flight",
@@ -84,6 +118,7 @@ PARAMETERS = (
               "around the mast).", "report"),
     Parameter("hull pairs", TEXT, "", "Vy-Mz, Vz-My",
               "Comma-separated component pairs for the 2-D envelopes.", "report"),
+    *NASTRAN_PARAMETERS,
 )
 
 SHEETS = (
