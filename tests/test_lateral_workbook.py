@@ -409,9 +409,9 @@ def test_step_laws_by_type_name_and_the_former_name(tmp_path):
 @pytest.mark.parametrize("name, value, fragments", [
     ("lateral damping source", "guess", ("valid values", "'aerodynamic tables'")),
     ("lateral damping", 500.0, ("used only with 'lateral damping source' = parameters",)),
-    ("lateral roll inertia spread", 1.0, ("must lie in [0, 1)",)),
+    ("lateral roll inertia spread", 1.0, ("in [0, 1)",)),
     ("lateral rope length spread", -0.1, ("must be >= 0",)),
-    ("lateral spread points", 0, ("whole number >= 1",)),
+    ("lateral spread points", 0, ("must be >= 1",)),
     ("lateral airspeed EAS", -10, ("must be >= 0",)),
 ])
 def test_bad_damping_and_range_rows(tmp_path, capsys, name, value, fragments):

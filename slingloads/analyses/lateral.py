@@ -38,6 +38,14 @@ from scipy.integrate import solve_ivp
 from slingloads.analyses.lateral_damping import LateralDamping
 from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
+from slingloads.limits import (
+    MAX_HISTORY_OUTPUT,
+    MAX_LATERAL_MOTION_STEPS,
+    MAX_LATERAL_RUN_STEPS,
+    MAX_LATERAL_STEPS,
+    check_count,
+    evaluation_budget,
+)
 from slingloads.models.carrier_motion import (
     MOTION_ALIASES,
     ConstantAcceleration,
@@ -325,11 +333,14 @@ def simulate(pendulum, motion, *, solver=None, x0=None):
     if isinstance(motion, TimeHistory):
         max_step = min(max_step, motion.min_interval)
 
-    def rhs(t, x):
+    def derivatives(t, x):
         _, v, a = motion.kinematics(t)
         return pendulum.derivatives(x, v, a)[0]
 
+    rhs = evaluation_budget(derivatives, "the time-history run", field="rtol")
     n_out = max(int(np.ceil(t_end / solver.output_interval - 1e-9)), 2)
+    check_count(n_out, MAX_HISTORY_OUTPUT, "stored samples of a time-history run",
+                field="output_interval")
     t_out = np.linspace(0.0, t_end, n_out + 1)
     cuts = np.unique(np.clip([0.0, *motion.breakpoints, t_end], 0.0, t_end))
     if x0 is None:
@@ -404,7 +415,13 @@ def sweep(pendulums, motions, *, solver=None):
                          (len(pendulums), len(motions)))
     solver = sweep_settings(pendulums, motions, solver)
     t_end, step = solver.t_end, solver.step
-    n_steps = max(int(np.ceil(t_end / step - 1e-9)), 2)
+    n_steps = t_end / step
+    check_count(n_steps, MAX_LATERAL_STEPS, "RK4 steps per run", field="step")
+    check_count(n_steps * len(pendulums), MAX_LATERAL_RUN_STEPS, "run-steps (runs x steps)",
+                field="step")
+    check_count(n_steps * len({id(m) for m in motions}), MAX_LATERAL_MOTION_STEPS,
+                "motion-steps (distinct motions x steps)", field="step")
+    n_steps = max(int(np.ceil(n_steps - 1e-9)), 2)
     h = t_end / n_steps
     nodes, jumps = _time_nodes(t_end, n_steps, motions)
     rigid = np.array([p.rigid for p in pendulums])

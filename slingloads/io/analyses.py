@@ -87,8 +87,24 @@ class Analysis:
         return getattr(self.module("reader"), self.options)(params, study)
 
     def compute(self, study):
-        """Run it on a study read from a workbook."""
-        return self.module("report").compute(study)
+        """Run it on a study read from a workbook. An :class:`InputError` the analysis raises
+        is located in the workbook, at the Study cell its ``field`` comes from when the
+        analysis's schema maps it (``COMPUTE_FIELDS``: model argument -> Study parameter)."""
+        fields = getattr(self.module("schema"), "COMPUTE_FIELDS", {})
+        with study.located(fields):
+            return self.module("report").compute(study)
+
+    def output_patterns(self, stem):
+        """Regular expressions of the names of its report files for input ``stem`` (its
+        report module's ``OUTPUTS``), which a new report replaces."""
+        from slingloads.io.common.atomic import output_pattern
+
+        return [output_pattern(t, stem) for t in getattr(self.module("report"), "OUTPUTS", ())]
+
+    def output_names(self, stem):
+        """The fixed names among its report files (for the checks made before computing)."""
+        return [t.format(stem=stem) for t in getattr(self.module("report"), "OUTPUTS", ())
+                if "*" not in t]
 
     def write(self, result, out_dir, stem, units, study, checks=None):
         """Write its report into the run's outputs ``out_dir``; ``checks``, a DataFrame of

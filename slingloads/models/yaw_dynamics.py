@@ -57,6 +57,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from slingloads.errors import InputError
+from slingloads.limits import MAX_ODE_EVALUATIONS, evaluation_budget
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
 from slingloads.models.flight import SIZING_SPEED, FlightCondition
@@ -472,12 +473,14 @@ def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None)
             dpsi, drate, _ = model.derivatives(y[0], y[1], gamma, v_rel, area)
             return [float(dpsi), float(drate)]
 
+        budget = evaluation_budget(rhs, "the solve_ivp reference runs", field="rtol",
+                                   limit=MAX_ODE_EVALUATIONS // runs)
         cuts = np.unique([0.0, *(b for b in gust.breakpoints
                                  if b is not None and 0.0 < b < times[-1]), times[-1]])
         which = np.clip(np.searchsorted(cuts, times, side="right") - 1, 0, cuts.size - 2)
         y = [psi0[j], rate0[j]]
         for k in range(cuts.size - 1):
-            sol = solve_ivp(rhs, (cuts[k], cuts[k + 1]), y, method=settings.method,
+            sol = solve_ivp(budget, (cuts[k], cuts[k + 1]), y, method=settings.method,
                             rtol=settings.rtol, atol=settings.atol, max_step=max_step,
                             dense_output=True)
             if not sol.success:

@@ -36,6 +36,8 @@ from slingloads.io.common.report import check_units, digest_frame
 
 ANALYSIS = "campaign"
 _PNG_DPI = 90
+#: Names of the files of a campaign report, for the publisher (a new report replaces them).
+OUTPUTS = ("{stem}-campaign.xlsx", "{stem}-campaign-histories.parquet", "{stem}-campaign-*.png")
 NUMBER_FORMATS = format_by_header([
     (r"\[deg\]", "0.00"),
     (r"ratio|factor|\[-\]|\[1/s\]", "0.0000"),
@@ -398,7 +400,7 @@ def write(report, out_dir, stem, units, study):
     list of pathlib.Path
     """
     check_units(units)
-    inputs = [study.path]
+    inputs = study.input_files or [study.path]
     figs = _figures(report, units)
     names = ([f"{stem}-campaign.xlsx", f"{stem}-campaign-histories.parquet"]
              + [f"{stem}-campaign-{tag}.png" for tag in figs])

@@ -18,6 +18,7 @@ import numpy as np
 from slingloads.analyses.chute_sizing import MetricSettings
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
+from slingloads.io.airframe.schema import SHEETS as _AIRFRAME_SHEETS
 from slingloads.io.chute.schema import (
     INERTIA_SOURCES,
     INTEGRATORS,
@@ -27,6 +28,13 @@ from slingloads.io.chute.schema import (
 )
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import located
+from slingloads.limits import (
+    MAX_CHUTE_REFERENCE_RUNS,
+    MAX_CHUTE_RUN_STEPS,
+    MAX_CHUTE_RUNS,
+    MAX_CHUTE_SAMPLES,
+    MAX_CHUTE_STEPS,
+)
 from slingloads.models.airframe import yaw_inertia_about_hub
 from slingloads.models.flight import FlightCondition
 from slingloads.models.gusts import GUST_SHAPES, DrydenTurbulence, make_gust
@@ -35,6 +43,7 @@ from slingloads.models.wake import BluffBodyWake, TabulatedWake
 from slingloads.models.yaw_dynamics import YawModel
 
 ANALYSIS = "chute sizing"
+HARDPOINT_SHEETS = {s.name: s for s in _AIRFRAME_SHEETS}
 
 
 @dataclass(frozen=True)
@@ -134,9 +143,9 @@ def read(reader, params, study):
                            "parachute attachment)", sheet="Hardpoints", cell="B1")
     arm = hardpoints.chute[0] - hardpoints.hub[0]
     if arm <= 0:
-        raise reader.error("the parachute attachment (kind 'chute') must lie aft of the rotor "
-                           "hub (x greater) to stabilise in yaw; x distance [m]", float(arm),
-                           "Hardpoints")
+        hp_t = reader.table(HARDPOINT_SHEETS["Hardpoints"])
+        raise hp_t.error("x", refs["chute_row"], "the parachute attachment (kind 'chute') must "
+                         "lie aft of the rotor hub (x greater) to stabilise in yaw")
     parachute = read_parachute(reader, params, 1.0)
     # ---- yaw inertia
     source = params.choice("chute sizing yaw inertia source", INERTIA_SOURCES)
@@ -151,14 +160,22 @@ def read(reader, params, study):
                "> 0 (with the source 'parameter') or 0 (with 'mass items')")
         inertia = yaw_inertia_about_hub(study.airframe)
         if not inertia > 0:
-            raise reader.error("yaw inertia about the hub computed from the mass items must be "
-                               "> 0 [kg m^2]", inertia, "MassItems")
+            raise params.error("chute sizing yaw inertia source", "the yaw inertia about the "
+                               "hub computed from the mass items is 0 (every item on the hub's "
+                               "vertical, without Izz): give it with the source 'parameter'")
     with located(file, STUDY_SHEET, params.where("chute sizing alpha trim")):
         model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute)
     lo, hi = model.beta_range()
     params.check("chute sizing linearisation range", half <= min(-lo, hi),
            f"the linearisation range must lie inside the tables' sideslip range "
            f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+    for what, grid in (("FuselageAero", None if fuselage is None else fuselage.table.beta),
+                       ("FinAero", None if fin is None else fin.table.angle)):
+        if grid is not None:
+            inside = np.count_nonzero(np.abs(grid) <= half + 1e-12)
+            params.check("chute sizing linearisation range", inside >= 2,
+                         f"the {what} table has {inside} sideslip breakpoint(s) within the "
+                         "linearisation range: the least-squares fit needs at least two")
     # ---- wake and line
     target = params("chute sizing target q ratio")
     params.check("chute sizing target q ratio", 0 < target <= 1,
@@ -191,13 +208,16 @@ def read(reader, params, study):
     integrator = params.choice("chute sizing integrator", INTEGRATORS)
     method = params.choice("chute sizing reference method", SOLVE_IVP_METHODS)
     rtol = params.positive("chute sizing reference rtol")
+    shapes = [s for s in str(params("chute sizing gust shapes") or "").split(",") if s.strip()]
+    _check_work(params, int(params("chute sizing number of areas")) * max(len(shapes), 1),
+                t_end, dt, interval, integrator)
     try:
         settings = SolverSettings(t_end, dt, interval, method, rtol)
         settings.fixed_grid()
     except InputError as err:
         name = ("chute sizing output interval" if "output_interval" in err.rule
                 else "chute sizing simulation time")
-        raise err.located(file=file, sheet=STUDY_SHEET, cell=params.where(name)) from None
+        raise params.error(name, err.rule) from None
     # ---- gusts
     gusts = _gusts(reader, params, model, t_end)
     limit = params.positive("chute sizing sideslip limit")
@@ -222,6 +242,27 @@ def read(reader, params, study):
         recommended_factor=recommended, integrator=integrator, inertia_source=source,
         study_area=float(params("parachute area")),
         study_line=float(params("parachute line length")))
+
+
+def _check_work(params, runs, t_end, dt, interval, integrator):
+    """The sweep asked for stays within the limits (before anything is computed)."""
+    steps = t_end / dt
+    samples = runs * (t_end / interval + 1)
+    for name, count, limit, what in (
+            ("chute sizing number of areas", runs, MAX_CHUTE_RUNS,
+             "runs (areas x gust shapes)"),
+            ("chute sizing time step", steps, MAX_CHUTE_STEPS, "time steps per run"),
+            ("chute sizing time step", steps * runs, MAX_CHUTE_RUN_STEPS,
+             "run-steps (runs x time steps)"),
+            ("chute sizing output interval", samples, MAX_CHUTE_SAMPLES,
+             "stored samples (runs x simulation time / output interval)")):
+        params.check(name, count <= limit, f"too much work: the sweep asks for {count:,.0f} "
+                     f"{what}, more than the {limit:,} allowed (limits of slingloads)")
+    if integrator == "solve_ivp":
+        params.check("chute sizing integrator", runs <= MAX_CHUTE_REFERENCE_RUNS,
+                     f"too much work: the 'solve_ivp' integrator solves each of the {runs:,} "
+                     f"runs on its own; at most {MAX_CHUTE_REFERENCE_RUNS} are allowed (limits "
+                     "of slingloads): use 'rk4' or fewer areas")
 
 
 def _wake_table(reader):

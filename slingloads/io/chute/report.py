@@ -43,6 +43,7 @@ from slingloads.io.chute.plots import (
     plot_yaw_linearisation,
 )
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
 from slingloads.io.common.report import (
     check_units,
@@ -57,6 +58,9 @@ from slingloads.io.common.workbook import located
 ANALYSIS = "chute sizing"
 #: PNG files written, by tag: ``<stem>-chute-<tag>.png``.
 PLOTS = ("linearisation", "static-moments", "wake", "sweep", "histories")
+#: Names of the files of a sizing report, for the publisher (a new report replaces them all).
+OUTPUTS = ("{stem}-chute.xlsx", "{stem}-chute-histories.csv",
+           *(f"{{stem}}-chute-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 90
 #: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
 HISTORY_INTERVAL = 0.5
@@ -417,7 +421,7 @@ def write(result, out_dir, stem, units, study):
     list of pathlib.Path
     """
     check_units(units)
-    inputs = [study.path]
+    inputs = study.input_files
     names = ([f"{stem}-chute.xlsx", f"{stem}-chute-histories.csv"]
              + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
     for name in names:
@@ -433,8 +437,7 @@ def write(result, out_dir, stem, units, study):
                        {titles[t]: png for t, png in pngs.items()},
                        number_format=NUMBER_FORMATS)
         if result.sweep is not None:
-            history_table(result, "SI").to_csv(out.path(f"{stem}-chute-histories.csv"),
-                                               index=False, lineterminator="\n")
+            write_csv(history_table(result, "SI"), out.path(f"{stem}-chute-histories.csv"))
         for tag, png in pngs.items():
             out.path(f"{stem}-chute-{tag}.png").write_bytes(png)
     return out.written

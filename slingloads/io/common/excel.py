@@ -363,9 +363,31 @@ def figure_png(figure, dpi=120):
     """
     if isinstance(figure, (bytes, bytearray)):
         return bytes(figure)
+    _plain_text(figure)
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None})
     return buffer.getvalue()
+
+
+def header_footer_text(text):
+    """Text from an input made safe for a printed header or footer: there ``&`` starts a
+    control code (``&P`` page number, ``&"font"``, ``&[Path]``...), so it is doubled, and
+    control characters are dropped.
+
+    >>> header_footer_text("R&D study &P")
+    'R&&D study &&P'
+    """
+    text = "".join(c for c in str(text) if c >= " " or c == "\n")
+    return text.replace("&", "&&")
+
+
+def _plain_text(figure):
+    """Draw every text of ``figure`` literally: ids from the inputs (a station ``FS$1$``, a
+    case ``$\\frac$``) are never parsed as mathtext, which could fail or mislead."""
+    from matplotlib.text import Text
+
+    for text in figure.findobj(Text):
+        text.set_parse_math(False)
 
 
 def write_images_sheet(wb, name, images, *, display_width=900):

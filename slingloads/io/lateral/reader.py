@@ -14,10 +14,9 @@ asked for). Every value is SI after reading; every bad value raises
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
-import pandas as pd
+from openpyxl.utils import get_column_letter
 
 from slingloads.analyses.lateral import ParameterRanges, airframe_body
 from slingloads.analyses.lateral_damping import (
@@ -25,9 +24,10 @@ from slingloads.analyses.lateral_damping import (
     LateralDamping,
     aerodynamic_damping,
 )
+from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
+from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.units import si_factor
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
@@ -38,6 +38,15 @@ from slingloads.io.lateral.schema import (
     THEN,
 )
 from slingloads.io.loads import reader as loads_reader
+from slingloads.limits import (
+    MAX_HISTORY_OUTPUT,
+    MAX_HISTORY_SAMPLES,
+    MAX_LATERAL_MOTION_STEPS,
+    MAX_LATERAL_RUN_STEPS,
+    MAX_LATERAL_RUNS,
+    MAX_LATERAL_STEPS,
+    MIN_SAMPLE_INTERVAL,
+)
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
     CycloidalStep,
@@ -50,6 +59,9 @@ from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 
 ANALYSIS = "lateral"
+AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
+#: Longest time history (LateralHistory id or CSV file). [s]
+MAX_MAGNITUDE_TIME_HISTORY = 3600.0
 #: The displacement steps of the LateralMotions sheet, by type.
 STEP_LAWS = {"quintic step": QuinticStep, "cycloidal step": CycloidalStep}
 _SPEC = {s.name: s for s in SHEETS}
@@ -98,21 +110,6 @@ class LateralInputs:
     loads: object
 
 
-def _shown(table, column, i):
-    """The value of a numeric cell in the unit of its header (for error messages)."""
-    value = float(table[column][i])
-    unit = table.units.get(column, "")
-    kind = next(c.kind for c in _all_columns() if c.name == column)
-    try:
-        return value / si_factor(unit, kind)
-    except Exception:  # the unit was checked on reading; this is only for display
-        return value
-
-
-def _all_columns():
-    return [c for s in SHEETS for c in s.columns]
-
-
 def read(reader, params, study):
     """Build :class:`LateralInputs` from the workbook.
 
@@ -134,9 +131,6 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule.
     """
     margin = params("lateral design-angle margin")
-    params.check("lateral design-angle margin", np.isfinite(margin) and margin >= 1,
-           "'lateral design-angle margin' must be >= 1 (recommended angle = margin x the "
-           "largest load angle found)")
     model = params.choice("lateral cable model", CABLE_MODELS)
     ea = params("lateral cable EA")
     if model == "elastic":
@@ -163,6 +157,7 @@ def read(reader, params, study):
     bodies, source = _bodies(reader, study)
     histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
     motions, ids = _motions(reader, histories)
+    _check_work(reader, params, len(motions), len(ropes), len(bodies), t_end, step, output)
     loads = study.loads
     if loads is None:
         with located(reader.file):
@@ -219,39 +214,63 @@ def _require(reader, name):
     return reader.table(_SPEC[name])
 
 
+def _check_work(reader, params, motions, ropes, bodies, t_end, step, output):
+    """The sweep asked for stays within the limits (before anything is computed); what the
+    automatic run length and step give is checked by the analysis itself."""
+    runs = motions * ropes * bodies
+    if runs > MAX_LATERAL_RUNS:
+        raise reader.error(f"too much work: {motions} motions x {ropes} ropes x {bodies} "
+                           f"bodies give {runs:,} runs, more than the {MAX_LATERAL_RUNS:,} "
+                           "allowed (limits of slingloads)", runs, "LateralMotions", "A1")
+    if t_end > 0 and step > 0:
+        steps = t_end / step
+        for count, limit, what in ((steps, MAX_LATERAL_STEPS, "RK4 steps per run"),
+                                   (steps * runs, MAX_LATERAL_RUN_STEPS, "run-steps (runs x "
+                                                                         "steps)"),
+                                   (steps * motions, MAX_LATERAL_MOTION_STEPS, "motion-steps "
+                                    "(motions x steps)")):
+            params.check("lateral RK4 step", count <= limit,
+                         f"too much work: 'lateral simulation time' / 'lateral RK4 step' "
+                         f"gives {count:,.0f} {what}, more than the {limit:,} allowed "
+                         "(limits of slingloads); lengthen the step or shorten the run")
+    if t_end > 0:
+        params.check("lateral history output step", t_end / output <= MAX_HISTORY_OUTPUT,
+                     f"too many samples: 'lateral simulation time' / 'lateral history output "
+                     f"step' gives {t_end / output:,.0f} samples, more than the "
+                     f"{MAX_HISTORY_OUTPUT:,} allowed (limits of slingloads)")
+
+
 def _ropes(reader):
     t = _require(reader, "LateralRopes")
-    lengths = t["rope length"]
-    for i, length in enumerate(lengths):
-        if not length > 0:
-            raise reader.error("rope length must be > 0", _shown(t, "rope length", i), t.sheet,
-                               t.cell("rope length", i))
-    return tuple(float(x) for x in lengths)
+    return tuple(float(x) for x in t["rope length"])
 
 
 def _bodies(reader, study):
     if not reader.has_sheet("LateralBodies"):
-        return (_airframe_body(reader, study.airframe),), "MassItems"
+        return (_airframe_body(reader, study),), "MassItems"
     t = reader.table(_SPEC["LateralBodies"])
     check_unique(reader, t, "id")
     bodies = []
     for i, name in enumerate(t["id"]):
-        for column, rule in (("mass", "mass must be > 0"),
-                             ("roll inertia", "roll inertia must be > 0"),
-                             ("CG below hub", "CG distance below the hub must be >= 0")):
-            value = t[column][i]
-            bad = value < 0 if column == "CG below hub" else not value > 0
-            if bad:
-                raise reader.error(rule, _shown(t, column, i), t.sheet, t.cell(column, i))
         with located(reader.file, t.sheet, t.cell("mass", i)):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))
     return tuple(bodies), "LateralBodies"
 
 
-def _airframe_body(reader, airframe):
-    with located(reader.file, "MassItems"):
-        return airframe_body(airframe)
+def _airframe_body(reader, study):
+    """The body built from the MassItems; its errors located at the cells to change: the
+    hub's z (a CG above the hub), or the MassItems inertias (no roll inertia)."""
+    try:
+        return airframe_body(study.airframe)
+    except InputError as err:
+        if "inertia" in err.rule:
+            items = reader.table(AIRFRAME_SHEETS["MassItems"])
+            cell = (items.cells["Ixx"][0] if items.has("Ixx")
+                    else f"{get_column_letter(len(items.cells) + 1)}1")
+            raise err.located(file=reader.file, sheet="MassItems", cell=cell) from None
+        hardpoints = reader.table(AIRFRAME_SHEETS["Hardpoints"])
+        raise hardpoints.error("z", study.points["rows"]["hub"][0], err.rule) from None
 
 
 def _histories(reader):
@@ -267,10 +286,13 @@ def _histories(reader):
                                t.cell("history id", idx[0]))
         for k in range(1, len(idx)):
             if not time[k] > time[k - 1]:
-                raise reader.error(
-                    f"time-history times must be strictly increasing within history {hid!r} "
-                    f"(previous sample at {t.cell('t', idx[k - 1])})", _shown(t, "t", idx[k]),
-                    t.sheet, t.cell("t", idx[k]))
+                raise t.error("t", idx[k], f"time-history times must be strictly increasing "
+                              f"within history {hid!r} (previous sample at "
+                              f"{t.cell('t', idx[k - 1])})")
+            if time[k] - time[k - 1] < MIN_SAMPLE_INTERVAL:
+                raise t.error("t", idx[k], f"time-history samples must be at least "
+                              f"{MIN_SAMPLE_INTERVAL:g} s apart (previous sample at "
+                              f"{t.cell('t', idx[k - 1])})")
         with located(reader.file, t.sheet, t.cell("t", idx[0])):
             out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
     return out
@@ -278,45 +300,28 @@ def _histories(reader):
 
 def _csv_history(reader, text, t, i):
     where = (t.sheet, t.cell("history", i))
-    path = Path(text)
-    if not path.is_absolute():
-        path = Path(reader.file).resolve().parent / path
-    if not path.is_file():
-        raise reader.error("time-history CSV file not found (path relative to the workbook)",
-                           text, *where)
-    try:
-        frame = pd.read_csv(path)
-    except (OSError, ValueError, pd.errors.ParserError) as err:
-        raise reader.error(f"cannot read the time-history CSV file ({err})", text,
-                           *where) from None
-    cols = {}
-    for header in frame.columns:
-        name, _, unit = str(header).partition("[")
-        cols[name.strip().lower()] = (header, unit.rstrip("] ").strip())
-    if "t" not in cols or "s" not in cols:
-        raise reader.error("the time-history CSV file needs the columns 't [s]' and 'S [m]'",
-                           list(map(str, frame.columns)), *where)
-    values = []
-    for key, kind in (("t", "time"), ("s", "length")):
-        header, unit = cols[key]
-        if not unit:
-            raise reader.error(f"CSV column {header!r} needs a unit in brackets", text, *where)
-        with located(reader.file, *where):
-            factor = si_factor(unit, kind)
-        data = pd.to_numeric(frame[header], errors="coerce").to_numpy(float)
-        if not np.all(np.isfinite(data)):
-            bad = int(np.argmax(~np.isfinite(data)))
-            raise reader.error(f"CSV {path.name}: column {header!r}, data row {bad + 1} is not "
-                               "a finite number", str(frame[header].iloc[bad]), *where)
-        values.append(data * factor)
-    time, s = values
+    columns = reader.csv_columns(text, *where, {"t": "time", "S": "length"},
+                                 max_rows=MAX_HISTORY_SAMPLES)
+    time, s = columns["t"], columns["S"]
+    name = text.replace("\\", "/").rsplit("/", 1)[-1]
+    if time.size < 2:
+        raise reader.error(f"CSV {name}: a time history needs at least two samples", text,
+                           *where)
     steps = np.diff(time)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0)) + 1
-        raise reader.error(f"CSV {path.name}: times must be strictly increasing (data row "
+        raise reader.error(f"CSV {name}: times must be strictly increasing (data row "
                            f"{k + 1} does not come after row {k})", float(time[k]), *where)
+    if np.any(steps < MIN_SAMPLE_INTERVAL):
+        k = int(np.argmax(steps < MIN_SAMPLE_INTERVAL)) + 1
+        raise reader.error(f"CSV {name}: samples must be at least {MIN_SAMPLE_INTERVAL:g} s "
+                           f"apart (data rows {k} and {k + 1})", float(time[k]), *where)
+    if time[-1] - time[0] > MAX_MAGNITUDE_TIME_HISTORY:
+        raise reader.error(f"CSV {name}: a time history may last at most "
+                           f"{MAX_MAGNITUDE_TIME_HISTORY:g} s", float(time[-1] - time[0]),
+                           *where)
     with located(reader.file, *where):
-        return TimeHistory(time, s, name=f"CSV {path.name}")
+        return TimeHistory(time, s, name=f"CSV {name}")
 
 
 def _motion_type(reader, t, i):
@@ -343,9 +348,8 @@ def _motions(reader, histories):
             raise reader.error(f"a {kind} needs the column {column!r} filled", None,
                                t.sheet, cell)
         if not rule(value):
-            raise reader.error(f"{column!r} of a {kind} must be "
-                               f"{'> 0' if column == 'duration' else 'finite and not 0'}",
-                               _shown(t, column, i), t.sheet, t.cell(column, i))
+            raise t.error(column, i, f"{column!r} of a {kind} must be "
+                          f"{'> 0' if column == 'duration' else 'finite and not 0'}")
         return value
 
     def unused(columns, i, kind):

@@ -65,6 +65,8 @@ from slingloads.io.lateral.plots import (
 ANALYSIS = "lateral"
 #: PNG files written, by tag: ``<stem>-lateral-<tag>.png``.
 PLOTS = ("histories", "max-angle", "sensitivity", "shear")
+#: Names of the files of a lateral report, for the publisher (a new report replaces them all).
+OUTPUTS = ("{stem}-lateral.xlsx", *(f"{{stem}}-lateral-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 80
 NUMBER_FORMATS = format_by_header([
     (r"\[deg\]", "0.00"),
@@ -416,7 +418,7 @@ def write(result, out_dir, stem, units, study):
     list of pathlib.Path
     """
     check_units(units)
-    inputs = [study.path]
+    inputs = study.input_files
     names = [f"{stem}-lateral.xlsx"] + [f"{stem}-lateral-{tag}.png" for tag in PLOTS]
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)

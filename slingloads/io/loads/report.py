@@ -25,7 +25,6 @@ component; the conversions shared by every report are in :mod:`slingloads.io.com
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -37,7 +36,8 @@ from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.atomic import atomic_outputs, check_not_input, safe_file_part
+from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
@@ -57,6 +57,11 @@ from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.plots import COMPONENT_TAGS, plot_hull, plot_sfbm, plot_sfbm_grid
+
+#: Names of the files of a loads report (``*``: a part made from a station id), for the
+#: publisher: a new report replaces every earlier file of these names.
+OUTPUTS = ("{stem}-loads.xlsx", "{stem}-sfbm.csv", "{stem}-envelope.csv", "{stem}-X_shear.png",
+           "{stem}-Y_shear.png", "{stem}-sfbm_all.png", "{stem}-hull_*.png", "{stem}-loads.bdf")
 
 #: Components drawn on their own PNG (the paper's figures 19 and 20); all six are on the grid.
 PNG_COMPONENTS = ("Vx", "Vy")
@@ -301,8 +306,9 @@ def governing_report_table(result, units="SI"):
 
 
 def _safe(text):
-    """A file-name-safe version of a station id."""
-    return re.sub(r"[^A-Za-z0-9._-]+", "_", str(text)).strip("_") or "station"
+    """A file-name-safe version of a station id (the Stations reader refuses ids that give
+    the same one)."""
+    return safe_file_part(text)
 
 
 def _default_hull_station(result, pair):
@@ -417,10 +423,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                        number_format=NUMBER_FORMATS,
                        highlight={"Exceedance": Highlight(["exceedance ratio"], 1.0)},
                        max_rows=max_rows)
-        result.to_frame().to_csv(out.path(f"{stem}-sfbm.csv"), index=False,
-                                 columns=list(SFBM_CSV_COLUMNS), lineterminator="\n")
-        result.envelope().to_csv(out.path(f"{stem}-envelope.csv"), index=False,
-                                 lineterminator="\n")
+        write_csv(result.to_frame(), out.path(f"{stem}-sfbm.csv"), columns=SFBM_CSV_COLUMNS)
+        write_csv(result.envelope(), out.path(f"{stem}-envelope.csv"))
         for tag, png in pngs.items():
             out.path(f"{stem}-{tag}.png").write_bytes(png)
         if deck is not None:
@@ -547,7 +551,7 @@ def compute(study):
     results = getattr(study, "results", {})
     campaign = results.get("campaign")
     if campaign is None or not campaign.inputs.loads_from_dynamics:
-        return study.loads.run()
+        return _finite(study.loads.run(), study)
     if campaign.result.envelope is None:
         raise InputError("the loads are to take the dynamics' cases, but no parachute area of "
                          "the campaign is stable in every condition and none was chosen "
@@ -559,7 +563,16 @@ def compute(study):
         handoff = loads_from_dynamics(study.loads, campaign.result.envelope,
                                       campaign.inputs.hook_angle_source)
     results["loads handoff"] = handoff
-    return handoff.study.run()
+    return _finite(handoff.study.run(), study)
+
+
+def _finite(result, study):
+    """``result``, refused if its loads are not finite numbers."""
+    if not np.all(np.isfinite(result.loads)):
+        raise InputError("the loads are not finite numbers (an input far out of scale?): check "
+                         "the magnitudes and units of the MassItems, FuselageAero and Study "
+                         "values", file=study.path)
+    return result
 
 
 def write(result, out_dir, stem, units, study, checks=None):
@@ -576,5 +589,6 @@ def write(result, out_dir, stem, units, study, checks=None):
                                    inputs_digest=study.digest(),
                                    hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
                                    hull_stations=study.options.get("hull stations"),
-                                   input_paths=[study.path], nastran=nastran, checks=checks,
+                                   input_paths=study.input_files, nastran=nastran,
+                                   checks=checks,
                                    dynamics=None if handoff is None else handoff.comparison)

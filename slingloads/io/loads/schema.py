@@ -6,7 +6,19 @@ Method: ``docs/loads-method.md``. Types: :mod:`slingloads.io.common.schema`.
 
 from __future__ import annotations
 
-from slingloads.io.common.schema import FLAG, INTEGER, TEXT, Column, Parameter, Section, TableSheet
+from slingloads.io.airframe.schema import COORDINATE, TABLE_ANGLE
+from slingloads.io.common.schema import (
+    FLAG,
+    INTEGER,
+    TEXT,
+    Bounds,
+    Column,
+    Parameter,
+    Section,
+    TableSheet,
+    at_least,
+)
+from slingloads.limits import MAX_HOOK_AZIMUTHS, MAX_LOAD_CASES, MAX_SFBM_ROWS, MAX_STATIONS
 
 #: The Nastran input file of the load cases (docs/nastran.md), in the units of --units.
 NASTRAN_PARAMETERS = (
@@ -44,11 +56,14 @@ NASTRAN_PARAMETERS = (
 
 PARAMETERS = (
     Parameter("airspeed EAS", "speed", "kt", 100.0,
-              "Equivalent airspeed of the loads cases (paper: 100 KEAS).", "flight"),
+              "Equivalent airspeed of the loads cases (paper: 100 KEAS).", "flight",
+              at_least(0)),
     Parameter("density altitude", "length", "ft", 0.0,
-              "ISA density altitude (paper: 0, 5000, 10000 ft).", "flight"),
+              "ISA density altitude (paper: 0, 5000, 10000 ft).", "flight",
+              Bounds(-610, 11000, unit="m")),
     Parameter("hook load factor Nz", "dimensionless", "", 2.5,
-              "CS-29.865(a): limit hook load = Nz x carried aircraft weight.", "hook"),
+              "CS-29.865(a): limit hook load = Nz x carried aircraft weight.", "hook",
+              Bounds(0, 20, lo_open=True)),
     Parameter("attitude", TEXT, "", "hanging",
               "Attitude that fixes the earth vertical for gravity, the vertical hook case and "
               "the cone: 'hanging' (pitch and roll until the CG lies under the hub, from the "
@@ -63,7 +78,8 @@ PARAMETERS = (
     Parameter("hook angle from vertical", "angle", "deg", 30.0,
               "Inclination of the off-vertical hook loads from the earth vertical (CS-29.865: "
               "30 deg unless a smaller angle is shown); the lateral directions may take "
-              "'hook lateral angle'.", "hook", former=("hook angle from mast",)),
+              "'hook lateral angle'.", "hook", Bounds(0, 90, hi_open=True, unit="deg"),
+              former=("hook angle from mast",)),
     Parameter("hook lateral angle", "angle", "deg", 0.0,
               "Inclination of the lateral hook loads where a different angle is shown (e.g. "
               "the lateral study's recommended angle); 0 = the same as 'hook angle from "
@@ -74,7 +90,7 @@ PARAMETERS = (
               "to the lateral angle, when longitudinal evidence exists).", "hook"),
     Parameter("hook azimuths", INTEGER, "", 8,
               "Number of off-vertical hook directions evenly spread in azimuth about the "
-              "vertical (0 = aft, 90 deg = right).", "hook"),
+              "vertical (0 = aft, 90 deg = right).", "hook", Bounds(0, MAX_HOOK_AZIMUTHS)),
     Parameter("hook vertical case", FLAG, "", "yes",
               "Include the hook load along the earth vertical (case VERTICAL).", "hook",
               former=("hook along mast axis",)),
@@ -87,11 +103,14 @@ PARAMETERS = (
               "Generate hook direction x aero point x parachute on/off, then the towed "
               "cases (cases on the LoadCases sheet are added).", "cases"),
     Parameter("ultimate factor", "dimensionless", "", 1.5,
-              "Factor of safety, CS 29.303 (ultimate = factor x limit).", "cases"),
+              "Factor of safety, CS 29.303 (ultimate = factor x limit).", "cases",
+              Bounds(1, 10)),
     Parameter("parachute area", "area", "m^2", 0.0,
-              "Flat-plate area of the drogue parachute; 0 = no parachute.", "parachute"),
+              "Flat-plate area of the drogue parachute; 0 = no parachute.", "parachute",
+              at_least(0)),
     Parameter("parachute opening factor", "dimensionless", "", 1.0,
-              "Opening-load factor on the parachute drag (>= 1).", "parachute"),
+              "Opening-load factor on the parachute drag (>= 1).", "parachute",
+              Bounds(1, 10)),
     Parameter("parachute line direction", TEXT, "", "relative wind",
               "'relative wind' or 'fuselage axis'.", "parachute"),
     Parameter("hull stations", TEXT, "", "",
@@ -104,8 +123,10 @@ PARAMETERS = (
 
 SHEETS = (
     TableSheet("AeroEnvelope", (
-        Column("id", TEXT), Column("alpha", "angle", "deg"), Column("beta", "angle", "deg"),
-    ), help="Points of the angle-of-attack / sideslip envelope (corners and centre)."),
+        Column("id", TEXT), Column("alpha", "angle", "deg", bounds=TABLE_ANGLE),
+        Column("beta", "angle", "deg", bounds=TABLE_ANGLE),
+    ), help="Points of the angle-of-attack / sideslip envelope (corners and centre).",
+       max_rows=MAX_STATIONS),
     TableSheet("LoadCases", (
         Column("id", TEXT, help="Unique case id."),
         Column("hook", TEXT, help="VERTICAL, AZ000, AZ045, ..., TOW (towed-flight "
@@ -113,16 +134,19 @@ SHEETS = (
         Column("aero", TEXT, help="An AeroEnvelope id or NONE."),
         Column("chute", FLAG, help="Parachute drag on (yes/no)."),
         Column("description", TEXT, required=False, default=""),
-    ), help="Optional: cases listed by hand (added to the generated matrix)."),
+    ), help="Optional: cases listed by hand (added to the generated matrix). In all, at most "
+       f"{MAX_LOAD_CASES:,} cases, and at most {MAX_SFBM_ROWS:,} cases x cut stations.",
+       max_rows=MAX_LOAD_CASES),
     TableSheet("PreviousEnvelope", (
-        Column("x", "length", "m"),
+        Column("x", "length", "m", bounds=COORDINATE),
         Column("Vx min", "force", "N"), Column("Vx max", "force", "N"),
         Column("Vy min", "force", "N"), Column("Vy max", "force", "N"),
         Column("Vz min", "force", "N"), Column("Vz max", "force", "N"),
         Column("Mx min", "moment", "N m"), Column("Mx max", "moment", "N m"),
         Column("My min", "moment", "N m"), Column("My max", "moment", "N m"),
         Column("Mz min", "moment", "N m"), Column("Mz max", "moment", "N m"),
-    ), help="Optional: the previous design envelope (limit loads) for the exceedance check."),
+    ), help="Optional: the previous design envelope (limit loads) for the exceedance check.",
+       max_rows=MAX_STATIONS),
 )
 
 SECTION = Section("loads", parameters=PARAMETERS, sheets=SHEETS)

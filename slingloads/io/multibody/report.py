@@ -32,6 +32,7 @@ from slingloads.analyses.multibody import linearise, simulate, trim
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
 from slingloads.io.common.report import (
     check_units,
@@ -47,6 +48,9 @@ from slingloads.io.multibody.plots import plot_eigenvalues, plot_histories, plot
 ANALYSIS = "multibody"
 #: PNG files written, by tag: ``<stem>-multibody-<tag>.png``.
 PLOTS = ("histories", "eigenvalues", "views")
+#: Names of the files of a multibody report, for the publisher (a new report replaces them).
+OUTPUTS = ("{stem}-multibody.xlsx", "{stem}-multibody-histories.csv",
+           *(f"{{stem}}-multibody-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 80
 #: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
 HISTORY_INTERVAL = 1.0
@@ -324,7 +328,7 @@ def write(result, out_dir, stem, units, study):
     list of pathlib.Path
     """
     check_units(units)
-    inputs = [study.path]
+    inputs = study.input_files or [study.path]
     figures = _figures(result, units)
     names = ([f"{stem}-multibody.xlsx", f"{stem}-multibody-histories.csv"]
              + [f"{stem}-multibody-{tag}.png" for tag in figures])
@@ -339,8 +343,7 @@ def write(result, out_dir, stem, units, study):
         write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
                        {titles[t]: png for t, png in pngs.items()},
                        number_format=NUMBER_FORMATS)
-        history_table(result, "SI").to_csv(out.path(f"{stem}-multibody-histories.csv"),
-                                           index=False, lineterminator="\n")
+        write_csv(history_table(result, "SI"), out.path(f"{stem}-multibody-histories.csv"))
         for tag, png in pngs.items():
             out.path(f"{stem}-multibody-{tag}.png").write_bytes(png)
     return out.written
