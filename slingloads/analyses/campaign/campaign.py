@@ -23,6 +23,7 @@ from slingloads.analyses.chute_sizing import run_yaw
 from slingloads.analyses.multibody import linearise, trim
 from slingloads.errors import InputError
 from slingloads.models.gusts import standard_gusts
+from slingloads.models.multibody.integrator import ATOL, RTOL
 from slingloads.models.yaw_dynamics import SolverSettings
 
 from .execution import MemoryStore, execute, make_executor
@@ -52,22 +53,31 @@ class RunSettings:
         [s]
     output_interval : float
         A whole multiple of ``dt``. [s]
+    rtol, atol : float
+        Tolerances of the adaptive step, used when ``dt`` is None (the multibody defaults).
+        [-], [SI]
     """
 
     t_end: float = 60.0
-    dt: float = 0.01
+    dt: float | None = 0.01
     output_interval: float = 0.1
+    rtol: float = RTOL
+    atol: float = ATOL
 
     def __post_init__(self):
         from slingloads.analyses.multibody.simulate import _check_settings
 
-        _check_settings(float(self.t_end), float(self.dt), float(self.output_interval))
-        for name in ("t_end", "dt", "output_interval"):
+        dt = None if self.dt is None else float(self.dt)
+        _check_settings(float(self.t_end), dt, float(self.output_interval), float(self.rtol),
+                        float(self.atol))
+        for name in ("t_end", "output_interval", "rtol", "atol"):
             object.__setattr__(self, name, float(getattr(self, name)))
+        object.__setattr__(self, "dt", dt)
 
     def as_dict(self, t_end=None):
         return {"t_end": self.t_end if t_end is None else float(t_end), "dt": self.dt,
-                "output_interval": self.output_interval}
+                "output_interval": self.output_interval, "rtol": self.rtol,
+                "atol": self.atol}
 
 
 @dataclass(frozen=True, eq=False)

@@ -37,7 +37,8 @@ def run_batch(jobs, settings, threads=None):
         (key, system, manoeuvre) of each run. Runs of one condition should share one system
         object (its trim and linear model are then computed once).
     settings : dict
-        ``t_end``, ``dt``, ``output_interval`` [s].
+        ``t_end``, ``dt`` (None: adaptive), ``output_interval`` [s], and ``rtol``, ``atol``
+        of the adaptive step.
     threads : int, optional
         Threads of the compiled kernel (default: numba's current setting).
 
@@ -47,6 +48,7 @@ def run_batch(jobs, settings, threads=None):
         (key, metrics, histories) of each run, in the order of ``jobs``.
     """
     from slingloads.analyses.multibody import linearise, simulate_runs, trim
+    from slingloads.models.multibody.integrator import ATOL, RTOL
 
     from .metrics import linear_metrics, response_metrics
 
@@ -54,7 +56,8 @@ def run_batch(jobs, settings, threads=None):
         _set_threads(threads)
         sim = simulate_runs([(system, manoeuvre) for _, system, manoeuvre in jobs],
                             t_end=settings["t_end"], dt=settings["dt"],
-                            output_interval=settings["output_interval"])
+                            output_interval=settings["output_interval"],
+                            rtol=settings.get("rtol", RTOL), atol=settings.get("atol", ATOL))
     conditions = {}
     out = []
     for (key, system, _), run in zip(jobs, sim.runs, strict=True):

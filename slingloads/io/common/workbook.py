@@ -703,7 +703,9 @@ class WorkbookReader:
 
     def _parameter_value(self, spec, raw, unit_text, sheet, r):
         where = cell_name(r, 2)
-        if spec.kind in (TEXT, FLAG, INTEGER) and unit_text.strip() not in ("", "-"):
+        # a text parameter with a unit is a list of numbers in that unit (read by its analysis)
+        unit_free = spec.kind in (FLAG, INTEGER) or (spec.kind == TEXT and not spec.unit)
+        if unit_free and unit_text.strip() not in ("", "-"):
             raise self.error(f"parameter {spec.name!r} takes no unit (leave the unit cell "
                              "empty)", _echo(unit_text), sheet, cell_name(r, 3))
         if spec.kind == TEXT:
