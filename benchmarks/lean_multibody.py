@@ -38,17 +38,28 @@ def _lookup1(grid, values, x):
 
 
 def gust_function(gust):
-    """Plain-Python gust velocity v(t) [m/s] of a gust of :mod:`slingloads.models.gusts`."""
+    """Plain-Python gust velocity v(t) [m/s] of a gust of :mod:`slingloads.models.gusts`
+    (step, finite, 1-cosine, continuous: a held crosswind with a half-cosine rise, harmonic)."""
     a, t0 = gust.amplitude, gust.onset
     if gust.kind == "step":
         return lambda t: a if t >= t0 else 0.0
+    if gust.kind == "continuous":
+        rise = gust.rise_time
+        if rise == 0:
+            return lambda t: a if t >= t0 else 0.0
+        return lambda t: (0.0 if t < t0 else a if t >= t0 + rise
+                          else 0.5 * a * (1.0 - math.cos(math.pi * (t - t0) / rise)))
+    if gust.kind == "harmonic":
+        period = gust.period
+        return lambda t: a * math.sin(2.0 * math.pi * (t - t0) / period) if t >= t0 else 0.0
     period = gust.duration
     if gust.kind == "finite":
         return lambda t: a if t0 <= t < t0 + period else 0.0
     if gust.kind == "1-cosine":
         return lambda t: (0.5 * a * (1.0 - math.cos(2.0 * math.pi * (t - t0) / period))
                           if t0 <= t < t0 + period else 0.0)
-    return lambda t: a * math.sin(2.0 * math.pi * (t - t0) / period) if t >= t0 else 0.0
+    raise ValueError(f"the lean baseline has no {gust.kind!r} gust; valid: step, finite, "
+                     "1-cosine, continuous, harmonic")
 
 
 def lean_rhs(system, manoeuvre):
