@@ -463,3 +463,65 @@ def test_trims_of_a_batch_equal_single_trims():
         alone = trim(system, speed, wind=wind)
         assert point.converged and alone.converged
         assert_allclose(point.state, alone.state, atol=1e-8)
+
+
+# ------------------------------------------------------------------------ trimmed pitch
+def hand_pitch_balance(system, airspeed):
+    """Pitch angles [rad] at which the towed body's planar moments about its CG balance,
+    worked by hand (statics of docs/multibody.md section 8), independent of the equations of
+    motion: flow horizontal, so alpha = pitch; fuselage table at beta = 0 (CD, CL along and
+    across the flow, Cm about its reference point, nose up +); quasi-static drogue drag
+    q eta CD(0) A horizontal at the attachment; the cable pull at the hub closes the force
+    polygon, T = -(W + D + L + D_p). Moment about +y (nose up) of a force F at r (earth,
+    from the CG): r_z F_x - r_x F_z. Roots located on a 0.1 deg grid and refined by brentq."""
+    from scipy.optimize import brentq
+
+    fus, hp, cg = system.fuselage, system.hardpoints, system.body.cg
+    column = int(np.argmin(np.abs(fus.table.beta)))
+    q = 0.5 * 1.225 * airspeed**2
+    chute = system.parachute.parachute
+
+    def coefficient(name, alpha):
+        return np.interp(alpha, fus.table.alpha, fus.table.coefficients[name][:, column])
+
+    def moment(pitch):
+        c, s = np.cos(pitch), np.sin(pitch)
+        turn = np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+
+        def arm(point, force):
+            r = turn @ (np.asarray(point) - cg)
+            return r[2] * force[0] - r[0] * force[2]
+
+        aero = q * fus.area * np.array([coefficient("CD", pitch), 0.0,
+                                        coefficient("CL", pitch)])
+        drogue = np.array([q * chute.drag_area(0.0), 0.0, 0.0])
+        cable = -(aero + drogue + np.array([0.0, 0.0, -system.body.mass * G0]))
+        return (q * fus.area * fus.length * coefficient("Cm", pitch) + arm(fus.moment_reference,
+                aero) + arm(hp.chute, drogue) + arm(hp.hub, cable))
+
+    grid = np.radians(np.arange(-39.9, 10.0, 0.1))
+    values = np.array([moment(p) for p in grid])
+    return [brentq(moment, a, b, xtol=1e-12) for a, b, fa, fb in
+            zip(grid[:-1], grid[1:], values[:-1], values[1:], strict=True) if fa * fb < 0]
+
+
+@pytest.mark.parametrize("knots", [60.0, 100.0, 120.0])
+def test_trimmed_pitch_matches_a_hand_moment_balance(knots):
+    """The GENERIC HC1 fuselage alone is unstable in pitch (Cm rising with alpha), so the
+    towed helicopter hangs nose down ever more with speed, held by the cable's pull at the hub
+    above its CG (here 0.17 m behind it, as in the example: -9 deg in hover). The trimmed
+    pitch equals the planar moment balance worked by hand (``hand_pitch_balance``: one root)
+    to 1e-6 rad, at 60 and 100 KEAS and at 120 KEAS, where the first starting point of the trim
+    fails and the pitch scan finds the equilibrium the hand balance has (about -38 deg, inside
+    the table's -40 deg)."""
+    ref = sample_reference("HC1")
+    body = RigidBody(ref.mass, np.array([-0.17, 0.0, 0.0]), np.diag([IXX, IYY, ref.yaw_inertia]))
+    system = SlingSystem(body, hardpoints(ref.chute), Cable(LENGTH, EA), sample_fuselage("HC1"),
+                         (LiftingSurface.from_fin(sample_fin("HC1")),),
+                         QuasiStaticParachute(Parachute(0.9)))
+    speed = knots * KNOT
+    roots = hand_pitch_balance(system, speed)
+    tr = trim(system, speed)
+    assert len(roots) == 1 and tr.converged, tr.message
+    assert_allclose(tr.attitude[1], roots[0], atol=1e-6)
+    assert np.degrees(roots[0]) < -10.0  # nose down, the unstable fuselage's signature

@@ -169,6 +169,16 @@ def _initial_state(system, tas, wind):
     return x
 
 
+#: Pitch angles tried for the second starting point of a trim that failed from the first. [deg]
+PITCH_SCAN = np.arange(-40.0, 20.5, 2.0)
+
+
+def _rotation_y(pitch):
+    """Body-to-earth rotation of a pitch alone (nose up +: body x turns towards -Z)."""
+    c, s = math.cos(pitch), math.sin(pitch)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+
+
 def _drag_estimate(system, tas):
     """Rough drag [N] of fuselage and parachute, to start the trim at a sensible swing."""
     return 0.5 * system.density * tas**2 * system.drag_area
@@ -224,6 +234,28 @@ class _TrimProblem:
         self.scale[13:16] = sys_at.body.mass * g / np.diag(sys_at.body.inertia)
         self.rows = ([6, 7, 8, 13, 14] + ([] if self.hover else [15])
                      + ([18, 19] if self.hinged else []))
+
+    def pitch_scan_guess(self):
+        """A second starting point: the guess with the pitch (every PITCH_SCAN angle) whose
+        scaled residuals are least, the CG placed so that the hub stays where the guess put
+        it (span and swing kept) and a hinged line trailing at the same angle to the flight
+        path as in the first guess."""
+        k = 4
+        pitches = np.radians(PITCH_SCAN)
+        u = np.tile(self.guess, (pitches.size, 1))
+        hub = self.system.hardpoints.hub - self.system.body.cg
+        level = self.guess[0:3] + hub  # hook to hub
+        for i, pitch in enumerate(pitches):
+            u[i, k] = pitch
+            turned = _rotation_y(pitch) @ hub
+            u[i, 0:3] = level - turned
+            if self.hinged:
+                u[i, k + 2] = self.guess[k + 2] + pitch
+        states = self.states(u)
+        rates, _, _ = evaluate_many(states, self.params, self.drive, self.tables)
+        norms = np.linalg.norm(self.scaled(rates), axis=1)
+        norms[~np.isfinite(norms)] = np.inf
+        return u[int(np.argmin(norms))]
 
     @property
     def shape(self):
@@ -294,7 +326,15 @@ def _solve_one(problem):
 
     solution = root(residual, problem.guess, jac=jacobian, method="hybr",
                     options={"xtol": 1e-13})
-    return problem.result(solution.x, solution.message)
+    found = problem.result(solution.x, solution.message)
+    if found.converged or problem.hover:
+        return found
+    # an unstable fuselage pitches far nose down at speed: start again from the pitch that
+    # best balances the equations along the hang (module notes)
+    again = root(residual, problem.pitch_scan_guess(), jac=jacobian, method="hybr",
+                 options={"xtol": 1e-13})
+    second = problem.result(again.x, again.message)
+    return second if second.converged else found
 
 
 def trim(system, airspeed=None, *, wind=(0.0, 0.0, 0.0), yaw_guess=0.0):
