@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.chute_sizing import run_yaw
+from slingloads.analyses.chute_sizing import FIT_RANGE, run_yaw
 from slingloads.analyses.multibody import linearise, trim
 from slingloads.errors import InputError
 from slingloads.models.gusts import standard_gusts
@@ -43,23 +43,24 @@ ONE_DOF_TIME, ONE_DOF_STEP = 120.0, 0.1
 
 @dataclass(frozen=True)
 class RunSettings:
-    """Length, RK4 step and sampling interval of every run of the matrix.
+    """Length, step and sampling interval of every run of the matrix.
 
     Parameters
     ----------
     t_end : float
         (paper: 60 s) [s]
-    dt : float
-        [s]
+    dt : float or None
+        Fixed step of the Dormand-Prince 5(4) integration; None (default): the adaptive step
+        of the multibody model, each run's local error within ``rtol`` and ``atol``. [s]
     output_interval : float
-        A whole multiple of ``dt``. [s]
+        A whole multiple of ``dt`` when it is given. [s]
     rtol, atol : float
         Tolerances of the adaptive step, used when ``dt`` is None (the multibody defaults).
         [-], [SI]
     """
 
     t_end: float = 60.0
-    dt: float | None = 0.01
+    dt: float | None = None
     output_interval: float = 0.1
     rtol: float = RTOL
     atol: float = ATOL
@@ -105,6 +106,11 @@ class Campaign:
         Airspeed of the neutral-area sizing (default: the matrix's highest; the area does not
         depend on it at zero angle of attack). [m/s]
     name : str
+    neutral_fit_range : tuple of float, optional
+        Sideslip range of the least-squares linearisation of the neutral-area sizing (default
+        the parachute sizing's :data:`~slingloads.analyses.chute_sizing.FIT_RANGE`; a workbook
+        passes its 'chute sizing linearisation range', so that both analyses size the same
+        neutral area). [rad]
 
     Attributes
     ----------
@@ -125,6 +131,7 @@ class Campaign:
     chosen_area_factor: float | None = None
     neutral_airspeed: float | None = None
     name: str = "campaign"
+    neutral_fit_range: tuple | None = None
 
     def __post_init__(self):
         if not isinstance(self.setup, CampaignSetup):
@@ -150,7 +157,9 @@ class Campaign:
         speeds = (self.rows["airspeed EAS [m/s]"] if self.rows is not None
                   else self.factors.airspeeds)
         speed = self.neutral_airspeed or float(np.max(np.asarray(speeds, float)))
-        neutral = neutral_area_of(self.setup.system, speed)
+        fit = FIT_RANGE if self.neutral_fit_range is None else tuple(
+            float(b) for b in self.neutral_fit_range)
+        neutral = neutral_area_of(self.setup.system, speed, fit)
         if neutral.already_stable:
             raise InputError("fuselage and fin are already statically stable in yaw (neutral "
                              "parachute area not positive): there is no parachute to size",

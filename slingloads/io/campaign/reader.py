@@ -61,6 +61,13 @@ class CampaignInputs:
     hook_angle_source: str
 
 
+def _sizing_fit_range(params):
+    """The parachute sizing's linearisation range (its Study row, checked by its reader), so
+    that the campaign's neutral area is the sizing's. [rad]"""
+    half = float(params("chute sizing linearisation range"))
+    return (-half, half)
+
+
 def list_parameter(params, name):
     """A comma-separated Study list: names (text lists) or SI numbers (unit column).
 
@@ -249,7 +256,10 @@ def read(reader, params, study):
             for length in rows["cable length [m]"].unique():
                 system.with_(cable=replace(system.cable, length=float(length)))
     with at("campaign run length"):
-        settings = RunSettings(params("campaign run length"), params("campaign time step"),
+        step = params("campaign time step")
+        params.check("campaign time step", step >= 0, "'campaign time step' must be >= 0 "
+                     "(0: adaptive)")
+        settings = RunSettings(params("campaign run length"), step if step > 0 else None,
                                params("campaign output interval"))
     with at("campaign minimum yaw damping"):
         criteria = SelectionCriteria(params("campaign minimum yaw damping"),
@@ -268,7 +278,8 @@ def read(reader, params, study):
     with located(file, sheet):
         campaign = Campaign(setup, factors, rows, settings, criteria, margin,
                             _map(factors, rows, n_areas, n_speeds), no_chute,
-                            chosen or None, name=str(params("study name")))
+                            chosen or None, name=str(params("study name")),
+                            neutral_fit_range=_sizing_fit_range(params))
     if chosen and not np.any(np.isclose(campaign.matrix.frame["area factor [-]"], chosen)):
         raise params.error("campaign chosen area factor", "the chosen area factor must be one "
                            "of the matrix's area factors "

@@ -170,7 +170,10 @@ def definition_table(report, units):
         ("carriers", *listing("carrier"), ""),
         ("manoeuvres", *listing("manoeuvre"), ""),
         ("run length", c.settings.t_end, "s", ""),
-        ("time step", c.settings.dt, "s", "fixed-step RK4"),
+        (("time step", c.settings.dt, "s", "fixed step, Dormand-Prince 5(4)")
+         if c.settings.dt is not None else
+         ("integration", "adaptive", "", f"Dormand-Prince 5(4), rtol {c.settings.rtol:g}, "
+          f"atol {c.settings.atol:g}")),
         ("output interval", c.settings.output_interval, "s", ""),
         ("damping criterion: least yaw-mode damping ratio", c.criteria.min_damping, "-", ""),
         ("damping criterion: longest yaw-mode time to half amplitude",

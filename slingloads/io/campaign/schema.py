@@ -57,10 +57,11 @@ PARAMETERS = (
     Parameter("campaign run length", "time", "s", 60.0,
               "Simulated time of every run, a whole multiple of the time step (paper: 60 s).",
               _S),
-    Parameter("campaign time step", "time", "s", 0.01,
-              "Fixed RK4 step, > 0 (checked against the fastest linear mode).", _S),
+    Parameter("campaign time step", "time", "s", 0.0,
+              "0 = the multibody model's adaptive step (Dormand-Prince 5(4)); > 0: that fixed "
+              "step, checked against the fastest linear mode.", _S),
     Parameter("campaign output interval", "time", "s", 0.1,
-              "Sampling interval of the stored histories, a whole multiple of the step.", _S),
+              "Sampling interval of the stored histories (a whole multiple of a fixed step).", _S),
     Parameter("campaign cable EA", "force", "N", 5.0e6,
               "Axial stiffness EA of the carrier cable, > 0 (default: a GENERIC synthetic "
               "long line).", _S),
