@@ -286,8 +286,9 @@ class _RunsBar:
 
             self.bar = tqdm(total=total, initial=done, desc="campaign runs", unit="run",
                             leave=False, position=1, dynamic_ncols=True)
-        else:
+        else:  # one call per batch: show each (tqdm skips updates closer than 0.1 s)
             self.bar.update(done - self.bar.n)
+            self.bar.refresh()
         if done >= total:
             self.bar.close()
 

@@ -306,3 +306,18 @@ def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsy
     frame = pd.read_excel(out / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
     rows = dict(zip(frame[0], frame[1], strict=False))
     assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 1)
+
+
+def test_progress_bar_shows_runs_done_rate_and_time_left(tiny, tmp_path, capsys):
+    """Without --quiet the campaign's bar (tqdm) counts the runs: it starts at the runs found
+    in the cache (area factors 1.2, 1.6 -> 1.2, 1.5 on the tiny campaign's cache: the 1.2 run
+    and the ramp are found, 2 of 3) and ends at 3/3, with the rate (run/s) and the time left
+    (tqdm's ``<`` remaining-time field) on the line."""
+    _, _, cache = tiny
+    path = workbook(tmp_path / "bar.xlsx", {"campaign area factors": "1.2, 1.5"})
+    assert main(["campaign", str(path), "--out", str(tmp_path / "out"), "--cache",
+                 str(cache)]) == 0
+    lines = [line for line in capsys.readouterr().err.replace("\r", "\n").splitlines()
+             if line.startswith("campaign runs")]
+    assert lines and "2/3" in lines[0]
+    assert "3/3" in lines[-1] and "run/s" in lines[-1] and "<" in lines[-1]
