@@ -75,7 +75,7 @@ def local():
 # ------------------------------------------------------------------------- execution
 def test_campaign_runs_are_the_multibody_runs(local):
     """Each campaign run is the multibody model's run of its system and manoeuvre: the stored
-    histories equal those of simulate_runs called directly (same RK4, same trim), bit for
+    histories equal those of simulate_runs called directly (same integration, same trim), bit for
     bit."""
     campaign = tiny()
     row = campaign.matrix.frame.iloc[3]  # area 1.6, gust

@@ -3,7 +3,7 @@ store of finished runs so that an interrupted campaign resumes where it stopped.
 
 **Batches.** The runs still missing from the store are cut, in matrix order (so that the runs
 of one condition stay together and share their trim), into batches; each batch is one call of
-:func:`.worker.run_batch`: the compiled RK4 integrates its runs together.
+:func:`.worker.run_batch`: the compiled Dormand-Prince 5(4) kernel integrates its runs together.
 
 **Executors** (all give identical results: every run is integrated on its own, in the same
 floating-point operations, whatever batch or process it falls in):

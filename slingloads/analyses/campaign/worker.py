@@ -1,10 +1,10 @@
 """One batch of campaign runs, as a worker process (local or on a Dask cluster) runs it.
 
 :func:`run_batch` integrates the runs of a batch together
-(:func:`~slingloads.analyses.multibody.simulate_runs`, the compiled RK4 over runs), trims and
-linearises each distinct condition once, and returns one record per run: its key, metrics
-(:mod:`.metrics`) and histories. It is a plain function of picklable arguments so that any
-executor can ship it.
+(:func:`~slingloads.analyses.multibody.simulate_runs`, the compiled Dormand-Prince 5(4)
+kernel over runs), trims and linearises each distinct condition once, and returns one record
+per run: its key, metrics (:mod:`.metrics`) and histories. It is a plain function of
+picklable arguments so that any executor can ship it.
 
 The compiled kernel runs on ``threads`` threads of the calling thread (numba's thread count
 is set per calling thread), and one batch at a time per process: numba's default threading
