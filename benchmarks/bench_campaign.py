@@ -5,10 +5,11 @@ elastic cable (EA 5 MN). Matrix (3,888 runs): parachute area 1.0 to 2.0 x the ne
 steps of 0.2 (6) x 40, 60, 80, 100 KEAS (4) x mass 2900, 2600, 2300 kg (3) x ISA SL, 5,000 and
 10,000 ft (3) x cables of 60, 80 and 100 ft (3; the paper's 18 ft cannot clear this sample's
 10 m line and 6.4 m fin arm, so the system refuses it) x carrier frozen and free (2) x free
-response and +-30 ft/s lateral gusts (3). Every run lasts 60 s (the
-multibody model's adaptive Dormand-Prince 5(4), rtol 1e-4, atol 1e-5; histories every 0.1 s) and includes its trim, linear model, integration, histories and metrics; the
-campaign adds the selection, sensitivity tables, stability map, the 1.0 x neutral-area checks
-and the transport without parachute (HC1 and HC2, 5 wind ramps). Histories are not kept
+response and +-30 ft/s lateral gusts (3). Every run lasts 60 s (the multibody model's
+adaptive Dormand-Prince 5(4), rtol 1e-4, atol 1e-5; histories every 0.1 s) and includes its
+trim, linear model, integration, histories and metrics; the campaign adds the selection,
+sensitivity tables, stability map, the 1.0 x neutral-area checks and the transport without
+parachute (HC1 and HC2, 5 wind ramps). Histories are not kept
 (metrics only), as a user would not hold 4,000 runs of histories in memory.
 
 By default a random sample of the matrix (``--sample``, 1,500 runs, as listed rows) is run and
