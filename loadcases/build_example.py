@@ -206,12 +206,13 @@ def parachute_size(frame, fin_cp, aero_ref):
     return example_chute.parachute_size(frame, fin_cp, aero_ref)
 
 
-#: Sheets and parameters of the lateral-pendulum and parachute-sizing studies, from
-#: loadcases/example_lateral.py and loadcases/example_chute.py (each defines TABLES and
-#: PARAMETERS, and may define NOTES).
+#: Sheets and parameters of the lateral-pendulum and parachute-sizing studies and of the
+#: multibody model and the campaign, from loadcases/example_lateral.py, example_chute.py,
+#: example_multibody.py and example_campaign.py (each defines TABLES and PARAMETERS, and may
+#: define NOTES).
 EXTRA_TABLES = {}
 EXTRA_PARAMETERS = {}
-for _module in ("example_lateral", "example_chute"):
+for _module in ("example_lateral", "example_chute", "example_multibody", "example_campaign"):
     try:
         _part = __import__(_module)
     except ModuleNotFoundError as _err:

@@ -318,7 +318,7 @@ def test_unknown_motion_type(tmp_path, capsys):
 def test_run_command_includes_lateral(tmp_path):
     """`slingloads run` on the example writes the lateral report beside the others."""
     book, study_rows = _nominal_book()
-    for name in ("run loads", "run chute sizing"):
+    for name in ("run loads", "run chute sizing", "run multibody"):
         book["Study"][f"B{study_rows[name]}"] = "no"
     path = tmp_path / "only-lateral.xlsx"
     book.save(path)

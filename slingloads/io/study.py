@@ -46,6 +46,11 @@ class WorkbookStudy:
     cells : dict
         Cell of each Study parameter given, by lower-case name (to locate errors found while
         computing).
+    runtime : dict
+        How to execute (set by the command line): ``scheduler``, ``workers``, ``cache``,
+        ``timeout``, ``progress`` of the campaign.
+    results : dict
+        Results of the analyses computed so far, by name (the loads read the campaign's).
     """
 
     name: str
@@ -60,6 +65,8 @@ class WorkbookStudy:
     input_files: list = field(default_factory=list)
     warnings: list = field(default_factory=list)
     cells: dict = field(default_factory=dict)
+    runtime: dict = field(default_factory=dict)
+    results: dict = field(default_factory=dict)
 
     def digest(self):
         """What a report is computed from: input file, SHA-256, study, analyses, version, and

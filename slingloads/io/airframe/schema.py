@@ -32,7 +32,7 @@ COORDINATE = Bounds(-MAX_COORDINATE, MAX_COORDINATE, unit="m")
 TABLE_ANGLE = Bounds(-180.0, 180.0, unit="deg")
 
 #: Kinds of the Hardpoints rows.
-HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference")
+HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference", "htail_cp")
 
 PARAMETERS = (
     Parameter("reference axis y", "length", "m", 0.0,
@@ -113,7 +113,8 @@ SHEETS = (
        max_rows=MAX_STATIONS),
     TableSheet("Hardpoints", (
         Column("id", TEXT, help="Unique name."),
-        Column("kind", TEXT, help="hub | mast_foot | chute | fin_cp | aero_reference"),
+        Column("kind", TEXT, help="hub | mast_foot | chute | fin_cp | aero_reference | "
+                                  "htail_cp"),
         Column("x", "length", "m", bounds=COORDINATE),
         Column("y", "length", "m", bounds=COORDINATE),
         Column("z", "length", "m", bounds=COORDINATE),
@@ -122,7 +123,8 @@ SHEETS = (
                above(0)),
     ), required=True, help="Where external loads enter: rotor hub (hook), mast feet on the "
        "transmission deck, parachute attachment on the fin, fin centre of pressure, moment "
-       "reference point of the fuselage aerodynamic coefficients. Every point but the "
+       "reference point of the fuselage aerodynamic coefficients, horizontal-tail centre of "
+       "pressure (the multibody model's full-tail configuration). Every point but the "
        "aero_reference must lie within the airframe (x within the mass items' range, no "
        "farther from the loads reference axis than the airframe is long).",
        max_rows=MAX_STATIONS),
