@@ -341,8 +341,32 @@ def yaw_inertia_about_hub(airframe):
     float
         [kg m^2]
     """
-    k = hanging_vertical(airframe)
-    return float(k @ airframe.mass_items.inertia_about_cg @ k)
+    items = airframe.mass_items
+    return hanging_yaw_inertia(items.inertia_about_cg, items.cg, airframe.hardpoints.hub)
+
+
+def hanging_yaw_inertia(inertia_about_cg, cg, hub):
+    """Yaw inertia of a body hung at ``hub`` about the vertical through it (the hub-CG line).
+
+    Parameters
+    ----------
+    inertia_about_cg : array_like, shape (3, 3)
+        Inertia tensor about the CG. [kg m^2]
+    cg, hub : array_like, shape (3,)
+        [m]
+
+    Returns
+    -------
+    float
+        :math:`\\hat k^T I_{CG} \\hat k`, :math:`\\hat k` along hub - CG. [kg m^2]
+    """
+    d = np.asarray(hub, float) - np.asarray(cg, float)
+    length = float(np.linalg.norm(d))
+    if not length > 0:
+        raise InputError("the rotor hub coincides with the CG: the body has no hanging "
+                         "attitude [m]", length)
+    k = d / length
+    return float(k @ np.asarray(inertia_about_cg, float) @ k)
 
 
 def hanging_roll_axis(airframe):
