@@ -74,6 +74,12 @@ ACCURACY = 0.005
 #: sampled runs and finished all of them (``--calibrate``: RK23, RK45, DOP853 and LSODA at
 #: atol 1e-4, 1e-5, 1e-6 and rtol from 0.1 down), atol in SI units of the states.
 BASELINE = {"method": "RK45", "rtol": 3e-3, "atol": 1e-4}
+#: The product's tolerances chosen the same way (``--calibrate``: the cheapest of PRODUCT_TRIALS
+#: meeting ACCURACY on the sampled runs), for the like-for-like ratio. The product's defaults
+#: are stricter (peaks within about 0.02 %, cable tension peaks within 2e-5) and are timed
+#: first.
+MATCHED = {"rtol": 1e-3, "atol": 1e-4}
+PRODUCT_TRIALS = [(rtol, atol) for atol in (1e-5, 1e-4) for rtol in (1e-4, 3e-4, 1e-3, 3e-3)]
 REFERENCE = {"method": "DOP853", "rtol": 1e-10, "atol": 1e-12}
 
 
@@ -217,12 +223,37 @@ def calibrate(pairs, chosen, x0, references):
                     best = (per_run, settings)
                 break
     print(f"  cheapest that meets {100 * ACCURACY:.1f} %: {best[1] if best else None}")
+    best = None
+    for rtol, atol in PRODUCT_TRIALS:
+        sim, _, cpu = timed(simulate_runs, [pairs[k] for k in chosen], t_end=T_END, dt=DT,
+                            output_interval=OUT, rtol=rtol, atol=atol)
+        worst = batch_error(sim.runs, references, chosen)
+        print(f"  product rtol {rtol:.0e} atol {atol:.0e}: worst peak error "
+              f"{100 * worst:.3f} %, {cpu / len(chosen) * 1e3:.2f} ms CPU per run")
+        if worst <= ACCURACY and (best is None or cpu < best[0]):
+            best = (cpu, {"rtol": rtol, "atol": atol})
+    print(f"  product's cheapest that meets {100 * ACCURACY:.1f} %: "
+          f"{best[1] if best else None} (the CPU time of so few runs is noisy)")
+
+
+def batch_error(runs, references, chosen):
+    """Worst relative error of peak yaw and peak lateral swing of ``runs`` (in the order of
+    ``chosen``) against the references; runs that stopped or lack a reference are skipped."""
+    worst = 0.0
+    for run, k in zip(runs, chosen, strict=True):
+        if references[k] is None or run.stopped:
+            continue
+        h = run.histories()
+        mine = peaks(h["yaw"], h["swing lateral"])
+        worst = max(worst, *(relative_error(a, b) for a, b in zip(mine, references[k],
+                                                                  strict=True)))
+    return worst
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--full", action="store_true", help="run the whole baseline loop")
-    parser.add_argument("--sample", type=int, default=12, help="baseline runs timed")
+    parser.add_argument("--sample", type=int, default=24, help="baseline runs timed")
     parser.add_argument("--calibrate", action="store_true",
                         help="try solve_ivp methods and tolerances for the baseline")
     args = parser.parse_args()
@@ -292,8 +323,18 @@ def main():
           f"runs that stayed inside their tables): batch {100 * batch_worst:.3f} %, solve_ivp "
           f"loop {100 * loop_worst:.3f} % (each must be <= {100 * ACCURACY:.1f} %); runs the "
           f"loop could not finish (a trial step left a table): {unfinished}")
-    print(f"ratio of the solve_ivp loop to the batch, same process: {scaled / batch:.0f}x wall, "
-          f"{scaled_cpu / batch_cpu:.0f}x CPU (target >= 30)")
+    matched, matched_wall, matched_cpu = timed(simulate_runs, pairs, t_end=T_END, dt=DT,
+                                               output_interval=OUT, **MATCHED)
+    matched_worst = batch_error([matched.runs[k] for k in checked], references, checked)
+    print(f"ratio at the product's default tolerances: {scaled / batch:.0f}x wall, "
+          f"{scaled_cpu / batch_cpu:.0f}x CPU")
+    print(f"batch at tolerances chosen like the loop's (rtol {MATCHED['rtol']:g}, atol "
+          f"{MATCHED['atol']:g}): {matched_wall:.1f} s wall, {matched_cpu:.1f} s CPU, peaks "
+          f"within {100 * matched_worst:.3f} % of the reference")
+    print(f"ratio of the solve_ivp loop to the batch, same process, both held to "
+          f"{100 * ACCURACY:.1f} %: {scaled / matched_wall:.0f}x wall, "
+          f"{scaled_cpu / matched_cpu:.0f}x CPU (target >= 30; at the product's default "
+          f"tolerances {scaled / batch:.0f}x wall, {scaled_cpu / batch_cpu:.0f}x CPU)")
 
 
 if __name__ == "__main__":
