@@ -408,3 +408,41 @@ def test_loads_hook_cone_from_the_dynamics_and_table_limits(example_loads):
     assert kept.angle == pytest.approx(np.radians(30.0))
     with pytest.raises(InputError, match="not a valid hook-cone source"):
         loads_from_dynamics(example_loads, env, "guess")
+
+
+# ------------------------------------------------------------------------- sensitivity
+def test_sensitivity_tables_and_carrier_pairs_against_a_hand_built_table():
+    """Paper figures 9 to 13 as tables, on hand-built metrics: areas 1.0 and 1.4 at 40 and
+    80 kt, carriers frozen and free, one manoeuvre; yaw change = 10 x area factor + airspeed
+    [kt] / 10 + (1 if free). The area table groups every run (4 per area: worst yaw change at
+    1.4 is 14 + 8 + 1 = 23 deg; at 1.0, 19 deg; stable runs 0 at 1.0 whose linear verdict is
+    unstable); the airspeed and carrier tables take the runs at the selected area 1.4 only (2
+    per group: worst at 80 kt 23 deg, at 40 kt 19 deg; frozen 22, free 23 deg). The carrier
+    pairs are the 4 (area, airspeed) pairs with free - frozen = 1 deg each."""
+    from slingloads.analyses.campaign.sensitivity import carrier_comparison, sensitivity_tables
+
+    rows = [(f, v, "free response", "stable" if f > 1.0 else "unstable", "convergent", 0.2,
+             5.0, 2.0) for f in (1.0, 1.4) for v in (40, 80) for _ in ("frozen", "free")]
+    frame = _table(rows)
+    frame["carrier"] = ["frozen", "free"] * 4
+    frame["yaw change [deg]"] = (10 * frame["area factor [-]"]
+                                 + frame["airspeed EAS [m/s]"] / KNOT / 10
+                                 + (frame["carrier"] == "free"))
+    for column in ("beta peak [deg]", "yaw rms [deg]", "settling time [s]",
+                   "tension / weight max [-]", "hub load from hanging vertical max [deg]",
+                   "yaw damping ratio from response [-]"):
+        frame[column] = 1.0
+    tables = sensitivity_tables(frame, 1.4)
+    assert set(tables) == {"parachute area", "airspeed", "carrier"}
+    area = tables["parachute area"].set_index("area factor [-]")
+    assert_array_equal(area["runs"], [4, 4])
+    assert_array_equal(area["stable runs"], [0, 4])
+    assert_allclose(area["largest yaw change [deg]"], [19.0, 23.0])
+    speed = tables["airspeed"].set_index("airspeed EAS [m/s]")
+    assert_array_equal(speed["runs"], [2, 2])
+    assert_allclose(speed["largest yaw change [deg]"], [19.0, 23.0])
+    carrier = tables["carrier"].set_index("carrier")
+    assert_allclose(carrier.loc[["frozen", "free"], "largest yaw change [deg]"], [22.0, 23.0])
+    pairs = carrier_comparison(frame)
+    assert len(pairs) == 4
+    assert_allclose(pairs["yaw change free - frozen"], 1.0)
