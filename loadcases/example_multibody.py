@@ -8,8 +8,9 @@ hover and a head-wind ramp; the whole list of the paper is flown when the sheet 
 The towed flight is at 80 KEAS (the paper's sizing speed). With the GENERIC example data the
 helicopter hangs nose down: its CG lies 0.17 m ahead of the hub (-9 deg in hover) and its
 fuselage alone (horizontal tailplane removed, as in the paper's transport configuration) is
-unstable in pitch, so the trimmed attitude grows with speed: -14.7 deg at 60 KEAS, -21.6 deg
-at 80, -29.4 deg at 100 KEAS; above about 114 KEAS there is no trim. The paper transports its
+unstable in pitch, so the trimmed attitude grows with speed: -14.9 deg at 60 KEAS, -22.2 deg
+at 80, -30.3 deg at 100 KEAS; above about 125 KEAS the trim would lie beyond the fuselage
+table's -40 deg of angle of attack (docs/multibody.md, section 8). The paper transports its
 helicopter up to 100 KEAS; with real fuselage data the attitudes are whatever the data give.
 """
 
@@ -66,7 +67,8 @@ NOTES = [
     "5e6 N, GENERIC), the example's drogue (its 'parachute area' and line) as a hinged 3 kg "
     "canopy with the GENERIC extended CD table, frozen carrier, four runs at 80 KEAS or from "
     "hover. With the generic data the helicopter hangs nose down (CG 0.17 m ahead of the "
-    "hub; the fuselage alone is unstable in pitch): trimmed pitch -14.7 deg at 60 KEAS, "
-    "-21.6 deg at 80, -29.4 deg at 100 KEAS, no trim above about 114 KEAS. Delete the "
+    "hub; the fuselage alone is unstable in pitch): trimmed pitch -14.9 deg at 60 KEAS, "
+    "-22.2 deg at 80, -30.3 deg at 100 KEAS; beyond about 125 KEAS the trim would leave the "
+    "fuselage table's -40 deg. Delete the "
     "MultibodyManoeuvres sheet to fly the paper's whole list.",
 ]
