@@ -528,3 +528,27 @@ def test_trimmed_pitch_matches_a_hand_moment_balance(knots):
     assert len(roots) == 1 and tr.converged, tr.message
     assert_allclose(tr.attitude[1], roots[0], atol=1e-6)
     assert np.degrees(roots[0]) < -10.0  # nose down, the unstable fuselage's signature
+
+
+def test_a_slack_cable_is_reported_and_the_body_falls_freely():
+    """Hover, no aerodynamics, undamped cable: raised 0.3 m above its hanging position (the
+    static stretch is W L / EA = 0.1041 m) the cable is slack, the helicopter falls freely,
+    z(t) = z0 - g t^2 / 2, until the cable is taut again after sqrt(2 (0.3 - 0.1041) / g) =
+    0.1999 s; the run reports the slack (from t = 0, for 0.2 s at 0.01 s sampling) and the
+    tension is zero meanwhile; then the cable holds it for half a bounce period,
+    pi / sqrt(EA / (L m)) = 0.324 s, so it is still taut at 0.5 s."""
+    system = bare_system()
+    sim = simulate(system, Manoeuvre("drop", disturbance={"vertical": 0.3}), t_end=0.5,
+                   dt=0.001, output_interval=0.01)
+    run = sim.runs[0]
+    h = run.histories()
+    stretch = MASS * G0 * LENGTH / EA
+    taut_again = np.sqrt(2.0 * (0.3 - stretch) / G0)
+    assert_allclose(taut_again, 0.1999, atol=1e-4)
+    falling = h["time"] < taut_again - 1e-3
+    z = run.states[:, 5]
+    assert_allclose(z[falling], z[0] - 0.5 * G0 * h["time"][falling] ** 2, atol=1e-9)
+    assert np.all(h["tension"][falling] == 0.0) and h["tension"][-1] > 0.0
+    row = sim.metrics_frame().iloc[0]
+    assert row["cable slack"] and row["cable slack first at [s]"] == 0.0
+    assert_allclose(row["cable slack time [s]"], 0.20, atol=0.011)
