@@ -4,7 +4,7 @@ The same equations as :func:`slingloads.models.pendulum.rigid_rope_derivatives` 
 :func:`~slingloads.models.pendulum.elastic_cable_derivatives`, written on scalars (operation
 for operation, so that the results agree to round-off), and the same step and peak logic as
 the vectorised numpy sweep of :func:`slingloads.analyses.lateral.sweep`: one run at a time,
-every run on the shared time grid, the hook's velocity and acceleration read from a table
+every run on the shared time grid (runs in parallel over the cores), the hook's velocity and acceleration read from a table
 per distinct motion. Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``: the
 machine code is kept in this package's ``__pycache__`` after the first call). The module is
 self-contained, so numba's own check of this file's source keeps the cache valid.
@@ -31,6 +31,7 @@ PARAMETERS = ("mass", "inertia", "e", "length", "stiffness", "c_lat", "c_roll", 
 N_SIGNALS = 4
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
+_parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
 
 @_jit
@@ -112,7 +113,7 @@ def _keep(best, t_best, y, ok, when):
             t_best[s] = when
 
 
-@_jit
+@_parallel_jit
 def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
     """Integrate every run of one cable model and keep the peaks of its signals.
 
@@ -133,12 +134,12 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
     """
     runs, n = x0.shape
     n_steps = nodes.size - 1
-    x = np.empty(n)
-    tmp = np.empty(n)
-    k1, k2, k3, k4 = np.empty(n), np.empty(n), np.empty(n), np.empty(n)
-    y0, y1, y2, yl = (np.empty(N_SIGNALS), np.empty(N_SIGNALS), np.empty(N_SIGNALS),
-                      np.empty(N_SIGNALS))
-    for j in range(runs):
+    for j in numba.prange(runs):
+        x = np.empty(n)
+        tmp = np.empty(n)
+        k1, k2, k3, k4 = np.empty(n), np.empty(n), np.empty(n), np.empty(n)
+        y0, y1, y2, yl = (np.empty(N_SIGNALS), np.empty(N_SIGNALS), np.empty(N_SIGNALS),
+                          np.empty(N_SIGNALS))
         p = P[j]
         dr = drive[profile[j]]
         weight = p[0] * p[7]
