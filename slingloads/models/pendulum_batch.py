@@ -3,11 +3,12 @@
 The same equations as :func:`slingloads.models.pendulum.rigid_rope_derivatives` and
 :func:`~slingloads.models.pendulum.elastic_cable_derivatives`, written on scalars (operation
 for operation, so that the results agree to round-off), and the same step and peak logic as
-the vectorised numpy sweep of :func:`slingloads.analyses.lateral.sweep`: one run at a time,
-every run on the shared time grid (runs in parallel over the cores), the hook's velocity and acceleration read from a table
-per distinct motion. Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``: the
-machine code is kept in this package's ``__pycache__`` after the first call). The module is
-self-contained, so numba's own check of this file's source keeps the cache valid.
+the vectorised numpy sweep of :func:`slingloads.analyses.lateral.sweep`: each run on its own
+(runs in parallel over the cores), every run on the shared time grid, the hook's velocity and
+acceleration read from a table per distinct motion. Compiled with
+`numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept in this
+package's ``__pycache__`` after the first call). The module is self-contained, so numba's own
+check of this file's source keeps the cache valid.
 
 Parameter rows (``P``, one per run) hold, in order: mass [kg], roll inertia [kg m^2], CG below
 hub e [m], rope length [m], cable spring rate EA/l [N/m] (unused for the rigid rope), lateral
