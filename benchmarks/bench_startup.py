@@ -36,9 +36,9 @@ def main(argv=None):
         times.append(time.perf_counter() - t0)
     code = ("import sys\nfrom slingloads import cli\ntry:\n    cli.main(['--help'])\n"
             "except SystemExit:\n    pass\n"
-            f"print(','.join(m for m in {HEAVY!r} if m in sys.modules))")
+            f"print('loaded:' + ','.join(m for m in {HEAVY!r} if m in sys.modules))")
     loaded = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True,
-                            text=True).stdout.strip().splitlines()[-1]
+                            text=True).stdout.strip().splitlines()[-1].removeprefix("loaded:")
     print(f"{' '.join(Path(command[0]).name if i == 0 else c for i, c in enumerate(command))}"
           f": {', '.join(f'{t:.3f}' for t in times)} s")
     print(f"  heavy libraries loaded by --help: {loaded or 'none'}")
