@@ -3,9 +3,9 @@
 The same moments as :meth:`slingloads.models.yaw_dynamics.YawModel.moments` (fuselage table,
 fin at its local sideslip, Apollo legacy drogue), written on scalars operation for operation,
 and the same step logic as the numpy batch of
-:func:`slingloads.models.yaw_dynamics.integrate_rk4`: one run at a time on the shared time
-grid, the relative wind read from a table per distinct gust, a run that leaves a table frozen
-from the start of that step. Compiled with `numba <https://numba.pydata.org>`_
+:func:`slingloads.models.yaw_dynamics.integrate_rk4`: each run on its own (runs in parallel
+over the cores) on the shared time grid, the relative wind read from a table per distinct
+gust, a run that leaves a table frozen from the start of that step. Compiled with `numba <https://numba.pydata.org>`_
 (``cache=True``); the module is self-contained, so numba's own check of this file's source
 keeps the cache valid.
 
@@ -23,6 +23,7 @@ import numba
 import numpy as np
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
+_parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
 (HALF_RHO, INERTIA, HAS_FUS, HAS_FIN, FIN_LOCAL, HAS_CHUTE, FIN_DX, FIN_DY, FIN_LO, FIN_HI,
  CHUTE_CD, CHUTE_DX, CHUTE_DY, FUS_LO, FUS_HI) = range(15)
@@ -93,7 +94,7 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fin_x, fin_
     return (n_fus + n_fin + n_chute) / M[INERTIA], not inside
 
 
-@_jit
+@_parallel_jit
 def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fin_x, fin_k,
               out_psi, out_rate, left, exit_step):
     """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,).
@@ -107,8 +108,8 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fi
     """
     runs = psi0.size
     n_steps = step.size
-    hint = np.zeros(2, dtype=np.int64)
-    for j in range(runs):
+    for j in numba.prange(runs):
+        hint = np.zeros(2, dtype=np.int64)
         w = wind[index[j]]
         area = areas[j]
         psi, rate = psi0[j], rate0[j]
