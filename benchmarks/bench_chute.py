@@ -19,8 +19,8 @@ sample aircraft HC2 at 80 KIAS, ISA sea level.
   the largest |psi| error of both methods against it is printed side by side.
 
 The sweep runs in parallel over the cores, the loop on one: the speed-up (the last line) is
-taken on CPU time, the work done by all threads; the ratio of wall times is printed above it. Run from the repository
-root::
+taken on CPU time, the work done by all threads; the ratio of wall times is printed above
+it. Run from the repository root::
 
     .venv/bin/python benchmarks/bench_chute.py           # about 1 minute
     .venv/bin/python benchmarks/bench_chute.py --full    # the whole baseline loop
