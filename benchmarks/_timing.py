@@ -39,10 +39,15 @@ def timed(function, *args, **kwargs):
 
 def median_timed(function, repeat=3):
     """(last result, Timing) with the median wall and the median CPU time of ``repeat``
-    calls."""
-    results = [timed(function) for _ in range(repeat)]
-    return results[-1][0], Timing(statistics.median(t.wall for _, t in results),
-                                  statistics.median(t.cpu for _, t in results))
+    calls; only one result is alive at a time."""
+    times = []
+    result = None
+    for _ in range(repeat):
+        result = None  # the previous result is freed before the next call
+        result, t = timed(function)
+        times.append(t)
+    return result, Timing(statistics.median(t.wall for t in times),
+                          statistics.median(t.cpu for t in times))
 
 
 def sample(n, k, seed=0):

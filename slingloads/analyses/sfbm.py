@@ -223,9 +223,11 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
     for first in range(0, cases, chunk):
         part = slice(first, min(first + chunk, cases))
         block = loads[part]
-        np.matmul(weights[part], basis[:, :-6], out=block.reshape(len(block), -1))
+        # einsum: a product of inner size 7, single-threaded (a threaded BLAS call per chunk
+        # costs more than it saves, and much more on a busy machine)
+        np.einsum("ck,kn->cn", weights[part], basis[:, :-6], out=block.reshape(len(block), -1))
         sums = forward(forces[part], None if moments is None else moments[part])
         block -= sums[:, :-1]
-        np.matmul(weights[part], basis[:, -6:], out=residual[part])
+        np.einsum("ck,kn->cn", weights[part], basis[:, -6:], out=residual[part])
         residual[part] -= sums[:, -1]
     return loads, acceleration, residual
