@@ -35,13 +35,6 @@ from slingloads.analyses.chute_sizing import (
 )
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
-from slingloads.io.chute.plots import (
-    plot_static_moments,
-    plot_sweep_metrics,
-    plot_time_histories,
-    plot_wake,
-    plot_yaw_linearisation,
-)
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
@@ -388,6 +381,14 @@ def _sheets(result, units, digest):
 
 
 def _figures(result, units="SI"):
+    from slingloads.io.chute.plots import (  # matplotlib loads only when plotting
+        plot_static_moments,
+        plot_sweep_metrics,
+        plot_time_histories,
+        plot_wake,
+        plot_yaw_linearisation,
+    )
+
     figs = {"linearisation": plot_yaw_linearisation(result.static.linearisation),
             "static-moments": plot_static_moments(result.static, units),
             "wake": plot_wake(result.line, units)}

@@ -56,7 +56,6 @@ from slingloads.io.common.report import (
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
 from slingloads.io.loads.nastran import prepare_nastran
-from slingloads.io.loads.plots import COMPONENT_TAGS, plot_hull, plot_sfbm, plot_sfbm_grid
 
 #: Names of the files of a loads report (``*``: a part made from a station id), for the
 #: publisher: a new report replaces every earlier file of these names.
@@ -370,6 +369,13 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         On an unknown unit system, component or station, or an output onto an input file;
         nothing is written then.
     """
+    from slingloads.io.loads.plots import (  # matplotlib loads only when writing
+        COMPONENT_TAGS,
+        plot_hull,
+        plot_sfbm,
+        plot_sfbm_grid,
+    )
+
     check_units(units)
     for pair in hull_pairs:
         if len(pair) != 2:
