@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from contextlib import ExitStack
 from pathlib import Path
 
 from tqdm import tqdm
@@ -19,11 +20,13 @@ EXIT_BAD_INPUT = 2
 
 #: Analyses the ``run`` command may perform, in order (from the registry
 #: :mod:`slingloads.io.analyses`): name -> (subcommand, compute(study) -> result,
-#: write(result, out_dir, stem, units, study)), out_dir being the shared AtomicOutputs of the
-#: run. Every analysis is computed (and every input checked) before anything is written, and
-#: the files of all the analyses are published together at the end (or none of them). The
+#: write(result, out_dir, stem, units, study, figures=None)), out_dir being the shared
+#: AtomicOutputs of the run and figures the drawings started after the analysis was computed.
+#: Every analysis is computed (and every input checked) before anything is written, and the
+#: files of all the analyses are published together at the end (or none of them). The
 #: analyses' modules are imported on first use (keeps ``slingloads --help`` fast).
 ANALYSES = {a.name: (a.subcommand, a.compute, a.write) for a in REGISTRY}
+_BY_NAME = {a.name: a for a in REGISTRY}
 
 
 def _parser():
@@ -111,18 +114,25 @@ def _analyse(args):
         names = _selected(args, study)
         bar.total = 2 + 2 * len(names)
         bar.update(1)
-        results = {}
-        for name in names:
-            bar.set_description(f"computing {name}")
-            results[name] = ANALYSES[name][1](study)
-            bar.update(1)
-        stem = Path(args.workbook).stem
-        # one set of outputs for every analysis: all published together, or none
-        with atomic_outputs(args.out, inputs=[args.workbook]) as outputs:
+        results, figures = {}, {}
+        with ExitStack() as drawing:
             for name in names:
-                bar.set_description(f"writing {name}")
-                ANALYSES[name][2](results[name], outputs, stem, args.units, study)
+                bar.set_description(f"computing {name}")
+                results[name] = ANALYSES[name][1](study)
+                # its figures are drawn (in worker processes) while the next ones compute
+                figures[name] = _BY_NAME[name].start_figures(results[name], args.units, study)
+                if figures[name] is not None:
+                    drawing.enter_context(figures[name])
                 bar.update(1)
+            study.results.update(results)  # a report may quote another analysis's result
+            stem = Path(args.workbook).stem
+            # one set of outputs for every analysis: all published together, or none
+            with atomic_outputs(args.out, inputs=[args.workbook]) as outputs:
+                for name in names:
+                    bar.set_description(f"writing {name}")
+                    ANALYSES[name][2](results[name], outputs, stem, args.units, study,
+                                      figures=figures[name])
+                    bar.update(1)
         written = outputs.written
         bar.update(1)
         bar.set_description("done")

@@ -114,7 +114,7 @@ def test_report_reads_back(run_dir, result):
     for tag in PLOTS:
         assert (run_dir / f"{STEM}-lateral-{tag}.png").stat().st_size > 1000
     sheets = pd.ExcelFile(path).sheet_names
-    assert sheets == ["Summary", "Runs", "Modes", "Histories", "LoadsAtAngle", "Plots"]
+    assert sheets == ["Cover", "Summary", "Runs", "Modes", "Histories", "LoadsAtAngle", "Plots"]
     angle = _sheet(path, "Summary", "Design angle")
     rec = angle[angle["item"] == "recommended design angle"].iloc[0]
     assert float(rec["value"]) == pytest.approx(np.degrees(result.recommended_angle),
@@ -122,10 +122,11 @@ def test_report_reads_back(run_dir, result):
     big = angle[angle["item"] == "largest load angle |theta1 - theta2|"].iloc[0]
     assert float(big["value"]) == pytest.approx(np.degrees(result.study.max_load_angle),
                                                 rel=1e-12)
-    runs = _sheet(path, "Runs", "Every case")
+    runs = _sheet(path, "Runs", "Results of every case")
     np.testing.assert_allclose(runs["max |theta1 - theta2| [deg]"].astype(float),
                                np.degrees(result.study.metrics.max_load_angle), rtol=1e-12)
-    loads = _sheet(path, "LoadsAtAngle", "Envelope")
+    loads = _sheet(path, "LoadsAtAngle", "Envelope max |LIMIT load| of the hook cases per "
+                                          "station: shear forces")
     c = result.comparison
     at = f"{np.degrees(c.angle):.4g}"
     np.testing.assert_allclose(loads["max |Vy| at 30 deg [N]"].astype(float),
@@ -253,7 +254,8 @@ def test_run_command_includes_lateral(tmp_path):
     out = tmp_path / "out"
     assert main(["run", str(path), "--out", str(out), "--quiet"]) == 0
     assert sorted(p.name for p in out.iterdir()) == sorted(
-        ["only-lateral-lateral.xlsx"] + [f"only-lateral-lateral-{t}.png" for t in PLOTS])
+        ["only-lateral-lateral.xlsx", "only-lateral-lateral-histories.csv"]
+        + [f"only-lateral-lateral-{t}.png" for t in PLOTS])
 
 
 def test_recommended_angle_above_30_deg_is_flagged(tmp_path):

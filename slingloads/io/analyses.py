@@ -8,7 +8,10 @@ Each analysis has a folder ``slingloads/io/<folder>/`` with
   (SI) from the workbook, with located errors;
 * ``report.py``: ``compute(study) -> result`` (orchestration: the physics is in
   :mod:`slingloads.analyses`) and ``write(result, out_dir, stem, units, study)``, publishing
-  through :func:`slingloads.io.common.atomic.atomic_outputs`;
+  through :func:`slingloads.io.common.atomic.atomic_outputs`; optionally
+  ``start_figures(result, units, study)`` (a started
+  :class:`~slingloads.io.common.figures.FigureRenderer`, then passed to ``write`` as
+  ``figures=``) so that the figures are drawn while the next analyses are computed;
 * ``plots.py``: the figures of the report.
 
 The study builder (:func:`slingloads.io.study.read_study`), the blank template
@@ -85,9 +88,20 @@ class Analysis:
         """Run it on a study read from a workbook."""
         return self.module("report").compute(study)
 
-    def write(self, result, out_dir, stem, units, study):
-        """Write its report into the run's outputs ``out_dir``."""
-        return self.module("report").write(result, out_dir, stem, units, study)
+    def start_figures(self, result, units, study):
+        """Start drawing its report's figures in worker processes (so that they are drawn
+        while the other analyses are computed): a context manager to leave once the report
+        is written, or None when its report module draws them at writing time."""
+        start = getattr(self.module("report"), "start_figures", None)
+        return start(result, units, study) if start is not None else None
+
+    def write(self, result, out_dir, stem, units, study, figures=None):
+        """Write its report into the run's outputs ``out_dir`` (with the figures started by
+        :meth:`start_figures`, if any)."""
+        if figures is None:
+            return self.module("report").write(result, out_dir, stem, units, study)
+        return self.module("report").write(result, out_dir, stem, units, study,
+                                           figures=figures)
 
 
 #: Every analysis, in the order they are read, run and written.
@@ -101,9 +115,17 @@ ANALYSES = (
              "Run the parachute sizing (sheets Chute*)."),
 )
 
-#: Parameters of the whole study: its name and which analyses to run.
+#: Parameters of the whole study: its name, the report's free identification fields and which
+#: analyses to run.
 GENERAL = Section("general", parameters=(
     Parameter("study name", TEXT, "", "study", "Name printed on the reports."),
+    Parameter("project", TEXT, "", "",
+              "Project the reports belong to, printed on their cover (free text)."),
+    Parameter("document number", TEXT, "", "",
+              "Document number of the reports, printed on their cover and in the footer of "
+              "every page (free text, e.g. 'LR-1234 issue A')."),
+    Parameter("author", TEXT, "", "", "Who prepared the analysis, printed on the covers."),
+    Parameter("checker", TEXT, "", "", "Who checked it, printed on the covers."),
     *(Parameter(a.run_parameter, FLAG, "", a.run_default, a.run_help) for a in ANALYSES),
 ))
 

@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 
 from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.analyses import ANALYSES, all_parameters
+from slingloads.io.common.cover import IDENTIFICATION, now_stamp
 from slingloads.io.common.parameters import StudyParameters
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.models.airframe import Airframe
@@ -36,6 +37,15 @@ class WorkbookStudy:
     points : dict
         Hardpoints by kind that the Airframe does not keep (``fin_cp``, ``aero_reference``:
         position or None). [m]
+    identification : dict
+        The free fields printed on the report covers (``project``, ``document number``,
+        ``author``, ``checker``), by name; empty strings when not given.
+    run_date : str
+        When the workbook was read (the run date printed on the reports).
+    results : dict
+        Results of the analyses computed in this run, by analysis name (filled by the
+        command line before the reports are written, so that a report can quote another's
+        result: the loads report quotes the lateral study's recommended hook angle).
     """
 
     name: str
@@ -58,6 +68,9 @@ class WorkbookStudy:
                 "analyses": ", ".join(k for k, v in self.run.items() if v),
                 "slingloads version": __version__}
     points: dict = field(default_factory=dict)
+    identification: dict = field(default_factory=dict)
+    run_date: str = field(default_factory=now_stamp)
+    results: dict = field(default_factory=dict)
 
     @property
     def loads(self):
@@ -101,7 +114,9 @@ def read_study(path, only=None):
     airframe, refs = read_airframe(reader, params)
     study = WorkbookStudy(name=str(params("study name")), path=str(path),
                           sha256=file_digest(path), run=run, airframe=airframe,
-                          parameters={k: v[0] for k, v in params.given.items()}, points=refs)
+                          parameters={k: v[0] for k, v in params.given.items()}, points=refs,
+                          identification={k: str(params(k) or "").strip()
+                                          for k in IDENTIFICATION})
     for analysis in ANALYSES:
         if run[analysis.name]:
             study.inputs[analysis.name] = analysis.read(reader, params, study)

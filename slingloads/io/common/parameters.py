@@ -49,11 +49,19 @@ class StudyParameters:
         return self.cell(name) or "(default)"
 
     def raw(self, name):
-        """The value as the user typed it (for error messages), or the default."""
+        """The value as the user typed it, with the unit of its 'unit' cell when there is
+        one (``"12 ft"``), for error messages; the default (in its unit) when the row is
+        absent."""
         cell = self.cell(name)
         if cell is None:
-            return self.specs[name.lower()].default
-        return self.reader.book[STUDY_SHEET][cell].value
+            spec = self.specs[name.lower()]
+            return f"{spec.default} {spec.unit}".strip() if spec.unit else spec.default
+        sheet = self.reader.book[STUDY_SHEET]
+        value = sheet[cell].value
+        unit = sheet[f"C{cell[1:]}"].value if cell.startswith("B") else None
+        if unit is None or not str(unit).strip() or str(unit).strip() == "-":
+            return value
+        return f"{value} {str(unit).strip()}"
 
     def error(self, name, rule, value):
         """An InputError at the parameter's cell."""

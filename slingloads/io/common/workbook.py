@@ -61,6 +61,7 @@ class Table:
     values: dict
     cells: dict
     units: dict
+    factors: dict = None
 
     def __len__(self):
         return len(next(iter(self.values.values()))) if self.values else 0
@@ -74,6 +75,13 @@ class Table:
     def cell(self, name, index):
         """Coordinate of the value of column ``name`` in record ``index``."""
         return self.cells[name][index]
+
+    def written(self, name, index):
+        """The value of column ``name`` in record ``index`` in the unit of its header, as the
+        user wrote it (for error messages): ``"12 ft"``, or the bare number without a unit."""
+        value = float(self.values[name][index]) / ((self.factors or {}).get(name) or 1.0)
+        unit = self.units.get(name, "")
+        return f"{value:.10g} {unit}".strip() if unit and unit != "-" else value
 
 
 class WorkbookReader:
@@ -190,7 +198,8 @@ class WorkbookReader:
             kind = next(c.kind for c in spec.columns if c.name == name)
             arrays[name] = vals if kind in (TEXT, FLAG) else np.asarray(vals, dtype=float)
         units = {found[k][1].name: found[k][3] for k in found}
-        return Table(spec.name, arrays, cells, units)
+        factors = {found[k][1].name: found[k][2] for k in found}
+        return Table(spec.name, arrays, cells, units, factors)
 
     def _value(self, raw, column, factor, sheet, where):
         if column.kind == TEXT:

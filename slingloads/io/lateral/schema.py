@@ -57,50 +57,65 @@ PARAMETERS = (
 
 SHEETS = (
     TableSheet("LateralMotions", (
-        Column("id", TEXT, help="Unique name of the carrier motion."),
-        Column("type", TEXT, help="smooth step | constant acceleration | velocity step | "
+        Column("id", TEXT, help="Unique name of the carrier motion, e.g. STEP-0.1g-1s."),
+        Column("type", TEXT, help="Kind of motion of the hook (the carrier's cable end): "
+                                  "smooth step | constant acceleration | velocity step | "
                                   "time history."),
         Column("acceleration", "acceleration", "m/s^2", False, None,
                "Smooth step: peak lateral acceleration of the hook; constant acceleration: "
-               "the rate. Finite, not 0 (sign = direction). Any acceleration unit: m/s^2, "
-               "ft/s^2, or g0 (standard gravity; 'g' would be the gram)."),
+               "the rate. Finite, not 0; positive to the right (+y). Typical: 0.1 to 0.5 g0. "
+               "Any acceleration unit: m/s^2, ft/s^2, or g0 (standard gravity; 'g' would be "
+               "the gram)."),
         Column("duration", "time", "s", False, None,
                "Smooth step: time to complete the step; constant acceleration: time of the "
-               "acceleration phase. > 0."),
+               "acceleration phase. > 0. Typical: 0.5 to 5 s."),
         Column("amplitude", "length", "m", False, None,
-               "Smooth step only, instead of the acceleration: the step's displacement."),
+               "Smooth step only, instead of the acceleration: the step's lateral "
+               "displacement of the hook, positive to the right. Typical: 1 to 20 m."),
         Column("then", TEXT, required=False, default="",
                help="Constant acceleration only: 'hold' (keep the speed reached) or 'stop' "
                     "(decelerate at the same rate for the same time)."),
         Column("delta V", "speed", "m/s", False, None,
-               "Velocity step only: the hook's speed jump at t = 0, finite, not 0."),
+               "Velocity step only: the hook's lateral speed jump at t = 0, positive to the "
+               "right, finite, not 0. Typical: 0.5 to 2 m/s."),
         Column("history", TEXT, required=False, default="",
                help="Time history only: a 'history id' of the LateralHistory sheet, or a CSV "
                     "file (path relative to the workbook) with columns 't [s]' and 'S [m]' "
                     "(units in brackets, any of the right kind)."),
-        Column("description", TEXT, required=False, default="", help="Free text."),
+        Column("description", TEXT, required=False, default="",
+               help="Free text printed on the report."),
     ), help="Carrier (hook) lateral motions to sweep, each starting from hover at rest "
        "(docs/lateral-pendulum.md section 5). Must cover the manoeuvres of the operation being "
        "certified."),
     TableSheet("LateralHistory", (
-        Column("history id", TEXT, help="Name referred to by LateralMotions 'history'."),
-        Column("t", "time", "s", help="Sample time, strictly increasing within a history."),
-        Column("S", "length", "m", help="Lateral hook displacement, + right."),
+        Column("history id", TEXT, help="Name referred to by LateralMotions 'history', e.g. "
+                                        "REPOSITION."),
+        Column("t", "time", "s", help="Sample time from the start of the run (t = 0 at rest), "
+                                      "strictly increasing within a history. Typical: every "
+                                      "0.1 to 1 s over 10 to 30 s."),
+        Column("S", "length", "m", help="Lateral displacement of the hook from its start, "
+                                        "positive to the right (+y). Typical: 0 to 20 m."),
     ), help="Optional: measured or planned hook displacement histories, one block of rows per "
        "history id (natural cubic spline between samples)."),
     TableSheet("LateralRopes", (
         Column("rope length", "length", "ft",
-               help="Unstretched cable length, hook to hub, > 0 (paper: 18, 60, 100 ft)."),
-        Column("description", TEXT, required=False, default="", help="Free text."),
+               help="Unstretched cable length from the carrier's hook to the carried "
+                    "helicopter's hub, > 0. Typical: 18, 60, 100 ft (paper)."),
+        Column("description", TEXT, required=False, default="",
+               help="Free text printed on the report."),
     ), help="Rope (cable) lengths to sweep."),
     TableSheet("LateralBodies", (
-        Column("id", TEXT, help="Unique name of the mass case."),
-        Column("mass", "mass", "kg", help="Mass of the carried helicopter, > 0."),
+        Column("id", TEXT, help="Unique name of the mass case, e.g. HEAVY."),
+        Column("mass", "mass", "kg", help="Mass of the carried helicopter, > 0. Typical: "
+                                          "2,000 to 3,000 kg for a light twin."),
         Column("roll inertia", "inertia", "kg m^2",
-               help="Moment of inertia about the x axis through the CG, > 0."),
+               help="Roll moment of inertia about the x axis through the CG, > 0. Typical: "
+                    "about 900 kg m^2 for a 2.9 t light twin without blades."),
         Column("CG below hub", "length", "m",
-               help="Distance from the rotor hub down the mast to the CG, >= 0."),
-        Column("description", TEXT, required=False, default="", help="Free text."),
+               help="Distance from the rotor hub down the mast axis to the CG, >= 0 "
+                    "(positive: CG below the hub). Typical: about 1.1 m."),
+        Column("description", TEXT, required=False, default="",
+               help="Free text printed on the report."),
     ), help="Optional: mass-property cases (e.g. heaviest, lightest). Default: one body from "
        "MassItems: total mass, Ixx about the CG, CG below the hub along the mast."),
 )

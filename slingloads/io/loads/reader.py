@@ -143,26 +143,31 @@ def _previous(reader):
     for i in range(1, len(x)):
         if x[i] <= x[i - 1]:
             raise reader.error("previous envelope stations must be sorted by increasing x "
-                               "without repeats", float(x[i]), t.sheet, t.cell("x", i))
+                               "without repeats", t.written("x", i), t.sheet, t.cell("x", i))
     rows = []
     for name in COMPONENTS:
         lo, hi = t[f"{name} min"], t[f"{name} max"]
         for i in range(len(x)):
             if lo[i] > hi[i]:
-                raise reader.error(f"previous envelope: {name} min must not exceed {name} max",
-                                   float(lo[i]), t.sheet, t.cell(f"{name} min", i))
+                raise reader.error(f"previous envelope: {name} min must not exceed {name} max "
+                                   f"({t.written(f'{name} max', i)})",
+                                   t.written(f"{name} min", i), t.sheet,
+                                   t.cell(f"{name} min", i))
         rows.append(pd.DataFrame({"x [m]": x, "component": name, "min": lo, "max": hi}))
     return pd.concat(rows, ignore_index=True)
 
 
 def report_options(params, study):
     """The report options of the loads, checked for every workbook: the stations and
-    component pairs of the 2-D envelopes ('hull stations', 'hull pairs').
+    component pairs of the 2-D envelopes ('hull stations', 'hull pairs'), and the texts the
+    Summary quotes ('hook angle justification', 'previous envelope source').
 
     Returns
     -------
     dict
-        ``{"hull stations": [station id, ...], "hull pairs": [(component, component), ...]}``
+        ``{"hull stations": [station id, ...], "hull pairs": [(component, component), ...],
+        "hook angle justification": str, "previous envelope source": str,
+        "sfbm workbook": bool}``
     """
     airframe = study.airframe
     ids = list(airframe.station_ids)
@@ -189,4 +194,7 @@ def report_options(params, study):
         pairs.append(tuple(parts))
     if not pairs and params("hull pairs"):
         raise InputError("no hull pair given")
-    return {"hull stations": stations, "hull pairs": pairs}
+    return {"hull stations": stations, "hull pairs": pairs,
+            "hook angle justification": str(params("hook angle justification") or "").strip(),
+            "previous envelope source": str(params("previous envelope source") or "").strip(),
+            "sfbm workbook": bool(params("SFBM workbook"))}
