@@ -8,8 +8,9 @@
   CS 29.865, towed cables outside the hook cone, exceedances and where the previous envelope
   comes from, closure; study settings; the attitude and its vertical; the hook directions
   with the reduced ones; the towed cases' cable angles; closure check), *Inputs* (mass items,
-  cut stations, hardpoints), *LoadCases* (with each case's cable angle and inside-cone flag), *Envelope* (LIMIT max / min of each component at each station
-  with its critical case), *Correlated* (LIMIT envelope with the correlated loads of the
+  cut stations, hardpoints), *LoadCases* (with each case's cable angle and inside-cone
+  flag), *Envelope* (LIMIT max / min of each component at each station with its critical
+  case), *Correlated* (LIMIT envelope with the correlated loads of the
   critical case), *Exceedance* and *ExceedanceDetail* (ratio to the previous design
   envelope, red above 1, interpolated previous values marked), *Ultimate* (ULTIMATE =
   factor x LIMIT envelope), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
