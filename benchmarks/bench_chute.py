@@ -25,6 +25,7 @@ import numpy as np
 
 from slingloads.analyses.chute_sizing import neutral_area, sizing_sweep
 from slingloads.models.gusts import standard_gusts
+from slingloads.models.integration import SolverSettings
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import (
     sample_fin,
@@ -32,7 +33,7 @@ from slingloads.models.sample_aircraft import (
     sample_hardpoints,
     sample_reference,
 )
-from slingloads.models.yaw_dynamics import SolverSettings, YawModel, integrate_reference
+from slingloads.models.yaw_dynamics import YawModel, integrate_reference
 
 
 def main():
@@ -50,8 +51,8 @@ def main():
     static = neutral_area(model)
     gusts = standard_gusts()
     factors = np.linspace(1.0, 2.0, 100)
-    fast_settings = SolverSettings(t_end=120.0, dt=0.05, output_interval=0.1)
-    ref_settings = SolverSettings(t_end=120.0, dt=0.05, output_interval=0.1,
+    fast_settings = SolverSettings(t_end=120.0, step=0.05, output_interval=0.1)
+    ref_settings = SolverSettings(t_end=120.0, step=0.05, output_interval=0.1,
                                   rtol=1e-7, atol=1e-9)
 
     sizing_sweep(model, factors[:2], gusts, fast_settings, static=static)  # warm-up
@@ -75,7 +76,7 @@ def main():
 
     print(f"aircraft {args.aircraft}: neutral static area {static.area:.4f} m^2, "
           f"{n} runs ({factors.size} areas x {len(gusts)} gusts), 120 s each")
-    print(f"vectorised RK4 sweep (dt {fast_settings.dt} s, with metrics): {fast_time:8.3f} s")
+    print(f"vectorised RK4 sweep (dt {fast_settings.step} s, with metrics): {fast_time:8.3f} s")
     label = "" if chosen.size == n else f" (timed on {chosen.size} runs, extrapolated)"
     print(f"solve_ivp loop, one call per run (RK45, rtol {ref_settings.rtol:g}): "
           f"{slow_time:8.3f} s{label}")

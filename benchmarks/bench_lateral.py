@@ -33,7 +33,8 @@ from scipy.integrate import solve_ivp
 
 from slingloads.analyses.lateral import RunMetrics, default_end_time, sweep
 from slingloads.constants import FOOT, G0
-from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep
+from slingloads.models.carrier_motion import ConstantAcceleration, QuinticStep
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import LateralPendulum, SlungBody
 
 BODIES = [
@@ -51,7 +52,7 @@ def build_cases(runs, cable_ea):
     """Pendulums and motions of the sweep, ``runs`` of them (the full grid is 1,000)."""
     motions = []
     for a, d in itertools.product(ACCELERATIONS_G, DURATIONS):
-        motions.append(SmoothStep.from_peak_acceleration(a * G0, d))
+        motions.append(QuinticStep.from_peak_acceleration(a * G0, d))
         motions.append(ConstantAcceleration(a * G0, d, "hold"))
     grid = list(itertools.product(BODIES, ROPES_FT, motions))
     if runs > len(grid):
@@ -107,7 +108,7 @@ def main(argv=None):
           f"{t_end:.1f} s each")
 
     wall, cpu = time.perf_counter(), time.process_time()
-    metrics, h = sweep(pendulums, motions, t_end=t_end, step=args.step)
+    metrics, h = sweep(pendulums, motions, solver=SolverSettings(t_end=t_end, step=args.step))
     t_vec, c_vec = time.perf_counter() - wall, time.process_time() - cpu
     print(f"  vectorised RK4 (step {h:.4g} s): {t_vec:8.2f} s wall, {c_vec:8.2f} s CPU")
 

@@ -27,6 +27,9 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 OUT = HERE / "example-light-twin.xlsx"
 
+from example_inertia import NOTE as INERTIA_NOTE  # noqa: E402 (needs HERE on the path)
+from example_inertia import own_inertias  # noqa: E402
+
 # id, description, mass [kg], x, y, z [m]  (x aft from the nose, z up from the skid plane)
 MASS_ITEMS = [
     ("NOSE", "nose structure, avionics bay", 120, 0.80, 0.00, 0.90),
@@ -64,6 +67,7 @@ NOTES = [
     "Mass items: invented breakdown summing to 2900 kg with a fuselage about 11 m long, in the "
     "class of the EC135/H135 (MTOW 2630-2980 kg, length 12.26 m, FACTS: manufacturers' data) "
     "less its blades. Positions in inches, masses in pounds, to show US customary input.",
+    INERTIA_NOTE,
     "Aerodynamics: the GENERIC HC1 fuselage and fin tables of slingloads/data (SAMPLE_DATA.md): "
     "UH-60-class coefficient magnitudes scaled to a light twin; Prouty flat-plate areas. "
     "Fuselage forces in wind axes, moments in body axes, fin in body axes (Study rows "
@@ -88,7 +92,7 @@ NOTES = [
 def airframe():
     ids, desc, mass, x, y, z = zip(*MASS_ITEMS, strict=True)
     items = MassItems(ids, np.array(mass, float), np.column_stack([x, y, z]),
-                      description=desc)
+                      own_inertias(ids, mass), description=desc)
     cg = items.cg
     ref = sample_reference("HC1")
     hub = np.array([4.30, 0.0, 2.20])
@@ -146,6 +150,8 @@ def main():
         "x [in]": np.round(items.position[:, 0] / INCH, 2),
         "y [in]": np.round(items.position[:, 1] / INCH, 2),
         "z [in]": np.round(items.position[:, 2] / INCH, 2),
+        **{f"I{a}{a} [kg m^2]": np.round(items.inertia[:, j, j], 2)
+           for j, a in enumerate("xyz")},
     })
     stations = pd.DataFrame({"id": frame.station_ids,
                              "x [in]": np.round(frame.stations / INCH, 2)})

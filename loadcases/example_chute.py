@@ -25,13 +25,18 @@ from slingloads.analyses.chute_sizing import line_length, neutral_area
 from slingloads.constants import FOOT, KNOT
 from slingloads.models.aerodynamics import Fin
 from slingloads.models.airframe import yaw_inertia_about_hub
+from slingloads.models.flight import FlightCondition
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
 from slingloads.models.wake import TabulatedWake
-from slingloads.models.yaw_dynamics import FlightCondition, YawModel
+from slingloads.models.yaw_dynamics import YawModel
 
 #: Sizing airspeed of the example (the paper's 80 KIAS). [kt]
 AIRSPEED_KT = 80.0
+#: Half-width of the sideslip range of the linearisation: it covers the 12.5 deg that the
+#: 30 ft/s gust makes at 80 KIAS (a run that leaves the range is never called stable) and
+#: equals the loads' sideslip envelope (+-15 deg). [deg]
+LINEARISATION_DEG = 15.0
 #: Recommended area over the neutral area (paper: FPA + 40 %). [-]
 RECOMMENDED_FACTOR = 1.4
 #: Distance at which the generic wake reaches a q ratio of 0.95. [m]
@@ -55,16 +60,23 @@ PARAMETERS = {
     "chute sizing airspeed IAS": (AIRSPEED_KT, "kt"),
     "chute sizing density altitude": (0, "ft"),
     "chute sizing alpha trim": (0, "deg"),
-    "chute sizing linearisation range": (10, "deg"),
+    "chute sizing linearisation range": (LINEARISATION_DEG, "deg"),
     "chute sizing yaw inertia source": ("mass items", ""),
     "chute sizing wake source": ("table", ""),
     "chute sizing target q ratio": (0.95, ""),
     "chute sizing carrier cable length": (60, "ft"),
     "chute sizing cable margin": (0.20, ""),
-    "chute sizing gust shapes": ("step, finite, 1-cosine, continuous", ""),
+    "chute sizing gust shapes": ("step, finite, 1-cosine, continuous, turbulence", ""),
     "chute sizing gust amplitude": (30, "ft/s"),
     "chute sizing gust onset": (30, "s"),
     "chute sizing gust duration": (10, "s"),
+    "chute sizing gust rise time": (5, "s"),
+    "chute sizing harmonic period": (10, "s"),
+    "chute sizing turbulence altitude": (300, "ft"),
+    "chute sizing turbulence severity": ("moderate", ""),
+    "chute sizing turbulence duration": (60, "s"),
+    "chute sizing turbulence seed": (1, ""),
+    "chute sizing sideslip limit": (20, "deg"),
     "chute sizing simulation time": (120, "s"),
     "chute sizing time step": (0.1, "s"),
     "chute sizing area factor min": (1.0, ""),
@@ -75,11 +87,18 @@ PARAMETERS = {
 
 NOTES = [
     "Parachute sizing (sheet ChuteWake, Study rows 'chute sizing ...'): 80 KIAS ISA sea "
-    "level, HC1 fuselage and fin tables, yaw inertia from the mass items about the hub axis. "
+    "level, HC1 fuselage and fin tables, yaw inertia from the mass items about the hub axis, "
+    "tables linearised over +-15 deg so that the 30 ft/s gust's 12.5 deg of sideslip at 80 "
+    "kt lies inside the range (a run leaving it is never called stable). "
     "The ChuteWake table is a GENERIC ILLUSTRATIVE table, NOT CFD of any aircraft: the "
     "self-similar far-wake shape (defect ~ x^-2/3) with q ratio 0.95 placed at about 10 m "
     "(33 ft), so that the line and the 60 ft carrier cable fall in the paper's range (18-100 "
     "ft, cable >= 1.2 x line). Replace it with CFD or test data for a real study.",
+    "Gusts: the CS 29.341 30 ft/s gust as a step, the paper's 10 s 'impulsive' (finite) gust, "
+    "a 10 s 1-cosine, the paper's continuous gust (a sustained crosswind rising over 5 s, then "
+    "held), and 60 s of moderate Dryden turbulence at 300 ft above ground (MIL-F-8785C: "
+    "sigma_v 2.18 m/s, L_v 256 m; seed 1). Add 'harmonic' to the shapes for a resonance test "
+    "(a 10 s sine near the yaw period drives the sideslip past 40 deg).",
     "The 'parachute area' and 'parachute line length' rows are computed when the workbook is "
     "built (loadcases/example_chute.py): 1.4 x the neutral static area and the wake line.",
 ]
@@ -107,7 +126,8 @@ def parachute_size(frame, fin_cp, aero_ref):
     fin = Fin(sample_fin("HC1").table, ref.fin_area, fin_cp, ref.fin_efficiency)
     model = YawModel(fuselage, fin, frame.hardpoints, yaw_inertia_about_hub(frame),
                      FlightCondition(AIRSPEED_KT * KNOT), Parachute(1.0))
-    static = neutral_area(model)
+    half = np.radians(LINEARISATION_DEG)
+    static = neutral_area(model, (-half, half))
     wake = TabulatedWake(WAKE["distance [ft]"].to_numpy() * FOOT, WAKE["q ratio [-]"])
     line = line_length(wake).line_length
     return round(RECOMMENDED_FACTOR * static.area, 1), float(np.ceil(line * 10) / 10)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-#: Smooth (minimum-jerk) steps: peak accelerations [g] x durations [s].
+#: Quintic (minimum-jerk) steps: peak accelerations [g] x durations [s].
 STEP_ACCELERATIONS_G = (0.1, 0.25, 0.5)
 STEP_DURATIONS_S = (0.5, 1.0, 2.0)
 
@@ -19,7 +19,7 @@ def _motions():
     rows = []
     for a in STEP_ACCELERATIONS_G:
         for d in STEP_DURATIONS_S:
-            rows.append((f"STEP-{a:g}g-{d:g}s", "smooth step", a, d, None, None, None, None,
+            rows.append((f"STEP-{a:g}g-{d:g}s", "quintic step", a, d, None, None, None, None,
                          f"sidestep, peak {a:g} g, completed in {d:g} s"))
     rows += [
         ("ACC-0.1g-2s-HOLD", "constant acceleration", 0.1, 2.0, None, "hold", None, None,
@@ -62,6 +62,12 @@ PARAMETERS = {
     "run lateral": ("yes", ""),
     "lateral design-angle margin": (1.5, ""),
     "lateral cable model": ("rigid", ""),
+    "lateral damping source": ("aerodynamic tables", ""),
+    "lateral airspeed EAS": (0, "kt"),
+    "lateral roll inertia spread": (0.2, ""),
+    "lateral CG below hub spread": (0.2, ""),
+    "lateral rope length spread": (0.2, ""),
+    "lateral spread points": (3, ""),
     "lateral simulation time": (30, "s"),
     "lateral RK4 step": (0.05, "s"),
     "lateral history method": ("DOP853", ""),
@@ -71,17 +77,23 @@ PARAMETERS = {
 
 NOTES = [
     "Lateral-step pendulum (sheets LateralMotions, LateralHistory, LateralRopes; Study rows "
-    "'lateral ...'): the carried helicopter of the MassItems (mass, Ixx about the CG, CG below "
-    "the hub) on a rigid rope of 18, 60 and 100 ft (the paper's lengths) under ILLUSTRATIVE "
-    "carrier motions: smooth sidesteps of 0.5-2 s up to 0.5 g, a sudden start at 0.1 g, an "
-    "accelerate-then-brake at 0.3 g timed near half the short rope's swing period (the worst "
-    "timing: it pumps the swing), a 1 m/s velocity step and a planned 3 m reposition. They are "
-    "NOT a certified motion envelope: the motions swept must match the operation being "
-    "certified (accelerations, durations, and braking timed at half the swing period if the "
-    "operation allows it), or the recommended angle does not show that it 'cannot be exceeded "
-    "in service' (CS 29.865).",
+    "'lateral ...'): the carried helicopter of the MassItems (mass, Ixx about the CG, CG "
+    "below the hub) on a rigid rope of 18, 60 and 100 ft (the paper's lengths) under "
+    "ILLUSTRATIVE carrier motions: quintic (minimum-jerk) sidesteps of 0.5-2 s up to 0.5 g, a"
+    " sudden start at 0.1 g, an accelerate-then-brake at 0.3 g timed near half the short "
+    "rope's swing period (the worst timing: it pumps the swing), a 1 m/s velocity step and a "
+    "planned 3 m reposition. They are NOT a certified motion envelope: the motions swept must"
+    " match the operation being certified (accelerations, durations, and braking timed at "
+    "half the swing period if the operation allows it), or the recommended angle does not "
+    "show that it 'cannot be exceeded in service' (CS 29.865).",
+    "Uncertainty: roll inertia, CG distance below the hub and rope length each +-20 % "
+    "(three values each, 0.8, 1 and 1.2, every combination: 27 variants of every motion and "
+    "rope; three keep the example fast, a real study should use more, the default being "
+    "five, as a resonance can lie between them); the recommended angle is taken over that "
+    "envelope. Damping from the aerodynamic tables at 0 "
+    "kt: the paper's hover step, where there is no linear aerodynamic damping (zero).",
     "Solver: RK4 step 0.05 s over 30 s for the sweep, chosen for a fast example run (the "
     "report re-runs the critical case with solve_ivp, DOP853 rtol 1e-6, and shows the "
-    "difference, about 0.2 %); damping off (the paper's assumption). For a real study leave "
+    "difference); no damping in hover (the paper's assumption). For a real study leave "
     "'lateral RK4 step' and 'lateral simulation time' at 0 (automatic) or check convergence.",
 ]

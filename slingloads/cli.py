@@ -1,22 +1,28 @@
 """Command line: ``slingloads template | run | loads | lateral | chute``.
 
-Exit codes: 0 success, 2 bad input (nothing written), 1 an unexpected failure.
+Exit codes: 0 success; 2 bad input (a workbook or argument that breaks a stated rule: the
+message names the file, sheet, cell, value and rule); 1 a failure of the environment (an
+output folder that cannot be written, a full disk, a name too long) or an unexpected error;
+130 interrupted. In every failure nothing is written, and no Python traceback is shown unless
+``--debug`` is given.
 """
 
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
+import threading
 from contextlib import ExitStack
 from pathlib import Path
 
-from tqdm import tqdm
-
 from slingloads import __version__
-from slingloads.errors import ClosureError, InputError, SlingloadsError
+from slingloads.errors import ClosureError, InputError, OutputError
 from slingloads.io.analyses import ANALYSES as REGISTRY
 
 EXIT_BAD_INPUT = 2
+EXIT_ENVIRONMENT = 1
+EXIT_INTERRUPTED = 130
 
 #: Analyses the ``run`` command may perform, in order (from the registry
 #: :mod:`slingloads.io.analyses`): name -> (subcommand, compute(study) -> result,
@@ -29,12 +35,18 @@ ANALYSES = {a.name: (a.subcommand, a.compute, a.write) for a in REGISTRY}
 _BY_NAME = {a.name: a for a in REGISTRY}
 
 
+class _Terminated(BaseException):
+    """SIGTERM received: unwind (removing the staging folder) and exit."""
+
+
 def _parser():
     parser = argparse.ArgumentParser(
         prog="slingloads",
         description="Loads and dynamics of a helicopter carried as a sling load under another "
                     "rotorcraft, stabilised by a drogue parachute.")
     parser.add_argument("--version", action="version", version=f"slingloads {__version__}")
+    parser.add_argument("--debug", action="store_true",
+                        help="show the Python traceback of an unexpected error")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     t = sub.add_parser("template", help="write a blank, self-explaining input workbook",
                        description="Write a blank input workbook in which every sheet and "
@@ -42,6 +54,7 @@ def _parser():
     t.add_argument("out", metavar="OUT.xlsx", help="workbook to write (not overwritten if it "
                    "exists, unless --force)")
     t.add_argument("--force", action="store_true", help="replace an existing file")
+    _debug_option(t)
     runs = ", ".join(a.run_parameter for a in REGISTRY)
     commands = {"run": f"run every analysis the workbook asks for (Study sheet: {runs})",
                 **{a.subcommand: a.summary for a in REGISTRY}}
@@ -49,31 +62,84 @@ def _parser():
         p = sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".")
         p.add_argument("workbook", metavar="IN.xlsx", help="input workbook")
         p.add_argument("--out", metavar="DIR", default="reports",
-                       help="output directory (default: reports)")
+                       help="output folder (default: reports); the reports are published in "
+                            "it all at once, replacing the earlier reports of this input")
         p.add_argument("--units", choices=("SI", "US"), default="SI",
                        help="units of the Excel report (CSV files are always SI)")
         p.add_argument("--quiet", action="store_true", help="no progress bar")
+        _debug_option(p)
+        if name in ("run", "loads"):
+            p.add_argument("--nastran", action="store_true",
+                           help="also write IN-loads.bdf, the load cases as a Nastran input "
+                                "file in the units of --units (Study rows 'nastran ...')")
     return parser
+
+
+def _debug_option(parser):
+    parser.add_argument("--debug", action="store_true", default=argparse.SUPPRESS,
+                        help="show the Python traceback of an unexpected error")
 
 
 def main(argv=None):
     """Entry point of the ``slingloads`` command. Returns the exit code."""
     args = _parser().parse_args(argv)
+    previous = _on_sigterm()
     try:
         if args.command == "template":
             return _template(args)
         return _analyse(args)
-    except InputError as err:
-        print(f"slingloads: error: {err}", file=sys.stderr)
-        print("slingloads: nothing was written.", file=sys.stderr)
-        return EXIT_BAD_INPUT
-    except ClosureError as err:
-        print(f"slingloads: error: {err}", file=sys.stderr)
-        print("slingloads: nothing was written.", file=sys.stderr)
-        return EXIT_BAD_INPUT
-    except SlingloadsError as err:  # pragma: no cover - defensive
-        print(f"slingloads: error: {err}", file=sys.stderr)
-        return 1
+    except (InputError, ClosureError) as err:
+        return _fail(err, EXIT_BAD_INPUT)
+    except OutputError as err:
+        return _fail(err, EXIT_ENVIRONMENT)
+    except (KeyboardInterrupt, _Terminated):
+        print("\nslingloads: interrupted; nothing was written.", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except MemoryError:
+        return _fail("out of memory (the limits of slingloads.limits keep valid inputs far "
+                     "below this: is the machine short of memory?)", EXIT_ENVIRONMENT)
+    except RecursionError as err:
+        return _unexpected(err, args)
+    except Exception as err:  # noqa: BLE001 - the last guard: never a traceback for a user
+        return _unexpected(err, args)
+    finally:
+        _restore_sigterm(previous)
+
+
+def _fail(err, code):
+    print(f"slingloads: error: {err}", file=sys.stderr)
+    print("slingloads: nothing was written.", file=sys.stderr)
+    return code
+
+
+def _unexpected(err, args):
+    if getattr(args, "debug", False):
+        raise err
+    text = " ".join(str(err).split())[:300]
+    print(f"slingloads: error: unexpected {type(err).__name__}: {text}", file=sys.stderr)
+    print("slingloads: nothing was written. This is a bug or a problem of the environment; "
+          "run again with --debug to see the traceback, and report it with the input.",
+          file=sys.stderr)
+    return EXIT_ENVIRONMENT
+
+
+def _on_sigterm():
+    """Turn SIGTERM into an exception so that the staging folder is removed on the way out."""
+    if threading.current_thread() is not threading.main_thread():
+        return None
+
+    def handler(signum, frame):
+        raise _Terminated()
+
+    try:
+        return signal.signal(signal.SIGTERM, handler)
+    except (ValueError, OSError):  # pragma: no cover
+        return None
+
+
+def _restore_sigterm(previous):
+    if previous is not None:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _template(args):
@@ -82,6 +148,8 @@ def _template(args):
     out = Path(args.out)
     if out.suffix.lower() != ".xlsx":
         raise InputError("the template must be an .xlsx file", str(out))
+    if out.is_dir():
+        raise OutputError("the template path is a folder", out)
     if out.exists() and not args.force:
         raise InputError("file exists; use --force to replace it", str(out))
     write_input_workbook(out)
@@ -100,8 +168,35 @@ def _selected(args, study):
     return [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
 
 
+def _outputs(args, study, names):
+    """The run's output set, checked before anything is computed: the output folder can be
+    written, no input would be replaced, no name is too long."""
+    from slingloads.io.common.atomic import AtomicOutputs
+
+    stem = Path(args.workbook).stem
+    chosen = [a for a in REGISTRY if a.name in names]
+    # `run` publishes the whole report of the input: it replaces the earlier files of every
+    # analysis; a single-analysis command replaces those of its analysis only
+    replaced = REGISTRY if args.command == "run" else chosen
+    patterns = [p for a in replaced for p in a.output_patterns(stem)]
+    outputs = AtomicOutputs(args.out, inputs=study.input_files, replaces=patterns)
+    outputs.check([n for a in chosen for n in a.output_names(stem)])
+    return outputs, stem
+
+
+def _ask_nastran(study, names):
+    """--nastran: the loads report writes the Nastran file (the loads analysis must run)."""
+    if "loads" not in names:
+        raise InputError("--nastran writes the load cases as Nastran bulk data, but the "
+                         "workbook does not run the loads analysis (Study sheet: 'run loads')",
+                         file=study.path, sheet="Study")
+    study.options["nastran"] = True
+
+
 def _analyse(args):
-    from slingloads.io.common.atomic import atomic_outputs
+    from tqdm import tqdm
+
+    from slingloads.io.consistency import consistency_checks
     from slingloads.io.study import read_study
 
     show = not args.quiet
@@ -112,6 +207,9 @@ def _analyse(args):
             only = [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
         study = read_study(args.workbook, only=only)
         names = _selected(args, study)
+        if getattr(args, "nastran", False):
+            _ask_nastran(study, names)
+        outputs, stem = _outputs(args, study, names)
         bar.total = 2 + 2 * len(names)
         bar.update(1)
         results, figures = {}, {}
@@ -124,20 +222,23 @@ def _analyse(args):
                 if figures[name] is not None:
                     drawing.enter_context(figures[name])
                 bar.update(1)
+            checks = consistency_checks(results)
             study.results.update(results)  # a report may quote another analysis's result
-            stem = Path(args.workbook).stem
             # one set of outputs for every analysis: all published together, or none
-            with atomic_outputs(args.out, inputs=[args.workbook]) as outputs:
+            with outputs:
                 for name in names:
                     bar.set_description(f"writing {name}")
+                    extra = {"checks": checks[name]} if name in checks else {}
                     ANALYSES[name][2](results[name], outputs, stem, args.units, study,
-                                      figures=figures[name])
+                                      figures=figures[name], **extra)
                     bar.update(1)
         written = outputs.written
         bar.update(1)
         bar.set_description("done")
     for path in written:
         print(f"wrote {path}")
+    for text in study.warnings:
+        print(f"slingloads: warning: {text}", file=sys.stderr)
     return 0
 
 

@@ -2,7 +2,10 @@
 
 Every error raised on bad input is an :class:`InputError` (a ``ValueError``). When the
 input came from a workbook the error carries the file, sheet and cell, the offending value
-and the rule it broke, so that the message can be acted on without a debugger.
+as the user wrote it (with the unit of its header or unit cell) and the rule it broke, so that
+the message can be acted on without a debugger. An :class:`OutputError` is a failure of the
+environment (an output folder that cannot be written, a full disk, a name too long for the
+file system); the command line exits with code 2 for the first and 1 for the second.
 """
 
 from __future__ import annotations
@@ -23,25 +26,49 @@ class InputError(SlingloadsError, ValueError):
         The offending value, echoed with ``repr``.
     file, sheet, cell : str, optional
         Where the value was read from, when it came from a workbook or CSV file.
+    unit : str, optional
+        Unit in which ``value`` is given (the user's unit for a value read from a workbook).
+    field : str, optional
+        Name of the model argument that holds the value (``"mass"``, ``"angle"``), so that a
+        reader can locate an error a model raised at the cell the value came from.
+    index : int, optional
+        Index of the record (row) of ``field`` that holds the value.
     """
 
-    def __init__(self, rule, value=None, *, file=None, sheet=None, cell=None):
+    def __init__(self, rule, value=None, *, file=None, sheet=None, cell=None, unit=None,
+                 field=None, index=None):
         self.rule = rule
         self.value = value
         self.file = file
         self.sheet = sheet
         self.cell = cell
+        self.unit = unit
+        self.field = field
+        self.index = index
         super().__init__(self._message())
 
-    def located(self, *, file=None, sheet=None, cell=None):
-        """Return a copy of this error with its location filled in where still unknown."""
+    def located(self, *, file=None, sheet=None, cell=None, value=None, unit=None):
+        """Return a copy of this error with its location filled in where still unknown.
+
+        ``value`` and ``unit`` (the value as the user wrote it) replace the error's own only
+        when the cell is filled in here, that is when the value is known to come from it.
+        """
+        replace = cell is not None and self.cell is None and value is not None
         return type(self)(
             self.rule,
-            self.value,
+            value if replace else self.value,
             file=self.file or file,
             sheet=self.sheet or sheet,
             cell=self.cell or cell,
+            unit=unit if replace else self.unit,
+            field=self.field,
+            index=self.index,
         )
+
+    @property
+    def location(self):
+        """``(file, sheet, cell)``."""
+        return self.file, self.sheet, self.cell
 
     def _message(self):
         where = []
@@ -52,7 +79,10 @@ class InputError(SlingloadsError, ValueError):
         if self.cell:
             where.append(f"cell {self.cell}")
         prefix = ", ".join(where)
-        value = "" if self.value is None else f": value {self.value!r}"
+        value = ""
+        if self.value is not None:
+            unit = f" [{self.unit}]" if self.unit else ""
+            value = f": value {self.value!r}{unit}"
         text = f"{self.rule}{value}"
         return f"{prefix}: {text}" if prefix else text
 
@@ -63,3 +93,23 @@ class UnitError(InputError):
 
 class ClosureError(SlingloadsError):
     """A load case whose free-free internal loads do not close to zero within tolerance."""
+
+
+class OutputError(SlingloadsError, OSError):
+    """The outputs cannot be written: a failure of the environment, not of the input.
+
+    Parameters
+    ----------
+    rule : str
+        What went wrong and what to do about it.
+    path : str, optional
+        The path concerned.
+    """
+
+    def __init__(self, rule, path=None):
+        self.rule = rule
+        self.path = None if path is None else str(path)
+        super().__init__(f"{rule}: {self.path}" if self.path else rule)
+
+    def __str__(self):
+        return f"{self.rule}: {self.path}" if self.path else self.rule

@@ -8,8 +8,9 @@ from scipy.integrate import cumulative_trapezoid
 from slingloads.errors import InputError
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
+    CycloidalStep,
     MotionBatch,
-    SmoothStep,
+    QuinticStep,
     TimeHistory,
     VelocityStep,
     make_motion,
@@ -21,10 +22,10 @@ def _integrate_twice(t, acc):
     return cumulative_trapezoid(vel, t, initial=0.0), vel
 
 
-def test_smooth_step_closed_form():
+def test_quintic_step_closed_form():
     """Quintic minimum-jerk step: S(T) = A, S'(T) = S''(T) = 0, S(T/2) = A/2, and peak
     acceleration (10/sqrt 3) A/T^2 at tau = (3 - sqrt 3)/6 (from d3S/dt3 = 0 by hand)."""
-    step = SmoothStep(amplitude=12.0, duration=3.0)
+    step = QuinticStep(amplitude=12.0, duration=3.0)
     s, v, a = step.kinematics(np.array([3.0, 1.5, 10.0]))
     assert_allclose(s, [12.0, 6.0, 12.0], rtol=1e-14)
     assert_allclose(v[[0, 2]], 0.0, atol=1e-14)
@@ -33,12 +34,38 @@ def test_smooth_step_closed_form():
     assert step.acceleration(tau * 3.0) == pytest.approx(10.0 / np.sqrt(3.0) * 12.0 / 9.0,
                                                            rel=1e-12)
     assert step.peak_acceleration == pytest.approx(10.0 / np.sqrt(3.0) * 12.0 / 9.0, rel=1e-12)
-    made = SmoothStep.from_peak_acceleration(4.9, 2.0)
+    made = QuinticStep.from_peak_acceleration(4.9, 2.0)
     assert made.peak_acceleration == pytest.approx(4.9, rel=1e-12)
 
 
+def test_cycloidal_step_closed_form():
+    """Cycloidal step S = A (tau - sin(2 pi tau)/(2 pi)) by hand, A = 12 m, T = 3 s:
+    S(T) = A, S(T/2) = A/2, S(T/4) = A (1/4 - 1/(2 pi)) = 1.09014 m; S' = A/T (1 - cos 2 pi
+    tau), 8 m/s at T/2 (= 2 A/T); S'' = 2 pi A/T^2 sin 2 pi tau, peak 2 pi x 12/9 =
+    8.37758 m/s^2 at T/4, zero at both ends and at T/2."""
+    step = CycloidalStep(amplitude=12.0, duration=3.0)
+    s, v, a = step.kinematics(np.array([0.75, 1.5, 3.0, 10.0]))
+    assert_allclose(s, [12.0 * (0.25 - 1.0 / (2.0 * np.pi)), 6.0, 12.0, 12.0], rtol=1e-14)
+    assert_allclose(v, [4.0, 8.0, 0.0, 0.0], atol=1e-13)
+    assert_allclose(a, [8.37758040957278, 0.0, 0.0, 0.0], atol=1e-12)
+    assert step.peak_acceleration == pytest.approx(2.0 * np.pi * 12.0 / 9.0, rel=1e-14)
+    assert CycloidalStep.from_peak_acceleration(4.9, 2.0).amplitude == pytest.approx(
+        4.9 * 4.0 / (2.0 * np.pi), rel=1e-14)
+    assert step.breakpoints == (0.0, 3.0)
+
+
+def test_steps_are_named_for_their_laws():
+    """Each step is named for its law; the quintic step's former name is still read."""
+    assert make_motion("smooth_step", amplitude=1.0, duration=2.0) == QuinticStep(1.0, 2.0)
+    assert make_motion("cycloidal_step", amplitude=1.0, duration=2.0) == CycloidalStep(1.0,
+                                                                                       2.0)
+    assert "cycloidal step" in CycloidalStep(1.0, 2.0).describe()
+    assert "quintic step" in QuinticStep(1.0, 2.0).describe()
+
+
 @pytest.mark.parametrize("motion", [
-    SmoothStep(5.0, 2.0),
+    QuinticStep(5.0, 2.0),
+    CycloidalStep(-4.0, 1.5),
     ConstantAcceleration(2.0, 1.5, "hold"),
     ConstantAcceleration(-3.0, 1.0, "stop"),
 ])
@@ -72,10 +99,10 @@ def test_velocity_step():
     assert step.velocity_jump == 3.0
 
 
-def test_time_history_reproduces_a_sampled_smooth_step():
-    """A finely sampled smooth step fed back as a time history: the spline passes through the
+def test_time_history_reproduces_a_sampled_quintic_step():
+    """A finely sampled quintic step fed back as a time history: the spline passes through the
     samples and its acceleration matches the analytic quintic's to 1 % of the peak."""
-    step = SmoothStep(10.0, 4.0)
+    step = QuinticStep(10.0, 4.0)
     t = np.linspace(0.0, 6.0, 601)
     history = TimeHistory(t + 2.0, step.displacement(t) + 1.0)  # shifted to start at 0, 0
     assert_allclose(history.displacement(t), step.displacement(t), atol=1e-12)
@@ -89,10 +116,10 @@ def test_time_history_reproduces_a_sampled_smooth_step():
 
 def test_motion_batch_matches_closed_forms():
     """A batch of mixed motions evaluated at one time equals each motion's closed form:
-    S'' = a for constant acceleration, dV t for the velocity step, A/2 at mid smooth step."""
+    S'' = a for constant acceleration, dV t for the velocity step, A/2 at mid quintic step."""
     history = TimeHistory([0.0, 1.0, 2.0], [0.0, 0.0, 0.0])
     motions = [ConstantAcceleration(1.0, 2.0), ConstantAcceleration(-2.0, 2.0, "stop"),
-               VelocityStep(4.0), SmoothStep(6.0, 1.0), history, history]
+               VelocityStep(4.0), QuinticStep(6.0, 1.0), history, history]
     s, v, a = MotionBatch(motions).kinematics(0.5)
     assert_allclose(a[:2], [1.0, -2.0])
     assert_allclose(s[2:4], [2.0, 3.0])
@@ -110,7 +137,7 @@ def test_make_motion_by_name():
     (lambda: make_motion("zigzag", duration=1.0), r"unknown carrier motion type.*'zigzag'"),
     (lambda: make_motion("smooth_step", amplitude=1.0, duration=1.0, speed=3.0),
      r"unknown parameter: value 'speed'"),
-    (lambda: SmoothStep(1.0, 0.0), r"duration must be > 0 \[s\]: value 0.0"),
+    (lambda: QuinticStep(1.0, 0.0), r"duration must be > 0 \[s\]: value 0.0"),
     (lambda: ConstantAcceleration(1.0, -2.0), r"duration must be > 0 \[s\]: value -2.0"),
     (lambda: ConstantAcceleration(1.0, 2.0, "coast"), r"valid options.*'coast'"),
     (lambda: VelocityStep(float("nan")), r"velocity step must be a finite number"),

@@ -23,9 +23,10 @@ from slingloads.constants import FOOT, KNOT
 from slingloads.io.chute.report import PLOTS, compute
 from slingloads.io.study import read_study
 from slingloads.models.aerodynamics import Fin, FuselageAero
+from slingloads.models.flight import FlightCondition
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
-from slingloads.models.yaw_dynamics import FlightCondition, YawModel
+from slingloads.models.yaw_dynamics import YawModel
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem
@@ -62,7 +63,9 @@ def test_neutral_area_workbook_equals_api(study, result):
         (items.position[:, 0] - hub[0]) ** 2 + (items.position[:, 1] - hub[1]) ** 2)))
     model = YawModel(fuselage, fin, frame.hardpoints, inertia, FlightCondition(80 * KNOT),
                      Parachute(1.0))
-    api = neutral_area(model)
+    half = np.radians(15.0)                        # the example's linearisation range
+    api = neutral_area(model, (-half, half))
+    assert result.inputs.fit_range == pytest.approx((-half, half), rel=1e-12)
     assert result.inputs.model.yaw_inertia == pytest.approx(inertia, rel=1e-12)
     assert result.static.area == pytest.approx(api.area, rel=1e-9)
     assert result.static.area > 0
@@ -92,7 +95,7 @@ def test_report_reads_back(run_dir, result):
     runs = sweep.iloc[head + 1:].copy()
     runs.columns = sweep.iloc[head]
     api = result.sweep.to_frame()
-    assert len(runs) == len(api) == 24
+    assert len(runs) == len(api) == 30                # 6 areas x 5 gust shapes
     np.testing.assert_allclose(runs["peak beta [deg]"].astype(float), api["peak beta [deg]"],
                                rtol=1e-12)
     assert list(runs["verdict"]) == list(api["verdict"])
@@ -190,10 +193,43 @@ def test_non_monotonic_wake_table(tmp_path, capsys):
 
 
 def test_unknown_gust_shape(tmp_path, capsys):
-    """Rule: gust shapes among step, finite, 1-cosine, continuous."""
+    """Rule: gust shapes among step, finite, 1-cosine, continuous, harmonic, turbulence."""
     name = "chute sizing gust shapes"
     _bad(tmp_path, capsys, {("Study", name): "step, gusty"}, "Study", name,
-         "unknown gust shape", "'gusty'", "1-cosine")
+         "unknown gust shape", "'gusty'", "1-cosine", "harmonic", "turbulence")
+
+
+@pytest.mark.parametrize("name, value, fragments", [
+    ("chute sizing gust rise time", -2, ("must be >= 0", "-2")),
+    ("chute sizing harmonic period", 0, ("must be > 0",)),
+    ("chute sizing turbulence altitude", 2000, ("10 to 1000 ft", "above ground")),
+    ("chute sizing turbulence severity", "extreme", ("valid values", "'moderate'")),
+    ("chute sizing turbulence duration", 100, ("before the end of the simulation",)),
+    ("chute sizing sideslip limit", 0, ("must be > 0",)),
+])
+def test_bad_gust_and_limit_rows(tmp_path, capsys, name, value, fragments):
+    """Rules of the gust rows: a rise time is >= 0, a period > 0; the Dryden turbulence's
+    height lies in the MIL-F-8785C low-altitude range (10 to 1000 ft), its severity is light,
+    moderate or severe, and it ends before the run does (onset 30 s + 100 s > 120 s); the
+    sideslip limit is > 0. Each error names the row's cell."""
+    _bad(tmp_path, capsys, {("Study", name): value}, "Study", name, *fragments)
+
+
+def test_gust_shapes_in_the_report(run_dir, result):
+    """The Sweep sheet lists every gust shape read; each gust angle is atan(peak / V_TAS)
+    (80 kt at sea level: V = 41.156 m/s; the 30 ft/s gust: atan(9.144/41.156) = 12.53 deg),
+    and the turbulence's intensity is MIL-F-8785C's at 300 ft, moderate (2.18 m/s)."""
+    frame = result.sweep.gust_frame()
+    assert list(frame["shape"]) == ["step", "finite", "1-cosine", "continuous", "turbulence"]
+    assert frame["gust angle [deg]"][0] == pytest.approx(12.53, abs=0.01)
+    tas = result.inputs.model.condition.tas
+    np.testing.assert_allclose(np.tan(np.radians(frame["gust angle [deg]"])),
+                               frame["peak gust [m/s]"] / tas, rtol=1e-12)
+    turbulence = result.inputs.gusts[-1]
+    assert turbulence.intensity == pytest.approx(2.1755, rel=1e-4)
+    sheet = pd.read_excel(run_dir / f"{STEM}-chute.xlsx", sheet_name="Sweep", header=None)
+    assert "Gust shapes" in set(sheet[0].astype(str))
+    assert "turbulence" in set(sheet[0].astype(str))
 
 
 def test_gust_after_the_end(tmp_path, capsys):

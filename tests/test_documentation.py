@@ -36,3 +36,15 @@ def test_readme_api_example_is_short():
     """The README's API example stays short: at most 15 lines."""
     blocks = python_blocks(ROOT / "README.md")
     assert len(blocks[0].strip().splitlines()) <= 15
+
+
+def test_every_limit_is_documented():
+    """Every limit of slingloads/limits.py is named, with its reason, on the inputs and
+    outputs page (the reference: the page promises to state them all)."""
+    import slingloads.limits as limits
+
+    page = (ROOT / "docs" / "inputs-and-outputs.md").read_text(encoding="utf-8")
+    names = [n for n in vars(limits) if n.startswith(("MAX_", "MIN_"))]
+    assert names
+    missing = [n for n in names if f"`{n}`" not in page]
+    assert not missing, missing

@@ -146,10 +146,12 @@ def test_hostile_text_from_the_workbook_stays_text(tmp_path):
     assert all(c.data_type == "s" for c in cells)
 
 
-def test_run_publishes_all_analyses_or_none(tmp_path, monkeypatch):
+def test_run_publishes_all_analyses_or_none(tmp_path, monkeypatch, capsys):
     """If one analysis fails while writing, no analysis's file is published (the loads
     report, written first, is not left alone in the output directory) and an earlier file at
-    the same path is intact: `run` publishes its outputs as one set."""
+    the same path is intact: `run` publishes its outputs as one set. The unexpected error
+    ends in a one-line message and exit code 1, not a traceback, and no staging folder is
+    left beside the output folder."""
     from slingloads import cli
 
     def failing_writer(result, out_dir, stem, units, study, figures=None):
@@ -161,7 +163,8 @@ def test_run_publishes_all_analyses_or_none(tmp_path, monkeypatch):
     out = tmp_path / "reports"
     out.mkdir()
     (out / "example-light-twin-loads.xlsx").write_bytes(b"earlier")
-    with pytest.raises(RuntimeError, match="disk full"):
-        main(["run", str(EXAMPLE), "--out", str(out), "--quiet"])
+    assert main(["run", str(EXAMPLE), "--out", str(out), "--quiet"]) == 1
+    assert "disk full" in capsys.readouterr().err
     assert [p.name for p in out.iterdir()] == ["example-light-twin-loads.xlsx"]
     assert (out / "example-light-twin-loads.xlsx").read_bytes() == b"earlier"
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".slingloads-")]

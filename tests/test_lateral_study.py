@@ -10,7 +10,7 @@ from scipy.special import ellipk
 
 from slingloads.analyses.lateral import (
     REGULATORY_ANGLE,
-    SolverSettings,
+    ParameterRanges,
     acceleration_sweep,
     lateral_study,
     simulate,
@@ -21,10 +21,11 @@ from slingloads.errors import InputError
 from slingloads.io.lateral.plots import plot_max_angle_vs_acceleration, plot_time_histories
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
-    SmoothStep,
+    QuinticStep,
     TimeHistory,
     VelocityStep,
 )
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import LateralPendulum, SlungBody
 
 UH60 = SlungBody(7439.0, 7632.0, 1.722, "UH-60A")   # NASA TM 85890
@@ -38,19 +39,20 @@ def test_vectorised_sweep_agrees_with_solve_ivp():
     per-run solve_ivp (DOP853, rtol 1e-10) within 0.1 %, for rigid and elastic cables and every
     kind of carrier motion (the accuracy the benchmark's 10x claim is made at)."""
     t = np.linspace(0.0, 4.0, 41)
-    history = TimeHistory(t, SmoothStep(3.0, 4.0).displacement(t), name="sampled step")
+    history = TimeHistory(t, QuinticStep(3.0, 4.0).displacement(t), name="sampled step")
     cases = [
-        (LateralPendulum(UH60, ROPES[0]), SmoothStep.from_peak_acceleration(0.3 * G0, 2.0)),
+        (LateralPendulum(UH60, ROPES[0]), QuinticStep.from_peak_acceleration(0.3 * G0, 2.0)),
         (LateralPendulum(BO105, ROPES[1]), ConstantAcceleration(0.5 * G0, 1.0, "stop")),
         (LateralPendulum(UH60, ROPES[0], cable_ea=2e7), ConstantAcceleration(2.0, 3.0)),
         (LateralPendulum(BO105, ROPES[0], cable_ea=2e7), VelocityStep(2.0)),
         (LateralPendulum(UH60, ROPES[1]), history),
     ]
     pendulums, motions = zip(*cases, strict=True)
-    metrics, _ = sweep(pendulums, motions, t_end=12.0)
-    solver = SolverSettings("DOP853", rtol=1e-10, atol=1e-12, output_step=0.002)
+    metrics, _ = sweep(pendulums, motions, solver=SolverSettings(t_end=12.0))
+    solver = SolverSettings(t_end=12.0, output_interval=0.002, method="DOP853", rtol=1e-10,
+                            atol=1e-12)
     for i, (p, m) in enumerate(cases):
-        ref = simulate(p, m, t_end=12.0, solver=solver).metrics
+        ref = simulate(p, m, solver=solver).metrics
         assert metrics.max_load_angle[i] == pytest.approx(ref.max_load_angle, rel=1e-3)
         assert metrics.max_rope_angle[i] == pytest.approx(ref.max_rope_angle, rel=1e-3)
         assert metrics.max_tension_ratio[i] == pytest.approx(ref.max_tension_ratio, rel=1e-3)
@@ -61,7 +63,8 @@ def test_vectorised_sweep_agrees_with_solve_ivp():
 def point_mass_study():
     accelerations = [0.1 * G0, 0.3 * G0, 0.5 * G0]
     motions = [ConstantAcceleration(a, 100.0) for a in accelerations]  # held throughout
-    return lateral_study([POINT], ROPES, motions, margin=1.25, t_end=12.0)
+    return lateral_study([POINT], ROPES, motions, margin=1.25,
+                         ranges=ParameterRanges.nominal(), solver=SolverSettings(t_end=12.0))
 
 
 def test_point_mass_study_against_closed_form(point_mass_study):
@@ -91,7 +94,9 @@ def test_study_outputs_layout(point_mass_study):
     """The study's frames: one row per case (1 body x 3 ropes x 3 motions), unit-labelled
     columns, a summary with the recommended angle beside the 30 deg, an envelope per rope."""
     frames = point_mass_study.frames()
-    assert set(frames) == {"lateral summary", "lateral runs", "lateral envelope"}
+    assert set(frames) == {"lateral summary", "lateral runs", "lateral cases", "lateral envelope",
+                           "lateral sensitivity", "lateral tension", "lateral ranges",
+                           "lateral damping"}
     runs = frames["lateral runs"]
     assert len(runs) == 9
     for column in ("rope length [m]", "mass [kg]", "max |theta1 - theta2| [deg]",
@@ -102,6 +107,59 @@ def test_study_outputs_layout(point_mass_study):
     assert summary.loc["recommended design angle", "unit"] == "deg"
     assert len(frames["lateral envelope"]) == 9
     assert all(len(name) <= 31 for name in frames)  # Excel sheet-name limit
+
+
+def test_envelope_over_the_ranges_is_the_maximum_of_the_separate_studies():
+    """Bookkeeping of the ranges: the study over +-20 % of roll inertia, CG below hub and
+    rope length (factors 0.8, 1, 1.2 each) gives, for every combination, the same peaks as
+    the scaled bodies and ropes built here by hand and swept; its envelope is their maximum,
+    its 'others nominal' sensitivity rows are the one-at-a-time studies, and its nominal
+    maximum is the nominal study's."""
+    motion = QuinticStep.from_peak_acceleration(0.3 * G0, 1.5)
+    solver = SolverSettings(t_end=6.0, step=0.01)
+    ranges = ParameterRanges(points=3)
+    study = lateral_study([BO105], [ROPES[0]], [motion], margin=1.0, ranges=ranges,
+                          solver=solver)
+    assert len(study.pendulums) == 27
+    keys = [(fi, fe, fl) for fi in (0.8, 1.0, 1.2) for fe in (0.8, 1.0, 1.2)
+            for fl in (0.8, 1.0, 1.2)]
+    pendulums = [LateralPendulum(SlungBody(BO105.mass, BO105.roll_inertia * fi,
+                                           BO105.cg_below_hub * fe), ROPES[0] * fl)
+                 for fi, fe, fl in keys]
+    one_by_one, _ = sweep(pendulums, [motion] * len(keys), solver=solver)
+    separate = dict(zip(keys, one_by_one.max_load_angle, strict=True))
+    found = {tuple(np.round(f, 12)): a for f, a in zip(study.factors,
+                                                      study.metrics.max_load_angle,
+                                                      strict=True)}
+    for key, angle in separate.items():
+        assert found[key] == pytest.approx(angle, rel=1e-12)
+    assert study.max_load_angle == pytest.approx(max(separate.values()), rel=1e-12)
+    assert study.nominal_max_load_angle == pytest.approx(separate[1.0, 1.0, 1.0], rel=1e-12)
+    sens = study.sensitivity_frame()
+    row = sens[(sens["parameter"] == "roll inertia") & (sens["factor [-]"] == 0.8)].iloc[0]
+    assert row["max load angle, others nominal [deg]"] == pytest.approx(
+        np.degrees(separate[0.8, 1.0, 1.0]), rel=1e-12)
+    assert row["max load angle, others over their ranges [deg]"] == pytest.approx(
+        np.degrees(max(a for k, a in separate.items() if k[0] == 0.8)), rel=1e-12)
+
+
+def test_tension_factor_against_the_hook_load_factor():
+    """Point mass, hook speed step dV: the tension at the bottom of the swing is
+    m (g + dV^2/L) (FACTS 5), so T/(m g) = 1 + dV^2/(g L): 2.0 for dV = sqrt(g L), 3.0 for
+    dV = sqrt(2 g L). Against Nz = 2.5 the second exceeds and is flagged, the first not; a
+    load angle over 30 deg makes the study say the 30 deg rule is not conservative."""
+    length = ROPES[0]
+    motions = [VelocityStep(np.sqrt(G0 * length)), VelocityStep(np.sqrt(2 * G0 * length))]
+    study = lateral_study([POINT], [length], motions, margin=1.0, hook_load_factor=2.5,
+                          ranges=ParameterRanges.nominal(), solver=SolverSettings(t_end=4.0))
+    assert_allclose(study.metrics.max_tension_ratio, [2.0, 3.0], rtol=1e-3)
+    assert list(study.exceeds_hook_load_factor) == [False, True]
+    table = study.tension_frame()
+    assert list(table["T/(m g) above Nz [-]"]) == [False, True]
+    summary = study.summary_frame().set_index("quantity")["value"]
+    assert summary["cases with T/(m g) above Nz"] == 1
+    assert study.regulatory_angle_not_conservative   # the swings reach 60 and 90 deg
+    assert "NOT conservative" in study.verdict()
 
 
 def test_run_case_time_histories(point_mass_study):
@@ -131,7 +189,7 @@ def test_acceleration_sweep_peaks():
     ({"margin": 1.5, "rope_lengths": [18.0, 0.0]}, r"rope length must be > 0 \[m\]: value 0.0"),
     ({"margin": 1.5, "motions": []}, r"at least one motion"),
     ({"margin": 1.5, "bodies": [1000.0]}, r"SlungBody.*'float'"),
-    ({"margin": 1.5, "t_end": -1.0}, r"t_end must be > 0 \[s\]: value -1.0"),
+    ({"margin": 1.5, "solver": 12.0}, r"must be a SolverSettings: value 'float'"),
 ])
 def test_bad_study_input(kwargs, match):
     """Bad study input raises InputError naming the rule and echoing the value."""
@@ -145,7 +203,8 @@ def test_plots_draw_the_results(point_mass_study):
     """The plots draw the data they are given: the load-angle curve is the run's
     theta1 - theta2 in degrees, the 30 deg line is drawn, and the envelope plot has one line
     per rope length at the closed-form 2 atan(a/g)."""
-    run = simulate(LateralPendulum(UH60, ROPES[0]), SmoothStep(5.0, 2.0), t_end=8.0)
+    run = simulate(LateralPendulum(UH60, ROPES[0]), QuinticStep(5.0, 2.0),
+                   solver=SolverSettings(t_end=8.0))
     fig = plot_time_histories(run)
     assert isinstance(fig, Figure)
     lines = fig.axes[0].get_lines()

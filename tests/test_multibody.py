@@ -30,8 +30,10 @@ from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
-from slingloads.models.carrier_motion import SmoothStep
+from slingloads.models.carrier_motion import QuinticStep
+from slingloads.models.flight import FlightCondition
 from slingloads.models.gusts import FiniteGust
+from slingloads.models.integration import SolverSettings
 from slingloads.models.multibody import (
     Cable,
     FreeCarrier,
@@ -51,12 +53,7 @@ from slingloads.models.multibody.rigid_body import (
 from slingloads.models.parachute import Parachute, extended_cd_table
 from slingloads.models.pendulum import LateralPendulum, SlungBody, elastic_cable_derivatives
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
-from slingloads.models.yaw_dynamics import (
-    FlightCondition,
-    SolverSettings,
-    YawModel,
-    integrate_reference,
-)
+from slingloads.models.yaw_dynamics import YawModel, integrate_reference
 
 MASS, IXX, IYY, IZZ, E = 2900.0, 2500.0, 7000.0, 9000.0, 1.0
 EA, LENGTH = 5e6, 18.3
@@ -147,11 +144,11 @@ def test_small_oscillations_match_the_pendulum_quartic(inertia, plane):
 
 
 def test_lateral_plane_response_matches_the_pendulum():
-    """A lateral smooth step of the hook in hover (no aerodynamics) keeps the motion in the
+    """A lateral quintic step of the hook in hover (no aerodynamics) keeps the motion in the
     lateral plane; hub position and airframe roll equal the lateral pendulum's elastic-cable
     equations integrated by solve_ivp (theta2 = -roll: the pendulum's angle is right-handed
     about +x, the report's roll is right side down)."""
-    motion = SmoothStep(3.0, 4.0)
+    motion = QuinticStep(3.0, 4.0)
     system = bare_system()
     sim = simulate(system, Manoeuvre("step", trajectory=LateralHookMotion(motion)),
                    t_end=12.0, dt=0.005, output_interval=0.05)
@@ -197,7 +194,7 @@ def test_yaw_alone_matches_the_one_dof_model():
     yaw = sim.runs[0].histories()["yaw"]
     model = YawModel(fuselage, fin, hp, ref.yaw_inertia, FlightCondition(80 * KNOT), chute)
     one = integrate_reference(model, 0.8, gust, settings=SolverSettings(
-        t_end=30.0, dt=0.005, output_interval=0.05, rtol=1e-10, atol=1e-12))
+        t_end=30.0, step=0.005, output_interval=0.05, rtol=1e-10, atol=1e-12))
     assert np.max(np.abs(one.psi[0])) > np.radians(3)
     assert_allclose(np.degrees(yaw), np.degrees(one.psi[0]), atol=0.01)
 

@@ -13,18 +13,21 @@ length L, rigid body of mass m, radius of gyration k, CG a distance e below the 
 * static tension equal to the weight.
 """
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from slingloads.analyses.lateral import SolverSettings, simulate, sweep
+from slingloads.analyses.lateral import simulate, sweep
 from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
-from slingloads.models.carrier_motion import ConstantAcceleration, SmoothStep, VelocityStep
+from slingloads.models.carrier_motion import ConstantAcceleration, QuinticStep, VelocityStep
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import LateralPendulum, SlungBody, hub_load_airframe_axes
 
 UH60 = SlungBody(7439.0, 7632.0, 1.722, "UH-60A")  # NASA TM 85890 mass, Ixx, hub above CG
-TIGHT = SolverSettings(method="DOP853", rtol=1e-10, atol=1e-12, output_step=0.005)
+TIGHT = SolverSettings(output_interval=0.005, method="DOP853", rtol=1e-10, atol=1e-12)
 FIXED = VelocityStep(0.0)  # the hook does not move
 
 
@@ -81,7 +84,7 @@ def test_nonlinear_small_swing_period_matches_quartic(mode):
     shape = modes.shapes[mode, :2] * 1e-4
     omega = quartic_omegas(L, UH60.radius_of_gyration, UH60.cg_below_hub)[mode]
     period = 2 * np.pi / omega
-    run = simulate(pendulum, FIXED, t_end=5 * period, solver=TIGHT,
+    run = simulate(pendulum, FIXED, solver=replace(TIGHT, t_end=5 * period),
                    x0=[shape[0], shape[1], 0.0, 0.0])
     theta = run.theta1
     # upward zero crossings of theta1 (a cosine started at its maximum), interpolated
@@ -97,8 +100,8 @@ def test_point_mass_acceleration_step_peak_swing(accel_g):
     L, a = 10.0, accel_g * G0
     pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), L)
     period = 2 * np.pi * np.sqrt(L / G0)
-    run = simulate(pendulum, ConstantAcceleration(a, 10 * period), t_end=1.5 * period,
-                   solver=TIGHT)
+    run = simulate(pendulum, ConstantAcceleration(a, 10 * period),
+                   solver=replace(TIGHT, t_end=1.5 * period))
     expected = 2 * np.arctan(a / G0)
     assert run.metrics.max_rope_angle == pytest.approx(expected, rel=1e-6)
     assert run.theta1.min() == pytest.approx(-expected, rel=1e-6)
@@ -113,7 +116,7 @@ def test_point_mass_velocity_step():
     L, dv = 10.0, 4.0
     pendulum = LateralPendulum(SlungBody(1000.0, 10.0, 0.0), L)
     period = 2 * np.pi * np.sqrt(L / G0)
-    run = simulate(pendulum, VelocityStep(dv), t_end=period, solver=TIGHT)
+    run = simulate(pendulum, VelocityStep(dv), solver=replace(TIGHT, t_end=period))
     assert np.cos(run.metrics.max_rope_angle) == pytest.approx(1 - dv**2 / (2 * G0 * L),
                                                                rel=1e-7)
     assert run.metrics.max_tension_ratio == pytest.approx(1 + dv**2 / (G0 * L), rel=1e-9)
@@ -145,7 +148,7 @@ def test_energy_conserved_rigid_rope():
     """Fixed support, no damping: total energy is conserved (to 1e-8 of m g L) through a
     large-amplitude swing with both modes excited."""
     pendulum = LateralPendulum(UH60, 18.0 * FOOT)
-    run = simulate(pendulum, FIXED, t_end=10.0, solver=TIGHT, x0=[0.6, -0.4, 0.0, 0.5])
+    run = simulate(pendulum, FIXED, solver=replace(TIGHT, t_end=10.0), x0=[0.6, -0.4, 0.0, 0.5])
     energy = _energy(run)
     scale = pendulum.weight * pendulum.rope_length
     assert np.ptp(energy) < 1e-8 * scale
@@ -157,8 +160,9 @@ def test_energy_conserved_elastic_cable_through_slack():
     conservative)."""
     pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=2e7)
     x0 = [0.0, -pendulum.hanging_length, 0.0, 7.0, 4.0, 1.5]
-    run = simulate(pendulum, FIXED, t_end=6.0, x0=x0,
-                   solver=SolverSettings("DOP853", 1e-11, 1e-12, output_step=0.002))
+    run = simulate(pendulum, FIXED, x0=x0,
+                   solver=SolverSettings(t_end=6.0, output_interval=0.002, method="DOP853",
+                                         rtol=1e-11, atol=1e-12))
     assert run.metrics.slack  # the case does go slack
     energy = _energy(run)
     assert np.ptp(energy) < 1e-6 * pendulum.weight * pendulum.rope_length
@@ -167,10 +171,59 @@ def test_energy_conserved_elastic_cable_through_slack():
 def test_damping_only_dissipates():
     """With aerodynamic damping and a fixed support, energy never increases (dissipation)."""
     pendulum = LateralPendulum(UH60, 18.0 * FOOT, lateral_damping=2000.0, roll_damping=5000.0)
-    run = simulate(pendulum, FIXED, t_end=15.0, solver=TIGHT, x0=[0.4, -0.2, 0.0, 0.3])
+    run = simulate(pendulum, FIXED, solver=replace(TIGHT, t_end=15.0), x0=[0.4, -0.2, 0.0, 0.3])
     energy = _energy(run)
     assert np.all(np.diff(energy) <= 1e-9 * pendulum.weight)
     assert energy[-1] < energy[0]
+
+
+@pytest.mark.parametrize("cable_ea", [None, 5e8])
+def test_damping_power_is_the_dampers_work(cable_ea):
+    """Work-energy theorem with the damping applied at a point h = 1.5 m above the CG and a
+    fixed hook: dE/dt = -c y_P'^2 - c_r theta2'^2 along the run (y_P' the damped point's
+    lateral speed, from the geometry: y_P = y_hub + (e - h) sin theta2), for the rigid rope
+    (Lagrange) and the elastic cable (Newton-Euler): the generalised damping forces of each
+    derivation do exactly the dampers' work."""
+    c, c_r, h = 3000.0, 4000.0, 1.5
+    pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=cable_ea, lateral_damping=c,
+                               roll_damping=c_r, damping_height=h)
+    r = pendulum.hanging_length                         # swung out 0.3 rad, cable at rest
+    x0 = ([0.3, -0.2, 0.0, 0.4] if cable_ea is None else
+          [r * np.sin(0.3), -r * np.cos(0.3), -0.2, 0.0, 0.0, 0.4])
+    run = simulate(pendulum, FIXED, x0=x0,
+                   solver=SolverSettings(t_end=4.0, output_interval=0.001, method="DOP853",
+                                         rtol=1e-11, atol=1e-12))
+    energy = _energy(run)
+    th2, w2 = run.theta2, (run.states[3] if cable_ea is None else run.states[5])
+    e = UH60.cg_below_hub
+    if cable_ea is None:
+        hub_vy = run.pendulum.rope_length * np.cos(run.states[0]) * run.states[2]
+    else:
+        hub_vy = run.states[3]
+    vp = hub_vy + (e - h) * np.cos(th2) * w2
+    power = -c * vp**2 - c_r * w2**2
+    rate = np.gradient(energy, run.t)
+    scale = np.abs(power).max()
+    assert_allclose(rate[2:-2], power[2:-2], atol=2e-4 * scale)
+
+
+def test_lateral_damping_of_a_point_mass_decays_at_the_closed_form_rate():
+    """Point mass (CG at the hub, e = 0) on a rope with lateral damping c: m l^2 theta'' +
+    c l^2 theta' + m g l theta = 0, so the swing decays as exp(-c t/(2 m)) with the damped
+    period 2 pi / sqrt(g/l - (c/2m)^2): successive peaks of a small swing (0.01 rad) have
+    the ratio exp(-c T_d/(2 m))."""
+    body = SlungBody(1000.0, 1.0, 0.0, "point")
+    L, c = 10.0, 400.0
+    pendulum = LateralPendulum(body, L, lateral_damping=c)
+    sigma = c / (2 * body.mass)
+    period = 2 * np.pi / np.sqrt(G0 / L - sigma**2)
+    run = simulate(pendulum, FIXED, x0=[0.01, 0.0, 0.0, 0.0],
+                   solver=replace(TIGHT, t_end=2.2 * period, output_interval=0.001))
+    th = run.theta1
+    i1 = int(np.argmax(th[run.t > 0.5 * period])) + int(np.sum(run.t <= 0.5 * period))
+    i2 = int(np.argmax(th[run.t > 1.5 * period])) + int(np.sum(run.t <= 1.5 * period))
+    assert run.t[i2] - run.t[i1] == pytest.approx(period, abs=2e-3)
+    assert th[i2] / th[i1] == pytest.approx(np.exp(-sigma * period), rel=1e-4)
 
 
 def test_elastic_cable_converges_to_rigid_rope():
@@ -179,11 +232,11 @@ def test_elastic_cable_converges_to_rigid_rope():
     8 %, 0.3 %, 0.04 %; the peak tension, which carries the bounce mode's dynamic overshoot,
     converges more slowly."""
     L = 18.0 * FOOT
-    motion = SmoothStep.from_peak_acceleration(0.3 * G0, 2.0)
+    motion = QuinticStep.from_peak_acceleration(0.3 * G0, 2.0)
     eas = [1e6, 1e7, 1e8]
     pendulums = [LateralPendulum(UH60, L, cable_ea=ea) for ea in eas]
     pendulums.append(LateralPendulum(UH60, L))
-    metrics, _ = sweep(pendulums, [motion] * len(pendulums), t_end=8.0)
+    metrics, _ = sweep(pendulums, [motion] * len(pendulums), solver=SolverSettings(t_end=8.0))
     angle = metrics.max_load_angle
     error = np.abs(angle[:-1] - angle[-1]) / angle[-1]
     assert np.all(np.diff(error) < 0)
@@ -199,7 +252,7 @@ def test_static_tension_equals_weight(cable_ea):
     (static equilibrium), and the elastic cable is stretched by m g/(EA/L)."""
     L = 60.0 * FOOT
     pendulum = LateralPendulum(UH60, L, cable_ea=cable_ea)
-    run = simulate(pendulum, FIXED, t_end=5.0)
+    run = simulate(pendulum, FIXED, solver=SolverSettings(t_end=5.0))
     assert_allclose(run.tension, UH60.mass * G0, rtol=1e-7)
     fy, fz = run.hub_load
     assert_allclose(fy, 0.0, atol=1e-9 * UH60.mass * G0)
@@ -248,7 +301,7 @@ def test_load_angle_is_an_angle_between_directions():
     assert load_angle(0.0, np.radians(190.0)) == pytest.approx(np.radians(170.0))
     pendulum = LateralPendulum(UH60, 18.0 * FOOT, cable_ea=2e7)
     x0 = [0.0, -pendulum.hanging_length, 0.0, 0.0, 0.0, 12.0]  # airframe spun fast
-    run = simulate(pendulum, FIXED, t_end=4.0, x0=x0)
+    run = simulate(pendulum, FIXED, solver=SolverSettings(t_end=4.0), x0=x0)
     assert np.ptp(run.theta2) > 2 * np.pi
     assert np.all(np.abs(run.load_angle) <= np.pi)
     assert run.metrics.max_load_angle <= np.pi

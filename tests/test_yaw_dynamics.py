@@ -10,13 +10,21 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from slingloads.analyses.chute_sizing import LinearYaw, neutral_area, run_yaw
+from slingloads.analyses.chute_sizing import LinearYaw, MetricSettings, neutral_area, run_yaw
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
-from slingloads.models.gusts import FiniteGust, StepGust, standard_gusts
+from slingloads.models.flight import FlightCondition
+from slingloads.models.gusts import (
+    DrydenTurbulence,
+    FiniteGust,
+    StepGust,
+    SustainedGust,
+    standard_gusts,
+)
+from slingloads.models.integration import SolverSettings
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import (
     sample_fin,
@@ -25,8 +33,6 @@ from slingloads.models.sample_aircraft import (
     sample_reference,
 )
 from slingloads.models.yaw_dynamics import (
-    FlightCondition,
-    SolverSettings,
     YawModel,
     integrate_reference,
     integrate_rk4,
@@ -62,7 +68,7 @@ def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=SPAN, fin=True, chute=True):
 def test_linear_free_response_matches_closed_form():
     """Free response of the linearised model (RK4 integrator) against the closed form."""
     lin = LinearYaw(INERTIA, K, C, {}, V)
-    s = SolverSettings(t_end=30.0, dt=0.01, output_interval=0.1)
+    s = SolverSettings(t_end=30.0, step=0.01, output_interval=0.1)
     h = integrate_rk4(lin, 0.0, StepGust(0.0), psi0=0.02, settings=s)
     _, shape = oscillator(h.time)
     assert_allclose(h.psi[0], 0.02 * shape, atol=1e-9)
@@ -72,7 +78,7 @@ def test_linear_step_and_finite_gust_match_closed_form():
     """Step gust: psi -> gamma0 = atan(v/V) as a step response from the onset; finite gust: the
     superposition of a step at the onset and a negative step at its end."""
     lin = LinearYaw(INERTIA, K, C, {}, V)
-    s = SolverSettings(t_end=60.0, dt=0.02, output_interval=0.1)
+    s = SolverSettings(t_end=60.0, step=0.02, output_interval=0.1)
     gusts = [StepGust(3.0, 10.0), FiniteGust(3.0, 10.0, 10.0)]
     h = integrate_rk4(lin, [0.0, 0.0], gusts, settings=s)
     g0 = np.arctan2(3.0, V)
@@ -91,9 +97,9 @@ def test_nonlinear_model_small_gust_matches_hand_linearisation():
     model = linear_model()
     cond = model.condition
     area = 2.0
-    k = cond.q * (3 * 11 * -0.4 - 1 * 0.5 * -3.0 * 5 + 0.95 * 1.0 * area * 6)
+    k = cond.dynamic_pressure * (3 * 11 * -0.4 - 1 * 0.5 * -3.0 * 5 + 0.95 * 1.0 * area * 6)
     c = 0.5 * cond.density * cond.tas * (-1 * 0.5 * -3.0 * 25 + 0.95 * 1.0 * area * 36)
-    s = SolverSettings(t_end=40.0, dt=0.02, output_interval=0.1)
+    s = SolverSettings(t_end=40.0, step=0.02, output_interval=0.1)
     h = integrate_rk4(model, area, StepGust(0.02, 5.0), settings=s)
     g0 = np.arctan2(0.02, cond.tas)
     expected = g0 * np.where(h.time >= 5, oscillator(np.maximum(h.time - 5, 0), k, c)[0], 0.0)
@@ -123,7 +129,7 @@ def test_signs_fuselage_diverges_fin_and_chute_converge():
     """Facts s.3: the fuselage alone is directionally unstable, so a small yaw grows; with the
     fin and a parachute of twice the neutral area it decays (paper s.4.2)."""
     ref = sample_reference("HC1")
-    s = SolverSettings(t_end=60.0, dt=0.05, output_interval=0.5)
+    s = SolverSettings(t_end=60.0, step=0.05, output_interval=0.5)
     alone = YawModel(sample_fuselage("HC1"), None, sample_hardpoints("HC1"), ref.yaw_inertia)
     h = integrate_rk4(alone, 0.0, StepGust(0.0), psi0=np.radians(0.5), settings=s)
     assert np.degrees(h.psi[0]).max() > 10.0
@@ -140,11 +146,11 @@ def test_log_decrement_matches_linear_damping_ratio():
     model = linear_model()
     cond = model.condition
     area = 2.0
-    k = cond.q * (3 * 11 * -0.4 + 7.5 + 0.95 * area * 6)
+    k = cond.dynamic_pressure * (3 * 11 * -0.4 + 7.5 + 0.95 * area * 6)
     c = 0.5 * cond.density * cond.tas * (37.5 + 0.95 * area * 36)
     zeta = c / (2 * np.sqrt(k * 9000.0))
     runs = run_yaw(model, area, FiniteGust(0.05, 5.0, 5.0),
-                   SolverSettings(t_end=80.0, dt=0.02, output_interval=0.02))
+                   SolverSettings(t_end=80.0, step=0.02, output_interval=0.02))
     row = runs.to_frame().iloc[0]
     assert row["damping ratio log decrement [-]"] == pytest.approx(zeta, rel=5e-3)
     assert row["damping ratio linear [-]"] == pytest.approx(zeta, rel=1e-9)
@@ -158,12 +164,55 @@ def test_vectorised_rk4_agrees_with_solve_ivp():
     model = YawModel(sample_fuselage("HC2"), sample_fin("HC2"), sample_hardpoints("HC2"),
                      ref.yaw_inertia, parachute=Parachute(1.0))
     area = 1.5 * neutral_area(model).area
-    s = SolverSettings(t_end=60.0, dt=0.05, output_interval=0.5, rtol=1e-9, atol=1e-11)
+    s = SolverSettings(t_end=60.0, step=0.05, output_interval=0.5, rtol=1e-9, atol=1e-11)
     gusts = standard_gusts()
     fast = integrate_rk4(model, area, gusts, settings=s)
     slow = integrate_reference(model, area, gusts, settings=s)
     assert np.degrees(np.abs(fast.psi - slow.psi)).max() < 2e-3
     assert np.degrees(np.abs(fast.beta - slow.beta)).max() < 2e-3
+
+
+def test_rk4_steps_on_gust_breakpoints_off_the_grid():
+    """Gust breakpoints off the step grid (a finite gust from 10.03 s for 7.31 s, a sustained
+    crosswind rising from 10.03 s over 3.33 s) and a Dryden turbulence realisation: the RK4
+    integrator inserts the breakpoints into its grid, so it keeps its fourth-order agreement
+    with solve_ivp (rtol 1e-10, integrated piecewise between the same breakpoints): within
+    2e-4 deg here, where the uniform grid alone (a step straddling the 10.03 s jump) errs by
+    0.05 deg."""
+    ref = sample_reference("HC2")
+    model = YawModel(sample_fuselage("HC2"), sample_fin("HC2"), sample_hardpoints("HC2"),
+                     ref.yaw_inertia, parachute=Parachute(1.0))
+    area = 1.5 * neutral_area(model).area
+    s = SolverSettings(t_end=30.0, step=0.05, output_interval=0.5, rtol=1e-10, atol=1e-12)
+    gusts = [FiniteGust(6.0, 10.03, 7.31), SustainedGust(6.0, 10.03, 3.33),
+             DrydenTurbulence(2.0, 250.0, model.condition.tas, onset=10.0, duration=15.0,
+                              seed=1)]
+    fast = integrate_rk4(model, area, gusts, settings=s)
+    slow = integrate_reference(model, area, gusts, settings=s)
+    assert np.degrees(np.abs(fast.beta - slow.beta)).max() < 2e-4
+    assert np.degrees(np.abs(fast.psi).max()) > 1.0      # the gusts did move the aircraft
+
+
+def test_run_beyond_the_linearised_range_or_the_limit_is_never_stable():
+    """A stable aircraft (linear tables, a 2 m^2 parachute) under a sharp-edged crosswind of
+    tan(beta) = v/V: the run returns to trim, but a gust angle of 12.6 deg leaves a +-10 deg
+    linearisation range, and 7.0 deg passes a 5 deg sideslip limit: neither is called
+    stable, and the reason says which rule; the same 7.0 deg run with the +-10 deg range and
+    the default 20 deg limit is stable (the rules, not the dynamics, decide)."""
+    model = linear_model()
+    tas = model.condition.tas
+    s = SolverSettings(t_end=60.0)
+    big = SustainedGust(tas * np.tan(np.radians(12.6)), 5.0, 0.0)
+    small = SustainedGust(tas * np.tan(np.radians(7.0)), 5.0, 0.0)
+    ten = (np.radians(-10.0), np.radians(10.0))
+    runs = run_yaw(model, 2.0, [big, small], s, fit_range=ten).to_frame()
+    assert list(runs["verdict"]) == ["beyond limits", "stable"]
+    assert "leaves the linearisation range [-10, 10] deg" in runs["verdict reason"][0]
+    assert runs["peak beta [deg]"][0] == pytest.approx(12.6, rel=1e-3)
+    tight = run_yaw(model, 2.0, small, s, fit_range=ten,
+                    metrics=MetricSettings(sideslip_limit=np.radians(5.0))).to_frame()
+    assert tight["verdict"][0] == "beyond limits"
+    assert "passes the sideslip limit 5 deg" in tight["verdict reason"][0]
 
 
 def test_run_leaving_the_table_is_flagged_divergent():
@@ -178,21 +227,21 @@ def test_run_leaving_the_table_is_flagged_divergent():
 def test_bad_dynamic_input():
     """Zero or negative speed, inertia, area; a gust beyond the tables; bad solver settings and
     a non-monotonic table: each an InputError echoing the value."""
-    with pytest.raises(InputError, match=r"airspeed must be > 0.*0.0"):
-        FlightCondition(ias=0.0)
-    with pytest.raises(InputError, match=r"airspeed must be > 0.*-5"):
-        FlightCondition(ias=-5.0)
     m = linear_model()
+    with pytest.raises(InputError, match=r"airspeed > 0 \[m/s\].*value 0.0"):
+        YawModel(m.fuselage, m.fin, m.hardpoints, 9000.0, FlightCondition(eas=0.0))
+    with pytest.raises(InputError, match=r"airspeed must be >= 0.*-5"):
+        FlightCondition(eas=-5.0)
     with pytest.raises(InputError, match=r"yaw inertia must be > 0.*0.0"):
         YawModel(m.fuselage, m.fin, m.hardpoints, 0.0)
     with pytest.raises(InputError, match=r"parachute area must be >= 0.*-1"):
         run_yaw(m, -1.0, StepGust())
     with pytest.raises(InputError, match=r"gust of 100 m/s .* outside the tables' range"):
         run_yaw(m, 1.0, StepGust(100.0))
-    with pytest.raises(InputError, match="t_end must be a whole multiple of dt.*100.01"):
-        SolverSettings(t_end=100.01, dt=0.05)
-    with pytest.raises(InputError, match=r"dt must be > 0.*-0.05"):
-        SolverSettings(dt=-0.05)
+    with pytest.raises(InputError, match="t_end must be a whole multiple of the step.*100.01"):
+        run_yaw(m, 1.0, StepGust(), SolverSettings(t_end=100.01, step=0.05))
+    with pytest.raises(InputError, match=r"step must be > 0.*-0.05"):
+        SolverSettings(step=-0.05)
     with pytest.raises(InputError, match="strictly increasing"):
         Table1D(np.radians([0.0, 10.0, 10.0]), {"CY": [0.0, -0.5, -0.5]})
     with pytest.raises(InputError, match=r"flat-plate area must be > 0.*0.0"):

@@ -10,6 +10,7 @@ from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import FUSELAGE_COEFFICIENTS, Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
+from slingloads.models.flight import FlightCondition
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import (
     sample_fin,
@@ -17,7 +18,7 @@ from slingloads.models.sample_aircraft import (
     sample_hardpoints,
     sample_reference,
 )
-from slingloads.models.yaw_dynamics import FlightCondition, YawModel
+from slingloads.models.yaw_dynamics import YawModel
 
 SPAN = np.radians(60.0)
 
@@ -44,7 +45,7 @@ def test_neutral_area_by_hand():
     result = neutral_area(linear_model())
     assert result.area == pytest.approx(5.7 / 5.7, rel=1e-9)
     assert result.derivatives["fuselage"] == pytest.approx(
-        FlightCondition(80 * KNOT).q * 3 * 11 * -0.4, rel=1e-9)
+        FlightCondition(80 * KNOT).dynamic_pressure * 3 * 11 * -0.4, rel=1e-9)
     assert sum(result.derivatives.values()) == pytest.approx(0.0, abs=1e-8)
 
 
@@ -58,7 +59,7 @@ def test_neutral_area_gives_zero_stiffness():
     h = np.radians(0.01)
     plus = sum(model.static_moments(h, area))
     minus = sum(model.static_moments(-h, area))
-    scale = model.condition.q * 3 * 11 * 0.4
+    scale = model.condition.dynamic_pressure * 3 * 11 * 0.4
     assert (plus - minus) / (2 * h) == pytest.approx(0.0, abs=1e-6 * scale)
 
 
@@ -75,7 +76,8 @@ def test_side_force_transfer_to_suspension_axis():
     hp = Hardpoints(hub=[0.0, 0.0, 1.0], mast_feet=[[0.0, 0.0, 0.5]])
     model = YawModel(fus, None, hp, 9000.0)
     n_fus, _, _ = model.static_moments(np.array([0.2]))
-    assert float(n_fus[0]) == pytest.approx(-1.0 * model.condition.q * 3.0 * (-2.0 * 0.2))
+    q = model.condition.dynamic_pressure
+    assert float(n_fus[0]) == pytest.approx(-1.0 * q * 3.0 * (-2.0 * 0.2))
 
 
 def test_sample_neutral_area_from_raw_csv():

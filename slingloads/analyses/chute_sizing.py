@@ -26,16 +26,22 @@ import pandas as pd
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import linear_fit
 from slingloads.models.gusts import standard_gusts
+from slingloads.models.integration import SolverSettings
 from slingloads.models.wake import CABLE_MARGIN, TARGET_RATIO, check_cable_length
 from slingloads.models.yaw_dynamics import (
-    SolverSettings,
     YawModel,
     integrate_reference,
     integrate_rk4,
+    yaw_solver_settings,
 )
 
 #: Default sideslip range of the local linearisation. [rad]
 FIT_RANGE = (np.radians(-10.0), np.radians(10.0))
+#: Default sideslip past which no run is called stable (see :class:`MetricSettings`). [rad]
+SIDESLIP_LIMIT = np.radians(20.0)
+
+#: Verdicts of a run.
+VERDICTS = ("stable", "neutral", "divergent", "beyond limits")
 
 
 def _deg(x):
@@ -235,7 +241,7 @@ def linear_yaw(model, area, fit_range=FIT_RANGE):
     if not np.isfinite(area) or area < 0:
         raise InputError("parachute area must be >= 0 [m^2]", area)
     lin = yaw_linearisation(model, fit_range)
-    q, rho, v = model.condition.q, model.condition.density, model.condition.tas
+    q, rho, v = model.condition.dynamic_pressure, model.condition.density, model.condition.tas
     parts = {}
     if lin.fuselage_slope is not None:
         f = model.fuselage
@@ -351,7 +357,7 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
         raise InputError("the parachute attachment must lie aft of the suspension axis "
                          "(dx > 0 [m]) to stabilise", float(dx))
     base = linear_yaw(model, 0.0, fit_range)
-    per_area = model.condition.q * model.chute_drag_coefficient * dx
+    per_area = model.condition.dynamic_pressure * model.chute_drag_coefficient * dx
     others = sum(k for name, (k, _) in base.parts.items() if name != "parachute")
     area = -others / per_area
     derivs = {name: k for name, (k, _) in base.parts.items() if name != "parachute"}
@@ -369,8 +375,9 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
         moments["fin"] = n_fin
     moments["parachute"] = n_chute
     moments["total"] = n_fus + n_fin + n_chute
-    return NeutralAreaResult(float(area), derivs, float(per_area), model.condition.q, float(dx),
-                             beta_plot, moments, yaw_linearisation(model, fit_range))
+    return NeutralAreaResult(float(area), derivs, float(per_area),
+                             model.condition.dynamic_pressure, float(dx), beta_plot, moments,
+                             yaw_linearisation(model, fit_range))
 
 
 # ------------------------------------------------------------------------ line length
@@ -458,11 +465,30 @@ class MetricSettings:
         end or become steady) is divergent. [rad]
     peak_threshold : float
         Yaw-rate peaks smaller than this are ignored by the logarithmic decrement. [rad/s]
+    sideslip_limit : float
+        A run whose |beta| passes this is never called stable, > 0. Default 20 deg: past it
+        the yawing-moment curves of helicopter-class fuselages turn over (|Cn| peaks near 20
+        deg and falls back to zero near 45 deg) and a cut-down fin approaches its stall, so
+        the stiffness the sizing counts on is no longer there; set it to the sideslip
+        envelope of the loads analysis to keep the two consistent. [rad]
+
+    A run whose sideslip also leaves the range over which the tables were linearised (the
+    ``fit_range`` of the runs) is never called stable either: the linear stiffness and
+    damping behind the verdict no longer describe it.
     """
 
     settle_fraction: float = 0.05
     final_tolerance: float = np.radians(1.0)
     peak_threshold: float = 1e-5
+    sideslip_limit: float = SIDESLIP_LIMIT
+
+    def __post_init__(self):
+        for name in ("settle_fraction", "final_tolerance", "peak_threshold",
+                     "sideslip_limit"):
+            value = float(getattr(self, name))
+            if not np.isfinite(value) or value <= 0:
+                raise InputError(f"metric setting {name} must be > 0", value)
+            object.__setattr__(self, name, value)
 
 
 @dataclass(frozen=True)
@@ -480,9 +506,12 @@ class YawRuns:
         natural frequency; damping ratio from the logarithmic decrement of the first two
         positive yaw-rate peaks after the gust ends (NaN for continuous gusts or no
         oscillation); settling time from the gust onset until |beta - beta_trim| stays within
-        ``settle_fraction`` of its peak (NaN if never, or continuous gust); verdict
-        "stable", "neutral" (zero linear stiffness) or "divergent" (linearly unstable, left
-        the tables, or sideslip not restored within ``final_tolerance`` at the end).
+        ``settle_fraction`` of its peak (NaN if never, or a gust that never ends); verdict
+        "divergent" (linearly unstable, left the tables, or sideslip not restored within
+        ``final_tolerance`` at the end of a gust that ends), "neutral" (zero linear
+        stiffness, inside the tables), else "beyond limits" (the sideslip left the
+        linearisation range or passed ``sideslip_limit``: never called stable), else
+        "stable"; "verdict reason" says why.
     """
 
     areas: np.ndarray
@@ -551,9 +580,17 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     scale = max(sum(abs(k) for k, _ in lin[0].parts.values()), 1e-300)
     neutral = np.array([abs(by_area[a].stiffness) <= 1e-9 * scale for a in areas])
     final_off = np.abs(dbeta[:, -1]) > metric.final_tolerance
-    divergent = hist.left_table | ~lin_stable | (np.isfinite(free) & final_off)
-    verdict = np.where(divergent, "divergent", "stable")
-    verdict = np.where(neutral & ~hist.left_table, "neutral", verdict)
+    not_restored = np.isfinite(free) & final_off
+    lo, hi = fit_range
+    beta_min, beta_max = hist.beta.min(axis=1), hist.beta.max(axis=1)
+    unlinear = (beta_min < lo) | (beta_max > hi)
+    over = peak_beta > metric.sideslip_limit
+    verdict = np.select(
+        [hist.left_table, neutral, ~lin_stable | not_restored, unlinear | over],
+        ["divergent", "neutral", "divergent", "beyond limits"], default="stable")
+    reasons = [_reason(*row, fit_range, metric) for row in zip(
+        hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, dbeta[:, -1],
+        unlinear, over, peak_beta, beta_min, beta_max, strict=True)]
     return pd.DataFrame({
         "area [m^2]": areas,
         "gust": [g.kind for g in gusts],
@@ -568,7 +605,33 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
         "settling time [s]": settling,
         "left table": hist.left_table,
         "verdict": verdict,
+        "verdict reason": reasons,
     })
+
+
+def _reason(left, exit_time, lin_stable, neutral, not_restored, final, unlinear, over, peak,
+            low, high, fit_range, metric):
+    """Why a run got its verdict, in words."""
+    why = []
+    if left:
+        why.append(f"left the aerodynamic tables at t = {exit_time:.4g} s")
+    if neutral:
+        why.append("zero linear yaw stiffness (neutral)")
+    elif not lin_stable:
+        why.append("linearly unstable (stiffness or damping <= 0)")
+    if not_restored:
+        why.append(f"sideslip {_deg(final):.3g} deg from trim at the end, not back within "
+                   f"{_deg(metric.final_tolerance):.3g} deg")
+    if unlinear:
+        why.append(f"sideslip {_deg(low):.3g} to {_deg(high):.3g} deg leaves the linearisation "
+                   f"range [{_deg(fit_range[0]):.3g}, {_deg(fit_range[1]):.3g}] deg")
+    if over:
+        why.append(f"peak |beta| {_deg(peak):.3g} deg passes the sideslip limit "
+                   f"{_deg(metric.sideslip_limit):.3g} deg")
+    if not why:
+        why.append(f"back to trim; peak |beta| {_deg(peak):.3g} deg within the linearisation "
+                   f"range and the {_deg(metric.sideslip_limit):.3g} deg limit")
+    return "; ".join(why)
 
 
 def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=None,
@@ -596,7 +659,7 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     if integrator not in ("rk4", "solve_ivp"):
         raise InputError(f"{integrator=!r} is not a valid option. Valid options are: "
                          f"'rk4', 'solve_ivp'", integrator)
-    settings = SolverSettings() if settings is None else settings
+    settings = yaw_solver_settings(settings)
     metrics = MetricSettings() if metrics is None else metrics
     areas = np.atleast_1d(np.asarray(areas, dtype=float))
     gust_list = tuple(gusts) if isinstance(gusts, (list, tuple)) else (gusts,)
@@ -612,6 +675,20 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     return YawRuns(areas, gust_list, hist, frame, float(np.max(np.abs(beta_trim))), settings)
 
 
+def gust_frame(gusts, tas):
+    """The gust shapes as a table: shape, description, largest velocity [m/s], the sideslip
+    angle atan(v/V) it makes at true airspeed ``tas`` [m/s], onset [s] and the time after
+    which it no longer changes [s] (NaN: never, as the harmonic gust)."""
+    return pd.DataFrame({
+        "shape": [g.kind for g in gusts],
+        "description": [g.label for g in gusts],
+        "peak gust [m/s]": [g.peak for g in gusts],
+        "gust angle [deg]": [_deg(np.arctan(g.peak / tas)) for g in gusts],
+        "onset [s]": [g.breakpoints[0] for g in gusts],
+        "steady from [s]": [np.nan if g.end is None else g.end for g in gusts],
+    })
+
+
 @dataclass(frozen=True)
 class SweepResult:
     """Sizing sweep: metrics against parachute area for each gust shape."""
@@ -620,6 +697,7 @@ class SweepResult:
     factors: np.ndarray
     runs: YawRuns
     gusts: tuple = field(default_factory=tuple)
+    tas: float = np.nan
 
     def to_frame(self):
         frame = self.runs.to_frame()
@@ -635,9 +713,14 @@ class SweepResult:
             chosen += list(np.nonzero(np.isclose(ratio, nearest))[0])
         return self.runs.history_frame(sorted(set(chosen)))
 
+    def gust_frame(self):
+        """One row per gust shape: what it is, its largest velocity and the sideslip that
+        makes at the condition's true airspeed, when it starts and when it stops changing."""
+        return gust_frame(self.gusts, self.tas)
+
     def frames(self):
-        return {**self.static.frames(), "chute sweep": self.to_frame(),
-                "chute histories": self.history_frame()}
+        return {**self.static.frames(), "chute gusts": self.gust_frame(),
+                "chute sweep": self.to_frame(), "chute histories": self.history_frame()}
 
 
 def sizing_sweep(model, factors=None, gusts=None, settings=None, fit_range=FIT_RANGE,
@@ -674,7 +757,7 @@ def sizing_sweep(model, factors=None, gusts=None, settings=None, fit_range=FIT_R
     areas = np.repeat(factors * static.area, len(gusts))
     gust_runs = tuple(gusts) * factors.size
     runs = run_yaw(model, areas, gust_runs, settings, fit_range, metrics, integrator)
-    return SweepResult(static, factors, runs, gusts)
+    return SweepResult(static, factors, runs, gusts, model.condition.tas)
 
 
 def with_area(model, area):
@@ -683,7 +766,8 @@ def with_area(model, area):
 
 
 __all__ = [
-    "FIT_RANGE", "LineLengthResult", "LinearYaw", "LinearisationResult", "MetricSettings",
-    "NeutralAreaResult", "SweepResult", "YawModel", "YawRuns", "line_length", "linear_yaw",
-    "neutral_area", "run_yaw", "sizing_sweep", "with_area", "yaw_linearisation",
+    "FIT_RANGE", "SIDESLIP_LIMIT", "VERDICTS", "LineLengthResult", "LinearYaw",
+    "LinearisationResult", "MetricSettings", "NeutralAreaResult", "SweepResult", "YawModel",
+    "YawRuns", "gust_frame", "line_length", "linear_yaw", "neutral_area", "run_yaw",
+    "sizing_sweep", "with_area", "yaw_linearisation",
 ]

@@ -10,13 +10,14 @@ The recommended design angle is that maximum times a stated margin.
 
 Two integrators:
 
-* :func:`simulate`: one run with :func:`scipy.integrate.solve_ivp` (solver settings in
-  :class:`SolverSettings`), integrated piecewise between the motion's breakpoints; gives
-  time histories.
+* :func:`simulate`: one run with :func:`scipy.integrate.solve_ivp` (settings in
+  :class:`~slingloads.models.integration.SolverSettings`: ``method``, ``rtol``, ``atol``,
+  ``max_step``, ``t_end``, ``output_interval``), integrated piecewise between the motion's
+  breakpoints; gives time histories.
 * :func:`sweep`: many runs at once, a fixed-step classical Runge-Kutta (RK4) scheme whose
   state is an array of shape (states, runs), so that each step is a handful of numpy
   operations for all runs; gives the per-run metrics. Its step is chosen from the fastest
-  natural mode unless given.
+  natural mode unless given (``SolverSettings.step``).
 
 References
 ----------
@@ -28,20 +29,32 @@ References
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 import pandas as pd
 from scipy.integrate import solve_ivp
 
+from slingloads.analyses.lateral_damping import LateralDamping
 from slingloads.constants import FOOT, G0
 from slingloads.errors import InputError
+from slingloads.limits import (
+    MAX_HISTORY_OUTPUT,
+    MAX_LATERAL_MOTION_STEPS,
+    MAX_LATERAL_RUN_STEPS,
+    MAX_LATERAL_STEPS,
+    check_count,
+    evaluation_budget,
+)
 from slingloads.models.carrier_motion import (
+    MOTION_ALIASES,
     ConstantAcceleration,
+    CycloidalStep,
     MotionBatch,
-    SmoothStep,
+    QuinticStep,
     TimeHistory,
 )
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import (
     LateralPendulum,
     SlungBody,
@@ -63,50 +76,8 @@ DEFAULT_ACCELERATIONS = tuple(n * G0 for n in (0.1, 0.2, 0.3, 0.4, 0.5))
 #: A default sweep of motion durations. [s]
 DEFAULT_DURATIONS = (0.5, 1.0, 2.0, 4.0)
 
-_SOLVE_IVP_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
-
-
-@dataclass(frozen=True)
-class SolverSettings:
-    """Settings of :func:`scipy.integrate.solve_ivp` for single runs.
-
-    The defaults resolve the peak load angle to about 1e-6 relative. Tighten ``rtol`` when
-    comparing against closed forms at better than 1e-5; set ``max_step`` below the shortest
-    feature of the input (the run is already split at the motion's breakpoints, and a
-    time history limits the step to its smallest sample interval); prefer ``"DOP853"`` for
-    tight tolerances and ``"Radau"`` or ``"LSODA"`` for a very stiff elastic cable
-    (EA/l over m much above the swing frequencies squared).
-
-    Parameters
-    ----------
-    method : str
-        A solve_ivp method: "RK45", "RK23", "DOP853", "Radau", "BDF" or "LSODA".
-    rtol : float
-        Relative tolerance, > 0. [-]
-    atol : float
-        Absolute tolerance, > 0 (states in rad, m, rad/s, m/s).
-    max_step : float
-        Largest step, > 0 (inf: no limit). [s]
-    output_step : float
-        Interval of the time histories, > 0; peaks between samples are refined by a
-        parabola through the three samples around them. [s]
-    """
-
-    method: str = "RK45"
-    rtol: float = 1e-8
-    atol: float = 1e-10
-    max_step: float = np.inf
-    output_step: float = 0.01
-
-    def __post_init__(self):
-        if self.method not in _SOLVE_IVP_METHODS:
-            raise InputError(f"solver method is not a valid option; valid options are "
-                             f"{list(_SOLVE_IVP_METHODS)}", self.method)
-        for name in ("rtol", "atol", "max_step", "output_step"):
-            value = float(getattr(self, name))
-            if np.isnan(value) or value <= 0:
-                raise InputError(f"solver {name} must be > 0", value)
-            object.__setattr__(self, name, value)
+#: Default interval of the time histories of single runs. [s]
+OUTPUT_INTERVAL = 0.01
 
 
 def _refine(y0, y1, y2):
@@ -327,7 +298,7 @@ class LateralRun:
         return frame
 
 
-def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
+def simulate(pendulum, motion, *, solver=None, x0=None):
     """One run of the lateral pendulum with :func:`scipy.integrate.solve_ivp`.
 
     Starts hanging at rest under the hook; a jump of the hook's speed at t = 0 (velocity step)
@@ -338,9 +309,9 @@ def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
     ----------
     pendulum : LateralPendulum
     motion : carrier motion (see :mod:`slingloads.models.carrier_motion`)
-    t_end : float, optional
-        Run length, > 0 (default :func:`default_end_time`). [s]
     solver : SolverSettings, optional
+        ``method``, ``rtol``, ``atol``, ``max_step``; ``t_end`` (default
+        :func:`default_end_time`) and ``output_interval`` (default 0.01 s). [s]
     x0 : array_like, optional
         Initial state in the order of ``pendulum.state_names`` (default: hanging at rest,
         plus the motion's velocity jump). [rad, m, rad/s, m/s]
@@ -352,23 +323,24 @@ def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
     Raises
     ------
     InputError
-        For a bad run length or initial state, or if the integrator fails.
+        For a bad initial state, or if the integrator fails.
     """
-    solver = SolverSettings() if solver is None else solver
-    if t_end is None:
-        t_end = default_end_time([pendulum], [motion])
-    t_end = float(t_end)
-    if not np.isfinite(t_end) or t_end <= 0:
-        raise InputError("run length t_end must be > 0 [s]", t_end)
+    solver = _settings(solver).with_defaults(output_interval=OUTPUT_INTERVAL)
+    if solver.t_end is None:
+        solver = solver.with_defaults(t_end=default_end_time([pendulum], [motion]))
+    t_end = solver.t_end
     max_step = solver.max_step
     if isinstance(motion, TimeHistory):
         max_step = min(max_step, motion.min_interval)
 
-    def rhs(t, x):
+    def derivatives(t, x):
         _, v, a = motion.kinematics(t)
         return pendulum.derivatives(x, v, a)[0]
 
-    n_out = max(int(np.ceil(t_end / solver.output_step - 1e-9)), 2)
+    rhs = evaluation_budget(derivatives, "the time-history run", field="rtol")
+    n_out = max(int(np.ceil(t_end / solver.output_interval - 1e-9)), 2)
+    check_count(n_out, MAX_HISTORY_OUTPUT, "stored samples of a time-history run",
+                field="output_interval")
     t_out = np.linspace(0.0, t_end, n_out + 1)
     cuts = np.unique(np.clip([0.0, *motion.breakpoints, t_end], 0.0, t_end))
     if x0 is None:
@@ -396,12 +368,20 @@ def simulate(pendulum, motion, *, t_end=None, solver=None, x0=None):
     return LateralRun(pendulum, motion, t_out, states, carrier, tension, solver)
 
 
+def _settings(solver):
+    if solver is None:
+        return SolverSettings()
+    if not isinstance(solver, SolverSettings):
+        raise InputError("solver settings must be a SolverSettings", type(solver).__name__)
+    return solver
+
+
 def _stack_parameters(pendulums):
     rows = [p.arrays() for p in pendulums]
     return {k: np.array([r[k] for r in rows]) for k in rows[0]}
 
 
-def sweep(pendulums, motions, *, t_end=None, step=None):
+def sweep(pendulums, motions, *, solver=None):
     """Per-run metrics of many runs, integrated together by vectorised RK4.
 
     Run i is ``pendulums[i]`` under ``motions[i]``. All runs share one time grid: uniform,
@@ -415,12 +395,12 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
     ----------
     pendulums : sequence of LateralPendulum, length runs
     motions : sequence of carrier motions, length runs
-    t_end : float, optional
-        Common run length (default :func:`default_end_time` over all runs). [s]
-    step : float, optional
-        RK4 step. Default: min(0.01 s, 0.25/omega_max) with omega_max the fastest natural
-        mode of any run (the elastic cable's bounce mode when present); this keeps the
-        peak load angle and tension within about 1e-4 of a tight solve_ivp solution. [s]
+    solver : SolverSettings, optional
+        ``t_end``: common run length (default :func:`default_end_time` over all runs) [s];
+        ``step``: RK4 step, default min(0.01 s, 0.25/omega_max) with omega_max the fastest
+        natural mode of any run (the elastic cable's bounce mode when present), which keeps
+        the peak load angle and tension within about 1e-4 of a tight solve_ivp solution. [s]
+        The grid has a whole number of steps, so the step used may be slightly shorter.
 
     Returns
     -------
@@ -433,17 +413,15 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
     if len(pendulums) != len(motions) or not pendulums:
         raise InputError("a sweep needs one motion per pendulum, and at least one run",
                          (len(pendulums), len(motions)))
-    if t_end is None:
-        t_end = default_end_time(pendulums, motions)
-    t_end = float(t_end)
-    if not np.isfinite(t_end) or t_end <= 0:
-        raise InputError("run length t_end must be > 0 [s]", t_end)
-    if step is None:
-        step = min(0.01, 0.25 / max(_fastest_mode(p) for p in pendulums))
-    step = float(step)
-    if not np.isfinite(step) or step <= 0:
-        raise InputError("RK4 step must be > 0 [s]", step)
-    n_steps = max(int(np.ceil(t_end / step - 1e-9)), 2)
+    solver = sweep_settings(pendulums, motions, solver)
+    t_end, step = solver.t_end, solver.step
+    n_steps = t_end / step
+    check_count(n_steps, MAX_LATERAL_STEPS, "RK4 steps per run", field="step")
+    check_count(n_steps * len(pendulums), MAX_LATERAL_RUN_STEPS, "run-steps (runs x steps)",
+                field="step")
+    check_count(n_steps * len({id(m) for m in motions}), MAX_LATERAL_MOTION_STEPS,
+                "motion-steps (distinct motions x steps)", field="step")
+    n_steps = max(int(np.ceil(n_steps - 1e-9)), 2)
     h = t_end / n_steps
     nodes, jumps = _time_nodes(t_end, n_steps, motions)
     rigid = np.array([p.rigid for p in pendulums])
@@ -457,6 +435,18 @@ def sweep(pendulums, motions, *, t_end=None, step=None):
         for name in out:
             out[name][idx] = getattr(metrics, name)
     return RunMetrics(**out), h
+
+
+def sweep_settings(pendulums, motions, solver=None):
+    """``solver`` with the sweep's automatic run length and RK4 step filled in where unset
+    (see :func:`sweep`)."""
+    solver = _settings(solver)
+    if solver.t_end is None:
+        solver = solver.with_defaults(t_end=default_end_time(pendulums, motions))
+    if solver.step is None:
+        solver = solver.with_defaults(
+            step=min(0.01, 0.25 / max(_fastest_mode(p) for p in pendulums)))
+    return solver
 
 
 def _time_nodes(t_end, n_steps, motions):
@@ -546,8 +536,8 @@ def _rk4_group(pendulums, motions, nodes, jumps, rigid):
     return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3])
 
 
-def acceleration_sweep(accelerations, durations, kinds=("smooth_step", "constant_acceleration"),
-                       then="stop"):
+def acceleration_sweep(accelerations, durations,
+                       kinds=("quintic_step", "constant_acceleration"), then="stop"):
     """Carrier motions for every (kind, peak acceleration, duration) combination.
 
     Parameters
@@ -555,8 +545,9 @@ def acceleration_sweep(accelerations, durations, kinds=("smooth_step", "constant
     accelerations : sequence of float
         Peak lateral accelerations of the hook (sign gives the direction). [m/s^2]
     durations : sequence of float
-        Step durations (smooth step) or acceleration-phase durations. [s]
-    kinds : sequence of {"smooth_step", "constant_acceleration"}
+        Step durations (quintic and cycloidal steps) or acceleration-phase durations. [s]
+    kinds : sequence of {"quintic_step", "cycloidal_step", "constant_acceleration"}
+        (``"smooth_step"``, the former name of the quintic step, is accepted).
     then : {"hold", "stop"}
         What follows a constant-acceleration phase.
 
@@ -565,14 +556,21 @@ def acceleration_sweep(accelerations, durations, kinds=("smooth_step", "constant
     list of motions
     """
     makers = {
-        "smooth_step": lambda a, d: SmoothStep.from_peak_acceleration(a, d),
+        "quintic_step": QuinticStep.from_peak_acceleration,
+        "cycloidal_step": CycloidalStep.from_peak_acceleration,
         "constant_acceleration": lambda a, d: ConstantAcceleration(a, d, then),
     }
+    kinds = [MOTION_ALIASES.get(k, k) for k in kinds]
     for kind in kinds:
         if kind not in makers:
             raise InputError(f"acceleration sweeps take the motion types {sorted(makers)}",
                              kind)
     return [makers[k](a, d) for k in kinds for a in accelerations for d in durations]
+
+
+def _max(values):
+    return float(np.nanmax(values)) if np.size(values) and np.any(np.isfinite(values)) \
+        else np.nan
 
 
 def _motion_row(motion):
@@ -619,10 +617,88 @@ def airframe_body(airframe, name="airframe (MassItems)"):
     return SlungBody(items.total_mass, inertia, e, name)
 
 
-def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None,
-                  lateral_damping=0.0, roll_damping=0.0, t_end=None, step=None,
-                  gravity=G0, regulatory_angle=REGULATORY_ANGLE):
-    """The design-angle study: every body x rope length x carrier motion.
+@dataclass(frozen=True)
+class ParameterRanges:
+    """Stated uncertainty of the mass properties and the rope, as factors on nominal values.
+
+    The study runs every combination of ``points`` factors evenly spaced over each range
+    (plus the nominal 1 if it is not among them): the recommended angle is taken over that
+    envelope, so that it survives the uncertainty of the inputs.
+
+    Parameters
+    ----------
+    roll_inertia, cg_below_hub, rope_length : (float, float)
+        (lowest, highest) factor on the roll inertia, the CG distance below the hub and the
+        rope length, each 0 < low <= 1 <= high (default +-20 %). [-]
+    points : int
+        Factors per range, >= 1 (1: the nominal value alone). [-]
+    """
+
+    roll_inertia: tuple = (0.8, 1.2)
+    cg_below_hub: tuple = (0.8, 1.2)
+    rope_length: tuple = (0.8, 1.2)
+    points: int = 5
+
+    NAMES = ("roll inertia", "CG below hub", "rope length")
+
+    def __post_init__(self):
+        for name in ("roll_inertia", "cg_below_hub", "rope_length"):
+            value = getattr(self, name)
+            try:
+                lo, hi = (float(v) for v in value)
+            except (TypeError, ValueError):
+                raise InputError(f"the {name.replace('_', ' ')} range must be two factors "
+                                 f"(low, high)", value) from None
+            if not (np.isfinite(lo) and np.isfinite(hi) and 0 < lo <= 1 <= hi):
+                raise InputError(f"the {name.replace('_', ' ')} range must satisfy 0 < low "
+                                 f"<= 1 <= high [-]", (lo, hi))
+            object.__setattr__(self, name, (lo, hi))
+        if int(self.points) != self.points or self.points < 1:
+            raise InputError("points per range must be a whole number >= 1", self.points)
+        object.__setattr__(self, "points", int(self.points))
+
+    @classmethod
+    def nominal(cls):
+        """No variation: the nominal values alone."""
+        return cls((1.0, 1.0), (1.0, 1.0), (1.0, 1.0), 1)
+
+    @classmethod
+    def spread(cls, roll_inertia=0.2, cg_below_hub=0.2, rope_length=0.2, points=5):
+        """Symmetric ranges 1 -+ the given fractions (each in [0, 1))."""
+        ranges = []
+        for name, f in (("roll inertia", roll_inertia), ("CG below hub", cg_below_hub),
+                        ("rope length", rope_length)):
+            f = float(f)
+            if not (np.isfinite(f) and 0 <= f < 1):
+                raise InputError(f"the {name} spread must lie in [0, 1) [-]", f)
+            ranges.append((1.0 - f, 1.0 + f))
+        return cls(*ranges, points)
+
+    def factors(self):
+        """The factors of each range: three 1-D arrays, each with 1 among them. [-]"""
+        out = []
+        for lo, hi in (self.roll_inertia, self.cg_below_hub, self.rope_length):
+            grid = np.linspace(lo, hi, self.points) if self.points > 1 else np.array([1.0])
+            out.append(np.unique(np.append(np.round(grid, 12), 1.0)))
+        return tuple(out)
+
+    def to_frame(self):
+        """The ranges, one row per parameter."""
+        return pd.DataFrame({
+            "parameter": list(self.NAMES),
+            "lowest factor [-]": [r[0] for r in (self.roll_inertia, self.cg_below_hub,
+                                                 self.rope_length)],
+            "highest factor [-]": [r[1] for r in (self.roll_inertia, self.cg_below_hub,
+                                                  self.rope_length)],
+            "values [-]": [len(f) for f in self.factors()],
+        })
+
+
+def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None, damping=None,
+                  ranges=None, hook_load_factor=None, solver=None, gravity=G0,
+                  regulatory_angle=REGULATORY_ANGLE):
+    """The design-angle study: every body x rope length x carrier motion, over the stated
+    ranges of roll inertia, CG distance below the hub and rope length.
 
     Parameters
     ----------
@@ -636,10 +712,18 @@ def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None,
         Factor >= 1 on the largest load angle found: recommended angle = margin x max. [-]
     cable_ea : float or None
         Cable EA (None: rigid rope). [N]
-    lateral_damping, roll_damping : float
-        Aerodynamic damping, off by default. [N s/m], [N m s/rad]
-    t_end, step : float, optional
-        Run length and RK4 step, see :func:`sweep`. [s]
+    damping : LateralDamping, optional
+        Linear damping of the swing and roll (default none: the paper's hover step; see
+        :func:`slingloads.analyses.lateral_damping.aerodynamic_damping`).
+    ranges : ParameterRanges, optional
+        Uncertainty of roll inertia, CG below hub and rope length (default +-20 %, five
+        values each; :meth:`ParameterRanges.nominal` for none).
+    hook_load_factor : float, optional
+        Nz of the hook cases, compared with the largest cable tension factor T/(m g). [-]
+    solver : SolverSettings, optional
+        ``t_end`` and ``step`` of the sweep (see :func:`sweep`; default: the longest motion
+        plus three periods of the slowest swing mode, and a step from the fastest mode); the
+        solve_ivp settings and ``output_interval`` of :meth:`LateralStudy.run_case`.
     gravity : float
         [m/s^2]
     regulatory_angle : float
@@ -652,7 +736,7 @@ def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None,
     Raises
     ------
     InputError
-        For empty inputs, a margin below 1, or any invalid body, length or motion.
+        For empty inputs, a margin below 1, or any invalid body, length, motion or range.
     """
     bodies, rope_lengths, motions = list(bodies), list(rope_lengths), list(motions)
     for what, items in (("body", bodies), ("rope length", rope_lengths), ("motion", motions)):
@@ -664,20 +748,36 @@ def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None,
     margin = float(margin)
     if not np.isfinite(margin) or margin < 1:
         raise InputError("design-angle margin must be >= 1", margin)
-    pendulums = {
-        (ib, il): LateralPendulum(b, length, cable_ea, lateral_damping, roll_damping, gravity)
-        for (ib, b), (il, length) in itertools.product(enumerate(bodies),
-                                                       enumerate(rope_lengths))
-    }
-    cases = list(itertools.product(range(len(bodies)), range(len(rope_lengths)),
-                                   range(len(motions))))
-    case_pendulums = [pendulums[ib, il] for ib, il, _ in cases]
-    case_motions = [motions[im] for _, _, im in cases]
-    if t_end is None:
-        t_end = default_end_time(pendulums.values(), motions)
-    metrics, h = sweep(case_pendulums, case_motions, t_end=t_end, step=step)
+    damping = LateralDamping() if damping is None else damping
+    if not isinstance(damping, LateralDamping):
+        raise InputError("damping must be a LateralDamping", type(damping).__name__)
+    ranges = ParameterRanges() if ranges is None else ranges
+    if not isinstance(ranges, ParameterRanges):
+        raise InputError("ranges must be a ParameterRanges", type(ranges).__name__)
+    if hook_load_factor is not None:
+        hook_load_factor = float(hook_load_factor)
+        if not np.isfinite(hook_load_factor) or hook_load_factor <= 0:
+            raise InputError("hook load factor Nz must be > 0", hook_load_factor)
+    f_inertia, f_cg, f_rope = ranges.factors()
+    pendulums = {}
+    for (ib, b), fi, fe in itertools.product(enumerate(bodies), f_inertia, f_cg):
+        body = SlungBody(b.mass, b.roll_inertia * fi, b.cg_below_hub * fe, b.name)
+        for (il, length), fl in itertools.product(enumerate(rope_lengths), f_rope):
+            pendulums[ib, fi, fe, il, fl] = LateralPendulum(
+                body, length * fl, cable_ea, damping.lateral, damping.roll, gravity,
+                damping.height_above_cg(body.cg_below_hub))
+    keys = list(pendulums)
+    case_pendulums = [pendulums[k] for k in keys for _ in motions]
+    case_motions = [m for _ in keys for m in motions]
+    factors = np.array([[k[1], k[2], k[4]] for k in keys for _ in motions])
+    nominal_lengths = np.array([rope_lengths[k[3]] for k in keys for _ in motions])
+    solver = _settings(solver)
+    if solver.t_end is None:
+        solver = solver.with_defaults(t_end=default_end_time(pendulums.values(), motions))
+    metrics, h = sweep(case_pendulums, case_motions, solver=solver)
     return LateralStudy(tuple(case_pendulums), tuple(case_motions), metrics, margin,
-                        float(t_end), h, float(regulatory_angle))
+                        solver.t_end, h, float(regulatory_angle), solver, factors,
+                        nominal_lengths, ranges, damping, hook_load_factor)
 
 
 @dataclass(frozen=True, eq=False)
@@ -692,6 +792,12 @@ class LateralStudy:
     t_end : float, common run length [s]
     step : float, RK4 step used [s]
     regulatory_angle : float [rad]
+    solver : SolverSettings, the settings of :meth:`run_case` (its ``t_end`` is the sweep's)
+    factors : ndarray, shape (cases, 3), factors on roll inertia, CG below hub, rope [-]
+    nominal_rope : ndarray, shape (cases,), the rope length before its factor [m]
+    ranges : ParameterRanges
+    damping : LateralDamping
+    hook_load_factor : float or None, Nz of the hook cases [-]
     """
 
     pendulums: tuple
@@ -701,6 +807,29 @@ class LateralStudy:
     t_end: float
     step: float
     regulatory_angle: float = REGULATORY_ANGLE
+    solver: SolverSettings = SolverSettings()
+    factors: np.ndarray | None = None
+    nominal_rope: np.ndarray | None = None
+    ranges: ParameterRanges | None = None
+    damping: LateralDamping | None = None
+    hook_load_factor: float | None = None
+
+    def __post_init__(self):
+        n = len(self.pendulums)
+        if self.factors is None:
+            object.__setattr__(self, "factors", np.ones((n, 3)))
+        if self.nominal_rope is None:
+            object.__setattr__(self, "nominal_rope",
+                               np.array([p.rope_length for p in self.pendulums]))
+        if self.ranges is None:
+            object.__setattr__(self, "ranges", ParameterRanges.nominal())
+        if self.damping is None:
+            object.__setattr__(self, "damping", LateralDamping())
+
+    @property
+    def nominal(self):
+        """True for the cases at the nominal roll inertia, CG and rope length."""
+        return np.all(self.factors == 1.0, axis=1)
 
     @property
     def critical_index(self):
@@ -709,8 +838,13 @@ class LateralStudy:
 
     @property
     def max_load_angle(self):
-        """Largest |theta1 - theta2| over all cases. [rad]"""
+        """Largest |theta1 - theta2| over all cases, the envelope over the ranges. [rad]"""
         return float(self.metrics.max_load_angle[self.critical_index])
+
+    @property
+    def nominal_max_load_angle(self):
+        """Largest |theta1 - theta2| over the nominal cases. [rad]"""
+        return float(np.nanmax(self.metrics.max_load_angle[self.nominal]))
 
     @property
     def critical_case(self):
@@ -726,13 +860,52 @@ class LateralStudy:
 
     @property
     def recommended_angle(self):
-        """Recommended design angle of the hook load from the mast = margin x max. [rad]"""
+        """Recommended design angle of the hook load from the mast = margin x the largest
+        load angle over the envelope of the ranges. [rad]"""
         return self.margin * self.max_load_angle
 
     @property
     def exceeds_regulatory_angle(self):
         """True if the recommended angle is above the regulatory angle (no reduction)."""
         return self.recommended_angle > self.regulatory_angle
+
+    @property
+    def regulatory_angle_not_conservative(self):
+        """True if a load angle found exceeds the regulatory angle itself: for this motion
+        set the 30 deg rule is not conservative."""
+        return self.max_load_angle > self.regulatory_angle
+
+    @property
+    def max_tension_ratio(self):
+        """Largest T/(m g) over all cases. [-]"""
+        return float(np.nanmax(self.metrics.max_tension_ratio))
+
+    @property
+    def exceeds_hook_load_factor(self):
+        """Cases whose largest T/(m g) exceeds the hook load factor Nz (all False without
+        Nz)."""
+        if self.hook_load_factor is None:
+            return np.zeros(len(self.pendulums), dtype=bool)
+        return self.metrics.max_tension_ratio > self.hook_load_factor
+
+    def verdict(self):
+        """The study's conclusion on the 30 deg rule, in words."""
+        found, rec = np.degrees(self.max_load_angle), np.degrees(self.recommended_angle)
+        reg = np.degrees(self.regulatory_angle)
+        if self.regulatory_angle_not_conservative:
+            need = (f"the hook cases need at least {rec:.3g} deg ({self.margin:g} x "
+                    f"{found:.3g} deg)." if rec < 90.0 else
+                    f"with the margin ({rec:.3g} deg) no hook cone can be built: restrict the "
+                    f"operation (motions, masses, rope lengths) or show more damping.")
+            return (f"For this motion set the {reg:.3g} deg rule is NOT conservative: the "
+                    f"largest load angle over the stated ranges is {found:.3g} deg, above "
+                    f"{reg:.3g} deg; {need}")
+        if self.exceeds_regulatory_angle:
+            return (f"The recommended angle {rec:.3g} deg ({self.margin:g} x the largest load "
+                    f"angle {found:.3g} deg) exceeds {reg:.3g} deg: no reduction is supported.")
+        return (f"The recommended angle {rec:.3g} deg ({self.margin:g} x the largest load angle "
+                f"{found:.3g} deg over the stated ranges) is below {reg:.3g} deg for this "
+                f"motion set.")
 
     def to_frame(self):
         """One row per case: inputs and metrics, unit-labelled columns."""
@@ -748,18 +921,52 @@ class LateralStudy:
             })
         frame = pd.DataFrame(rows)
         frame.insert(0, "case", np.arange(1, len(rows) + 1))
+        for j, name in enumerate(("roll inertia factor [-]", "CG below hub factor [-]",
+                                  "rope length factor [-]")):
+            frame.insert(6 + j, name, self.factors[:, j])
+        frame.insert(9, "nominal rope length [m]", self.nominal_rope)
+        frame.insert(10, "nominal [-]", self.nominal)
         for key, values in self.metrics.to_dict().items():
             frame[key] = values
+        if self.hook_load_factor is not None:
+            frame["T/(m g) > Nz [-]"] = self.exceeds_hook_load_factor
         return frame
+
+    def case_frame(self):
+        """One row per nominal case (body x rope length x motion): its inputs and metrics
+        with the nominal roll inertia, CG and rope, and beside them the largest load angle
+        and tension factor over the stated ranges, with the factors that gave that angle."""
+        frame = self.to_frame()
+        per_pendulum = len(self.pendulums) // len({id(p) for p in self.pendulums})
+        frame["motion number"] = np.arange(len(frame)) % per_pendulum
+        key = ["body", "nominal rope length [m]", "motion number"]
+        angle = frame["max |theta1 - theta2| [deg]"].fillna(-np.inf)
+        worst = frame.loc[angle.groupby([frame[k] for k in key], sort=False).idxmax()]
+        worst = worst.set_index(key)
+        factors = ["roll inertia factor [-]", "CG below hub factor [-]",
+                   "rope length factor [-]"]
+        out = frame[frame["nominal [-]"]].set_index(key)
+        out["max |theta1 - theta2| over the ranges [deg]"] = \
+            worst["max |theta1 - theta2| [deg]"]
+        for name in factors:
+            out[name.replace(" [-]", " at that maximum [-]")] = worst[name]
+        out["max T/(m g) over the ranges [-]"] = frame.groupby(key)["max T/(m g) [-]"].max()
+        out = out.reset_index().drop(columns=[*factors, "nominal [-]", "motion number"])
+        return out[["case", *[c for c in out.columns if c != "case"]]]
 
     def summary_frame(self):
         """The largest load angle, its case, the margin and the recommended angle."""
         case = self.critical_case
         items = [
             ("cases run", len(self.pendulums), "-"),
-            ("largest load angle |theta1 - theta2|", np.degrees(self.max_load_angle), "deg"),
+            ("largest load angle |theta1 - theta2|, nominal inputs",
+             np.degrees(self.nominal_max_load_angle), "deg"),
+            ("largest load angle |theta1 - theta2| over the stated ranges",
+             np.degrees(self.max_load_angle), "deg"),
             ("case producing it", int(case["case"]), "-"),
             ("  body", case["body"], "-"),
+            ("  roll inertia", case["roll inertia [kg m^2]"], "kg m^2"),
+            ("  CG below hub", case["CG below hub [m]"], "m"),
             ("  rope length", case["rope length [m]"], "m"),
             ("  carrier motion", case["motion description"], "-"),
             ("  time of the maximum", case["t at max |theta1 - theta2| [s]"], "s"),
@@ -771,25 +978,74 @@ class LateralStudy:
             ("recommended design angle", np.degrees(self.recommended_angle), "deg"),
             ("CS-29.865 angle", np.degrees(self.regulatory_angle), "deg"),
             ("recommended angle exceeds CS-29.865 angle", self.exceeds_regulatory_angle, "-"),
-            ("run length", self.t_end, "s"),
-            ("RK4 step", self.step, "s"),
+            ("CS-29.865 angle not conservative for this motion set",
+             self.regulatory_angle_not_conservative, "-"),
+            ("largest cable tension factor T/(m g)", self.max_tension_ratio, "-"),
         ]
+        if self.hook_load_factor is not None:
+            items += [("hook load factor Nz", self.hook_load_factor, "-"),
+                      ("cases with T/(m g) above Nz",
+                       int(np.sum(self.exceeds_hook_load_factor)), "-")]
+        items += [("damping", self.damping.source if not self.damping.off else "none", "-"),
+                  ("run length", self.t_end, "s"),
+                  ("RK4 step", self.step, "s")]
         return pd.DataFrame(items, columns=["quantity", "value", "unit"])
 
-    def envelope_frame(self):
-        """Largest load angle per rope length and peak carrier acceleration.
+    def sensitivity_frame(self):
+        """Largest load angle and tension factor against each parameter's factor.
 
-        Velocity steps (no finite acceleration) are left out.
+        For each of roll inertia, CG below hub and rope length, and each of its factors:
+        the maxima over bodies, ropes and motions with the two other parameters nominal
+        ("one at a time") and over their whole ranges ("envelope").
         """
+        angle = np.degrees(self.metrics.max_load_angle)
+        ratio = self.metrics.max_tension_ratio
+        rows = []
+        for j, name in enumerate(ParameterRanges.NAMES):
+            others = np.delete(self.factors, j, axis=1)
+            alone = np.all(others == 1.0, axis=1)
+            for f in np.unique(self.factors[:, j]):
+                at = self.factors[:, j] == f
+                rows.append({
+                    "parameter": name, "factor [-]": f,
+                    "max load angle, others nominal [deg]": _max(angle[at & alone]),
+                    "max load angle, others over their ranges [deg]": _max(angle[at]),
+                    "max T/(m g), others nominal [-]": _max(ratio[at & alone]),
+                    "max T/(m g), others over their ranges [-]": _max(ratio[at]),
+                })
+        return pd.DataFrame(rows)
+
+    def tension_frame(self):
+        """Largest cable tension factor per carrier motion (over bodies, ropes and ranges)
+        against the hook load factor Nz, with the exceedance flagged."""
+        frame = self.to_frame()
+        grouped = frame.groupby("motion description", sort=False)
+        out = grouped.agg(**{
+            "max T/(m g) [-]": ("max T/(m g) [-]", "max"),
+            "min T/(m g) [-]": ("min T/(m g) [-]", "min"),
+            "max |theta1 - theta2| [deg]": ("max |theta1 - theta2| [deg]", "max"),
+        }).reset_index()
+        if self.hook_load_factor is not None:
+            out["Nz [-]"] = self.hook_load_factor
+            out["T/(m g) above Nz [-]"] = out["max T/(m g) [-]"] > self.hook_load_factor
+        return out
+
+    def envelope_frame(self):
+        """Largest load angle per nominal rope length and peak carrier acceleration, over
+        the stated ranges. Velocity steps (no finite acceleration) are left out."""
         frame = self.to_frame()
         frame = frame[np.isfinite(frame["peak S'' [m/s^2]"])]
-        return (frame.groupby(["rope length [m]", "peak S'' [g]"], as_index=False)
+        return (frame.groupby(["nominal rope length [m]", "peak S'' [g]"], as_index=False)
                 ["max |theta1 - theta2| [deg]"].max())
 
     def frames(self):
         """Sheet name -> DataFrame, for the Excel report."""
         return {"lateral summary": self.summary_frame(), "lateral runs": self.to_frame(),
-                "lateral envelope": self.envelope_frame()}
+                "lateral cases": self.case_frame(), "lateral envelope": self.envelope_frame(),
+                "lateral sensitivity": self.sensitivity_frame(),
+                "lateral tension": self.tension_frame(),
+                "lateral ranges": self.ranges.to_frame(),
+                "lateral damping": self.damping.to_frame()}
 
     def run_case(self, index=None, solver=None):
         """Re-run one case (default the critical one) with solve_ivp for its time histories.
@@ -799,6 +1055,7 @@ class LateralStudy:
         index : int, optional
             0-based case index (the ``case`` column minus 1).
         solver : SolverSettings, optional
+            solve_ivp settings (default the study's); the run length is the study's.
 
         Returns
         -------
@@ -807,5 +1064,6 @@ class LateralStudy:
         index = self.critical_index if index is None else int(index)
         if not 0 <= index < len(self.pendulums):
             raise InputError(f"case index must lie in [0, {len(self.pendulums) - 1}]", index)
-        return simulate(self.pendulums[index], self.motions[index], t_end=self.t_end,
-                        solver=solver)
+        solver = self.solver if solver is None else _settings(solver)
+        return simulate(self.pendulums[index], self.motions[index],
+                        solver=replace(solver, t_end=self.t_end))

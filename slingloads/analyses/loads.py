@@ -43,12 +43,11 @@ from slingloads.analyses.hook_loads import (
 )
 from slingloads.analyses.inertia_relief import gravity_forces
 from slingloads.analyses.sfbm import COMPONENTS, free_free_internal_loads
-from slingloads.constants import KNOT
 from slingloads.errors import ClosureError, InputError
 from slingloads.models.aerodynamics import airflow_direction
 from slingloads.models.airframe import Airframe
-from slingloads.models.atmosphere import RHO0, isa_density
 from slingloads.models.attitude import resolve_attitude
+from slingloads.models.flight import FlightCondition
 from slingloads.models.load_sharing import rigid_share
 
 #: Relative tolerance of the free-free closure check (residual over the load scale).
@@ -57,45 +56,6 @@ CLOSURE_TOLERANCE = 1e-8
 CHUTE_LINE_DIRECTIONS = ("relative wind", "fuselage axis")
 #: Aerodynamic point id of a case without aerodynamic load.
 NO_AERO = "NONE"
-
-
-@dataclass(frozen=True)
-class FlightCondition:
-    """Airspeed and air density of the loads cases.
-
-    Parameters
-    ----------
-    eas : float
-        Equivalent airspeed, >= 0 (the paper: 100 KEAS). [m/s]
-    density_altitude : float
-        Density altitude in the ISA troposphere (paper: 0, 5000 ft, 10000 ft). [m]
-    """
-
-    eas: float = 100 * KNOT
-    density_altitude: float = 0.0
-
-    def __post_init__(self):
-        eas = float(self.eas)
-        if not np.isfinite(eas) or eas < 0:
-            raise InputError("equivalent airspeed must be >= 0 [m/s]", eas)
-        object.__setattr__(self, "eas", eas)
-        object.__setattr__(self, "density_altitude", float(self.density_altitude))
-        isa_density(self.density_altitude)  # validates the altitude
-
-    @property
-    def density(self):
-        """Air density at the density altitude. [kg/m^3]"""
-        return float(isa_density(self.density_altitude))
-
-    @property
-    def dynamic_pressure(self):
-        """q = 1/2 rho0 V_EAS^2. [Pa]"""
-        return 0.5 * RHO0 * self.eas**2
-
-    @property
-    def tas(self):
-        """True airspeed. [m/s]"""
-        return self.eas * np.sqrt(RHO0 / self.density)
 
 
 @dataclass(frozen=True)
@@ -627,6 +587,31 @@ class LoadsResult:
         if prev is None:
             return None
         return compare_with_previous(self.loads, self.stations, self.station_ids, prev)
+
+    def to_nastran(self, path, **options):
+        """Write the load cases as a Nastran input file (``docs/nastran.md``).
+
+        A GRID per mass item (with its CONM2) and per load point, per case a SUBCASE whose
+        LOAD combines the applied FORCE and MOMENT cards, gravity (GRAV along the attitude's
+        vertical) and the inertia relief chosen; in SI or US units, in the model's axes.
+
+        Parameters
+        ----------
+        path : path-like
+            The ``.bdf`` file to write.
+        **options
+            ``units``, ``axes``, ``offset``, ``inertia_relief``, ``hook_at``, the first ids...:
+            see :func:`slingloads.io.loads.nastran.prepare_nastran`.
+
+        Returns
+        -------
+        slingloads.io.loads.nastran.NastranDeck
+            What was written; ``.subcase_table()`` links each subcase to its case id.
+        """
+        # The file format lives in the io layer; the method only hands the result to it.
+        from slingloads.io.loads.nastran import write_nastran
+
+        return write_nastran(self, path, **options)
 
     def _station_index(self, station):
         if isinstance(station, (int, np.integer)):

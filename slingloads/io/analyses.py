@@ -8,9 +8,10 @@ Each analysis has a folder ``slingloads/io/<folder>/`` with
   (SI) from the workbook, with located errors;
 * ``report.py``: ``compute(study) -> result`` (orchestration: the physics is in
   :mod:`slingloads.analyses`) and ``write(result, out_dir, stem, units, study)``, publishing
-  through :func:`slingloads.io.common.atomic.atomic_outputs`; optionally
-  ``start_figures(result, units, study)`` (a started
-  :class:`~slingloads.io.common.figures.FigureRenderer`, then passed to ``write`` as
+  through :func:`slingloads.io.common.atomic.atomic_outputs` (the loads report also takes
+  ``checks``, the checks against the other analyses of the run:
+  :mod:`slingloads.io.consistency`); optionally ``start_figures(result, units, study)`` (a
+  started :class:`~slingloads.io.common.figures.FigureRenderer`, then passed to ``write`` as
   ``figures=``) so that the figures are drawn while the next analyses are computed;
 * ``plots.py``: the figures of the report.
 
@@ -85,8 +86,12 @@ class Analysis:
         return getattr(self.module("reader"), self.options)(params, study)
 
     def compute(self, study):
-        """Run it on a study read from a workbook."""
-        return self.module("report").compute(study)
+        """Run it on a study read from a workbook. An :class:`InputError` the analysis raises
+        is located in the workbook, at the Study cell its ``field`` comes from when the
+        analysis's schema maps it (``COMPUTE_FIELDS``: model argument -> Study parameter)."""
+        fields = getattr(self.module("schema"), "COMPUTE_FIELDS", {})
+        with study.located(fields):
+            return self.module("report").compute(study)
 
     def start_figures(self, result, units, study):
         """Start drawing its report's figures in worker processes (so that they are drawn
@@ -95,13 +100,27 @@ class Analysis:
         start = getattr(self.module("report"), "start_figures", None)
         return start(result, units, study) if start is not None else None
 
-    def write(self, result, out_dir, stem, units, study, figures=None):
+    def output_patterns(self, stem):
+        """Regular expressions of the names of its report files for input ``stem`` (its
+        report module's ``OUTPUTS``), which a new report replaces."""
+        from slingloads.io.common.atomic import output_pattern
+
+        return [output_pattern(t, stem) for t in getattr(self.module("report"), "OUTPUTS", ())]
+
+    def output_names(self, stem):
+        """The fixed names among its report files (for the checks made before computing)."""
+        return [t.format(stem=stem) for t in getattr(self.module("report"), "OUTPUTS", ())
+                if "*" not in t]
+
+    def write(self, result, out_dir, stem, units, study, figures=None, checks=None):
         """Write its report into the run's outputs ``out_dir`` (with the figures started by
-        :meth:`start_figures`, if any)."""
-        if figures is None:
-            return self.module("report").write(result, out_dir, stem, units, study)
-        return self.module("report").write(result, out_dir, stem, units, study,
-                                           figures=figures)
+        :meth:`start_figures`, if any); ``checks``, a DataFrame of checks against the other
+        analyses of the run (:mod:`slingloads.io.consistency`), is passed to the reports that
+        show them."""
+        extra = {} if checks is None else {"checks": checks}
+        if figures is not None:
+            extra["figures"] = figures
+        return self.module("report").write(result, out_dir, stem, units, study, **extra)
 
 
 #: Every analysis, in the order they are read, run and written.

@@ -3,13 +3,16 @@
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 from dataclasses import dataclass, field
 
+from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.analyses import ANALYSES, all_parameters
 from slingloads.io.common.cover import IDENTIFICATION, now_stamp
 from slingloads.io.common.parameters import StudyParameters
+from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.models.airframe import Airframe
 
@@ -35,8 +38,7 @@ class WorkbookStudy:
         Inputs of each analysis read, by analysis name (``inputs["loads"]``: the
         :class:`~slingloads.analyses.loads.LoadsStudy`).
     points : dict
-        Hardpoints by kind that the Airframe does not keep (``fin_cp``, ``aero_reference``:
-        position or None). [m]
+        Hardpoints by kind (``fin_cp``, ``aero_reference``...: position or None). [m]
     identification : dict
         The free fields printed on the report covers (``project``, ``document number``,
         ``author``, ``checker``), by name; empty strings when not given.
@@ -46,6 +48,14 @@ class WorkbookStudy:
         Results of the analyses computed in this run, by analysis name (filled by the
         command line before the reports are written, so that a report can quote another's
         result: the loads report quotes the lateral study's recommended hook angle).
+    input_files : list of pathlib.Path
+        The workbook and every file it refers to that was read (CSV time histories): no
+        output may replace one.
+    warnings : list of str
+        Implausible but possible inputs, each naming its cells; shown on the reports' Summary.
+    cells : dict
+        Cell of each Study parameter given, by lower-case name (to locate errors found while
+        computing).
     """
 
     name: str
@@ -56,26 +66,47 @@ class WorkbookStudy:
     parameters: dict
     options: dict = field(default_factory=dict)
     inputs: dict = field(default_factory=dict)
+    points: dict = field(default_factory=dict)
+    input_files: list = field(default_factory=list)
+    warnings: list = field(default_factory=list)
+    cells: dict = field(default_factory=dict)
+    identification: dict = field(default_factory=dict)
+    run_date: str = field(default_factory=now_stamp)
+    results: dict = field(default_factory=dict)
 
     def digest(self):
-        """What a report is computed from: input file, SHA-256, study, analyses, version."""
+        """What a report is computed from: input file, SHA-256, study, analyses, version, and
+        the warnings on the inputs."""
         from pathlib import Path
 
         from slingloads import __version__
 
-        return {"input workbook": Path(self.path).name, "SHA-256": self.sha256,
-                "study": self.name,
-                "analyses": ", ".join(k for k, v in self.run.items() if v),
-                "slingloads version": __version__}
-    points: dict = field(default_factory=dict)
-    identification: dict = field(default_factory=dict)
-    run_date: str = field(default_factory=now_stamp)
-    results: dict = field(default_factory=dict)
+        out = {"input workbook": Path(self.path).name, "SHA-256": self.sha256,
+               "study": self.name,
+               "analyses": ", ".join(k for k, v in self.run.items() if v),
+               "slingloads version": __version__}
+        for k, text in enumerate(self.warnings, start=1):
+            out[f"warning {k}"] = text
+        return out
 
     @property
     def loads(self):
         """The loads study, or None if the loads analysis was not read."""
         return self.inputs.get("loads")
+
+    @contextlib.contextmanager
+    def located(self, fields=None):
+        """Locate an :class:`InputError` raised while computing: in this workbook, at the
+        Study cell of the parameter ``fields[error.field]`` when there is one."""
+        fields = fields or {}
+        try:
+            yield
+        except InputError as err:
+            name = fields.get(err.field)
+            if err.cell is None and err.sheet in (None, STUDY_SHEET) and name is not None:
+                cell = self.cells.get(name.lower(), "(default)")
+                raise err.located(file=self.path, sheet=STUDY_SHEET, cell=cell) from None
+            raise err.located(file=self.path) from None
 
 
 def file_digest(path):
@@ -87,7 +118,7 @@ def file_digest(path):
     return h.hexdigest()
 
 
-def read_study(path, only=None):
+def read_study(path, only=None, *, reader=None):
     """Read an input workbook and build every analysis it asks for.
 
     Parameters
@@ -96,6 +127,9 @@ def read_study(path, only=None):
     only : iterable of str, optional
         Build these analyses (``"loads"``, ``"lateral"``, ``"chute sizing"``) whatever the
         workbook's ``run ...`` parameters say.
+    reader : WorkbookReader, optional
+        An opened reader of the workbook (e.g. :meth:`WorkbookReader.from_rows`); by default
+        the file ``path`` is opened.
 
     Returns
     -------
@@ -106,19 +140,30 @@ def read_study(path, only=None):
     InputError
         With the file, sheet, cell, value and rule, for any bad input.
     """
-    reader = WorkbookReader(path)
+    own = reader is None
+    reader = WorkbookReader(path) if own else reader
+    try:
+        return _build(reader, path, only, file_digest(path) if own else "")
+    finally:
+        reader.close()
+
+
+def _build(reader, path, only, sha256):
     params = StudyParameters(reader, all_parameters())
     run = {a.name: params(a.run_parameter) for a in ANALYSES}
     if only is not None:
         run = {name: name in set(only) for name in run}
     airframe, refs = read_airframe(reader, params)
-    study = WorkbookStudy(name=str(params("study name")), path=str(path),
-                          sha256=file_digest(path), run=run, airframe=airframe,
+    study = WorkbookStudy(name=str(params("study name")), path=str(path), sha256=sha256,
+                          run=run, airframe=airframe,
                           parameters={k: v[0] for k, v in params.given.items()}, points=refs,
+                          cells={k: v[1] for k, v in params.given.items()},
                           identification={k: str(params(k) or "").strip()
                                           for k in IDENTIFICATION})
     for analysis in ANALYSES:
         if run[analysis.name]:
             study.inputs[analysis.name] = analysis.read(reader, params, study)
         study.options.update(analysis.report_options(params, study))
+    study.input_files = reader.input_files
+    study.warnings = list(reader.warnings)
     return study

@@ -8,8 +8,9 @@ from openpyxl.comments import Comment
 from openpyxl.styles import Alignment, Font, PatternFill
 
 from slingloads.io.analyses import sections
-from slingloads.io.common.atomic import atomic_outputs
+from slingloads.io.common.atomic import atomic_file
 from slingloads.io.common.schema import FLAG, INTEGER, STUDY_SHEET, TEXT
+from slingloads.limits import MAX_MAGNITUDE, MAX_SHEET_CELLS, MAX_STUDY_ROWS
 
 _BOLD = Font(bold=True)
 _HEAD_FILL = PatternFill("solid", fgColor="DDEBF7")
@@ -21,7 +22,12 @@ INTRO = (
     "or 'mass [lb]': change the unit to any unit of the same kind (SI or US customary). "
     "Parameters on the Study sheet carry theirs in the 'unit' column; delete a parameter row "
     "to use its default. Extra columns named 'note' or 'source' are ignored. Empty rows are "
-    "skipped. Sheets marked optional may be deleted."
+    "skipped. Sheets marked optional may be deleted. Limits: each column and parameter states "
+    "its allowed range; every number is also bounded in magnitude by its kind (e.g. "
+    f"{MAX_MAGNITUDE['length']:g} m, {MAX_MAGNITUDE['mass']:g} kg, "
+    f"{MAX_MAGNITUDE['force']:g} N); a sheet may store at most {MAX_SHEET_CELLS:,} cells "
+    f"(formatted empty ones included) and the Study sheet {MAX_STUDY_ROWS:,} rows; a value in "
+    "a column without a header is an error."
 )
 
 
@@ -65,8 +71,8 @@ def write_input_workbook(path, parameters=None, tables=None, notes=None, inputs=
             if tables and spec.name not in tables and not spec.required:
                 continue
             _table_sheet(book.create_sheet(spec.name), spec, tables.get(spec.name))
-    with atomic_outputs(path.parent if str(path.parent) else ".", inputs=inputs) as out:
-        book.save(out.path(path.name))
+    with atomic_file(path, inputs=inputs) as tmp:
+        book.save(tmp)
     return path
 
 
@@ -99,7 +105,7 @@ def _readme(ws, notes):
         for spec in section.sheets:
             _text(ws.cell(row, 1), spec.name)
             _text(ws.cell(row, 3), ("(required) " if spec.required else "(optional) ")
-                  + spec.help)
+                  + spec.help + f" At most {spec.max_rows:,} data rows.")
             ws.cell(row, 1).font = _BOLD
             row += 1
             for c in spec.columns:
@@ -107,7 +113,9 @@ def _readme(ws, notes):
                 kind = {TEXT: "text", FLAG: "yes/no", INTEGER: "whole number"}.get(c.kind,
                                                                                  c.kind)
                 need = "required" if c.required else f"optional, default {c.default!r}"
-                _text(ws.cell(row, 3), f"{kind}; {need}. {c.help}".strip())
+                text = " ".join(t for t in (f"{kind}; {need}.", c.help,
+                                            _limit_text(c).strip()) if t)
+                _text(ws.cell(row, 3), text)
                 row += 1
 
 
@@ -128,7 +136,7 @@ def _study_sheet(ws, parameters):
             _text(ws.cell(row, 1), p.name)
             _text(ws.cell(row, 2), _plain(value))
             _text(ws.cell(row, 3), unit)
-            _text(ws.cell(row, 4), f"[{section.name}] {p.help}")
+            _text(ws.cell(row, 4), f"[{section.name}] {p.help}{_limit_text(p)}")
             row += 1
     ws.freeze_panes = "A2"
 
@@ -170,7 +178,19 @@ def column_comment(column):
         text += f" Unit: any {column.kind} unit in the brackets."
     elif column.kind == FLAG:
         text += " (yes/no)"
-    return text
+    return text + _limit_text(column)
+
+
+def _limit_text(spec):
+    """`` Allowed: > 0 kg.`` for a column or parameter with bounds; text length for text."""
+    if spec.kind == TEXT:
+        limit = getattr(spec, "char_limit", None)
+        return f" At most {limit:,} characters." if limit else ""
+    bounds = getattr(spec, "bounds", None)
+    if bounds is None:
+        return ""
+    unit = bounds.unit if bounds.unit is not None else spec.unit
+    return f" Allowed: {bounds.text(unit=unit if spec.kind != INTEGER else '')}."
 
 
 def _plain(value):

@@ -17,7 +17,7 @@ from scipy.interpolate import RegularGridInterpolator
 from slingloads.errors import InputError
 
 
-def _strictly_increasing(values, name):
+def _strictly_increasing(values, name, field=None):
     values = np.asarray(values, dtype=float)
     if values.ndim != 1 or values.size < 2:
         raise InputError(f"{name} needs at least two breakpoints", values.tolist())
@@ -29,7 +29,7 @@ def _strictly_increasing(values, name):
         raise InputError(
             f"{name} breakpoints must be strictly increasing (no repeats); "
             f"{np.degrees(values[bad + 1]):.6g} deg follows {np.degrees(values[bad]):.6g} deg",
-            np.degrees(values[bad + 1]).item(),
+            np.degrees(values[bad + 1]).item(), field=field, index=bad + 1,
         )
     return values
 
@@ -71,7 +71,8 @@ class Table1D:
     what: str = "aerodynamic"
 
     def __post_init__(self):
-        angle = _strictly_increasing(self.angle, f"{self.what} {self.angle_name}")
+        angle = _strictly_increasing(self.angle, f"{self.what} {self.angle_name}",
+                                     self.angle_name)
         coeffs = {}
         for key, values in self.coefficients.items():
             values = np.asarray(values, dtype=float)
@@ -222,7 +223,7 @@ def linear_fit(angle, values, lo, hi, what="aerodynamic"):
     if np.count_nonzero(inside) < 2:
         raise InputError(
             f"the {what} table has fewer than two breakpoints in the fitting range "
-            f"[{np.degrees(lo):.6g}, {np.degrees(hi):.6g}] deg",
+            f"[{np.degrees(lo):.6g}, {np.degrees(hi):.6g}] deg", field="fit_range",
         )
     slope, intercept = np.polyfit(angle[inside], np.asarray(values)[inside], 1)
     return float(slope), float(intercept)

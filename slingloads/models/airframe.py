@@ -61,9 +61,12 @@ class MassItems:
         bad = ~np.isfinite(mass) | (mass <= 0)
         if np.any(bad):
             i = int(np.argmax(bad))
-            raise InputError(f"mass of item {ids[i]!r} must be > 0", mass[i].item())
+            raise InputError(f"mass of item {ids[i]!r} must be > 0", mass[i].item(),
+                             field="mass", index=i)
         if not np.all(np.isfinite(pos)):
-            raise InputError("mass item positions must be finite numbers")
+            i = int(np.argmax(~np.all(np.isfinite(pos), axis=1)))
+            raise InputError("mass item positions must be finite numbers", field="position",
+                             index=i)
         inertia = np.zeros((n, 3, 3)) if self.inertia is None else np.asarray(
             self.inertia, dtype=float)
         if inertia.shape != (n, 3, 3) or not np.all(np.isfinite(inertia)):
@@ -75,9 +78,10 @@ class MassItems:
         if np.any(eig < -1e-9 * scale):
             i = int(np.argmax(np.any(eig < -1e-9 * scale, axis=1)))
             raise InputError(
-                f"own inertia of item {ids[i]!r} is not physical (negative principal moment)",
-                eig[i].tolist(),
-            )
+                f"own inertia of item {ids[i]!r} is not physical: its principal moments "
+                f"{[float(f'{v:.6g}') for v in eig[i]]} kg m^2 must all be >= 0 (negative "
+                "principal moment: the products of inertia are too large for the moments)",
+                field="inertia", index=i)
         desc = tuple(self.description) or ("",) * n
         object.__setattr__(self, "ids", ids)
         object.__setattr__(self, "mass", mass)
@@ -233,7 +237,7 @@ class Airframe:
             i = int(np.argmax(steps <= 0)) + 1
             rule = ("cut stations must not repeat" if steps[i - 1] == 0
                     else "cut stations must be sorted by increasing x")
-            raise InputError(rule, x[i].item())
+            raise InputError(rule, x[i].item(), field="stations", index=i)
         ids = tuple(self.station_ids) or tuple(f"FS{v:.3f}" for v in x)
         if len(ids) != x.size:
             raise InputError("one id per cut station is needed")

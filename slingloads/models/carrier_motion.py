@@ -5,11 +5,14 @@ sideways along the lateral axis y (positive right). Every motion starts at t = 0
 S = 0 unless it says otherwise, and every function of time broadcasts over numpy arrays, so a
 run or a whole sweep can evaluate it in one call.
 
-Four kinds are offered:
+Five kinds are offered, each named for its law:
 
-* :class:`SmoothStep`: a displacement step of given amplitude reached in a given time along
-  the quintic (minimum-jerk) profile :math:`S = A (10\\tau^3 - 15\\tau^4 + 6\\tau^5)`,
+* :class:`QuinticStep`: a displacement step of given amplitude reached in a given time along
+  the quintic (minimum-jerk) law :math:`S = A (10\\tau^3 - 15\\tau^4 + 6\\tau^5)`,
   :math:`\\tau = t/T`; its peak acceleration is :math:`(10/\\sqrt{3})\\,A/T^2`.
+* :class:`CycloidalStep`: the same step along the cycloidal law
+  :math:`S = A (\\tau - \\sin(2\\pi\\tau)/(2\\pi))`, one sine period of acceleration; its
+  peak acceleration is :math:`2\\pi A/T^2`.
 * :class:`ConstantAcceleration`: acceleration ``a`` held for ``T``, then either holding the
   speed reached (``then="hold"``) or decelerating at ``-a`` for another ``T`` to stop
   (``then="stop"``).
@@ -34,6 +37,8 @@ from slingloads.errors import InputError
 
 #: Peak acceleration of the unit quintic step over unit time: 10/sqrt(3). [-]
 QUINTIC_PEAK = 10.0 / np.sqrt(3.0)
+#: Peak acceleration of the cycloidal step over A/T^2: 2 pi. [-]
+CYCLOIDAL_PEAK = 2.0 * np.pi
 
 
 class _Motion:
@@ -59,45 +64,33 @@ class _Motion:
 
 
 @dataclass(frozen=True)
-class SmoothStep(_Motion):
-    """Smooth lateral displacement step of the hook (quintic, minimum-jerk profile).
-
-    .. math::
-
-        S(t) = A\\,(10\\tau^3 - 15\\tau^4 + 6\\tau^5), \\quad \\tau = \\min(\\max(t/T, 0), 1)
-
-    Velocity and acceleration are zero at both ends; the acceleration is continuous and
-    peaks at :math:`(10/\\sqrt{3})\\,A/T^2` at :math:`\\tau = (3 - \\sqrt{3})/6`.
-
-    Parameters
-    ----------
-    amplitude : float
-        Final displacement A, positive to the right. [m]
-    duration : float
-        Time T taken by the step, > 0. [s]
-    """
+class _DisplacementStep(_Motion):
+    """A displacement step of amplitude A completed in duration T along a fixed law
+    S = A f(t/T), at rest at both ends; a subclass gives the law (:meth:`_law`), its peak
+    acceleration over A/T^2 (``PEAK``) and its name."""
 
     amplitude: float
     duration: float
 
-    kind = "smooth_step"
+    PEAK = np.nan
+    law = ""
 
     def __post_init__(self):
         object.__setattr__(self, "amplitude", _finite(
-            self.amplitude, "smooth-step amplitude must be a finite number [m]"))
+            self.amplitude, f"{self.law} step amplitude must be a finite number [m]"))
         object.__setattr__(self, "duration", _positive(
-            self.duration, "smooth-step duration must be > 0 [s]"))
+            self.duration, f"{self.law} step duration must be > 0 [s]"))
 
     @classmethod
     def from_peak_acceleration(cls, acceleration, duration):
         """The step of ``duration`` [s] whose peak acceleration is ``acceleration`` [m/s^2]."""
-        duration = _positive(duration, "smooth-step duration must be > 0 [s]")
-        return cls(float(acceleration) * duration**2 / QUINTIC_PEAK, duration)
+        duration = _positive(duration, f"{cls.law} step duration must be > 0 [s]")
+        return cls(float(acceleration) * duration**2 / cls.PEAK, duration)
 
     @property
     def peak_acceleration(self):
         """Largest |S''|. [m/s^2]"""
-        return QUINTIC_PEAK * abs(self.amplitude) / self.duration**2
+        return self.PEAK * abs(self.amplitude) / self.duration**2
 
     @property
     def end_time(self):
@@ -106,28 +99,100 @@ class SmoothStep(_Motion):
 
     @property
     def breakpoints(self):
-        """Times where the motion is not smooth (jerk jumps). [s]"""
+        """Times where the motion is not smooth (its jerk or snap jumps). [s]"""
         return (0.0, self.duration)
 
     velocity_jump = 0.0
 
     def describe(self):
         """One-line description for tables."""
-        return (f"smooth step {self.amplitude:.4g} m in {self.duration:.4g} s "
+        return (f"{self.law} step {self.amplitude:.4g} m in {self.duration:.4g} s "
                 f"(peak {self.peak_acceleration:.4g} m/s^2)")
 
     def _params(self):
         return {"amplitude": self.amplitude, "duration": self.duration}
 
-    @staticmethod
-    def _kinematics(t, amplitude, duration):
+    @classmethod
+    def _kinematics(cls, t, amplitude, duration):
         tau = np.clip(t / duration, 0.0, 1.0)
         inside = (t > 0) & (t < duration)
-        s = amplitude * tau**3 * (10.0 - 15.0 * tau + 6.0 * tau**2)
-        v = np.where(inside, amplitude / duration * 30.0 * tau**2 * (1.0 - tau) ** 2, 0.0)
-        a = np.where(inside, amplitude / duration**2 * 60.0 * tau * (1.0 - tau) * (1.0 - 2.0 * tau),
-                     0.0)
-        return s, v, a
+        f, df, ddf = cls._law(tau)
+        return (amplitude * f, np.where(inside, amplitude / duration * df, 0.0),
+                np.where(inside, amplitude / duration**2 * ddf, 0.0))
+
+
+@dataclass(frozen=True)
+class QuinticStep(_DisplacementStep):
+    """Lateral displacement step of the hook along the quintic (minimum-jerk) law.
+
+    .. math::
+
+        S(t) = A\\,(10\\tau^3 - 15\\tau^4 + 6\\tau^5), \\quad \\tau = \\min(\\max(t/T, 0), 1)
+
+    the polynomial of least integrated squared jerk with velocity and acceleration zero at
+    both ends [1]_. The acceleration is continuous and peaks at :math:`(10/\\sqrt{3})\\,A/T^2`
+    at :math:`\\tau = (3 - \\sqrt{3})/6`; the jerk jumps at both ends.
+
+    Parameters
+    ----------
+    amplitude : float
+        Final displacement A, positive to the right. [m]
+    duration : float
+        Time T taken by the step, > 0. [s]
+
+    References
+    ----------
+    .. [1] T. Flash, N. Hogan, "The coordination of arm movements: an experimentally
+       confirmed mathematical model", Journal of Neuroscience 5(7), 1985.
+    """
+
+    kind = "quintic_step"
+    law = "quintic"
+    PEAK = QUINTIC_PEAK
+
+    @staticmethod
+    def _law(tau):
+        return (tau**3 * (10.0 - 15.0 * tau + 6.0 * tau**2),
+                30.0 * tau**2 * (1.0 - tau) ** 2,
+                60.0 * tau * (1.0 - tau) * (1.0 - 2.0 * tau))
+
+
+@dataclass(frozen=True)
+class CycloidalStep(_DisplacementStep):
+    """Lateral displacement step of the hook along the cycloidal law.
+
+    .. math::
+
+        S(t) = A\\left(\\tau - \\frac{\\sin 2\\pi\\tau}{2\\pi}\\right), \\quad
+        \\tau = \\min(\\max(t/T, 0), 1)
+
+    the rest-to-rest law common in the cam and trajectory-planning literature [1]_: one
+    sine period of acceleration, :math:`\\ddot S = (2\\pi A/T^2) \\sin 2\\pi\\tau`, zero at
+    both ends, peaking at :math:`2\\pi A/T^2` at :math:`\\tau = 1/4` (9 % above the quintic
+    law's peak for the same step); the jerk jumps at both ends.
+
+    Parameters
+    ----------
+    amplitude : float
+        Final displacement A, positive to the right. [m]
+    duration : float
+        Time T taken by the step, > 0. [s]
+
+    References
+    ----------
+    .. [1] R. L. Norton, "Cam Design and Manufacturing Handbook", 2nd ed., Industrial Press,
+       2009, ch. 3 (cycloidal displacement).
+    """
+
+    kind = "cycloidal_step"
+    law = "cycloidal"
+    PEAK = CYCLOIDAL_PEAK
+
+    @staticmethod
+    def _law(tau):
+        phase = 2.0 * np.pi * tau
+        return (tau - np.sin(phase) / (2.0 * np.pi), 1.0 - np.cos(phase),
+                2.0 * np.pi * np.sin(phase))
 
 
 @dataclass(frozen=True)
@@ -356,11 +421,14 @@ class TimeHistory(_Motion):
 
 
 #: The motion kinds by name.
-MOTION_TYPES = {cls.kind: cls for cls in (SmoothStep, ConstantAcceleration, VelocityStep,
-                                          TimeHistory)}
+MOTION_TYPES = {cls.kind: cls for cls in (QuinticStep, CycloidalStep, ConstantAcceleration,
+                                          VelocityStep, TimeHistory)}
+#: Former names still accepted: the quintic step was called the "smooth step".
+MOTION_ALIASES = {"smooth_step": "quintic_step"}
 
 _PARAMETERS = {
-    "smooth_step": ("amplitude", "duration"),
+    "quintic_step": ("amplitude", "duration"),
+    "cycloidal_step": ("amplitude", "duration"),
     "constant_acceleration": ("rate", "duration", "then"),
     "velocity_step": ("delta_v",),
     "time_history": ("time", "displacement_samples", "name"),
@@ -373,8 +441,9 @@ def make_motion(kind, **parameters):
     Parameters
     ----------
     kind : str
-        One of ``"smooth_step"``, ``"constant_acceleration"``, ``"velocity_step"``,
-        ``"time_history"``.
+        One of ``"quintic_step"``, ``"cycloidal_step"``, ``"constant_acceleration"``,
+        ``"velocity_step"``, ``"time_history"`` (``"smooth_step"``, the former name of the
+        quintic step, is accepted).
     **parameters
         The parameters of that motion class, in SI.
 
@@ -388,6 +457,7 @@ def make_motion(kind, **parameters):
     >>> make_motion("constant_acceleration", rate=4.9, duration=2.0, then="stop")
     ConstantAcceleration(rate=4.9, duration=2.0, then='stop')
     """
+    kind = MOTION_ALIASES.get(kind, kind)
     if kind not in MOTION_TYPES:
         raise InputError(f"unknown carrier motion type; valid types are {sorted(MOTION_TYPES)}",
                          kind)

@@ -40,6 +40,7 @@ import numpy as np
 import pandas as pd
 from scipy.linalg import eigh
 
+from slingloads.checks import finite as _finite
 from slingloads.checks import non_negative as _non_negative
 from slingloads.checks import positive as _positive
 from slingloads.constants import G0
@@ -99,10 +100,16 @@ class LateralPendulum:
         Axial stiffness EA of the cable, > 0 [N]; ``None`` for the rigid (inextensible) rope.
         The cable's spring rate is EA/l.
     lateral_damping : float
-        Linear aerodynamic damping of the CG's lateral velocity, >= 0 (off by default; the
-        parachute is taken to have no influence). [N s/m]
+        c, linear aerodynamic damping of the lateral velocity of the point of the mast
+        ``damping_height`` above the CG, >= 0 (off by default; the parachute is taken to have
+        no influence; see :func:`slingloads.analyses.lateral.aerodynamic_damping`). [N s/m]
     roll_damping : float
-        Linear aerodynamic damping of the airframe's roll rate, >= 0. [N m s/rad]
+        c_r, linear aerodynamic damping of the airframe's roll rate, >= 0. [N m s/rad]
+    damping_height : float
+        h, height along the mast above the CG of the point whose lateral velocity the
+        lateral damping opposes (0: the CG). Side-force dampers c_i at heights h_i are
+        reproduced exactly at linear order by c = sum c_i, h = sum c_i h_i / c and
+        c_r = sum c_i h_i^2 - c h^2. [m]
     gravity : float
         [m/s^2]
     """
@@ -113,6 +120,7 @@ class LateralPendulum:
     lateral_damping: float = 0.0
     roll_damping: float = 0.0
     gravity: float = G0
+    damping_height: float = 0.0
 
     def __post_init__(self):
         if not isinstance(self.body, SlungBody):
@@ -127,6 +135,8 @@ class LateralPendulum:
             self.lateral_damping, "lateral damping must be >= 0 [N s/m]"))
         object.__setattr__(self, "roll_damping", _non_negative(
             self.roll_damping, "roll damping must be >= 0 [N m s/rad]"))
+        object.__setattr__(self, "damping_height", _finite(
+            self.damping_height, "damping height must be a finite number [m]"))
         object.__setattr__(self, "gravity", _positive(
             self.gravity, "gravity must be > 0 [m/s^2]"))
 
@@ -162,6 +172,7 @@ class LateralPendulum:
             "e": self.body.cg_below_hub, "length": self.rope_length,
             "stiffness": self.cable_stiffness,
             "c_lat": self.lateral_damping, "c_roll": self.roll_damping, "g": self.gravity,
+            "h_d": self.damping_height,
         }
 
     def initial_state(self, velocity_jump=0.0):
@@ -274,21 +285,23 @@ class LinearModes:
 
 
 def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=np.inf,
-                           c_lat=0.0, c_roll=0.0, g=G0):
+                           c_lat=0.0, c_roll=0.0, g=G0, h_d=0.0):
     """Equations of motion with a rigid rope (Lagrange, coordinates theta1, theta2).
 
     .. math::
 
         m l^2 \\ddot\\theta_1 + m l e \\cos\\Delta\\,\\ddot\\theta_2
           = -m l e \\sin\\Delta\\,\\dot\\theta_2^2 - m g l \\sin\\theta_1
-            - m l \\cos\\theta_1 \\ddot S - c\\,\\dot y_G\\, l\\cos\\theta_1
+            - m l \\cos\\theta_1 \\ddot S - c\\,\\dot y_P\\, l\\cos\\theta_1
 
         m l e \\cos\\Delta\\,\\ddot\\theta_1 + m (e^2 + k^2) \\ddot\\theta_2
           = m l e \\sin\\Delta\\,\\dot\\theta_1^2 - m g e \\sin\\theta_2
-            - m e \\cos\\theta_2 \\ddot S - c\\,\\dot y_G\\, e\\cos\\theta_2
+            - m e \\cos\\theta_2 \\ddot S - c\\,\\dot y_P\\, (e - h)\\cos\\theta_2
             - c_r \\dot\\theta_2
 
-    with :math:`\\Delta = \\theta_1 - \\theta_2` and :math:`\\dot y_G` the CG's lateral speed.
+    with :math:`\\Delta = \\theta_1 - \\theta_2` and :math:`\\dot y_P = \\dot S + l\\cos\\theta_1
+    \\dot\\theta_1 + (e - h)\\cos\\theta_2\\dot\\theta_2` the lateral speed of the damped point,
+    h above the CG along the mast (the CG for h = 0).
 
     Every argument broadcasts, so ``x`` of shape (4, runs) with parameter arrays of shape
     (runs,) integrates a whole sweep at once.
@@ -307,6 +320,7 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
     c_lat : lateral damping [N s/m]
     c_roll : roll damping [N m s/rad]
     g : gravity [m/s^2]
+    h_d : height above the CG of the damped point [m]
 
     Returns
     -------
@@ -320,11 +334,12 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
     sd, cd = np.sin(th1 - th2), np.cos(th1 - th2)
     k2 = inertia / mass
     le = length * e
-    yg_dot = s_vel + length * c1 * w1 + e * c2 * w2
-    drag = c_lat * yg_dot / mass  # lateral damping force per unit mass
+    yp_dot = s_vel + length * c1 * w1 + (e - h_d) * c2 * w2
+    drag = c_lat * yp_dot / mass  # lateral damping force per unit mass
     # divide both equations by m
     f1 = -le * sd * w2 * w2 - g * length * s1 - length * c1 * (s_acc + drag)
-    f2 = le * sd * w1 * w1 - g * e * s2 - e * c2 * (s_acc + drag) - c_roll * w2 / mass
+    f2 = (le * sd * w1 * w1 - g * e * s2 - e * c2 * s_acc - (e - h_d) * c2 * drag
+          - c_roll * w2 / mass)
     m11, m12, m22 = length * length, le * cd, e * e + k2
     det = m11 * m22 - m12 * m12          # = l^2 (k^2 + e^2 sin^2 Delta) > 0
     a1 = (m22 * f1 - m12 * f2) / det
@@ -336,7 +351,7 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
 
 
 def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness,
-                              c_lat=0.0, c_roll=0.0, g=G0):
+                              c_lat=0.0, c_roll=0.0, g=G0, h_d=0.0):
     """Equations of motion with an elastic, tension-only cable (Newton-Euler).
 
     With r the hub position relative to the hook, the cable force on the hub is
@@ -347,15 +362,19 @@ def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffne
     .. math::
 
         m k^2 \\ddot\\theta_2 = -e\\,F\\cdot c_2 - c_r\\dot\\theta_2
+                               + h \\cos\\theta_2\\, c\\,\\dot y_P
 
         \\ddot r = (F + F_d)/m - g\\,\\hat z - \\ddot S\\,\\hat y
                    - e\\ddot\\theta_2\\, c_2 - e\\dot\\theta_2^2\\, n_2
+
+    with the damping force :math:`F_d = -c\\,\\dot y_P\\,\\hat y` at the point h above the CG,
+    :math:`\\dot y_P = \\dot S + \\dot r_y + (e - h)\\cos\\theta_2\\,\\dot\\theta_2`.
 
     Parameters
     ----------
     x : array_like, shape (6, ...)
         ry [m], rz [m], theta2 [rad], and their rates [m/s, m/s, rad/s].
-    s_vel, s_acc, mass, inertia, e, length, c_lat, c_roll, g
+    s_vel, s_acc, mass, inertia, e, length, c_lat, c_roll, g, h_d
         As :func:`rigid_rope_derivatives`.
     stiffness : float or array_like
         Cable spring rate EA/l. [N/m]
@@ -372,9 +391,9 @@ def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffne
     tension = stiffness * np.maximum(dist - length, 0.0)
     fy = -tension * ry / dist
     fz = -tension * rz / dist
-    yg_dot = s_vel + vy + e * c2 * w2
-    a2 = (-e * (fy * c2 + fz * s2) - c_roll * w2) / inertia
-    ay = (fy - c_lat * yg_dot) / mass - s_acc - e * a2 * c2 + e * w2 * w2 * s2
+    drag = c_lat * (s_vel + vy + (e - h_d) * c2 * w2)  # -F_d, along y
+    a2 = (-e * (fy * c2 + fz * s2) - c_roll * w2 + h_d * c2 * drag) / inertia
+    ay = (fy - drag) / mass - s_acc - e * a2 * c2 + e * w2 * w2 * s2
     az = fz / mass - g - e * a2 * s2 - e * w2 * w2 * c2
     return np.stack([vy, vz, w2, ay, az, a2]), tension
 

@@ -56,120 +56,18 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from slingloads.constants import KNOT
 from slingloads.errors import InputError
+from slingloads.limits import MAX_ODE_EVALUATIONS, evaluation_budget
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
-from slingloads.models.atmosphere import dynamic_pressure_eas, isa_density, true_airspeed
+from slingloads.models.flight import SIZING_SPEED, FlightCondition
+from slingloads.models.integration import SolverSettings
 from slingloads.models.parachute import Parachute
 
-#: The paper's 1-DOF condition: 80 KIAS at ISA sea level.
-DEFAULT_SPEED = 80.0 * KNOT
+#: Defaults of the yaw runs: 120 s at a 0.05 s RK4 step, stored every 0.1 s. [s]
+YAW_SOLVER_DEFAULTS = {"t_end": 120.0, "step": 0.05, "output_interval": 0.1}
 #: Half-width of the sideslip interval searched for the yaw trim. [rad]
 TRIM_SEARCH = np.radians(20.0)
-
-
-@dataclass(frozen=True)
-class FlightCondition:
-    """Flight condition of the carrier, and the trimmed angle of attack of the carried HC.
-
-    Parameters
-    ----------
-    ias : float
-        Indicated airspeed, taken equal to equivalent airspeed, > 0. [m/s]
-    altitude : float
-        ISA (density) altitude. [m]
-    alpha : float
-        Angle of attack of the carried helicopter in trim. [rad]
-    """
-
-    ias: float = DEFAULT_SPEED
-    altitude: float = 0.0
-    alpha: float = 0.0
-
-    def __post_init__(self):
-        v = float(self.ias)
-        if not np.isfinite(v) or v <= 0:
-            raise InputError("airspeed must be > 0 [m/s]", v)
-        alpha = float(self.alpha)
-        if not np.isfinite(alpha):
-            raise InputError("trim angle of attack must be finite [rad]", alpha)
-        object.__setattr__(self, "ias", v)
-        object.__setattr__(self, "alpha", alpha)
-        object.__setattr__(self, "altitude", float(self.altitude))
-        isa_density(self.altitude)  # validates the altitude
-
-    @property
-    def density(self):
-        """Air density. [kg/m^3]"""
-        return float(isa_density(self.altitude))
-
-    @property
-    def tas(self):
-        """True airspeed. [m/s]"""
-        return float(true_airspeed(self.ias, self.altitude))
-
-    @property
-    def q(self):
-        """Free-stream dynamic pressure 1/2 rho0 V_EAS^2. [Pa]"""
-        return float(dynamic_pressure_eas(self.ias))
-
-
-@dataclass(frozen=True)
-class SolverSettings:
-    """Time integration settings.
-
-    Parameters
-    ----------
-    t_end : float
-        Simulated time. [s]
-    dt : float
-        Fixed step of the vectorised RK4 integrator. Put gust onsets and ends on multiples of
-        it (the defaults do); a jump inside a step costs accuracy there. Halve it and compare
-        if in doubt: RK4's error falls 16-fold. [s]
-    output_interval : float
-        Sampling interval of the stored histories, a multiple of ``dt``. [s]
-    method, rtol, atol, max_step :
-        Settings of the :func:`scipy.integrate.solve_ivp` reference integrator. Tighten
-        ``rtol`` when comparing against RK4 at small ``dt``. The step is also capped at
-        ``output_interval``: from a trimmed rest an adaptive solver would otherwise take steps
-        long enough to jump over a finite gust without seeing it.
-    """
-
-    t_end: float = 120.0
-    dt: float = 0.05
-    output_interval: float = 0.1
-    method: str = "RK45"
-    rtol: float = 1e-8
-    atol: float = 1e-10
-    max_step: float = np.inf
-
-    def __post_init__(self):
-        for name in ("t_end", "dt", "output_interval", "rtol", "atol", "max_step"):
-            value = float(getattr(self, name))
-            if np.isnan(value) or value <= 0:
-                raise InputError(f"solver setting {name} must be > 0", value)
-            object.__setattr__(self, name, value)
-        ratio = self.output_interval / self.dt
-        if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
-            raise InputError("solver output_interval must be a whole multiple of dt [s]",
-                             self.output_interval)
-        steps = self.t_end / self.dt
-        if abs(steps - round(steps)) > 1e-9 * steps:
-            raise InputError("solver t_end must be a whole multiple of dt [s]", self.t_end)
-
-    @property
-    def n_steps(self):
-        return int(round(self.t_end / self.dt))
-
-    @property
-    def output_every(self):
-        return int(round(self.output_interval / self.dt))
-
-    @property
-    def output_times(self):
-        """Times of the stored samples. [s]"""
-        return np.arange(self.n_steps // self.output_every + 1) * self.output_interval
 
 
 @dataclass(frozen=True)
@@ -188,6 +86,7 @@ class YawModel:
         Yaw inertia about the suspension axis (Izz about the CG plus m d^2 for a hub offset
         horizontally from the CG by d), > 0. [kg m^2]
     condition : FlightCondition
+        Airspeed > 0 (default the paper's 80 KIAS at ISA sea level) and trim angle of attack.
     parachute : Parachute or None
         Drag coefficient (at canopy alpha 0: the canopy trails along the flow) times the wake
         ratio, the one factor that carries the wake loss (:mod:`slingloads.models.parachute`);
@@ -200,7 +99,8 @@ class YawModel:
     fin: Fin | None
     hardpoints: Hardpoints
     yaw_inertia: float
-    condition: FlightCondition = field(default_factory=FlightCondition)
+    condition: FlightCondition = field(
+        default_factory=lambda: FlightCondition(SIZING_SPEED))
     parachute: Parachute | None = None
     fin_rate_damping: bool = True
 
@@ -209,6 +109,12 @@ class YawModel:
         if not np.isfinite(inertia) or inertia <= 0:
             raise InputError("yaw inertia must be > 0 [kg m^2]", inertia)
         object.__setattr__(self, "yaw_inertia", inertia)
+        if not isinstance(self.condition, FlightCondition):
+            raise InputError("the yaw model's condition must be a FlightCondition",
+                             type(self.condition).__name__)
+        if self.condition.hover:
+            raise InputError("the yaw model needs an airspeed > 0 [m/s] (its stiffness and "
+                             "damping come from the free stream)", self.condition.eas)
         object.__setattr__(self, "_half_rho", 0.5 * self.condition.density)
         object.__setattr__(self, "_tas", self.condition.tas)
         hub = self.hardpoints.hub
@@ -393,6 +299,18 @@ class Histories:
     exit_time: np.ndarray
 
 
+def yaw_solver_settings(settings=None):
+    """``settings`` (default :class:`SolverSettings`) with the yaw runs' defaults filled in
+    (:data:`YAW_SOLVER_DEFAULTS`) and its fixed grid checked: ``t_end`` and
+    ``output_interval`` must be whole multiples of ``step``."""
+    settings = SolverSettings() if settings is None else settings
+    if not isinstance(settings, SolverSettings):
+        raise InputError("solver settings must be a SolverSettings", type(settings).__name__)
+    settings = settings.with_defaults(**YAW_SOLVER_DEFAULTS)
+    settings.fixed_grid()
+    return settings
+
+
 def _distinct(gusts):
     """Distinct gust objects (by identity) and each run's index into them."""
     seen, unique, index = {}, [], []
@@ -450,32 +368,38 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
 
     Notes
     -----
-    Gust velocities are tabulated once per distinct gust on the step grid (at the start, middle
+    The step grid is uniform with every gust breakpoint (jump or kink: onsets, ends, the end
+    of a rise) inserted, so that no step straddles one; histories are stored on the uniform
+    output grid. Gust velocities are tabulated once per distinct gust (at the start, middle
     and end of each step, the end value taken just before the step end so that a jump on a
-    step boundary is seen on the correct side). Table lookups are ``np.interp`` on the
-    tables' breakpoints; a run that leaves a table is flagged and frozen, never clamped
-    silently.
+    step boundary is seen on the correct side); a turbulence realisation is a function of
+    time, so every stage sees the same gust. Table lookups are ``np.interp`` on the tables'
+    breakpoints; a run that leaves a table is flagged and frozen, never clamped silently.
     """
-    settings = SolverSettings() if settings is None else settings
+    settings = yaw_solver_settings(settings)
+    n, every = settings.fixed_grid()
     areas, gusts, psi, rate = _check_runs(model, areas, gusts, psi0, rate0)
-    runs, dt, n = areas.size, settings.dt, settings.n_steps
+    runs = areas.size
     unique, index = _distinct(gusts)
-    t = np.arange(n + 1) * dt
+    times = settings.output_times()
+    nodes, stored = _time_nodes(settings, unique)
+    start, step = nodes[:-1], np.diff(nodes)
     tables = []
-    for when in (t[:-1], t[:-1] + 0.5 * dt, t[1:] - 1e-9 * dt, t):
-        v = np.stack([g.velocity(when) for g in unique])  # (unique, times)
+    # gust at the start (after a jump there), middle and end (just before a jump) of each step
+    for when in (start, start + 0.5 * step, nodes[1:] - 1e-9 * step):
+        v = np.stack([g.velocity(when) for g in unique])  # (unique, steps)
         gamma, v_rel = model.relative_wind(v)
-        tables.append((gamma.T.copy(), v_rel.T.copy()))  # (times, unique)
-    (g0, w0), (gm, wm), (g1, w1), (gt, _) = tables
-    every = settings.output_every
-    n_out = n // every + 1
-    out_psi, out_rate = np.empty((runs, n_out)), np.empty((runs, n_out))
+        tables.append((gamma.T.copy(), v_rel.T.copy()))  # (steps, unique)
+    (g0, w0), (gm, wm), (g1, w1) = tables
+    out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
     out_psi[:, 0], out_rate[:, 0] = psi, rate
     left = np.zeros(runs, dtype=bool)
     exit_time = np.full(runs, np.nan)
     deriv = model.derivatives
-    half = 0.5 * dt
-    for i in range(n):
+    k_out = 1
+    for i in range(start.size):
+        dt = step[i]
+        half = 0.5 * dt
         ga, va = g0[i, index], w0[i, index]
         gb, vb = gm[i, index], wm[i, index]
         gc, vc = g1[i, index], w1[i, index]
@@ -488,30 +412,54 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
         bad = o1 | o2 | o3 | o4
         if bad.any():
             fresh = bad & ~left
-            exit_time[fresh] = t[i]
+            exit_time[fresh] = start[i]
             left |= bad
             new_psi = np.where(left, psi, new_psi)
             new_rate = np.where(left, 0.0, new_rate)
         psi, rate = new_psi, new_rate
-        if (i + 1) % every == 0:
-            out_psi[:, (i + 1) // every] = psi
-            out_rate[:, (i + 1) // every] = rate
-    sample = slice(None, None, every)
-    gust_out = np.stack([g.velocity(t[sample]) for g in unique])[index]
-    beta = gt[sample][:, index].T - out_psi
-    return Histories(t[sample], out_psi, out_rate, beta, gust_out, left, exit_time)
+        if stored[i + 1]:
+            out_psi[:, k_out] = psi
+            out_rate[:, k_out] = rate
+            k_out += 1
+    gust_out = np.stack([g.velocity(times) for g in unique])
+    gamma_out = model.relative_wind(gust_out)[0]
+    beta = gamma_out[index] - out_psi
+    return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
+
+
+def _time_nodes(settings, gusts):
+    """The uniform RK4 grid with every gust breakpoint (jump or kink) inserted, so that no
+    step straddles one; and a flag per node: True at the stored (uniform output) times.
+
+    A breakpoint closer than 1e-6 of a step to a grid node is taken as that node.
+    """
+    n, every = settings.fixed_grid()
+    grid = np.arange(n + 1) * settings.step
+    stored = np.zeros(n + 1, dtype=bool)
+    stored[::every] = True
+    breaks = np.unique([b for g in gusts for b in g.breakpoints
+                        if b is not None and 0.0 < b < settings.t_end])
+    if breaks.size:
+        near = np.abs(breaks[:, None] - grid[None, :]).min(axis=1) < 1e-6 * settings.step
+        extra = breaks[~near]
+        if extra.size:
+            order = np.argsort(np.concatenate([grid, extra]), kind="stable")
+            grid = np.concatenate([grid, extra])[order]
+            stored = np.concatenate([stored, np.zeros(extra.size, dtype=bool)])[order]
+    return grid, stored
 
 
 def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     """The same runs as :func:`integrate_rk4`, one :func:`scipy.integrate.solve_ivp` per run.
 
     Adaptive (``settings.method``, ``rtol``, ``atol``, ``max_step``), sampled at the same output
-    times. It is the reference for runs that stay inside their tables: a run found outside
+    times, integrated piecewise between the gust's breakpoints (so that no step straddles a
+    jump). It is the reference for runs that stay inside their tables: a run found outside
     them at an output time is flagged (``left_table``) but not frozen.
     """
-    settings = SolverSettings() if settings is None else settings
+    settings = yaw_solver_settings(settings)
     areas, gusts, psi0, rate0 = _check_runs(model, areas, gusts, psi0, rate0)
-    times = settings.output_times
+    times = settings.output_times()
     runs = areas.size
     # From a trimmed rest the adaptive step grows without bound and could jump over a finite
     # gust entirely; the step is therefore capped at the output interval.
@@ -525,12 +473,21 @@ def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None)
             dpsi, drate, _ = model.derivatives(y[0], y[1], gamma, v_rel, area)
             return [float(dpsi), float(drate)]
 
-        sol = solve_ivp(rhs, (0.0, times[-1]), [psi0[j], rate0[j]], method=settings.method,
-                        t_eval=times, rtol=settings.rtol, atol=settings.atol,
-                        max_step=max_step)
-        if not sol.success:
-            raise InputError(f"solve_ivp failed: {sol.message}", j)
-        out_psi[j], out_rate[j] = sol.y
+        budget = evaluation_budget(rhs, "the solve_ivp reference runs", field="rtol",
+                                   limit=MAX_ODE_EVALUATIONS // runs)
+        cuts = np.unique([0.0, *(b for b in gust.breakpoints
+                                 if b is not None and 0.0 < b < times[-1]), times[-1]])
+        which = np.clip(np.searchsorted(cuts, times, side="right") - 1, 0, cuts.size - 2)
+        y = [psi0[j], rate0[j]]
+        for k in range(cuts.size - 1):
+            sol = solve_ivp(budget, (cuts[k], cuts[k + 1]), y, method=settings.method,
+                            rtol=settings.rtol, atol=settings.atol, max_step=max_step,
+                            dense_output=True)
+            if not sol.success:
+                raise InputError(f"solve_ivp failed: {sol.message}", j)
+            inside = which == k
+            out_psi[j, inside], out_rate[j, inside] = sol.sol(times[inside])
+            y = sol.y[:, -1]
     gust_out = np.stack([g.velocity(times) for g in gusts])
     gamma, v_rel = model.relative_wind(gust_out)
     beta = gamma - out_psi

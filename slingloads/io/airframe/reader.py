@@ -12,10 +12,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from slingloads.errors import InputError
 from slingloads.io.airframe.schema import HARDPOINT_KINDS, SHEETS
+from slingloads.io.common.atomic import safe_file_part
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.units import si_factor
-from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.common.workbook import cell_name, check_unique, located
+from slingloads.limits import MAX_AIRFRAME_SIZE
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import (
     FIN_AXES,
@@ -49,24 +51,32 @@ def read_airframe(reader, params):
     airframe : Airframe
     points : dict
         Hardpoint position by kind (``hub``, ``mast_foot``, ``chute``, ``fin_cp``,
-        ``aero_reference``: the first row of that kind, or None) [m], and ``chute_row``: the
-        0-based row of the chute hardpoint, or None.
+        ``aero_reference``: the first row of that kind, or None) [m], ``chute_row``: the
+        0-based row of the chute hardpoint, or None, and ``rows``: the 0-based rows of each
+        kind (to locate errors on derived quantities).
+
+    Raises
+    ------
+    InputError
+        At the cell of the bad value. Implausible but possible geometry (a mass item far to
+        the side, a cut station outside the load points) is added to ``reader.warnings``.
     """
-    items = _mass_items(reader)
+    items, items_t = _mass_items(reader)
     stations = reader.table(_SPEC["Stations"])
     check_unique(reader, stations, "id")
+    _check_file_names(stations, "id", "station")
     x = stations["x"]
     for i in range(1, len(x)):
         if x[i] <= x[i - 1]:
             rule = ("cut stations must not repeat" if x[i] == x[i - 1]
                     else "cut stations must be sorted by increasing x")
-            raise reader.error(rule, float(x[i] / si_factor(stations.units["x"], "length")),
-                               stations.sheet, stations.cell("x", i))
+            raise stations.error("x", i, rule)
     axis = (params("reference axis y"), params("reference axis z"))
+    mast = _mast_axis(params)
+    _mass_item_warnings(reader, items_t, items, axis)
     hp_t, points = _hardpoint_rows(reader, items, axis)
-    mast = np.array([params("mast axis x"), params("mast axis y"), params("mast axis z")])
     aero_points, aero_weights = _aero_points(reader, items, axis)
-    with located(reader.file, hp_t.sheet):
+    with hp_t.located({"mast_weights": "weight"}):
         hardpoints = Hardpoints(
             hub=points["hub"][0][1],
             mast_feet=np.array([p[1] for p in points["mast_foot"]]),
@@ -75,32 +85,130 @@ def read_airframe(reader, params):
             chute=points["chute"][0][1] if points["chute"] else None,
             mast_feet_ids=tuple(p[0] for p in points["mast_foot"]),
         )
-    with located(reader.file, stations.sheet):
+    with stations.located({"stations": "x"}):
         airframe = Airframe(items, x, hardpoints, axis, tuple(stations["id"]), aero_points,
                             aero_weights, name=str(params("study name")))
+    _check_stations_span(reader, stations, items_t, hp_t, airframe)
     refs = {k: (v[0][1] if v else None) for k, v in points.items()}
     refs["chute_row"] = points["chute"][0][3] if points["chute"] else None
+    refs["rows"] = {k: [p[3] for p in v] for k, v in points.items()}
     return airframe, refs
+
+
+def _mast_axis(params):
+    """The mast direction from the Study sheet: not zero, not along the fuselage x axis."""
+    names = ("mast axis x", "mast axis y", "mast axis z")
+    mast = np.array([params(n) for n in names])
+    norm = float(np.linalg.norm(mast))
+    given = [n for n in names if params.cell(n)] or ["mast axis z"]
+    if norm == 0:
+        raise params.error(given[-1], "the mast axis ('mast axis x', 'mast axis y', 'mast "
+                           "axis z') must not be the zero vector")
+    if np.linalg.norm(mast[1:]) <= 1e-9 * norm:
+        raise params.error("mast axis x", "the mast axis must not be parallel to the "
+                           "fuselage x axis (give its y or z component)")
+    return mast
+
+
+def _check_file_names(table, column, what):
+    """Ids that name report files must stay distinct once made file-name safe."""
+    seen = {}
+    for i, text in enumerate(table[column]):
+        key = safe_file_part(text).casefold()
+        if key in seen:
+            j = seen[key]
+            raise table.error(column, i, f"{what} ids {table[column][j]!r} "
+                              f"({table.cell(column, j)}) and this one give the same report "
+                              f"file name part {safe_file_part(text)!r} (only letters, "
+                              "digits, '.', '_' and '-' are kept, and case is ignored): "
+                              "rename one")
+        seen[key] = i
+
+
+def _check_stations_span(reader, stations, items_t, hp_t, airframe):
+    """A cut station far outside the load points is refused; one just outside (where the
+    internal loads are zero) is flagged."""
+    xs = [airframe.mass_items.position[:, 0], airframe.hardpoints.mast_feet[:, 0],
+          [airframe.hardpoints.hub[0]], airframe.aero_points]
+    if airframe.hardpoints.chute is not None:
+        xs.append([airframe.hardpoints.chute[0]])
+    span = np.concatenate([np.ravel(v) for v in xs])
+    lo, hi = float(span.min()), float(span.max())
+    reach = max(hi - lo, 1.0)
+    outside = []
+    for i, x in enumerate(stations["x"]):
+        if x < lo - reach or x > hi + reach:
+            raise stations.error("x", i, f"cut station lies far outside the airframe: the "
+                                 f"load points span x = [{lo:.4g}, {hi:.4g}] m and a cut "
+                                 f"more than the airframe length ({reach:.4g} m) beyond "
+                                 "them is refused (check the unit of the header)")
+        if not lo <= x <= hi:
+            outside.append(f"{stations['id'][i]} ({stations.cell('x', i)})")
+    if outside:
+        reader.warnings.append(
+            f"cut station(s) {', '.join(outside[:10])}{' ...' if len(outside) > 10 else ''} "
+            f"lie outside the span of the load points x = [{lo:.4g}, {hi:.4g}] m: their "
+            "internal loads are zero")
 
 
 def _mass_items(reader):
     items_t = reader.table(_SPEC["MassItems"])
     check_unique(reader, items_t, "id")
     masses = items_t["mass"]
-    for i, m in enumerate(masses):
-        if m <= 0:
-            raise reader.error("mass must be > 0",
-                               float(m / si_factor(items_t.units["mass"], "mass")),
-                               items_t.sheet, items_t.cell("mass", i))
     inertia = np.zeros((len(masses), 3, 3))
+    present = []
     for (a, b), name in {(0, 0): "Ixx", (1, 1): "Iyy", (2, 2): "Izz", (0, 1): "Ixy",
                          (0, 2): "Ixz", (1, 2): "Iyz"}.items():
         if items_t.has(name):
             inertia[:, a, b] = inertia[:, b, a] = items_t[name]
+            present.append(name)
     position = np.column_stack([items_t["x"], items_t["y"], items_t["z"]])
-    with located(reader.file, items_t.sheet):
-        return MassItems(tuple(items_t["id"]), masses, position, inertia,
-                         tuple(items_t["description"]) if items_t.has("description") else ())
+    _check_extent(items_t, position)
+    fields = {"mass": "mass", "position": "x", "inertia": present[0] if present else "mass"}
+    with items_t.located(fields):
+        items = MassItems(tuple(items_t["id"]), masses, position, inertia,
+                          tuple(items_t["description"]) if items_t.has("description") else ())
+    if items.total_mass < MIN_TOTAL_MASS:
+        raise items_t.error("mass", int(np.argmax(masses)), f"the mass items weigh "
+                            f"{items.total_mass:.3g} kg in all, less than the "
+                            f"{MIN_TOTAL_MASS:g} kg of any aircraft (check the header's unit)")
+    _check_rigid_inertia(items_t, items)
+    return items, items_t
+
+
+#: Smallest total mass of the mass items. [kg]
+MIN_TOTAL_MASS = 1.0
+
+
+def _check_rigid_inertia(items_t, items):
+    """The mass items must have inertia about every axis through their CG, else inertia
+    relief cannot balance a moment about that axis (the loads would not close)."""
+    tensor = items.inertia_about_cg
+    values, vectors = np.linalg.eigh(tensor)
+    if values[0] <= 1e-9 * max(values[-1], 1e-300):
+        axis = vectors[:, 0] * np.sign(vectors[np.argmax(np.abs(vectors[:, 0])), 0])
+        names = [c for c in ("Ixx", "Iyy", "Izz") if items_t.has(c)]
+        cell = items_t.cell(names[0], 0) if names else cell_name(1, len(items_t.cells) + 1)
+        raise InputError(f"the mass items have no inertia about the axis "
+                         f"({axis[0]:.3g}, {axis[1]:.3g}, {axis[2]:.3g}) through their CG (all "
+                         "on one line, without own inertias): inertia relief cannot balance a "
+                         "moment about it; give the items their own inertias (Ixx, Iyy, Izz "
+                         "columns) or their true positions", file=items_t.file,
+                         sheet=items_t.sheet, cell=cell)
+
+
+def _check_extent(items_t, position):
+    """The mass items fit in a box of MAX_AIRFRAME_SIZE; the item farthest from the median
+    along the offending axis is blamed."""
+    for k, column in enumerate("xyz"):
+        values = position[:, k]
+        if values.max() - values.min() > MAX_AIRFRAME_SIZE:
+            median = float(np.median(values))
+            i = int(np.argmax(np.abs(values - median)))
+            raise items_t.error(column, i, f"mass items span {values.max() - values.min():.4g}"
+                                f" m along {column}, more than the {MAX_AIRFRAME_SIZE:g} m "
+                                "an airframe may measure: this item lies far outside the "
+                                "others (check its value and the header's unit)")
 
 
 def _hardpoint_rows(reader, items, axis):
@@ -111,17 +219,13 @@ def _hardpoint_rows(reader, items, axis):
     for i, kind in enumerate(hp_t["kind"]):
         k = kind.strip().lower()
         if k not in HARDPOINT_KINDS:
-            raise reader.error(f"unknown hardpoint kind; valid kinds are "
-                               f"{list(HARDPOINT_KINDS)}", kind, hp_t.sheet,
-                               hp_t.cell("kind", i))
+            raise hp_t.error("kind", i, f"unknown hardpoint kind; valid kinds are "
+                             f"{list(HARDPOINT_KINDS)}")
         p = np.array([hp_t["x"][i], hp_t["y"][i], hp_t["z"][i]])
         if k != "aero_reference":
             with located(reader.file, hp_t.sheet, hp_t.cell("x", i)):
                 check_inside(items, axis, f"{hp_t['id'][i]!r}", p)
         w = hp_t["weight"][i] if hp_t.has("weight") else 1.0
-        if not w > 0:
-            raise reader.error("hardpoint weight must be > 0", float(w), hp_t.sheet,
-                               hp_t.cell("weight", i))
         points[k].append((hp_t["id"][i], p, w, i))
     for kind, lo, hi in (("hub", 1, 1), ("mast_foot", 1, None), ("chute", 0, 1),
                          ("fin_cp", 0, 1), ("aero_reference", 0, 1)):
@@ -129,8 +233,10 @@ def _hardpoint_rows(reader, items, axis):
         if n < lo or (hi is not None and n > hi):
             want = f"exactly {lo}" if lo == hi else (f"at least {lo}" if hi is None
                                                     else f"at most {hi}")
+            cell = (hp_t.cell("kind", points[kind][hi][3]) if hi is not None and n > hi
+                    else "B1")
             raise reader.error(f"the Hardpoints sheet needs {want} row(s) of kind {kind!r}",
-                               n, hp_t.sheet, "B1")
+                               n, hp_t.sheet, cell)
     return hp_t, points
 
 
@@ -140,14 +246,24 @@ def _aero_points(reader, items, axis):
         return None, None
     ap = reader.table(_SPEC["AeroPoints"])
     aero_points, aero_weights = ap["x"], ap["weight"]
-    for i, (xa, wa) in enumerate(zip(aero_points, aero_weights, strict=True)):
-        if not wa > 0:
-            raise reader.error("aerodynamic share weight must be > 0", float(wa), ap.sheet,
-                               ap.cell("weight", i))
+    for i, xa in enumerate(aero_points):
         with located(reader.file, ap.sheet, ap.cell("x", i)):
             check_inside(items, axis, f"aerodynamic point {i + 1}",
                          np.array([xa, axis[0], axis[1]]))
     return aero_points, aero_weights
+
+
+def _mass_item_warnings(reader, items_t, items, axis):
+    """Flag mass items farther from the loads reference axis than the airframe is long."""
+    x = items.position[:, 0]
+    reach = max(float(x.max() - x.min()), 1.0)
+    distance = np.hypot(items.position[:, 1] - axis[0], items.position[:, 2] - axis[1])
+    far = np.flatnonzero(distance > reach)
+    if far.size:
+        names = ", ".join(f"{items_t['id'][i]} ({items_t.cell('y', i)})" for i in far[:10])
+        reader.warnings.append(
+            f"mass item(s) {names}{' ...' if far.size > 10 else ''} lie farther from the loads "
+            f"reference axis than the airframe is long ({reach:.4g} m): check their y and z")
 
 
 def read_fuselage_aero(reader, params, refs):
@@ -170,7 +286,8 @@ def read_fuselage_aero(reader, params, refs):
     t = reader.table(_SPEC["FuselageAero"])
     if refs["aero_reference"] is None:
         raise reader.error("the FuselageAero sheet needs a Hardpoints row of kind "
-                           "'aero_reference' (moment reference point)", sheet="Hardpoints")
+                           "'aero_reference' (moment reference point)", sheet="Hardpoints",
+                           cell="B1")
     area = params.positive("fuselage reference area")
     length = params.positive("fuselage reference length")
     force_axes = params.choice("fuselage force axes", tuple(FORCE_AXES))
@@ -178,7 +295,8 @@ def read_fuselage_aero(reader, params, refs):
     columns = fuselage_columns(force_axes)
     _columns_match(reader, t, columns, ("CD", "CL", "CX", "CZ"),
                    f"'fuselage force axes' is {force_axes!r}")
-    with located(reader.file, t.sheet):
+    _check_full_grid(t)
+    with t.located():
         table = Table2D.from_long(t["alpha"], t["beta"], {c: t[c] for c in columns})
         return FuselageAero(table, area, length, refs["aero_reference"], force_axes,
                             moment_axes)
@@ -197,6 +315,30 @@ def _columns_match(reader, table, needed, optional, why):
                                table.cell(name, 0).rstrip("0123456789") + "1")
 
 
+def _check_full_grid(t):
+    """The FuselageAero rows form a full alpha x beta grid without repeats."""
+    rows = {}
+    for i, key in enumerate(zip(t["alpha"], t["beta"], strict=True)):
+        if key in rows:
+            raise t.error("beta", i, f"the (alpha, beta) point of this row repeats row "
+                          f"{t.cell('alpha', rows[key])[1:]}")
+        rows[key] = i
+    alphas = np.unique(t["alpha"])
+    betas = np.unique(t["beta"])
+    for name, values in (("alpha", alphas), ("beta", betas)):
+        if values.size < 2:
+            raise t.error(name, 0, f"the table needs at least two {name} values (it is "
+                          "never extrapolated)")
+    if len(t) != alphas.size * betas.size:
+        for i, a in enumerate(t["alpha"]):
+            count = int(np.count_nonzero(t["alpha"] == a))
+            if count != betas.size:
+                raise t.error("alpha", i, f"the table must be a full grid: this alpha has "
+                              f"{count} rows but there are {betas.size} beta values "
+                              f"({alphas.size} x {betas.size} = {alphas.size * betas.size} "
+                              "rows needed)")
+
+
 def read_fin_aero(reader, params, refs):
     """The FinAero sheet with 'fin area', 'fin efficiency' and the fin_cp hardpoint, or None.
 
@@ -209,13 +351,14 @@ def read_fin_aero(reader, params, refs):
     t = reader.table(_SPEC["FinAero"])
     if refs["fin_cp"] is None:
         raise reader.error("the FinAero sheet needs a Hardpoints row of kind 'fin_cp'",
-                           sheet="Hardpoints")
+                           sheet="Hardpoints", cell="B1")
     area = params.positive("fin area")
     eff = params("fin efficiency")
     axes = params.choice("fin axes", FIN_AXES)
-    with located(reader.file, t.sheet):
+    with t.located():
         table = Table1D(t["beta"], {"CY": t["CY"]}, angle_name="beta", what="fin")
-    with located(reader.file, STUDY_SHEET, params.cell("fin efficiency")):
+    with params.located({"efficiency": "fin efficiency", "area": "fin area"},
+                        "fin efficiency"):
         return Fin(table, area, refs["fin_cp"], eff, axes)
 
 
@@ -239,8 +382,13 @@ def read_parachute_cd(reader, axes="wind"):
     column = PARACHUTE_AXES[axes]
     _columns_match(reader, t, (column,), tuple(PARACHUTE_AXES.values()),
                    f"'parachute table axes' is {axes!r}")
-    with located(reader.file, t.sheet):
-        return Table1D(t["alpha"], {column: t[column]}, angle_name="alpha", what="parachute")
+    with t.located():
+        table = Table1D(t["alpha"], {column: t[column]}, angle_name="alpha",
+                        what="parachute")
+    if not t["alpha"].min() <= 0 <= t["alpha"].max():
+        raise t.error("alpha", int(np.argmin(np.abs(t["alpha"]))),
+                      "the parachute table must include alpha = 0 deg")
+    return table
 
 
 def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
@@ -264,7 +412,7 @@ def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
     axes = params.choice("parachute table axes", tuple(PARACHUTE_AXES))
     cd = read_parachute_cd(reader, axes)
     for name, arg in parameters.items():
-        with located(reader.file, STUDY_SHEET, params.where(name)):
+        with params.located({}, name):
             Parachute(area, cd, axes=axes, **{arg: params(name)})
     with located(reader.file, "ParachuteCD" if cd is not None else STUDY_SHEET):
         return Parachute(area, cd, axes=axes,

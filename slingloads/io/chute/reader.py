@@ -15,18 +15,35 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from slingloads.analyses.chute_sizing import MetricSettings
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
-from slingloads.io.chute.schema import INERTIA_SOURCES, INTEGRATORS, SHEETS, WAKE_SOURCES
+from slingloads.io.airframe.schema import SHEETS as _AIRFRAME_SHEETS
+from slingloads.io.chute.schema import (
+    INERTIA_SOURCES,
+    INTEGRATORS,
+    SEVERITIES,
+    SHEETS,
+    WAKE_SOURCES,
+)
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import located
+from slingloads.limits import (
+    MAX_CHUTE_REFERENCE_RUNS,
+    MAX_CHUTE_RUN_STEPS,
+    MAX_CHUTE_RUNS,
+    MAX_CHUTE_SAMPLES,
+    MAX_CHUTE_STEPS,
+)
 from slingloads.models.airframe import yaw_inertia_about_hub
-from slingloads.models.gusts import GUST_KINDS, make_gust
+from slingloads.models.flight import FlightCondition
+from slingloads.models.gusts import GUST_SHAPES, DrydenTurbulence, make_gust
+from slingloads.models.integration import SOLVE_IVP_METHODS, SolverSettings
 from slingloads.models.wake import BluffBodyWake, TabulatedWake
-from slingloads.models.yaw_dynamics import FlightCondition, SolverSettings, YawModel
+from slingloads.models.yaw_dynamics import YawModel
 
 ANALYSIS = "chute sizing"
-_SOLVE_IVP_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+HARDPOINT_SHEETS = {s.name: s for s in _AIRFRAME_SHEETS}
 
 
 @dataclass(frozen=True)
@@ -50,6 +67,8 @@ class ChuteSizingInputs:
     gusts : tuple
         Gust shapes of the sweep.
     settings : SolverSettings
+    metrics : MetricSettings
+        With the sideslip limit past which no run is called stable.
     factors : ndarray
         Swept areas over the neutral area. [-]
     recommended_factor : float
@@ -72,6 +91,7 @@ class ChuteSizingInputs:
     margin: float
     gusts: tuple
     settings: SolverSettings
+    metrics: MetricSettings
     factors: np.ndarray
     recommended_factor: float
     integrator: str
@@ -101,11 +121,12 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule.
     """
     file = reader.file
-    # ---- condition
+    # ---- condition (IAS taken equal to EAS)
     ias = params.positive("chute sizing airspeed IAS")
     with located(file, STUDY_SHEET, params.where("chute sizing density altitude")):
-        condition = FlightCondition(ias, params("chute sizing density altitude"),
-                                    params("chute sizing alpha trim"))
+        condition = FlightCondition(eas=ias,
+                                    density_altitude=params("chute sizing density altitude"),
+                                    alpha=params("chute sizing alpha trim"))
     half = params.positive("chute sizing linearisation range")
     params.check("chute sizing linearisation range", half < np.pi / 2,
            "'chute sizing linearisation range' must be below 90 deg")
@@ -122,9 +143,9 @@ def read(reader, params, study):
                            "parachute attachment)", sheet="Hardpoints", cell="B1")
     arm = hardpoints.chute[0] - hardpoints.hub[0]
     if arm <= 0:
-        raise reader.error("the parachute attachment (kind 'chute') must lie aft of the rotor "
-                           "hub (x greater) to stabilise in yaw; x distance [m]", float(arm),
-                           "Hardpoints")
+        hp_t = reader.table(HARDPOINT_SHEETS["Hardpoints"])
+        raise hp_t.error("x", refs["chute_row"], "the parachute attachment (kind 'chute') must "
+                         "lie aft of the rotor hub (x greater) to stabilise in yaw")
     parachute = read_parachute(reader, params, 1.0)
     # ---- yaw inertia
     source = params.choice("chute sizing yaw inertia source", INERTIA_SOURCES)
@@ -139,14 +160,22 @@ def read(reader, params, study):
                "> 0 (with the source 'parameter') or 0 (with 'mass items')")
         inertia = yaw_inertia_about_hub(study.airframe)
         if not inertia > 0:
-            raise reader.error("yaw inertia about the hub computed from the mass items must be "
-                               "> 0 [kg m^2]", inertia, "MassItems")
+            raise params.error("chute sizing yaw inertia source", "the yaw inertia about the "
+                               "hub computed from the mass items is 0 (every item on the hub's "
+                               "vertical, without Izz): give it with the source 'parameter'")
     with located(file, STUDY_SHEET, params.where("chute sizing alpha trim")):
         model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute)
     lo, hi = model.beta_range()
     params.check("chute sizing linearisation range", half <= min(-lo, hi),
            f"the linearisation range must lie inside the tables' sideslip range "
            f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+    for what, grid in (("FuselageAero", None if fuselage is None else fuselage.table.beta),
+                       ("FinAero", None if fin is None else fin.table.angle)):
+        if grid is not None:
+            inside = np.count_nonzero(np.abs(grid) <= half + 1e-12)
+            params.check("chute sizing linearisation range", inside >= 2,
+                         f"the {what} table has {inside} sideslip breakpoint(s) within the "
+                         "linearisation range: the least-squares fit needs at least two")
     # ---- wake and line
     target = params("chute sizing target q ratio")
     params.check("chute sizing target q ratio", 0 < target <= 1,
@@ -177,16 +206,23 @@ def read(reader, params, study):
     dt = params.positive("chute sizing time step")
     interval = params.positive("chute sizing output interval")
     integrator = params.choice("chute sizing integrator", INTEGRATORS)
-    method = params.choice("chute sizing reference method", _SOLVE_IVP_METHODS)
+    method = params.choice("chute sizing reference method", SOLVE_IVP_METHODS)
     rtol = params.positive("chute sizing reference rtol")
+    shapes = [s for s in str(params("chute sizing gust shapes") or "").split(",") if s.strip()]
+    _check_work(params, int(params("chute sizing number of areas")) * max(len(shapes), 1),
+                t_end, dt, interval, integrator)
     try:
         settings = SolverSettings(t_end, dt, interval, method, rtol)
+        settings.fixed_grid()
     except InputError as err:
         name = ("chute sizing output interval" if "output_interval" in err.rule
                 else "chute sizing simulation time")
-        raise err.located(file=file, sheet=STUDY_SHEET, cell=params.where(name)) from None
+        raise params.error(name, err.rule) from None
     # ---- gusts
     gusts = _gusts(reader, params, model, t_end)
+    limit = params.positive("chute sizing sideslip limit")
+    params.check("chute sizing sideslip limit", limit < np.pi / 2,
+                 "'chute sizing sideslip limit' must be below 90 deg")
     # ---- sweep
     fmin = params.positive("chute sizing area factor min")
     fmax = params("chute sizing area factor max")
@@ -201,10 +237,32 @@ def read(reader, params, study):
     return ChuteSizingInputs(
         model=model, fit_range=(-half, half), wake=wake, target=float(target),
         cable_length=cable if cable > 0 else None, margin=margin, gusts=gusts,
-        settings=settings, factors=np.linspace(fmin, fmax, int(count)),
+        settings=settings, metrics=MetricSettings(sideslip_limit=limit),
+        factors=np.linspace(fmin, fmax, int(count)),
         recommended_factor=recommended, integrator=integrator, inertia_source=source,
         study_area=float(params("parachute area")),
         study_line=float(params("parachute line length")))
+
+
+def _check_work(params, runs, t_end, dt, interval, integrator):
+    """The sweep asked for stays within the limits (before anything is computed)."""
+    steps = t_end / dt
+    samples = runs * (t_end / interval + 1)
+    for name, count, limit, what in (
+            ("chute sizing number of areas", runs, MAX_CHUTE_RUNS,
+             "runs (areas x gust shapes)"),
+            ("chute sizing time step", steps, MAX_CHUTE_STEPS, "time steps per run"),
+            ("chute sizing time step", steps * runs, MAX_CHUTE_RUN_STEPS,
+             "run-steps (runs x time steps)"),
+            ("chute sizing output interval", samples, MAX_CHUTE_SAMPLES,
+             "stored samples (runs x simulation time / output interval)")):
+        params.check(name, count <= limit, f"too much work: the sweep asks for {count:,.0f} "
+                     f"{what}, more than the {limit:,} allowed (limits of slingloads)")
+    if integrator == "solve_ivp":
+        params.check("chute sizing integrator", runs <= MAX_CHUTE_REFERENCE_RUNS,
+                     f"too much work: the 'solve_ivp' integrator solves each of the {runs:,} "
+                     f"runs on its own; at most {MAX_CHUTE_REFERENCE_RUNS} are allowed (limits "
+                     "of slingloads): use 'rk4' or fewer areas")
 
 
 def _wake_table(reader):
@@ -232,28 +290,64 @@ def _gusts(reader, params, model, t_end):
     name = "chute sizing gust shapes"
     shapes = [s.strip().lower() for s in str(params(name) or "").split(",") if s.strip()]
     if not shapes:
-        raise reader.error(f"{name!r} needs at least one shape of {list(GUST_KINDS)}", "",
+        raise reader.error(f"{name!r} needs at least one shape of {list(GUST_SHAPES)}", "",
                            STUDY_SHEET, params.where(name))
     for s in shapes:
-        if s not in GUST_KINDS:
-            raise reader.error(f"unknown gust shape; valid shapes are {list(GUST_KINDS)}", s,
+        if s not in GUST_SHAPES:
+            raise reader.error(f"unknown gust shape; valid shapes are {list(GUST_SHAPES)}", s,
                                STUDY_SHEET, params.where(name))
         if shapes.count(s) > 1:
             raise reader.error("gust shape listed twice", s, STUDY_SHEET, params.where(name))
     amplitude = params.positive("chute sizing gust amplitude")
     onset = params.positive("chute sizing gust onset", allow_zero=True)
     duration = params.positive("chute sizing gust duration")
+    rise = params.positive("chute sizing gust rise time", allow_zero=True)
+    period = params.positive("chute sizing harmonic period")
     params.check("chute sizing gust onset", onset < t_end,
-           f"the gust must start before the end of the simulation ({t_end:g} s)")
+                 f"the gust must start before the end of the simulation ({t_end:g} s)")
     if any(s in ("finite", "1-cosine") for s in shapes):
         params.check("chute sizing gust duration", onset + duration < t_end,
-               f"finite and 1-cosine gusts must end (onset + duration) before the end of the "
-               f"simulation ({t_end:g} s) so that the free response is seen")
+                     f"finite and 1-cosine gusts must end (onset + duration) before the end "
+                     f"of the simulation ({t_end:g} s) so that the free response is seen")
+    if "continuous" in shapes:
+        params.check("chute sizing gust rise time", onset + rise < t_end,
+                     f"the continuous crosswind must have risen (onset + rise time) before "
+                     f"the end of the simulation ({t_end:g} s)")
     lo, hi = model.beta_range()
     tas = model.condition.tas
     gamma = np.arctan(amplitude / tas)
     params.check("chute sizing gust amplitude", gamma < min(-lo, hi),
-           f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at {tas:.4g} m/s true "
-           f"airspeed, outside the aerodynamic tables' range [{np.degrees(lo):.4g}, "
-           f"{np.degrees(hi):.4g}] deg")
-    return tuple(make_gust(s, amplitude, onset, duration) for s in shapes)
+                 f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at {tas:.4g} m/s "
+                 f"true airspeed, outside the aerodynamic tables' range "
+                 f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+    gusts = []
+    for s in shapes:
+        if s == DrydenTurbulence.kind:
+            gusts.append(_turbulence(reader, params, model, onset, t_end))
+        else:
+            gusts.append(make_gust(s, amplitude, onset, duration, rise_time=rise,
+                                   period=period))
+    return tuple(gusts)
+
+
+def _turbulence(reader, params, model, onset, t_end):
+    """The Dryden realisation of the 'chute sizing turbulence ...' rows."""
+    severity = params.choice("chute sizing turbulence severity", SEVERITIES)
+    length = params.positive("chute sizing turbulence duration")
+    params.check("chute sizing turbulence duration", onset + length < t_end,
+                 f"the turbulence must end (onset + duration) before the end of the "
+                 f"simulation ({t_end:g} s) so that the free response is seen")
+    seed = params("chute sizing turbulence seed")
+    params.check("chute sizing turbulence seed", float(seed) == int(seed) and seed >= 0,
+                 "'chute sizing turbulence seed' must be a whole number >= 0")
+    altitude = params("chute sizing turbulence altitude")
+    with located(reader.file, STUDY_SHEET, params.where("chute sizing turbulence altitude")):
+        gust = DrydenTurbulence.low_altitude(altitude, model.condition.tas, severity,
+                                             onset=onset, duration=length, seed=int(seed))
+    lo, hi = model.beta_range()
+    gamma = np.arctan(gust.peak / model.condition.tas)
+    params.check("chute sizing turbulence altitude", gamma < min(-lo, hi),
+                 f"the turbulence's largest gust ({gust.peak:.4g} m/s) makes a sideslip of "
+                 f"{np.degrees(gamma):.4g} deg, outside the aerodynamic tables' range "
+                 f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+    return gust

@@ -31,6 +31,7 @@ import pandas as pd
 from slingloads.analyses.chute_sizing import (
     line_length,
     neutral_area,
+    run_yaw,
     sizing_sweep,
     wake_ratio_at,
 )
@@ -45,6 +46,7 @@ from slingloads.io.chute.plots import (
 )
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
 from slingloads.io.common.cover import report_info
+from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import drawings, png_bytes, start_drawing
 from slingloads.io.common.report import (
@@ -53,6 +55,7 @@ from slingloads.io.common.report import (
     in_report_units,
     report_unit,
     sample_rows,
+    warning_sections,
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
@@ -60,6 +63,9 @@ from slingloads.io.common.workbook import located
 ANALYSIS = "chute sizing"
 #: PNG files written, by tag: ``<stem>-chute-<tag>.png``.
 PLOTS = ("linearisation", "static-moments", "wake", "sweep", "histories")
+#: Names of the files of a sizing report, for the publisher (a new report replaces them all).
+OUTPUTS = ("{stem}-chute.xlsx", "{stem}-chute-histories.csv",
+           *(f"{{stem}}-chute-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 100
 #: Most rows of each table of the Histories sheet (the CSV file keeps every stored sample).
 HISTORY_ROWS = 65
@@ -96,6 +102,8 @@ class ChuteSizingReport:
         None when fuselage and fin are already statically stable (no positive neutral area).
     recommended_area : float
         ``recommended_factor`` x neutral area (0 when already stable). [m^2]
+    study_area_runs : YawRuns or None
+        Every gust at the Study's 'parachute area', the one the loads use (None if it is 0).
     """
 
     inputs: object
@@ -103,6 +111,17 @@ class ChuteSizingReport:
     line: object
     sweep: object
     recommended_area: float
+    study_area_runs: object = None
+
+    @property
+    def study_area_peak_sideslip(self):
+        """Largest |sideslip| of the gusts at the Study's 'parachute area', and the gust
+        that gives it (NaN, "" without that area). [rad], str"""
+        if self.study_area_runs is None:
+            return float("nan"), ""
+        frame = self.study_area_runs.to_frame()
+        i = int(np.argmax(frame["peak beta [deg]"].to_numpy()))
+        return float(np.radians(frame["peak beta [deg]"].iloc[i])), str(frame["gust"].iloc[i])
 
     def stability_by_area(self):
         """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""
@@ -137,6 +156,14 @@ class ChuteSizingReport:
         return sorted(set(chosen))
 
 
+#: How the paper found the parachute area (the Summary's note on the sizing).
+PAPER_NOTE = ("As the paper found it: its 1-DOF model (section 4.2) confirmed the neutral "
+              "static area; the complete multibody model (4.5) found it insufficient, the "
+              "shortfall coming from the inter-axis coupling of helicopter and parachute (the "
+              "carrier's coupling was negligible). This sizing reproduces 4.1-4.2 only; the "
+              "factor 1.4 is the paper's optimum for its own aircraft, not this one's.")
+
+
 def compute(study):
     """Run the parachute sizing read from a workbook.
 
@@ -165,10 +192,14 @@ def compute(study):
         sweep = None
         if not static.already_stable:
             sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
-                                 inputs.fit_range, static=static,
+                                 inputs.fit_range, metrics=inputs.metrics, static=static,
                                  integrator=inputs.integrator)
+        at_study = None
+        if inputs.study_area > 0:
+            at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
+                               inputs.fit_range, inputs.metrics, inputs.integrator)
     recommended = inputs.recommended_factor * static.area if sweep is not None else 0.0
-    return ChuteSizingReport(inputs, static, line, sweep, float(recommended))
+    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study)
 
 
 # ------------------------------------------------------------------------------- tables
@@ -198,13 +229,16 @@ def summary_tables(result, units="SI"):
     condition = _items([
         ("airspeed IAS (= EAS)", c.ias, "speed", ""),
         ("true airspeed", c.tas, "speed", ""),
-        ("density altitude", c.altitude, "length", "ISA"),
+        ("density altitude", c.density_altitude, "length", "ISA"),
         ("air density", c.density, "density", ""),
-        ("dynamic pressure q", c.q, "pressure", "1/2 rho0 V_EAS^2"),
+        ("dynamic pressure q", c.dynamic_pressure, "pressure", "1/2 rho0 V_EAS^2"),
         ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),
-        ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg", "fit over +- this"),
+        ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg",
+         "fit over +- this; a run leaving it is never called stable"),
+        ("sideslip limit", float(np.degrees(inp.metrics.sideslip_limit)), "deg",
+         "a run passing it is never called stable"),
         ("parachute canopy CD (free stream)", float(m.parachute.coefficient(0.0)), "-",
          "ParachuteCD at canopy alpha 0 (default 1.0)"),
         ("parachute wake ratio", float(m.parachute.wake_ratio), "-",
@@ -229,11 +263,15 @@ def summary_tables(result, units="SI"):
         ("neutral static area", static.area, "area",
          "fuselage and fin already stable" if static.already_stable
          else "total dN/dbeta = 0 (paper 4.1)"),
-        ("recommended factor", inp.recommended_factor, "-", "x neutral area (paper: +40 %)"),
+        ("recommended factor", inp.recommended_factor, "-",
+         "x neutral area: the paper's optimum for its own aircraft (FPA + 40 %, from its "
+         "multibody campaign, section 4.5); a placeholder until a multibody campaign "
+         "computes this aircraft's"),
         ("recommended area", result.recommended_area, "area", ""),
         *sweep_rows,
         ("Study 'parachute area' (loads)", inp.study_area, "area",
          f"{inp.study_area / static.area:.3g} x neutral" if static.area > 0 else ""),
+        *_study_area_rows(result),
     ], units)
     breakdown = static.to_frame()[["component", "dN/dbeta [N m/rad]"]].copy()
     factor, unit = _value(1.0, "moment", units)
@@ -275,6 +313,19 @@ def _wake_ratio_row(inp):
         note = (f"DIFFERS from 'parachute wake ratio' {used:.3g}, which the drag uses: set it "
                 "to the wake's value at the line")
     return ("wake q ratio at the Study line", at_line, "-", note)
+
+
+def _study_area_rows(result):
+    """Peak sideslip and verdicts of the gusts at the Study's 'parachute area'."""
+    if result.study_area_runs is None:
+        return []
+    peak, gust = result.study_area_peak_sideslip
+    frame = result.study_area_runs.to_frame()
+    verdicts = ", ".join(f"{g}: {v}" for g, v in zip(frame["gust"], frame["verdict"],
+                                                      strict=True))
+    return [("peak sideslip at the Study 'parachute area'", float(np.degrees(peak)), "deg",
+             f"{gust} gust; the loads' aerodynamic envelope must cover it"),
+            ("1-DOF verdicts at the Study 'parachute area'", verdicts, None, "")]
 
 
 def _cable_message(cable, units):
@@ -375,7 +426,7 @@ def _summary_note(result, units):
             f"{lunit} from the wake.")
 
 
-def _sheets(result, units):
+def _sheets(result, units, warnings=()):
     tables = summary_tables(result, units)
     lin = result.static.linearisation
     static = result.static.curves_frame()
@@ -385,8 +436,9 @@ def _sheets(result, units):
     curves, curves_note = curve_rows(lin.curves_frame())
     moments, moments_note = curve_rows(convert_columns(static, moment_spec, units))
     summary = [Section("Summary of the parachute sizing", note=_summary_note(result, units)),
+               *warning_sections(warnings),
                Section("Condition", tables["condition"]),
-               Section("Parachute area", tables["sizing"]),
+               Section("Parachute area", tables["sizing"], note=PAPER_NOTE),
                Section("Yaw stiffness breakdown at the neutral area", tables["breakdown"]),
                Section("Parachute line and carrier cable", tables["line"])]
     sheets = {
@@ -402,10 +454,14 @@ def _sheets(result, units):
     }
     if result.sweep is not None:
         area = {"area [m^2]": ("area", "area")}
+        speed = {c: (c[:c.index(" [")], "speed") for c in ("peak gust [m/s]",)}
         sheets["Sweep"] = [
             Section("Sweep of the parachute area: 1-DOF yaw runs under every gust shape",
-                    note="Verdict per run: stable when the yaw settles; damping ratio from the "
-                         "logarithmic decrement."),
+                    note="Verdict per run: stable when the yaw settles and the sideslip stays "
+                         "within the linearisation range and the sideslip limit (else 'beyond "
+                         "limits', with the reason); damping ratio from the logarithmic "
+                         "decrement."),
+            Section("Gust shapes", convert_columns(result.sweep.gust_frame(), speed, units)),
             Section("Stability by area",
                     convert_columns(result.stability_by_area(), area, units)),
             Section("Every run", convert_columns(result.sweep.to_frame(), area, units))]
@@ -464,7 +520,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     list of pathlib.Path
     """
     check_units(units)
-    inputs = [study.path]
+    inputs = study.input_files
     names = ([f"{stem}-chute.xlsx", f"{stem}-chute-histories.csv"]
              + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
     for name in names:
@@ -474,7 +530,7 @@ def write(result, out_dir, stem, units, study, figures=None):
               "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
               "histories": "Time histories for every gust shape (paper figure 7)"}
     with drawings(_figures(result, units), figures, _PNG_DPI) as pngs:
-        sheets = _sheets(result, units)
+        sheets = _sheets(result, units, study.warnings)
         files = ([f"{stem}-chute-histories.csv"] if result.sweep is not None else []) + [
             f"{stem}-chute-{tag}.png" for tag in pngs]
         info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
@@ -483,8 +539,8 @@ def write(result, out_dir, stem, units, study, figures=None):
             write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info)
             if result.sweep is not None:
-                history_csv_frame(result).to_csv(out.path(f"{stem}-chute-histories.csv"),
-                                                 index=False, lineterminator="\n")
+                write_csv(history_csv_frame(result),
+                          out.path(f"{stem}-chute-histories.csv"))
             for tag, png in pngs.items():
                 out.path(f"{stem}-chute-{tag}.png").write_bytes(png_bytes(png))
     return out.written

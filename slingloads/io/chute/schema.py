@@ -10,7 +10,20 @@ length'. Method and signs: ``docs/parachute-sizing.md``.
 
 from __future__ import annotations
 
-from slingloads.io.common.schema import INTEGER, TEXT, Column, Parameter, Section, TableSheet
+from slingloads.io.common.schema import (
+    INTEGER,
+    RELATIVE_TOLERANCE,
+    TEXT,
+    Bounds,
+    Column,
+    Parameter,
+    Section,
+    TableSheet,
+    above,
+    at_least,
+)
+from slingloads.limits import MAX_AERO_ROWS, MAX_CHUTE_AREAS, MAX_CHUTE_RUNS, MAX_CHUTE_STEPS
+from slingloads.models.gusts import GUST_SHAPES, W20
 
 #: Valid values of 'chute sizing wake source'.
 WAKE_SOURCES = ("model", "table")
@@ -18,21 +31,26 @@ WAKE_SOURCES = ("model", "table")
 INERTIA_SOURCES = ("mass items", "parameter")
 #: Valid values of 'chute sizing integrator'.
 INTEGRATORS = ("rk4", "solve_ivp")
+#: Valid values of 'chute sizing turbulence severity' (MIL-F-8785C W20 = 15, 30, 45 kt).
+SEVERITIES = tuple(W20)
 
 _S = "chute sizing"
 
 PARAMETERS = (
     Parameter("chute sizing airspeed IAS", "speed", "kt", 80.0,
               "Indicated airspeed of the sizing, taken equal to EAS, > 0 (paper: 80 KIAS).",
-              _S),
+              _S, above(0)),
     Parameter("chute sizing density altitude", "length", "ft", 0.0,
-              "ISA density altitude of the sizing (paper: sea level).", _S),
+              "ISA density altitude of the sizing (paper: sea level).", _S,
+              Bounds(-610, 11000, unit="m")),
     Parameter("chute sizing alpha trim", "angle", "deg", 0.0,
               "Trimmed angle of attack of the carried helicopter (FuselageAero is read at it; "
-              "it must be a breakpoint of the table or lie between two).", _S),
+              "it must be a breakpoint of the table or lie between two).", _S,
+              Bounds(-90, 90, unit="deg")),
     Parameter("chute sizing linearisation range", "angle", "deg", 10.0,
               "Half-width of the sideslip range of the least-squares fit of Cn (+-value; "
-              "paper figures 4-5), > 0.", _S),
+              "paper figures 4-5), > 0.", _S,
+              Bounds(0, 90, lo_open=True, hi_open=True, unit="deg")),
     Parameter("chute sizing yaw inertia source", TEXT, "", "mass items",
               "'mass items': yaw inertia about the vertical through the hub computed from "
               "MassItems (Izz about the CG + m d^2); 'parameter': 'chute sizing yaw inertia'.",
@@ -45,66 +63,111 @@ PARAMETERS = (
               "'table': the ChuteWake sheet (CFD or test).", _S),
     Parameter("chute sizing wake coefficient", "dimensionless", "", 1.0,
               "Empirical constant K of the far-wake model, > 0 (NOT calibrated on helicopter "
-              "fuselages: the line for a given ratio scales as K^1.5).", _S),
+              "fuselages: the line for a given ratio scales as K^1.5).", _S, above(0)),
     Parameter("chute sizing wake drag area", "area", "m^2", 0.0,
               "Drag area CD S of the wake model; 0 = FuselageAero CD at (alpha trim, beta 0) "
-              "x 'fuselage reference area'.", _S),
+              "x 'fuselage reference area'.", _S, at_least(0)),
     Parameter("chute sizing target q ratio", "dimensionless", "", 0.95,
               "Dynamic-pressure ratio the canopy must see; sets the line length (paper: "
-              "0.95), in (0, 1].", _S),
+              "0.95), in (0, 1].", _S, Bounds(0, 1, lo_open=True)),
     Parameter("chute sizing carrier cable length", "length", "ft", 0.0,
               "Carrier-to-hub cable (paper: 18 to 100 ft); checked >= (1 + margin) x the "
-              "parachute line. 0 = not given: the check is skipped.", _S),
+              "parachute line. 0 = not given: the check is skipped.", _S, at_least(0)),
     Parameter("chute sizing cable margin", "dimensionless", "", 0.20,
               "Required excess of the carrier cable over the parachute line (paper: 20 %).",
-              _S),
+              _S, Bounds(0, 10)),
     Parameter("chute sizing gust shapes", TEXT, "", "step, finite, 1-cosine, continuous",
-              "Comma-separated lateral gust shapes: step, finite, 1-cosine, continuous.", _S),
+              f"Comma-separated lateral gust shapes, of {list(GUST_SHAPES)}: step (sharp-edged, "
+              "held), finite (rectangular, the paper's 'impulsive' gust), 1-cosine, continuous "
+              "(a sustained crosswind: rises over 'chute sizing gust rise time', then held; the "
+              "paper's continuous gust), harmonic (a sine of period 'chute sizing harmonic "
+              "period', never ending: a resonance test), turbulence (Dryden, MIL-F-8785C; "
+              "rows 'chute sizing turbulence ...').", _S),
     Parameter("chute sizing gust amplitude", "speed", "ft/s", 30.0,
-              "Lateral gust velocity, > 0 (CS 29.341 / paper: 30 ft/s).", _S),
+              "Lateral gust velocity, > 0 (CS 29.341 / paper: 30 ft/s).", _S, above(0)),
     Parameter("chute sizing gust onset", "time", "s", 30.0,
-              "Time at which the gust starts, >= 0 and before the end of the simulation.", _S),
+              "Time at which the gust starts, >= 0 and before the end of the simulation.", _S,
+              at_least(0)),
     Parameter("chute sizing gust duration", "time", "s", 10.0,
-              "Duration of the finite and 1-cosine gusts, period of the continuous one, > 0.",
-              _S),
+              "Duration of the finite and 1-cosine gusts, > 0.", _S, above(0)),
+    Parameter("chute sizing gust rise time", "time", "s", 5.0,
+              "Time the continuous (sustained) crosswind takes to build up along a half "
+              "cosine, >= 0 (0: a sharp-edged step; 5 s: the rise of the 10 s 1-cosine gust).",
+              _S, Bounds(0, 3600)),
+    Parameter("chute sizing harmonic period", "time", "s", 10.0,
+              "Period of the harmonic gust, > 0 (the worst case is near the yaw period).", _S,
+              Bounds(0, 3600, lo_open=True)),
+    Parameter("chute sizing turbulence altitude", "length", "ft", 300.0,
+              "Height above ground of the Dryden turbulence, 10 to 1000 ft (MIL-F-8785C "
+              "low-altitude scale length L_v = h/(0.177 + 0.000823 h)^1.2 and intensity).", _S),
+    Parameter("chute sizing turbulence severity", TEXT, "", "moderate",
+              f"MIL-F-8785C turbulence level, one of {list(W20)} (wind at 20 ft: 15, 30, 45 "
+              "kt; sigma_v = 0.1 W20/(0.177 + 0.000823 h)^0.4).", _S),
+    Parameter("chute sizing turbulence duration", "time", "s", 60.0,
+              "Time the turbulence acts from the gust onset, > 0; it must end before the end "
+              "of the simulation so that the free response is seen.", _S,
+              Bounds(0, 3600, lo_open=True)),
+    Parameter("chute sizing turbulence seed", INTEGER, "", 1,
+              "Seed of the turbulence realisation (the same seed gives the same history).", _S,
+              Bounds(0, 2**32 - 1)),
+    Parameter("chute sizing sideslip limit", "angle", "deg", 20.0,
+              "A run whose |sideslip| passes it is never called stable, > 0 (past about 20 "
+              "deg helicopter fuselage Cn curves turn over and a cut-down fin nears stall; "
+              "set it to the loads' sideslip envelope to keep the two consistent). A run that "
+              "leaves the linearisation range is not called stable either.", _S,
+              Bounds(0, 90, lo_open=True)),
     Parameter("chute sizing simulation time", "time", "s", 120.0,
-              "Simulated time of each 1-DOF run, a whole multiple of the time step.", _S),
+              "Simulated time of each 1-DOF run, a whole multiple of the time step; at most "
+              f"{MAX_CHUTE_STEPS:,} steps.", _S, Bounds(0, 3600, lo_open=True)),
     Parameter("chute sizing time step", "time", "s", 0.05,
               "Fixed step of the vectorised RK4 integrator (keep gust onset and end on "
-              "multiples of it).", _S),
+              "multiples of it).", _S, above(0)),
     Parameter("chute sizing output interval", "time", "s", 0.1,
               "Sampling interval of the stored histories, a whole multiple of the time step.",
-              _S),
+              _S, above(0)),
     Parameter("chute sizing integrator", TEXT, "", "rk4",
               "'rk4' (vectorised fixed step, all runs at once) or 'solve_ivp' (reference, one "
               "adaptive solve per run; slow).", _S),
     Parameter("chute sizing reference method", TEXT, "", "RK45",
               "solve_ivp method of the reference integrator (RK45, DOP853, Radau, ...).", _S),
     Parameter("chute sizing reference rtol", "dimensionless", "", 1e-8,
-              "Relative tolerance of the reference integrator, > 0.", _S),
+              "Relative tolerance of the reference integrator, > 0.", _S, RELATIVE_TOLERANCE),
     Parameter("chute sizing area factor min", "dimensionless", "", 1.0,
-              "Smallest swept area over the neutral static area, > 0 (paper: 1).", _S),
+              "Smallest swept area over the neutral static area, > 0 (paper: 1).", _S,
+              Bounds(0, 100, lo_open=True)),
     Parameter("chute sizing area factor max", "dimensionless", "", 2.0,
-              "Largest swept area over the neutral static area, >= min (paper: 2).", _S),
+              "Largest swept area over the neutral static area, >= min (paper: 2).", _S,
+              Bounds(0, 100, lo_open=True)),
     Parameter("chute sizing number of areas", INTEGER, "", 11,
-              "Number of swept areas, evenly spaced, >= 1.", _S),
+              f"Number of swept areas, evenly spaced, >= 1 (at most {MAX_CHUTE_RUNS:,} runs "
+              "areas x gust shapes).", _S, Bounds(1, MAX_CHUTE_AREAS)),
     Parameter("chute sizing recommended factor", "dimensionless", "", 1.4,
-              "Recommended area over the neutral static area (paper: FPA + 40 % from the "
-              "multibody study), > 0.", _S),
+              "Recommended area over the neutral static area, > 0. 1.4 is the paper's optimum "
+              "for its own aircraft (FPA + 40 %, found by its multibody campaign: the 1-DOF "
+              "model had confirmed the neutral area, the shortfall came from inter-axis "
+              "coupling); a placeholder until a multibody campaign computes this aircraft's.",
+              _S,
+              Bounds(0, 100, lo_open=True)),
 )
 
 SHEETS = (
     TableSheet("ChuteWake", (
         Column("distance", "length", "m",
                help="Distance behind the parachute attachment along the wake, >= 0, strictly "
-                    "increasing. Typical: 0 to 40 m."),
+                    "increasing. Typical: 0 to 40 m.",
+               bounds=Bounds(0, 10_000, unit="m")),
         Column("q ratio", "dimensionless",
                help="Dynamic pressure in the fuselage wake at that distance over the free "
                     "stream's, in (0, 1.2]. Typical: 0.5 just behind the fuselage, 0.95 at "
-                    "10 m."),
+                    "10 m.",
+               bounds=Bounds(0, 1.2, lo_open=True)),
     ), help="Optional (with 'chute sizing wake source' = table): dynamic-pressure ratio in the "
        "fuselage wake against distance, from CFD or test (paper section 3.2). Never "
-       "extrapolated."),
+       "extrapolated.", max_rows=MAX_AERO_ROWS),
 )
 
 SECTION = Section("chute sizing", parameters=PARAMETERS, sheets=SHEETS)
+
+#: The Study parameter behind each setting the analysis may refuse while computing.
+COMPUTE_FIELDS = {"rtol": "chute sizing reference rtol",
+                  "fit_range": "chute sizing linearisation range"}

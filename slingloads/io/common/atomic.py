@@ -1,20 +1,37 @@
-"""Atomic writing of a set of output files.
+"""Publishing a set of output files all at once, or not at all; never onto an input.
 
-A report is several files (workbook, CSV tables, PNG plots). They are all produced in a
-temporary directory created *inside* the output directory, so that it lies on the same file
-system, and only when every file has been produced are they moved into place one by one with
-:func:`os.replace` (an atomic rename on POSIX and Windows). If anything fails before that, the
-temporary directory is removed and the output directory is left exactly as it was: an earlier
-report at the same paths is intact and no partial or temporary file remains.
+A report is several files (workbooks, CSV tables, PNG plots) written as ``DIR/<stem>-...``.
+They are published as one set:
 
-An output is never written onto an input: every output path is checked against the input
-paths given (same path after resolving symbolic links, or the same file through a hard link),
-and a clash raises :class:`~slingloads.errors.InputError` naming the input.
+1. every file of the new set is written into a fresh *staging folder* beside ``DIR`` (in the
+   same parent folder, so on the same file system), named ``.slingloads-<tag>.new.<random>``;
+2. under a lock on the parent folder (runs on one ``DIR`` are serialised), the files of
+   ``DIR`` that do not belong to this set (other inputs' reports, user files) are hard-linked
+   (or copied) into the staging folder, leaving out the files this set replaces: those of the
+   same names, and the earlier files of the same analyses of the same input (declared as
+   ``replaces`` patterns, so that an old plot whose name changed does not linger);
+3. the staging folder and ``DIR`` are exchanged in one atomic step (Linux
+   ``renameat2(RENAME_EXCHANGE)``, macOS ``renamex_np(RENAME_SWAP)``); where neither exists,
+   by two renames whose interruption a later run repairs first;
+4. the old folder (now under the staging name) is removed.
+
+A run killed at any moment therefore leaves ``DIR`` holding either the complete previous set or
+the complete new one, never a mix; a staging or old folder it leaves behind is removed by the
+next run on the same ``DIR`` (each live run holds a lock on its own staging folder, so only
+the folders of dead runs are touched). Paths in ``DIR`` stay the same (a symbolic link to
+``DIR`` is followed, not replaced). What is guaranteed, and the refusals (an output folder
+holding sub-folders, the current folder, a mount point), are described in
+``docs/inputs-and-outputs.md``.
+
+An output is never written onto an input: every input file (the workbook and the files it
+refers to) is compared with the outputs by resolved path, by file identity (hard and symbolic
+links) and by case-folded name (case-insensitive file systems), before anything is computed
+(:meth:`AtomicOutputs.check`) and again for each file.
 
 Examples
 --------
 >>> import tempfile, pathlib
->>> out_dir = pathlib.Path(tempfile.mkdtemp())
+>>> out_dir = pathlib.Path(tempfile.mkdtemp()) / "reports"
 >>> with atomic_outputs(out_dir) as out:
 ...     _ = out.path("a.txt").write_text("hello")
 >>> [p.name for p in out.written]
@@ -23,26 +40,89 @@ Examples
 
 from __future__ import annotations
 
+import ctypes
+import errno
+import hashlib
 import os
+import platform
+import re
 import shutil
+import stat
+import sys
 import tempfile
+import time
 from contextlib import contextmanager
 from pathlib import Path
 
-from slingloads.errors import InputError
+from slingloads.errors import InputError, OutputError
+from slingloads.limits import MAX_OUTPUT_ENTRIES
 
-#: Prefix of the temporary directory (hidden on POSIX); left behind only if the process dies.
-TEMP_PREFIX = ".slingloads-partial-"
+try:  # POSIX advisory locks; elsewhere runs are not serialised
+    import fcntl
+except ImportError:  # pragma: no cover - Windows
+    fcntl = None
+
+#: Prefix of the staging and old folders (hidden on POSIX), beside the output folder.
+TEMP_PREFIX = ".slingloads-"
+#: Environment variable (testing aid): seconds to pause between the publishing steps, so that
+#: a test can kill a run at each of them.
+PAUSE_VARIABLE = "SLINGLOADS_PUBLISH_PAUSE"
+#: Environment variable (testing aid): ``rename`` forces the two-rename publishing used where
+#: no atomic exchange exists.
+SWAP_VARIABLE = "SLINGLOADS_PUBLISH_SWAP"
+#: Characters kept in file-name parts made from ids.
+_UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
+_NAME_MAX = 255
+
+
+def safe_file_part(text, max_chars=80):
+    """A file-name-safe version of an id (a station id in a plot's file name).
+
+    Letters, digits, ``.``, ``_`` and ``-`` are kept, any run of other characters becomes
+    ``_``; an id longer than ``max_chars`` is cut and ends with 8 hexadecimal digits of its
+    hash, so that it stays distinct. Readers refuse ids that give the same part
+    (case-insensitively), so that no file of a report replaces another.
+
+    >>> safe_file_part("FS 2300/left"), safe_file_part("$$")
+    ('FS_2300_left', 'id')
+    """
+    part = _UNSAFE.sub("_", str(text)).strip("._-") or "id"
+    if len(part) > max_chars:
+        digest = hashlib.sha256(str(text).encode("utf-8", "surrogatepass")).hexdigest()[:8]
+        part = f"{part[:max_chars - 9]}-{digest}"
+    return part
+
+
+def output_pattern(template, stem):
+    """A compiled regular expression of the output names of ``template`` for ``stem``.
+
+    ``template`` is a file name with ``{stem}`` and optionally ``*`` standing for a part made
+    by :func:`safe_file_part` (``"{stem}-hull_*.png"``).
+    """
+    head, _, tail = template.partition("{stem}")
+    pieces = [re.escape(p) for p in tail.split("*")]
+    return re.compile(re.escape(head) + re.escape(stem) + "[A-Za-z0-9._-]+".join(pieces)
+                      + r"\Z")
 
 
 def _same_file(a, b):
-    """True if paths ``a`` and ``b`` name the same file (resolved path, or same inode)."""
+    """True if paths ``a`` and ``b`` name the same file: same resolved path, same file
+    (hard or symbolic link), or same case-folded name in the same folder."""
     a, b = Path(a), Path(b)
-    if a.resolve() == b.resolve():
-        return True
     try:
-        return os.path.samefile(a, b)
-    except OSError:  # one of them does not exist: they cannot be the same file
+        if a.resolve() == b.resolve():
+            return True
+    except (OSError, RuntimeError, ValueError):
+        pass
+    try:
+        if os.path.samefile(a, b):
+            return True
+    except (OSError, ValueError):  # one of them does not exist
+        pass
+    try:
+        return (a.name.casefold() == b.name.casefold()
+                and os.path.samefile(a.parent, b.parent))
+    except (OSError, ValueError):
         return False
 
 
@@ -59,7 +139,8 @@ def check_not_input(path, inputs):
     Raises
     ------
     InputError
-        If ``path`` is (or links to) one of ``inputs``; the error names the input file.
+        If ``path`` is (or links to, or differs only in case from) one of ``inputs``; the
+        error names the input file.
     """
     for source in inputs:
         if _same_file(path, source):
@@ -68,8 +149,25 @@ def check_not_input(path, inputs):
                              str(path), file=str(source))
 
 
+def _os_error(err, what, path):
+    """An OutputError from an OSError, with advice for the usual causes."""
+    advice = {
+        errno.EACCES: "permission denied: choose a folder you may write to",
+        errno.EPERM: "operation not permitted: choose a folder you may write to",
+        errno.EROFS: "the file system is read-only: choose another folder",
+        errno.ENOSPC: "no space left on the device: free some space or choose another folder",
+        errno.EDQUOT: "disk quota exceeded: free some space or choose another folder",
+        errno.ENAMETOOLONG: "a file or folder name is too long for the file system: use a "
+                            "shorter input name or output folder",
+        errno.ENOTDIR: "a part of the path is a file, not a folder",
+        errno.ELOOP: "too many levels of symbolic links",
+        errno.EEXIST: "a file is in the way",
+    }.get(err.errno, err.strerror or str(err))
+    return OutputError(f"{what}: {advice}", path)
+
+
 class AtomicOutputs:
-    """Collects output files in a temporary directory and moves them into place at the end.
+    """Collects output files in a staging folder and publishes them all at once.
 
     Use through :func:`atomic_outputs`. Ask for the path of every output with :meth:`path`,
     write the file there, and leave the ``with`` block normally to publish them all.
@@ -77,120 +175,600 @@ class AtomicOutputs:
     Parameters
     ----------
     out_dir : path-like
-        Output directory; created (with parents) if it does not exist.
+        Output folder; created (with parents) if it does not exist.
     inputs : iterable of path-like
         Input files that must never be overwritten.
+    replaces : iterable of re.Pattern
+        Names of files of ``out_dir`` that this set replaces even when it does not write them
+        (the earlier outputs of the same analyses of the same input); other files are kept.
     """
 
-    def __init__(self, out_dir, inputs=()):
+    def __init__(self, out_dir, inputs=(), replaces=()):
         self.out_dir = Path(out_dir)
         self.inputs = [Path(p) for p in inputs]
+        self.replaces = list(replaces)
         self.written = []
         self._names = {}
-        self._tmp = None
-        self._created_dir = False
+        self._folded = {}
+        self._stage = None
+        self._stage_fd = None
+        self._created = []
+        self._real = None
+        self._old = None
 
-    def __enter__(self):
-        if not self.out_dir.exists():
-            self.out_dir.mkdir(parents=True)
-            self._created_dir = True
-        elif not self.out_dir.is_dir():
-            raise InputError("output directory is not a directory", str(self.out_dir))
-        self._tmp = Path(tempfile.mkdtemp(prefix=TEMP_PREFIX, dir=self.out_dir))
+    # ---- checks made before anything is computed ------------------------------------------
+    def check(self, names=()):
+        """Check the output folder and the inputs before any work is done.
+
+        Parameters
+        ----------
+        names : iterable of str
+            Output names known in advance (their length is checked).
+
+        Raises
+        ------
+        OutputError
+            If the folder cannot be written (a file in the way, no permission, a read-only
+            file system, a mount point) or a name is too long for the file system.
+        InputError
+            If the folder is the current folder or holds sub-folders, or an output of this
+            set could replace an input.
+        """
+        real = self._resolve()
+        parent = real.parent
+        if real == parent or os.path.ismount(real):
+            raise OutputError("the output folder is a mount point or the root folder, which "
+                              "cannot be replaced as a whole: write the reports to a "
+                              "sub-folder of it", self.out_dir)
+        if _is_current_folder(real):
+            raise InputError("the output folder is the current folder: the report set is "
+                             "published by replacing the output folder as a whole, which "
+                             "would leave your shell in a removed folder; write to a "
+                             "sub-folder, e.g. --out reports", str(self.out_dir))
+        existing = self._existing_ancestor(real)
+        if existing == real:
+            self._check_folder(real)
+        elif not _writable(existing):
+            raise OutputError("cannot create the output folder: no write permission in "
+                              f"{existing}", self.out_dir)
+        if existing in (real, parent) and not _writable(parent):
+            raise OutputError("cannot write beside the output folder (the report set is "
+                              f"staged in its parent folder {parent} and swapped in): "
+                              "permission denied; choose a folder whose parent you may "
+                              "write to", self.out_dir)
+        name_max = _name_max(existing)
+        for name in names:
+            if len(os.fsencode(name)) > name_max:
+                raise OutputError(f"an output file name is longer than the {name_max} bytes "
+                                  "the file system allows: use a shorter input file name",
+                                  name[:60] + "...")
+            if len(os.fsencode(str(real / name))) >= 4096:
+                raise OutputError("an output path is too long for the file system: use a "
+                                  "shorter output folder", str(real / name)[:80] + "...")
+        self._check_inputs(real)
         return self
 
+    def _resolve(self):
+        """The real path of the output folder (symbolic links followed)."""
+        if self._real is not None:
+            return self._real
+        text = os.fspath(self.out_dir)
+        if not text.strip():
+            raise InputError("the output folder must not be empty", text)
+        if "\x00" in text:
+            raise InputError("the output folder must not contain a NUL character", text)
+        if os.path.islink(text) and not os.path.exists(text):
+            raise OutputError("the output folder is a broken symbolic link", self.out_dir)
+        try:
+            real = Path(os.path.realpath(text))
+        except (OSError, ValueError) as err:
+            raise _os_error(err, "cannot resolve the output folder", self.out_dir) from None
+        self._real = real
+        return real
+
+    def _existing_ancestor(self, real):
+        """The output folder if it exists, else its nearest existing ancestor (a folder)."""
+        path = real
+        while True:
+            try:
+                info = os.stat(path)
+            except FileNotFoundError:
+                if path.parent == path:
+                    raise OutputError("no existing folder above the output folder",
+                                      self.out_dir) from None
+                path = path.parent
+                continue
+            except OSError as err:
+                raise _os_error(err, "cannot use the output folder", self.out_dir) from None
+            if not stat.S_ISDIR(info.st_mode):
+                what = ("the output folder is an existing file, not a folder" if path == real
+                        else f"a part of the output path is a file, not a folder: {path}")
+                raise OutputError(what, self.out_dir)
+            return path
+
+    def _check_folder(self, real):
+        """An existing output folder: writable, files only, not too many entries."""
+        if not _writable(real):
+            raise OutputError("the output folder is read-only (no write permission)",
+                              self.out_dir)
+        count = 0
+        try:
+            entries = list(os.scandir(real))
+        except OSError as err:
+            raise _os_error(err, "cannot list the output folder", self.out_dir) from None
+        for entry in entries:
+            count += 1
+            if entry.is_dir(follow_symlinks=False):
+                raise InputError("the output folder holds a sub-folder: the report set is "
+                                 "published by replacing the output folder as a whole, so "
+                                 "it must hold files only; write the reports to a folder of "
+                                 "their own (e.g. a new sub-folder)",
+                                 str(Path(self.out_dir) / entry.name))
+        if count > MAX_OUTPUT_ENTRIES:
+            raise InputError(f"the output folder holds more than {MAX_OUTPUT_ENTRIES:,} "
+                             "entries: write the reports to a folder of their own",
+                             str(self.out_dir))
+
+    def _check_inputs(self, real):
+        """No input lies where this set writes or replaces a file."""
+        if not self.inputs:
+            return
+        try:
+            entries = [e for e in os.scandir(real)] if real.is_dir() else []
+        except OSError:
+            entries = []
+        for source in self.inputs:
+            try:
+                in_dir = os.path.samefile(Path(source).resolve().parent, real)
+            except (OSError, ValueError, RuntimeError):
+                in_dir = False
+            if in_dir and self._claims(Path(source).name):
+                raise InputError("an output of this run would replace an input file (an "
+                                 "input is never overwritten): choose another output folder",
+                                 str(source), file=str(source))
+            for entry in entries:
+                if self._claims(entry.name) and _same_file(entry.path, source):
+                    raise InputError("an output of this run would replace a file that is an "
+                                     "input, the same file through a link (an input is never "
+                                     "overwritten): choose another output folder",
+                                     entry.path, file=str(source))
+
+    def _claims(self, name):
+        """True if a file of this name in the output folder would be replaced by this set."""
+        folded = name.casefold()
+        if folded in self._folded:
+            return True
+        return any(p.match(name) or re.compile(p.pattern, re.IGNORECASE).match(name)
+                   for p in self.replaces)
+
+    # ---- the staging folder ---------------------------------------------------------------
+    def __enter__(self):
+        real = self._resolve()
+        self.check()
+        parent = real.parent
+        self._make_parents(parent)
+        with _locked(parent):
+            _recover(parent, real)
+            try:
+                self._stage = Path(tempfile.mkdtemp(prefix=_stage_prefix(real, "new"),
+                                                    dir=parent))
+            except OSError as err:
+                raise _os_error(err, "cannot create the staging folder beside the output "
+                                "folder", parent) from None
+            self._stage_fd = _lock_folder(self._stage)
+        return self
+
+    def _make_parents(self, parent):
+        missing = []
+        path = parent
+        while not path.exists():
+            missing.append(path)
+            path = path.parent
+        for path in reversed(missing):
+            try:
+                path.mkdir()
+            except FileExistsError:
+                continue
+            except OSError as err:
+                raise _os_error(err, "cannot create the output folder", path) from None
+            self._created.append(path)
+
     def __fspath__(self):
-        """The output directory, so that ``Path(outputs) / name`` is a final path."""
+        """The output folder, so that ``Path(outputs) / name`` is a final path."""
         return str(self.out_dir)
 
     def path(self, name):
-        """Temporary path at which to write the output file ``name``.
+        """Staging path at which to write the output file ``name``.
 
         Parameters
         ----------
         name : str
-            File name (no directory part) of the output in the output directory.
+            File name (no folder part) of the output in the output folder.
 
         Returns
         -------
         pathlib.Path
-            Where to write the file now; it is moved to ``out_dir / name`` on success.
+            Where to write the file now; it is published as ``out_dir / name``.
 
         Raises
         ------
         InputError
-            If ``name`` has a directory part, was already asked for, or would overwrite an
-            input file.
+            If ``name`` has a folder part, was already asked for (case ignored), or would
+            overwrite an input file.
+        OutputError
+            If ``name`` is too long for the file system.
         """
-        if self._tmp is None:
+        if self._stage is None:
             raise RuntimeError("AtomicOutputs.path() is only valid inside the with block")
         name = str(name)
-        if not name or Path(name).name != name or name in (".", ".."):
-            raise InputError("an output name must be a plain file name without a directory "
+        if not name or Path(name).name != name or name in (".", "..") or "\x00" in name:
+            raise InputError("an output name must be a plain file name without a folder "
                              "part", name)
-        if name in self._names:
-            raise InputError("the same output file is written twice", name)
+        if len(os.fsencode(name)) > _name_max(self._stage):
+            raise OutputError("an output file name is too long for the file system: use a "
+                              "shorter input file name", name[:60] + "...")
+        if name.casefold() in self._folded:
+            raise InputError("two outputs of this run have the same file name (case "
+                             "ignored): one would be lost", name)
         final = self.out_dir / name
         check_not_input(final, self.inputs)
         self._names[name] = final
-        return self._tmp / name
+        self._folded[name.casefold()] = name
+        return self._stage / name
 
-    def _commit(self):
-        missing = [n for n in self._names if not (self._tmp / n).is_file()]
-        if missing:
-            raise RuntimeError(f"outputs were announced but not written: {missing}")
-        for name, final in self._names.items():
-            os.replace(self._tmp / name, final)
-            self.written.append(final)
-
-    def _cleanup(self):
-        if self._tmp is not None:
-            shutil.rmtree(self._tmp, ignore_errors=True)
-            self._tmp = None
-
+    # ---- publishing -----------------------------------------------------------------------
     def __exit__(self, exc_type, exc, tb):
         try:
             if exc_type is None:
-                self._commit()
+                try:
+                    self._publish()
+                except OSError as err:
+                    raise _os_error(err, "cannot publish the reports", self.out_dir) from None
+            elif isinstance(exc, OSError) and not isinstance(exc, OutputError):
+                raise _os_error(exc, "cannot write the reports", self.out_dir) from exc
         finally:
             self._cleanup()
-            if exc_type is not None and self._created_dir:
-                try:
-                    self.out_dir.rmdir()  # only if still empty
-                except OSError:
-                    pass
         return False
+
+    def _publish(self):
+        missing = [n for n in self._names if not (self._stage / n).is_file()]
+        if missing:
+            raise RuntimeError(f"outputs were announced but not written: {missing}")
+        real = self._resolve()
+        parent = real.parent
+        _pause()
+        with _locked(parent):
+            _recover(parent, real)
+            if real.exists():
+                self._check_folder(real)
+                self._check_inputs(real)
+                self._carry_over(real)
+                _pause()
+                os.chmod(self._stage, stat.S_IMODE(os.stat(real).st_mode))
+                _exchange(self._stage, real)
+                _pause()
+                # the old set now lies under the staging name: a kill from here on leaves it
+                # to the next run's recovery
+                self._old = self._stage
+            else:
+                umask = os.umask(0)
+                os.umask(umask)
+                os.chmod(self._stage, 0o777 & ~umask)
+                os.rename(self._stage, real)
+                self._old = None
+            self._stage = None
+            self._created.clear()
+        self.written = list(self._names.values())
+        if self._old is not None:
+            shutil.rmtree(self._old, ignore_errors=True)
+
+    def _carry_over(self, real):
+        """Hard-link (or copy) into the staging folder the files of the output folder that
+        this set neither writes nor replaces."""
+        for entry in os.scandir(real):
+            name = entry.name
+            if name in self._names or any(p.match(name) for p in self.replaces):
+                continue
+            source, target = entry.path, self._stage / name
+            if entry.is_symlink():
+                os.symlink(os.readlink(source), target)
+            elif entry.is_dir(follow_symlinks=False):
+                raise InputError("the output folder holds a sub-folder: write the reports to "
+                                 "a folder of their own", source)
+            elif entry.is_file(follow_symlinks=False):
+                try:
+                    os.link(source, target, follow_symlinks=False)
+                except FileExistsError:
+                    continue  # a name of the new set in another case (case-insensitive FS)
+                except OSError:
+                    shutil.copy2(source, target, follow_symlinks=False)
+            else:
+                raise InputError("the output folder holds a special file (pipe, socket or "
+                                 "device): write the reports to a folder of their own",
+                                 source)
+
+    def _cleanup(self):
+        if self._stage_fd is not None:
+            try:
+                os.close(self._stage_fd)
+            except OSError:
+                pass
+            self._stage_fd = None
+        if self._stage is not None:
+            shutil.rmtree(self._stage, ignore_errors=True)
+            self._stage = None
+        for path in reversed(self._created):
+            try:
+                path.rmdir()  # only if still empty
+            except OSError:
+                pass
+        self._created.clear()
 
 
 @contextmanager
-def atomic_outputs(out_dir, inputs=()):
+def atomic_outputs(out_dir, inputs=(), replaces=()):
     """Context manager that publishes a set of output files all at once, or none.
 
     Parameters
     ----------
     out_dir : path-like or AtomicOutputs
-        Output directory (created if needed). The temporary directory is made inside it so
-        that the final :func:`os.replace` is a rename on one file system. Given an open
-        :class:`AtomicOutputs`, the files join its set and are published with it, so that
-        several writers publish all their files together, or none.
+        Output folder (created if needed). Given an open :class:`AtomicOutputs`, the files
+        join its set and are published with it, so that several writers publish all their
+        files together, or none.
     inputs : iterable of path-like
         Input files that must never be overwritten.
+    replaces : iterable of re.Pattern
+        Names of earlier outputs this set replaces (see :class:`AtomicOutputs`).
 
     Yields
     ------
     AtomicOutputs
-        ``out.path(name)`` gives the temporary path to write ``name`` to; after the block,
+        ``out.path(name)`` gives the staging path to write ``name`` to; after the block,
         ``out.written`` lists the final paths in the order they were asked for.
 
     Raises
     ------
     InputError
-        If an output would overwrite an input file.
+        If an output would overwrite an input file, or the output folder is refused.
+    OutputError
+        If the output folder cannot be written.
     """
     if isinstance(out_dir, AtomicOutputs):
         # nested: the files join the outer set, which the outer block publishes
         out_dir.inputs.extend(Path(p) for p in inputs)
+        out_dir.replaces.extend(replaces)
         yield out_dir
         return
-    with AtomicOutputs(out_dir, inputs) as out:
+    with AtomicOutputs(out_dir, inputs, replaces) as out:
         yield out
+
+
+@contextmanager
+def atomic_file(path, inputs=()):
+    """Write one file atomically: a temporary file beside it, renamed over it at the end.
+
+    Yields the temporary path; on an error it is removed and ``path`` is left as it was.
+
+    Raises
+    ------
+    InputError
+        If ``path`` is one of ``inputs``.
+    OutputError
+        If the folder cannot be written.
+    """
+    path = Path(path)
+    check_not_input(path, inputs)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name[:100]}.", suffix=".partial",
+                                   dir=path.parent)
+        os.close(fd)
+    except OSError as err:
+        raise _os_error(err, "cannot write the file", path) from None
+    try:
+        yield Path(tmp)
+        os.replace(tmp, path)
+    except OSError as err:
+        raise _os_error(err, "cannot write the file", path) from None
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+# ---- machinery -----------------------------------------------------------------------------
+def _stage_prefix(real, kind):
+    """``.slingloads-<12 hex digits of the folder's name>.<kind>.``: short whatever the name."""
+    tag = hashlib.sha256(os.fsencode(real.name)).hexdigest()[:12]
+    return f"{TEMP_PREFIX}{tag}.{kind}."
+
+
+def _is_current_folder(real):
+    try:
+        return os.path.samefile(real, os.getcwd())
+    except (OSError, ValueError):  # no current folder, or the output folder is not there yet
+        return False
+
+
+def _writable(folder):
+    """True if files may be created in ``folder``: permitted to this user, and not marked
+    read-only by its mode (which is respected even by an administrator)."""
+    try:
+        mode = os.stat(folder).st_mode
+    except OSError:
+        return False
+    return os.access(folder, os.W_OK | os.X_OK) and bool(mode & 0o222)
+
+
+def _name_max(folder):
+    try:
+        return int(os.pathconf(folder, "PC_NAME_MAX"))
+    except (OSError, ValueError, AttributeError):
+        return _NAME_MAX
+
+
+def _pause():
+    """Pause between publishing steps when asked (testing aid: see PAUSE_VARIABLE)."""
+    text = os.environ.get(PAUSE_VARIABLE)
+    if text:
+        try:
+            seconds = float(text)
+        except ValueError:
+            return
+        if 0 < seconds < 60:
+            time.sleep(seconds)
+
+
+def _flock(folder, blocking):
+    """Open ``folder`` and take an exclusive lock on it: ``(descriptor, locked)``, the
+    descriptor None where folders cannot be opened or locks do not exist."""
+    if fcntl is None:
+        return None, False
+    try:
+        fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    except OSError:
+        return None, False
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX if blocking else fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        return fd, False
+    return fd, True
+
+
+@contextmanager
+def _locked(folder):
+    """Hold an exclusive lock on ``folder`` (serialises the runs publishing beside it; where
+    the folder cannot be locked, publishing goes on unserialised)."""
+    fd, _ = _flock(folder, blocking=True)
+    try:
+        yield
+    finally:
+        if fd is not None:
+            os.close(fd)
+
+
+def _lock_folder(folder):
+    """Open and lock a staging folder for the life of this run; the descriptor, or None."""
+    return _flock(folder, blocking=False)[0]
+
+
+def _owner_alive(folder):
+    """True if a live run holds the lock of a staging folder."""
+    fd, locked = _flock(folder, blocking=False)
+    if fd is not None:
+        os.close(fd)
+    return fd is not None and not locked
+
+
+def _recover(parent, real):
+    """Repair what killed runs left beside the output folder ``real`` (under the lock).
+
+    A ``.ready`` folder (a complete new set) or an ``.old`` folder (the previous set) found
+    while the output folder is missing means a run died between the two renames of the
+    fallback publishing: the new set is put in place (or else the old one back). Every other
+    folder of dead runs is removed.
+    """
+    prefix = _stage_prefix(real, "")[:-1]
+    try:
+        leftovers = sorted(e.name for e in os.scandir(parent)
+                           if e.name.startswith(prefix) and e.is_dir(follow_symlinks=False))
+    except OSError:
+        return
+    dead = [parent / n for n in leftovers if not _owner_alive(parent / n)]
+    for kind in ("ready", "old"):
+        if os.path.lexists(real):
+            break
+        for path in dead:
+            if path.name.startswith(f"{prefix}{kind}."):
+                try:
+                    os.rename(path, real)
+                    dead.remove(path)
+                except OSError:
+                    continue
+                break
+    for path in dead:
+        shutil.rmtree(path, ignore_errors=True)
+
+
+def _exchange(a, b):
+    """Exchange two folders atomically, or by two renames where that is not possible."""
+    if os.environ.get(SWAP_VARIABLE, "").lower() != "rename" and _atomic_exchange(a, b):
+        return
+    ready = a.with_name(a.name.replace(".new.", ".ready.", 1))
+    old = a.with_name(a.name.replace(".new.", ".old.", 1))
+    os.rename(a, ready)  # the complete new set, marked ready
+    try:
+        os.rename(b, old)
+    except BaseException:
+        os.rename(ready, a)  # back under the staging name, which the caller removes
+        raise
+    try:
+        _pause()
+        os.rename(ready, b)
+    except BaseException:
+        if not os.path.lexists(b):
+            os.rename(old, b)  # put the previous set back
+        os.rename(ready, a)
+        raise
+    os.rename(old, a)  # the old set under the staging name, removed by the caller
+
+
+def _atomic_exchange(a, b):
+    """``renameat2(RENAME_EXCHANGE)`` (Linux) or ``renamex_np(RENAME_SWAP)`` (macOS).
+
+    Returns False where neither is available (the caller then renames twice); raises
+    OSError on a real failure.
+    """
+    call = _exchange_call()
+    if call is None:
+        return False
+    result = call(os.fsencode(str(a)), os.fsencode(str(b)))
+    if result == 0:
+        return True
+    code = ctypes.get_errno()
+    if code in (errno.ENOSYS, errno.EINVAL, errno.ENOTSUP, errno.EOPNOTSUPP, errno.EPERM):
+        return False  # not supported by this kernel or file system
+    raise OSError(code, os.strerror(code), str(b))
+
+
+_EXCHANGE = []
+
+
+def _exchange_call():
+    """The platform's atomic exchange of two paths, as ``call(a, b) -> 0 or -1``, or None."""
+    if _EXCHANGE:
+        return _EXCHANGE[0]
+    call = None
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+    except OSError:  # pragma: no cover
+        libc = None
+    if libc is not None and sys.platform.startswith("linux"):
+        at_fdcwd, rename_exchange = -100, 2
+        function = getattr(libc, "renameat2", None)
+        if function is not None:
+            function.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p,
+                                 ctypes.c_uint]
+            function.restype = ctypes.c_int
+
+            def call(a, b):
+                return function(at_fdcwd, a, at_fdcwd, b, rename_exchange)
+        else:
+            number = {"x86_64": 316, "aarch64": 276}.get(platform.machine())
+            syscall = getattr(libc, "syscall", None)
+            if number is not None and syscall is not None:
+                syscall.restype = ctypes.c_long
+
+                def call(a, b):
+                    return syscall(ctypes.c_long(number), ctypes.c_int(at_fdcwd),
+                                   ctypes.c_char_p(a), ctypes.c_int(at_fdcwd),
+                                   ctypes.c_char_p(b), ctypes.c_uint(rename_exchange))
+    elif libc is not None and sys.platform == "darwin":  # pragma: no cover
+        function = getattr(libc, "renamex_np", None)
+        if function is not None:
+            function.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_uint]
+            function.restype = ctypes.c_int
+
+            def call(a, b):
+                return function(a, b, 2)  # RENAME_SWAP
+    _EXCHANGE.append(call)
+    return call

@@ -433,11 +433,12 @@ def _note_lines(text, columns):
 
 # ----------------------------------------------------------------------------- print setup
 def _escape(text, limit=80):
-    """Header/footer text: ampersands doubled, at most ``limit`` characters."""
+    """Header/footer text: at most ``limit`` characters, made safe
+    (:func:`header_footer_text`)."""
     text = str(text)
     if len(text) > limit:
         text = text[:limit - 3] + "..."
-    return text.replace("&", "&&")
+    return header_footer_text(text)
 
 
 def orientation_for(pixels, height=0.0):
@@ -781,10 +782,32 @@ def figure_png(figure, dpi=100):
         return bytes(figure)
     if hasattr(figure, "result"):  # drawn elsewhere (FigureRenderer): its PNG bytes
         return bytes(figure.result())
+    _plain_text(figure)
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None},
                    pil_kwargs={"compress_level": 1})  # fast; files about 30 % larger
     return buffer.getvalue()
+
+
+def header_footer_text(text):
+    """Text from an input made safe for a printed header or footer: there ``&`` starts a
+    control code (``&P`` page number, ``&"font"``, ``&[Path]``...), so it is doubled, and
+    control characters are dropped.
+
+    >>> header_footer_text("R&D study &P")
+    'R&&D study &&P'
+    """
+    text = "".join(c for c in str(text) if c >= " " or c == "\n")
+    return text.replace("&", "&&")
+
+
+def _plain_text(figure):
+    """Draw every text of ``figure`` literally: ids from the inputs (a station ``FS$1$``, a
+    case ``$\\frac$``) are never parsed as mathtext, which could fail or mislead."""
+    from matplotlib.text import Text
+
+    for text in figure.findobj(Text):
+        text.set_parse_math(False)
 
 
 def _image_box(width, height, page_rows, page_width):

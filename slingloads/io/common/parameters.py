@@ -1,10 +1,14 @@
 """The Study sheet's parameters as the readers use them: SI values with defaults, their cells,
-and the checks every reader makes (range, choice), each failure located at its cell."""
+and the checks every reader makes (range, choice), each failure located at its cell with the
+value as the user wrote it and its unit."""
 
 from __future__ import annotations
 
+import contextlib
+
 import numpy as np
 
+from slingloads.errors import InputError
 from slingloads.io.common.schema import FLAG, INTEGER, STUDY_SHEET, TEXT
 from slingloads.io.common.units import si_factor
 
@@ -49,28 +53,30 @@ class StudyParameters:
         return self.cell(name) or "(default)"
 
     def raw(self, name):
-        """The value as the user typed it, with the unit of its 'unit' cell when there is
-        one (``"12 ft"``), for error messages; the default (in its unit) when the row is
-        absent."""
-        cell = self.cell(name)
-        if cell is None:
-            spec = self.specs[name.lower()]
-            return f"{spec.default} {spec.unit}".strip() if spec.unit else spec.default
-        sheet = self.reader.book[STUDY_SHEET]
-        value = sheet[cell].value
-        unit = sheet[f"C{cell[1:]}"].value if cell.startswith("B") else None
-        if unit is None or not str(unit).strip() or str(unit).strip() == "-":
-            return value
-        return f"{value} {str(unit).strip()}"
+        """The value as the user typed it (for error messages), or the default."""
+        got = self.given.get(name.lower())
+        if got is None:
+            return self.specs[name.lower()].default
+        return got.raw
 
-    def error(self, name, rule, value):
-        """An InputError at the parameter's cell."""
+    def unit(self, name):
+        """The unit as the user wrote it (or the default's unit); None for no unit."""
+        got = self.given.get(name.lower())
+        unit = got.unit if got is not None else self.specs[name.lower()].unit
+        return unit or None
+
+    def error(self, name, rule, value=None):
+        """An InputError at the parameter's cell. Without ``value``: the value as typed, with
+        its unit."""
+        if value is None:
+            return self.reader.error(rule, self.raw(name), STUDY_SHEET, self.where(name),
+                                     self.unit(name))
         return self.reader.error(rule, value, STUDY_SHEET, self.where(name))
 
     def check(self, name, ok, rule):
         """Raise an InputError with the value as typed if ``ok`` is false."""
         if not ok:
-            raise self.error(name, rule, self.raw(name))
+            raise self.error(name, rule)
 
     def choice(self, name, valid):
         """The parameter's text as one of ``valid`` (case-insensitive), spelt as listed."""
@@ -86,3 +92,25 @@ class StudyParameters:
         ok = np.isfinite(value) and (value > 0 or (allow_zero and value == 0))
         self.check(name, ok, f"{name!r} must be {'>= 0' if allow_zero else '> 0'}")
         return float(value)
+
+    @contextlib.contextmanager
+    def located(self, fields, default=None):
+        """Locate an :class:`InputError` a model raises on parameter values.
+
+        Parameters
+        ----------
+        fields : dict
+            Model argument (the error's ``field``) -> parameter name.
+        default : str, optional
+            Parameter whose cell takes an error naming no known field (else the sheet).
+        """
+        try:
+            yield
+        except InputError as err:
+            if err.cell is not None:
+                raise
+            name = fields.get(err.field, default)
+            if name is None:
+                raise err.located(file=self.reader.file, sheet=STUDY_SHEET) from None
+            raise err.located(file=self.reader.file, sheet=STUDY_SHEET, cell=self.where(name),
+                              value=self.raw(name), unit=self.unit(name)) from None

@@ -110,6 +110,29 @@ def digest_frame(inputs_digest):
                      type(inputs_digest).__name__)
 
 
+def warning_sections(warnings):
+    """The Summary block of the warnings on the inputs (implausible but possible values, each
+    naming its cells), or nothing when there are none.
+
+    Parameters
+    ----------
+    warnings : sequence of str
+        :attr:`WorkbookStudy.warnings <slingloads.io.study.WorkbookStudy.warnings>`.
+
+    Returns
+    -------
+    list of slingloads.io.common.excel.Section
+    """
+    from slingloads.io.common.excel import Section
+
+    warnings = list(warnings or ())
+    if not warnings:
+        return []
+    table = pd.DataFrame({"warning": [f"WARNING {k}" for k in range(1, len(warnings) + 1)],
+                          "on the inputs": warnings})
+    return [Section("Warnings on the inputs (accepted, but check them)", table)]
+
+
 def csv_name(header):
     """The CSV spelling of a unit-labelled header: ``name_unit``, as the SFBM file's columns.
 

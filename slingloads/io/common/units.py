@@ -11,12 +11,14 @@ and exact unit factors the physics uses (``G0``, ``KNOT``, ``FOOT``...) are in
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 import numpy as np
 import pint
 
 from slingloads.errors import UnitError
+from slingloads.limits import MAX_UNIT_CHARS
 
 _REGISTRY = pint.UnitRegistry()
 
@@ -78,40 +80,63 @@ def si_factor(unit, kind):
     Parameters
     ----------
     unit : str
-        Unit string as written by a user (``"in"``, ``"lbf*in"``, ``"-"`` for none).
+        Unit string as written by a user (``"in"``, ``"lbf*in"``, ``"-"`` for none), at most
+        :data:`slingloads.limits.MAX_UNIT_CHARS` characters.
     kind : str
         One of the keys of :data:`SI_UNITS`.
 
     Returns
     -------
     float
-        Multiply a value in ``unit`` by this to get SI.
+        Multiply a value in ``unit`` by this to get SI: finite and > 0.
 
     Raises
     ------
     UnitError
-        If the unit is unknown or its dimension does not fit ``kind``.
+        If the unit is unknown, malformed (``kg/0``, ``kg**0``, unbalanced brackets), too
+        long, an offset unit (``degC``), its dimension does not fit ``kind``, or its factor is
+        not a finite positive number (``percent**1000``).
     """
     if kind not in SI_UNITS:
         raise UnitError(f"unknown quantity kind; valid kinds are {sorted(SI_UNITS)}", kind)
+    if not isinstance(unit, str):
+        raise UnitError("a unit must be text", unit)
     text = unit.strip()
+    if len(text) > MAX_UNIT_CHARS:
+        raise UnitError(f"a unit must have at most {MAX_UNIT_CHARS} characters",
+                        unit[:MAX_UNIT_CHARS] + "...")
     if text in ("", "-", "1"):
         text = ""
     if kind == "dimensionless" and text == "":
         return 1.0
     if text == "":
         raise UnitError(f"a {kind} needs a unit, such as {SI_UNITS[kind]!r}", unit)
+    factor = _pint_factor(text, kind, unit)
+    if not (math.isfinite(factor) and factor > 0):
+        raise UnitError(f"unit has no usable factor to {SI_UNITS[kind] or 'a pure number'} "
+                        f"(it converts with {factor!r}; a unit must scale by a finite "
+                        "positive factor)", unit)
+    return factor
+
+
+def _pint_factor(text, kind, unit):
+    """pint's conversion factor of ``text`` to the SI unit of ``kind``, or a UnitError."""
     try:
         quantity = _REGISTRY.Quantity(1.0, text)
+        if not quantity.unitless and not quantity._is_multiplicative:
+            raise UnitError("offset units (degC, degF) are not accepted", unit)
         return float(quantity.to(SI_UNITS[kind] or "dimensionless").magnitude)
+    except UnitError:
+        raise
     except pint.errors.DimensionalityError:
         raise UnitError(
             f"unit is not a {kind} (expected something convertible to {SI_UNITS[kind]!r})",
             unit,
         ) from None
-    except (pint.errors.UndefinedUnitError, AttributeError, TypeError, ValueError,
-            AssertionError):
-        raise UnitError("unknown unit", unit) from None
+    except Exception:  # noqa: BLE001 - pint parses arbitrary text: any failure is a bad unit
+        # (seen: ZeroDivisionError for kg/0, KeyError for kg**0, RecursionError for deep
+        # brackets, OverflowError for percent**-200, OffsetUnitCalculusError)
+        raise UnitError("unknown unit (or a malformed unit expression)", unit) from None
 
 
 def to_si(values, unit, kind):

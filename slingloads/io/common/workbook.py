@@ -1,23 +1,49 @@
 """Reading input workbooks: tables with units in their headers, parameters, precise errors.
 
 Every problem raises :class:`~slingloads.errors.InputError` naming the file, the sheet, the
-cell, the value and the rule it broke. Workbooks are opened with openpyxl, which parses their
-XML through ``defusedxml`` (a dependency of slingloads) and so refuses entity-expansion
-("billion laughs") and external-entity attacks; the ZIP container's uncompressed size is
-checked before anything is parsed.
+cell, the value as the user wrote it (with the unit of its header or unit cell) and the rule
+it broke. A workbook is read in bounded memory and time whatever it holds:
+
+* the file and its ZIP container are checked before anything is parsed: size on disk, number
+  of parts, uncompressed size of each part and of the whole
+  (:data:`slingloads.limits.MAX_UNCOMPRESSED_BYTES`: zip bombs);
+* XML is parsed through ``defusedxml``, which refuses entity-expansion ("billion laughs") and
+  external-entity attacks;
+* sheets are streamed row by row (openpyxl's read-only mode, with only the rows kept), only the
+  sheets slingloads knows are read, and each is read once; a sheet storing more than
+  :data:`~slingloads.limits.MAX_SHEET_CELLS` cells (formatted empty cells count) is refused
+  rather than parsed for minutes, and a table with more data rows than its schema allows is
+  refused at the first row past the limit;
+* no data is silently ignored: a value in a column without a header, or below a table's limit,
+  is an error, not skipped;
+* every number is checked against the bounds of its column or parameter
+  (:class:`~slingloads.io.common.schema.Bounds`) and the magnitude limit of its kind
+  (:data:`~slingloads.limits.MAX_MAGNITUDE`), every text against its length limit.
+
+Files a workbook refers to (CSV time histories) are opened through
+:meth:`WorkbookReader.referenced_file`, which checks them the same way and records them as
+inputs, so that no output ever replaces one.
 """
 
 from __future__ import annotations
 
 import contextlib
+import csv
+import io
 import math
+import os
+import pyexpat
 import re
+import stat
+import warnings
 import zipfile
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from datetime import date, datetime, time, timedelta
 from pathlib import Path
+from typing import NamedTuple
+from xml.etree.ElementTree import iterparse
 
 import numpy as np
-from openpyxl import load_workbook
 from openpyxl.utils import get_column_letter
 
 from slingloads.errors import InputError
@@ -29,14 +55,76 @@ from slingloads.io.common.schema import (
     TEXT,
 )
 from slingloads.io.common.units import si_factor
+from slingloads.limits import (
+    MAX_CSV_BYTES,
+    MAX_CSV_ROWS,
+    MAX_MAGNITUDE,
+    MAX_PART_BYTES,
+    MAX_PATH_CHARS,
+    MAX_SHEET_CELLS,
+    MAX_SHEET_ELEMENTS,
+    MAX_STUDY_ROWS,
+    MAX_TEXT_CHARS,
+    MAX_UNCOMPRESSED_BYTES,
+    MAX_WORKBOOK_BYTES,
+    MAX_ZIP_MEMBERS,
+)
 
-#: Largest uncompressed workbook content accepted. [bytes]
-MAX_UNCOMPRESSED = 256 * 1024**2
+#: Excel's sheet size [rows, columns].
+EXCEL_ROWS, EXCEL_COLUMNS = 1_048_576, 16_384
 _HEADER = re.compile(r"^\s*(?P<name>[^\[\]]*?)\s*(\[(?P<unit>[^\[\]]*)\])?\s*$")
 _FORMULA_HINT = (" (or a formula whose value was never computed: open and save the workbook "
                  "in Excel or LibreOffice first)")
+#: Control characters a workbook cell cannot hold (tab, line feed and carriage return can).
+ILLEGAL_CHARACTERS_RE = re.compile(r"[\000-\010]|[\013-\014]|[\016-\037]")
 _TRUE = {"yes", "y", "true", "1", "on", "x"}
 _FALSE = {"no", "n", "false", "0", "off", ""}
+
+
+_MAIN = "{http://schemas.openxmlformats.org/spreadsheetml/2006/main}"
+_ROW_TAG, _CELL_TAG = f"{_MAIN}row", f"{_MAIN}c"
+#: Elements that may be part of a cell (kept until their row is read).
+_CELL_PARTS = frozenset(f"{_MAIN}{t}" for t in (
+    "c", "v", "f", "is", "t", "r", "rPr", "rFont", "b", "i", "strike", "condense", "extend",
+    "outline", "shadow", "u", "vertAlign", "sz", "color", "family", "charset", "scheme",
+    "rPh", "phoneticPr"))
+
+
+class _RootReached(Exception):
+    """The prolog of an XML part was read to its first element."""
+
+
+def _check_prolog(source, error):
+    """Refuse an XML part with a document type declaration (entity definitions: "billion
+    laughs", external entities) before the fast C parser reads it. A DOCTYPE can only come
+    before the first element, so expat reads the prolog alone and stops there."""
+    parser = pyexpat.ParserCreate()
+
+    def refuse(*_):
+        raise error("not a readable .xlsx workbook: a sheet's XML declares a document type "
+                    "(DTD) or entities, refused as a possible XML bomb; save the workbook "
+                    "again in Excel or LibreOffice", None)
+
+    def root(*_):
+        raise _RootReached
+
+    parser.StartDoctypeDeclHandler = refuse
+    parser.EntityDeclHandler = refuse
+    parser.StartElementHandler = root
+    try:
+        while True:
+            chunk = source.read(1 << 16)
+            parser.Parse(chunk, not chunk)
+            if not chunk:
+                return
+    except _RootReached:
+        return
+    except pyexpat.ExpatError as err:
+        raise error(f"corrupt sheet: not well-formed XML ({err})", None) from None
+
+
+class CellError(str):
+    """The value of a cell holding a spreadsheet error (``#DIV/0!``, ``#N/A``, ``#REF!``)."""
 
 
 @contextlib.contextmanager
@@ -53,15 +141,34 @@ def cell_name(row, col):
     return f"{get_column_letter(col)}{row}"
 
 
+def _is_empty(value):
+    return value is None or (isinstance(value, str) and not value.strip())
+
+
 @dataclass
 class Table:
-    """A table read from a sheet: SI values per column, and where each value came from."""
+    """A table read from a sheet: SI values per column, where each came from, as written.
+
+    Attributes
+    ----------
+    sheet : str
+    values : dict
+        Column name -> SI values (ndarray for numbers, list for text and flags).
+    cells : dict
+        Column name -> cell coordinate of each value.
+    units : dict
+        Column name -> unit written in the header.
+    raw : dict
+        Column name -> the cell values as written.
+    file : str
+    """
 
     sheet: str
     values: dict
     cells: dict
     units: dict
-    factors: dict = None
+    raw: dict = field(default_factory=dict)
+    file: str | None = None
 
     def __len__(self):
         return len(next(iter(self.values.values()))) if self.values else 0
@@ -76,12 +183,167 @@ class Table:
         """Coordinate of the value of column ``name`` in record ``index``."""
         return self.cells[name][index]
 
-    def written(self, name, index):
-        """The value of column ``name`` in record ``index`` in the unit of its header, as the
-        user wrote it (for error messages): ``"12 ft"``, or the bare number without a unit."""
-        value = float(self.values[name][index]) / ((self.factors or {}).get(name) or 1.0)
-        unit = self.units.get(name, "")
-        return f"{value:.10g} {unit}".strip() if unit and unit != "-" else value
+    def shown(self, name, index):
+        """``(value as written, unit of the header)`` of column ``name`` in record ``index``."""
+        raw = self.raw.get(name)
+        value = raw[index] if raw is not None else self.values[name][index]
+        if isinstance(self.values[name], np.ndarray):
+            value = _number_echo(value)
+        return value, self.units.get(name) or None
+
+    def error(self, name, index, rule):
+        """An InputError at the cell of column ``name``, record ``index``, echoing the value as
+        written with its unit."""
+        value, unit = self.shown(name, index)
+        return InputError(rule, value, file=self.file, sheet=self.sheet,
+                          cell=self.cell(name, index), unit=unit)
+
+    @contextlib.contextmanager
+    def located(self, fields=None, cell=None):
+        """Locate an :class:`InputError` a model raises on this table's values.
+
+        An error that names its ``field`` (a model argument) and ``index`` (a record) is put at
+        the cell of the column ``fields[field]`` (default: the column of that name) in that
+        record, with the value as written; any other error at ``cell`` (default: the sheet).
+        """
+        fields = fields or {}
+        try:
+            yield
+        except InputError as err:
+            column = fields.get(err.field, err.field)
+            if (err.cell is None and column in self.cells and err.index is not None
+                    and 0 <= err.index < len(self.cells[column])):
+                value, unit = self.shown(column, err.index)
+                raise err.located(file=self.file, sheet=self.sheet,
+                                  cell=self.cell(column, err.index), value=value,
+                                  unit=unit) from None
+            raise err.located(file=self.file, sheet=self.sheet, cell=cell) from None
+
+
+class ParameterValue(NamedTuple):
+    """A Study-sheet parameter as read: SI value, cell, value as written, unit as written."""
+
+    value: object
+    cell: str
+    raw: object
+    unit: str
+
+
+class _MemorySource:
+    """Sheets given as lists of rows (row 1 first), for tests and for building in memory."""
+
+    def __init__(self, sheets):
+        self.sheets = {str(k): list(v) for k, v in sheets.items()}
+        self.sheetnames = list(self.sheets)
+
+    def rows(self, name):
+        for r, row in enumerate(self.sheets[name], start=1):
+            values = list(row)
+            yield r, [(c, v) for c, v in enumerate(values, start=1)], len(values)
+
+    def close(self):
+        pass
+
+
+@contextlib.contextmanager
+def _no_dimension_scan():
+    """Open read-only sheets without openpyxl's search for their ``<dimension>``: a sheet
+    without one would be parsed whole (slowly) just to size it, and the rows are streamed
+    here anyway."""
+    from openpyxl.worksheet._read_only import ReadOnlyWorksheet
+
+    original = ReadOnlyWorksheet._get_size
+    ReadOnlyWorksheet._get_size = lambda self: None
+    try:
+        yield
+    finally:
+        ReadOnlyWorksheet._get_size = original
+
+
+class _XlsxSource:
+    """An .xlsx file streamed sheet by sheet with openpyxl's read-only machinery."""
+
+    def __init__(self, path, error):
+        from openpyxl import load_workbook
+
+        self.error = error
+        try:
+            with warnings.catch_warnings(), _no_dimension_scan():
+                warnings.simplefilter("ignore")  # unsupported extensions, data validation...
+                self.book = load_workbook(path, read_only=True, data_only=True)
+        except Exception as err:  # noqa: BLE001 - openpyxl raises many kinds on corrupt files
+            root = err
+            while root.__cause__ is not None or root.__context__ is not None:
+                root = root.__cause__ or root.__context__
+            text = str(root).splitlines()[0][:200] if str(root) else ""
+            raise error(f"not a readable .xlsx workbook ({type(root).__name__}: {text})",
+                        None) from None
+        self.sheetnames = list(self.book.sheetnames)
+
+    def rows(self, name):
+        """``(row number, [(column, value), ...], cells stored)`` for each row element of the
+        sheet (empty cells are counted, not listed).
+
+        Only end events are handled: a row is read when it ends and then cleared, and every
+        element that cannot be part of a cell is cleared when it ends, so memory stays flat;
+        the number of elements is capped (:data:`~slingloads.limits.MAX_SHEET_ELEMENTS`).
+        """
+        from openpyxl.worksheet._reader import WorkSheetParser
+
+        ws = self.book[name]
+        parser = WorkSheetParser(None, ws._shared_strings, data_only=True,
+                                 epoch=self.book.epoch, date_formats=self.book._date_formats,
+                                 timedelta_formats=self.book._timedelta_formats)
+        count = in_row = 0
+        with ws._get_source() as source:
+            _check_prolog(source, self.error)
+        with ws._get_source() as source:
+            for _, element in iterparse(source):
+                count += 1
+                if count > MAX_SHEET_ELEMENTS:
+                    raise self.error(f"the sheet holds more than {MAX_SHEET_ELEMENTS:,} XML "
+                                     "elements (cells, merged ranges, formats...): delete its "
+                                     "unused rows and columns", None)
+                tag = element.tag
+                if tag == _ROW_TAG:
+                    in_row = 0
+                    yield self._row(parser, element)
+                    element.clear()
+                elif tag not in _CELL_PARTS:
+                    element.clear()
+                else:
+                    in_row += 1  # kept until its row ends: bounded by Excel's row width
+                    if in_row > 8 * EXCEL_COLUMNS:
+                        raise self.error("corrupt sheet: a row holds more cells than Excel "
+                                         "allows", None)
+
+    def _row(self, parser, element):
+        r = element.get("r")
+        try:
+            parser.row_counter = int(r) if r is not None else parser.row_counter + 1
+        except ValueError:
+            raise self.error("corrupt sheet: invalid row number", r) from None
+        parser.col_counter = 0
+        cells = []
+        for c in element:
+            if c.tag != _CELL_TAG:
+                continue
+            if not len(c) and c.text is None:  # an empty (formatted) cell: nothing to read
+                continue
+            try:
+                cell = parser.parse_cell(c)
+            except Exception:  # noqa: BLE001 - any malformed cell of a hostile file
+                raise self.error("corrupt sheet: unreadable cell", c.get("r")) from None
+            value = cell["value"]
+            if cell["data_type"] == "e" and value is not None:
+                value = CellError(value)
+            if cell["row"] != parser.row_counter:
+                raise self.error("corrupt sheet: a cell lies outside its row", c.get("r"))
+            cells.append((cell["column"], value))
+        return parser.row_counter, cells, len(element)
+
+    def close(self):
+        self.book.close()
 
 
 class WorkbookReader:
@@ -91,204 +353,543 @@ class WorkbookReader:
     ----------
     path : str or Path
         The ``.xlsx`` file.
+
+    Use :meth:`from_rows` to read sheets given in memory (tests). Close it (or use it as a
+    context manager) to release the file.
     """
 
-    def __init__(self, path):
+    def __init__(self, path, *, _source=None):
         self.path = Path(path)
         self.file = str(path)
-        if not self.path.is_file():
-            raise InputError("input workbook not found", str(path), file=self.file)
+        self._referenced = []
+        #: Implausible but possible inputs, shown on the reports' Summary.
+        self.warnings = []
+        self._tables = {}
+        self._cells_read = {}
+        if _source is None:
+            self._check_file()
+            self._check_container()
+            _source = _XlsxSource(self.path, lambda rule, value: self.error(rule, value))
+        self._source = _source
+
+    @classmethod
+    def from_rows(cls, sheets, file="workbook.xlsx"):
+        """A reader of sheets given as ``{name: [row 1 values, row 2 values, ...]}``.
+
+        ``file`` names the workbook in messages; files the sheets refer to are looked for
+        relative to its folder.
+        """
+        return cls(file, _source=_MemorySource(sheets))
+
+    def close(self):
+        self._source.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    @property
+    def book(self):
+        """The openpyxl read-only workbook (None for sheets given in memory)."""
+        return getattr(self._source, "book", None)
+
+    @property
+    def input_files(self):
+        """The workbook and every file it referred to that was read, in order, once each."""
+        files = [self.path] + self._referenced
+        return list(dict.fromkeys(files))
+
+    # ---- checks of the file ---------------------------------------------------------------
+    def _check_file(self):
+        try:
+            info = os.stat(self.path)
+        except (FileNotFoundError, NotADirectoryError):
+            raise InputError("input workbook not found", self.file, file=self.file) from None
+        except (OSError, ValueError) as err:
+            raise InputError(f"cannot open the input workbook ({_why(err)})", self.file,
+                             file=self.file) from None
+        if stat.S_ISDIR(info.st_mode):
+            raise InputError("the input is a folder, not an .xlsx workbook", self.file,
+                             file=self.file)
+        if not stat.S_ISREG(info.st_mode):
+            raise InputError("the input is not a regular file (a device, pipe or socket)",
+                             self.file, file=self.file)
         if self.path.suffix.lower() not in (".xlsx", ".xlsm"):
             raise InputError("input must be an Excel .xlsx workbook (save older .xls files "
                              "as .xlsx)", self.path.suffix, file=self.file)
-        self._check_container()
+        if info.st_size > MAX_WORKBOOK_BYTES:
+            raise InputError(f"workbook refused: {info.st_size:,} bytes, more than the "
+                             f"{MAX_WORKBOOK_BYTES:,} accepted", file=self.file)
         try:
-            self.book = load_workbook(self.path, read_only=False, data_only=True)
-        except Exception as err:  # openpyxl raises many kinds on corrupt or hostile files
-            root = err
-            while root.__cause__ is not None or root.__context__ is not None:
-                root = root.__cause__ or root.__context__
-            raise InputError(f"not a readable .xlsx workbook ({type(root).__name__}: "
-                             f"{str(root).splitlines()[0] if str(root) else ''})",
+            with open(self.path, "rb"):
+                pass
+        except OSError as err:
+            raise InputError(f"cannot read the input workbook ({_why(err)})", self.file,
                              file=self.file) from None
 
     def _check_container(self):
         try:
             with zipfile.ZipFile(self.path) as archive:
-                total = sum(info.file_size for info in archive.infolist())
-        except (zipfile.BadZipFile, OSError) as err:
+                infos = archive.infolist()
+                self._check_sizes(infos)
+                for info in infos:  # every worksheet, read or not: no DTD, no entities
+                    if _part_kind(info.filename) == "worksheet":
+                        with archive.open(info) as source:
+                            _check_prolog(source, lambda rule, value: self.error(rule, value))
+        except InputError:
+            raise
+        except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, ValueError, EOFError,
+                NotImplementedError) as err:
             raise InputError(f"not a workbook: the file is not an .xlsx (zip) container "
-                             f"({err})", file=self.file) from None
-        if total > MAX_UNCOMPRESSED:
-            raise InputError(f"workbook refused: its content expands to {total} bytes, more "
-                             f"than the {MAX_UNCOMPRESSED} accepted (possible zip bomb)",
-                             file=self.file)
+                             f"({str(err)[:200]})", file=self.file) from None
+
+    def _check_sizes(self, infos):
+        if len(infos) > MAX_ZIP_MEMBERS:
+            raise InputError(f"workbook refused: {len(infos):,} parts in its container, more "
+                             f"than the {MAX_ZIP_MEMBERS:,} accepted", file=self.file)
+        total = 0
+        for info in infos:
+            total += info.file_size
+            limit = MAX_PART_BYTES.get(_part_kind(info.filename))
+            if limit is not None and info.file_size > limit:
+                raise InputError(f"workbook refused: its part {info.filename[:100]!r} expands "
+                                 f"to {info.file_size:,} bytes, more than the {limit:,} "
+                                 "accepted (possible zip bomb)", file=self.file)
+        if total > MAX_UNCOMPRESSED_BYTES:
+            raise InputError(f"workbook refused: its content expands to {total:,} bytes, more "
+                             f"than the {MAX_UNCOMPRESSED_BYTES:,} accepted (possible zip "
+                             "bomb)", file=self.file)
+
+    # ---- sheets ---------------------------------------------------------------------------
+    @property
+    def sheetnames(self):
+        return self._source.sheetnames
 
     def has_sheet(self, name):
-        return name in self.book.sheetnames
+        return self._sheet(name) is not None
 
-    def error(self, rule, value=None, sheet=None, cell=None):
+    def _sheet(self, name):
+        """The workbook's name of sheet ``name``: exact, else the one sheet whose name matches
+        it with case and surrounding spaces ignored; None if there is none."""
+        names = self._source.sheetnames
+        if name in names:
+            return name
+        matches = [n for n in names if n.strip().casefold() == name.casefold()]
+        return matches[0] if len(matches) == 1 else None
+
+    def error(self, rule, value=None, sheet=None, cell=None, unit=None):
         """An InputError located in this file."""
-        return InputError(rule, value, file=self.file, sheet=sheet, cell=cell)
+        return InputError(rule, value, file=self.file, sheet=sheet, cell=cell, unit=unit)
 
-    def _rows(self, name):
-        if name not in self.book.sheetnames:
+    def rows(self, name, max_rows, first_data_row=2):
+        """The non-empty rows of sheet ``name``: ``[(row number, {column: value})]``.
+
+        Parameters
+        ----------
+        name : str
+        max_rows : int
+            Most non-empty rows from ``first_data_row`` on; one more is an error at its row.
+        first_data_row : int
+            First row counted against ``max_rows`` (rows above are headers).
+
+        Raises
+        ------
+        InputError
+            If the sheet is missing, stores more than
+            :data:`~slingloads.limits.MAX_SHEET_CELLS` cells, has more rows than allowed, or
+            is corrupt.
+        """
+        actual = self._sheet(name)
+        if actual is None:
             raise self.error(f"missing sheet {name!r}; the workbook has "
-                             f"{self.book.sheetnames}", sheet=name)
-        return list(self.book[name].iter_rows(values_only=True))
+                             f"{_shorten(self._source.sheetnames)}", sheet=name)
+        out = []
+        cells = 0
+        last = 0
+        data_rows = 0
+        try:
+            for r, row, stored in self._source.rows(actual):
+                cells += stored
+                if cells > MAX_SHEET_CELLS:
+                    raise self.error(f"the sheet stores more than {MAX_SHEET_CELLS:,} cells "
+                                     "(formatted empty cells count): delete its unused rows "
+                                     "and columns", sheet=name, cell=cell_name(r, 1))
+                if not 1 <= r <= EXCEL_ROWS or r <= last:
+                    raise self.error("corrupt sheet: rows out of order or beyond Excel's "
+                                     "limit", r, name)
+                last = r
+                values = {}
+                for c, v in row:
+                    if _is_empty(v):
+                        continue
+                    if not 1 <= c <= EXCEL_COLUMNS:
+                        raise self.error("corrupt sheet: a column beyond Excel's limit", c,
+                                         name)
+                    values[c] = v
+                if not values:
+                    continue
+                if r >= first_data_row:
+                    data_rows += 1
+                    if data_rows > max_rows:
+                        raise self.error(f"too many rows: at most {max_rows:,} data rows are "
+                                         "allowed on this sheet (limits of slingloads)",
+                                         sheet=name, cell=cell_name(r, min(values)))
+                out.append((r, values))
+        except InputError as err:
+            raise err.located(file=self.file, sheet=name) from None
+        except (OSError, zipfile.BadZipFile, EOFError, ValueError, KeyError,
+                SyntaxError) as err:
+            # defusedxml refusals are ValueErrors, XML syntax errors SyntaxErrors; a corrupt
+            # stream raises the others
+            raise self.error(f"corrupt or refused sheet ({type(err).__name__}: "
+                             f"{str(err)[:200]})", sheet=name) from None
+        return out
 
     def table(self, spec):
-        """Read the table sheet described by ``spec`` (a :class:`TableSheet`)."""
-        rows = self._rows(spec.name)
-        if not rows or all(v is None for v in rows[0]):
+        """Read the table sheet described by ``spec`` (a :class:`TableSheet`), once."""
+        if spec.name not in self._tables:
+            self._tables[spec.name] = self._read_table(spec)
+        return self._tables[spec.name]
+
+    def _read_table(self, spec):
+        rows = self.rows(spec.name, spec.max_rows)
+        if not rows or rows[0][0] != 1:
             raise self.error("sheet has no header row (row 1)", sheet=spec.name, cell="A1")
-        header = rows[0]
-        exact = {c.name: c for c in spec.columns}
-        folded = {}
-        for c in spec.columns:
-            folded.setdefault(c.name.lower(), []).append(c)
-        found = {}
-        for col, text in enumerate(header, start=1):
-            if text is None or str(text).strip() == "":
-                continue
-            match = _HEADER.match(str(text))
-            name = (match.group("name") if match else str(text)).strip()
-            unit = match.group("unit") if match and match.group("unit") is not None else None
-            if name.lower() in NOTE_COLUMNS:
-                continue
-            # exact names first (CL and Cl differ), else a unique case-insensitive match
-            candidates = folded.get(name.lower(), [])
-            column = exact.get(name) or (candidates[0] if len(candidates) == 1 else None)
-            if column is None:
-                raise self.error(f"unknown column; valid columns are "
-                                 f"{[c.header for c in spec.columns]}", str(text),
-                                 spec.name, cell_name(1, col))
-            key = column.name
-            if key in found:
-                raise self.error("column appears twice", str(text), spec.name,
-                                 cell_name(1, col))
-            factor = 1.0
-            if column.kind not in (TEXT, FLAG, INTEGER):
-                if unit is None and column.kind != "dimensionless":
-                    raise self.error(f"header needs a unit in brackets, e.g. "
-                                     f"'{column.name} [{column.unit}]'", str(text), spec.name,
-                                     cell_name(1, col))
-                with located(self.file, spec.name, cell_name(1, col)):
-                    factor = si_factor(unit or "", column.kind)
-            found[key] = (col, column, factor, unit or "")
+        header = rows[0][1]
+        found = self._columns(spec, header)
+        last = max(header)
         for column in spec.columns:
             if column.required and column.name not in found:
                 raise self.error(f"missing column {column.header!r}", sheet=spec.name,
-                                 cell=cell_name(1, len(header) + 1))
+                                 cell=cell_name(1, last + 1))
         values = {c.name: [] for c in spec.columns if c.name in found}
+        raw = {name: [] for name in values}
         cells = {name: [] for name in values}
-        for r, row in enumerate(rows[1:], start=2):
-            if all(v is None or (isinstance(v, str) and not v.strip()) for v in row):
-                continue
-            for col, column, factor, _ in found.values():
-                raw = row[col - 1] if col - 1 < len(row) else None
+        for r, row in rows[1:]:
+            for col in row:
+                if col not in header:
+                    raise self.error("value in a column without a header (give the column a "
+                                     "header, or clear the cell)", _echo(row[col]),
+                                     spec.name, cell_name(r, col))
+            for col, column, factor, unit in found.values():
+                value = row.get(col)
                 where = cell_name(r, col)
-                values[column.name].append(self._value(raw, column, factor, spec.name, where))
+                values[column.name].append(
+                    self._value(value, column, factor, unit, spec.name, where))
+                raw[column.name].append(value)
                 cells[column.name].append(where)
         if not values or not next(iter(values.values())):
             raise self.error("sheet has no data rows below its header", sheet=spec.name,
                              cell="A2")
         arrays = {}
         for name, vals in values.items():
-            kind = next(c.kind for c in spec.columns if c.name == name)
+            kind = found[name][1].kind
             arrays[name] = vals if kind in (TEXT, FLAG) else np.asarray(vals, dtype=float)
-        units = {found[k][1].name: found[k][3] for k in found}
-        factors = {found[k][1].name: found[k][2] for k in found}
-        return Table(spec.name, arrays, cells, units, factors)
+        units = {name: found[name][3] for name in found}
+        return Table(spec.name, arrays, cells, units, raw, self.file)
 
-    def _value(self, raw, column, factor, sheet, where):
+    def _columns(self, spec, header):
+        """``{column name: (column number, Column, SI factor, unit as written)}``."""
+        exact = {c.name: c for c in spec.columns}
+        folded = {}
+        for c in spec.columns:
+            folded.setdefault(c.name.lower(), []).append(c)
+        found = {}
+        for col in sorted(header):
+            text = header[col]
+            where = cell_name(1, col)
+            if not isinstance(text, str):
+                text = _as_text(text)
+            match = _HEADER.match(text)
+            name = (match.group("name") if match else text).strip()
+            unit = match.group("unit") if match and match.group("unit") is not None else None
+            if name.lower() in NOTE_COLUMNS:
+                header[col] = None  # a note column: its cells are free text
+                continue
+            # exact names first (CL and Cl differ), else a unique case-insensitive match
+            candidates = folded.get(name.lower(), [])
+            column = exact.get(name) or (candidates[0] if len(candidates) == 1 else None)
+            if column is None:
+                raise self.error(f"unknown column; valid columns are "
+                                 f"{[c.header for c in spec.columns]}", _echo(text),
+                                 spec.name, where)
+            if column.name in found:
+                raise self.error("column appears twice", _echo(text), spec.name, where)
+            factor = 1.0
+            if column.kind not in (TEXT, FLAG, INTEGER):
+                if unit is None and column.kind != "dimensionless":
+                    raise self.error(f"header needs a unit in brackets, e.g. "
+                                     f"'{column.name} [{column.unit}]'", _echo(text),
+                                     spec.name, where)
+                with located(self.file, spec.name, where):
+                    factor = si_factor(unit or "", column.kind)
+            elif unit is not None and unit.strip() not in ("", "-"):
+                raise self.error(f"column {column.name!r} takes no unit", _echo(text),
+                                 spec.name, where)
+            found[column.name] = (col, column, factor, (unit or "").strip())
+        return found
+
+    def _value(self, raw, column, factor, unit, sheet, where):
         if column.kind == TEXT:
-            if raw is None or (isinstance(raw, str) and not raw.strip()):
+            if _is_empty(raw):
                 if column.required:
                     raise self.error(f"empty cell in required column {column.header!r}"
                                      f"{_FORMULA_HINT}", None, sheet, where)
                 return column.default
-            if isinstance(raw, float) and raw.is_integer():
-                raw = int(raw)
-            return str(raw).strip()
+            return parse_text(raw, column.header, column.char_limit, self.error, sheet, where)
         if column.kind == FLAG:
             return parse_flag(raw, column.header, self.error, sheet, where, column.default)
-        if raw is None or (isinstance(raw, str) and not raw.strip()):
+        if _is_empty(raw):
             if column.required:
                 raise self.error(f"empty cell in required column {column.header!r}"
                                  f"{_FORMULA_HINT}", None, sheet, where)
             return column.default
         number = parse_number(raw, column.header, self.error, sheet, where)
-        if column.kind == INTEGER:
-            if not float(number).is_integer():
-                raise self.error(f"{column.header!r} must be a whole number", raw, sheet, where)
-            return int(number)
-        return number * factor
+        return check_quantity(number, raw, column.kind, factor, unit, column.bounds,
+                              column.unit, column.name, self.error, sheet, where)
 
+    # ---- the Study sheet ------------------------------------------------------------------
     def parameters(self, known, sheet=STUDY_SHEET):
-        """Read the ``Study`` sheet: ``{name: (SI value, cell)}`` for every row present.
+        """Read the ``Study`` sheet: ``{name: ParameterValue}`` for every row present.
 
         ``known`` gives every valid :class:`~slingloads.io.common.schema.Parameter` by
         lower-case name (:func:`slingloads.io.analyses.all_parameters`).
         """
-        rows = self._rows(sheet)
-        header = [str(v).strip().lower() if v is not None else "" for v in rows[0]] if rows \
-            else []
+        rows = self.rows(sheet, MAX_STUDY_ROWS)
+        header = rows[0][1] if rows and rows[0][0] == 1 else {}
         for col, title in enumerate(("parameter", "value", "unit"), start=1):
-            if len(header) < col or header[col - 1] != title:
+            got = header.get(col)
+            text = _as_text(got).strip().lower() if got is not None else ""
+            if text != title:
                 raise self.error(f"the {sheet} sheet needs the header 'parameter | value | "
                                  f"unit' in row 1; column {col} should be {title!r}",
-                                 header[col - 1] if len(header) >= col else None, sheet,
-                                 cell_name(1, col))
+                                 _echo(got), sheet, cell_name(1, col))
         out = {}
-        for r, row in enumerate(rows[1:], start=2):
-            row = tuple(row) + (None,) * 3
-            name, raw, unit = row[0], row[1], row[2]
-            if name is None or str(name).strip() == "":
-                if raw is not None:
-                    raise self.error("value without a parameter name", raw, sheet,
-                                     cell_name(r, 1))
+        for r, row in rows[1:]:
+            name, raw, unit = row.get(1), row.get(2), row.get(3)
+            if name is None:
+                if raw is not None or unit is not None:
+                    raise self.error("value without a parameter name", _echo(
+                        raw if raw is not None else unit), sheet, cell_name(r, 1))
                 continue
-            key = str(name).strip().lower()
+            key = _as_text(name).strip().lower()
             if key not in known:
                 renamed = next((p for p in known.values()
                                 if key in (f.lower() for f in p.former)), None)
                 if renamed is not None:
                     raise self.error(f"parameter renamed: use {renamed.name!r} ({renamed.help})",
-                                     str(name), sheet, cell_name(r, 1))
+                                     _echo(name), sheet, cell_name(r, 1))
                 raise self.error(f"unknown parameter; valid parameters are "
-                                 f"{sorted(known)}", str(name), sheet, cell_name(r, 1))
+                                 f"{sorted(known)}", _echo(name), sheet, cell_name(r, 1))
             if key in out:
-                raise self.error("parameter appears twice", str(name), sheet, cell_name(r, 1))
+                raise self.error("parameter appears twice", _echo(name), sheet,
+                                 cell_name(r, 1))
             spec = known[key]
             where = cell_name(r, 2)
-            unit_text = "" if unit is None else str(unit)
-            if raw is None or (isinstance(raw, str) and not raw.strip()):
+            unit_text = "" if unit is None else _as_text(unit)
+            if raw is None:
                 if spec.kind == TEXT:
-                    out[key] = ("", where)
+                    out[key] = ParameterValue("", where, raw, unit_text)
                     continue
                 raise self.error(f"empty value for parameter {spec.name!r} (delete the row "
                                  f"to use the default {spec.default!r} {spec.unit})", None,
                                  sheet, where)
-            out[key] = (self._parameter_value(spec, raw, unit_text, sheet, r), where)
+            value = self._parameter_value(spec, raw, unit_text, sheet, r)
+            out[key] = ParameterValue(value, where, raw, unit_text.strip())
         return out
 
     def _parameter_value(self, spec, raw, unit_text, sheet, r):
         where = cell_name(r, 2)
+        if spec.kind in (TEXT, FLAG, INTEGER) and unit_text.strip() not in ("", "-"):
+            raise self.error(f"parameter {spec.name!r} takes no unit (leave the unit cell "
+                             "empty)", _echo(unit_text), sheet, cell_name(r, 3))
         if spec.kind == TEXT:
-            return str(raw).strip()
+            return parse_text(raw, spec.name, MAX_TEXT_CHARS, self.error, sheet, where)
         if spec.kind == FLAG:
             return parse_flag(raw, spec.name, self.error, sheet, where, None)
         number = parse_number(raw, spec.name, self.error, sheet, where)
-        if spec.kind == INTEGER:
-            if not float(number).is_integer():
-                raise self.error(f"{spec.name!r} must be a whole number", raw, sheet, where)
-            return int(number)
-        if spec.kind != "dimensionless" and not unit_text.strip():
+        if spec.kind != "dimensionless" and spec.kind != INTEGER and not unit_text.strip():
             raise self.error(f"parameter {spec.name!r} needs a unit, e.g. {spec.unit!r}",
                              None, sheet, cell_name(r, 3))
-        with located(self.file, sheet, cell_name(r, 3)):
-            return number * si_factor(unit_text, spec.kind)
+        factor = 1.0
+        if spec.kind != INTEGER:
+            with located(self.file, sheet, cell_name(r, 3)):
+                factor = si_factor(unit_text, spec.kind)
+        return check_quantity(number, raw, spec.kind, factor, unit_text.strip(), spec.bounds,
+                              spec.unit, spec.name, self.error, sheet, where)
+
+    # ---- files the workbook refers to -----------------------------------------------------
+    def referenced_file(self, text, sheet, cell, *, suffixes=(".csv",),
+                        max_bytes=MAX_CSV_BYTES):
+        """The path of a file named in a cell, checked, and recorded as an input.
+
+        A relative path is taken from the workbook's folder. The file must be a regular file
+        (not a folder, device or pipe) with one of ``suffixes`` and at most ``max_bytes``.
+
+        Raises
+        ------
+        InputError
+            At ``sheet``/``cell``, echoing the path as written.
+        """
+        where = (sheet, cell)
+        if len(text) > MAX_PATH_CHARS:
+            raise self.error(f"a file path must have at most {MAX_PATH_CHARS} characters",
+                             _echo(text), *where)
+        if "\x00" in text:
+            raise self.error("a file path must not contain a NUL character", _echo(text),
+                             *where)
+        path = Path(text)
+        if not path.is_absolute():
+            path = self.path.resolve().parent / path
+        if path.suffix.lower() not in suffixes:
+            raise self.error(f"the file must be one of {list(suffixes)}", text, *where)
+        try:
+            info = os.stat(path)
+        except (FileNotFoundError, NotADirectoryError):
+            raise self.error("file not found (a relative path is taken from the workbook's "
+                             "folder)", text, *where) from None
+        except (OSError, ValueError) as err:
+            raise self.error(f"cannot open the file ({_why(err)})", text, *where) from None
+        if not stat.S_ISREG(info.st_mode):
+            raise self.error("not a regular file (a folder, device or pipe)", text, *where)
+        if info.st_size > max_bytes:
+            raise self.error(f"file refused: {info.st_size:,} bytes, more than the "
+                             f"{max_bytes:,} accepted", text, *where)
+        self._referenced.append(path)
+        return path
+
+    def csv_columns(self, text, sheet, cell, columns, max_rows=MAX_CSV_ROWS):
+        """Numeric columns of a CSV file named in a cell, in SI.
+
+        Parameters
+        ----------
+        text : str
+            The path as written in the cell (see :meth:`referenced_file`).
+        sheet, cell : str
+            Where the path was written; every error is located there and names the file's
+            column and data row.
+        columns : dict
+            Wanted column name (case-insensitive, without the unit) -> quantity kind. Every
+            header must carry its unit in brackets, ``t [s]``.
+        max_rows : int
+            Most data rows.
+
+        Returns
+        -------
+        dict
+            Column name -> SI values (ndarray).
+        """
+        path = self.referenced_file(text, sheet, cell)
+        where = (sheet, cell)
+        name = path.name
+        try:
+            with open(path, encoding="utf-8-sig", newline="") as handle:
+                content = handle.read()
+        except (OSError, UnicodeDecodeError) as err:
+            raise self.error(f"cannot read the CSV file {name!r} ({_why(err)})", text,
+                             *where) from None
+        try:
+            reader = csv.reader(io.StringIO(content))
+            header = next(reader, None)
+        except csv.Error as err:
+            raise self.error(f"CSV {name}: not a CSV file ({err})", text, *where) from None
+        if not header:
+            raise self.error(f"CSV {name}: the file is empty (it needs a header row)", text,
+                             *where)
+        index = {}
+        for j, head in enumerate(header):
+            label, _, unit = head.partition("[")
+            key = label.strip().lower()
+            if key in {c.lower() for c in columns}:
+                if key in index:
+                    raise self.error(f"CSV {name}: column {label.strip()!r} appears twice",
+                                     text, *where)
+                index[key] = (j, head, unit.rstrip("] ").strip())
+        wanted = {c.lower(): (c, kind) for c, kind in columns.items()}
+        missing = [c for c in wanted if c not in index]
+        if missing:
+            raise self.error(f"CSV {name}: needs the columns "
+                             f"{[f'{wanted[c][0]} [unit]' for c in wanted]}",
+                             _echo(", ".join(header)), *where)
+        factors = {}
+        for key, (_label, kind) in wanted.items():
+            _, head, unit = index[key]
+            if not unit:
+                raise self.error(f"CSV {name}: column {head!r} needs a unit in brackets",
+                                 text, *where)
+            with located(self.file, *where):
+                factors[key] = si_factor(unit, kind)
+        data = {key: [] for key in wanted}
+        try:
+            for k, row in enumerate(reader, start=1):
+                if not any(v.strip() for v in row):
+                    continue
+                if k > max_rows:
+                    raise self.error(f"CSV {name}: at most {max_rows:,} data rows are "
+                                     "allowed", text, *where)
+                for key, (_label, kind) in wanted.items():
+                    j, head, unit = index[key]
+                    cell_text = row[j] if j < len(row) else ""
+                    try:
+                        value = float(cell_text.strip())
+                    except ValueError:
+                        value = math.nan
+                    if not math.isfinite(value):
+                        raise self.error(f"CSV {name}: column {head!r}, data row {k} is not a "
+                                         "finite number", _echo(cell_text), *where)
+                    if abs(value * factors[key]) > MAX_MAGNITUDE[kind]:
+                        raise self.error(f"CSV {name}: column {head!r}, data row {k} is beyond "
+                                         f"the largest accepted {kind} "
+                                         f"{MAX_MAGNITUDE[kind] / factors[key]:.6g} {unit}",
+                                         _echo(cell_text), *where)
+                    data[key].append(value * factors[key])
+        except csv.Error as err:
+            raise self.error(f"CSV {name}: malformed ({err})", text, *where) from None
+        return {wanted[key][0]: np.asarray(v, dtype=float) for key, v in data.items()}
+
+
+def _part_kind(name):
+    """Kind of a workbook part for MAX_PART_BYTES: worksheets are streamed; shared strings,
+    styles and the other XML parts are parsed whole; other parts (images) are not parsed."""
+    base = name.rsplit("/", 1)[-1]
+    if name.startswith("xl/worksheets/") and base.endswith(".xml"):
+        return "worksheet"
+    if base == "sharedStrings.xml":
+        return "sharedStrings"
+    if base == "styles.xml":
+        return "styles"
+    if base.endswith((".xml", ".rels", ".vml")):
+        return "other"
+    return "binary"
+
+
+def _why(err):
+    """Short reason of an OSError (or other) for a message."""
+    if isinstance(err, OSError) and err.strerror:
+        return err.strerror
+    return f"{type(err).__name__}: {str(err)[:200]}"
+
+
+def _shorten(names, n=30):
+    names = list(names)
+    return names if len(names) <= n else names[:n] + [f"... {len(names) - n} more"]
+
+
+def _as_text(value):
+    """Text of a cell value (whole numbers without '.0')."""
+    if isinstance(value, float) and value.is_integer():
+        return str(int(value))
+    return str(value)
+
+
+def _echo(value, n=200):
+    """A value for a message: long texts cut to ``n`` characters."""
+    if isinstance(value, str) and len(value) > n:
+        return value[:n] + "..."
+    return value
 
 
 def check_unique(reader, table, column):
@@ -296,27 +897,91 @@ def check_unique(reader, table, column):
     seen = {}
     for i, value in enumerate(table[column]):
         if value in seen:
-            raise reader.error(f"duplicate {column} (first at {table.cell(column, seen[value])})",
-                               value, table.sheet, table.cell(column, i))
+            raise table.error(column, i,
+                              f"duplicate {column} (first at {table.cell(column, seen[value])})")
         seen[value] = i
+
+
+def parse_text(raw, what, max_chars, error, sheet, where):
+    """The text of a cell: stripped, at most ``max_chars`` characters, no control characters
+    other than tab and line breaks, not a spreadsheet error."""
+    if isinstance(raw, CellError):
+        raise error(f"{what!r}: the cell holds the spreadsheet error {str(raw)!r}", str(raw),
+                    sheet, where)
+    text = _as_text(raw).strip()
+    if len(text) > max_chars:
+        raise error(f"{what!r} must have at most {max_chars} characters", _echo(text), sheet,
+                    where)
+    if ILLEGAL_CHARACTERS_RE.search(text):
+        raise error(f"{what!r} contains control characters", _echo(text), sheet, where)
+    return text
 
 
 def parse_number(raw, what, error, sheet, where):
     """A finite number from a cell value, or an error naming the cell."""
+    if isinstance(raw, CellError):
+        raise error(f"{what!r}: the cell holds the spreadsheet error {str(raw)!r}", str(raw),
+                    sheet, where)
     if isinstance(raw, bool):
         raise error(f"{what!r} must be a number, not a true/false value", raw, sheet, where)
+    if isinstance(raw, (datetime, date, time, timedelta)):
+        raise error(f"{what!r} must be a number, not a date or time (format the cell as a "
+                    "number)", str(raw), sheet, where)
     if isinstance(raw, (int, float)):
-        value = float(raw)
+        try:
+            value = float(raw)
+        except OverflowError:
+            value = math.inf
     elif isinstance(raw, str):
         try:
             value = float(raw.strip())
         except ValueError:
-            raise error(f"{what!r} must be a number", raw, sheet, where) from None
+            raise error(f"{what!r} must be a number", _echo(raw), sheet, where) from None
     else:
-        raise error(f"{what!r} must be a number", str(raw), sheet, where)
+        raise error(f"{what!r} must be a number", _echo(str(raw)), sheet, where)
     if not math.isfinite(value):
-        raise error(f"{what!r} must be a finite number", raw, sheet, where)
+        raise error(f"{what!r} must be a finite number", _echo(raw), sheet, where)
     return value
+
+
+def check_quantity(number, raw, kind, factor, unit, bounds, spec_unit, what, error, sheet,
+                   where):
+    """SI value of ``number`` (as written in ``unit``, SI factor ``factor``), checked against
+    the magnitude limit of ``kind`` and ``bounds``; whole numbers for the integer kind.
+
+    Raises
+    ------
+    InputError
+        At ``where``, with the value as written and its unit, and the rule in that unit.
+    """
+    value = number * factor
+    shown = unit or None
+    echo = _number_echo(raw)
+    if kind == INTEGER and not float(number).is_integer():
+        raise error(f"{what} must be a whole number", echo, sheet, where)
+    limit = MAX_MAGNITUDE.get(kind)
+    if limit is not None and not abs(value) <= limit:
+        raise error(f"{what} must not exceed {limit / factor:.6g}{' ' + unit if unit else ''} "
+                    f"in magnitude (limit of every {kind} in slingloads)", echo, sheet, where,
+                    shown)
+    if bounds is not None:
+        b_unit = bounds.unit if bounds.unit is not None else spec_unit
+        b_factor = 1.0 if kind == INTEGER else si_factor(b_unit or "", kind)
+        if not bounds.contains(value / b_factor):
+            rule = bounds.rule(value / b_factor, scale=factor / b_factor, unit=unit)
+            raise error(f"{what} {rule}", echo, sheet, where, shown)
+    return int(number) if kind == INTEGER else value
+
+
+def _number_echo(raw):
+    """A numeric cell's value for a message: numbers as floats (``0.0``, ``-12.5``), text as
+    written."""
+    if isinstance(raw, (int, float)) and not isinstance(raw, bool):
+        try:
+            return float(raw)
+        except OverflowError:
+            return raw
+    return _echo(raw)
 
 
 def parse_flag(raw, what, error, sheet, where, default):
@@ -327,9 +992,12 @@ def parse_flag(raw, what, error, sheet, where, default):
         raw = default
     if isinstance(raw, bool):
         return raw
-    text = str(raw).strip().lower()
+    if isinstance(raw, CellError):
+        raise error(f"{what!r}: the cell holds the spreadsheet error {str(raw)!r}", str(raw),
+                    sheet, where)
+    text = _as_text(raw).strip().lower()
     if text in _TRUE:
         return True
     if text in _FALSE and text != "":
         return False
-    raise error(f"{what!r} must be yes or no", raw, sheet, where)
+    raise error(f"{what!r} must be yes or no", _echo(raw), sheet, where)

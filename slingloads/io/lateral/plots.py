@@ -1,5 +1,6 @@
-"""Plots of the lateral-step pendulum: time histories of one run, and the largest load angle
-against the carrier's acceleration for each rope length.
+"""Plots of the lateral-step pendulum: time histories of one run, the largest load angle
+against the carrier's acceleration for each rope length, and its sensitivity to the
+uncertain inputs.
 
 Every function builds and returns a :class:`matplotlib.figure.Figure` through the object API
 (no pyplot, no global state). Angles are drawn in degrees beside the CS-29.865 30 deg line.
@@ -81,19 +82,19 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
 
 
 #: Line styles of the motion types on the max-angle plot.
-_MOTION_STYLES = {"smooth_step": ("-", "o"), "constant_acceleration": ("--", "s"),
-                  "time_history": (":", "^")}
+_MOTION_STYLES = {"quintic_step": ("-", "o"), "cycloidal_step": ("-", "D"),
+                  "constant_acceleration": ("--", "s"), "time_history": (":", "^")}
 
 
 def plot_max_angle_vs_acceleration(study, title=None):
     """Largest load angle against the carrier's peak acceleration, one line per rope length
     and motion type.
 
-    Each point is the largest max |theta1 - theta2| over the bodies and durations of one
-    motion type at that rope length and acceleration; different motion types are never
-    joined by a line (colour: rope length; line style and marker: motion type). Velocity
-    steps (no finite acceleration) are left out. The 30 deg line and the recommended design
-    angle are drawn beside.
+    Each point is the largest max |theta1 - theta2| over the bodies, durations and the stated
+    ranges of roll inertia, CG and rope length of one motion type at that nominal rope length
+    and acceleration; different motion types are never joined by a line (colour: rope length;
+    line style and marker: motion type). Velocity steps (no finite acceleration) are left
+    out. The 30 deg line and the recommended design angle are drawn beside.
 
     Parameters
     ----------
@@ -108,12 +109,13 @@ def plot_max_angle_vs_acceleration(study, title=None):
                       top=0.4)
     ax = fig.subplots()
     runs = study.to_frame()
-    runs = runs[np.isfinite(runs["peak S'' [g]"])]
-    envelope = (runs.groupby(["rope length [m]", "motion", "peak S'' [g]"], as_index=False)
+    runs = runs[np.isfinite(runs["peak S'' [m/s^2]"])]
+    rope = "nominal rope length [m]"
+    envelope = (runs.groupby([rope, "motion", "peak S'' [g]"], as_index=False)
                 ["max |theta1 - theta2| [deg]"].max())
-    lengths = sorted(envelope["rope length [m]"].unique())
+    lengths = sorted(envelope[rope].unique())
     colours = {length: f"C{k % 10}" for k, length in enumerate(lengths)}
-    for (length, motion), rows in envelope.groupby(["rope length [m]", "motion"]):
+    for (length, motion), rows in envelope.groupby([rope, "motion"]):
         rows = rows.sort_values("peak S'' [g]")
         style, marker = _MOTION_STYLES.get(motion, ("-.", "v"))
         ax.plot(rows["peak S'' [g]"], rows["max |theta1 - theta2| [deg]"], ls=style,
@@ -183,4 +185,58 @@ def plot_shear_at_angles(comparison, component="Vy", units="SI", title=None):
     ax.legend(loc="upper right", fontsize="small")
     ax.set_title(title or f"Envelope of the hook cases, {component}, LIMIT loads",
                  fontsize="medium")
+    return fig
+
+
+def plot_sensitivity(study, title=None):
+    """Largest load angle and cable tension factor against the factor on each uncertain
+    parameter (roll inertia, CG below hub, rope length).
+
+    Solid lines: the other two parameters nominal (one at a time); dashed: over their whole
+    ranges (the envelope). The 30 deg line, the recommended angle and the hook load factor
+    Nz (when given) are drawn beside.
+
+    Parameters
+    ----------
+    study : slingloads.analyses.lateral.LateralStudy
+    title : str, optional
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two axes: load angle [deg] and T/(m g) [-] against the factor [-].
+    """
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 5.4)), left=0.7, right=0.15, bottom=1.75,
+                      top=0.65, wspace=0.3)
+    ax_angle, ax_tension = fig.subplots(1, 2, sharex=True)
+    frame = study.sensitivity_frame()
+    for (name, rows), color in zip(frame.groupby("parameter", sort=False),
+                                   ("tab:blue", "tab:orange", "tab:purple"), strict=False):
+        f = rows["factor [-]"]
+        ax_angle.plot(f, rows["max load angle, others nominal [deg]"], marker="o",
+                      color=color, label=f"{name} (others nominal)")
+        ax_angle.plot(f, rows["max load angle, others over their ranges [deg]"], marker=".",
+                      color=color, linestyle="--", label=f"{name} (others over ranges)")
+        ax_tension.plot(f, rows["max T/(m g), others nominal [-]"], marker="o", color=color)
+        ax_tension.plot(f, rows["max T/(m g), others over their ranges [-]"], marker=".",
+                        color=color, linestyle="--")
+    reg = np.degrees(study.regulatory_angle)
+    ax_angle.axhline(reg, label=f"CS-29.865 {reg:.0f} deg", **_REG_STYLE)
+    ax_angle.axhline(np.degrees(study.recommended_angle), color="tab:green", linestyle="-.",
+                     label=f"recommended {np.degrees(study.recommended_angle):.1f} deg")
+    if study.hook_load_factor is not None:
+        ax_tension.axhline(study.hook_load_factor, label=f"Nz {study.hook_load_factor:g}",
+                           **_REG_STYLE)
+        ax_tension.legend(loc="best", fontsize=7)
+    ax_angle.set_ylabel("max |theta1 - theta2| [deg]")
+    ax_tension.set_ylabel("max T/(m g) [-]")
+    for ax in (ax_angle, ax_tension):
+        ax.set_xlabel("factor on the nominal value [-]", fontsize=9)
+        ax.grid(True, alpha=0.3)
+    ax_angle.set_ylim(bottom=0.0)
+    handles, labels = ax_angle.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=7)
+    title = title or ("Sensitivity of the largest load angle and cable tension to roll "
+                      "inertia, CG below hub and rope length")
+    fig.suptitle("\n".join(textwrap.wrap(title, 90)), fontsize=10)
     return fig

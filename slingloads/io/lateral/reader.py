@@ -14,25 +14,56 @@ asked for). Every value is SI after reading; every bad value raises
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
-import pandas as pd
+from openpyxl.utils import get_column_letter
 
-from slingloads.analyses.lateral import SolverSettings, airframe_body
-from slingloads.io.common.units import si_factor
+from slingloads.analyses.lateral import ParameterRanges, airframe_body
+from slingloads.analyses.lateral_damping import (
+    DAMPING_SOURCES,
+    LateralDamping,
+    aerodynamic_damping,
+)
+from slingloads.errors import InputError
+from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
+from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
+from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
-from slingloads.io.lateral.schema import CABLE_MODELS, MOTION_TYPES, SHEETS, SOLVER_METHODS, THEN
+from slingloads.io.lateral.schema import (
+    CABLE_MODELS,
+    MOTION_ALIASES,
+    MOTION_TYPES,
+    SHEETS,
+    SOLVER_METHODS,
+    THEN,
+)
 from slingloads.io.loads import reader as loads_reader
+from slingloads.limits import (
+    MAX_HISTORY_OUTPUT,
+    MAX_HISTORY_SAMPLES,
+    MAX_LATERAL_MOTION_STEPS,
+    MAX_LATERAL_RUN_STEPS,
+    MAX_LATERAL_RUNS,
+    MAX_LATERAL_STEPS,
+    MIN_SAMPLE_INTERVAL,
+)
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
-    SmoothStep,
+    CycloidalStep,
+    QuinticStep,
     TimeHistory,
     VelocityStep,
 )
+from slingloads.models.flight import FlightCondition
+from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 
 ANALYSIS = "lateral"
+AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
+#: Longest time history (LateralHistory id or CSV file). [s]
+MAX_MAGNITUDE_TIME_HISTORY = 3600.0
+#: The displacement steps of the LateralMotions sheet, by type.
+STEP_LAWS = {"quintic step": QuinticStep, "cycloidal step": CycloidalStep}
 _SPEC = {s.name: s for s in SHEETS}
 
 
@@ -55,16 +86,13 @@ class LateralInputs:
         Design-angle margin, >= 1. [-]
     cable_ea : float or None
         None: rigid rope. [N]
-    lateral_damping : float
-        [N s/m]
-    roll_damping : float
-        [N m s/rad]
-    t_end : float or None
-        Run length; None: automatic. [s]
-    step : float or None
-        RK4 step; None: automatic. [s]
+    damping : LateralDamping
+        From the parameters or derived from the aerodynamic tables.
+    ranges : ParameterRanges
+        Uncertainty of roll inertia, CG below hub and rope length.
     solver : SolverSettings
-        Settings of the critical case's time-history re-run.
+        Run length ``t_end`` and RK4 ``step`` of the sweep (None: automatic), and the
+        solve_ivp settings of the critical case's time-history re-run.
     loads : LoadsStudy or None
         The loads study of the workbook (for the hook cases at the recommended angle).
     """
@@ -76,27 +104,10 @@ class LateralInputs:
     motion_ids: tuple
     margin: float
     cable_ea: float | None
-    lateral_damping: float
-    roll_damping: float
-    t_end: float | None
-    step: float | None
+    damping: LateralDamping
+    ranges: ParameterRanges
     solver: SolverSettings
     loads: object
-
-
-def _shown(table, column, i):
-    """The value of a numeric cell in the unit of its header (for error messages)."""
-    value = float(table[column][i])
-    unit = table.units.get(column, "")
-    kind = next(c.kind for c in _all_columns() if c.name == column)
-    try:
-        return value / si_factor(unit, kind)
-    except Exception:  # the unit was checked on reading; this is only for display
-        return value
-
-
-def _all_columns():
-    return [c for s in SHEETS for c in s.columns]
 
 
 def read(reader, params, study):
@@ -120,9 +131,6 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule.
     """
     margin = params("lateral design-angle margin")
-    params.check("lateral design-angle margin", np.isfinite(margin) and margin >= 1,
-           "'lateral design-angle margin' must be >= 1 (recommended angle = margin x the "
-           "largest load angle found)")
     model = params.choice("lateral cable model", CABLE_MODELS)
     ea = params("lateral cable EA")
     if model == "elastic":
@@ -132,8 +140,8 @@ def read(reader, params, study):
                "'lateral cable EA' is used only with 'lateral cable model' = elastic; leave "
                "it 0 with the rigid rope")
         cable_ea = None
-    damping = params.positive("lateral damping", allow_zero=True)
-    roll_damping = params.positive("lateral roll damping", allow_zero=True)
+    damping = _damping(reader, params, study)
+    ranges = _ranges(params)
     t_end = params.positive("lateral simulation time", allow_zero=True)
     step = params.positive("lateral RK4 step", allow_zero=True)
     if t_end > 0 and step > 0:
@@ -142,21 +150,61 @@ def read(reader, params, study):
     method = params.choice("lateral history method", SOLVER_METHODS)
     rtol = params.positive("lateral history rtol")
     output = params.positive("lateral history output step")
-    solver = SolverSettings(method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2),
-                            output_step=output)
+    solver = SolverSettings(t_end=t_end if t_end > 0 else None,
+                            step=step if step > 0 else None, output_interval=output,
+                            method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2))
     ropes = _ropes(reader)
     bodies, source = _bodies(reader, study)
     histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
     motions, ids = _motions(reader, histories)
+    _check_work(reader, params, len(motions), len(ropes), len(bodies), t_end, step, output)
     loads = study.loads
     if loads is None:
         with located(reader.file):
             loads = loads_reader.read(reader, params, study)
     return LateralInputs(
         bodies=bodies, body_source=source, rope_lengths=ropes, motions=motions,
-        motion_ids=ids, margin=float(margin), cable_ea=cable_ea, lateral_damping=damping,
-        roll_damping=roll_damping, t_end=t_end if t_end > 0 else None,
-        step=step if step > 0 else None, solver=solver, loads=loads)
+        motion_ids=ids, margin=float(margin), cable_ea=cable_ea, damping=damping,
+        ranges=ranges, solver=solver, loads=loads)
+
+
+def _damping(reader, params, study):
+    """The damping of the 'lateral damping ...' rows, or derived from the aerodynamic
+    tables at 'lateral airspeed EAS' (zero in hover)."""
+    source = params.choice("lateral damping source", DAMPING_SOURCES)
+    lateral = params.positive("lateral damping", allow_zero=True)
+    roll = params.positive("lateral roll damping", allow_zero=True)
+    speed = params.positive("lateral airspeed EAS", allow_zero=True)
+    if source == "parameters":
+        return LateralDamping(lateral, roll)
+    for name, value in (("lateral damping", lateral), ("lateral roll damping", roll)):
+        params.check(name, value == 0, f"{name!r} is used only with 'lateral damping source' "
+                     "= parameters; leave it 0 with 'aerodynamic tables'")
+    with located(reader.file, STUDY_SHEET, params.where("lateral density altitude")):
+        condition = FlightCondition(speed, params("lateral density altitude"))
+    fuselage = read_fuselage_aero(reader, params, study.points)
+    fin = read_fin_aero(reader, params, study.points)
+    if fuselage is None and fin is None:
+        raise params.error("lateral damping source", "'aerodynamic tables' needs a "
+                           "FuselageAero or a FinAero sheet", "aerodynamic tables")
+    hardpoints = study.airframe.hardpoints
+    with located(reader.file, "FuselageAero" if fuselage is not None else "FinAero"):
+        return aerodynamic_damping(condition, hardpoints.hub, hardpoints.mast_axis,
+                                   fuselage, fin)
+
+
+def _ranges(params):
+    """The stated uncertainty of roll inertia, CG below hub and rope length."""
+    spreads = []
+    for name in ("lateral roll inertia spread", "lateral CG below hub spread",
+                 "lateral rope length spread"):
+        value = params.positive(name, allow_zero=True)
+        params.check(name, value < 1, f"{name!r} must lie in [0, 1) (factors 1 -+ spread)")
+        spreads.append(value)
+    points = params("lateral spread points")
+    params.check("lateral spread points", float(points) == int(points) and points >= 1,
+                 "'lateral spread points' must be a whole number >= 1")
+    return ParameterRanges.spread(*spreads, points=int(points))
 
 
 def _require(reader, name):
@@ -166,39 +214,63 @@ def _require(reader, name):
     return reader.table(_SPEC[name])
 
 
+def _check_work(reader, params, motions, ropes, bodies, t_end, step, output):
+    """The sweep asked for stays within the limits (before anything is computed); what the
+    automatic run length and step give is checked by the analysis itself."""
+    runs = motions * ropes * bodies
+    if runs > MAX_LATERAL_RUNS:
+        raise reader.error(f"too much work: {motions} motions x {ropes} ropes x {bodies} "
+                           f"bodies give {runs:,} runs, more than the {MAX_LATERAL_RUNS:,} "
+                           "allowed (limits of slingloads)", runs, "LateralMotions", "A1")
+    if t_end > 0 and step > 0:
+        steps = t_end / step
+        for count, limit, what in ((steps, MAX_LATERAL_STEPS, "RK4 steps per run"),
+                                   (steps * runs, MAX_LATERAL_RUN_STEPS, "run-steps (runs x "
+                                                                         "steps)"),
+                                   (steps * motions, MAX_LATERAL_MOTION_STEPS, "motion-steps "
+                                    "(motions x steps)")):
+            params.check("lateral RK4 step", count <= limit,
+                         f"too much work: 'lateral simulation time' / 'lateral RK4 step' "
+                         f"gives {count:,.0f} {what}, more than the {limit:,} allowed "
+                         "(limits of slingloads); lengthen the step or shorten the run")
+    if t_end > 0:
+        params.check("lateral history output step", t_end / output <= MAX_HISTORY_OUTPUT,
+                     f"too many samples: 'lateral simulation time' / 'lateral history output "
+                     f"step' gives {t_end / output:,.0f} samples, more than the "
+                     f"{MAX_HISTORY_OUTPUT:,} allowed (limits of slingloads)")
+
+
 def _ropes(reader):
     t = _require(reader, "LateralRopes")
-    lengths = t["rope length"]
-    for i, length in enumerate(lengths):
-        if not length > 0:
-            raise reader.error("rope length must be > 0", _shown(t, "rope length", i), t.sheet,
-                               t.cell("rope length", i))
-    return tuple(float(x) for x in lengths)
+    return tuple(float(x) for x in t["rope length"])
 
 
 def _bodies(reader, study):
     if not reader.has_sheet("LateralBodies"):
-        return (_airframe_body(reader, study.airframe),), "MassItems"
+        return (_airframe_body(reader, study),), "MassItems"
     t = reader.table(_SPEC["LateralBodies"])
     check_unique(reader, t, "id")
     bodies = []
     for i, name in enumerate(t["id"]):
-        for column, rule in (("mass", "mass must be > 0"),
-                             ("roll inertia", "roll inertia must be > 0"),
-                             ("CG below hub", "CG distance below the hub must be >= 0")):
-            value = t[column][i]
-            bad = value < 0 if column == "CG below hub" else not value > 0
-            if bad:
-                raise reader.error(rule, _shown(t, column, i), t.sheet, t.cell(column, i))
         with located(reader.file, t.sheet, t.cell("mass", i)):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))
     return tuple(bodies), "LateralBodies"
 
 
-def _airframe_body(reader, airframe):
-    with located(reader.file, "MassItems"):
-        return airframe_body(airframe)
+def _airframe_body(reader, study):
+    """The body built from the MassItems; its errors located at the cells to change: the
+    hub's z (a CG above the hub), or the MassItems inertias (no roll inertia)."""
+    try:
+        return airframe_body(study.airframe)
+    except InputError as err:
+        if "inertia" in err.rule:
+            items = reader.table(AIRFRAME_SHEETS["MassItems"])
+            cell = (items.cells["Ixx"][0] if items.has("Ixx")
+                    else f"{get_column_letter(len(items.cells) + 1)}1")
+            raise err.located(file=reader.file, sheet="MassItems", cell=cell) from None
+        hardpoints = reader.table(AIRFRAME_SHEETS["Hardpoints"])
+        raise hardpoints.error("z", study.points["rows"]["hub"][0], err.rule) from None
 
 
 def _histories(reader):
@@ -214,10 +286,13 @@ def _histories(reader):
                                t.cell("history id", idx[0]))
         for k in range(1, len(idx)):
             if not time[k] > time[k - 1]:
-                raise reader.error(
-                    f"time-history times must be strictly increasing within history {hid!r} "
-                    f"(previous sample at {t.cell('t', idx[k - 1])})", _shown(t, "t", idx[k]),
-                    t.sheet, t.cell("t", idx[k]))
+                raise t.error("t", idx[k], f"time-history times must be strictly increasing "
+                              f"within history {hid!r} (previous sample at "
+                              f"{t.cell('t', idx[k - 1])})")
+            if time[k] - time[k - 1] < MIN_SAMPLE_INTERVAL:
+                raise t.error("t", idx[k], f"time-history samples must be at least "
+                              f"{MIN_SAMPLE_INTERVAL:g} s apart (previous sample at "
+                              f"{t.cell('t', idx[k - 1])})")
         with located(reader.file, t.sheet, t.cell("t", idx[0])):
             out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
     return out
@@ -225,50 +300,34 @@ def _histories(reader):
 
 def _csv_history(reader, text, t, i):
     where = (t.sheet, t.cell("history", i))
-    path = Path(text)
-    if not path.is_absolute():
-        path = Path(reader.file).resolve().parent / path
-    if not path.is_file():
-        raise reader.error("time-history CSV file not found (path relative to the workbook)",
-                           text, *where)
-    try:
-        frame = pd.read_csv(path)
-    except (OSError, ValueError, pd.errors.ParserError) as err:
-        raise reader.error(f"cannot read the time-history CSV file ({err})", text,
-                           *where) from None
-    cols = {}
-    for header in frame.columns:
-        name, _, unit = str(header).partition("[")
-        cols[name.strip().lower()] = (header, unit.rstrip("] ").strip())
-    if "t" not in cols or "s" not in cols:
-        raise reader.error("the time-history CSV file needs the columns 't [s]' and 'S [m]'",
-                           list(map(str, frame.columns)), *where)
-    values = []
-    for key, kind in (("t", "time"), ("s", "length")):
-        header, unit = cols[key]
-        if not unit:
-            raise reader.error(f"CSV column {header!r} needs a unit in brackets", text, *where)
-        with located(reader.file, *where):
-            factor = si_factor(unit, kind)
-        data = pd.to_numeric(frame[header], errors="coerce").to_numpy(float)
-        if not np.all(np.isfinite(data)):
-            bad = int(np.argmax(~np.isfinite(data)))
-            raise reader.error(f"CSV {path.name}: column {header!r}, data row {bad + 1} is not "
-                               "a finite number", str(frame[header].iloc[bad]), *where)
-        values.append(data * factor)
-    time, s = values
+    columns = reader.csv_columns(text, *where, {"t": "time", "S": "length"},
+                                 max_rows=MAX_HISTORY_SAMPLES)
+    time, s = columns["t"], columns["S"]
+    name = text.replace("\\", "/").rsplit("/", 1)[-1]
+    if time.size < 2:
+        raise reader.error(f"CSV {name}: a time history needs at least two samples", text,
+                           *where)
     steps = np.diff(time)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0)) + 1
-        raise reader.error(f"CSV {path.name}: times must be strictly increasing (data row "
+        raise reader.error(f"CSV {name}: times must be strictly increasing (data row "
                            f"{k + 1} does not come after row {k})", float(time[k]), *where)
+    if np.any(steps < MIN_SAMPLE_INTERVAL):
+        k = int(np.argmax(steps < MIN_SAMPLE_INTERVAL)) + 1
+        raise reader.error(f"CSV {name}: samples must be at least {MIN_SAMPLE_INTERVAL:g} s "
+                           f"apart (data rows {k} and {k + 1})", float(time[k]), *where)
+    if time[-1] - time[0] > MAX_MAGNITUDE_TIME_HISTORY:
+        raise reader.error(f"CSV {name}: a time history may last at most "
+                           f"{MAX_MAGNITUDE_TIME_HISTORY:g} s", float(time[-1] - time[0]),
+                           *where)
     with located(reader.file, *where):
-        return TimeHistory(time, s, name=f"CSV {path.name}")
+        return TimeHistory(time, s, name=f"CSV {name}")
 
 
 def _motion_type(reader, t, i):
     text = str(t["type"][i]).strip().lower().replace("_", " ").replace("-", " ")
     text = " ".join(text.split())
+    text = MOTION_ALIASES.get(text, text)
     if text not in MOTION_TYPES:
         raise reader.error(f"unknown motion type; valid types are {list(MOTION_TYPES)}",
                            t["type"][i], t.sheet, t.cell("type", i))
@@ -289,9 +348,8 @@ def _motions(reader, histories):
             raise reader.error(f"a {kind} needs the column {column!r} filled", None,
                                t.sheet, cell)
         if not rule(value):
-            raise reader.error(f"{column!r} of a {kind} must be "
-                               f"{'> 0' if column == 'duration' else 'finite and not 0'}",
-                               _shown(t, column, i), t.sheet, t.cell(column, i))
+            raise t.error(column, i, f"{column!r} of a {kind} must be "
+                          f"{'> 0' if column == 'duration' else 'finite and not 0'}")
         return value
 
     def unused(columns, i, kind):
@@ -312,21 +370,22 @@ def _motions(reader, histories):
     for i in range(len(t)):
         kind = _motion_type(reader, t, i)
         where = (reader.file, t.sheet, t.cell("type", i))
-        if kind == "smooth step":
+        if kind in STEP_LAWS:
             unused(("then", "delta V", "history"), i, kind)
             duration = need("duration", i, kind, positive)
             has_acc = not np.isnan(number("acceleration", i))
             has_amp = not np.isnan(number("amplitude", i))
             if has_acc == has_amp:
-                raise reader.error("a smooth step needs either 'acceleration' (peak) or "
+                raise reader.error(f"a {kind} needs either 'acceleration' (peak) or "
                                    "'amplitude', not both nor neither", None, t.sheet,
                                    t.cell("type", i))
+            law = STEP_LAWS[kind]
             with located(*where):
                 if has_acc:
-                    motion = SmoothStep.from_peak_acceleration(
+                    motion = law.from_peak_acceleration(
                         need("acceleration", i, kind, nonzero), duration)
                 else:
-                    motion = SmoothStep(need("amplitude", i, kind, nonzero), duration)
+                    motion = law(need("amplitude", i, kind, nonzero), duration)
         elif kind == "constant acceleration":
             unused(("amplitude", "delta V", "history"), i, kind)
             rate = need("acceleration", i, kind, nonzero)

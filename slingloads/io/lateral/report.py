@@ -9,17 +9,21 @@ recommended angle and at the 30 deg of CS-29.865
 :func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-lateral.xlsx``, print-ready: sheets *Cover* (identification, input file and its
-  SHA-256, version, sheets, conventions), *Summary* (largest load angle and the case that
-  produced it, margin, recommended angle beside the 30 deg of CS-29.865, solve_ivp check of
-  the critical case, hook-load envelopes at both angles per component), *Runs* (every case:
-  its definition, then its results), *Modes*, *Histories* (critical case, sampled for
-  print), *LoadsAtAngle* (per station, LIMIT loads) and *Plots*;
+  SHA-256, version, sheets, conventions), *Summary* (largest load angle with nominal inputs
+  and over the stated ranges, the case that produced it, margin, recommended angle beside the
+  30 deg of CS-29.865 and whether that rule is conservative for the motions swept, cable
+  tension factor against the hook load factor Nz, solve_ivp check of the critical case,
+  hook-load envelopes at both angles per component), *Runs* (every case: its definition,
+  then its results), *Sensitivity* (ranges, load angle and tension against each uncertain
+  input, tension per motion against Nz, damping), *Modes*, *Histories* (critical case,
+  sampled for print), *LoadsAtAngle* (per station, LIMIT loads) and *Plots*;
 * ``<stem>-lateral-histories.csv``: the critical case's time histories at every sample (SI,
   ``name_unit`` headers);
 * ``<stem>-lateral-histories.png`` (critical case, with the 30 deg line),
   ``-lateral-max-angle.png`` (largest load angle against carrier acceleration, one line per
-  rope length and motion type) and ``-lateral-shear.png`` (Y-shear envelope at 30 deg and at
-  the recommended angle).
+  rope length and motion type), ``-lateral-sensitivity.png`` (load angle and tension against
+  each uncertain input) and ``-lateral-shear.png`` (Y-shear envelope at 30 deg and at the
+  recommended angle, when the recommended angle is below 90 deg).
 
 Lengths, forces, moments, masses, speeds and accelerations are in the report unit system
 (``--units``); angles in degrees; rope lengths are also given in ft.
@@ -45,6 +49,7 @@ from slingloads.constants import FOOT
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
 from slingloads.io.common.cover import report_info
+from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import drawings, png_bytes, start_drawing
 from slingloads.io.common.report import (
@@ -54,18 +59,23 @@ from slingloads.io.common.report import (
     in_report_units,
     report_unit,
     sample_rows,
+    warning_sections,
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
 from slingloads.io.lateral.plots import (
     plot_max_angle_vs_acceleration,
+    plot_sensitivity,
     plot_shear_at_angles,
     plot_time_histories,
 )
 
 ANALYSIS = "lateral"
 #: PNG files written, by tag: ``<stem>-lateral-<tag>.png``.
-PLOTS = ("histories", "max-angle", "shear")
+PLOTS = ("histories", "max-angle", "sensitivity", "shear")
+#: Names of the files of a lateral report, for the publisher (a new report replaces them all).
+OUTPUTS = ("{stem}-lateral.xlsx", "{stem}-lateral-histories.csv",
+           *(f"{{stem}}-lateral-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 100
 #: Most rows of the Histories sheet (the CSV file keeps every sample).
 HISTORY_ROWS = 100
@@ -145,10 +155,9 @@ def compute(study):
     with located(study.path):
         result = lateral_study(inputs.bodies, inputs.rope_lengths, inputs.motions,
                                margin=inputs.margin, cable_ea=inputs.cable_ea,
-                               lateral_damping=inputs.lateral_damping,
-                               roll_damping=inputs.roll_damping, t_end=inputs.t_end,
-                               step=inputs.step)
-        run = result.run_case(solver=inputs.solver)
+                               damping=inputs.damping, ranges=inputs.ranges,
+                               hook_load_factor=inputs.loads.hook.nz, solver=inputs.solver)
+        run = result.run_case()
         comparison = None
         if result.recommended_angle < np.pi / 2:
             comparison = hook_angle_comparison(inputs.loads, result.recommended_angle)
@@ -156,9 +165,12 @@ def compute(study):
 
 
 def _modes(result):
+    """Natural modes of the nominal pendulums (every body x rope length)."""
     frames, seen = [], set()
-    for p in result.pendulums:
+    for p, nominal in zip(result.pendulums, result.nominal, strict=True):
         key = id(p)
+        if not nominal:
+            continue
         if key in seen:
             continue
         seen.add(key)
@@ -186,6 +198,8 @@ def _items(rows, units):
 def verdict(result):
     """One sentence on the recommended angle against the CS-29.865 30 deg."""
     rec, reg = np.degrees(result.recommended_angle), np.degrees(result.study.regulatory_angle)
+    if result.study.regulatory_angle_not_conservative:
+        return result.study.verdict()
     if result.study.exceeds_regulatory_angle:
         return (f"The recommended angle {rec:.1f} deg EXCEEDS the {reg:.0f} deg of CS-29.865: "
                 f"the motions swept can put the hook load further from the mast than the "
@@ -204,16 +218,27 @@ def summary_tables(result, units="SI"):
     i = st.critical_index
     sweep_peak = float(st.metrics.max_load_angle[i])
     ivp_peak = float(result.critical_run.metrics.max_load_angle)
+    variants = len(st.pendulums) // max(
+        len(inp.motions) * len(inp.rope_lengths) * len(inp.bodies), 1)
     angle = _items([
         ("cases run", len(st.pendulums), "-",
          f"{len(inp.motions)} motions x {len(inp.rope_lengths)} rope lengths x "
-         f"{len(inp.bodies)} bodies"),
-        ("largest load angle |theta1 - theta2|", float(np.degrees(st.max_load_angle)), "deg",
-         "angle of the cable force at the hub from the mast"),
+         f"{len(inp.bodies)} bodies x {variants} combinations of the stated ranges"),
+        ("largest load angle |theta1 - theta2|, nominal inputs",
+         float(np.degrees(st.nominal_max_load_angle)), "deg",
+         "roll inertia, CG below hub and rope lengths as given"),
+        ("largest load angle |theta1 - theta2| over the stated ranges",
+         float(np.degrees(st.max_load_angle)), "deg",
+         "angle of the cable force at the hub from the mast; the recommendation rests on it"),
         ("case producing it", int(case["case"]), "-", "see the Runs sheet"),
+        ("  roll inertia", float(case["roll inertia [kg m^2]"]), "inertia",
+         f"factor {case['roll inertia factor [-]']:.3g}"),
+        ("  CG below hub", float(case["CG below hub [m]"]), "length",
+         f"factor {case['CG below hub factor [-]']:.3g}"),
         ("  motion", result.motion_id(i), None, str(case["motion description"])),
         ("  rope length", float(case["rope length [m]"]), "length",
-         f"{case['rope length [m]'] / FOOT:.4g} ft"),
+         f"{case['rope length [m]'] / FOOT:.4g} ft, factor "
+         f"{case['rope length factor [-]']:.3g}"),
         ("  body", str(case["body"]), None, f"source: {inp.body_source}"),
         ("  time of the maximum", float(case["t at max |theta1 - theta2| [s]"]), "s", ""),
         ("  cable slack in that case", bool(case["slack [-]"]), None,
@@ -227,6 +252,23 @@ def summary_tables(result, units="SI"):
          "'not less than 30 deg' unless a smaller angle is shown not to be exceeded"),
         ("recommended angle exceeds CS-29.865", bool(st.exceeds_regulatory_angle), None,
          "see the summary above"),
+        ("CS-29.865 30 deg not conservative for this motion set",
+         bool(st.regulatory_angle_not_conservative), None,
+         "a load angle found exceeds 30 deg" if st.regulatory_angle_not_conservative
+         else ""),
+    ], units)
+    nz = st.hook_load_factor
+    over = int(np.sum(st.exceeds_hook_load_factor))
+    tension = _items([
+        ("largest cable tension factor T/(m g)", st.max_tension_ratio, "-",
+         "over every case and the stated ranges"),
+        ("largest T/(m g), nominal inputs",
+         float(np.nanmax(st.metrics.max_tension_ratio[st.nominal])), "-", ""),
+        ("hook load factor Nz of the loads", float(nz), "-", "Study 'hook load factor Nz'"),
+        ("cases with T/(m g) above Nz", over, "-",
+         (f"EXCEEDED: the motions swept load the hook above Nz x weight (largest "
+          f"{st.max_tension_ratio:.3g}); raise Nz or restrict the motions") if over else
+         "Nz covers the cable tension of every motion swept"),
     ], units)
     check = _items([
         ("largest load angle, RK4 sweep", float(np.degrees(sweep_peak)), "deg",
@@ -240,24 +282,33 @@ def summary_tables(result, units="SI"):
         ("cable model", "rigid" if inp.cable_ea is None else "elastic", None, ""),
         ("cable EA", float(inp.cable_ea) if inp.cable_ea is not None else 0.0, "force",
          "0: rigid"),
-        ("lateral damping", inp.lateral_damping, "linear damping", "0 = off"),
-        ("roll damping", inp.roll_damping, "rotational damping", "0 = off"),
-        ("run length", st.t_end, "s", "automatic" if inp.t_end is None else "input"),
-        ("RK4 step", st.step, "s", "automatic" if inp.step is None else "input"),
+        ("damping source", inp.damping.source, None, inp.damping.note),
+        ("lateral damping", inp.damping.lateral, "linear damping", "0 = off"),
+        ("roll damping", inp.damping.roll, "rotational damping", "0 = off"),
+        ("damped point below the hub",
+         float(inp.damping.below_hub) if inp.damping.below_hub is not None else "the CG",
+         "length" if inp.damping.below_hub is not None else None,
+         "where the lateral damping acts"),
+        ("run length", st.t_end, "s", "automatic" if inp.solver.t_end is None else "input"),
+        ("RK4 step", st.step, "s", "automatic" if inp.solver.step is None else "input"),
     ], units)
-    return {"angle": angle, "check": check, "settings": settings}
+    return {"angle": angle, "check": check, "settings": settings, "tension": tension}
 
 
 def runs_table(result, units="SI"):
-    """Every case of the sweep, in report units, with its LateralMotions id."""
-    frame = result.study.to_frame()
-    frame.insert(1, "motion id", [result.motion_id(i) for i in range(len(frame))])
+    """Every nominal case of the sweep (body x rope x motion) with the largest load angle and
+    tension over the stated ranges beside it, in report units, with its LateralMotions id.
+    (Every variant: ``result.study.to_frame()``.)"""
+    frame = result.study.case_frame()
+    frame.insert(1, "motion id", [result.motion_id(int(c) - 1) for c in frame["case"]])
     frame.insert(list(frame.columns).index("rope length [m]") + 1, "rope length [ft]",
                  frame["rope length [m]"] / FOOT)
     return convert_columns(frame, {
         "mass [kg]": ("mass", "mass"), "roll inertia [kg m^2]": ("roll inertia", "inertia"),
         "CG below hub [m]": ("CG below hub", "length"),
-        "rope length [m]": ("rope length", "length"), "cable EA [N]": ("cable EA", "force"),
+        "rope length [m]": ("rope length", "length"),
+        "nominal rope length [m]": ("nominal rope length", "length"),
+        "cable EA [N]": ("cable EA", "force"),
         "peak S'' [m/s^2]": ("peak S''", "acceleration"),
         "velocity jump [m/s]": ("velocity jump", "speed")}, units)
 
@@ -331,11 +382,13 @@ def _split_components(frame):
     return frame[keys + shears], frame[keys + moments]
 
 
-def _sheets(result, units):
+def _sheets(result, units, warnings=()):
     tables = summary_tables(result, units)
     comparison = result.comparison
     summary = [Section("Summary of the lateral-step pendulum study", note=verdict(result)),
-               Section("Design angle of the hook load (CS 29.865)", tables["angle"]),
+               *warning_sections(warnings),
+               Section("Design angle of the hook load (CS-29.865)", tables["angle"]),
+               Section("Cable tension against the hook load factor Nz", tables["tension"]),
                Section("Check of the critical case", tables["check"]),
                Section("Model and solver", tables["settings"])]
     if comparison is not None:
@@ -370,6 +423,15 @@ def _sheets(result, units):
                  Section("Bodies (mass cases)", bodies),
                  Section("Definition of every case (cable model: sheet Summary)", definition),
                  Section("Results of every case", results)],
+        "Sensitivity": [
+            Section("Stated ranges (factors on the nominal values)", st.ranges.to_frame()),
+            Section("Largest load angle and tension factor against each uncertain input",
+                    st.sensitivity_frame(),
+                    note="'others nominal': the two other inputs at their nominal values; "
+                         "'others over their ranges': the envelope over them."),
+            Section("Largest tension factor per carrier motion against Nz",
+                    st.tension_frame()),
+            Section("Damping", _damping_table(st.damping, units))],
         "Modes": [Section("Natural frequencies and mode shapes about the hanging equilibrium "
                           "(theta1 rope, theta2 airframe; docs/lateral-pendulum.md section 6)",
                           modes_table(result, units))],
@@ -382,10 +444,19 @@ def _sheets(result, units):
     }
 
 
+def _damping_table(damping, units):
+    """The dampers in report units."""
+    return convert_columns(damping.to_frame(), {
+        "lateral damping [N s/m]": ("lateral damping", "linear damping"),
+        "below hub [m]": ("below hub", "length"),
+        "roll damping [N m s/rad]": ("roll damping", "rotational damping")}, units)
+
+
 def _figures(result, units):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
     figs = {"histories": (plot_time_histories, (result.critical_run,), {}),
-            "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {})}
+            "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {}),
+            "sensitivity": (plot_sensitivity, (result.study,), {})}
     if result.comparison is not None:
         figs["shear"] = (plot_shear_at_angles, (result.comparison,), {"units": units})
     return figs
@@ -417,13 +488,14 @@ def write(result, out_dir, stem, units, study, figures=None):
     list of pathlib.Path
     """
     check_units(units)
-    inputs = [study.path]
+    inputs = study.input_files
     names = ([f"{stem}-lateral.xlsx", f"{stem}-lateral-histories.csv"]
              + [f"{stem}-lateral-{tag}.png" for tag in PLOTS])
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)
     titles = {"histories": "Critical case: time histories (30 deg line)",
               "max-angle": "Largest load angle against carrier acceleration",
+              "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",
               "shear": "Y shear of the hook cases (LIMIT): 30 deg against the recommended "
                        "angle"}
     with drawings(_figures(result, units), figures, _PNG_DPI) as pngs:
@@ -431,12 +503,12 @@ def write(result, out_dir, stem, units, study, figures=None):
                            conventions=CONVENTIONS,
                            files=[f"{stem}-lateral-histories.csv",
                                   *(f"{stem}-lateral-{tag}.png" for tag in pngs)])
-        sheets = _sheets(result, units)
+        sheets = _sheets(result, units, study.warnings)
         with atomic_outputs(out_dir, inputs=inputs) as out:
             write_workbook(out.path(f"{stem}-lateral.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info)
-            csv_frame(result.critical_run.to_frame()).to_csv(
-                out.path(f"{stem}-lateral-histories.csv"), index=False, lineterminator="\n")
+            write_csv(csv_frame(result.critical_run.to_frame()),
+                      out.path(f"{stem}-lateral-histories.csv"))
             for tag, png in pngs.items():
                 out.path(f"{stem}-lateral-{tag}.png").write_bytes(png_bytes(png))
     return out.written

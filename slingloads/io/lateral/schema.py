@@ -10,75 +10,132 @@ re-run the CS-29.865 hook cases at the recommended angle. Method, signs and limi
 
 from __future__ import annotations
 
-from slingloads.io.common.schema import TEXT, Column, Parameter, Section, TableSheet
+from slingloads.analyses.lateral_damping import DAMPING_SOURCES
+from slingloads.io.common.schema import (
+    INTEGER,
+    RELATIVE_TOLERANCE,
+    TEXT,
+    Bounds,
+    Column,
+    Parameter,
+    Section,
+    TableSheet,
+    above,
+    at_least,
+)
+from slingloads.limits import (
+    MAX_HISTORY_SAMPLES,
+    MAX_LATERAL_RUNS,
+    MAX_LATERAL_STEPS,
+    MAX_TABLE_ROWS,
+)
+from slingloads.models.integration import SOLVE_IVP_METHODS
 
 #: Valid values of 'lateral cable model'.
 CABLE_MODELS = ("rigid", "elastic")
 #: Valid motion types of the LateralMotions sheet (spaces or underscores).
-MOTION_TYPES = ("smooth step", "constant acceleration", "velocity step", "time history")
+MOTION_TYPES = ("quintic step", "cycloidal step", "constant acceleration", "velocity step",
+                "time history")
+#: Former motion type names still accepted, and what they now are.
+MOTION_ALIASES = {"smooth step": "quintic step"}
 #: Valid values of the LateralMotions 'then' column.
 THEN = ("hold", "stop")
 #: solve_ivp methods of the time histories of the critical case.
-SOLVER_METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+SOLVER_METHODS = SOLVE_IVP_METHODS
 
 _S = "lateral"
 
 PARAMETERS = (
     Parameter("lateral design-angle margin", "dimensionless", "", 1.5,
               "Factor on the largest load angle found: recommended design angle = margin x "
-              "max |theta1 - theta2|, >= 1.", _S),
+              "max |theta1 - theta2|, >= 1.", _S, Bounds(1, 10)),
     Parameter("lateral cable model", TEXT, "", "rigid",
               "'rigid' (inextensible rope, fast; not valid once the tension goes negative) or "
               "'elastic' (tension-only spring EA/l: slack and snatch).", _S),
     Parameter("lateral cable EA", "force", "N", 0.0,
               "Axial stiffness EA of the cable, > 0 with the 'elastic' model; leave 0 with "
-              "'rigid'.", _S),
+              "'rigid'.", _S, at_least(0)),
+    Parameter("lateral damping source", TEXT, "", "parameters",
+              f"Where the damping of the swing and roll comes from, one of "
+              f"{list(DAMPING_SOURCES)}: 'parameters' = the two rows below (0 = off, the "
+              "paper's hover assumption); 'aerodynamic tables' = derived from the FuselageAero "
+              "and FinAero side-force slopes at 'lateral airspeed EAS' (zero in hover: no "
+              "free stream; docs/lateral-pendulum.md).", _S),
     Parameter("lateral damping", "linear damping", "N*s/m", 0.0,
-              "Linear aerodynamic damping of the CG's lateral speed, >= 0 (0 = off, the "
-              "paper's assumption).", _S),
+              "With the source 'parameters': linear damping of the CG's lateral speed, >= 0 "
+              "(0 = off, the paper's assumption); leave 0 with 'aerodynamic tables'.", _S,
+              at_least(0)),
     Parameter("lateral roll damping", "rotational damping", "N*m*s/rad", 0.0,
-              "Linear aerodynamic damping of the airframe's roll rate, >= 0 (0 = off).", _S),
+              "With the source 'parameters': linear damping of the airframe's roll rate, >= 0 "
+              "(0 = off); leave 0 with 'aerodynamic tables'.", _S,
+              at_least(0)),
+    Parameter("lateral airspeed EAS", "speed", "kt", 0.0,
+              "Airspeed at which the aerodynamic damping is derived, >= 0 (0 = hover, the "
+              "paper's lateral step: no linear aerodynamic damping).", _S,
+              Bounds(0, 400, unit="kt")),
+    Parameter("lateral density altitude", "length", "ft", 0.0,
+              "ISA density altitude of the aerodynamic damping.", _S,
+              Bounds(-610, 11000, unit="m")),
+    Parameter("lateral roll inertia spread", "dimensionless", "", 0.2,
+              "Uncertainty of the roll inertia: the study runs factors 1 -+ this, in [0, 1) "
+              "(default 20 %); the recommended angle covers the whole range.", _S,
+              Bounds(0, 1, hi_open=True)),
+    Parameter("lateral CG below hub spread", "dimensionless", "", 0.2,
+              "Uncertainty of the CG distance below the hub, as the roll inertia's.", _S,
+              Bounds(0, 1, hi_open=True)),
+    Parameter("lateral rope length spread", "dimensionless", "", 0.2,
+              "Uncertainty of every rope length, as the roll inertia's.", _S,
+              Bounds(0, 1, hi_open=True)),
+    Parameter("lateral spread points", INTEGER, "", 5,
+              "Values per range, evenly spaced (nominal included), >= 1; the study runs "
+              "every combination (points^3 x bodies x ropes x motions runs).", _S,
+              Bounds(1, 21)),
     Parameter("lateral simulation time", "time", "s", 0.0,
               "Length of every run, > 0; 0 = automatic: the longest motion plus three periods "
               "of the slowest swing mode. Lengthen it (or add damping) to check that the "
-              "maximum has settled: undamped, the two swing modes beat.", _S),
+              "maximum has settled: undamped, the two swing modes beat. At most "
+              f"{MAX_LATERAL_STEPS:,} RK4 steps per run.", _S, Bounds(0, 3600)),
     Parameter("lateral RK4 step", "time", "s", 0.0,
               "Fixed step of the vectorised RK4 sweep, > 0; 0 = automatic: min(0.01 s, "
               "0.25/omega_max) (about 1e-4 on the peak angle). The report compares the "
-              "critical case with an adaptive solve_ivp re-run.", _S),
+              "critical case with an adaptive solve_ivp re-run.", _S, at_least(0)),
     Parameter("lateral history method", TEXT, "", "RK45",
               f"solve_ivp method of the critical case's time histories: {list(SOLVER_METHODS)}."
               , _S),
     Parameter("lateral history rtol", "dimensionless", "", 1e-8,
-              "Relative tolerance of the time-history re-run, > 0.", _S),
+              "Relative tolerance of the time-history re-run, > 0.", _S, RELATIVE_TOLERANCE),
     Parameter("lateral history output step", "time", "s", 0.01,
-              "Sampling interval of the time histories, > 0.", _S),
+              "Sampling interval of the time histories, > 0.", _S, above(0)),
 )
 
 SHEETS = (
     TableSheet("LateralMotions", (
         Column("id", TEXT, help="Unique name of the carrier motion, e.g. STEP-0.1g-1s."),
         Column("type", TEXT, help="Kind of motion of the hook (the carrier's cable end): "
-                                  "smooth step | constant acceleration | velocity step | "
-                                  "time history."),
+                                  "quintic step (minimum-jerk law S = A (10 tau^3 - 15 "
+                                  "tau^4 + 6 tau^5), peak acceleration 5.77 A/T^2; 'smooth "
+                                  "step' is its former name) | cycloidal step (S = A (tau - "
+                                  "sin(2 pi tau)/(2 pi)), peak 2 pi A/T^2) | constant "
+                                  "acceleration | velocity step | time history."),
         Column("acceleration", "acceleration", "m/s^2", False, None,
-               "Smooth step: peak lateral acceleration of the hook; constant acceleration: "
-               "the rate. Finite, not 0; positive to the right (+y). Typical: 0.1 to 0.5 g0. "
-               "Any acceleration unit: m/s^2, ft/s^2, or g0 (standard gravity; 'g' would be "
-               "the gram)."),
+               "Quintic or cycloidal step: peak lateral acceleration of the hook; constant "
+               "acceleration: the rate. Finite, not 0; positive to the right (+y). Typical: "
+               "0.1 to 0.5 g0. Any acceleration unit: m/s^2, ft/s^2, or g0 (standard gravity; "
+               "'g' would be the gram)."),
         Column("duration", "time", "s", False, None,
-               "Smooth step: time to complete the step; constant acceleration: time of the "
-               "acceleration phase. > 0. Typical: 0.5 to 5 s."),
+               "Quintic or cycloidal step: time T to complete the step; constant "
+               "acceleration: time of the acceleration phase. > 0. Typical: 0.5 to 5 s.",
+               Bounds(0, 3600, lo_open=True)),
         Column("amplitude", "length", "m", False, None,
-               "Smooth step only, instead of the acceleration: the step's lateral "
-               "displacement of the hook, positive to the right. Typical: 1 to 20 m."),
+               "Quintic or cycloidal step only, instead of the acceleration: the step's lateral "
+               "displacement A of the hook, positive to the right. Typical: 1 to 20 m."),
         Column("then", TEXT, required=False, default="",
                help="Constant acceleration only: 'hold' (keep the speed reached) or 'stop' "
                     "(decelerate at the same rate for the same time)."),
         Column("delta V", "speed", "m/s", False, None,
                "Velocity step only: the hook's lateral speed jump at t = 0, positive to the "
                "right, finite, not 0. Typical: 0.5 to 2 m/s."),
-        Column("history", TEXT, required=False, default="",
+        Column("history", TEXT, required=False, default="", max_chars=1000,
                help="Time history only: a 'history id' of the LateralHistory sheet, or a CSV "
                     "file (path relative to the workbook) with columns 't [s]' and 'S [m]' "
                     "(units in brackets, any of the right kind)."),
@@ -86,38 +143,53 @@ SHEETS = (
                help="Free text printed on the report."),
     ), help="Carrier (hook) lateral motions to sweep, each starting from hover at rest "
        "(docs/lateral-pendulum.md section 5). Must cover the manoeuvres of the operation being "
-       "certified."),
+       f"certified. At most {MAX_LATERAL_RUNS:,} runs (motions x ropes x bodies).",
+       max_rows=MAX_LATERAL_RUNS),
     TableSheet("LateralHistory", (
         Column("history id", TEXT, help="Name referred to by LateralMotions 'history', e.g. "
                                         "REPOSITION."),
         Column("t", "time", "s", help="Sample time from the start of the run (t = 0 at rest), "
                                       "strictly increasing within a history. Typical: every "
-                                      "0.1 to 1 s over 10 to 30 s."),
+                                      "0.1 to 1 s over 10 to 30 s.",
+               bounds=Bounds(-3600, 3600)),
         Column("S", "length", "m", help="Lateral displacement of the hook from its start, "
                                         "positive to the right (+y). Typical: 0 to 20 m."),
     ), help="Optional: measured or planned hook displacement histories, one block of rows per "
-       "history id (natural cubic spline between samples)."),
+       f"history id (natural cubic spline between samples), at most "
+       f"{MAX_TABLE_ROWS:,} samples in all (longer histories: a CSV file, up to "
+       f"{MAX_HISTORY_SAMPLES:,} samples).", max_rows=MAX_TABLE_ROWS),
     TableSheet("LateralRopes", (
         Column("rope length", "length", "ft",
                help="Unstretched cable length from the carrier's hook to the carried "
-                    "helicopter's hub, > 0. Typical: 18, 60, 100 ft (paper)."),
+                    "helicopter's hub, > 0. Typical: 18, 60, 100 ft (paper).",
+               bounds=Bounds(0, 1000, lo_open=True, unit="m")),
         Column("description", TEXT, required=False, default="",
                help="Free text printed on the report."),
-    ), help="Rope (cable) lengths to sweep."),
+    ), help="Rope (cable) lengths to sweep.", max_rows=MAX_LATERAL_RUNS),
     TableSheet("LateralBodies", (
         Column("id", TEXT, help="Unique name of the mass case, e.g. HEAVY."),
         Column("mass", "mass", "kg", help="Mass of the carried helicopter, > 0. Typical: "
-                                          "2,000 to 3,000 kg for a light twin."),
+                                          "2,000 to 3,000 kg for a light twin.",
+               bounds=above(0)),
         Column("roll inertia", "inertia", "kg m^2",
                help="Roll moment of inertia about the x axis through the CG, > 0. Typical: "
-                    "about 900 kg m^2 for a 2.9 t light twin without blades."),
+                    "1,000 to 2,000 kg m^2 for a 2.9 t light twin without blades.",
+               bounds=above(0)),
         Column("CG below hub", "length", "m",
                help="Distance from the rotor hub down the mast axis to the CG, >= 0 "
-                    "(positive: CG below the hub). Typical: about 1.1 m."),
+                    "(positive: CG below the hub). Typical: about 1.1 m.",
+               bounds=Bounds(0, 100, unit="m")),
         Column("description", TEXT, required=False, default="",
                help="Free text printed on the report."),
     ), help="Optional: mass-property cases (e.g. heaviest, lightest). Default: one body from "
-       "MassItems: total mass, Ixx about the CG, CG below the hub along the mast."),
+       "MassItems: total mass, Ixx about the CG, CG below the hub along the mast.",
+       max_rows=MAX_LATERAL_RUNS),
 )
 
 SECTION = Section("lateral", parameters=PARAMETERS, sheets=SHEETS)
+
+#: The Study parameter behind each setting the analysis may refuse while computing (to locate
+#: its error): the automatic run length and step are only known then.
+COMPUTE_FIELDS = {"step": "lateral RK4 step", "t_end": "lateral simulation time",
+                  "rtol": "lateral history rtol",
+                  "output_interval": "lateral history output step"}

@@ -13,10 +13,23 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.hook_loads import CONE_SHAPES, HookLoadOptions, horizontal_basis
-from slingloads.analyses.loads import AeroEnvelope, FlightCondition, ListedCase, LoadsStudy
+from slingloads.analyses.fe_loads import HOOK_POINTS, ModelAxes
+from slingloads.analyses.hook_loads import (
+    CONE_SHAPES,
+    NO_HOOK,
+    TOWED,
+    HookLoadOptions,
+    hook_directions,
+    horizontal_basis,
+)
+from slingloads.analyses.loads import (
+    CHUTE_LINE_DIRECTIONS,
+    NO_AERO,
+    AeroEnvelope,
+    ListedCase,
+    LoadsStudy,
+)
 from slingloads.analyses.sfbm import COMPONENTS
-from slingloads.errors import InputError
 from slingloads.io.airframe.reader import (
     PARACHUTE_PARAMETERS,
     read_fin_aero,
@@ -25,8 +38,11 @@ from slingloads.io.airframe.reader import (
 )
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
 from slingloads.io.loads.schema import SHEETS
+from slingloads.limits import MAX_CASE_POINTS, MAX_LOAD_CASES, MAX_SFBM_ROWS
 from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attitude
+from slingloads.models.flight import FlightCondition
 
 _SPEC = {s.name: s for s in SHEETS}
 
@@ -49,7 +65,8 @@ def read(reader, params, study):
     Raises
     ------
     InputError
-        With the file, sheet, cell, value and rule.
+        With the file, sheet, cell, value and rule; also when the cases asked for exceed the
+        limits of :mod:`slingloads.limits` (checked before anything is computed).
     """
     airframe, refs = study.airframe, study.points
     parachute = envelope = None
@@ -59,30 +76,29 @@ def read(reader, params, study):
     if chute_area > 0:
         if refs["chute"] is None:
             raise params.error("parachute area", "a parachute area is given but the "
-                               "Hardpoints sheet has no row of kind 'chute'", chute_area)
+                               "Hardpoints sheet has no row of kind 'chute'")
         parachute = read_parachute(reader, params, chute_area, _PARACHUTE_PARAMETERS)
     if reader.has_sheet("AeroEnvelope"):
         t = reader.table(_SPEC["AeroEnvelope"])
         check_unique(reader, t, "id")
         envelope = AeroEnvelope(tuple(t["id"]), t["alpha"], t["beta"])
         _check_envelope_in_tables(reader, t, fuselage, fin)
-    listed = ()
-    if reader.has_sheet("LoadCases"):
-        t = reader.table(_SPEC["LoadCases"])
-        check_unique(reader, t, "id")
-        listed = tuple(ListedCase(t["id"][i], t["hook"][i].upper(), t["aero"][i],
-                                  t["chute"][i], t["description"][i] if t.has("description")
-                                  else "") for i in range(len(t)))
-    previous = _previous(reader) if reader.has_sheet("PreviousEnvelope") else None
+    elif fuselage is not None or fin is not None:
+        raise reader.error("missing sheet 'AeroEnvelope': aerodynamic tables are given "
+                           "(FuselageAero or FinAero) and the loads need the envelope's angle-"
+                           "of-attack / sideslip points", sheet="AeroEnvelope")
     hook = _hook_options(reader, params)
-    with located(reader.file, STUDY_SHEET):
+    with params.located({"eas": "airspeed EAS"}, "density altitude"):
         flight = FlightCondition(params("airspeed EAS"), params("density altitude"))
     attitude = _attitude(reader, params, airframe)
-    line = str(params("parachute line direction")).strip().lower()
+    line = params.choice("parachute line direction", CHUTE_LINE_DIRECTIONS)
+    generate = params("generate case matrix")
+    listed = _listed_cases(reader, params, hook, envelope, parachute, generate)
+    _check_case_count(reader, params, hook, airframe, envelope, parachute, generate, listed)
+    previous = _previous(reader) if reader.has_sheet("PreviousEnvelope") else None
     with located(reader.file, "LoadCases" if listed else STUDY_SHEET):
         return LoadsStudy(airframe, flight, hook, envelope, fuselage, fin, parachute,
-                          chute_line=line, attitude=attitude,
-                          generate=params("generate case matrix"),
+                          chute_line=line, attitude=attitude, generate=generate,
                           listed=listed, previous_envelope=previous,
                           ultimate_factor=params("ultimate factor"),
                           name=str(params("study name")))
@@ -123,6 +139,76 @@ def _attitude(reader, params, airframe):
     return attitude
 
 
+def _listed_cases(reader, params, hook, envelope, parachute, generate):
+    """The LoadCases sheet, each case checked at its cells (hook direction, aerodynamic point,
+    parachute, id) with the rules the analysis applies."""
+    if not reader.has_sheet("LoadCases"):
+        if not generate:
+            raise params.error("generate case matrix", "no load case: 'generate case "
+                               "matrix' is no and there is no LoadCases sheet")
+        return ()
+    t = reader.table(_SPEC["LoadCases"])
+    check_unique(reader, t, "id")
+    with params.located({}, "hook azimuths"):
+        directions = list(hook_directions(hook)["hook"])
+    valid_hooks = [*directions, TOWED, NO_HOOK]
+    valid_aero = [*(envelope.ids if envelope is not None else ()), NO_AERO]
+    n_generated = _generated_count(hook, envelope, parachute) if generate else 0
+    generated = {f"LC{i + 1:04d}" for i in range(n_generated)}
+    cases = []
+    for i in range(len(t)):
+        case = ListedCase(t["id"][i], t["hook"][i], t["aero"][i], t["chute"][i],
+                          t["description"][i] if t.has("description") else "")
+        if case.id in generated:
+            raise t.error("id", i, f"load case id is also the id of a generated case "
+                          f"(LC0001 to LC{n_generated:04d}): choose another")
+        if case.hook not in valid_hooks:
+            raise t.error("hook", i, f"unknown hook direction; valid ids are {valid_hooks} "
+                          "(from 'hook azimuths' and 'hook vertical case')")
+        if case.aero not in valid_aero:
+            raise t.error("aero", i, f"unknown aerodynamic point; valid ids are {valid_aero} "
+                          "(the AeroEnvelope ids)")
+        if case.chute and parachute is None:
+            raise t.error("chute", i, "the case asks for the parachute but none is defined "
+                          "('parachute area' is 0)")
+        cases.append(case)
+    return tuple(cases)
+
+
+def _generated_count(hook, envelope, parachute):
+    """Number of generated cases: directions x aerodynamic points x parachute states, and the
+    towed cases (as :meth:`LoadsStudy.case_matrix` builds them)."""
+    directions = hook.n_azimuth + (1 if hook.include_vertical else 0)
+    points = len(envelope.ids) if envelope is not None else 1
+    states = 2 if parachute is not None else 1
+    towed = 0
+    if hook.towed:
+        towed = points * states - (1 if envelope is None and parachute is None else 0)
+    return directions * points * states + towed
+
+
+def _check_case_count(reader, params, hook, airframe, envelope, parachute, generate, listed):
+    """The load cases asked for stay within the limits (before anything is computed)."""
+    generated = _generated_count(hook, envelope, parachute) if generate else 0
+    cases = generated + len(listed)
+    stations = len(airframe.stations)
+    points = (len(airframe.mass_items.mass) + len(airframe.hardpoints.mast_feet)
+              + len(airframe.aero_points) + 3)
+    for count, limit, what in (
+            (cases, MAX_LOAD_CASES, "load cases"),
+            (cases * stations, MAX_SFBM_ROWS, "SFBM rows (load cases x cut stations)"),
+            (cases * points, MAX_CASE_POINTS, "load cases x load points (mass items, mast "
+                                              "feet, aerodynamic points)")):
+        if count > limit:
+            rule = (f"too much work: {generated:,} generated + {len(listed):,} listed load "
+                    f"cases give {count:,} {what}, more than the {limit:,} allowed (limits of "
+                    "slingloads); reduce 'hook azimuths', the AeroEnvelope points, the listed "
+                    "cases or the cut stations")
+            if generate and generated >= len(listed):
+                raise params.error("hook azimuths", rule)
+            raise reader.error(rule, count, "LoadCases", "A1")
+
+
 _PARACHUTE_PARAMETERS = {**PARACHUTE_PARAMETERS, "parachute opening factor": "opening_factor"}
 
 
@@ -142,32 +228,34 @@ def _previous(reader):
     x = t["x"]
     for i in range(1, len(x)):
         if x[i] <= x[i - 1]:
-            raise reader.error("previous envelope stations must be sorted by increasing x "
-                               "without repeats", t.written("x", i), t.sheet, t.cell("x", i))
+            raise t.error("x", i, "previous envelope stations must be sorted by increasing x "
+                          "without repeats")
     rows = []
     for name in COMPONENTS:
         lo, hi = t[f"{name} min"], t[f"{name} max"]
         for i in range(len(x)):
             if lo[i] > hi[i]:
-                raise reader.error(f"previous envelope: {name} min must not exceed {name} max "
-                                   f"({t.written(f'{name} max', i)})",
-                                   t.written(f"{name} min", i), t.sheet,
-                                   t.cell(f"{name} min", i))
+                top, unit = t.shown(f"{name} max", i)
+                top = f"{top} {unit}" if unit else top
+                raise t.error(f"{name} min", i, f"previous envelope: {name} min must not "
+                              f"exceed {name} max ({top} at {t.cell(f'{name} max', i)})")
         rows.append(pd.DataFrame({"x [m]": x, "component": name, "min": lo, "max": hi}))
     return pd.concat(rows, ignore_index=True)
 
 
 def report_options(params, study):
     """The report options of the loads, checked for every workbook: the stations and
-    component pairs of the 2-D envelopes ('hull stations', 'hull pairs'), and the texts the
-    Summary quotes ('hook angle justification', 'previous envelope source').
+    component pairs of the 2-D envelopes ('hull stations', 'hull pairs'), the texts the
+    Summary quotes ('hook angle justification', 'previous envelope source') and the Nastran
+    file ('nastran ...' rows).
 
     Returns
     -------
     dict
         ``{"hull stations": [station id, ...], "hull pairs": [(component, component), ...],
         "hook angle justification": str, "previous envelope source": str,
-        "sfbm workbook": bool}``
+        "sfbm workbook": bool, "nastran": bool, "nastran settings": {...},
+        "nastran locations": {...}}``
     """
     airframe = study.airframe
     ids = list(airframe.station_ids)
@@ -193,8 +281,47 @@ def report_options(params, study):
                                "joined by '-', e.g. 'Vy-Mz'", item.strip())
         pairs.append(tuple(parts))
     if not pairs and params("hull pairs"):
-        raise InputError("no hull pair given")
+        raise params.error("hull pairs", "no hull pair given (e.g. 'Vy-Mz, Vz-My', or leave "
+                           "the cell empty for none)")
     return {"hull stations": stations, "hull pairs": pairs,
             "hook angle justification": str(params("hook angle justification") or "").strip(),
             "previous envelope source": str(params("previous envelope source") or "").strip(),
-            "sfbm workbook": bool(params("SFBM workbook"))}
+            "sfbm workbook": bool(params("SFBM workbook")), **_nastran_options(params, study)}
+
+
+_NASTRAN_IDS = {"first_grid_id": "nastran first grid id",
+                "first_element_id": "nastran first element id",
+                "load_id_base": "nastran load id base", "first_subcase": "nastran first subcase"}
+
+
+def _nastran_options(params, study):
+    """The Study rows 'nastran ...', checked at their cells: ``nastran`` (write the file),
+    ``nastran settings`` (options of :func:`~slingloads.io.loads.nastran.prepare_nastran`)
+    and ``nastran locations`` (the cell of each option and of each listed case id, for the
+    errors found when the file is laid out)."""
+    file = params.reader.file
+    settings = {"inertia_relief": params.choice("nastran inertia relief", INERTIA_RELIEF),
+                "hook_at": params.choice("nastran hook load at", HOOK_POINTS),
+                "axes": str(params("nastran model axes") or "").strip(),
+                "offset": tuple(float(params(f"nastran offset {a}")) for a in "xyz")}
+    with located(file, STUDY_SHEET, params.where("nastran model axes")):
+        ModelAxes(settings["axes"])
+    for arg, name in _NASTRAN_IDS.items():
+        value = params(name)
+        smallest = 0 if arg == "load_id_base" else 1
+        params.check(name, smallest <= value <= MAX_ID,
+                     f"{name!r} must be a whole number from {smallest} to {MAX_ID:,}")
+        settings[arg] = int(value)
+    names = {"axes": "nastran model axes", "offset": "nastran offset x",
+             "inertia_relief": "nastran inertia relief", "hook_at": "nastran hook load at",
+             **_NASTRAN_IDS}
+    locations = {arg: {"sheet": STUDY_SHEET, "cell": params.where(name), "name": name}
+                 for arg, name in names.items()}
+    reader = params.reader
+    if study.loads is not None and reader.has_sheet("LoadCases"):
+        t = reader.table(_SPEC["LoadCases"])
+        locations.update({("case", str(t["id"][i])): {"sheet": t.sheet,
+                                                      "cell": t.cell("id", i)}
+                          for i in range(len(t))})
+    return {"nastran": bool(params("nastran bulk data")), "nastran settings": settings,
+            "nastran locations": locations}

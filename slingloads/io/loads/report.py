@@ -25,6 +25,8 @@
   fin, parachute attachment), one SFBM plot per component ``<stem>-X_shear.png``...
   ``<stem>-Z_moment.png`` (the paper's figures 19 and 20 are X and Y shear) and
   ``<stem>-hull_<A>_<B>_<station>.png``.
+* on request, ``<stem>-loads.bdf``: the load cases as a Nastran input file
+  (:mod:`slingloads.io.loads.nastran`), with a *Nastran* sheet in the workbook.
 
 :func:`convert_by_component` converts the columns whose unit depends on the row's load
 component; the conversions shared by every report are in :mod:`slingloads.io.common.report`.
@@ -32,7 +34,6 @@ component; the conversions shared by every report are in :mod:`slingloads.io.com
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
@@ -44,8 +45,9 @@ from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.atomic import atomic_outputs, check_not_input, safe_file_part
 from slingloads.io.common.cover import info_from_digest, report_info
+from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
@@ -60,8 +62,11 @@ from slingloads.io.common.report import (
     in_report_units,
     labelled,
     report_unit,
+    warning_sections,
 )
 from slingloads.io.common.units import unit_label
+from slingloads.io.common.workbook import located
+from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.plots import (
     COMPONENT_TAGS,
     COMPONENT_TITLES,
@@ -72,6 +77,13 @@ from slingloads.io.loads.plots import (
 
 #: Components drawn each on its own PNG, all six (the paper's figures 19 and 20: Vx, Vy).
 PNG_COMPONENTS = COMPONENTS
+
+#: Names of the files of a loads report (``*``: a part made from a station id), for the
+#: publisher: a new report replaces every earlier file of these names (``-sfbm_all.png``:
+#: the six-panel plot of earlier versions, replaced by one PNG per component).
+OUTPUTS = ("{stem}-loads.xlsx", "{stem}-sfbm.xlsx", "{stem}-sfbm.csv", "{stem}-envelope.csv",
+           "{stem}-stations.png", *(f"{{stem}}-{COMPONENT_TAGS[n]}.png" for n in COMPONENTS),
+           "{stem}-sfbm_all.png", "{stem}-hull_*.png", "{stem}-loads.bdf")
 
 #: Columns of the SFBM CSV file (SI, limit loads).
 SFBM_CSV_COLUMNS = ("case", "station", "x_m", "Vx_N", "Vy_N", "Vz_N", "Mx_Nm", "My_Nm",
@@ -589,8 +601,9 @@ def exceedance_findings(result, source=""):
 
 # ------------------------------------------------------------------------------- writing
 def _safe(text):
-    """A file-name-safe version of a station id."""
-    return re.sub(r"[^A-Za-z0-9._-]+", "_", str(text)).strip("_") or "station"
+    """A file-name-safe version of a station id (the Stations reader refuses ids that give
+    the same one)."""
+    return safe_file_part(text)
 
 
 def _default_hull_station(result, pair):
@@ -602,7 +615,8 @@ def _default_hull_station(result, pair):
 def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
                         input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
-                        info=None, findings=None, sfbm_workbook=False, figures=None):
+                        info=None, findings=None, sfbm_workbook=False, figures=None,
+                        nastran=None, checks=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -640,6 +654,13 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         CSV file always has them in SI).
     figures : FigureRenderer, optional
         Already drawing this report's figures (:func:`start_figures`); default: drawn now.
+    nastran : dict or True, optional
+        Also write ``<stem>-loads.bdf``, the load cases as a Nastran input file in the units
+        ``units``, with these options of :func:`~slingloads.io.loads.nastran.prepare_nastran`
+        (True: the defaults), and a *Nastran* sheet linking each subcase to its case id.
+    checks : pandas.DataFrame, optional
+        Checks against the other analyses of the run (:mod:`slingloads.io.consistency`),
+        shown on the Summary sheet with a warning when one fails.
 
     Returns
     -------
@@ -659,6 +680,11 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     tags = list(jobs)
     names = [f"{stem}-loads.xlsx", *([f"{stem}-sfbm.xlsx"] if sfbm_workbook else []),
              f"{stem}-sfbm.csv", f"{stem}-envelope.csv", *(f"{stem}-{tag}.png" for tag in tags)]
+    deck = None
+    if nastran is not None and nastran is not False:
+        deck = prepare_nastran(result, units=units, inputs_digest=inputs_digest,
+                               **({} if nastran is True else dict(nastran)))
+        names.append(f"{stem}-loads.bdf")
     for name in names:  # fail before the slow work, not after it
         check_not_input(Path(out_dir) / name, input_paths)
     if info is None:
@@ -668,7 +694,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
 
     with drawings(jobs, figures) as pngs:  # drawn while the tables are built and written
         return _publish(result, out_dir, stem, units, hull_pairs, stations, findings,
-                        input_paths, info, max_rows, sfbm_workbook, pngs, titles)
+                        input_paths, info, max_rows, sfbm_workbook, pngs, titles, deck,
+                        checks)
 
 
 def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None):
@@ -703,11 +730,13 @@ def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_sta
 
 
 def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input_paths,
-             info, max_rows, sfbm_workbook, pngs, titles):
+             info, max_rows, sfbm_workbook, pngs, titles, deck=None, checks=None):
     """Build the tables and publish every file of the loads report (the PNGs are awaited
     when the Plots sheet is written)."""
     embedded = {titles[tag]: png for tag, png in pngs.items()}
-    sheets = _workbook_sheets(result, units, hull_pairs, stations, findings or {})
+    sheets = _workbook_sheets(result, units, hull_pairs, stations, findings or {}, checks)
+    if deck is not None:
+        sheets["Nastran"] = nastran_sheet(deck)
     highlight = {"Exceedance": Highlight([c for c in sheets_columns(sheets, "Exceedance")
                                           if c.endswith("ratio [-]") or c == "worst [-]"]),
                  "ExceedanceDetail": Highlight(["exceedance ratio [-]"], 1.0)}
@@ -721,12 +750,12 @@ def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input
                            max_rows=max_rows,
                            info=replace(info, title=f"{TITLE}: SFBM of every case (data)",
                                         files=()))
-        result.to_frame().to_csv(out.path(f"{stem}-sfbm.csv"), index=False,
-                                 columns=list(SFBM_CSV_COLUMNS), lineterminator="\n")
-        envelope_csv_frame(result).to_csv(out.path(f"{stem}-envelope.csv"), index=False,
-                                          lineterminator="\n")
+        write_csv(result.to_frame(), out.path(f"{stem}-sfbm.csv"), columns=SFBM_CSV_COLUMNS)
+        write_csv(envelope_csv_frame(result), out.path(f"{stem}-envelope.csv"))
         for tag, png in pngs.items():
             out.path(f"{stem}-{tag}.png").write_bytes(png_bytes(png))
+        if deck is not None:
+            deck.write(out.path(f"{stem}-loads.bdf"))
     return out.written
 
 
@@ -754,7 +783,17 @@ def sheets_columns(sheets, name):
     return [c for s in content if s.table is not None for c in s.table.columns]
 
 
-def _workbook_sheets(result, units, hull_pairs, stations, findings):
+def nastran_sheet(deck):
+    """The *Nastran* sheet: the file's settings, the subcase -> case id table, the grids."""
+    return [Section("Nastran input file (<stem>-loads.bdf): settings", deck.settings_table()),
+            Section("Subcases: number, LOAD set and the case id each stands for",
+                    deck.subcase_table(),
+                    note="Nastran labels hold printable ASCII; a longer or non-ASCII case id "
+                         "is shortened and ends in '~' and a checksum."),
+            Section("Grids (model axes, file units) and CONM2 elements", deck.grid_table())]
+
+
+def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None):
     """The sheets of the loads workbook, in order."""
     study = result.study
     verdict, evidence = hook_angle_finding(result, findings.get("lateral"),
@@ -770,6 +809,15 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings):
              closure_line]
     summary = [
         Section("Summary of the LIMIT loads analysis: findings", note="\n".join(notes)),
+        *warning_sections(findings.get("warnings", ())),
+    ]
+    if checks is not None and len(checks):
+        failed = checks[checks["status"] != "ok"]
+        summary.append(Section(
+            "Consistency with the other analyses of this run", checks,
+            note=("WARNING: " + " ".join(failed["note"])) if len(failed) else
+                 "Every check against the other analyses of this run passes."))
+    summary += [
         Section("Study settings", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
                 note=result.attitude.describe() + ". Gravity, the vertical hook case and the "
@@ -880,7 +928,12 @@ def compute(study):
     if study.loads is None:
         raise InputError("the workbook does not ask for the loads analysis (Study sheet: "
                          "'run loads' is no)", file=study.path, sheet="Study")
-    return study.loads.run()
+    result = study.loads.run()
+    if not np.all(np.isfinite(result.loads)):
+        raise InputError("the loads are not finite numbers (an input far out of scale?): check "
+                         "the magnitudes and units of the MassItems, FuselageAero and Study "
+                         "values", file=study.path)
+    return result
 
 
 def start_figures(result, units, study):
@@ -891,19 +944,28 @@ def start_figures(result, units, study):
     return start_drawing(jobs, _PNG_DPI)
 
 
-def write(result, out_dir, stem, units, study, figures=None):
+def write(result, out_dir, stem, units, study, figures=None, checks=None):
     """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
-    run's outputs ``out_dir``, with the study's identification, hull options and findings
-    (the lateral study of the same run, when there is one, is the evidence on the hook
-    angle)."""
+    run's outputs ``out_dir``, with the study's identification, hull options, warnings and
+    findings (the lateral study of the same run, when there is one, is the evidence on the
+    hook angle), and the ``checks`` against the other analyses of the run
+    (:mod:`slingloads.io.consistency`)."""
     info = report_info(study, title=TITLE, analysis=ANALYSIS, units=units,
                        conventions=CONVENTIONS)
     findings = {"lateral": getattr(study, "results", {}).get("lateral"),
                 "hook angle justification": study.options.get("hook angle justification", ""),
-                "previous envelope source": study.options.get("previous envelope source", "")}
-    return write_loads_outputs(result, out_dir, stem, units=units,
-                               hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
-                               hull_stations=study.options.get("hull stations"),
-                               input_paths=[study.path], info=info, findings=findings,
-                               sfbm_workbook=study.options.get("sfbm workbook", False),
-                               figures=figures)
+                "previous envelope source": study.options.get("previous envelope source", ""),
+                "warnings": list(study.warnings)}
+    nastran = None
+    if study.options.get("nastran"):
+        nastran = {**study.options["nastran settings"],
+                   "locations": study.options["nastran locations"]}
+    with located(study.path):
+        return write_loads_outputs(result, out_dir, stem, units=units,
+                                   inputs_digest=study.digest(),
+                                   hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
+                                   hull_stations=study.options.get("hull stations"),
+                                   input_paths=study.input_files, info=info,
+                                   findings=findings,
+                                   sfbm_workbook=study.options.get("sfbm workbook", False),
+                                   figures=figures, nastran=nastran, checks=checks)

@@ -6,15 +6,64 @@ Method: ``docs/loads-method.md``. Types: :mod:`slingloads.io.common.schema`.
 
 from __future__ import annotations
 
-from slingloads.io.common.schema import FLAG, INTEGER, TEXT, Column, Parameter, Section, TableSheet
+from slingloads.io.airframe.schema import COORDINATE, TABLE_ANGLE
+from slingloads.io.common.schema import (
+    FLAG,
+    INTEGER,
+    TEXT,
+    Bounds,
+    Column,
+    Parameter,
+    Section,
+    TableSheet,
+    at_least,
+)
+from slingloads.limits import MAX_HOOK_AZIMUTHS, MAX_LOAD_CASES, MAX_SFBM_ROWS, MAX_STATIONS
+
+#: The Nastran input file of the load cases (docs/nastran.md), in the units of --units.
+NASTRAN_PARAMETERS = (
+    Parameter("nastran bulk data", FLAG, "", "no",
+              "Also write <input>-loads.bdf, the load cases as a Nastran input file (GRID, "
+              "CONM2, FORCE, MOMENT, GRAV, RFORCE, a SUBCASE per case; docs/nastran.md); the "
+              "option --nastran does the same. Units of --units: SI (m, N, kg, s) or US (in, "
+              "lbf, s, mass in lbf s^2/in).", "nastran"),
+    Parameter("nastran model axes", TEXT, "", "x, y, z",
+              "The finite-element model's X, Y, Z as signed project axes (x aft, y right, z "
+              "up), e.g. '-x, y, -z' for X forward, Y right, Z down; must be a rotation.",
+              "nastran"),
+    *(Parameter(f"nastran offset {axis}", "length", "m", 0.0,
+                f"Position of the project's origin (the airframe datum) in the model's axes: "
+                f"{axis.upper()}.", "nastran") for axis in "xyz"),
+    Parameter("nastran inertia relief", TEXT, "", "accelerations",
+              "'accelerations' (each subcase carries the inertia loads of the rigid-body "
+              "accelerations as GRAV and RFORCE: self-balanced, constrain the model "
+              "statically determinate) or 'inrel' (PARAM,INREL,-2: Nastran computes them "
+              "from the CONM2 masses).", "nastran"),
+    Parameter("nastran hook load at", TEXT, "", "mast feet",
+              "'mast feet' (shared among the feet as the loads analysis does) or 'hub' (one "
+              "force at the rotor hub grid).", "nastran"),
+    Parameter("nastran first grid id", INTEGER, "", 900001,
+              "Id of the first GRID (mass items, then hub, mast feet, aerodynamic points, fin, "
+              "parachute).", "nastran"),
+    Parameter("nastran first element id", INTEGER, "", 900001,
+              "Id of the first CONM2 (one per mass item).", "nastran"),
+    Parameter("nastran load id base", INTEGER, "", 100000,
+              "Load-set ids: base + 1 is gravity; subcase s uses base + 10 s (LOAD) to "
+              "base + 10 s + 4.", "nastran"),
+    Parameter("nastran first subcase", INTEGER, "", 1,
+              "Number of the first SUBCASE (one per load case, in case order).", "nastran"),
+)
 
 PARAMETERS = (
     Parameter("airspeed EAS", "speed", "kt", 100.0,
-              "Equivalent airspeed of the loads cases (paper: 100 KEAS).", "flight"),
+              "Equivalent airspeed of the loads cases (paper: 100 KEAS).", "flight",
+              at_least(0)),
     Parameter("density altitude", "length", "ft", 0.0,
-              "ISA density altitude (paper: 0, 5000, 10000 ft).", "flight"),
+              "ISA density altitude (paper: 0, 5000, 10000 ft).", "flight",
+              Bounds(-610, 11000, unit="m")),
     Parameter("hook load factor Nz", "dimensionless", "", 2.5,
-              "CS-29.865(a): limit hook load = Nz x carried aircraft weight.", "hook"),
+              "CS-29.865(a): limit hook load = Nz x carried aircraft weight.", "hook",
+              Bounds(0, 20, lo_open=True)),
     Parameter("attitude", TEXT, "", "hanging",
               "Attitude that fixes the earth vertical for gravity, the vertical hook case and "
               "the cone: 'hanging' (pitch and roll until the CG lies under the hub, from the "
@@ -29,7 +78,8 @@ PARAMETERS = (
     Parameter("hook angle from vertical", "angle", "deg", 30.0,
               "Inclination of the off-vertical hook loads from the earth vertical (CS-29.865: "
               "30 deg unless a smaller angle is shown); the lateral directions may take "
-              "'hook lateral angle'.", "hook", former=("hook angle from mast",)),
+              "'hook lateral angle'.", "hook", Bounds(0, 90, hi_open=True, unit="deg"),
+              former=("hook angle from mast",)),
     Parameter("hook lateral angle", "angle", "deg", 0.0,
               "Inclination of the lateral hook loads where a different angle is shown (e.g. "
               "the lateral study's recommended angle); 0 = the same as 'hook angle from "
@@ -43,7 +93,7 @@ PARAMETERS = (
               "report reference); quoted beside the flag on the loads Summary.", "hook"),
     Parameter("hook azimuths", INTEGER, "", 8,
               "Number of off-vertical hook directions evenly spread in azimuth about the "
-              "vertical (0 = aft, 90 deg = right).", "hook"),
+              "vertical (0 = aft, 90 deg = right).", "hook", Bounds(0, MAX_HOOK_AZIMUTHS)),
     Parameter("hook vertical case", FLAG, "", "yes",
               "Include the hook load along the earth vertical (case VERTICAL).", "hook",
               former=("hook along mast axis",)),
@@ -56,11 +106,14 @@ PARAMETERS = (
               "Generate hook direction x aero point x parachute on/off, then the towed "
               "cases (cases on the LoadCases sheet are added).", "cases"),
     Parameter("ultimate factor", "dimensionless", "", 1.5,
-              "Factor of safety, CS 29.303 (ultimate = factor x limit).", "cases"),
+              "Factor of safety, CS 29.303 (ultimate = factor x limit).", "cases",
+              Bounds(1, 10)),
     Parameter("parachute area", "area", "m^2", 0.0,
-              "Flat-plate area of the drogue parachute; 0 = no parachute.", "parachute"),
+              "Flat-plate area of the drogue parachute; 0 = no parachute.", "parachute",
+              at_least(0)),
     Parameter("parachute opening factor", "dimensionless", "", 1.0,
-              "Opening-load factor on the parachute drag (>= 1).", "parachute"),
+              "Opening-load factor on the parachute drag (>= 1).", "parachute",
+              Bounds(1, 10)),
     Parameter("parachute line direction", TEXT, "", "relative wind",
               "'relative wind' or 'fuselage axis'.", "parachute"),
     Parameter("previous envelope source", TEXT, "", "",
@@ -74,6 +127,7 @@ PARAMETERS = (
               "around the mast).", "report"),
     Parameter("hull pairs", TEXT, "", "Vy-Mz, Vz-My",
               "Comma-separated component pairs for the 2-D envelopes.", "report"),
+    *NASTRAN_PARAMETERS,
 )
 
 #: Components of the PreviousEnvelope sheet: name, kind, unit, what it is.
@@ -105,11 +159,12 @@ SHEETS = (
                                 "sheet, e.g. A+B+ (alpha up, beta right) or CENTRE."),
         Column("alpha", "angle", "deg",
                help="Angle of attack of the point, positive nose up. Typical: -10 to +10 deg "
-                    "(the multibody campaign's envelope)."),
+                    "(the multibody campaign's envelope).", bounds=TABLE_ANGLE),
         Column("beta", "angle", "deg",
                help="Sideslip of the point, positive with the wind from the right. Typical: "
-                    "-15 to +15 deg."),
-    ), help="Points of the angle-of-attack / sideslip envelope (corners and centre)."),
+                    "-15 to +15 deg.", bounds=TABLE_ANGLE),
+    ), help="Points of the angle-of-attack / sideslip envelope (corners and centre).",
+       max_rows=MAX_STATIONS),
     TableSheet("LoadCases", (
         Column("id", TEXT, help="Unique case id, printed on the reports, e.g. LC-SPECIAL-1."),
         Column("hook", TEXT,
@@ -121,15 +176,18 @@ SHEETS = (
         Column("chute", FLAG, help="Parachute drag on: yes or no."),
         Column("description", TEXT, required=False, default="",
                help="Free text printed beside the case on the LoadCases sheet of the report."),
-    ), help="Optional: cases listed by hand (added to the generated matrix)."),
+    ), help="Optional: cases listed by hand (added to the generated matrix). In all, at most "
+       f"{MAX_LOAD_CASES:,} cases, and at most {MAX_SFBM_ROWS:,} cases x cut stations.",
+       max_rows=MAX_LOAD_CASES),
     TableSheet("PreviousEnvelope", (
         Column("x", "length", "m",
                help="Station of the previous envelope, x positive aft, strictly increasing. "
                     "The report interpolates linearly between these stations (and marks the "
                     "cut stations it interpolated); outside them it does not compare. Typical: "
-                    "the cut stations of the Stations sheet."),
+                    "the cut stations of the Stations sheet.", bounds=COORDINATE),
         *_previous_columns(),
-    ), help="Optional: the previous design envelope (limit loads) for the exceedance check."),
+    ), help="Optional: the previous design envelope (limit loads) for the exceedance check.",
+       max_rows=MAX_STATIONS),
 )
 
 SECTION = Section("loads", parameters=PARAMETERS, sheets=SHEETS)

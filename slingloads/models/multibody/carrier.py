@@ -190,7 +190,7 @@ class LateralHookMotion(_Trajectory):
 
     Parameters
     ----------
-    motion : SmoothStep, ConstantAcceleration or TimeHistory
+    motion : QuinticStep, CycloidalStep, ConstantAcceleration or TimeHistory
         A motion with ``kinematics(t)`` and no velocity jump.
     """
 
@@ -202,7 +202,8 @@ class LateralHookMotion(_Trajectory):
                              type(self.motion).__name__)
         if getattr(self.motion, "velocity_jump", 0.0):
             raise InputError("a velocity step cannot drive the multibody model (the hook's "
-                             "speed would jump); use a smooth step or an acceleration",
+                             "speed would jump); use a quintic or cycloidal step or an "
+                             "acceleration",
                              self.motion.velocity_jump)
 
     @property

@@ -1,0 +1,117 @@
+"""A small valid input workbook built in memory, and helpers to break it (hostile tests).
+
+The workbook asks for all three analyses with tiny tables, so that reading it takes a few
+milliseconds and computing it about a second: the fuzzing and the kill tests start from it.
+"""
+
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+
+from openpyxl import Workbook
+
+
+def small_workbook():
+    """``{sheet: [row 1, row 2, ...]}`` of a small valid workbook (every analysis)."""
+    study = [
+        ("study name", "small hostile-input base", None),
+        ("run loads", "yes", None),
+        ("run lateral", "yes", None),
+        ("run chute sizing", "yes", None),
+        ("hook azimuths", 4, None),
+        ("parachute area", 1.0, "m^2"),
+        ("fuselage reference area", 3.0, "m^2"),
+        ("fuselage reference length", 10.0, "m"),
+        ("fin area", 1.0, "m^2"),
+        ("hull stations", "S2", None),
+        ("lateral simulation time", 4.0, "s"),
+        ("lateral RK4 step", 0.05, "s"),
+        ("lateral history output step", 0.05, "s"),
+        ("lateral history rtol", 1e-5, None),
+        ("chute sizing wake source", "model", None),
+        ("chute sizing simulation time", 20.0, "s"),
+        ("chute sizing time step", 0.1, "s"),
+        ("chute sizing output interval", 0.1, "s"),
+        ("chute sizing gust onset", 5.0, "s"),
+        ("chute sizing gust duration", 4.0, "s"),
+        ("chute sizing gust shapes", "step, finite", None),
+        ("chute sizing number of areas", 2, None),
+    ]
+    alphas, betas = (-10.0, 0.0, 10.0), (-20.0, -10.0, 0.0, 10.0, 20.0)
+    fuselage = [("alpha [deg]", "beta [deg]", "CD", "CY", "CL", "Cl", "Cm", "Cn")]
+    for a in alphas:
+        for b in betas:
+            fuselage.append((a, b, 0.5 + 0.001 * a * a, -0.01 * b, 0.02 * a, -0.001 * b,
+                             0.005 * a, -0.002 * b))
+    return copy_book({
+        "Study": [("parameter", "value", "unit", "description"), *study],
+        "MassItems": [
+            ("id", "description", "mass [kg]", "x [m]", "y [m]", "z [m]", "Izz [kg m^2]"),
+            ("nose", "forward structure", 300.0, 1.0, 0.0, 0.5, 20.0),
+            ("cabin", "", 900.0, 3.0, 0.0, 0.6, 200.0),
+            ("gearbox", "", 250.0, 3.2, 0.0, 1.6, 10.0),
+            ("tail", "boom and fin", 200.0, 8.0, 0.0, 1.0, 30.0),
+            ("left", "", 50.0, 3.0, -0.8, 0.4, 1.0),
+        ],
+        "Stations": [("id", "x [m]"), ("S1", 1.5), ("S2", 3.1), ("S3", 5.0), ("S4", 7.5)],
+        "Hardpoints": [
+            ("id", "kind", "x [m]", "y [m]", "z [m]", "weight [-]"),
+            ("hub", "hub", 3.1, 0.0, 2.2, None),
+            ("foot L", "mast_foot", 2.8, -0.3, 1.5, 1.0),
+            ("foot R", "mast_foot", 3.4, 0.3, 1.5, 1.0),
+            ("chute", "chute", 7.9, 0.0, 1.4, None),
+            ("fin", "fin_cp", 7.8, 0.0, 1.3, None),
+            ("aero", "aero_reference", 3.0, 0.0, 0.8, None),
+        ],
+        "FuselageAero": fuselage,
+        "FinAero": [("beta [deg]", "CY"), (-30.0, 0.9), (-20.0, 0.6), (-10.0, 0.3),
+                    (0.0, 0.0), (10.0, -0.3), (20.0, -0.6), (30.0, -0.9)],
+        "AeroEnvelope": [("id", "alpha [deg]", "beta [deg]"), ("C", 0.0, 0.0),
+                         ("A+B+", 5.0, 10.0)],
+        "LoadCases": [("id", "hook", "aero", "chute", "description"),
+                      ("L1", "VERTICAL", "C", "no", "hand-listed")],
+        "LateralMotions": [
+            ("id", "type", "acceleration [m/s^2]", "duration [s]", "history", "then"),
+            ("step", "smooth step", 2.0, 1.5, None, None),
+            ("measured", "time history", None, None, "H1", None),
+        ],
+        "LateralHistory": [("history id", "t [s]", "S [m]"), ("H1", 0.0, 0.0),
+                           ("H1", 1.0, 0.5), ("H1", 2.0, 1.5)],
+        "LateralRopes": [("rope length [ft]", "description"), (30.0, "short")],
+    })
+
+
+def copy_book(sheets):
+    """A deep copy of ``{sheet: rows}`` with every row a list (to be edited)."""
+    return {name: [list(r) for r in rows] for name, rows in copy.deepcopy(sheets).items()}
+
+
+def save_xlsx(sheets, path):
+    """Write ``{sheet: rows}`` as an .xlsx file (text stays text, never a formula)."""
+    book = Workbook(write_only=True)
+    for name, rows in sheets.items():
+        ws = book.create_sheet(name)
+        for row in rows:
+            ws.append([_cell(ws, v) for v in row])
+    book.save(path)
+    return Path(path)
+
+
+def _cell(ws, value):
+    from openpyxl.cell import WriteOnlyCell
+
+    cell = WriteOnlyCell(ws, value=value)
+    if isinstance(value, str):
+        cell.data_type = "s"
+    return cell
+
+
+def set_parameter(sheets, name, value, unit=None):
+    """Set (or add) a Study parameter of ``{sheet: rows}``."""
+    for row in sheets["Study"][1:]:
+        if row[0] == name:
+            row[1], row[2] = value, unit
+            return sheets
+    sheets["Study"].append([name, value, unit, None])
+    return sheets

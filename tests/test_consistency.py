@@ -1,0 +1,66 @@
+"""Checks between the analyses of one run: the parachute sizing's peak sideslip against the
+loads' aerodynamic envelope.
+
+Reference: the rule itself (a flight the sizing shows must lie inside the envelope the loads
+are taken over) applied to the numbers of both analyses, and the report that shows it.
+"""
+
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from slingloads.analyses.loads import AeroEnvelope
+from slingloads.cli import main
+from slingloads.io.chute.report import compute as compute_chute
+from slingloads.io.consistency import consistency_checks
+from slingloads.io.loads.report import compute as compute_loads
+from slingloads.io.study import read_study
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+
+
+@pytest.fixture(scope="module")
+def results():
+    study = read_study(EXAMPLE, only=["loads", "chute sizing"])
+    return {"loads": compute_loads(study), "chute sizing": compute_chute(study)}
+
+
+def test_peak_sideslip_outside_the_envelope_is_a_warning(results):
+    """The example: at its Study 'parachute area' (0.9 m^2) the finite gust drives the
+    sideslip to about 17.7 deg, outside the loads' AeroEnvelope beta of +-15 deg: WARNING,
+    the value being the largest peak |beta| of the gust runs at that area."""
+    row = consistency_checks(results)["loads"].iloc[0]
+    runs = results["chute sizing"].study_area_runs.to_frame()
+    assert row["value"] == pytest.approx(runs["peak beta [deg]"].max(), rel=1e-12)
+    assert row["value"] > 15.0 and row["limit"] == pytest.approx(15.0)
+    assert row["status"] == "WARNING" and "finite gust" in row["note"]
+
+
+def test_peak_sideslip_inside_a_wider_envelope_passes(results):
+    """The same sizing against an envelope of +-20 deg of sideslip: the check passes; and with
+    only one of the two analyses there is no check at all."""
+    loads = results["loads"]
+    wide = AeroEnvelope.corners_and_centre(np.radians([-10.0, 10.0]), np.radians([-20.0, 20.0]))
+    wider = replace(loads, study=replace(loads.study, envelope=wide))
+    row = consistency_checks({"loads": wider,
+                              "chute sizing": results["chute sizing"]})["loads"].iloc[0]
+    assert row["status"] == "ok" and row["limit"] == pytest.approx(20.0)
+    assert consistency_checks({"loads": loads}) == {}
+
+
+def test_run_report_carries_the_warning(tmp_path):
+    """`slingloads run` with the loads and the sizing: the loads Summary shows the check and
+    the warning; `slingloads loads` alone has no such section."""
+    assert main(["run", str(EXAMPLE), "--out", str(tmp_path / "run"), "--quiet"]) == 0
+    summary = pd.read_excel(tmp_path / "run" / "example-light-twin-loads.xlsx",
+                            sheet_name="Summary", header=None)
+    text = " ".join(map(str, summary[0]))
+    assert "Consistency with the other analyses of this run" in text
+    assert "WARNING: the parachute sizing's finite gust" in text
+    assert main(["loads", str(EXAMPLE), "--out", str(tmp_path / "alone"), "--quiet"]) == 0
+    alone = pd.read_excel(tmp_path / "alone" / "example-light-twin-loads.xlsx",
+                          sheet_name="Summary", header=None)
+    assert "Consistency" not in " ".join(map(str, alone[0]))

