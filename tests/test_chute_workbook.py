@@ -157,7 +157,7 @@ def test_bad_airspeed(tmp_path, capsys, speed):
     user wrote beside it (the example gives the airspeed in kt)."""
     name = "chute sizing airspeed IAS"
     _bad(tmp_path, capsys, {("Study", name): speed}, "Study", name, "must be > 0",
-         f"value '{speed} kt'")
+         f"value {float(speed)} [kt]")
 
 
 def test_zero_fin_area(tmp_path, capsys):

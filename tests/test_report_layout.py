@@ -202,4 +202,4 @@ def test_error_values_in_the_users_unit(tmp_path):
     book.save(path)
     with pytest.raises(InputError) as info:
         read_study(path)
-    assert "'10.5 in'" in str(info.value) and "cell A4" in str(info.value)
+    assert "value 10.5 [in]" in str(info.value) and "cell A4" in str(info.value)

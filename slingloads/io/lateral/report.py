@@ -424,6 +424,9 @@ def _sheets(result, units, warnings=()):
                  Section("Definition of every case (cable model: sheet Summary)", definition),
                  Section("Results of every case", results)],
         "Sensitivity": [
+            Section("Sensitivity of the largest load angle and cable tension to the uncertain "
+                    "inputs", note="Every case is run over the stated ranges of roll inertia, "
+                    "CG below the hub and rope length (Study rows 'lateral ... spread')."),
             Section("Stated ranges (factors on the nominal values)", st.ranges.to_frame()),
             Section("Largest load angle and tension factor against each uncertain input",
                     st.sensitivity_frame(),

@@ -540,10 +540,11 @@ def hook_angle_finding(result, lateral=None, justification=""):
         rec, peak = float(np.degrees(st.recommended_angle)), float(np.degrees(st.max_load_angle))
         evidence = (f"Lateral-step pendulum study of this run: largest load angle from the "
                     f"mast {peak:.1f} deg over {len(st.pendulums)} cases (carrier motions x "
-                    f"rope lengths x bodies), margin {st.margin:g}, recommended design angle "
-                    f"{rec:.1f} deg for the lateral directions; see the lateral report.")
+                    f"rope lengths x bodies x stated ranges), margin {st.margin:g}, "
+                    f"recommended design angle {rec:.1f} deg for the lateral directions; see "
+                    f"the lateral report.")
     else:
-        rec = None
+        rec = peak = None
         evidence = ("No lateral-step pendulum study in this run: nothing here shows that a "
                     "smaller angle cannot be exceeded in service (run it with 'run lateral' = "
                     "yes).")
@@ -566,6 +567,13 @@ def hook_angle_finding(result, lateral=None, justification=""):
             verdict += (f" The lateral study's recommended {rec:.1f} deg is within the lateral "
                         f"angle used, provided its motions cover the operation being "
                         f"certified.")
+    elif rec is not None and rec >= 90.0:
+        verdict = (f"FLAG: the lateral study finds load angles up to {peak:.1f} deg from the "
+                   f"mast (recommended {rec:.1f} deg with its margin), beyond the {side:.1f} deg "
+                   f"used for the lateral hook loads: the {ref:.0f} deg of CS 29.865(a) is not "
+                   f"conservative for the motions swept, and no hook cone can be built at "
+                   f"{rec:.1f} deg. Restrict the carrier motions or rope lengths, or "
+                   f"substantiate the lateral hook loads otherwise.")
     elif rec is not None and rec > side + 1e-9:
         verdict = (f"FLAG: the lateral study recommends {rec:.1f} deg, more than the {side:.1f} "
                    f"deg used for the lateral hook loads: rerun the loads at {rec:.1f} deg.")
