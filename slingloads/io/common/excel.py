@@ -860,10 +860,16 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
     for title, figure in images.items():
         image = Image(io.BytesIO(figure_png(figure)))
         w, h, rows = _image_box(image.width, image.height, page_rows, pixels - 10)
+        # a title wider than the page is cut when printed: wrapped (12 pt bold ~ 1.45 x)
+        lines = textwrap.wrap(str(title), max(20, int((pixels - 10) / (_CHAR_PIXELS * 1.45))))
+        lines = lines or [""]
+        rows += len(lines) - 1
         if used and used + rows > page_rows:
             ws.row_breaks.append(Break(id=writer.row))
             used = 0
-        writer.append([title], _TITLE_STYLE)
+        for line in lines[:-1]:
+            writer.append([line], _TITLE_STYLE)
+        writer.append([lines[-1]], _TITLE_STYLE)
         image.width, image.height = w, h
         ws.add_image(image, f"A{writer.row + 1}")
         writer.blank(rows - 1)

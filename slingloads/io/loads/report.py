@@ -820,11 +820,13 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         *warning_sections(findings.get("warnings", ())),
     ]
     if checks is not None and len(checks):
-        failed = checks[checks["status"] != "ok"]
-        summary.append(Section(
-            "Consistency with the other analyses of this run", checks,
-            note=("WARNING: " + " ".join(failed["note"])) if len(failed) else
-                 "Every check against the other analyses of this run passes."))
+        failed = checks["status"] != "ok"
+        lines = [f"WARNING: {n}" for n in checks["note"][failed]] or [
+            "Every check against the other analyses of this run passes: "
+            + " ".join(checks["note"])]
+        summary.append(Section(  # the notes above the table, which stays narrow for print
+            "Consistency with the other analyses of this run",
+            checks.drop(columns=["note"], errors="ignore"), note="\n".join(lines)))
     summary += [
         Section("Study settings", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
