@@ -101,7 +101,9 @@ def airframe():
     chute = np.array([10.75, 0.0, 2.30])
     hardpoints = Hardpoints(hub, feet, chute=chute,
                             mast_feet_ids=("MAST_FL", "MAST_FR", "MAST_AL", "MAST_AR"))
-    stations = np.round(np.linspace(0.40, 11.00, 24), 3)
+    # every 0.46 m, without the two end cuts (0.40 and 11.00 m) beyond the first and last load
+    # points (nose item at 0.80 m, parachute fitting at 10.75 m), where nothing is cut
+    stations = np.round(np.linspace(0.40, 11.00, 24), 3)[1:-1]
     frame = Airframe(items, stations, hardpoints, reference_axis=(0.0, 1.0),
                      station_ids=tuple(f"FS{round(s / INCH):04d}" for s in stations),
                      name="Generic light twin")
@@ -223,12 +225,13 @@ def parachute_size(frame, fin_cp, aero_ref):
     return example_chute.parachute_size(frame, fin_cp, aero_ref)
 
 
-#: Sheets and parameters of the lateral-pendulum and parachute-sizing studies, from
-#: loadcases/example_lateral.py and loadcases/example_chute.py (each defines TABLES and
-#: PARAMETERS, and may define NOTES).
+#: Sheets and parameters of the lateral-pendulum and parachute-sizing studies and of the
+#: multibody model and the campaign, from loadcases/example_lateral.py, example_chute.py,
+#: example_multibody.py and example_campaign.py (each defines TABLES and PARAMETERS, and may
+#: define NOTES).
 EXTRA_TABLES = {}
 EXTRA_PARAMETERS = {}
-for _module in ("example_lateral", "example_chute"):
+for _module in ("example_lateral", "example_chute", "example_multibody", "example_campaign"):
     try:
         _part = __import__(_module)
     except ModuleNotFoundError as _err:

@@ -1,10 +1,10 @@
-"""Command line: ``slingloads template | run | loads | lateral | chute``.
+"""Command line: ``slingloads template | run | loads | lateral | chute | campaign``.
 
 Exit codes: 0 success; 2 bad input (a workbook or argument that breaks a stated rule: the
 message names the file, sheet, cell, value and rule); 1 a failure of the environment (an
 output folder that cannot be written, a full disk, a name too long) or an unexpected error;
-130 interrupted. In every failure nothing is written, and no Python traceback is shown unless
-``--debug`` is given.
+130 interrupted (a campaign's finished runs stay in its run cache). In every failure nothing
+is written, and no Python traceback is shown unless ``--debug`` is given.
 """
 
 from __future__ import annotations
@@ -19,9 +19,11 @@ from pathlib import Path
 from slingloads import __version__
 from slingloads.errors import ClosureError, InputError, OutputError
 from slingloads.io.analyses import ANALYSES as REGISTRY
+from slingloads.io.analyses import compute_order
 
 EXIT_BAD_INPUT = 2
 EXIT_ENVIRONMENT = 1
+#: Exit code after Ctrl-C (128 + SIGINT, the shells' convention).
 EXIT_INTERRUPTED = 130
 
 #: Analyses the ``run`` command may perform, in order (from the registry
@@ -72,7 +74,26 @@ def _parser():
             p.add_argument("--nastran", action="store_true",
                            help="also write IN-loads.bdf, the load cases as a Nastran input "
                                 "file in the units of --units (Study rows 'nastran ...')")
+        if name in ("run", "campaign"):
+            _campaign_options(p)
     return parser
+
+
+def _campaign_options(p):
+    """Execution options of the campaign (docs/campaign.md)."""
+    g = p.add_argument_group("campaign execution")
+    g.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                   help="dask.distributed scheduler to run the batches on, e.g. "
+                        "tcp://10.0.0.5:8786 (default: the workbook's 'campaign scheduler', "
+                        "else local worker processes)")
+    g.add_argument("--workers", metavar="N", type=int, default=None,
+                   help="local worker processes (default: the workbook's 'campaign workers', "
+                        "else one per core, or this process for a small campaign)")
+    g.add_argument("--cache", metavar="DIR", default=None,
+                   help="run cache folder, outside --out (default: $SLINGLOADS_CACHE, else "
+                        "the user cache folder, ~/.cache/slingloads/campaign)")
+    g.add_argument("--scheduler-timeout", metavar="SECONDS", type=float, default=None,
+                   help="time the scheduler has to answer (default: the workbook's, 10 s)")
 
 
 def _debug_option(parser):
@@ -93,7 +114,8 @@ def main(argv=None):
     except OutputError as err:
         return _fail(err, EXIT_ENVIRONMENT)
     except (KeyboardInterrupt, _Terminated):
-        print("\nslingloads: interrupted; nothing was written.", file=sys.stderr)
+        print("\nslingloads: interrupted; nothing was written (a campaign's finished runs stay "
+              "in its run cache: run the same command again to resume).", file=sys.stderr)
         return EXIT_INTERRUPTED
     except MemoryError:
         return _fail("out of memory (the limits of slingloads.limits keep valid inputs far "
@@ -209,28 +231,29 @@ def _analyse(args):
         names = _selected(args, study)
         if getattr(args, "nastran", False):
             _ask_nastran(study, names)
+        if "campaign" in names:
+            study.runtime.update(_runtime(args, show))
         outputs, stem = _outputs(args, study, names)
         bar.total = 2 + 2 * len(names)
         bar.update(1)
         results, figures = {}, {}
         with ExitStack() as drawing:
-            for name in names:
+            for name in compute_order(names):
                 bar.set_description(f"computing {name}")
                 results[name] = ANALYSES[name][1](study)
+                study.results.setdefault(name, results[name])
                 # its figures are drawn (in worker processes) while the next ones compute
                 figures[name] = _BY_NAME[name].start_figures(results[name], args.units, study)
                 if figures[name] is not None:
                     drawing.enter_context(figures[name])
                 bar.update(1)
             checks = consistency_checks(results)
-            study.results.update(results)  # a report may quote another analysis's result
             # one set of outputs for every analysis: all published together, or none
             with outputs:
                 for name in names:
                     bar.set_description(f"writing {name}")
-                    extra = {"checks": checks[name]} if name in checks else {}
-                    ANALYSES[name][2](results[name], outputs, stem, args.units, study,
-                                      figures=figures[name], **extra)
+                    _BY_NAME[name].write(results[name], outputs, stem, args.units, study,
+                                         figures=figures[name], checks=checks.get(name))
                     bar.update(1)
         written = outputs.written
         bar.update(1)
@@ -240,6 +263,41 @@ def _analyse(args):
     for text in study.warnings:
         print(f"slingloads: warning: {text}", file=sys.stderr)
     return 0
+
+
+def _runtime(args, show):
+    """The campaign's execution options from the command line (checked before any run)."""
+    from slingloads.io.campaign.cache import check_outside, default_cache_dir
+
+    if args.workers is not None and args.workers < 1:
+        raise InputError("--workers must be >= 1", args.workers)
+    if args.scheduler_timeout is not None and not args.scheduler_timeout > 0:
+        raise InputError("--scheduler-timeout must be > 0 [s]", args.scheduler_timeout)
+    cache = Path(args.cache) if args.cache else default_cache_dir()
+    check_outside(cache, args.out)
+    runtime = {"scheduler": args.scheduler, "workers": args.workers, "cache": cache,
+               "timeout": args.scheduler_timeout}
+    if show:
+        runtime["progress"] = _RunsBar()
+    return runtime
+
+
+class _RunsBar:
+    """Progress of the campaign's runs: runs done, rate and time left (tqdm)."""
+
+    def __init__(self):
+        self.bar = None
+
+    def __call__(self, done, total):
+        if self.bar is None:
+            from tqdm import tqdm
+
+            self.bar = tqdm(total=total, initial=done, desc="campaign runs", unit="run",
+                            leave=False, position=1, dynamic_ncols=True)
+        else:
+            self.bar.update(done - self.bar.n)
+        if done >= total:
+            self.bar.close()
 
 
 if __name__ == "__main__":  # pragma: no cover

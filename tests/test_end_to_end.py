@@ -95,7 +95,7 @@ def test_template_is_a_valid_blank_workbook(tmp_path, capsys):
     assert main(["template", str(path)]) == 0
     reader = WorkbookReader(path)
     for sheet in ("README", "Study", "MassItems", "Stations", "Hardpoints", "FuselageAero",
-                  "AeroEnvelope", "PreviousEnvelope"):
+                  "AeroEnvelope", "PreviousEnvelope", "MultibodyManoeuvres", "HTailAero"):
         assert reader.has_sheet(sheet)
     assert reader.parameters(all_parameters())["hook load factor nz"][0] == pytest.approx(2.5)
     assert main(["template", str(path)]) == 2  # exists: not replaced without --force
@@ -104,7 +104,7 @@ def test_template_is_a_valid_blank_workbook(tmp_path, capsys):
     assert not (tmp_path / "r").exists()
 
 
-@pytest.mark.parametrize("command", ["template", "run", "loads", "lateral", "chute"])
+@pytest.mark.parametrize("command", ["template", "run", "loads", "lateral", "chute", "simulate"])
 def test_every_command_has_help(command, capsys):
     """`--help` on each command prints its usage and exits 0."""
     with pytest.raises(SystemExit) as info:

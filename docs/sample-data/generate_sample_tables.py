@@ -36,10 +36,24 @@ CY = F.y_W with y_W = (cos a sin b, cos b, sin a sin b), CL = F.l; **moments in 
     C_Y &= (C_{F_y} + C_A \\sin\\beta) \\cos\\beta \\\\
     C_L &= (C_{L0} + C_{L\\alpha}\\sin\\alpha\\cos\\alpha)\\cos^2\\beta \\\\
     C_l &= -c_l \\sin\\beta\\cos\\beta \\\\
-    C_m &= (C_{m0} + C_{m\\alpha}\\sin\\alpha)\\cos^2\\beta \\\\
+    C_m &= (C_{m0} + \\mathrm{sat}(C_{m\\alpha}\\sin\\alpha))\\cos^2\\beta \\\\
     C_n &= -A_n \\sin 4\\beta \\,(1 - 0.5\\sin^2\\alpha)
 
 (At 90 deg ``C_A = a2`` and ``C_Fy = -a2``: CD = a2 carries all the broadside force, CY = 0.)
+
+The pitching moment's angle-of-attack part ``c = C_ma sin(alpha)`` is kept as it is up to
+``|alpha| = 15 deg`` (``|c| <= c_0 = C_ma sin 15 deg``) and saturates beyond towards
+``C_m,sat``, smoothly (same slope at the junction):
+
+.. math::
+
+    \\mathrm{sat}(c) = c \\quad (|c| \\le c_0), \\qquad
+    \\mathrm{sign}(c)\\,[c_0 + (C_{m,sat} - c_0) \\tanh((|c| - c_0) / (C_{m,sat} - c_0))]
+    \\quad \\text{beyond}
+
+as a fuselage's pitching moment does once the flow has separated (the UH-60-class data
+flatten at about -0.25 below -25 deg and +0.27 above 30 deg); the slope at zero (0.6 and
+0.7 /rad) lies within those data (0.46 /rad within +-5 deg, 0.67 /rad from 10 to 20 deg).
 
 ``Cn = -A_n sin(4 beta)`` is directionally unstable near zero (dCn/dbeta = -4 A_n), peaks at
 22.5 deg and returns to zero at 45 deg, as the UH-60-class data do (|Cn| 0.03 / 0.06 / 0.08 at
@@ -90,11 +104,11 @@ TAIL_ALPHA_DEG = np.arange(-180.0, 180.0 + 1e-9, 2.0)
 #: yawing-moment amplitude, and a smaller fin: see slingloads/models/sample_aircraft.py).
 SHAPES = {
     "HC1": dict(a1=2.1, a2=2.0, cd0=0.30, cl0=0.05, cla=0.9, cl_roll=0.05, cm0=-0.02,
-                cma=0.6, an=0.10, fin_cymax=1.1, fin_beta_s=19.0, fin_stall=28.0,
+                cma=0.6, cm_sat=0.25, an=0.10, fin_cymax=1.1, fin_beta_s=19.0, fin_stall=28.0,
                 fin_width=3.0, fin_plate=1.17, ht_cnmax=0.9, ht_alpha_s=12.0,
                 ht_stall=16.0, ht_width=3.0),
     "HC2": dict(a1=2.3, a2=2.1, cd0=0.33, cl0=0.04, cla=0.8, cl_roll=0.06, cm0=-0.03,
-                cma=0.7, an=0.12, fin_cymax=1.0, fin_beta_s=18.0, fin_stall=26.0,
+                cma=0.7, cm_sat=0.28, an=0.12, fin_cymax=1.0, fin_beta_s=18.0, fin_stall=26.0,
                 fin_width=3.0, fin_plate=1.17, ht_cnmax=0.85, ht_alpha_s=12.0,
                 ht_stall=15.0, ht_width=3.0),
 }
@@ -111,7 +125,7 @@ def fuselage_table(p):
     cy = (c_fy + c_a * sb) * cb   # and along y_W
     cl = (p["cl0"] + p["cla"] * sa * np.cos(a)) * cb**2
     roll = -p["cl_roll"] * sb * cb
-    cm = (p["cm0"] + p["cma"] * sa) * cb**2
+    cm = (p["cm0"] + saturated_pitch(p["cma"] * sa, p["cma"], p["cm_sat"])) * cb**2
     cn = -p["an"] * np.sin(4.0 * b) * (1.0 - 0.5 * sa**2)
     frame = pd.DataFrame({
         "alpha [deg]": a_deg.ravel(), "beta [deg]": b_deg.ravel(),
@@ -119,6 +133,20 @@ def fuselage_table(p):
         "Cl": roll.ravel(), "Cm": cm.ravel(), "Cn": cn.ravel(),
     })
     return _clean(frame)
+
+
+#: Angle of attack up to which the pitching moment keeps its linear-in-sin(alpha) shape. [deg]
+CM_LINEAR_UP_TO = 15.0
+
+
+def saturated_pitch(c, cma, limit):
+    """The pitching moment's angle-of-attack part ``c`` saturated beyond 15 deg towards
+    ``limit`` (module notes): unchanged while ``|c| <= cma sin 15 deg``."""
+    c0 = cma * np.sin(np.radians(CM_LINEAR_UP_TO))
+    excess = np.abs(c) - c0
+    span = limit - c0
+    bent = np.sign(c) * (c0 + span * np.tanh(np.maximum(excess, 0.0) / span))
+    return np.where(excess > 0.0, bent, c)
 
 
 def fin_table(p):

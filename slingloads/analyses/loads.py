@@ -125,6 +125,64 @@ class ListedCase:
 
 
 @dataclass(frozen=True)
+class DynamicsCases:
+    """Load cases that come from the multibody dynamics (the campaign's hand-off, paper
+    section 6): which aerodynamic points of the envelope the dynamics gave, and the parachute
+    line directions and load they reached.
+
+    Every generated hook direction (and towed case) is combined with each dynamics point
+    under each line direction, besides the usual parachute on (the parachute model's drag
+    and direction) and off. A line case loads the parachute attachment with ``line_force``
+    along the line, ``e = (cos theta cos psi, sin psi, sin theta cos psi)`` in airframe axes
+    (from the attachment towards the canopy; ``docs/multibody.md``).
+
+    Parameters
+    ----------
+    aero_ids : sequence of str
+        Ids of the envelope points that come from the dynamics.
+    line_ids : sequence of str
+    line_theta, line_psi : array_like
+        Line angles, theta up and psi right of the aft direction. [rad]
+    line_force : float
+        Parachute line load, >= 0. [N]
+    note : str
+        Where the dynamics come from (shown in the case descriptions' source).
+    """
+
+    aero_ids: tuple = ()
+    line_ids: tuple = ()
+    line_theta: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    line_psi: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    line_force: float = 0.0
+    note: str = ""
+
+    def __post_init__(self):
+        ids = tuple(str(i) for i in self.line_ids)
+        theta = np.asarray(self.line_theta, float).reshape(-1)
+        psi = np.asarray(self.line_psi, float).reshape(-1)
+        if not (len(ids) == theta.size == psi.size):
+            raise InputError("dynamics line directions need an id, theta and psi each")
+        if len(set(ids)) != len(ids):
+            raise InputError("dynamics line ids must be unique", ids)
+        if not (np.all(np.isfinite(theta)) and np.all(np.isfinite(psi))):
+            raise InputError("dynamics line angles must be finite [rad]")
+        force = float(self.line_force)
+        if not np.isfinite(force) or force < 0:
+            raise InputError("dynamics parachute line load must be >= 0 [N]", force)
+        object.__setattr__(self, "aero_ids", tuple(str(i) for i in self.aero_ids))
+        object.__setattr__(self, "line_ids", ids)
+        object.__setattr__(self, "line_theta", theta)
+        object.__setattr__(self, "line_psi", psi)
+        object.__setattr__(self, "line_force", force)
+
+    def directions(self):
+        """Unit line directions by id, airframe axes. [-]"""
+        t, p = self.line_theta, self.line_psi
+        e = np.column_stack([np.cos(t) * np.cos(p), np.sin(p), np.sin(t) * np.cos(p)])
+        return dict(zip(self.line_ids, e, strict=True))
+
+
+@dataclass(frozen=True)
 class LoadsStudy:
     """Everything the loads analysis needs (SI).
 
@@ -153,6 +211,8 @@ class LoadsStudy:
     ultimate_factor : float
         Factor of safety (CS 29.303: 1.5).
     name : str
+    dynamics : DynamicsCases, optional
+        Cases that come from the multibody dynamics (the campaign's hand-off).
     """
 
     airframe: Airframe
@@ -169,8 +229,11 @@ class LoadsStudy:
     previous_envelope: pd.DataFrame | None = None
     ultimate_factor: float = 1.5
     name: str = "study"
+    dynamics: DynamicsCases | None = None
 
     def __post_init__(self):
+        if self.dynamics is not None:
+            self._check_dynamics()
         if self.chute_line not in CHUTE_LINE_DIRECTIONS:
             raise InputError(f"parachute line direction must be one of "
                              f"{list(CHUTE_LINE_DIRECTIONS)}", self.chute_line)
@@ -196,6 +259,17 @@ class LoadsStudy:
                                                              self.envelope.beta))
         if self.previous_envelope is not None:
             _check_previous(self.previous_envelope)
+
+    def _check_dynamics(self):
+        d = self.dynamics
+        if not isinstance(d, DynamicsCases):
+            raise InputError("the dynamics cases must be DynamicsCases", type(d).__name__)
+        known = set(self.envelope.ids) if self.envelope is not None else set()
+        missing = [i for i in d.aero_ids if i not in known]
+        if missing:
+            raise InputError("a dynamics aerodynamic point is not in the envelope", missing[0])
+        if d.line_ids and self.parachute is None:
+            raise InputError("dynamics parachute line cases need the parachute")
 
     def with_hook(self, **changes):
         """A copy of the study with hook options changed (``lateral_angle=``, ``nz=``...)."""
@@ -233,17 +307,27 @@ class LoadsStudy:
         hooks = self.hook_table()
         aero_ids = list(self.envelope.ids) if self.envelope is not None else [NO_AERO]
         chute_states = [True, False] if self.parachute is not None else [False]
+        dyn = self.dynamics
+        lines = list(dyn.line_ids) if dyn is not None and self.parachute is not None else []
+        dyn_aero = set(dyn.aero_ids) if dyn is not None else set()
+
+        def states(a):
+            return [(c, "") for c in chute_states] + (
+                [(True, line) for line in lines] if a in dyn_aero else [])
+
         rows = []
         if self.generate:
             for h in hooks["hook"]:
                 for a in aero_ids:
-                    for c in chute_states:
-                        rows.append(("", h, a, c, ""))
+                    for c, line in states(a):
+                        rows.append(("", h, a, c, line, ""))
             if self.hook.towed:
-                rows += [("", TOWED, a, c, "") for a in aero_ids for c in chute_states
-                         if a != NO_AERO or c]
-        rows += [(c.id, c.hook, c.aero, bool(c.chute), c.description) for c in self.listed]
-        frame = pd.DataFrame(rows, columns=["case", "hook", "aero", "chute", "description"])
+                rows += [("", TOWED, a, c, line, "") for a in aero_ids
+                         for c, line in states(a) if a != NO_AERO or c]
+        rows += [(c.id, c.hook, c.aero, bool(c.chute), "", c.description)
+                 for c in self.listed]
+        frame = pd.DataFrame(rows, columns=["case", "hook", "aero", "chute", "chute line",
+                                            "description"])
         n_gen = len(frame) - len(self.listed)
         frame.loc[: n_gen - 1, "case"] = [f"LC{i + 1:04d}" for i in range(n_gen)]
         self._check_listed(frame, hooks, aero_ids)
@@ -262,6 +346,8 @@ class LoadsStudy:
         generated = frame["description"] == ""
         frame.loc[generated, "description"] = [
             _describe(r) for _, r in frame[generated].iterrows()]
+        frame["source"] = np.where(frame["aero"].isin(dyn_aero) | (frame["chute line"] != ""),
+                                   "dynamics", "hand")
         return frame
 
     def _check_listed(self, frame, hooks, aero_ids):
@@ -392,6 +478,13 @@ class LoadsStudy:
                     else np.tile([1.0, 0.0, 0.0], (c, 1)))
             direction = self.parachute.force_direction(wind, line)
             forces[:, start] = (drag * on)[:, None] * direction
+            if self.dynamics is not None and self.dynamics.line_ids and "chute line" in cases:
+                ids = cases["chute line"].to_numpy()
+                line_on = ids != ""
+                d = self.dynamics
+                index = pd.Index(d.line_ids).get_indexer(ids[line_on])
+                along = np.array(list(d.directions().values()))
+                forces[line_on, start] = d.line_force * along[index]
         external = forces[:, feet.stop:].sum(axis=1)  # aerodynamics and parachute
         forces[:, feet], moments[:, feet] = self._hook_loads(cases, external)
         return positions, forces, moments
@@ -461,7 +554,10 @@ def _describe(row):
     if row["aero"] != NO_AERO:
         parts.append(f"aero point {row['aero']} (alpha {row['alpha [deg]']:+g} deg, "
                      f"beta {row['beta [deg]']:+g} deg)")
-    parts.append("parachute on" if row["chute"] else "parachute off")
+    if row.get("chute line", ""):
+        parts.append(f"parachute line load from the dynamics along {row['chute line']}")
+    else:
+        parts.append("parachute on" if row["chute"] else "parachute off")
     return "; ".join(parts)
 
 

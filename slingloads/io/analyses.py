@@ -51,6 +51,8 @@ class Analysis:
     options : str
         Name of a function of its reader, ``options(params, study) -> dict``, called for every
         workbook whether or not the analysis runs (report options); empty for none.
+    feeds : tuple of str
+        Analyses that take this one's result (``study.results``): it is computed before them.
     """
 
     name: str
@@ -60,6 +62,7 @@ class Analysis:
     run_help: str
     run_default: str = "no"
     options: str = ""
+    feeds: tuple = ()
 
     @property
     def run_parameter(self):
@@ -132,7 +135,24 @@ ANALYSES = (
              "Run the lateral-step pendulum study (sheets Lateral*)."),
     Analysis("chute sizing", "chute", "chute", "parachute sizing only",
              "Run the parachute sizing (sheets Chute*)."),
+    Analysis("multibody", "simulate", "multibody",
+             "multibody model only: trim, linear modes, manoeuvres",
+             "Run the multibody model (Study rows 'multibody ...', sheets MultibodyManoeuvres, "
+             "HTailAero)."),
+    Analysis("campaign", "campaign", "campaign",
+             "multibody campaign only: parachute selection over the operating envelope, "
+             "sensitivity, stability maps, transport without parachute, loads hand-off",
+             "Run the multibody campaign (Study rows 'campaign ...'); with 'run loads' the "
+             "loads then take the dynamics' cases.", feeds=("loads",)),
 )
+
+
+def compute_order(names):
+    """``names`` in the order to compute them: an analysis that feeds others (its result is
+    their input) before them, the rest in registry order."""
+    names = list(names)
+    feeders = [a.name for a in ANALYSES if a.name in names and set(a.feeds) & set(names)]
+    return feeders + [n for n in names if n not in feeders]
 
 #: Parameters of the whole study: its name, the report's free identification fields and which
 #: analyses to run.

@@ -56,6 +56,11 @@ class WorkbookStudy:
     cells : dict
         Cell of each Study parameter given, by lower-case name (to locate errors found while
         computing).
+    runtime : dict
+        How to execute (set by the command line): ``scheduler``, ``workers``, ``cache``,
+        ``timeout``, ``progress`` of the campaign.
+    results : dict
+        Results of the analyses computed so far, by name (the loads read the campaign's).
     """
 
     name: str
@@ -72,6 +77,7 @@ class WorkbookStudy:
     cells: dict = field(default_factory=dict)
     identification: dict = field(default_factory=dict)
     run_date: str = field(default_factory=now_stamp)
+    runtime: dict = field(default_factory=dict)
     results: dict = field(default_factory=dict)
 
     def digest(self):

@@ -61,6 +61,12 @@ class SampleReference:
         Rotor hub (cable attachment; the suspension axis is the vertical through it). [m]
     chute : tuple of float
         Parachute attachment on the fin. [m]
+    htail_area : float
+        Horizontal tail area of the full-tail configuration. [m^2]
+    htail_centre_of_pressure : tuple of float
+        [m]
+    roll_inertia, pitch_inertia : float
+        Ixx and Iyy about the CG, scaled from the BO-105C like ``yaw_inertia``. [kg m^2]
     """
 
     name: str
@@ -76,6 +82,8 @@ class SampleReference:
     chute: tuple
     htail_area: float = 1.1
     htail_centre_of_pressure: tuple = (5.0, 0.0, 0.4)
+    roll_inertia: float = 3700.0
+    pitch_inertia: float = 9900.0
 
 
 #: The generic sample aircraft. Keep in step with slingloads/data/SAMPLE_DATA.md.
@@ -89,7 +97,8 @@ SAMPLES = {
         name="HC2", mass=2850.0, yaw_inertia=8500.0, fuselage_area=3.2, fuselage_length=11.0,
         moment_reference=(0.2, 0.0, -0.3), fin_area=0.8, fin_centre_of_pressure=(5.5, 0.0, 1.0),
         fin_efficiency=0.5, hub=(0.0, 0.0, 0.95), chute=(6.0, 0.0, 1.5),
-        htail_area=1.0, htail_centre_of_pressure=(4.7, 0.0, 0.4)),
+        htail_area=1.0, htail_centre_of_pressure=(4.7, 0.0, 0.4), roll_inertia=3500.0,
+        pitch_inertia=9400.0),
 }
 
 
@@ -152,6 +161,21 @@ def sample_fin(name="HC1", efficiency=None):
                     angle_name="beta", what=f"{ref.name} fin")
     eta = ref.fin_efficiency if efficiency is None else efficiency
     return Fin(table, ref.fin_area, np.array(ref.fin_centre_of_pressure), eta)
+
+
+def sample_body(name="HC1"):
+    """Mass properties of a sample aircraft: mass, CG at the origin, principal inertias
+    (roll, pitch, yaw) about the CG, no product of inertia.
+
+    Returns
+    -------
+    RigidBody
+    """
+    from slingloads.models.multibody.rigid_body import RigidBody  # compiled: load lazily
+
+    ref = sample_reference(name)
+    return RigidBody(ref.mass, np.zeros(3),
+                     np.diag([ref.roll_inertia, ref.pitch_inertia, ref.yaw_inertia]), ref.name)
 
 
 def sample_hardpoints(name="HC1"):

@@ -2,11 +2,12 @@
 metrics.
 
 Every run starts from a trim (:func:`~.trim.trim`) at the manoeuvre's start condition, plus its
-disturbance, and is integrated with the compiled fixed-step RK4 over all runs at once
-(:func:`slingloads.models.multibody.integrator.rk4_batch`). Runs whose systems share their
-aerodynamic tables go into one batch. Before integrating, the step is checked against the
-fastest mode of each trim's linear model (RK4 is stable for |lambda| dt < 2.8; the step must
-give |lambda| dt <= 1, accurate to about 1e-4 per step on that mode).
+disturbance, and is integrated by the compiled Dormand-Prince 5(4) kernel over all runs at once
+(:func:`slingloads.models.multibody.integrator.integrate`, blocks of runs on every processor),
+each run with its own adaptive step (or a given fixed step), segment by segment between the
+times at which its inputs jump. Runs whose systems share their aerodynamic tables go into one
+batch. A fixed step is checked against the fastest mode of each trim's linear model (the step
+must give |lambda| dt <= 1).
 
 A run that leaves a table stops there: the verdict says which table and when, the history is NaN
 after it (no extrapolation), and the rest of the batch goes on.
@@ -21,7 +22,13 @@ import pandas as pd
 
 from slingloads.errors import InputError
 from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
-from slingloads.models.multibody.integrator import info_batch, rk4_batch
+from slingloads.models.multibody.integrator import (
+    ATOL,
+    RTOL,
+    integrate,
+    stack_drives,
+    tabulate_drive,
+)
 from slingloads.models.multibody.parachute_line import line_angles
 from slingloads.models.multibody.rigid_body import (
     euler_angles,
@@ -30,11 +37,12 @@ from slingloads.models.multibody.rigid_body import (
 )
 
 from .manoeuvres import Manoeuvre
-from .trim import flag_text, linearise, trim
+from .trim import flag_text, linearise, trim_many
 
-#: Default run length [s], RK4 step [s] and sampling interval of the histories [s].
-T_END, DT, OUTPUT_INTERVAL = 60.0, 0.01, 0.1
-#: Largest |lambda| dt accepted for the fastest linear mode. [-]
+#: Default run length [s], fixed step (None: adaptive) [s] and sampling interval of the
+#: histories [s].
+T_END, DT, OUTPUT_INTERVAL = 60.0, None, 0.1
+#: Largest |lambda| dt accepted for the fastest linear mode with a fixed step. [-]
 STEP_LIMIT = 1.0
 #: Activity (yaw rate, swing rates) below which a response counts as settled. [deg/s]
 QUIET = 0.5
@@ -42,18 +50,20 @@ QUIET = 0.5
 _INFO = {name: i for i, name in enumerate(INFO)}
 
 
-def _check_settings(t_end, dt, output_interval):
-    for name, value in (("t_end", t_end), ("dt", dt), ("output_interval", output_interval)):
+def _check_settings(t_end, dt, output_interval, rtol, atol):
+    for name, value in (("t_end", t_end), ("output_interval", output_interval)):
         if not np.isfinite(value) or value <= 0:
             raise InputError(f"simulation {name} must be > 0 [s]", value)
-    every = output_interval / dt
-    if abs(every - round(every)) > 1e-9 * every or round(every) < 1:
-        raise InputError("simulation output_interval must be a whole multiple of dt [s]",
-                         output_interval)
-    steps = t_end / dt
-    if abs(steps - round(steps)) > 1e-9 * steps:
-        raise InputError("simulation t_end must be a whole multiple of dt [s]", t_end)
-    return int(round(steps)), int(round(every))
+    if dt is not None and (not np.isfinite(dt) or dt <= 0):
+        raise InputError("simulation dt must be > 0 [s] (or None: adaptive)", dt)
+    for name, value in (("rtol", rtol), ("atol", atol)):
+        if not np.isfinite(value) or value <= 0:
+            raise InputError(f"simulation {name} must be > 0", value)
+    samples = t_end / output_interval
+    if abs(samples - round(samples)) > 1e-9 * samples:
+        raise InputError("simulation t_end must be a whole multiple of output_interval [s]",
+                         t_end)
+    return int(round(samples)) + 1
 
 
 def _disturbed(trim_point, disturbance):
@@ -75,20 +85,12 @@ def _disturbed(trim_point, disturbance):
     return x
 
 
-def _drive_table(manoeuvre, base_velocity, dt, n_steps):
-    """Drive (n_steps, 3, 9) at the start (just after), middle and end (just before) of every
-    step, and (n_steps + 1, 9) at the step boundaries."""
-    t = np.arange(n_steps + 1) * dt
-    samples = (t[:-1], t[:-1] + 0.5 * dt, t[1:] - 1e-9 * dt)
-    out = np.empty((n_steps, 3, 9))
-    for k, when in enumerate(samples):
-        acc, vel = manoeuvre.trajectory.command(when, base_velocity)
-        out[:, k, 0:3] = manoeuvre.wind.velocity(when)
-        out[:, k, 3:6] = acc
-        out[:, k, 6:9] = vel
-    acc, vel = manoeuvre.trajectory.command(t, base_velocity)
-    at_nodes = np.concatenate([manoeuvre.wind.velocity(t), acc, vel], axis=1)
-    return out, at_nodes
+def _drive(manoeuvre, base_velocity):
+    """The manoeuvre's drive d(t) (n, 9): wind, commanded acceleration and velocity."""
+    def drive(t):
+        acc, vel = manoeuvre.trajectory.command(t, base_velocity)
+        return np.concatenate([manoeuvre.wind.velocity(t), acc, vel], axis=1)
+    return drive
 
 
 def _damping_from_peaks(t, y, start=0.0):
@@ -116,6 +118,27 @@ def _damping_from_peaks(t, y, start=0.0):
     period = float(np.mean(np.diff(times)))
     delta = float(np.mean(np.log(peaks[:-1] / peaks[1:])))
     return period, delta / np.sqrt(4 * np.pi**2 + delta**2)
+
+
+#: Columns of :meth:`RunResult.to_frame`: (key of :meth:`RunResult.histories`, label,
+#: 1 if shown in SI as is or 0 if an angle shown in degrees).
+HISTORY_COLUMNS = (("time", "time [s]", 1), ("x", "x from hook [m]", 1),
+                   ("y", "y from hook [m]", 1), ("z", "z from hook [m]", 1),
+                   ("yaw", "yaw (heading from flight path) [deg]", 0),
+                   ("pitch", "pitch [deg]", 0), ("roll", "roll [deg]", 0),
+                   ("yaw rate", "yaw rate [deg/s]", 0), ("alpha", "alpha [deg]", 0),
+                   ("beta", "beta [deg]", 0), ("airspeed", "airspeed [m/s]", 1),
+                   ("swing longitudinal", "swing longitudinal [deg]", 0),
+                   ("swing lateral", "swing lateral [deg]", 0),
+                   ("swing", "swing from vertical [deg]", 0), ("tension", "cable tension [N]", 1),
+                   ("tension ratio", "tension / weight [-]", 1), ("hub Fx", "hub Fx [N]", 1),
+                   ("hub Fy", "hub Fy [N]", 1), ("hub Fz", "hub Fz [N]", 1),
+                   ("hub load angle", "hub load from mast [deg]", 0),
+                   ("line theta", "line theta [deg]", 0), ("line psi", "line psi [deg]", 0),
+                   ("line tension", "line tension [N]", 1),
+                   ("chute alpha", "canopy alpha [deg]", 0),
+                   ("carrier speed", "carrier speed [m/s]", 1),
+                   ("thrust tilt", "carrier thrust tilt [deg]", 0))
 
 
 @dataclass(frozen=True, eq=False)
@@ -208,30 +231,12 @@ class RunResult:
                 out[key] = np.full(self.time.shape, np.nan)
         return out
 
-    _COLUMNS = (("time", "time [s]", 1), ("x", "x from hook [m]", 1),
-                ("y", "y from hook [m]", 1), ("z", "z from hook [m]", 1),
-                ("yaw", "yaw (heading from flight path) [deg]", 0),
-                ("pitch", "pitch [deg]", 0), ("roll", "roll [deg]", 0),
-                ("yaw rate", "yaw rate [deg/s]", 0), ("alpha", "alpha [deg]", 0),
-                ("beta", "beta [deg]", 0), ("airspeed", "airspeed [m/s]", 1),
-                ("swing longitudinal", "swing longitudinal [deg]", 0),
-                ("swing lateral", "swing lateral [deg]", 0),
-                ("swing", "swing from vertical [deg]", 0), ("tension", "cable tension [N]", 1),
-                ("tension ratio", "tension / weight [-]", 1), ("hub Fx", "hub Fx [N]", 1),
-                ("hub Fy", "hub Fy [N]", 1), ("hub Fz", "hub Fz [N]", 1),
-                ("hub load angle", "hub load from mast [deg]", 0),
-                ("line theta", "line theta [deg]", 0), ("line psi", "line psi [deg]", 0),
-                ("line tension", "line tension [N]", 1),
-                ("chute alpha", "canopy alpha [deg]", 0),
-                ("carrier speed", "carrier speed [m/s]", 1),
-                ("thrust tilt", "carrier thrust tilt [deg]", 0))
-
     def to_frame(self):
         """Time histories with unit-labelled columns (angles in degrees; body-axis hub load;
         positions of the HC CG relative to the hook in earth axes)."""
         h = self.histories()
         data = {}
-        for key, label, si in self._COLUMNS:
+        for key, label, si in HISTORY_COLUMNS:
             data[label] = h[key] if si else np.degrees(h[key])
         frame = pd.DataFrame(data)
         if self.system.carrier.kind == "frozen":
@@ -355,11 +360,26 @@ class Simulation:
     ----------
     runs : list of RunResult
     linear : dict
-        Linear model per distinct trim (keyed by (system name, start airspeed [m/s])).
+        Linear model per distinct trim (keyed by (system name, start airspeed [m/s])), when
+        a fixed step was checked against the modes.
+    dt : float or None
+        Fixed step the runs were integrated with (None: adaptive). [s]
+    rtol, atol : float
+        Tolerances of the adaptive step. [-], [SI]
     """
 
     runs: list
     linear: dict
+    dt: float | None = None
+    rtol: float = RTOL
+    atol: float = ATOL
+
+    def describe_integration(self):
+        """How the runs were integrated, in words."""
+        if self.dt is None:
+            return (f"Dormand-Prince 5(4), adaptive step per run (rtol {self.rtol:g}, atol "
+                    f"{self.atol:g}), split at the inputs' jumps")
+        return f"Dormand-Prince 5(4), fixed step {self.dt:g} s, split at the inputs' jumps"
 
     def __getitem__(self, name):
         for run in self.runs:
@@ -385,7 +405,8 @@ class Simulation:
         return pd.concat(frames, ignore_index=True)
 
 
-def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL):
+def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
+             rtol=RTOL, atol=ATOL):
     """Fly ``system`` through ``manoeuvres`` (all integrated together).
 
     Parameters
@@ -393,7 +414,11 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
     system : SlingSystem
     manoeuvres : Manoeuvre or sequence of Manoeuvre
     t_end, dt, output_interval : float
-        Run length, RK4 step and sampling interval of the histories. [s]
+        Run length, fixed integration step (None: adaptive) and sampling interval of the
+        histories. [s]
+    rtol, atol : float
+        Tolerances of the adaptive step: local error below atol + rtol |x| (root mean square
+        over the states, SI units). [-], [SI]
 
     Returns
     -------
@@ -406,38 +431,51 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
         dup = next(n for n in names if names.count(n) > 1)
         raise InputError("manoeuvre names must be unique", dup)
     return simulate_runs([(system, m) for m in manoeuvres], t_end=t_end, dt=dt,
-                         output_interval=output_interval)
+                         output_interval=output_interval, rtol=rtol, atol=atol)
 
 
-def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
-                  check_step=True):
+def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL, rtol=RTOL,
+                  atol=ATOL, check_step=True, workers=None):
     """Integrate runs given as (system, manoeuvre) pairs, together (module notes).
+
+    Parameters
+    ----------
+    pairs : sequence of (SlingSystem, Manoeuvre)
+    t_end, dt, output_interval : float
+        Run length, fixed integration step (None: adaptive) and sampling interval of the
+        histories. [s]
+    rtol, atol : float
+        Tolerances of the adaptive step. [-], [SI]
+    check_step : bool
+        Check a fixed step against the fastest mode of every trim (and keep the linear
+        models).
+    workers : int, optional
+        Threads integrating the runs (default: every processor this process may use).
 
     Returns
     -------
     Simulation
     """
-    n_steps, every = _check_settings(float(t_end), float(dt), float(output_interval))
-    trims, linear = {}, {}
-    prepared = []
+    t_end, output_interval = float(t_end), float(output_interval)
+    dt = None if dt is None else float(dt)
+    n_out = _check_settings(t_end, dt, output_interval, float(rtol), float(atol))
+    pairs = list(pairs)
+    requests, keys = {}, []
     for system, manoeuvre in pairs:
         if not isinstance(manoeuvre, Manoeuvre):
             raise InputError("runs need Manoeuvre objects", type(manoeuvre).__name__)
         speed = 0.0 if manoeuvre.from_hover else system.airspeed
         key = (id(system), speed, manoeuvre.wind.steady)
-        if key not in trims:
-            trims[key] = trim(system, speed, wind=manoeuvre.wind.steady)
-            if trims[key].converged and check_step:
-                model = linearise(trims[key])
-                linear[(system.name, speed)] = model
-                fastest = float(np.max(np.abs(model.eigenvalues)))
-                if fastest * dt > STEP_LIMIT:
-                    raise InputError(
-                        f"the integration step {dt:.4g} s is too long for the fastest mode of "
-                        f"{system.name!r} at {speed:.4g} m/s (|lambda| = {fastest:.4g} 1/s): "
-                        f"use dt <= {STEP_LIMIT / fastest:.3g} s", dt)
-        prepared.append((system, manoeuvre, trims[key]))
-    n_out = n_steps // every + 1
+        requests.setdefault(key, (system, speed, manoeuvre.wind.steady))
+        keys.append(key)
+    trims = dict(zip(requests, trim_many(list(requests.values())), strict=True))
+    linear = {}
+    if check_step and dt is not None:
+        for point in trims.values():
+            if point.converged:
+                _check_step(point, dt, linear)
+    prepared = [(system, manoeuvre, trims[key])
+                for (system, manoeuvre), key in zip(pairs, keys, strict=True)]
     time = np.arange(n_out) * output_interval
     results = [None] * len(prepared)
     groups = {}
@@ -448,18 +486,48 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
             results[k] = RunResult(system, prepared[k][1], tr, time,
                                    np.full((n_out, N_STATES), np.nan),
                                    np.full((n_out, N_INFO), np.nan), 0, 0.0)
+    drives = _DriveTables(t_end, output_interval)
+    settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers}
     for members in groups.values():
-        _integrate_group(prepared, members, results, dt, n_steps, every, time)
-    return Simulation(results, linear)
+        _integrate_group(prepared, members, results, drives, time, settings)
+    return Simulation(results, linear, dt, float(rtol), float(atol))
 
 
-def _integrate_group(prepared, members, results, dt, n_steps, every, time):
+def _check_step(point, dt, linear):
+    """Refuse a fixed step too long for the fastest mode of the trim ``point``."""
+    model = linearise(point)
+    system, speed = point.system, point.airspeed
+    linear[(system.name, speed)] = model
+    fastest = float(np.max(np.abs(model.eigenvalues)))
+    if fastest * dt > STEP_LIMIT:
+        raise InputError(
+            f"the integration step {dt:.4g} s is too long for the fastest mode of "
+            f"{system.name!r} at {speed:.4g} m/s (|lambda| = {fastest:.4g} 1/s): "
+            f"use dt <= {STEP_LIMIT / fastest:.3g} s", dt)
+
+
+class _DriveTables:
+    """The drive of each distinct (manoeuvre, steady carrier velocity), tabulated once."""
+
+    def __init__(self, t_end, interval):
+        self.t_end, self.interval = t_end, interval
+        self._tables = {}
+
+    def get(self, manoeuvre, velocity):
+        key = (id(manoeuvre), tuple(np.round(velocity, 12)))
+        if key not in self._tables:
+            self._tables[key] = tabulate_drive(_drive(manoeuvre, velocity),
+                                               manoeuvre.breakpoints, self.t_end,
+                                               self.interval)
+        return key, self._tables[key]
+
+
+def _integrate_group(prepared, members, results, drives, time, settings):
     system0 = prepared[members[0]][0]
-    tables = system0.tables()
     runs = len(members)
     x0 = np.empty((runs, N_STATES))
     params = np.empty((runs, system0.parameters().size))
-    profiles, nodes, index = [], [], np.empty(runs, dtype=np.int64)
+    profiles, index = [], np.empty(runs, dtype=np.int64)
     seen = {}
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
@@ -468,23 +536,15 @@ def _integrate_group(prepared, members, results, dt, n_steps, every, time):
         pull = tr.info[_INFO["d_X"]:_INFO["d_Z"] + 1]
         pull = tr.quantity("tension") * pull / np.linalg.norm(pull)
         params[j] = system.parameters(pull=pull, locks=system.locks)
-        key = (id(manoeuvre), tuple(np.round(tr.state[0:3], 12)))
+        key, table = drives.get(manoeuvre, tr.state[0:3])
         if key not in seen:
             seen[key] = len(profiles)
-            table, at_nodes = _drive_table(manoeuvre, tr.state[0:3], dt, n_steps)
             profiles.append(table)
-            nodes.append(at_nodes[::every])
         index[j] = seen[key]
-    drive = np.ascontiguousarray(np.stack(profiles))
-    out = np.full((runs, n_steps // every + 1, N_STATES), np.nan)
-    flags = np.zeros(runs, dtype=np.int64)
-    exit_step = np.full(runs, -1, dtype=np.int64)
-    rk4_batch(x0, params, drive, index, dt, n_steps, every, *tables, out, flags, exit_step)
-    info = np.empty(out.shape[:2] + (N_INFO,))
-    rates = np.empty(out.shape)
-    info_batch(out, params, np.ascontiguousarray(np.stack(nodes)), index, *tables, info, rates)
+    out, _, info, flags, stops = integrate(
+        x0, params, stack_drives(profiles), index, drives.interval, time.size,
+        system0.tables(), **settings)
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        stop = float(exit_step[j] * dt) if flags[j] else np.nan
         results[k] = RunResult(system, manoeuvre, tr, time, out[j], info[j], int(flags[j]),
-                               stop)
+                               float(stops[j]))

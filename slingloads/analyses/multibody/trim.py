@@ -18,6 +18,7 @@ mode named after the motion that holds most of its kinetic energy.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -28,10 +29,13 @@ from scipy.optimize import root
 from slingloads.errors import InputError
 from slingloads.models.multibody.carrier import FreeCarrier
 from slingloads.models.multibody.equations import FLAGS, INFO, N_INFO, N_STATES, evaluate
+from slingloads.models.multibody.integrator import evaluate_many
 from slingloads.models.multibody.parachute_line import line_angles
 from slingloads.models.multibody.rigid_body import (
+    conjugate,
     euler_angles,
     quaternion_from_euler,
+    quaternion_product,
     rotation_matrix,
     small_rotation,
 )
@@ -167,13 +171,130 @@ def _initial_state(system, tas, wind):
 
 def _drag_estimate(system, tas):
     """Rough drag [N] of fuselage and parachute, to start the trim at a sensible swing."""
-    q = 0.5 * system.density * tas**2
-    area = 0.0
-    if system.fuselage is not None:
-        area += system.fuselage.area * float(system.fuselage.drag_coefficient(0.0, 0.0))
-    if system.parachute is not None:
-        area += float(system.parachute.parachute.drag_area(0.0))
-    return q * area
+    return 0.5 * system.density * tas**2 * system.drag_area
+
+
+def _quaternion(yaw, pitch, roll):
+    """:func:`~slingloads.models.multibody.rigid_body.quaternion_from_euler` for one
+    attitude, on floats (the trim calls it often)."""
+    cz, sz = math.cos(-0.5 * yaw), math.sin(-0.5 * yaw)
+    cy, sy = math.cos(0.5 * pitch), math.sin(0.5 * pitch)
+    cx, sx = math.cos(-0.5 * roll), math.sin(-0.5 * roll)
+    return (cz * cy * cx + sz * sy * sx, cz * cy * sx - sz * sy * cx,
+            cz * sy * cx + sz * cy * sx, sz * cy * cx - cz * sy * sx)
+
+
+class _TrimProblem:
+    """The equilibrium equations of one trim: unknowns, starting guess, scaled residuals.
+
+    Unknowns: the CG position relative to the hook (3), the yaw (not in hover), pitch and
+    roll, and the line angles with a hinged canopy; equations: zero CG acceleration, zero
+    angular acceleration (no yaw equation in hover) and zero hinge accelerations, scaled (CG
+    and hinges in g, angular in (m g 1 m) / I).
+    """
+
+    def __init__(self, system, airspeed, wind, yaw_guess):
+        eas = system.airspeed if airspeed is None else float(airspeed)
+        if not np.isfinite(eas) or eas < 0:
+            raise InputError("trim airspeed must be >= 0 [m/s]", eas)
+        self.eas = eas
+        self.system = system if eas == system.airspeed else system.with_(airspeed=eas)
+        sys_at = self.system
+        tas = sys_at.true_airspeed
+        # the unrestricted system; neither depends on the airspeed
+        self.params, self.tables = system.parameters(), system.tables()
+        self.x0 = _initial_state(sys_at, tas, wind)
+        self.drive = steady_drive(wind, self.x0[0:3])
+        self.hinged = sys_at.parachute is not None and sys_at.parachute.kind == "hinged"
+        self.hover = tas < sys_at.aero_cutoff
+        self.yaw_guess = float(yaw_guess)
+        w = sys_at.weight
+        hub = sys_at.hardpoints.hub - sys_at.body.cg
+        swing = np.arctan2(_drag_estimate(sys_at, tas), w)
+        span = sys_at.cable.length + sys_at.cable.static_stretch(w / np.cos(swing))
+        guess = [span * np.sin(swing) - hub[0], -hub[1], -span * np.cos(swing) - hub[2]]
+        guess += [] if self.hover else [yaw_guess]
+        guess += [swing, 0.0]
+        if self.hinged:
+            guess += [self.x0[16], 0.0]
+        self.guess = np.array(guess)
+        g = sys_at.gravity
+        self.scale = np.ones(N_STATES)
+        self.scale[6:9] = self.scale[18:20] = g
+        self.scale[13:16] = sys_at.body.mass * g / np.diag(sys_at.body.inertia)
+        self.rows = ([6, 7, 8, 13, 14] + ([] if self.hover else [15])
+                     + ([18, 19] if self.hinged else []))
+
+    @property
+    def shape(self):
+        """What decides the layout of the unknowns (trims of one shape solve together)."""
+        return (self.hover, self.hinged, self.system.table_key())
+
+    def states(self, u):
+        """Full states (m, 20) of unknowns ``u`` (m, n)."""
+        u = np.atleast_2d(u)
+        x = np.tile(self.x0, (u.shape[0], 1))
+        x[:, 3:6] = u[:, 0:3]
+        k = 3 if self.hover else 4
+        x[:, 9:13] = quaternion_from_euler(self.yaw_guess if self.hover else u[:, 3],
+                                           u[:, k], u[:, k + 1])
+        if self.hinged:
+            x[:, 16:18] = u[:, k + 2:k + 4]
+        return x
+
+    def state(self, u):
+        """The full state of one set of unknowns (floats: called in the solver's loop)."""
+        x = self.x0.copy()
+        x[3:6] = u[0:3]
+        k = 3 if self.hover else 4
+        x[9:13] = _quaternion(self.yaw_guess if self.hover else u[3], u[k], u[k + 1])
+        if self.hinged:
+            x[16:18] = u[k + 2:k + 4]
+        return x
+
+    def scaled(self, rates):
+        """Scaled residuals of state derivatives (m, 20) -> (m, n)."""
+        return np.atleast_2d(rates)[:, self.rows] / self.scale[self.rows]
+
+    def result(self, u, solver_message=""):
+        """The :class:`Trim` at unknowns ``u``, judged (converged, outside a table, slack)."""
+        x = self.state(u)
+        dx, info, flag = evaluate_state(self.system, x, self.drive, self.params, self.tables)
+        res = float(np.max(np.abs(self.scaled(dx))))
+        converged, message = True, "trimmed"
+        if not np.all(np.isfinite(u)) or res > TRIM_TOLERANCE:
+            converged = False
+            message = (f"the equilibrium equations cannot be met (largest scaled residual "
+                       f"{res:.3g}; solver: {solver_message})")
+        elif flag:
+            converged = False
+            message = f"the only equilibrium found lies outside the {flag_text(flag)}"
+        elif info[_INFO["tension"]] <= 0:
+            converged = False
+            message = "the equilibrium found needs a slack cable"
+        return Trim(self.system, self.eas, x, self.drive, converged, message, res, info)
+
+
+def _solve_one(problem):
+    """Powell's hybrid method (MINPACK hybrj) on one trim, Jacobian by central differences."""
+    dx, info = np.zeros(N_STATES), np.zeros(N_INFO)
+
+    def residual(u):
+        evaluate(problem.state(u), problem.params, problem.drive, *problem.tables, dx, info,
+                 False)
+        return problem.scaled(dx)[0]
+
+    def jacobian(u):
+        n = u.size
+        steps = np.diag(1e-7 * np.maximum(1.0, np.abs(u)))
+        rates, _, _ = evaluate_many(problem.states(np.vstack([u + steps, u - steps])),
+                                    problem.params, problem.drive, problem.tables)
+        scaled = problem.scaled(rates)
+        return ((scaled[:n] - scaled[n:]) / (2.0 * np.diag(steps)[:, None])).T
+
+    solution = root(residual, problem.guess, jac=jacobian, method="hybr",
+                    options={"xtol": 1e-13})
+    return problem.result(solution.x, solution.message)
 
 
 def trim(system, airspeed=None, *, wind=(0.0, 0.0, 0.0), yaw_guess=0.0):
@@ -193,68 +314,113 @@ def trim(system, airspeed=None, *, wind=(0.0, 0.0, 0.0), yaw_guess=0.0):
     -------
     Trim
     """
-    eas = system.airspeed if airspeed is None else float(airspeed)
-    if not np.isfinite(eas) or eas < 0:
-        raise InputError("trim airspeed must be >= 0 [m/s]", eas)
-    sys_at = system.with_(airspeed=eas)
-    tas = sys_at.true_airspeed
-    params, tables = sys_at.parameters(), sys_at.tables()  # trim the unrestricted system
-    x0 = _initial_state(sys_at, tas, wind)
-    drive = steady_drive(wind, x0[0:3])
-    hinged = sys_at.parachute is not None and sys_at.parachute.kind == "hinged"
-    hover = tas < sys_at.aero_cutoff
-    w = sys_at.weight
-    hub = sys_at.hardpoints.hub - sys_at.body.cg
-    swing = np.arctan2(_drag_estimate(sys_at, tas), w)
-    span = sys_at.cable.length + sys_at.cable.static_stretch(w / np.cos(swing))
-    guess = [span * np.sin(swing) - hub[0], -hub[1], -span * np.cos(swing) - hub[2]]
-    guess += [] if hover else [yaw_guess]
-    guess += [swing, 0.0]
-    if hinged:
-        guess += [x0[16], 0.0]
-    guess = np.array(guess)
-    inertia = np.diag(sys_at.body.inertia)
-    g = sys_at.gravity
+    return _solve_one(_TrimProblem(system, airspeed, wind, yaw_guess))
 
-    def unpack(u):
-        x = x0.copy()
-        x[3:6] = u[0:3]
-        k = 3
-        yaw = yaw_guess if hover else u[k]
-        k += 0 if hover else 1
-        x[9:13] = quaternion_from_euler(yaw, u[k], u[k + 1])
-        k += 2
-        if hinged:
-            x[16:18] = u[k:k + 2]
-        return x
 
-    def residual(u):
-        x = unpack(u)
-        dx, _, _ = evaluate_state(sys_at, x, drive, params, tables)
-        r = list(dx[6:9] / g)
-        scale = sys_at.body.mass * g * 1.0 / inertia
-        rot = dx[13:16] / scale
-        r += list(rot[[0, 1]]) + ([] if hover else [rot[2]])
-        if hinged:
-            r += list(dx[18:20] / g)
-        return np.array(r)
+#: Newton iterations of :func:`trim_many` before a trim falls back to :func:`trim`.
+NEWTON_ITERATIONS = 30
 
-    solution = root(residual, guess, method="hybr", options={"xtol": 1e-13})
-    x = unpack(solution.x)
-    dx, info, flag = evaluate_state(sys_at, x, drive, params, tables)
-    res = float(np.max(np.abs(residual(solution.x))))
-    converged, message = True, "trimmed"
-    if not np.all(np.isfinite(solution.x)) or res > TRIM_TOLERANCE:
-        converged = False
-        message = (f"the equilibrium equations cannot be met (largest scaled residual "
-                   f"{res:.3g}; solver: {solution.message})")
-    elif flag:
-        converged = False
-        message = f"the only equilibrium found lies outside the {flag_text(flag)}"
-    elif info[_INFO["tension"]] <= 0:
-        converged = False
-        message = "the equilibrium found needs a slack cable"
-    return Trim(sys_at, eas, x, drive, converged, message, res, info)
+
+def trim_many(requests):
+    """Many trims at once: damped Newton iterations on all of them together (one evaluation
+    of the compiled equations per iteration for every trim's residuals, and one for every
+    Jacobian), each trim that has not converged after :data:`NEWTON_ITERATIONS` solved again
+    on its own by :func:`trim` (Powell's hybrid method). The same equations, unknowns, guess
+    and acceptance as :func:`trim`.
+
+    Parameters
+    ----------
+    requests : sequence of (SlingSystem, airspeed, wind)
+        Equivalent airspeed [m/s] (None: the system's) and steady wind (3,) [m/s].
+
+    Returns
+    -------
+    list of Trim
+    """
+    problems = [_TrimProblem(system, speed, wind, 0.0) for system, speed, wind in requests]
+    results = [None] * len(problems)
+    groups = {}
+    for k, problem in enumerate(problems):
+        groups.setdefault(problem.shape, []).append(k)
+    for members in groups.values():
+        solved = _newton([problems[k] for k in members])
+        for k, u in zip(members, solved, strict=True):
+            results[k] = (problems[k].result(u, "Newton") if u is not None
+                          else _solve_one(problems[k]))
+    return results
+
+
+def _newton(problems):
+    """Unknowns solving every problem of one shape (None where Newton did not converge)."""
+    first = problems[0]
+    m, n = len(problems), first.guess.size
+    u = np.array([p.guess for p in problems])
+    params = np.array([p.params for p in problems])
+    drives = np.array([p.drive for p in problems])
+    scales = np.array([p.scale[p.rows] for p in problems])
+
+    starts = np.array([p.x0 for p in problems])
+    k = 3 if first.hover else 4
+
+    def states(values, owners):
+        out = starts[owners].copy()
+        out[:, 3:6] = values[:, 0:3]
+        out[:, 9:13] = quaternion_from_euler(0.0 if first.hover else values[:, 3],
+                                             values[:, k], values[:, k + 1])
+        if first.hinged:
+            out[:, 16:18] = values[:, k + 2:k + 4]
+        return out
+
+    def residuals(values, owners):
+        rates, _, _ = evaluate_many(states(values, owners), params[owners], drives[owners],
+                                    first.tables)
+        return rates[:, first.rows] / scales[owners]
+
+    everyone = np.arange(m)
+    r = residuals(u, everyone)
+    done = np.zeros(m, dtype=bool)
+    for _ in range(NEWTON_ITERATIONS):
+        done |= np.all(np.isfinite(r), axis=1) & (np.max(np.abs(r), axis=1) <= 0.1 *
+                                                   TRIM_TOLERANCE)
+        active = np.nonzero(~done)[0]
+        if active.size == 0:
+            break
+        h = 1e-7 * np.maximum(1.0, np.abs(u[active]))
+        plus = u[active][:, None, :] + h[:, :, None] * np.eye(n)
+        minus = u[active][:, None, :] - h[:, :, None] * np.eye(n)
+        owners = np.repeat(active, n)
+        rp = residuals(plus.reshape(-1, n), owners).reshape(active.size, n, n)
+        rm = residuals(minus.reshape(-1, n), owners).reshape(active.size, n, n)
+        jac = np.transpose((rp - rm) / (2.0 * h[:, :, None]), (0, 2, 1))
+        ok = np.all(np.isfinite(jac), axis=(1, 2)) & np.all(np.isfinite(r[active]), axis=1)
+        step = np.zeros((active.size, n))
+        try:
+            step[ok] = np.linalg.solve(jac[ok], -r[active][ok][..., None])[..., 0]
+        except np.linalg.LinAlgError:
+            ok[:] = False
+        base = np.linalg.norm(r[active], axis=1)
+        alpha = np.ones(active.size)
+        moved = np.zeros(active.size, dtype=bool)
+        for _ in range(8):  # halve the step until the residual falls
+            trying = ok & ~moved
+            if not trying.any():
+                break
+            who = active[trying]
+            trial = u[who] + alpha[trying, None] * step[trying]
+            rt = residuals(trial, who)
+            better = np.all(np.isfinite(rt), axis=1) & (np.linalg.norm(rt, axis=1)
+                                                        < base[trying])
+            idx = np.nonzero(trying)[0][better]
+            u[active[idx]] = trial[better]
+            r[active[idx]] = rt[better]
+            moved[idx] = True
+            alpha[trying & ~moved] *= 0.5
+        stuck = active[~moved]
+        done[stuck] = True  # no descent: leave it to the hybrid method
+        r[stuck] = np.nan
+    converged = np.all(np.isfinite(r), axis=1) & (np.max(np.abs(r), axis=1) <= 0.1 *
+                                                  TRIM_TOLERANCE)
+    return [u[k] if converged[k] else None for k in range(m)]
 
 
 # =============================================================================== linear
@@ -445,25 +611,33 @@ _FULL = {"Vc_X": 0, "Vc_Y": 1, "Vc_Z": 2, "p_X": 3, "p_Y": 4, "p_Z": 5, "v_X": 6
          "psi_dot": 19}
 
 
-def _quat_conj_mul(a, b):
-    """conj(a) (x) b."""
-    a0, a1, a2, a3 = a[0], -a[1], -a[2], -a[3]
-    b0, b1, b2, b3 = b
-    return np.array([a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3,
-                     a0 * b1 + a1 * b0 + a2 * b3 - a3 * b2,
-                     a0 * b2 - a1 * b3 + a2 * b0 + a3 * b1,
-                     a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0])
+def perturbed_states(trim_point, names, z):
+    """Full states of the trim plus the perturbations ``z`` (m, n) in the coordinates
+    ``names``, shape (m, 20)."""
+    z = np.atleast_2d(np.asarray(z, float))
+    x = np.tile(trim_point.state, (z.shape[0], 1))
+    for k, name in enumerate(names):
+        if name in _FULL:
+            x[:, _FULL[name]] += z[:, k]
+    phi = z[:, [names.index(n) for n in ("phi_x", "phi_y", "phi_z")]]
+    x[:, 9:13] = small_rotation(trim_point.state[9:13], phi)
+    return x
 
 
 def perturbed_state(trim_point, names, z):
     """Full state of the trim plus the perturbation ``z`` in the coordinates ``names``."""
-    x = trim_point.state.copy()
+    return perturbed_states(trim_point, names, z)[0]
+
+
+def coordinate_rates(trim_point, names, dx):
+    """Derivatives (m, 20) of the full state expressed in the coordinates ``names`` (the
+    small rotation's rate from the quaternion's: 2 conj(q_trim) (x) q')."""
+    dx = np.atleast_2d(dx)
+    dphi = 2.0 * quaternion_product(conjugate(trim_point.state[9:13]), dx[:, 9:13])[:, 1:]
+    out = np.empty((dx.shape[0], len(names)))
     for k, name in enumerate(names):
-        if name in _FULL:
-            x[_FULL[name]] += z[k]
-    phi = [z[names.index(n)] for n in ("phi_x", "phi_y", "phi_z")]
-    x[9:13] = small_rotation(trim_point.state[9:13], phi)
-    return x
+        out[:, k] = dx[:, _FULL[name]] if name in _FULL else dphi[:, "xyz".index(name[-1])]
+    return out
 
 
 def linearise(trim_point, *, step=1e-6):
@@ -483,27 +657,13 @@ def linearise(trim_point, *, step=1e-6):
     trim_point._require()
     system = trim_point.system
     names = _coordinates(system)
-    params, tables = system.parameters(locks=system.locks), system.tables()
-    q_trim = trim_point.state[9:13]
-
-    def rate(z):
-        x = perturbed_state(trim_point, names, z)
-        dx, _, _ = evaluate_state(system, x, trim_point.drive, params, tables)
-        out = np.zeros(len(names))
-        dphi = 2.0 * _quat_conj_mul(q_trim, dx[9:13])[1:]
-        for k, name in enumerate(names):
-            if name in _FULL:
-                out[k] = dx[_FULL[name]]
-            else:
-                out[k] = dphi["xyz".index(name[-1])]
-        return out
-
     n = len(names)
-    a = np.zeros((n, n))
-    for k in range(n):
-        dz = np.zeros(n)
-        dz[k] = step
-        a[:, k] = (rate(dz) - rate(-dz)) / (2 * step)
+    z = np.vstack([step * np.eye(n), -step * np.eye(n)])
+    dx, _, _ = evaluate_many(perturbed_states(trim_point, names, z),
+                             system.parameters(locks=system.locks), trim_point.drive,
+                             system.tables())
+    rates = coordinate_rates(trim_point, names, dx)
+    a = ((rates[:n] - rates[n:]) / (2 * step)).T
     values, vectors = eig(a)
     return LinearModel(trim_point, a, names, values, vectors)
 

@@ -51,9 +51,9 @@ def read_airframe(reader, params):
     airframe : Airframe
     points : dict
         Hardpoint position by kind (``hub``, ``mast_foot``, ``chute``, ``fin_cp``,
-        ``aero_reference``: the first row of that kind, or None) [m], ``chute_row``: the
-        0-based row of the chute hardpoint, or None, and ``rows``: the 0-based rows of each
-        kind (to locate errors on derived quantities).
+        ``aero_reference``, ``htail_cp``: the first row of that kind, or None) [m],
+        ``chute_row``: the 0-based row of the chute hardpoint, or None, and ``rows``: the
+        0-based rows of each kind (to locate errors on derived quantities).
 
     Raises
     ------
@@ -228,7 +228,7 @@ def _hardpoint_rows(reader, items, axis):
         w = hp_t["weight"][i] if hp_t.has("weight") else 1.0
         points[k].append((hp_t["id"][i], p, w, i))
     for kind, lo, hi in (("hub", 1, 1), ("mast_foot", 1, None), ("chute", 0, 1),
-                         ("fin_cp", 0, 1), ("aero_reference", 0, 1)):
+                         ("fin_cp", 0, 1), ("aero_reference", 0, 1), ("htail_cp", 0, 1)):
         n = len(points[kind])
         if n < lo or (hi is not None and n > hi):
             want = f"exactly {lo}" if lo == hi else (f"at least {lo}" if hi is None

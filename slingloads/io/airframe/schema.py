@@ -32,7 +32,7 @@ COORDINATE = Bounds(-MAX_COORDINATE, MAX_COORDINATE, unit="m")
 TABLE_ANGLE = Bounds(-180.0, 180.0, unit="deg")
 
 #: Kinds of the Hardpoints rows.
-HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference")
+HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference", "htail_cp")
 
 PARAMETERS = (
     Parameter("reference axis y", "length", "m", 0.0,
@@ -147,7 +147,8 @@ SHEETS = (
                     "(mast attachment on the transmission deck, one row per foot) | chute "
                     "(parachute attachment on the fin) | fin_cp (fin centre of pressure) | "
                     "aero_reference (moment reference point of the FuselageAero "
-                    "coefficients)."),
+                    "coefficients) | htail_cp (horizontal-tail centre of pressure, for the "
+                    "multibody model's full-tail configuration)."),
         Column("x", "length", "m",
                help="Fuselage station of the point, x positive aft. Typical: hub 4.3 m, fin "
                     "10.5 m on an 11 m fuselage.", bounds=COORDINATE),
@@ -163,7 +164,8 @@ SHEETS = (
                "on every foot (equal shares).", above(0)),
     ), required=True, help="Where external loads enter: rotor hub (hook), mast feet on the "
        "transmission deck, parachute attachment on the fin, fin centre of pressure, moment "
-       "reference point of the fuselage aerodynamic coefficients. Every point but the "
+       "reference point of the fuselage aerodynamic coefficients, horizontal-tail centre of "
+       "pressure (the multibody model's full-tail configuration). Every point but the "
        "aero_reference must lie within the airframe (x within the mass items' range, no "
        "farther from the loads reference axis than the airframe is long). " + _POSITION,
        max_rows=MAX_STATIONS),

@@ -682,8 +682,8 @@ class WorkbookReader:
                 if renamed is not None:
                     raise self.error(f"parameter renamed: use {renamed.name!r} ({renamed.help})",
                                      _echo(name), sheet, cell_name(r, 1))
-                raise self.error(f"unknown parameter; valid parameters are "
-                                 f"{sorted(known)}", _echo(name), sheet, cell_name(r, 1))
+                raise self.error(_unknown_parameter(key, known), _echo(name), sheet,
+                                 cell_name(r, 1))
             if key in out:
                 raise self.error("parameter appears twice", _echo(name), sheet,
                                  cell_name(r, 1))
@@ -703,7 +703,9 @@ class WorkbookReader:
 
     def _parameter_value(self, spec, raw, unit_text, sheet, r):
         where = cell_name(r, 2)
-        if spec.kind in (TEXT, FLAG, INTEGER) and unit_text.strip() not in ("", "-"):
+        # a text parameter with a unit is a list of numbers in that unit (read by its analysis)
+        unit_free = spec.kind in (FLAG, INTEGER) or (spec.kind == TEXT and not spec.unit)
+        if unit_free and unit_text.strip() not in ("", "-"):
             raise self.error(f"parameter {spec.name!r} takes no unit (leave the unit cell "
                              "empty)", _echo(unit_text), sheet, cell_name(r, 3))
         if spec.kind == TEXT:
@@ -1001,3 +1003,15 @@ def parse_flag(raw, what, error, sheet, where, default):
     if text in _FALSE and text != "":
         return False
     raise error(f"{what!r} must be yes or no", _echo(raw), sheet, where)
+
+
+def _unknown_parameter(key, known):
+    """The rule broken by an unknown Study parameter: the closest valid names, or where the
+    whole list is (there are too many to quote)."""
+    import difflib
+
+    close = difflib.get_close_matches(key, list(known), n=3, cutoff=0.6)
+    hint = f"did you mean {' or '.join(repr(known[c].name) for c in close)}? " if close else ""
+    return (f"unknown parameter; {hint}the valid parameters are on the Study sheet of "
+            f"'slingloads template' and in docs/ ({len(known)} in all)")
+

@@ -624,7 +624,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
                         input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
                         info=None, findings=None, sfbm_workbook=False, figures=None,
-                        nastran=None, checks=None):
+                        nastran=None, checks=None, dynamics=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -669,6 +669,10 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     checks : pandas.DataFrame, optional
         Checks against the other analyses of the run (:mod:`slingloads.io.consistency`),
         shown on the Summary sheet with a warning when one fails.
+    dynamics : pandas.DataFrame, optional
+        The campaign's hand-off comparison (:class:`~slingloads.analyses.campaign.Handoff`
+        ``.comparison``): written on a *Dynamics* sheet with the largest loads of the
+        hand-entered cases against those of the cases from the dynamics.
 
     Returns
     -------
@@ -703,7 +707,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     with drawings(jobs, figures) as pngs:  # drawn while the tables are built and written
         return _publish(result, out_dir, stem, units, hull_pairs, stations, findings,
                         input_paths, info, max_rows, sfbm_workbook, pngs, titles, deck,
-                        checks)
+                        checks, dynamics)
 
 
 def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None):
@@ -738,7 +742,8 @@ def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_sta
 
 
 def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input_paths,
-             info, max_rows, sfbm_workbook, pngs, titles, deck=None, checks=None):
+             info, max_rows, sfbm_workbook, pngs, titles, deck=None, checks=None,
+             dynamics=None):
     """Build the tables and publish every file of the loads report (the PNGs are awaited
     when the Plots sheet is written)."""
     embedded = {titles[tag]: png for tag, png in pngs.items()}
@@ -748,7 +753,8 @@ def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input
     highlight = {"Exceedance": Highlight([c for c in sheets_columns(sheets, "Exceedance")
                                           if c.endswith("ratio [-]") or c == "worst [-]"]),
                  "ExceedanceDetail": Highlight(["exceedance ratio [-]"], 1.0)}
-
+    if dynamics is not None:
+        sheets["Dynamics"] = dynamics_sections(result, dynamics, units)
     with atomic_outputs(out_dir, inputs=input_paths) as out:
         write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,
                        number_format=NUMBER_FORMATS, highlight=highlight, info=info,
@@ -918,8 +924,40 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     }
 
 
+def dynamics_sections(result, comparison, units="SI"):
+    """The *Dynamics* sheet: what the campaign's dynamics changed in the cases, and the
+    largest loads of the hand-entered cases against those of the cases from the dynamics."""
+    from slingloads.analyses.campaign import loads_comparison
+
+    table = comparison.copy()
+    if units == "US":
+        for unit, kind in (("N", "force"), ("m^2", "area")):
+            rows = table["unit"] == unit
+            label = unit_label(report_unit(kind, units))
+            for column in ("hand-entered", "dynamics reached", "with margin",
+                           "used in the loads"):
+                values = pd.to_numeric(table.loc[rows, column], errors="coerce")
+                table.loc[rows, column] = in_report_units(values.to_numpy(float), kind, units)
+            table.loc[rows, "unit"] = label
+    sections = [Section("Hand-entered against the dynamics (the campaign's hand-off)", table,
+                        note=result.study.dynamics.note if result.study.dynamics else "")]
+    loads = loads_comparison(result)
+    if loads is not None:
+        loads = convert_by_component(loads.drop(columns="kind"),
+                                     ["hand-entered cases", "dynamics cases"], units)
+        sections.append(Section(
+            "Largest |limit load| over the airframe: hand-entered cases against the cases "
+            "from the dynamics (LoadCases column 'source')", loads))
+    return sections
+
+
 def compute(study):
     """Run the loads analysis read from a workbook.
+
+    With the campaign's result in ``study.results`` (``slingloads run`` with ``run campaign``
+    and ``campaign loads from dynamics``), the cases the dynamics reached are added
+    (:func:`slingloads.analyses.campaign.loads_from_dynamics`) and the hand-off is kept in
+    ``study.results["loads handoff"]`` for the report.
 
     Parameters
     ----------
@@ -938,7 +976,26 @@ def compute(study):
     if study.loads is None:
         raise InputError("the workbook does not ask for the loads analysis (Study sheet: "
                          "'run loads' is no)", file=study.path, sheet="Study")
-    result = study.loads.run()
+    results = getattr(study, "results", {})
+    campaign = results.get("campaign")
+    if campaign is None or not campaign.inputs.loads_from_dynamics:
+        return _finite(study.loads.run(), study)
+    if campaign.result.envelope is None:
+        raise InputError("the loads are to take the dynamics' cases, but no parachute area of "
+                         "the campaign is stable in every condition and none was chosen "
+                         "('campaign chosen area factor'); choose one or set 'campaign loads "
+                         "from dynamics' to no", file=study.path, sheet="Study")
+    from slingloads.analyses.campaign import loads_from_dynamics
+
+    with located(study.path, "Study"):
+        handoff = loads_from_dynamics(study.loads, campaign.result.envelope,
+                                      campaign.inputs.hook_angle_source)
+    results["loads handoff"] = handoff
+    return _finite(handoff.study.run(), study)
+
+
+def _finite(result, study):
+    """``result``, refused if its loads are not finite numbers."""
     if not np.all(np.isfinite(result.loads)):
         raise InputError("the loads are not finite numbers (an input far out of scale?): check "
                          "the magnitudes and units of the MassItems, FuselageAero and Study "
@@ -970,6 +1027,7 @@ def write(result, out_dir, stem, units, study, figures=None, checks=None):
     if study.options.get("nastran"):
         nastran = {**study.options["nastran settings"],
                    "locations": study.options["nastran locations"]}
+    handoff = getattr(study, "results", {}).get("loads handoff")
     with located(study.path):
         return write_loads_outputs(result, out_dir, stem, units=units,
                                    inputs_digest=study.digest(),
@@ -978,4 +1036,5 @@ def write(result, out_dir, stem, units, study, figures=None, checks=None):
                                    input_paths=study.input_files, info=info,
                                    findings=findings,
                                    sfbm_workbook=study.options.get("sfbm workbook", False),
-                                   figures=figures, nastran=nastran, checks=checks)
+                                   figures=figures, nastran=nastran, checks=checks,
+                                   dynamics=None if handoff is None else handoff.comparison)

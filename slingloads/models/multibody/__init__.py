@@ -5,9 +5,10 @@ One module per physical concept: :mod:`.rigid_body` (mass properties, quaternion
 :mod:`.cable`, :mod:`.carrier` (frozen or free, trajectories), :mod:`.local_flow` (fuselage
 and lifting surfaces from the flow each part sees), :mod:`.parachute_line` (hinged point mass
 or quasi-static drogue), :mod:`.environment` (density altitude, wind, gusts, wind ramps),
-:mod:`.equations` (the compiled equations of motion), :mod:`.integrator` (fixed-step RK4 over
-many runs at once) and :mod:`.system` (the assembly). The analyses built on it (trim,
-linearisation, manoeuvres, metrics) are in :mod:`slingloads.analyses.multibody`.
+:mod:`.equations` (the compiled equations of motion), :mod:`.integrator` (adaptive
+Dormand-Prince 5(4) over many runs at once) and :mod:`.system` (the assembly). The analyses
+built on it (trim, linearisation, manoeuvres, metrics) are in
+:mod:`slingloads.analyses.multibody`.
 """
 
 from slingloads.models.multibody.cable import Cable

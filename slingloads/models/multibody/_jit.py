@@ -42,10 +42,6 @@ def _drop_stale_cache(folder=_HERE):
 
 _drop_stale_cache()
 
-#: Compile a scalar kernel (no Python objects, cached on disk).
+#: Compile a scalar kernel (no Python objects, cached on disk, releases the GIL so that
+#: several threads run it at once).
 jit = numba.njit(cache=True, fastmath=False, nogil=True)
-
-#: Compile a kernel that runs its outer ``prange`` loop on every core.
-parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
-
-prange = numba.prange

@@ -1,90 +1,460 @@
-"""Fixed-step Runge-Kutta 4 over many runs at once, compiled and parallel over runs.
+"""Runge-Kutta integration of many runs at once, compiled, with the runs spread over threads.
 
-Each run is integrated on its own (one thread per run, ``prange``); all runs of a batch share
-the aerodynamic tables and differ in their parameters, initial state and drive. The drive of a
-run (wind, commanded carrier acceleration and velocity) is tabulated beforehand, per distinct
-profile, at the start (just after), middle and end (just before) of every step, so that a jump
-on a step boundary (a step gust, a gust's end) is seen on its correct side.
+The method is the Dormand-Prince pair 5(4) (the one of :func:`scipy.integrate.solve_ivp`'s
+``RK45``, with its fourth-order dense output): adaptive by default, the step of every run
+controlled on its own so that the local error estimate stays within ``atol + rtol |x|`` (root
+mean square over the states), or with a fixed step when one is given. Each run is integrated
+segment by segment between the times at which its inputs jump or kink (a step gust's onset, the
+end of a ramp), so that no step straddles a jump; within a segment the drive (wind, commanded
+carrier acceleration and velocity) is interpolated (cubic, Catmull-Rom: third order, exact for
+a drive linear in time) in a table sampled every :data:`DRIVE_STEP` or finer, its ends being
+the drive just after the segment's start and just before its end. The histories are the dense
+output at the sampling times, where the reported quantities are evaluated with the drive at
+that time.
 
-A run that leaves a table (or its hinge range) stops: its state is kept up to the start of the
-step in which it happened, the rest of its history is NaN, and the flag and the step are
-returned. The quaternion is renormalised after every step.
+A run whose flow leaves a table (or its hinge range) stops: with the adaptive step, after the
+step has been halved down to :data:`SMALLEST_STEP` without staying inside; with a fixed step,
+at once. Its state is kept up to that time, the rest of its history is NaN, and the flag and
+the time are returned. The quaternion is renormalised after every step.
+
+One compiled kernel, :func:`dopri_runs`, integrates a block of runs. It is serial and releases
+the GIL (``nogil``), so :func:`integrate` spreads blocks of runs over a pool of threads: the
+same machine code serves a single run and a batch of thousands, and no parallel variant has to
+be compiled. The kernel calls the equations at a single place (a loop over the stages and the
+samples), which keeps the compiled code, and its one-time compilation, small.
+
+References
+----------
+.. [1] J. R. Dormand, P. J. Prince, "A family of embedded Runge-Kutta formulae", Journal of
+   Computational and Applied Mathematics 6 (1), 1980.
+.. [2] L. F. Shampine, "Some Practical Runge-Kutta Formulas", Mathematics of Computation 46
+   (173), 1986 (the dense output).
 """
 
 from __future__ import annotations
 
 import math
+import os
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from slingloads.models.multibody._jit import parallel_jit, prange
+from slingloads.models.multibody._jit import jit
 from slingloads.models.multibody.equations import N_INFO, N_STATES, evaluate
 
+#: Runs per block handed to one thread (small blocks balance the load of uneven runs).
+BLOCK = 16
+#: Default tolerances of the adaptive step (states in SI: m, m/s, rad, rad/s). [-], [SI]
+RTOL, ATOL = 1e-4, 1e-5
+#: Sampling step of the drive tables (finer where a segment is shorter). [s]
+DRIVE_STEP = 0.01
+#: Smallest adaptive step before a run that leaves a table is stopped. [s]
+SMALLEST_STEP = 1e-6
+#: First trial step of a run. [s]
+FIRST_STEP = 0.01
 
-@parallel_jit
-def rk4_batch(x0, P, drive, profile, dt, n_steps, every, fus_a, fus_b, fus_c, fin_g, fin_v,
-              tail_g, tail_v, cd_g, cd_v, out, flags, exit_step):
-    """Integrate runs ``x0`` (runs, N) with parameters ``P`` (runs, NP).
+# Dormand-Prince 5(4): nodes, coefficients, fifth-order weights, error weights, dense output
+_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
+_A = np.array([
+    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [1 / 5, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [3 / 40, 9 / 40, 0.0, 0.0, 0.0, 0.0],
+    [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0, 0.0],
+    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0, 0.0],
+    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0.0],
+    [35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
+_E = np.array([-71 / 57600, 0.0, 71 / 16695, -71 / 1920, 17253 / 339200, -22 / 525, 1 / 40])
+_P = np.array([
+    [1.0, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
+    [0.0, 0.0, 0.0, 0.0],
+    [0.0, 131558114200 / 32700410799, -68118460800 / 10900136933,
+     87487479700 / 32700410799],
+    [0.0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072],
+    [0.0, 127303824393 / 49829197408, -318862633887 / 49829197408,
+     701980252875 / 199316789632],
+    [0.0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
+    [0.0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423]])
 
-    ``drive`` (profiles, n_steps, 3, 9), ``profile`` (runs,) its row per run; ``out`` (runs,
-    n_steps // every + 1, N) receives the states every ``every`` steps (pre-filled with NaN);
-    ``flags`` and ``exit_step`` (runs,) the flag and the step of a run that stopped.
+
+@jit
+def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, out):
+    """Drive at time ``t`` of segment ``s`` of profile ``row``: cubic (Catmull-Rom) in the
+    segment's table, exact for a drive linear in time, the end slopes from a quadratic through
+    the last three points."""
+    u = (t - seg_a[row, s]) / seg_h[row, s]
+    last = seg_n[row, s]
+    m = int(u)
+    if m >= last:
+        m = last - 1
+    if m < 0:
+        m = 0
+    w = u - m
+    base = seg_off[row, s] + m
+    w2 = w * w
+    w3 = w2 * w
+    for c in range(9):
+        p1 = vals[row, base, c]
+        p2 = vals[row, base + 1, c]
+        if m > 0:
+            p0 = vals[row, base - 1, c]
+        elif last > 1:  # quadratic through the first three
+            p0 = 3.0 * p1 - 3.0 * p2 + vals[row, base + 2, c]
+        else:
+            p0 = 2.0 * p1 - p2
+        if m + 1 < last:
+            p3 = vals[row, base + 2, c]
+        elif last > 1:  # quadratic through the last three
+            p3 = 3.0 * p2 - 3.0 * p1 + p0
+        else:
+            p3 = 2.0 * p2 - p1
+        out[c] = (p1 + 0.5 * w * (p2 - p0) + w2 * (p0 - 2.5 * p1 + 2.0 * p2 - 0.5 * p3)
+                  + w3 * (1.5 * (p1 - p2) + 0.5 * (p3 - p0)))
+
+
+@jit
+def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, profile,
+               interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
+               tail_g, tail_v, cd_g, cd_v, out, info, rates, flags, stop_time):
+    """Integrate runs ``x0`` (runs, N) with parameters ``P`` (runs, NP), in place.
+
+    Profile ``row = profile[j]`` of run j: ``n_seg[row]`` segments from ``seg_a`` to
+    ``seg_b`` (profiles, S), each a drive table of ``seg_n`` intervals of ``seg_h`` from row
+    ``seg_off`` of ``vals`` (profiles, K, 9); ``nodes`` (profiles, n_out, 9) the drive at the
+    samples, every ``interval``. ``fixed`` > 0: that step; else adaptive with ``rtol``,
+    ``atol``. ``C``, ``A``, ``E``, ``PD``: the Dormand-Prince tableau. ``out``, ``rates``
+    (runs, n_out, N) and ``info`` (runs, n_out, N_INFO) receive the states, their derivatives
+    and the reported quantities at the samples (pre-filled with NaN); ``flags`` and
+    ``stop_time`` (runs,) the flag and the time of a run that stopped. With no segment, only
+    the first sample is evaluated (its flag returned): the equations at the states ``x0``.
     """
     runs = x0.shape[0]
     n = x0.shape[1]
-    for j in prange(runs):
-        x = x0[j].copy()
-        k1 = np.empty(n)
-        k2 = np.empty(n)
-        k3 = np.empty(n)
-        k4 = np.empty(n)
-        tmp = np.empty(n)
-        info = np.empty(1)
+    n_out = out.shape[1]
+    K = np.empty((7, n))
+    x = np.empty(n)
+    x5 = np.empty(n)
+    y = np.empty(n)
+    d = np.empty(9)
+    scratch = np.empty(N_INFO)
+    for j in range(runs):
+        row = profile[j]
         pj = P[j]
-        row = profile[j]
-        out[j, 0] = x
-        for i in range(n_steps):
-            f = evaluate(x, pj, drive[row, i, 0], fus_a, fus_b, fus_c, fin_g, fin_v, tail_g,
-                         tail_v, cd_g, cd_v, k1, info, False)
-            for m in range(n):
-                tmp[m] = x[m] + 0.5 * dt * k1[m]
-            f |= evaluate(tmp, pj, drive[row, i, 1], fus_a, fus_b, fus_c, fin_g, fin_v, tail_g,
-                          tail_v, cd_g, cd_v, k2, info, False)
-            for m in range(n):
-                tmp[m] = x[m] + 0.5 * dt * k2[m]
-            f |= evaluate(tmp, pj, drive[row, i, 1], fus_a, fus_b, fus_c, fin_g, fin_v, tail_g,
-                          tail_v, cd_g, cd_v, k3, info, False)
-            for m in range(n):
-                tmp[m] = x[m] + dt * k3[m]
-            f |= evaluate(tmp, pj, drive[row, i, 2], fus_a, fus_b, fus_c, fin_g, fin_v, tail_g,
-                          tail_v, cd_g, cd_v, k4, info, False)
-            if f != 0:
-                flags[j] = f
-                exit_step[j] = i
-                break
-            for m in range(n):
-                x[m] += dt / 6.0 * (k1[m] + 2.0 * k2[m] + 2.0 * k3[m] + k4[m])
-            qn = math.sqrt(x[9] * x[9] + x[10] * x[10] + x[11] * x[11] + x[12] * x[12])
-            for m in range(9, 13):
-                x[m] /= qn
-            if (i + 1) % every == 0:
-                out[j, (i + 1) // every] = x
-
-
-@parallel_jit
-def info_batch(states, P, drive, profile, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
-               cd_g, cd_v, info, rates):
-    """Reported quantities ``info`` (runs, n, N_INFO) and state derivatives ``rates`` (runs, n,
-    N) of stored states (runs, n, N) with their drive (profiles, n, 9); NaN states stay NaN."""
-    runs, n_out = states.shape[0], states.shape[1]
-    for j in prange(runs):
-        row = profile[j]
-        for i in range(n_out):
-            if np.isnan(states[j, i, 0]):
-                for m in range(N_INFO):
-                    info[j, i, m] = np.nan
-                for m in range(N_STATES):
-                    rates[j, i, m] = np.nan
+        for m in range(n):
+            x[m] = x0[j, m]
+        segments = n_seg[row]
+        s = 0
+        t = 0.0
+        t_new = 0.0
+        h_try = fixed if fixed > 0.0 else min(FIRST_STEP, interval)
+        h = h_try
+        sample = 0
+        rejected = False
+        flag0 = 0
+        stage_flag = 0
+        # phase 7: the next sample (dense output); 0: derivative at a segment's start;
+        # 1 to 6: the stages of a step (6: at the fifth-order solution, first same as last)
+        phase = 7
+        while True:
+            finish = False
+            # ------------------------------------------------------------- one evaluation
+            if phase == 7:
+                if sample == 0:
+                    for m in range(n):
+                        y[m] = x[m]
+                else:
+                    theta = (sample * interval - t) / h
+                    for m in range(n):
+                        acc = 0.0
+                        for i in range(7):
+                            acc += K[i, m] * (PD[i, 0] + theta * (PD[i, 1] + theta * (
+                                PD[i, 2] + theta * PD[i, 3])))
+                        y[m] = x[m] + h * theta * acc
+                    qn = math.sqrt(y[9] * y[9] + y[10] * y[10] + y[11] * y[11]
+                                   + y[12] * y[12])
+                    for m in range(9, 13):
+                        y[m] /= qn
+                for m in range(n):
+                    out[j, sample, m] = y[m]
+                for c in range(9):
+                    d[c] = nodes[row, sample, c]
+                dx = rates[j, sample]
+                reported = info[j, sample]
+                want = True
+            else:
+                if phase == 0:
+                    for m in range(n):
+                        y[m] = x[m]
+                    when = t
+                else:
+                    for m in range(n):
+                        acc = 0.0
+                        for i in range(phase):
+                            acc += A[phase, i] * K[i, m]
+                        y[m] = x[m] + h * acc
+                    when = t + C[phase] * h
+                _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, d)
+                dx = K[phase]
+                reported = scratch
+                want = False
+            f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g,
+                         cd_v, dx, reported, want)
+            # ------------------------------------------------------------- what next
+            if phase == 7:
+                if sample == 0:
+                    sample = 1
+                    if segments == 0:
+                        flags[j] = f
+                        break
+                    phase = 0
+                    continue
+                sample += 1
+                if not (sample < n_out and sample * interval <= t_new + 1e-9 * interval):
+                    finish = True
+            elif phase == 0:
+                flag0 = f
+                stage_flag = f
+                h = min(h_try, seg_b[row, s] - t)
+                phase = 1
                 continue
-            evaluate(states[j, i], P[j], drive[row, i], fus_a, fus_b, fus_c, fin_g, fin_v,
-                     tail_g, tail_v, cd_g, cd_v, rates[j, i], info[j, i], True)
+            else:
+                stage_flag |= f
+                if phase < 6:
+                    phase += 1
+                    continue
+                for m in range(n):
+                    x5[m] = y[m]
+                if stage_flag != 0:  # a stage left a table: shorter step, or stop
+                    if fixed > 0.0 or h < 2.0 * SMALLEST_STEP:
+                        flags[j] = stage_flag
+                        stop_time[j] = t
+                        break
+                    h *= 0.5
+                    h_try = h
+                    rejected = True
+                    stage_flag = flag0
+                    phase = 1
+                    continue
+                grow = 1.0
+                if fixed <= 0.0:
+                    err = 0.0
+                    for m in range(n):
+                        e = 0.0
+                        for i in range(7):
+                            e += E[i] * K[i, m]
+                        scale = atol + rtol * max(abs(x[m]), abs(x5[m]))
+                        err += (h * e / scale) ** 2
+                    err = math.sqrt(err / n)
+                    if err > 1.0:
+                        h *= max(0.2, 0.9 * err ** -0.2)
+                        h_try = h
+                        rejected = True
+                        stage_flag = flag0
+                        phase = 1
+                        continue
+                    grow = 10.0 if err == 0.0 else min(10.0, 0.9 * err ** -0.2)
+                    if rejected:
+                        grow = min(1.0, grow)
+                    rejected = False
+                    h_try = h * grow
+                flag0 = f  # K[6] is the next step's first derivative
+                t_new = t + h
+                if sample < n_out and sample * interval <= t_new + 1e-9 * interval:
+                    phase = 7
+                    continue
+                finish = True
+            # ------------------------------------------------------------- step accepted
+            if finish:
+                t = t_new
+                qn = math.sqrt(x5[9] * x5[9] + x5[10] * x5[10] + x5[11] * x5[11]
+                               + x5[12] * x5[12])
+                for m in range(n):
+                    x[m] = x5[m] / qn if 9 <= m < 13 else x5[m]
+                    K[0, m] = K[6, m]
+                stage_flag = flag0
+                if t >= seg_b[row, s] - 1e-9 * interval:
+                    s += 1
+                    if s == segments:
+                        break
+                    t = seg_a[row, s]
+                    phase = 0
+                else:
+                    h = min(h_try, seg_b[row, s] - t)
+                    phase = 1
+
+
+def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
+    """Drive tables of one input profile for :func:`dopri_runs`.
+
+    Parameters
+    ----------
+    drive : callable
+        ``drive(t)`` for times ``t`` (n,) [s]: the drive (n, 9) (wind, commanded acceleration
+        and velocity, earth axes), right-continuous (the value after a jump at ``t``).
+    breakpoints : iterable of float
+        Times at which the drive jumps or kinks. [s]
+    t_end, interval : float
+        Run length and sampling interval. [s]
+    step : float
+        Largest sampling step of the tables. [s]
+
+    Returns
+    -------
+    dict
+        ``a``, ``b``, ``h`` (segments' start, end, table step [s]), ``n``, ``offset``
+        (intervals and first row of each segment's table), ``values`` (rows, 9), ``nodes``
+        (the drive at the samples, (n_out, 9)).
+    """
+    inner = sorted({float(b) for b in breakpoints if 0.0 < b < t_end * (1 - 1e-12)})
+    edges = [0.0, *inner, float(t_end)]
+    a, b, h, n, offset, values = [], [], [], [], [], []
+    rows = 0
+    for start, end in zip(edges[:-1], edges[1:], strict=True):
+        count = max(1, int(np.ceil((end - start) / step - 1e-9)))
+        times = start + (end - start) * np.arange(count + 1) / count
+        times[-1] = end - 1e-9 * (end - start)  # just before the end: the left limit
+        a.append(start), b.append(end), h.append((end - start) / count), n.append(count)
+        offset.append(rows)
+        values.append(np.asarray(drive(times), float))
+        rows += count + 1
+    n_out = int(round(t_end / interval)) + 1
+    return {"a": np.array(a), "b": np.array(b), "h": np.array(h), "n": np.array(n),
+            "offset": np.array(offset), "values": np.concatenate(values),
+            "nodes": np.asarray(drive(np.arange(n_out) * interval), float)}
+
+
+def stack_drives(profiles):
+    """Padded arrays of several :func:`tabulate_drive` profiles, for :func:`dopri_runs`."""
+    count = len(profiles)
+    segments = max(len(p["a"]) for p in profiles)
+    rows = max(len(p["values"]) for p in profiles)
+    samples = max(len(p["nodes"]) for p in profiles)
+    out = {"a": np.zeros((count, segments)), "b": np.zeros((count, segments)),
+           "h": np.ones((count, segments)), "n": np.ones((count, segments), dtype=np.int64),
+           "offset": np.zeros((count, segments), dtype=np.int64),
+           "segments": np.array([len(p["a"]) for p in profiles], dtype=np.int64),
+           "values": np.zeros((count, rows, 9)), "nodes": np.zeros((count, samples, 9))}
+    for k, p in enumerate(profiles):
+        m = len(p["a"])
+        for key in ("a", "b", "h", "n", "offset"):
+            out[key][k, :m] = p[key]
+        out["values"][k, :len(p["values"])] = p["values"]
+        out["nodes"][k, :len(p["nodes"])] = p["nodes"]
+    return out
+
+
+#: What the kernel's arrays must be: one compiled signature (a read-only or non-contiguous
+#: array would compile the kernel, and the equations in it, a second time).
+_KERNEL_ARRAYS = ("C", "W", "A")
+
+
+def _plain(values):
+    """A C-contiguous, writeable float64 array (a copy when needed)."""
+    return np.require(values, np.float64, _KERNEL_ARRAYS)
+
+
+def worker_count():
+    """Threads used for a batch: the processors this process may run on."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rtol=RTOL,
+              atol=ATOL, workers=None):
+    """Integrate runs with :func:`dopri_runs`, blocks of runs on a pool of threads.
+
+    Parameters
+    ----------
+    x0 : ndarray, shape (runs, N)
+        Initial states.
+    P : ndarray, shape (runs, NP)
+        Parameter vectors.
+    drives : dict
+        :func:`stack_drives` of the runs' drive profiles.
+    profile : ndarray of int, shape (runs,)
+        Drive profile of each run.
+    interval : float
+        Sampling interval of the histories. [s]
+    n_out : int
+        Samples (the first at t = 0).
+    tables : tuple of ndarray
+        :meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`.
+    step : float, optional
+        Fixed step [s]; default adaptive.
+    rtol, atol : float
+        Tolerances of the adaptive step (SI units of the states). [-], [SI]
+    workers : int, optional
+        Threads (default :func:`worker_count`).
+
+    Returns
+    -------
+    states, rates : ndarray, shape (runs, n_out, N)
+        States and their derivatives at the samples.
+    info : ndarray, shape (runs, n_out, N_INFO)
+    flags : ndarray of int, shape (runs,)
+    stop_time : ndarray, shape (runs,)
+        When a run stopped (NaN if it did not). [s]
+    """
+    runs = x0.shape[0]
+    states = np.full((runs, n_out, N_STATES), np.nan)
+    rates = np.full((runs, n_out, N_STATES), np.nan)
+    info = np.full((runs, n_out, N_INFO), np.nan)
+    flags = np.zeros(runs, dtype=np.int64)
+    stop_time = np.full(runs, np.nan)
+    x0, P = _plain(x0), _plain(P)
+    profile = np.require(profile, np.int64, _KERNEL_ARRAYS)
+    fixed = 0.0 if step is None else float(step)
+
+    def block(start):
+        stop = min(start + BLOCK, runs)
+        dopri_runs(x0[start:stop], P[start:stop], drives["a"], drives["b"], drives["h"],
+                   drives["n"], drives["offset"], drives["segments"], drives["values"],
+                   drives["nodes"], profile[start:stop], float(interval), fixed, float(rtol),
+                   float(atol), _C, _A, _E, _P, *tables, states[start:stop],
+                   info[start:stop], rates[start:stop], flags[start:stop],
+                   stop_time[start:stop])
+
+    starts = range(0, runs, BLOCK)
+    workers = min(worker_count() if workers is None else int(workers), len(starts))
+    if workers <= 1:
+        for start in starts:
+            block(start)
+    else:
+        with ThreadPoolExecutor(max_workers=workers) as pool:
+            list(pool.map(block, starts))
+    return states, rates, info, flags, stop_time
+
+
+def evaluate_many(states, P, drives, tables):
+    """The equations at many states at once (the integration kernel with no step).
+
+    Parameters
+    ----------
+    states : ndarray, shape (n, N)
+    P : ndarray, shape (n, NP) or (NP,)
+        Parameter vectors (one for all).
+    drives : ndarray, shape (n, 9) or (9,)
+        Drive at each state (one for all).
+    tables : tuple of ndarray
+
+    Returns
+    -------
+    rates : ndarray, shape (n, N)
+    info : ndarray, shape (n, N_INFO)
+    flags : ndarray of int, shape (n,)
+    """
+    states = _plain(np.atleast_2d(states))
+    n = states.shape[0]
+    P = _plain(np.broadcast_to(P, (n, np.shape(P)[-1])))
+    nodes = _plain(np.broadcast_to(drives, (n, 9))[:, None, :])
+    none = np.zeros((n, 1))
+    rates = np.empty((n, 1, N_STATES))
+    info = np.empty((n, 1, N_INFO))
+    flags = np.zeros(n, dtype=np.int64)
+    dopri_runs(states, P, none, none, none + 1.0, np.ones((n, 1), dtype=np.int64),
+               np.zeros((n, 1), dtype=np.int64), np.zeros(n, dtype=np.int64),
+               np.zeros((n, 2, 9)), nodes, np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL,
+               ATOL, _C, _A, _E, _P, *tables, np.empty((n, 1, N_STATES)), info, rates, flags,
+               np.empty(n))
+    return rates[:, 0], info[:, 0], flags

@@ -38,7 +38,7 @@ from slingloads.errors import InputError
 from slingloads.models.aero_tables import Table1D
 from slingloads.models.aerodynamics import Fin
 from slingloads.models.multibody._jit import jit
-from slingloads.models.multibody.lookup import EDGE, interp1, interp2
+from slingloads.models.multibody.lookup import bilinear, cell, interp1
 
 #: Normal axes a lifting surface may have, and the sign that makes its angle positive.
 NORMAL_AXES = {"y": (1, -1.0), "z": (2, 1.0)}
@@ -186,17 +186,14 @@ def fuselage_loads(u0, u1, u2, half_rho, area, length, alpha_grid, beta_grid, co
     side = math.sqrt(d0 * d0 + d2 * d2)
     beta = math.atan2(-d1, side if d0 >= 0.0 else -side)
     alpha = math.atan(d2 / d0) if d0 != 0.0 else (0.5 * math.pi if d2 > 0 else -0.5 * math.pi)
-    na, nb = alpha_grid.shape[0], beta_grid.shape[0]
-    ta = EDGE * (alpha_grid[na - 1] - alpha_grid[0])
-    tb = EDGE * (beta_grid[nb - 1] - beta_grid[0])
-    in_a = alpha >= alpha_grid[0] - ta and alpha <= alpha_grid[na - 1] + ta
-    in_b = beta >= beta_grid[0] - tb and beta <= beta_grid[nb - 1] + tb
-    c0, _ = interp2(alpha_grid, beta_grid, coeffs, 0, alpha, beta)
-    c1, _ = interp2(alpha_grid, beta_grid, coeffs, 1, alpha, beta)
-    c2, _ = interp2(alpha_grid, beta_grid, coeffs, 2, alpha, beta)
-    m0, _ = interp2(alpha_grid, beta_grid, coeffs, 3, alpha, beta)
-    m1, _ = interp2(alpha_grid, beta_grid, coeffs, 4, alpha, beta)
-    m2, _ = interp2(alpha_grid, beta_grid, coeffs, 5, alpha, beta)
+    i, wa, in_a = cell(alpha_grid, alpha)
+    j, wb, in_b = cell(beta_grid, beta)
+    c0 = bilinear(coeffs, 0, i, j, wa, wb)
+    c1 = bilinear(coeffs, 1, i, j, wa, wb)
+    c2 = bilinear(coeffs, 2, i, j, wa, wb)
+    m0 = bilinear(coeffs, 3, i, j, wa, wb)
+    m1 = bilinear(coeffs, 4, i, j, wa, wb)
+    m2 = bilinear(coeffs, 5, i, j, wa, wb)
     ca, sa, cb, sb = math.cos(alpha), math.sin(alpha), math.cos(beta), math.sin(beta)
     cfx, cfy, cfz = to_airframe(force_frame, True, c0, c1, c2, ca, sa, cb, sb)
     cmx, cmy, cmz = to_airframe(moment_frame, False, m0, m1, m2, ca, sa, cb, sb)

@@ -18,8 +18,9 @@ EDGE = 1e-9
 
 
 @jit
-def _cell(grid, x):
-    """Index i with grid[i] <= x <= grid[i + 1], the weight of grid[i + 1], and inside."""
+def cell(grid, x):
+    """Index i with grid[i] <= x <= grid[i + 1], the weight of grid[i + 1], and inside (for
+    several lookups at the same point, :func:`bilinear`)."""
     n = grid.shape[0]
     lo, hi = grid[0], grid[n - 1]
     tol = EDGE * (hi - lo)
@@ -29,7 +30,12 @@ def _cell(grid, x):
         return 0, 0.0, True
     if x >= hi:
         return n - 2, 1.0, True
-    a, b = 0, n - 1
+    # guess where the point would lie on an evenly spaced grid (right at once for the even
+    # sample tables), else bisect the side of the guess that holds it
+    i = min(max(int((x - lo) / (hi - lo) * (n - 1)), 0), n - 2)
+    if grid[i] <= x <= grid[i + 1]:
+        return i, (x - grid[i]) / (grid[i + 1] - grid[i]), True
+    a, b = (0, i) if grid[i] > x else (i + 1, n - 1)
     while b - a > 1:
         m = (a + b) // 2
         if grid[m] <= x:
@@ -42,22 +48,21 @@ def _cell(grid, x):
 @jit
 def interp1(grid, values, x):
     """Linear interpolation of ``values`` on ``grid`` at ``x``; returns (value, inside)."""
-    i, w, inside = _cell(grid, x)
+    i, w, inside = cell(grid, x)
     return values[i] + w * (values[i + 1] - values[i]), inside
 
 
 @jit
-def interp2(grid_a, grid_b, values, k, a, b):
-    """Bilinear interpolation of ``values[k]`` (shape (n, na, nb)) at (a, b); (value, inside)."""
-    i, wa, in_a = _cell(grid_a, a)
-    j, wb, in_b = _cell(grid_b, b)
+def bilinear(values, k, i, j, wa, wb):
+    """Bilinear interpolation of ``values[k]`` (shape (n, na, nb)) in the cell (i, j) with
+    weights (wa, wb) of :func:`cell`."""
     v00 = values[k, i, j]
     v01 = values[k, i, j + 1]
     v10 = values[k, i + 1, j]
     v11 = values[k, i + 1, j + 1]
     low = v00 + wb * (v01 - v00)
     high = v10 + wb * (v11 - v10)
-    return low + wa * (high - low), in_a and in_b
+    return low + wa * (high - low)
 
 
 def table_arrays(table, names):
@@ -78,9 +83,14 @@ def table_arrays(table, names):
     """
     if table is None:
         return np.array([-np.pi, np.pi]), np.zeros(2)
+    # writeable contiguous float64 copies: one compiled signature for every table
     if hasattr(table, "beta"):
-        values = np.stack([table.coefficients[n] for n in names]).astype(float)
-        return (np.ascontiguousarray(table.alpha), np.ascontiguousarray(table.beta),
-                np.ascontiguousarray(values))
-    return (np.ascontiguousarray(table.angle),
-            np.ascontiguousarray(table.coefficients[names[0]], dtype=float))
+        values = np.stack([table.coefficients[n] for n in names])
+        return (_plain(table.alpha), _plain(table.beta), _plain(values))
+    return _plain(table.angle), _plain(table.coefficients[names[0]])
+
+
+def _plain(values):
+    """A writeable, C-contiguous float64 copy (read-only arrays would compile the kernels a
+    second time)."""
+    return np.array(values, dtype=np.float64, order="C", copy=True)

@@ -102,18 +102,30 @@ def euler_angles(quaternion):
     return yaw, pitch, roll
 
 
+def quaternion_product(a, b):
+    """a (x) b for quaternions of shape (..., 4) (broadcasting)."""
+    a0, a1, a2, a3 = np.moveaxis(np.asarray(a, float), -1, 0)
+    b0, b1, b2, b3 = np.moveaxis(np.asarray(b, float), -1, 0)
+    return np.stack([a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3,
+                     a0 * b1 + a1 * b0 + a2 * b3 - a3 * b2,
+                     a0 * b2 - a1 * b3 + a2 * b0 + a3 * b1,
+                     a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0], axis=-1)
+
+
+def conjugate(quaternion):
+    """Conjugate (inverse of a unit quaternion), shape (..., 4)."""
+    return np.asarray(quaternion, float) * np.array([1.0, -1.0, -1.0, -1.0])
+
+
 def small_rotation(quaternion, rotation):
-    """q (x) dq for a small rotation vector ``rotation`` [rad] in body axes (exact map)."""
+    """q (x) dq for rotation vectors ``rotation`` (..., 3) [rad] in body axes (exact map;
+    broadcasts over the rotations)."""
     phi = np.asarray(rotation, float)
-    angle = np.linalg.norm(phi)
+    angle = np.linalg.norm(phi, axis=-1, keepdims=True)
     half = 0.5 * angle
-    axis = phi / angle if angle > 0 else np.zeros(3)
-    d = np.concatenate([[np.cos(half)], np.sin(half) * axis])
-    a = np.asarray(quaternion, float)
-    return np.array([a[0] * d[0] - a[1] * d[1] - a[2] * d[2] - a[3] * d[3],
-                     a[0] * d[1] + a[1] * d[0] + a[2] * d[3] - a[3] * d[2],
-                     a[0] * d[2] - a[1] * d[3] + a[2] * d[0] + a[3] * d[1],
-                     a[0] * d[3] + a[1] * d[2] - a[2] * d[1] + a[3] * d[0]])
+    axis = np.divide(phi, angle, out=np.zeros_like(phi), where=angle > 0)
+    d = np.concatenate([np.cos(half), np.sin(half) * axis], axis=-1)
+    return quaternion_product(quaternion, d)
 
 
 # ----------------------------------------------------------------------- mass properties

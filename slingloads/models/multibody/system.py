@@ -10,7 +10,9 @@ to the equations relative to the CG.
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -194,15 +196,27 @@ class SlingSystem:
         """"hinged", "quasi-static" or "none"."""
         return "none" if self.parachute is None else self.parachute.kind
 
+    @cached_property
+    def drag_area(self):
+        """Rough drag area of the fuselage (CD at zero angles) and the parachute (CD(0)), to
+        start a trim at a sensible swing angle. [m^2]"""
+        area = 0.0
+        if self.fuselage is not None:
+            area += self.fuselage.area * float(self.fuselage.drag_coefficient(0.0, 0.0))
+        if self.parachute is not None:
+            area += float(self.parachute.parachute.drag_area(0.0))
+        return area
+
     def cable_check(self, margin=CABLE_MARGIN):
         """The 20 % rule: carrier cable against the parachute line (None without parachute)."""
         if self.parachute is None:
             return None
         return check_cable_length(self.cable.length, self.parachute.line_length, margin)
 
-    def warnings(self):
-        """Rules that are broken but do not prevent a run (the report shows them)."""
-        check = self.cable_check()
+    def warnings(self, margin=CABLE_MARGIN):
+        """Rules that are broken but do not prevent a run (the report shows them): the cable
+        shorter than (1 + ``margin``) x the parachute line."""
+        check = self.cable_check(margin)
         return [] if check is None or check.ok else [check.message]
 
     def with_(self, **changes):
@@ -211,7 +225,7 @@ class SlingSystem:
 
     # ------------------------------------------------------------------ for the equations
     def parameters(self, pull=(0.0, 0.0, 0.0), locks=(False, False, False)):
-        """Parameter vector of the compiled equations.
+        """Parameter vector of the compiled equations (a new array).
 
         Parameters
         ----------
@@ -222,6 +236,17 @@ class SlingSystem:
             Restrictions for verification: no CG acceleration, no roll/pitch acceleration, no
             yaw acceleration.
         """
+        p = self._base_parameters.copy()
+        if isinstance(self.carrier, FreeCarrier):
+            p[_INDEX["pull_X"]:_INDEX["pull_X"] + 3] = np.asarray(pull, float).reshape(3)
+        p[_INDEX["lock_translation"]] = float(locks[0])
+        p[_INDEX["lock_tilt"]] = float(locks[1])
+        p[_INDEX["lock_yaw"]] = float(locks[2])
+        return p
+
+    @cached_property
+    def _base_parameters(self):
+        """The parameter vector without pull and locks (computed once per system)."""
         p = np.zeros(N_PARAMETERS)
 
         def put(name, values):
@@ -269,19 +294,19 @@ class SlingSystem:
             put("carrier_mass", self.carrier.mass)
             put("carrier_drag_area", self.carrier.drag_area)
             put("carrier_gain", self.carrier.speed_gain)
-            put("pull_X", pull)
         put("density", self.density)
         put("gravity", self.gravity)
         put("v_cut", self.aero_cutoff)
-        put("lock_translation", float(locks[0]))
-        put("lock_tilt", float(locks[1]))
-        put("lock_yaw", float(locks[2]))
         return p
 
     def tables(self):
         """Aerodynamic tables for the equations: fuselage (alpha, beta, coefficients in the
         table's declared frames, whose codes are parameters), fin, horizontal tail and
-        parachute CD (breakpoints, values)."""
+        parachute CD (breakpoints, values), computed once per system."""
+        return self._tables
+
+    @cached_property
+    def _tables(self):
         fus = table_arrays(None if self.fuselage is None else self.fuselage.table,
                            () if self.fuselage is None else self.fuselage.columns)
         if self.fuselage is None:
@@ -293,9 +318,13 @@ class SlingSystem:
         return fus + fin + tail + cd
 
     def table_key(self):
-        """Identity of the tables (runs with the same key can share one batch)."""
-        parts = (self.fuselage.table if self.fuselage is not None else None,
-                 self.fin.table if self.fin is not None else None,
-                 self.tail.table if self.tail is not None else None,
-                 self.parachute.parachute.cd if self.parachute is not None else None)
-        return tuple(id(p) for p in parts)
+        """Identity of the tables' contents (runs with the same key share one batch)."""
+        return self._table_key
+
+    @cached_property
+    def _table_key(self):
+        digest = hashlib.sha1()
+        for array in self.tables():
+            digest.update(str(array.shape).encode())
+            digest.update(array.tobytes())
+        return digest.hexdigest()

@@ -1,0 +1,404 @@
+"""The campaign: definition, execution and results (paper sections 4.4, 4.5, 5 and 6).
+
+:class:`Campaign` gathers the base towed system and its free carrier
+(:class:`~.setup.CampaignSetup`), the matrix (full factorial of :class:`~.matrix.Factors`, or
+listed rows), the run settings, the selection criteria, the margin of the loads hand-off, the
+stability-map grid and the study without parachute. :func:`run_campaign` executes it
+(:mod:`.execution`: local processes or a Dask cluster, a store of finished runs) and returns a
+:class:`CampaignResult`: the tidy metrics table (one row per run), the selection, the
+sensitivity tables, the stability map, the 1.0 x neutral-area verdicts (1-DOF and multibody),
+the speed limits without parachute and the envelope handed to the loads.
+
+Method and choices: ``docs/campaign.md``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from slingloads.analyses.chute_sizing import run_yaw
+from slingloads.analyses.multibody import linearise, trim
+from slingloads.errors import InputError
+from slingloads.models.gusts import standard_gusts
+from slingloads.models.multibody.integrator import ATOL, RTOL
+from slingloads.models.yaw_dynamics import SolverSettings
+
+from .execution import MemoryStore, execute, make_executor
+from .keys import KeyMaker
+from .loads_envelope import MARGIN, dynamics_envelope
+from .matrix import CONDITION_COLUMNS, MANOEUVRES, CampaignMatrix, Factors
+from .metrics import HISTORY_LABELS, ordered
+from .no_parachute import NoParachuteResult, NoParachuteStudy, ramp_verdict, speed_limits
+from .selection import SelectionCriteria, select_parachute
+from .sensitivity import carrier_comparison, sensitivity_tables
+from .setup import CampaignSetup, neutral_area_of, yaw_model_of
+from .stability_map import MapSettings, stability_map
+
+#: Run length and step of the 1-DOF check of the neutral area (the sizing's defaults). [s]
+ONE_DOF_TIME, ONE_DOF_STEP = 120.0, 0.1
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    """Length, RK4 step and sampling interval of every run of the matrix.
+
+    Parameters
+    ----------
+    t_end : float
+        (paper: 60 s) [s]
+    dt : float
+        [s]
+    output_interval : float
+        A whole multiple of ``dt``. [s]
+    rtol, atol : float
+        Tolerances of the adaptive step, used when ``dt`` is None (the multibody defaults).
+        [-], [SI]
+    """
+
+    t_end: float = 60.0
+    dt: float | None = 0.01
+    output_interval: float = 0.1
+    rtol: float = RTOL
+    atol: float = ATOL
+
+    def __post_init__(self):
+        from slingloads.analyses.multibody.simulate import _check_settings
+
+        dt = None if self.dt is None else float(self.dt)
+        _check_settings(float(self.t_end), dt, float(self.output_interval), float(self.rtol),
+                        float(self.atol))
+        for name in ("t_end", "output_interval", "rtol", "atol"):
+            object.__setattr__(self, name, float(getattr(self, name)))
+        object.__setattr__(self, "dt", dt)
+
+    def as_dict(self, t_end=None):
+        return {"t_end": self.t_end if t_end is None else float(t_end), "dt": self.dt,
+                "output_interval": self.output_interval, "rtol": self.rtol,
+                "atol": self.atol}
+
+
+@dataclass(frozen=True, eq=False)
+class Campaign:
+    """Everything a campaign needs (module notes), SI.
+
+    Parameters
+    ----------
+    setup : CampaignSetup
+    factors : Factors
+        The full-factorial matrix (ignored when ``rows`` is given).
+    rows : pandas.DataFrame, optional
+        Listed rows instead (columns of :data:`~.matrix.ROW_FACTORS`).
+    settings : RunSettings
+    criteria : SelectionCriteria
+    margin : float
+        Margin of the loads hand-off, >= 1. [-]
+    stability : MapSettings or None
+        Grid of the stability map (None: no map).
+    no_parachute : NoParachuteStudy or None
+    chosen_area_factor : float, optional
+        The parachute handed to the loads (default: the recommended, else the smallest
+        stable). [-]
+    neutral_airspeed : float, optional
+        Airspeed of the neutral-area sizing (default: the matrix's highest; the area does not
+        depend on it at zero angle of attack). [m/s]
+    name : str
+
+    Attributes
+    ----------
+    neutral : NeutralAreaResult
+        The neutral static area sizing the area factors multiply (computed on construction).
+    matrix : CampaignMatrix
+        The runs.
+    """
+
+    setup: CampaignSetup
+    factors: Factors = field(default_factory=Factors)
+    rows: pd.DataFrame | None = None
+    settings: RunSettings = field(default_factory=RunSettings)
+    criteria: SelectionCriteria = field(default_factory=SelectionCriteria)
+    margin: float = MARGIN
+    stability: MapSettings | None = field(default_factory=MapSettings)
+    no_parachute: NoParachuteStudy | None = None
+    chosen_area_factor: float | None = None
+    neutral_airspeed: float | None = None
+    name: str = "campaign"
+
+    def __post_init__(self):
+        if not isinstance(self.setup, CampaignSetup):
+            raise InputError("a campaign needs a CampaignSetup", type(self.setup).__name__)
+        if self.rows is None and not isinstance(self.factors, Factors):
+            raise InputError("a campaign needs Factors or listed rows",
+                             type(self.factors).__name__)
+        for name, kind in (("settings", RunSettings), ("criteria", SelectionCriteria)):
+            if not isinstance(getattr(self, name), kind):
+                raise InputError(f"the campaign's {name} must be a {kind.__name__}",
+                                 type(getattr(self, name)).__name__)
+        if self.stability is not None and not isinstance(self.stability, MapSettings):
+            raise InputError("the stability map settings must be MapSettings",
+                             type(self.stability).__name__)
+        if self.no_parachute is not None and not isinstance(self.no_parachute,
+                                                            NoParachuteStudy):
+            raise InputError("the study without parachute must be a NoParachuteStudy",
+                             type(self.no_parachute).__name__)
+        margin = float(self.margin)
+        if not np.isfinite(margin) or margin < 1:
+            raise InputError("the margin on the dynamics' extremes must be >= 1", self.margin)
+        object.__setattr__(self, "margin", margin)
+        speeds = (self.rows["airspeed EAS [m/s]"] if self.rows is not None
+                  else self.factors.airspeeds)
+        speed = self.neutral_airspeed or float(np.max(np.asarray(speeds, float)))
+        neutral = neutral_area_of(self.setup.system, speed)
+        if neutral.already_stable:
+            raise InputError("fuselage and fin are already statically stable in yaw (neutral "
+                             "parachute area not positive): there is no parachute to size",
+                             neutral.area)
+        object.__setattr__(self, "neutral", neutral)
+        if self.rows is not None:
+            matrix = CampaignMatrix.from_rows(self.rows, neutral.area, self.factors.masses,
+                                              self.setup.base_mass)
+        else:
+            matrix = CampaignMatrix.from_factors(self.factors, neutral.area,
+                                                 self.setup.base_mass)
+        object.__setattr__(self, "matrix", matrix)
+        self._check_geometry()
+
+    def _check_geometry(self):
+        """Every cable length must clear the parachute (the system refuses the others)."""
+        first = self.matrix.frame.iloc[0]
+        for length in self.matrix.frame["cable length [m]"].unique():
+            row = first.copy()
+            row["cable length [m]"] = length
+            self.setup.system_for(row)
+
+    @property
+    def size(self):
+        """Runs of the matrix."""
+        return len(self.matrix)
+
+    def run_jobs(self, keys):
+        """(run ids, jobs) of the matrix: jobs (key, system, manoeuvre), one system object per
+        distinct area and condition, in matrix order."""
+        systems, manoeuvres, jobs, ids = {}, {}, [], []
+        for _, row in self.matrix.frame.iterrows():
+            cond = tuple(row[c] for c in ("area factor [-]", "airspeed EAS [m/s]", "mass case",
+                                          "density altitude [m]", "cable length [m]",
+                                          "carrier"))
+            if cond not in systems:
+                systems[cond] = self.setup.system_for(row)
+            system = systems[cond]
+            mkey = (row["manoeuvre"], row["airspeed EAS [m/s]"], row["density altitude [m]"])
+            if mkey not in manoeuvres:
+                manoeuvres[mkey] = MANOEUVRES[row["manoeuvre"]].build(
+                    row["airspeed EAS [m/s]"], row["density altitude [m]"])
+            manoeuvre = manoeuvres[mkey]
+            jobs.append((keys.key(system, manoeuvre), system, manoeuvre))
+            ids.append(row["run"])
+        return ids, jobs
+
+
+@dataclass(frozen=True, eq=False)
+class CampaignResult:
+    """Results of a campaign (module notes).
+
+    Attributes
+    ----------
+    campaign : Campaign
+    metrics : pandas.DataFrame
+        One row per run: the matrix's columns, then the metrics (:mod:`.metrics`), then
+        ``stable`` and ``meets damping criterion``.
+    keys : dict
+        Run id -> key in the store.
+    store : MemoryStore or compatible
+        Where the histories are.
+    execution : ExecutionReport
+    selection : Selection
+    envelope : DynamicsEnvelope or None
+        None when no area is stable everywhere and none was chosen.
+    sensitivity : dict
+        Factor -> table.
+    carrier : pandas.DataFrame or None
+        Carrier free against frozen, paired runs.
+    stability : StabilityMap or None
+    neutral_check : pandas.DataFrame
+        The 1.0 x neutral area: 1-DOF verdicts and the multibody verdict per condition.
+    no_parachute : NoParachuteResult or None
+    """
+
+    campaign: Campaign
+    metrics: pd.DataFrame
+    keys: dict
+    store: object
+    execution: object
+    selection: object
+    envelope: object
+    sensitivity: dict
+    carrier: pd.DataFrame | None
+    stability: object
+    neutral_check: pd.DataFrame
+    no_parachute: NoParachuteResult | None
+
+    @property
+    def neutral(self):
+        """The neutral static area sizing (NeutralAreaResult)."""
+        return self.campaign.neutral
+
+    @property
+    def chosen_area_factor(self):
+        """The area factor handed to the loads (NaN when none). [-]"""
+        return np.nan if self.envelope is None else self.envelope.area_factor
+
+    def history(self, run):
+        """Time histories of one run (a matrix run id, or (helicopter, target [m/s]) of the
+        study without parachute), unit-labelled columns (angles in degrees)."""
+        key = self.keys.get(run)
+        if key is None and self.no_parachute is not None:
+            key = self.no_parachute.keys.get(run)
+        if key is None:
+            raise InputError("unknown run", run)
+        record = self.store.get(key)
+        if record is None or record[1] is None:
+            raise InputError("the histories of this run were not kept", run)
+        return pd.DataFrame(record[1], columns=list(HISTORY_LABELS))
+
+
+def _metrics_frame(matrix, keys, store, criteria):
+    from .selection import damped_runs, stable_runs
+
+    records = [ordered(store.get(keys[run])[0]) for run in matrix.frame["run"]]
+    frame = pd.concat([matrix.frame.reset_index(drop=True), pd.DataFrame(records)], axis=1)
+    frame["stable"] = stable_runs(frame)
+    frame["meets damping criterion"] = damped_runs(frame, criteria)
+    return frame
+
+
+def neutral_check(campaign, metrics):
+    """The 1.0 x neutral area in the 1-DOF model and in the multibody model (module notes).
+
+    The 1-DOF verdicts come from :func:`~slingloads.analyses.chute_sizing.run_yaw` at the
+    sizing airspeed (the matrix's highest) and first density altitude under the standard
+    30 ft/s lateral gusts (120 s, step 0.1 s); the multibody verdict of every condition of the
+    matrix from its eigenvalues at exactly the neutral area, and from its runs when the matrix
+    has factor 1.
+    """
+    m = campaign.matrix
+    speed = float(m.frame["airspeed EAS [m/s]"].max())
+    altitude = float(m.frame["density altitude [m]"].iloc[0])
+    model = yaw_model_of(campaign.setup.system, speed, altitude)
+    runs = run_yaw(model, campaign.neutral.area, standard_gusts(),
+                   SolverSettings(ONE_DOF_TIME, ONE_DOF_STEP)).to_frame()
+    rows = [{"model": "1-DOF yaw", "condition": f"{speed:.4g} m/s EAS, {altitude:.4g} m",
+             "test": f"lateral gust {g}", "verdict": v,
+             "peak beta [deg]": b, "damping ratio [-]": z}
+            for g, v, b, z in zip(runs["gust"], runs["verdict"], runs["peak beta [deg]"],
+                                  runs["damping ratio linear [-]"], strict=True)]
+    at_one = metrics[np.isclose(metrics["area factor [-]"], 1.0)]
+    for _, cond in m.conditions().iterrows():
+        row = {**cond.to_dict(), "run": "neutral", "area factor [-]": 1.0,
+               "area [m^2]": campaign.neutral.area}
+        point = trim(campaign.setup.system_for(row))
+        verdict = linearise(point).verdict() if point.converged else "no trim"
+        text = (f"{cond['airspeed EAS [m/s]']:.4g} m/s EAS, {cond['mass case']}, "
+                f"{cond['density altitude [m]']:.4g} m, cable {cond['cable length [m]']:.4g} m, "
+                f"{cond['carrier']} carrier")
+        rows.append({"model": "multibody", "condition": text, "test": "eigenvalues",
+                     "verdict": verdict})
+        same = at_one
+        for column in CONDITION_COLUMNS:
+            same = same[same[column] == cond[column]]
+        for _, r in same.iterrows():
+            rows.append({"model": "multibody", "condition": text, "test": r["manoeuvre"],
+                         "verdict": "stable" if r["stable"] else (
+                             r["response verdict"] if r["linear verdict"] == "stable"
+                             else f"{r['response verdict']} (eigenvalues "
+                                  f"{r['linear verdict']})"),
+                         "peak beta [deg]": r["beta peak [deg]"],
+                         "damping ratio [-]": r["yaw mode damping ratio [-]"]})
+    return pd.DataFrame(rows)
+
+
+def _map_row(campaign):
+    frame = campaign.matrix.frame
+    carriers = list(dict.fromkeys(frame["carrier"]))
+    return {"run": "map", "mass case": frame["mass case"].iloc[0],
+            "mass [kg]": float(frame["mass [kg]"].iloc[0]),
+            "cable length [m]": float(frame["cable length [m]"].iloc[0]),
+            "carrier": "frozen" if "frozen" in carriers else carriers[0]}
+
+
+def _map_settings(campaign):
+    s = campaign.stability
+    frame = campaign.matrix.frame
+    factors = s.area_factors or tuple(np.linspace(0.5 * frame["area factor [-]"].min(),
+                                                  frame["area factor [-]"].max(), 11))
+    lo, hi = frame["airspeed EAS [m/s]"].min(), frame["airspeed EAS [m/s]"].max()
+    speeds = s.airspeeds or (tuple(np.linspace(lo, hi, 7)) if hi > lo else (lo,))
+    altitudes = s.density_altitudes or tuple(frame["density altitude [m]"].unique())
+    return MapSettings(factors, speeds, altitudes, s.refine)
+
+
+def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_size=None):
+    """Execute a campaign (module notes).
+
+    Parameters
+    ----------
+    campaign : Campaign
+    executor : InProcess, LocalProcesses or DaskCluster, optional
+        (default :func:`~.execution.make_executor` for the campaign's size). Closed at the end.
+    store : MemoryStore or compatible, optional
+        Finished runs (default: a new :class:`~.execution.MemoryStore`). Runs already in it are
+        not run again.
+    progress : callable, optional
+        ``progress(done, total)``.
+    batch_size : int, optional
+
+    Returns
+    -------
+    CampaignResult
+    """
+    if not isinstance(campaign, Campaign):
+        raise InputError("run_campaign needs a Campaign", type(campaign).__name__)
+    store = MemoryStore() if store is None else store
+    keys = KeyMaker(campaign.settings.as_dict())
+    ids, jobs = campaign.run_jobs(keys)
+    groups = [(campaign.settings.as_dict(), jobs)]
+    chute_jobs = []
+    if campaign.no_parachute is not None:
+        ramp = campaign.settings.as_dict(campaign.no_parachute.run_length)
+        ramp_keys = KeyMaker(ramp)
+        chute_jobs = [(name, target, ramp_keys.key(system, m), system, m)
+                      for name, target, system, m in campaign.no_parachute.jobs()]
+        groups.append((ramp, [(k, s, m) for _, _, k, s, m in chute_jobs]))
+    if executor is None:
+        executor = make_executor(runs=len(jobs) + len(chute_jobs))
+    with executor:
+        report = execute(groups, store, executor, size=batch_size, progress=progress)
+    run_keys = dict(zip(ids, (j[0] for j in jobs), strict=True))
+    metrics = _metrics_frame(campaign.matrix, run_keys, store, campaign.criteria)
+    selection = select_parachute(metrics, campaign.criteria, campaign.neutral.area)
+    chosen = campaign.chosen_area_factor
+    if chosen is None:
+        chosen = (selection.recommended if np.isfinite(selection.recommended)
+                  else selection.smallest_stable)
+    envelope = (dynamics_envelope(metrics, chosen, campaign.margin)
+                if chosen is not None and np.isfinite(chosen) else None)
+    no_chute = None
+    if chute_jobs:
+        rows = []
+        for name, target, key, _, manoeuvre in chute_jobs:
+            record = ordered(store.get(key)[0])
+            rows.append({"helicopter": name, "ramp target [m/s]": target,
+                         "manoeuvre": manoeuvre.name,
+                         "verdict": ramp_verdict(record["response verdict"],
+                                                 record["linear verdict"]), **record})
+        runs = pd.DataFrame(rows)
+        no_chute = NoParachuteResult(runs, speed_limits(runs),
+                                     {(n, t): k for n, t, k, _, _ in chute_jobs})
+    stability = (stability_map(campaign.setup, campaign.neutral.area, _map_settings(campaign),
+                               _map_row(campaign)) if campaign.stability is not None else None)
+    return CampaignResult(
+        campaign, metrics, run_keys, store, report, selection, envelope,
+        sensitivity_tables(metrics, chosen if chosen is not None else np.nan),
+        carrier_comparison(metrics), stability, neutral_check(campaign, metrics), no_chute)

@@ -1,0 +1,262 @@
+"""The dynamics handed to the structural loads (paper section 6): a loads study whose cases
+include those the multibody campaign reached, compared with the hand-entered ones.
+
+From a :class:`~.loads_envelope.DynamicsEnvelope` (the chosen parachute's runs, with the
+margin), :func:`loads_from_dynamics` returns a copy of the loads study with
+
+* **aerodynamic envelope**: the hand-entered points kept, and the dynamics' corners and centre
+  added (ids ``DYN-CENTRE``, ``DYN-A+B+``...). A bound that the margin takes beyond the
+  fuselage or fin table is set at the table's edge and flagged (tables are never
+  extrapolated; the runs themselves stay inside them);
+* **parachute**: the chosen parachute's area in the parachute model, and line cases
+  (``LINE-AFT``, ``LINE-T+P+``...): the largest line tension x margin along the trailing
+  direction and the corners of the line-angle range, combined with every hook direction and
+  each dynamics point (:class:`~slingloads.analyses.loads.DynamicsCases`);
+* **hook cone** (``hook_source``): ``"CS-29.865"`` keeps the Study's angles (30 deg unless a
+  smaller one is justified) and raises each to the dynamics' x margin where they reach
+  further (CS 29.865: the maximum angle achievable in service, not less than 30 deg);
+  ``"dynamics"`` uses the dynamics' angles x margin (fore-and-aft and sideways about the
+  hanging vertical, an elliptical cone): the justified smaller angle;
+* **load factor**: the Study's Nz, raised to the largest tension factor x margin if the
+  dynamics exceed it.
+
+Every change is a row of :attr:`Handoff.comparison`: the hand-entered value, what the
+dynamics reached, with the margin, what the loads use.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+import pandas as pd
+
+from slingloads.analyses.loads import AeroEnvelope, DynamicsCases, LoadsStudy
+from slingloads.errors import InputError
+
+#: Sources of the loads' hook cone.
+HOOK_SOURCES = ("CS-29.865", "dynamics")
+
+
+@dataclass(frozen=True, eq=False)
+class Handoff:
+    """A loads study with the dynamics' cases, and the comparison with the hand-entered one.
+
+    Attributes
+    ----------
+    study : LoadsStudy
+    comparison : pandas.DataFrame
+        quantity, unit, hand-entered, dynamics reached, with margin, used in the loads, note.
+    envelope : DynamicsEnvelope
+    """
+
+    study: LoadsStudy
+    comparison: pd.DataFrame
+    envelope: object
+
+
+def _range(values):
+    values = np.degrees(np.asarray(values, float))
+    return f"{values.min():.4g} to {values.max():.4g}"
+
+
+def _limit(bounds, grid, what):
+    """Bounds [deg] limited to a table's range [rad], with a note when limited."""
+    lo, hi = np.degrees(grid[0]), np.degrees(grid[-1])
+    out = (max(bounds[0], lo), min(bounds[1], hi))
+    note = (f"limited to the {what} table's range [{lo:.4g}, {hi:.4g}] deg (the margin goes "
+            "beyond it; tables are never extrapolated)" if out != tuple(bounds) else "")
+    return out, note
+
+
+def _aero(study, env):
+    """The envelope with the dynamics' points, and the comparison rows."""
+    bounds = {"alpha": env.bounds("alpha"), "beta": env.bounds("beta")}
+    notes = {"alpha": [], "beta": []}
+    tables = []
+    if study.fuselage is not None:
+        tables += [("alpha", study.fuselage.table.alpha, "fuselage alpha"),
+                   ("beta", study.fuselage.table.beta, "fuselage beta")]
+    if study.fin is not None:
+        tables.append(("beta", study.fin.table.angle, "fin beta"))
+    for name, grid, what in tables:
+        bounds[name], note = _limit(bounds[name], grid, what)
+        if note:
+            notes[name].append(note)
+    ids = ("DYN-CENTRE", "DYN-A+B+", "DYN-A+B-", "DYN-A-B+", "DYN-A-B-")
+    (a0, a1), (b0, b1) = np.radians(bounds["alpha"]), np.radians(bounds["beta"])
+    alpha = np.array([0.0, a1, a1, a0, a0])
+    beta = np.array([0.0, b1, b0, b1, b0])
+    hand = study.envelope
+    clash = [i for i in ids if hand is not None and i in hand.ids]
+    if clash:
+        raise InputError("the hand-entered envelope already has a point named like a "
+                         "dynamics point", clash[0])
+    envelope = (AeroEnvelope(ids, alpha, beta) if hand is None else
+                AeroEnvelope(hand.ids + ids, np.concatenate([hand.alpha, alpha]),
+                             np.concatenate([hand.beta, beta])))
+    rows = []
+    for name in ("alpha", "beta"):
+        reached, margin, used = env.reached[name], env.bounds(name), bounds[name]
+        hand_values = None if hand is None else getattr(hand, name)
+        rows.append({"quantity": f"{name} range", "unit": "deg",
+                     "hand-entered": "none" if hand_values is None else _range(hand_values),
+                     "dynamics reached": f"{reached[0]:.4g} to {reached[1]:.4g}",
+                     "with margin": f"{margin[0]:.4g} to {margin[1]:.4g}",
+                     "used in the loads": f"hand points, and {used[0]:.4g} to {used[1]:.4g} "
+                                          "(DYN-* points)",
+                     "note": "; ".join(notes[name])})
+    return envelope, ids, rows
+
+
+def _hook(study, env, source):
+    hook = study.hook
+    k = env.margin
+    lon = max(abs(v) for v in env.reached["hub load longitudinal"])
+    lat = env.reached["hub load lateral"][1]
+    lon_k, lat_k = k * lon, k * lat
+    study_lat = np.degrees(hook.lateral)
+    study_lon = np.degrees(hook.angle)
+    if source == "dynamics":
+        angle, lateral, cone = lon_k, lat_k, "elliptical"
+        note = "the dynamics' angles x margin (the justified smaller angle), elliptical cone"
+    else:
+        angle, lateral, cone = max(study_lon, lon_k), max(study_lat, lat_k), hook.cone
+        raised = [w for w, a, b in (("fore-and-aft", study_lon, lon_k),
+                                    ("lateral", study_lat, lat_k)) if b > a]
+        note = ("CS-29.865: the Study's angles kept" if not raised else
+                f"CS-29.865: {' and '.join(raised)} angle raised to the dynamics' x margin "
+                "(the maximum angle achievable in service)")
+    if not (angle < 90 and lateral < 90):
+        raise InputError("the dynamics' hub-load angle x margin reaches 90 deg: no hook cone",
+                         max(angle, lateral))
+    nz = max(hook.nz, env.tension_factor)
+    new = replace(hook, angle=np.radians(angle), lateral_angle=(
+        np.radians(lateral) if not np.isclose(lateral, angle) else None), cone=cone, nz=nz)
+    rows = [
+        {"quantity": "hook cone, fore-and-aft angle from the vertical", "unit": "deg",
+         "hand-entered": study_lon, "dynamics reached": lon, "with margin": lon_k,
+         "used in the loads": angle, "note": note},
+        {"quantity": "hook cone, lateral angle from the vertical", "unit": "deg",
+         "hand-entered": study_lat, "dynamics reached": lat, "with margin": lat_k,
+         "used in the loads": lateral, "note": ""},
+        {"quantity": "hub load from the hanging vertical (total)", "unit": "deg",
+         "hand-entered": np.nan, "dynamics reached": env.reached["hub load from vertical"][1],
+         "with margin": np.degrees(env.hook_angle), "used in the loads": np.nan,
+         "note": "for information: the cone is taken fore-and-aft and sideways"},
+        {"quantity": "hook load factor Nz", "unit": "-", "hand-entered": hook.nz,
+         "dynamics reached": env.reached["tension / weight"][1],
+         "with margin": env.tension_factor, "used in the loads": nz,
+         "note": "the Study's Nz kept" if nz == hook.nz
+                 else "raised to the dynamics' peak tension factor x margin"},
+    ]
+    return new, rows
+
+
+def _parachute(study, env, chosen_area):
+    if study.parachute is None:
+        return None, None, [{"quantity": "parachute", "unit": "", "hand-entered": "none",
+                             "dynamics reached": f"{env.area:.4g} m^2",
+                             "with margin": np.nan, "used in the loads": "none",
+                             "note": "the loads study has no parachute ('parachute area' 0): "
+                                     "no parachute case added"}]
+    area = env.area if chosen_area is None else chosen_area
+    chute = replace(study.parachute, area=area)
+    q = study.flight.dynamic_pressure
+
+    def drag(parachute):
+        return float(np.asarray(parachute.drag(q, 0.0, opening=True)).reshape(-1)[0])
+
+    ids, theta, psi = env.line_directions()
+    cases = DynamicsCases(line_ids=ids, line_theta=theta, line_psi=psi,
+                          line_force=env.chute_drag)
+    t0, t1 = env.bounds("line theta")
+    p0, p1 = env.bounds("line psi")
+    rows = [
+        {"quantity": "parachute area", "unit": "m^2", "hand-entered": study.parachute.area,
+         "dynamics reached": env.area, "with margin": np.nan, "used in the loads": area,
+         "note": f"the chosen parachute, {env.area_factor:g} x neutral area"},
+        {"quantity": "parachute load", "unit": "N", "hand-entered": drag(study.parachute),
+         "dynamics reached": env.reached["line tension"][1], "with margin": env.chute_drag,
+         "used in the loads": env.chute_drag,
+         "note": f"hand-entered: the parachute model's drag at the loads' airspeed (with the "
+                 f"chosen area: {drag(chute):.4g} N, on the 'parachute on' cases); with "
+                 f"margin: on the LINE-* cases"},
+        {"quantity": "parachute line direction", "unit": "deg",
+         "hand-entered": study.chute_line,
+         "dynamics reached": (f"theta {env.reached['line theta'][0]:.4g} to "
+                              f"{env.reached['line theta'][1]:.4g}, psi "
+                              f"{env.reached['line psi'][0]:.4g} to "
+                              f"{env.reached['line psi'][1]:.4g}"),
+         "with margin": f"theta {t0:.4g} to {t1:.4g}, psi {p0:.4g} to {p1:.4g}",
+         "used in the loads": ", ".join(ids),
+         "note": "trailing direction and the corners of the range"},
+    ]
+    return chute, cases, rows
+
+
+def loads_from_dynamics(study, envelope, hook_source="CS-29.865", chosen_area=None):
+    """The loads study with the dynamics' cases (module notes).
+
+    Parameters
+    ----------
+    study : LoadsStudy
+        The hand-entered study.
+    envelope : DynamicsEnvelope
+    hook_source : {"CS-29.865", "dynamics"}
+    chosen_area : float, optional
+        Parachute area of the loads (default: the envelope's). [m^2]
+
+    Returns
+    -------
+    Handoff
+    """
+    if hook_source not in HOOK_SOURCES:
+        raise InputError(f"{hook_source=!r} is not a valid hook-cone source; valid sources "
+                         f"are {list(HOOK_SOURCES)}", hook_source)
+    if not isinstance(study, LoadsStudy):
+        raise InputError("the hand-off needs a LoadsStudy", type(study).__name__)
+    rows = []
+    aero_ids = ()
+    new = {}
+    if study.fuselage is not None or study.fin is not None:
+        new["envelope"], aero_ids, aero_rows = _aero(study, envelope)
+        rows += aero_rows
+    new["hook"], hook_rows = _hook(study, envelope, hook_source)
+    rows += hook_rows
+    chute, cases, chute_rows = _parachute(study, envelope, chosen_area)
+    rows += chute_rows
+    if chute is not None:
+        new["parachute"] = chute
+    new["dynamics"] = DynamicsCases(
+        aero_ids=aero_ids, line_ids=() if cases is None else cases.line_ids,
+        line_theta=() if cases is None else cases.line_theta,
+        line_psi=() if cases is None else cases.line_psi,
+        line_force=0.0 if cases is None else cases.line_force,
+        note=f"campaign runs at {envelope.area_factor:g} x neutral area, margin "
+             f"{envelope.margin:g}")
+    return Handoff(replace(study, **new), pd.DataFrame(rows), envelope)
+
+
+def loads_comparison(result):
+    """Largest |limit load| of each component over the fuselage: the hand-entered cases
+    against the cases from the dynamics (the ``source`` column of the case matrix).
+
+    Returns
+    -------
+    pandas.DataFrame or None
+        None when no case comes from the dynamics.
+    """
+    from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
+
+    source = result.cases["source"].to_numpy() if "source" in result.cases else None
+    if source is None or not np.any(source == "dynamics"):
+        return None
+    rows = []
+    for j, name in enumerate(COMPONENTS):
+        hand = np.abs(result.loads[source == "hand", :, j]).max(initial=0.0)
+        dyn = np.abs(result.loads[source == "dynamics", :, j]).max(initial=0.0)
+        rows.append({"component": name, "kind": COMPONENT_KINDS[j],
+                     "hand-entered cases": hand, "dynamics cases": dyn,
+                     "dynamics / hand [-]": dyn / hand if hand > 0 else np.nan})
+    return pd.DataFrame(rows)

@@ -1,0 +1,186 @@
+"""Transport without the parachute (paper section 5): frontal wind ramps on the helicopters in
+their full-tail configuration.
+
+Each helicopter hangs without parachute, with its intact fin and horizontal tail (paper
+section 5.1), under a hovering carrier, and meets a head wind rising from 0 at ``rate`` to each
+target speed (paper figure 15: 20, 30, 40, 60 and 80 kt here; the paper shows 20, 30 and 40 kIAS
+in figures 16 to 18). A run is long enough to see the response for :data:`OBSERVE` seconds
+after the ramp ends; every ramp runs for the same time, :data:`OBSERVE` s after the highest
+ramp ends. Its **verdict**: "convergent" when the response converges (the multibody response
+verdict, ``docs/multibody.md``) and the towed equilibrium at the ramp's final airspeed is
+stable (eigenvalues of its linear model); "departs" when the response settles but that
+equilibrium is unstable (the helicopter weathervanes away from the flight path to another
+heading, a static divergence); otherwise the response verdict (divergent: the motion grows or
+it left a table; undamped; inconclusive).
+
+**Speed limit** of a helicopter: the largest ramp target whose run, and the run of every lower
+target, is convergent (NaN when even the lowest is not).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from slingloads.constants import FOOT, KNOT
+from slingloads.errors import InputError
+from slingloads.models.multibody.cable import Cable
+from slingloads.models.multibody.system import SlingSystem
+
+#: Default ramp targets (paper sections 5.2-5.3). [m/s]
+RAMP_TARGETS = tuple(v * KNOT for v in (20.0, 30.0, 40.0, 60.0, 80.0))
+#: Default ramp: rate [m/s^2] and onset [s] (the multibody model's wind ramp).
+RAMP_RATE, RAMP_ONSET = 0.5, 5.0
+#: Seconds of response seen after each ramp ends. [s]
+OBSERVE = 60.0
+#: Default carrier cable of the sample systems. [m]
+SAMPLE_CABLE = 60 * FOOT
+#: Default cable stiffness EA of the sample systems. [N]
+SAMPLE_EA = 5e6
+
+
+def sample_full_tail_system(name, cable_length=SAMPLE_CABLE, ea=SAMPLE_EA):
+    """A GENERIC sample helicopter (``slingloads.models.sample_aircraft``) without parachute,
+    in its full-tail configuration, under a frozen carrier.
+
+    Parameters
+    ----------
+    name : str
+        "HC1" or "HC2".
+    cable_length : float
+        [m]
+    ea : float
+        [N]
+
+    Returns
+    -------
+    SlingSystem
+    """
+    from slingloads.models.sample_aircraft import (
+        sample_body,
+        sample_fuselage,
+        sample_hardpoints,
+        sample_surfaces,
+    )
+
+    return SlingSystem(sample_body(name), sample_hardpoints(name), Cable(cable_length, ea),
+                       sample_fuselage(name), sample_surfaces(name, "full tail"), None,
+                       name=str(name).upper())
+
+
+def ramp_length(target, rate=RAMP_RATE, onset=RAMP_ONSET):
+    """Run length that shows :data:`OBSERVE` s after a ramp to ``target`` [m/s] ends, rounded
+    up to a whole 10 s. [s]"""
+    return float(10.0 * np.ceil((onset + target / rate + OBSERVE) / 10.0))
+
+
+@dataclass(frozen=True, eq=False)
+class NoParachuteStudy:
+    """Wind ramps on helicopters without parachute (module notes).
+
+    Parameters
+    ----------
+    systems : dict
+        Name -> SlingSystem without parachute (full-tail configuration).
+    targets : sequence of float
+        Ramp target speeds, > 0. [m/s]
+    rate : float
+        Ramp rate, > 0. [m/s^2]
+    onset : float
+        [s]
+    """
+
+    systems: dict = field(default_factory=dict)
+    targets: tuple = RAMP_TARGETS
+    rate: float = RAMP_RATE
+    onset: float = RAMP_ONSET
+
+    def __post_init__(self):
+        if not self.systems:
+            raise InputError("the study without parachute needs at least one helicopter")
+        for name, system in self.systems.items():
+            if not isinstance(system, SlingSystem):
+                raise InputError(f"helicopter {name!r} of the study without parachute must be "
+                                 "a SlingSystem", type(system).__name__)
+            if system.parachute is not None:
+                raise InputError(f"helicopter {name!r} of the study without parachute has a "
+                                 "parachute", name)
+        targets = np.atleast_1d(np.asarray(self.targets, float))
+        if targets.size == 0 or np.any(~np.isfinite(targets) | (targets <= 0)):
+            raise InputError("wind-ramp targets must be > 0 [m/s]", targets.tolist())
+        object.__setattr__(self, "targets", tuple(np.unique(targets)))
+        for name, value in (("rate", self.rate), ("onset", self.onset)):
+            value = float(value)
+            if not np.isfinite(value) or value < 0 or (name == "rate" and value == 0):
+                raise InputError(f"wind-ramp {name} must be {'> 0' if name == 'rate' else '>= 0'}",
+                                 value)
+        object.__setattr__(self, "systems", dict(self.systems))
+
+    @property
+    def run_length(self):
+        """Length of every ramp run: :data:`OBSERVE` s after the highest ramp ends. [s]"""
+        return ramp_length(max(self.targets), self.rate, self.onset)
+
+    def jobs(self):
+        """(name, target, system, manoeuvre) of every ramp."""
+        from slingloads.analyses.multibody.manoeuvres import wind_ramp
+
+        out = []
+        for name, system in self.systems.items():
+            for target in self.targets:
+                manoeuvre = wind_ramp(target, self.rate, self.onset,
+                                      name=f"wind ramp to {target / KNOT:.0f} kt")
+                # the run starts in hover (the ramp's choice); the system's airspeed is the
+                # ramp's final one, where its linear model is taken (sea-level samples: EAS
+                # equals the wind's true speed)
+                out.append((name, target, system.with_(airspeed=target), manoeuvre))
+        return out
+
+
+@dataclass(frozen=True, eq=False)
+class NoParachuteResult:
+    """Verdicts and speed limits of the study without parachute.
+
+    Attributes
+    ----------
+    runs : pandas.DataFrame
+        One row per (helicopter, target): verdict and response metrics.
+    limits : pandas.DataFrame
+        One row per helicopter: largest convergent target speed.
+    keys : dict
+        (helicopter, target) -> run key (histories in the store).
+    """
+
+    runs: pd.DataFrame
+    limits: pd.DataFrame
+    keys: dict
+
+
+def ramp_verdict(response, linear):
+    """Verdict of a ramp (module notes) from its response and linear verdicts."""
+    if response == "convergent":
+        return "convergent" if linear == "stable" else "departs"
+    return response
+
+
+def speed_limits(runs):
+    """Largest target of each helicopter whose run and every lower one converge (module
+    notes); ``runs`` has the columns helicopter, ramp target [m/s] and verdict."""
+    rows = []
+    for name, group in runs.groupby("helicopter", sort=False):
+        group = group.sort_values("ramp target [m/s]")
+        ok = (group["verdict"] == "convergent").to_numpy()
+        targets = group["ramp target [m/s]"].to_numpy()
+        first_bad = np.argmin(ok) if not ok.all() else ok.size
+        limit = targets[first_bad - 1] if first_bad > 0 else np.nan
+        beyond = group.iloc[first_bad] if first_bad < ok.size else None
+        rows.append({
+            "helicopter": name, "largest convergent ramp [m/s]": limit,
+            "largest convergent ramp [kt]": limit / KNOT,
+            "first non-convergent ramp [kt]": (beyond["ramp target [m/s]"] / KNOT
+                                               if beyond is not None else np.nan),
+            "its verdict": beyond["verdict"] if beyond is not None else "",
+        })
+    return pd.DataFrame(rows)

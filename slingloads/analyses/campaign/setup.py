@@ -1,0 +1,137 @@
+"""From one towed system to the system of every run: the campaign's set-up.
+
+:class:`CampaignSetup` holds the base :class:`~slingloads.models.multibody.SlingSystem` (its
+helicopter, hardpoints, aerodynamics, cable stiffness and parachute template) and the free
+carrier that the runs with ``carrier = "free"`` use. :meth:`CampaignSetup.system_for` replaces,
+for one row of the matrix, the parachute area, the airspeed, the mass (inertia scaled with it,
+CG kept), the density altitude, the cable length and the carrier. Every run of a campaign
+shares the base's aerodynamic tables, so that the runs batch together.
+
+The neutral static area is that of the parachute-sizing analysis
+(:func:`slingloads.analyses.chute_sizing.neutral_area`, paper section 4.1) on the base's own
+fuselage, fin, hardpoints and yaw inertia about the suspension axis:
+:func:`neutral_area_of`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from slingloads.analyses.chute_sizing import FIT_RANGE, neutral_area
+from slingloads.errors import InputError
+from slingloads.models.aerodynamics import Fin
+from slingloads.models.airframe import hanging_yaw_inertia
+from slingloads.models.multibody.carrier import FreeCarrier, FrozenCarrier
+from slingloads.models.multibody.rigid_body import RigidBody
+from slingloads.models.multibody.system import SlingSystem
+from slingloads.models.yaw_dynamics import FlightCondition, YawModel
+
+#: GENERIC free carrier: heavy-lift class, 15,000 kg (an assumption), flat-plate drag area
+#: 43.2 ft^2 = 4.0 m^2 (Prouty, Table 4.3, CH-47), speed-hold gain of the model's default.
+DEFAULT_FREE_CARRIER = FreeCarrier(15000.0, 4.0)
+
+
+def scaled_body(body, mass):
+    """The helicopter at another mass: inertia scaled by mass ratio, CG kept.
+
+    Parameters
+    ----------
+    body : RigidBody
+    mass : float
+        [kg]
+
+    Returns
+    -------
+    RigidBody
+    """
+    mass = float(mass)
+    if not np.isfinite(mass) or mass <= 0:
+        raise InputError("mass case must be > 0 [kg]", mass)
+    if mass == body.mass:
+        return body
+    return RigidBody(mass, body.cg, body.inertia * (mass / body.mass), body.name)
+
+
+def yaw_model_of(system, airspeed=None, density_altitude=None):
+    """The 1-DOF yaw model (:class:`~slingloads.models.yaw_dynamics.YawModel`) of a towed
+    system: its fuselage, fin, hardpoints, parachute and yaw inertia about the vertical through
+    the hub of the hanging body (:func:`~slingloads.models.airframe.hanging_yaw_inertia`).
+
+    Parameters
+    ----------
+    system : SlingSystem
+        With a parachute.
+    airspeed, density_altitude : float, optional
+        Condition (default: the system's). [m/s], [m]
+    """
+    if system.parachute is None:
+        raise InputError("the yaw model of a campaign needs a parachute")
+    fin = system.fin
+    fin = None if fin is None else Fin(fin.table, fin.area, fin.centre_of_pressure,
+                                       fin.efficiency)
+    body = system.body
+    inertia = hanging_yaw_inertia(body.inertia, body.cg, system.hardpoints.hub)
+    speed = system.airspeed if airspeed is None else airspeed
+    altitude = system.density_altitude if density_altitude is None else density_altitude
+    return YawModel(system.fuselage, fin, system.hardpoints, inertia,
+                    FlightCondition(speed, altitude), system.parachute.parachute)
+
+
+def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE):
+    """Neutral yaw static stability area of a towed system (paper section 4.1).
+
+    Returns
+    -------
+    NeutralAreaResult
+        ``.area`` [m^2] (not positive when fuselage and fin are already stable).
+    """
+    speed = system.airspeed if airspeed is None else airspeed
+    if not speed > 0:
+        raise InputError("the neutral area needs an airspeed > 0 [m/s]", speed)
+    return neutral_area(yaw_model_of(system, speed), fit_range)
+
+
+@dataclass(frozen=True, eq=False)
+class CampaignSetup:
+    """The base system of a campaign and its free carrier (module notes).
+
+    Parameters
+    ----------
+    system : SlingSystem
+        With a parachute (its area is replaced by each run's).
+    free_carrier : FreeCarrier
+        The carrier of the runs with carrier "free".
+    """
+
+    system: SlingSystem
+    free_carrier: FreeCarrier = field(default_factory=lambda: DEFAULT_FREE_CARRIER)
+
+    def __post_init__(self):
+        if not isinstance(self.system, SlingSystem):
+            raise InputError("a campaign needs a SlingSystem", type(self.system).__name__)
+        if self.system.parachute is None:
+            raise InputError("the campaign's system needs a parachute (its area is the "
+                             "campaign's first factor)")
+        if not isinstance(self.free_carrier, FreeCarrier):
+            raise InputError("the campaign's free carrier must be a FreeCarrier",
+                             type(self.free_carrier).__name__)
+
+    @property
+    def base_mass(self):
+        """[kg]"""
+        return self.system.body.mass
+
+    def system_for(self, row):
+        """The system of one run (a row of :attr:`CampaignMatrix.frame`)."""
+        base = self.system
+        holder = base.parachute
+        chute = replace(holder, parachute=replace(holder.parachute,
+                                                  area=float(row["area [m^2]"])))
+        carrier = self.free_carrier if row["carrier"] == "free" else FrozenCarrier()
+        return base.with_(body=scaled_body(base.body, row["mass [kg]"]), parachute=chute,
+                          cable=replace(base.cable, length=float(row["cable length [m]"])),
+                          carrier=carrier, airspeed=float(row["airspeed EAS [m/s]"]),
+                          density_altitude=float(row["density altitude [m]"]),
+                          name=str(row["run"]))

@@ -1,0 +1,70 @@
+"""One batch of campaign runs, as a worker process (local or on a Dask cluster) runs it.
+
+:func:`run_batch` integrates the runs of a batch together
+(:func:`~slingloads.analyses.multibody.simulate_runs`, the compiled RK4 over runs), trims and
+linearises each distinct condition once, and returns one record per run: its key, metrics
+(:mod:`.metrics`) and histories. It is a plain function of picklable arguments so that any
+executor can ship it.
+
+The compiled kernel runs on ``threads`` threads of the calling thread (numba's thread count
+is set per calling thread), and one batch at a time per process: numba's default threading
+layer may not be entered by two Python threads at once, and a process that ran two kernels
+side by side would oversubscribe its cores anyway.
+"""
+
+from __future__ import annotations
+
+import threading
+
+#: One compiled kernel at a time per process.
+_KERNEL_LOCK = threading.Lock()
+
+
+def _set_threads(threads):
+    import numba
+
+    if threads is None:
+        return
+    numba.set_num_threads(max(1, min(int(threads), numba.config.NUMBA_NUM_THREADS)))
+
+
+def run_batch(jobs, settings, threads=None):
+    """Run a batch of campaign runs.
+
+    Parameters
+    ----------
+    jobs : list of (str, SlingSystem, Manoeuvre)
+        (key, system, manoeuvre) of each run. Runs of one condition should share one system
+        object (its trim and linear model are then computed once).
+    settings : dict
+        ``t_end``, ``dt`` (None: adaptive), ``output_interval`` [s], and ``rtol``, ``atol``
+        of the adaptive step.
+    threads : int, optional
+        Threads of the compiled kernel (default: numba's current setting).
+
+    Returns
+    -------
+    list of (str, dict, ndarray)
+        (key, metrics, histories) of each run, in the order of ``jobs``.
+    """
+    from slingloads.analyses.multibody import linearise, simulate_runs, trim
+    from slingloads.models.multibody.integrator import ATOL, RTOL
+
+    from .metrics import linear_metrics, response_metrics
+
+    with _KERNEL_LOCK:
+        _set_threads(threads)
+        sim = simulate_runs([(system, manoeuvre) for _, system, manoeuvre in jobs],
+                            t_end=settings["t_end"], dt=settings["dt"],
+                            output_interval=settings["output_interval"],
+                            rtol=settings.get("rtol", RTOL), atol=settings.get("atol", ATOL))
+    conditions = {}
+    out = []
+    for (key, system, _), run in zip(jobs, sim.runs, strict=True):
+        if id(system) not in conditions:
+            point = trim(system)
+            model = linearise(point) if point.converged else None
+            conditions[id(system)] = linear_metrics(point, model)
+        metrics, histories = response_metrics(run)
+        out.append((key, {**conditions[id(system)], **metrics}, histories))
+    return out

@@ -1,0 +1,170 @@
+"""Plots of the campaign (object API only: every function returns a new Figure).
+
+Angles in degrees; airspeeds in kt, areas in m^2 or ft^2 by the unit system asked for
+(``"SI"`` or ``"US"``). The histories come from the campaign result's store.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from slingloads.constants import FOOT, KNOT
+from slingloads.errors import InputError
+
+YAW = "yaw (heading from flight path) [deg]"
+BETA = "beta [deg]"
+
+
+def _area(units):
+    if units not in ("SI", "US"):
+        raise InputError("unknown unit system; valid are ['SI', 'US']", units)
+    return (1.0, "m^2") if units == "SI" else (1.0 / FOOT**2, "ft^2")
+
+
+def plot_selection(result, units="SI"):
+    """Metrics against the area factor: stable runs, least yaw-mode damping ratio, largest
+    trimmed swing angle (the drag proxy), with the smallest stable and recommended areas."""
+    sel = result.selection
+    by = sel.by_area
+    f = by["area factor [-]"].to_numpy()
+    fig = Figure(figsize=(11, 3.6), layout="constrained")
+    axes = fig.subplots(1, 3)
+    axes[0].bar(f, by["runs"], width=0.08 * (np.ptp(f) or 1), color="0.85", label="runs")
+    axes[0].bar(f, by["stable runs"], width=0.08 * (np.ptp(f) or 1), label="stable runs")
+    axes[0].set(ylabel="runs", title="stability")
+    axes[1].plot(f, by["least yaw-mode damping ratio [-]"], "o-")
+    axes[1].axhline(sel.criteria.min_damping, color="r", ls="--",
+                    label=f"criterion {sel.criteria.min_damping:g}")
+    axes[1].set(ylabel="least yaw-mode damping ratio [-]", title="damping (eigenvalues)")
+    axes[2].plot(f, by["largest trimmed swing angle [deg]"], "o-")
+    axes[2].set(ylabel="largest trimmed swing angle [deg]", title="drag proxy")
+    for ax in axes:
+        ax.set_xlabel("area / neutral static area [-]")
+        ax.grid(True, alpha=0.4)
+        for value, style, label in ((sel.smallest_stable, ":", "smallest stable"),
+                                    (sel.recommended, "-", "recommended")):
+            if np.isfinite(value):
+                ax.axvline(value, color="g", ls=style, lw=1.2, label=label)
+        ax.legend(fontsize=7)
+    return fig
+
+
+def plot_sweep(result, runs, factor, title):
+    """Yaw and sideslip histories of runs that differ by one factor (paper figures 9-13)."""
+    fig = Figure(figsize=(10, 5.5), layout="constrained")
+    axes = fig.subplots(2, 1, sharex=True)
+    frame = result.metrics.set_index("run")
+    for run in runs:
+        h = result.history(run)
+        label = _label(frame.loc[run], factor)
+        axes[0].plot(h["time [s]"], h[YAW], lw=1.1, label=label)
+        axes[1].plot(h["time [s]"], h[BETA], lw=1.1, label=label)
+    axes[0].set(ylabel="yaw (heading) [deg]", title=title)
+    axes[1].set(ylabel="sideslip beta [deg]", xlabel="time [s]")
+    for ax in axes:
+        ax.grid(True, alpha=0.4)
+    axes[0].legend(fontsize=8, ncols=2)
+    return fig
+
+
+def _label(row, factor):
+    value = row[factor]
+    if factor == "area factor [-]":
+        return f"{value:.3g} x neutral area"
+    if factor == "airspeed EAS [m/s]":
+        return f"{value / KNOT:.0f} KEAS"
+    if factor == "density altitude [m]":
+        return f"{value / FOOT:.0f} ft density altitude"
+    if factor == "cable length [m]":
+        return f"cable {value / FOOT:.0f} ft"
+    if factor == "mass case":
+        return f"mass {value} ({row['mass [kg]']:.0f} kg)"
+    return f"carrier {value}"
+
+
+def plot_stability_map(stability, neutral_area, units="SI"):
+    """Yaw-mode damping ratio and largest real part over area x airspeed (one column per
+    density altitude), with the minimum stable area per speed."""
+    scale, unit = _area(units)
+    points = stability.points
+    altitudes = sorted(points["density altitude [m]"].unique())
+    fig = Figure(figsize=(4.2 * len(altitudes) + 1, 7), layout="constrained")
+    axes = fig.subplots(2, len(altitudes), squeeze=False)
+    quantities = (("yaw mode damping ratio [-]", "yaw-mode damping ratio [-]", "viridis"),
+                  ("largest real part [1/s]", "largest real part [1/s]", "coolwarm"))
+    for j, h in enumerate(altitudes):
+        for i, (column, label, cmap) in enumerate(quantities):
+            ax = axes[i, j]
+            grid = stability.grid(column, h)
+            speeds = grid.columns.to_numpy() / KNOT
+            areas = grid.index.to_numpy() * neutral_area * scale
+            values = grid.to_numpy(float)
+            if column.startswith("largest"):
+                bound = np.nanmax(np.abs(values)) if np.any(np.isfinite(values)) else 1.0
+                mesh = ax.pcolormesh(speeds, areas, values, shading="nearest", cmap=cmap,
+                                     vmin=-bound, vmax=bound)
+            else:
+                mesh = ax.pcolormesh(speeds, areas, values, shading="nearest", cmap=cmap)
+            fig.colorbar(mesh, ax=ax, label=label)
+            minimum = stability.minimum[np.isclose(stability.minimum["density altitude [m]"],
+                                                   h)]
+            ax.plot(minimum["airspeed EAS [m/s]"] / KNOT,
+                    minimum["minimum stable area [m^2]"] * scale, "k.-",
+                    label="minimum stable area")
+            ax.set(xlabel="airspeed [KEAS]", ylabel=f"parachute area [{unit}]",
+                   title=f"{h / FOOT:.0f} ft density altitude")
+            ax.legend(fontsize=7, loc="upper right")
+    return fig
+
+
+def plot_no_parachute(result):
+    """Yaw and sideslip under the frontal wind ramps, each helicopter, without parachute
+    (paper figures 16-18): one row per ramp target."""
+    npr = result.no_parachute
+    runs = npr.runs
+    targets = sorted(runs["ramp target [m/s]"].unique())
+    fig = Figure(figsize=(11, 2.4 * len(targets) + 0.6), layout="constrained")
+    axes = fig.subplots(len(targets), 2, squeeze=False, sharex=True)
+    for i, target in enumerate(targets):
+        for name, t in npr.keys:
+            if t != target:
+                continue
+            h = result.history((name, t))
+            verdict = runs[(runs["helicopter"] == name)
+                           & (runs["ramp target [m/s]"] == t)]["verdict"].iloc[0]
+            axes[i, 0].plot(h["time [s]"], h[YAW], label=f"{name} ({verdict})")
+            axes[i, 1].plot(h["time [s]"], h[BETA], label=name)
+        axes[i, 0].set(ylabel="yaw [deg]", title=f"wind ramp to {target / KNOT:.0f} kt")
+        axes[i, 1].set(ylabel="beta [deg]", title=f"wind ramp to {target / KNOT:.0f} kt")
+        axes[i, 0].legend(fontsize=7)
+        for ax in axes[i]:
+            ax.grid(True, alpha=0.4)
+    for ax in axes[-1]:
+        ax.set_xlabel("time [s]")
+    return fig
+
+
+def plot_envelope(result):
+    """The angle-of-attack / sideslip extremes of every run of the chosen parachute, and the
+    envelope handed to the loads (with the margin)."""
+    env = result.envelope
+    m = result.metrics[np.isclose(result.metrics["area factor [-]"], env.area_factor)]
+    fig = Figure(figsize=(6, 5), layout="constrained")
+    ax = fig.subplots()
+    for _, r in m.iterrows():
+        ax.plot([r["beta min [deg]"], r["beta max [deg]"], r["beta max [deg]"],
+                 r["beta min [deg]"], r["beta min [deg]"]],
+                [r["alpha min [deg]"], r["alpha min [deg]"], r["alpha max [deg]"],
+                 r["alpha max [deg]"], r["alpha min [deg]"]], color="0.7", lw=0.6)
+    ids, alpha, beta = env.aero_envelope()
+    b0, b1 = env.bounds("beta")
+    a0, a1 = env.bounds("alpha")
+    ax.plot([b0, b1, b1, b0, b0], [a0, a0, a1, a1, a0], "r-",
+            label=f"loads envelope (x {env.margin:g})")
+    ax.plot(np.degrees(beta), np.degrees(alpha), "ro")
+    ax.set(xlabel="sideslip beta [deg]", ylabel="angle of attack alpha [deg]",
+           title=f"runs at {env.area_factor:g} x neutral area (grey: each run's range)")
+    ax.grid(True, alpha=0.4)
+    ax.legend(fontsize=8)
+    return fig

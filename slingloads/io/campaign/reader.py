@@ -1,0 +1,316 @@
+"""Build the campaign from an input workbook (``run campaign = yes``).
+
+Called through the registry (:mod:`slingloads.io.analyses`) as ``read(reader, params, study)``.
+The towed system is built from the airframe: the mass items' mass, CG and inertia
+(:meth:`RigidBody.from_mass_items`), the hardpoints (hub, parachute attachment, mast axis), the
+``FuselageAero`` and ``FinAero`` tables with their reference values, and the parachute (wake
+ratio, line length, ``ParachuteCD``: without that sheet the GENERIC extended CD table of
+:func:`~slingloads.models.parachute.extended_cd_table` is used, since runs from hover meet the
+canopy at any angle). The cable, canopy mass and free carrier come from the ``campaign ...``
+Study rows; the matrix from the list rows, the ``CampaignMasses`` sheet, or the
+``CampaignRuns`` sheet. Every value is SI after reading; every bad value raises
+:class:`~slingloads.errors.InputError` naming the file, sheet, cell, value and rule.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+import pandas as pd
+
+from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
+from slingloads.io.campaign.schema import (
+    HOOK_ANGLE_SOURCES,
+    LISTS,
+    MATRIX_KINDS,
+    SAMPLE_HELICOPTERS,
+    SHEETS,
+)
+from slingloads.io.common.schema import STUDY_SHEET, TEXT
+from slingloads.io.common.units import si_factor
+from slingloads.io.common.workbook import cell_name, located
+
+ANALYSIS = "campaign"
+_SPEC = {s.name: s for s in SHEETS}
+
+
+@dataclass(frozen=True, eq=False)
+class CampaignInputs:
+    """Everything the campaign of a workbook needs.
+
+    Attributes
+    ----------
+    campaign : Campaign
+    scheduler : str
+        Dask scheduler address ('' for local execution).
+    workers : int or None
+        Local worker processes (None: automatic).
+    timeout : float
+        Scheduler time-out. [s]
+    loads_from_dynamics : bool
+    hook_angle_source : str
+        'CS-29.865' or 'dynamics'.
+    """
+
+    campaign: object
+    scheduler: str
+    workers: int | None
+    timeout: float
+    loads_from_dynamics: bool
+    hook_angle_source: str
+
+
+def list_parameter(params, name):
+    """A comma-separated Study list: names (text lists) or SI numbers (unit column).
+
+    Returns
+    -------
+    list
+    """
+    kind = LISTS[name]
+    raw = params(name)
+    text = "" if raw is None else str(raw)
+    items = [s.strip() for s in text.split(",") if s.strip()]
+    if not items:
+        raise params.error(name, f"{name!r} needs at least one value (comma-separated)", text)
+    if kind == TEXT:
+        return items
+    cell = params.cell(name)
+    if cell is None:
+        unit = params.specs[name.lower()].unit
+        where = "(default)"
+    else:
+        row = int("".join(ch for ch in cell if ch.isdigit()))
+        unit = params.reader.book[STUDY_SHEET][cell_name(row, 3)].value
+        unit = "" if unit is None else str(unit)
+        where = cell_name(row, 3)
+        if kind != "dimensionless" and not unit.strip():
+            raise params.reader.error(f"{name!r} needs a unit in its unit column, e.g. "
+                                      f"{params.specs[name.lower()].unit!r}", None, STUDY_SHEET,
+                                      where)
+    with located(params.reader.file, STUDY_SHEET, where):
+        factor = si_factor(unit, kind)
+    values = []
+    for item in items:
+        try:
+            value = float(item)
+        except ValueError:
+            raise params.error(name, f"{name!r}: every value must be a number", item) from None
+        if not np.isfinite(value):
+            raise params.error(name, f"{name!r}: every value must be a finite number", item)
+        values.append(value * factor)
+    return values
+
+
+def read_system(reader, params, study):
+    """The towed system of the workbook (module notes), with a parachute of area 1 m^2 (each
+    run replaces it) and the first listed cable length.
+
+    Returns
+    -------
+    SlingSystem
+    """
+    from slingloads.models.multibody import Cable, HingedParachute, LiftingSurface, RigidBody
+    from slingloads.models.multibody.system import SlingSystem
+    from slingloads.models.parachute import extended_cd_table
+
+    file = reader.file
+    airframe = study.airframe
+    if airframe.hardpoints.chute is None:
+        raise reader.error("the campaign needs a Hardpoints row of kind 'chute' (the parachute "
+                           "attachment)", sheet="Hardpoints", cell="B1")
+    fuselage = read_fuselage_aero(reader, params, study.points)
+    fin = read_fin_aero(reader, params, study.points)
+    if fuselage is None and fin is None:
+        raise reader.error("the campaign needs a FuselageAero or a FinAero sheet",
+                           sheet="FuselageAero")
+    chute = read_parachute(reader, params, 1.0)
+    if not reader.has_sheet("ParachuteCD"):
+        chute = replace(chute, cd=extended_cd_table())
+    with located(file, STUDY_SHEET, params.where("campaign canopy mass")):
+        holder = HingedParachute(chute, params("campaign canopy mass"))
+    with located(file, "MassItems"):
+        body = RigidBody.from_mass_items(airframe.mass_items)
+    length = list_parameter(params, "campaign cable lengths")[0]
+    with located(file, STUDY_SHEET, params.where("campaign cable EA")):
+        cable = Cable(length if length > 0 else 1.0, params("campaign cable EA"),
+                      params("campaign cable damping ratio"))
+    surfaces = () if fin is None else (LiftingSurface.from_fin(fin),)
+    with located(file, STUDY_SHEET, params.where("campaign cable lengths")):
+        return SlingSystem(body, airframe.hardpoints, cable, fuselage, surfaces, holder,
+                           name=str(params("study name")))
+
+
+def _masses(reader):
+    from slingloads.analyses.campaign import MassCase
+
+    if not reader.has_sheet("CampaignMasses"):
+        return ()
+    t = reader.table(_SPEC["CampaignMasses"])
+    out = []
+    for i in range(len(t)):
+        with located(reader.file, t.sheet, t.cell("mass", i)):
+            out.append(MassCase(t["mass case"][i], t["mass"][i]))
+    names = [m.name for m in out]
+    for i, n in enumerate(names):
+        if names.index(n) != i:
+            raise reader.error("mass case named twice", n, t.sheet, t.cell("mass case", i))
+    return tuple(out)
+
+
+def _rows(reader, masses):
+    """The CampaignRuns sheet as listed rows, each bad value located at its cell."""
+    from slingloads.analyses.campaign import CARRIERS, MANOEUVRES
+
+    t = reader.table(_SPEC["CampaignRuns"])
+    names = [m.name for m in masses] or ["nominal"]
+    for i in range(len(t)):
+        for column in ("area factor", "airspeed EAS", "cable length"):
+            if not t[column][i] > 0:
+                raise reader.error(f"{column} must be > 0", float(t[column][i]), t.sheet,
+                                   t.cell(column, i))
+        checks = (("carrier", list(CARRIERS), str.lower), ("manoeuvre", list(MANOEUVRES), str))
+        for column, valid, norm in checks:
+            if norm(t[column][i]) not in valid:
+                raise reader.error(f"unknown {column}; valid values are {valid}", t[column][i],
+                                   t.sheet, t.cell(column, i))
+        if t.has("mass case"):
+            case = t["mass case"][i] or (names[0] if len(names) == 1 else "")
+            if case not in names:
+                raise reader.error(f"unknown mass case; valid mass cases (CampaignMasses) are "
+                                   f"{names}", t["mass case"][i], t.sheet,
+                                   t.cell("mass case", i))
+    frame = pd.DataFrame({
+        "area factor [-]": t["area factor"], "airspeed EAS [m/s]": t["airspeed EAS"],
+        "mass case": ([c or names[0] for c in t["mass case"]] if t.has("mass case")
+                      else names[0]),
+        "density altitude [m]": t["density altitude"], "cable length [m]": t["cable length"],
+        "carrier": [c.lower() for c in t["carrier"]], "manoeuvre": t["manoeuvre"]})
+    return frame, t
+
+
+def read(reader, params, study):
+    """Build :class:`CampaignInputs` from the workbook.
+
+    Raises
+    ------
+    InputError
+        With the file, sheet, cell, value and rule.
+    """
+    from slingloads.analyses.campaign import (
+        Campaign,
+        CampaignSetup,
+        Factors,
+        NoParachuteStudy,
+        RunSettings,
+        SelectionCriteria,
+        sample_full_tail_system,
+    )
+    from slingloads.models.multibody.carrier import FreeCarrier
+
+    file = reader.file
+
+    def at(name):
+        return located(file, STUDY_SHEET, params.where(name))
+
+    system = read_system(reader, params, study)
+    with at("campaign carrier mass"):
+        carrier = FreeCarrier(params("campaign carrier mass"),
+                              params("campaign carrier drag area"))
+    setup = CampaignSetup(system, carrier)
+    masses = _masses(reader)
+    lists = {}
+    for name, field in (("campaign area factors", "area_factors"),
+                        ("campaign airspeeds EAS", "airspeeds"),
+                        ("campaign density altitudes", "density_altitudes"),
+                        ("campaign cable lengths", "cable_lengths"),
+                        ("campaign carriers", "carriers"),
+                        ("campaign manoeuvres", "manoeuvres")):
+        values = list_parameter(params, name)
+        if field == "carriers":
+            values = [v.lower() for v in values]
+        with at(name):
+            Factors(**{field: tuple(values)})  # each list checked at its own cell
+        lists[field] = tuple(values)
+    factors = Factors(masses=masses, **lists)
+    with at("campaign cable lengths"):
+        for length in factors.cable_lengths:
+            system.with_(cable=replace(system.cable, length=length))
+    kind = params.choice("campaign matrix", MATRIX_KINDS)
+    rows, sheet = None, STUDY_SHEET
+    if kind == "listed rows":
+        if not reader.has_sheet("CampaignRuns"):
+            raise params.error("campaign matrix", "'campaign matrix' = listed rows needs the "
+                               "CampaignRuns sheet", "listed rows")
+        rows, table = _rows(reader, masses)
+        sheet = table.sheet
+        with located(file, sheet, table.cell("cable length", 0)):
+            for length in rows["cable length [m]"].unique():
+                system.with_(cable=replace(system.cable, length=float(length)))
+    with at("campaign run length"):
+        settings = RunSettings(params("campaign run length"), params("campaign time step"),
+                               params("campaign output interval"))
+    with at("campaign minimum yaw damping"):
+        criteria = SelectionCriteria(params("campaign minimum yaw damping"),
+                                     params("campaign maximum yaw half time"))
+    n_areas = params("campaign stability map areas")
+    params.check("campaign stability map areas", n_areas >= 2,
+                 "'campaign stability map areas' must be >= 2")
+    n_speeds = params("campaign stability map airspeeds")
+    params.check("campaign stability map airspeeds", n_speeds >= 1,
+                 "'campaign stability map airspeeds' must be >= 1")
+    chosen = params.positive("campaign chosen area factor", allow_zero=True)
+    margin = params("campaign loads margin")
+    params.check("campaign loads margin", np.isfinite(margin) and margin >= 1,
+                 "'campaign loads margin' must be >= 1")
+    no_chute = _no_parachute(params, system, NoParachuteStudy, sample_full_tail_system)
+    with located(file, sheet):
+        campaign = Campaign(setup, factors, rows, settings, criteria, margin,
+                            _map(factors, rows, n_areas, n_speeds), no_chute,
+                            chosen or None, name=str(params("study name")))
+    if chosen and not np.any(np.isclose(campaign.matrix.frame["area factor [-]"], chosen)):
+        raise params.error("campaign chosen area factor", "the chosen area factor must be one "
+                           "of the matrix's area factors "
+                           f"{sorted(campaign.matrix.frame['area factor [-]'].unique())}",
+                           params.raw("campaign chosen area factor"))
+    workers = params("campaign workers")
+    params.check("campaign workers", workers >= 0, "'campaign workers' must be >= 0")
+    return CampaignInputs(
+        campaign, str(params("campaign scheduler") or "").strip(), workers or None,
+        params.positive("campaign scheduler time-out"), params("campaign loads from dynamics"),
+        params.choice("campaign loads hook angle", HOOK_ANGLE_SOURCES))
+
+
+def _no_parachute(params, system, study_type, sample):
+    """The study without parachute of the Study rows, or None ('none')."""
+    name = "campaign no-parachute helicopters"
+    helicopters = [h.upper() for h in list_parameter(params, name)]
+    if helicopters == ["NONE"]:
+        return None
+    for h in helicopters:
+        if h not in SAMPLE_HELICOPTERS:
+            raise params.error(name, f"unknown helicopter; valid are {list(SAMPLE_HELICOPTERS)} "
+                               "or 'none'", h)
+    ramps = list_parameter(params, "campaign no-parachute ramps")
+    with located(params.reader.file, STUDY_SHEET, params.where("campaign no-parachute ramps")):
+        return study_type({h: sample(h, system.cable.length, system.cable.ea)
+                           for h in dict.fromkeys(helicopters)}, ramps)
+
+
+def _in(params, name):
+    return tuple(list_parameter(params, name))
+
+
+def _map(factors, rows, n_areas, n_speeds):
+    from slingloads.analyses.campaign import MapSettings
+
+    if rows is not None:
+        areas = rows["area factor [-]"].astype(float)
+        speeds = rows["airspeed EAS [m/s]"].astype(float)
+    else:
+        areas, speeds = pd.Series(factors.area_factors), pd.Series(factors.airspeeds)
+    a = np.linspace(0.5 * areas.min(), areas.max(), n_areas)  # below the matrix too
+    v = np.linspace(speeds.min(), speeds.max(), n_speeds) if speeds.max() > speeds.min() else [
+        speeds.min()]
+    return MapSettings(tuple(a), tuple(v))

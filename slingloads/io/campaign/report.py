@@ -1,0 +1,418 @@
+"""The campaign report: an Excel workbook, PNG plots and the histories as Parquet.
+
+:func:`compute` runs the campaign read by :mod:`slingloads.io.campaign.reader` on the executor
+the command line or the workbook asks for (a Dask scheduler, local worker processes), with the
+run cache of :mod:`slingloads.io.campaign.cache`. :func:`write` publishes, all at once or not at
+all (:mod:`slingloads.io.common.atomic`):
+
+* ``<stem>-campaign.xlsx``: sheets *Summary* (inputs digest, matrix definition, execution,
+  selection with its governing conditions, the 1.0 x neutral area in the 1-DOF and multibody
+  models, speed limits without parachute, loads hand-off), *Matrix*, *Metrics* (one row per
+  run), *Selection* (by area), *NeutralArea*, *Sensitivity*, *StabilityMap*, *NoParachute*,
+  *LoadsHandoff* and *Plots*;
+* ``<stem>-campaign-<tag>.png``: selection, sensitivity to each factor (paper figures 9-13),
+  stability map, transport without parachute (figures 16-18), loads envelope;
+* ``<stem>-campaign-histories.parquet``: every stored history (SI, angles in degrees), a
+  ``run`` column first (matrix run ids; ``NP-<helicopter>-<target>kt`` without parachute).
+
+Speeds, lengths, masses, areas and forces are in the report unit system (``--units``: SI, or
+kt, ft, lb, ft^2, lbf); the Parquet file is SI.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
+from slingloads.errors import InputError
+from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.common.report import check_units, digest_frame
+
+ANALYSIS = "campaign"
+_PNG_DPI = 90
+#: Names of the files of a campaign report, for the publisher (a new report replaces them).
+OUTPUTS = ("{stem}-campaign.xlsx", "{stem}-campaign-histories.parquet", "{stem}-campaign-*.png")
+NUMBER_FORMATS = format_by_header([
+    (r"\[deg\]", "0.00"),
+    (r"ratio|factor|\[-\]|\[1/s\]", "0.0000"),
+    (r"\[(m\^2|ft\^2)\]", "0.000"),
+    (r"\[(N|lbf)\]", "#,##0"),
+    (r"\[(m|ft|kt|m/s|kg|lb|s)\]", "0.00"),
+])
+#: US conversions of the report, by the SI unit in a header: (factor from SI, unit).
+_US = {"m/s": (1.0 / KNOT, "kt"), "m": (1.0 / FOOT, "ft"), "kg": (1.0 / POUND, "lb"),
+       "N": (1.0 / POUND_FORCE, "lbf"), "m^2": (1.0 / FOOT**2, "ft^2")}
+_HEADER = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
+
+
+@dataclass(frozen=True, eq=False)
+class CampaignReport:
+    """The campaign of one workbook and its results.
+
+    Attributes
+    ----------
+    inputs : CampaignInputs
+    result : CampaignResult
+    cache : str
+        Where the run cache is.
+    """
+
+    inputs: object
+    result: object
+    cache: str
+
+
+def in_units(frame, units):
+    """A copy of ``frame`` with its SI columns (m/s, m, kg, N, m^2 in the header) in the
+    report units: kt, ft, lb, lbf, ft^2 for ``"US"``."""
+    check_units(units)
+    if units == "SI":
+        return frame.copy()
+    out = frame.copy()
+    renames = {}
+    for column in out.columns:
+        match = _HEADER.match(str(column))
+        if match and match.group("unit") in _US:
+            factor, unit = _US[match.group("unit")]
+            out[column] = pd.to_numeric(out[column], errors="coerce") * factor
+            renames[column] = f"{match.group('name')} [{unit}]"
+    return out.rename(columns=renames)
+
+
+def compute(study):
+    """Run the campaign read from a workbook (module notes).
+
+    The execution options come from ``study.runtime`` (the command line: ``scheduler``,
+    ``workers``, ``cache``, ``timeout``, ``progress``), else from the workbook. The result is
+    also left in ``study.results["campaign"]`` for the loads that follow.
+
+    Returns
+    -------
+    CampaignReport
+
+    Raises
+    ------
+    InputError
+        If the workbook does not ask for the campaign, the scheduler cannot be reached, or a
+        run refuses its inputs.
+    """
+    from slingloads.analyses.campaign import make_executor, run_campaign
+    from slingloads.io.campaign.cache import RunCache, default_cache_dir
+
+    inputs = study.inputs.get(ANALYSIS)
+    if inputs is None:
+        raise InputError("the workbook does not ask for the campaign (Study sheet: 'run "
+                         "campaign' is no)", file=study.path, sheet="Study")
+    runtime = getattr(study, "runtime", {}) or {}
+    cache_dir = runtime.get("cache") or default_cache_dir()
+    scheduler = runtime.get("scheduler") or inputs.scheduler
+    workers = runtime.get("workers") or inputs.workers
+    timeout = runtime.get("timeout") or inputs.timeout
+    campaign = inputs.campaign
+    total = campaign.size + (len(campaign.no_parachute.jobs()) if campaign.no_parachute else 0)
+    executor = make_executor(scheduler or None, workers, timeout, runs=total)
+    result = run_campaign(campaign, executor=executor, store=RunCache(cache_dir),
+                          progress=runtime.get("progress"))
+    report = CampaignReport(inputs, result, str(cache_dir))
+    if hasattr(study, "results"):
+        study.results[ANALYSIS] = report
+    return report
+
+
+# ------------------------------------------------------------------------------- tables
+def _items(rows):
+    return pd.DataFrame(rows, columns=["item", "value", "unit", "note"])
+
+
+def _speed(v, units):
+    return (v / KNOT, "kt") if units == "US" else (v, "m/s")
+
+
+def _length(v, units, ft=True):
+    return (v / FOOT, "ft") if units == "US" and ft else (v, "m")
+
+
+def _area(v, units):
+    return (v / FOOT**2, "ft^2") if units == "US" else (v, "m^2")
+
+
+def definition_table(report, units):
+    """The campaign's definition: factors, settings, criteria, execution."""
+    c = report.inputs.campaign
+    frame = c.matrix.frame
+    r = report.result
+    ex = r.execution
+
+    def listing(column, convert=None):
+        values = list(dict.fromkeys(frame[column]))
+        if convert is None:
+            return ", ".join(str(v) for v in values), ""
+        shown = [convert(v)[0] for v in values]
+        return ", ".join(f"{v:.4g}" for v in shown), convert(values[0])[1]
+
+    masses = ", ".join(f"{k} {(m / POUND if units == 'US' else m):.0f}"
+                       for k, m in c.matrix.masses.items())
+    rows = [
+        ("runs in the matrix", len(frame), "-", "full factorial" if c.rows is None
+         else "listed rows"),
+        ("area factors", *listing("area factor [-]"), "x neutral static area"),
+        ("airspeeds EAS", *listing("airspeed EAS [m/s]", lambda v: _speed(v, units)), ""),
+        ("mass cases", masses, "lb" if units == "US" else "kg", "inertia scaled with mass"),
+        ("density altitudes", *listing("density altitude [m]",
+                                       lambda v: _length(v, units)), "ISA"),
+        ("cable lengths", *listing("cable length [m]", lambda v: _length(v, units)), ""),
+        ("carriers", *listing("carrier"), ""),
+        ("manoeuvres", *listing("manoeuvre"), ""),
+        ("run length", c.settings.t_end, "s", ""),
+        ("time step", c.settings.dt, "s", "fixed-step RK4"),
+        ("output interval", c.settings.output_interval, "s", ""),
+        ("damping criterion: least yaw-mode damping ratio", c.criteria.min_damping, "-", ""),
+        ("damping criterion: longest yaw-mode time to half amplitude",
+         c.criteria.max_half_time, "s", ""),
+        ("loads margin on the dynamics' extremes", c.margin, "-", ""),
+        ("executor", ex.executor, "", ""),
+        ("runs found in the cache", ex.cached, "-", f"cache: {report.cache}"),
+        ("runs computed now", ex.computed, "-", f"in {ex.batches} batches"),
+    ]
+    return _items(rows)
+
+
+def selection_table(report, units):
+    """The selection: neutral area, smallest stable and recommended areas, governing
+    conditions, and the 1.0 x neutral area's verdicts."""
+    r = report.result
+    sel = r.selection
+    neutral = r.neutral.area
+    a_neutral, unit = _area(neutral, units)
+    gs, gr = sel.governing_stable, sel.governing_recommended
+
+    def area(factor):
+        return _area(factor * neutral, units)[0] if np.isfinite(factor) else np.nan
+
+    rows = [
+        ("neutral static area (1-DOF sizing)", a_neutral, unit,
+         "total dN/dbeta = 0 (paper 4.1)"),
+        ("smallest area stable in every condition", area(sel.smallest_stable), unit,
+         f"{sel.smallest_stable:.3g} x neutral" if np.isfinite(sel.smallest_stable)
+         else "no area of the matrix is stable in every condition"),
+        ("its governing condition", gs["condition"], "",
+         f"fails below with: {gs['fails below with']}" if gs["fails below with"] else
+         "the least damped condition at that area"),
+        ("recommended area (least drag meeting the damping criterion)",
+         area(sel.recommended), unit,
+         f"{sel.recommended:.3g} x neutral (paper: 1.4 x)" if np.isfinite(sel.recommended)
+         else "no area meets the criterion in every condition"),
+    ]
+    if gr is not None:
+        rows += [("its governing condition (least yaw damping)", gr["condition"], "",
+                  f"yaw-mode damping {gr['least yaw-mode damping ratio [-]']:.3g} "
+                  f"({gr['with manoeuvre']})"),
+                 ("its largest trimmed swing angle", gr["largest trimmed swing angle [deg]"],
+                  "deg", gr["largest swing condition"])]
+    check = r.neutral_check
+    one = check[check["model"] == "1-DOF yaw"]
+    multi = check[(check["model"] == "multibody") & (check["test"] == "eigenvalues")]
+    rows += [
+        ("1.0 x neutral area, 1-DOF yaw model", ", ".join(sorted(set(one["verdict"]))), "",
+         "standard 30 ft/s lateral gusts"),
+        ("1.0 x neutral area, multibody eigenvalues",
+         f"stable in {(multi['verdict'] == 'stable').sum()} of {len(multi)} conditions", "",
+         ", ".join(f"{v}: {n}" for v, n in multi["verdict"].value_counts().items())),
+    ]
+    return _items(rows)
+
+
+def no_parachute_table(report, units):
+    """Speed limits without parachute, in kt whatever the unit system."""
+    npr = report.result.no_parachute
+    if npr is None:
+        return None
+    return npr.limits.drop(columns=["largest convergent ramp [m/s]"])
+
+
+def handoff_table(report):
+    """The envelope handed to the loads (angles in degrees, forces SI)."""
+    env = report.result.envelope
+    if env is None:
+        return None
+    return env.to_frame()
+
+
+def _sheets(report, units, digest):
+    r = report.result
+    summary = [Section("Inputs", digest),
+               Section("Campaign", definition_table(report, units)),
+               Section("Parachute selection", selection_table(report, units))]
+    limits = no_parachute_table(report, units)
+    if limits is not None:
+        summary.append(Section("Transport without parachute: largest convergent ramp",
+                               limits))
+    handoff = handoff_table(report)
+    if handoff is not None:
+        summary.append(Section(f"Dynamics handed to the loads: runs at "
+                               f"{r.envelope.area_factor:g} x neutral area, margin "
+                               f"{r.envelope.margin:g}", handoff))
+    sheets = {
+        "Summary": summary,
+        "Matrix": in_units(r.campaign.matrix.frame, units),
+        "Metrics": in_units(r.metrics, units),
+        "Selection": [Section("By area factor", in_units(r.selection.by_area, units))],
+        "NeutralArea": [Section("1.0 x neutral area: 1-DOF and multibody verdicts",
+                                r.neutral_check)],
+    }
+    sens = [Section(f"Sensitivity to the {name}", in_units(table, units))
+            for name, table in r.sensitivity.items()]
+    if r.carrier is not None:
+        sens.append(Section("Carrier free against frozen (paired runs)",
+                            in_units(r.carrier, units)))
+    sheets["Sensitivity"] = sens or "no factor varies"
+    if r.stability is not None:
+        sheets["StabilityMap"] = [
+            Section("Minimum stable area by airspeed and density altitude",
+                    in_units(r.stability.minimum, units)),
+            Section("Every grid point", in_units(r.stability.points, units))]
+    if r.no_parachute is not None:
+        sheets["NoParachute"] = [Section("Every ramp", in_units(r.no_parachute.runs, units))]
+    sheets["LoadsHandoff"] = (
+        [Section("Extremes of the chosen parachute's runs", handoff)] if handoff is not None
+        else "no area is stable in every condition and none was chosen: nothing is handed to "
+             "the loads")
+    return sheets
+
+
+def sweep_plots(result):
+    """(tag, run ids, factor column, title) of the sensitivity plots (paper figures 9-13)."""
+    from slingloads.analyses.campaign import FACTORS, base_condition, sweep_runs
+
+    m = result.campaign.matrix.frame
+    base = base_condition(m, result.chosen_area_factor)
+    manoeuvres = list(dict.fromkeys(m["manoeuvre"]))
+    free = "free response" if "free response" in manoeuvres else manoeuvres[0]
+    gust = next((x for x in manoeuvres if x.startswith("gust")), free)
+    choice = {"area factor [-]": free, "airspeed EAS [m/s]": free, "carrier": free,
+              "cable length [m]": gust, "density altitude [m]": gust, "mass case": gust}
+    out = []
+    for factor, name in FACTORS.items():
+        runs = sweep_runs(m, factor, base, choice[factor])
+        if runs:
+            tag = "sensitivity-" + name.replace(" ", "-")
+            out.append((tag, runs, factor, f"{name}: {choice[factor]}"))
+    return out
+
+
+def _figures(report, units):
+    from slingloads.io.campaign.plots import (
+        plot_envelope,
+        plot_no_parachute,
+        plot_selection,
+        plot_stability_map,
+        plot_sweep,
+    )
+
+    r = report.result
+    figs = {"selection": ("Parachute selection", plot_selection(r, units))}
+    for tag, runs, factor, title in sweep_plots(r):
+        figs[tag] = (f"Sensitivity, {title}", plot_sweep(r, runs, factor, title))
+    if r.stability is not None:
+        figs["stability-map"] = ("Stability map",
+                                 plot_stability_map(r.stability, r.neutral.area, units))
+    if r.no_parachute is not None:
+        figs["no-parachute"] = ("Transport without parachute (paper figures 16-18)",
+                                plot_no_parachute(r))
+    if r.envelope is not None:
+        figs["envelope"] = ("Angle envelope handed to the loads", plot_envelope(r))
+    return figs
+
+
+def write_histories(result, path):
+    """Every stored history as one Parquet file (SI, angles in degrees), ``run`` first.
+
+    Returns
+    -------
+    int
+        Runs written.
+    """
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    from slingloads.analyses.campaign import HISTORY_LABELS
+
+    # the run ids by dictionary, the float columns split by byte (as in the run cache)
+    options = {"compression": "zstd", "use_dictionary": ["run"],
+               "use_byte_stream_split": list(HISTORY_LABELS)}
+
+    runs = [(run, result.keys[run]) for run in result.metrics["run"]]
+    if result.no_parachute is not None:
+        runs += [(f"NP-{name}-{target / KNOT:.0f}kt", key)
+                 for (name, target), key in result.no_parachute.keys.items()]
+    writer, count = None, 0
+    try:
+        for start in range(0, len(runs), 50):
+            arrays, names = [], []
+            for run, key in runs[start:start + 50]:
+                record = result.store.get(key)
+                if record is None or record[1] is None:
+                    continue
+                arrays.append(record[1])
+                names += [run] * record[1].shape[0]
+            if not arrays:
+                continue
+            data = np.vstack(arrays)
+            table = pa.Table.from_arrays(
+                [pa.array(names)] + [pa.array(data[:, j]) for j in range(data.shape[1])],
+                names=["run", *HISTORY_LABELS])
+            if writer is None:
+                writer = pq.ParquetWriter(path, table.schema, **options)
+            writer.write_table(table)
+            count += len(arrays)
+        if writer is None:  # no history kept: an empty table with the columns
+            empty = pa.Table.from_arrays(
+                [pa.array([], pa.string())] + [pa.array([], pa.float64())
+                                               for _ in HISTORY_LABELS],
+                names=["run", *HISTORY_LABELS])
+            pq.write_table(empty, path, **options)
+    finally:
+        if writer is not None:
+            writer.close()
+    return count
+
+
+def write(report, out_dir, stem, units, study):
+    """Write the campaign report (module notes) atomically.
+
+    Parameters
+    ----------
+    report : CampaignReport
+    out_dir : path-like or AtomicOutputs
+    stem : str
+    units : str
+        ``"SI"`` or ``"US"``.
+    study : WorkbookStudy
+
+    Returns
+    -------
+    list of pathlib.Path
+    """
+    check_units(units)
+    inputs = study.input_files or [study.path]
+    figs = _figures(report, units)
+    names = ([f"{stem}-campaign.xlsx", f"{stem}-campaign-histories.parquet"]
+             + [f"{stem}-campaign-{tag}.png" for tag in figs])
+    for name in names:
+        check_not_input(Path(out_dir) / name, inputs)
+    pngs = {tag: (title, figure_png(fig, _PNG_DPI)) for tag, (title, fig) in figs.items()}
+    sheets = _sheets(report, units, digest_frame(study.digest()))
+    with atomic_outputs(out_dir, inputs=inputs) as out:
+        write_workbook(out.path(f"{stem}-campaign.xlsx"), sheets,
+                       {title: png for title, png in pngs.values()},
+                       number_format=NUMBER_FORMATS)
+        write_histories(report.result, out.path(f"{stem}-campaign-histories.parquet"))
+        for tag, (_, png) in pngs.items():
+            out.path(f"{stem}-campaign-{tag}.png").write_bytes(png)
+    return out.written

@@ -1,0 +1,435 @@
+"""Build the multibody system and its manoeuvres from an input workbook (``run multibody``).
+
+Called through the registry (:mod:`slingloads.io.analyses`) as ``read(reader, params, study)``.
+The pieces are public so that other analyses (a campaign sweeping the system) build the same
+system from the same sheets: :func:`read_system` (carrier, cable, carried helicopter, parachute,
+configuration), :func:`read_manoeuvres` (the MultibodyManoeuvres sheet, or the paper's list),
+:func:`read_settings`; :func:`load_workbook_system` does it all from a file path.
+
+Every value is SI after reading; every bad value raises :class:`~slingloads.errors.InputError`
+naming the file, sheet, cell, the value as written and the rule broken.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from slingloads.analyses.multibody.manoeuvres import (
+    DEFAULT_DISTURBANCE,
+    HOVER_SEED,
+    Manoeuvre,
+    paper_manoeuvres,
+)
+from slingloads.constants import FOOT
+from slingloads.io.airframe.reader import (
+    read_fin_aero,
+    read_fuselage_aero,
+    read_parachute,
+)
+from slingloads.io.common.schema import STUDY_SHEET
+from slingloads.io.common.workbook import located
+from slingloads.io.multibody.schema import (
+    CANOPY_TABLES,
+    CARRIERS,
+    CONFIGURATIONS,
+    DIRECTIONS,
+    DISTURBANCE_COLUMNS,
+    MANOEUVRE_KINDS,
+    PARACHUTE_MODELS,
+    SHEETS,
+    TAILS,
+)
+from slingloads.models.aero_tables import Table1D
+from slingloads.models.atmosphere import isa_density, true_airspeed
+from slingloads.models.gusts import GUST_KINDS, GUST_VELOCITY, make_gust
+from slingloads.models.multibody.cable import Cable
+from slingloads.models.multibody.carrier import ForwardAcceleration, FreeCarrier, FrozenCarrier
+from slingloads.models.multibody.environment import Wind, WindRamp
+from slingloads.models.multibody.local_flow import LiftingSurface
+from slingloads.models.multibody.parachute_line import HingedParachute, QuasiStaticParachute
+from slingloads.models.multibody.rigid_body import RigidBody
+from slingloads.models.multibody.system import SlingSystem
+from slingloads.models.parachute import extended_cd_table
+
+ANALYSIS = "multibody"
+_SPEC = {s.name: s for s in SHEETS}
+#: Defaults of the MultibodyManoeuvres columns (SI).
+ONSET, DURATION, ACCELERATION, RAMP_RATE = 5.0, 10.0, 1.0, 0.5
+
+
+@dataclass(frozen=True)
+class MultibodyInputs:
+    """Everything the multibody analysis needs, in SI.
+
+    Attributes
+    ----------
+    system : SlingSystem
+    manoeuvres : tuple of Manoeuvre
+    settings : dict
+        Keywords of :func:`~slingloads.analyses.multibody.simulate`: ``t_end``, ``dt`` (None:
+        adaptive), ``output_interval`` [s], ``rtol`` [-], ``atol`` [SI].
+    configuration, tail, carrier, parachute_model, canopy_table : str
+        The Study's choices, as spelt in :mod:`slingloads.io.multibody.schema`.
+    margin : float
+        Required excess of the cable over the parachute line. [-]
+    warnings : tuple of str
+        Rules broken that do not prevent the runs (shown in the report).
+    manoeuvre_source : str
+        "MultibodyManoeuvres sheet" or "the paper's list".
+    """
+
+    system: SlingSystem
+    manoeuvres: tuple
+    settings: dict
+    configuration: str
+    tail: str
+    carrier: str
+    parachute_model: str
+    canopy_table: str
+    margin: float
+    warnings: tuple
+    manoeuvre_source: str
+
+
+def read(reader, params, study):
+    """Build :class:`MultibodyInputs` from the workbook.
+
+    Parameters
+    ----------
+    reader : WorkbookReader
+    params : slingloads.io.common.parameters.StudyParameters
+    study : WorkbookStudy
+        The airframe and the hardpoints by kind already read.
+
+    Returns
+    -------
+    MultibodyInputs
+
+    Raises
+    ------
+    InputError
+        With the file, sheet, cell, value and rule.
+    """
+    settings = read_settings(reader, params)
+    system, choices = read_system(reader, params, study)
+    manoeuvres, source = read_manoeuvres(reader, params, system, settings["t_end"])
+    warnings = tuple(system.warnings(choices["margin"]))
+    return MultibodyInputs(system=system, manoeuvres=manoeuvres, settings=settings,
+                           warnings=warnings, manoeuvre_source=source, **choices)
+
+
+def load_workbook_system(path):
+    """The multibody inputs of the workbook at ``path`` (whatever its 'run multibody' says).
+
+    Returns
+    -------
+    MultibodyInputs
+    """
+    from slingloads.io.study import read_study
+
+    return read_study(path, only=[ANALYSIS]).inputs[ANALYSIS]
+
+
+# --------------------------------------------------------------------------- settings
+def read_settings(reader, params):
+    """Run length [s], fixed step [s] (None: adaptive), output interval [s] and the adaptive
+    step's tolerances (relative [-], absolute [SI]), as a dict of :func:`simulate`'s
+    keywords."""
+    t_end = params.positive("multibody simulation time")
+    interval = params.positive("multibody output interval")
+    params.check("multibody output interval", interval <= t_end,
+                 "'multibody output interval' must not exceed 'multibody simulation time'")
+    samples = t_end / interval
+    params.check("multibody simulation time", abs(samples - round(samples)) <= 1e-9 * samples,
+                 "'multibody simulation time' must be a whole multiple of 'multibody output "
+                 "interval'")
+    dt = params.positive("multibody time step", allow_zero=True)
+    return {"t_end": t_end, "dt": dt if dt > 0 else None, "output_interval": interval,
+            "rtol": params.positive("multibody relative tolerance"),
+            "atol": params.positive("multibody absolute tolerance")}
+
+
+# --------------------------------------------------------------------------- the system
+def read_system(reader, params, study):
+    """The towed system of the workbook, and the Study's choices.
+
+    Parameters
+    ----------
+    reader : WorkbookReader
+    params : StudyParameters
+    study : WorkbookStudy
+        With the airframe and its hardpoints by kind (``study.points``).
+
+    Returns
+    -------
+    system : SlingSystem
+    choices : dict
+        ``configuration``, ``tail``, ``carrier``, ``parachute_model``, ``canopy_table``
+        (spelt as in the schema) and ``margin`` [-].
+    """
+    file = reader.file
+    configuration = params.choice("multibody configuration", CONFIGURATIONS)
+    tail_choice = params.choice("multibody tail", TAILS)
+    parachute_model = params.choice("multibody parachute model", PARACHUTE_MODELS)
+    canopy_table = params.choice("multibody canopy CD", CANOPY_TABLES)
+    carrier_choice = params.choice("multibody carrier", CARRIERS)
+    margin = params.positive("multibody cable margin", allow_zero=True)
+    airspeed = params.positive("multibody airspeed EAS", allow_zero=True)
+    altitude = params("multibody density altitude")
+    body = _body(reader, study)
+    refs = study.points
+    fuselage = read_fuselage_aero(reader, params, refs)
+    if fuselage is None:
+        raise reader.error("the multibody model needs the FuselageAero sheet (the carried "
+                           "helicopter's aerodynamics)", sheet="FuselageAero")
+    surfaces = _surfaces(reader, params, refs, tail_choice)
+    hardpoints = study.airframe.hardpoints
+    parachute = None
+    if configuration == "with parachute":
+        parachute = _parachute(reader, params, hardpoints, parachute_model, canopy_table)
+    cable = _cable(params)
+    if parachute is not None:
+        _check_reach(params, hardpoints, parachute, cable)
+    carrier = _carrier(params, carrier_choice)
+    with located(file, STUDY_SHEET, params.where("multibody density altitude")):
+        isa_density(altitude)
+    with located(file, STUDY_SHEET):
+        system = SlingSystem(body, hardpoints, cable, fuselage, surfaces, parachute, carrier,
+                             airspeed, altitude, name=str(params("study name")))
+    return system, {"configuration": configuration, "tail": tail_choice,
+                    "carrier": carrier_choice, "parachute_model": parachute_model,
+                    "canopy_table": canopy_table, "margin": margin}
+
+
+def _body(reader, study):
+    """The carried helicopter's mass, CG and inertia tensor from MassItems."""
+    with located(reader.file, "MassItems"):
+        return RigidBody.from_mass_items(study.airframe.mass_items)
+
+
+def _surfaces(reader, params, refs, tail_choice):
+    """The fin (cut down, or intact with the full tail) and the horizontal tail."""
+    fin = read_fin_aero(reader, params, refs)
+    if fin is not None:
+        with located(reader.file, STUDY_SHEET, params.where("fin axes")):
+            LiftingSurface.from_fin(fin)  # a normal-force table: body axes
+    if tail_choice == "cut-down fin":
+        return (LiftingSurface.from_fin(fin),) if fin is not None else ()
+    if fin is None:
+        raise reader.error("'multibody tail' = full tail needs the FinAero sheet (the intact "
+                           "fin)", "full tail", STUDY_SHEET, params.where("multibody tail"))
+    if not reader.has_sheet("HTailAero"):
+        raise reader.error("'multibody tail' = full tail needs the HTailAero sheet (the "
+                           "horizontal tail)", "full tail", STUDY_SHEET,
+                           params.where("multibody tail"))
+    if refs.get("htail_cp") is None:
+        raise reader.error("'multibody tail' = full tail needs a Hardpoints row of kind "
+                           "'htail_cp' (horizontal-tail centre of pressure)",
+                           sheet="Hardpoints", cell="B1")
+    area = params.positive("multibody horizontal tail area")
+    t = reader.table(_SPEC["HTailAero"])
+    with located(reader.file, t.sheet):
+        table = Table1D(t["alpha"], {"CN": t["CN"]}, angle_name="alpha",
+                        what="horizontal tail")
+        tail = LiftingSurface(table, area, refs["htail_cp"], "z", 1.0, "horizontal tail")
+    return LiftingSurface.from_fin(fin, efficiency=1.0), tail
+
+
+def _parachute(reader, params, hardpoints, model, canopy_table):
+    """The hinged or quasi-static canopy of the 'with parachute' configuration."""
+    if hardpoints.chute is None:
+        raise reader.error("'multibody configuration' = with parachute needs a Hardpoints row "
+                           "of kind 'chute' (the parachute attachment)", sheet="Hardpoints",
+                           cell="B1")
+    area = params.positive("multibody parachute area", allow_zero=True)
+    if area == 0:
+        area = params.positive("parachute area", allow_zero=True)
+        if area == 0:
+            raise params.error("multibody parachute area", "the parachute needs an area: "
+                               "'multibody parachute area' > 0, or the Study's 'parachute "
+                               "area' > 0 when it is 0", params.raw("multibody parachute area"))
+    chute = read_parachute(reader, params, area)
+    if canopy_table == "extended":
+        chute = replace(chute, cd=extended_cd_table(), axes="wind")
+    elif chute.axes != "wind":
+        raise params.error("parachute table axes", "the multibody canopy pulls along its "
+                           "relative wind: its table must be in wind axes (CD), or set "
+                           "'multibody canopy CD' to extended", params.raw(
+                               "parachute table axes"))
+    if model == "quasi-static":
+        return QuasiStaticParachute(chute)
+    mass = params.positive("multibody canopy mass")
+    with located(reader.file, STUDY_SHEET, params.where("multibody canopy mass")):
+        return HingedParachute(chute, mass)
+
+
+def _cable(params):
+    length = params.positive("multibody cable length")
+    ea = params.positive("multibody cable EA")
+    damping = params.positive("multibody cable damping ratio", allow_zero=True)
+    return Cable(length, ea, damping)
+
+
+def _check_reach(params, hardpoints, parachute, cable):
+    """The canopy must not be able to reach the carrier: line plus hub-to-attachment distance
+    shorter than the cable."""
+    line = parachute.line_length
+    arm = float(np.linalg.norm(hardpoints.chute - hardpoints.hub))
+    reach = line + arm
+    if reach >= cable.length:
+        raise params.error(
+            "multibody cable length",
+            f"the parachute could reach the carrier: its line ({line:.4g} m = "
+            f"{line / FOOT:.4g} ft) plus the distance from the hub to its attachment "
+            f"({arm:.4g} m) reach {reach:.4g} m ({reach / FOOT:.4g} ft) from the hub, not less "
+            f"than the carrier cable ({cable.length:.4g} m); lengthen the cable",
+            params.raw("multibody cable length"))
+
+
+def _carrier(params, choice):
+    mass = params.positive("multibody carrier mass")
+    drag = params.positive("multibody carrier drag area", allow_zero=True)
+    gain = params.positive("multibody carrier speed gain")
+    return FreeCarrier(mass, drag, gain) if choice == "free" else FrozenCarrier()
+
+
+# --------------------------------------------------------------------------- manoeuvres
+def read_manoeuvres(reader, params, system, t_end):
+    """The runs of the MultibodyManoeuvres sheet, or the paper's list without it.
+
+    Parameters
+    ----------
+    reader : WorkbookReader
+    params : StudyParameters
+    system : SlingSystem
+        Its density altitude turns the forward accelerations' indicated airspeeds into true
+        airspeeds.
+    t_end : float
+        Length of the runs (inputs must start before it). [s]
+
+    Returns
+    -------
+    manoeuvres : tuple of Manoeuvre
+    source : str
+    """
+    if not reader.has_sheet("MultibodyManoeuvres"):
+        return tuple(paper_manoeuvres(system.density_altitude)), "the paper's list"
+    t = reader.table(_SPEC["MultibodyManoeuvres"])
+    rows = _Rows(reader, t)
+    seen = {}
+    out = []
+    for i in range(len(t)):
+        name = str(t["name"][i]).strip()
+        if name in seen:
+            raise reader.error(f"duplicate name (first at {t.cell('name', seen[name])})", name,
+                               t.sheet, t.cell("name", i))
+        seen[name] = i
+        kind = rows.choice("kind", i, MANOEUVRE_KINDS, required=True)
+        builder = {"free response": _free_response, "gust": _gust,
+                   "forward acceleration": _acceleration, "wind ramp": _wind_ramp}[kind]
+        with located(reader.file, t.sheet, t.cell("kind", i)):
+            out.append(builder(rows, i, name, system, t_end))
+    return tuple(out), "MultibodyManoeuvres sheet"
+
+
+class _Rows:
+    """Cells of the MultibodyManoeuvres sheet, checked with the value as written."""
+
+    def __init__(self, reader, table):
+        self.reader, self.t = reader, table
+
+    def raw(self, column, i):
+        return self.reader.book[self.t.sheet][self.t.cell(column, i)].value
+
+    def error(self, column, i, rule):
+        cell = self.t.cell(column, i) if self.t.has(column) else "A1"
+        value = self.raw(column, i) if self.t.has(column) else None
+        return self.reader.error(rule, value, self.t.sheet, cell)
+
+    def given(self, column, i):
+        if not self.t.has(column):
+            return False
+        value = self.t[column][i]
+        return bool(str(value).strip()) if isinstance(value, str) else np.isfinite(value)
+
+    def number(self, column, i, default, rule, ok):
+        """The SI value of a numeric cell (``default`` when empty), checked by ``ok``."""
+        if not self.given(column, i):
+            if default is None:
+                raise self.error(column, i, f"{self.t['kind'][i]!r} needs {column!r}: {rule}")
+            return default
+        value = float(self.t[column][i])
+        if not ok(value):
+            raise self.error(column, i, f"{column!r} must be {rule}")
+        return value
+
+    def choice(self, column, i, valid, required=False, default=""):
+        if not self.given(column, i):
+            if required:
+                raise self.error(column, i, f"{column!r} needs one of {list(valid)}")
+            return default
+        text = " ".join(str(self.t[column][i]).strip().lower().replace("_", " ").split())
+        for v in valid:
+            if text == v.lower():
+                return v
+        raise self.error(column, i, f"unknown {column}; valid values are {list(valid)}")
+
+    def unused(self, columns, i, kind):
+        for column in columns:
+            if self.given(column, i):
+                raise self.error(column, i, f"a {kind} does not use {column!r}; leave it "
+                                            "empty")
+
+    def disturbance(self, i, default):
+        given = {key: float(self.t[column][i]) for column, key in DISTURBANCE_COLUMNS.items()
+                 if self.given(column, i)}
+        return given if given else dict(default)
+
+    def onset(self, i, t_end):
+        return self.number("onset", i, ONSET, f">= 0 and before the end of the run "
+                           f"({t_end:g} s)", lambda v: 0 <= v < t_end)
+
+
+def _free_response(rows, i, name, system, t_end):
+    rows.unused(("shape", "direction", "amplitude", "onset", "duration", "target", "rate"), i,
+                "free response")
+    return Manoeuvre(name, disturbance=rows.disturbance(i, DEFAULT_DISTURBANCE))
+
+
+def _gust(rows, i, name, system, t_end):
+    rows.unused(("target", "rate"), i, "gust")
+    shape = rows.choice("shape", i, tuple(GUST_KINDS), default="finite")
+    direction = rows.choice("direction", i, DIRECTIONS, default="lateral")
+    amplitude = rows.number("amplitude", i, GUST_VELOCITY, "finite and not 0",
+                            lambda v: v != 0)
+    onset = rows.onset(i, t_end)
+    duration = rows.number("duration", i, DURATION, "> 0", lambda v: v > 0)
+    if shape in ("finite", "1-cosine") and onset + duration >= t_end:
+        raise rows.error("duration", i, f"a {shape} gust must end (onset + duration) before "
+                                        f"the end of the run ({t_end:g} s)")
+    gust = make_gust(shape, amplitude, onset, duration)
+    return Manoeuvre(name, wind=Wind(gust=gust, direction=direction),
+                     disturbance=rows.disturbance(i, {}))
+
+
+def _acceleration(rows, i, name, system, t_end):
+    rows.unused(("shape", "direction", "amplitude", "duration"), i, "forward acceleration")
+    target = rows.number("target", i, None, "> 0 [kt]", lambda v: v > 0)
+    rate = rows.number("rate", i, ACCELERATION, "> 0", lambda v: v > 0)
+    onset = rows.onset(i, t_end)
+    tas = float(true_airspeed(target, system.density_altitude))
+    return Manoeuvre(name, trajectory=ForwardAcceleration(tas, rate, onset),
+                     disturbance=rows.disturbance(i, HOVER_SEED))
+
+
+def _wind_ramp(rows, i, name, system, t_end):
+    rows.unused(("shape", "direction", "amplitude", "duration"), i, "wind ramp")
+    target = rows.number("target", i, None, "> 0 [kt]", lambda v: v > 0)
+    rate = rows.number("rate", i, RAMP_RATE, "> 0", lambda v: v > 0)
+    onset = rows.onset(i, t_end)
+    return Manoeuvre(name, wind=Wind(ramp=WindRamp(target, rate, onset)),
+                     disturbance=rows.disturbance(i, HOVER_SEED))
+
+

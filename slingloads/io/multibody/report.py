@@ -1,0 +1,349 @@
+"""The multibody report: trim, linear modes, every manoeuvre's metrics and histories, plots.
+
+:func:`compute` trims the system read by :mod:`slingloads.io.multibody.reader` at its airspeed,
+linearises it about that trim and flies every manoeuvre (all runs integrated together,
+:func:`slingloads.analyses.multibody.simulate`). :func:`write` publishes, all at once or not at
+all (:mod:`slingloads.io.common.atomic`):
+
+* ``<stem>-multibody.xlsx``: sheets *Summary* (inputs digest, system, warnings, trim, stability
+  verdict, one line per run), *Modes* (eigenvalues, frequencies, damping ratios, names, energy
+  shares), *StateMatrix* (the A matrix of the linear model), *Metrics* (every run: peaks and
+  when, RMS, damping from the response, settling time, verdict and its rule), *Histories*
+  (every run every 1 s) and *Plots*;
+* ``<stem>-multibody-histories.csv``: every run at every stored sample (SI, degrees);
+* ``<stem>-multibody-histories.png`` (yaw, sideslip, swing angles, tension),
+  ``-multibody-eigenvalues.png`` (the complex plane) and ``-multibody-views.png`` (side and top
+  views of the system at trim and at the largest excursion).
+
+Lengths, forces, speeds and masses are in the report unit system (``--units``; the CSV file is
+SI); angles in degrees.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from slingloads.analyses.multibody import linearise, simulate, trim
+from slingloads.constants import KNOT
+from slingloads.errors import InputError
+from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.csvout import write_csv
+from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.common.report import (
+    check_units,
+    convert_columns,
+    digest_frame,
+    in_report_units,
+    report_unit,
+)
+from slingloads.io.common.units import unit_label
+from slingloads.io.common.workbook import located
+from slingloads.io.multibody.plots import plot_eigenvalues, plot_histories, plot_views
+
+ANALYSIS = "multibody"
+#: PNG files written, by tag: ``<stem>-multibody-<tag>.png``.
+PLOTS = ("histories", "eigenvalues", "views")
+#: Names of the files of a multibody report, for the publisher (a new report replaces them).
+OUTPUTS = ("{stem}-multibody.xlsx", "{stem}-multibody-histories.csv",
+           *(f"{{stem}}-multibody-{tag}.png" for tag in PLOTS))
+_PNG_DPI = 80
+#: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
+HISTORY_INTERVAL = 1.0
+#: Quantity kind of the SI units that appear in the analysis' column headers.
+_KINDS = {"m": "length", "N": "force", "m/s": "speed", "kg": "mass", "m^2": "area"}
+_HEADER_UNIT = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
+NUMBER_FORMATS = format_by_header([
+    (r"\[deg", "0.00"),
+    (r"\[-\]", "0.000"),
+    (r"\[(N|lbf)\]", "#,##0"),
+    (r"\[(m|in|ft)\]", "0.00"),
+    (r"\[(s|1/s|rad/s|m/s|kt)\]", "0.000"),
+])
+
+
+@dataclass(frozen=True, eq=False)
+class MultibodyReport:
+    """Results of the multibody analysis of one workbook.
+
+    Attributes
+    ----------
+    inputs : MultibodyInputs
+    trim : Trim
+        Steady towed flight at the system airspeed (or why there is none).
+    linear : LinearModel or None
+        Linear model about that trim (None without trim).
+    simulation : Simulation
+        Every manoeuvre.
+    outline : dict
+        Airframe polylines for the views, airframe axes. [m]
+    """
+
+    inputs: object
+    trim: object
+    linear: object
+    simulation: object
+    outline: dict
+
+    def largest_excursion(self):
+        """(run, sample index, departure [rad]) of the largest angular departure from its
+        start (yaw, lateral or longitudinal cable swing) over all runs; None without runs."""
+        best = None
+        for run in self.simulation.runs:
+            h = run.histories()
+            depart = np.zeros(run.time.size)
+            for key in ("yaw", "swing lateral", "swing longitudinal"):
+                values = h[key] - h[key][0]
+                depart = np.fmax(depart, np.abs(np.where(np.isfinite(values), values, 0.0)))
+            k = int(np.argmax(depart))
+            if best is None or depart[k] > best[2]:
+                best = (run, k, float(depart[k]))
+        return best
+
+
+def compute(study):
+    """Run the multibody analysis read from a workbook.
+
+    Parameters
+    ----------
+    study : WorkbookStudy
+        With ``study.inputs["multibody"]`` (:class:`MultibodyInputs`).
+
+    Returns
+    -------
+    MultibodyReport
+
+    Raises
+    ------
+    InputError
+        If the workbook does not ask for the multibody model, or the analysis refuses its
+        inputs (the file is named).
+    """
+    inputs = study.inputs.get(ANALYSIS)
+    if inputs is None:
+        raise InputError("the workbook does not ask for the multibody model (Study sheet: "
+                         "'run multibody' is no)", file=study.path, sheet="Study")
+    with located(study.path):
+        point = trim(inputs.system)
+        linear = linearise(point) if point.converged else None
+        sim = simulate(inputs.system, inputs.manoeuvres, **inputs.settings)
+    return MultibodyReport(inputs, point, linear, sim, airframe_outline(study.airframe))
+
+
+def airframe_outline(airframe):
+    """Polylines of the airframe for the views: fuselage (foremost mass item, CG, aftmost
+    mass item) and mast (CG to hub), airframe axes. [m]"""
+    items = airframe.mass_items
+    x = items.position[:, 0]
+    nose, tail = items.position[int(np.argmin(x))], items.position[int(np.argmax(x))]
+    cg = items.cg
+    nose = np.array([nose[0], cg[1], nose[2]])
+    tail = np.array([tail[0], cg[1], tail[2]])
+    return {"fuselage": np.vstack([nose, cg, tail]),
+            "mast": np.vstack([cg, airframe.hardpoints.hub])}
+
+
+# ------------------------------------------------------------------------------- tables
+def in_units(frame, units):
+    """A copy of ``frame`` with its SI columns (``[m]``, ``[N]``, ``[m/s]``, ``[kg]``,
+    ``[m^2]``) in the report unit system."""
+    spec = {}
+    for column in frame.columns:
+        match = _HEADER_UNIT.match(str(column))
+        if match and match.group("unit") in _KINDS:
+            spec[column] = (match.group("name"), _KINDS[match.group("unit")])
+    return convert_columns(frame, spec, units)
+
+
+def _row(item, value, kind, units, note=""):
+    if kind is None:
+        return {"item": item, "value": value, "unit": "", "note": note}
+    if kind in ("deg", "-", "s", "1/s", "kt"):
+        return {"item": item, "value": value, "unit": kind, "note": note}
+    return {"item": item, "value": float(in_report_units(value, kind, units)),
+            "unit": unit_label(report_unit(kind, units)), "note": note}
+
+
+def system_table(result, units="SI"):
+    """The system as flown: configuration, mass properties, cable, parachute, carrier."""
+    inp = result.inputs
+    s = inp.system
+    inertia = s.body.inertia
+    rows = [
+        _row("configuration", inp.configuration, None, units),
+        _row("tail", inp.tail, None, units),
+        _row("carrier", inp.carrier, None, units,
+             "hook on the commanded trajectory" if inp.carrier == "frozen"
+             else "point mass with drag, speed hold"),
+        _row("airspeed EAS", s.airspeed / KNOT, "kt", units,
+             f"{s.airspeed:.4g} m/s; true airspeed {s.true_airspeed:.4g} m/s"),
+        _row("density altitude", s.density_altitude, "length", units, "ISA"),
+        _row("air density", s.density, "density", units),
+        _row("HC mass", s.body.mass, "mass", units, "from MassItems"),
+        _row("HC CG x", s.body.cg[0], "length", units, "airframe axes"),
+        _row("HC CG z", s.body.cg[2], "length", units, "airframe axes"),
+        _row("Ixx about the CG", inertia[0, 0], "inertia", units),
+        _row("Iyy about the CG", inertia[1, 1], "inertia", units),
+        _row("Izz about the CG", inertia[2, 2], "inertia", units),
+        _row("Ixz about the CG", inertia[0, 2], "inertia", units, "tensor sign"),
+        _row("cable length", s.cable.length, "length", units, "unstretched, hook to hub"),
+        _row("cable EA", s.cable.ea, "force", units),
+        _row("cable damping ratio", s.cable.damping_ratio, "-", units),
+        _row("static stretch W L / EA", s.cable.static_stretch(s.weight), "length", units),
+    ]
+    if s.parachute is not None:
+        chute = s.parachute.parachute
+        rows += [
+            _row("parachute model", inp.parachute_model, None, units),
+            _row("parachute flat-plate area", chute.area, "area", units),
+            _row("parachute line length", chute.line_length, "length", units),
+            _row("parachute wake ratio", chute.wake_ratio, "-", units),
+            _row("canopy CD table", inp.canopy_table, None, units,
+                 "GENERIC 0-180 deg (paper's 0.95 within 8 deg)" if inp.canopy_table ==
+                 "extended" else "ParachuteCD sheet or the paper's +-8 deg"),
+        ]
+        if s.parachute.kind == "hinged":
+            rows.append(_row("canopy mass", s.parachute.mass, "mass", units))
+        check = s.cable_check(inp.margin)
+        rows.append(_row("cable against the line", "ok" if check.ok else "WARNING", None,
+                         units, check.message))
+    if inp.carrier == "free":
+        rows += [_row("carrier mass", s.carrier.mass, "mass", units),
+                 _row("carrier drag area", s.carrier.drag_area, "area", units),
+                 _row("carrier speed gain", s.carrier.speed_gain, "1/s", units)]
+    sim = result.simulation
+    rows += [
+        _row("manoeuvres", f"{len(inp.manoeuvres)} from {inp.manoeuvre_source}", None, units),
+        _row("run length", inp.settings["t_end"], "s", units),
+        _row("integration", sim.describe_integration(), None, units),
+        _row("output interval", inp.settings["output_interval"], "s", units),
+    ]
+    return pd.DataFrame(rows)
+
+
+def trim_table(result, units="SI"):
+    """The trim at the system airspeed as ``item | value`` rows (report units)."""
+    frame = in_units(result.trim.to_frame(), units).T.reset_index()
+    frame.columns = ["item", "value"]
+    return frame
+
+
+def runs_table(result):
+    """One line per run: name, what it does, verdict, why it stopped."""
+    metrics = result.simulation.metrics_frame()
+    columns = [c for c in ("run", "manoeuvre", "verdict", "yaw change [deg]",
+                           "swing lateral peak [deg]", "tension / weight max [-]", "stopped")
+               if c in metrics.columns]
+    return metrics[columns]
+
+
+def stability_text(result):
+    """The stability verdict of the linear model, with its rule."""
+    if result.linear is None:
+        return f"no trim at the system airspeed: {result.trim.message}"
+    lam = result.linear.eigenvalues
+    worst = lam[np.argmax(lam.real)]
+    return (f"{result.linear.verdict()} (largest real part {worst.real:.4g} 1/s; rule: stable "
+            f"when every real part is below -1e-6 1/s, neutral when some lie within +-1e-6, "
+            f"unstable otherwise)")
+
+
+def history_table(result, units="SI", interval=None):
+    """Every run's histories in long format, every ``interval`` (default: every sample)."""
+    frame = result.simulation.histories_frame()
+    if interval is not None:
+        every = result.inputs.settings["output_interval"]
+        step = max(1, int(round(interval / every)))
+        keep = np.round(frame["time [s]"].to_numpy() / every) % step
+        frame = frame[keep == 0].reset_index(drop=True)
+    return in_units(frame, units)
+
+
+def _sheets(result, units, digest):
+    warnings = result.inputs.warnings
+    summary = [Section("Inputs", digest),
+               Section("System", system_table(result, units)),
+               Section("Warnings", note="\n".join(warnings) if warnings else "none"),
+               Section(f"Trim at {result.inputs.system.airspeed / KNOT:.4g} KEAS",
+                       trim_table(result, units)),
+               Section("Stability of the linear model", note=stability_text(result)),
+               Section("Runs", runs_table(result))]
+    sheets = {"Summary": summary}
+    if result.linear is not None:
+        sheets["Modes"] = [Section("Modes of the linear model about the trim",
+                                   result.linear.modes_frame())]
+        a = result.linear.a_frame().reset_index(names="d/dt of")
+        sheets["StateMatrix"] = [Section(
+            "State matrix A (dz/dt = A z), SI: positions m, velocities m/s, angles rad, rates "
+            "rad/s; phi_x, phi_y, phi_z a small rotation in body axes", a)]
+    else:
+        sheets["Modes"] = f"No linear model: {result.trim.message}"
+    sheets["Metrics"] = [Section("Every run (angles in degrees; verdict rule in the last "
+                                 "columns)", in_units(result.simulation.metrics_frame(), units))]
+    sheets["Histories"] = [Section(
+        f"Every run every {HISTORY_INTERVAL:g} s (every stored sample: the "
+        f"-multibody-histories.csv file)", history_table(result, units, HISTORY_INTERVAL))]
+    return sheets
+
+
+def _figures(result, units="SI"):
+    figs = {"histories": plot_histories(result.simulation)}
+    if result.linear is not None:
+        figs["eigenvalues"] = plot_eigenvalues(result.linear)
+    states = []
+    if result.trim.converged:
+        states.append((f"trim at {result.inputs.system.airspeed / KNOT:.4g} KEAS",
+                       result.trim.state, result.trim.info))
+    excursion = result.largest_excursion()
+    if excursion is not None and np.all(np.isfinite(excursion[0].states[excursion[1]])):
+        run, k, depart = excursion
+        states.append((f"{run.name}, t = {run.time[k]:.1f} s (largest excursion, "
+                       f"{np.degrees(depart):.1f} deg)", run.states[k], run.info[k]))
+    if states:
+        figs["views"] = plot_views(result.inputs.system, states, result.outline, units,
+                                   "The system at trim and at the largest excursion")
+    return figs
+
+
+def write(result, out_dir, stem, units, study):
+    """Write ``<stem>-multibody.xlsx``, ``-multibody-histories.csv`` and the PNG plots
+    atomically.
+
+    Parameters
+    ----------
+    result : MultibodyReport
+    out_dir : path-like
+    stem : str
+    units : str
+        ``"SI"`` or ``"US"``.
+    study : WorkbookStudy
+        For the inputs digest; its input file is never overwritten.
+
+    Returns
+    -------
+    list of pathlib.Path
+    """
+    check_units(units)
+    inputs = study.input_files or [study.path]
+    figures = _figures(result, units)
+    names = ([f"{stem}-multibody.xlsx", f"{stem}-multibody-histories.csv"]
+             + [f"{stem}-multibody-{tag}.png" for tag in figures])
+    for name in names:
+        check_not_input(Path(out_dir) / name, inputs)
+    pngs = {tag: figure_png(fig, _PNG_DPI) for tag, fig in figures.items()}
+    sheets = _sheets(result, units, digest_frame(study.digest()))
+    titles = {"histories": "Time histories: yaw, sideslip, cable swing, tension",
+              "eigenvalues": "Eigenvalues about the trim",
+              "views": "Side and top views at trim and at the largest excursion"}
+    with atomic_outputs(out_dir, inputs=inputs) as out:
+        write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
+                       {titles[t]: png for t, png in pngs.items()},
+                       number_format=NUMBER_FORMATS)
+        write_csv(history_table(result, "SI"), out.path(f"{stem}-multibody-histories.csv"))
+        for tag, png in pngs.items():
+            out.path(f"{stem}-multibody-{tag}.png").write_bytes(png)
+    return out.written

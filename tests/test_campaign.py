@@ -1,0 +1,410 @@
+"""The campaign engine (slingloads.analyses.campaign): execution, resume, selection, stability
+map, transport without parachute, the envelope handed to the loads, and bad input.
+
+References used below:
+- the multibody model itself, run directly (``simulate_runs``, ``trim``, ``linearise``), for
+  what the campaign must reproduce exactly whatever executes it;
+- eigenvalues of the linearised state matrix computed here with ``numpy.linalg.eigvals`` for
+  the stability map;
+- hand-built metrics tables whose answer is worked out in each docstring for the selection and
+  the speed limits;
+- the stored time histories of the runs for the envelope handed to the loads.
+
+Runs are short (30 s) and matrices tiny: the whole file costs well under a minute.
+"""
+
+import numpy as np
+import pandas as pd
+import pytest
+from numpy.testing import assert_allclose, assert_array_equal
+
+from slingloads.analyses.campaign import (
+    Campaign,
+    CampaignMatrix,
+    CampaignSetup,
+    DaskCluster,
+    Factors,
+    InProcess,
+    KeyMaker,
+    MapSettings,
+    MassCase,
+    MemoryStore,
+    RunSettings,
+    SelectionCriteria,
+    dynamics_envelope,
+    run_campaign,
+    select_parachute,
+    speed_limits,
+)
+from slingloads.analyses.campaign.matrix import MANOEUVRES
+from slingloads.analyses.multibody import linearise, simulate_runs, trim
+from slingloads.constants import FOOT, KNOT
+from slingloads.errors import InputError
+from slingloads.models.multibody import Cable, HingedParachute, SlingSystem
+from slingloads.models.parachute import Parachute, extended_cd_table
+from slingloads.models.sample_aircraft import (
+    sample_body,
+    sample_fuselage,
+    sample_hardpoints,
+    sample_surfaces,
+)
+
+SETTINGS = RunSettings(t_end=30.0, dt=0.01, output_interval=0.1)
+
+
+def base_system():
+    """GENERIC HC1 in the transport configuration with a hinged drogue (area replaced)."""
+    return SlingSystem(sample_body("HC1"), sample_hardpoints("HC1"), Cable(60 * FOOT, 5e6),
+                       sample_fuselage("HC1"), sample_surfaces("HC1"),
+                       HingedParachute(Parachute(1.0, extended_cd_table())))
+
+
+def tiny(areas=(1.2, 1.6), manoeuvres=("free response", "gust +30 ft/s"), **kw):
+    factors = Factors(area_factors=areas, airspeeds=(60 * KNOT,), density_altitudes=(0.0,),
+                      cable_lengths=(60 * FOOT,), manoeuvres=manoeuvres)
+    kw.setdefault("stability", None)
+    return Campaign(CampaignSetup(base_system()), factors, settings=SETTINGS, **kw)
+
+
+@pytest.fixture(scope="module")
+def local():
+    """The tiny campaign run in this process."""
+    return run_campaign(tiny(), executor=InProcess())
+
+
+# ------------------------------------------------------------------------- execution
+def test_campaign_runs_are_the_multibody_runs(local):
+    """Each campaign run is the multibody model's run of its system and manoeuvre: the stored
+    histories equal those of simulate_runs called directly (same RK4, same trim), bit for
+    bit."""
+    campaign = tiny()
+    row = campaign.matrix.frame.iloc[3]  # area 1.6, gust
+    system = campaign.setup.system_for(row)
+    manoeuvre = MANOEUVRES[row["manoeuvre"]].build(row["airspeed EAS [m/s]"], 0.0)
+    direct = simulate_runs([(system, manoeuvre)], **SETTINGS.as_dict()).runs[0]
+    history = local.history(row["run"])
+    assert_array_equal(history["beta [deg]"].to_numpy(), np.degrees(direct.histories()["beta"]))
+    assert_allclose(system.parachute.parachute.area, 1.6 * campaign.neutral.area, rtol=1e-15)
+
+
+def test_dask_cluster_gives_the_local_results(local):
+    """A LocalCluster of two worker processes (one thread each) runs the same campaign: the
+    metrics table and every history are identical to the in-process run (each run is
+    integrated on its own whatever batch or process it falls in)."""
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        result = run_campaign(tiny(), executor=DaskCluster(cluster.scheduler_address),
+                              batch_size=1)
+    assert result.execution.computed == 4 and result.execution.batches == 4
+    assert "Dask" in result.execution.executor
+    pd.testing.assert_frame_equal(result.metrics, local.metrics)
+    for run in local.metrics["run"]:
+        pd.testing.assert_frame_equal(result.history(run), local.history(run))
+
+
+def test_resume_after_an_interruption_runs_only_the_missing_runs():
+    """Interrupted after its first batch (of one run), the campaign stored that run only; run
+    again with the same store it computes the 3 others and finds 1, and its results equal an
+    uninterrupted run's."""
+    store = MemoryStore()
+    calls = []
+
+    def interrupt(done, total):
+        calls.append(done)
+        if done >= 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        run_campaign(tiny(), executor=InProcess(), store=store, batch_size=1,
+                     progress=interrupt)
+    assert len(store) == 1
+    again = run_campaign(tiny(), executor=InProcess(), store=store, batch_size=1)
+    assert (again.execution.cached, again.execution.computed) == (1, 3)
+    full = run_campaign(tiny(), executor=InProcess())
+    pd.testing.assert_frame_equal(again.metrics, full.metrics)
+
+
+def test_an_edited_input_reruns_only_what_changed(local):
+    """Editing the matrix (area factors 1.2, 1.6 -> 1.2, 1.4) keeps the keys of the 1.2 runs
+    and changes the others: 2 found, 2 computed. Changing the cable's damping (an input of
+    every run) changes every key."""
+    store = MemoryStore()
+    run_campaign(tiny(), executor=InProcess(), store=store)
+    edited = run_campaign(tiny(areas=(1.2, 1.4)), executor=InProcess(), store=store)
+    assert (edited.execution.cached, edited.execution.computed) == (2, 2)
+    keys = KeyMaker(SETTINGS.as_dict())
+    campaign = tiny()
+    _, jobs = campaign.run_jobs(keys)
+    damped = Campaign(CampaignSetup(base_system().with_(cable=Cable(60 * FOOT, 5e6, 0.1))),
+                      campaign.factors, settings=SETTINGS, stability=None)
+    _, changed = damped.run_jobs(keys)
+    assert not {j[0] for j in jobs} & {j[0] for j in changed}
+    _, same = tiny().run_jobs(keys)
+    assert [j[0] for j in same] == [j[0] for j in jobs]
+
+
+# ------------------------------------------------------------------------- selection
+def _table(rows):
+    """Hand-built metrics: (area factor, airspeed kt, manoeuvre, linear verdict, response
+    verdict, yaw-mode damping ratio, time to half amplitude [s], trimmed swing [deg])."""
+    frame = pd.DataFrame(rows, columns=["area factor [-]", "airspeed kt", "manoeuvre",
+                                        "linear verdict", "response verdict",
+                                        "yaw mode damping ratio [-]",
+                                        "yaw mode time to half amplitude [s]",
+                                        "swing angle trim [deg]"])
+    frame["airspeed EAS [m/s]"] = frame.pop("airspeed kt") * KNOT
+    frame["area [m^2]"] = frame["area factor [-]"] * 0.5
+    frame["trim converged"] = frame["linear verdict"] != "no trim"
+    frame["mass case"], frame["density altitude [m]"] = "max", 0.0
+    frame["cable length [m]"], frame["carrier"] = 18.288, "frozen"
+    frame["yaw change [deg]"] = 5.0
+    frame["run"] = [f"R{i}" for i in range(len(frame))]
+    return frame
+
+
+def test_selection_against_a_hand_built_table():
+    """Areas 1.0-1.6 at 40 and 80 kt, two manoeuvres each. At 40 kt every area from 1.2 is
+    stable; at 80 kt 1.2 has no trim and the gust at 1.4 diverges, so 1.6 is the smallest area
+    stable in every condition, governed by 80 kt (the gust fails at 1.4). The damping criterion
+    (zeta >= 0.1, half time <= 20 s) holds everywhere at 1.6 only (1.4 is not stable): the
+    recommended area is 1.6, governed by 80 kt where its damping is least (0.12). With the
+    criterion relaxed to zeta >= 0.05 and the gust at 1.4 convergent, 1.4 becomes both."""
+    rows = []
+    for f, z80 in ((1.0, np.nan), (1.2, np.nan), (1.4, 0.08), (1.6, 0.12)):
+        for m in ("free", "gust"):
+            rows.append((f, 40, m, "stable" if f > 1.0 else "unstable", "convergent",
+                         0.5 if f > 1.0 else -1.0, 9.0, 1.0 + f))
+            linear = {1.0: "no trim", 1.2: "no trim"}.get(f, "stable")
+            response = "divergent" if (f == 1.4 and m == "gust") else "convergent"
+            rows.append((f, 80, m, linear, response if linear == "stable" else "no trim",
+                         z80, 12.0, 3.0 + f))
+    sel = select_parachute(_table(rows), SelectionCriteria(0.1, 20.0), neutral_area=0.5)
+    assert sel.smallest_stable == 1.6 and sel.recommended == 1.6
+    assert_allclose(sel.recommended_area, 0.8)
+    gov = sel.governing_stable
+    assert gov["airspeed EAS [m/s]"] == pytest.approx(80 * KNOT)
+    assert gov["needs area factor [-]"] == 1.6
+    assert gov["fails below with"] == "gust (response divergent)"
+    assert sel.governing_recommended["least yaw-mode damping ratio [-]"] == 0.12
+    by = sel.by_area.set_index("area factor [-]")
+    assert by.loc[1.2, "no trim"] == 2 and by.loc[1.4, "stable runs"] == 3
+    relaxed = _table([r if not (r[0] == 1.4 and r[4] == "divergent")
+                      else r[:4] + ("convergent",) + r[5:] for r in rows])
+    sel = select_parachute(relaxed, SelectionCriteria(0.05, 20.0), neutral_area=0.5)
+    assert sel.smallest_stable == 1.4 and sel.recommended == 1.4
+
+
+def test_recommended_area_is_the_least_drag_one_meeting_the_criterion():
+    """Three areas all stable; 1.2 fails the half-time limit (30 s > 20 s), 1.4 and 1.8 meet
+    it: the recommended area is the one of smaller largest trimmed swing angle, 1.4 (2.4 deg
+    against 2.8 deg), although 1.2 is the smallest stable."""
+    rows = [(f, v, "free", "stable", "convergent", 0.3, half, 1.0 + f)
+            for f, half in ((1.2, 30.0), (1.4, 10.0), (1.8, 8.0)) for v in (40, 80)]
+    sel = select_parachute(_table(rows), SelectionCriteria(), neutral_area=1.0)
+    assert (sel.smallest_stable, sel.recommended) == (1.2, 1.4)
+    assert sel.governing_recommended["largest trimmed swing angle [deg]"] == pytest.approx(2.4)
+
+
+# -------------------------------------------------------------------- stability map
+def test_stability_map_against_eigenvalues_computed_directly():
+    """At each grid point the map's largest real part equals that of
+    numpy.linalg.eigvals of the state matrix of the system built here by hand (area =
+    factor x neutral area, the point's airspeed); the refined minimum stable area is stable
+    and 0.5 % below it is not (eigenvalues computed directly)."""
+    campaign = tiny(stability=MapSettings((1.0, 1.3), (50 * KNOT, 70 * KNOT), (0.0,)))
+    result = run_campaign(campaign, executor=InProcess())
+    points = result.stability.points
+    neutral = campaign.neutral.area
+
+    def largest(factor, speed):
+        chute = HingedParachute(Parachute(factor * neutral, extended_cd_table()))
+        point = trim(base_system().with_(parachute=chute, airspeed=speed))
+        if not point.converged:
+            return np.nan
+        return np.linalg.eigvals(linearise(point).a).real.max()
+
+    for _, p in points.iterrows():
+        expected = largest(p["area factor [-]"], p["airspeed EAS [m/s]"])
+        assert_allclose(p["largest real part [1/s]"], expected, rtol=1e-9, atol=1e-12)
+    for _, m in result.stability.minimum.iterrows():
+        f = m["minimum stable area factor [-]"]
+        assert largest(f, m["airspeed EAS [m/s]"]) < 0
+        assert largest(f - 0.005, m["airspeed EAS [m/s]"]) > -1e-6
+
+
+# ----------------------------------------------------------------- without parachute
+def test_speed_limits_logic():
+    """HC1 converges at 20 and 30 kt and diverges at 40: limit 30 kt. HC2 converges at 20,
+    departs at 30 and converges again at 40 (the first failure ends the range): limit 20 kt.
+    HC3 is undamped at 20 kt already: no limit (NaN). A ramp is convergent only when its
+    response converges and its final equilibrium is stable (else it departs)."""
+    from slingloads.analyses.campaign.no_parachute import ramp_verdict
+
+    assert ramp_verdict("convergent", "stable") == "convergent"
+    assert ramp_verdict("convergent", "unstable") == "departs"
+    assert ramp_verdict("divergent", "stable") == "divergent"
+    rows = [("HC1", 20, "convergent"), ("HC1", 30, "convergent"), ("HC1", 40, "divergent"),
+            ("HC2", 40, "convergent"), ("HC2", 20, "convergent"), ("HC2", 30, "departs"),
+            ("HC3", 20, "undamped"), ("HC3", 30, "convergent")]
+    runs = pd.DataFrame(rows, columns=["helicopter", "kt", "verdict"])
+    runs["ramp target [m/s]"] = runs.pop("kt") * KNOT
+    limits = speed_limits(runs).set_index("helicopter")
+    assert_allclose(limits["largest convergent ramp [kt]"].to_numpy(), [30, 20, np.nan])
+    assert limits.loc["HC2", "first non-convergent ramp [kt]"] == pytest.approx(30)
+    assert limits.loc["HC2", "its verdict"] == "departs"
+    assert limits.loc["HC3", "its verdict"] == "undamped"
+
+
+# --------------------------------------------------------------- loads hand-off
+def test_loads_envelope_against_the_histories(local):
+    """The extremes handed to the loads are those of the chosen area's stored histories:
+    alpha, beta and line angles min/max, line tension and tension factor max, and the hub-load
+    angles from the hanging vertical (the sample's hub is straight above its CG, so that
+    vertical is z): atan2(|Fy|, Fz) sideways, arccos(Fz / |F|) in total; with a margin of 1.5
+    each bound is 1.5 times as large and the alpha-beta range includes zero."""
+    env = dynamics_envelope(local.metrics, 1.6, margin=1.5)
+    runs = local.metrics.loc[local.metrics["area factor [-]"] == 1.6, "run"]
+    h = pd.concat([local.history(r) for r in runs])
+    for quantity, column in (("alpha", "alpha [deg]"), ("beta", "beta [deg]"),
+                             ("line theta", "line theta [deg]"),
+                             ("line psi", "line psi [deg]")):
+        assert env.reached[quantity] == pytest.approx((h[column].min(), h[column].max()))
+        lo, hi = env.bounds(quantity)
+        assert lo == pytest.approx(min(0.0, 1.5 * h[column].min()))
+        assert hi == pytest.approx(max(0.0, 1.5 * h[column].max()))
+    assert env.reached["line tension"][1] == pytest.approx(h["line tension [N]"].max())
+    assert env.tension_factor == pytest.approx(1.5 * h["tension / weight [-]"].max())
+    lateral = np.degrees(np.arctan2(h["hub Fy [N]"].abs(), h["hub Fz [N]"])).max()
+    assert env.reached["hub load lateral"][1] == pytest.approx(lateral)
+    total = np.degrees(np.arccos(h["hub Fz [N]"] / np.sqrt(
+        h["hub Fx [N]"] ** 2 + h["hub Fy [N]"] ** 2 + h["hub Fz [N]"] ** 2))).max()
+    assert env.hook_angle == pytest.approx(np.radians(1.5 * total))
+    assert env.runs == 2 and set(env.source["beta"]) <= set(runs)
+
+
+# -------------------------------------------------------------------------- bad input
+@pytest.mark.parametrize("kwargs, rule", [
+    ({"area_factors": ()}, "at least one parachute area factor"),
+    ({"area_factors": (1.0, 0.0)}, "must be > 0"),
+    ({"area_factors": (1.0, -1.2)}, "must be > 0"),
+    ({"airspeeds": (0.0,)}, "airspeed must be > 0"),
+    ({"manoeuvres": ("free response", "loop")}, "unknown manoeuvre"),
+    ({"carriers": ("tethered",)}, "unknown carrier"),
+])
+def test_bad_factors_are_refused(kwargs, rule):
+    """An empty factor list, a factor <= 0 and an unknown manoeuvre or carrier raise an
+    InputError that states the rule (and, for names, the valid ones)."""
+    with pytest.raises(InputError, match=rule):
+        Factors(**kwargs)
+    with pytest.raises(InputError, match="mass of the mass case 'max' must be > 0"):
+        MassCase("max", -5.0)
+
+
+def test_bad_listed_rows_are_refused():
+    """Listed rows: an empty list, an unknown mass case (condition) or manoeuvre, and a factor
+    <= 0 are refused naming the row; the valid names are listed."""
+    row = {"area factor [-]": 1.2, "airspeed EAS [m/s]": 30.0, "mass case": "max",
+           "density altitude [m]": 0.0, "cable length [m]": 20.0, "carrier": "frozen",
+           "manoeuvre": "free response"}
+    masses = (MassCase("max", 2900.0),)
+    with pytest.raises(InputError, match="empty"):
+        CampaignMatrix.from_rows([], 0.5, masses)
+    with pytest.raises(InputError, match=r"row 1: unknown mass case.*\['max'\]"):
+        CampaignMatrix.from_rows([{**row, "mass case": "heavy"}], 0.5, masses)
+    with pytest.raises(InputError, match="row 2: unknown manoeuvre"):
+        CampaignMatrix.from_rows([row, {**row, "manoeuvre": "spin"}], 0.5, masses)
+    with pytest.raises(InputError, match="row 1: area factor must be > 0"):
+        CampaignMatrix.from_rows([{**row, "area factor [-]": 0.0}], 0.5, masses)
+    with pytest.raises(InputError, match="listed twice"):
+        CampaignMatrix.from_rows([row, row], 0.5, masses)
+
+
+def test_a_cable_too_short_for_the_parachute_is_refused():
+    """An 18 ft cable cannot clear the sample's 10 m line and 6.4 m fin arm (the canopy could
+    reach the carrier): the campaign refuses it before running anything."""
+    factors = Factors(cable_lengths=(18 * FOOT, 60 * FOOT))
+    with pytest.raises(InputError, match="could reach the carrier"):
+        Campaign(CampaignSetup(base_system()), factors)
+
+
+def test_unreachable_scheduler_fails_within_its_time_out():
+    """A scheduler address nobody listens on: an InputError naming the address and the
+    time-out within a few seconds, and nothing run into the store."""
+    import time
+
+    start = time.perf_counter()
+    with pytest.raises(InputError, match=r"could not reach the Dask scheduler within 1 s"):
+        DaskCluster("tcp://127.0.0.1:9", timeout=1.0)
+    assert time.perf_counter() - start < 15
+
+
+# ------------------------------------------------------------ loads from the dynamics
+@pytest.fixture(scope="module")
+def example_loads():
+    """The example workbook's hand-entered loads study (GENERIC light twin, HC1 tables)."""
+    from pathlib import Path
+
+    from slingloads.io.study import read_study
+
+    example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+    return read_study(example, only=["loads"]).loads
+
+
+def test_loads_take_the_dynamics_cases(local, example_loads):
+    """The hand-off keeps the hand-entered points and adds the dynamics' corners and centre
+    (the margin bounds); it keeps the CS-29.865 30 deg cone and Nz 2.5, which the dynamics
+    (x 1.25) do not reach; it gives the loads the chosen parachute's area. A LINE case loads
+    the parachute fitting with the line tension x margin along e = (cos t cos p, sin p,
+    sin t cos p), worked here from the line angles' corners."""
+    from slingloads.analyses.campaign import loads_from_dynamics
+
+    env = dynamics_envelope(local.metrics, 1.6, margin=1.25)
+    handoff = loads_from_dynamics(example_loads, env, "CS-29.865")
+    study = handoff.study
+    hand = example_loads.envelope
+    assert study.envelope.ids[:len(hand.ids)] == hand.ids
+    dyn = dict(zip(study.envelope.ids, zip(study.envelope.alpha, study.envelope.beta,
+                                           strict=True), strict=True))
+    a0, a1 = np.radians(env.bounds("alpha"))
+    b0, b1 = np.radians(env.bounds("beta"))
+    assert dyn["DYN-A+B-"] == pytest.approx((a1, b0)) and dyn["DYN-CENTRE"] == (0.0, 0.0)
+    assert study.hook.angle == pytest.approx(np.radians(30.0)) and study.hook.nz == 2.5
+    assert study.parachute.area == pytest.approx(env.area)
+    cases = study.case_matrix()
+    line = cases[cases["chute line"] == "LINE-T+P-"].index[0]
+    _, forces, _ = study.applied_loads(cases.loc[[line]])
+    t1, p0 = np.radians(env.bounds("line theta")[1]), np.radians(env.bounds("line psi")[0])
+    expected = env.chute_drag * np.array([np.cos(t1) * np.cos(p0), np.sin(p0),
+                                          np.sin(t1) * np.cos(p0)])
+    assert_allclose(forces[0, -1], expected, rtol=1e-12)
+    hooks = len(study.hook_table()) + 1  # the cone, the vertical and the towed case
+    assert (cases["source"] == "dynamics").sum() == hooks * 5 * (2 + 5)
+
+
+def test_loads_hook_cone_from_the_dynamics_and_table_limits(example_loads):
+    """With hook source 'dynamics' the cone takes the reached angles x margin (fore-and-aft
+    the larger |longitudinal| extreme, sideways the lateral one, elliptical); a margin bound
+    beyond the fuselage table's alpha range (-35 x 1.25 = -43.75 < -40 deg) is set at the
+    table's edge and flagged; Nz is raised when the tension factor x margin exceeds it."""
+    from slingloads.analyses.campaign import DynamicsEnvelope, loads_from_dynamics
+
+    reached = {"alpha": (-35.0, -5.0), "beta": (-20.0, 18.0), "line theta": (-10.0, 4.0),
+               "line psi": (-12.0, 12.0), "hub load from mast": (None, 22.0),
+               "hub load from vertical": (None, 21.0), "hub load lateral": (None, 8.0),
+               "hub load longitudinal": (-14.0, 6.0), "line tension": (None, 900.0),
+               "tension / weight": (None, 2.2)}
+    env = DynamicsEnvelope(1.4, 1.0, 1.25, reached, {k: (None, "R1") for k in reached}, 4, 0)
+    handoff = loads_from_dynamics(example_loads, env, "dynamics")
+    hook = handoff.study.hook
+    assert hook.angle == pytest.approx(np.radians(1.25 * 14.0))
+    assert hook.lateral_angle == pytest.approx(np.radians(1.25 * 8.0))
+    assert hook.cone == "elliptical" and hook.nz == pytest.approx(1.25 * 2.2)
+    alpha = dict(zip(handoff.study.envelope.ids, handoff.study.envelope.alpha, strict=True))
+    assert alpha["DYN-A-B+"] == pytest.approx(np.radians(-40.0))
+    notes = handoff.comparison.set_index("quantity")["note"]
+    assert "limited to the fuselage alpha table's range" in notes["alpha range"]
+    kept = loads_from_dynamics(example_loads, env, "CS-29.865").study.hook
+    assert kept.angle == pytest.approx(np.radians(30.0))
+    with pytest.raises(InputError, match="not a valid hook-cone source"):
+        loads_from_dynamics(example_loads, env, "guess")
