@@ -73,8 +73,9 @@ def main(argv=None):
           f"CPU {analyses[1]:.2f} s")
     print(f"reports (run - analyses): wall {run[0] - analyses[0]:.2f} s, "
           f"CPU {run[1] - analyses[1]:.2f} s")
-    print(f"slingloads run on the example (loads, lateral study, parachute sizing, multibody), best of "
-          f"{args.repeats}: wall {run[0]:.2f} s, CPU {run[1]:.2f} s (target <= 5 s)")
+    print(f"slingloads run on the example (loads, lateral study, parachute sizing, "
+          f"multibody), best of {args.repeats}: wall {run[0]:.2f} s, CPU {run[1]:.2f} s "
+          "(target <= 5 s)")
 
 
 if __name__ == "__main__":
