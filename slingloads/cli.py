@@ -252,8 +252,10 @@ def _analyse(args):
             with outputs:
                 for name in names:
                     bar.set_description(f"writing {name}")
-                    _BY_NAME[name].write(results[name], outputs, stem, args.units, study,
-                                         figures=figures[name], checks=checks.get(name))
+                    extra = {"checks": checks[name]} if name in checks else {}
+                    if figures[name] is not None:
+                        extra["figures"] = figures[name]
+                    ANALYSES[name][2](results[name], outputs, stem, args.units, study, **extra)
                     bar.update(1)
         written = outputs.written
         bar.update(1)

@@ -269,7 +269,9 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
     out = tmp_path / "out"
     assert main(["run", str(path), "--out", str(out), "--cache", str(tiny[2]),
                  "--quiet"]) == 0
-    cases = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="LoadCases")
+    raw = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="LoadCases", header=None)
+    head = int(np.nonzero(raw.isin(["source"]).any(axis=1).to_numpy())[0][0])
+    cases = raw.iloc[head + 1:].set_axis(list(raw.iloc[head]), axis=1)  # under its title
     assert set(cases["source"]) == {"hand", "dynamics"}
     assert cases.loc[cases["source"] == "dynamics", "aero"].str.startswith("DYN-").any()
     dynamics = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="Dynamics", header=None)

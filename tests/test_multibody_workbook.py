@@ -169,7 +169,7 @@ def test_report_reads_back(run_dir, study, result):
     np.testing.assert_allclose(metrics["yaw change [deg]"],
                                sim.metrics_frame()["yaw change [deg]"], atol=2e-3)
     csv = pd.read_csv(run_dir / f"{STEM}-multibody-histories.csv")
-    np.testing.assert_allclose(csv["beta [deg]"], sim.histories_frame()["beta [deg]"],
+    np.testing.assert_allclose(csv["beta_deg"], sim.histories_frame()["beta [deg]"],
                                atol=2e-3)
     assert result.simulation.dt is None  # adaptive
 

@@ -191,7 +191,8 @@ def test_csv_headers_in_one_style(run_dir):
     files = sorted(run_dir.glob("*.csv"))
     assert {f.name for f in files} == {"ident-sfbm.csv", "ident-envelope.csv",
                                        "ident-lateral-histories.csv",
-                                       "ident-chute-histories.csv"}
+                                       "ident-chute-histories.csv",
+                                       "ident-multibody-histories.csv"}
     for f in files:
         header = f.read_text().splitlines()[0].split(",")
         for name in header:
