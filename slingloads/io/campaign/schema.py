@@ -119,16 +119,20 @@ SHEETS = (
     TableSheet("CampaignMasses", (
         Column("mass case", TEXT, help="Name of the mass case, e.g. maximum, medium, minimum."),
         Column("mass", "mass", "kg", help="Mass of the carried helicopter, > 0 (inertia "
-                                          "scaled with it, CG kept)."),
+                                          "scaled with it, CG kept). Typical: 2,000 to "
+                                          "3,000 kg for a light twin."),
     ), help="Optional: mass cases of the campaign (default: one, 'nominal', the mass items' "
        "total)."),
     TableSheet("CampaignRuns", (
         Column("area factor", "dimensionless", help="Parachute area over the neutral area."),
-        Column("airspeed EAS", "speed", "kt"),
+        Column("airspeed EAS", "speed", "kt",
+               help="Equivalent airspeed of the run, > 0. Typical: 40 to 100 kt."),
         Column("mass case", TEXT, required=False, default="",
                help="A CampaignMasses name (may be empty with a single mass case)."),
-        Column("density altitude", "length", "ft"),
-        Column("cable length", "length", "ft"),
+        Column("density altitude", "length", "ft",
+               help="ISA density altitude of the run. Typical: 0, 5,000 or 10,000 ft."),
+        Column("cable length", "length", "ft",
+               help="Unstretched carrier-to-hub cable length, > 0. Typical: 18, 60 or 100 ft."),
         Column("carrier", TEXT, help="frozen | free"),
         Column("manoeuvre", TEXT, help="free response | gust +30 ft/s | gust -30 ft/s | "
                                        "acceleration"),

@@ -115,30 +115,35 @@ SHEETS = (
                     "longitudinal (head-on) | vertical (up) (default lateral)."),
         Column("amplitude", "speed", "ft/s", False, None,
                "Gust only: gust velocity, finite and not 0, sign = direction (default 30 "
-               "ft/s, CS 29.341)."),
+               "ft/s, CS 29.341). Typical: +30 or -30 ft/s."),
         Column("onset", "time", "s", False, None,
                "Gust, forward acceleration, wind ramp: start time, >= 0 and before the end of "
-               "the run (default 5 s)."),
+               "the run (default 5 s). Typical: 5 s."),
         Column("duration", "time", "s", False, None,
                "Gust only: duration of the finite and 1-cosine gusts, period of the continuous "
-               "one, > 0 (default 10 s)."),
+               "one, > 0 (default 10 s). Typical: 10 s."),
         Column("target", "speed", "kt", False, None,
                "Forward acceleration: final indicated airspeed (paper: 40, 60, 80, 100 KIAS); "
-               "wind ramp: final head-wind speed (paper: 20 to 80 kt). > 0, required."),
+               "wind ramp: final head-wind speed (paper: 20 to 80 kt). > 0, required. Typical: "
+               "80 kt."),
         Column("rate", "acceleration", "m/s^2", False, None,
                "Forward acceleration: peak acceleration (default 1 m/s^2); wind ramp: rate of "
-               "increase of the wind (default 0.5 m/s^2). > 0."),
+               "increase of the wind (default 0.5 m/s^2). > 0. Typical: 0.5 to 1 m/s^2."),
         Column("yaw", "angle", "deg", False, None,
-               "Initial disturbance from the start: yaw, nose right +."),
-        Column("pitch", "angle", "deg", False, None, "Initial pitch, nose up +."),
-        Column("roll", "angle", "deg", False, None, "Initial roll, right side down +."),
-        Column("yaw rate", "frequency", "deg/s", False, None, "Initial yaw rate."),
+               "Initial disturbance from the start: yaw, nose right +. Typical: 10 deg for a "
+               "free response."),
+        Column("pitch", "angle", "deg", False, None,
+               "Initial pitch, nose up +. Typical: 0 to 5 deg."),
+        Column("roll", "angle", "deg", False, None,
+               "Initial roll, right side down +. Typical: 0 to 5 deg."),
+        Column("yaw rate", "frequency", "deg/s", False, None,
+               "Initial yaw rate, nose right +. Typical: 0 to 5 deg/s."),
         Column("lateral offset", "length", "ft", False, None,
-               "Initial CG displacement to the right (earth axes)."),
+               "Initial CG displacement to the right (earth axes). Typical: 0 to 3 ft."),
         Column("longitudinal offset", "length", "ft", False, None,
-               "Initial CG displacement aft (earth axes)."),
+               "Initial CG displacement aft (earth axes). Typical: 0 to 3 ft."),
         Column("vertical offset", "length", "ft", False, None,
-               "Initial CG displacement up (earth axes)."),
+               "Initial CG displacement up (earth axes). Typical: 0 to 1 ft."),
         Column("description", TEXT, required=False, default="", help="Free text."),
     ), help="Optional: the runs of the multibody model, each from its trim plus its stated "
        "initial disturbance (empty disturbance columns: 10 deg of yaw for a free response, a "
@@ -149,7 +154,7 @@ SHEETS = (
         Column("alpha", "angle", "deg",
                help="Local angle of attack of the horizontal tail, strictly increasing; it "
                     "should cover -180..180 deg (never extrapolated: a run that leaves it "
-                    "stops)."),
+                    "stops). Typical: -180 to 180 deg in 5 to 10 deg steps."),
         Column("CN", "dimensionless",
                help="Normal-force coefficient on 'multibody horizontal tail area', positive "
                     "up for a positive alpha."),
