@@ -3,11 +3,11 @@
 Runs the command line in a fresh Python process, as a user does, writing into a temporary
 directory; and, beside it, the analyses alone in a fresh process (import, read the workbook,
 compute loads, lateral study and parachute sizing; no report written). The difference is the
-cost of writing the reports. Each figure is the best of the repeats, as wall-clock time and as
+cost of writing the reports. Each figure is the median of the repeats, as wall-clock time and as
 CPU time of the child process (user + system): the CPU time is the steadier figure when other
 jobs share the machine.
 A cold run first compiles the multibody kernels into an empty cache, as the first run on a
-machine does; it is printed apart and not counted in the best.
+machine does; it is printed apart and not counted in the median.
 
 Run: ``python benchmarks/bench_example.py`` (3 repeats, about 30 s);
 ``python benchmarks/bench_example.py --repeats 10`` for steadier figures.
@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -48,10 +49,10 @@ def _timed(command, env=None):
     return wall, cpu
 
 
-def best(command, repeats):
-    """Best wall and best CPU time of ``repeats`` runs. [s]"""
+def median(command, repeats):
+    """Median wall and median CPU time of ``repeats`` runs. [s]"""
     runs = [_timed(command) for _ in range(repeats)]
-    return min(w for w, _ in runs), min(c for _, c in runs)
+    return (statistics.median(w for w, _ in runs), statistics.median(c for _, c in runs))
 
 
 def main(argv=None):
@@ -65,16 +66,16 @@ def main(argv=None):
                        out, "--quiet"], {**os.environ, "NUMBA_CACHE_DIR": cache})
     print(f"cold run (compiling the multibody kernels into an empty cache): wall {cold[0]:.2f} s,"
           f" CPU {cold[1]:.2f} s")
-    analyses = best([sys.executable, "-c", ANALYSES_ONLY, args.workbook], args.repeats)
+    analyses = median([sys.executable, "-c", ANALYSES_ONLY, args.workbook], args.repeats)
     with tempfile.TemporaryDirectory() as out:
-        run = best([sys.executable, "-m", "slingloads.cli", "run", args.workbook, "--out",
+        run = median([sys.executable, "-m", "slingloads.cli", "run", args.workbook, "--out",
                     out, "--quiet"], args.repeats)
     print(f"analyses alone (import, read, compute; no report): wall {analyses[0]:.2f} s, "
           f"CPU {analyses[1]:.2f} s")
     print(f"reports (run - analyses): wall {run[0] - analyses[0]:.2f} s, "
           f"CPU {run[1] - analyses[1]:.2f} s")
     print(f"slingloads run on the example (loads, lateral study, parachute sizing, "
-          f"multibody), best of {args.repeats}: wall {run[0]:.2f} s, CPU {run[1]:.2f} s "
+          f"multibody), median of {args.repeats}: wall {run[0]:.2f} s, CPU {run[1]:.2f} s "
           "(target <= 5 s)")
 
 

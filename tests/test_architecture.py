@@ -148,14 +148,36 @@ def test_the_cycle_check_finds_a_circle():
 
 def test_help_imports_no_heavy_library():
     """`slingloads --help` lists the analyses from the registry without importing numpy,
-    pandas, pint, openpyxl, matplotlib or scipy (the analyses' modules load on first use)."""
+    pandas, pint, openpyxl, matplotlib, scipy, numba or tqdm (the analyses' modules load on
+    first use)."""
     import subprocess
     import sys
 
     code = ("import sys\nfrom slingloads import cli\ntry:\n    cli.main(['--help'])\n"
             "except SystemExit:\n    pass\n"
-            "heavy = ('numpy', 'pandas', 'pint', 'openpyxl', 'matplotlib', 'scipy')\n"
+            "heavy = ('numpy', 'pandas', 'pint', 'openpyxl', 'matplotlib', 'scipy', 'numba',"
+            " 'tqdm')\n"
             "print('loaded:' + ','.join(m for m in heavy if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip().splitlines()
     assert out[-1] == "loaded:", f"--help imported {out[-1]}"
+
+
+@pytest.mark.parametrize("module, absent", [
+    ("slingloads.io.loads.report", ("matplotlib", "scipy.spatial", "numba")),
+    ("slingloads.io.lateral.report", ("matplotlib", "numba")),
+    ("slingloads.io.chute.report", ("matplotlib", "numba")),
+    ("slingloads.cli", ("tqdm", "matplotlib", "scipy.spatial", "numba")),
+])
+def test_libraries_load_only_where_used(module, absent):
+    """Importing a report module (or the CLI) loads neither matplotlib (only the plots
+    modules use it, when figures are drawn), nor scipy.spatial (only the convex hull), nor
+    numba (only the compiled batch integrators), nor tqdm (only a running analysis)."""
+    import subprocess
+    import sys
+
+    code = (f"import sys\nimport {module}\n"
+            f"print('loaded:' + ','.join(m for m in {absent!r} if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.strip().splitlines()
+    assert out[-1] == "loaded:", f"importing {module} loaded {out[-1]}"

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
-from scipy.spatial import ConvexHull, QhullError
 
 from slingloads.analyses.sfbm import COMPONENTS
 from slingloads.errors import InputError
@@ -87,6 +86,8 @@ def convex_hull(loads, case_ids, station_index, pair):
         Hull vertices in counter-clockwise order: ``case`` and the two components. Degenerate
         clouds (all cases on a line or a point) return the extreme cases along the line.
     """
+    from scipy.spatial import ConvexHull, QhullError  # loads only when a hull is asked
+
     i, j = component_index(pair[0]), component_index(pair[1])
     pts = loads[:, station_index, :][:, [i, j]]
     case_ids = np.asarray(case_ids, dtype=object)

@@ -72,10 +72,10 @@ def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=
     RigidBodyAcceleration
     """
     cg = mass_items.cg
-    resultant = forces.sum(axis=1)
+    resultant = _point_sum(forces)
     moment_cg = moment_sum(np.asarray(positions) - cg, forces)
     if moments is not None:
-        moment_cg += moments.sum(axis=1)
+        moment_cg += _point_sum(moments)
     if add_gravity:
         weight = gravity_forces(mass_items, vertical)
         resultant += weight.sum(axis=0)
@@ -85,6 +85,14 @@ def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=
     # axis then stays unbalanced and the closure check reports it.
     angular = moment_cg @ np.linalg.pinv(mass_items.inertia_about_cg, hermitian=True).T
     return RigidBodyAcceleration(linear, angular, -G0 * _unit(vertical))
+
+
+def _point_sum(vectors):
+    """Sum over the points of vectors of shape (c, p, 3): one matrix product (c, 3p) @
+    (3p, 3), much faster than a reduction along the short middle axis."""
+    c, p, _ = vectors.shape
+    vectors = np.ascontiguousarray(vectors)
+    return vectors.reshape(c, 3 * p) @ np.tile(np.eye(3), (p, 1))
 
 
 def moment_sum(positions, forces):

@@ -382,7 +382,14 @@ def _stack_parameters(pendulums):
     return {k: np.array([r[k] for r in rows]) for k in rows[0]}
 
 
-def sweep(pendulums, motions, *, solver=None):
+#: Batch integrators of :func:`sweep`: the compiled kernel and the numpy one it is tested
+#: against.
+KERNELS = ("compiled", "numpy")
+#: Largest drive table of one compiled batch (motions x nodes x 6 values). [bytes]
+_DRIVE_BYTES = 64e6
+
+
+def sweep(pendulums, motions, *, solver=None, kernel="compiled"):
     """Per-run metrics of many runs, integrated together by vectorised RK4.
 
     Run i is ``pendulums[i]`` under ``motions[i]``. All runs share one time grid: uniform,
@@ -391,6 +398,11 @@ def sweep(pendulums, motions, *, solver=None):
     array of shape (states, runs) and one RK4 step is a few numpy operations over all runs
     (rigid-rope and elastic-cable runs form two such groups). Peaks between grid points are
     refined by a parabola through the three samples around them.
+
+    The default ``kernel="compiled"`` runs the same scheme, operation for operation, one run
+    at a time in compiled code (:mod:`slingloads.models.pendulum_batch`), with the hook's
+    motion tabulated once per distinct motion; ``kernel="numpy"`` keeps the vectorised numpy
+    loop (the two agree to round-off).
 
     Parameters
     ----------
@@ -403,6 +415,9 @@ def sweep(pendulums, motions, *, solver=None):
         the peak load angle and tension within about 1e-4 of a tight solve_ivp solution. [s]
         The grid has a whole number of steps, so the step used may be slightly shorter.
 
+    kernel : {"compiled", "numpy"}
+        Batch integrator (see above).
+
     Returns
     -------
     metrics : RunMetrics
@@ -410,6 +425,9 @@ def sweep(pendulums, motions, *, solver=None):
     step : float
         The step used. [s]
     """
+    if kernel not in KERNELS:
+        raise InputError(f"sweep {kernel=!r} is not a valid option; valid options are "
+                         f"{list(KERNELS)}", kernel)
     pendulums, motions = list(pendulums), list(motions)
     if len(pendulums) != len(motions) or not pendulums:
         raise InputError("a sweep needs one motion per pendulum, and at least one run",
@@ -432,7 +450,8 @@ def sweep(pendulums, motions, *, solver=None):
         if idx.size == 0:
             continue
         group = [pendulums[i] for i in idx]
-        metrics = _rk4_group(group, [motions[i] for i in idx], nodes, jumps, flag)
+        integrate = _compiled_group if kernel == "compiled" else _rk4_group
+        metrics = integrate(group, [motions[i] for i in idx], nodes, jumps, flag)
         for name in out:
             out[name][idx] = getattr(metrics, name)
     return RunMetrics(**out), h
@@ -466,6 +485,51 @@ def _time_nodes(t_end, n_steps, motions):
         near[[0, -1]] = False
         grid = np.union1d(grid[~near], breaks)
     return grid, np.isin(grid, breaks)
+
+
+def _drive_table(motions, nodes, jumps):
+    """Hook (velocity, acceleration) of each motion at the start (just after a jump), middle
+    and end (just before a jump) of every step from each node: shape (motions, nodes, 3, 2)."""
+    start = nodes
+    step = np.diff(nodes)
+    middle = np.append(nodes[:-1] + 0.5 * step, nodes[-1])
+    end = np.append(np.where(jumps[1:], np.nextafter(nodes[1:], -np.inf), nodes[1:]),
+                    nodes[-1])
+    table = np.empty((len(motions), nodes.size, 3, 2))
+    for k, motion in enumerate(motions):
+        for stage, times in enumerate((start, middle, end)):
+            _, v, a = motion.kinematics(times)
+            table[k, :, stage, 0] = v
+            table[k, :, stage, 1] = a
+    return table
+
+
+def _compiled_group(pendulums, motions, nodes, jumps, rigid):
+    """:func:`_rk4_group` in compiled code, in batches of distinct motions whose drive table
+    stays within ``_DRIVE_BYTES``."""
+    from slingloads.models import pendulum_batch
+
+    params = _stack_parameters(pendulums)
+    P = np.column_stack([params[name] for name in pendulum_batch.PARAMETERS])
+    unique = {}
+    profile = np.array([unique.setdefault(id(m), len(unique)) for m in motions])
+    distinct = list({id(m): m for m in motions}.values())
+    x0 = np.stack([p.initial_state(m.velocity_jump) for p, m in zip(pendulums, motions,
+                                                                    strict=True)])
+    best = np.empty((len(pendulums), pendulum_batch.N_SIGNALS))
+    t_best = np.empty_like(best)
+    per_batch = max(1, int(_DRIVE_BYTES // (nodes.size * 6 * 8)))
+    for first in range(0, len(distinct), per_batch):
+        idx = np.flatnonzero((profile >= first) & (profile < first + per_batch))
+        drive = _drive_table(distinct[first:first + per_batch], nodes, jumps)
+        b, tb = best[idx], t_best[idx]
+        pendulum_batch.rk4_peaks(rigid, x0[idx], P[idx], drive, profile[idx] - first,
+                                 nodes, jumps, b, tb)
+        best[idx], t_best[idx] = b, tb
+    best = np.where(np.isfinite(best), best, np.nan).T
+    t_best = t_best.T
+    best[0] = np.minimum(best[0], np.pi)  # a parabola through the wrap at pi must not pass it
+    return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3])
 
 
 def _rk4_group(pendulums, motions, nodes, jumps, rigid):

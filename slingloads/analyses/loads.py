@@ -25,7 +25,7 @@ combines, in airframe axes:
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
@@ -122,6 +122,11 @@ class ListedCase:
     def __post_init__(self):
         hook = str(self.hook).strip().upper()
         object.__setattr__(self, "hook", LEGACY_HOOK_IDS.get(hook, hook))
+
+
+#: Load cases per chunk of :meth:`LoadsStudy.run` (their applied loads, mass items included,
+#: are built one chunk at a time, so that the memory beyond the result stays bounded).
+RUN_CHUNK = 4096
 
 
 @dataclass(frozen=True)
@@ -273,7 +278,6 @@ class LoadsStudy:
 
     def with_hook(self, **changes):
         """A copy of the study with hook options changed (``lateral_angle=``, ``nz=``...)."""
-        from dataclasses import replace
         return replace(self, hook=replace(self.hook, **changes))
 
     @property
@@ -377,15 +381,25 @@ class LoadsStudy:
             scale (and ``check_closure``).
         """
         cases = self.case_matrix()
-        positions, forces, moments = self.applied_loads(cases)
         items = self.airframe.mass_items
         n = len(items.mass)
-        loads, accel, residual = free_free_internal_loads(
-            items, positions[n:], forces[:, n:], moments[:, n:],
-            self.airframe.station_points(), self.vertical)
-        cases = self._with_cable(cases, forces[:, n:n + len(self.airframe.hardpoints.mast_feet)]
-                                 .sum(axis=1))
-        scale = self._load_scale(forces)
+        feet = len(self.airframe.hardpoints.mast_feet)
+        stations = self.airframe.station_points()
+        count = len(cases)
+        loads = np.empty((count, len(stations), 6))
+        residual, linear, angular, hub = (np.empty((count, 3 * k)) for k in (2, 1, 1, 1))
+        scale = 0.0
+        # the applied loads (mass items included) one chunk of cases at a time
+        for first in range(0, max(count, 1), RUN_CHUNK):
+            part = slice(first, min(first + RUN_CHUNK, count))
+            positions, forces, moments = self.applied_loads(cases.iloc[part])
+            loads[part], accel, residual[part] = free_free_internal_loads(
+                items, positions[n:], forces[:, n:], moments[:, n:], stations, self.vertical)
+            linear[part], angular[part] = accel.linear, accel.angular
+            hub[part] = forces[:, n:n + feet].sum(axis=1)
+            scale = max(scale, self._load_scale(forces))
+        accel = replace(accel, linear=linear, angular=angular)
+        cases = self._with_cable(cases, hub)
         bad = np.abs(residual).max(axis=1) > CLOSURE_TOLERANCE * scale
         if check_closure and np.any(bad):
             i = int(np.argmax(bad))

@@ -81,6 +81,37 @@ def _forward_sums(positions, forces, moments, station_points):
     return out
 
 
+class _ForwardSums:
+    """:func:`_forward_sums` for chunks of at most ``size`` cases, the point order, station
+    counts and working arrays prepared once."""
+
+    def __init__(self, positions, station_points, size):
+        positions = np.asarray(positions, float)
+        station_points = np.asarray(station_points, float)
+        axis = station_points[0, 1:]
+        self.order = np.argsort(positions[:, 0], kind="stable")
+        pos = positions[self.order]
+        self.arm = pos - np.array([0.0, axis[0], axis[1]])
+        self.count = np.searchsorted(pos[:, 0], station_points[:, 0], side="right")
+        self.x = station_points[:, 0]
+        self.per_point = np.zeros((size, len(pos) + 1, 6))
+        self.out = np.empty((size, len(self.count), 6))
+
+    def __call__(self, forces, moments):
+        n = len(forces)
+        per_point, out = self.per_point[:n], self.out[:n]
+        f = forces[:, self.order, :]
+        per_point[:, 1:, :3] = f
+        _cross_into(self.arm, f, per_point[:, 1:, 3:])
+        if moments is not None:
+            per_point[:, 1:, 3:] += moments[:, self.order, :]
+        np.cumsum(per_point, axis=1, out=per_point)
+        np.take(per_point, self.count, axis=1, out=out)
+        out[..., 4] += self.x * out[..., 2]
+        out[..., 5] -= self.x * out[..., 1]
+        return out
+
+
 def _cross_into(r, f, out):
     """out = r x f, r of shape (p, 3) broadcast over the cases of f (c, p, 3)."""
     rx, ry, rz = r[:, 0], r[:, 1], r[:, 2]
@@ -127,14 +158,21 @@ def closure_residual(positions, forces, moments, reference):
     return np.concatenate([total_f, total_m], axis=1)
 
 
+#: Load cases per chunk of :func:`free_free_internal_loads`: the working arrays of a chunk
+#: (a few times chunk x stations x 6 floats) stay in cache and the result is written once.
+CHUNK_CASES = 128
+
+
 def free_free_internal_loads(mass_items, positions, forces, moments, station_points,
-                             vertical=(0.0, 0.0, 1.0)):
+                             vertical=(0.0, 0.0, 1.0), *, chunk=CHUNK_CASES):
     """Internal loads of the free-free airframe: applied loads, gravity and inertia relief.
 
     Gravity acts at every mass item; the rigid-body accelerations balance gravity and the
     applied loads (:mod:`slingloads.analyses.inertia_relief`), and their inertia loads enter
     through the unit-acceleration responses (:func:`unit_inertia_responses`), so only the few
-    applied load points are summed per case.
+    applied load points are summed per case. The cases are worked in chunks of ``chunk``,
+    each written once into the result, so that the memory used beyond the result is a few
+    chunks' worth, whatever the number of cases.
 
     Parameters
     ----------
@@ -148,6 +186,8 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
     vertical : array_like, shape (3,)
         Earth's upward vertical in airframe axes, along which gravity acts downwards (the
         attitude's, :mod:`slingloads.models.attitude`). [-]
+    chunk : int
+        Cases per chunk, >= 1.
 
     Returns
     -------
@@ -173,6 +213,21 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
                        cuts),
     ]).reshape(7, -1)
     weights = np.concatenate([linear, angular, np.ones((len(linear), 1))], axis=1)
-    total = np.matmul(weights, basis).reshape(len(linear), len(cuts), 6)
-    total -= _forward_sums(positions, forces, moments, cuts)
-    return total[:, :-1, :], acceleration, total[:, -1, :]
+    cases, n_st = len(linear), len(station_points)
+    chunk = int(chunk)
+    if chunk < 1:
+        raise InputError("internal loads: cases per chunk must be >= 1", chunk)
+    loads = np.empty((cases, n_st, 6))
+    residual = np.empty((cases, 6))
+    forward = _ForwardSums(positions, cuts, min(chunk, max(cases, 1)))
+    for first in range(0, cases, chunk):
+        part = slice(first, min(first + chunk, cases))
+        block = loads[part]
+        # einsum: a product of inner size 7, single-threaded (a threaded BLAS call per chunk
+        # costs more than it saves, and much more on a busy machine)
+        np.einsum("ck,kn->cn", weights[part], basis[:, :-6], out=block.reshape(len(block), -1))
+        sums = forward(forces[part], None if moments is None else moments[part])
+        block -= sums[:, :-1]
+        np.einsum("ck,kn->cn", weights[part], basis[:, -6:], out=residual[part])
+        residual[part] -= sums[:, -1]
+    return loads, acceleration, residual

@@ -12,7 +12,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
-from scipy.interpolate import RegularGridInterpolator
 
 from slingloads.errors import InputError
 
@@ -128,6 +127,8 @@ class Table2D:
     def __post_init__(self):
         alpha = _strictly_increasing(self.alpha, f"{self.what} alpha")
         beta = _strictly_increasing(self.beta, f"{self.what} beta")
+        from scipy.interpolate import RegularGridInterpolator  # (it loads scipy.spatial)
+
         coeffs, interps = {}, {}
         for key, values in self.coefficients.items():
             values = np.asarray(values, dtype=float)

@@ -29,7 +29,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from slingloads.checks import finite as _finite
 from slingloads.checks import positive as _positive
@@ -371,6 +370,8 @@ class TimeHistory(_Motion):
                 f"carrier time-history times must be strictly increasing; sample {i + 2} "
                 f"(t = {t[i + 1]:.6g} s) does not come after sample {i + 1} "
                 f"(t = {t[i]:.6g} s)", t[i + 1].item())
+        from scipy.interpolate import CubicSpline  # (it loads scipy.spatial)
+
         t = t - t[0]
         spline = CubicSpline(t, s - s[0], bc_type="natural")
         object.__setattr__(self, "time", t)

@@ -349,7 +349,12 @@ def _check_runs(model, areas, gusts, psi0, rate0):
     return areas, gusts, psi0, rate0
 
 
-def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
+#: Batch integrators of :func:`integrate_rk4`: the compiled kernel and the numpy one it is
+#: tested against.
+KERNELS = ("compiled", "numpy")
+
+
+def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kernel="compiled"):
     """Integrate many runs at once with fixed-step RK4, vectorised over runs.
 
     Parameters
@@ -361,6 +366,12 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     psi0, rate0 : array_like
         Initial yaw [rad] and yaw rate [rad/s] (trim: psi0 = -beta_trim).
     settings : SolverSettings, optional
+    kernel : {"compiled", "numpy"}
+        ``"compiled"`` (default) integrates a :class:`YawModel` one run at a time in compiled
+        code (:mod:`slingloads.models.yaw_batch`), the same scheme operation for operation;
+        ``"numpy"`` steps all runs together with numpy operations (any model with the
+        interface of :class:`YawModel`; other models always take this path). The two agree
+        to round-off.
 
     Returns
     -------
@@ -376,6 +387,9 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     time, so every stage sees the same gust. Table lookups are ``np.interp`` on the tables'
     breakpoints; a run that leaves a table is flagged and frozen, never clamped silently.
     """
+    if kernel not in KERNELS:
+        raise InputError(f"yaw integrator {kernel=!r} is not a valid option; valid options are "
+                         f"{list(KERNELS)}", kernel)
     settings = yaw_solver_settings(settings)
     n, every = settings.fixed_grid()
     areas, gusts, psi, rate = _check_runs(model, areas, gusts, psi0, rate0)
@@ -390,11 +404,55 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
         v = np.stack([g.velocity(when) for g in unique])  # (unique, steps)
         gamma, v_rel = model.relative_wind(v)
         tables.append((gamma.T.copy(), v_rel.T.copy()))  # (steps, unique)
-    (g0, w0), (gm, wm), (g1, w1) = tables
     out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
-    out_psi[:, 0], out_rate[:, 0] = psi, rate
     left = np.zeros(runs, dtype=bool)
-    exit_time = np.full(runs, np.nan)
+    if kernel == "compiled" and isinstance(model, YawModel):
+        exit_step = np.zeros(runs, dtype=np.int64)
+        from slingloads.models import yaw_batch
+
+        # (steps, gusts, 3, 2) -> (gusts, steps, 3, 2)
+        wind = np.stack([np.stack(pair, axis=-1) for pair in tables], axis=-2)
+        wind = np.ascontiguousarray(wind.transpose(1, 0, 2, 3))
+        yaw_batch.rk4_batch(psi, rate, areas, index, wind, step, stored,
+                            *_compiled_model(model), out_psi, out_rate, left, exit_step)
+        exit_time = np.where(left, start[exit_step], np.nan)
+    else:
+        exit_time = _numpy_rk4(model, psi, rate, areas, index, tables, start, step, stored,
+                               out_psi, out_rate, left)
+    gust_out = np.stack([g.velocity(times) for g in unique])
+    gamma_out = model.relative_wind(gust_out)[0]
+    beta = gamma_out[index] - out_psi
+    return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
+
+
+def _compiled_model(model):
+    """The model row and tables of :func:`slingloads.models.yaw_batch.rk4_batch`."""
+    from slingloads.models import yaw_batch as yb
+
+    row = np.zeros(yb.N_MODEL)
+    row[yb.HALF_RHO], row[yb.INERTIA] = model._half_rho, model.yaw_inertia
+    none = np.zeros(2)
+    fus_x = fus_n = fin_x = fin_k = none
+    if model.fuselage is not None:
+        fus_x, fus_n, row[yb.FUS_LO], row[yb.FUS_HI] = model._fus
+        row[yb.HAS_FUS] = 1.0
+    if model.fin is not None:
+        fin_x, fin_k, row[yb.FIN_DX], row[yb.FIN_DY], row[yb.FIN_LO], row[yb.FIN_HI] = \
+            model._fin
+        row[yb.HAS_FIN], row[yb.FIN_LOCAL] = 1.0, float(model.fin_rate_damping)
+    if model.parachute is not None:
+        row[yb.CHUTE_CD], row[yb.CHUTE_DX], row[yb.CHUTE_DY] = model._chute
+        row[yb.HAS_CHUTE] = 1.0
+    return (row, *(np.ascontiguousarray(a, dtype=float) for a in (fus_x, fus_n, fin_x, fin_k)))
+
+
+def _numpy_rk4(model, psi, rate, areas, index, tables, start, step, stored, out_psi,
+               out_rate, left):
+    """The RK4 steps of :func:`integrate_rk4` on arrays of shape (runs,); fills the outputs
+    and returns the exit times."""
+    (g0, w0), (gm, wm), (g1, w1) = tables
+    out_psi[:, 0], out_rate[:, 0] = psi, rate
+    exit_time = np.full(psi.size, np.nan)
     deriv = model.derivatives
     k_out = 1
     for i in range(start.size):
@@ -410,7 +468,7 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
         new_psi = psi + (dt / 6.0) * (k1p + 2 * k2p + 2 * k3p + k4p)
         new_rate = rate + (dt / 6.0) * (k1r + 2 * k2r + 2 * k3r + k4r)
         bad = o1 | o2 | o3 | o4
-        if bad.any():
+        if bad.any() or left.any():  # a run that left stays frozen
             fresh = bad & ~left
             exit_time[fresh] = start[i]
             left |= bad
@@ -421,10 +479,7 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
             out_psi[:, k_out] = psi
             out_rate[:, k_out] = rate
             k_out += 1
-    gust_out = np.stack([g.velocity(times) for g in unique])
-    gamma_out = model.relative_wind(gust_out)[0]
-    beta = gamma_out[index] - out_psi
-    return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
+    return exit_time
 
 
 def _time_nodes(settings, gusts):

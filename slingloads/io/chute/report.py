@@ -37,13 +37,6 @@ from slingloads.analyses.chute_sizing import (
 )
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
-from slingloads.io.chute.plots import (
-    plot_histories_by_gust,
-    plot_static_moments,
-    plot_sweep_metrics,
-    plot_wake,
-    plot_yaw_linearisation,
-)
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
@@ -482,6 +475,14 @@ def _sheets(result, units, warnings=()):
 
 def _figures(result, units="SI"):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
+    from slingloads.io.chute.plots import (  # matplotlib loads only when plotting
+        plot_histories_by_gust,
+        plot_static_moments,
+        plot_sweep_metrics,
+        plot_wake,
+        plot_yaw_linearisation,
+    )
+
     figs = {"linearisation": (plot_yaw_linearisation, (result.static.linearisation,), {}),
             "static-moments": (plot_static_moments, (result.static, units), {}),
             "wake": (plot_wake, (result.line, units), {})}

@@ -63,12 +63,6 @@ from slingloads.io.common.report import (
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
-from slingloads.io.lateral.plots import (
-    plot_max_angle_vs_acceleration,
-    plot_sensitivity,
-    plot_shear_at_angles,
-    plot_time_histories,
-)
 
 ANALYSIS = "lateral"
 #: PNG files written, by tag: ``<stem>-lateral-<tag>.png``.
@@ -457,6 +451,13 @@ def _damping_table(damping, units):
 
 def _figures(result, units):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
+    from slingloads.io.lateral.plots import (  # matplotlib loads only when plotting
+        plot_max_angle_vs_acceleration,
+        plot_sensitivity,
+        plot_shear_at_angles,
+        plot_time_histories,
+    )
+
     figs = {"histories": (plot_time_histories, (result.critical_run,), {}),
             "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {}),
             "sensitivity": (plot_sensitivity, (result.study,), {})}

@@ -24,17 +24,7 @@ from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 from slingloads.io.common.report import check_units, in_report_units, labelled, report_unit
 from slingloads.io.common.units import unit_label
-
-#: Plain-language names of the components, as in the paper's figures ("X shear").
-COMPONENT_TITLES = {
-    "Vx": "X shear", "Vy": "Y shear", "Vz": "Z shear",
-    "Mx": "X moment (torsion)", "My": "Y moment", "Mz": "Z moment",
-}
-#: File-name tags of the components (``<stem>-X_shear.png``).
-COMPONENT_TAGS = {
-    "Vx": "X_shear", "Vy": "Y_shear", "Vz": "Z_shear",
-    "Mx": "X_moment", "My": "Y_moment", "Mz": "Z_moment",
-}
+from slingloads.io.loads.tags import COMPONENT_TITLES
 
 _MAX_COLOUR = "tab:red"
 _MIN_COLOUR = "tab:blue"

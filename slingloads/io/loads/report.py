@@ -67,13 +67,7 @@ from slingloads.io.common.report import (
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
 from slingloads.io.loads.nastran import prepare_nastran
-from slingloads.io.loads.plots import (
-    COMPONENT_TAGS,
-    COMPONENT_TITLES,
-    plot_hull,
-    plot_sfbm,
-    plot_station_diagram,
-)
+from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
 
 #: Components drawn each on its own PNG, all six (the paper's figures 19 and 20: Vx, Vy).
 PNG_COMPONENTS = COMPONENTS
@@ -716,6 +710,12 @@ def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_sta
 
     Default hull plots: one per pair at the station where its first component is largest.
     """
+    from slingloads.io.loads.plots import (  # matplotlib loads only when plotting
+        plot_hull,
+        plot_sfbm,
+        plot_station_diagram,
+    )
+
     check_units(units)
     for pair in hull_pairs:
         if len(pair) != 2:

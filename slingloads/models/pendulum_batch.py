@@ -1,0 +1,195 @@
+"""Compiled fixed-step RK4 of many lateral-pendulum runs, with their running peaks.
+
+The same equations as :func:`slingloads.models.pendulum.rigid_rope_derivatives` and
+:func:`~slingloads.models.pendulum.elastic_cable_derivatives`, written on scalars (operation
+for operation, so that the results agree to round-off), and the same step and peak logic as
+the vectorised numpy sweep of :func:`slingloads.analyses.lateral.sweep`: each run on its own
+(runs in parallel over the cores), every run on the shared time grid, the hook's velocity and
+acceleration read from a table per distinct motion. Compiled with
+`numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept in this
+package's ``__pycache__`` after the first call). The module is self-contained, so numba's own
+check of this file's source keeps the cache valid.
+
+Parameter rows (``P``, one per run) hold, in order: mass [kg], roll inertia [kg m^2], CG below
+hub e [m], rope length [m], cable spring rate EA/l [N/m] (unused for the rigid rope), lateral
+damping [N s/m], roll damping [N m s/rad], gravity [m/s^2], damped point height [m].
+
+Drive tables (``drive``, shape (motions, nodes, 3, 2)): for the step starting at node i, the
+hook's (velocity [m/s], acceleration [m/s^2]) at its start (just after a jump there), middle
+and end (just before a jump there).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+#: Order of the parameters in a row of ``P``.
+PARAMETERS = ("mass", "inertia", "e", "length", "stiffness", "c_lat", "c_roll", "g", "h_d")
+#: Signals whose running peak is kept: |theta1 - theta2|, |theta1|, T/(m g), -T/(m g).
+N_SIGNALS = 4
+
+_jit = numba.njit(cache=True, fastmath=False, nogil=True)
+_parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
+
+
+@_jit
+def rigid_rope(x, s_vel, s_acc, p, dx):
+    """Rigid rope: write the state derivative into ``dx``; return the tension [N]."""
+    mass, inertia, e, length = p[0], p[1], p[2], p[3]
+    c_lat, c_roll, g, h_d = p[5], p[6], p[7], p[8]
+    th1, th2, w1, w2 = x[0], x[1], x[2], x[3]
+    s1, c1, s2, c2 = math.sin(th1), math.cos(th1), math.sin(th2), math.cos(th2)
+    sd, cd = math.sin(th1 - th2), math.cos(th1 - th2)
+    k2 = inertia / mass
+    le = length * e
+    yp_dot = s_vel + length * c1 * w1 + (e - h_d) * c2 * w2
+    drag = c_lat * yp_dot / mass
+    f1 = -le * sd * w2 * w2 - g * length * s1 - length * c1 * (s_acc + drag)
+    f2 = (le * sd * w1 * w1 - g * e * s2 - e * c2 * s_acc - (e - h_d) * c2 * drag
+          - c_roll * w2 / mass)
+    m11, m12, m22 = length * length, le * cd, e * e + k2
+    det = m11 * m22 - m12 * m12
+    a1 = (m22 * f1 - m12 * f2) / det
+    a2 = (m11 * f2 - m12 * f1) / det
+    dx[0], dx[1], dx[2], dx[3] = w1, w2, a1, a2
+    return mass * (-s1 * (s_acc + drag) + length * w1 * w1 - e * sd * a2 + e * cd * w2 * w2
+                   + g * c1)
+
+
+@_jit
+def elastic_cable(x, s_vel, s_acc, p, dx):
+    """Elastic tension-only cable: write the state derivative into ``dx``; return T [N]."""
+    mass, inertia, e, length, stiffness = p[0], p[1], p[2], p[3], p[4]
+    c_lat, c_roll, g, h_d = p[5], p[6], p[7], p[8]
+    ry, rz, th2, vy, vz, w2 = x[0], x[1], x[2], x[3], x[4], x[5]
+    s2, c2 = math.sin(th2), math.cos(th2)
+    dist = math.sqrt(ry * ry + rz * rz)
+    tension = stiffness * max(dist - length, 0.0)
+    fy = -tension * ry / dist
+    fz = -tension * rz / dist
+    drag = c_lat * (s_vel + vy + (e - h_d) * c2 * w2)
+    a2 = (-e * (fy * c2 + fz * s2) - c_roll * w2 + h_d * c2 * drag) / inertia
+    ay = (fy - drag) / mass - s_acc - e * a2 * c2 + e * w2 * w2 * s2
+    az = fz / mass - g - e * a2 * s2 - e * w2 * w2 * c2
+    dx[0], dx[1], dx[2], dx[3], dx[4], dx[5] = vy, vz, w2, ay, az, a2
+    return tension
+
+
+@_jit
+def _derivatives(rigid, x, s_vel, s_acc, p, dx):
+    if rigid:
+        return rigid_rope(x, s_vel, s_acc, p, dx)
+    return elastic_cable(x, s_vel, s_acc, p, dx)
+
+
+@_jit
+def _signals(rigid, x, tension, weight, alive, y):
+    """Write the peak signals into ``y``; return (taut, alive). The rigid rope counts only
+    until its tension first goes negative."""
+    if rigid:
+        th1, th2 = x[0], x[1]
+    else:
+        th1, th2 = math.atan2(x[0], -x[1]), x[2]
+    ratio = tension / weight
+    taut = ratio > 0
+    if rigid:
+        alive = alive and taut
+        taut = alive
+    y[0] = abs((th1 - th2 + math.pi) % (2.0 * math.pi) - math.pi)
+    y[1] = abs(th1)
+    y[2] = ratio
+    y[3] = -ratio
+    return taut, alive
+
+
+@_jit
+def _keep(best, t_best, y, ok, when):
+    """Running maximum: the angles (first two signals) count only where the cable is taut."""
+    for s in range(N_SIGNALS):
+        if y[s] > best[s] and (s >= 2 or ok):
+            best[s] = y[s]
+            t_best[s] = when
+
+
+@_parallel_jit
+def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
+    """Integrate every run of one cable model and keep the peaks of its signals.
+
+    Parameters
+    ----------
+    rigid : bool
+    x0 : ndarray, shape (runs, states)
+    P : ndarray, shape (runs, 9)
+    drive : ndarray, shape (motions, nodes, 3, 2)
+    profile : ndarray of int, shape (runs,)
+        Each run's row of ``drive``.
+    nodes : ndarray, shape (nodes,)
+        The time grid. [s]
+    jumps : ndarray of bool, shape (nodes,)
+        Where S'' may jump.
+    best, t_best : ndarray, shape (runs, 4)
+        Receive the peaks (-inf where none counted) and their times [s].
+    """
+    runs, n = x0.shape
+    n_steps = nodes.size - 1
+    for j in numba.prange(runs):
+        x = np.empty(n)
+        tmp = np.empty(n)
+        k1, k2, k3, k4 = np.empty(n), np.empty(n), np.empty(n), np.empty(n)
+        y0, y1, y2, yl = (np.empty(N_SIGNALS), np.empty(N_SIGNALS), np.empty(N_SIGNALS),
+                          np.empty(N_SIGNALS))
+        p = P[j]
+        dr = drive[profile[j]]
+        weight = p[0] * p[7]
+        for m in range(n):
+            x[m] = x0[j, m]
+        bj, tj = best[j], t_best[j]
+        tension = _derivatives(rigid, x, dr[0, 0, 0], dr[0, 0, 1], p, k1)
+        ok1, alive = _signals(rigid, x, tension, weight, True, y1)
+        for s in range(N_SIGNALS):
+            bj[s] = -np.inf if (s < 2 and not ok1) else y1[s]
+            tj[s] = 0.0
+        ok0 = False
+        h_prev = 0.0
+        for i in range(n_steps):
+            t, t_next = nodes[i], nodes[i + 1]
+            h = t_next - t
+            for m in range(n):
+                tmp[m] = x[m] + 0.5 * h * k1[m]
+            _derivatives(rigid, tmp, dr[i, 1, 0], dr[i, 1, 1], p, k2)
+            for m in range(n):
+                tmp[m] = x[m] + 0.5 * h * k2[m]
+            _derivatives(rigid, tmp, dr[i, 1, 0], dr[i, 1, 1], p, k3)
+            for m in range(n):
+                tmp[m] = x[m] + h * k3[m]
+            _derivatives(rigid, tmp, dr[i, 2, 0], dr[i, 2, 1], p, k4)
+            for m in range(n):
+                x[m] = x[m] + (h / 6.0) * (k1[m] + 2.0 * k2[m] + 2.0 * k3[m] + k4[m])
+            if jumps[i + 1]:
+                # the tension jumps with S'': count its value just before, then go on after
+                tension = _derivatives(rigid, x, dr[i, 2, 0], dr[i, 2, 1], p, k1)
+                ok_left, alive = _signals(rigid, x, tension, weight, alive, yl)
+                _keep(bj, tj, yl, ok_left, t_next)
+            tension = _derivatives(rigid, x, dr[i + 1, 0, 0], dr[i + 1, 0, 1], p, k1)
+            ok2, alive = _signals(rigid, x, tension, weight, alive, y2)
+            if (i > 0 and abs(h - h_prev) <= 1e-9 * h and not (jumps[i] or jumps[i + 1])
+                    and ok0 and ok1 and ok2):
+                # parabola through the equally spaced samples at t - h, t, t + h
+                for s in range(N_SIGNALS):
+                    if y1[s] >= y0[s] and y1[s] >= y2[s]:
+                        curvature = y0[s] - 2.0 * y1[s] + y2[s]
+                        offset = 0.0
+                        if curvature < 0:
+                            offset = min(max(0.5 * (y0[s] - y2[s]) / curvature, -0.5), 0.5)
+                        value = y1[s] - 0.25 * (y0[s] - y2[s]) * offset
+                        if value > bj[s]:
+                            bj[s] = value
+                            tj[s] = t + offset * h
+            _keep(bj, tj, y2, ok2, t_next)
+            for s in range(N_SIGNALS):
+                y0[s] = y1[s]
+                y1[s] = y2[s]
+            ok0, ok1, h_prev = ok1, ok2, h
