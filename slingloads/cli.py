@@ -102,6 +102,8 @@ def main(argv=None):
     """Entry point of the ``slingloads`` command. Returns the exit code."""
     args = _parser().parse_args(argv)
     previous = _on_sigterm()
+    if argv is None and not getattr(args, "debug", False):  # the command, not a caller
+        sys.unraisablehook = _quiet_unraisable
     try:
         if args.command == "template":
             return _template(args)
@@ -123,6 +125,15 @@ def main(argv=None):
         return _unexpected(err, args)
     finally:
         _restore_sigterm(previous)
+
+
+def _quiet_unraisable(unraisable):
+    """An error a library raises while cleaning up (a network client's finaliser after a
+    refused connection): one line instead of a traceback (``--debug`` shows it)."""
+    value = unraisable.exc_value
+    text = " ".join(str(value).split())[:200]
+    print(f"slingloads: note: ignored while cleaning up: {type(value).__name__}: {text}",
+          file=sys.stderr)
 
 
 def _fail(err, code):
