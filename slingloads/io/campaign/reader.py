@@ -119,8 +119,7 @@ def list_parameter(params, name):
         where = "(default)"
     else:
         row = int("".join(ch for ch in cell if ch.isdigit()))
-        unit = params.reader.book[STUDY_SHEET][cell_name(row, 3)].value
-        unit = "" if unit is None else str(unit)
+        unit = params.unit(name) or ""
         where = cell_name(row, 3)
         if kind != "dimensionless" and not unit.strip():
             raise params.reader.error(f"{name!r} needs a unit in its unit column, e.g. "

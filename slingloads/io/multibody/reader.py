@@ -358,13 +358,12 @@ class _Rows:
     def __init__(self, reader, table):
         self.reader, self.t = reader, table
 
-    def raw(self, column, i):
-        return self.reader.book[self.t.sheet][self.t.cell(column, i)].value
-
     def error(self, column, i, rule):
-        cell = self.t.cell(column, i) if self.t.has(column) else "A1"
-        value = self.raw(column, i) if self.t.has(column) else None
-        return self.reader.error(rule, value, self.t.sheet, cell)
+        """An InputError at the cell, echoing the value as written with its header's unit
+        (at the sheet's first cell for a missing column)."""
+        if self.t.has(column):
+            return self.t.error(column, i, rule)
+        return self.reader.error(rule, None, self.t.sheet, "A1")
 
     def given(self, column, i):
         if not self.t.has(column):
