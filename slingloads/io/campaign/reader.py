@@ -315,6 +315,7 @@ def read(reader, params, study):
     params.check("campaign loads margin", np.isfinite(margin) and margin >= 1,
                  "'campaign loads margin' must be >= 1")
     no_chute = _no_parachute(params, system, NoParachuteStudy, sample_full_tail_system)
+    _check_needs_parachute(params, system, rows, factors)
     with located(file, sheet):
         campaign = Campaign(setup, factors, rows, settings, criteria, margin,
                             _map(factors, rows, n_areas, n_speeds), no_chute,
@@ -335,6 +336,21 @@ def read(reader, params, study):
         params.positive("campaign scheduler time-out"), params("campaign loads from dynamics"),
         params.choice("campaign loads hook angle", HOOK_ANGLE_SOURCES),
         params.where("campaign scheduler"))
+
+
+def _check_needs_parachute(params, system, rows, factors):
+    """The campaign sizes a parachute: fuselage and fin must not be statically stable in yaw
+    on their own (a positive neutral area), blamed on the fin area, the value to change."""
+    from slingloads.analyses.campaign import neutral_area_of
+
+    speeds = rows["airspeed EAS [m/s]"] if rows is not None else factors.airspeeds
+    with located(params.reader.file, STUDY_SHEET, params.where("fin area")):
+        neutral = neutral_area_of(system, float(np.max(np.asarray(speeds, float))))
+    if neutral.already_stable:
+        raise params.error("fin area", "fuselage and fin are already statically stable in yaw "
+                           f"(neutral parachute area {neutral.area:.4g} m^2, not positive): "
+                           "there is no parachute to size; check 'fin area', FinAero and "
+                           "FuselageAero")
 
 
 def _no_parachute_runs(params):
