@@ -99,7 +99,9 @@ def airframe():
     chute = np.array([10.75, 0.0, 2.30])
     hardpoints = Hardpoints(hub, feet, chute=chute,
                             mast_feet_ids=("MAST_FL", "MAST_FR", "MAST_AL", "MAST_AR"))
-    stations = np.round(np.linspace(0.40, 11.00, 24), 3)
+    # every 0.46 m, without the two end cuts (0.40 and 11.00 m) beyond the first and last load
+    # points (nose item at 0.80 m, parachute fitting at 10.75 m), where nothing is cut
+    stations = np.round(np.linspace(0.40, 11.00, 24), 3)[1:-1]
     frame = Airframe(items, stations, hardpoints, reference_axis=(0.0, 1.0),
                      station_ids=tuple(f"FS{round(s / INCH):04d}" for s in stations),
                      name="Generic light twin")

@@ -58,9 +58,13 @@ def test_neutral_area_workbook_equals_api(study, result):
                             points["aero_reference"])
     fin = Fin(sample_fin("HC1").table, ref.fin_area, points["fin_cp"], ref.fin_efficiency)
     items, hub = frame.mass_items, frame.hardpoints.hub
-    # parallel-axis theorem item by item about the vertical through the hub
-    inertia = float(np.sum(items.inertia[:, 2, 2] + items.mass * (
-        (items.position[:, 0] - hub[0]) ** 2 + (items.position[:, 1] - hub[1]) ** 2)))
+    # hanging, the CG lies under the hub: the yaw axis is the line through both, k; item by
+    # item, own inertia about k plus m times the squared distance from the axis
+    cg = items.mass @ items.position / items.mass.sum()
+    k = (hub - cg) / np.linalg.norm(hub - cg)
+    d = items.position - cg
+    inertia = float(np.sum(np.einsum("i,nij,j->n", k, items.inertia, k)
+                           + items.mass * (np.sum(d * d, axis=1) - (d @ k) ** 2)))
     model = YawModel(fuselage, fin, frame.hardpoints, inertia, FlightCondition(80 * KNOT),
                      Parachute(1.0))
     half = np.radians(15.0)                        # the example's linearisation range

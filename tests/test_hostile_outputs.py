@@ -368,3 +368,16 @@ def test_a_full_disk_ends_in_exit_code_1(small, tmp_path, capsys, monkeypatch):
              "no space left on the device")
     assert not out.exists()
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(TEMP_PREFIX)]
+
+
+def test_written_files_get_the_mode_of_the_umask(tmp_path):
+    """Reference: a file a program creates gets 0o666 masked by the user's umask (POSIX
+    open(2)); the atomic writer's temporary file (mkstemp, 0o600) must not leave the
+    template, or any file written through it, readable by its owner alone."""
+    old = os.umask(0o022)
+    try:
+        target = tmp_path / "blank.xlsx"
+        assert main(["template", str(target)]) == 0
+        assert target.stat().st_mode & 0o777 == 0o644
+    finally:
+        os.umask(old)

@@ -46,6 +46,7 @@ from slingloads.limits import (
     check_count,
     evaluation_budget,
 )
+from slingloads.models.airframe import hanging_roll_axis
 from slingloads.models.carrier_motion import (
     MOTION_ALIASES,
     ConstantAcceleration,
@@ -584,10 +585,15 @@ def _motion_row(motion):
 
 
 def airframe_body(airframe, name="airframe (MassItems)"):
-    """The lateral-pendulum body of an airframe: total mass, Ixx about the CG, CG below hub.
+    """The lateral-pendulum body of an airframe, hanging: mass, roll inertia, CG below hub.
 
-    The CG distance below the hub is measured along the mast axis:
-    :math:`e = (\\mathbf{r}_{hub} - \\mathbf{r}_{CG})\\cdot\\mathbf{m}`.
+    At rest the airframe hangs with its CG under the hub
+    (:func:`~slingloads.models.airframe.hanging_vertical`), so the CG distance below the hub
+    is :math:`e = |\\mathbf{r}_{hub} - \\mathbf{r}_{CG}|` and the roll inertia is taken about
+    the horizontal fore-and-aft axis :math:`\\hat a` of that attitude
+    (:func:`~slingloads.models.airframe.hanging_roll_axis`),
+    :math:`I = \\hat a^T I_{CG} \\hat a`. With the hub on the body z axis through the CG these
+    are the distance along the mast and :math:`I_{xx}`.
 
     Parameters
     ----------
@@ -601,18 +607,20 @@ def airframe_body(airframe, name="airframe (MassItems)"):
     Raises
     ------
     InputError
-        If the CG lies above the hub or the roll inertia is not positive.
+        If the CG does not lie below the hub or the roll inertia is not positive.
     """
     items = airframe.mass_items
+    d = np.asarray(airframe.hardpoints.hub, float) - items.cg
     mast = np.asarray(airframe.hardpoints.mast_axis, float)
-    mast = mast / np.linalg.norm(mast)
-    e = float((airframe.hardpoints.hub - items.cg) @ mast)
-    inertia = float(items.inertia_about_cg[0, 0])
-    if e < 0:
+    along_mast = float(d @ mast / np.linalg.norm(mast))
+    if not along_mast > 0:
         raise InputError("the CG of the mass items lies above the rotor hub along the mast; "
-                         "the lateral pendulum needs it below (e >= 0) [m]", e)
+                         "the lateral pendulum needs it below [m]", along_mast)
+    e = float(np.linalg.norm(d))
+    axis = hanging_roll_axis(airframe)
+    inertia = float(axis @ items.inertia_about_cg @ axis)
     if not inertia > 0:
-        raise InputError("the mass items' roll inertia Ixx about the CG must be > 0 [kg m^2]",
+        raise InputError("the mass items' roll inertia about the CG must be > 0 [kg m^2]",
                          inertia)
     return SlungBody(items.total_mass, inertia, e, name)
 

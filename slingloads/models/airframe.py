@@ -293,10 +293,44 @@ class Airframe:
                                 np.full(self.stations.shape, z0)])
 
 
-def yaw_inertia_about_hub(airframe):
-    """Yaw inertia of the mass items about the vertical through the rotor hub.
+def hanging_vertical(airframe):
+    """Earth's upward vertical in airframe axes when the airframe hangs at rest from its hub.
 
-    .. math:: I = I_{zz,CG} + m\\,[(x_{CG} - x_{hub})^2 + (y_{CG} - y_{hub})^2]
+    A body hung at one point comes to rest with its CG under that point, so the vertical is
+    :math:`\\hat k = (r_{hub} - r_{CG}) / |r_{hub} - r_{CG}|` (the hanging attitude of
+    :mod:`slingloads.models.attitude`).
+
+    Parameters
+    ----------
+    airframe : Airframe
+
+    Returns
+    -------
+    numpy.ndarray
+        Unit vector, shape (3,). [-]
+
+    Raises
+    ------
+    InputError
+        If the hub coincides with the CG (no hanging attitude).
+    """
+    d = np.asarray(airframe.hardpoints.hub, float) - airframe.mass_items.cg
+    length = float(np.linalg.norm(d))
+    if not length > 0:
+        raise InputError("the rotor hub coincides with the CG of the mass items: the airframe "
+                         "has no hanging attitude [m]", length)
+    return d / length
+
+
+def yaw_inertia_about_hub(airframe):
+    """Yaw inertia of the mass items about the vertical through the rotor hub, hanging.
+
+    The airframe hangs with its CG under the hub (:func:`hanging_vertical`), so the vertical
+    through the hub passes through the CG and no parallel-axis term arises:
+
+    .. math:: I = \\hat k^T \\, I_{CG} \\, \\hat k
+
+    (:math:`I_{zz,CG}` when the hub lies on the body z axis through the CG).
 
     Parameters
     ----------
@@ -308,5 +342,44 @@ def yaw_inertia_about_hub(airframe):
         [kg m^2]
     """
     items = airframe.mass_items
-    d = items.cg[:2] - airframe.hardpoints.hub[:2]
-    return float(items.inertia_about_cg[2, 2] + items.total_mass * (d @ d))
+    return hanging_yaw_inertia(items.inertia_about_cg, items.cg, airframe.hardpoints.hub)
+
+
+def hanging_yaw_inertia(inertia_about_cg, cg, hub):
+    """Yaw inertia of a body hung at ``hub`` about the vertical through it (the hub-CG line).
+
+    Parameters
+    ----------
+    inertia_about_cg : array_like, shape (3, 3)
+        Inertia tensor about the CG. [kg m^2]
+    cg, hub : array_like, shape (3,)
+        [m]
+
+    Returns
+    -------
+    float
+        :math:`\\hat k^T I_{CG} \\hat k`, :math:`\\hat k` along hub - CG. [kg m^2]
+    """
+    d = np.asarray(hub, float) - np.asarray(cg, float)
+    length = float(np.linalg.norm(d))
+    if not length > 0:
+        raise InputError("the rotor hub coincides with the CG: the body has no hanging "
+                         "attitude [m]", length)
+    k = d / length
+    return float(k @ np.asarray(inertia_about_cg, float) @ k)
+
+
+def hanging_roll_axis(airframe):
+    """The horizontal fore-and-aft axis of the hanging airframe, in airframe axes.
+
+    The body x axis with its component along the hanging vertical removed: the axis about
+    which the hanging airframe rolls under a sideways motion of its carrier.
+
+    Returns
+    -------
+    numpy.ndarray
+        Unit vector, shape (3,). [-]
+    """
+    k = hanging_vertical(airframe)
+    x = np.array([1.0, 0.0, 0.0]) - k[0] * k
+    return x / np.linalg.norm(x)

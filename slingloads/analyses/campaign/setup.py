@@ -22,6 +22,7 @@ import numpy as np
 from slingloads.analyses.chute_sizing import FIT_RANGE, neutral_area
 from slingloads.errors import InputError
 from slingloads.models.aerodynamics import Fin
+from slingloads.models.airframe import hanging_yaw_inertia
 from slingloads.models.multibody.carrier import FreeCarrier, FrozenCarrier
 from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.multibody.system import SlingSystem
@@ -56,7 +57,7 @@ def scaled_body(body, mass):
 def yaw_model_of(system, airspeed=None, density_altitude=None):
     """The 1-DOF yaw model (:class:`~slingloads.models.yaw_dynamics.YawModel`) of a towed
     system: its fuselage, fin, hardpoints, parachute and yaw inertia about the vertical through
-    the hub (Izz about the CG plus m d^2, d the hub's horizontal offset from the CG).
+    the hub of the hanging body (:func:`~slingloads.models.airframe.hanging_yaw_inertia`).
 
     Parameters
     ----------
@@ -71,8 +72,7 @@ def yaw_model_of(system, airspeed=None, density_altitude=None):
     fin = None if fin is None else Fin(fin.table, fin.area, fin.centre_of_pressure,
                                        fin.efficiency)
     body = system.body
-    d = system.hardpoints.hub - body.cg
-    inertia = float(body.inertia[2, 2] + body.mass * (d[0] ** 2 + d[1] ** 2))
+    inertia = hanging_yaw_inertia(body.inertia, body.cg, system.hardpoints.hub)
     speed = system.airspeed if airspeed is None else airspeed
     altitude = system.density_altitude if density_altitude is None else density_altitude
     return YawModel(system.fuselage, fin, system.hardpoints, inertia,

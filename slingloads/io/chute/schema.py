@@ -53,7 +53,8 @@ PARAMETERS = (
               Bounds(0, 90, lo_open=True, hi_open=True, unit="deg")),
     Parameter("chute sizing yaw inertia source", TEXT, "", "mass items",
               "'mass items': yaw inertia about the vertical through the hub computed from "
-              "MassItems (Izz about the CG + m d^2); 'parameter': 'chute sizing yaw inertia'.",
+              "MassItems, hanging with the CG under the hub; 'parameter': 'chute sizing yaw "
+              "inertia'.",
               _S),
     Parameter("chute sizing yaw inertia", "inertia", "kg m^2", 0.0,
               "Yaw inertia about the suspension axis, used (and then > 0) only with the "

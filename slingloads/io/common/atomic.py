@@ -563,6 +563,7 @@ def atomic_file(path, inputs=()):
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name[:100]}.", suffix=".partial",
                                    dir=path.parent)
         os.close(fd)
+        os.chmod(tmp, new_file_mode())  # mkstemp's 0600 would hide the file from the group
     except OSError as err:
         raise _os_error(err, "cannot write the file", path) from None
     try:
@@ -573,6 +574,13 @@ def atomic_file(path, inputs=()):
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
+
+
+def new_file_mode():
+    """The mode a newly created file gets from the user's umask (0o644 under umask 022)."""
+    mask = os.umask(0)
+    os.umask(mask)
+    return 0o666 & ~mask
 
 
 # ---- machinery -----------------------------------------------------------------------------

@@ -12,6 +12,7 @@ and exact unit factors the physics uses (``G0``, ``KNOT``, ``FOOT``...) are in
 from __future__ import annotations
 
 import math
+import re
 from functools import lru_cache
 
 import numpy as np
@@ -111,12 +112,36 @@ def si_factor(unit, kind):
         return 1.0
     if text == "":
         raise UnitError(f"a {kind} needs a unit, such as {SI_UNITS[kind]!r}", unit)
-    factor = _pint_factor(text, kind, unit)
+    factor = _pint_factor(engineering_spelling(text, kind), kind, unit)
     if not (math.isfinite(factor) and factor > 0):
         raise UnitError(f"unit has no usable factor to {SI_UNITS[kind] or 'a pure number'} "
                         f"(it converts with {factor!r}; a unit must scale by a finite "
                         "positive factor)", unit)
     return factor
+
+
+#: Kinds whose dimension holds a force: there US engineers write ``lb`` for pound-force.
+_FORCE_KINDS = ("force", "moment", "stiffness", "linear damping", "rotational damping")
+_HYPHEN = re.compile(r"(?<=[A-Za-z])-(?=[A-Za-z])")
+_BARE_POWER = re.compile(r"(?<=[A-Za-z])([23])\b")
+_POUND = re.compile(r"\blbs?\b")
+_POUND_MASS = re.compile(r"\blbm\b")
+
+
+def engineering_spelling(text, kind):
+    """Unit spellings of engineering practice rewritten for pint.
+
+    ``in-lb``, ``lb-in``, ``ft-lbf`` (a hyphen between two unit names is a product);
+    ``ft2``, ``in3`` (a bare power 2 or 3 after a unit name); ``lbm`` (pound-mass); and
+    ``lb`` / ``lbs`` in a quantity that holds a force (force, moment, stiffness, damping),
+    where it means pound-force as on US drawings (pint's ``lb`` is the pound-mass).
+    """
+    text = _HYPHEN.sub("*", text)
+    text = _BARE_POWER.sub(r"^\1", text)
+    text = _POUND_MASS.sub("lb", text)
+    if kind in _FORCE_KINDS:
+        text = _POUND.sub("lbf", text)
+    return text
 
 
 def _pint_factor(text, kind, unit):

@@ -169,7 +169,8 @@ SHEETS = (
                bounds=Bounds(0, 100, unit="m")),
         Column("description", TEXT, required=False, default="", help="Free text."),
     ), help="Optional: mass-property cases (e.g. heaviest, lightest). Default: one body from "
-       "MassItems: total mass, Ixx about the CG, CG below the hub along the mast.",
+       "MassItems, hanging with its CG under the hub: total mass, roll inertia about the "
+       "CG around the horizontal fore-and-aft axis, CG distance below the hub.",
        max_rows=MAX_LATERAL_RUNS),
 )
 
