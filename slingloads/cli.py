@@ -105,6 +105,8 @@ def main(argv=None):
     """Entry point of the ``slingloads`` command. Returns the exit code."""
     args = _parser().parse_args(argv)
     previous = _on_sigterm()
+    if argv is None and not getattr(args, "debug", False):  # the command, not a caller
+        sys.unraisablehook = _quiet_unraisable
     try:
         if args.command == "template":
             return _template(args)
@@ -126,6 +128,15 @@ def main(argv=None):
         return _unexpected(err, args)
     finally:
         _restore_sigterm(previous)
+
+
+def _quiet_unraisable(unraisable):
+    """An error a library raises while cleaning up (a network client's finaliser after a
+    refused connection): one line instead of a traceback (``--debug`` shows it)."""
+    value = unraisable.exc_value
+    text = " ".join(str(value).split())[:200]
+    print(f"slingloads: note: ignored while cleaning up: {type(value).__name__}: {text}",
+          file=sys.stderr)
 
 
 def _fail(err, code):
@@ -269,14 +280,25 @@ def _analyse(args):
 
 def _runtime(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
-    from slingloads.io.campaign.cache import check_outside, default_cache_dir
+    from slingloads.io.campaign.cache import check_outside, check_writable, default_cache_dir
+    from slingloads.io.campaign.reader import address_rule
+    from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
 
-    if args.workers is not None and args.workers < 1:
-        raise InputError("--workers must be >= 1", args.workers)
-    if args.scheduler_timeout is not None and not args.scheduler_timeout > 0:
-        raise InputError("--scheduler-timeout must be > 0 [s]", args.scheduler_timeout)
+    if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
+        raise InputError(f"--workers must be in [1, {MAX_WORKERS}] (limits of slingloads)",
+                         args.workers)
+    if args.scheduler_timeout is not None and not 0 < args.scheduler_timeout <= \
+            MAX_SCHEDULER_TIMEOUT:
+        raise InputError(f"--scheduler-timeout must be in (0, {MAX_SCHEDULER_TIMEOUT:g}] [s]",
+                         args.scheduler_timeout)
+    if args.scheduler is not None:
+        rule = address_rule(args.scheduler.strip()) if args.scheduler.strip() else (
+            "an empty address; leave --scheduler out for local workers")
+        if rule is not None:
+            raise InputError(f"--scheduler: {rule}", args.scheduler)
     cache = Path(args.cache) if args.cache else default_cache_dir()
     check_outside(cache, args.out)
+    check_writable(cache)
     runtime = {"scheduler": args.scheduler, "workers": args.workers, "cache": cache,
                "timeout": args.scheduler_timeout}
     if show:
