@@ -13,6 +13,7 @@ import argparse
 import signal
 import sys
 import threading
+from contextlib import ExitStack
 from pathlib import Path
 
 from slingloads import __version__
@@ -27,11 +28,13 @@ EXIT_INTERRUPTED = 130
 
 #: Analyses the ``run`` command may perform, in order (from the registry
 #: :mod:`slingloads.io.analyses`): name -> (subcommand, compute(study) -> result,
-#: write(result, out_dir, stem, units, study)), out_dir being the shared AtomicOutputs of the
-#: run. Every analysis is computed (and every input checked) before anything is written, and
-#: the files of all the analyses are published together at the end (or none of them). The
+#: write(result, out_dir, stem, units, study, figures=None)), out_dir being the shared
+#: AtomicOutputs of the run and figures the drawings started after the analysis was computed.
+#: Every analysis is computed (and every input checked) before anything is written, and the
+#: files of all the analyses are published together at the end (or none of them). The
 #: analyses' modules are imported on first use (keeps ``slingloads --help`` fast).
 ANALYSES = {a.name: (a.subcommand, a.compute, a.write) for a in REGISTRY}
+_BY_NAME = {a.name: a for a in REGISTRY}
 
 
 class _Terminated(BaseException):
@@ -102,6 +105,8 @@ def main(argv=None):
     """Entry point of the ``slingloads`` command. Returns the exit code."""
     args = _parser().parse_args(argv)
     previous = _on_sigterm()
+    if argv is None and not getattr(args, "debug", False):  # the command, not a caller
+        sys.unraisablehook = _quiet_unraisable
     try:
         if args.command == "template":
             return _template(args)
@@ -123,6 +128,15 @@ def main(argv=None):
         return _unexpected(err, args)
     finally:
         _restore_sigterm(previous)
+
+
+def _quiet_unraisable(unraisable):
+    """An error a library raises while cleaning up (a network client's finaliser after a
+    refused connection): one line instead of a traceback (``--debug`` shows it)."""
+    value = unraisable.exc_value
+    text = " ".join(str(value).split())[:200]
+    print(f"slingloads: note: ignored while cleaning up: {type(value).__name__}: {text}",
+          file=sys.stderr)
 
 
 def _fail(err, code):
@@ -233,20 +247,27 @@ def _analyse(args):
         outputs, stem = _outputs(args, study, names)
         bar.total = 2 + 2 * len(names)
         bar.update(1)
-        results = {}
-        for name in compute_order(names):
-            bar.set_description(f"computing {name}")
-            results[name] = ANALYSES[name][1](study)
-            study.results.setdefault(name, results[name])
-            bar.update(1)
-        checks = consistency_checks(results)
-        # one set of outputs for every analysis: all published together, or none
-        with outputs:
-            for name in names:
-                bar.set_description(f"writing {name}")
-                extra = {"checks": checks[name]} if name in checks else {}
-                ANALYSES[name][2](results[name], outputs, stem, args.units, study, **extra)
+        results, figures = {}, {}
+        with ExitStack() as drawing:
+            for name in compute_order(names):
+                bar.set_description(f"computing {name}")
+                results[name] = ANALYSES[name][1](study)
+                study.results.setdefault(name, results[name])
+                # its figures are drawn (in worker processes) while the next ones compute
+                figures[name] = _BY_NAME[name].start_figures(results[name], args.units, study)
+                if figures[name] is not None:
+                    drawing.enter_context(figures[name])
                 bar.update(1)
+            checks = consistency_checks(results)
+            # one set of outputs for every analysis: all published together, or none
+            with outputs:
+                for name in names:
+                    bar.set_description(f"writing {name}")
+                    extra = {"checks": checks[name]} if name in checks else {}
+                    if figures[name] is not None:
+                        extra["figures"] = figures[name]
+                    ANALYSES[name][2](results[name], outputs, stem, args.units, study, **extra)
+                    bar.update(1)
         written = outputs.written
         bar.update(1)
         bar.set_description("done")
@@ -259,14 +280,25 @@ def _analyse(args):
 
 def _runtime(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
-    from slingloads.io.campaign.cache import check_outside, default_cache_dir
+    from slingloads.io.campaign.cache import check_outside, check_writable, default_cache_dir
+    from slingloads.io.campaign.reader import address_rule
+    from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
 
-    if args.workers is not None and args.workers < 1:
-        raise InputError("--workers must be >= 1", args.workers)
-    if args.scheduler_timeout is not None and not args.scheduler_timeout > 0:
-        raise InputError("--scheduler-timeout must be > 0 [s]", args.scheduler_timeout)
+    if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
+        raise InputError(f"--workers must be in [1, {MAX_WORKERS}] (limits of slingloads)",
+                         args.workers)
+    if args.scheduler_timeout is not None and not 0 < args.scheduler_timeout <= \
+            MAX_SCHEDULER_TIMEOUT:
+        raise InputError(f"--scheduler-timeout must be in (0, {MAX_SCHEDULER_TIMEOUT:g}] [s]",
+                         args.scheduler_timeout)
+    if args.scheduler is not None:
+        rule = address_rule(args.scheduler.strip()) if args.scheduler.strip() else (
+            "an empty address; leave --scheduler out for local workers")
+        if rule is not None:
+            raise InputError(f"--scheduler: {rule}", args.scheduler)
     cache = Path(args.cache) if args.cache else default_cache_dir()
     check_outside(cache, args.out)
+    check_writable(cache)
     runtime = {"scheduler": args.scheduler, "workers": args.workers, "cache": cache,
                "timeout": args.scheduler_timeout}
     if show:

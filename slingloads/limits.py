@@ -134,6 +134,41 @@ MAX_CHUTE_SAMPLES = 1_000_000
 #: Runs of the parachute sweep with the 'solve_ivp' integrator (one adaptive solve each).
 MAX_CHUTE_REFERENCE_RUNS = 50
 
+#: Runs of the multibody model (rows of MultibodyManoeuvres; the paper's list has 14).
+MAX_MULTIBODY_RUNS = 200
+#: Integration steps of the multibody model over all its runs: runs x (simulation time / fixed
+#: step), or, with the adaptive step, runs x the steps the fastest linear mode forces
+#: (simulation time x |lambda| / 3.3, the stability bound of the Dormand-Prince pair). The
+#: compiled kernel takes about 10 us a run-step on two cores: 3,000,000 is about 30 s.
+MAX_MULTIBODY_RUN_STEPS = 3_000_000
+#: Stored samples of the multibody model: runs x (simulation time / output interval + 1). Each
+#: holds about 560 bytes of states, rates and reported quantities and is a row of the
+#: histories CSV file.
+MAX_MULTIBODY_SAMPLES = 200_000
+#: Values of one comma-separated list of the campaign (area factors, airspeeds, ...).
+MAX_LIST_ITEMS = 50
+#: Runs of a campaign: the matrix (product of its lists' lengths and mass cases, or the rows
+#: of CampaignRuns) plus the runs without parachute (helicopters x ramps). The paper's
+#: campaign has about 1,300.
+MAX_CAMPAIGN_RUNS = 5_000
+#: Fixed steps of a campaign over all its runs: runs x (run length / time step). A campaign is
+#: the one command meant to run for minutes: the paper's matrix (3,888 runs of 60 s at 0.01 s,
+#: 23 million run-steps) takes about 3 minutes on two cores; 30,000,000 about 4 (less on more
+#: workers or a cluster), with its progress shown, resuming from the run cache when
+#: interrupted.
+MAX_CAMPAIGN_RUN_STEPS = 30_000_000
+#: Stored samples of a campaign: runs x (run length / output interval + 1); each is a row of
+#: 26 numbers in the run cache and the histories file (written 50 runs at a time; at most
+#: about 620 MB uncompressed on disk). The paper's matrix stores 2.3 million.
+MAX_CAMPAIGN_SAMPLES = 3_000_000
+#: Points of a campaign's stability map: density altitudes x airspeeds x area factors (a trim
+#: and an eigenanalysis each, about 20 ms).
+MAX_MAP_POINTS = 2_000
+#: Local worker processes of a campaign (each holds the compiled kernel, about 150 MB).
+MAX_WORKERS = 64
+#: Longest time the campaign waits for a scheduler. [s]
+MAX_SCHEDULER_TIMEOUT = 600.0
+
 # ---- output folder -----------------------------------------------------------------------
 #: Most entries of an output folder (its other files are carried over into each new set).
 MAX_OUTPUT_ENTRIES = 20_000

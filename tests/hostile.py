@@ -82,6 +82,43 @@ def small_workbook():
     })
 
 
+def small_dynamics_workbook():
+    """``{sheet: rows}`` of the small workbook asking for the multibody model and the campaign
+    only, with short runs (two manoeuvres of 5 s, a campaign of 4 runs of 5 s)."""
+    book = small_workbook()
+    for name, value, unit in (
+            ("run loads", "no", None), ("run lateral", "no", None),
+            ("run chute sizing", "no", None), ("run multibody", "yes", None),
+            ("run campaign", "yes", None), ("fin area", 0.2, "m^2"),
+            ("multibody simulation time", 5.0, "s"), ("multibody output interval", 0.5, "s"),
+            ("campaign area factors", "1.0, 1.5", None), ("campaign airspeeds EAS", "60", "kt"),
+            ("campaign density altitudes", "0, 1000", "ft"),
+            ("campaign cable lengths", "60", "ft"), ("campaign carriers", "frozen", None),
+            ("campaign manoeuvres", "free response", None), ("campaign run length", 5.0, "s"),
+            ("campaign time step", 0.01, "s"), ("campaign output interval", 0.5, "s"),
+            ("campaign no-parachute helicopters", "none", None),
+            ("campaign no-parachute ramps", "20", "kt"),
+            ("campaign stability map areas", 3, None),
+            ("campaign stability map airspeeds", 1, None)):
+        set_parameter(book, name, value, unit)
+    book["MultibodyManoeuvres"] = [
+        ["name", "kind", "shape", "direction", "amplitude [ft/s]", "onset [s]", "duration [s]",
+         "target [kt]", "rate [m/s^2]", "yaw [deg]", "description"],
+        ["free", "free response", None, None, None, None, None, None, None, 10.0, "yaw release"],
+        ["gust", "gust", "1-cosine", "lateral", 30.0, 1.0, 2.0, None, None, None, None]]
+    book["CampaignMasses"] = [["mass case", "mass [kg]"], ["light", 1500.0], ["heavy", 1800.0]]
+    book["CampaignRuns"] = [
+        ["area factor", "airspeed EAS [kt]", "mass case", "density altitude [ft]",
+         "cable length [ft]", "carrier", "manoeuvre"],
+        [1.2, 60.0, "light", 0.0, 60.0, "frozen", "free response"],
+        [1.6, 80.0, "heavy", 0.0, 60.0, "free", "gust +30 ft/s"]]
+    book["HTailAero"] = [["alpha [deg]", "CN"], [-180.0, 0.0], [-20.0, -1.0], [0.0, 0.0],
+                         [20.0, 1.0], [180.0, 0.0]]
+    book["Hardpoints"].append(["htail", "htail_cp", 7.6, 0.0, 1.1, None])
+    set_parameter(book, "multibody horizontal tail area", 0.5, "m^2")
+    return book
+
+
 def copy_book(sheets):
     """A deep copy of ``{sheet: rows}`` with every row a list (to be edited)."""
     return {name: [list(r) for r in rows] for name, rows in copy.deepcopy(sheets).items()}

@@ -206,18 +206,18 @@ def _bad(tmp_path, capsys, edits, fragments, args=(), extra=None, cell_of=None):
 
 @pytest.mark.parametrize("name, value, fragment", [
     ("campaign area factors", ",", "needs at least one value"),
-    ("campaign area factors", "1.0, 0", "every parachute area factor must be > 0"),
-    ("campaign area factors", "1.0, -1.4", "must be > 0"),
+    ("campaign area factors", "1.0, 0", "must be >= 0.01 (allowed: in [0.01, 100])"),
+    ("campaign area factors", "1.0, -1.4", "value '-1.4'"),
     ("campaign airspeeds EAS", "60, fast", "every value must be a number"),
     ("campaign manoeuvres", "free response, loop", "unknown manoeuvre; valid values are"),
     ("campaign carriers", "tethered", "unknown carrier; valid values are ['frozen', 'free']"),
     ("campaign cable lengths", "18", "could reach the carrier"),
     ("campaign no-parachute helicopters", "HC9", "unknown helicopter"),
-    ("campaign minimum yaw damping", 1.5, "must lie in [0, 1)"),
+    ("campaign minimum yaw damping", 1.5, "must be < 1 (allowed: in [0, 1))"),
     ("campaign loads margin", 0.8, "must be >= 1"),
 ])
 def test_bad_study_rows(tmp_path, capsys, name, value, fragment):
-    """Rules of the campaign's Study rows (schema): non-empty lists, factors > 0, known
+    """Rules of the campaign's Study rows (schema): non-empty lists, factors in [0.01, 100], known
     manoeuvres, carriers and helicopters, cables that clear the parachute, damping criterion
     in [0, 1), margin >= 1. Each error names the Study cell."""
     _bad(tmp_path, capsys, {name: value}, [fragment], cell_of=name)
@@ -269,7 +269,9 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
     out = tmp_path / "out"
     assert main(["run", str(path), "--out", str(out), "--cache", str(tiny[2]),
                  "--quiet"]) == 0
-    cases = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="LoadCases")
+    raw = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="LoadCases", header=None)
+    head = int(np.nonzero(raw.isin(["source"]).any(axis=1).to_numpy())[0][0])
+    cases = raw.iloc[head + 1:].set_axis(list(raw.iloc[head]), axis=1)  # under its title
     assert set(cases["source"]) == {"hand", "dynamics"}
     assert cases.loc[cases["source"] == "dynamics", "aero"].str.startswith("DYN-").any()
     dynamics = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="Dynamics", header=None)

@@ -104,9 +104,11 @@ def test_report_reads_back(run_dir, result):
                                rtol=1e-12)
     assert list(runs["verdict"]) == list(api["verdict"])
     csv = pd.read_csv(run_dir / f"{STEM}-chute-histories.csv")
+    assert list(csv.columns) == ["run", "area_m2", "gust", "time_s", "beta_deg", "psi_deg"]
     j = result.history_runs()[0]
-    col = [c for c in csv.columns if c.startswith("beta [deg]")][0]
-    np.testing.assert_allclose(csv[col], np.degrees(result.sweep.runs.histories.beta[j]),
+    rows = csv[csv["run"] == j + 1]
+    assert rows["area_m2"].iloc[0] == pytest.approx(result.sweep.runs.areas[j], rel=1e-15)
+    np.testing.assert_allclose(rows["beta_deg"], np.degrees(result.sweep.runs.histories.beta[j]),
                                rtol=1e-12, atol=1e-12)
 
 
@@ -155,10 +157,11 @@ def _bad(tmp_path, capsys, edits, sheet, cell, *fragments):
 
 @pytest.mark.parametrize("speed", [0, -80])
 def test_bad_airspeed(tmp_path, capsys, speed):
-    """Rule: 'chute sizing airspeed IAS' > 0."""
+    """Rule: 'chute sizing airspeed IAS' > 0; the message echoes the value with the unit the
+    user wrote beside it (the example gives the airspeed in kt)."""
     name = "chute sizing airspeed IAS"
     _bad(tmp_path, capsys, {("Study", name): speed}, "Study", name, "must be > 0",
-         f"value {speed!r}")
+         f"value {float(speed)} [kt]")
 
 
 def test_zero_fin_area(tmp_path, capsys):

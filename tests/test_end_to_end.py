@@ -37,7 +37,8 @@ def api_result():
 
 
 def test_csv_and_workbook_read_back(run_dir, api_result):
-    """The SFBM CSV and the report's SFBM sheet hold the API's numbers (SI, limit)."""
+    """The SFBM CSV holds the API's numbers (SI, limit), and the report's Correlated sheet
+    the API's envelope; no SFBM workbook unless the Study sheet asks for one."""
     csv = pd.read_csv(run_dir / "example-light-twin-sfbm.csv")
     assert list(csv.columns) == ["case", "station", "x_m", "Vx_N", "Vy_N", "Vz_N", "Mx_Nm",
                                  "My_Nm", "Mz_Nm"]
@@ -45,10 +46,19 @@ def test_csv_and_workbook_read_back(run_dir, api_result):
     assert len(csv) == c * s
     np.testing.assert_allclose(csv.iloc[:, 3:].to_numpy().reshape(c, s, 6), api_result.loads,
                                rtol=1e-12, atol=1e-6)
-    sheet = pd.read_excel(run_dir / "example-light-twin-loads.xlsx", sheet_name="SFBM")
-    vy = [col for col in sheet.columns if col.startswith("Vy")][0]
-    np.testing.assert_allclose(sheet[vy].to_numpy().reshape(c, s), api_result.loads[..., 1],
-                               rtol=1e-9, atol=1e-6)
+    sheet = _section_table(run_dir / "example-light-twin-loads.xlsx", "Correlated")
+    np.testing.assert_allclose(sheet["value"].to_numpy(float),
+                               api_result.envelope()["value"].to_numpy(), rtol=1e-12)
+    assert not (run_dir / "example-light-twin-sfbm.xlsx").exists()
+
+
+def _section_table(path, sheet):
+    """The table of a report sheet whose only table is under a title row."""
+    raw = pd.read_excel(path, sheet_name=sheet, header=None)
+    head = int(np.nonzero(raw[0].astype(str).to_numpy() == "station")[0][0])
+    table = raw.iloc[head + 1:].copy()
+    table.columns = raw.iloc[head]
+    return table
 
 
 def test_example_has_twenty_stations_and_closes(api_result):
@@ -104,15 +114,17 @@ def test_every_command_has_help(command, capsys):
 
 
 def test_us_report(tmp_path):
-    """--units US writes the report in in / lbf / lbf in; the Vy column equals SI / 4.4482216."""
+    """--units US writes the report in in / lbf / lbf in: the envelope's Vy column equals the
+    SI value of the envelope CSV / 4.4482216152605, its x the CSV's x_m / 0.0254."""
     src = tmp_path / "ex.xlsx"
     shutil.copy(EXAMPLE, src)
     assert main(["loads", str(src), "--out", str(tmp_path), "--units", "US", "--quiet"]) == 0
-    sheet = pd.read_excel(tmp_path / "ex-loads.xlsx", sheet_name="SFBM")
-    csv = pd.read_csv(tmp_path / "ex-sfbm.csv")
+    sheet = _section_table(tmp_path / "ex-loads.xlsx", "Correlated")
+    csv = pd.read_csv(tmp_path / "ex-envelope.csv")
     assert "Vy [lbf]" in sheet.columns and "x [in]" in sheet.columns
-    np.testing.assert_allclose(sheet["Vy [lbf]"], csv["Vy_N"] / 4.4482216152605, rtol=1e-9,
-                               atol=1e-6)
+    np.testing.assert_allclose(sheet["Vy [lbf]"].to_numpy(float), csv["Vy_N"] / 4.4482216152605,
+                               rtol=1e-9, atol=1e-6)
+    np.testing.assert_allclose(sheet["x [in]"].to_numpy(float), csv["x_m"] / 0.0254, rtol=1e-12)
 
 
 def test_hostile_text_from_the_workbook_stays_text(tmp_path):
@@ -142,7 +154,7 @@ def test_run_publishes_all_analyses_or_none(tmp_path, monkeypatch, capsys):
     left beside the output folder."""
     from slingloads import cli
 
-    def failing_writer(result, out_dir, stem, units, study):
+    def failing_writer(result, out_dir, stem, units, study, figures=None):
         raise RuntimeError("disk full")
 
     name = "chute sizing"

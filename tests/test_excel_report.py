@@ -25,7 +25,11 @@ from slingloads.errors import InputError
 from slingloads.io.common.atomic import TEMP_PREFIX, atomic_outputs
 from slingloads.io.common.excel import Highlight, Section, write_workbook
 from slingloads.io.loads import report as loads_report
-from slingloads.io.loads.report import SFBM_CSV_COLUMNS, write_loads_outputs
+from slingloads.io.loads.report import (
+    ENVELOPE_CSV_COLUMNS,
+    SFBM_CSV_COLUMNS,
+    write_loads_outputs,
+)
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
 
 INCH = 0.0254  # m, exact
@@ -71,7 +75,7 @@ def reports(result, tmp_path_factory):
         d = tmp_path_factory.mktemp(units)
         paths = write_loads_outputs(result, d, "demo", units=units,
                                     inputs_digest={"input file": "demo.xlsx",
-                                                   "SHA-256": "0" * 64})
+                                                   "SHA-256": "0" * 64}, sfbm_workbook=True)
         out[units] = (d, paths)
     return out
 
@@ -97,12 +101,14 @@ def _table_after(rows, first_header):
 
 
 def test_written_files(reports):
-    """The report writes the workbook, both CSV files and at least the X and Y shear plots
-    (the paper's figures 19 and 20), and nothing else is left in the directory."""
+    """The report writes the workbook, the SFBM data workbook, both CSV files, the station
+    diagram and one SFBM plot per component (X and Y shear are the paper's figures 19 and
+    20), and nothing else is left in the directory."""
     d, paths = reports["SI"]
     names = {p.name for p in paths}
-    assert {"demo-loads.xlsx", "demo-sfbm.csv", "demo-envelope.csv", "demo-X_shear.png",
-            "demo-Y_shear.png", "demo-sfbm_all.png"} <= names
+    assert {"demo-loads.xlsx", "demo-sfbm.xlsx", "demo-sfbm.csv", "demo-envelope.csv",
+            "demo-stations.png", "demo-X_shear.png", "demo-Y_shear.png", "demo-Z_shear.png",
+            "demo-X_moment.png", "demo-Y_moment.png", "demo-Z_moment.png"} <= names
     assert {p.name for p in d.iterdir()} == names
     for p in paths:
         if p.suffix == ".png":
@@ -124,35 +130,59 @@ def test_csv_columns_and_rows(result, reports):
                         result.loads.reshape(c * s, 6), rtol=1e-15, atol=0)
         assert_allclose(frame["x_m"].to_numpy(), np.tile(result.stations, c), rtol=1e-15)
         env = pd.read_csv(d / "demo-envelope.csv")
-        assert_allclose(env["value"].to_numpy(), result.envelope()["value"].to_numpy(),
-                        rtol=1e-15)
+        assert list(env.columns) == list(ENVELOPE_CSV_COLUMNS)
+        value = env["value_N"].fillna(env["value_Nm"]).to_numpy()
+        assert_allclose(value, result.envelope()["value"].to_numpy(), rtol=1e-15)
+        moment = env["component"].str.startswith("M")
+        assert env.loc[moment, "value_N"].isna().all()
+        assert env.loc[~moment, "value_Nm"].isna().all()
+
+
+def _wide_envelope(path, sheet, title):
+    return _table_after(_sheet_rows(path, sheet)[_row_of(path, sheet, title):], "station")
+
+
+def _row_of(path, sheet, title):
+    return next(i for i, r in enumerate(_sheet_rows(path, sheet))
+                if r and str(r[0]).startswith(title))
 
 
 def test_si_workbook_numbers(result, reports):
-    """SI workbook: the SFBM, Envelope and Ultimate sheets read back with pandas/openpyxl hold
-    the result's numbers (full double precision: the number format only changes display)."""
-    path = reports["SI"][0] / "demo-loads.xlsx"
-    sfbm = pd.read_excel(path, sheet_name="SFBM")
+    """SI workbooks: the SFBM data workbook, the Correlated, Envelope and Ultimate sheets
+    read back with pandas/openpyxl hold the result's numbers (full double precision: the
+    number format only changes display); the wide envelope's max and min are those of the
+    loads over every case, with the case that gives them."""
+    d = reports["SI"][0]
+    sfbm = pd.read_excel(d / "demo-sfbm.xlsx", sheet_name="SFBM")
     assert list(sfbm.columns) == ["case", "station", "x [m]", "Vx [N]", "Vy [N]", "Vz [N]",
                                   "Mx [N m]", "My [N m]", "Mz [N m]"]
     c, s, _ = result.loads.shape
     assert_allclose(sfbm.iloc[:, 3:].to_numpy(), result.loads.reshape(c * s, 6), rtol=1e-15)
     assert sfbm["case"].tolist() == result.to_frame()["case"].tolist()
-    env = pd.read_excel(path, sheet_name="Envelope")
+    path = d / "demo-loads.xlsx"
+    env = _table_after(_sheet_rows(path, "Correlated"), "station")
     ref = result.envelope()
-    assert_allclose(env["value"].to_numpy(), ref["value"].to_numpy(), rtol=1e-15)
+    assert_allclose(env["value"].to_numpy(float), ref["value"].to_numpy(), rtol=1e-15)
     assert env["case"].tolist() == ref["case"].tolist()
     assert set(env["unit"]) == {"N", "N m"}
-    ult = _table_after(_sheet_rows(path, "Ultimate"), "station")
-    assert_allclose(ult["value"].to_numpy(float), 1.5 * ref["value"].to_numpy(), rtol=1e-14)
+    shears = _wide_envelope(path, "Envelope", "Shear forces (LIMIT)")
+    assert_allclose(shears["Vy max [N]"].to_numpy(float), result.loads[:, :, 1].max(axis=0),
+                    rtol=1e-15)
+    assert_allclose(shears["Vy min [N]"].to_numpy(float), result.loads[:, :, 1].min(axis=0),
+                    rtol=1e-15)
+    ids = np.asarray(result.case_ids)
+    assert shears["Vy max case"].tolist() == ids[result.loads[:, :, 1].argmax(axis=0)].tolist()
+    ult = _wide_envelope(path, "Ultimate", "Moments (ULTIMATE")
+    assert_allclose(ult["Mz min [N m]"].to_numpy(float),
+                    1.5 * result.loads[:, :, 5].min(axis=0), rtol=1e-14)
 
 
 def test_us_workbook_conversion(result, reports):
-    """US workbook: x [in] = x / 0.0254, forces [lbf] = F / 4.4482216152605 and moments
+    """US workbooks: x [in] = x / 0.0254, forces [lbf] = F / 4.4482216152605 and moments
     [lbf in] = M / (4.4482216152605 x 0.0254), with the unit in every header; the envelope's
     per-row value is in lbf for shears and lbf in for moments."""
-    path = reports["US"][0] / "demo-loads.xlsx"
-    sfbm = pd.read_excel(path, sheet_name="SFBM")
+    d = reports["US"][0]
+    sfbm = pd.read_excel(d / "demo-sfbm.xlsx", sheet_name="SFBM")
     assert list(sfbm.columns) == ["case", "station", "x [in]", "Vx [lbf]", "Vy [lbf]",
                                   "Vz [lbf]", "Mx [lbf in]", "My [lbf in]", "Mz [lbf in]"]
     c, s, _ = result.loads.shape
@@ -160,30 +190,33 @@ def test_us_workbook_conversion(result, reports):
     assert_allclose(sfbm["x [in]"], np.tile(result.stations, c) / INCH, rtol=1e-12)
     assert_allclose(sfbm.iloc[:, 3:6].to_numpy(), flat[:, :3] / LBF, rtol=1e-12)
     assert_allclose(sfbm.iloc[:, 6:].to_numpy(), flat[:, 3:] / (LBF * INCH), rtol=1e-12)
-    env = pd.read_excel(path, sheet_name="Envelope")
+    path = d / "demo-loads.xlsx"
+    env = _table_after(_sheet_rows(path, "Correlated"), "station")
     ref = result.envelope()
     moment = ref["component"].str.startswith("M").to_numpy()
     expected = ref["value"].to_numpy() / np.where(moment, LBF * INCH, LBF)
-    assert_allclose(env["value"].to_numpy(), expected, rtol=1e-12)
+    assert_allclose(env["value"].to_numpy(float), expected, rtol=1e-12)
     assert env["unit"].tolist() == np.where(moment, "lbf in", "lbf").tolist()
-    assert_allclose(env["Mz [lbf in]"], ref["Mz"] / (LBF * INCH), rtol=1e-12)
+    assert_allclose(env["Mz [lbf in]"].to_numpy(float), ref["Mz"] / (LBF * INCH), rtol=1e-12)
     study = _table_after(_sheet_rows(path, "Summary"), "item")
     mass = study.set_index("item").loc["aircraft mass"]
     assert mass["unit"] == "lb"
-    assert mass["setting"] == pytest.approx(30 * 95.0 / 0.45359237, rel=1e-12)
+    assert mass["value"] == pytest.approx(30 * 95.0 / 0.45359237, rel=1e-12)
 
 
 def test_summary_closure_and_governing(result, reports):
-    """Summary: the input digest as given, the closure check with PASS (residuals of the
-    crude beam are at round-off), and one governing case per component matching
-    LoadsResult.governing_cases()."""
-    rows = _sheet_rows(reports["SI"][0] / "demo-loads.xlsx", "Summary")
-    digest = _table_after(rows, "input").set_index("input")["entry"]
-    assert digest["SHA-256"] == "0" * 64
-    closure = _table_after(rows[next(i for i, r in enumerate(rows)
-                                     if r and str(r[0]).startswith("Closure")):], "item")
-    assert closure.set_index("item").loc["result", "setting"] == "PASS"
-    gov = _table_after(rows, "component")
+    """The cover quotes the input digest as given; the Summary's closure check says PASS
+    (residuals of the crude beam are at round-off); the Envelope sheet lists one governing
+    case per component matching LoadsResult.governing_cases()."""
+    path = reports["SI"][0] / "demo-loads.xlsx"
+    cover = _table_after(_sheet_rows(path, "Cover"), "item").set_index("item")["entry"]
+    assert cover["input SHA-256"] == "0" * 64
+    assert cover["input workbook"] == "demo.xlsx"
+    rows = _sheet_rows(path, "Summary")
+    closure = _table_after(rows, "check")
+    assert closure["check"].iloc[-1] == "result: PASS"
+    assert float(closure["force residual [N]"].iloc[1]) < 1e-6
+    gov = _table_after(_sheet_rows(path, "Envelope"), "component")
     ref = result.governing_cases()
     assert gov["case"].tolist() == ref["case"].tolist()
     assert_allclose(gov["value"].to_numpy(float), ref["value"].to_numpy(), rtol=1e-15)
@@ -226,8 +259,9 @@ def test_split_keeps_every_row(result, tmp_path):
     """With a row limit of 50 per sheet (header included), the SFBM table of c x s rows is
     split over SFBM_1, SFBM_2... with the header on each, and concatenating them gives every
     row of the result exactly once, in order (never truncated)."""
-    write_loads_outputs(result, tmp_path, "split", max_rows=50, plots=False)
-    path = tmp_path / "split-loads.xlsx"
+    write_loads_outputs(result, tmp_path, "split", max_rows=50, plots=False,
+                        sfbm_workbook=True)
+    path = tmp_path / "split-sfbm.xlsx"
     names = load_workbook(path, read_only=True).sheetnames
     c, s, _ = result.loads.shape
     parts = [n for n in names if n.startswith("SFBM_")]
@@ -241,17 +275,25 @@ def test_split_keeps_every_row(result, tmp_path):
 
 
 def test_exceedance_sheet(result, reports, tmp_path):
-    """Exceedance: the ratio read back equals LoadsResult.comparison() (1.25 where the
-    previous envelope is 80 % of the new one), a red conditional format covers the ratio
-    column, and without a previous envelope the sheet says 'no previous envelope given'."""
+    """ExceedanceDetail: the ratio read back equals LoadsResult.comparison() (1.25 where the
+    previous envelope is 80 % of the new one), with the station id on every row and a red
+    conditional format on the ratio column; Exceedance: one row per station, the station id
+    beside the six ratios; without a previous envelope the sheets say 'no previous envelope
+    given'."""
     path = reports["SI"][0] / "demo-loads.xlsx"
-    table = _table_after(_sheet_rows(path, "Exceedance"), "station")
+    table = _table_after(_sheet_rows(path, "ExceedanceDetail"), "station")
     ref = result.comparison()
-    got = pd.to_numeric(table["exceedance ratio"].replace("inf", np.inf))
+    assert table["station"].tolist() == ref["station"].tolist()
+    got = pd.to_numeric(table["exceedance ratio [-]"].replace("inf", np.inf))
     assert_allclose(got.to_numpy(float), ref["exceedance ratio"].to_numpy(), rtol=1e-15)
     assert np.nanmax(got.to_numpy(float)[np.isfinite(got)]) == pytest.approx(1.25)
-    ws = load_workbook(path)["Exceedance"]
-    col = list(table.columns).index("exceedance ratio")
+    wide = _table_after(_sheet_rows(path, "Exceedance"), "station")
+    assert wide["station"].tolist() == list(result.station_ids)
+    vy = ref[ref["component"] == "Vy"]["exceedance ratio"].to_numpy()
+    assert_allclose(pd.to_numeric(wide["Vy ratio [-]"].replace("inf", np.inf)).to_numpy(float),
+                    vy, rtol=1e-15)
+    ws = load_workbook(path)["ExceedanceDetail"]
+    col = list(table.columns).index("exceedance ratio [-]")
     letter = "ABCDEFGHIJKLMNOP"[col]
     ranges = [str(cf.sqref) for cf in ws.conditional_formatting]
     assert any(r.startswith(letter) for r in ranges)

@@ -14,7 +14,7 @@ from __future__ import annotations
 import datetime as dt
 
 import pytest
-from hostile import copy_book, save_xlsx, small_workbook
+from hostile import copy_book, save_xlsx, small_dynamics_workbook, small_workbook
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -25,6 +25,9 @@ from slingloads.io.common.workbook import CellError, WorkbookReader
 from slingloads.io.study import read_study
 
 BASE = small_workbook()
+#: The same airframe asking for the multibody model and the campaign (their Study rows and
+#: sheets: MultibodyManoeuvres, HTailAero, CampaignMasses, CampaignRuns).
+DYNAMICS = small_dynamics_workbook()
 FILE = "fuzz.xlsx"
 #: Rules about a whole sheet or file may name no cell.
 SHEET_LEVEL = ("missing sheet", "needs the", "needs a", "no data rows", "no header",
@@ -45,7 +48,11 @@ CHOICES = ["given", "mast vertical", "hanging", "body", "stability", "wind", "ca
            "elliptical", "lateral directions", "parameter", "mass items", "fuselage axis",
            "relative wind", "RK23", "Radau", "BDF", "LSODA", "DOP853", "table", "model",
            "elastic", "rigid", "solve_ivp", "rk4", "step", "finite, continuous", "1-cosine",
-           "S1, S4", "Vx-My, Mz-Vz", ""]
+           "S1, S4", "Vx-My, Mz-Vz", "", "listed rows", "full tail", "without parachute",
+           "quasi-static", "sheet", "free", "frozen, free", "dynamics", "wind ramp",
+           "forward acceleration", "gust", "acceleration, gust -30 ft/s", "HC1", "none",
+           "1.0, 2.0, 1e300", "60, -80", "0, 1e9", "tcp://127.0.0.1:1", "x" * 300,
+           ",".join(["1"] * 60)]
 TEXT_PARAMETERS = sorted(n for n, p in all_parameters().items() if p.kind == "text")
 numbers = st.one_of(
     st.integers(min_value=-10**30, max_value=10**30),
@@ -63,7 +70,6 @@ values = st.one_of(
 factors = st.one_of(st.sampled_from([-1.0, 0.0, 1e-300, 1e-9, 0.5, 1.0000001, 2.0, 10.0, 1e3,
                                      1e6, 1e300, -1e300]),
                     st.floats(min_value=-1e3, max_value=1e3, allow_nan=False))
-sheet_names = st.sampled_from(sorted(BASE))
 parameter_names = st.sampled_from(sorted(all_parameters()) + ["no such parameter", "", "  "])
 
 
@@ -74,8 +80,9 @@ def _header(draw, base_name):
 
 
 @st.composite
-def edits(draw):
-    """A list of edits (kind, arguments) to apply to the base workbook."""
+def edits(draw, base=BASE):
+    """A list of edits (kind, arguments) to apply to the base workbook ``base``."""
+    sheet_names = st.sampled_from(sorted(base))
     out = []
     for _ in range(draw(st.integers(1, 3))):
         kind = draw(st.sampled_from(["cell", "cell", "scale", "scale", "scale", "header",
@@ -84,7 +91,7 @@ def edits(draw):
                                      "drop row", "copy row", "add row", "empty sheet",
                                      "drop column"]))
         sheet = draw(sheet_names)
-        rows = BASE[sheet]
+        rows = base[sheet]
         width = max(len(r) for r in rows)
         if kind == "cell":
             out.append((kind, sheet, draw(st.integers(0, len(rows))),
@@ -98,7 +105,7 @@ def edits(draw):
         elif kind == "drop column":
             out.append((kind, sheet, draw(st.integers(0, width - 1))))
         elif kind == "scale parameter":
-            out.append((kind, draw(st.integers(1, len(BASE["Study"]) - 1)), draw(factors)))
+            out.append((kind, draw(st.integers(1, len(base["Study"]) - 1)), draw(factors)))
         elif kind == "header":
             col = draw(st.integers(0, width - 1))
             name = str(rows[0][col]).split("[")[0].strip()
@@ -115,8 +122,8 @@ def edits(draw):
     return out
 
 
-def apply(edit_list):
-    book = copy_book(BASE)
+def apply(edit_list, base=BASE):
+    book = copy_book(base)
     for edit in edit_list:
         kind, *args = edit
         if kind == "scale parameter":
@@ -210,6 +217,23 @@ def test_reader_ends_in_a_study_or_a_located_error(edit_list):
     rows and sheets): reading gives a study or an InputError naming file, sheet and cell,
     and no numerical warning (an overflow would be a silent infinity or NaN)."""
     check_outcome(apply(edit_list))
+
+
+@pytest.mark.filterwarnings("error::RuntimeWarning")
+@settings(max_examples=500, derandomize=True, deadline=None, database=None,
+          suppress_health_check=list(HealthCheck), print_blob=True)
+@given(edits(DYNAMICS))
+def test_dynamics_reader_ends_in_a_study_or_a_located_error(edit_list):
+    """500 random edits of the workbook of the multibody model and the campaign (their Study
+    rows, the comma-separated lists with their units, MultibodyManoeuvres, HTailAero,
+    CampaignMasses, CampaignRuns): a study or an InputError naming file, sheet and cell."""
+    check_outcome(apply(edit_list, DYNAMICS))
+
+
+def test_the_dynamics_base_workbook_is_valid():
+    """The second fuzzing base reads without error and asks for both dynamics analyses."""
+    study = check_outcome(copy_book(DYNAMICS))
+    assert set(study.inputs) == {"multibody", "campaign"}
 
 
 def test_the_base_workbook_is_valid():

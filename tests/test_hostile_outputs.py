@@ -74,7 +74,7 @@ def _xlsx_origin(folder, old_sha, new_sha):
     out = {}
     for path in Path(folder).glob("*.xlsx"):
         book = load_workbook(path, read_only=True)
-        cells = {v for row in book["Summary"].iter_rows(values_only=True) for v in row}
+        cells = {v for row in book["Cover"].iter_rows(values_only=True) for v in row}
         book.close()
         out[path.name] = "old" if old_sha in cells else "new" if new_sha in cells else "?"
     return out

@@ -159,8 +159,8 @@ def test_report_reads_back(run_dir, result):
         if tag != "shear":  # no hook cone beyond 90 deg: the example's envelope
             assert (run_dir / f"{STEM}-lateral-{tag}.png").stat().st_size > 1000
     sheets = pd.ExcelFile(path).sheet_names
-    assert sheets == ["Summary", "Runs", "Sensitivity", "Modes", "Histories", "LoadsAtAngle",
-                      "Plots"]
+    assert sheets == ["Cover", "Summary", "Runs", "Sensitivity", "Modes", "Histories",
+                      "LoadsAtAngle", "Plots"]
     angle = _sheet(path, "Summary", "Design angle")
     rec = angle[angle["item"] == "recommended design angle"].iloc[0]
     assert float(rec["value"]) == pytest.approx(np.degrees(result.recommended_angle),
@@ -169,7 +169,7 @@ def test_report_reads_back(run_dir, result):
                 "largest load angle |theta1 - theta2| over the stated ranges"].iloc[0]
     assert float(big["value"]) == pytest.approx(np.degrees(result.study.max_load_angle),
                                                 rel=1e-12)
-    runs = _sheet(path, "Runs", "Every case")
+    runs = _sheet(path, "Runs", "Results of every case")
     cases = result.study.case_frame()
     assert len(runs) == 39                                  # 13 motions x 3 ropes x 1 body
     nominal = result.study.metrics.max_load_angle[result.study.nominal]
@@ -195,7 +195,8 @@ def test_nominal_report_reads_back_the_hook_cases(nominal):
     """Without the spread the recommended angle is below 90 deg: the hook cases at it read
     back from the LoadsAtAngle sheet."""
     result, path = nominal
-    loads = _sheet(path, "LoadsAtAngle", "Envelope")
+    loads = _sheet(path, "LoadsAtAngle", "Envelope max |LIMIT load| of the hook cases per "
+                                          "station: shear forces")
     c = result.comparison
     at = f"{np.degrees(c.angle):.4g}"
     np.testing.assert_allclose(loads["max |Vy| at 30 deg [N]"].astype(float),
@@ -325,7 +326,8 @@ def test_run_command_includes_lateral(tmp_path):
     out = tmp_path / "out"
     assert main(["run", str(path), "--out", str(out), "--quiet"]) == 0
     assert sorted(p.name for p in out.iterdir()) == sorted(
-        ["only-lateral-lateral.xlsx"] + [f"only-lateral-lateral-{t}.png" for t in PLOTS])
+        ["only-lateral-lateral.xlsx", "only-lateral-lateral-histories.csv"]
+        + [f"only-lateral-lateral-{t}.png" for t in PLOTS])
 
 
 def test_recommended_angle_above_30_deg_is_flagged(tmp_path):

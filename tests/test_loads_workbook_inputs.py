@@ -219,7 +219,8 @@ def summary_block(path, title):
     block = raw.iloc[head + 1:].copy()
     block.columns = raw.iloc[head]
     end = block.iloc[:, 0].isna().to_numpy()
-    return raw.iloc[start + 1, 0], block.iloc[: int(np.argmax(end)) if end.any() else len(block)]
+    note = " ".join(str(raw.iloc[r, 0]) for r in range(start + 1, head))  # wrapped lines
+    return note, block.iloc[: int(np.argmax(end)) if end.any() else len(block)]
 
 
 def test_report_states_attitude_and_towed_cables(tmp_path, example_loads):
@@ -239,5 +240,7 @@ def test_report_states_attitude_and_towed_cables(tmp_path, example_loads):
                                api["cable angle from vertical [deg]"], rtol=1e-12)
     assert set(towed["inside hook cone"]) == {"yes"}
     assert "inside the hook cone" in note
-    cases = pd.read_excel(path, sheet_name="LoadCases")
+    raw = pd.read_excel(path, sheet_name="LoadCases", header=None)
+    head = int(np.nonzero(raw.isin(["inside hook cone"]).any(axis=1).to_numpy())[0][0])
+    cases = raw.iloc[head + 1:].set_axis(list(raw.iloc[head]), axis=1)  # under its title
     assert {"cable angle from vertical [deg]", "inside hook cone"} <= set(cases.columns)

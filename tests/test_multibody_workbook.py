@@ -169,7 +169,7 @@ def test_report_reads_back(run_dir, study, result):
     np.testing.assert_allclose(metrics["yaw change [deg]"],
                                sim.metrics_frame()["yaw change [deg]"], atol=2e-3)
     csv = pd.read_csv(run_dir / f"{STEM}-multibody-histories.csv")
-    np.testing.assert_allclose(csv["beta [deg]"], sim.histories_frame()["beta [deg]"],
+    np.testing.assert_allclose(csv["beta_deg"], sim.histories_frame()["beta [deg]"],
                                atol=2e-3)
     assert result.simulation.dt is None  # adaptive
 
@@ -289,17 +289,18 @@ def test_bad_cable_length(small, tmp_path, capsys, length):
 
 @pytest.mark.parametrize("ea", [0, -5000000])
 def test_bad_cable_ea(small, tmp_path, capsys, ea):
-    """Rule: 'multibody cable EA' > 0."""
+    """Rule: 'multibody cable EA' in [1e4, 1e9] N (below, the load would stretch the cable
+    several times its length)."""
     name = "multibody cable EA"
-    _bad(small, tmp_path, capsys, {("Study", name): ea}, "Study", name, "must be > 0",
+    _bad(small, tmp_path, capsys, {("Study", name): ea}, "Study", name, "must be >= 10000 N",
          f"value {ea!r}")
 
 
 @pytest.mark.parametrize("mass", [0, -3])
 def test_bad_canopy_mass(small, tmp_path, capsys, mass):
-    """Rule: 'multibody canopy mass' > 0 (hinged canopy)."""
+    """Rule: 'multibody canopy mass' in [0.1, 1000] kg (hinged canopy)."""
     name = "multibody canopy mass"
-    _bad(small, tmp_path, capsys, {("Study", name): mass}, "Study", name, "must be > 0",
+    _bad(small, tmp_path, capsys, {("Study", name): mass}, "Study", name, "must be >= 0.1 kg",
          f"value {mass!r}")
 
 
@@ -364,7 +365,7 @@ def test_acceleration_without_target(small, tmp_path, capsys):
 def test_negative_ramp_rate(small, tmp_path, capsys):
     """Rule: a wind ramp's rate > 0."""
     _bad(small, tmp_path, capsys, {(MANOEUVRES, "I5"): -0.5}, MANOEUVRES, "I5",
-         "'rate' must be > 0", "-0.5")
+         "rate must be > 0 m/s^2", "-0.5")
 
 
 def test_duplicate_run_name(small, tmp_path, capsys):
@@ -387,9 +388,10 @@ def test_full_tail_needs_its_table(small, tmp_path, capsys):
 
 
 def test_tolerance_must_be_positive(small, tmp_path, capsys):
-    """Rule: the adaptive step's relative tolerance > 0."""
+    """Rule: the adaptive step's relative tolerance in [1e-13, 0.1] (below, under the
+    round-off)."""
     name = "multibody relative tolerance"
-    _bad(small, tmp_path, capsys, {("Study", name): 0}, "Study", name, "must be > 0")
+    _bad(small, tmp_path, capsys, {("Study", name): 0}, "Study", name, "must be >= 1e-13")
 
 
 def test_canopy_table_must_pull_along_the_wind(small, tmp_path, capsys):

@@ -10,7 +10,9 @@ Each analysis has a folder ``slingloads/io/<folder>/`` with
   :mod:`slingloads.analyses`) and ``write(result, out_dir, stem, units, study)``, publishing
   through :func:`slingloads.io.common.atomic.atomic_outputs` (the loads report also takes
   ``checks``, the checks against the other analyses of the run:
-  :mod:`slingloads.io.consistency`);
+  :mod:`slingloads.io.consistency`); optionally ``start_figures(result, units, study)`` (a
+  started :class:`~slingloads.io.common.figures.FigureRenderer`, then passed to ``write`` as
+  ``figures=``) so that the figures are drawn while the next analyses are computed;
 * ``plots.py``: the figures of the report.
 
 The study builder (:func:`slingloads.io.study.read_study`), the blank template
@@ -94,6 +96,13 @@ class Analysis:
         with study.located(fields):
             return self.module("report").compute(study)
 
+    def start_figures(self, result, units, study):
+        """Start drawing its report's figures in worker processes (so that they are drawn
+        while the other analyses are computed): a context manager to leave once the report
+        is written, or None when its report module draws them at writing time."""
+        start = getattr(self.module("report"), "start_figures", None)
+        return start(result, units, study) if start is not None else None
+
     def output_patterns(self, stem):
         """Regular expressions of the names of its report files for input ``stem`` (its
         report module's ``OUTPUTS``), which a new report replaces."""
@@ -106,11 +115,14 @@ class Analysis:
         return [t.format(stem=stem) for t in getattr(self.module("report"), "OUTPUTS", ())
                 if "*" not in t]
 
-    def write(self, result, out_dir, stem, units, study, checks=None):
-        """Write its report into the run's outputs ``out_dir``; ``checks``, a DataFrame of
-        checks against the other analyses of the run (:mod:`slingloads.io.consistency`), is
-        passed to the reports that show them."""
+    def write(self, result, out_dir, stem, units, study, figures=None, checks=None):
+        """Write its report into the run's outputs ``out_dir`` (with the figures started by
+        :meth:`start_figures`, if any); ``checks``, a DataFrame of checks against the other
+        analyses of the run (:mod:`slingloads.io.consistency`), is passed to the reports that
+        show them."""
         extra = {} if checks is None else {"checks": checks}
+        if figures is not None:
+            extra["figures"] = figures
         return self.module("report").write(result, out_dir, stem, units, study, **extra)
 
 
@@ -142,9 +154,17 @@ def compute_order(names):
     feeders = [a.name for a in ANALYSES if a.name in names and set(a.feeds) & set(names)]
     return feeders + [n for n in names if n not in feeders]
 
-#: Parameters of the whole study: its name and which analyses to run.
+#: Parameters of the whole study: its name, the report's free identification fields and which
+#: analyses to run.
 GENERAL = Section("general", parameters=(
     Parameter("study name", TEXT, "", "study", "Name printed on the reports."),
+    Parameter("project", TEXT, "", "",
+              "Project the reports belong to, printed on their cover (free text)."),
+    Parameter("document number", TEXT, "", "",
+              "Document number of the reports, printed on their cover and in the footer of "
+              "every page (free text, e.g. 'LR-1234 issue A')."),
+    Parameter("author", TEXT, "", "", "Who prepared the analysis, printed on the covers."),
+    Parameter("checker", TEXT, "", "", "Who checked it, printed on the covers."),
     *(Parameter(a.run_parameter, FLAG, "", a.run_default, a.run_help) for a in ANALYSES),
 ))
 

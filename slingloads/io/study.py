@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.analyses import ANALYSES, all_parameters
+from slingloads.io.common.cover import IDENTIFICATION, now_stamp
 from slingloads.io.common.parameters import StudyParameters
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import WorkbookReader
@@ -38,6 +39,15 @@ class WorkbookStudy:
         :class:`~slingloads.analyses.loads.LoadsStudy`).
     points : dict
         Hardpoints by kind (``fin_cp``, ``aero_reference``...: position or None). [m]
+    identification : dict
+        The free fields printed on the report covers (``project``, ``document number``,
+        ``author``, ``checker``), by name; empty strings when not given.
+    run_date : str
+        When the workbook was read (the run date printed on the reports).
+    results : dict
+        Results of the analyses computed in this run, by analysis name (filled by the
+        command line before the reports are written, so that a report can quote another's
+        result: the loads report quotes the lateral study's recommended hook angle).
     input_files : list of pathlib.Path
         The workbook and every file it refers to that was read (CSV time histories): no
         output may replace one.
@@ -65,6 +75,8 @@ class WorkbookStudy:
     input_files: list = field(default_factory=list)
     warnings: list = field(default_factory=list)
     cells: dict = field(default_factory=dict)
+    identification: dict = field(default_factory=dict)
+    run_date: str = field(default_factory=now_stamp)
     runtime: dict = field(default_factory=dict)
     results: dict = field(default_factory=dict)
 
@@ -151,7 +163,9 @@ def _build(reader, path, only, sha256):
     study = WorkbookStudy(name=str(params("study name")), path=str(path), sha256=sha256,
                           run=run, airframe=airframe,
                           parameters={k: v[0] for k, v in params.given.items()}, points=refs,
-                          cells={k: v[1] for k, v in params.given.items()})
+                          cells={k: v[1] for k, v in params.given.items()},
+                          identification={k: str(params(k) or "").strip()
+                                          for k in IDENTIFICATION})
     for analysis in ANALYSES:
         if run[analysis.name]:
             study.inputs[analysis.name] = analysis.read(reader, params, study)

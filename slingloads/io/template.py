@@ -143,26 +143,42 @@ def _study_sheet(ws, parameters):
 
 def _table_sheet(ws, spec, frame):
     headers = list(frame.columns) if frame is not None else [c.header for c in spec.columns]
-    helps = {c.name.lower(): c for c in spec.columns}
     for col, title in enumerate(headers, start=1):
         cell = ws.cell(1, col)
         _text(cell, str(title))
         cell.font = _BOLD
         cell.fill = _HEAD_FILL
-        key = str(title).split("[")[0].strip().lower()
-        if key in helps:
-            c = helps[key]
-            text = c.help or c.name
-            if c.kind not in (TEXT, FLAG, INTEGER) and c.unit:
-                text += f" Unit: any {c.kind} unit in the brackets."
-            text += _limit_text(c)
-            cell.comment = Comment(text, "slingloads")
+        c = column_of(spec, title)
+        if c is not None:
+            cell.comment = Comment(column_comment(c), "slingloads", width=320, height=160)
         ws.column_dimensions[cell.column_letter].width = max(12, len(str(title)) + 3)
     if frame is not None:
         for r, values in enumerate(frame.itertuples(index=False), start=2):
             for col, value in enumerate(values, start=1):
                 _text(ws.cell(r, col), _plain(value))
     ws.freeze_panes = "A2"
+
+
+def column_of(spec, header):
+    """The column of ``spec`` a header names: the exact name first (``CL`` and ``Cl`` are
+    different columns), else a unique case-insensitive match, else None."""
+    name = str(header).split("[")[0].strip()
+    exact = [c for c in spec.columns if c.name == name]
+    if exact:
+        return exact[0]
+    folded = [c for c in spec.columns if c.name.lower() == name.lower()]
+    return folded[0] if len(folded) == 1 else None
+
+
+def column_comment(column):
+    """The header comment of a column: what it is, its sign and reference, a typical value,
+    and the units it accepts."""
+    text = column.help or column.name
+    if column.kind not in (TEXT, FLAG, INTEGER) and column.unit:
+        text += f" Unit: any {column.kind} unit in the brackets."
+    elif column.kind == FLAG:
+        text += " (yes/no)"
+    return text + _limit_text(column)
 
 
 def _limit_text(spec):

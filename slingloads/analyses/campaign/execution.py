@@ -172,6 +172,11 @@ class DaskCluster(_Executor):
             raise InputError(f"could not reach the Dask scheduler within {timeout:g} s "
                              f"({type(err).__name__}: {err}); nothing was run",
                              self.address) from None
+        except (MemoryError, EOFError, RuntimeError) as err:
+            # a server that is not a Dask scheduler: its first bytes read as an absurd frame
+            # length (the client then asks for exabytes) or as a broken message
+            raise InputError("the server at this address does not answer as a Dask scheduler "
+                             f"({type(err).__name__}); nothing was run", self.address) from None
         try:
             self.client.wait_for_workers(1, timeout=timeout)
         except (OSError, TimeoutError) as err:

@@ -21,6 +21,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads.errors import InputError
+from slingloads.limits import MAX_MULTIBODY_RUN_STEPS
 from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
 from slingloads.models.multibody.integrator import (
     ATOL,
@@ -44,6 +45,9 @@ from .trim import flag_text, linearise, trim_many
 T_END, DT, OUTPUT_INTERVAL = 60.0, None, 0.1
 #: Largest |lambda| dt accepted for the fastest linear mode with a fixed step. [-]
 STEP_LIMIT = 1.0
+#: |lambda| dt at the edge of the stability region of the Dormand-Prince 5(4) pair on the
+#: negative real axis (Hairer and Wanner, Solving ODEs II, section IV.2). [-]
+ADAPTIVE_STABILITY = 3.3
 #: Activity (yaw rate, swing rates) below which a response counts as settled. [deg/s]
 QUIET = 0.5
 
@@ -474,6 +478,8 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         for point in trims.values():
             if point.converged:
                 _check_step(point, dt, linear)
+    elif check_step:
+        _check_adaptive_work(trims, keys, t_end)
     prepared = [(system, manoeuvre, trims[key])
                 for (system, manoeuvre), key in zip(pairs, keys, strict=True)]
     time = np.arange(n_out) * output_interval
@@ -504,6 +510,26 @@ def _check_step(point, dt, linear):
             f"the integration step {dt:.4g} s is too long for the fastest mode of "
             f"{system.name!r} at {speed:.4g} m/s (|lambda| = {fastest:.4g} 1/s): "
             f"use dt <= {STEP_LIMIT / fastest:.3g} s", dt)
+
+
+def _check_adaptive_work(trims, keys, t_end):
+    """Refuse runs whose fastest linear mode would force more adaptive steps in all than
+    :data:`~slingloads.limits.MAX_MULTIBODY_RUN_STEPS` (an explicit step is stable only
+    within |lambda| dt <= ADAPTIVE_STABILITY): a very stiff cable or a very light canopy
+    would otherwise keep the integrator busy for hours."""
+    fastest = {}
+    for key, point in trims.items():
+        if point.converged:
+            fastest[key] = float(np.max(np.abs(linearise(point).eigenvalues)))
+    steps = sum(t_end * fastest.get(key, 0.0) / ADAPTIVE_STABILITY for key in keys)
+    if steps > MAX_MULTIBODY_RUN_STEPS:
+        worst = max(fastest.values())
+        raise InputError(
+            f"too much work: the fastest mode of the system (|lambda| = {worst:.4g} 1/s) "
+            f"forces about {steps:,.0f} adaptive steps over the {len(keys)} runs, more than "
+            f"the {MAX_MULTIBODY_RUN_STEPS:,} allowed (limits of slingloads); check the "
+            "cable stiffness EA, the canopy mass and the mass items, or shorten the runs",
+            t_end, field="t_end")
 
 
 class _DriveTables:

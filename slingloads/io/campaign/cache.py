@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from slingloads.analyses.campaign import HISTORY_LABELS
-from slingloads.errors import InputError
+from slingloads.errors import InputError, OutputError
 
 #: Metadata key of the metrics in a cached file.
 METRICS_KEY = b"slingloads.metrics"
@@ -129,10 +129,56 @@ class RunCache:
 
 
 def check_outside(cache_dir, out_dir):
-    """Refuse a cache inside the output folder (that folder is replaced as a whole)."""
-    cache = Path(cache_dir).resolve()
-    out = Path(out_dir).resolve()
+    """Refuse a cache inside the output folder (that folder is replaced as a whole), and an
+    output folder inside the cache (publishing would replace cached runs)."""
+    try:
+        cache = Path(cache_dir).resolve()
+        out = Path(out_dir).resolve()
+    except (OSError, RuntimeError) as err:  # a symbolic-link loop, a name too long
+        raise OutputError(f"the run cache or output folder cannot be resolved "
+                          f"({type(err).__name__})", cache_dir) from None
     if cache == out or out in cache.parents:
         raise InputError("the run cache must lie outside the output folder, which is replaced "
                          "as a whole when the reports are published; choose another --cache",
                          str(cache_dir))
+    if cache in out.parents:
+        raise InputError("the output folder must lie outside the run cache (publishing the "
+                         "reports would replace the cached runs in it); choose another --out "
+                         "or --cache", str(out_dir))
+
+
+def check_writable(cache_dir):
+    """Refuse, before any run, a cache folder that could not be created or written: a file in
+    the way, a path under a file, a read-only folder, a name too long.
+
+    Raises
+    ------
+    InputError
+        If the cache is an existing file (a user's mistake).
+    OutputError
+        If the folder cannot be created or written (the environment).
+    """
+    path = Path(cache_dir)
+    if path.exists() and not path.is_dir():
+        raise InputError("the run cache must be a folder, not a file; choose another --cache",
+                         str(cache_dir))
+    existing = path
+    try:
+        while not existing.exists():
+            if existing.parent == existing:
+                break
+            existing = existing.parent
+        if not existing.is_dir():
+            raise OutputError("the run cache cannot be created under a file", cache_dir)
+        if not os.access(existing, os.W_OK | os.X_OK):
+            raise OutputError("the run cache folder is read-only (no write permission); "
+                              "choose another --cache", existing)
+        for part in path.parts:
+            if len(os.fsencode(part)) > 255:
+                raise OutputError("a name in the run cache's path is too long for the file "
+                                  "system", cache_dir)
+    except OSError as err:
+        if isinstance(err, OutputError):
+            raise
+        raise OutputError(f"the run cache cannot be used ({type(err).__name__}: "
+                          f"{err.strerror or err})", cache_dir) from None

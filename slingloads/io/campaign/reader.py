@@ -14,6 +14,7 @@ Study rows; the matrix from the list rows, the ``CampaignMasses`` sheet, or the
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -22,6 +23,7 @@ import pandas as pd
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
 from slingloads.io.campaign.schema import (
     HOOK_ANGLE_SOURCES,
+    LIST_BOUNDS,
     LISTS,
     MATRIX_KINDS,
     SAMPLE_HELICOPTERS,
@@ -29,7 +31,14 @@ from slingloads.io.campaign.schema import (
 )
 from slingloads.io.common.schema import STUDY_SHEET, TEXT
 from slingloads.io.common.units import si_factor
-from slingloads.io.common.workbook import cell_name, located
+from slingloads.io.common.workbook import cell_name, check_quantity, located
+from slingloads.limits import (
+    MAX_CAMPAIGN_RUN_STEPS,
+    MAX_CAMPAIGN_RUNS,
+    MAX_CAMPAIGN_SAMPLES,
+    MAX_LIST_ITEMS,
+    MAX_MAP_POINTS,
+)
 
 ANALYSIS = "campaign"
 _SPEC = {s.name: s for s in SHEETS}
@@ -51,6 +60,8 @@ class CampaignInputs:
     loads_from_dynamics : bool
     hook_angle_source : str
         'CS-29.865' or 'dynamics'.
+    scheduler_cell : str
+        Cell of 'campaign scheduler' on the Study sheet (errors reaching it are put there).
     """
 
     campaign: object
@@ -59,6 +70,24 @@ class CampaignInputs:
     timeout: float
     loads_from_dynamics: bool
     hook_angle_source: str
+    scheduler_cell: str = "(default)"
+
+
+#: A Dask scheduler address: ``[protocol://]host[:port]``.
+_ADDRESS = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?(?:[A-Za-z0-9](?:[A-Za-z0-9.-]{0,252})"
+                      r"|\[[0-9A-Fa-f:.]{2,45}\])(?::(?P<port>[0-9]{1,5}))?$")
+
+
+def address_rule(address):
+    """The rule a scheduler address breaks, or None if it is well formed."""
+    match = _ADDRESS.match(address)
+    if match is None:
+        return ("not a scheduler address; write [protocol://]host[:port], e.g. "
+                "tcp://10.0.0.5:8786 (protocols tcp, tls, ws, wss, ucx)")
+    port = match.group("port")
+    if port is not None and not 1 <= int(port) <= 65535:
+        return "the scheduler's port must be in [1, 65535]"
+    return None
 
 
 def _sizing_fit_range(params):
@@ -71,6 +100,10 @@ def _sizing_fit_range(params):
 def list_parameter(params, name):
     """A comma-separated Study list: names (text lists) or SI numbers (unit column).
 
+    At most :data:`~slingloads.limits.MAX_LIST_ITEMS` values; each number is checked at the
+    list's cell against its kind's magnitude and the list's :data:`LIST_BOUNDS`, the value
+    shown as written with the unit of the row.
+
     Returns
     -------
     list
@@ -81,21 +114,23 @@ def list_parameter(params, name):
     items = [s.strip() for s in text.split(",") if s.strip()]
     if not items:
         raise params.error(name, f"{name!r} needs at least one value (comma-separated)", text)
+    if len(items) > MAX_LIST_ITEMS:
+        raise params.error(name, f"{name!r} lists {len(items):,} values; at most "
+                           f"{MAX_LIST_ITEMS} are allowed (limits of slingloads)")
     if kind == TEXT:
         return items
+    spec = params.specs[name.lower()]
     cell = params.cell(name)
     if cell is None:
-        unit = params.specs[name.lower()].unit
+        unit = spec.unit
         where = "(default)"
     else:
         row = int("".join(ch for ch in cell if ch.isdigit()))
-        unit = params.reader.book[STUDY_SHEET][cell_name(row, 3)].value
-        unit = "" if unit is None else str(unit)
+        unit = params.unit(name) or ""
         where = cell_name(row, 3)
         if kind != "dimensionless" and not unit.strip():
             raise params.reader.error(f"{name!r} needs a unit in its unit column, e.g. "
-                                      f"{params.specs[name.lower()].unit!r}", None, STUDY_SHEET,
-                                      where)
+                                      f"{spec.unit!r}", None, STUDY_SHEET, where)
     with located(params.reader.file, STUDY_SHEET, where):
         factor = si_factor(unit, kind)
     values = []
@@ -106,7 +141,10 @@ def list_parameter(params, name):
             raise params.error(name, f"{name!r}: every value must be a number", item) from None
         if not np.isfinite(value):
             raise params.error(name, f"{name!r}: every value must be a finite number", item)
-        values.append(value * factor)
+        values.append(check_quantity(value, item, kind, factor, unit.strip(),
+                                     LIST_BOUNDS.get(name), spec.unit,
+                                     f"every value of {name!r}", params.reader.error,
+                                     STUDY_SHEET, params.where(name)))
     return values
 
 
@@ -241,10 +279,13 @@ def read(reader, params, study):
             Factors(**{field: tuple(values)})  # each list checked at its own cell
         lists[field] = tuple(values)
     factors = Factors(masses=masses, **lists)
+    kind = params.choice("campaign matrix", MATRIX_KINDS)
+    no_chute_runs = _no_parachute_runs(params)
+    if kind == "full factorial":
+        _check_matrix_size(params, factors, len(masses), no_chute_runs)
     with at("campaign cable lengths"):
         for length in factors.cable_lengths:
             system.with_(cable=replace(system.cable, length=length))
-    kind = params.choice("campaign matrix", MATRIX_KINDS)
     rows, sheet = None, STUDY_SHEET
     if kind == "listed rows":
         if not reader.has_sheet("CampaignRuns"):
@@ -264,33 +305,106 @@ def read(reader, params, study):
     with at("campaign minimum yaw damping"):
         criteria = SelectionCriteria(params("campaign minimum yaw damping"),
                                      params("campaign maximum yaw half time"))
+    runs = (len(rows) if rows is not None else factors.size) + no_chute_runs
+    _check_work(params, runs, settings)
     n_areas = params("campaign stability map areas")
     params.check("campaign stability map areas", n_areas >= 2,
                  "'campaign stability map areas' must be >= 2")
     n_speeds = params("campaign stability map airspeeds")
     params.check("campaign stability map airspeeds", n_speeds >= 1,
                  "'campaign stability map airspeeds' must be >= 1")
+    altitudes = (len(set(rows["density altitude [m]"])) if rows is not None
+                 else len(factors.density_altitudes))
+    points = altitudes * n_areas * n_speeds
+    params.check("campaign stability map areas", points <= MAX_MAP_POINTS,
+                 f"too much work: the stability map asks for {points:,} points (density "
+                 f"altitudes {altitudes} x areas {n_areas} x airspeeds {n_speeds}), more than "
+                 f"the {MAX_MAP_POINTS:,} allowed (limits of slingloads)")
     chosen = params.positive("campaign chosen area factor", allow_zero=True)
     margin = params("campaign loads margin")
     params.check("campaign loads margin", np.isfinite(margin) and margin >= 1,
                  "'campaign loads margin' must be >= 1")
     no_chute = _no_parachute(params, system, NoParachuteStudy, sample_full_tail_system)
+    _check_needs_parachute(params, system, rows, factors)
     with located(file, sheet):
         campaign = Campaign(setup, factors, rows, settings, criteria, margin,
                             _map(factors, rows, n_areas, n_speeds), no_chute,
                             chosen or None, name=str(params("study name")),
                             neutral_fit_range=_sizing_fit_range(params))
-    if chosen and not np.any(np.isclose(campaign.matrix.frame["area factor [-]"], chosen)):
+    listed = sorted(float(f) for f in campaign.matrix.frame["area factor [-]"].unique())
+    if chosen and not np.any(np.isclose(listed, chosen)):
         raise params.error("campaign chosen area factor", "the chosen area factor must be one "
-                           "of the matrix's area factors "
-                           f"{sorted(campaign.matrix.frame['area factor [-]'].unique())}",
+                           f"of the matrix's area factors {listed}",
                            params.raw("campaign chosen area factor"))
     workers = params("campaign workers")
     params.check("campaign workers", workers >= 0, "'campaign workers' must be >= 0")
+    scheduler = str(params("campaign scheduler") or "").strip()
+    if scheduler:
+        rule = address_rule(scheduler)
+        params.check("campaign scheduler", rule is None, f"'campaign scheduler': {rule}")
     return CampaignInputs(
-        campaign, str(params("campaign scheduler") or "").strip(), workers or None,
+        campaign, scheduler, workers or None,
         params.positive("campaign scheduler time-out"), params("campaign loads from dynamics"),
-        params.choice("campaign loads hook angle", HOOK_ANGLE_SOURCES))
+        params.choice("campaign loads hook angle", HOOK_ANGLE_SOURCES),
+        params.where("campaign scheduler"))
+
+
+def _check_needs_parachute(params, system, rows, factors):
+    """The campaign sizes a parachute: fuselage and fin must not be statically stable in yaw
+    on their own (a positive neutral area), blamed on the fin area, the value to change."""
+    from slingloads.analyses.campaign import neutral_area_of
+
+    speeds = rows["airspeed EAS [m/s]"] if rows is not None else factors.airspeeds
+    with located(params.reader.file, STUDY_SHEET, params.where("fin area")):
+        neutral = neutral_area_of(system, float(np.max(np.asarray(speeds, float))))
+    if neutral.already_stable:
+        raise params.error("fin area", "fuselage and fin are already statically stable in yaw "
+                           f"(neutral parachute area {neutral.area:.4g} m^2, not positive): "
+                           "there is no parachute to size; check 'fin area', FinAero and "
+                           "FuselageAero")
+
+
+def _no_parachute_runs(params):
+    """Runs of the study without parachute (helicopters x ramps), from the list cells."""
+    helicopters = list_parameter(params, "campaign no-parachute helicopters")
+    if [h.upper() for h in helicopters] == ["NONE"]:
+        return 0
+    return len(set(h.upper() for h in helicopters)) * len(
+        list_parameter(params, "campaign no-parachute ramps"))
+
+
+def _check_matrix_size(params, factors, masses, no_chute_runs):
+    """The full factorial stays within MAX_CAMPAIGN_RUNS (before any run is built)."""
+    lists = {"campaign area factors": len(factors.area_factors),
+             "campaign airspeeds EAS": len(factors.airspeeds),
+             "campaign density altitudes": len(factors.density_altitudes),
+             "campaign cable lengths": len(factors.cable_lengths),
+             "campaign carriers": len(factors.carriers),
+             "campaign manoeuvres": len(factors.manoeuvres)}
+    runs = factors.size + no_chute_runs
+    if runs <= MAX_CAMPAIGN_RUNS:
+        return
+    longest = max(lists, key=lists.get)
+    sizes = " x ".join(f"{n} {name.removeprefix('campaign ')}" for name, n in lists.items())
+    raise params.error(longest, f"too much work: the campaign's matrix has {factors.size:,} "
+                       f"runs ({sizes} x {max(masses, 1)} mass cases) and {no_chute_runs} "
+                       f"without parachute, more than the {MAX_CAMPAIGN_RUNS:,} allowed "
+                       "(limits of slingloads); shorten the longest list")
+
+
+def _check_work(params, runs, settings):
+    """Run-steps and stored samples of the campaign stay within the limits."""
+    samples = runs * (round(settings.t_end / settings.output_interval) + 1)
+    if settings.dt is not None:  # a fixed step; the adaptive one is not counted ahead
+        steps = runs * round(settings.t_end / settings.dt)
+        params.check("campaign time step", steps <= MAX_CAMPAIGN_RUN_STEPS,
+                     f"too much work: {runs:,} runs of {settings.t_end:g} s at this step are "
+                     f"{steps:,} steps, more than the {MAX_CAMPAIGN_RUN_STEPS:,} allowed "
+                     "(limits of slingloads); use the adaptive step (0) or a longer one")
+    params.check("campaign output interval", samples <= MAX_CAMPAIGN_SAMPLES,
+                 f"too much work: {runs:,} runs of {settings.t_end:g} s sampled at this "
+                 f"interval store {samples:,} samples, more than the {MAX_CAMPAIGN_SAMPLES:,} "
+                 "allowed (limits of slingloads)")
 
 
 def _no_parachute(params, system, study_type, sample):

@@ -21,6 +21,7 @@ kt, ft, lb, ft^2, lbf); the Parquet file is SI.
 
 from __future__ import annotations
 
+import contextlib
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,6 +34,7 @@ from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
 from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
 from slingloads.io.common.report import check_units, digest_frame
+from slingloads.io.common.workbook import located
 
 ANALYSIS = "campaign"
 _PNG_DPI = 90
@@ -116,8 +118,12 @@ def compute(study):
     timeout = runtime.get("timeout") or inputs.timeout
     campaign = inputs.campaign
     total = campaign.size + (len(campaign.no_parachute.jobs()) if campaign.no_parachute else 0)
-    executor = make_executor(scheduler or None, workers, timeout, runs=total)
-    result = run_campaign(campaign, executor=executor, store=RunCache(cache_dir),
+    store = RunCache(cache_dir)
+    where = (located(study.path, "Study", inputs.scheduler_cell)
+             if scheduler and not runtime.get("scheduler") else contextlib.nullcontext())
+    with where:
+        executor = make_executor(scheduler or None, workers, timeout, runs=total)
+    result = run_campaign(campaign, executor=executor, store=store,
                           progress=runtime.get("progress"))
     report = CampaignReport(inputs, result, str(cache_dir))
     if hasattr(study, "results"):

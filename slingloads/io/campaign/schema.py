@@ -11,7 +11,30 @@ values; a number list takes its unit from the row's unit column (any unit of the
 
 from __future__ import annotations
 
-from slingloads.io.common.schema import FLAG, INTEGER, TEXT, Column, Parameter, Section, TableSheet
+from slingloads.io.common.schema import (
+    CABLE_EA,
+    CABLE_LENGTH,
+    CANOPY_MASS,
+    CARRIER_MASS,
+    DRAG_AREA,
+    FLAG,
+    INTEGER,
+    ISA_ALTITUDE,
+    OUTPUT_INTERVAL,
+    RUN_LENGTH,
+    TEXT,
+    Bounds,
+    Column,
+    Parameter,
+    Section,
+    TableSheet,
+)
+from slingloads.limits import (
+    MAX_CAMPAIGN_RUNS,
+    MAX_LIST_ITEMS,
+    MAX_SCHEDULER_TIMEOUT,
+    MAX_WORKERS,
+)
 
 _S = "campaign"
 
@@ -25,6 +48,15 @@ LISTS = {
     "campaign manoeuvres": TEXT,
     "campaign no-parachute ramps": "speed",
     "campaign no-parachute helicopters": TEXT,
+}
+#: Allowed range of each number of a list parameter (in the bounds' unit), checked at its
+#: cell with the value as written; a list holds at most MAX_LIST_ITEMS values.
+LIST_BOUNDS = {
+    "campaign area factors": Bounds(0.01, 100),
+    "campaign airspeeds EAS": Bounds(0, 200, lo_open=True, unit="kt"),
+    "campaign density altitudes": ISA_ALTITUDE,
+    "campaign cable lengths": CABLE_LENGTH,
+    "campaign no-parachute ramps": Bounds(0, 200, lo_open=True, unit="kt"),
 }
 #: Valid values of 'campaign matrix'.
 MATRIX_KINDS = ("full factorial", "listed rows")
@@ -56,35 +88,39 @@ PARAMETERS = (
               "'acceleration' (from hover to the run's airspeed).", _S),
     Parameter("campaign run length", "time", "s", 60.0,
               "Simulated time of every run, a whole multiple of the time step (paper: 60 s).",
-              _S),
+              _S, RUN_LENGTH),
     Parameter("campaign time step", "time", "s", 0.0,
               "0 = the multibody model's adaptive step (Dormand-Prince 5(4)); > 0: that fixed "
-              "step, checked against the fastest linear mode.", _S),
+              "step, checked against the fastest linear mode.", _S, Bounds(0, 1, unit="s")),
     Parameter("campaign output interval", "time", "s", 0.1,
-              "Sampling interval of the stored histories (a whole multiple of a fixed step).", _S),
+              "Sampling interval of the stored histories (a whole multiple of a fixed step).",
+              _S, OUTPUT_INTERVAL),
     Parameter("campaign cable EA", "force", "N", 5.0e6,
               "Axial stiffness EA of the carrier cable, > 0 (default: a GENERIC synthetic "
-              "long line).", _S),
+              "long line).", _S, CABLE_EA),
     Parameter("campaign cable damping ratio", "dimensionless", "", 0.05,
-              "Structural damping of the cable as the bounce mode's damping ratio, >= 0.", _S),
+              "Structural damping of the cable as the bounce mode's damping ratio, >= 0.",
+              _S, Bounds(0, 10)),
     Parameter("campaign canopy mass", "mass", "kg", 3.0,
-              "Mass of the canopy and line of the hinged parachute, > 0.", _S),
+              "Mass of the canopy and line of the hinged parachute, > 0.",
+              _S, CANOPY_MASS),
     Parameter("campaign carrier mass", "mass", "kg", 15000.0,
-              "Mass of the free carrier, > 0 (GENERIC heavy-lift class).", _S),
+              "Mass of the free carrier, > 0 (GENERIC heavy-lift class).", _S, CARRIER_MASS),
     Parameter("campaign carrier drag area", "area", "m^2", 4.0,
-              "Flat-plate drag area of the free carrier, >= 0 (CH-47 class: 43 ft^2).", _S),
+              "Flat-plate drag area of the free carrier, >= 0 (CH-47 class: 43 ft^2).",
+              _S, DRAG_AREA),
     Parameter("campaign minimum yaw damping", "dimensionless", "", 0.05,
               "Damping criterion of the recommended area: least damping ratio of the yaw modes "
-              "in every run, in [0, 1).", _S),
+              "in every run, in [0, 1).", _S, Bounds(0, 1, hi_open=True)),
     Parameter("campaign maximum yaw half time", "time", "s", 20.0,
               "Damping criterion of the recommended area: longest time to half amplitude of "
-              "the yaw modes in every run, > 0.", _S),
+              "the yaw modes in every run, > 0.", _S, Bounds(0, 3600, lo_open=True, unit="s")),
     Parameter("campaign chosen area factor", "dimensionless", "", 0.0,
               "Area factor handed to the loads, one of the matrix's; 0 = the recommended "
-              "(else the smallest stable).", _S),
+              "(else the smallest stable).", _S, Bounds(0, 100)),
     Parameter("campaign loads margin", "dimensionless", "", 1.25,
               "Factor >= 1 on the extremes the dynamics reach before they become loads cases "
-              "(angles, line tension, tension factor).", _S),
+              "(angles, line tension, tension factor).", _S, Bounds(1, 10)),
     Parameter("campaign loads from dynamics", FLAG, "", "yes",
               "With 'run loads': add the loads cases of the dynamics (alpha-beta envelope, "
               "parachute line directions and drag) and compare with the hand-entered ones.",
@@ -96,9 +132,10 @@ PARAMETERS = (
     Parameter("campaign stability map areas", INTEGER, "", 11,
               "Area factors of the stability map, evenly spread from half the matrix's "
               "smallest to its largest (the minimum stable area may lie below the matrix), "
-              ">= 2.", _S),
+              ">= 2.", _S, Bounds(2, 200)),
     Parameter("campaign stability map airspeeds", INTEGER, "", 7,
-              "Airspeeds of the stability map, evenly spread over the matrix's, >= 1.", _S),
+              "Airspeeds of the stability map, evenly spread over the matrix's, >= 1.",
+              _S, Bounds(1, 200)),
     Parameter("campaign no-parachute helicopters", TEXT, "", "HC1, HC2",
               "Helicopters flown without parachute in their full-tail configuration: GENERIC "
               "samples 'HC1', 'HC2' (comma-separated), or 'none'.", _S),
@@ -111,29 +148,41 @@ PARAMETERS = (
               "--scheduler overrides it.", _S),
     Parameter("campaign workers", INTEGER, "", 0,
               "Local worker processes; 0 = automatic (one per core, or this process for a "
-              "small campaign). The command line's --workers overrides it.", _S),
+              "small campaign). The command line's --workers overrides it.",
+              _S, Bounds(0, MAX_WORKERS)),
     Parameter("campaign scheduler time-out", "time", "s", 10.0,
-              "Time the scheduler has to answer before the campaign stops, > 0.", _S),
+              "Time the scheduler has to answer before the campaign stops, > 0.",
+              _S, Bounds(0, MAX_SCHEDULER_TIMEOUT, lo_open=True, unit="s")),
 )
 
 SHEETS = (
     TableSheet("CampaignMasses", (
         Column("mass case", TEXT, help="Name of the mass case, e.g. maximum, medium, minimum."),
         Column("mass", "mass", "kg", help="Mass of the carried helicopter, > 0 (inertia "
-                                          "scaled with it, CG kept)."),
+                                          "scaled with it, CG kept). Typical: 2,000 to "
+                                          "3,000 kg for a light twin.",
+               bounds=Bounds(0, 1e5, lo_open=True, unit="kg")),
     ), help="Optional: mass cases of the campaign (default: one, 'nominal', the mass items' "
-       "total)."),
+       "total).", max_rows=MAX_LIST_ITEMS),
     TableSheet("CampaignRuns", (
-        Column("area factor", "dimensionless", help="Parachute area over the neutral area."),
-        Column("airspeed EAS", "speed", "kt"),
+        Column("area factor", "dimensionless", help="Parachute area over the neutral area.",
+               bounds=LIST_BOUNDS["campaign area factors"]),
+        Column("airspeed EAS", "speed", "kt",
+               help="Equivalent airspeed of the run, > 0. Typical: 40 to 100 kt.",
+               bounds=LIST_BOUNDS["campaign airspeeds EAS"]),
         Column("mass case", TEXT, required=False, default="",
                help="A CampaignMasses name (may be empty with a single mass case)."),
-        Column("density altitude", "length", "ft"),
-        Column("cable length", "length", "ft"),
+        Column("density altitude", "length", "ft",
+               help="ISA density altitude of the run. Typical: 0, 5,000 or 10,000 ft.",
+               bounds=ISA_ALTITUDE),
+        Column("cable length", "length", "ft",
+               help="Unstretched carrier-to-hub cable length, > 0. Typical: 18, 60 or 100 ft.",
+               bounds=CABLE_LENGTH),
         Column("carrier", TEXT, help="frozen | free"),
         Column("manoeuvre", TEXT, help="free response | gust +30 ft/s | gust -30 ft/s | "
                                        "acceleration"),
-    ), help="Optional, with 'campaign matrix' = listed rows: the runs, one per row."),
+    ), help="Optional, with 'campaign matrix' = listed rows: the runs, one per row.",
+       max_rows=MAX_CAMPAIGN_RUNS),
 )
 
 SECTION = Section("campaign", parameters=PARAMETERS, sheets=SHEETS)

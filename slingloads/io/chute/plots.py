@@ -11,6 +11,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.errors import InputError
+from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 from slingloads.io.common.units import si_factor
 
 
@@ -25,7 +26,8 @@ def plot_yaw_linearisation(result):
     -------
     matplotlib.figure.Figure
     """
-    fig = Figure(figsize=(10, 4), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 3.6)), left=0.9, right=0.15, bottom=0.5,
+                      top=0.35, wspace=0.45)
     beta = np.degrees(result.beta)
     lo, hi = np.degrees(result.fit_range)
     panels = [("fuselage (about the suspension axis)", result.fuselage_cn,
@@ -42,7 +44,7 @@ def plot_yaw_linearisation(result):
         ax.set_ylim(1.2 * min(cn.min(), 0) - 0.01, 1.2 * max(cn.max(), 0) + 0.01)
         ax.set(title=title, xlabel="sideslip beta [deg]", ylabel="Cn [-]")
         ax.grid(True, alpha=0.4)
-        ax.legend(fontsize=8)
+        ax.legend(loc="lower right", fontsize=8)
     return fig
 
 
@@ -71,7 +73,7 @@ def plot_static_moments(result, units="SI"):
     """
     moment, m_label = _unit(units, "moment")
     area, a_label = _unit(units, "area")
-    fig = Figure(figsize=(7, 4.5), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.5)), left=0.8, bottom=0.8, top=0.35)
     ax = fig.subplots()
     beta = np.degrees(result.beta)
     for name, values in result.moments.items():
@@ -82,7 +84,7 @@ def plot_static_moments(result, units="SI"):
                  f"{result.area * area:.3g} {a_label}",
            xlabel="sideslip beta [deg]", ylabel=f"N, nose right [{m_label}]")
     ax.grid(True, alpha=0.4)
-    ax.legend()
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=4, fontsize=8)
     return fig
 
 
@@ -96,7 +98,7 @@ def plot_wake(result, units="SI"):
         ``"SI"`` (m) or ``"US"`` (ft).
     """
     length, label = _unit(units, "length")
-    fig = Figure(figsize=(7, 4), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.0)), left=0.8, bottom=0.5, top=0.35)
     ax = fig.subplots()
     ax.plot(np.asarray(result.distance) * length, result.ratio, label=result.wake_source)
     ax.axhline(result.target, color="C1", ls="--", label=f"target {result.target:.3g}")
@@ -125,7 +127,8 @@ def plot_sweep_metrics(sweep, units="SI"):
     area, a_label = _unit(units, "area")
     frame = sweep.to_frame()
     frame["area [m^2]"] = frame["area [m^2]"] * area
-    fig = Figure(figsize=(11, 7), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.0)), left=0.7, right=0.15, bottom=0.8,
+                      top=0.45, wspace=0.3, hspace=0.3)
     axes = fig.subplots(2, 2).ravel()
     columns = [("peak beta [deg]", "peak sideslip [deg]"), ("peak psi [deg]", "peak yaw [deg]"),
                ("damping ratio log decrement [-]", "damping ratio [-]"),
@@ -140,8 +143,8 @@ def plot_sweep_metrics(sweep, units="SI"):
         ax.set(xlabel=f"parachute flat-plate area [{a_label}]", ylabel=label)
         ax.axvline(sweep.static.area * area, color="0.5", ls=":", lw=1)
         ax.grid(True, alpha=0.4)
-    axes[0].legend(fontsize=8)
-    axes[2].legend(fontsize=8)
+    handles, labels = axes[2].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=len(labels), fontsize=8)
     fig.suptitle("Parachute sizing sweep (dotted: neutral static area)")
     return fig
 
@@ -159,7 +162,8 @@ def plot_time_histories(runs, indices=None, title=None, units="SI"):
     runs = getattr(runs, "runs", runs)
     h = runs.histories
     indices = list(range(min(len(runs.areas), 12))) if indices is None else list(indices)
-    fig = Figure(figsize=(10, 6), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 5.0)), left=0.8, bottom=0.5, top=0.35,
+                      hspace=0.1)
     ax_b, ax_p = fig.subplots(2, 1, sharex=True)
     for j in indices:
         label = f"{runs.areas[j] * area:.3g} {a_label}, {runs.gusts[j].kind}"
@@ -170,4 +174,59 @@ def plot_time_histories(runs, indices=None, title=None, units="SI"):
     for ax in (ax_b, ax_p):
         ax.grid(True, alpha=0.4)
     ax_b.legend(fontsize=7, ncol=2)
+    return fig
+
+
+def plot_histories_by_gust(runs, indices, title=None, units="SI"):
+    """Sideslip (solid) and yaw (dashed) against time, one panel per gust shape, for the runs
+    ``indices`` (the paper's figure 7 for every gust shape).
+
+    Parameters
+    ----------
+    runs : YawRuns or SweepResult
+    indices : sequence of int
+        Runs to draw; each goes on the panel of its gust shape, coloured by its area.
+    title : str, optional
+    units : str
+        ``"SI"`` (m^2) or ``"US"`` (ft^2) for the areas in the legends.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    area, a_label = _unit(units, "area")
+    runs = getattr(runs, "runs", runs)
+    h = runs.histories
+    indices = list(indices)
+    kinds = list(dict.fromkeys(runs.gusts[j].kind for j in indices))
+    if not kinds:
+        raise InputError("no run to draw")
+    cols = 2 if len(kinds) > 1 else 1
+    rows = -(-len(kinds) // cols)
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.3 * rows + 1.2)), left=0.7, right=0.15,
+                      bottom=0.85, top=0.65, wspace=0.08, hspace=0.3)
+    axes = np.atleast_1d(fig.subplots(rows, cols, sharex=True, sharey=True, squeeze=False)
+                         ).ravel()
+    areas = sorted({float(runs.areas[j]) for j in indices})
+    colours = {a: f"C{k % 10}" for k, a in enumerate(areas)}
+    for ax, kind in zip(axes, kinds, strict=False):
+        for j in (j for j in indices if runs.gusts[j].kind == kind):
+            colour = colours[float(runs.areas[j])]
+            ax.plot(h.time, np.degrees(h.beta[j]), color=colour, lw=1.0,
+                    label=f"{runs.areas[j] * area:.3g} {a_label}")
+            ax.plot(h.time, np.degrees(h.psi[j]), color=colour, lw=1.0, ls="--")
+        ax.set_title(f"{kind} gust", fontsize=9)
+        ax.grid(True, alpha=0.4)
+    for ax in axes[len(kinds):]:
+        ax.set_visible(False)
+    for ax in axes[::cols]:
+        ax.set_ylabel("angle [deg]")
+    for ax in axes[-cols:]:
+        ax.set_xlabel("time [s]")
+    handles, labels = axes[0].get_legend_handles_labels()
+    handles += [axes[0].plot([], [], color="0.3", lw=1.0)[0],
+                axes[0].plot([], [], color="0.3", lw=1.0, ls="--")[0]]
+    labels += ["sideslip beta", "yaw psi"]
+    fig.legend(handles, labels, loc="lower center", ncol=len(labels), fontsize=7)
+    fig.suptitle(title or "1-DOF yaw response to lateral gusts", fontsize=10)
     return fig

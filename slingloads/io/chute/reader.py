@@ -273,15 +273,12 @@ def _wake_table(reader):
         raise reader.error("the ChuteWake table needs at least two rows", len(t), t.sheet, "A3")
     for i in range(len(t)):
         if x[i] < 0:
-            raise reader.error("wake distance must be >= 0", float(x[i]), t.sheet,
-                               t.cell("distance", i))
+            raise t.error("distance", i, "wake distance must be >= 0")
         if i and x[i] <= x[i - 1]:
-            raise reader.error("wake distances must be strictly increasing (first at "
-                               f"{t.cell('distance', i - 1)})", float(x[i]), t.sheet,
-                               t.cell("distance", i))
+            raise t.error("distance", i, "wake distances must be strictly increasing (first "
+                          f"at {t.cell('distance', i - 1)})")
         if not 0 < r[i] <= 1.2:
-            raise reader.error("wake q ratio must lie in (0, 1.2]", float(r[i]), t.sheet,
-                               t.cell("q ratio", i))
+            raise t.error("q ratio", i, "wake q ratio must lie in (0, 1.2]")
     with located(reader.file, t.sheet):
         return TabulatedWake(x, r, source="ChuteWake sheet")
 

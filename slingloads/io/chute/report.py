@@ -6,16 +6,18 @@ wake ratio and line length with the carrier-cable check, and the 1-DOF sweep of 
 area over the gust shapes. :func:`write` publishes, all at once or not at all
 (:mod:`slingloads.io.common.atomic`):
 
-* ``<stem>-chute.xlsx``: sheets *Summary* (inputs digest, condition, neutral area and its
+* ``<stem>-chute.xlsx``, print-ready: sheets *Cover* (identification, input file and its
+  SHA-256, version, sheets, conventions), *Summary* (condition, neutral area and its
   breakdown, recommended area, line length and cable check), *Linearisation*,
-  *StaticMoments*, *Wake*, *Sweep* (metrics of every run), *Histories* (sideslip and yaw of
-  the runs at the smallest, recommended and largest swept areas, every 0.5 s) and *Plots*;
-* ``<stem>-chute-histories.csv``: the same histories at every stored sample (SI, degrees);
+  *StaticMoments* (every 5 deg for print), *Wake*, *Sweep* (metrics of every run),
+  *Histories* (sideslip and yaw of the runs at the smallest, recommended and largest swept
+  areas, for every gust shape, sampled for print) and *Plots*;
+* ``<stem>-chute-histories.csv``: the same histories at every stored sample, one row per run
+  and time (SI, degrees, ``name_unit`` headers: ``run,area_m2,gust,time_s,beta_deg,psi_deg``);
 * ``<stem>-chute-linearisation.png``, ``-chute-static-moments.png``, ``-chute-wake.png``,
-  ``-chute-sweep.png``, ``-chute-histories.png``.
+  ``-chute-sweep.png``, ``-chute-histories.png`` (one panel per gust shape).
 
-Lengths, areas, speeds and moments are in the report unit system (``--units``); the plots
-are SI.
+Lengths, areas, speeds and moments are in the report unit system (``--units``).
 """
 
 from __future__ import annotations
@@ -36,14 +38,17 @@ from slingloads.analyses.chute_sizing import (
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
-from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.figures import drawings, png_bytes, start_drawing
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
-    digest_frame,
     in_report_units,
     report_unit,
+    sample_rows,
+    warning_sections,
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
@@ -54,16 +59,27 @@ PLOTS = ("linearisation", "static-moments", "wake", "sweep", "histories")
 #: Names of the files of a sizing report, for the publisher (a new report replaces them all).
 OUTPUTS = ("{stem}-chute.xlsx", "{stem}-chute-histories.csv",
            *(f"{{stem}}-chute-{tag}.png" for tag in PLOTS))
-_PNG_DPI = 90
-#: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
-HISTORY_INTERVAL = 0.5
-NUMBER_FORMATS = format_by_header([
-    (r"\[deg\]", "0.00"),
-    (r"ratio|factor|\[-\]", "0.000"),
-    (r"\[(m\^2|ft\^2)\]", "0.000"),
-    (r"\[(N m|lbf in)", "#,##0"),
-    (r"\[(m|in)\]", "0.00"),
-])
+_PNG_DPI = 100
+#: Most rows of each table of the Histories sheet (the CSV file keeps every stored sample).
+HISTORY_ROWS = 65
+#: Sideslip interval of the curve tables (Linearisation, StaticMoments) when they are
+#: longer than :data:`CURVE_ROWS` rows; the plots show every point. [deg]
+CURVE_STEP = 5.0
+CURVE_ROWS = 50
+
+TITLE = "Parachute sizing report: yaw stability of the carried helicopter"
+DESCRIPTION = (
+    "Size of the drogue parachute trailed from the fin of the carried helicopter for yaw "
+    "stability (paper sections 3.2-4.2): linearisation of the fuselage and fin yawing "
+    "moments, the neutral static area and its breakdown, the recommended area, the wake "
+    "dynamic-pressure ratio and the parachute line length with the carrier-cable check, and a "
+    "1-DOF yaw sweep of the parachute area under lateral gusts of every shape asked for. "
+    "Method: docs/parachute-sizing.md.")
+CONVENTIONS = (
+    "Yaw psi and sideslip beta positive nose right and wind from the right; yawing moment N "
+    "about the suspension (hub) axis, > 0 nose right; dN/dbeta > 0 is statically stable.",
+    "Areas are parachute flat-plate areas; the neutral area makes the total dN/dbeta zero.",
+)
 
 
 @dataclass(frozen=True)
@@ -319,8 +335,15 @@ def _cable_message(cable, units):
             f"the line to <= {show(cable.cable_length / (1 + cable.margin))}")
 
 
+def _run_label(result, j, units):
+    runs = result.sweep.runs
+    area, unit = _value(float(runs.areas[j]), "area", units)
+    return f"A={area:.4g} {unit} {runs.gusts[j].kind}"
+
+
 def history_table(result, units="SI", interval=None):
-    """Sideslip and yaw [deg] against time for :meth:`ChuteSizingReport.history_runs`.
+    """Sideslip and yaw [deg] against time for :meth:`ChuteSizingReport.history_runs`, one
+    pair of columns per run.
 
     Parameters
     ----------
@@ -335,45 +358,115 @@ def history_table(result, units="SI", interval=None):
         step = max(1, int(round(interval / (h.time[1] - h.time[0]))))
     frame = {"time [s]": h.time[::step]}
     for j in result.history_runs():
-        area, unit = _value(float(runs.areas[j]), "area", units)
-        tag = f"A={area:.4g} {unit} {runs.gusts[j].kind}"
+        tag = _run_label(result, j, units)
         frame[f"beta [deg] {tag}"] = np.degrees(h.beta[j, ::step])
         frame[f"psi [deg] {tag}"] = np.degrees(h.psi[j, ::step])
     return pd.DataFrame(frame)
 
 
-def _sheets(result, units, digest):
+def history_tables(result, units="SI"):
+    """The Histories sheet: sideslip and yaw tables (one column per run), sampled for print.
+
+    Returns
+    -------
+    (pandas.DataFrame, pandas.DataFrame, float)
+        Sideslip [deg] and yaw [deg] against time, and the sampling interval. [s]
+    """
+    frame, interval = sample_rows(history_table(result, units), "time [s]", HISTORY_ROWS)
+    out = []
+    for name in ("beta", "psi"):
+        columns = [c for c in frame.columns if c.startswith(f"{name} [deg] ")]
+        table = frame[["time [s]", *columns]].copy()
+        table.columns = ["time [s]", *(f"{c[len(name) + 7:]} [deg]" for c in columns)]
+        out.append(table)
+    return out[0], out[1], interval
+
+
+def history_csv_frame(result):
+    """Every stored sample of the history runs, one row per run and time (SI, degrees)."""
+    runs = result.sweep.runs
+    h = runs.histories
+    frames = [pd.DataFrame({"run": j + 1, "area_m2": float(runs.areas[j]),
+                            "gust": runs.gusts[j].kind, "time_s": h.time,
+                            "beta_deg": np.degrees(h.beta[j]), "psi_deg": np.degrees(h.psi[j])})
+              for j in result.history_runs()]
+    return pd.concat(frames, ignore_index=True)
+
+
+def curve_rows(frame, column="beta [deg]"):
+    """A curve table at every :data:`CURVE_STEP` of ``column`` when longer than
+    :data:`CURVE_ROWS` rows (for print), and a note saying so."""
+    if len(frame) <= CURVE_ROWS:
+        return frame, ""
+    values = frame[column].to_numpy(float)
+    keep = np.abs(values / CURVE_STEP - np.round(values / CURVE_STEP)) < 1e-6
+    if keep.sum() < 2:
+        return frame, ""
+    return frame[keep], (f"Every {CURVE_STEP:g} deg of sideslip ({int(keep.sum())} of "
+                         f"{len(frame)} rows); the plot shows every point.")
+
+
+def _summary_note(result, units):
+    """The sizing's outcome in two sentences."""
+    static = result.static
+    if static.already_stable:
+        return "Fuselage and fin are already statically stable in yaw: no parachute needed."
+    area, unit = _value(static.area, "area", units)
+    rec, _ = _value(result.recommended_area, "area", units)
+    line, lunit = _value(result.line.line_length, "length", units)
+    return (f"Neutral static area {area:.3g} {unit}; recommended area {rec:.3g} {unit} "
+            f"({result.inputs.recommended_factor:g} x neutral); parachute line {line:.4g} "
+            f"{lunit} from the wake.")
+
+
+def _sheets(result, units, warnings=()):
     tables = summary_tables(result, units)
     lin = result.static.linearisation
     static = result.static.curves_frame()
     moment_spec = {c: (c[:c.index(" [")], "moment") for c in static.columns if c.startswith("N ")}
     wake = convert_columns(result.line.curve_frame(), {"distance [m]": ("distance", "length")},
                            units)
-    summary = [Section("Inputs", digest),
+    curves, curves_note = curve_rows(lin.curves_frame())
+    moments, moments_note = curve_rows(convert_columns(static, moment_spec, units))
+    summary = [Section("Summary of the parachute sizing", note=_summary_note(result, units)),
+               *warning_sections(warnings),
                Section("Condition", tables["condition"]),
                Section("Parachute area", tables["sizing"], note=PAPER_NOTE),
                Section("Yaw stiffness breakdown at the neutral area", tables["breakdown"]),
                Section("Parachute line and carrier cable", tables["line"])]
     sheets = {
         "Summary": summary,
-        "Linearisation": [Section("Least-squares fit of Cn against sideslip", lin.to_frame()),
-                          Section("Table against fit", lin.curves_frame())],
+        "Linearisation": [Section("Linearisation of the yawing-moment coefficients",
+                                  note="Fuselage and cut-down fin Cn against sideslip: the "
+                                       "table and its least-squares line over the fit range."),
+                          Section("Least-squares fit of Cn against sideslip", lin.to_frame()),
+                          Section("Table against fit", curves, note=curves_note)],
         "StaticMoments": [Section("Static yawing moments about the suspension axis at the "
-                                  "neutral area", convert_columns(static, moment_spec, units))],
+                                  "neutral area", moments, note=moments_note)],
         "Wake": [Section(f"Wake dynamic-pressure ratio ({result.line.wake_source})", wake)],
     }
     if result.sweep is not None:
         area = {"area [m^2]": ("area", "area")}
         speed = {c: (c[:c.index(" [")], "speed") for c in ("peak gust [m/s]",)}
         sheets["Sweep"] = [
+            Section("Sweep of the parachute area: 1-DOF yaw runs under every gust shape",
+                    note="Verdict per run: stable when the yaw settles and the sideslip stays "
+                         "within the linearisation range and the sideslip limit (else 'beyond "
+                         "limits', with the reason); damping ratio from the logarithmic "
+                         "decrement."),
             Section("Gust shapes", convert_columns(result.sweep.gust_frame(), speed, units)),
-            Section("Stability by area", convert_columns(result.stability_by_area(), area,
-                                                         units)),
+            Section("Stability by area",
+                    convert_columns(result.stability_by_area(), area, units)),
             Section("Every run", convert_columns(result.sweep.to_frame(), area, units))]
+        beta, psi, interval = history_tables(result, units)
+        note = (f"Every {interval:g} s; every stored sample in the -chute-histories.csv file. "
+                "Columns: swept area and gust shape of each run.")
         sheets["Histories"] = [
-            Section(f"Sideslip and yaw every {HISTORY_INTERVAL:g} s (every stored sample: "
-                    f"the -chute-histories.csv file)",
-                    history_table(result, units, HISTORY_INTERVAL))]
+            Section("Time histories of the runs at the smallest, recommended and largest "
+                    "areas", note=note),
+            Section("Sideslip beta of the runs at the smallest, recommended and largest areas",
+                    beta),
+            Section("Yaw psi of the same runs", psi)]
     else:
         sheets["Sweep"] = ("Fuselage and fin are already statically stable in yaw: the neutral "
                            "area is not positive, so no sweep was run.")
@@ -381,31 +474,35 @@ def _sheets(result, units, digest):
 
 
 def _figures(result, units="SI"):
+    """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
     from slingloads.io.chute.plots import (  # matplotlib loads only when plotting
+        plot_histories_by_gust,
         plot_static_moments,
         plot_sweep_metrics,
-        plot_time_histories,
         plot_wake,
         plot_yaw_linearisation,
     )
 
-    figs = {"linearisation": plot_yaw_linearisation(result.static.linearisation),
-            "static-moments": plot_static_moments(result.static, units),
-            "wake": plot_wake(result.line, units)}
+    figs = {"linearisation": (plot_yaw_linearisation, (result.static.linearisation,), {}),
+            "static-moments": (plot_static_moments, (result.static, units), {}),
+            "wake": (plot_wake, (result.line, units), {})}
     if result.sweep is not None:
-        figs["sweep"] = plot_sweep_metrics(result.sweep, units)
-        runs = result.sweep.runs
-        chosen = result.history_runs()
-        kinds = [g.kind for g in runs.gusts]
-        pick = "finite" if "finite" in kinds else kinds[0]
-        figs["histories"] = plot_time_histories(
-            runs, [j for j in chosen if runs.gusts[j].kind == pick],
-            title=f"1-DOF yaw response, {pick} gust (paper figure 7)", units=units)
+        figs["sweep"] = (plot_sweep_metrics, (result.sweep, units), {})
+        figs["histories"] = (plot_histories_by_gust,
+                             (result.sweep.runs, result.history_runs()),
+                             {"title": "1-DOF yaw response to every gust shape (paper figure "
+                                       "7)", "units": units})
     return figs
 
 
-def write(result, out_dir, stem, units, study):
-    """Write ``<stem>-chute.xlsx`` and ``<stem>-chute-*.png`` atomically.
+def start_figures(result, units, study):
+    """Start drawing the sizing report's figures (while the other analyses run)."""
+    return start_drawing(_figures(result, units), _PNG_DPI)
+
+
+def write(result, out_dir, stem, units, study, figures=None):
+    """Write ``<stem>-chute.xlsx``, ``<stem>-chute-histories.csv`` and ``<stem>-chute-*.png``
+    atomically.
 
     Parameters
     ----------
@@ -415,7 +512,9 @@ def write(result, out_dir, stem, units, study):
     units : str
         ``"SI"`` or ``"US"`` (lengths in in, areas in ft^2, speeds in kt, moments in lbf in).
     study : WorkbookStudy
-        For the inputs digest; its input file is never overwritten.
+        For the report's identification; its input file is never overwritten.
+    figures : FigureRenderer, optional
+        Already drawing the figures (:func:`start_figures`); default: drawn now.
 
     Returns
     -------
@@ -427,18 +526,22 @@ def write(result, out_dir, stem, units, study):
              + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)
-    pngs = {tag: figure_png(fig, _PNG_DPI) for tag, fig in _figures(result, units).items()}
-    sheets = _sheets(result, units, digest_frame(study.digest()))
     titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
               "static-moments": "Static yawing moments at the neutral area",
               "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
-              "histories": "Time histories (paper figure 7)"}
-    with atomic_outputs(out_dir, inputs=inputs) as out:
-        write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
-                       {titles[t]: png for t, png in pngs.items()},
-                       number_format=NUMBER_FORMATS)
-        if result.sweep is not None:
-            write_csv(history_table(result, "SI"), out.path(f"{stem}-chute-histories.csv"))
-        for tag, png in pngs.items():
-            out.path(f"{stem}-chute-{tag}.png").write_bytes(png)
+              "histories": "Time histories for every gust shape (paper figure 7)"}
+    with drawings(_figures(result, units), figures, _PNG_DPI) as pngs:
+        sheets = _sheets(result, units, study.warnings)
+        files = ([f"{stem}-chute-histories.csv"] if result.sweep is not None else []) + [
+            f"{stem}-chute-{tag}.png" for tag in pngs]
+        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
+                           conventions=CONVENTIONS, files=files)
+        with atomic_outputs(out_dir, inputs=inputs) as out:
+            write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
+                           {titles[t]: png for t, png in pngs.items()}, info=info)
+            if result.sweep is not None:
+                write_csv(history_csv_frame(result),
+                          out.path(f"{stem}-chute-histories.csv"))
+            for tag, png in pngs.items():
+                out.path(f"{stem}-chute-{tag}.png").write_bytes(png_bytes(png))
     return out.written

@@ -154,10 +154,13 @@ PARAMETERS = (
 SHEETS = (
     TableSheet("ChuteWake", (
         Column("distance", "length", "m",
-               help="Distance behind the parachute attachment, >= 0, strictly increasing.",
+               help="Distance behind the parachute attachment along the wake, >= 0, strictly "
+                    "increasing. Typical: 0 to 40 m.",
                bounds=Bounds(0, 10_000, unit="m")),
         Column("q ratio", "dimensionless",
-               help="Dynamic pressure in the wake over free stream, in (0, 1.2].",
+               help="Dynamic pressure in the fuselage wake at that distance over the free "
+                    "stream's, in (0, 1.2]. Typical: 0.5 just behind the fuselage, 0.95 at "
+                    "10 m.",
                bounds=Bounds(0, 1.2, lo_open=True)),
     ), help="Optional (with 'chute sizing wake source' = table): dynamic-pressure ratio in the "
        "fuselage wake against distance, from CFD or test (paper section 3.2). Never "

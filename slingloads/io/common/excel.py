@@ -1,27 +1,43 @@
-"""Small openpyxl helpers that format pandas DataFrames into a report workbook.
+"""The one workbook writer of the reports: pandas DataFrames to a print-ready Excel workbook.
 
 The writer only formats: it receives DataFrames already in report units with unit-labelled
-headers, and images already drawn. What it guarantees:
+headers, and images already drawn. Every sheet it writes, whatever its content, gets:
 
-* every string is stored as text, never as a formula: a case description such as
-  ``=HYPERLINK("x")`` or ``+cmd|' /C calc'!A0`` is an inline string cell (``data_type "s"``),
-  so a hostile or accidental leading ``=``, ``+``, ``-`` or ``@`` is never evaluated;
-* a bold header row, frozen header (and first column when it holds ids), column widths from
-  the contents, number formats per column;
-* NaN is an empty cell and +/-inf the text ``inf``/``-inf`` (Excel has neither; openpyxl
-  would otherwise write ``nan``, which Excel reports as a corrupt file);
-* a table longer than Excel's row limit is split over several sheets ``NAME_1``, ``NAME_2``...
-  with the header repeated, never truncated;
-* PNG images embedded, and a red fill on ratio cells above a threshold (conditional
-  formatting, so the rule stays visible in Excel).
+* **print setup**: A4, portrait or landscape from the width of its columns, fitted to the
+  page width (never a column cut from its row labels), margins, the header rows repeated on
+  every printed page, a page header with the report title, the sheet's title and the input
+  file, and a footer with the run date, the slingloads version and ``page x of y``;
+* **frozen panes** below the header row (and right of the id column when the first column
+  holds ids);
+* **numbers at an engineering precision**: an Excel number format per unit
+  (:mod:`slingloads.io.common.formats`), read from the column header (``Vy [lbf]``) or, in a
+  table that mixes kinds in one value column, from the row's ``unit`` column; booleans as
+  ``yes``/``no``;
+* **readable columns**: widths from the contents, long text wrapped (no column wider than
+  :data:`MAX_TEXT_WIDTH` characters), header cells bold and wrapped, notes wrapped to the
+  table width;
+* **safety**: every string stored as text, never as a formula (a case description such as
+  ``=HYPERLINK("x")`` is an inline string cell, ``data_type "s"``); NaN an empty cell and
+  +/-inf the text ``inf``/``-inf`` (Excel has neither); a table longer than Excel's row
+  limit split over ``NAME_1``, ``NAME_2``... with the header repeated, never truncated;
+* images scaled to the printable width, two to a page when they fit, never cut by a page
+  break; a red fill on ratio cells above a threshold (conditional formatting).
 
-The workbook is written in openpyxl's write-only (streaming) mode, so memory does not grow
-with the number of rows.
+With a :class:`~slingloads.io.common.cover.ReportInfo`, the workbook opens on a *Cover* sheet
+(title, what the analysis covers, input file with its SHA-256 and modification time, version
+and source revision, run date, project / document / author / checker, list of sheets,
+conventions). A new report sheet therefore needs nothing but its DataFrame (or titled
+:class:`Section` blocks): print setup, formats and panes come from here.
+
+The workbook is written in openpyxl's write-only (streaming) mode.
 
 References
 ----------
 .. [1] Microsoft, "Excel specifications and limits": 1,048,576 rows by 16,384 columns;
-   32,767 characters per cell; sheet names of at most 31 characters without ``: \\ / ? * [ ]``.
+   32,767 characters per cell; sheet names of at most 31 characters without ``: \\ / ? * [ ]``;
+   255 characters in a page header or footer.
+.. [2] ECMA-376 Part 1, 18.3.1.63 ``pageSetup`` (paperSize 9 = A4) and 18.3.1.46
+   ``headerFooter`` codes (``&P`` page, ``&N`` pages, ``&&`` an ampersand).
 """
 
 from __future__ import annotations
@@ -30,6 +46,7 @@ import io
 import math
 import numbers
 import re
+import textwrap
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -40,11 +57,13 @@ from openpyxl.cell import WriteOnlyCell
 from openpyxl.drawing.image import Image
 from openpyxl.formatting.formatting import ConditionalFormattingList
 from openpyxl.formatting.rule import FormulaRule
-from openpyxl.styles import Font, PatternFill
+from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
 from openpyxl.utils import get_column_letter
 from openpyxl.utils.exceptions import IllegalCharacterError
+from openpyxl.worksheet.pagebreak import Break
 
 from slingloads.errors import InputError
+from slingloads.io.common.formats import header_unit, unit_format, value_format
 
 #: Rows in one Excel worksheet (header included) [1]_.
 EXCEL_MAX_ROWS = 1_048_576
@@ -54,14 +73,47 @@ EXCEL_MAX_COLUMNS = 16_384
 EXCEL_MAX_CELL_CHARS = 32_767
 #: Characters in a sheet name [1]_.
 EXCEL_MAX_SHEET_NAME = 31
+#: Widest text column [characters]; longer text wraps.
+MAX_TEXT_WIDTH = 40
+#: Widest numeric column [characters].
+MAX_NUMBER_WIDTH = 16
+#: A4 paper, ECMA-376 ``paperSize`` code [2]_.
+PAPER_A4 = 9
+#: Page margins: left, right, top, bottom, header, footer. [in]
+MARGINS = (0.5, 0.5, 0.75, 0.75, 0.3, 0.3)
+#: Printable width and height of an A4 page inside :data:`MARGINS`, at 96 px per inch. [px]
+PRINTABLE = {"portrait": (round((8.27 - 1.0) * 96), round((11.69 - 1.5) * 96)),
+             "landscape": (round((11.69 - 1.0) * 96), round((8.27 - 1.5) * 96))}
+#: Pixel height of a default row (15 pt at 96 dpi).
+ROW_PIXELS = 20
 
 _BAD_SHEET_CHARS = re.compile(r"[:\\/?*\[\]]")
-_HEADER_FONT = Font(bold=True)
-_TITLE_FONT = Font(bold=True, size=12)
+_FONT = "Calibri"
+_TITLE_FONT = Font(name=_FONT, bold=True, size=12)
+_COVER_TITLE_FONT = Font(name=_FONT, bold=True, size=16)
+_HEADER_FONT = Font(name=_FONT, bold=True)
+_HEADER_FILL = PatternFill("solid", start_color="DDEBF7", end_color="DDEBF7")
+_HEADER_BORDER = Border(bottom=Side(style="thin"))
+_HEADER_ALIGN = Alignment(wrap_text=True, vertical="bottom")
+_HEADER_RIGHT = Alignment(wrap_text=True, vertical="bottom", horizontal="right")
+_HEADER_CENTER = Alignment(wrap_text=True, vertical="bottom", horizontal="center")
+_WRAP = Alignment(wrap_text=True, vertical="top", horizontal="left", indent=1)
+_WRAP_GENERAL = Alignment(wrap_text=True, vertical="top")
+_TOP = Alignment(vertical="top")
+_LEFT = Alignment(vertical="top", horizontal="left", indent=1)
+_RIGHT = Alignment(vertical="top", horizontal="right")
+_CENTER = Alignment(vertical="top", horizontal="center")
+#: Longest text of a column of ids that is centred (case, station, yes/no).
+_ID_WIDTH = 10
 _RED_FILL = PatternFill("solid", start_color="FFC7CE", end_color="FFC7CE")
-_RED_FONT = Font(color="9C0006")
-#: Pixel height of a default Excel row (15 pt at 96 dpi).
-_ROW_PIXELS = 20
+_RED_FONT = Font(name=_FONT, color="9C0006")
+#: Average width of a character of text in Calibri 11 (digits are 7 px). [px]
+_CHAR_PIXELS = 6.3
+
+
+def _px(width):
+    """Pixels of a column ``width`` characters wide (Calibri 11: 7 px per digit + 5)."""
+    return 7 * width + 5
 
 
 @dataclass
@@ -75,7 +127,7 @@ class Section:
     table : pandas.DataFrame, optional
         Written with a bold header row.
     note : str
-        Written as one text cell per line under the title (before the table).
+        Written under the title (before the table), wrapped to the width of the sheet.
     """
 
     title: str = ""
@@ -144,13 +196,14 @@ def split_sheet_names(name, n_rows, max_rows=EXCEL_MAX_ROWS):
 
 
 def _plain(value):
-    """A Python value openpyxl writes faithfully (numpy scalars unwrapped, NaN -> None)."""
+    """A Python value openpyxl writes faithfully (numpy scalars unwrapped, NaN -> None,
+    booleans -> ``yes``/``no``)."""
     if isinstance(value, np.generic):
         value = value.item()
     if value is None or value is pd.NA or value is pd.NaT:
         return None
     if isinstance(value, bool):
-        return value
+        return "yes" if value else "no"
     if isinstance(value, numbers.Real):
         value = float(value) if not isinstance(value, numbers.Integral) else int(value)
         if isinstance(value, float):
@@ -166,16 +219,30 @@ def _plain(value):
     return str(value)
 
 
+def wrapped_lines(text, width, bold=False):
+    """Lines that ``text`` takes in a wrapped cell ``width`` characters wide (a cautious
+    estimate: a row too tall wastes a little paper, a row too short hides text)."""
+    chars = max(4, int((_px(width) - 8) / (_CHAR_PIXELS * (1.2 if bold else 1.0))))
+    return sum(max(1, len(textwrap.wrap(part, chars))) for part in str(text).split("\n"))
+
+
 class _SheetWriter:
-    """Streams rows into one write-only sheet, keeping track of the row number."""
+    """Streams rows into one write-only sheet, keeping track of the row number and of the
+    height of the rows written.
 
-    def __init__(self, ws):
+    Cell styles are built once per (font, format, alignment, fill, border) and shared, which
+    keeps writing a large table cheap. A row with wrapped text gets the height of its
+    tallest wrapped cell (LibreOffice does not compute it for a streamed sheet).
+    """
+
+    def __init__(self, ws, widths=None):
         self.ws = ws
+        self.widths = widths or {}
         self.row = 0
-        self._cells = {}
+        self.pixels = 0
+        self._styles = {}
 
-    def _cell(self, value, *, font=None, number_format=None, column=0):
-        value = _plain(value)
+    def _cell(self, value, style=None, column=0):
         cell = WriteOnlyCell(self.ws)
         try:
             cell.value = value
@@ -189,53 +256,271 @@ class _SheetWriter:
                                  "per cell", value[:40] + "...", sheet=self.ws.title,
                                  cell=f"{get_column_letter(column + 1)}{self.row + 1}")
             cell.data_type = "s"  # text, never a formula
-        if font is not None:
-            cell.font = font
-        if number_format and not isinstance(value, str) and value is not None:
-            cell.number_format = number_format
+        if style is not None:
+            if isinstance(value, str) or value is None:
+                style = (style[0], None, *style[2:])  # no number format on text
+            if any(s is not None for s in style):
+                self._style(cell, style)
         return cell
 
-    def append(self, values, *, font=None, formats=None):
-        formats = formats or [None] * len(values)
-        self.ws.append([self._cell(v, font=font, number_format=f, column=j)
-                        for j, (v, f) in enumerate(zip(values, formats, strict=True))])
+    def _style(self, cell, style):
+        cached = self._styles.get(style)
+        if cached is not None:
+            cell._style = cached
+            return
+        font, number_format, alignment, fill, border = style
+        if font is not None:
+            cell.font = font
+        if number_format is not None:
+            cell.number_format = number_format
+        if alignment is not None:
+            cell.alignment = alignment
+        if fill is not None:
+            cell.fill = fill
+        if border is not None:
+            cell.border = border
+        self._styles[style] = cell._style
+
+    def lines(self, values, styles):
+        """Lines the row takes: the most of its wrapped text cells."""
+        most = 1
+        for j, (value, style) in enumerate(zip(values, styles, strict=True)):
+            if style is not None and style[2] is not None and style[2].wrap_text and isinstance(
+                    value, str) and len(value) > 4:
+                bold = style[0] is not None and bool(style[0].b)
+                most = max(most, wrapped_lines(value, self.widths.get(j, 10), bold))
+        return most
+
+    def append(self, values, styles=None):
+        """Append one row; ``styles`` is one (font, format, alignment, fill, border) tuple
+        for every cell, or a list of them, or None."""
+        values = [_plain(v) for v in values]
+        if styles is None or isinstance(styles, tuple):
+            styles = [styles] * len(values)
+        lines = self.lines(values, styles)
+        if lines > 1:
+            self.ws.row_dimensions[self.row + 1].height = 15 * lines
+        self.ws.append([self._cell(v, s, j) for j, (v, s) in enumerate(zip(values, styles,
+                                                                            strict=True))])
         self.row += 1
+        self.pixels += ROW_PIXELS * lines
 
     def blank(self, n=1):
         for _ in range(n):
             self.ws.append([])
             self.row += 1
+            self.pixels += ROW_PIXELS
+
+
+def _style(font=None, number_format=None, alignment=None, fill=None, border=None):
+    return (font, number_format, alignment, fill, border)
+
+
+_TITLE_STYLE = _style(_TITLE_FONT)
+_HEADER_STYLE = _style(_HEADER_FONT, None, _HEADER_ALIGN, _HEADER_FILL, _HEADER_BORDER)
+
+
+# ----------------------------------------------------------------------------- column plan
+@dataclass
+class _Columns:
+    """Widths [characters] and wrapped columns of one sheet."""
+
+    widths: dict
+    wrapped: set
+
+    @property
+    def pixels(self):
+        return sum(_px(w) for w in self.widths.values())
 
 
 def _number_formats(columns, number_format):
+    """The format of each column: the report's override, else from the header's unit."""
+    out = []
+    for c in columns:
+        fmt = None
+        if isinstance(number_format, Mapping):
+            fmt = number_format.get(c)
+        elif callable(number_format):
+            fmt = number_format(str(c))
+        out.append(fmt if fmt is not None else unit_format(header_unit(c)))
+    return out
+
+
+def _is_text(series):
+    """A column of strings (pandas ``str`` or ``object`` dtype)."""
+    return series.dtype == object or pd.api.types.is_string_dtype(series.dtype)
+
+
+def _row_unit_columns(frame, formats):
+    """Columns whose format comes from the row's ``unit`` column: numeric columns with no
+    unit in their header, in a table that has a ``unit`` column."""
+    if "unit" not in frame.columns:
+        return []
+    out = []
+    for j, column in enumerate(frame.columns):
+        if column == "unit" or formats[j] is not None or header_unit(column) is not None:
+            continue
+        series = frame.iloc[:, j]
+        if pd.api.types.is_bool_dtype(series.dtype):
+            continue
+        if pd.api.types.is_numeric_dtype(series.dtype) or (
+                series.dtype == object
+                and series.map(lambda v: isinstance(v, (float, np.floating))).any()):
+            out.append(j)
+    return out
+
+
+def _text_width(series):
+    texts = series.map(lambda v: "" if _plain(v) is None else str(_plain(v)))
+    lengths = texts.str.split("\n").map(lambda parts: max((len(p) for p in parts), default=0))
+    return int(lengths.max()) if len(lengths) else 0
+
+
+def _number_width(series, number_format):
+    values = pd.to_numeric(series, errors="coerce").to_numpy(float)
+    values = values[np.isfinite(values)]
+    if not values.size:
+        return 3
+    big = float(np.max(np.abs(values)))
     if number_format is None:
-        return [None] * len(columns)
-    if isinstance(number_format, Mapping):
-        return [number_format.get(c) for c in columns]
-    return [number_format(str(c)) for c in columns]
+        return min(len(f"{-big:.6g}"), MAX_NUMBER_WIDTH)
+    if "E" in number_format:
+        return 9
+    decimals = len(number_format.split(".")[1]) if "." in number_format else 0
+    sep = "," if "#,##" in number_format else ""
+    return len(f"{-big:{sep}.{decimals}f}")
 
 
-def _column_widths(frames, notes=(), sample=200, lo=8, hi=60):
-    """Column widths [characters] from headers and a sample of values."""
-    widths = {}
-    for frame in frames:
+def _column_plan(tables, notes=(), formats_of=None):
+    """Widths of the columns of every table of a sheet, and which columns wrap."""
+    widths, wrapped = {}, set()
+    for frame in tables:
+        formats = formats_of(frame) if formats_of else [None] * frame.shape[1]
         for j, col in enumerate(frame.columns):
-            texts = [str(col)]
-            values = frame.iloc[:sample, j]
-            for v in values:
-                v = _plain(v)
-                texts.append(f"{v:.6g}" if isinstance(v, float) else str(v))
-            widths[j] = max(widths.get(j, 0), max(len(t) for t in texts))
-    for line in notes:
-        widths[0] = max(widths.get(0, 0), min(len(line), 20))
-    return {j: min(max(w + 2, lo), hi) for j, w in widths.items()}
+            series = frame.iloc[:, j]
+            if pd.api.types.is_bool_dtype(series.dtype):
+                data = 3
+            elif pd.api.types.is_numeric_dtype(series.dtype):
+                data = _number_width(series, formats[j])
+            else:
+                data = _text_width(series)
+            words = max((len(w) for w in str(col).split()), default=0)
+            text = not (pd.api.types.is_numeric_dtype(series.dtype)
+                        or pd.api.types.is_bool_dtype(series.dtype))
+            width = max(data + text, int(1.1 * words) + 1, min(len(str(col)), 10), 4) + 2
+            if width > MAX_TEXT_WIDTH:
+                wrapped.add(j)
+                width = MAX_TEXT_WIDTH
+            widths[j] = max(widths.get(j, 0), min(width, MAX_TEXT_WIDTH))
+    if not widths and notes:
+        widths[0] = MAX_TEXT_WIDTH * 2
+    return _Columns(widths, wrapped)
 
 
-def _set_widths(ws, widths):
-    for j, width in widths.items():
+def _set_widths(ws, columns):
+    for j, width in columns.widths.items():
         ws.column_dimensions[get_column_letter(j + 1)].width = width
 
 
+def _note_lines(text, columns):
+    """A note split into lines that fit the sheet's width (about 1 character per 7 px)."""
+    chars = max(60, min(int(columns.pixels / 7.5), 160))
+    lines = []
+    for paragraph in str(text).splitlines():
+        lines.extend(textwrap.wrap(paragraph, chars) or [""])
+    return lines
+
+
+# ----------------------------------------------------------------------------- print setup
+def _escape(text, limit=80):
+    """Header/footer text: at most ``limit`` characters, made safe
+    (:func:`header_footer_text`)."""
+    text = str(text)
+    if len(text) > limit:
+        text = text[:limit - 3] + "..."
+    return header_footer_text(text)
+
+
+def orientation_for(pixels, height=0.0):
+    """The orientation of a sheet ``pixels`` wide and ``height`` high [px].
+
+    Portrait when the sheet fits the portrait width (8 % shrink allowed); portrait also for a
+    long sheet (more than a landscape page) that a fit-to-width shrink of at most 32 % puts on
+    a portrait page, since that prints it on fewer pages; else landscape.
+    """
+    width, _ = PRINTABLE["portrait"]
+    land_width, land_height = PRINTABLE["landscape"]
+    if pixels <= 1.08 * width:
+        return "portrait"
+    if pixels <= width / 0.68 and height * min(1.0, land_width / pixels) > 1.2 * land_height:
+        return "portrait"
+    return "landscape"
+
+
+def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info=None):
+    """Page setup of one sheet: A4, orientation from its width, fitted to the page width,
+    header rows repeated, page header and footer.
+
+    Parameters
+    ----------
+    ws : openpyxl worksheet
+        Set before its first row is written (write-only sheets).
+    pixels : float
+        Width of the sheet's used columns. [px]
+    height : float
+        Estimated height of its rows (long sheets print portrait when they can). [px]
+    title_rows : int, optional
+        Rows 1..title_rows are printed at the top of every page.
+    sheet_title : str
+        Centre of the page header.
+    info : ReportInfo, optional
+        Report title and input file (page header), run date, version and document number
+        (footer).
+
+    Returns
+    -------
+    str
+        The orientation chosen.
+    """
+    orientation = orientation_for(pixels, height)
+    ws.page_setup.paperSize = PAPER_A4
+    ws.page_setup.orientation = orientation
+    ws.page_setup.fitToWidth = 1
+    ws.page_setup.fitToHeight = 0
+    ws.sheet_properties.pageSetUpPr.fitToPage = True
+    left, right, top, bottom, header, footer = MARGINS
+    ws.page_margins.left, ws.page_margins.right = left, right
+    ws.page_margins.top, ws.page_margins.bottom = top, bottom
+    ws.page_margins.header, ws.page_margins.footer = header, footer
+    ws.print_options.horizontalCentered = False
+    if title_rows:
+        ws.print_title_rows = f"1:{int(title_rows)}"
+    title = info.title if info is not None else "slingloads report"
+    narrow = orientation == "portrait"
+    ws.oddHeader.left.text = _escape(title, 45 if narrow else 60)
+    ws.oddHeader.center.text = _escape(sheet_title or ws.title, 45 if narrow else 70)
+    right = " | ".join(t for t in ((info.document, info.input_name) if info is not None
+                                   else ()) if t)
+    ws.oddHeader.right.text = _escape(right, 45)
+    for part in (ws.oddHeader.left, ws.oddHeader.center, ws.oddHeader.right):
+        part.size = 8
+    ws.oddFooter.left.text = _escape(f"run {info.run_date}" if info is not None else "", 40)
+    ws.oddFooter.center.text = "page &P of &N"
+    ws.oddFooter.right.text = _escape(info.software if info is not None else "slingloads", 45)
+    for part in (ws.oddFooter.left, ws.oddFooter.center, ws.oddFooter.right):
+        part.size = 8
+    return orientation
+
+
+def _freeze(frame, header_row):
+    """Freeze panes below ``header_row``, right of the first column when it holds text ids."""
+    first = frame.iloc[:, 0] if frame.shape[1] > 1 else None
+    ids = (first is not None and len(first) > 0 and _is_text(first)
+           and first.map(lambda v: isinstance(v, str)).all())
+    return f"{'B' if ids else 'A'}{header_row + 1}"
+
+
+# ----------------------------------------------------------------------------- tables
 def _highlight(ws, frame, first_row, last_row, highlight):
     """Add a red-fill conditional format on the highlighted columns of rows first..last."""
     if highlight is None or last_row < first_row:
@@ -244,8 +529,7 @@ def _highlight(ws, frame, first_row, last_row, highlight):
         ws.conditional_formatting = ConditionalFormattingList()
     for name in highlight.columns:
         if name not in frame.columns:
-            raise InputError(f"column to highlight is not in the table; columns are "
-                             f"{list(frame.columns)}", name, sheet=ws.title)
+            continue
         letter = get_column_letter(list(frame.columns).index(name) + 1)
         top = f"{letter}{first_row}"
         rule = FormulaRule(
@@ -254,29 +538,92 @@ def _highlight(ws, frame, first_row, last_row, highlight):
         ws.conditional_formatting.add(f"{letter}{first_row}:{letter}{last_row}", rule)
 
 
-def _write_table(writer, frame, formats, highlight):
+def _check_highlight(frames, highlight, sheet):
+    if highlight is None:
+        return
+    columns = {c for f in frames for c in f.columns}
+    for name in highlight.columns:
+        if name not in columns:
+            raise InputError(f"column to highlight is not in the table; columns are "
+                             f"{sorted(map(str, columns))}", name, sheet=sheet)
+
+
+def _alignments(frame, columns):
+    """Cell and header alignment of each column: numbers right, short ids centred, long
+    text wrapped, everything at the top of its row."""
+    cells, heads = [], []
+    for j in range(frame.shape[1]):
+        series = frame.iloc[:, j]
+        texts = _is_text(series) and series.map(lambda v: isinstance(v, str) or v is None).all()
+        if j in columns.wrapped:
+            cells.append(_WRAP if texts else _WRAP_GENERAL)  # numbers stay right-aligned
+            heads.append(_HEADER_ALIGN)
+        elif pd.api.types.is_bool_dtype(series.dtype) or (
+                _is_text(series) and len(series)
+                and series.map(lambda v: isinstance(v, str) or v is None).all()
+                and series.map(lambda v: len(v) if isinstance(v, str) else 0).max()
+                <= _ID_WIDTH):
+            cells.append(_CENTER)
+            heads.append(_HEADER_CENTER)
+        elif pd.api.types.is_numeric_dtype(series.dtype):
+            cells.append(_RIGHT)  # numbers, and the text inf of an infinite one
+            heads.append(_HEADER_RIGHT)
+        elif texts:
+            cells.append(_LEFT)  # text: a little room from the number on its left
+            heads.append(_HEADER_ALIGN)
+        else:
+            cells.append(_TOP)  # mixed numbers and text: Excel's own alignment
+            heads.append(_HEADER_ALIGN)
+    return cells, heads
+
+
+def _write_table(writer, frame, formats, columns, highlight):
     """Header and rows of ``frame`` at the writer's current row."""
-    columns = [str(c) for c in frame.columns]
-    if len(columns) > EXCEL_MAX_COLUMNS:
+    names = [str(c) for c in frame.columns]
+    if len(names) > EXCEL_MAX_COLUMNS:
         raise InputError(f"a table has more than Excel's {EXCEL_MAX_COLUMNS} columns",
-                         len(columns), sheet=writer.ws.title)
-    writer.append(columns, font=_HEADER_FONT)
+                         len(names), sheet=writer.ws.title)
+    cells, heads = _alignments(frame, columns)
+    writer.append(names, [_style(_HEADER_FONT, None, h, _HEADER_FILL, _HEADER_BORDER)
+                          for h in heads])
     first = writer.row + 1
+    per_row = _row_unit_columns(frame, formats)
+    unit_at = names.index("unit") if per_row else None
+    base = [_style(None, f, a) for f, a in zip(formats, cells, strict=True)]
+    ratio = [header_unit(c) == "-" for c in names]
     for row in frame.itertuples(index=False, name=None):
-        writer.append(row, formats=formats)
+        styles = list(base)
+        small = ratio
+        if per_row:
+            unit = row[unit_at]
+            fmt = unit_format(unit)
+            small = list(ratio)
+            for j in per_row:
+                styles[j] = _style(None, fmt, cells[j])
+                small[j] = unit == "-"
+        for j, value in enumerate(row):
+            fmt = styles[j][1]
+            if fmt is not None:
+                shown = _plain(value)
+                if isinstance(shown, (int, float)):
+                    adapted = value_format(shown, fmt, small[j])
+                    if adapted != fmt:
+                        styles[j] = (styles[j][0], adapted, *styles[j][2:])
+        writer.append(row, styles)
     _highlight(writer.ws, frame, first, writer.row, highlight)
 
 
-def _freeze_cell(frame):
-    """Freeze the header row, and the first column too when it holds text ids."""
-    if frame.shape[1] > 1 and frame.iloc[:, 0].map(lambda v: isinstance(v, str)).all():
-        return "B2"
-    return "A2"
+def frame_title(frame, default=""):
+    """The title a DataFrame sheet carries (``frame.attrs["title"]``), or ``default``."""
+    return str(frame.attrs.get("title", default)) if hasattr(frame, "attrs") else default
 
 
 def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
-                       max_rows=EXCEL_MAX_ROWS):
+                       max_rows=EXCEL_MAX_ROWS, info=None):
     """Write a DataFrame to one sheet, or to ``NAME_1``, ``NAME_2``... when too long.
+
+    The header is row 1; it is frozen and repeated on every printed page. The page header
+    shows ``frame.attrs["title"]`` when the frame has one.
 
     Parameters
     ----------
@@ -287,32 +634,66 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     frame : pandas.DataFrame
         Table in report units, headers carrying units (``"Vy [lbf]"``).
     number_format : mapping or callable, optional
-        Excel number format per column header (``{"x [m]": "0.000"}``), or a function of the
-        header returning a format or None (General).
+        Excel number format per column header overriding the format of its unit
+        (``{"residual [N]": "0.00E+00"}``), or a function of the header returning a format or
+        None.
     highlight : Highlight, optional
         Columns whose cells above a threshold are filled red.
     max_rows : int
         Rows per sheet including the header; Excel's limit by default (a test uses less).
+    info : ReportInfo, optional
+        Page header and footer.
 
     Returns
     -------
     list of str
         The sheet names written, in order.
     """
+    _check_highlight([frame], highlight, name)
     formats = _number_formats(frame.columns, number_format)
-    widths = _column_widths([frame])
+    columns = _column_plan([frame], formats_of=lambda f: formats)
+    title = frame_title(frame, name)
     names = []
     for sheet_name, start, stop in split_sheet_names(name, len(frame), max_rows):
         ws = wb.create_sheet(sheet_name)
-        ws.freeze_panes = _freeze_cell(frame)
-        _set_widths(ws, widths)
-        _write_table(_SheetWriter(ws), frame.iloc[start:stop], formats, highlight)
+        ws.freeze_panes = _freeze(frame, 1)
+        _set_widths(ws, columns)
+        print_setup(ws, pixels=columns.pixels, height=ROW_PIXELS * (stop - start + 1),
+                    title_rows=1, sheet_title=title, info=info)
+        _write_table(_SheetWriter(ws, columns.widths), frame.iloc[start:stop], formats,
+                     columns, highlight)
         names.append(sheet_name)
     return names
 
 
-def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None):
-    """Write titled blocks (notes and small tables) one under another on one sheet.
+def _table_pixels(frame, columns):
+    """Estimated printed height of a table with its header row. [px]"""
+    header = max(wrapped_lines(c, columns.widths.get(j, 10), bold=True)
+                 for j, c in enumerate(map(str, frame.columns))) if frame.shape[1] else 1
+    lines = len(frame)
+    for j in columns.wrapped:
+        if j < frame.shape[1]:
+            extra = frame.iloc[:, j].map(
+                lambda v, w=columns.widths[j]: wrapped_lines(v, w) - 1 if isinstance(v, str)
+                else 0)
+            lines += int(extra.sum())
+    return ROW_PIXELS * (header + lines)
+
+
+def _page_pixels(orientation, pixels):
+    """Printable height of a page in sheet pixels, after the fit-to-width shrink. [px]"""
+    width, height = PRINTABLE[orientation]
+    return height / min(1.0, width / max(pixels, 1.0))
+
+
+def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None,
+                         info=None):
+    """Write titled blocks (notes and tables) one under another on one sheet.
+
+    A sheet whose only table is its last block is a table sheet: the rows down to the
+    table's header are frozen and repeated on every printed page. Otherwise the first row
+    (the sheet's title) is frozen and repeated, and a block that would straddle a page
+    break but fits on one page starts on a new page.
 
     Parameters
     ----------
@@ -323,6 +704,8 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     sections : sequence of Section
     number_format, highlight
         As in :func:`write_table_sheets`, applied to every table of the sheet.
+    info : ReportInfo, optional
+        Page header and footer.
 
     Returns
     -------
@@ -331,29 +714,63 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     """
     ws = wb.create_sheet(check_sheet_name(name))
     tables = [s.table for s in sections if s.table is not None]
-    notes = [line for s in sections for line in s.note.splitlines()]
-    _set_widths(ws, _column_widths(tables, notes))
-    writer = _SheetWriter(ws)
-    for k, section in enumerate(sections):
+    _check_highlight(tables, highlight, name)
+    columns = _column_plan(tables, [s.note for s in sections],
+                           formats_of=lambda f: _number_formats(f.columns, number_format))
+    _set_widths(ws, columns)
+    blocks = [(s.title, _note_lines(s.note, columns) if s.note else [], s.table)
+              for s in sections]
+    one_table = len(tables) == 1 and sections[-1].table is not None
+    if one_table:
+        header_row = sum(bool(t) + len(n) + (k > 0) for k, (t, n, _) in enumerate(blocks)) + 1
+        ws.freeze_panes = _freeze(tables[0], header_row)
+        title_rows = header_row
+    else:  # the first row is the sheet's title when the first block has no table
+        heading = bool(blocks) and bool(blocks[0][0]) and blocks[0][2] is None
+        ws.freeze_panes = "A2" if heading else None
+        title_rows = 1 if heading else None
+    sheet_title = next((s.title for s in sections if s.title), name)
+    needs = [ROW_PIXELS * (bool(title) + len(lines) + (k > 0))
+             + (_table_pixels(table, columns) if table is not None else 0)
+             for k, (title, lines, table) in enumerate(blocks)]
+    orientation = print_setup(ws, pixels=columns.pixels, height=sum(needs),
+                              title_rows=title_rows, sheet_title=sheet_title, info=info)
+    page = _page_pixels(orientation, columns.pixels) * 0.95
+    repeated = ROW_PIXELS * (title_rows or 0)
+    writer = _SheetWriter(ws, columns.widths)
+    top = 0  # pixels written when the current page began
+
+    def capacity(start):
+        return page - (repeated if start else 0)
+
+    for k, ((title, lines, table), need) in enumerate(zip(blocks, needs, strict=True)):
+        while writer.pixels - top > capacity(top):
+            top += capacity(top)
+        fits = writer.pixels - top + need <= capacity(top)
+        if not one_table and k and not fits and need <= capacity(1):
+            ws.row_breaks.append(Break(id=writer.row))
+            top = writer.pixels
         if k:
             writer.blank()
-        if section.title:
-            writer.append([section.title], font=_TITLE_FONT)
-        for line in section.note.splitlines():
+        if title:
+            writer.append([title], _TITLE_STYLE)
+        for line in lines:
             writer.append([line])
-        if section.table is not None:
-            formats = _number_formats(section.table.columns, number_format)
-            _write_table(writer, section.table, formats, highlight)
+        if table is not None:
+            formats = _number_formats(table.columns, number_format)
+            _write_table(writer, table, formats, columns, highlight)
     return [name]
 
 
-def figure_png(figure, dpi=120):
+# ----------------------------------------------------------------------------- images
+def figure_png(figure, dpi=100):
     """PNG bytes of a matplotlib Figure (no timestamp or version metadata, so reproducible).
 
     Parameters
     ----------
     figure : matplotlib.figure.Figure or bytes
-        A figure, or PNG bytes returned unchanged.
+        A figure, PNG bytes returned unchanged, or a pending drawing of
+        :class:`~slingloads.io.common.figures.FigureRenderer` (its ``result()``).
     dpi : float
         Resolution. [dots per inch]
 
@@ -363,9 +780,12 @@ def figure_png(figure, dpi=120):
     """
     if isinstance(figure, (bytes, bytearray)):
         return bytes(figure)
+    if hasattr(figure, "result"):  # drawn elsewhere (FigureRenderer): its PNG bytes
+        return bytes(figure.result())
     _plain_text(figure)
     buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None})
+    figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None},
+                   pil_kwargs={"compress_level": 1})  # fast; files about 30 % larger
     return buffer.getvalue()
 
 
@@ -390,8 +810,21 @@ def _plain_text(figure):
         text.set_parse_math(False)
 
 
-def write_images_sheet(wb, name, images, *, display_width=900):
-    """Embed PNG images one under another, each under its title.
+def _image_box(width, height, page_rows, page_width):
+    """Displayed size of an image [px] and the rows it takes: the printable width, at most
+    half a page high (two plots to a page), or a whole page for a tall figure."""
+    half = (page_rows // 2 - 3) * ROW_PIXELS
+    full = (page_rows - 3) * ROW_PIXELS
+    scale = page_width / width
+    limit = half if height * scale <= 1.3 * half else full
+    scale = min(scale, limit / height)
+    w, h = int(width * scale), int(height * scale)
+    return w, h, math.ceil(h / ROW_PIXELS) + 2
+
+
+def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", title=""):
+    """Embed PNG images one under another, each under its title, scaled to the printable
+    width, with a page break wherever the next one would not fit on the page.
 
     Parameters
     ----------
@@ -401,9 +834,12 @@ def write_images_sheet(wb, name, images, *, display_width=900):
         Sheet name.
     images : mapping of str to (matplotlib.figure.Figure or bytes)
         Title -> figure or PNG bytes.
-    display_width : int
-        Width at which each image is shown in Excel (the file keeps its full resolution).
-        [pixels]
+    info : ReportInfo, optional
+        Page header and footer.
+    orientation : str
+        ``"portrait"`` or ``"landscape"``.
+    title : str
+        Printed in the page header (default: ``Plots (n)``).
 
     Returns
     -------
@@ -411,25 +847,66 @@ def write_images_sheet(wb, name, images, *, display_width=900):
         ``[name]``.
     """
     ws = wb.create_sheet(check_sheet_name(name))
-    ws.column_dimensions["A"].width = 60
+    page_width, page_height = PRINTABLE[orientation]
+    page_rows = page_height // ROW_PIXELS
+    width = (page_width - 10 - 5) // 7
+    ws.column_dimensions["A"].width = width
+    pixels = _px(width)
+    print_setup(ws, pixels=pixels if orientation == "portrait" else 2 * pixels,
+                sheet_title=title or f"Plots ({len(images)})", info=info)
+    ws.page_setup.orientation = orientation
     writer = _SheetWriter(ws)
+    used = 0
     for title, figure in images.items():
-        writer.append([title], font=_TITLE_FONT)
         image = Image(io.BytesIO(figure_png(figure)))
-        scale = min(1.0, display_width / image.width)
-        image.width, image.height = int(image.width * scale), int(image.height * scale)
+        w, h, rows = _image_box(image.width, image.height, page_rows, pixels - 10)
+        # a title wider than the page is cut when printed: wrapped (12 pt bold ~ 1.45 x)
+        lines = textwrap.wrap(str(title), max(20, int((pixels - 10) / (_CHAR_PIXELS * 1.45))))
+        lines = lines or [""]
+        rows += len(lines) - 1
+        if used and used + rows > page_rows:
+            ws.row_breaks.append(Break(id=writer.row))
+            used = 0
+        for line in lines[:-1]:
+            writer.append([line], _TITLE_STYLE)
+        writer.append([lines[-1]], _TITLE_STYLE)
+        image.width, image.height = w, h
         ws.add_image(image, f"A{writer.row + 1}")
-        writer.blank(math.ceil(image.height / _ROW_PIXELS) + 2)
+        writer.blank(rows - 1)
+        used += rows
     return [name]
 
 
+# ----------------------------------------------------------------------------- workbook
 SheetContent = pd.DataFrame | Sequence[Section] | str
+
+
+def _sheet_plan(sheets, images, images_sheet, max_rows):
+    """(sheet name, title) of every sheet to write, in order, before anything is written."""
+    plan = []
+    for name, content in sheets.items():
+        check_sheet_name(name)
+        if isinstance(content, pd.DataFrame):
+            title = frame_title(content, name)
+            plan += [(n, title) for n, _, _ in split_sheet_names(name, len(content), max_rows)]
+        elif isinstance(content, str):
+            plan.append((name, content.splitlines()[0] if content else name))
+        else:
+            plan.append((name, next((s.title for s in content if s.title), name)))
+    if images:
+        plan.append((images_sheet, "; ".join(images)))
+    seen = set()
+    for n, _ in plan:
+        if n.lower() in seen:
+            raise InputError("sheet names must be unique (Excel ignores case)", n)
+        seen.add(n.lower())
+    return plan
 
 
 def write_workbook(path, sheets, images=None, *, number_format=None,
                    highlight: Mapping[str, Highlight] | None = None,
                    max_rows=EXCEL_MAX_ROWS, images_sheet="Plots",
-                   creator="slingloads") -> list[str]:
+                   creator="slingloads", info=None, images_title="") -> list[str]:
     """Write a report workbook from DataFrames, titled sections, notes and images.
 
     This is the one workbook writer of the reports (loads, lateral pendulum, parachute
@@ -442,12 +919,14 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
         :func:`slingloads.io.common.atomic.atomic_outputs`).
     sheets : mapping of str to (DataFrame, sequence of Section, or str)
         Sheet name -> content, in workbook order. A DataFrame is one table (split over
-        ``NAME_1``, ``NAME_2``... when longer than ``max_rows``); a sequence of
-        :class:`Section` is written block after block; a str is a note.
+        ``NAME_1``, ``NAME_2``... when longer than ``max_rows``; ``frame.attrs["title"]`` is
+        its printed title); a sequence of :class:`Section` is written block after block; a
+        str is a note.
     images : mapping of str to (Figure or bytes), optional
         Title -> figure or PNG bytes, embedded on the sheet ``images_sheet``.
     number_format : mapping or callable, optional
-        Excel number format per column header (see :func:`write_table_sheets`).
+        Excel number format per column header, overriding the format of its unit (see
+        :func:`write_table_sheets`).
     highlight : mapping of str to Highlight, optional
         Sheet name -> columns to fill red above a threshold.
     max_rows : int
@@ -456,6 +935,12 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
         Name of the sheet holding the images.
     creator : str
         Workbook author property.
+    info : ReportInfo, optional
+        The report's identity: with it the workbook opens on a *Cover* sheet
+        (:mod:`slingloads.io.common.cover`) and every page header and footer names the
+        report, the input file, the run date and the version.
+    images_title : str
+        Page-header title of the images sheet (default ``Plots (n)``).
 
     Returns
     -------
@@ -469,33 +954,57 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
         more than 32,767 characters), or more than 16,384 columns.
     """
     highlight = highlight or {}
+    plan = _sheet_plan(sheets, images, images_sheet, max_rows)
+    if not plan:
+        raise InputError("a workbook needs at least one sheet")
     wb = Workbook(write_only=True)
     wb.properties.creator = creator
     written = []
+    if info is not None:
+        from slingloads.io.common.cover import COVER_SHEET, cover_sections
 
-    def add(names):
-        for n in names:
-            if n.lower() in (w.lower() for w in written):
-                raise InputError("sheet names must be unique (Excel ignores case)", n)
-        written.extend(names)
-
+        if any(n.lower() == COVER_SHEET.lower() for n, _ in plan):
+            raise InputError("sheet names must be unique (Excel ignores case)", COVER_SHEET)
+        wb.properties.title = info.title
+        written += write_cover_sheet(wb, COVER_SHEET, cover_sections(info, plan), info)
     for name, content in sheets.items():
-        check_sheet_name(name)
         mark = highlight.get(name)
         if isinstance(content, pd.DataFrame):
-            add(write_table_sheets(wb, name, content, number_format=number_format,
-                                   highlight=mark, max_rows=max_rows))
+            written += write_table_sheets(wb, name, content, number_format=number_format,
+                                          highlight=mark, max_rows=max_rows, info=info)
         elif isinstance(content, str):
-            add(write_sections_sheet(wb, name, [Section(note=content)]))
+            written += write_sections_sheet(wb, name, [Section(note=content)], info=info)
         else:
-            add(write_sections_sheet(wb, name, list(content), number_format=number_format,
-                                     highlight=mark))
+            written += write_sections_sheet(wb, name, list(content),
+                                            number_format=number_format, highlight=mark,
+                                            info=info)
     if images:
-        add(write_images_sheet(wb, images_sheet, images))
-    if not written:
-        raise InputError("a workbook needs at least one sheet")
+        written += write_images_sheet(wb, images_sheet, images, info=info, title=images_title)
     wb.save(path)
     return written
+
+
+def write_cover_sheet(wb, name, sections, info):
+    """The cover: a large title, then the cover's sections (two-column tables and notes),
+    on one portrait page."""
+    ws = wb.create_sheet(check_sheet_name(name))
+    columns = _Columns({0: 24, 1: 72}, {1})
+    _set_widths(ws, columns)
+    print_setup(ws, pixels=columns.pixels, sheet_title="Cover", info=info)
+    writer = _SheetWriter(ws, columns.widths)
+    writer.append([info.title], _style(_COVER_TITLE_FONT))
+    wrap = _style(None, None, _WRAP)
+    for title, note, table in sections:
+        writer.blank()
+        if title:
+            writer.append([title], _TITLE_STYLE)
+        for line in _note_lines(note, columns) if note else []:
+            writer.append([line])
+        if table is not None:
+            writer.append(list(table.columns), _HEADER_STYLE)
+            for row in table.itertuples(index=False, name=None):
+                writer.append(list(row), [None] + [wrap] * (len(row) - 1))
+    return [name]
 
 
 def format_by_header(rules: Sequence[tuple[str, str]],
@@ -507,7 +1016,7 @@ def format_by_header(rules: Sequence[tuple[str, str]],
     rules : sequence of (str, str)
         ``(pattern, excel number format)`` pairs, tried in order with :func:`re.search`.
     default : str, optional
-        Format when no pattern matches (None: Excel's General).
+        Format when no pattern matches (None: the format of the header's unit).
 
     Returns
     -------
@@ -516,9 +1025,9 @@ def format_by_header(rules: Sequence[tuple[str, str]],
 
     Examples
     --------
-    >>> fmt = format_by_header([(r"\\[(N|lbf)\\]$", "#,##0.0")])
-    >>> fmt("Vy [lbf]"), fmt("case")
-    ('#,##0.0', None)
+    >>> fmt = format_by_header([(r"residual", "0.00E+00")])
+    >>> fmt("closure force residual [N]"), fmt("case")
+    ('0.00E+00', None)
     """
     compiled = [(re.compile(p), f) for p, f in rules]
 

@@ -7,8 +7,10 @@ every header and axis with the unit (``x [in]``, ``Vy [lbf]``, ``Mz [lbf in]``).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 
+import numpy as np
 import pandas as pd
 
 from slingloads.errors import InputError
@@ -106,3 +108,100 @@ def digest_frame(inputs_digest):
                              "entry": list(inputs_digest.values())})
     raise InputError("inputs_digest must be a dict or a DataFrame",
                      type(inputs_digest).__name__)
+
+
+def warning_sections(warnings):
+    """The Summary block of the warnings on the inputs (implausible but possible values, each
+    naming its cells), or nothing when there are none.
+
+    Parameters
+    ----------
+    warnings : sequence of str
+        :attr:`WorkbookStudy.warnings <slingloads.io.study.WorkbookStudy.warnings>`.
+
+    Returns
+    -------
+    list of slingloads.io.common.excel.Section
+    """
+    from slingloads.io.common.excel import Section
+
+    warnings = list(warnings or ())
+    if not warnings:
+        return []
+    table = pd.DataFrame({"warning": [f"WARNING {k}" for k in range(1, len(warnings) + 1)],
+                          "on the inputs": warnings})
+    return [Section("Warnings on the inputs (accepted, but check them)", table)]
+
+
+def csv_name(header):
+    """The CSV spelling of a unit-labelled header: ``name_unit``, as the SFBM file's columns.
+
+    The name keeps letters and digits (other runs become ``_``; a prime ``'`` is ``dot``);
+    the unit loses its spaces, ``*`` and ``^``, and ``/`` becomes ``p``; a dimensionless
+    ``[-]`` adds nothing.
+
+    Examples
+    --------
+    >>> [csv_name(h) for h in ("x [m]", "Mx [N m]", "S'' [m/s^2]", "T/(m g) [-]", "case")]
+    ['x_m', 'Mx_Nm', 'Sddot_mps2', 'T_m_g', 'case']
+    """
+    text = str(header)
+    unit = None
+    if text.endswith("]") and "[" in text:
+        text, unit = text[:text.rindex("[")], text[text.rindex("[") + 1:-1]
+    name = text.strip().replace("''", "ddot").replace("'", "dot")
+    name = re.sub(r"[^A-Za-z0-9]+", "_", name).strip("_") or "value"
+    if unit is None or unit.strip() in ("", "-"):
+        return name
+    unit = unit.replace(" ", "").replace("*", "").replace("^", "").replace("/", "p")
+    return f"{name}_{re.sub(r'[^A-Za-z0-9]+', '', unit)}"
+
+
+def csv_frame(frame):
+    """A copy of ``frame`` with :func:`csv_name` headers (for the CSV files)."""
+    names = [csv_name(c) for c in frame.columns]
+    if len(set(names)) != len(names):
+        raise InputError("two columns have the same CSV name", names)
+    out = frame.copy()
+    out.columns = names
+    return out
+
+
+def sample_rows(frame, column, max_rows, steps=(0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.5, 1.0,
+                                                2.0, 2.5, 5.0, 10.0, 20.0, 30.0, 60.0)):
+    """Rows of a table at a round interval of ``column`` (time, angle), for print.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+    column : str
+        Increasing column sampled (e.g. ``"t [s]"``).
+    max_rows : int
+        Most rows kept.
+    steps : sequence of float
+        Round intervals tried in order; the first that keeps at most ``max_rows`` rows (and
+        is no finer than the table's own spacing) is used.
+
+    Returns
+    -------
+    (pandas.DataFrame, float)
+        The rows nearest each whole multiple of the interval, and the interval; the whole
+        table and its spacing when it already fits.
+    """
+    values = frame[column].to_numpy(float)
+    if len(frame) <= max_rows or len(values) < 2:
+        spacing = float(np.median(np.diff(values))) if len(values) > 1 else 0.0
+        return frame, spacing
+    spacing = float(np.median(np.diff(values)))
+    span = float(values[-1] - values[0])
+    for step in steps:
+        if step >= spacing * (1 - 1e-9) and span / step + 1 <= max_rows:
+            break
+    else:
+        step = span / (max_rows - 1)
+    targets = np.arange(np.ceil(values[0] / step - 1e-9) * step, values[-1] + 1e-9 * step,
+                        step)
+    pos = np.searchsorted(values, targets).clip(1, len(values) - 1)
+    left = np.abs(values[pos - 1] - targets) <= np.abs(values[pos] - targets)
+    index = np.unique(np.where(left, pos - 1, pos))
+    return frame.iloc[index], step

@@ -90,6 +90,27 @@ class Bounds:
 
 #: Bounds of a relative tolerance of solve_ivp (below 1e-13 it is under the round-off).
 RELATIVE_TOLERANCE = Bounds(1e-13, 0.1)
+#: Bounds of an absolute tolerance of an adaptive step, SI units of the states.
+ABSOLUTE_TOLERANCE = Bounds(1e-13, 1.0)
+#: ISA density altitude: the troposphere model's range.
+ISA_ALTITUDE = Bounds(-610, 11000, unit="m")
+#: Simulated time of a run of the multibody model or the campaign (an hour: the paper's runs
+#: last 60 s; the work limits bound runs x steps as well).
+RUN_LENGTH = Bounds(0, 3600, lo_open=True, unit="s")
+#: Sampling interval of stored histories.
+OUTPUT_INTERVAL = Bounds(0, 60, lo_open=True, unit="s")
+#: Carrier cable, hook to hub (paper: 18 to 100 ft; the longest long lines about 200 ft).
+CABLE_LENGTH = Bounds(0, 500, lo_open=True, unit="m")
+#: Axial stiffness EA of a cable (a 25 mm steel rope is about 5e7 N; below 1e4 N a
+#: helicopter would stretch its cable several times its length).
+CABLE_EA = Bounds(1e4, 1e9, unit="N")
+#: Mass of a parachute canopy and its line (a drogue of a few m^2 weighs a few kg; a lighter
+#: one makes its swing a very fast mode).
+CANOPY_MASS = Bounds(0.1, 1000, unit="kg")
+#: Mass of a carrier helicopter (the heaviest, Mi-26 class, about 56 t).
+CARRIER_MASS = Bounds(0, 1e5, lo_open=True, unit="kg")
+#: Flat-plate drag area of a carrier (CH-47 class: 4 m^2).
+DRAG_AREA = Bounds(0, 1000, unit="m^2")
 
 
 def above(lo, **kw):

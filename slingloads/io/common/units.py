@@ -16,12 +16,10 @@ import re
 from functools import lru_cache
 
 import numpy as np
-import pint
 
+from slingloads.constants import FOOT, G0, INCH, KNOT, POUND, POUND_FORCE
 from slingloads.errors import UnitError
 from slingloads.limits import MAX_UNIT_CHARS
-
-_REGISTRY = pint.UnitRegistry()
 
 #: Quantity kinds and their SI unit, as pint strings.
 SI_UNITS = {
@@ -69,6 +67,47 @@ UNIT_LABELS = {
 }
 
 
+_SLUG = POUND_FORCE / FOOT  # [kg]
+
+#: Exact factors to SI of the units the template, the example and the reports spell, by
+#: (unit as written, kind): read without building pint's registry (a third of a second at
+#: every start). Any other spelling goes to pint; tests/test_units.py checks that pint gives
+#: the same factors (to the last bits of a double: the factors here are the exact
+#: definitions, pint's carry its rounding).
+EXACT_FACTORS = {
+    **{(kind, u): 1.0 for kind, u in (("length", "m"), ("mass", "kg"), ("force", "N"),
+                                       ("moment", "N*m"), ("moment", "N m"),
+                                       ("inertia", "kg*m^2"), ("inertia", "kg m^2"),
+                                       ("angle", "rad"), ("speed", "m/s"),
+                                       ("acceleration", "m/s^2"), ("area", "m^2"),
+                                       ("density", "kg/m^3"), ("time", "s"),
+                                       ("frequency", "rad/s"), ("stiffness", "N/m"),
+                                       ("linear damping", "N*s/m"),
+                                       ("linear damping", "N s/m"),
+                                       ("rotational damping", "N*m*s/rad"),
+                                       ("rotational damping", "N m s/rad"))},
+    ("length", "ft"): FOOT, ("length", "in"): INCH, ("mass", "lb"): POUND,
+    ("mass", "slug"): _SLUG, ("force", "lbf"): POUND_FORCE,
+    ("moment", "lbf*in"): POUND_FORCE * INCH, ("moment", "lbf in"): POUND_FORCE * INCH,
+    ("moment", "lbf*ft"): POUND_FORCE * FOOT, ("moment", "lbf ft"): POUND_FORCE * FOOT,
+    ("inertia", "slug*ft^2"): _SLUG * FOOT**2, ("inertia", "slug ft^2"): _SLUG * FOOT**2,
+    ("angle", "deg"): math.pi / 180.0, ("speed", "kt"): KNOT, ("speed", "ft/s"): FOOT,
+    ("acceleration", "ft/s^2"): FOOT, ("acceleration", "g0"): G0,
+    ("area", "ft^2"): FOOT**2, ("area", "in^2"): INCH**2,
+    ("density", "slug/ft^3"): _SLUG / FOOT**3, ("stiffness", "lbf/in"): POUND_FORCE / INCH,
+    ("linear damping", "lbf*s/ft"): POUND_FORCE / FOOT,
+    ("rotational damping", "lbf*ft*s/rad"): POUND_FORCE * FOOT,
+}
+
+
+@lru_cache(maxsize=1)
+def _registry():
+    """pint's unit registry, built on first use (it parses pint's definitions file)."""
+    import pint
+
+    return pint.UnitRegistry()
+
+
 def unit_label(unit):
     """Human spelling of a pint unit string, for report headers."""
     return UNIT_LABELS.get(unit, unit)
@@ -112,7 +151,9 @@ def si_factor(unit, kind):
         return 1.0
     if text == "":
         raise UnitError(f"a {kind} needs a unit, such as {SI_UNITS[kind]!r}", unit)
-    factor = _pint_factor(engineering_spelling(text, kind), kind, unit)
+    factor = EXACT_FACTORS.get((kind, text))
+    if factor is None:
+        factor = _pint_factor(engineering_spelling(text, kind), kind, unit)
     if not (math.isfinite(factor) and factor > 0):
         raise UnitError(f"unit has no usable factor to {SI_UNITS[kind] or 'a pure number'} "
                         f"(it converts with {factor!r}; a unit must scale by a finite "
@@ -146,8 +187,10 @@ def engineering_spelling(text, kind):
 
 def _pint_factor(text, kind, unit):
     """pint's conversion factor of ``text`` to the SI unit of ``kind``, or a UnitError."""
+    import pint
+
     try:
-        quantity = _REGISTRY.Quantity(1.0, text)
+        quantity = _registry().Quantity(1.0, text)
         if not quantity.unitless and not quantity._is_multiplicative:
             raise UnitError("offset units (degC, degF) are not accepted", unit)
         return float(quantity.to(SI_UNITS[kind] or "dimensionless").magnitude)

@@ -8,11 +8,14 @@ Every function builds and returns a :class:`matplotlib.figure.Figure` through th
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.analyses.lateral import REGULATORY_ANGLE
 from slingloads.constants import FOOT, G0
+from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 
 _REG_STYLE = {"color": "tab:red", "linestyle": "--", "linewidth": 1.0}
 
@@ -33,7 +36,8 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
     matplotlib.figure.Figure
         Three axes: angles [deg] with +-30 deg lines; T/(m g) [-]; carrier S [m] and S'' [g].
     """
-    fig = Figure(figsize=(10.0, 8.0), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 7.6)), left=0.8, right=0.75, bottom=0.5,
+                      top=0.55, hspace=0.12)
     ax_angle, ax_tension, ax_carrier = fig.subplots(3, 1, sharex=True)
     t = run.t
     ax_angle.plot(t, np.degrees(run.theta1), label="rope angle theta1")
@@ -49,7 +53,7 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
     ax_angle.plot([t_peak], [peak], "o", color="black",
                   label=f"max |theta1 - theta2| = {np.degrees(metrics.max_load_angle):.2f} deg")
     ax_angle.set_ylabel("angle [deg]")
-    ax_angle.legend(loc="upper left", bbox_to_anchor=(1.08, 1.0), fontsize="small")
+    ax_angle.legend(loc="upper right", fontsize=7, ncol=2, framealpha=0.85)
     ax_angle.grid(True, alpha=0.3)
 
     ax_tension.plot(t, run.tension_ratio, color="tab:purple", label="T/(m g)")
@@ -58,7 +62,7 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
         ax_tension.fill_between(t, 0, 1, where=run.tension <= 0, color="tab:orange", alpha=0.3,
                                 transform=ax_tension.get_xaxis_transform(), label="slack")
     ax_tension.set_ylabel("T/(m g) [-]")
-    ax_tension.legend(loc="upper left", bbox_to_anchor=(1.08, 1.0), fontsize="small")
+    ax_tension.legend(loc="upper right", fontsize=7, framealpha=0.85)
     ax_tension.grid(True, alpha=0.3)
 
     ax_carrier.plot(t, run.carrier[0], color="tab:green", label="S")
@@ -73,17 +77,24 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
         p = run.pendulum
         title = (f"{p.body.name}, rope {p.rope_length:.3g} m "
                  f"({p.rope_length / FOOT:.0f} ft): {run.motion.describe()}")
-    fig.suptitle(title, fontsize="medium")
+    fig.suptitle("\n".join(textwrap.wrap(title, 90)), fontsize=10)
     return fig
 
 
-def plot_max_angle_vs_acceleration(study, title=None):
-    """Largest load angle against the carrier's peak acceleration, one line per rope length.
+#: Line styles of the motion types on the max-angle plot.
+_MOTION_STYLES = {"quintic_step": ("-", "o"), "cycloidal_step": ("-", "D"),
+                  "constant_acceleration": ("--", "s"), "time_history": (":", "^")}
 
-    Each point is the largest max |theta1 - theta2| over the bodies, durations, motion kinds
-    and the stated ranges of roll inertia, CG and rope length at that nominal rope length
-    and acceleration (velocity steps are left out). The 30 deg line and the recommended
-    design angle are drawn beside.
+
+def plot_max_angle_vs_acceleration(study, title=None):
+    """Largest load angle against the carrier's peak acceleration, one line per rope length
+    and motion type.
+
+    Each point is the largest max |theta1 - theta2| over the bodies, durations and the stated
+    ranges of roll inertia, CG and rope length of one motion type at that nominal rope length
+    and acceleration; different motion types are never joined by a line (colour: rope length;
+    line style and marker: motion type). Velocity steps (no finite acceleration) are left
+    out. The 30 deg line and the recommended design angle are drawn beside.
 
     Parameters
     ----------
@@ -94,13 +105,29 @@ def plot_max_angle_vs_acceleration(study, title=None):
     -------
     matplotlib.figure.Figure
     """
-    fig = Figure(figsize=(7.0, 4.8), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 5.2)), left=0.75, right=0.2, bottom=1.3,
+                      top=0.4)
     ax = fig.subplots()
-    envelope = study.envelope_frame()
-    for length, rows in envelope.groupby("nominal rope length [m]"):
+    runs = study.to_frame()
+    runs = runs[np.isfinite(runs["peak S'' [m/s^2]"])]
+    rope = "nominal rope length [m]"
+    envelope = (runs.groupby([rope, "motion", "peak S'' [g]"], as_index=False)
+                ["max |theta1 - theta2| [deg]"].max())
+    lengths = sorted(envelope[rope].unique())
+    colours = {length: f"C{k % 10}" for k, length in enumerate(lengths)}
+    for (length, motion), rows in envelope.groupby([rope, "motion"]):
         rows = rows.sort_values("peak S'' [g]")
-        ax.plot(rows["peak S'' [g]"], rows["max |theta1 - theta2| [deg]"], marker="o",
+        style, marker = _MOTION_STYLES.get(motion, ("-.", "v"))
+        ax.plot(rows["peak S'' [g]"], rows["max |theta1 - theta2| [deg]"], ls=style,
+                marker=marker, color=colours[length], ms=5)
+    # one legend entry per rope (colour) and per motion type (line style and marker)
+    for length in lengths:
+        ax.plot([], [], color=colours[length], lw=2,
                 label=f"rope {length:.3g} m ({length / FOOT:.0f} ft)")
+    for motion in sorted(envelope["motion"].unique()):
+        style, marker = _MOTION_STYLES.get(motion, ("-.", "v"))
+        ax.plot([], [], color="0.3", ls=style, marker=marker, ms=5,
+                label=motion.replace("_", " "))
     reg = np.degrees(study.regulatory_angle)
     ax.axhline(reg, label=f"CS-29.865 {reg:.0f} deg", **_REG_STYLE)
     ax.axhline(np.degrees(study.recommended_angle), color="tab:green", linestyle="-.",
@@ -110,7 +137,8 @@ def plot_max_angle_vs_acceleration(study, title=None):
     ax.set_ylabel("max |theta1 - theta2| [deg]")
     ax.set_ylim(bottom=0.0)
     ax.grid(True, alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
+    handles, labels = ax.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=7)
     ax.set_title(title or "Largest load angle from the mast against carrier acceleration",
                  fontsize="medium")
     return fig
@@ -139,7 +167,8 @@ def plot_shear_at_angles(comparison, component="Vy", units="SI", title=None):
     j = COMPONENTS.index(component)
     kind = COMPONENT_KINDS[j]
     x = in_report_units(comparison.stations, "length", units)
-    fig = Figure(figsize=(8.0, 4.5), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.2)), left=0.95, right=0.2, bottom=0.5,
+                      top=0.4)
     ax = fig.subplots()
     ref, at = np.degrees(comparison.reference_angle), np.degrees(comparison.angle)
     ax.plot(x, in_report_units(comparison.reference[:, j], kind, units), color="tab:red",
@@ -153,8 +182,8 @@ def plot_shear_at_angles(comparison, component="Vy", units="SI", title=None):
     ax.set_ylabel(labelled(f"max |{component}|", kind, units))
     ax.set_ylim(bottom=0.0)
     ax.grid(True, alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
-    ax.set_title(title or f"Envelope of the hook cases, {component}, limit loads",
+    ax.legend(loc="upper right", fontsize="small")
+    ax.set_title(title or f"Envelope of the hook cases, {component}, LIMIT loads",
                  fontsize="medium")
     return fig
 
@@ -177,7 +206,8 @@ def plot_sensitivity(study, title=None):
     matplotlib.figure.Figure
         Two axes: load angle [deg] and T/(m g) [-] against the factor [-].
     """
-    fig = Figure(figsize=(10.0, 4.6), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 5.4)), left=0.7, right=0.15, bottom=1.75,
+                      top=0.65, wspace=0.3)
     ax_angle, ax_tension = fig.subplots(1, 2, sharex=True)
     frame = study.sensitivity_frame()
     for (name, rows), color in zip(frame.groupby("parameter", sort=False),
@@ -197,14 +227,16 @@ def plot_sensitivity(study, title=None):
     if study.hook_load_factor is not None:
         ax_tension.axhline(study.hook_load_factor, label=f"Nz {study.hook_load_factor:g}",
                            **_REG_STYLE)
-        ax_tension.legend(loc="best", fontsize="small")
+        ax_tension.legend(loc="best", fontsize=7)
     ax_angle.set_ylabel("max |theta1 - theta2| [deg]")
     ax_tension.set_ylabel("max T/(m g) [-]")
     for ax in (ax_angle, ax_tension):
-        ax.set_xlabel("factor on the nominal value [-]")
+        ax.set_xlabel("factor on the nominal value [-]", fontsize=9)
         ax.grid(True, alpha=0.3)
     ax_angle.set_ylim(bottom=0.0)
-    ax_angle.legend(loc="best", fontsize="x-small")
-    fig.suptitle(title or "Sensitivity of the largest load angle and cable tension to roll "
-                 "inertia, CG below hub and rope length", fontsize="medium")
+    handles, labels = ax_angle.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=7)
+    title = title or ("Sensitivity of the largest load angle and cable tension to roll "
+                      "inertia, CG below hub and rope length")
+    fig.suptitle("\n".join(textwrap.wrap(title, 90)), fontsize=10)
     return fig

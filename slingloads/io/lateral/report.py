@@ -8,19 +8,22 @@ recommended angle and at the 30 deg of CS-29.865
 (:func:`slingloads.analyses.hook_angle.hook_angle_comparison`).
 :func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
-* ``<stem>-lateral.xlsx``: sheets *Summary* (inputs digest, largest load angle with nominal
-  inputs and over the stated ranges, the case that produced it, margin, recommended angle
-  beside the 30 deg of CS-29.865 and whether that rule is conservative for the motions swept,
-  cable tension factor against the hook load factor Nz, solve_ivp check of the critical
-  case, hook-load envelopes at both angles per component), *Runs* (every case),
-  *Sensitivity* (ranges, load angle and tension against each uncertain input, tension per
-  motion against Nz, damping), *Modes*, *Histories* (critical case), *LoadsAtAngle* (per
-  station) and *Plots*;
+* ``<stem>-lateral.xlsx``, print-ready: sheets *Cover* (identification, input file and its
+  SHA-256, version, sheets, conventions), *Summary* (largest load angle with nominal inputs
+  and over the stated ranges, the case that produced it, margin, recommended angle beside the
+  30 deg of CS-29.865 and whether that rule is conservative for the motions swept, cable
+  tension factor against the hook load factor Nz, solve_ivp check of the critical case,
+  hook-load envelopes at both angles per component), *Runs* (every case: its definition,
+  then its results), *Sensitivity* (ranges, load angle and tension against each uncertain
+  input, tension per motion against Nz, damping), *Modes*, *Histories* (critical case,
+  sampled for print), *LoadsAtAngle* (per station, LIMIT loads) and *Plots*;
+* ``<stem>-lateral-histories.csv``: the critical case's time histories at every sample (SI,
+  ``name_unit`` headers);
 * ``<stem>-lateral-histories.png`` (critical case, with the 30 deg line),
-  ``-lateral-max-angle.png`` (largest load angle against carrier acceleration per rope),
-  ``-lateral-sensitivity.png`` (load angle and tension against each uncertain input) and
-  ``-lateral-shear.png`` (Y-shear envelope at 30 deg and at the recommended angle, when the
-  recommended angle is below 90 deg).
+  ``-lateral-max-angle.png`` (largest load angle against carrier acceleration, one line per
+  rope length and motion type), ``-lateral-sensitivity.png`` (load angle and tension against
+  each uncertain input) and ``-lateral-shear.png`` (Y-shear envelope at 30 deg and at the
+  recommended angle, when the recommended angle is below 90 deg).
 
 Lengths, forces, moments, masses, speeds and accelerations are in the report unit system
 (``--units``); angles in degrees; rope lengths are also given in ft.
@@ -45,13 +48,18 @@ from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
-from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.common.cover import report_info
+from slingloads.io.common.csvout import write_csv
+from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.figures import drawings, png_bytes, start_drawing
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
-    digest_frame,
+    csv_frame,
     in_report_units,
     report_unit,
+    sample_rows,
+    warning_sections,
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
@@ -60,14 +68,26 @@ ANALYSIS = "lateral"
 #: PNG files written, by tag: ``<stem>-lateral-<tag>.png``.
 PLOTS = ("histories", "max-angle", "sensitivity", "shear")
 #: Names of the files of a lateral report, for the publisher (a new report replaces them all).
-OUTPUTS = ("{stem}-lateral.xlsx", *(f"{{stem}}-lateral-{tag}.png" for tag in PLOTS))
-_PNG_DPI = 80
-NUMBER_FORMATS = format_by_header([
-    (r"\[deg\]", "0.00"),
-    (r"\[%\]", "0.0"),
-    (r"\[(N|lbf|N m|lbf in)\]", "#,##0"),
-    (r"\[-\]", "0.000"),
-])
+OUTPUTS = ("{stem}-lateral.xlsx", "{stem}-lateral-histories.csv",
+           *(f"{{stem}}-lateral-{tag}.png" for tag in PLOTS))
+_PNG_DPI = 100
+#: Most rows of the Histories sheet (the CSV file keeps every sample).
+HISTORY_ROWS = 100
+
+TITLE = "Lateral-step pendulum report: design angle of the hook load"
+DESCRIPTION = (
+    "How far the hook load departs from the mast axis when the carrier rotorcraft moves "
+    "sideways: the carried helicopter swings on its cable (two-body pendulum: rope angle "
+    "theta1, airframe angle theta2) under every carrier motion x rope length x mass case of "
+    "the workbook. The largest load angle |theta1 - theta2| times a margin is the recommended "
+    "design angle, set beside the 30 deg of CS 29.865(a); the CS 29.865 hook cases are re-run "
+    "at that angle (LIMIT loads) to show what it changes. Method: docs/lateral-pendulum.md.")
+CONVENTIONS = (
+    "Angles from the mast (vertical at rest), positive rolling right; the load angle "
+    "theta1 - theta2 is the angle of the cable force at the hub from the mast axis.",
+    "Carrier motion S: lateral hook displacement, + right. Loads on the LoadsAtAngle sheet are "
+    "LIMIT loads (hook cases alone: Nz x weight on the cone, with inertia relief).",
+)
 
 
 @dataclass(frozen=True, eq=False)
@@ -225,7 +245,7 @@ def summary_tables(result, units="SI"):
         ("CS-29.865 angle", float(np.degrees(st.regulatory_angle)), "deg",
          "'not less than 30 deg' unless a smaller angle is shown not to be exceeded"),
         ("recommended angle exceeds CS-29.865", bool(st.exceeds_regulatory_angle), None,
-         verdict(result)),
+         "see the summary above"),
         ("CS-29.865 30 deg not conservative for this motion set",
          bool(st.regulatory_angle_not_conservative), None,
          "a load angle found exceeds 30 deg" if st.regulatory_angle_not_conservative
@@ -326,39 +346,81 @@ def comparison_summary_table(comparison, units="SI"):
     return frame
 
 
-def _sheets(result, units, digest):
+def history_sheet_table(result, units="SI"):
+    """The critical case's time histories sampled for print (at most :data:`HISTORY_ROWS`
+    rows), and the sampling interval. [s]"""
+    frame = history_table(result, units)
+    return sample_rows(frame, "t [s]", HISTORY_ROWS)
+
+
+def _split_runs(frame):
+    """The Runs table as (bodies, definition, results): the mass cases once, the motion and
+    rope of each case, then its metrics."""
+    metrics = [c for c in frame.columns if c.startswith(("max ", "min ", "t at ", "slack"))]
+    keys = ["case", "motion id"]
+    body = ["body", *(c for c in frame.columns if c.startswith(("mass [", "roll inertia [",
+                                                                 "CG below hub [")))]
+    bodies = frame[body].drop_duplicates("body").reset_index(drop=True)
+    dropped = {*metrics, *body[1:], "motion"} | {c for c in frame.columns
+                                                 if c.startswith("cable EA [")}
+    definition = frame[[c for c in frame.columns if c not in dropped]]
+    return bodies, definition, frame[keys + metrics]
+
+
+def _split_components(frame):
+    """The per-station table of the hook cases as (shears, moments)."""
+    keys = [c for c in frame.columns if not any(f"{n}" in c for n in COMPONENTS)]
+    shears = [c for c in frame.columns if c not in keys and any(
+        f"{n}" in c for n in COMPONENTS[:3])]
+    moments = [c for c in frame.columns if c not in keys and c not in shears]
+    return frame[keys + shears], frame[keys + moments]
+
+
+def _sheets(result, units, warnings=()):
     tables = summary_tables(result, units)
     comparison = result.comparison
-    summary = [Section("Inputs", digest),
-               Section("Design angle of the hook load (CS-29.865)", tables["angle"],
-                       note=verdict(result)),
+    summary = [Section("Summary of the lateral-step pendulum study", note=verdict(result)),
+               *warning_sections(warnings),
+               Section("Design angle of the hook load (CS-29.865)", tables["angle"]),
                Section("Cable tension against the hook load factor Nz", tables["tension"]),
                Section("Check of the critical case", tables["check"]),
                Section("Model and solver", tables["settings"])]
     if comparison is not None:
         summary.append(Section(
-            "Hook cases at the recommended angle against 30 deg (largest along the airframe)",
-            comparison_summary_table(comparison, units),
+            "Hook cases at the recommended angle against 30 deg (largest LIMIT load along the "
+            "airframe)", comparison_summary_table(comparison, units),
             note="CS-29.865 hook cases alone (the vertical and the cone's azimuths, Nz x "
                  "weight, inertia relief), without aerodynamic and parachute loads. "
                  + comparison.reduced_note()))
-        loads_sheet = [Section("Envelope max |load| of the hook cases per station",
-                               comparison_station_table(comparison, units),
-                               note=f"Hook directions: {', '.join(comparison.cases)}. "
-                                    f"{comparison.reduced_note()} Limit loads. Reduction = 1 - "
-                                    "(at the recommended angle) / (at 30 deg); negative = "
-                                    "increase.")]
+        shears, moments = _split_components(comparison_station_table(comparison, units))
+        note = (f"Hook directions: {', '.join(comparison.cases)}. {comparison.reduced_note()} "
+                "LIMIT loads. Reduction = 1 - (at the recommended angle) / (at 30 deg); "
+                "negative = increase.")
+        loads_sheet = [Section("CS 29.865 hook cases at 30 deg and at the recommended angle, "
+                               "LIMIT loads per station", note=note),
+                       Section("Envelope max |LIMIT load| of the hook cases per station: "
+                               "shear forces", shears),
+                       Section("Envelope max |LIMIT load| of the hook cases per station: "
+                               "moments", moments)]
     else:
         loads_sheet = ("The recommended angle is 90 deg or more: no hook-load cone can be "
                        "built; the hook cases were not re-run.")
     st = result.study
+    bodies, definition, results = _split_runs(runs_table(result, units))
+    histories, interval = history_sheet_table(result, units)
     return {
         "Summary": summary,
-        "Runs": [Section(f"Every case with nominal inputs, and its largest load angle and "
-                         f"tension over the stated ranges: {len(st.pendulums)} runs in all, "
-                         f"RK4 step {st.step:.4g} s over {st.t_end:.4g} s",
-                         runs_table(result, units))],
+        "Runs": [Section(f"Every case: {len(st.pendulums)} runs, RK4 step {st.step:.4g} s "
+                         f"over {st.t_end:.4g} s",
+                         note="Motion ids: LateralMotions sheet; cases are motions x rope "
+                              "lengths x bodies."),
+                 Section("Bodies (mass cases)", bodies),
+                 Section("Definition of every case (cable model: sheet Summary)", definition),
+                 Section("Results of every case", results)],
         "Sensitivity": [
+            Section("Sensitivity of the largest load angle and cable tension to the uncertain "
+                    "inputs", note="Every case is run over the stated ranges of roll inertia, "
+                    "CG below the hub and rope length (Study rows 'lateral ... spread')."),
             Section("Stated ranges (factors on the nominal values)", st.ranges.to_frame()),
             Section("Largest load angle and tension factor against each uncertain input",
                     st.sensitivity_frame(),
@@ -372,7 +434,9 @@ def _sheets(result, units, digest):
                           modes_table(result, units))],
         "Histories": [Section("Critical case re-run with solve_ivp: "
                               f"{result.critical_run.motion.describe()}",
-                              history_table(result, units))],
+                              histories,
+                              note=f"Every {interval:g} s; every sample in the "
+                                   "-lateral-histories.csv file (SI).")],
         "LoadsAtAngle": loads_sheet,
     }
 
@@ -386,6 +450,7 @@ def _damping_table(damping, units):
 
 
 def _figures(result, units):
+    """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
     from slingloads.io.lateral.plots import (  # matplotlib loads only when plotting
         plot_max_angle_vs_acceleration,
         plot_sensitivity,
@@ -393,16 +458,22 @@ def _figures(result, units):
         plot_time_histories,
     )
 
-    figs = {"histories": plot_time_histories(result.critical_run),
-            "max-angle": plot_max_angle_vs_acceleration(result.study),
-            "sensitivity": plot_sensitivity(result.study)}
+    figs = {"histories": (plot_time_histories, (result.critical_run,), {}),
+            "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {}),
+            "sensitivity": (plot_sensitivity, (result.study,), {})}
     if result.comparison is not None:
-        figs["shear"] = plot_shear_at_angles(result.comparison, units=units)
+        figs["shear"] = (plot_shear_at_angles, (result.comparison,), {"units": units})
     return figs
 
 
-def write(result, out_dir, stem, units, study):
-    """Write ``<stem>-lateral.xlsx`` and ``<stem>-lateral-*.png`` atomically.
+def start_figures(result, units, study):
+    """Start drawing the lateral report's figures (while the other analyses run)."""
+    return start_drawing(_figures(result, units), _PNG_DPI)
+
+
+def write(result, out_dir, stem, units, study, figures=None):
+    """Write ``<stem>-lateral.xlsx``, ``<stem>-lateral-histories.csv`` and
+    ``<stem>-lateral-*.png`` atomically.
 
     Parameters
     ----------
@@ -412,7 +483,9 @@ def write(result, out_dir, stem, units, study):
     units : str
         ``"SI"`` or ``"US"`` (lengths in in, forces in lbf, moments in lbf in, masses in lb).
     study : WorkbookStudy
-        For the inputs digest; its input file is never overwritten.
+        For the report's identification; its input file is never overwritten.
+    figures : FigureRenderer, optional
+        Already drawing the figures (:func:`start_figures`); default: drawn now.
 
     Returns
     -------
@@ -420,19 +493,26 @@ def write(result, out_dir, stem, units, study):
     """
     check_units(units)
     inputs = study.input_files
-    names = [f"{stem}-lateral.xlsx"] + [f"{stem}-lateral-{tag}.png" for tag in PLOTS]
+    names = ([f"{stem}-lateral.xlsx", f"{stem}-lateral-histories.csv"]
+             + [f"{stem}-lateral-{tag}.png" for tag in PLOTS])
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)
-    pngs = {tag: figure_png(fig, _PNG_DPI) for tag, fig in _figures(result, units).items()}
     titles = {"histories": "Critical case: time histories (30 deg line)",
               "max-angle": "Largest load angle against carrier acceleration",
               "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",
-              "shear": "Y shear of the hook cases: 30 deg against the recommended angle"}
-    sheets = _sheets(result, units, digest_frame(study.digest()))
-    with atomic_outputs(out_dir, inputs=inputs) as out:
-        write_workbook(out.path(f"{stem}-lateral.xlsx"), sheets,
-                       {titles[t]: png for t, png in pngs.items()},
-                       number_format=NUMBER_FORMATS)
-        for tag, png in pngs.items():
-            out.path(f"{stem}-lateral-{tag}.png").write_bytes(png)
+              "shear": "Y shear of the hook cases (LIMIT): 30 deg against the recommended "
+                       "angle"}
+    with drawings(_figures(result, units), figures, _PNG_DPI) as pngs:
+        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
+                           conventions=CONVENTIONS,
+                           files=[f"{stem}-lateral-histories.csv",
+                                  *(f"{stem}-lateral-{tag}.png" for tag in pngs)])
+        sheets = _sheets(result, units, study.warnings)
+        with atomic_outputs(out_dir, inputs=inputs) as out:
+            write_workbook(out.path(f"{stem}-lateral.xlsx"), sheets,
+                           {titles[t]: png for t, png in pngs.items()}, info=info)
+            write_csv(csv_frame(result.critical_run.to_frame()),
+                      out.path(f"{stem}-lateral-histories.csv"))
+            for tag, png in pngs.items():
+                out.path(f"{stem}-lateral-{tag}.png").write_bytes(png_bytes(png))
     return out.written

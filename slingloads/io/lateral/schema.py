@@ -110,64 +110,77 @@ PARAMETERS = (
 
 SHEETS = (
     TableSheet("LateralMotions", (
-        Column("id", TEXT, help="Unique name of the carrier motion."),
-        Column("type", TEXT, help="quintic step (minimum-jerk law S = A (10 tau^3 - 15 "
+        Column("id", TEXT, help="Unique name of the carrier motion, e.g. STEP-0.1g-1s."),
+        Column("type", TEXT, help="Kind of motion of the hook (the carrier's cable end): "
+                                  "quintic step (minimum-jerk law S = A (10 tau^3 - 15 "
                                   "tau^4 + 6 tau^5), peak acceleration 5.77 A/T^2; 'smooth "
                                   "step' is its former name) | cycloidal step (S = A (tau - "
                                   "sin(2 pi tau)/(2 pi)), peak 2 pi A/T^2) | constant "
                                   "acceleration | velocity step | time history."),
         Column("acceleration", "acceleration", "m/s^2", False, None,
                "Quintic or cycloidal step: peak lateral acceleration of the hook; constant "
-               "acceleration: "
-               "the rate. Finite, not 0 (sign = direction). Any acceleration unit: m/s^2, "
-               "ft/s^2, or g0 (standard gravity; 'g' would be the gram)."),
+               "acceleration: the rate. Finite, not 0; positive to the right (+y). Typical: "
+               "0.1 to 0.5 g0. Any acceleration unit: m/s^2, ft/s^2, or g0 (standard gravity; "
+               "'g' would be the gram)."),
         Column("duration", "time", "s", False, None,
                "Quintic or cycloidal step: time T to complete the step; constant "
-               "acceleration: time of the "
-               "acceleration phase. > 0.", Bounds(0, 3600, lo_open=True)),
+               "acceleration: time of the acceleration phase. > 0. Typical: 0.5 to 5 s.",
+               Bounds(0, 3600, lo_open=True)),
         Column("amplitude", "length", "m", False, None,
-               "Quintic or cycloidal step only, instead of the acceleration: the step's "
-               "displacement A."),
+               "Quintic or cycloidal step only, instead of the acceleration: the step's lateral "
+               "displacement A of the hook, positive to the right. Typical: 1 to 20 m."),
         Column("then", TEXT, required=False, default="",
                help="Constant acceleration only: 'hold' (keep the speed reached) or 'stop' "
                     "(decelerate at the same rate for the same time)."),
         Column("delta V", "speed", "m/s", False, None,
-               "Velocity step only: the hook's speed jump at t = 0, finite, not 0."),
+               "Velocity step only: the hook's lateral speed jump at t = 0, positive to the "
+               "right, finite, not 0. Typical: 0.5 to 2 m/s."),
         Column("history", TEXT, required=False, default="", max_chars=1000,
                help="Time history only: a 'history id' of the LateralHistory sheet, or a CSV "
                     "file (path relative to the workbook) with columns 't [s]' and 'S [m]' "
                     "(units in brackets, any of the right kind)."),
-        Column("description", TEXT, required=False, default="", help="Free text."),
+        Column("description", TEXT, required=False, default="",
+               help="Free text printed on the report."),
     ), help="Carrier (hook) lateral motions to sweep, each starting from hover at rest "
        "(docs/lateral-pendulum.md section 5). Must cover the manoeuvres of the operation being "
        f"certified. At most {MAX_LATERAL_RUNS:,} runs (motions x ropes x bodies).",
        max_rows=MAX_LATERAL_RUNS),
     TableSheet("LateralHistory", (
-        Column("history id", TEXT, help="Name referred to by LateralMotions 'history'."),
-        Column("t", "time", "s", help="Sample time, strictly increasing within a history.",
+        Column("history id", TEXT, help="Name referred to by LateralMotions 'history', e.g. "
+                                        "REPOSITION."),
+        Column("t", "time", "s", help="Sample time from the start of the run (t = 0 at rest), "
+                                      "strictly increasing within a history. Typical: every "
+                                      "0.1 to 1 s over 10 to 30 s.",
                bounds=Bounds(-3600, 3600)),
-        Column("S", "length", "m", help="Lateral hook displacement, + right."),
+        Column("S", "length", "m", help="Lateral displacement of the hook from its start, "
+                                        "positive to the right (+y). Typical: 0 to 20 m."),
     ), help="Optional: measured or planned hook displacement histories, one block of rows per "
        f"history id (natural cubic spline between samples), at most "
        f"{MAX_TABLE_ROWS:,} samples in all (longer histories: a CSV file, up to "
        f"{MAX_HISTORY_SAMPLES:,} samples).", max_rows=MAX_TABLE_ROWS),
     TableSheet("LateralRopes", (
         Column("rope length", "length", "ft",
-               help="Unstretched cable length, hook to hub, > 0 (paper: 18, 60, 100 ft).",
+               help="Unstretched cable length from the carrier's hook to the carried "
+                    "helicopter's hub, > 0. Typical: 18, 60, 100 ft (paper).",
                bounds=Bounds(0, 1000, lo_open=True, unit="m")),
-        Column("description", TEXT, required=False, default="", help="Free text."),
+        Column("description", TEXT, required=False, default="",
+               help="Free text printed on the report."),
     ), help="Rope (cable) lengths to sweep.", max_rows=MAX_LATERAL_RUNS),
     TableSheet("LateralBodies", (
-        Column("id", TEXT, help="Unique name of the mass case."),
-        Column("mass", "mass", "kg", help="Mass of the carried helicopter, > 0.",
+        Column("id", TEXT, help="Unique name of the mass case, e.g. HEAVY."),
+        Column("mass", "mass", "kg", help="Mass of the carried helicopter, > 0. Typical: "
+                                          "2,000 to 3,000 kg for a light twin.",
                bounds=above(0)),
         Column("roll inertia", "inertia", "kg m^2",
-               help="Moment of inertia about the x axis through the CG, > 0.",
+               help="Roll moment of inertia about the x axis through the CG, > 0. Typical: "
+                    "1,000 to 2,000 kg m^2 for a 2.9 t light twin without blades.",
                bounds=above(0)),
         Column("CG below hub", "length", "m",
-               help="Distance from the rotor hub down the mast to the CG, >= 0.",
+               help="Distance from the rotor hub down the mast axis to the CG, >= 0 "
+                    "(positive: CG below the hub). Typical: about 1.1 m.",
                bounds=Bounds(0, 100, unit="m")),
-        Column("description", TEXT, required=False, default="", help="Free text."),
+        Column("description", TEXT, required=False, default="",
+               help="Free text printed on the report."),
     ), help="Optional: mass-property cases (e.g. heaviest, lightest). Default: one body from "
        "MassItems, hanging with its CG under the hub: total mass, roll inertia about the "
        "CG around the horizontal fore-and-aft axis, CG distance below the hub.",

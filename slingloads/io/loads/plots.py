@@ -13,25 +13,18 @@ load that the part aft of the cut exerts on the part forward of it.
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
 from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
+from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 from slingloads.io.common.report import check_units, in_report_units, labelled, report_unit
 from slingloads.io.common.units import unit_label
-
-#: Plain-language names of the components, as in the paper's figures ("X shear").
-COMPONENT_TITLES = {
-    "Vx": "X shear", "Vy": "Y shear", "Vz": "Z shear",
-    "Mx": "X moment (torsion)", "My": "Y moment", "Mz": "Z moment",
-}
-#: File-name tags of the components (``<stem>-X_shear.png``).
-COMPONENT_TAGS = {
-    "Vx": "X_shear", "Vy": "Y_shear", "Vz": "Z_shear",
-    "Mx": "X_moment", "My": "Y_moment", "Mz": "Z_moment",
-}
+from slingloads.io.loads.tags import COMPONENT_TITLES
 
 _MAX_COLOUR = "tab:red"
 _MIN_COLOUR = "tab:blue"
@@ -114,8 +107,13 @@ def _previous(result, component):
         float)
 
 
-def plot_sfbm(result, component, units="SI", show_previous=True, figsize=(9.0, 5.0)):
-    """SFBM of one component along the stations, every case and the envelope.
+def wrap_title(text, width=72):
+    """A plot title broken into lines of at most ``width`` characters (never cut)."""
+    return "\n".join(textwrap.wrap(str(text), width)) or str(text)
+
+
+def plot_sfbm(result, component, units="SI", show_previous=True, figsize=(PAGE_WIDTH, 4.2)):
+    """SFBM of one component along the stations, every case and the envelope (LIMIT loads).
 
     Parameters
     ----------
@@ -135,14 +133,15 @@ def plot_sfbm(result, component, units="SI", show_previous=True, figsize=(9.0, 5
     """
     check_units(units)
     j = component_index(component)
-    fig = Figure(figsize=figsize, layout="constrained")
+    fig = fix_margins(Figure(figsize=figsize), left=0.95, right=0.15, bottom=0.75, top=0.6)
     ax = fig.add_subplot()
     draw_sfbm(ax, result.stations, result.loads[:, :, j], component, units,
               previous=_previous(result, component) if show_previous else None,
               case_ids=result.case_ids,
-              title=f"{COMPONENT_TITLES[component]} ({component}), limit loads, "
-                    f"{result.study.name}")
-    ax.legend(loc="best", fontsize=8)
+              title=wrap_title(f"{COMPONENT_TITLES[component]} {component}, LIMIT loads, "
+                               f"{len(result.case_ids)} cases: {result.study.name}"))
+    # below the axes: a legend placed "best" costs a search over every case's line
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=4, fontsize=7)
     return fig
 
 
@@ -171,8 +170,8 @@ def plot_sfbm_grid(result, units="SI", show_previous=True, figsize=(15.0, 8.0)):
                   previous=_previous(result, name) if show_previous else None,
                   case_ids=result.case_ids)
     axes[0, 0].legend(loc="best", fontsize=7)
-    fig.suptitle(f"Limit shear force and bending moment, {result.study.name} "
-                 f"({len(result.case_ids)} cases)")
+    fig.suptitle(wrap_title(f"LIMIT shear force and bending moment, {result.study.name} "
+                            f"({len(result.case_ids)} cases)", 120))
     return fig
 
 
@@ -203,21 +202,65 @@ def draw_hull(ax, points, case_ids, hull, pair, units="SI"):
     ax.fill(hx, hy, color=_MAX_COLOUR, alpha=0.08, lw=0)
     ax.plot(np.append(hx, hx[:1]), np.append(hy, hy[:1]), color=_MAX_COLOUR, lw=1.8,
             marker="o", ms=5, zorder=3, label="convex hull")
-    cx, cy = hx.mean(), hy.mean()
-    for case, xv, yv in zip(hull["case"], hx, hy, strict=True):
-        dx, dy = xv - cx, yv - cy
-        ax.annotate(str(case), (xv, yv), xytext=(8 * np.sign(dx), 8 * np.sign(dy)),
-                    textcoords="offset points", fontsize=8,
-                    ha="left" if dx >= 0 else "right", va="bottom" if dy >= 0 else "top")
+    _label_vertices(ax, hx, hy, [str(c) for c in hull["case"]])
     ax.axhline(0.0, color="k", lw=0.6)
     ax.axvline(0.0, color="k", lw=0.6)
-    ax.margins(0.15)
     ax.grid(True, lw=0.4, alpha=0.6)
     ax.set_xlabel(component_label(pair[0], units))
     ax.set_ylabel(component_label(pair[1], units))
 
 
-def plot_hull(result, station, pair=("Vy", "Mz"), units="SI", figsize=(7.0, 6.0)):
+def _limits(values, margin=0.18):
+    """Axis limits around ``values`` with a relative margin (room for the labels)."""
+    lo, hi = float(np.min(values)), float(np.max(values))
+    lo, hi = min(lo, 0.0), max(hi, 0.0)
+    span = hi - lo or max(abs(hi), 1.0)
+    return lo - margin * span, hi + margin * span
+
+
+def _label_vertices(ax, hx, hy, labels, near=0.06):
+    """Write the case of every hull vertex outward from the hull's centre; vertices closer
+    than ``near`` (a fraction of the axes) share one label listing their cases, so that no
+    two labels overlap."""
+    xlim, ylim = _limits(np.append(hx, ax.dataLim.intervalx)), _limits(
+        np.append(hy, ax.dataLim.intervaly))
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
+    u = (np.asarray(hx) - xlim[0]) / (xlim[1] - xlim[0])
+    v = (np.asarray(hy) - ylim[0]) / (ylim[1] - ylim[0])
+    groups = []
+    for k in range(len(u)):
+        for group in groups:
+            if np.hypot(u[k] - u[group[0]], v[k] - v[group[0]]) < near:
+                group.append(k)
+                break
+        else:
+            groups.append([k])
+    cv = v.mean()
+    for group in groups:
+        gu, gv = u[group].mean(), v[group].mean()
+        text = ", ".join(labels[k] for k in group)
+        # outward from the hull's centre, but always towards the inside of the axes so that
+        # no label leaves the figure
+        side = np.sign(gv - cv) or 1.0
+        if gu > 0.65:
+            ha, dx = "right", -4
+        elif gu < 0.35:
+            ha, dx = "left", 4
+        else:
+            ha, dx = "center", 0
+        if gv > 0.92:
+            side = -1.0
+        elif gv < 0.08:
+            side = 1.0
+        ax.annotate(text, (gu, gv), xycoords="axes fraction", xytext=(dx, 10 * side),
+                    textcoords="offset points", fontsize=7, ha=ha,
+                    va="bottom" if side > 0 else "top",
+                    bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none",
+                          "alpha": 0.8})
+
+
+def plot_hull(result, station, pair=("Vy", "Mz"), units="SI", figsize=(PAGE_WIDTH, 5.0)):
     """2-D envelope ("potato" plot) of two components at one cut station.
 
     Parameters
@@ -241,12 +284,98 @@ def plot_hull(result, station, pair=("Vy", "Mz"), units="SI", figsize=(7.0, 6.0)
     index = (int(station) if isinstance(station, (int, np.integer))
              else list(result.station_ids).index(str(station)))
     cols = [component_index(p) for p in pair]
-    fig = Figure(figsize=figsize, layout="constrained")
+    fig = fix_margins(Figure(figsize=figsize), left=0.95, right=0.2, bottom=0.8, top=0.6)
     ax = fig.add_subplot()
     draw_hull(ax, result.loads[:, index, :][:, cols], result.case_ids, hull, pair, units)
     x = float(in_report_units(result.stations[index], "length", units))
-    ax.set_title(f"{pair[0]}-{pair[1]} limit envelope at {result.station_ids[index]} "
-                 f"(x = {x:.4g} {unit_label(report_unit('length', units))}), "
-                 f"{result.study.name}", fontsize=10)
-    ax.legend(loc="best", fontsize=8)
+    ax.set_title(wrap_title(f"{pair[0]}-{pair[1]} envelope of the LIMIT loads at "
+                            f"{result.station_ids[index]} (x = {x:.4g} "
+                            f"{unit_label(report_unit('length', units))}): "
+                            f"{result.study.name}"), fontsize=10)
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, fontsize=7)
+    return fig
+
+
+def _station_points(study):
+    """Named hardpoints of a loads study: ``[(label, marker, colour, points (k, 3))]``. [m]"""
+    hp = study.airframe.hardpoints
+    points = [("rotor hub (hook load)", "*", "tab:red", hp.hub[None, :]),
+              ("mast feet", "^", "tab:orange", hp.mast_feet)]
+    if hp.chute is not None:
+        points.append(("parachute attachment", "s", "tab:purple", hp.chute[None, :]))
+    if study.fin is not None:
+        points.append(("fin centre of pressure", "D", "tab:green",
+                       np.asarray(study.fin.centre_of_pressure, float)[None, :]))
+    if study.fuselage is not None:
+        points.append(("fuselage aero moment reference", "P", "tab:brown",
+                       np.asarray(study.fuselage.moment_reference, float)[None, :]))
+    return points
+
+
+def plot_station_diagram(study, units="SI", figsize=(PAGE_WIDTH, 5.6)):
+    """Side and top views of the airframe: cut stations, mass items, CG, hub, mast feet,
+    fin, parachute attachment and the loads reference axis.
+
+    Parameters
+    ----------
+    study : slingloads.analyses.loads.LoadsStudy
+    units : str
+        ``"SI"`` or ``"US"`` (lengths in m or in).
+    figsize : tuple of float
+        [inch]
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two axes sharing x: the side view from the left (x aft, z up) with the station ids
+        along its top, and the top view from above (x aft, y right, drawn upwards).
+    """
+    check_units(units)
+    airframe = study.airframe
+    items = airframe.mass_items
+
+    def length(v):
+        return in_report_units(v, "length", units)
+
+    fig = fix_margins(Figure(figsize=figsize), left=0.75, right=0.2, bottom=1.25, top=1.15,
+                      hspace=0.15)
+    side, top = fig.subplots(2, 1, sharex=True)
+    size = 15.0 + 160.0 * items.mass / items.mass.max()
+    y0, z0 = airframe.reference_axis
+    xs = length(airframe.stations)
+    for ax, j, ref, name in ((side, 2, z0, "z"), (top, 1, y0, "y")):
+        for x in xs:
+            ax.axvline(x, color="0.6", lw=0.6, ls="--", zorder=0)
+        ax.scatter(length(items.position[:, 0]), length(items.position[:, j]), s=size,
+                   color="tab:blue", alpha=0.35, lw=0, label="mass items (area ~ mass)")
+        ax.axhline(float(length(ref)), color="0.3", lw=0.8, ls=":",
+                   label="loads reference axis")
+        cg = items.cg
+        ax.plot([length(cg[0])], [length(cg[j])], marker="+", ms=11, mew=2, color="k",
+                ls="none", label="CG")
+        for label, marker, colour, pts in _station_points(study):
+            ax.plot(length(pts[:, 0]), length(pts[:, j]), marker=marker, ms=7, color=colour,
+                    ls="none", label=label)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_ylabel(labelled(name, "length", units))
+        ax.grid(True, lw=0.3, alpha=0.4)
+    hub, axis = airframe.hardpoints.hub, airframe.hardpoints.mast_axis
+    base = airframe.hardpoints.mast_feet.mean(axis=0)
+    along = float(np.dot(hub - base, axis))
+    mast = np.array([hub - along * axis, hub + 0.3 * max(along, 0.3) * axis])
+    side.plot(length(mast[:, 0]), length(mast[:, 2]), color="tab:red", lw=1.2,
+              label="mast axis")
+    for ax, text in ((side, "side view from the left (x aft, z up)"),
+                     (top, "top view from above (x aft, y right)")):
+        ax.text(0.005, 0.97, text, transform=ax.transAxes, va="top", fontsize=8,
+                bbox={"fc": "white", "ec": "none", "alpha": 0.8, "pad": 1})
+    top.set_xlabel(labelled("x", "length", units))
+    for x, name in zip(xs, airframe.station_ids, strict=True):  # ids along the top
+        side.text(x, 1.02, str(name), transform=side.get_xaxis_transform(), rotation=90,
+                  ha="center", va="bottom", fontsize=6)
+    handles, labels = side.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=7)
+    fig.suptitle(wrap_title(f"Cut stations and hardpoints: {airframe.name} "
+                            f"({len(xs)} stations, {len(items.mass)} mass items)"),
+                 fontsize=10)
     return fig

@@ -235,22 +235,27 @@ def _previous(reader):
         lo, hi = t[f"{name} min"], t[f"{name} max"]
         for i in range(len(x)):
             if lo[i] > hi[i]:
+                top, unit = t.shown(f"{name} max", i)
+                top = f"{top} {unit}" if unit else top
                 raise t.error(f"{name} min", i, f"previous envelope: {name} min must not "
-                              f"exceed {name} max ({t.cell(f'{name} max', i)})")
+                              f"exceed {name} max ({top} at {t.cell(f'{name} max', i)})")
         rows.append(pd.DataFrame({"x [m]": x, "component": name, "min": lo, "max": hi}))
     return pd.concat(rows, ignore_index=True)
 
 
 def report_options(params, study):
     """The report options of the loads, checked for every workbook: the stations and
-    component pairs of the 2-D envelopes ('hull stations', 'hull pairs') and the Nastran file
-    ('nastran ...' rows).
+    component pairs of the 2-D envelopes ('hull stations', 'hull pairs'), the texts the
+    Summary quotes ('hook angle justification', 'previous envelope source') and the Nastran
+    file ('nastran ...' rows).
 
     Returns
     -------
     dict
         ``{"hull stations": [station id, ...], "hull pairs": [(component, component), ...],
-        "nastran": bool, "nastran settings": {...}, "nastran locations": {...}}``
+        "hook angle justification": str, "previous envelope source": str,
+        "sfbm workbook": bool, "nastran": bool, "nastran settings": {...},
+        "nastran locations": {...}}``
     """
     airframe = study.airframe
     ids = list(airframe.station_ids)
@@ -278,7 +283,10 @@ def report_options(params, study):
     if not pairs and params("hull pairs"):
         raise params.error("hull pairs", "no hull pair given (e.g. 'Vy-Mz, Vz-My', or leave "
                            "the cell empty for none)")
-    return {"hull stations": stations, "hull pairs": pairs, **_nastran_options(params, study)}
+    return {"hull stations": stations, "hull pairs": pairs,
+            "hook angle justification": str(params("hook angle justification") or "").strip(),
+            "previous envelope source": str(params("previous envelope source") or "").strip(),
+            "sfbm workbook": bool(params("SFBM workbook")), **_nastran_options(params, study)}
 
 
 _NASTRAN_IDS = {"first_grid_id": "nastran first grid id",

@@ -1,21 +1,30 @@
-"""The loads report: an Excel workbook, CSV tables and PNG plots of a loads analysis.
+"""The loads report: a print-ready Excel workbook, CSV tables and PNG plots of a loads analysis.
 
 :func:`write_loads_outputs` writes, all at once or not at all
 (:mod:`slingloads.io.common.atomic`):
 
-* ``<stem>-loads.xlsx``: sheets *Summary* (input digest, study settings, units, the attitude
-  and its vertical, the hook directions with the reduced ones, the towed cases' cable angles
-  with the inside-cone flag, closure check, governing cases), *LoadCases* (with each case's
-  cable angle and inside-cone flag), *Envelope* (critical case and correlated loads),
-  *Exceedance* (ratio to the previous design envelope, red above 1), *SFBM* (every case and
-  station, split as ``SFBM_1``, ``SFBM_2``... past Excel's row limit), *Ultimate* (envelope
-  at ultimate = factor x limit), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
-  system with the unit in every header (``x [in]``, ``Vy [lbf]``, ``Mz [lbf in]``);
+* ``<stem>-loads.xlsx``, the report: *Cover* (identification, input file and its SHA-256,
+  version, sheets, conventions), *Summary* (findings and flags: hook angle against
+  CS 29.865, towed cables outside the hook cone, exceedances and where the previous envelope
+  comes from, closure; study settings; the attitude and its vertical; the hook directions
+  with the reduced ones; the towed cases' cable angles; closure check), *Inputs* (mass items,
+  cut stations, hardpoints), *LoadCases* (with each case's cable angle and inside-cone
+  flag), *Envelope* (LIMIT max / min of each component at each station with its critical
+  case), *Correlated* (LIMIT envelope with the correlated loads of the
+  critical case), *Exceedance* and *ExceedanceDetail* (ratio to the previous design
+  envelope, red above 1, interpolated previous values marked), *Ultimate* (ULTIMATE =
+  factor x LIMIT envelope), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
+  system with the unit beside every value, each sheet and title saying LIMIT or ULTIMATE;
+* ``<stem>-sfbm.xlsx`` when asked for (Study 'SFBM workbook' = yes): the SFBM of every case
+  at every station in report units (a data workbook, not for print, split as ``SFBM_1``,
+  ``SFBM_2``... past Excel's row limit; the CSV file has the same numbers in SI);
 * ``<stem>-sfbm.csv`` (columns ``case,station,x_m,Vx_N,Vy_N,Vz_N,Mx_Nm,My_Nm,Mz_Nm``) and
-  ``<stem>-envelope.csv``: limit loads, always SI;
-* ``<stem>-X_shear.png`` and ``<stem>-Y_shear.png`` (the paper's figures 19 and 20),
-  ``<stem>-sfbm_all.png`` (all six components, 2 x 3 grid) and
-  ``<stem>-hull_<A>_<B>_<station>.png``;
+  ``<stem>-envelope.csv`` (``station,x_m,component,bound,case,value_N,value_Nm,Vx_N...``):
+  LIMIT loads, always SI, headers ``name_unit``;
+* ``<stem>-stations.png`` (side and top views: cut stations, mass items, hub, mast feet,
+  fin, parachute attachment), one SFBM plot per component ``<stem>-X_shear.png``...
+  ``<stem>-Z_moment.png`` (the paper's figures 19 and 20 are X and Y shear) and
+  ``<stem>-hull_<A>_<B>_<station>.png``.
 * on request, ``<stem>-loads.bdf``: the load cases as a Nastran input file
   (:mod:`slingloads.io.loads.nastran`), with a *Nastran* sheet in the workbook.
 
@@ -26,61 +35,90 @@ component; the conversions shared by every report are in :mod:`slingloads.io.com
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
-import slingloads
 from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input, safe_file_part
+from slingloads.io.common.cover import info_from_digest, report_info
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
     Section,
-    figure_png,
     format_by_header,
     write_workbook,
 )
+from slingloads.io.common.figures import drawings, png_bytes, start_drawing
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
-    digest_frame,
     in_report_units,
+    labelled,
     report_unit,
+    warning_sections,
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
 from slingloads.io.loads.nastran import prepare_nastran
+from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
+
+#: Components drawn each on its own PNG, all six (the paper's figures 19 and 20: Vx, Vy).
+PNG_COMPONENTS = COMPONENTS
 
 #: Names of the files of a loads report (``*``: a part made from a station id), for the
-#: publisher: a new report replaces every earlier file of these names.
-OUTPUTS = ("{stem}-loads.xlsx", "{stem}-sfbm.csv", "{stem}-envelope.csv", "{stem}-X_shear.png",
-           "{stem}-Y_shear.png", "{stem}-sfbm_all.png", "{stem}-hull_*.png", "{stem}-loads.bdf")
-
-#: Components drawn on their own PNG (the paper's figures 19 and 20); all six are on the grid.
-PNG_COMPONENTS = ("Vx", "Vy")
+#: publisher: a new report replaces every earlier file of these names (``-sfbm_all.png``:
+#: the six-panel plot of earlier versions, replaced by one PNG per component).
+OUTPUTS = ("{stem}-loads.xlsx", "{stem}-sfbm.xlsx", "{stem}-sfbm.csv", "{stem}-envelope.csv",
+           "{stem}-stations.png", *(f"{{stem}}-{COMPONENT_TAGS[n]}.png" for n in COMPONENTS),
+           "{stem}-sfbm_all.png", "{stem}-hull_*.png", "{stem}-loads.bdf")
 
 #: Columns of the SFBM CSV file (SI, limit loads).
 SFBM_CSV_COLUMNS = ("case", "station", "x_m", "Vx_N", "Vy_N", "Vz_N", "Mx_Nm", "My_Nm",
                     "Mz_Nm")
+#: Columns of the envelope CSV file (SI, limit loads): the bound's value in ``value_N`` for
+#: a shear, in ``value_Nm`` for a moment (the other is empty).
+ENVELOPE_CSV_COLUMNS = ("station", "x_m", "component", "bound", "case", "value_N",
+                        "value_Nm", *SFBM_CSV_COLUMNS[3:])
 
-#: Number formats of the report columns, by header pattern (first match wins).
-NUMBER_FORMATS = format_by_header([
-    (r"residual", "0.00E+00"),
-    (r"ratio", "0.000"),
-    (r"^x \[", "0.000"),
-    (r"\[(N|lbf|N m|lbf in)\]$", "#,##0.0"),
-    (r"^(value|new max|new min|previous max|previous min)$", "#,##0.0"),
-    (r"\[deg\]$", "0.0##"),
-    (r"\[(-|rad/s\^2)\]$", "0.000"),
-])
+#: Regulatory hook angle of CS 29.865(a): the off-axis hook loads are inclined 30 deg from
+#: the mast unless a smaller angle is shown not to be exceeded in service. [deg]
+CS29865_ANGLE_DEG = 30.0
+#: A previous-envelope station within this distance of a cut station is the same station
+#: (the workbook's positions are rounded). [m]
+SAME_STATION = 1e-3
 
-_PNG_DPI = 120
+TITLE = "Structural loads report: LIMIT loads, ULTIMATE where stated"
+ANALYSIS = (
+    "Structural loads of the carried helicopter hung by its rotor hub under the carrier "
+    "rotorcraft: the CS 29.865 hook loads (Nz x weight along the mast and on a cone of "
+    "inclined directions), fuselage and fin aerodynamic loads over the angle-of-attack / "
+    "sideslip envelope, parachute drag, gravity and inertia relief (quasi-static, free-free), "
+    "combined into shear forces and bending moments (SFBM) at the cut stations. Every table "
+    "and plot holds LIMIT loads unless its title says ULTIMATE (ultimate = factor of safety x "
+    "limit). Method: docs/loads-method.md.")
+CONVENTIONS = (
+    "Internal loads at a cut: the force and moment that the part AFT of the cut exerts on "
+    "the part FORWARD of it, moments about the point (x_cut, y0, z0) of the loads reference "
+    "axis; Vx > 0 is tension; +My puts the +z fibres in tension, +Mz the -y fibres.",
+    "A point load exactly at a cut station belongs to the forward part. Hook directions: "
+    "AXIAL along the mast, AZxxx inclined from the mast towards azimuth xxx deg (0 aft, "
+    "90 right).",
+    "LIMIT loads: hook load Nz x weight (CS 29.865) with the aerodynamic, parachute, gravity "
+    "and inertia loads. ULTIMATE = ultimate factor (CS 29.303: 1.5) x LIMIT, only where a "
+    "title says ULTIMATE.",
+)
+
+#: Report columns whose format is not that of their unit.
+NUMBER_FORMATS = format_by_header([(r"residual", "0.00E+00")])
+
+_PNG_DPI = 100
 
 
 def convert_by_component(frame, columns, units, component="component"):
@@ -122,38 +160,147 @@ def _loads_spec(names=COMPONENTS):
     return {n: (n, COMPONENT_KINDS[component_index(n)]) for n in names}
 
 
+def _unit(kind, units):
+    return unit_label(report_unit(kind, units))
+
+
+def _limit(ultimate):
+    return "ULTIMATE" if ultimate else "LIMIT"
+
+
+# ------------------------------------------------------------------------------- tables
 def sfbm_table(result, units="SI", ultimate=False):
     """Long SFBM table in report units: ``case, station, x [..], Vx [..] ... Mz [..]``."""
     frame = result.to_frame(ultimate=ultimate)
     spec = {"x_m": ("x", "length")}
     for name, column in zip(COMPONENTS, SFBM_CSV_COLUMNS[3:], strict=True):
         spec[column] = (name, COMPONENT_KINDS[component_index(name)])
-    return convert_columns(frame, spec, units)
+    out = convert_columns(frame, spec, units)
+    out.attrs["title"] = (f"SFBM of every case at every cut station, {_limit(ultimate)} loads, "
+                          f"{result.study.name}")
+    return out
 
 
 def envelope_report_table(result, units="SI", ultimate=False):
-    """Envelope (critical case, correlated loads) in report units, with a ``unit`` column."""
+    """Envelope with the critical case and correlated loads, in report units, with a
+    ``unit`` column for the row's ``value``."""
     frame = convert_by_component(result.envelope(ultimate=ultimate), ["value"], units)
     spec = {"x [m]": ("x", "length"), **_loads_spec()}
     return convert_columns(frame, spec, units)
 
 
+def envelope_wide_table(result, components, units="SI", ultimate=False):
+    """One row per station: max and min of each component with the case that gives it.
+
+    Parameters
+    ----------
+    result : LoadsResult
+    components : sequence of str
+        Components, e.g. ``("Vx", "Vy", "Vz")``.
+    units : str
+    ultimate : bool
+        Ultimate (factor x limit) instead of limit loads.
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``station, x [..], Vx max [..], Vx max case, Vx min [..], Vx min case, ...``.
+    """
+    loads = result.ultimate if ultimate else result.loads
+    ids = np.asarray(result.case_ids, dtype=object)
+    stations = np.arange(len(result.stations))
+    frame = {"station": list(result.station_ids),
+             labelled("x", "length", units): in_report_units(result.stations, "length",
+                                                             units)}
+    for name in components:
+        j = component_index(name)
+        kind = COMPONENT_KINDS[j]
+        for bound, pick in (("max", np.argmax), ("min", np.argmin)):
+            index = pick(loads[:, :, j], axis=0)
+            frame[labelled(f"{name} {bound}", kind, units)] = in_report_units(
+                loads[index, stations, j], kind, units)
+            frame[f"{name} {bound} case"] = ids[index]
+    return pd.DataFrame(frame)
+
+
 def case_report_table(result, units="SI"):
-    """Load-case table in report units (closure residuals converted)."""
-    return convert_columns(result.case_table(), {
+    """Load-case table in report units (closure residuals converted); the description is
+    kept for the cases listed by hand (generated cases are described by their columns)."""
+    frame = result.case_table()
+    listed = {c.id for c in result.study.listed}
+    frame["description"] = [d if c in listed else "" for c, d in
+                            zip(frame["case"], frame["description"], strict=True)]
+    frame = frame[[c for c in frame.columns if c != "description"] + ["description"]]
+    return convert_columns(frame, {
         "closure force residual [N]": ("closure force residual", "force"),
         "closure moment residual [N m]": ("closure moment residual", "moment"),
     }, units)
 
 
+def previous_station_status(result):
+    """How the previous envelope is known at each cut station, one entry per station.
+
+    Returns
+    -------
+    list of str
+        ``"given"`` where every component of the previous envelope has a station within
+        :data:`SAME_STATION` of the cut; ``"INTERPOLATED"`` where at least one component is
+        interpolated between its neighbouring stations; ``"not covered"`` outside its x
+        range; empty strings when there is no previous envelope.
+    """
+    prev = result.study.previous_envelope
+    x = np.asarray(result.stations, float)
+    if prev is None:
+        return [""] * len(x)
+    status = np.full(len(x), "given", dtype=object)
+    for name in COMPONENTS:
+        xp = np.sort(prev.loc[prev["component"] == name, "x [m]"].to_numpy(float))
+        if not len(xp):
+            status[:] = "not covered"
+            continue
+        near = np.min(np.abs(x[:, None] - xp[None, :]), axis=1) <= SAME_STATION
+        inside = (x >= xp[0] - SAME_STATION) & (x <= xp[-1] + SAME_STATION)
+        status[inside & ~near & (status == "given")] = "INTERPOLATED"
+        status[~inside] = "not covered"
+    return status.tolist()
+
+
 def comparison_report_table(result, units="SI"):
-    """Exceedance over the previous design envelope in report units, or None."""
+    """Exceedance over the previous design envelope, one row per station and component, in
+    report units, with how the previous value is known there; or None."""
     comparison = result.comparison()
     if comparison is None:
         return None
     frame = convert_by_component(
         comparison, ["new max", "new min", "previous max", "previous min"], units)
+    status = dict(zip(result.station_ids, previous_station_status(result), strict=True))
+    frame["previous values"] = frame["station"].map(status)
+    frame["status"] = frame["status"].map(_SHORT_STATUS).fillna(frame["status"])
+    frame = frame.rename(columns={"exceedance ratio": "exceedance ratio [-]"})
+    frame = frame.drop(columns=["exceeds"])
     return convert_columns(frame, {"x [m]": ("x", "length")}, units)
+
+
+_SHORT_STATUS = {"EXCEEDS previous envelope": "EXCEEDS", "within": "within",
+                 "not covered by previous envelope": "not covered"}
+
+
+def exceedance_wide_table(result, units="SI"):
+    """One row per station: the exceedance ratio of each component beside the station id,
+    and how the previous envelope is known there; or None."""
+    comparison = result.comparison()
+    if comparison is None:
+        return None
+    ratios = comparison.pivot(index="station", columns="component",
+                              values="exceedance ratio").reindex(list(result.station_ids))
+    frame = pd.DataFrame({"station": list(result.station_ids),
+                          labelled("x", "length", units): in_report_units(
+                              result.stations, "length", units)})
+    for name in COMPONENTS:
+        frame[f"{name} ratio [-]"] = ratios[name].to_numpy(float)
+    frame["worst [-]"] = ratios[list(COMPONENTS)].max(axis=1).to_numpy(float)
+    frame["previous values"] = previous_station_status(result)
+    return frame
 
 
 def hull_report_table(result, pair, stations, units="SI"):
@@ -186,9 +333,6 @@ def study_table(result, units="SI"):
     study = result.study
     items = study.airframe.mass_items
 
-    def unit(kind):
-        return unit_label(report_unit(kind, units))
-
     def conv(value, kind):
         return float(in_report_units(value, kind, units))
 
@@ -198,41 +342,38 @@ def study_table(result, units="SI"):
     c, s = len(result.case_ids), len(result.stations)
     rows = [
         ("study", study.name, ""),
-        ("slingloads version", slingloads.__version__, ""),
-        ("report unit system", units, ", ".join(unit(k) for k in ("length", "force",
-                                                                  "moment"))),
-        ("CSV files", "SI (m, N, N m), limit loads", ""),
-        ("aircraft mass", conv(items.total_mass, "mass"), unit("mass")),
-        ("CG x", conv(cg[0], "length"), unit("length")),
-        ("CG y", conv(cg[1], "length"), unit("length")),
-        ("CG z", conv(cg[2], "length"), unit("length")),
-        ("equivalent airspeed", conv(study.flight.eas, "speed"), unit("speed")),
-        ("density altitude", altitude, alt_unit),
-        ("air density", conv(study.flight.density, "density"), unit("density")),
+        ("CSV files", "SI (m, N, N m), LIMIT loads", ""),
+        ("aircraft mass", conv(items.total_mass, "mass"), _unit("mass", units)),
+        ("CG x", conv(cg[0], "length"), _unit("length", units)),
+        ("CG y", conv(cg[1], "length"), _unit("length", units)),
+        ("CG z", conv(cg[2], "length"), _unit("length", units)),
+        ("equivalent airspeed", conv(study.flight.eas, "speed"), _unit("speed", units)),
+        ("density altitude", float(altitude), alt_unit),
+        ("air density", conv(study.flight.density, "density"), _unit("density", units)),
         ("attitude (earth vertical in airframe axes)", result.attitude.describe(), ""),
         ("attitude pitch", float(np.degrees(result.attitude.pitch)), "deg"),
         ("attitude roll", float(np.degrees(result.attitude.roll)), "deg"),
-        ("hook load factor Nz", study.hook.nz, "-"),
+        ("hook load factor Nz (limit)", float(study.hook.nz), "-"),
         ("hook cone angle from the vertical", float(np.degrees(study.hook.angle)), "deg"),
         ("hook cone angle of the lateral directions", float(np.degrees(study.hook.lateral)),
          "deg"),
         ("hook cone shape", study.hook.cone, ""),
-        ("hook azimuths", study.hook.n_azimuth, "-"),
-        ("vertical hook case included", "yes" if study.hook.include_vertical else "no", ""),
-        ("towed-flight equilibrium cases", "yes" if study.hook.towed else "no", ""),
+        ("hook azimuths", int(study.hook.n_azimuth), "-"),
+        ("vertical hook case included", bool(study.hook.include_vertical), ""),
+        ("towed-flight equilibrium cases", bool(study.hook.towed), ""),
         ("aerodynamic envelope points",
          len(study.envelope.ids) if study.envelope is not None else 0, "-"),
-        ("parachute", "yes" if study.parachute is not None else "no", ""),
+        ("parachute", study.parachute is not None, ""),
         ("parachute line direction", study.chute_line if study.parachute is not None else "-",
          ""),
-        ("ultimate factor", study.ultimate_factor, "-"),
+        ("ultimate factor (CS 29.303)", float(study.ultimate_factor), "-"),
         ("load cases", c, "-"),
         ("cut stations", s, "-"),
         ("SFBM rows (cases x stations)", c * s, "-"),
         ("previous design envelope",
          "given" if study.previous_envelope is not None else "none", ""),
     ]
-    return pd.DataFrame(rows, columns=["item", "setting", "unit"])
+    return pd.DataFrame(rows, columns=["item", "value", "unit"])
 
 
 def attitude_table(result):
@@ -280,30 +421,187 @@ def towed_note(result):
 
 
 def closure_table(result):
-    """Free-free closure check (SI, as applied by the analysis): residuals vs tolerance."""
+    """Free-free closure check (SI, as applied by the analysis): the largest residual force
+    and moment over every case against the tolerance, and the verdict."""
     residual = np.abs(result.residual)
     tol = CLOSURE_TOLERANCE * result.residual_scale
     worst = int(np.argmax(residual.max(axis=1)))
     largest = float(residual.max())
-    rows = [
-        ("relative tolerance", CLOSURE_TOLERANCE, "-"),
-        ("load scale (largest force x max(1 m, airframe length))", result.residual_scale,
-         "N m"),
-        ("tolerance on every residual component", tol, "N or N m"),
-        ("max |force residual|", float(residual[:, :3].max()), "N"),
-        ("max |moment residual| at a cut aft of every load", float(residual[:, 3:].max()), "N m"),
-        ("case with the largest residual", result.case_ids[worst], ""),
-        ("result", "PASS" if largest <= tol else "FAIL", ""),
-    ]
-    return pd.DataFrame(rows, columns=["item", "setting", "unit"])
+    return pd.DataFrame([
+        (f"tolerance: {CLOSURE_TOLERANCE:g} x load scale {result.residual_scale:,.0f} N m "
+         "(largest force x max(1 m, airframe length))", tol, tol),
+        ("largest |residual| over every case, at a cut aft of every load",
+         float(residual[:, :3].max()), float(residual[:, 3:].max())),
+        (f"case with the largest residual: {result.case_ids[worst]}",
+         float(residual[worst, :3].max()), float(residual[worst, 3:].max())),
+        ("result: " + ("PASS" if largest <= tol else "FAIL"), np.nan, np.nan),
+    ], columns=["check", "force residual [N]", "moment residual [N m]"])
 
 
 def governing_report_table(result, units="SI"):
-    """Case and station of the largest |limit load| of each component, in report units."""
-    frame = convert_by_component(result.governing_cases(), ["value"], units)
+    """Case and station of the largest |limit load| of each component, in report units,
+    with the hook direction, aerodynamic point and parachute of the case."""
+    frame = result.governing_cases().drop(columns=["description"])
+    cases = result.cases.set_index("case")
+    for column in ("hook", "aero", "chute"):
+        frame[column] = cases.loc[frame["case"], column].to_numpy()
+    frame = convert_by_component(frame, ["value"], units)
     return convert_columns(frame, {"x [m]": ("x", "length")}, units)
 
 
+def inputs_tables(result, units="SI"):
+    """The mass items, cut stations and hardpoints the loads were computed from, in report
+    units: ``{"mass items": ..., "stations": ..., "hardpoints": ...}``."""
+    study = result.study
+    airframe = study.airframe
+    items = airframe.mass_items
+
+    def length(v):
+        return in_report_units(v, "length", units)
+
+    mass = pd.DataFrame({
+        "id": list(items.ids),
+        "description": list(items.description) or [""] * len(items.ids),
+        labelled("mass", "mass", units): in_report_units(items.mass, "mass", units),
+        labelled("x", "length", units): length(items.position[:, 0]),
+        labelled("y", "length", units): length(items.position[:, 1]),
+        labelled("z", "length", units): length(items.position[:, 2]),
+    })
+    inertia = np.asarray(items.inertia)
+    if np.any(inertia != 0):
+        for name, (a, b) in {"Ixx": (0, 0), "Iyy": (1, 1), "Izz": (2, 2), "Ixy": (0, 1),
+                             "Ixz": (0, 2), "Iyz": (1, 2)}.items():
+            mass[labelled(name, "inertia", units)] = in_report_units(inertia[:, a, b],
+                                                                     "inertia", units)
+    stations = pd.DataFrame({"station": list(airframe.station_ids),
+                             labelled("x", "length", units): length(airframe.stations)})
+    hp = airframe.hardpoints
+    rows = [("HUB", "rotor hub: hook load", hp.hub, np.nan)]
+    rows += [(i, "mast foot: hook load enters here", p, w)
+             for i, p, w in zip(hp.mast_feet_ids, hp.mast_feet, hp.mast_weights, strict=True)]
+    if hp.chute is not None:
+        rows.append(("CHUTE", "parachute attachment: drag", hp.chute, np.nan))
+    if study.fin is not None:
+        rows.append(("FIN_CP", "fin centre of pressure: side force",
+                     study.fin.centre_of_pressure, np.nan))
+    if study.fuselage is not None:
+        rows.append(("AERO_REF", "moment reference of the fuselage coefficients",
+                     study.fuselage.moment_reference, np.nan))
+    y0, z0 = airframe.reference_axis
+    points = np.array([r[2] for r in rows], float)
+    hardpoints = pd.DataFrame({
+        "id": [r[0] for r in rows], "role": [r[1] for r in rows],
+        labelled("x", "length", units): length(points[:, 0]),
+        labelled("y", "length", units): length(points[:, 1]),
+        labelled("z", "length", units): length(points[:, 2]),
+        "weight [-]": [r[3] for r in rows]})
+    axis = pd.DataFrame([
+        ("loads reference axis y0", float(length(y0)), _unit("length", units)),
+        ("loads reference axis z0", float(length(z0)), _unit("length", units)),
+        ("mast axis (unit vector) x", float(hp.mast_axis[0]), "-"),
+        ("mast axis (unit vector) y", float(hp.mast_axis[1]), "-"),
+        ("mast axis (unit vector) z", float(hp.mast_axis[2]), "-"),
+    ], columns=["item", "value", "unit"])
+    return {"mass items": mass, "stations": stations, "hardpoints": hardpoints, "axes": axis}
+
+
+# ------------------------------------------------------------------------------- findings
+def hook_angle_finding(result, lateral=None, justification=""):
+    """The hook-cone inclinations against CS 29.865(a), with the evidence they rest on.
+
+    Parameters
+    ----------
+    result : LoadsResult
+    lateral : object, optional
+        The lateral study of the same run (a result with ``study.recommended_angle`` [rad],
+        ``study.max_load_angle`` [rad], ``study.margin`` and ``study.pendulums``), or None.
+    justification : str
+        The Study sheet's 'hook angle justification' (a reference to the evidence).
+
+    Returns
+    -------
+    (str, str)
+        ``(verdict, evidence)``: the verdict starts with ``FLAG`` when an inclination used is
+        below 30 deg, or the lateral directions are inclined less than the lateral study
+        recommends.
+    """
+    hook = result.study.hook
+    ref = CS29865_ANGLE_DEG
+    fore_aft = float(np.degrees(hook.angle))
+    side = float(np.degrees(hook.lateral))
+    if lateral is not None:
+        st = lateral.study
+        rec, peak = float(np.degrees(st.recommended_angle)), float(np.degrees(st.max_load_angle))
+        evidence = (f"Lateral-step pendulum study of this run: largest load angle from the "
+                    f"mast {peak:.1f} deg over {len(st.pendulums)} cases (carrier motions x "
+                    f"rope lengths x bodies x stated ranges), margin {st.margin:g}, "
+                    f"recommended design angle {rec:.1f} deg for the lateral directions; see "
+                    f"the lateral report.")
+    else:
+        rec = peak = None
+        evidence = ("No lateral-step pendulum study in this run: nothing here shows that a "
+                    "smaller angle cannot be exceeded in service (run it with 'run lateral' = "
+                    "yes).")
+    if justification:
+        evidence += f" Study sheet 'hook angle justification': {justification}"
+    below = [(name, angle) for name, angle in (("fore-and-aft and diagonal", fore_aft),
+                                                ("lateral", side)) if angle < ref - 1e-9]
+    if below:
+        which = "; ".join(f"{name} directions {angle:.1f} deg" for name, angle in below)
+        verdict = (f"FLAG: hook loads inclined less than the {ref:.0f} deg of CS 29.865(a) from "
+                   f"the vertical ({which}). A smaller angle is allowed only if it is shown "
+                   f"that it cannot be exceeded in service.")
+        if fore_aft < ref - 1e-9:
+            verdict += (" The lateral-step study covers the lateral directions only: the "
+                        "fore-and-aft angle needs its own evidence.")
+        if rec is not None and rec > side + 1e-9:
+            verdict += (f" The lateral study recommends {rec:.1f} deg: the lateral angle used is "
+                        f"NOT covered by it.")
+        elif rec is not None and side < ref - 1e-9:
+            verdict += (f" The lateral study's recommended {rec:.1f} deg is within the lateral "
+                        f"angle used, provided its motions cover the operation being "
+                        f"certified.")
+    elif rec is not None and rec >= 90.0:
+        verdict = (f"FLAG: the lateral study finds load angles up to {peak:.1f} deg from the "
+                   f"mast (recommended {rec:.1f} deg with its margin), beyond the {side:.1f} deg "
+                   f"used for the lateral hook loads: the {ref:.0f} deg of CS 29.865(a) is not "
+                   f"conservative for the motions swept, and no hook cone can be built at "
+                   f"{rec:.1f} deg. Restrict the carrier motions or rope lengths, or "
+                   f"substantiate the lateral hook loads otherwise.")
+    elif rec is not None and rec > side + 1e-9:
+        verdict = (f"FLAG: the lateral study recommends {rec:.1f} deg, more than the {side:.1f} "
+                   f"deg used for the lateral hook loads: rerun the loads at {rec:.1f} deg.")
+    else:
+        verdict = (f"Hook loads inclined {fore_aft:.1f} deg from the vertical"
+                   + (f" ({side:.1f} deg laterally)" if abs(side - fore_aft) > 1e-9 else "")
+                   + f", the {ref:.0f} deg of CS 29.865(a) or more.")
+    return verdict, evidence
+
+
+def exceedance_findings(result, source=""):
+    """Lines on the exceedance check: how many stations exceed, and where the previous
+    envelope comes from."""
+    comparison = result.comparison()
+    if comparison is None:
+        return ["No previous design envelope given: no exceedance check."]
+    over = comparison[comparison["exceeds"]]
+    worst = comparison["exceedance ratio"].replace(np.inf, np.nan)
+    status = previous_station_status(result)
+    interpolated = sum(s == "INTERPOLATED" for s in status)
+    lines = [f"{len(over)} of {len(comparison)} station x component entries exceed the "
+             f"previous design envelope (largest finite ratio "
+             f"{np.nanmax(worst.to_numpy(float)) if worst.notna().any() else 0:.2f}); "
+             f"components: {', '.join(sorted(set(over['component']))) or 'none'}. Sheets "
+             "Exceedance and ExceedanceDetail."]
+    if interpolated:
+        lines.append(f"{interpolated} cut station(s) are not stations of the previous envelope:"
+                     " its values there are INTERPOLATED linearly (marked on the sheets).")
+    lines.append("Previous envelope: " + (source or "source not stated (Study sheet "
+                                          "'previous envelope source')."))
+    return lines
+
+
+# ------------------------------------------------------------------------------- writing
 def _safe(text):
     """A file-name-safe version of a station id (the Stations reader refuses ids that give
     the same one)."""
@@ -319,6 +617,7 @@ def _default_hull_station(result, pair):
 def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
                         input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
+                        info=None, findings=None, sfbm_workbook=False, figures=None,
                         nastran=None, checks=None, dynamics=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
@@ -330,11 +629,11 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     stem : str
         File-name stem: ``<stem>-loads.xlsx``, ``<stem>-sfbm.csv``...
     units : str
-        Unit system of the workbook and plots, ``"SI"`` (m, N, N m) or ``"US"`` (in, lbf,
+        Unit system of the workbooks and plots, ``"SI"`` (m, N, N m) or ``"US"`` (in, lbf,
         lbf in). The CSV files are always SI.
     inputs_digest : dict or pandas.DataFrame, optional
-        What the analysis was run from (input file name, SHA-256, ...), shown first on the
-        Summary sheet.
+        What the analysis was run from (input file name, SHA-256, ...), for the cover when
+        no ``info`` is given.
     hull_pairs : sequence of (str, str)
         Component pairs of the 2-D envelopes.
     hull_stations : sequence of (str or int), optional
@@ -346,6 +645,17 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Rows per sheet including the header (Excel's limit by default).
     plots : bool
         Draw the PNG plots and the Plots sheet (False for fast batch runs).
+    info : ReportInfo, optional
+        Identification of the report (cover, page headers and footers). Default: from
+        ``inputs_digest``.
+    findings : dict, optional
+        ``{"lateral": lateral result or None, "hook angle justification": str,
+        "previous envelope source": str}`` for the Summary's findings.
+    sfbm_workbook : bool
+        Also write ``<stem>-sfbm.xlsx``, every case at every station in report units (the
+        CSV file always has them in SI).
+    figures : FigureRenderer, optional
+        Already drawing this report's figures (:func:`start_figures`); default: drawn now.
     nastran : dict or True, optional
         Also write ``<stem>-loads.bdf``, the load cases as a Nastran input file in the units
         ``units``, with these options of :func:`~slingloads.io.loads.nastran.prepare_nastran`
@@ -369,11 +679,41 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         On an unknown unit system, component or station, or an output onto an input file;
         nothing is written then.
     """
-    from slingloads.io.loads.plots import (  # matplotlib loads only when writing
-        COMPONENT_TAGS,
+    check_units(units)
+    jobs, titles, stations = figure_jobs(result, units, hull_pairs, hull_stations)
+    if not plots:
+        jobs, titles = {}, {}
+    tags = list(jobs)
+    names = [f"{stem}-loads.xlsx", *([f"{stem}-sfbm.xlsx"] if sfbm_workbook else []),
+             f"{stem}-sfbm.csv", f"{stem}-envelope.csv", *(f"{stem}-{tag}.png" for tag in tags)]
+    deck = None
+    if nastran is not None and nastran is not False:
+        deck = prepare_nastran(result, units=units, inputs_digest=inputs_digest,
+                               **({} if nastran is True else dict(nastran)))
+        names.append(f"{stem}-loads.bdf")
+    for name in names:  # fail before the slow work, not after it
+        check_not_input(Path(out_dir) / name, input_paths)
+    if info is None:
+        info = info_from_digest(inputs_digest, title=TITLE, analysis=ANALYSIS,
+                                study=result.study.name, units=units, conventions=CONVENTIONS)
+    info = info.with_files(n for n in names if not n.endswith("-loads.xlsx"))
+
+    with drawings(jobs, figures) as pngs:  # drawn while the tables are built and written
+        return _publish(result, out_dir, stem, units, hull_pairs, stations, findings,
+                        input_paths, info, max_rows, sfbm_workbook, pngs, titles, deck,
+                        checks, dynamics)
+
+
+def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None):
+    """The loads report's figures: ``({tag: (plot function, args, kwargs)}, {tag: title},
+    stations of the hull tables)``, after checking the hull pairs and stations.
+
+    Default hull plots: one per pair at the station where its first component is largest.
+    """
+    from slingloads.io.loads.plots import (  # matplotlib loads only when plotting
         plot_hull,
         plot_sfbm,
-        plot_sfbm_grid,
+        plot_station_diagram,
     )
 
     check_units(units)
@@ -385,57 +725,76 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     stations = list(hull_stations) if hull_stations is not None else list(result.station_ids)
     for station in stations:
         _station_index(result, station)
-    plot_stations = {pair: (stations if hull_stations is not None
-                            else [_default_hull_station(result, pair)]) for pair in hull_pairs}
-
-    hull_plots = {}
-    for pair, where in plot_stations.items():
+    jobs = {"stations": (plot_station_diagram, (result.study, units), {})}
+    titles = {"stations": "Cut stations, mass items and hardpoints where the LIMIT loads enter "
+                          "(side and top views)"}
+    for name in PNG_COMPONENTS:
+        jobs[COMPONENT_TAGS[name]] = (plot_sfbm, (result, name, units), {})
+        titles[COMPONENT_TAGS[name]] = f"{COMPONENT_TITLES[name]} {name}, LIMIT loads"
+    for pair in hull_pairs:
+        where = stations if hull_stations is not None else [_default_hull_station(result, pair)]
         for station in where:
             index = _station_index(result, station)
-            hull_plots[f"hull_{pair[0]}_{pair[1]}_{_safe(result.station_ids[index])}"] = (
-                pair, index)
-    tags = ([COMPONENT_TAGS[n] for n in PNG_COMPONENTS] + ["sfbm_all", *hull_plots]
-            if plots else [])
-    names = [f"{stem}-loads.xlsx", f"{stem}-sfbm.csv", f"{stem}-envelope.csv",
-             *(f"{stem}-{tag}.png" for tag in tags)]
-    deck = None
-    if nastran is not None and nastran is not False:
-        deck = prepare_nastran(result, units=units, inputs_digest=inputs_digest,
-                               **({} if nastran is True else dict(nastran)))
-        names.append(f"{stem}-loads.bdf")
-    for name in names:  # fail before the slow work, not after it
-        check_not_input(Path(out_dir) / name, input_paths)
+            tag = f"hull_{pair[0]}_{pair[1]}_{_safe(result.station_ids[index])}"
+            jobs[tag] = (plot_hull, (result, index, pair, units), {})
+            titles[tag] = f"{pair[0]}-{pair[1]} LIMIT envelope at {result.station_ids[index]}"
+    return jobs, titles, stations
 
-    pngs = {}
-    if plots:
-        for name in PNG_COMPONENTS:
-            pngs[COMPONENT_TAGS[name]] = figure_png(plot_sfbm(result, name, units), _PNG_DPI)
-        pngs["sfbm_all"] = figure_png(plot_sfbm_grid(result, units), _PNG_DPI)
-        for tag, (pair, index) in hull_plots.items():
-            pngs[tag] = figure_png(plot_hull(result, index, pair, units), _PNG_DPI)
-    embedded = {}
-    if plots:
-        embedded = {"X shear (Vx)": pngs["X_shear"], "Y shear (Vy)": pngs["Y_shear"],
-                    "All six components": pngs["sfbm_all"]}
-        embedded.update({tag: pngs[tag] for tag in hull_plots})
-    sheets = _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks)
+
+def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input_paths,
+             info, max_rows, sfbm_workbook, pngs, titles, deck=None, checks=None,
+             dynamics=None):
+    """Build the tables and publish every file of the loads report (the PNGs are awaited
+    when the Plots sheet is written)."""
+    embedded = {titles[tag]: png for tag, png in pngs.items()}
+    sheets = _workbook_sheets(result, units, hull_pairs, stations, findings or {}, checks)
     if deck is not None:
         sheets["Nastran"] = nastran_sheet(deck)
+    highlight = {"Exceedance": Highlight([c for c in sheets_columns(sheets, "Exceedance")
+                                          if c.endswith("ratio [-]") or c == "worst [-]"]),
+                 "ExceedanceDetail": Highlight(["exceedance ratio [-]"], 1.0)}
     if dynamics is not None:
         sheets["Dynamics"] = dynamics_sections(result, dynamics, units)
-
     with atomic_outputs(out_dir, inputs=input_paths) as out:
         write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,
-                       number_format=NUMBER_FORMATS,
-                       highlight={"Exceedance": Highlight(["exceedance ratio"], 1.0)},
-                       max_rows=max_rows)
+                       number_format=NUMBER_FORMATS, highlight=highlight, info=info,
+                       images_title=f"Plots of the LIMIT loads ({len(embedded)})")
+        if sfbm_workbook:
+            write_workbook(out.path(f"{stem}-sfbm.xlsx"), {"SFBM": sfbm_table(result, units)},
+                           max_rows=max_rows,
+                           info=replace(info, title=f"{TITLE}: SFBM of every case (data)",
+                                        files=()))
         write_csv(result.to_frame(), out.path(f"{stem}-sfbm.csv"), columns=SFBM_CSV_COLUMNS)
-        write_csv(result.envelope(), out.path(f"{stem}-envelope.csv"))
+        write_csv(envelope_csv_frame(result), out.path(f"{stem}-envelope.csv"))
         for tag, png in pngs.items():
-            out.path(f"{stem}-{tag}.png").write_bytes(png)
+            out.path(f"{stem}-{tag}.png").write_bytes(png_bytes(png))
         if deck is not None:
             deck.write(out.path(f"{stem}-loads.bdf"))
     return out.written
+
+
+def envelope_csv_frame(result):
+    """The LIMIT envelope as written to the CSV file (SI, ``name_unit`` headers)."""
+    env = result.envelope()
+    moment = env["component"].str.startswith("M").to_numpy()
+    frame = pd.DataFrame({
+        "station": env["station"], "x_m": env["x [m]"], "component": env["component"],
+        "bound": env["bound"], "case": env["case"],
+        "value_N": np.where(moment, np.nan, env["value"].to_numpy(float)),
+        "value_Nm": np.where(moment, env["value"].to_numpy(float), np.nan)})
+    for name, column in zip(COMPONENTS, SFBM_CSV_COLUMNS[3:], strict=True):
+        frame[column] = env[name].to_numpy(float)
+    return frame[list(ENVELOPE_CSV_COLUMNS)]
+
+
+def sheets_columns(sheets, name):
+    """Column names of the tables of one sheet."""
+    content = sheets.get(name)
+    if isinstance(content, pd.DataFrame):
+        return list(content.columns)
+    if isinstance(content, str) or content is None:
+        return []
+    return [c for s in content if s.table is not None for c in s.table.columns]
 
 
 def nastran_sheet(deck):
@@ -448,21 +807,34 @@ def nastran_sheet(deck):
             Section("Grids (model axes, file units) and CONM2 elements", deck.grid_table())]
 
 
-def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks=None):
+def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None):
     """The sheets of the loads workbook, in order."""
-    digest = digest_frame(inputs_digest)
+    study = result.study
+    verdict, evidence = hook_angle_finding(result, findings.get("lateral"),
+                                           findings.get("hook angle justification", ""))
+    closure = closure_table(result)
+    closure_line = (f"Free-free closure: {closure.iloc[-1]['check'][len('result: '):]} "
+                    f"(largest residual against {CLOSURE_TOLERANCE:g} x the load scale).")
+    towed = towed_note(result)
+    notes = [verdict, "Evidence: " + evidence,
+             *(["FLAG: towed cables " + towed[towed.index("OUTSIDE"):]] if "OUTSIDE" in towed
+               else []),
+             *exceedance_findings(result, findings.get("previous envelope source", "")),
+             closure_line]
     summary = [
-        Section("Inputs", digest) if digest is not None
-        else Section("Inputs", note="no input digest given"),
+        Section("Summary of the LIMIT loads analysis: findings", note="\n".join(notes)),
+        *warning_sections(findings.get("warnings", ())),
     ]
     if checks is not None and len(checks):
-        failed = checks[checks["status"] != "ok"]
-        summary.append(Section(
-            "Consistency with the other analyses of this run", checks,
-            note=("WARNING: " + " ".join(failed["note"])) if len(failed) else
-                 "Every check against the other analyses of this run passes."))
+        failed = checks["status"] != "ok"
+        lines = [f"WARNING: {n}" for n in checks["note"][failed]] or [
+            "Every check against the other analyses of this run passes: "
+            + " ".join(checks["note"])]
+        summary.append(Section(  # the notes above the table, which stays narrow for print
+            "Consistency with the other analyses of this run",
+            checks.drop(columns=["note"], errors="ignore"), note="\n".join(lines)))
     summary += [
-        Section("Study", study_table(result, units)),
+        Section("Study settings", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
                 note=result.attitude.describe() + ". Gravity, the vertical hook case and the "
                      "hook cone are taken about this vertical."),
@@ -471,32 +843,82 @@ def _workbook_sheets(result, units, inputs_digest, hull_pairs, stations, checks=
         Section("Towed-flight equilibrium cases: trimmed cable angles",
                 result.towed_table() if (result.cases["hook"] == "TOW").any() else None,
                 note=towed_note(result)),
-        Section("Closure check (free-free equilibrium, SI as checked)", closure_table(result)),
-        Section("Governing cases (largest |limit load| of each component)",
-                governing_report_table(result, units)),
+        Section("Closure check (free-free equilibrium, SI as checked)", closure),
     ]
-    comparison = comparison_report_table(result, units)
-    exceedance = (
-        [Section("Exceedance over the previous design envelope",
-                 comparison,
-                 note="ratio = max(new max+/previous max+, |new min-|/|previous min-|); "
-                      "above 1 the new envelope exceeds the previous one (red)")]
-        if comparison is not None else "no previous envelope given")
-    factor = result.study.ultimate_factor
-    ultimate = [Section(f"Ultimate loads = {factor:g} x limit loads",
-                        envelope_report_table(result, units, ultimate=True),
-                        note=f"Ultimate factor of safety {factor:g} (CS 29.303). The "
-                             "envelope below is at ultimate; every other sheet, and the "
-                             "CSV files, hold limit loads.")]
-    hulls = [Section(f"{a}-{b} convex hull vertices (counter-clockwise), limit loads",
-                     hull_report_table(result, (a, b), stations, units))
-             for a, b in hull_pairs] or "no hull pair requested"
+    tables = inputs_tables(result, units)
+    total = float(in_report_units(study.airframe.mass_items.total_mass, "mass", units))
+    inputs = [
+        Section("Inputs of the LIMIT loads analysis: mass items, cut stations, hardpoints",
+                note="As read from the input workbook (Study, MassItems, Stations, Hardpoints "
+                     "sheets), in the report's units."),
+        Section("Mass items (transport configuration)", tables["mass items"],
+                note=f"{len(tables['mass items'])} items, total {total:,.1f} "
+                     f"{_unit('mass', units)}."),
+        Section("Cut stations", tables["stations"]),
+        Section("Hardpoints (where external loads enter)", tables["hardpoints"],
+                note="Weight: share of the hub load taken by each mast foot in the "
+                     "rigid-body (RBE3-like) distribution."),
+        Section("Loads reference axis and mast axis", tables["axes"]),
+    ]
+    factor = study.ultimate_factor
+    envelope = [
+        Section("Envelope of LIMIT loads: max and min of each component over every case, with "
+                "the critical case",
+                note="Correlated loads of each critical case: sheet Correlated. ULTIMATE "
+                     "loads: sheet Ultimate."),
+        Section("Governing cases: largest |LIMIT load| of each component",
+                governing_report_table(result, units)),
+        Section("Shear forces (LIMIT): Vx axial (> 0 tension), Vy and Vz",
+                envelope_wide_table(result, COMPONENTS[:3], units)),
+        Section("Moments (LIMIT): Mx torsion, My and Mz bending about the loads reference "
+                "axis", envelope_wide_table(result, COMPONENTS[3:], units)),
+    ]
+    correlated = [Section("Envelope of LIMIT loads with the correlated loads of the critical "
+                          "case (one row per station, component and bound)",
+                          envelope_report_table(result, units))]
+    wide = exceedance_wide_table(result, units)
+    if wide is not None:
+        source = findings.get("previous envelope source", "")
+        exceedance = [Section(
+            "Exceedance of the LIMIT envelope over the previous design envelope, by station",
+            wide,
+            note="ratio = max(new max+ / previous max+, |new min-| / |previous min-|); above 1 "
+                 "(red) the new envelope exceeds the previous one. 'previous values': given at "
+                 "this station, or INTERPOLATED linearly between the previous envelope's "
+                 "stations. Where the previous envelope comes from: "
+                 + ("Summary, findings." if source else "not stated (Study sheet 'previous "
+                    "envelope source')."))]
+        detail = [Section("Exceedance over the previous design envelope, LIMIT loads, every "
+                          "station and component", comparison_report_table(result, units))]
+    else:
+        exceedance = detail = "no previous envelope given"
+    ultimate = [
+        Section(f"Envelope of ULTIMATE loads = {factor:g} x LIMIT loads",
+                note=f"Ultimate factor of safety {factor:g} (CS 29.303). Only this sheet holds "
+                     "ULTIMATE loads; every other sheet, plot and CSV file holds LIMIT loads."),
+        Section(f"Shear forces (ULTIMATE = {factor:g} x LIMIT)",
+                envelope_wide_table(result, COMPONENTS[:3], units, ultimate=True)),
+        Section(f"Moments (ULTIMATE = {factor:g} x LIMIT)",
+                envelope_wide_table(result, COMPONENTS[3:], units, ultimate=True)),
+    ]
+    hulls = ([Section("2-D envelopes (convex hulls) of LIMIT loads at chosen stations",
+                      note="Vertices counter-clockwise; every case inside or on the hull. "
+                           "Stations and pairs: Study sheet 'hull stations', 'hull pairs'.")]
+             + [Section(f"{a}-{b} convex hull vertices, LIMIT loads",
+                        hull_report_table(result, (a, b), stations, units))
+                for a, b in hull_pairs]) if hull_pairs else "no hull pair requested"
+    cases = case_report_table(result, units)
+    cases_sheet = [Section(
+        f"Load cases ({len(cases)}): hook direction x aerodynamic point x parachute, load "
+        "factors, angular accelerations and closure residuals (LIMIT)", cases)]
     return {
         "Summary": summary,
-        "LoadCases": case_report_table(result, units),
-        "Envelope": envelope_report_table(result, units),
+        "Inputs": inputs,
+        "LoadCases": cases_sheet,
+        "Envelope": envelope,
+        "Correlated": correlated,
         "Exceedance": exceedance,
-        "SFBM": sfbm_table(result, units),
+        "ExceedanceDetail": detail,
         "Ultimate": ultimate,
         "Hulls": hulls,
     }
@@ -581,10 +1003,26 @@ def _finite(result, study):
     return result
 
 
-def write(result, out_dir, stem, units, study, checks=None):
+def start_figures(result, units, study):
+    """Start drawing the figures of the loads report of a workbook's study (worker processes
+    draw them while the other analyses run); pass the result to :func:`write`."""
+    jobs, _, _ = figure_jobs(result, units, study.options.get("hull pairs", (("Vy", "Mz"),)),
+                             study.options.get("hull stations"))
+    return start_drawing(jobs, _PNG_DPI)
+
+
+def write(result, out_dir, stem, units, study, figures=None, checks=None):
     """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
-    run's outputs ``out_dir``, with the study's inputs digest and hull options, and the
-    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`)."""
+    run's outputs ``out_dir``, with the study's identification, hull options, warnings and
+    findings (the lateral study of the same run, when there is one, is the evidence on the
+    hook angle), and the ``checks`` against the other analyses of the run
+    (:mod:`slingloads.io.consistency`)."""
+    info = report_info(study, title=TITLE, analysis=ANALYSIS, units=units,
+                       conventions=CONVENTIONS)
+    findings = {"lateral": getattr(study, "results", {}).get("lateral"),
+                "hook angle justification": study.options.get("hook angle justification", ""),
+                "previous envelope source": study.options.get("previous envelope source", ""),
+                "warnings": list(study.warnings)}
     nastran = None
     if study.options.get("nastran"):
         nastran = {**study.options["nastran settings"],
@@ -595,6 +1033,8 @@ def write(result, out_dir, stem, units, study, checks=None):
                                    inputs_digest=study.digest(),
                                    hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
                                    hull_stations=study.options.get("hull stations"),
-                                   input_paths=study.input_files, nastran=nastran,
-                                   checks=checks,
+                                   input_paths=study.input_files, info=info,
+                                   findings=findings,
+                                   sfbm_workbook=study.options.get("sfbm workbook", False),
+                                   figures=figures, nastran=nastran, checks=checks,
                                    dynamics=None if handoff is None else handoff.comparison)

@@ -88,6 +88,9 @@ PARAMETERS = (
               "Where 'hook lateral angle' applies: 'lateral directions' (azimuths 90 and 270 "
               "deg only: what the lateral study covers) or 'elliptical' (from the fore-and-aft "
               "to the lateral angle, when longitudinal evidence exists).", "hook"),
+    Parameter("hook angle justification", TEXT, "", "",
+              "Where a hook angle below 30 deg is shown not to be exceeded in service (a "
+              "report reference); quoted beside the flag on the loads Summary.", "hook"),
     Parameter("hook azimuths", INTEGER, "", 8,
               "Number of off-vertical hook directions evenly spread in azimuth about the "
               "vertical (0 = aft, 90 deg = right).", "hook", Bounds(0, MAX_HOOK_AZIMUTHS)),
@@ -113,6 +116,12 @@ PARAMETERS = (
               Bounds(1, 10)),
     Parameter("parachute line direction", TEXT, "", "relative wind",
               "'relative wind' or 'fuselage axis'.", "parachute"),
+    Parameter("previous envelope source", TEXT, "", "",
+              "Where the PreviousEnvelope sheet comes from (report, loads model, issue), "
+              "quoted beside the exceedance check.", "report"),
+    Parameter("SFBM workbook", FLAG, "", "no",
+              "Also write <input>-sfbm.xlsx: the SFBM of every case at every station in the "
+              "report's units (the -sfbm.csv file always has them, in SI).", "report"),
     Parameter("hull stations", TEXT, "", "",
               "Comma-separated station ids for the 2-D envelopes (empty: three stations "
               "around the mast).", "report"),
@@ -121,30 +130,62 @@ PARAMETERS = (
     *NASTRAN_PARAMETERS,
 )
 
+#: Components of the PreviousEnvelope sheet: name, kind, unit, what it is.
+_PREVIOUS = (
+    ("Vx", "force", "N", "axial force Vx (> 0 tension)"),
+    ("Vy", "force", "N", "shear force Vy (along +y)"),
+    ("Vz", "force", "N", "shear force Vz (along +z)"),
+    ("Mx", "moment", "N m", "torsion Mx (right-handed about +x)"),
+    ("My", "moment", "N m", "bending moment My (about +y; > 0 puts the +z fibres in tension)"),
+    ("Mz", "moment", "N m", "bending moment Mz (about +z; > 0 puts the -y fibres in tension)"),
+)
+
+
+def _previous_columns():
+    """The min and max columns of every component of the previous design envelope."""
+    typical = "Typical: of the order of the report's Envelope sheet."
+    for name, kind, unit, what in _PREVIOUS:
+        yield Column(f"{name} min", kind, unit,
+                     help=f"Previous design envelope: smallest (most negative) LIMIT {what} at "
+                          f"this station, same sign convention as the report. {typical}")
+        yield Column(f"{name} max", kind, unit,
+                     help=f"Previous design envelope: largest LIMIT {what} at this station, >= "
+                          f"min. {typical}")
+
+
 SHEETS = (
     TableSheet("AeroEnvelope", (
-        Column("id", TEXT), Column("alpha", "angle", "deg", bounds=TABLE_ANGLE),
-        Column("beta", "angle", "deg", bounds=TABLE_ANGLE),
+        Column("id", TEXT, help="Name of the point, used in the case ids and the LoadCases "
+                                "sheet, e.g. A+B+ (alpha up, beta right) or CENTRE."),
+        Column("alpha", "angle", "deg",
+               help="Angle of attack of the point, positive nose up. Typical: -10 to +10 deg "
+                    "(the multibody campaign's envelope).", bounds=TABLE_ANGLE),
+        Column("beta", "angle", "deg",
+               help="Sideslip of the point, positive with the wind from the right. Typical: "
+                    "-15 to +15 deg.", bounds=TABLE_ANGLE),
     ), help="Points of the angle-of-attack / sideslip envelope (corners and centre).",
        max_rows=MAX_STATIONS),
     TableSheet("LoadCases", (
-        Column("id", TEXT, help="Unique case id."),
-        Column("hook", TEXT, help="VERTICAL, AZ000, AZ045, ..., TOW (towed-flight "
-               "equilibrium) or NONE; AXIAL is read as VERTICAL."),
-        Column("aero", TEXT, help="An AeroEnvelope id or NONE."),
-        Column("chute", FLAG, help="Parachute drag on (yes/no)."),
-        Column("description", TEXT, required=False, default=""),
+        Column("id", TEXT, help="Unique case id, printed on the reports, e.g. LC-SPECIAL-1."),
+        Column("hook", TEXT,
+               help="Hook-load direction: VERTICAL (along the earth vertical), AZ000, AZ045, "
+                    "... (inclined from the vertical by 'hook angle from vertical' towards "
+                    "azimuth 000 = aft, 090 = right), TOW (towed-flight equilibrium) or NONE (no "
+                    "hook load); AXIAL is read as VERTICAL."),
+        Column("aero", TEXT, help="An AeroEnvelope id, or NONE (no aerodynamic load)."),
+        Column("chute", FLAG, help="Parachute drag on: yes or no."),
+        Column("description", TEXT, required=False, default="",
+               help="Free text printed beside the case on the LoadCases sheet of the report."),
     ), help="Optional: cases listed by hand (added to the generated matrix). In all, at most "
        f"{MAX_LOAD_CASES:,} cases, and at most {MAX_SFBM_ROWS:,} cases x cut stations.",
        max_rows=MAX_LOAD_CASES),
     TableSheet("PreviousEnvelope", (
-        Column("x", "length", "m", bounds=COORDINATE),
-        Column("Vx min", "force", "N"), Column("Vx max", "force", "N"),
-        Column("Vy min", "force", "N"), Column("Vy max", "force", "N"),
-        Column("Vz min", "force", "N"), Column("Vz max", "force", "N"),
-        Column("Mx min", "moment", "N m"), Column("Mx max", "moment", "N m"),
-        Column("My min", "moment", "N m"), Column("My max", "moment", "N m"),
-        Column("Mz min", "moment", "N m"), Column("Mz max", "moment", "N m"),
+        Column("x", "length", "m",
+               help="Station of the previous envelope, x positive aft, strictly increasing. "
+                    "The report interpolates linearly between these stations (and marks the "
+                    "cut stations it interpolated); outside them it does not compare. Typical: "
+                    "the cut stations of the Stations sheet.", bounds=COORDINATE),
+        *_previous_columns(),
     ), help="Optional: the previous design envelope (limit loads) for the exceedance check.",
        max_rows=MAX_STATIONS),
 )

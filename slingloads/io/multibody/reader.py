@@ -41,6 +41,7 @@ from slingloads.io.multibody.schema import (
     SHEETS,
     TAILS,
 )
+from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES
 from slingloads.models.aero_tables import Table1D
 from slingloads.models.atmosphere import isa_density, true_airspeed
 from slingloads.models.gusts import GUST_KINDS, GUST_VELOCITY, make_gust
@@ -115,6 +116,7 @@ def read(reader, params, study):
     settings = read_settings(reader, params)
     system, choices = read_system(reader, params, study)
     manoeuvres, source = read_manoeuvres(reader, params, system, settings["t_end"])
+    check_work(params, len(manoeuvres), settings)
     warnings = tuple(system.warnings(choices["margin"]))
     return MultibodyInputs(system=system, manoeuvres=manoeuvres, settings=settings,
                            warnings=warnings, manoeuvre_source=source, **choices)
@@ -149,6 +151,22 @@ def read_settings(reader, params):
     return {"t_end": t_end, "dt": dt if dt > 0 else None, "output_interval": interval,
             "rtol": params.positive("multibody relative tolerance"),
             "atol": params.positive("multibody absolute tolerance")}
+
+
+def check_work(params, runs, settings):
+    """The runs asked for stay within the limits (before anything is computed): stored
+    samples (runs x samples) and, with a fixed step, run-steps (runs x steps)."""
+    samples = runs * (round(settings["t_end"] / settings["output_interval"]) + 1)
+    params.check("multibody output interval", samples <= MAX_MULTIBODY_SAMPLES,
+                 f"too much work: {runs} runs of {settings['t_end']:g} s sampled at this "
+                 f"interval store {samples:,} samples, more than the "
+                 f"{MAX_MULTIBODY_SAMPLES:,} allowed (limits of slingloads)")
+    if settings["dt"] is not None:
+        steps = runs * settings["t_end"] / settings["dt"]
+        params.check("multibody time step", steps <= MAX_MULTIBODY_RUN_STEPS,
+                     f"too much work: {runs} runs of {settings['t_end']:g} s at this step are "
+                     f"{steps:,.0f} steps, more than the {MAX_MULTIBODY_RUN_STEPS:,} allowed "
+                     "(limits of slingloads); use the adaptive step (0) or a longer one")
 
 
 # --------------------------------------------------------------------------- the system
@@ -340,13 +358,12 @@ class _Rows:
     def __init__(self, reader, table):
         self.reader, self.t = reader, table
 
-    def raw(self, column, i):
-        return self.reader.book[self.t.sheet][self.t.cell(column, i)].value
-
     def error(self, column, i, rule):
-        cell = self.t.cell(column, i) if self.t.has(column) else "A1"
-        value = self.raw(column, i) if self.t.has(column) else None
-        return self.reader.error(rule, value, self.t.sheet, cell)
+        """An InputError at the cell, echoing the value as written with its header's unit
+        (at the sheet's first cell for a missing column)."""
+        if self.t.has(column):
+            return self.t.error(column, i, rule)
+        return self.reader.error(rule, None, self.t.sheet, "A1")
 
     def given(self, column, i):
         if not self.t.has(column):

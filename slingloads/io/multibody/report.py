@@ -37,6 +37,7 @@ from slingloads.io.common.excel import Section, figure_png, format_by_header, wr
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
+    csv_frame,
     digest_frame,
     in_report_units,
     report_unit,
@@ -343,7 +344,8 @@ def write(result, out_dir, stem, units, study):
         write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
                        {titles[t]: png for t, png in pngs.items()},
                        number_format=NUMBER_FORMATS)
-        write_csv(history_table(result, "SI"), out.path(f"{stem}-multibody-histories.csv"))
+        write_csv(csv_frame(history_table(result, "SI")),
+                  out.path(f"{stem}-multibody-histories.csv"))
         for tag, png in pngs.items():
             out.path(f"{stem}-multibody-{tag}.png").write_bytes(png)
     return out.written

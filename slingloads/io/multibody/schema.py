@@ -10,7 +10,25 @@ and signs: ``docs/multibody.md``.
 
 from __future__ import annotations
 
-from slingloads.io.common.schema import TEXT, Column, Parameter, Section, TableSheet
+from slingloads.io.common.schema import (
+    ABSOLUTE_TOLERANCE,
+    CABLE_EA,
+    CABLE_LENGTH,
+    CANOPY_MASS,
+    CARRIER_MASS,
+    DRAG_AREA,
+    ISA_ALTITUDE,
+    OUTPUT_INTERVAL,
+    RELATIVE_TOLERANCE,
+    RUN_LENGTH,
+    TEXT,
+    Bounds,
+    Column,
+    Parameter,
+    Section,
+    TableSheet,
+)
+from slingloads.limits import MAX_AERO_ROWS, MAX_MULTIBODY_RUNS
 
 #: Valid values of 'multibody configuration'.
 CONFIGURATIONS = ("with parachute", "without parachute")
@@ -32,14 +50,18 @@ DISTURBANCE_COLUMNS = {"yaw": "yaw", "pitch": "pitch", "roll": "roll",
                        "longitudinal offset": "longitudinal", "vertical offset": "vertical"}
 
 _S = "multibody"
+#: Bounds of an initial attitude disturbance.
+ANGLE = Bounds(-180, 180, unit="deg")
+#: Bounds of an initial displacement of the CG. [m]
+OFFSET = Bounds(-100, 100, unit="m")
 
 PARAMETERS = (
     Parameter("multibody airspeed EAS", "speed", "kt", 80.0,
               "Equivalent airspeed of the towed flight, >= 0: the trim, the linear modes, "
               "the free responses and the gusts (forward accelerations and wind ramps start "
-              "from hover).", _S),
+              "from hover).", _S, Bounds(0, 200, unit="kt")),
     Parameter("multibody density altitude", "length", "ft", 0.0,
-              "ISA density altitude (paper: sea level, 5000 and 10000 ft).", _S),
+              "ISA density altitude (paper: sea level, 5000 and 10000 ft).", _S, ISA_ALTITUDE),
     Parameter("multibody configuration", TEXT, "", "with parachute",
               f"{' or '.join(repr(c) for c in CONFIGURATIONS)}: the drogue on its line from "
               "the Hardpoints row of kind 'chute' (paper section 4), or none (section 5).", _S),
@@ -50,15 +72,17 @@ PARAMETERS = (
               _S),
     Parameter("multibody horizontal tail area", "area", "m^2", 0.0,
               "Reference area of the HTailAero table, > 0 with 'multibody tail' = full tail.",
-              _S),
+              _S, Bounds(0, 100, unit="m^2")),
     Parameter("multibody parachute model", TEXT, "", "hinged",
               "'hinged': the canopy as a point mass on its line, free on two hinge angles "
               "(paper 4.3); 'quasi-static': the Apollo legacy drogue, its drag at the "
               "attachment along the attachment's relative wind.", _S),
     Parameter("multibody parachute area", "area", "m^2", 0.0,
-              "Flat-plate area of the canopy, > 0; 0 = the Study's 'parachute area'.", _S),
+              "Flat-plate area of the canopy, > 0; 0 = the Study's 'parachute area'.",
+              _S, Bounds(0, 1000, unit="m^2")),
     Parameter("multibody canopy mass", "mass", "kg", 3.0,
-              "Mass of the canopy and its line (hinged model), > 0.", _S),
+              "Mass of the canopy and its line (hinged model), > 0.",
+              _S, CANOPY_MASS),
     Parameter("multibody canopy CD", TEXT, "", "extended",
               "'extended': GENERIC canopy CD over 0-180 deg (the paper's 0.95 within 8 deg, "
               "falling to 0.4 broadside: an assumption), so that a canopy hanging below its "
@@ -69,39 +93,40 @@ PARAMETERS = (
               "Unstretched carrier cable, hook to hub, > 0 (paper: 18, 60, 100 ft). It must be "
               "longer than the parachute line plus the hub-to-attachment distance (else the "
               "canopy could reach the carrier: an error), and should be at least (1 + margin) "
-              "x the line (else a warning in the report).", _S),
+              "x the line (else a warning in the report).", _S, CABLE_LENGTH),
     Parameter("multibody cable EA", "force", "N", 5.0e6,
-              "Axial stiffness EA of the cable, > 0.", _S),
+              "Axial stiffness EA of the cable, > 0.", _S, CABLE_EA),
     Parameter("multibody cable damping ratio", "dimensionless", "", 0.05,
               "Structural damping of the cable as the damping ratio of the load's bounce on "
-              "it, >= 0.", _S),
+              "it, >= 0.", _S, Bounds(0, 10)),
     Parameter("multibody cable margin", "dimensionless", "", 0.20,
               "Required excess of the carrier cable over the parachute line (paper: 20 %), "
-              ">= 0.", _S),
+              ">= 0.", _S, Bounds(0, 10)),
     Parameter("multibody carrier", TEXT, "", "frozen",
               "'frozen': the hook follows the commanded trajectory, unaffected by the cable; "
               "'free': a point mass with drag under a speed-hold thrust law "
               "(docs/multibody.md).", _S),
     Parameter("multibody carrier mass", "mass", "kg", 10000.0,
-              "Mass of the free carrier, > 0 (GENERIC default).", _S),
+              "Mass of the free carrier, > 0 (GENERIC default).", _S, CARRIER_MASS),
     Parameter("multibody carrier drag area", "area", "m^2", 2.0,
-              "Flat-plate drag area of the free carrier, >= 0 (GENERIC default).", _S),
+              "Flat-plate drag area of the free carrier, >= 0 (GENERIC default).", _S, DRAG_AREA),
     Parameter("multibody carrier speed gain", "frequency", "1/s", 0.5,
-              "Gain of the free carrier's speed hold (1 / its time constant), > 0.", _S),
+              "Gain of the free carrier's speed hold (1 / its time constant), > 0.",
+              _S, Bounds(0, 100, lo_open=True, unit="1/s")),
     Parameter("multibody simulation time", "time", "s", 60.0,
-              "Length of every run, > 0.", _S),
+              "Length of every run, > 0.", _S, RUN_LENGTH),
     Parameter("multibody time step", "time", "s", 0.0,
               "0 = adaptive step (Dormand-Prince 5(4), each run's local error within the "
               "tolerances below); > 0: that fixed step, checked against the fastest linear "
-              "mode (|lambda| dt <= 1).", _S),
+              "mode (|lambda| dt <= 1).", _S, Bounds(0, 1, unit="s")),
     Parameter("multibody relative tolerance", "dimensionless", "", 1e-4,
               "Relative tolerance of the adaptive step, > 0 (1e-4: peaks within about 0.02 % "
-              "of a tight reference).", _S),
+              "of a tight reference).", _S, RELATIVE_TOLERANCE),
     Parameter("multibody absolute tolerance", "dimensionless", "", 1e-5,
               "Absolute tolerance of the adaptive step in SI units of the states (m, m/s, "
-              "rad, rad/s), > 0.", _S),
+              "rad, rad/s), > 0.", _S, ABSOLUTE_TOLERANCE),
     Parameter("multibody output interval", "time", "s", 0.1,
-              "Sampling interval of the histories, > 0.", _S),
+              "Sampling interval of the histories, > 0.", _S, OUTPUT_INTERVAL),
 )
 
 SHEETS = (
@@ -115,46 +140,65 @@ SHEETS = (
                     "longitudinal (head-on) | vertical (up) (default lateral)."),
         Column("amplitude", "speed", "ft/s", False, None,
                "Gust only: gust velocity, finite and not 0, sign = direction (default 30 "
-               "ft/s, CS 29.341)."),
+               "ft/s, CS 29.341). Typical: +30 or -30 ft/s.",
+               bounds=Bounds(-100, 100, unit="m/s", nonzero=True)),
         Column("onset", "time", "s", False, None,
                "Gust, forward acceleration, wind ramp: start time, >= 0 and before the end of "
-               "the run (default 5 s)."),
+               "the run (default 5 s). Typical: 5 s.", bounds=Bounds(0, 3600, unit="s")),
         Column("duration", "time", "s", False, None,
                "Gust only: duration of the finite and 1-cosine gusts, period of the continuous "
-               "one, > 0 (default 10 s)."),
+               "one, > 0 (default 10 s). Typical: 10 s.",
+               bounds=Bounds(0, 3600, lo_open=True, unit="s")),
         Column("target", "speed", "kt", False, None,
                "Forward acceleration: final indicated airspeed (paper: 40, 60, 80, 100 KIAS); "
-               "wind ramp: final head-wind speed (paper: 20 to 80 kt). > 0, required."),
+               "wind ramp: final head-wind speed (paper: 20 to 80 kt). > 0, required. "
+               "Typical: 80 kt.",
+               bounds=Bounds(0, 200, lo_open=True, unit="kt")),
         Column("rate", "acceleration", "m/s^2", False, None,
                "Forward acceleration: peak acceleration (default 1 m/s^2); wind ramp: rate of "
-               "increase of the wind (default 0.5 m/s^2). > 0."),
+               "increase of the wind (default 0.5 m/s^2). > 0. Typical: 0.5 to 1 m/s^2.",
+               bounds=Bounds(0, 50, lo_open=True, unit="m/s^2")),
         Column("yaw", "angle", "deg", False, None,
-               "Initial disturbance from the start: yaw, nose right +."),
-        Column("pitch", "angle", "deg", False, None, "Initial pitch, nose up +."),
-        Column("roll", "angle", "deg", False, None, "Initial roll, right side down +."),
-        Column("yaw rate", "frequency", "deg/s", False, None, "Initial yaw rate."),
+               "Initial disturbance from the start: yaw, nose right +. Typical: 10 deg for a "
+               "free response.", bounds=ANGLE),
+        Column("pitch", "angle", "deg", False, None,
+               "Initial pitch, nose up +. Typical: 0 to 5 deg.", bounds=ANGLE),
+        Column("roll", "angle", "deg", False, None,
+               "Initial roll, right side down +. Typical: 0 to 5 deg.",
+               bounds=ANGLE),
+        Column("yaw rate", "frequency", "deg/s", False, None,
+               "Initial yaw rate, nose right +. Typical: 0 to 5 deg/s.",
+               bounds=Bounds(-360, 360, unit="deg/s")),
         Column("lateral offset", "length", "ft", False, None,
-               "Initial CG displacement to the right (earth axes)."),
+               "Initial CG displacement to the right (earth axes). Typical: 0 to 3 ft.",
+               bounds=OFFSET),
         Column("longitudinal offset", "length", "ft", False, None,
-               "Initial CG displacement aft (earth axes)."),
+               "Initial CG displacement aft (earth axes). Typical: 0 to 3 ft.",
+               bounds=OFFSET),
         Column("vertical offset", "length", "ft", False, None,
-               "Initial CG displacement up (earth axes)."),
+               "Initial CG displacement up (earth axes). Typical: 0 to 1 ft.",
+               bounds=OFFSET),
         Column("description", TEXT, required=False, default="", help="Free text."),
     ), help="Optional: the runs of the multibody model, each from its trim plus its stated "
        "initial disturbance (empty disturbance columns: 10 deg of yaw for a free response, a "
        "2 deg yaw seed for the runs from hover, none for a gust). Without the sheet the "
        "paper's list is flown: free response, +-30 ft/s lateral gusts of four shapes, "
-       "accelerations to 40/60/80/100 KIAS, wind ramps to 20/30/40/60/80 kt."),
+       "accelerations to 40/60/80/100 KIAS, wind ramps to 20/30/40/60/80 kt.",
+       max_rows=MAX_MULTIBODY_RUNS),
     TableSheet("HTailAero", (
         Column("alpha", "angle", "deg",
                help="Local angle of attack of the horizontal tail, strictly increasing; it "
                     "should cover -180..180 deg (never extrapolated: a run that leaves it "
-                    "stops)."),
-        Column("CN", "dimensionless",
+                    "stops). Typical: -180 to 180 deg in 5 to 10 deg steps.",
+               bounds=Bounds(-180, 180, unit="deg")),
+        Column("CN", "dimensionless", bounds=Bounds(-10, 10),
                help="Normal-force coefficient on 'multibody horizontal tail area', positive "
                     "up for a positive alpha."),
     ), help="Optional (with 'multibody tail' = full tail): the horizontal tail's normal-force "
-       "coefficient against its local angle of attack."),
+       "coefficient against its local angle of attack.", max_rows=MAX_AERO_ROWS),
 )
 
 SECTION = Section("multibody", parameters=PARAMETERS, sheets=SHEETS)
+
+#: The Study parameter behind each setting the analysis may refuse while computing.
+COMPUTE_FIELDS = {"t_end": "multibody simulation time", "dt": "multibody time step"}

@@ -1,0 +1,245 @@
+"""The reports as a reviewer receives them: print setup, cover, number formats, labels, CSV
+headers and page counts of the example's reports.
+
+References: the page setup codes of ECMA-376 Part 1 (``paperSize`` 9 = A4, ``&P`` / ``&N`` page
+number and count in a header or footer, 18.3.1.63 and 18.3.1.46); the engineering precisions
+of :mod:`slingloads.io.common.formats` (a force to the unit ``#,##0``, a length in m to the
+millimetre ``0.000``, in inches to the hundredth ``0.00``, a mass to 0.1 ``#,##0.0``); the CSV
+header style of the SFBM file (``name_unit``: ``x_m``, ``Vx_N``, ``Mx_Nm``); CS 29.865(a) for
+the 30 deg hook angle and CS 29.303 for the ultimate factor 1.5. The workbooks are read back
+with openpyxl; the page count comes from LibreOffice's own PDF export.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import openpyxl
+import pandas as pd
+import pytest
+
+from slingloads.cli import main
+from slingloads.io.study import file_digest
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+REPORTS = ("loads", "lateral", "chute")
+#: Identification written into the copy of the example (Study sheet, free fields).
+IDENT = {"author": "A. Author", "checker": "C. Checker & Co", "document number": "DOC-42 A"}
+
+
+def _set_study(book, values):
+    """Set Study parameters of an openpyxl workbook (adding rows that are absent)."""
+    ws = book["Study"]
+    rows = {str(r[0].value).lower(): r[0].row for r in ws.iter_rows(min_row=2) if r[0].value}
+    for name, value in values.items():
+        row = rows.get(name.lower()) or ws.max_row + 1
+        ws.cell(row, 1, name)
+        ws.cell(row, 2, value)
+
+
+@pytest.fixture(scope="module")
+def workbook(tmp_path_factory):
+    """A copy of the example with the cover's free fields filled in."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    _set_study(book, IDENT)
+    path = tmp_path_factory.mktemp("in") / "ident.xlsx"
+    book.save(path)
+    return path
+
+
+@pytest.fixture(scope="module")
+def run_dir(workbook, tmp_path_factory):
+    out = tmp_path_factory.mktemp("run")
+    assert main(["run", str(workbook), "--out", str(out), "--quiet"]) == 0
+    return out
+
+
+@pytest.fixture(scope="module")
+def us_dir(workbook, tmp_path_factory):
+    out = tmp_path_factory.mktemp("us")
+    assert main(["loads", str(workbook), "--out", str(out), "--units", "US", "--quiet"]) == 0
+    return out
+
+
+def _book(run_dir, report):
+    return openpyxl.load_workbook(run_dir / f"ident-{report}.xlsx")
+
+
+def test_print_setup_on_every_sheet(run_dir):
+    """Every sheet of every report is set up for print: A4 (paperSize 9), an orientation,
+    fitted to one page wide with no limit on the height, a page header naming the report and
+    the input file, and a footer with the run date, 'page &P of &N' and the version; every
+    table sheet has frozen panes and repeats its header rows on every page."""
+    for report in REPORTS:
+        book = _book(run_dir, report)
+        assert book.sheetnames[0] == "Cover"
+        for ws in book.worksheets:
+            where = f"{report}:{ws.title}"
+            assert ws.page_setup.paperSize == 9, where
+            assert ws.page_setup.orientation in ("portrait", "landscape"), where
+            assert ws.sheet_properties.pageSetUpPr.fitToPage, where
+            assert ws.page_setup.fitToWidth == 1 and ws.page_setup.fitToHeight == 0, where
+            assert ws.oddHeader.left.text and "ident.xlsx" in ws.oddHeader.right.text, where
+            assert "DOC-42 A" in ws.oddHeader.right.text, where
+            assert ws.oddFooter.center.text == "page &P of &N", where
+            assert ws.oddFooter.left.text.startswith("run "), where
+            assert "slingloads" in ws.oddFooter.right.text, where
+            if ws.title not in ("Cover", "Plots") and ws.max_column > 1:
+                assert ws.freeze_panes is not None, where
+        loads_cases = _book(run_dir, "loads")["LoadCases"]
+        assert loads_cases.print_title_rows is not None
+        assert re.fullmatch(r"\$?1:\$?\d+", loads_cases.print_title_rows.replace("'", ""))
+
+
+def test_cover(run_dir, workbook):
+    """The cover gives the input file with its SHA-256 (recomputed here from the file), the
+    free fields read from the Study sheet (an ampersand kept as typed), the version, the run
+    date, every other sheet of the workbook, and the conventions with a reference to
+    docs/conventions.md."""
+    for report in REPORTS:
+        ws = _book(run_dir, report)["Cover"]
+        rows = [[c.value for c in r] for r in ws.iter_rows()]
+        table = {r[0]: r[1] for r in rows if r[0] is not None and len(r) > 1}
+        assert table["input workbook"] == "ident.xlsx"
+        assert table["input SHA-256"] == file_digest(workbook)
+        assert table["author"] == "A. Author" and table["checker"] == "C. Checker & Co"
+        assert table["document number"] == "DOC-42 A"
+        assert table["slingloads version"] and table["run date"]
+        assert table["input modified"] != "unknown"
+        sheets = _book(run_dir, report).sheetnames[1:]
+        assert set(sheets) <= set(table), report
+        text = " ".join(str(v) for r in rows for v in r if v)
+        assert "docs/conventions.md" in text and "x aft" in text
+
+
+def test_source_revision_never_fails(monkeypatch):
+    """Without git on the PATH the source revision is None (not an error), and the cover then
+    says so."""
+    from slingloads.io.common import cover
+
+    cover.source_revision.cache_clear()
+    monkeypatch.setattr(cover.shutil, "which", lambda name: None)
+    try:
+        assert cover.source_revision() is None
+        info = cover.ReportInfo(title="t", analysis="a", study="s", input_name="i.xlsx",
+                                revision=None)
+        entries = dict(cover.cover_sections(info, [])[1][2].to_numpy())
+        assert entries["source revision"].startswith("none")
+    finally:
+        cover.source_revision.cache_clear()
+
+
+def _cells(ws, header):
+    """The data cells under ``header`` in the first table whose header row holds it, down to
+    the table's end (the first empty cell)."""
+    for row in ws.iter_rows():
+        for cell in row:
+            if cell.value == header:
+                out = []
+                for r in range(cell.row + 1, ws.max_row + 1):
+                    if ws.cell(r, cell.column).value is None:
+                        break
+                    out.append(ws.cell(r, cell.column))
+                return out
+    raise AssertionError(f"no column {header!r} on {ws.title}")
+
+
+def test_number_formats_per_quantity(run_dir, us_dir):
+    """Forces print to the unit (#,##0), lengths in m to the millimetre (0.000) and in inches
+    to the hundredth (0.00), masses to 0.1 (#,##0.0), angles to 0.1 deg, counts without
+    decimals; booleans are yes / no; the full double is kept behind the format."""
+    si = _book(run_dir, "loads")
+    assert {c.number_format for c in _cells(si["Envelope"], "Vy max [N]")} == {"#,##0"}
+    assert {c.number_format for c in _cells(si["Envelope"], "x [m]")} == {"0.000"}
+    summary = {r[0].value: r for r in si["Summary"].iter_rows() if r[0].value}
+    assert summary["aircraft mass"][1].number_format == "#,##0.0"
+    assert summary["aircraft mass"][2].value == "kg"
+    assert summary["hook cone angle from the vertical"][1].number_format == "0.0"
+    assert summary["load cases"][1].number_format == "0"
+    assert summary["parachute"][1].value == "yes"
+    us = openpyxl.load_workbook(us_dir / "ident-loads.xlsx")
+    assert {c.number_format for c in _cells(us["Envelope"], "x [in]")} == {"0.00"}
+    assert {c.number_format for c in _cells(us["Envelope"], "Mz max [lbf in]")} == {"#,##0"}
+    mass = {r[0].value: r for r in us["Summary"].iter_rows() if r[0].value}["aircraft mass"]
+    assert mass[1].number_format == "#,##0.0" and mass[2].value == "lb"
+    assert mass[1].value == pytest.approx(2900.0 / 0.45359237, rel=1e-3)  # not rounded
+    chute = _book(run_dir, "chute")
+    stable = _cells(chute["Sweep"], "all gusts stable")
+    assert {c.value for c in stable} <= {"yes", "no"}
+
+
+def test_limit_or_ultimate_on_every_loads_sheet_and_plot(run_dir):
+    """Every sheet of the loads report says in its page header or its first rows whether it
+    holds LIMIT or ULTIMATE loads, and only the Ultimate sheet says ULTIMATE; the plot titles
+    say LIMIT."""
+    book = _book(run_dir, "loads")
+    for ws in book.worksheets:
+        first = " ".join(str(c.value) for r in ws.iter_rows(max_row=3) for c in r if c.value)
+        said = ws.oddHeader.center.text + " " + first
+        assert "LIMIT" in said or "ULTIMATE" in said, ws.title
+        assert ("ULTIMATE" in ws.oddHeader.center.text) == (ws.title == "Ultimate"), ws.title
+
+
+def test_csv_headers_in_one_style(run_dir):
+    """Every CSV file of the run has headers in the SFBM file's style: a name of letters,
+    digits and underscores, a physical quantity ending in its SI unit (_m, _N, _Nm, _s,
+    _deg, _m2...); the SFBM file keeps exactly its columns."""
+    files = sorted(run_dir.glob("*.csv"))
+    assert {f.name for f in files} == {"ident-sfbm.csv", "ident-envelope.csv",
+                                       "ident-lateral-histories.csv",
+                                       "ident-chute-histories.csv",
+                                       "ident-multibody-histories.csv"}
+    for f in files:
+        header = f.read_text().splitlines()[0].split(",")
+        for name in header:
+            assert re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name), (f.name, name)
+            assert "[" not in name and " " not in name
+    sfbm = (run_dir / "ident-sfbm.csv").read_text().splitlines()[0]
+    assert sfbm == "case,station,x_m,Vx_N,Vy_N,Vz_N,Mx_Nm,My_Nm,Mz_Nm"
+    lateral = pd.read_csv(run_dir / "ident-lateral-histories.csv", nrows=2)
+    assert {"t_s", "S_m", "Sdot_mps", "Sddot_mps2", "theta1_deg", "T_N"} <= set(lateral)
+
+
+def test_flags_hook_angle_and_previous_source(run_dir):
+    """The example runs the hook loads at 30 deg with the lateral study in the same run: the
+    Summary quotes the lateral study as evidence and the Study's previous-envelope source.
+    Over its stated ranges the lateral study finds 83 deg (recommended 125 deg with the 1.5
+    margin), so the Summary FLAGs the 30 deg as not conservative for the motions swept."""
+    ws = _book(run_dir, "loads")["Summary"]
+    text = " ".join(str(c.value) for r in ws.iter_rows(max_row=15) for c in r if c.value)
+    assert "Lateral-step pendulum study of this run" in text
+    assert "recommended design angle" in text
+    assert "FLAG" in text and "not conservative" in text and "no hook cone" in text
+    assert "ILLUSTRATIVE" in text and "build_example.py" in text
+
+
+@pytest.mark.skipif(shutil.which("soffice") is None, reason="LibreOffice (soffice) not found")
+def test_libreoffice_page_counts(run_dir, tmp_path):
+    """Converted to A4 PDF by LibreOffice headless, the example's loads report prints in at
+    most 40 pages, the lateral and parachute-sizing reports in at most 25 each (they were
+    178, 79 and 108 pages before the print setup)."""
+    paths = [str(run_dir / f"ident-{r}.xlsx") for r in REPORTS]
+    done = subprocess.run(
+        ["soffice", f"-env:UserInstallation=file://{tmp_path}/profile", "--headless",
+         "--convert-to", "pdf", "--outdir", str(tmp_path), *paths],
+        capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    limits = {"loads": 40, "lateral": 25, "chute": 25}
+    for report, limit in limits.items():
+        pdf = (tmp_path / f"ident-{report}.pdf").read_bytes()
+        pages = len(re.findall(rb"/Type\s*/Page(?![s\w])", pdf))
+        assert 2 <= pages <= limit, (report, pages)
+
+
+def test_example_envelope_matches_loads(run_dir):
+    """The wide Envelope table holds, for every station, the largest and smallest Vz over
+    every case of the SFBM CSV file, with the case that gives them."""
+    csv = pd.read_csv(run_dir / "ident-sfbm.csv")
+    ws = _book(run_dir, "loads")["Envelope"]
+    got = [c.value for c in _cells(ws, "Vz max [N]")][:len(csv["station"].unique())]
+    want = csv.groupby("station", sort=False)["Vz_N"].max().to_numpy()
+    np.testing.assert_allclose(np.asarray(got, float), want, rtol=1e-12, atol=1e-9)
