@@ -268,19 +268,35 @@ class YawModel:
 
         Raises :class:`InputError` when no equilibrium lies within +-``search``.
         """
+        return float(self.trim_betas([area], search)[0])
+
+    def trim_betas(self, areas, search=TRIM_SEARCH):
+        """:meth:`trim_beta` of every parachute area of ``areas`` [m^2] at once (the moments
+        on one sideslip grid, the parachute's scaled by each area). [rad]"""
+        areas = np.atleast_1d(np.asarray(areas, dtype=float))
         lo, hi = self.beta_range()
         grid = np.linspace(max(lo, -search), min(hi, search), 801)
-        total = sum(self.static_moments(grid, area))
-        if np.any(total == 0):
-            zeros = grid[total == 0]
-            return float(zeros[np.argmin(np.abs(zeros))])
-        change = np.nonzero(np.sign(total[:-1]) != np.sign(total[1:]))[0]
-        if change.size == 0:
+        n_fus, n_fin, _ = self.static_moments(grid, 0.0)
+        unit = self.static_moments(grid, 1.0)[2] if self.parachute is not None else 0.0
+        if self.parachute is None and np.any(areas != 0):
+            self.static_moments(grid, areas[areas != 0][0])  # refuses the area
+        total = (0 + n_fus + n_fin) + areas[:, None] * unit
+        total = np.broadcast_to(total, (areas.size, grid.size))
+        b0, b1, n0, n1 = grid[:-1], grid[1:], total[:, :-1], total[:, 1:]
+        change = np.sign(n0) != np.sign(n1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            roots = np.where(change, b0 - n0 * (b1 - b0) / (n1 - n0), np.nan)
+        exact = total == 0
+        roots = np.where(exact.any(axis=1)[:, None],
+                         np.where(exact, grid, np.nan), np.pad(roots, ((0, 0), (0, 1)),
+                                                               constant_values=np.nan))
+        found = np.isfinite(roots).any(axis=1)
+        if not found.all():
             raise InputError(f"no yaw trim within +-{np.degrees(search):.3g} deg of sideslip: "
-                             f"the yawing moment does not change sign", float(total[400]))
-        b0, b1, n0, n1 = grid[change], grid[change + 1], total[change], total[change + 1]
-        roots = b0 - n0 * (b1 - b0) / (n1 - n0)
-        return float(roots[np.argmin(np.abs(roots))])
+                             f"the yawing moment does not change sign",
+                             float(total[np.argmin(found), 400]))
+        nearest = np.nanargmin(np.abs(roots), axis=1)
+        return roots[np.arange(areas.size), nearest]
 
 
 @dataclass(frozen=True)
