@@ -548,47 +548,33 @@ class YawRuns:
 
 def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     """Metrics of every run, vectorised over runs (no per-run loop on the histories)."""
+    from slingloads.analyses.chute_metrics import history_metrics
+
     t = hist.time
-    dbeta = hist.beta - beta_trim
-    peak_beta = np.abs(hist.beta).max(axis=1)
-    peak_psi = np.abs(hist.psi).max(axis=1)
-    onset = np.array([g.breakpoints[0] for g in gusts])
-    free = np.array([np.nan if g.end is None else g.end for g in gusts])
-    # Settling: last time |dbeta| is outside the band, from the gust onset.
-    excursion = np.abs(dbeta).max(axis=1)
-    band = metric.settle_fraction * excursion
-    outside = np.abs(dbeta) > band[:, None]
-    last = t.size - 1 - np.argmax(outside[:, ::-1], axis=1)
-    settled_at = np.where(last + 1 < t.size, t[np.minimum(last + 1, t.size - 1)], np.nan)
-    settling = np.where(np.isfinite(free) & (last + 1 < t.size),
-                        np.maximum(settled_at - onset, 0.0), np.nan)
-    # Logarithmic decrement of successive positive yaw-rate peaks after the gust ends.
-    r = hist.rate
-    peaks = np.zeros_like(r, dtype=bool)
-    peaks[:, 1:-1] = (r[:, 1:-1] > r[:, :-2]) & (r[:, 1:-1] >= r[:, 2:])
-    peaks &= (r > metric.peak_threshold) & (t[None, :] > free[:, None])
-    ym, y0, yp = np.roll(r, 1, axis=1), r, np.roll(r, -1, axis=1)
-    curvature = ym - 2 * y0 + yp
-    with np.errstate(divide="ignore", invalid="ignore"):
-        refined = np.where(curvature < 0, y0 - (yp - ym) ** 2 / (8 * curvature), y0)
-    rank = np.cumsum(peaks, axis=1)
-    p1 = np.where(peaks & (rank == 1), refined, -np.inf).max(axis=1)
-    p2 = np.where(peaks & (rank == 2), refined, -np.inf).max(axis=1)
+    runs = hist.beta.shape[0]
+    trim = np.broadcast_to(np.asarray(beta_trim, dtype=float).reshape(-1), (runs,)).copy()
+    onset = np.array([g.breakpoints[0] for g in gusts], dtype=float)
+    free = np.array([np.nan if g.end is None else g.end for g in gusts], dtype=float)
+    out = np.empty((runs, 8))
+    history_metrics(t, np.ascontiguousarray(hist.beta), np.ascontiguousarray(hist.psi),
+                    np.ascontiguousarray(hist.rate), trim, onset, free,
+                    metric.settle_fraction, metric.peak_threshold, out)
+    peak_beta, peak_psi, beta_min, beta_max, settling, p1, p2 = out[:, :7].T
     with np.errstate(divide="ignore", invalid="ignore"):
         delta = np.where((p1 > 0) & (p2 > 0), np.log(p1 / p2), np.nan)
     zeta_log = delta / np.sqrt(4 * np.pi**2 + delta**2)
+    final_dbeta = hist.beta[:, -1] - trim
     zeta_lin, omega, lin_stable, neutral = _linear_metrics(model, areas, fit_range)
-    final_off = np.abs(dbeta[:, -1]) > metric.final_tolerance
+    final_off = np.abs(final_dbeta) > metric.final_tolerance
     not_restored = np.isfinite(free) & final_off
     lo, hi = fit_range
-    beta_min, beta_max = hist.beta.min(axis=1), hist.beta.max(axis=1)
     unlinear = (beta_min < lo) | (beta_max > hi)
     over = peak_beta > metric.sideslip_limit
     verdict = np.select(
         [hist.left_table, neutral, ~lin_stable | not_restored, unlinear | over],
         ["divergent", "neutral", "divergent", "beyond limits"], default="stable")
     reasons = [_reason(*row, fit_range, metric) for row in zip(
-        hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, dbeta[:, -1],
+        hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, final_dbeta,
         unlinear, over, peak_beta, beta_min, beta_max, strict=True)]
     return pd.DataFrame({
         "area [m^2]": areas,
@@ -617,22 +603,21 @@ def _linear_metrics(model, areas, fit_range):
         linear_yaw(model, float(areas.max()), fit_range)  # refuses the area
     k_rest = sum(k for name, (k, _) in base.parts.items() if name != "parachute")
     c_rest = sum(c for name, (_, c) in base.parts.items() if name != "parachute")
-    k_unit = c_unit = 0.0
-    if model.parachute is not None:
+    k_chute = c_chute = np.zeros(areas.shape)
+    if model.parachute is not None:  # the products in the order of linear_yaw
         cd, dx = model.chute_drag_coefficient, model.chute_arm[0]
-        cond = model.condition
-        k_unit = cond.dynamic_pressure * cd * dx
-        c_unit = 0.5 * cond.density * cond.tas * cd * dx**2
-    k_chute = k_unit * areas
+        q, rho, v = model.condition.dynamic_pressure, model.condition.density, model.condition.tas
+        k_chute = q * cd * areas * dx
+        c_chute = 0.5 * rho * v * cd * areas * dx**2
     stiffness = k_rest + k_chute
-    damping = c_rest + c_unit * areas
+    damping = c_rest + c_chute
     inertia = model.yaw_inertia
     positive = stiffness > 0
     with np.errstate(invalid="ignore", divide="ignore"):
         omega = np.where(positive, np.sqrt(stiffness / inertia), np.nan)
         zeta = np.where(positive, damping / (2.0 * np.sqrt(stiffness * inertia)), np.nan)
     parts = [abs(k) for name, (k, _) in base.parts.items() if name != "parachute"]
-    scale = max(sum(parts) + abs(k_unit * areas.min()), 1e-300)
+    scale = max(sum(parts) + abs(k_chute[np.argmin(areas)]), 1e-300)
     neutral = np.abs(stiffness) <= 1e-9 * scale
     return zeta, omega, positive & (damping > 0), neutral
 
