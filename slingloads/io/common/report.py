@@ -212,16 +212,16 @@ PAGE_CHARACTERS = 150
 
 
 def _column_characters(frame, column):
-    """Characters a column takes in a report table (its header wraps at words; text at
-    40 characters)."""
+    """Characters a column takes in a report table (as the workbook writer sizes it: its
+    header wraps at words, text at 40 characters, a number takes about 8)."""
     words = max((len(w) for w in str(column).split()), default=0)
     series = frame[column]
     if pd.api.types.is_numeric_dtype(series.dtype) and not pd.api.types.is_bool_dtype(
             series.dtype):
-        data = 10
+        data = 8
     else:
-        data = min(int(series.astype(str).str.len().max()) if len(series) else 0, 40)
-    return max(words, data, 4) + 3
+        data = min(int(series.astype(str).str.len().max()) if len(series) else 0, 40) + 1
+    return max(int(1.1 * words) + 1, data, 4) + 2
 
 
 def column_blocks(frame, keys, width=PAGE_CHARACTERS):

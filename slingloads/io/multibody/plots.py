@@ -177,8 +177,8 @@ def plot_views(system, states, outline, units="SI", title=None):
         raise InputError(f"unknown unit system; valid are {sorted(VIEW_UNITS)}", units)
     unit, label = VIEW_UNITS[units]
     scale = 1.0 / si_factor(unit, "length")
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.0)), left=0.7, right=0.15, bottom=0.55,
-                      top=0.7, wspace=0.35)
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.4)), left=0.7, right=0.15,
+                      bottom=0.55 + 0.17 * len(states), top=0.7, wspace=0.35)
     side, top = fig.subplots(1, 2)
     for k, (name, state, info) in enumerate(states):
         points = system_points(system, state, info, outline)
@@ -203,7 +203,7 @@ def plot_views(system, states, outline, units="SI", title=None):
         ax.tick_params(labelsize=8)
         ax.title.set_fontsize(9)
         ax.grid(True, alpha=0.4)
-    side.legend(fontsize=7, loc="best")
+    fig.legend(loc="lower center", fontsize=7, frameon=False)
     if title:
         fig.suptitle(title, fontsize=10)
     return fig

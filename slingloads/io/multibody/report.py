@@ -11,7 +11,7 @@ all (:mod:`slingloads.io.common.atomic`):
   (eigenvalues, frequencies, damping ratios, names, energy shares), *StateMatrix* (the A
   matrix of the linear model, scientific notation), *Metrics* (every run: peaks and when,
   RMS, damping from the response, settling time, verdict and its rule; in blocks that fit a
-  page), *Histories* (every run every 1 s) and *Plots*;
+  page), *Histories* (every run every 2 s) and *Plots*;
 * ``<stem>-multibody-histories.csv``: every run at every stored sample (SI, degrees);
 * ``<stem>-multibody-histories.png`` (yaw, sideslip, swing angles, tension),
   ``-multibody-eigenvalues.png`` (the complex plane) and ``-multibody-views.png`` (side and top
@@ -40,7 +40,6 @@ from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import drawings, png_bytes, start_drawing
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
-    PAGE_CHARACTERS,
     check_units,
     column_blocks,
     convert_columns,
@@ -61,10 +60,13 @@ OUTPUTS = ("{stem}-multibody.xlsx", "{stem}-multibody-histories.csv",
            *(f"{{stem}}-multibody-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 80
 #: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
-HISTORY_INTERVAL = 1.0
+HISTORY_INTERVAL = 2.0
 #: Quantity kind of the SI units that appear in the analysis' column headers.
 _KINDS = {"m": "length", "N": "force", "m/s": "speed", "kg": "mass", "m^2": "area"}
 _HEADER_UNIT = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
+
+#: Number format of the state matrix: scientific, an exact zero as ``0``.
+MATRIX_FORMAT = f"{SCIENTIFIC_FORMAT};-{SCIENTIFIC_FORMAT};0"
 
 TITLE = "Multibody report: towed sling load with its drogue parachute"
 DESCRIPTION = (
@@ -284,10 +286,24 @@ def history_table(result, units="SI", interval=None):
     return in_units(frame, units)
 
 
-def metrics_blocks(result, units="SI"):
-    """The Metrics table in blocks that fit a page: run and manoeuvre first in each."""
-    return column_blocks(in_units(result.simulation.metrics_frame(), units),
-                         ["run"], width=PAGE_CHARACTERS)
+def metrics_table(result, units="SI"):
+    """Every metric of every run: one row per metric (with its unit), one column per run."""
+    frame = in_units(result.simulation.metrics_frame(), units)
+    shown = [c for c in frame.columns if c not in ("run", "manoeuvre", "verdict rule")]
+    names = [split_unit(column) for column in shown]
+    out = pd.DataFrame({"metric": [name for name, _ in names],
+                        "unit": [unit for _, unit in names]})
+    for k, run in enumerate(frame["run"]):
+        out[str(run)] = list(frame[shown].iloc[k].to_numpy(object))
+    return out
+
+
+def verdict_rules(result):
+    """The rules of the runs' verdicts, each once."""
+    metrics = result.simulation.metrics_frame()
+    if "verdict rule" not in metrics:
+        return ""
+    return " ".join(dict.fromkeys(str(v) for v in metrics["verdict rule"] if v))
 
 
 def state_matrix_table(linear):
@@ -305,19 +321,25 @@ def _warnings(result, study):
     return list(dict.fromkeys([*study.warnings, *result.inputs.warnings]))
 
 
+def _parts(title, tables, note=""):
+    """Sections of a table printed in column blocks: a heading, then ``part k of n``."""
+    if len(tables) == 1:
+        return [Section(title, tables[0], note=note)]
+    return [Section(title, note=note), *(Section(f"{title}, part {k + 1} of {len(tables)}",
+                                                 table) for k, table in enumerate(tables))]
+
+
 def _sheets(result, units, warnings=()):
     airspeed = result.inputs.system.airspeed / KNOT
     summary = [Section("Summary of the multibody model", note=stability_text(result)),
                *warning_sections(warnings),
-               Section("System as flown", system_table(result, units)),
+               Section("Runs (every metric: sheet Metrics)", runs_table(result)),
                Section(f"Trim at {airspeed:.4g} KEAS", trim_table(result, units)),
-               Section("Runs (every metric: sheet Metrics)", runs_table(result))]
+               Section("System as flown", system_table(result, units))]
     sheets = {"Summary": summary}
     if result.linear is not None:
-        modes = column_blocks(result.linear.modes_frame(), ["mode"])
-        sheets["Modes"] = [Section("Modes of the linear model about the trim"
-                                   + (f" ({k + 1} of {len(modes)})" if len(modes) > 1 else ""),
-                                   block) for k, block in enumerate(modes)]
+        sheets["Modes"] = _parts("Modes of the linear model about the trim",
+                                 column_blocks(result.linear.modes_frame(), ["mode"]))
         sheets["StateMatrix"] = [Section(
             "State matrix A (dz/dt = A z), SI: positions m, velocities m/s, angles rad, rates "
             "rad/s; phi_x, phi_y, phi_z a small rotation in body axes",
@@ -326,19 +348,14 @@ def _sheets(result, units, warnings=()):
                  "and written as 0.")]
     else:
         sheets["Modes"] = f"No linear model: {result.trim.message}"
-    blocks = metrics_blocks(result, units)
-    sheets["Metrics"] = [Section("Every run (angles in degrees; verdict rule: "
-                                 "column 'verdict rule')", note="One row per run; the columns "
-                                 "are split over the blocks below, each starting with the run.")]
-    sheets["Metrics"] += [Section(f"Metrics, part {k + 1} of {len(blocks)}", block)
-                          for k, block in enumerate(blocks)]
-    histories = column_blocks(history_table(result, units, HISTORY_INTERVAL),
-                              ["run", "time [s]"])
-    sheets["Histories"] = [Section(
+    sheets["Metrics"] = _parts(
+        "Metrics of every run (one column per run; angles in degrees)",
+        column_blocks(metrics_table(result, units), ["metric", "unit"]),
+        note=f"Verdict rule: {verdict_rules(result)}")
+    sheets["Histories"] = _parts(
         f"Every run every {HISTORY_INTERVAL:g} s (every stored sample: the "
-        f"-multibody-histories.csv file, SI)"
-        + (f", part {k + 1} of {len(histories)}" if len(histories) > 1 else ""), block)
-        for k, block in enumerate(histories)]
+        f"-multibody-histories.csv file, SI)",
+        column_blocks(history_table(result, units, HISTORY_INTERVAL), ["run", "time [s]"]))
     return sheets
 
 
@@ -409,7 +426,7 @@ def write(result, out_dir, stem, units, study, figures=None):
                            files=[f"{stem}-multibody-histories.csv",
                                   *(f"{stem}-multibody-{tag}.png" for tag in pngs)])
         sheets = _sheets(result, units, _warnings(result, study))
-        formats = ({name: SCIENTIFIC_FORMAT for name in result.linear.a_frame().columns}
+        formats = ({name: MATRIX_FORMAT for name in result.linear.a_frame().columns}
                    if result.linear is not None else None)
         with atomic_outputs(out_dir, inputs=inputs) as out:
             write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
