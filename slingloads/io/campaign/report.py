@@ -292,11 +292,15 @@ def _sheets(report, units, warnings=()):
     if handoff is not None:
         summary.append(Section(f"Dynamics handed to the loads: runs at "
                                f"{r.envelope.area_factor:g} x neutral area, margin "
-                               f"{r.envelope.margin:g}", handoff))
+                               f"{r.envelope.margin:g}", note="Extremes and the envelope "
+                               "with its margin: sheet LoadsHandoff."))
+    matrix = r.campaign.matrix.frame
+    results = r.metrics[["run", *(c for c in r.metrics.columns if c not in matrix.columns)]]
     sheets = {
         "Summary": summary,
         "Matrix": _parts("The run matrix", in_units(r.campaign.matrix.frame, units), ["run"]),
-        "Metrics": _parts("Metrics of every run", in_units(r.metrics, units), ["run"]),
+        "Metrics": _parts("Metrics of every run (its definition: sheet Matrix)",
+                          in_units(results, units), ["run"]),
         "Selection": [Section("By area factor", in_units(r.selection.by_area, units))],
         "NeutralArea": [Section("1.0 x neutral area: 1-DOF and multibody verdicts",
                                 r.neutral_check)],
