@@ -310,9 +310,14 @@ def _sheets(report, units, warnings=()):
     if r.carrier is not None:
         sens.append(Section("Carrier free against frozen (paired runs)",
                             in_units(r.carrier, units)))
-    sheets["Sensitivity"] = sens or "no factor varies"
+    sheets["Sensitivity"] = ([Section("Sensitivity of the metrics to each factor of the "
+                                      "matrix", note="Each row: the runs with that value "
+                                      "of the factor, over every value of the others "
+                                      "(largest or least as the header says)."), *sens]
+                             if sens else "no factor varies")
     if r.stability is not None:
         sheets["StabilityMap"] = [
+            Section("Stability map over parachute area x airspeed x density altitude"),
             Section("Minimum stable area by airspeed and density altitude",
                     in_units(r.stability.minimum, units)),
             *_parts("Every grid point", in_units(r.stability.points, units),
