@@ -5,8 +5,10 @@ The sweep is 100 parachute areas (1x to 2x the neutral static area) x 4 gust sha
 sample aircraft HC2 at 80 KIAS, ISA sea level.
 
 * fast: :func:`slingloads.analyses.chute_sizing.sizing_sweep`, all 400 runs by the compiled
-  fixed-step RK4 (dt = 0.05 s, gust breakpoints on the grid), trims, linearisations and
-  metrics included; median of 3 calls after a warm-up call.
+  adaptive Dormand-Prince 5(4) (the pair of solve_ivp's RK45, split at the gust breakpoints,
+  dense output) at the baseline's rtol and atol, trims, linearisations and metrics
+  included; median of 3 calls after a warm-up call. ``--integrator rk4``: the compiled
+  fixed-step RK4 (dt = 0.05 s, gust breakpoints on the grid) instead.
 * baseline: what one writes by hand: a lean right-hand side on plain Python floats (``math``,
   ``bisect`` on lists for the tables, no dicts, no numpy scalars, the gust as a plain formula
   per piece), one :func:`scipy.integrate.solve_ivp` call per run and per smooth piece of its
@@ -146,6 +148,8 @@ def main(argv=None):
     parser.add_argument("--full", action="store_true", help="baseline loop over all runs")
     parser.add_argument("--repeat", type=int, default=3,
                         help="timed calls of each method, the median kept (default 3)")
+    parser.add_argument("--integrator", default="dopri5", choices=("dopri5", "rk4"),
+                        help="compiled integrator of the sweep (default dopri5)")
     parser.add_argument("--method", default="RK45", help="baseline solve_ivp method")
     parser.add_argument("--rtol", type=float, default=1e-7, help="baseline rtol")
     parser.add_argument("--atol", type=float, default=1e-9, help="baseline atol")
@@ -158,17 +162,23 @@ def main(argv=None):
     static = neutral_area(model)
     gusts = standard_gusts()
     factors = np.linspace(1.0, 2.0, 100)
-    settings = SolverSettings(t_end=120.0, step=0.05, output_interval=0.1)
+    settings = SolverSettings(t_end=120.0, step=0.05, output_interval=0.1, rtol=args.rtol,
+                              atol=args.atol)
 
-    _, cold = timed(sizing_sweep, model, factors[:2], gusts, settings, static=static)
-    result, fast = median_timed(
-        lambda: sizing_sweep(model, factors, gusts, settings, static=static), args.repeat)
+    def sweep(f):
+        return sizing_sweep(model, f, gusts, settings, static=static,
+                            integrator=args.integrator)
+
+    _, cold = timed(sweep, factors[:2])
+    result, fast = median_timed(lambda: sweep(factors), args.repeat)
     runs = result.runs
     n = runs.areas.size
     print(f"aircraft {args.aircraft}: neutral static area {static.area:.4f} m^2, "
           f"{n} runs ({factors.size} areas x {len(gusts)} gusts), 120 s each")
     print(f"  first call (compilation, or loading the compiled cache): {cold}")
-    print(f"  compiled RK4 sizing sweep (dt {settings.step} s, trims and metrics included), "
+    scheme = (f"adaptive Dormand-Prince 5(4), rtol {args.rtol:g}, atol {args.atol:g}"
+              if args.integrator == "dopri5" else f"RK4, dt {settings.step} s")
+    print(f"  compiled sizing sweep ({scheme}, trims and metrics included), "
           f"median of {args.repeat}: {fast}")
 
     chosen = np.arange(n) if args.full else sample(n, args.sample)

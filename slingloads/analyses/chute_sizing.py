@@ -30,6 +30,7 @@ from slingloads.models.integration import SolverSettings
 from slingloads.models.wake import CABLE_MARGIN, TARGET_RATIO, check_cable_length
 from slingloads.models.yaw_dynamics import (
     YawModel,
+    integrate_dopri,
     integrate_reference,
     integrate_rk4,
     yaw_solver_settings,
@@ -39,6 +40,11 @@ from slingloads.models.yaw_dynamics import (
 FIT_RANGE = (np.radians(-10.0), np.radians(10.0))
 #: Default sideslip past which no run is called stable (see :class:`MetricSettings`). [rad]
 SIDESLIP_LIMIT = np.radians(20.0)
+
+#: Integrators of the yaw runs: compiled adaptive Dormand-Prince 5(4) (``settings.rtol``,
+#: ``atol``), compiled fixed-step RK4 (``settings.step``), one solve_ivp call per run.
+INTEGRATORS = {"dopri5": integrate_dopri, "rk4": integrate_rk4,
+               "solve_ivp": integrate_reference}
 
 #: Verdicts of a run.
 VERDICTS = ("stable", "neutral", "divergent", "beyond limits")
@@ -542,54 +548,33 @@ class YawRuns:
 
 def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     """Metrics of every run, vectorised over runs (no per-run loop on the histories)."""
+    from slingloads.analyses.chute_metrics import history_metrics
+
     t = hist.time
-    dbeta = hist.beta - beta_trim
-    peak_beta = np.abs(hist.beta).max(axis=1)
-    peak_psi = np.abs(hist.psi).max(axis=1)
-    onset = np.array([g.breakpoints[0] for g in gusts])
-    free = np.array([np.nan if g.end is None else g.end for g in gusts])
-    # Settling: last time |dbeta| is outside the band, from the gust onset.
-    excursion = np.abs(dbeta).max(axis=1)
-    band = metric.settle_fraction * excursion
-    outside = np.abs(dbeta) > band[:, None]
-    last = t.size - 1 - np.argmax(outside[:, ::-1], axis=1)
-    settled_at = np.where(last + 1 < t.size, t[np.minimum(last + 1, t.size - 1)], np.nan)
-    settling = np.where(np.isfinite(free) & (last + 1 < t.size),
-                        np.maximum(settled_at - onset, 0.0), np.nan)
-    # Logarithmic decrement of successive positive yaw-rate peaks after the gust ends.
-    r = hist.rate
-    peaks = np.zeros_like(r, dtype=bool)
-    peaks[:, 1:-1] = (r[:, 1:-1] > r[:, :-2]) & (r[:, 1:-1] >= r[:, 2:])
-    peaks &= (r > metric.peak_threshold) & (t[None, :] > free[:, None])
-    ym, y0, yp = np.roll(r, 1, axis=1), r, np.roll(r, -1, axis=1)
-    curvature = ym - 2 * y0 + yp
-    with np.errstate(divide="ignore", invalid="ignore"):
-        refined = np.where(curvature < 0, y0 - (yp - ym) ** 2 / (8 * curvature), y0)
-    rank = np.cumsum(peaks, axis=1)
-    p1 = np.where(peaks & (rank == 1), refined, -np.inf).max(axis=1)
-    p2 = np.where(peaks & (rank == 2), refined, -np.inf).max(axis=1)
+    runs = hist.beta.shape[0]
+    trim = np.broadcast_to(np.asarray(beta_trim, dtype=float).reshape(-1), (runs,)).copy()
+    onset = np.array([g.breakpoints[0] for g in gusts], dtype=float)
+    free = np.array([np.nan if g.end is None else g.end for g in gusts], dtype=float)
+    out = np.empty((runs, 8))
+    history_metrics(t, np.ascontiguousarray(hist.beta), np.ascontiguousarray(hist.psi),
+                    np.ascontiguousarray(hist.rate), trim, onset, free,
+                    metric.settle_fraction, metric.peak_threshold, out)
+    peak_beta, peak_psi, beta_min, beta_max, settling, p1, p2 = out[:, :7].T
     with np.errstate(divide="ignore", invalid="ignore"):
         delta = np.where((p1 > 0) & (p2 > 0), np.log(p1 / p2), np.nan)
     zeta_log = delta / np.sqrt(4 * np.pi**2 + delta**2)
-    # Linear damping ratios per distinct area (cheap closed form).
-    lin = [linear_yaw(model, a, fit_range) for a in np.unique(areas)]
-    by_area = dict(zip(np.unique(areas), lin, strict=True))
-    zeta_lin = np.array([by_area[a].damping_ratio for a in areas])
-    omega = np.array([by_area[a].natural_frequency for a in areas])
-    lin_stable = np.array([by_area[a].stable for a in areas])
-    scale = max(sum(abs(k) for k, _ in lin[0].parts.values()), 1e-300)
-    neutral = np.array([abs(by_area[a].stiffness) <= 1e-9 * scale for a in areas])
-    final_off = np.abs(dbeta[:, -1]) > metric.final_tolerance
+    final_dbeta = hist.beta[:, -1] - trim
+    zeta_lin, omega, lin_stable, neutral = _linear_metrics(model, areas, fit_range)
+    final_off = np.abs(final_dbeta) > metric.final_tolerance
     not_restored = np.isfinite(free) & final_off
     lo, hi = fit_range
-    beta_min, beta_max = hist.beta.min(axis=1), hist.beta.max(axis=1)
     unlinear = (beta_min < lo) | (beta_max > hi)
     over = peak_beta > metric.sideslip_limit
     verdict = np.select(
         [hist.left_table, neutral, ~lin_stable | not_restored, unlinear | over],
         ["divergent", "neutral", "divergent", "beyond limits"], default="stable")
     reasons = [_reason(*row, fit_range, metric) for row in zip(
-        hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, dbeta[:, -1],
+        hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, final_dbeta,
         unlinear, over, peak_beta, beta_min, beta_max, strict=True)]
     return pd.DataFrame({
         "area [m^2]": areas,
@@ -607,6 +592,34 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
         "verdict": verdict,
         "verdict reason": reasons,
     })
+
+
+def _linear_metrics(model, areas, fit_range):
+    """Linear damping ratio [-], natural frequency [rad/s], linear stability and zero
+    stiffness of every run, as :func:`linear_yaw` gives them, on arrays: fuselage and fin
+    linearised once, the parachute's stiffness and damping proportional to its area."""
+    base = linear_yaw(model, 0.0, fit_range)
+    if model.parachute is None and np.any(areas > 0):
+        linear_yaw(model, float(areas.max()), fit_range)  # refuses the area
+    k_rest = sum(k for name, (k, _) in base.parts.items() if name != "parachute")
+    c_rest = sum(c for name, (_, c) in base.parts.items() if name != "parachute")
+    k_chute = c_chute = np.zeros(areas.shape)
+    if model.parachute is not None:  # the products in the order of linear_yaw
+        cd, dx = model.chute_drag_coefficient, model.chute_arm[0]
+        q, rho, v = model.condition.dynamic_pressure, model.condition.density, model.condition.tas
+        k_chute = q * cd * areas * dx
+        c_chute = 0.5 * rho * v * cd * areas * dx**2
+    stiffness = k_rest + k_chute
+    damping = c_rest + c_chute
+    inertia = model.yaw_inertia
+    positive = stiffness > 0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        omega = np.where(positive, np.sqrt(stiffness / inertia), np.nan)
+        zeta = np.where(positive, damping / (2.0 * np.sqrt(stiffness * inertia)), np.nan)
+    parts = [abs(k) for name, (k, _) in base.parts.items() if name != "parachute"]
+    scale = max(sum(parts) + abs(k_chute[np.argmin(areas)]), 1e-300)
+    neutral = np.abs(stiffness) <= 1e-9 * scale
+    return zeta, omega, positive & (damping > 0), neutral
 
 
 def _reason(left, exit_time, lin_stable, neutral, not_restored, final, unlinear, over, peak,
@@ -635,7 +648,7 @@ def _reason(left, exit_time, lin_stable, neutral, not_restored, final, unlinear,
 
 
 def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=None,
-            integrator="rk4"):
+            integrator="dopri5"):
     """Run the nonlinear 1-DOF yaw model from trim for each (area, gust) pair.
 
     Parameters
@@ -649,16 +662,20 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     fit_range : (float, float)
         Range of the linearisation behind the linear damping ratio. [rad]
     metrics : MetricSettings, optional
-    integrator : {"rk4", "solve_ivp"}
-        Vectorised fixed-step RK4 (all runs at once), or one solve_ivp call per run.
+    integrator : {"dopri5", "rk4", "solve_ivp"}
+        Compiled adaptive Dormand-Prince 5(4), each run with its own step within
+        ``settings.rtol`` and ``atol`` (:func:`~slingloads.models.yaw_dynamics.integrate_dopri`,
+        the default); compiled fixed-step RK4 at ``settings.step``
+        (:func:`~slingloads.models.yaw_dynamics.integrate_rk4`); or one solve_ivp call per run
+        (``settings.method``, the reference).
 
     Returns
     -------
     YawRuns
     """
-    if integrator not in ("rk4", "solve_ivp"):
+    if integrator not in INTEGRATORS:
         raise InputError(f"{integrator=!r} is not a valid option. Valid options are: "
-                         f"'rk4', 'solve_ivp'", integrator)
+                         f"{', '.join(map(repr, INTEGRATORS))}", integrator)
     settings = yaw_solver_settings(settings)
     metrics = MetricSettings() if metrics is None else metrics
     areas = np.atleast_1d(np.asarray(areas, dtype=float))
@@ -667,9 +684,9 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     areas = np.broadcast_to(areas, (runs,)).copy() if areas.size == 1 else areas
     gust_list = gust_list * runs if len(gust_list) == 1 else gust_list
     # Trim: the static equilibrium nearest beta = 0 (per distinct area).
-    trims = {a: model.trim_beta(a) for a in np.unique(areas)}
-    beta_trim = np.array([trims[a] for a in areas])
-    run = integrate_rk4 if integrator == "rk4" else integrate_reference
+    distinct, back = np.unique(areas, return_inverse=True)
+    beta_trim = model.trim_betas(distinct)[back]
+    run = INTEGRATORS[integrator]
     hist = run(model, areas, gust_list, psi0=-beta_trim, rate0=0.0, settings=settings)
     frame = _run_metrics(model, areas, gust_list, hist, beta_trim[:, None], fit_range, metrics)
     return YawRuns(areas, gust_list, hist, frame, float(np.max(np.abs(beta_trim))), settings)
@@ -724,7 +741,7 @@ class SweepResult:
 
 
 def sizing_sweep(model, factors=None, gusts=None, settings=None, fit_range=FIT_RANGE,
-                 metrics=None, static=None, integrator="rk4"):
+                 metrics=None, static=None, integrator="dopri5"):
     """Sweep the parachute area from 1x to 2x the neutral static area over several gusts.
 
     Parameters

@@ -1,4 +1,5 @@
-"""Compiled fixed-step RK4 of many runs of the 1-DOF yaw model.
+"""Compiled batch integrators of many runs of the 1-DOF yaw model: fixed-step RK4 and
+adaptive Dormand-Prince 5(4).
 
 The same moments as :meth:`slingloads.models.yaw_dynamics.YawModel.moments` (fuselage table,
 fin at its local sideslip, Apollo legacy drogue), written on scalars operation for operation,
@@ -9,10 +10,25 @@ gust, a run that leaves a table frozen from the start of that step. Compiled wit
 (``cache=True``); the module is self-contained, so numba's own check of this file's source
 keeps the cache valid.
 
+The adaptive kernel :func:`dopri_batch` is the Dormand-Prince pair 5(4) of
+:func:`scipy.integrate.solve_ivp`'s ``RK45`` [1]_ (same error norm, step-size control and
+fourth-order dense output [2]_): each run is integrated segment by segment between its gust's
+breakpoints (no step straddles a jump or a kink) with its own step, and sampled on the output
+times from the dense output. The gust is evaluated in the kernel, exactly, from its pieces
+(between breakpoints ``c0 + c1 (t - start) + sum a cos(omega (t - ref) + phase)``); at a
+segment's end it takes the value just before the breakpoint.
+
 Model row (``M``): 1/2 rho [kg/m^3], yaw inertia [kg m^2], then flags and constants: has
 fuselage, has fin, fin at its local sideslip, has parachute, fin arm dx, dy [m], fin table
 limits lo, hi [rad], parachute CD [-], parachute arm dx, dy [m], fuselage table limits lo,
-hi [rad].
+hi [rad], true airspeed [m/s].
+
+References
+----------
+.. [1] J. R. Dormand, P. J. Prince, "A family of embedded Runge-Kutta formulae", Journal of
+   Computational and Applied Mathematics 6 (1), 1980.
+.. [2] L. F. Shampine, "Some Practical Runge-Kutta Formulas", Mathematics of Computation 46
+   (173), 1986 (the dense output).
 """
 
 from __future__ import annotations
@@ -26,9 +42,33 @@ _jit = numba.njit(cache=True, fastmath=False, nogil=True)
 _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
 (HALF_RHO, INERTIA, HAS_FUS, HAS_FIN, FIN_LOCAL, HAS_CHUTE, FIN_DX, FIN_DY, FIN_LO, FIN_HI,
- CHUTE_CD, CHUTE_DX, CHUTE_DY, FUS_LO, FUS_HI) = range(15)
+ CHUTE_CD, CHUTE_DX, CHUTE_DY, FUS_LO, FUS_HI, TAS) = range(16)
 #: Length of a model row.
-N_MODEL = 15
+N_MODEL = 16
+#: Smallest adaptive step before a run that leaves a table is stopped. [s]
+SMALLEST_STEP = 1e-6
+
+# Dormand-Prince 5(4): nodes, coefficients, error weights, dense output (scipy's RK45)
+DP_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
+DP_A = np.array([
+    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [1 / 5, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [3 / 40, 9 / 40, 0.0, 0.0, 0.0, 0.0],
+    [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0, 0.0],
+    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0, 0.0],
+    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0.0],
+    [35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
+DP_E = np.array([-71 / 57600, 0.0, 71 / 16695, -71 / 1920, 17253 / 339200, -22 / 525, 1 / 40])
+DP_P = np.array([
+    [1.0, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
+    [0.0, 0.0, 0.0, 0.0],
+    [0.0, 131558114200 / 32700410799, -68118460800 / 10900136933,
+     87487479700 / 32700410799],
+    [0.0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072],
+    [0.0, 127303824393 / 49829197408, -318862633887 / 49829197408,
+     701980252875 / 199316789632],
+    [0.0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
+    [0.0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423]])
 
 
 @_jit
@@ -147,3 +187,154 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fi
                 out_psi[j, k_out] = psi
                 out_rate[j, k_out] = rate
                 k_out += 1
+
+
+@_jit
+def gust_at(t, before, g, p_start, p_count, p_coef, h_off, h_count, harm, hint):
+    """Lateral gust [m/s] of distinct gust ``g`` at time ``t`` [s]: the piece that starts at
+    or before ``t`` (strictly before when ``before``: the value just before a breakpoint).
+
+    ``p_start`` (gusts, pieces) the pieces' starts, ``p_count`` (gusts,) how many;
+    ``p_coef`` (gusts, pieces, 3): c0 [m/s], c1 [m/s^2], ref [s]; ``h_off``, ``h_count``
+    (gusts, pieces) the piece's rows of ``harm`` (terms, 3): amplitude [m/s], omega [rad/s],
+    phase [rad]. ``hint[2]`` the piece found last, updated.
+    """
+    n = p_count[g]
+    lo = hint[2]
+    if lo < 0 or lo > n - 1:
+        lo = 0
+    while lo > 0 and (p_start[g, lo] > t or (before and p_start[g, lo] >= t)):
+        lo -= 1
+    while lo + 1 < n and (p_start[g, lo + 1] < t or (not before and p_start[g, lo + 1] == t)):
+        lo += 1
+    hint[2] = lo
+    ref = p_coef[g, lo, 2]
+    v = p_coef[g, lo, 0] + p_coef[g, lo, 1] * (t - p_start[g, lo])
+    first = h_off[g, lo]
+    for k in range(first, first + h_count[g, lo]):
+        v += harm[k, 0] * math.cos(harm[k, 1] * (t - ref) + harm[k, 2])
+    return v
+
+
+@_jit
+def _acceleration_at(t, before, psi, rate, g, area, M, fus_x, fus_n, fin_x, fin_k, p_start,
+                     p_count, p_coef, h_off, h_count, harm, hint):
+    """(psi'' [rad/s^2], outside a table) at time ``t`` with the gust evaluated in place."""
+    v = gust_at(t, before, g, p_start, p_count, p_coef, h_off, h_count, harm, hint)
+    tas = M[TAS]
+    return yaw_acceleration(psi, rate, math.atan2(v, tas), math.hypot(tas, v), area, M,
+                            fus_x, fus_n, fin_x, fin_k, hint)
+
+
+@_parallel_jit
+def dopri_batch(psi0, rate0, areas, index, seg_end, n_seg, p_start, p_count, p_coef, h_off,
+                h_count, harm, interval, rtol, atol, max_step, first_step, M, fus_x, fus_n,
+                fin_x, fin_k, out_psi, out_rate, left, exit_time, steps):
+    """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,) by
+    the adaptive Dormand-Prince 5(4) pair.
+
+    Run j follows distinct gust ``g = index[j]``: ``n_seg[g]`` segments ending at
+    ``seg_end[g]`` (the gust's breakpoints, then the end time), the gust's pieces as in
+    :func:`gust_at`. The local error estimate is kept within ``atol + rtol max(|y|, |y_new|)``
+    (root mean square over psi and r) and the step within ``max_step``; ``first_step`` is the
+    first trial step. ``out_psi``, ``out_rate`` (runs, outputs) receive the histories every
+    ``interval`` from t = 0 (dense output); ``left``, ``exit_time`` (runs,) whether and when
+    a run left a table: a stage outside a table halves the step, and below
+    :data:`SMALLEST_STEP` the run stops (its state frozen from then, its rate set to zero).
+    ``steps`` (runs,) receives the accepted steps of each run.
+    """
+    runs = psi0.size
+    n_out = out_psi.shape[1]
+    for j in numba.prange(runs):
+        hint = np.zeros(3, dtype=np.int64)
+        kp = np.empty(7)
+        kr = np.empty(7)
+        g = index[j]
+        area = areas[j]
+        psi, rate = psi0[j], rate0[j]
+        out_psi[j, 0], out_rate[j, 0] = psi, rate
+        sample = 1
+        t = 0.0
+        h = first_step
+        gone = False
+        accepted = 0
+        rejected = False
+        for s in range(n_seg[g]):
+            b = seg_end[g, s]
+            acc, o = _acceleration_at(t, False, psi, rate, g, area, M, fus_x, fus_n, fin_x,
+                                      fin_k, p_start, p_count, p_coef, h_off, h_count, harm,
+                                      hint)
+            kp[0], kr[0] = rate, acc
+            gone = o
+            while not gone and t < b:
+                h = min(h, max_step)
+                last = t + h >= b - 1e-12 * max(1.0, b)
+                if last:
+                    h = b - t
+                # stages 2 to 7 (7: at the fifth-order solution, first same as last)
+                outside = False
+                for i in range(1, 7):
+                    yp, yr = psi, rate
+                    for m in range(i):
+                        yp += h * DP_A[i, m] * kp[m]
+                        yr += h * DP_A[i, m] * kr[m]
+                    when = b if (last and DP_C[i] == 1.0) else t + DP_C[i] * h
+                    acc, o = _acceleration_at(when, last and DP_C[i] == 1.0, yp, yr, g, area,
+                                              M, fus_x, fus_n, fin_x, fin_k, p_start, p_count,
+                                              p_coef, h_off, h_count, harm, hint)
+                    kp[i], kr[i] = yr, acc
+                    outside = outside or o
+                new_psi, new_rate = yp, yr  # the last stage's argument is the solution
+                if outside:
+                    if h < 2.0 * SMALLEST_STEP:
+                        gone = True
+                        break
+                    h *= 0.5
+                    rejected = True
+                    continue
+                ep = 0.0
+                er = 0.0
+                for i in range(7):
+                    ep += DP_E[i] * kp[i]
+                    er += DP_E[i] * kr[i]
+                sp = atol + rtol * max(abs(psi), abs(new_psi))
+                sr = atol + rtol * max(abs(rate), abs(new_rate))
+                err = math.sqrt(0.5 * ((h * ep / sp) ** 2 + (h * er / sr) ** 2))
+                if err > 1.0:
+                    h *= max(0.2, 0.9 * err ** -0.2)
+                    rejected = True
+                    continue
+                t_new = b if last else t + h
+                # dense output at the samples in (t, t_new]
+                while sample < n_out and sample * interval <= t_new + 1e-9 * interval:
+                    theta = (sample * interval - t) / h
+                    dp = 0.0
+                    dr = 0.0
+                    for i in range(7):
+                        w = DP_P[i, 0] + theta * (DP_P[i, 1] + theta * (
+                            DP_P[i, 2] + theta * DP_P[i, 3]))
+                        dp += kp[i] * w
+                        dr += kr[i] * w
+                    out_psi[j, sample] = psi + h * theta * dp
+                    out_rate[j, sample] = rate + h * theta * dr
+                    sample += 1
+                accepted += 1
+                t = t_new
+                psi, rate = new_psi, new_rate
+                kp[0], kr[0] = kp[6], kr[6]
+                grow = 10.0 if err == 0.0 else min(10.0, 0.9 * err ** -0.2)
+                if rejected:  # no growth right after a rejected step
+                    grow = min(1.0, grow)
+                rejected = False
+                h *= grow
+            if gone:
+                break
+        if gone:
+            left[j] = True
+            exit_time[j] = t
+            rate = 0.0
+        while sample < n_out:
+            out_psi[j, sample] = psi
+            out_rate[j, sample] = rate
+            sample += 1
+        steps[j] = accepted

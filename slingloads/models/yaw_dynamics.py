@@ -61,6 +61,15 @@ from slingloads.limits import MAX_ODE_EVALUATIONS, evaluation_budget
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
 from slingloads.models.flight import SIZING_SPEED, FlightCondition
+from slingloads.models.gusts import (
+    DrydenTurbulence,
+    FiniteGust,
+    HarmonicGust,
+    OneMinusCosineGust,
+    StepGust,
+    SustainedGust,
+    TabulatedGust,
+)
 from slingloads.models.integration import SolverSettings
 from slingloads.models.parachute import Parachute
 
@@ -259,19 +268,35 @@ class YawModel:
 
         Raises :class:`InputError` when no equilibrium lies within +-``search``.
         """
+        return float(self.trim_betas([area], search)[0])
+
+    def trim_betas(self, areas, search=TRIM_SEARCH):
+        """:meth:`trim_beta` of every parachute area of ``areas`` [m^2] at once (the moments
+        on one sideslip grid, the parachute's scaled by each area). [rad]"""
+        areas = np.atleast_1d(np.asarray(areas, dtype=float))
         lo, hi = self.beta_range()
         grid = np.linspace(max(lo, -search), min(hi, search), 801)
-        total = sum(self.static_moments(grid, area))
-        if np.any(total == 0):
-            zeros = grid[total == 0]
-            return float(zeros[np.argmin(np.abs(zeros))])
-        change = np.nonzero(np.sign(total[:-1]) != np.sign(total[1:]))[0]
-        if change.size == 0:
+        n_fus, n_fin, _ = self.static_moments(grid, 0.0)
+        unit = self.static_moments(grid, 1.0)[2] if self.parachute is not None else 0.0
+        if self.parachute is None and np.any(areas != 0):
+            self.static_moments(grid, areas[areas != 0][0])  # refuses the area
+        total = (0 + n_fus + n_fin) + areas[:, None] * unit
+        total = np.broadcast_to(total, (areas.size, grid.size))
+        b0, b1, n0, n1 = grid[:-1], grid[1:], total[:, :-1], total[:, 1:]
+        change = np.sign(n0) != np.sign(n1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            roots = np.where(change, b0 - n0 * (b1 - b0) / (n1 - n0), np.nan)
+        exact = total == 0
+        roots = np.where(exact.any(axis=1)[:, None],
+                         np.where(exact, grid, np.nan), np.pad(roots, ((0, 0), (0, 1)),
+                                                               constant_values=np.nan))
+        found = np.isfinite(roots).any(axis=1)
+        if not found.all():
             raise InputError(f"no yaw trim within +-{np.degrees(search):.3g} deg of sideslip: "
-                             f"the yawing moment does not change sign", float(total[400]))
-        b0, b1, n0, n1 = grid[change], grid[change + 1], total[change], total[change + 1]
-        roots = b0 - n0 * (b1 - b0) / (n1 - n0)
-        return float(roots[np.argmin(np.abs(roots))])
+                             f"the yawing moment does not change sign",
+                             float(total[np.argmin(found), 400]))
+        nearest = np.nanargmin(np.abs(roots), axis=1)
+        return roots[np.arange(areas.size), nearest]
 
 
 @dataclass(frozen=True)
@@ -431,6 +456,7 @@ def _compiled_model(model):
 
     row = np.zeros(yb.N_MODEL)
     row[yb.HALF_RHO], row[yb.INERTIA] = model._half_rho, model.yaw_inertia
+    row[yb.TAS] = model._tas
     none = np.zeros(2)
     fus_x = fus_n = fin_x = fin_k = none
     if model.fuselage is not None:
@@ -444,6 +470,138 @@ def _compiled_model(model):
         row[yb.CHUTE_CD], row[yb.CHUTE_DX], row[yb.CHUTE_DY] = model._chute
         row[yb.HAS_CHUTE] = 1.0
     return (row, *(np.ascontiguousarray(a, dtype=float) for a in (fus_x, fus_n, fin_x, fin_k)))
+
+
+#: First trial step of the adaptive runs (the step then grows tenfold a step at most). [s]
+FIRST_STEP = 1e-3
+
+
+def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
+    """Integrate many runs with the compiled adaptive Dormand-Prince 5(4) pair.
+
+    The same runs as :func:`integrate_rk4`, each with its own step, controlled so that the
+    local error estimate stays within ``settings.atol + settings.rtol |y|`` (the norm and the
+    step control of :func:`scipy.integrate.solve_ivp`'s ``RK45``), at most
+    ``settings.max_step``; ``settings.step`` is not used. Runs are integrated in parallel
+    over the cores (:func:`slingloads.models.yaw_batch.dopri_batch`), segment by segment
+    between their gust's breakpoints, and sampled on the output times from the method's
+    fourth-order dense output. The gust is evaluated in the kernel from its exact formula
+    (:func:`_gust_pieces`). A stage outside a table halves the step; a run that still leaves
+    below 1e-6 s is flagged and frozen from then, never clamped silently.
+
+    Parameters
+    ----------
+    model : YawModel
+    areas : array_like, shape (runs,) or scalar
+        Parachute flat-plate areas. [m^2]
+    gusts : gust or sequence of gusts (step, finite, 1-cosine, continuous, harmonic,
+        turbulence or tabulated; :mod:`slingloads.models.gusts`)
+    psi0, rate0 : array_like
+        Initial yaw [rad] and yaw rate [rad/s].
+    settings : SolverSettings, optional
+
+    Returns
+    -------
+    Histories
+    """
+    from slingloads.models import yaw_batch
+
+    if not isinstance(model, YawModel):
+        raise InputError("the adaptive compiled integrator runs a YawModel; use the 'rk4' "
+                         "integrator for other models", type(model).__name__)
+    settings = yaw_solver_settings(settings)
+    areas, gusts, psi, rate = _check_runs(model, areas, gusts, psi0, rate0)
+    runs = areas.size
+    unique, index = _distinct(gusts)
+    times = settings.output_times()
+    t_end = float(times[-1])
+    segments = [_segment_ends(g, t_end) for g in unique]
+    seg_end = _padded(segments)
+    n_seg = np.array([len(e) for e in segments], dtype=np.int64)
+    pieces = [_gust_pieces(g, t_end) for g in unique]
+    width = max(len(p) for p in pieces)
+    p_start = np.full((len(unique), width), np.inf)
+    p_coef = np.zeros((len(unique), width, 3))
+    h_off = np.zeros((len(unique), width), dtype=np.int64)
+    h_count = np.zeros((len(unique), width), dtype=np.int64)
+    harm = [np.zeros((0, 3))]
+    rows = 0
+    for g, gust_pieces in enumerate(pieces):
+        for k, (start, c0, c1, ref, terms) in enumerate(gust_pieces):
+            p_start[g, k] = start
+            p_coef[g, k] = c0, c1, ref
+            h_off[g, k], h_count[g, k] = rows, len(terms)
+            harm.append(np.asarray(terms, dtype=float).reshape(-1, 3))
+            rows += len(terms)
+    harm = np.ascontiguousarray(np.concatenate(harm))
+    p_count = np.array([len(p) for p in pieces], dtype=np.int64)
+    out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
+    left = np.zeros(runs, dtype=bool)
+    exit_time = np.full(runs, np.nan)
+    steps = np.zeros(runs, dtype=np.int64)
+    yaw_batch.dopri_batch(psi, rate, areas, index.astype(np.int64), seg_end, n_seg, p_start,
+                          p_count, p_coef, h_off, h_count, harm, float(settings.output_interval),
+                          float(settings.rtol), float(settings.atol), float(settings.max_step),
+                          FIRST_STEP, *_compiled_model(model), out_psi, out_rate, left,
+                          exit_time, steps)
+    gust_out = np.stack([g.velocity(times) for g in unique])
+    gamma_out = model.relative_wind(gust_out)[0]
+    beta = gamma_out[index] - out_psi
+    return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
+
+
+def _segment_ends(gust, t_end):
+    """Ends of the smooth pieces of ``gust`` over (0, ``t_end``]: its breakpoints, then
+    ``t_end``. [s]"""
+    inner = [b for b in gust.breakpoints if b is not None and 0.0 < b < t_end]
+    return np.unique([*inner, t_end])
+
+
+def _padded(rows):
+    out = np.full((len(rows), max(len(r) for r in rows)), np.inf)
+    for i, r in enumerate(rows):
+        out[i, :len(r)] = r
+    return out
+
+
+def _gust_pieces(gust, t_end):
+    """The gust as formulas between its breakpoints, for the compiled adaptive integrator:
+    ``[(start [s], c0 [m/s], c1 [m/s^2], ref [s], [(a [m/s], omega [rad/s], phase [rad])])]``,
+    the gust from ``start`` on (until the next piece) being
+    ``c0 + c1 (t - start) + sum a cos(omega (t - ref) + phase)``; the same formulas as the
+    gusts' ``velocity``."""
+    if isinstance(gust, TabulatedGust):
+        gust.velocity(t_end)  # refuses an end time past the table
+        t, v = gust.time, gust.velocity_table
+        slope = np.diff(v) / np.diff(t)
+        return ([(0.0, 0.0, 0.0, 0.0, [])]
+                + [(t[i], v[i], slope[i], 0.0, []) for i in range(t.size - 1)]
+                + [(t[-1], v[-1], 0.0, 0.0, [])])
+    if isinstance(gust, DrydenTurbulence):
+        terms = np.column_stack([gust.amplitudes, gust.omega, gust.phases])
+        return [(0.0, 0.0, 0.0, 0.0, []), (gust.onset, 0.0, 0.0, gust.onset, terms),
+                (gust.end, 0.0, 0.0, 0.0, [])]
+    if not isinstance(gust, StepGust):
+        raise InputError(f"the adaptive compiled integrator knows the gusts of "
+                         f"slingloads.models.gusts, not a {type(gust).__name__}; use the "
+                         f"'rk4' integrator", type(gust).__name__)
+    amp, t0 = gust.amplitude, gust.onset
+    rest = (0.0, 0.0, 0.0, 0.0, [])
+    if isinstance(gust, HarmonicGust):
+        return [rest, (t0, 0.0, 0.0, t0, [(amp, 2 * np.pi / gust.period, -0.5 * np.pi)])]
+    if isinstance(gust, SustainedGust):
+        tr = gust.rise_time
+        if tr == 0:
+            return [rest, (t0, amp, 0.0, 0.0, [])]
+        return [rest, (t0, 0.5 * amp, 0.0, t0, [(-0.5 * amp, np.pi / tr, 0.0)]),
+                (t0 + tr, amp, 0.0, 0.0, [])]
+    if isinstance(gust, OneMinusCosineGust):
+        d = gust.duration
+        return [rest, (t0, 0.5 * amp, 0.0, t0, [(-0.5 * amp, 2 * np.pi / d, 0.0)]),
+                (t0 + d, 0.0, 0.0, 0.0, [])]
+    if isinstance(gust, FiniteGust):
+        return [rest, (t0, amp, 0.0, 0.0, []), (t0 + gust.duration, 0.0, 0.0, 0.0, [])]
+    return [rest, (t0, amp, 0.0, 0.0, [])]
 
 
 def _numpy_rk4(model, psi, rate, areas, index, tables, start, step, stored, out_psi,

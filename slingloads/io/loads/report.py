@@ -108,8 +108,9 @@ CONVENTIONS = (
     "the part FORWARD of it, moments about the point (x_cut, y0, z0) of the loads reference "
     "axis; Vx > 0 is tension; +My puts the +z fibres in tension, +Mz the -y fibres.",
     "A point load exactly at a cut station belongs to the forward part. Hook directions: "
-    "AXIAL along the mast, AZxxx inclined from the mast towards azimuth xxx deg (0 aft, "
-    "90 right).",
+    "VERTICAL along the earth vertical of the attitude (hanging: hub above the CG), AZxxx "
+    "inclined from that vertical towards azimuth xxx deg (0 aft, 90 right), TOW along the "
+    "trimmed towing cable.",
     "LIMIT loads: hook load Nz x weight (CS 29.865) with the aerodynamic, parachute, gravity "
     "and inertia loads. ULTIMATE = ultimate factor (CS 29.303: 1.5) x LIMIT, only where a "
     "title says ULTIMATE.",

@@ -1,0 +1,70 @@
+"""Compiled metrics of the 1-DOF yaw runs, one pass over each run's history.
+
+The same quantities, defined the same way, as the vectorised numpy expressions they replace in
+:func:`slingloads.analyses.chute_sizing._run_metrics` (see there and :class:`YawRuns` for
+their meaning): peak |beta| and |psi|, sideslip range, settling time, and the two first
+positive yaw-rate peaks after the gust ends (refined by a parabola through the peak and its
+neighbours) for the logarithmic decrement. Runs in parallel over the cores (`numba
+<https://numba.pydata.org>`_, ``cache=True``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+
+@numba.njit(cache=True, nogil=True, parallel=True)
+def history_metrics(t, beta, psi, rate, trim, onset, free, settle_fraction, peak_threshold,
+                    out):
+    """Fill ``out`` (runs, 8): peak |beta| [rad], peak |psi| [rad], min beta, max beta [rad],
+    settling time [s] (NaN if never or ``free`` is NaN), first and second refined positive
+    yaw-rate peaks after ``free`` [rad/s] (-inf if missing), NaN (spare column).
+
+    ``t`` (n,) [s]; ``beta``, ``psi``, ``rate`` (runs, n); ``trim`` (runs,) the trim sideslip
+    [rad]; ``onset``, ``free`` (runs,) the gust's onset and the time it stops changing [s].
+    """
+    runs, n = beta.shape
+    for j in numba.prange(runs):
+        pb = 0.0
+        pp = 0.0
+        lo = np.inf
+        hi = -np.inf
+        exc = 0.0
+        for k in range(n):
+            b = beta[j, k]
+            pb = max(pb, abs(b))
+            pp = max(pp, abs(psi[j, k]))
+            lo = min(lo, b)
+            hi = max(hi, b)
+            exc = max(exc, abs(b - trim[j]))
+        band = settle_fraction * exc
+        last = n - 1
+        for k in range(n - 1, -1, -1):
+            if abs(beta[j, k] - trim[j]) > band:
+                last = k
+                break
+        settling = np.nan
+        if free[j] == free[j] and last + 1 < n:
+            settling = max(t[last + 1] - onset[j], 0.0)
+        p1 = -np.inf
+        p2 = -np.inf
+        found = 0
+        for k in range(1, n - 1):
+            r = rate[j, k]
+            if (r > rate[j, k - 1] and r >= rate[j, k + 1] and r > peak_threshold
+                    and t[k] > free[j]):
+                curvature = rate[j, k - 1] - 2 * r + rate[j, k + 1]
+                refined = r
+                if curvature < 0:
+                    refined = r - (rate[j, k + 1] - rate[j, k - 1]) ** 2 / (8 * curvature)
+                found += 1
+                if found == 1:
+                    p1 = refined
+                else:
+                    p2 = refined
+                    break
+        out[j, 0], out[j, 1], out[j, 2], out[j, 3] = pb, pp, lo, hi
+        out[j, 4], out[j, 5], out[j, 6], out[j, 7] = settling, p1, p2, math.nan
