@@ -243,3 +243,111 @@ def test_example_envelope_matches_loads(run_dir):
     got = [c.value for c in _cells(ws, "Vz max [N]")][:len(csv["station"].unique())]
     want = csv.groupby("station", sort=False)["Vz_N"].max().to_numpy()
     np.testing.assert_allclose(np.asarray(got, float), want, rtol=1e-12, atol=1e-9)
+
+
+# ------------------------------------------------------------- multibody and campaign reports
+@pytest.fixture(scope="module")
+def campaign_dir(workbook, tmp_path_factory):
+    """The campaign report of the example with 'run campaign' = yes (its small matrix)."""
+    book = openpyxl.load_workbook(workbook)
+    _set_study(book, {"run campaign": "yes"})
+    root = tmp_path_factory.mktemp("campaign")
+    path = root / "ident.xlsx"
+    book.save(path)
+    out = root / "out"
+    assert main(["campaign", str(path), "--out", str(out), "--cache", str(root / "cache"),
+                 "--quiet"]) == 0
+    return out, path
+
+
+def _value_cells(ws):
+    """Every numeric cell under a header that names a unit the format table knows, with its
+    header."""
+    from slingloads.io.common.formats import header_unit, unit_format
+
+    out = []
+    for row in ws.iter_rows():
+        for cell in row:
+            if isinstance(cell.value, str) and unit_format(header_unit(cell.value)):
+                for r in range(cell.row + 1, ws.max_row + 1):
+                    below = ws.cell(r, cell.column)
+                    if not isinstance(below.value, (int, float)) or isinstance(
+                            below.value, bool):
+                        break
+                    out.append((cell.value, below))
+    return out
+
+
+def _check_print_ready(book, input_path, where):
+    """Cover with the input's SHA-256 and the sheets; every sheet fitted to one page wide on
+    A4 with header and footer; frozen panes on the table sheets; value columns formatted."""
+    assert book.sheetnames[0] == "Cover", where
+    ws = book["Cover"]
+    rows = [[c.value for c in r] for r in ws.iter_rows()]
+    table = {r[0]: r[1] for r in rows if r[0] is not None and len(r) > 1}
+    assert table["input SHA-256"] == file_digest(input_path), where
+    assert table["document number"] == "DOC-42 A" and table["author"] == "A. Author"
+    assert set(book.sheetnames[1:]) <= set(table), where
+    text = " ".join(str(v) for r in rows for v in r if v)
+    assert "docs/conventions.md" in text, where
+    for ws in book.worksheets:
+        at = f"{where}:{ws.title}"
+        assert ws.page_setup.paperSize == 9, at
+        assert ws.sheet_properties.pageSetUpPr.fitToPage, at
+        assert ws.page_setup.fitToWidth == 1 and ws.page_setup.fitToHeight == 0, at
+        assert ws.oddFooter.center.text == "page &P of &N", at
+        if ws.title not in ("Cover", "Plots") and ws.max_column > 1:
+            assert ws.freeze_panes is not None, at
+    cells = [c for ws in book.worksheets[1:] for c in _value_cells(ws)]
+    assert cells, where
+    general = [(h, c.coordinate) for h, c in cells if c.number_format == "General"]
+    assert not general, (where, general[:5])
+
+
+def test_multibody_report_print_ready(run_dir, workbook):
+    """The multibody report has the cover, print setup, frozen panes and unit formats of the
+    other reports; the state matrix is scientific with its round-off written as 0 (the trim
+    is symmetric: entries of 1e-17 couple the lateral and longitudinal states); the trim
+    reads yes / no; the wide Metrics table is one column per run."""
+    book = _book(run_dir, "multibody")
+    _check_print_ready(book, workbook, "multibody")
+    matrix = book["StateMatrix"]
+    numbers = [c for r in matrix.iter_rows() for c in r if isinstance(c.value, float)]
+    assert {c.number_format for c in numbers} == {"0.00E+00;-0.00E+00;0"}
+    assert all(c.value == 0.0 or abs(c.value) > 1e-10 for c in numbers)
+    summary = {r[0].value: r for r in book["Summary"].iter_rows() if r[0].value}
+    assert summary["converged"][1].value == "yes"
+    assert summary["HC mass"][1].number_format == "#,##0.0"
+    assert summary["HC mass"][2].value == "kg"
+    metrics = book["Metrics"]
+    heads = [c.value for r in metrics.iter_rows() for c in r if c.value == "metric"]
+    assert heads and metrics.max_column <= 12
+
+
+def test_campaign_report_print_ready(campaign_dir):
+    """The campaign report has the cover, print setup, frozen panes and unit formats of the
+    other reports, and its wide tables print in blocks each starting with the run id."""
+    out, path = campaign_dir
+    book = openpyxl.load_workbook(out / "ident-campaign.xlsx")
+    _check_print_ready(book, path, "campaign")
+    metrics = book["Metrics"]
+    run_headers = [c for r in metrics.iter_rows() for c in r if c.value == "run"]
+    assert len(run_headers) >= 2 and all(c.column == 1 for c in run_headers)
+    assert metrics.max_column <= 16
+
+
+@pytest.mark.skipif(shutil.which("soffice") is None, reason="LibreOffice (soffice) not found")
+def test_libreoffice_page_counts_multibody_campaign(run_dir, campaign_dir, tmp_path):
+    """Converted to A4 PDF by LibreOffice headless, the example's multibody and campaign
+    reports print in at most 25 pages each (11 and 15 pages before, but with every value at
+    full precision and the tables cut from their row labels)."""
+    paths = [str(run_dir / "ident-multibody.xlsx"), str(campaign_dir[0] / "ident-campaign.xlsx")]
+    done = subprocess.run(
+        ["soffice", f"-env:UserInstallation=file://{tmp_path}/profile", "--headless",
+         "--convert-to", "pdf", "--outdir", str(tmp_path), *paths],
+        capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    for report in ("multibody", "campaign"):
+        pdf = (tmp_path / f"ident-{report}.pdf").read_bytes()
+        pages = len(re.findall(rb"/Type\s*/Page(?![s\w])", pdf))
+        assert 2 <= pages <= 25, (report, pages)

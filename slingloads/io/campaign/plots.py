@@ -11,9 +11,24 @@ from matplotlib.figure import Figure
 
 from slingloads.constants import FOOT, KNOT
 from slingloads.errors import InputError
+from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 
 YAW = "yaw (heading from flight path) [deg]"
 BETA = "beta [deg]"
+
+
+def _legend(ax, **kwargs):
+    """A legend on ``ax`` when something on it has a label (matplotlib warns otherwise)."""
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(**kwargs)
+
+
+def _small(ax):
+    """Tick labels, axis labels and title at the sizes of a 7 in wide figure."""
+    ax.tick_params(labelsize=7)
+    ax.xaxis.label.set_fontsize(8)
+    ax.yaxis.label.set_fontsize(8)
+    ax.title.set_fontsize(9)
 
 
 def _area(units):
@@ -28,7 +43,8 @@ def plot_selection(result, units="SI"):
     sel = result.selection
     by = sel.by_area
     f = by["area factor [-]"].to_numpy()
-    fig = Figure(figsize=(11, 3.6), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 3.2)), left=0.5, right=0.1, bottom=0.5,
+                      top=0.35, wspace=0.45)
     axes = fig.subplots(1, 3)
     axes[0].bar(f, by["runs"], width=0.08 * (np.ptp(f) or 1), color="0.85", label="runs")
     axes[0].bar(f, by["stable runs"], width=0.08 * (np.ptp(f) or 1), label="stable runs")
@@ -36,23 +52,25 @@ def plot_selection(result, units="SI"):
     axes[1].plot(f, by["least yaw-mode damping ratio [-]"], "o-")
     axes[1].axhline(sel.criteria.min_damping, color="r", ls="--",
                     label=f"criterion {sel.criteria.min_damping:g}")
-    axes[1].set(ylabel="least yaw-mode damping ratio [-]", title="damping (eigenvalues)")
+    axes[1].set(ylabel="damping ratio [-]", title="least yaw-mode damping")
     axes[2].plot(f, by["largest trimmed swing angle [deg]"], "o-")
-    axes[2].set(ylabel="largest trimmed swing angle [deg]", title="drag proxy")
+    axes[2].set(ylabel="swing angle [deg]", title="drag proxy: largest\ntrimmed swing angle")
     for ax in axes:
-        ax.set_xlabel("area / neutral static area [-]")
+        ax.set_xlabel("area / neutral area [-]")
         ax.grid(True, alpha=0.4)
         for value, style, label in ((sel.smallest_stable, ":", "smallest stable"),
                                     (sel.recommended, "-", "recommended")):
             if np.isfinite(value):
                 ax.axvline(value, color="g", ls=style, lw=1.2, label=label)
-        ax.legend(fontsize=7)
+        _small(ax)
+        _legend(ax, fontsize=6)
     return fig
 
 
 def plot_sweep(result, runs, factor, title):
     """Yaw and sideslip histories of runs that differ by one factor (paper figures 9-13)."""
-    fig = Figure(figsize=(10, 5.5), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 5.0)), left=0.7, right=0.15, bottom=0.5,
+                      top=0.4, hspace=0.1)
     axes = fig.subplots(2, 1, sharex=True)
     frame = result.metrics.set_index("run")
     for run in runs:
@@ -64,7 +82,8 @@ def plot_sweep(result, runs, factor, title):
     axes[1].set(ylabel="sideslip beta [deg]", xlabel="time [s]")
     for ax in axes:
         ax.grid(True, alpha=0.4)
-    axes[0].legend(fontsize=8, ncols=2)
+        _small(ax)
+    _legend(axes[0], fontsize=7, ncols=2)
     return fig
 
 
@@ -89,7 +108,8 @@ def plot_stability_map(stability, neutral_area, units="SI"):
     scale, unit = _area(units)
     points = stability.points
     altitudes = sorted(points["density altitude [m]"].unique())
-    fig = Figure(figsize=(4.2 * len(altitudes) + 1, 7), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.4)), left=0.7, right=0.1, bottom=0.5,
+                      top=0.35, wspace=0.6, hspace=0.45)
     axes = fig.subplots(2, len(altitudes), squeeze=False)
     quantities = (("yaw mode damping ratio [-]", "yaw-mode damping ratio [-]", "viridis"),
                   ("largest real part [1/s]", "largest real part [1/s]", "coolwarm"))
@@ -106,7 +126,9 @@ def plot_stability_map(stability, neutral_area, units="SI"):
                                      vmin=-bound, vmax=bound)
             else:
                 mesh = ax.pcolormesh(speeds, areas, values, shading="nearest", cmap=cmap)
-            fig.colorbar(mesh, ax=ax, label=label)
+            bar = fig.colorbar(mesh, ax=ax)
+            bar.set_label(label, fontsize=7)
+            bar.ax.tick_params(labelsize=7)
             minimum = stability.minimum[np.isclose(stability.minimum["density altitude [m]"],
                                                    h)]
             ax.plot(minimum["airspeed EAS [m/s]"] / KNOT,
@@ -114,7 +136,8 @@ def plot_stability_map(stability, neutral_area, units="SI"):
                     label="minimum stable area")
             ax.set(xlabel="airspeed [KEAS]", ylabel=f"parachute area [{unit}]",
                    title=f"{h / FOOT:.0f} ft density altitude")
-            ax.legend(fontsize=7, loc="upper right")
+            _small(ax)
+            _legend(ax, fontsize=6, loc="upper right")
     return fig
 
 
@@ -124,7 +147,8 @@ def plot_no_parachute(result):
     npr = result.no_parachute
     runs = npr.runs
     targets = sorted(runs["ramp target [m/s]"].unique())
-    fig = Figure(figsize=(11, 2.4 * len(targets) + 0.6), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.0 * len(targets) + 0.9)), left=0.7,
+                      right=0.15, bottom=0.5, top=0.3, wspace=0.3, hspace=0.45)
     axes = fig.subplots(len(targets), 2, squeeze=False, sharex=True)
     for i, target in enumerate(targets):
         for name, t in npr.keys:
@@ -137,11 +161,13 @@ def plot_no_parachute(result):
             axes[i, 1].plot(h["time [s]"], h[BETA], label=name)
         axes[i, 0].set(ylabel="yaw [deg]", title=f"wind ramp to {target / KNOT:.0f} kt")
         axes[i, 1].set(ylabel="beta [deg]", title=f"wind ramp to {target / KNOT:.0f} kt")
-        axes[i, 0].legend(fontsize=7)
+        _legend(axes[i, 0], fontsize=6)
         for ax in axes[i]:
             ax.grid(True, alpha=0.4)
     for ax in axes[-1]:
         ax.set_xlabel("time [s]")
+    for ax in axes.flat:
+        _small(ax)
     return fig
 
 
@@ -150,7 +176,8 @@ def plot_envelope(result):
     envelope handed to the loads (with the margin)."""
     env = result.envelope
     m = result.metrics[np.isclose(result.metrics["area factor [-]"], env.area_factor)]
-    fig = Figure(figsize=(6, 5), layout="constrained")
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.6)), left=0.8, right=0.3, bottom=0.55,
+                      top=0.4)
     ax = fig.subplots()
     for _, r in m.iterrows():
         ax.plot([r["beta min [deg]"], r["beta max [deg]"], r["beta max [deg]"],
@@ -166,5 +193,6 @@ def plot_envelope(result):
     ax.set(xlabel="sideslip beta [deg]", ylabel="angle of attack alpha [deg]",
            title=f"runs at {env.area_factor:g} x neutral area (grey: each run's range)")
     ax.grid(True, alpha=0.4)
-    ax.legend(fontsize=8)
+    _small(ax)
+    _legend(ax, fontsize=7)
     return fig

@@ -5,10 +5,12 @@ the command line or the workbook asks for (a Dask scheduler, local worker proces
 run cache of :mod:`slingloads.io.campaign.cache`. :func:`write` publishes, all at once or not at
 all (:mod:`slingloads.io.common.atomic`):
 
-* ``<stem>-campaign.xlsx``: sheets *Summary* (inputs digest, matrix definition, execution,
-  selection with its governing conditions, the 1.0 x neutral area in the 1-DOF and multibody
-  models, speed limits without parachute, loads hand-off), *Matrix*, *Metrics* (one row per
-  run), *Selection* (by area), *NeutralArea*, *Sensitivity*, *StabilityMap*, *NoParachute*,
+* ``<stem>-campaign.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*
+  (identification, input file and its SHA-256, version, sheets, conventions), *Summary*
+  (warnings on the inputs, selection with its governing conditions, the 1.0 x neutral area
+  in the 1-DOF and multibody models, matrix definition, execution, speed limits without
+  parachute, loads hand-off), *Matrix*, *Metrics* (one row per run, in column blocks that fit
+  a page), *Selection* (by area), *NeutralArea*, *Sensitivity*, *StabilityMap*, *NoParachute*,
   *LoadsHandoff* and *Plots*;
 * ``<stem>-campaign-<tag>.png``: selection, sensitivity to each factor (paper figures 9-13),
   stability map, transport without parachute (figures 16-18), loads envelope;
@@ -32,21 +34,35 @@ import pandas as pd
 from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
-from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
-from slingloads.io.common.report import check_units, digest_frame
+from slingloads.io.common.cover import report_info
+from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.figures import drawings, png_bytes, start_drawing
+from slingloads.io.common.report import check_units, column_blocks, warning_sections
 from slingloads.io.common.workbook import located
 
 ANALYSIS = "campaign"
 _PNG_DPI = 90
 #: Names of the files of a campaign report, for the publisher (a new report replaces them).
 OUTPUTS = ("{stem}-campaign.xlsx", "{stem}-campaign-histories.parquet", "{stem}-campaign-*.png")
-NUMBER_FORMATS = format_by_header([
-    (r"\[deg\]", "0.00"),
-    (r"ratio|factor|\[-\]|\[1/s\]", "0.0000"),
-    (r"\[(m\^2|ft\^2)\]", "0.000"),
-    (r"\[(N|lbf)\]", "#,##0"),
-    (r"\[(m|ft|kt|m/s|kg|lb|s)\]", "0.00"),
-])
+TITLE = "Campaign report: parachute selection over the operating envelope"
+DESCRIPTION = (
+    "The multibody model of the towed sling load run over a matrix of parachute areas, "
+    "airspeeds, mass cases, density altitudes, cable lengths, carriers and manoeuvres: the "
+    "smallest parachute area stable in every condition and the recommended one (least drag "
+    "meeting the damping criterion), with their governing conditions; the 1.0 x neutral area "
+    "checked in the 1-DOF and multibody models; the sensitivity to each factor; the stability "
+    "map over area x airspeed; the transport without parachute; and the angle envelope "
+    "handed to the loads. Method: docs/campaign.md.")
+CONVENTIONS = (
+    "Earth axes of the multibody model: X aft along the flight path, Y right, Z up; yaw is "
+    "the heading of the carried helicopter from the flight path, beta > 0 wind from the "
+    "right. Areas are flat-plate parachute areas; area factor = area / neutral static area "
+    "(total dN/dbeta = 0).",
+    "A condition is stable when every eigenvalue's real part is below -1e-6 1/s. The loads "
+    "hand-off gives the extremes of the dynamics (angles, tensions) times the loads margin, "
+    "not loads; the loads report states LIMIT or ULTIMATE. Definitions: docs/campaign.md, "
+    "docs/multibody.md.",
+)
 #: US conversions of the report, by the SI unit in a header: (factor from SI, unit).
 _US = {"m/s": (1.0 / KNOT, "kt"), "m": (1.0 / FOOT, "ft"), "kg": (1.0 / POUND, "lb"),
        "N": (1.0 / POUND_FORCE, "lbf"), "m^2": (1.0 / FOOT**2, "ft^2")}
@@ -253,11 +269,24 @@ def handoff_table(report):
     return env.to_frame()
 
 
-def _sheets(report, units, digest):
+def _parts(title, frame, keys):
+    """Sections of a table printed in column blocks that fit a page (``keys`` first in
+    each): its title alone when it fits, else a heading then ``part k of n``."""
+    tables = column_blocks(frame, keys)
+    if len(tables) == 1:
+        return [Section(title, tables[0])]
+    return [Section(title), *(Section(f"{title}, part {k + 1} of {len(tables)}", table)
+                              for k, table in enumerate(tables))]
+
+
+def _sheets(report, units, warnings=()):
     r = report.result
-    summary = [Section("Inputs", digest),
-               Section("Campaign", definition_table(report, units)),
-               Section("Parachute selection", selection_table(report, units))]
+    summary = [Section("Summary of the campaign",
+                       note="Parachute selection first; every run: sheets Matrix and "
+                            "Metrics."),
+               *warning_sections(warnings),
+               Section("Parachute selection", selection_table(report, units)),
+               Section("Campaign", definition_table(report, units))]
     limits = no_parachute_table(report, units)
     if limits is not None:
         summary.append(Section("Transport without parachute: largest convergent ramp",
@@ -266,11 +295,15 @@ def _sheets(report, units, digest):
     if handoff is not None:
         summary.append(Section(f"Dynamics handed to the loads: runs at "
                                f"{r.envelope.area_factor:g} x neutral area, margin "
-                               f"{r.envelope.margin:g}", handoff))
+                               f"{r.envelope.margin:g}", note="Extremes and the envelope "
+                               "with its margin: sheet LoadsHandoff."))
+    matrix = r.campaign.matrix.frame
+    results = r.metrics[["run", *(c for c in r.metrics.columns if c not in matrix.columns)]]
     sheets = {
         "Summary": summary,
-        "Matrix": in_units(r.campaign.matrix.frame, units),
-        "Metrics": in_units(r.metrics, units),
+        "Matrix": _parts("The run matrix", in_units(r.campaign.matrix.frame, units), ["run"]),
+        "Metrics": _parts("Metrics of every run (its definition: sheet Matrix)",
+                          in_units(results, units), ["run"]),
         "Selection": [Section("By area factor", in_units(r.selection.by_area, units))],
         "NeutralArea": [Section("1.0 x neutral area: 1-DOF and multibody verdicts",
                                 r.neutral_check)],
@@ -280,14 +313,22 @@ def _sheets(report, units, digest):
     if r.carrier is not None:
         sens.append(Section("Carrier free against frozen (paired runs)",
                             in_units(r.carrier, units)))
-    sheets["Sensitivity"] = sens or "no factor varies"
+    sheets["Sensitivity"] = ([Section("Sensitivity of the metrics to each factor of the "
+                                      "matrix", note="Each row: the runs with that value "
+                                      "of the factor, over every value of the others "
+                                      "(largest or least as the header says)."), *sens]
+                             if sens else "no factor varies")
     if r.stability is not None:
         sheets["StabilityMap"] = [
+            Section("Stability map over parachute area x airspeed x density altitude"),
             Section("Minimum stable area by airspeed and density altitude",
                     in_units(r.stability.minimum, units)),
-            Section("Every grid point", in_units(r.stability.points, units))]
+            *_parts("Every grid point", in_units(r.stability.points, units),
+                    ["area factor [-]", "airspeed EAS [m/s]", "airspeed EAS [kt]"])]
     if r.no_parachute is not None:
-        sheets["NoParachute"] = [Section("Every ramp", in_units(r.no_parachute.runs, units))]
+        sheets["NoParachute"] = _parts("Every ramp", in_units(r.no_parachute.runs, units),
+                                       ["helicopter", "ramp target [m/s]",
+                                        "ramp target [kt]"])
     sheets["LoadsHandoff"] = (
         [Section("Extremes of the chosen parachute's runs", handoff)] if handoff is not None
         else "no area is stable in every condition and none was chosen: nothing is handed to "
@@ -316,7 +357,8 @@ def sweep_plots(result):
 
 
 def _figures(report, units):
-    from slingloads.io.campaign.plots import (
+    """The figures to draw: ``{tag: (title, (plot function, args, kwargs))}``."""
+    from slingloads.io.campaign.plots import (  # matplotlib loads only when plotting
         plot_envelope,
         plot_no_parachute,
         plot_selection,
@@ -325,18 +367,24 @@ def _figures(report, units):
     )
 
     r = report.result
-    figs = {"selection": ("Parachute selection", plot_selection(r, units))}
+    figs = {"selection": ("Parachute selection", (plot_selection, (r, units), {}))}
     for tag, runs, factor, title in sweep_plots(r):
-        figs[tag] = (f"Sensitivity, {title}", plot_sweep(r, runs, factor, title))
+        figs[tag] = (f"Sensitivity, {title}", (plot_sweep, (r, runs, factor, title), {}))
     if r.stability is not None:
-        figs["stability-map"] = ("Stability map",
-                                 plot_stability_map(r.stability, r.neutral.area, units))
+        figs["stability-map"] = ("Stability map", (plot_stability_map,
+                                                   (r.stability, r.neutral.area, units), {}))
     if r.no_parachute is not None:
         figs["no-parachute"] = ("Transport without parachute (paper figures 16-18)",
-                                plot_no_parachute(r))
+                                (plot_no_parachute, (r,), {}))
     if r.envelope is not None:
-        figs["envelope"] = ("Angle envelope handed to the loads", plot_envelope(r))
+        figs["envelope"] = ("Angle envelope handed to the loads", (plot_envelope, (r,), {}))
     return figs
+
+
+def start_figures(report, units, study):
+    """Start drawing the campaign report's figures (while the other analyses run)."""
+    return start_drawing({tag: job for tag, (_, job) in _figures(report, units).items()},
+                         _PNG_DPI)
 
 
 def write_histories(result, path):
@@ -392,7 +440,7 @@ def write_histories(result, path):
     return count
 
 
-def write(report, out_dir, stem, units, study):
+def write(report, out_dir, stem, units, study, figures=None):
     """Write the campaign report (module notes) atomically.
 
     Parameters
@@ -403,6 +451,9 @@ def write(report, out_dir, stem, units, study):
     units : str
         ``"SI"`` or ``"US"``.
     study : WorkbookStudy
+        For the report's identification; its input file is never overwritten.
+    figures : FigureRenderer, optional
+        Already drawing the figures (:func:`start_figures`); default: drawn now.
 
     Returns
     -------
@@ -415,13 +466,17 @@ def write(report, out_dir, stem, units, study):
              + [f"{stem}-campaign-{tag}.png" for tag in figs])
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)
-    pngs = {tag: (title, figure_png(fig, _PNG_DPI)) for tag, (title, fig) in figs.items()}
-    sheets = _sheets(report, units, digest_frame(study.digest()))
-    with atomic_outputs(out_dir, inputs=inputs) as out:
-        write_workbook(out.path(f"{stem}-campaign.xlsx"), sheets,
-                       {title: png for title, png in pngs.values()},
-                       number_format=NUMBER_FORMATS)
-        write_histories(report.result, out.path(f"{stem}-campaign-histories.parquet"))
-        for tag, (_, png) in pngs.items():
-            out.path(f"{stem}-campaign-{tag}.png").write_bytes(png)
+    jobs = {tag: job for tag, (_, job) in figs.items()}
+    with drawings(jobs, figures, _PNG_DPI) as pngs:
+        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
+                           conventions=CONVENTIONS,
+                           files=[f"{stem}-campaign-histories.parquet",
+                                  *(f"{stem}-campaign-{tag}.png" for tag in pngs)])
+        sheets = _sheets(report, units, study.warnings)
+        with atomic_outputs(out_dir, inputs=inputs) as out:
+            write_workbook(out.path(f"{stem}-campaign.xlsx"), sheets,
+                           {figs[tag][0]: png for tag, png in pngs.items()}, info=info)
+            write_histories(report.result, out.path(f"{stem}-campaign-histories.parquet"))
+            for tag, png in pngs.items():
+                out.path(f"{stem}-campaign-{tag}.png").write_bytes(png_bytes(png))
     return out.written

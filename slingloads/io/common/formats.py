@@ -18,6 +18,8 @@ mass, inertia                               kg, lb, kg m^2, ...    ``#,##0.0``
 angle                                       deg                    ``0.0`` (30.0)
 angle                                       rad                    ``0.0000``
 angular rate and acceleration               rad/s, rad/s^2         ``0.000``
+angular rate                                deg/s                  ``0.00``
+growth rate (real part of an eigenvalue)    1/s                    ``0.0000``
 speed                                       m/s, kt, ft/s          ``0.0``
 acceleration                                m/s^2, ft/s^2          ``0.00``
 acceleration                                g                      ``0.000``
@@ -57,6 +59,7 @@ UNIT_FORMATS = {
     "kg": "#,##0.0", "lb": "#,##0.0", "kg m^2": "#,##0.0", "slug ft^2": "#,##0.0",
     # angles, rates
     "deg": "0.0", "rad": "0.0000", "rad/s": "0.000", "rad/s^2": "0.000", "Hz": "0.000",
+    "deg/s": "0.00", "1/s": "0.0000",
     # speeds, accelerations, time
     "m/s": "0.0", "kt": "0.0", "ft/s": "0.0", "m/s^2": "0.00", "ft/s^2": "0.00",
     "g": "0.000", "s": "0.00",

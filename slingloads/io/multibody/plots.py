@@ -11,6 +11,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.errors import InputError
+from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 from slingloads.io.common.units import si_factor
 from slingloads.models.multibody.equations import INFO
 from slingloads.models.multibody.parachute_line import line_direction
@@ -40,8 +41,8 @@ def plot_histories(simulation, title=None):
     -------
     matplotlib.figure.Figure
     """
-    fig = Figure(figsize=(11, 11))
-    fig.subplots_adjust(left=0.1, right=0.98, bottom=0.05, top=0.96, hspace=0.08)
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 8.8)), left=1.0, right=0.2, bottom=0.5,
+                      top=0.45, hspace=0.1)
     axes = fig.subplots(len(HISTORY_PANELS), 1, sharex=True)
     for k, run in enumerate(simulation.runs):
         h = run.histories()
@@ -50,12 +51,13 @@ def plot_histories(simulation, title=None):
             values = h[key] if key == "tension ratio" else np.degrees(h[key])
             ax.plot(h["time"], values, label=run.name, **style)
     for ax, (_, label) in zip(axes, HISTORY_PANELS, strict=True):
-        ax.set_ylabel(label)
+        ax.set_ylabel(label, fontsize=8)
+        ax.tick_params(labelsize=8)
         ax.grid(True, alpha=0.4)
     axes[-1].set_xlabel("time [s]")
     if simulation.runs and len(simulation.runs) <= _MAX_LEGEND:
-        axes[0].legend(fontsize=7, ncol=2, loc="upper right")
-    axes[0].set_title(title or "Multibody time histories")
+        axes[0].legend(fontsize=7, ncol=2, loc="upper right", framealpha=0.85)
+    axes[0].set_title(title or "Multibody time histories", fontsize=10)
     return fig
 
 
@@ -74,10 +76,11 @@ def plot_eigenvalues(linear, title=None):
     -------
     matplotlib.figure.Figure
     """
-    fig = Figure(figsize=(12, 5.5))
-    fig.subplots_adjust(left=0.07, right=0.98, bottom=0.3, top=0.9, wspace=0.25)
-    every, slow = fig.subplots(1, 2)
     modes = linear.modes_frame()
+    legend_rows = -(-len(modes) // 2)
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 3.6 + 0.17 * legend_rows)), left=0.7,
+                      right=0.15, bottom=0.6 + 0.17 * legend_rows, top=0.55, wspace=0.35)
+    every, slow = fig.subplots(1, 2)
     for k, row in modes.iterrows():
         re, im = row["real [1/s]"], row["imag [rad/s]"]
         label = (f"{row['mode']}: {row['natural frequency [rad/s]']:.3g} rad/s, "
@@ -90,9 +93,10 @@ def plot_eigenvalues(linear, title=None):
         ax.axvline(0.0, color="k", lw=0.8)
         ax.axhline(0.0, color="0.6", lw=0.6)
         ax.set(xlabel="real part [1/s]", ylabel="imaginary part [rad/s]")
+        ax.tick_params(labelsize=8)
         ax.grid(True, alpha=0.4)
-    every.set_title("every mode")
-    slow.set_title("modes slower than 2 rad/s")
+    every.set_title("every mode", fontsize=9)
+    slow.set_title("modes slower than 2 rad/s", fontsize=9)
     wn = modes["natural frequency [rad/s]"].to_numpy()
     near = modes[wn < 2.0]
     if len(near):
@@ -100,8 +104,8 @@ def plot_eigenvalues(linear, title=None):
         top = max(0.1, 1.2 * near["imag [rad/s]"].max())
         slow.set_xlim(-reach, 0.25 * reach)
         slow.set_ylim(-top, top)
-    fig.legend(loc="lower center", ncol=3, fontsize=8)
-    fig.suptitle(title or f"Eigenvalues about the trim ({linear.verdict()})")
+    fig.legend(loc="lower center", ncol=2, fontsize=7, frameon=False)
+    fig.suptitle(title or f"Eigenvalues about the trim ({linear.verdict()})", fontsize=10)
     return fig
 
 
@@ -173,8 +177,8 @@ def plot_views(system, states, outline, units="SI", title=None):
         raise InputError(f"unknown unit system; valid are {sorted(VIEW_UNITS)}", units)
     unit, label = VIEW_UNITS[units]
     scale = 1.0 / si_factor(unit, "length")
-    fig = Figure(figsize=(12, 6))
-    fig.subplots_adjust(left=0.07, right=0.98, bottom=0.1, top=0.88, wspace=0.2)
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.4)), left=0.7, right=0.15,
+                      bottom=0.55 + 0.17 * len(states), top=0.7, wspace=0.35)
     side, top = fig.subplots(1, 2)
     for k, (name, state, info) in enumerate(states):
         points = system_points(system, state, info, outline)
@@ -192,11 +196,14 @@ def plot_views(system, states, outline, units="SI", title=None):
     side.set(xlabel=f"X aft [{label}]", ylabel=f"Z up [{label}]",
              title="side view (flight towards -X)")
     top.set(xlabel=f"X aft [{label}]", ylabel=f"Y right [{label}]",
-            title="top view, from above (flight towards -X)")
+            title="top view, from above\n(flight towards -X)")
+    side.set_title("side view\n(flight towards -X)")
     for ax in (side, top):
         ax.set_aspect("equal", adjustable="datalim")
+        ax.tick_params(labelsize=8)
+        ax.title.set_fontsize(9)
         ax.grid(True, alpha=0.4)
-    side.legend(fontsize=8, loc="best")
+    fig.legend(loc="lower center", fontsize=7, frameon=False)
     if title:
-        fig.suptitle(title)
+        fig.suptitle(title, fontsize=10)
     return fig

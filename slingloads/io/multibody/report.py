@@ -5,11 +5,13 @@ linearises it about that trim and flies every manoeuvre (all runs integrated tog
 :func:`slingloads.analyses.multibody.simulate`). :func:`write` publishes, all at once or not at
 all (:mod:`slingloads.io.common.atomic`):
 
-* ``<stem>-multibody.xlsx``: sheets *Summary* (inputs digest, system, warnings, trim, stability
-  verdict, one line per run), *Modes* (eigenvalues, frequencies, damping ratios, names, energy
-  shares), *StateMatrix* (the A matrix of the linear model), *Metrics* (every run: peaks and
-  when, RMS, damping from the response, settling time, verdict and its rule), *Histories*
-  (every run every 1 s) and *Plots*;
+* ``<stem>-multibody.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*
+  (identification, input file and its SHA-256, version, sheets, conventions), *Summary*
+  (stability verdict, warnings on the inputs, system, trim, one line per run), *Modes*
+  (eigenvalues, frequencies, damping ratios, names, energy shares), *StateMatrix* (the A
+  matrix of the linear model, scientific notation), *Metrics* (every run: peaks and when,
+  RMS, damping from the response, settling time, verdict and its rule; in blocks that fit a
+  page), *Histories* (every run every 2 s) and *Plots*;
 * ``<stem>-multibody-histories.csv``: every run at every stored sample (SI, degrees);
 * ``<stem>-multibody-histories.png`` (yaw, sideslip, swing angles, tension),
   ``-multibody-eigenvalues.png`` (the complex plane) and ``-multibody-views.png`` (side and top
@@ -32,19 +34,23 @@ from slingloads.analyses.multibody import linearise, simulate, trim
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
-from slingloads.io.common.excel import Section, figure_png, format_by_header, write_workbook
+from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.figures import drawings, png_bytes, start_drawing
+from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
     check_units,
+    column_blocks,
     convert_columns,
     csv_frame,
-    digest_frame,
     in_report_units,
     report_unit,
+    split_unit,
+    warning_sections,
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
-from slingloads.io.multibody.plots import plot_eigenvalues, plot_histories, plot_views
 
 ANALYSIS = "multibody"
 #: PNG files written, by tag: ``<stem>-multibody-<tag>.png``.
@@ -54,17 +60,32 @@ OUTPUTS = ("{stem}-multibody.xlsx", "{stem}-multibody-histories.csv",
            *(f"{{stem}}-multibody-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 80
 #: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
-HISTORY_INTERVAL = 1.0
+HISTORY_INTERVAL = 2.0
 #: Quantity kind of the SI units that appear in the analysis' column headers.
 _KINDS = {"m": "length", "N": "force", "m/s": "speed", "kg": "mass", "m^2": "area"}
 _HEADER_UNIT = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
-NUMBER_FORMATS = format_by_header([
-    (r"\[deg", "0.00"),
-    (r"\[-\]", "0.000"),
-    (r"\[(N|lbf)\]", "#,##0"),
-    (r"\[(m|in|ft)\]", "0.00"),
-    (r"\[(s|1/s|rad/s|m/s|kt)\]", "0.000"),
-])
+
+#: Number format of the state matrix: scientific, an exact zero as ``0``.
+MATRIX_FORMAT = f"{SCIENTIFIC_FORMAT};-{SCIENTIFIC_FORMAT};0"
+
+TITLE = "Multibody report: towed sling load with its drogue parachute"
+DESCRIPTION = (
+    "The carried helicopter (HC) on its elastic cable under the carrier rotorcraft, with its "
+    "parachute line and canopy, as a multibody system: the steady towed flight (trim) at the "
+    "system airspeed, the linear model about that trim (eigenvalues, modes, stability), and "
+    "every manoeuvre of the workbook flown in time (peaks, RMS, damping from the response, "
+    "settling time, verdict with its rule). No structural loads: the hub load angles and "
+    "cable tensions are the dynamics that the loads analysis takes. Method: "
+    "docs/multibody.md.")
+CONVENTIONS = (
+    "Earth axes of the simulation: X aft along the flight path (the carrier flies towards "
+    "-X), Y right, Z up; positions relative to the hook. Yaw is the heading of the HC from "
+    "the flight path, beta > 0 wind from the right; swing angles are the cable's from the "
+    "vertical, longitudinal (in the flight plane) and lateral.",
+    "A mode is stable when the real part of its eigenvalue is below -1e-6 1/s. The state "
+    "matrix is SI (m, m/s, rad, rad/s). Definitions of the states and metrics: "
+    "docs/multibody.md.",
+)
 
 
 @dataclass(frozen=True, eq=False)
@@ -227,10 +248,11 @@ def system_table(result, units="SI"):
 
 
 def trim_table(result, units="SI"):
-    """The trim at the system airspeed as ``item | value`` rows (report units)."""
-    frame = in_units(result.trim.to_frame(), units).T.reset_index()
-    frame.columns = ["item", "value"]
-    return frame
+    """The trim at the system airspeed as ``item | value | unit`` rows (report units)."""
+    row = in_units(result.trim.to_frame(), units).iloc[0]
+    names = [split_unit(column) for column in row.index]
+    return pd.DataFrame({"item": [name for name, _ in names], "value": list(row.to_numpy()),
+                         "unit": [unit for _, unit in names]})
 
 
 def runs_table(result):
@@ -264,37 +286,90 @@ def history_table(result, units="SI", interval=None):
     return in_units(frame, units)
 
 
-def _sheets(result, units, digest):
-    warnings = result.inputs.warnings
-    summary = [Section("Inputs", digest),
-               Section("System", system_table(result, units)),
-               Section("Warnings", note="\n".join(warnings) if warnings else "none"),
-               Section(f"Trim at {result.inputs.system.airspeed / KNOT:.4g} KEAS",
-                       trim_table(result, units)),
-               Section("Stability of the linear model", note=stability_text(result)),
-               Section("Runs", runs_table(result))]
+def metrics_table(result, units="SI"):
+    """Every metric of every run: one row per metric (with its unit), one column per run."""
+    frame = in_units(result.simulation.metrics_frame(), units)
+    shown = [c for c in frame.columns if c not in ("run", "manoeuvre", "verdict rule")]
+    names = [split_unit(column) for column in shown]
+    out = pd.DataFrame({"metric": [name for name, _ in names],
+                        "unit": [unit for _, unit in names]})
+    for k, run in enumerate(frame["run"]):
+        out[str(run)] = list(frame[shown].iloc[k].to_numpy(object))
+    return out
+
+
+def verdict_rules(result):
+    """The rules of the runs' verdicts, each once."""
+    metrics = result.simulation.metrics_frame()
+    if "verdict rule" not in metrics:
+        return ""
+    return " ".join(dict.fromkeys(str(v) for v in metrics["verdict rule"] if v))
+
+
+def state_matrix_table(linear):
+    """The state matrix A with its round-off (entries below :data:`ROUND_OFF` times its
+    largest entry) written as zero, and the row names first."""
+    a = linear.a_frame()
+    values = a.to_numpy(float)
+    scale = float(np.nanmax(np.abs(values))) if values.size else 0.0
+    a = a.where(np.abs(values) >= ROUND_OFF * scale, 0.0)
+    return a.reset_index(names="d/dt of")
+
+
+def _warnings(result, study):
+    """The warnings on the inputs of the study and of the multibody system, each once."""
+    return list(dict.fromkeys([*study.warnings, *result.inputs.warnings]))
+
+
+def _parts(title, tables, note=""):
+    """Sections of a table printed in column blocks: a heading, then ``part k of n``."""
+    if len(tables) == 1:
+        return [Section(title, tables[0], note=note)]
+    return [Section(title, note=note), *(Section(f"{title}, part {k + 1} of {len(tables)}",
+                                                 table) for k, table in enumerate(tables))]
+
+
+def _sheets(result, units, warnings=()):
+    airspeed = result.inputs.system.airspeed / KNOT
+    summary = [Section("Summary of the multibody model", note=stability_text(result)),
+               *warning_sections(warnings),
+               Section("Runs (every metric: sheet Metrics)", runs_table(result)),
+               Section(f"Trim at {airspeed:.4g} KEAS", trim_table(result, units)),
+               Section("System as flown", system_table(result, units))]
     sheets = {"Summary": summary}
     if result.linear is not None:
-        sheets["Modes"] = [Section("Modes of the linear model about the trim",
-                                   result.linear.modes_frame())]
-        a = result.linear.a_frame().reset_index(names="d/dt of")
+        sheets["Modes"] = _parts("Modes of the linear model about the trim",
+                                 column_blocks(result.linear.modes_frame(), ["mode"]))
         sheets["StateMatrix"] = [Section(
             "State matrix A (dz/dt = A z), SI: positions m, velocities m/s, angles rad, rates "
-            "rad/s; phi_x, phi_y, phi_z a small rotation in body axes", a)]
+            "rad/s; phi_x, phi_y, phi_z a small rotation in body axes",
+            state_matrix_table(result.linear),
+            note=f"Entries smaller than {ROUND_OFF:g} times the largest entry are round-off "
+                 "and written as 0.")]
     else:
         sheets["Modes"] = f"No linear model: {result.trim.message}"
-    sheets["Metrics"] = [Section("Every run (angles in degrees; verdict rule in the last "
-                                 "columns)", in_units(result.simulation.metrics_frame(), units))]
-    sheets["Histories"] = [Section(
+    sheets["Metrics"] = _parts(
+        "Metrics of every run (one column per run; angles in degrees)",
+        column_blocks(metrics_table(result, units), ["metric", "unit"]),
+        note=f"Verdict rule: {verdict_rules(result)}")
+    sheets["Histories"] = _parts(
         f"Every run every {HISTORY_INTERVAL:g} s (every stored sample: the "
-        f"-multibody-histories.csv file)", history_table(result, units, HISTORY_INTERVAL))]
+        f"-multibody-histories.csv file, SI)",
+        column_blocks(history_table(result, units, HISTORY_INTERVAL), ["run", "time [s]"]))
     return sheets
 
 
 def _figures(result, units="SI"):
-    figs = {"histories": plot_histories(result.simulation)}
+    """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
+    from slingloads.io.multibody.plots import (  # matplotlib loads only when plotting
+        plot_eigenvalues,
+        plot_histories,
+        plot_views,
+    )
+
+    figs = {"histories": (plot_histories, (result.simulation,), {})}
     if result.linear is not None:
-        figs["eigenvalues"] = plot_eigenvalues(result.linear)
+        figs["eigenvalues"] = (plot_eigenvalues, (result.linear,), {})
     states = []
     if result.trim.converged:
         states.append((f"trim at {result.inputs.system.airspeed / KNOT:.4g} KEAS",
@@ -305,12 +380,17 @@ def _figures(result, units="SI"):
         states.append((f"{run.name}, t = {run.time[k]:.1f} s (largest excursion, "
                        f"{np.degrees(depart):.1f} deg)", run.states[k], run.info[k]))
     if states:
-        figs["views"] = plot_views(result.inputs.system, states, result.outline, units,
-                                   "The system at trim and at the largest excursion")
+        figs["views"] = (plot_views, (result.inputs.system, states, result.outline, units,
+                                      "The system at trim and at the largest excursion"), {})
     return figs
 
 
-def write(result, out_dir, stem, units, study):
+def start_figures(result, units, study):
+    """Start drawing the multibody report's figures (while the other analyses run)."""
+    return start_drawing(_figures(result, units), _PNG_DPI)
+
+
+def write(result, out_dir, stem, units, study, figures=None):
     """Write ``<stem>-multibody.xlsx``, ``-multibody-histories.csv`` and the PNG plots
     atomically.
 
@@ -322,7 +402,9 @@ def write(result, out_dir, stem, units, study):
     units : str
         ``"SI"`` or ``"US"``.
     study : WorkbookStudy
-        For the inputs digest; its input file is never overwritten.
+        For the report's identification; its input file is never overwritten.
+    figures : FigureRenderer, optional
+        Already drawing the figures (:func:`start_figures`); default: drawn now.
 
     Returns
     -------
@@ -330,22 +412,28 @@ def write(result, out_dir, stem, units, study):
     """
     check_units(units)
     inputs = study.input_files or [study.path]
-    figures = _figures(result, units)
+    jobs = _figures(result, units)
     names = ([f"{stem}-multibody.xlsx", f"{stem}-multibody-histories.csv"]
-             + [f"{stem}-multibody-{tag}.png" for tag in figures])
+             + [f"{stem}-multibody-{tag}.png" for tag in jobs])
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)
-    pngs = {tag: figure_png(fig, _PNG_DPI) for tag, fig in figures.items()}
-    sheets = _sheets(result, units, digest_frame(study.digest()))
     titles = {"histories": "Time histories: yaw, sideslip, cable swing, tension",
               "eigenvalues": "Eigenvalues about the trim",
               "views": "Side and top views at trim and at the largest excursion"}
-    with atomic_outputs(out_dir, inputs=inputs) as out:
-        write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
-                       {titles[t]: png for t, png in pngs.items()},
-                       number_format=NUMBER_FORMATS)
-        write_csv(csv_frame(history_table(result, "SI")),
-                  out.path(f"{stem}-multibody-histories.csv"))
-        for tag, png in pngs.items():
-            out.path(f"{stem}-multibody-{tag}.png").write_bytes(png)
+    with drawings(jobs, figures, _PNG_DPI) as pngs:
+        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
+                           conventions=CONVENTIONS,
+                           files=[f"{stem}-multibody-histories.csv",
+                                  *(f"{stem}-multibody-{tag}.png" for tag in pngs)])
+        sheets = _sheets(result, units, _warnings(result, study))
+        formats = ({name: MATRIX_FORMAT for name in result.linear.a_frame().columns}
+                   if result.linear is not None else None)
+        with atomic_outputs(out_dir, inputs=inputs) as out:
+            write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
+                           {titles[t]: png for t, png in pngs.items()}, info=info,
+                           number_format=formats)
+            write_csv(csv_frame(history_table(result, "SI")),
+                      out.path(f"{stem}-multibody-histories.csv"))
+            for tag, png in pngs.items():
+                out.path(f"{stem}-multibody-{tag}.png").write_bytes(png_bytes(png))
     return out.written
