@@ -92,6 +92,7 @@ EXACT_FACTORS = {
     ("moment", "lbf*ft"): POUND_FORCE * FOOT, ("moment", "lbf ft"): POUND_FORCE * FOOT,
     ("inertia", "slug*ft^2"): _SLUG * FOOT**2, ("inertia", "slug ft^2"): _SLUG * FOOT**2,
     ("angle", "deg"): math.pi / 180.0, ("speed", "kt"): KNOT, ("speed", "ft/s"): FOOT,
+    ("frequency", "1/s"): 1.0, ("frequency", "deg/s"): math.pi / 180.0,
     ("acceleration", "ft/s^2"): FOOT, ("acceleration", "g0"): G0,
     ("area", "ft^2"): FOOT**2, ("area", "in^2"): INCH**2,
     ("density", "slug/ft^3"): _SLUG / FOOT**3, ("stiffness", "lbf/in"): POUND_FORCE / INCH,
