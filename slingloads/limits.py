@@ -149,14 +149,14 @@ MAX_MULTIBODY_SAMPLES = 200_000
 MAX_LIST_ITEMS = 50
 #: Runs of a campaign: the matrix (product of its lists' lengths and mass cases, or the rows
 #: of CampaignRuns) plus the runs without parachute (helicopters x ramps). The paper's
-#: campaign has about 1,300.
-MAX_CAMPAIGN_RUNS = 5_000
-#: Fixed steps of a campaign over all its runs: runs x (run length / time step). A campaign is
-#: the one command meant to run for minutes: the paper's matrix (3,888 runs of 60 s at 0.01 s,
-#: 23 million run-steps) takes about 3 minutes on two cores; 30,000,000 about 4 (less on more
-#: workers or a cluster), with its progress shown, resuming from the run cache when
-#: interrupted.
-MAX_CAMPAIGN_RUN_STEPS = 30_000_000
+#: campaign has about 1,300 and its full matrix 3,888: with the adaptive step (the default)
+#: that matrix takes about a minute on two cores.
+MAX_CAMPAIGN_RUNS = 4_000
+#: Fixed steps of a campaign over all its runs (with a fixed 'campaign time step'): runs x
+#: (run length / time step), about 130,000 per second on two cores, so 8,000,000 is about a
+#: minute. The paper's matrix at 0.01 s (23 million run-steps) is refused: it runs with the
+#: adaptive step (time step 0, the default) in about a minute, or on a cluster in parts.
+MAX_CAMPAIGN_RUN_STEPS = 8_000_000
 #: Stored samples of a campaign: runs x (run length / output interval + 1); each is a row of
 #: 26 numbers in the run cache and the histories file (written 50 runs at a time; at most
 #: about 620 MB uncompressed on disk). The paper's matrix stores 2.3 million.
