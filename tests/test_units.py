@@ -54,6 +54,8 @@ IN_LBF = 0.0254 * LBF
     ("lbm", "mass", 0.45359237),
     ("lb*in^2", "inertia", 0.45359237 * 0.0254**2),
     ("ft2", "area", 0.3048**2),
+    ("Hz", "frequency", 2 * 3.141592653589793),  # a cycle per second is 2 pi rad/s
+    ("rpm", "frequency", 2 * 3.141592653589793 / 60),
     ("in3", "length", None),              # a volume is not a length: refused
 ])
 def test_engineering_spellings(unit, kind, expected):

@@ -168,6 +168,7 @@ _HYPHEN = re.compile(r"(?<=[A-Za-z])-(?=[A-Za-z])")
 _BARE_POWER = re.compile(r"(?<=[A-Za-z])([23])\b")
 _POUND = re.compile(r"\blbs?\b")
 _POUND_MASS = re.compile(r"\blbm\b")
+_HERTZ = re.compile(r"\b(k|M)?Hz\b")
 
 
 def engineering_spelling(text, kind):
@@ -176,13 +177,17 @@ def engineering_spelling(text, kind):
     ``in-lb``, ``lb-in``, ``ft-lbf`` (a hyphen between two unit names is a product);
     ``ft2``, ``in3`` (a bare power 2 or 3 after a unit name); ``lbm`` (pound-mass); and
     ``lb`` / ``lbs`` in a quantity that holds a force (force, moment, stiffness, damping),
-    where it means pound-force as on US drawings (pint's ``lb`` is the pound-mass).
+    where it means pound-force as on US drawings (pint's ``lb`` is the pound-mass); ``Hz``
+    in an angular rate is a cycle per second, 2 pi rad/s (pint would read it as 1/s = 1
+    rad/s).
     """
     text = _HYPHEN.sub("*", text)
     text = _BARE_POWER.sub(r"^\1", text)
     text = _POUND_MASS.sub("lb", text)
     if kind in _FORCE_KINDS:
         text = _POUND.sub("lbf", text)
+    if kind == "frequency":  # an angular rate: one hertz is one cycle, 2 pi rad, per second
+        text = _HERTZ.sub(lambda m: f"({m.group(1) or ''}revolution/s)", text)
     return text
 
 
