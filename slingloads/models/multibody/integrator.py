@@ -39,6 +39,10 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
+from slingloads.models.dormand_prince import A as _A
+from slingloads.models.dormand_prince import C as _C
+from slingloads.models.dormand_prince import E as _E
+from slingloads.models.dormand_prince import P as _P
 from slingloads.models.multibody._jit import jit
 from slingloads.models.multibody.equations import N_INFO, N_STATES, evaluate
 
@@ -53,27 +57,7 @@ SMALLEST_STEP = 1e-6
 #: First trial step of a run. [s]
 FIRST_STEP = 0.01
 
-# Dormand-Prince 5(4): nodes, coefficients, fifth-order weights, error weights, dense output
-_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
-_A = np.array([
-    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
-    [1 / 5, 0.0, 0.0, 0.0, 0.0, 0.0],
-    [3 / 40, 9 / 40, 0.0, 0.0, 0.0, 0.0],
-    [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0, 0.0],
-    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0, 0.0],
-    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0.0],
-    [35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
-_E = np.array([-71 / 57600, 0.0, 71 / 16695, -71 / 1920, 17253 / 339200, -22 / 525, 1 / 40])
-_P = np.array([
-    [1.0, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
-    [0.0, 0.0, 0.0, 0.0],
-    [0.0, 131558114200 / 32700410799, -68118460800 / 10900136933,
-     87487479700 / 32700410799],
-    [0.0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072],
-    [0.0, 127303824393 / 49829197408, -318862633887 / 49829197408,
-     701980252875 / 199316789632],
-    [0.0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
-    [0.0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423]])
+# Dormand-Prince 5(4) (scipy's RK45), passed to the kernels as arguments
 
 
 @jit
