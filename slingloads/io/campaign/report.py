@@ -26,14 +26,13 @@ from __future__ import annotations
 import contextlib
 import re
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
 from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import drawings, png_bytes, start_drawing
@@ -464,8 +463,7 @@ def write(report, out_dir, stem, units, study, figures=None):
     figs = _figures(report, units)
     names = ([f"{stem}-campaign.xlsx", f"{stem}-campaign-histories.parquet"]
              + [f"{stem}-campaign-{tag}.png" for tag in figs])
-    for name in names:
-        check_not_input(Path(out_dir) / name, inputs)
+    check_outputs_not_inputs(out_dir, names, inputs)
     jobs = {tag: job for tag, (_, job) in figs.items()}
     with drawings(jobs, figures, _PNG_DPI) as pngs:
         info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,

@@ -23,7 +23,6 @@ Lengths, areas, speeds and moments are in the report unit system (``--units``).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -37,7 +36,7 @@ from slingloads.analyses.chute_sizing import (
 )
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, write_workbook
@@ -524,8 +523,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     inputs = study.input_files
     names = ([f"{stem}-chute.xlsx", f"{stem}-chute-histories.csv"]
              + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
-    for name in names:
-        check_not_input(Path(out_dir) / name, inputs)
+    check_outputs_not_inputs(out_dir, names, inputs)
     titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
               "static-moments": "Static yawing moments at the neutral area",
               "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",

@@ -149,6 +149,14 @@ def check_not_input(path, inputs):
                              str(path), file=str(source))
 
 
+def check_outputs_not_inputs(out_dir, names, inputs):
+    """:func:`check_not_input` for each file ``names`` of ``out_dir``: a report checks its
+    whole set before the slow work, not when it reaches the one file that would replace an
+    input."""
+    for name in names:
+        check_not_input(Path(out_dir) / name, inputs)
+
+
 def _os_error(err, what, path):
     """An OutputError from an OSError, with advice for the usual causes."""
     advice = {

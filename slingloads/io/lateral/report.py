@@ -32,7 +32,6 @@ Lengths, forces, moments, masses, speeds and accelerations are in the report uni
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -47,7 +46,7 @@ from slingloads.analyses.lateral import lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, write_workbook
@@ -495,8 +494,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     inputs = study.input_files
     names = ([f"{stem}-lateral.xlsx", f"{stem}-lateral-histories.csv"]
              + [f"{stem}-lateral-{tag}.png" for tag in PLOTS])
-    for name in names:
-        check_not_input(Path(out_dir) / name, inputs)
+    check_outputs_not_inputs(out_dir, names, inputs)
     titles = {"histories": "Critical case: time histories (30 deg line)",
               "max-angle": "Largest load angle against carrier acceleration",
               "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",

@@ -36,7 +36,6 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -45,7 +44,7 @@ from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_not_input, safe_file_part
+from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs, safe_file_part
 from slingloads.io.common.cover import info_from_digest, report_info
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import (
@@ -692,8 +691,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         deck = prepare_nastran(result, units=units, inputs_digest=inputs_digest,
                                **({} if nastran is True else dict(nastran)))
         names.append(f"{stem}-loads.bdf")
-    for name in names:  # fail before the slow work, not after it
-        check_not_input(Path(out_dir) / name, input_paths)
+    check_outputs_not_inputs(out_dir, names, input_paths)
     if info is None:
         info = info_from_digest(inputs_digest, title=TITLE, analysis=ANALYSIS,
                                 study=result.study.name, units=units, conventions=CONVENTIONS)

@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -33,7 +32,7 @@ import pandas as pd
 from slingloads.analyses.multibody import linearise, simulate, trim
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_not_input
+from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, write_workbook
@@ -415,8 +414,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     jobs = _figures(result, units)
     names = ([f"{stem}-multibody.xlsx", f"{stem}-multibody-histories.csv"]
              + [f"{stem}-multibody-{tag}.png" for tag in jobs])
-    for name in names:
-        check_not_input(Path(out_dir) / name, inputs)
+    check_outputs_not_inputs(out_dir, names, inputs)
     titles = {"histories": "Time histories: yaw, sideslip, cable swing, tension",
               "eigenvalues": "Eigenvalues about the trim",
               "views": "Side and top views at trim and at the largest excursion"}
