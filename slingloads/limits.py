@@ -106,11 +106,12 @@ MAX_CASE_POINTS = 5_000_000
 MAX_LATERAL_RUNS = 2_000
 #: Steps of one lateral run (run length / RK4 step).
 MAX_LATERAL_STEPS = 200_000
-#: Run-steps of the lateral sweep: runs x steps.
-MAX_LATERAL_RUN_STEPS = 5_000_000
+#: Run-steps of the lateral sweep: runs x steps (the compiled sweep takes about 0.25 us each,
+#: so about 5 s of CPU at the limit).
+MAX_LATERAL_RUN_STEPS = 20_000_000
 #: Motion-steps of the lateral sweep: distinct motions x steps (each motion's kinematics is
-#: evaluated at every step).
-MAX_LATERAL_MOTION_STEPS = 400_000
+#: evaluated once at every step and tabulated: 3 numbers of 8 bytes, about 100 MB at the limit).
+MAX_LATERAL_MOTION_STEPS = 4_000_000
 #: Shortest interval between the samples of a time history (a spline through samples closer
 #: than this overflows; measured histories are sampled at 1 kHz at most). [s]
 MIN_SAMPLE_INTERVAL = 1e-4
