@@ -15,7 +15,8 @@ after it (no extrapolation), and the rest of the batch goes on.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 import pandas as pd
@@ -26,11 +27,22 @@ from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
 from slingloads.models.multibody.integrator import (
     ATOL,
     RTOL,
+    evaluate_many,
     integrate,
     stack_drives,
     tabulate_drive,
 )
-from slingloads.models.multibody.parachute_line import line_angles
+from slingloads.models.multibody.response import (
+    HISTORY,
+    MEASURES,
+    N_HISTORY,
+    N_MEASURES,
+    PEAKS,
+    damping_from_peaks,
+    derive,
+    measure,
+    measure_many,
+)
 from slingloads.models.multibody.rigid_body import (
     euler_angles,
     quaternion_from_euler,
@@ -50,6 +62,17 @@ STEP_LIMIT = 1.0
 ADAPTIVE_STABILITY = 3.3
 #: Activity (yaw rate, swing rates) below which a response counts as settled. [deg/s]
 QUIET = 0.5
+#: Least half-width of the band a settled yaw stays in. [rad]
+BAND_FLOOR = float(np.radians(1.0))
+#: The rule of a run's response verdict.
+VERDICT_RULE = (
+    "divergent: left a table, or the envelope of the motion (largest |rate| of yaw, lateral "
+    "and longitudinal swing) grows by > 10 % from the first to the second half of the time "
+    "after the input ends (after its onset for a sustained input); convergent: it shrinks by "
+    f"> 10 % or stays below {QUIET} deg/s; otherwise undamped (bounded under a sustained "
+    "input); inconclusive when less than 10 s are left after the input")
+#: Names of the peaks in the metrics, where they differ from the histories'.
+METRIC_LABELS = {"hub load angle": "hub load from mast"}
 
 _INFO = {name: i for i, name in enumerate(INFO)}
 
@@ -100,28 +123,9 @@ def _drive(manoeuvre, base_velocity):
 def _damping_from_peaks(t, y, start=0.0):
     """Period [s] and damping ratio [-] from the successive positive peaks of ``y`` after
     ``start`` (log decrement), or NaN when there are fewer than three peaks above 2 % of the
-    largest."""
-    keep = (t >= start) & np.isfinite(y)
-    t, y = t[keep], y[keep]
-    if y.size < 5:
-        return np.nan, np.nan
-    inner = (y[1:-1] > y[:-2]) & (y[1:-1] >= y[2:]) & (y[1:-1] > 0)
-    idx = np.nonzero(inner)[0] + 1
-    if idx.size == 0:
-        return np.nan, np.nan
-    idx = idx[y[idx] > 0.02 * y[idx].max()]
-    if idx.size < 3:
-        return np.nan, np.nan
-    # parabolic refinement of each peak
-    y0, y1, y2 = y[idx - 1], y[idx], y[idx + 1]
-    den = y0 - 2 * y1 + y2
-    shift = np.where(den != 0, 0.5 * (y0 - y2) / np.where(den != 0, den, 1.0), 0.0)
-    h = t[1] - t[0]
-    times = t[idx] + shift * h
-    peaks = y1 - 0.25 * (y0 - y2) * shift
-    period = float(np.mean(np.diff(times)))
-    delta = float(np.mean(np.log(peaks[:-1] / peaks[1:])))
-    return period, delta / np.sqrt(4 * np.pi**2 + delta**2)
+    largest (:func:`~slingloads.models.multibody.response.damping_from_peaks`)."""
+    t, y = np.ascontiguousarray(t, dtype=float), np.ascontiguousarray(y, dtype=float)
+    return damping_from_peaks(t, y, float(start), np.empty((4, t.size)))
 
 
 #: Columns of :meth:`RunResult.to_frame`: (key of :meth:`RunResult.histories`, label,
@@ -158,12 +162,15 @@ class RunResult:
         [s]
     states : ndarray, shape (n, 20)
         States of the equations (NaN after a stop or without trim).
-    info : ndarray, shape (n, N_INFO)
-        Reported quantities of the equations.
     flag : int
         Table or limit left (0: none); see :func:`~.trim.flag_text`.
     stop_time : float
         Time the run stopped (NaN if it ran to the end). [s]
+    batch : object, optional
+        The runs integrated with this one (their parameters and drives), from which
+        :attr:`info` is evaluated on first use.
+    index : int
+        This run's place in ``batch``.
     """
 
     system: object
@@ -171,9 +178,18 @@ class RunResult:
     trim: object
     time: np.ndarray
     states: np.ndarray
-    info: np.ndarray
     flag: int
     stop_time: float
+    batch: object = field(default=None, repr=False)
+    index: int = 0
+
+    @cached_property
+    def info(self):
+        """Reported quantities of the equations at the samples, ndarray (n, N_INFO) (NaN
+        after a stop or without trim), evaluated on first use."""
+        if self.batch is None:
+            return np.full((self.time.size, N_INFO), np.nan)
+        return self.batch.info(self.index)
 
     @property
     def name(self):
@@ -192,48 +208,20 @@ class RunResult:
             return f"left the {flag_text(self.flag)} at t = {self.stop_time:.3f} s"
         return ""
 
-    def _q(self, name):
-        return self.info[:, _INFO[name]]
+    def history_table(self):
+        """Derived histories (n, len(HISTORY)) in the order of
+        :data:`~slingloads.models.multibody.response.HISTORY` (SI, angles in rad)."""
+        system = self.system
+        table = np.empty((self.time.size, N_HISTORY))
+        derive(self.time, self.states, self.info, float(system.weight),
+               np.asarray(system.hardpoints.mast_axis, float), system.parachute is not None,
+               table)
+        return table
 
     def histories(self):
         """Derived histories in SI (angles in rad) as a dict of arrays."""
-        yaw, pitch, roll = euler_angles(self.states[:, 9:13])
-        yaw = np.unwrap(np.where(np.isfinite(yaw), yaw, 0.0))
-        yaw[~np.isfinite(self.states[:, 9])] = np.nan
-        d = self.info[:, _INFO["d_X"]:_INFO["d_Z"] + 1]
-        span = np.linalg.norm(d, axis=1)
-        hub = self.info[:, _INFO["hub_x"]:_INFO["hub_z"] + 1]
-        mast = self.system.hardpoints.mast_axis
-        hub_norm = np.linalg.norm(hub, axis=1)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            hub_angle = np.where(hub_norm > 0, np.arccos(np.clip(
-                hub @ mast / np.where(hub_norm > 0, hub_norm, 1.0), -1, 1)), np.nan)
-        theta, psi = line_angles(self.info[:, _INFO["line_x"]:_INFO["line_z"] + 1])
-        r = rotation_matrix(np.where(np.isfinite(self.states[:, 9:13]), self.states[:, 9:13],
-                                     [1.0, 0, 0, 0]))
-        omega_earth = np.einsum("nij,nj->ni", r, self.states[:, 13:16])
-        thrust = self.info[:, _INFO["thrust_X"]:_INFO["thrust_Z"] + 1]
-        out = {
-            "time": self.time, "x": self.states[:, 3], "y": self.states[:, 4],
-            "z": self.states[:, 5], "yaw": yaw, "pitch": pitch, "roll": roll,
-            "yaw rate": -omega_earth[:, 2], "alpha": self._q("alpha"),
-            "beta": self._q("beta"), "airspeed": self._q("airspeed"),
-            "swing longitudinal": np.arctan2(d[:, 0], -d[:, 2]),
-            "swing lateral": np.arctan2(d[:, 1], -d[:, 2]),
-            "swing": np.arccos(np.clip(-d[:, 2] / span, -1, 1)),
-            "tension": self._q("tension"),
-            "tension ratio": self._q("tension") / self.system.weight,
-            "hub Fx": hub[:, 0], "hub Fy": hub[:, 1], "hub Fz": hub[:, 2],
-            "hub load angle": hub_angle,
-            "line theta": theta, "line psi": psi,
-            "line tension": self._q("line_tension"), "chute alpha": self._q("chute_alpha"),
-            "carrier speed": np.linalg.norm(self.states[:, 0:3], axis=1),
-            "thrust tilt": np.arctan2(-thrust[:, 0], thrust[:, 2]),
-        }
-        if self.system.parachute is None:
-            for key in ("line theta", "line psi", "line tension", "chute alpha"):
-                out[key] = np.full(self.time.shape, np.nan)
-        return out
+        table = self.history_table()
+        return {name: table[:, k] for k, name in enumerate(HISTORY)}
 
     def to_frame(self):
         """Time histories with unit-labelled columns (angles in degrees; body-axis hub load;
@@ -248,112 +236,77 @@ class RunResult:
         return frame
 
     # ------------------------------------------------------------------------- metrics
+    def measure_times(self):
+        """(start, end, verdict start) [s] of the measures: the input's start (peaks and RMS
+        from then on), its end (damping and settling from then on) and the start of the time
+        whose halves the verdict compares (the input's start for a sustained input)."""
+        start = min(self.manoeuvre.breakpoints or (0.0,))
+        end = self.manoeuvre.input_end
+        sustained = end is None
+        end = float(self.time[0]) if sustained else end
+        return start, end, (start if sustained else end)
+
+    @cached_property
+    def _own_measures(self):
+        """This run's measures, from its own reported quantities."""
+        out = np.empty(N_MEASURES)
+        start, end, verdict_start = self.measure_times()
+        measure(self.time, self.history_table(), start, end, verdict_start, BAND_FLOOR,
+                np.empty((4, self.time.size)), out)
+        return out
+
+    def measures(self):
+        """The run's measures (:data:`~slingloads.models.multibody.response.MEASURES`; SI,
+        angles in rad), computed with those of its batch when they were."""
+        rows = None if self.batch is None else self.batch.rows
+        return self._own_measures if rows is None else rows[self.index]
+
     def metrics(self):
         """Per-run metrics (SI, angles in degrees), see ``docs/multibody.md``."""
-        h = self.histories()
-        t = self.time
         row = {"run": self.name, "manoeuvre": self.manoeuvre.describe(),
                "trim converged": self.trim.converged}
         if not self.trim.converged:
             row.update({"verdict": "no trim", "stopped": self.stop_reason()})
             return row
-        start = min(self.manoeuvre.breakpoints or (0.0,))
-        after = (t >= start) & np.isfinite(h["yaw"])
-        x0 = {k: h[k][0] for k in h}
-
-        def peak(key, relative=True):
-            y = h[key] - (x0[key] if relative else 0.0)
-            y = np.where(after, y, np.nan)
-            if not np.any(np.isfinite(y)):
-                return np.nan, np.nan
-            k = int(np.nanargmax(np.abs(y)))
-            return float(y[k]), float(t[k])
-
-        for key, label, rel in (("yaw", "yaw", True), ("beta", "beta", False),
-                                ("swing lateral", "swing lateral", False),
-                                ("swing longitudinal", "swing longitudinal", True),
-                                ("pitch", "pitch", True), ("roll", "roll", False),
-                                ("hub load angle", "hub load from mast", False),
-                                ("line psi", "line psi", False),
-                                ("line theta", "line theta", True)):
-            value, when = peak(key, rel)
-            what = "change" if rel else "peak"
-            row[f"{label} {what} [deg]"] = np.degrees(value)
-            row[f"{label} at [s]"] = when
-        y = h["yaw"] - x0["yaw"]
-        row["yaw rms [deg]"] = float(np.degrees(np.sqrt(np.nanmean(y[after] ** 2))))
-        b = h["beta"]
-        row["beta rms [deg]"] = float(np.degrees(np.sqrt(np.nanmean(b[after] ** 2))))
-        tr = h["tension ratio"]
-        row["tension / weight max [-]"] = float(np.nanmax(tr))
-        row["tension / weight min [-]"] = float(np.nanmin(tr))
-        slack = tr <= 0
-        row["cable slack"] = bool(np.any(slack))
-        row["cable slack first at [s]"] = float(t[np.argmax(slack)]) if slack.any() else np.nan
-        row["cable slack time [s]"] = float(np.count_nonzero(slack) * (t[1] - t[0]))
+        m = dict(zip(MEASURES, self.measures(), strict=True))
+        for key, relative in PEAKS:
+            label = METRIC_LABELS.get(key, key)
+            row[f"{label} {'change' if relative else 'peak'} [deg]"] = np.degrees(
+                m[f"{key} peak"])
+            row[f"{label} at [s]"] = float(m[f"{key} at"])
+        row["yaw rms [deg]"] = float(np.degrees(m["yaw rms"]))
+        row["beta rms [deg]"] = float(np.degrees(m["beta rms"]))
+        row["tension / weight max [-]"] = float(m["tension ratio max"])
+        row["tension / weight min [-]"] = float(m["tension ratio min"])
+        row["cable slack"] = bool(m["cable slack"])
+        row["cable slack first at [s]"] = float(m["cable slack first at"])
+        row["cable slack time [s]"] = float(m["cable slack time"])
         if self.system.parachute is not None:
-            row["line tension min [N]"] = float(np.nanmin(h["line tension"]))
-            row["line slack"] = bool(np.nanmin(h["line tension"]) < 0)
-            row["canopy alpha max [deg]"] = float(np.degrees(np.nanmax(h["chute alpha"])))
-        end = self.manoeuvre.input_end
-        end = t[0] if end is None else end
-        period, zeta = _damping_from_peaks(t, h["yaw rate"], end)
-        row["yaw period from response [s]"] = period
-        row["yaw damping ratio from response [-]"] = zeta
-        row["settling time [s]"] = self._settling(t, y, end)
-        verdict, rule = self._verdict(h)
-        row["verdict"] = verdict
-        row["verdict rule"] = rule
+            row["line tension min [N]"] = float(m["line tension min"])
+            row["line slack"] = bool(m["line tension min"] < 0)
+            row["canopy alpha max [deg]"] = float(np.degrees(m["chute alpha max"]))
+        row["yaw period from response [s]"] = float(m["yaw period"])
+        row["yaw damping ratio from response [-]"] = float(m["yaw damping ratio"])
+        row["settling time [s]"] = float(m["settling time"])
+        row["verdict"] = self._verdict(m["activity first"], m["activity second"])
+        row["verdict rule"] = VERDICT_RULE
         row["stopped"] = self.stop_reason()
-        row["carrier speed end [m/s]"] = float(h["carrier speed"][np.isfinite(
-            h["carrier speed"])][-1])
+        row["carrier speed end [m/s]"] = float(m["carrier speed end"])
         return row
 
-    @staticmethod
-    def _settling(t, y, start):
-        """Time after ``start`` after which |y - y_end| stays within max(10 % of its peak,
-        1 deg); NaN when it never does."""
-        ok = np.isfinite(y)
-        if not ok[-1]:
-            return np.nan
-        dev = np.abs(y - y[-1])
-        band = max(0.1 * np.nanmax(dev), np.radians(1.0))
-        outside = np.nonzero((dev > band) & ok)[0]
-        if outside.size == 0:
-            return 0.0
-        last = outside[-1]
-        if last >= t.size - 2:
-            return np.nan
-        return max(0.0, float(t[last + 1] - start))
-
-    def _verdict(self, h):
-        rule = ("divergent: left a table, or the envelope of the motion (largest |rate| of "
-                "yaw, lateral and longitudinal swing) grows by > 10 % from the first to the "
-                "second half of the time after the input ends (after its onset for a sustained "
-                f"input); convergent: it shrinks by > 10 % or stays below {QUIET} deg/s; "
-                "otherwise undamped (bounded under a sustained input); inconclusive when less "
-                "than 10 s are left after the input")
+    def _verdict(self, first, second):
+        """Verdict of :data:`VERDICT_RULE` from the largest activity [deg/s] in the first and
+        the second half of the time it looks at."""
         if self.flag:
-            return "divergent", rule
-        t = self.time
-        dt = t[1] - t[0]
-        sustained = self.manoeuvre.input_end is None
-        start = (min(self.manoeuvre.breakpoints or (0.0,)) if sustained
-                 else self.manoeuvre.input_end)
-        if t[-1] - start < 10.0:
-            return "inconclusive", rule
-        rates = np.vstack([np.abs(h["yaw rate"]),
-                           np.abs(np.gradient(h["swing lateral"], dt)),
-                           np.abs(np.gradient(h["swing longitudinal"], dt))])
-        activity = np.degrees(rates.max(axis=0))
-        middle = 0.5 * (start + t[-1])
-        first = activity[(t >= start) & (t < middle)].max()
-        second = activity[t >= middle].max()
+            return "divergent"
+        _, _, start = self.measure_times()
+        if self.time[-1] - start < 10.0:
+            return "inconclusive"
         if second > 1.1 * first and second > QUIET:
-            return "divergent", rule
+            return "divergent"
         if second < 0.9 * first or second <= QUIET:
-            return "convergent", rule
-        return ("bounded" if sustained else "undamped"), rule
+            return "convergent"
+        return "bounded" if self.manoeuvre.input_end is None else "undamped"
 
 
 @dataclass(frozen=True, eq=False)
@@ -392,7 +345,11 @@ class Simulation:
         raise KeyError(f"no run named {name!r}; runs are {[r.name for r in self.runs]}")
 
     def metrics_frame(self):
-        """One row of metrics per run."""
+        """One row of metrics per run (the measures of the runs integrated together computed
+        together, in compiled code, without their histories)."""
+        for batch in {id(run.batch): run.batch for run in self.runs
+                      if run.batch is not None}.values():
+            batch.measure_all()
         return pd.DataFrame([run.metrics() for run in self.runs])
 
     def to_frame(self):
@@ -490,8 +447,7 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
             groups.setdefault(system.table_key(), []).append(k)
         else:
             results[k] = RunResult(system, prepared[k][1], tr, time,
-                                   np.full((n_out, N_STATES), np.nan),
-                                   np.full((n_out, N_INFO), np.nan), 0, 0.0)
+                                   np.full((n_out, N_STATES), np.nan), 0, 0.0)
     drives = _DriveTables(t_end, output_interval)
     settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers}
     for members in groups.values():
@@ -567,10 +523,49 @@ def _integrate_group(prepared, members, results, drives, time, settings):
             seen[key] = len(profiles)
             profiles.append(table)
         index[j] = seen[key]
-    out, _, info, flags, stops = integrate(
-        x0, params, stack_drives(profiles), index, drives.interval, time.size,
-        system0.tables(), **settings)
+    drive = stack_drives(profiles)
+    out, _, flags, stops = integrate(x0, params, drive, index, drives.interval, time.size,
+                                     system0.tables(), **settings)
+    batch = _Batch(out, params, drive["nodes"], index, system0.tables(), settings["workers"])
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        results[k] = RunResult(system, manoeuvre, tr, time, out[j], info[j], int(flags[j]),
-                               float(stops[j]))
+        results[k] = RunResult(system, manoeuvre, tr, time, out[j], int(flags[j]),
+                               float(stops[j]), batch, j)
+    batch.runs = [results[k] for k in members]
+
+
+class _Batch:
+    """What the runs integrated together share: their sampled states, parameters, drives at
+    the samples and tables, from which a run's reported quantities are evaluated on request
+    (the same compiled equations at the same states and drive as during the integration),
+    and the measures of all of them (:meth:`measure_all`)."""
+
+    def __init__(self, states, params, nodes, profile, tables, workers):
+        self.states, self.params, self.nodes = states, params, nodes
+        self.profile, self.tables, self.workers = profile, tables, workers
+        self.runs = None  # RunResult of each run, set by _integrate_group
+        self.rows = None  # measures of every run, once measure_all ran
+
+    def info(self, j):
+        """Reported quantities of run ``j`` at its samples (NaN where it had stopped)."""
+        states = self.states[j]
+        reached = np.isfinite(states[:, 0])
+        info = np.full((states.shape[0], N_INFO), np.nan)
+        if reached.any():
+            _, info[reached], _ = evaluate_many(states[reached], self.params[j],
+                                                self.nodes[self.profile[j]][reached],
+                                                self.tables)
+        return info
+
+    def measure_all(self):
+        """The measures of every run, in one compiled pass over the runs."""
+        if self.rows is not None:
+            return
+        runs = self.runs
+        times = np.array([run.measure_times() for run in runs]).reshape(-1, 3)
+        self.rows = measure_many(
+            self.states, self.params, self.nodes, self.profile, runs[0].time,
+            [run.system.weight for run in runs],
+            [run.system.hardpoints.mast_axis for run in runs],
+            [run.system.parachute is not None for run in runs], times[:, 0], times[:, 1],
+            times[:, 2], BAND_FLOOR, self.tables, self.workers)

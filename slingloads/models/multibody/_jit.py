@@ -42,6 +42,10 @@ def _drop_stale_cache(folder=_HERE):
 
 _drop_stale_cache()
 
-#: Compile a scalar kernel (no Python objects, cached on disk, releases the GIL so that
-#: several threads run it at once).
-jit = numba.njit(cache=True, fastmath=False, nogil=True)
+#: Compile a scalar kernel that allocates nothing (cached on disk, releases the GIL so that
+#: several threads run it at once). numba's reference counting of arrays is off for it
+#: (``_nrt=False``): with it on, every call that hands an array on counts a reference up and
+#: down, atomic operations that took about a tenth of the integration's time.
+jit = numba.njit(cache=True, fastmath=False, nogil=True, _nrt=False)
+#: Compile a kernel that allocates its own work arrays (reference counting on).
+jit_alloc = numba.njit(cache=True, fastmath=False, nogil=True)

@@ -43,7 +43,7 @@ from slingloads.models.dormand_prince import A as _A
 from slingloads.models.dormand_prince import C as _C
 from slingloads.models.dormand_prince import E as _E
 from slingloads.models.dormand_prince import P as _P
-from slingloads.models.multibody._jit import jit
+from slingloads.models.multibody._jit import jit, jit_alloc
 from slingloads.models.multibody.equations import N_INFO, N_STATES, evaluate
 
 #: Runs per block handed to one thread (small blocks balance the load of uneven runs).
@@ -61,10 +61,11 @@ FIRST_STEP = 0.01
 
 
 @jit
-def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, out):
+def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, out):
     """Drive at time ``t`` of segment ``s`` of profile ``row``: cubic (Catmull-Rom) in the
     segment's table, exact for a drive linear in time, the end slopes from a quadratic through
-    the last three points."""
+    the last three points. A channel that does not vary over the segment (``vary`` false) is
+    its tabulated value."""
     u = (t - seg_a[row, s]) / seg_h[row, s]
     last = seg_n[row, s]
     m = int(u)
@@ -78,6 +79,9 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, out):
     w3 = w2 * w
     for c in range(9):
         p1 = vals[row, base, c]
+        if not vary[row, s, c]:
+            out[c] = p1
+            continue
         p2 = vals[row, base + 1, c]
         if m > 0:
             p0 = vals[row, base - 1, c]
@@ -95,21 +99,23 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, out):
                   + w3 * (1.5 * (p1 - p2) + 0.5 * (p3 - p0)))
 
 
-@jit
-def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, profile,
+@jit_alloc
+def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, nodes, profile,
                interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
-               tail_g, tail_v, cd_g, cd_v, out, info, rates, flags, stop_time):
+               tail_g, tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time):
     """Integrate runs ``x0`` (runs, N) with parameters ``P`` (runs, NP), in place.
 
     Profile ``row = profile[j]`` of run j: ``n_seg[row]`` segments from ``seg_a`` to
     ``seg_b`` (profiles, S), each a drive table of ``seg_n`` intervals of ``seg_h`` from row
-    ``seg_off`` of ``vals`` (profiles, K, 9); ``nodes`` (profiles, n_out, 9) the drive at the
-    samples, every ``interval``. ``fixed`` > 0: that step; else adaptive with ``rtol``,
-    ``atol``. ``C``, ``A``, ``E``, ``PD``: the Dormand-Prince tableau. ``out``, ``rates``
-    (runs, n_out, N) and ``info`` (runs, n_out, N_INFO) receive the states, their derivatives
-    and the reported quantities at the samples (pre-filled with NaN); ``flags`` and
-    ``stop_time`` (runs,) the flag and the time of a run that stopped. With no segment, only
-    the first sample is evaluated (its flag returned): the equations at the states ``x0``.
+    ``seg_off`` of ``vals`` (profiles, K, 9), ``vary`` (profiles, S, 9) true for the channels
+    that vary over a segment; ``nodes`` (profiles, n_out, 9) the drive at the samples, every
+    ``interval``. ``fixed`` > 0: that step; else adaptive with ``rtol``, ``atol``. ``C``,
+    ``A``, ``E``, ``PD``: the Dormand-Prince tableau. ``out`` (runs, n_out, N) receives the
+    states at the samples (NaN after a stop); with ``report``, ``rates`` (runs, n_out, N) and
+    ``info`` (runs, n_out, N_INFO) receive their derivatives and the reported quantities
+    (else they are not touched and may be empty). ``flags`` and ``stop_time`` (runs,) receive
+    the flag and the time of a run that stopped. With no segment, only the first sample is
+    evaluated (its flag returned): the equations at the states ``x0``.
     """
     runs = x0.shape[0]
     n = x0.shape[1]
@@ -118,8 +124,10 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
     x = np.empty(n)
     x5 = np.empty(n)
     y = np.empty(n)
+    dx = np.empty(n)
+    weights = np.empty(7)
     d = np.empty(9)
-    scratch = np.empty(N_INFO)
+    reported = np.empty(N_INFO)
     for j in range(runs):
         row = profile[j]
         pj = P[j]
@@ -140,18 +148,20 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
         phase = 7
         while True:
             finish = False
-            # ------------------------------------------------------------- one evaluation
             if phase == 7:
+                # ---------------------------------------------------------- one sample
                 if sample == 0:
                     for m in range(n):
                         y[m] = x[m]
                 else:
                     theta = (sample * interval - t) / h
+                    for i in range(7):
+                        weights[i] = PD[i, 0] + theta * (PD[i, 1] + theta * (
+                            PD[i, 2] + theta * PD[i, 3]))
                     for m in range(n):
                         acc = 0.0
                         for i in range(7):
-                            acc += K[i, m] * (PD[i, 0] + theta * (PD[i, 1] + theta * (
-                                PD[i, 2] + theta * PD[i, 3])))
+                            acc += K[i, m] * weights[i]
                         y[m] = x[m] + h * theta * acc
                     qn = math.sqrt(y[9] * y[9] + y[10] * y[10] + y[11] * y[11]
                                    + y[12] * y[12])
@@ -159,12 +169,28 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
                         y[m] /= qn
                 for m in range(n):
                     out[j, sample, m] = y[m]
-                for c in range(9):
-                    d[c] = nodes[row, sample, c]
-                dx = rates[j, sample]
-                reported = info[j, sample]
-                want = True
+                f = 0
+                if report:
+                    for c in range(9):
+                        d[c] = nodes[row, sample, c]
+                    f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
+                                 cd_g, cd_v, dx, reported, True)
+                    for m in range(n):
+                        rates[j, sample, m] = dx[m]
+                    for m in range(N_INFO):
+                        info[j, sample, m] = reported[m]
+                if sample == 0:
+                    sample = 1
+                    if segments == 0:
+                        flags[j] = f
+                        break
+                    phase = 0
+                    continue
+                sample += 1
+                if not (sample < n_out and sample * interval <= t_new + 1e-9 * interval):
+                    finish = True
             else:
+                # ---------------------------------------------------------- one stage
                 if phase == 0:
                     for m in range(n):
                         y[m] = x[m]
@@ -176,31 +202,17 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
                             acc += A[phase, i] * K[i, m]
                         y[m] = x[m] + h * acc
                     when = t + C[phase] * h
-                _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, d)
-                dx = K[phase]
-                reported = scratch
-                want = False
-            f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g,
-                         cd_v, dx, reported, want)
-            # ------------------------------------------------------------- what next
-            if phase == 7:
-                if sample == 0:
-                    sample = 1
-                    if segments == 0:
-                        flags[j] = f
-                        break
-                    phase = 0
+                _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, d)
+                f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g,
+                             cd_v, dx, reported, False)
+                for m in range(n):
+                    K[phase, m] = dx[m]
+                if phase == 0:
+                    flag0 = f
+                    stage_flag = f
+                    h = min(h_try, seg_b[row, s] - t)
+                    phase = 1
                     continue
-                sample += 1
-                if not (sample < n_out and sample * interval <= t_new + 1e-9 * interval):
-                    finish = True
-            elif phase == 0:
-                flag0 = f
-                stage_flag = f
-                h = min(h_try, seg_b[row, s] - t)
-                phase = 1
-                continue
-            else:
                 stage_flag |= f
                 if phase < 6:
                     phase += 1
@@ -264,6 +276,15 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
                 else:
                     h = min(h_try, seg_b[row, s] - t)
                     phase = 1
+        # the samples a stopped run did not reach
+        for k in range(sample, n_out):
+            for m in range(n):
+                out[j, k, m] = np.nan
+            if report:
+                for m in range(n):
+                    rates[j, k, m] = np.nan
+                for m in range(N_INFO):
+                    info[j, k, m] = np.nan
 
 
 def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
@@ -285,12 +306,13 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
     -------
     dict
         ``a``, ``b``, ``h`` (segments' start, end, table step [s]), ``n``, ``offset``
-        (intervals and first row of each segment's table), ``values`` (rows, 9), ``nodes``
-        (the drive at the samples, (n_out, 9)).
+        (intervals and first row of each segment's table), ``values`` (rows, 9), ``vary``
+        (segments, 9: the channels that vary over each segment), ``nodes`` (the drive at the
+        samples, (n_out, 9)).
     """
     inner = sorted({float(b) for b in breakpoints if 0.0 < b < t_end * (1 - 1e-12)})
     edges = [0.0, *inner, float(t_end)]
-    a, b, h, n, offset, values = [], [], [], [], [], []
+    a, b, h, n, offset, values, vary = [], [], [], [], [], [], []
     rows = 0
     for start, end in zip(edges[:-1], edges[1:], strict=True):
         count = max(1, int(np.ceil((end - start) / step - 1e-9)))
@@ -298,11 +320,14 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
         times[-1] = end - 1e-9 * (end - start)  # just before the end: the left limit
         a.append(start), b.append(end), h.append((end - start) / count), n.append(count)
         offset.append(rows)
-        values.append(np.asarray(drive(times), float))
+        table = np.asarray(drive(times), float)
+        values.append(table)
+        vary.append(np.any(table != table[0], axis=0))
         rows += count + 1
     n_out = int(round(t_end / interval)) + 1
     return {"a": np.array(a), "b": np.array(b), "h": np.array(h), "n": np.array(n),
             "offset": np.array(offset), "values": np.concatenate(values),
+            "vary": np.array(vary, dtype=bool),
             "nodes": np.asarray(drive(np.arange(n_out) * interval), float)}
 
 
@@ -316,10 +341,11 @@ def stack_drives(profiles):
            "h": np.ones((count, segments)), "n": np.ones((count, segments), dtype=np.int64),
            "offset": np.zeros((count, segments), dtype=np.int64),
            "segments": np.array([len(p["a"]) for p in profiles], dtype=np.int64),
-           "values": np.zeros((count, rows, 9)), "nodes": np.zeros((count, samples, 9))}
+           "values": np.zeros((count, rows, 9)), "vary": np.zeros((count, segments, 9), bool),
+           "nodes": np.zeros((count, samples, 9))}
     for k, p in enumerate(profiles):
         m = len(p["a"])
-        for key in ("a", "b", "h", "n", "offset"):
+        for key in ("a", "b", "h", "n", "offset", "vary"):
             out[key][k, :m] = p[key]
         out["values"][k, :len(p["values"])] = p["values"]
         out["nodes"][k, :len(p["nodes"])] = p["nodes"]
@@ -344,8 +370,22 @@ def worker_count():
         return max(1, os.cpu_count() or 1)
 
 
+def in_blocks(block, runs, workers=None):
+    """Call ``block(start)`` for the blocks of :data:`BLOCK` runs from ``start``, on a pool of
+    ``workers`` threads (default :func:`worker_count`; the compiled kernels release the
+    GIL)."""
+    starts = range(0, runs, BLOCK)
+    workers = min(worker_count() if workers is None else int(workers), len(starts))
+    if workers <= 1:
+        for start in starts:
+            block(start)
+    else:
+        with ThreadPoolExecutor(max_workers=workers) as pool:
+            list(pool.map(block, starts))
+
+
 def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rtol=RTOL,
-              atol=ATOL, workers=None):
+              atol=ATOL, workers=None, report=False):
     """Integrate runs with :func:`dopri_runs`, blocks of runs on a pool of threads.
 
     Parameters
@@ -370,20 +410,26 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
         Tolerances of the adaptive step (SI units of the states). [-], [SI]
     workers : int, optional
         Threads (default :func:`worker_count`).
+    report : bool
+        Also evaluate the reported quantities at the samples during the integration (the
+        same numbers as :func:`evaluate_many` at the sampled states and the drive at the
+        samples gives afterwards).
 
     Returns
     -------
-    states, rates : ndarray, shape (runs, n_out, N)
-        States and their derivatives at the samples.
-    info : ndarray, shape (runs, n_out, N_INFO)
+    states : ndarray, shape (runs, n_out, N)
+        States at the samples (NaN after a stop).
+    info : ndarray, shape (runs, n_out, N_INFO), or None
+        Reported quantities at the samples, with ``report``.
     flags : ndarray of int, shape (runs,)
     stop_time : ndarray, shape (runs,)
         When a run stopped (NaN if it did not). [s]
     """
     runs = x0.shape[0]
-    states = np.full((runs, n_out, N_STATES), np.nan)
-    rates = np.full((runs, n_out, N_STATES), np.nan)
-    info = np.full((runs, n_out, N_INFO), np.nan)
+    states = np.empty((runs, n_out, N_STATES))  # every sample is written by the kernel
+    shape = (runs, n_out) if report else (runs, 0)
+    info = np.empty(shape + (N_INFO,))
+    rates = np.empty(shape + (N_STATES,))
     flags = np.zeros(runs, dtype=np.int64)
     stop_time = np.full(runs, np.nan)
     x0, P = _plain(x0), _plain(P)
@@ -394,20 +440,13 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
         stop = min(start + BLOCK, runs)
         dopri_runs(x0[start:stop], P[start:stop], drives["a"], drives["b"], drives["h"],
                    drives["n"], drives["offset"], drives["segments"], drives["values"],
-                   drives["nodes"], profile[start:stop], float(interval), fixed, float(rtol),
-                   float(atol), _C, _A, _E, _P, *tables, states[start:stop],
-                   info[start:stop], rates[start:stop], flags[start:stop],
+                   drives["vary"], drives["nodes"], profile[start:stop], float(interval),
+                   fixed, float(rtol), float(atol), _C, _A, _E, _P, *tables, bool(report),
+                   states[start:stop], info[start:stop], rates[start:stop], flags[start:stop],
                    stop_time[start:stop])
 
-    starts = range(0, runs, BLOCK)
-    workers = min(worker_count() if workers is None else int(workers), len(starts))
-    if workers <= 1:
-        for start in starts:
-            block(start)
-    else:
-        with ThreadPoolExecutor(max_workers=workers) as pool:
-            list(pool.map(block, starts))
-    return states, rates, info, flags, stop_time
+    in_blocks(block, runs, workers)
+    return states, (info if report else None), flags, stop_time
 
 
 def evaluate_many(states, P, drives, tables):
@@ -438,7 +477,7 @@ def evaluate_many(states, P, drives, tables):
     flags = np.zeros(n, dtype=np.int64)
     dopri_runs(states, P, none, none, none + 1.0, np.ones((n, 1), dtype=np.int64),
                np.zeros((n, 1), dtype=np.int64), np.zeros(n, dtype=np.int64),
-               np.zeros((n, 2, 9)), nodes, np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL,
-               ATOL, _C, _A, _E, _P, *tables, np.empty((n, 1, N_STATES)), info, rates, flags,
-               np.empty(n))
+               np.zeros((n, 2, 9)), np.zeros((n, 1, 9), bool), nodes,
+               np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, _C, _A, _E, _P, *tables,
+               True, np.empty((n, 1, N_STATES)), info, rates, flags, np.empty(n))
     return rates[:, 0], info[:, 0], flags

@@ -1,0 +1,463 @@
+"""The sampled response of runs: derived histories and their measures, compiled.
+
+From the states a run was sampled at and the quantities the equations report there
+(:data:`~slingloads.models.multibody.equations.INFO`), :func:`derive` computes the histories an
+engineer reads (:data:`HISTORY`): the attitude as Euler angles (yaw unwrapped), the yaw rate
+about the earth vertical, the cable swing angles, the hub load and its angle from the mast
+axis, the parachute line angles, the carrier speed. :func:`measure` reduces them to the
+measures of a run (:data:`MEASURES`): peaks and when they occur, RMS values, extremes, cable
+slack, damping from successive peaks, settling time and the activity the verdict compares;
+the analysis (:mod:`slingloads.analyses.multibody.simulate`) names them and states its rules.
+
+:func:`measure_runs` does both for many runs at once without keeping their histories: each
+run's reported quantities are evaluated at its samples (the same compiled equations at the same
+states and drive as during the integration, so the very numbers a run's ``info`` gives), into a
+buffer reused from run to run.
+
+The formulas are those of numpy: angles from ``arctan2``, ``arcsin`` and ``arccos`` (here
+the C library's, which may differ from numpy's vectorised ones in the last bit), ``unwrap``
+and ``gradient`` as numpy defines them, means as numpy's pairwise sums.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from slingloads.models.multibody._jit import jit, jit_alloc
+from slingloads.models.multibody.equations import N_INFO, evaluate
+from slingloads.models.multibody.integrator import BLOCK, in_blocks
+
+#: Derived histories, in the order of :func:`derive`'s columns (SI, angles in rad).
+HISTORY = ("time", "x", "y", "z", "yaw", "pitch", "roll", "yaw rate", "alpha", "beta",
+           "airspeed", "swing longitudinal", "swing lateral", "swing", "tension",
+           "tension ratio", "hub Fx", "hub Fy", "hub Fz", "hub load angle", "line theta",
+           "line psi", "line tension", "chute alpha", "carrier speed", "thrust tilt")
+N_HISTORY = len(HISTORY)
+# columns the compiled measures read
+_BETA = HISTORY.index("beta")
+_CARRIER_SPEED = HISTORY.index("carrier speed")
+_CHUTE_ALPHA = HISTORY.index("chute alpha")
+_LINE_TENSION = HISTORY.index("line tension")
+_SWING_LATERAL = HISTORY.index("swing lateral")
+_SWING_LONGITUDINAL = HISTORY.index("swing longitudinal")
+_TENSION_RATIO = HISTORY.index("tension ratio")
+_YAW = HISTORY.index("yaw")
+_YAW_RATE = HISTORY.index("yaw rate")
+
+#: Histories whose peak (largest magnitude after the input starts) :func:`measure` finds, and
+#: whether it is taken as a change from the first sample.
+PEAKS = (("yaw", True), ("beta", False), ("swing lateral", False),
+         ("swing longitudinal", True), ("pitch", True), ("roll", False),
+         ("hub load angle", False), ("line psi", False), ("line theta", True))
+_PEAK_COLUMNS = np.array([HISTORY.index(name) for name, _ in PEAKS], dtype=np.int64)
+_PEAK_RELATIVE = np.array([relative for _, relative in PEAKS], dtype=np.bool_)
+
+#: What :func:`measure` returns, in order (SI, angles in rad): for each of :data:`PEAKS` its
+#: value and time, then the rest.
+MEASURES = tuple(f"{name} {what}" for name, _ in PEAKS for what in ("peak", "at")) + (
+    "yaw rms", "beta rms", "tension ratio max", "tension ratio min", "cable slack",
+    "cable slack first at", "cable slack time", "line tension min", "chute alpha max",
+    "yaw period", "yaw damping ratio", "settling time", "activity first", "activity second",
+    "carrier speed end")
+N_MEASURES = len(MEASURES)
+
+#: Block of a pairwise sum, numpy's (below it eight interleaved partial sums).
+_PAIRWISE_BLOCK = 128
+
+
+@jit
+def _pairwise_sum(a, lo, n):
+    """Sum of ``a[lo:lo + n]`` in numpy's order (``np.add.reduce`` on a contiguous array)."""
+    if n < 8:
+        total = 0.0
+        for i in range(lo, lo + n):
+            total += a[i]
+        return total
+    if n <= _PAIRWISE_BLOCK:
+        r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
+        r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
+        i = 8
+        while i < n - n % 8:
+            r0 += a[lo + i]
+            r1 += a[lo + i + 1]
+            r2 += a[lo + i + 2]
+            r3 += a[lo + i + 3]
+            r4 += a[lo + i + 4]
+            r5 += a[lo + i + 5]
+            r6 += a[lo + i + 6]
+            r7 += a[lo + i + 7]
+            i += 8
+        total = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+        while i < n:
+            total += a[lo + i]
+            i += 1
+        return total
+    half = n // 2
+    half -= half % 8
+    return _pairwise_sum(a, lo, half) + _pairwise_sum(a, lo + half, n - half)
+
+
+@jit
+def _clip1(x):
+    return -1.0 if x < -1.0 else (1.0 if x > 1.0 else x)
+
+
+@jit
+def derive(time, states, info, weight, mast, chute, out):
+    """Derived histories (:data:`HISTORY`) of one run into ``out`` (n, N_HISTORY).
+
+    Parameters
+    ----------
+    time : ndarray, shape (n,)
+        Sampling times. [s]
+    states, info : ndarray, shape (n, N), (n, N_INFO)
+        States and reported quantities at the samples (NaN after a stop).
+    weight : float
+        Weight of the hung system (the tension's reference). [N]
+    mast : ndarray, shape (3,)
+        Mast axis, body axes (unit). [-]
+    chute : bool
+        Whether there is a parachute (else its histories are NaN).
+    out : ndarray, shape (n, N_HISTORY)
+    """
+    n = time.shape[0]
+    nan = np.nan
+    for k in range(n):
+        q0, q1, q2, q3 = states[k, 9], states[k, 10], states[k, 11], states[k, 12]
+        r00 = q0 * q0 + q1 * q1 - q2 * q2 - q3 * q3
+        r10 = 2 * (q1 * q2 + q0 * q3)
+        r20 = 2 * (q1 * q3 - q0 * q2)
+        r21 = 2 * (q2 * q3 + q0 * q1)
+        r22 = q0 * q0 - q1 * q1 - q2 * q2 + q3 * q3
+        yaw = math.atan2(-r10, r00)
+        # unwrapped below, from the finite yaws (NaN counts as 0 there, as in numpy.unwrap)
+        out[k, 4] = yaw if math.isfinite(yaw) else 0.0
+        out[k, 5] = -math.asin(_clip1(r20))
+        out[k, 6] = math.atan2(-r21, r22)
+        if not math.isfinite(q0):  # the rotation of a missing attitude: identity
+            q0, q1, q2, q3 = 1.0, 0.0, 0.0, 0.0
+            r20 = 2 * (q1 * q3 - q0 * q2)
+            r21 = 2 * (q2 * q3 + q0 * q1)
+            r22 = q0 * q0 - q1 * q1 - q2 * q2 + q3 * q3
+        out[k, 0] = time[k]
+        out[k, 1], out[k, 2], out[k, 3] = states[k, 3], states[k, 4], states[k, 5]
+        out[k, 7] = -(r20 * states[k, 13] + r21 * states[k, 14] + r22 * states[k, 15])
+        out[k, 8], out[k, 9], out[k, 10] = info[k, 8], info[k, 9], info[k, 10]
+        d0, d1, d2 = info[k, 2], info[k, 3], info[k, 4]
+        span = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+        out[k, 11] = math.atan2(d0, -d2)
+        out[k, 12] = math.atan2(d1, -d2)
+        out[k, 13] = math.acos(_clip1(-d2 / span))
+        out[k, 14] = info[k, 0]
+        out[k, 15] = info[k, 0] / weight
+        h0, h1, h2 = info[k, 5], info[k, 6], info[k, 7]
+        out[k, 16], out[k, 17], out[k, 18] = h0, h1, h2
+        hub = math.sqrt(h0 * h0 + h1 * h1 + h2 * h2)
+        along = h0 * mast[0] + h1 * mast[1] + h2 * mast[2]
+        out[k, 19] = math.acos(_clip1(along / hub)) if hub > 0 else nan
+        if chute:
+            out[k, 20] = math.atan2(info[k, 17], info[k, 15])
+            out[k, 21] = math.asin(_clip1(info[k, 16]))
+            out[k, 22], out[k, 23] = info[k, 13], info[k, 14]
+        else:
+            out[k, 20] = out[k, 21] = out[k, 22] = out[k, 23] = nan
+        v0, v1, v2 = states[k, 0], states[k, 1], states[k, 2]
+        out[k, 24] = math.sqrt(v0 * v0 + v1 * v1 + v2 * v2)
+        out[k, 25] = math.atan2(-info[k, 18], info[k, 20])
+    # numpy.unwrap of the yaw (discontinuity pi, period 2 pi), then NaN where it is missing
+    correction = 0.0
+    previous = out[0, 4]
+    for k in range(1, n):
+        raw = out[k, 4]
+        dd = raw - previous
+        previous = raw
+        ddmod = (dd + math.pi) % (2.0 * math.pi) - math.pi
+        if ddmod == -math.pi and dd > 0:
+            ddmod = math.pi
+        fix = ddmod - dd
+        if abs(dd) < math.pi:
+            fix = 0.0
+        correction += fix
+        out[k, 4] = raw + correction
+    for k in range(n):
+        if not math.isfinite(states[k, 9]):
+            out[k, 4] = nan
+
+
+@jit
+def damping_from_peaks(time, y, start, buf):
+    """Period [s] and damping ratio [-] from the successive positive peaks of ``y`` after
+    ``start`` (log decrement, each peak refined by a parabola through it and its
+    neighbours), or NaN when there are fewer than three peaks above 2 % of the largest.
+    ``buf`` (4, n): scratch."""
+    m = 0
+    for k in range(time.shape[0]):
+        if time[k] >= start and math.isfinite(y[k]):
+            buf[0, m], buf[1, m] = time[k], y[k]
+            m += 1
+    if m < 5:
+        return np.nan, np.nan
+    t, v = buf[0], buf[1]
+    largest, inner = -np.inf, 0
+    for i in range(1, m - 1):
+        if v[i] > v[i - 1] and v[i] >= v[i + 1] and v[i] > 0:
+            inner += 1
+            largest = max(largest, v[i])
+    if inner == 0:
+        return np.nan, np.nan
+    h = t[1] - t[0]
+    times, values = buf[2], buf[3]
+    count = 0
+    for i in range(1, m - 1):
+        y0, y1, y2 = v[i - 1], v[i], v[i + 1]
+        if not (y1 > y0 and y1 >= y2 and y1 > 0 and y1 > 0.02 * largest):
+            continue
+        den = y0 - 2 * y1 + y2
+        shift = 0.5 * (y0 - y2) / den if den != 0 else 0.0
+        times[count] = t[i] + shift * h
+        values[count] = y1 - 0.25 * (y0 - y2) * shift
+        count += 1
+    if count < 3:
+        return np.nan, np.nan
+    # differences and log decrements over the front of the consumed buffers
+    for i in range(count - 1):
+        t[i] = times[i + 1] - times[i]
+        v[i] = math.log(values[i] / values[i + 1])
+    period = _pairwise_sum(t, 0, count - 1) / (count - 1)
+    delta = _pairwise_sum(v, 0, count - 1) / (count - 1)
+    return period, delta / math.sqrt(4 * math.pi ** 2 + delta ** 2)
+
+
+@jit
+def _settling(time, hist, column, start, band_floor):
+    """Time after ``start`` after which |y - y_end| (y: the column less its first value)
+    stays within max(10 % of its peak, ``band_floor``); NaN when it never does."""
+    n = time.shape[0]
+    first = hist[0, column]
+    end = hist[n - 1, column] - first
+    if not math.isfinite(end):
+        return np.nan
+    largest = -np.inf
+    for k in range(n):
+        dev = abs(hist[k, column] - first - end)
+        if dev > largest:  # NaN never is
+            largest = dev
+    band = 0.1 * largest
+    if not band >= band_floor:
+        band = band_floor
+    last = -1
+    for k in range(n):
+        dev = abs(hist[k, column] - first - end)
+        if dev > band:
+            last = k
+    if last < 0:
+        return 0.0
+    if last >= n - 2:
+        return np.nan
+    return max(0.0, time[last + 1] - start)
+
+
+@jit
+def _rms(time, hist, column, relative, start, buf):
+    """Root mean square of a column (less its first value if ``relative``) over the samples
+    after ``start`` where the yaw is known, NaN-ignoring (numpy's nanmean)."""
+    first = hist[0, column] if relative else 0.0
+    m, count = 0, 0
+    yaw = _YAW
+    for k in range(time.shape[0]):
+        if time[k] >= start and math.isfinite(hist[k, yaw]):
+            y = hist[k, column] - first
+            if math.isfinite(y):
+                buf[m] = y * y
+                count += 1
+            else:
+                buf[m] = 0.0
+            m += 1
+    if count == 0:
+        return np.nan
+    return math.sqrt(_pairwise_sum(buf, 0, m) / count)
+
+
+@jit
+def _activity(hist, k, dt):
+    """Largest of |yaw rate|, |d(swing lateral)/dt| and |d(swing longitudinal)/dt| at sample
+    ``k`` (numpy.gradient: central differences, one-sided at the ends), in deg/s; NaN if any
+    is."""
+    n = hist.shape[0]
+    best = abs(hist[k, _YAW_RATE])
+    for column in (_SWING_LATERAL, _SWING_LONGITUDINAL):
+        if k == 0:
+            rate = (hist[1, column] - hist[0, column]) / dt
+        elif k == n - 1:
+            rate = (hist[n - 1, column] - hist[n - 2, column]) / dt
+        else:
+            rate = (hist[k + 1, column] - hist[k - 1, column]) / (2.0 * dt)
+        rate = abs(rate)
+        if math.isnan(rate) or math.isnan(best):
+            best = np.nan
+        elif rate > best:
+            best = rate
+    return best * (180.0 / math.pi)
+
+
+@jit
+def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
+    """Measures (:data:`MEASURES`) of one run's derived histories ``hist`` (n, N_HISTORY).
+
+    Parameters
+    ----------
+    time : ndarray, shape (n,)
+        [s]
+    hist : ndarray, shape (n, N_HISTORY)
+        :func:`derive`'s histories.
+    start : float
+        When the input starts (peaks and RMS values are taken from then on). [s]
+    end : float
+        When it ends (damping and settling are measured from then on). [s]
+    verdict_start : float
+        Start of the time whose two halves the verdict's activity compares. [s]
+    band_floor : float
+        Least half-width of the settling band. [rad]
+    buf : ndarray, shape (4, n)
+        Scratch.
+    out : ndarray, shape (N_MEASURES,)
+        SI, angles in rad, the activity in deg/s.
+    """
+    n = time.shape[0]
+    for p in range(_PEAK_COLUMNS.shape[0]):
+        column, relative = _PEAK_COLUMNS[p], _PEAK_RELATIVE[p]
+        best, where = -1.0, -1
+        first = hist[0, column] if relative else 0.0
+        for k in range(n):
+            if time[k] >= start and math.isfinite(hist[k, _YAW]):
+                y = hist[k, column] - first
+                if abs(y) > best:  # NaN never is
+                    best, where = abs(y), k
+        if where < 0:
+            out[2 * p], out[2 * p + 1] = np.nan, np.nan
+        else:
+            out[2 * p], out[2 * p + 1] = hist[where, column] - first, time[where]
+    i = 2 * _PEAK_COLUMNS.shape[0]
+    out[i] = _rms(time, hist, _YAW, True, start, buf[0])
+    out[i + 1] = _rms(time, hist, _BETA, False, start, buf[0])
+    high, low, slack, first_slack = -np.inf, np.inf, 0, np.nan
+    tension_min, alpha_max, speed_end = np.inf, -np.inf, np.nan
+    column = _TENSION_RATIO
+    for k in range(n):
+        ratio = hist[k, column]
+        if ratio > high:
+            high = ratio
+        if ratio < low:
+            low = ratio
+        if ratio <= 0:
+            if slack == 0:
+                first_slack = time[k]
+            slack += 1
+        if hist[k, _LINE_TENSION] < tension_min:
+            tension_min = hist[k, _LINE_TENSION]
+        if hist[k, _CHUTE_ALPHA] > alpha_max:
+            alpha_max = hist[k, _CHUTE_ALPHA]
+        if math.isfinite(hist[k, _CARRIER_SPEED]):
+            speed_end = hist[k, _CARRIER_SPEED]
+    out[i + 2] = high if high > -np.inf else np.nan
+    out[i + 3] = low if low < np.inf else np.nan
+    out[i + 4] = 1.0 if slack > 0 else 0.0
+    out[i + 5] = first_slack
+    out[i + 6] = slack * (time[1] - time[0])
+    out[i + 7] = tension_min if tension_min < np.inf else np.nan
+    out[i + 8] = alpha_max if alpha_max > -np.inf else np.nan
+    period, zeta = damping_from_peaks(time, hist[:, _YAW_RATE], end, buf)
+    out[i + 9], out[i + 10] = period, zeta
+    out[i + 11] = _settling(time, hist, _YAW, end, band_floor)
+    dt = time[1] - time[0]
+    middle = 0.5 * (verdict_start + time[n - 1])
+    first, second = -np.inf, -np.inf
+    for k in range(n):
+        if time[k] < verdict_start:
+            continue
+        a = _activity(hist, k, dt)
+        if time[k] < middle:
+            first = a if (math.isnan(a) or math.isnan(first)) else max(first, a)
+        else:
+            second = a if (math.isnan(a) or math.isnan(second)) else max(second, a)
+    out[i + 12], out[i + 13] = first, second
+    out[i + 14] = speed_end
+
+
+@jit_alloc
+def measure_runs(states, P, nodes, profile, time, weight, mast, chute, start, end,
+                 verdict_start, band_floor, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
+                 cd_g, cd_v, out):
+    """Measures of many runs (:func:`measure`), each from its sampled states: the reported
+    quantities evaluated at its samples, its histories derived, both in buffers reused from
+    run to run.
+
+    Parameters
+    ----------
+    states : ndarray, shape (runs, n, N)
+        Sampled states (NaN after a stop).
+    P : ndarray, shape (runs, NP)
+        Parameter vectors.
+    nodes : ndarray, shape (profiles, n, 9)
+        Drive at the samples of each profile; ``profile`` (runs,) the profile of each run.
+    time : ndarray, shape (n,)
+        [s]
+    weight, start, end, verdict_start : ndarray, shape (runs,)
+        :func:`derive`'s weight and :func:`measure`'s times of each run. [N], [s]
+    mast : ndarray, shape (runs, 3)
+    chute : ndarray of bool, shape (runs,)
+    band_floor : float
+        [rad]
+    fus_a, ... cd_v :
+        The runs' tables (:meth:`SlingSystem.tables`).
+    out : ndarray, shape (runs, N_MEASURES)
+    """
+    runs, n, width = states.shape
+    info = np.full((n, N_INFO), np.nan)
+    hist = np.empty((n, N_HISTORY))
+    buf = np.empty((4, n))
+    rates = np.empty(width)
+    x = np.empty(width)
+    d = np.empty(9)
+    for j in range(runs):
+        row = profile[j]
+        for k in range(n):
+            if not math.isfinite(states[j, k, 0]):
+                for c in range(N_INFO):
+                    info[k, c] = np.nan
+                continue
+            for m in range(width):
+                x[m] = states[j, k, m]
+            for c in range(9):
+                d[c] = nodes[row, k, c]
+            evaluate(x, P[j], d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v,
+                     rates, info[k], True)
+        derive(time, states[j], info, weight[j], mast[j], chute[j], hist)
+        measure(time, hist, start[j], end[j], verdict_start[j], band_floor, buf, out[j])
+
+
+def measure_many(states, P, nodes, profile, time, weight, mast, chute, start, end,
+                 verdict_start, band_floor, tables, workers=None):
+    """:func:`measure_runs` on blocks of runs over a pool of threads; returns the measures
+    (runs, N_MEASURES) (arguments as :func:`measure_runs`'s, ``tables`` the tuple of
+    :meth:`SlingSystem.tables`)."""
+    runs = states.shape[0]
+    out = np.empty((runs, N_MEASURES))
+    time = np.ascontiguousarray(time, dtype=float)
+    weight, start, end, verdict_start = (np.ascontiguousarray(v, dtype=float) for v in
+                                         (weight, start, end, verdict_start))
+    mast = np.ascontiguousarray(mast, dtype=float)
+    chute = np.ascontiguousarray(chute, dtype=np.bool_)
+    profile = np.ascontiguousarray(profile, dtype=np.int64)
+
+    def block(first):
+        last = min(first + BLOCK, runs)
+        measure_runs(states[first:last], P[first:last], nodes, profile[first:last], time,
+                     weight[first:last], mast[first:last], chute[first:last], start[first:last],
+                     end[first:last], verdict_start[first:last], float(band_floor), *tables,
+                     out[first:last])
+
+    in_blocks(block, runs, workers)
+    return out
