@@ -42,6 +42,7 @@ from slingloads.models.multibody.response import (
     derive,
     measure,
     measure_many,
+    scratch,
 )
 from slingloads.models.multibody.rigid_body import (
     euler_angles,
@@ -125,7 +126,7 @@ def _damping_from_peaks(t, y, start=0.0):
     ``start`` (log decrement), or NaN when there are fewer than three peaks above 2 % of the
     largest (:func:`~slingloads.models.multibody.response.damping_from_peaks`)."""
     t, y = np.ascontiguousarray(t, dtype=float), np.ascontiguousarray(y, dtype=float)
-    return damping_from_peaks(t, y, float(start), np.empty((4, t.size)))
+    return damping_from_peaks(t, y, float(start), scratch(t.size))
 
 
 #: Columns of :meth:`RunResult.to_frame`: (key of :meth:`RunResult.histories`, label,
@@ -252,7 +253,7 @@ class RunResult:
         out = np.empty(N_MEASURES)
         start, end, verdict_start = self.measure_times()
         measure(self.time, self.history_table(), start, end, verdict_start, BAND_FLOOR,
-                np.empty((4, self.time.size)), out)
+                scratch(self.time.size), out)
         return out
 
     def measures(self):

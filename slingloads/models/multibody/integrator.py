@@ -287,6 +287,18 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                     info[j, k, m] = np.nan
 
 
+def _varies(table):
+    """Channels of a segment's drive table (rows, 9) that :func:`_drive_at` interpolates: all
+    but those constant over the segment on which the cubic gives the constant to the last bit
+    (its curvature term, ((p - 2.5 p) + 2 p) - 0.5 p, is then exactly zero, as it is for zero
+    and most values; the others keep their interpolation, so that the drive, and the
+    integration, do not change by a bit)."""
+    p = table[0]
+    constant = np.all(table == p, axis=0)
+    exact = ((p - 2.5 * p) + 2.0 * p) - 0.5 * p == 0.0
+    return ~(constant & exact)
+
+
 def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
     """Drive tables of one input profile for :func:`dopri_runs`.
 
@@ -322,7 +334,7 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
         offset.append(rows)
         table = np.asarray(drive(times), float)
         values.append(table)
-        vary.append(np.any(table != table[0], axis=0))
+        vary.append(_varies(table))
         rows += count + 1
     n_out = int(round(t_end / interval)) + 1
     return {"a": np.array(a), "b": np.array(b), "h": np.array(h), "n": np.array(n),

@@ -194,17 +194,7 @@ def fuselage_loads(u0, u1, u2, half_rho, area, length, alpha_grid, beta_grid, co
     m0 = bilinear(coeffs, 3, i, j, wa, wb)
     m1 = bilinear(coeffs, 4, i, j, wa, wb)
     m2 = bilinear(coeffs, 5, i, j, wa, wb)
-    if side > 0.0:
-        # the cosines and sines of the angles from the flow direction itself (d is a unit
-        # vector): cos b = +-side, sin b = -d_y, cos a = |d_x| / side, sin a = sign(d_x) d_z
-        # / side, the same as the trigonometric functions of the angles to round-off
-        if d0 >= 0.0:
-            ca, sa, cb = d0 / side, d2 / side, side
-        else:
-            ca, sa, cb = -d0 / side, -d2 / side, -side
-        sb = -d1
-    else:  # a flow along body y: alpha is +-90 deg by convention
-        ca, sa, cb, sb = math.cos(alpha), math.sin(alpha), math.cos(beta), math.sin(beta)
+    ca, sa, cb, sb = math.cos(alpha), math.sin(alpha), math.cos(beta), math.sin(beta)
     cfx, cfy, cfz = to_airframe(force_frame, True, c0, c1, c2, ca, sa, cb, sb)
     cmx, cmy, cmz = to_airframe(moment_frame, False, m0, m1, m2, ca, sa, cb, sb)
     qs = half_rho * speed2 * area

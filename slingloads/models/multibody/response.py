@@ -51,8 +51,8 @@ _YAW_RATE = HISTORY.index("yaw rate")
 PEAKS = (("yaw", True), ("beta", False), ("swing lateral", False),
          ("swing longitudinal", True), ("pitch", True), ("roll", False),
          ("hub load angle", False), ("line psi", False), ("line theta", True))
-_PEAK_COLUMNS = np.array([HISTORY.index(name) for name, _ in PEAKS], dtype=np.int64)
-_PEAK_RELATIVE = np.array([relative for _, relative in PEAKS], dtype=np.bool_)
+_PEAK_COLUMNS = tuple(HISTORY.index(name) for name, _ in PEAKS)
+_PEAK_RELATIVE = tuple(relative for _, relative in PEAKS)
 
 #: What :func:`measure` returns, in order (SI, angles in rad): for each of :data:`PEAKS` its
 #: value and time, then the rest.
@@ -65,38 +65,80 @@ N_MEASURES = len(MEASURES)
 
 #: Block of a pairwise sum, numpy's (below it eight interleaved partial sums).
 _PAIRWISE_BLOCK = 128
+#: Levels of a pairwise sum's tree the scratch holds (2**64 values).
+_LEVELS = 64
+
+
+def scratch(samples):
+    """Work space of :func:`measure` for runs of ``samples`` samples."""
+    return np.empty((5, max(int(samples), 4 * _LEVELS)))
 
 
 @jit
-def _pairwise_sum(a, lo, n):
-    """Sum of ``a[lo:lo + n]`` in numpy's order (``np.add.reduce`` on a contiguous array)."""
+def _block_sum(a, lo, n):
+    """Sum of ``a[lo:lo + n]``, n <= 128, in numpy's order."""
     if n < 8:
         total = 0.0
         for i in range(lo, lo + n):
             total += a[i]
         return total
-    if n <= _PAIRWISE_BLOCK:
-        r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
-        r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
-        i = 8
-        while i < n - n % 8:
-            r0 += a[lo + i]
-            r1 += a[lo + i + 1]
-            r2 += a[lo + i + 2]
-            r3 += a[lo + i + 3]
-            r4 += a[lo + i + 4]
-            r5 += a[lo + i + 5]
-            r6 += a[lo + i + 6]
-            r7 += a[lo + i + 7]
-            i += 8
-        total = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-        while i < n:
-            total += a[lo + i]
-            i += 1
-        return total
+    r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
+    r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
+    i = 8
+    while i < n - n % 8:
+        r0 += a[lo + i]
+        r1 += a[lo + i + 1]
+        r2 += a[lo + i + 2]
+        r3 += a[lo + i + 3]
+        r4 += a[lo + i + 4]
+        r5 += a[lo + i + 5]
+        r6 += a[lo + i + 6]
+        r7 += a[lo + i + 7]
+        i += 8
+    total = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+    while i < n:
+        total += a[lo + i]
+        i += 1
+    return total
+
+
+@jit
+def _left_half(n):
+    """Length of the first half of a pairwise sum of n > 128 values (a multiple of 8)."""
     half = n // 2
-    half -= half % 8
-    return _pairwise_sum(a, lo, half) + _pairwise_sum(a, lo + half, n - half)
+    return half - half % 8
+
+
+@jit
+def _pairwise_sum(a, lo, n, stack):
+    """Sum of ``a[lo:lo + n]`` in numpy's order (``np.add.reduce`` on a contiguous array:
+    blocks of at most 128 values, halves above), its tree walked with ``stack`` (4 x
+    _LEVELS) instead of recursion."""
+    if n <= _PAIRWISE_BLOCK:
+        return _block_sum(a, lo, n)
+    depth = 0
+    node_lo, node_n = lo, n
+    while True:
+        while node_n > _PAIRWISE_BLOCK:  # down to the left half
+            f = 4 * depth
+            stack[f], stack[f + 1], stack[f + 2] = node_lo, node_n, 0.0
+            depth += 1
+            node_n = _left_half(node_n)
+        result = _block_sum(a, node_lo, node_n)
+        right = False
+        while depth > 0:  # up, adding each right half to its left half
+            f = 4 * (depth - 1)
+            if stack[f + 2] == 0.0:  # back from a left half: keep its sum, go right
+                stack[f + 2], stack[f + 3] = 1.0, result
+                parent_lo, parent_n = int(stack[f]), int(stack[f + 1])
+                half = _left_half(parent_n)
+                node_lo, node_n = parent_lo + half, parent_n - half
+                right = True
+                break
+            result = stack[f + 3] + result
+            depth -= 1
+        if not right:
+            return result
 
 
 @jit
@@ -191,7 +233,7 @@ def damping_from_peaks(time, y, start, buf):
     """Period [s] and damping ratio [-] from the successive positive peaks of ``y`` after
     ``start`` (log decrement, each peak refined by a parabola through it and its
     neighbours), or NaN when there are fewer than three peaks above 2 % of the largest.
-    ``buf`` (4, n): scratch."""
+    ``buf``: :func:`scratch`."""
     m = 0
     for k in range(time.shape[0]):
         if time[k] >= start and math.isfinite(y[k]):
@@ -225,8 +267,8 @@ def damping_from_peaks(time, y, start, buf):
     for i in range(count - 1):
         t[i] = times[i + 1] - times[i]
         v[i] = math.log(values[i] / values[i + 1])
-    period = _pairwise_sum(t, 0, count - 1) / (count - 1)
-    delta = _pairwise_sum(v, 0, count - 1) / (count - 1)
+    period = _pairwise_sum(t, 0, count - 1, buf[4]) / (count - 1)
+    delta = _pairwise_sum(v, 0, count - 1, buf[4]) / (count - 1)
     return period, delta / math.sqrt(4 * math.pi ** 2 + delta ** 2)
 
 
@@ -260,7 +302,7 @@ def _settling(time, hist, column, start, band_floor):
 
 
 @jit
-def _rms(time, hist, column, relative, start, buf):
+def _rms(time, hist, column, relative, start, values, stack):
     """Root mean square of a column (less its first value if ``relative``) over the samples
     after ``start`` where the yaw is known, NaN-ignoring (numpy's nanmean)."""
     first = hist[0, column] if relative else 0.0
@@ -270,14 +312,14 @@ def _rms(time, hist, column, relative, start, buf):
         if time[k] >= start and math.isfinite(hist[k, yaw]):
             y = hist[k, column] - first
             if math.isfinite(y):
-                buf[m] = y * y
+                values[m] = y * y
                 count += 1
             else:
-                buf[m] = 0.0
+                values[m] = 0.0
             m += 1
     if count == 0:
         return np.nan
-    return math.sqrt(_pairwise_sum(buf, 0, m) / count)
+    return math.sqrt(_pairwise_sum(values, 0, m, stack) / count)
 
 
 @jit
@@ -320,13 +362,13 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
         Start of the time whose two halves the verdict's activity compares. [s]
     band_floor : float
         Least half-width of the settling band. [rad]
-    buf : ndarray, shape (4, n)
-        Scratch.
+    buf : ndarray
+        :func:`scratch`.
     out : ndarray, shape (N_MEASURES,)
         SI, angles in rad, the activity in deg/s.
     """
     n = time.shape[0]
-    for p in range(_PEAK_COLUMNS.shape[0]):
+    for p in range(len(_PEAK_COLUMNS)):
         column, relative = _PEAK_COLUMNS[p], _PEAK_RELATIVE[p]
         best, where = -1.0, -1
         first = hist[0, column] if relative else 0.0
@@ -339,9 +381,9 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
             out[2 * p], out[2 * p + 1] = np.nan, np.nan
         else:
             out[2 * p], out[2 * p + 1] = hist[where, column] - first, time[where]
-    i = 2 * _PEAK_COLUMNS.shape[0]
-    out[i] = _rms(time, hist, _YAW, True, start, buf[0])
-    out[i + 1] = _rms(time, hist, _BETA, False, start, buf[0])
+    i = 2 * len(_PEAK_COLUMNS)
+    out[i] = _rms(time, hist, _YAW, True, start, buf[0], buf[4])
+    out[i + 1] = _rms(time, hist, _BETA, False, start, buf[0], buf[4])
     high, low, slack, first_slack = -np.inf, np.inf, 0, np.nan
     tension_min, alpha_max, speed_end = np.inf, -np.inf, np.nan
     column = _TENSION_RATIO
@@ -417,7 +459,7 @@ def measure_runs(states, P, nodes, profile, time, weight, mast, chute, start, en
     runs, n, width = states.shape
     info = np.full((n, N_INFO), np.nan)
     hist = np.empty((n, N_HISTORY))
-    buf = np.empty((4, n))
+    buf = np.empty((5, max(n, 4 * _LEVELS)))
     rates = np.empty(width)
     x = np.empty(width)
     d = np.empty(9)
