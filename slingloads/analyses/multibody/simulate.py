@@ -51,7 +51,7 @@ from slingloads.models.multibody.rigid_body import (
 )
 
 from .manoeuvres import Manoeuvre
-from .trim import flag_text, linearise, trim_many
+from .trim import fastest_rates, flag_text, linearise, trim_many
 
 #: Default run length [s], fixed step (None: adaptive) [s] and sampling interval of the
 #: histories [s].
@@ -474,10 +474,9 @@ def _check_adaptive_work(trims, keys, t_end):
     :data:`~slingloads.limits.MAX_MULTIBODY_RUN_STEPS` (an explicit step is stable only
     within |lambda| dt <= ADAPTIVE_STABILITY): a very stiff cable or a very light canopy
     would otherwise keep the integrator busy for hours."""
-    fastest = {}
-    for key, point in trims.items():
-        if point.converged:
-            fastest[key] = float(np.max(np.abs(linearise(point).eigenvalues)))
+    rates = fastest_rates(list(trims.values()))
+    fastest = {key: float(rate) for key, rate in zip(trims, rates, strict=True)
+               if np.isfinite(rate)}
     steps = sum(t_end * fastest.get(key, 0.0) / ADAPTIVE_STABILITY for key in keys)
     if steps > MAX_MULTIBODY_RUN_STEPS:
         worst = max(fastest.values())
