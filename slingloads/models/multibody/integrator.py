@@ -125,8 +125,10 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
     x5 = np.empty(n)
     y = np.empty(n)
     dx = np.empty(n)
+    acc = np.empty(n)
     weights = np.empty(7)
     d = np.empty(9)
+    ds = np.empty(9)
     reported = np.empty(N_INFO)
     for j in range(runs):
         row = profile[j]
@@ -143,6 +145,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
         rejected = False
         flag0 = 0
         stage_flag = 0
+        steady = False
         # phase 7: the next sample (dense output); 0: derivative at a segment's start;
         # 1 to 6: the stages of a step (6: at the fifth-order solution, first same as last)
         phase = 7
@@ -159,10 +162,13 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                         weights[i] = PD[i, 0] + theta * (PD[i, 1] + theta * (
                             PD[i, 2] + theta * PD[i, 3]))
                     for m in range(n):
-                        acc = 0.0
-                        for i in range(7):
-                            acc += K[i, m] * weights[i]
-                        y[m] = x[m] + h * theta * acc
+                        acc[m] = 0.0
+                    for i in range(7):
+                        w = weights[i]
+                        for m in range(n):
+                            acc[m] += K[i, m] * w
+                    for m in range(n):
+                        y[m] = x[m] + h * theta * acc[m]
                     qn = math.sqrt(y[9] * y[9] + y[10] * y[10] + y[11] * y[11]
                                    + y[12] * y[12])
                     for m in range(9, 13):
@@ -195,16 +201,27 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                     for m in range(n):
                         y[m] = x[m]
                     when = t
+                    # a segment over which no channel varies: its drive once for all stages
+                    steady = True
+                    for c in range(9):
+                        if vary[row, s, c]:
+                            steady = False
+                    if steady:
+                        _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, ds)
                 else:
                     for m in range(n):
-                        acc = 0.0
-                        for i in range(phase):
-                            acc += A[phase, i] * K[i, m]
-                        y[m] = x[m] + h * acc
+                        acc[m] = 0.0
+                    for i in range(phase):
+                        a = A[phase, i]
+                        for m in range(n):
+                            acc[m] += a * K[i, m]
+                    for m in range(n):
+                        y[m] = x[m] + h * acc[m]
                     when = t + C[phase] * h
-                _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, d)
-                f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g,
-                             cd_v, dx, reported, False)
+                if not steady:
+                    _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, ds)
+                f = evaluate(y, pj, ds, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
+                             cd_g, cd_v, dx, reported, False)
                 for m in range(n):
                     K[phase, m] = dx[m]
                 if phase == 0:
@@ -232,13 +249,16 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                     continue
                 grow = 1.0
                 if fixed <= 0.0:
+                    for m in range(n):
+                        acc[m] = 0.0
+                    for i in range(7):
+                        e = E[i]
+                        for m in range(n):
+                            acc[m] += e * K[i, m]
                     err = 0.0
                     for m in range(n):
-                        e = 0.0
-                        for i in range(7):
-                            e += E[i] * K[i, m]
                         scale = atol + rtol * max(abs(x[m]), abs(x5[m]))
-                        err += (h * e / scale) ** 2
+                        err += (h * acc[m] / scale) ** 2
                     err = math.sqrt(err / n)
                     if err > 1.0:
                         h *= max(0.2, 0.9 * err ** -0.2)
