@@ -36,12 +36,9 @@ from slingloads.models.multibody.response import (
     HISTORY,
     MEASURES,
     N_HISTORY,
-    N_MEASURES,
     PEAKS,
     damping_from_peaks,
     derive,
-    measure,
-    measure_many,
     scratch,
 )
 from slingloads.models.multibody.rigid_body import (
@@ -237,30 +234,10 @@ class RunResult:
         return frame
 
     # ------------------------------------------------------------------------- metrics
-    def measure_times(self):
-        """(start, end, verdict start) [s] of the measures: the input's start (peaks and RMS
-        from then on), its end (damping and settling from then on) and the start of the time
-        whose halves the verdict compares (the input's start for a sustained input)."""
-        start = min(self.manoeuvre.breakpoints or (0.0,))
-        end = self.manoeuvre.input_end
-        sustained = end is None
-        end = float(self.time[0]) if sustained else end
-        return start, end, (start if sustained else end)
-
-    @cached_property
-    def _own_measures(self):
-        """This run's measures, from its own reported quantities."""
-        out = np.empty(N_MEASURES)
-        start, end, verdict_start = self.measure_times()
-        measure(self.time, self.history_table(), start, end, verdict_start, BAND_FLOOR,
-                scratch(self.time.size), out)
-        return out
-
     def measures(self):
         """The run's measures (:data:`~slingloads.models.multibody.response.MEASURES`; SI,
-        angles in rad), computed with those of its batch when they were."""
-        rows = None if self.batch is None else self.batch.rows
-        return self._own_measures if rows is None else rows[self.index]
+        angles in rad), computed as soon as it was integrated."""
+        return self.batch.measures[self.index]
 
     def metrics(self):
         """Per-run metrics (SI, angles in degrees), see ``docs/multibody.md``."""
@@ -300,7 +277,7 @@ class RunResult:
         the second half of the time it looks at."""
         if self.flag:
             return "divergent"
-        _, _, start = self.measure_times()
+        _, _, start = _measure_times(self.manoeuvre)
         if self.time[-1] - start < 10.0:
             return "inconclusive"
         if second > 1.1 * first and second > QUIET:
@@ -346,11 +323,7 @@ class Simulation:
         raise KeyError(f"no run named {name!r}; runs are {[r.name for r in self.runs]}")
 
     def metrics_frame(self):
-        """One row of metrics per run (the measures of the runs integrated together computed
-        together, in compiled code, without their histories)."""
-        for batch in {id(run.batch): run.batch for run in self.runs
-                      if run.batch is not None}.values():
-            batch.measure_all()
+        """One row of metrics per run."""
         return pd.DataFrame([run.metrics() for run in self.runs])
 
     def to_frame(self):
@@ -524,27 +497,45 @@ def _integrate_group(prepared, members, results, drives, time, settings):
             profiles.append(table)
         index[j] = seen[key]
     drive = stack_drives(profiles)
-    out, _, flags, stops = integrate(x0, params, drive, index, drives.interval, time.size,
-                                     system0.tables(), **settings)
-    batch = _Batch(out, params, drive["nodes"], index, system0.tables(), settings["workers"])
+    measured = np.array([_measured(system, manoeuvre) for system, manoeuvre, _ in
+                         (prepared[k] for k in members)])
+    done = integrate(x0, params, drive, index, drives.interval, time.size, system0.tables(),
+                     measured=measured, **settings)
+    batch = _Batch(done.states, params, drive["nodes"], index, system0.tables(),
+                   done.measures)
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        results[k] = RunResult(system, manoeuvre, tr, time, out[j], int(flags[j]),
-                               float(stops[j]), batch, j)
-    batch.runs = [results[k] for k in members]
+        results[k] = RunResult(system, manoeuvre, tr, time, done.states[j],
+                               int(done.flags[j]), float(done.stop_time[j]), batch, j)
+
+
+def _measure_times(manoeuvre):
+    """(start, end, verdict start) [s] of a run's measures: its input's start (peaks and RMS
+    from then on), its end (damping and settling from then on; the first sample, 0, for a
+    sustained input) and the start of the time whose halves the verdict compares (the
+    input's start for a sustained input)."""
+    start = min(manoeuvre.breakpoints or (0.0,))
+    end = manoeuvre.input_end
+    if end is None:
+        return start, 0.0, start
+    return start, end, end
+
+
+def _measured(system, manoeuvre):
+    """What the kernel needs to measure a run (see the integrator's ``dopri_runs``)."""
+    return [system.weight, *system.hardpoints.mast_axis, float(system.parachute is not None),
+            *_measure_times(manoeuvre), BAND_FLOOR]
 
 
 class _Batch:
     """What the runs integrated together share: their sampled states, parameters, drives at
     the samples and tables, from which a run's reported quantities are evaluated on request
     (the same compiled equations at the same states and drive as during the integration),
-    and the measures of all of them (:meth:`measure_all`)."""
+    and their measures."""
 
-    def __init__(self, states, params, nodes, profile, tables, workers):
+    def __init__(self, states, params, nodes, profile, tables, measures):
         self.states, self.params, self.nodes = states, params, nodes
-        self.profile, self.tables, self.workers = profile, tables, workers
-        self.runs = None  # RunResult of each run, set by _integrate_group
-        self.rows = None  # measures of every run, once measure_all ran
+        self.profile, self.tables, self.measures = profile, tables, measures
 
     def info(self, j):
         """Reported quantities of run ``j`` at its samples (NaN where it had stopped)."""
@@ -556,16 +547,3 @@ class _Batch:
                                                 self.nodes[self.profile[j]][reached],
                                                 self.tables)
         return info
-
-    def measure_all(self):
-        """The measures of every run, in one compiled pass over the runs."""
-        if self.rows is not None:
-            return
-        runs = self.runs
-        times = np.array([run.measure_times() for run in runs]).reshape(-1, 3)
-        self.rows = measure_many(
-            self.states, self.params, self.nodes, self.profile, runs[0].time,
-            [run.system.weight for run in runs],
-            [run.system.hardpoints.mast_axis for run in runs],
-            [run.system.parachute is not None for run in runs], times[:, 0], times[:, 1],
-            times[:, 2], BAND_FLOOR, self.tables, self.workers)

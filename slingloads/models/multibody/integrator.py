@@ -36,6 +36,7 @@ from __future__ import annotations
 import math
 import os
 from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -45,6 +46,13 @@ from slingloads.models.dormand_prince import E as _E
 from slingloads.models.dormand_prince import P as _P
 from slingloads.models.multibody._jit import jit, jit_alloc
 from slingloads.models.multibody.equations import N_INFO, N_STATES, evaluate
+from slingloads.models.multibody.response import (
+    MEASURE_SCRATCH,
+    N_HISTORY,
+    N_MEASURES,
+    derive,
+    measure,
+)
 
 #: Runs per block handed to one thread (small blocks balance the load of uneven runs).
 BLOCK = 16
@@ -102,24 +110,37 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, out):
 @jit_alloc
 def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, nodes, profile,
                interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
-               tail_g, tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time):
+               tail_g, tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time, time,
+               measured, measures):
     """Integrate runs ``x0`` (runs, N) with parameters ``P`` (runs, NP), in place.
 
     Profile ``row = profile[j]`` of run j: ``n_seg[row]`` segments from ``seg_a`` to
     ``seg_b`` (profiles, S), each a drive table of ``seg_n`` intervals of ``seg_h`` from row
     ``seg_off`` of ``vals`` (profiles, K, 9), ``vary`` (profiles, S, 9) true for the channels
-    that vary over a segment; ``nodes`` (profiles, n_out, 9) the drive at the samples, every
-    ``interval``. ``fixed`` > 0: that step; else adaptive with ``rtol``, ``atol``. ``C``,
-    ``A``, ``E``, ``PD``: the Dormand-Prince tableau. ``out`` (runs, n_out, N) receives the
-    states at the samples (NaN after a stop); with ``report``, ``rates`` (runs, n_out, N) and
-    ``info`` (runs, n_out, N_INFO) receive their derivatives and the reported quantities
-    (else they are not touched and may be empty). ``flags`` and ``stop_time`` (runs,) receive
-    the flag and the time of a run that stopped. With no segment, only the first sample is
-    evaluated (its flag returned): the equations at the states ``x0``.
+    that vary over a segment; ``nodes`` (profiles, n_out, 9) the drive at the samples
+    ``time`` (n_out,), every ``interval``. ``fixed`` > 0: that step; else adaptive with
+    ``rtol``, ``atol``. ``C``, ``A``, ``E``, ``PD``: the Dormand-Prince tableau.
+
+    ``out`` receives the states at the samples (NaN after a stop): (runs, n_out, N), or
+    (1, n_out, N) to keep only those of the run in hand. With ``report``, the reported
+    quantities are evaluated at the samples into ``info`` (runs or 1, n_out, N_INFO) and
+    their derivatives into ``rates`` (same leading size), NaN after a stop. ``flags`` and
+    ``stop_time`` (runs,) receive the flag and the time of a run that stopped. With
+    ``measures`` of a row per run (runs, N_MEASURES) and ``report``, each run's measures
+    (:func:`~slingloads.models.multibody.response.measure`) are computed after its
+    integration, ``measured`` (runs, 9) holding its weight [N], mast axis (3), whether it
+    has a parachute (0 or 1), the start and end of its input, the start of its verdict's
+    time [s] and the settling band's floor [rad].
+
+    With no segment, only the first sample is evaluated (its flag returned): the equations at
+    the states ``x0``.
     """
     runs = x0.shape[0]
     n = x0.shape[1]
     n_out = out.shape[1]
+    keep_states = out.shape[0] == runs
+    keep_info = info.shape[0] == runs
+    measuring = report and measures.shape[0] == runs
     K = np.empty((7, n))
     x = np.empty(n)
     x5 = np.empty(n)
@@ -128,11 +149,15 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
     acc = np.empty(n)
     weights = np.empty(7)
     d = np.empty(9)
-    ds = np.empty(9)
+    steady_drive = np.empty(9)
     reported = np.empty(N_INFO)
+    hist = np.empty((n_out if measuring else 0, N_HISTORY))
+    buf = np.empty((5, max(n_out, MEASURE_SCRATCH) if measuring else 0))
     for j in range(runs):
         row = profile[j]
         pj = P[j]
+        js = j if keep_states else 0
+        ji = j if keep_info else 0
         for m in range(n):
             x[m] = x0[j, m]
         segments = n_seg[row]
@@ -151,8 +176,8 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
         phase = 7
         while True:
             finish = False
+            # ------------------------------------------------------------- one evaluation
             if phase == 7:
-                # ---------------------------------------------------------- one sample
                 if sample == 0:
                     for m in range(n):
                         y[m] = x[m]
@@ -174,17 +199,52 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                     for m in range(9, 13):
                         y[m] /= qn
                 for m in range(n):
-                    out[j, sample, m] = y[m]
-                f = 0
-                if report:
-                    for c in range(9):
-                        d[c] = nodes[row, sample, c]
-                    f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
-                                 cd_g, cd_v, dx, reported, True)
+                    out[js, sample, m] = y[m]
+                for c in range(9):
+                    d[c] = nodes[row, sample, c]
+                want = True
+                evaluating = report
+            else:
+                if phase == 0:
                     for m in range(n):
-                        rates[j, sample, m] = dx[m]
+                        y[m] = x[m]
+                    when = t
+                    # a segment over which no channel varies: its drive once for all stages
+                    steady = True
+                    for c in range(9):
+                        if vary[row, s, c]:
+                            steady = False
+                    if steady:
+                        _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary,
+                                  steady_drive)
+                else:
+                    for m in range(n):
+                        acc[m] = 0.0
+                    for i in range(phase):
+                        a = A[phase, i]
+                        for m in range(n):
+                            acc[m] += a * K[i, m]
+                    for m in range(n):
+                        y[m] = x[m] + h * acc[m]
+                    when = t + C[phase] * h
+                if steady:
+                    for c in range(9):
+                        d[c] = steady_drive[c]
+                else:
+                    _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, d)
+                want = False
+                evaluating = True
+            f = 0
+            if evaluating:
+                f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
+                             cd_g, cd_v, dx, reported, want)
+            # ------------------------------------------------------------- what next
+            if phase == 7:
+                if report:
+                    for m in range(n):
+                        rates[ji, sample, m] = dx[m]
                     for m in range(N_INFO):
-                        info[j, sample, m] = reported[m]
+                        info[ji, sample, m] = reported[m]
                 if sample == 0:
                     sample = 1
                     if segments == 0:
@@ -196,32 +256,6 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                 if not (sample < n_out and sample * interval <= t_new + 1e-9 * interval):
                     finish = True
             else:
-                # ---------------------------------------------------------- one stage
-                if phase == 0:
-                    for m in range(n):
-                        y[m] = x[m]
-                    when = t
-                    # a segment over which no channel varies: its drive once for all stages
-                    steady = True
-                    for c in range(9):
-                        if vary[row, s, c]:
-                            steady = False
-                    if steady:
-                        _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, ds)
-                else:
-                    for m in range(n):
-                        acc[m] = 0.0
-                    for i in range(phase):
-                        a = A[phase, i]
-                        for m in range(n):
-                            acc[m] += a * K[i, m]
-                    for m in range(n):
-                        y[m] = x[m] + h * acc[m]
-                    when = t + C[phase] * h
-                if not steady:
-                    _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, ds)
-                f = evaluate(y, pj, ds, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
-                             cd_g, cd_v, dx, reported, False)
                 for m in range(n):
                     K[phase, m] = dx[m]
                 if phase == 0:
@@ -299,12 +333,17 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
         # the samples a stopped run did not reach
         for k in range(sample, n_out):
             for m in range(n):
-                out[j, k, m] = np.nan
+                out[js, k, m] = np.nan
             if report:
                 for m in range(n):
-                    rates[j, k, m] = np.nan
+                    rates[ji, k, m] = np.nan
                 for m in range(N_INFO):
-                    info[j, k, m] = np.nan
+                    info[ji, k, m] = np.nan
+        if measuring:
+            derive(time, out[js], info[ji], measured[j, 0], measured[j, 1:4],
+                   measured[j, 4] > 0.0, hist)
+            measure(time, hist, measured[j, 5], measured[j, 6], measured[j, 7],
+                    measured[j, 8], buf, measures[j])
 
 
 def _varies(table):
@@ -416,8 +455,33 @@ def in_blocks(block, runs, workers=None):
             list(pool.map(block, starts))
 
 
+@dataclass(frozen=True)
+class Integrated:
+    """What :func:`integrate` returns.
+
+    Attributes
+    ----------
+    states : ndarray, shape (runs, n_out, N), or None
+        States at the samples (NaN after a stop); None unless kept.
+    info : ndarray, shape (runs, n_out, N_INFO), or None
+        Reported quantities at the samples, with ``report``.
+    flags : ndarray of int, shape (runs,)
+        Table or limit each run left (0: none).
+    stop_time : ndarray, shape (runs,)
+        When a run stopped (NaN if it did not). [s]
+    measures : ndarray, shape (runs, N_MEASURES), or None
+        Each run's measures, when asked for.
+    """
+
+    states: np.ndarray | None
+    info: np.ndarray | None
+    flags: np.ndarray
+    stop_time: np.ndarray
+    measures: np.ndarray | None
+
+
 def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rtol=RTOL,
-              atol=ATOL, workers=None, report=False):
+              atol=ATOL, workers=None, report=False, measured=None, keep_states=True):
     """Integrate runs with :func:`dopri_runs`, blocks of runs on a pool of threads.
 
     Parameters
@@ -443,42 +507,50 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     workers : int, optional
         Threads (default :func:`worker_count`).
     report : bool
-        Also evaluate the reported quantities at the samples during the integration (the
-        same numbers as :func:`evaluate_many` at the sampled states and the drive at the
-        samples gives afterwards).
+        Also keep the reported quantities at the samples, evaluated during the integration
+        (the same numbers as :func:`evaluate_many` gives afterwards at the sampled states and
+        the drive at the samples).
+    measured : ndarray, shape (runs, 9), optional
+        With it, each run's measures are computed as soon as it is integrated, from its
+        reported quantities evaluated at its samples (see :func:`dopri_runs` for the
+        columns).
+    keep_states : bool
+        Keep the sampled states of every run (else only the measures are kept).
 
     Returns
     -------
-    states : ndarray, shape (runs, n_out, N)
-        States at the samples (NaN after a stop).
-    info : ndarray, shape (runs, n_out, N_INFO), or None
-        Reported quantities at the samples, with ``report``.
-    flags : ndarray of int, shape (runs,)
-    stop_time : ndarray, shape (runs,)
-        When a run stopped (NaN if it did not). [s]
+    Integrated
     """
     runs = x0.shape[0]
-    states = np.empty((runs, n_out, N_STATES))  # every sample is written by the kernel
-    shape = (runs, n_out) if report else (runs, 0)
-    info = np.empty(shape + (N_INFO,))
-    rates = np.empty(shape + (N_STATES,))
+    measuring = measured is not None
+    states = np.empty((runs, n_out, N_STATES)) if keep_states else None  # the kernel fills it
+    info = np.empty((runs, n_out, N_INFO)) if report else None
+    rates = np.empty((runs, n_out, N_STATES)) if report else None
+    measures = np.empty((runs, N_MEASURES)) if measuring else np.empty((0, N_MEASURES))
+    measured = _plain(np.zeros((runs, 9)) if measured is None else measured)
     flags = np.zeros(runs, dtype=np.int64)
     stop_time = np.full(runs, np.nan)
     x0, P = _plain(x0), _plain(P)
     profile = np.require(profile, np.int64, _KERNEL_ARRAYS)
     fixed = 0.0 if step is None else float(step)
+    time = np.arange(n_out) * float(interval)
+    # what a block does not keep goes to work rows of one run, reused from run to run
+    work = 1 if measuring else 0
 
     def block(start):
-        stop = min(start + BLOCK, runs)
-        dopri_runs(x0[start:stop], P[start:stop], drives["a"], drives["b"], drives["h"],
-                   drives["n"], drives["offset"], drives["segments"], drives["values"],
-                   drives["vary"], drives["nodes"], profile[start:stop], float(interval),
-                   fixed, float(rtol), float(atol), _C, _A, _E, _P, *tables, bool(report),
-                   states[start:stop], info[start:stop], rates[start:stop], flags[start:stop],
-                   stop_time[start:stop])
+        own = slice(start, min(start + BLOCK, runs))
+        dopri_runs(x0[own], P[own], drives["a"], drives["b"], drives["h"], drives["n"],
+                   drives["offset"], drives["segments"], drives["values"], drives["vary"],
+                   drives["nodes"], profile[own], float(interval), fixed, float(rtol),
+                   float(atol), _C, _A, _E, _P, *tables, report or measuring,
+                   states[own] if keep_states else np.empty((1, n_out, N_STATES)),
+                   info[own] if report else np.empty((work, n_out * work, N_INFO)),
+                   rates[own] if report else np.empty((work, n_out * work, N_STATES)),
+                   flags[own], stop_time[own], time, measured[own],
+                   measures[own] if measuring else measures)
 
     in_blocks(block, runs, workers)
-    return states, (info if report else None), flags, stop_time
+    return Integrated(states, info, flags, stop_time, measures if measuring else None)
 
 
 def evaluate_many(states, P, drives, tables):
@@ -511,5 +583,6 @@ def evaluate_many(states, P, drives, tables):
                np.zeros((n, 1), dtype=np.int64), np.zeros(n, dtype=np.int64),
                np.zeros((n, 2, 9)), np.zeros((n, 1, 9), bool), nodes,
                np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, _C, _A, _E, _P, *tables,
-               True, np.empty((n, 1, N_STATES)), info, rates, flags, np.empty(n))
+               True, np.empty((n, 1, N_STATES)), info, rates, flags, np.empty(n),
+               np.zeros(1), np.zeros((n, 9)), np.empty((0, N_MEASURES)))
     return rates[:, 0], info[:, 0], flags

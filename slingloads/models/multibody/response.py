@@ -25,9 +25,7 @@ import math
 
 import numpy as np
 
-from slingloads.models.multibody._jit import jit, jit_alloc
-from slingloads.models.multibody.equations import N_INFO, evaluate
-from slingloads.models.multibody.integrator import BLOCK, in_blocks
+from slingloads.models.multibody._jit import jit
 
 #: Derived histories, in the order of :func:`derive`'s columns (SI, angles in rad).
 HISTORY = ("time", "x", "y", "z", "yaw", "pitch", "roll", "yaw rate", "alpha", "beta",
@@ -67,11 +65,13 @@ N_MEASURES = len(MEASURES)
 _PAIRWISE_BLOCK = 128
 #: Levels of a pairwise sum's tree the scratch holds (2**64 values).
 _LEVELS = 64
+#: Least length of the rows of :func:`measure`'s work space.
+MEASURE_SCRATCH = 4 * _LEVELS
 
 
 def scratch(samples):
     """Work space of :func:`measure` for runs of ``samples`` samples."""
-    return np.empty((5, max(int(samples), 4 * _LEVELS)))
+    return np.empty((5, max(int(samples), MEASURE_SCRATCH)))
 
 
 @jit
@@ -426,80 +426,3 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
             second = a if (math.isnan(a) or math.isnan(second)) else max(second, a)
     out[i + 12], out[i + 13] = first, second
     out[i + 14] = speed_end
-
-
-@jit_alloc
-def measure_runs(states, P, nodes, profile, time, weight, mast, chute, start, end,
-                 verdict_start, band_floor, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
-                 cd_g, cd_v, out):
-    """Measures of many runs (:func:`measure`), each from its sampled states: the reported
-    quantities evaluated at its samples, its histories derived, both in buffers reused from
-    run to run.
-
-    Parameters
-    ----------
-    states : ndarray, shape (runs, n, N)
-        Sampled states (NaN after a stop).
-    P : ndarray, shape (runs, NP)
-        Parameter vectors.
-    nodes : ndarray, shape (profiles, n, 9)
-        Drive at the samples of each profile; ``profile`` (runs,) the profile of each run.
-    time : ndarray, shape (n,)
-        [s]
-    weight, start, end, verdict_start : ndarray, shape (runs,)
-        :func:`derive`'s weight and :func:`measure`'s times of each run. [N], [s]
-    mast : ndarray, shape (runs, 3)
-    chute : ndarray of bool, shape (runs,)
-    band_floor : float
-        [rad]
-    fus_a, ... cd_v :
-        The runs' tables (:meth:`SlingSystem.tables`).
-    out : ndarray, shape (runs, N_MEASURES)
-    """
-    runs, n, width = states.shape
-    info = np.full((n, N_INFO), np.nan)
-    hist = np.empty((n, N_HISTORY))
-    buf = np.empty((5, max(n, 4 * _LEVELS)))
-    rates = np.empty(width)
-    x = np.empty(width)
-    d = np.empty(9)
-    for j in range(runs):
-        row = profile[j]
-        for k in range(n):
-            if not math.isfinite(states[j, k, 0]):
-                for c in range(N_INFO):
-                    info[k, c] = np.nan
-                continue
-            for m in range(width):
-                x[m] = states[j, k, m]
-            for c in range(9):
-                d[c] = nodes[row, k, c]
-            evaluate(x, P[j], d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v,
-                     rates, info[k], True)
-        derive(time, states[j], info, weight[j], mast[j], chute[j], hist)
-        measure(time, hist, start[j], end[j], verdict_start[j], band_floor, buf, out[j])
-
-
-def measure_many(states, P, nodes, profile, time, weight, mast, chute, start, end,
-                 verdict_start, band_floor, tables, workers=None):
-    """:func:`measure_runs` on blocks of runs over a pool of threads; returns the measures
-    (runs, N_MEASURES) (arguments as :func:`measure_runs`'s, ``tables`` the tuple of
-    :meth:`SlingSystem.tables`)."""
-    runs = states.shape[0]
-    out = np.empty((runs, N_MEASURES))
-    time = np.ascontiguousarray(time, dtype=float)
-    weight, start, end, verdict_start = (np.ascontiguousarray(v, dtype=float) for v in
-                                         (weight, start, end, verdict_start))
-    mast = np.ascontiguousarray(mast, dtype=float)
-    chute = np.ascontiguousarray(chute, dtype=np.bool_)
-    profile = np.ascontiguousarray(profile, dtype=np.int64)
-
-    def block(first):
-        last = min(first + BLOCK, runs)
-        measure_runs(states[first:last], P[first:last], nodes, profile[first:last], time,
-                     weight[first:last], mast[first:last], chute[first:last], start[first:last],
-                     end[first:last], verdict_start[first:last], float(band_floor), *tables,
-                     out[first:last])
-
-    in_blocks(block, runs, workers)
-    return out
