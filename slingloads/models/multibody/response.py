@@ -110,14 +110,12 @@ def _left_half(n):
 
 
 @jit
-def _pairwise_sum(a, lo, n, stack):
-    """Sum of ``a[lo:lo + n]`` in numpy's order (``np.add.reduce`` on a contiguous array:
-    blocks of at most 128 values, halves above), its tree walked with ``stack`` (4 x
-    _LEVELS) instead of recursion."""
-    if n <= _PAIRWISE_BLOCK:
-        return _block_sum(a, lo, n)
+def _pairwise_sum(a, n, stack):
+    """Sum of ``a[:n]`` in numpy's order (``np.add.reduce`` on a contiguous array: blocks of
+    at most 128 values, halves above), its tree walked with ``stack`` (4 x _LEVELS) instead
+    of recursion."""
     depth = 0
-    node_lo, node_n = lo, n
+    node_lo, node_n = 0, n
     while True:
         while node_n > _PAIRWISE_BLOCK:  # down to the left half
             f = 4 * depth
@@ -267,8 +265,8 @@ def damping_from_peaks(time, y, start, buf):
     for i in range(count - 1):
         t[i] = times[i + 1] - times[i]
         v[i] = math.log(values[i] / values[i + 1])
-    period = _pairwise_sum(t, 0, count - 1, buf[4]) / (count - 1)
-    delta = _pairwise_sum(v, 0, count - 1, buf[4]) / (count - 1)
+    period = _pairwise_sum(t, count - 1, buf[4]) / (count - 1)
+    delta = _pairwise_sum(v, count - 1, buf[4]) / (count - 1)
     return period, delta / math.sqrt(4 * math.pi ** 2 + delta ** 2)
 
 
@@ -319,7 +317,7 @@ def _rms(time, hist, column, relative, start, values, stack):
             m += 1
     if count == 0:
         return np.nan
-    return math.sqrt(_pairwise_sum(values, 0, m, stack) / count)
+    return math.sqrt(_pairwise_sum(values, m, stack) / count)
 
 
 @jit
@@ -382,8 +380,9 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
         else:
             out[2 * p], out[2 * p + 1] = hist[where, column] - first, time[where]
     i = 2 * len(_PEAK_COLUMNS)
-    out[i] = _rms(time, hist, _YAW, True, start, buf[0], buf[4])
-    out[i + 1] = _rms(time, hist, _BETA, False, start, buf[0], buf[4])
+    for c in range(2):  # the yaw's change and the sideslip
+        column = _YAW if c == 0 else _BETA
+        out[i + c] = _rms(time, hist, column, c == 0, start, buf[0], buf[4])
     high, low, slack, first_slack = -np.inf, np.inf, 0, np.nan
     tension_min, alpha_max, speed_end = np.inf, -np.inf, np.nan
     column = _TENSION_RATIO
