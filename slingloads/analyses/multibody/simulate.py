@@ -158,15 +158,13 @@ class RunResult:
     trim : Trim
     time : ndarray, shape (n,)
         [s]
-    states : ndarray, shape (n, 20)
-        States of the equations (NaN after a stop or without trim).
     flag : int
         Table or limit left (0: none); see :func:`~.trim.flag_text`.
     stop_time : float
         Time the run stopped (NaN if it ran to the end). [s]
     batch : object, optional
-        The runs integrated with this one (their parameters and drives), from which
-        :attr:`info` is evaluated on first use.
+        The runs integrated with this one (their states, parameters, drives and measures),
+        from which :attr:`states` and :attr:`info` come.
     index : int
         This run's place in ``batch``.
     """
@@ -175,11 +173,19 @@ class RunResult:
     manoeuvre: Manoeuvre
     trim: object
     time: np.ndarray
-    states: np.ndarray
     flag: int
     stop_time: float
     batch: object = field(default=None, repr=False)
     index: int = 0
+
+    @cached_property
+    def states(self):
+        """States of the equations at the samples, ndarray (n, 20) (NaN after a stop or
+        without trim); integrated again, the same to the last bit, when the batch did not
+        keep them."""
+        if self.batch is None:
+            return np.full((self.time.size, N_STATES), np.nan)
+        return self.batch.states_of(self.index)
 
     @cached_property
     def info(self):
@@ -187,7 +193,7 @@ class RunResult:
         after a stop or without trim), evaluated on first use."""
         if self.batch is None:
             return np.full((self.time.size, N_INFO), np.nan)
-        return self.batch.info(self.index)
+        return self.batch.info(self.index, self.states)
 
     @property
     def name(self):
@@ -370,7 +376,7 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
 
 
 def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL, rtol=RTOL,
-                  atol=ATOL, check_step=True, workers=None):
+                  atol=ATOL, check_step=True, workers=None, keep_histories=True):
     """Integrate runs given as (system, manoeuvre) pairs, together (module notes).
 
     Parameters
@@ -386,6 +392,11 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         models).
     workers : int, optional
         Threads integrating the runs (default: every processor this process may use).
+    keep_histories : bool
+        Keep every run's sampled states (default). False keeps only what the metrics need
+        (each run's measures, computed as soon as it is integrated): a run's states and
+        histories are then integrated again when asked for (the same to the last bit, about
+        a millisecond a run), and a large batch needs no memory for histories.
 
     Returns
     -------
@@ -420,10 +431,10 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         if tr.converged:
             groups.setdefault(system.table_key(), []).append(k)
         else:
-            results[k] = RunResult(system, prepared[k][1], tr, time,
-                                   np.full((n_out, N_STATES), np.nan), 0, 0.0)
+            results[k] = RunResult(system, prepared[k][1], tr, time, 0, 0.0)
     drives = _DriveTables(t_end, output_interval)
-    settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers}
+    settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers,
+                "keep_states": bool(keep_histories)}
     for members in groups.values():
         _integrate_group(prepared, members, results, drives, time, settings)
     return Simulation(results, linear, dt, float(rtol), float(atol))
@@ -501,12 +512,12 @@ def _integrate_group(prepared, members, results, drives, time, settings):
                          (prepared[k] for k in members)])
     done = integrate(x0, params, drive, index, drives.interval, time.size, system0.tables(),
                      measured=measured, **settings)
-    batch = _Batch(done.states, params, drive["nodes"], index, system0.tables(),
-                   done.measures)
+    batch = _Batch(done, x0, params, drive, index, drives.interval, system0.tables(),
+                   settings)
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        results[k] = RunResult(system, manoeuvre, tr, time, done.states[j],
-                               int(done.flags[j]), float(done.stop_time[j]), batch, j)
+        results[k] = RunResult(system, manoeuvre, tr, time, int(done.flags[j]),
+                               float(done.stop_time[j]), batch, j)
 
 
 def _measure_times(manoeuvre):
@@ -528,22 +539,35 @@ def _measured(system, manoeuvre):
 
 
 class _Batch:
-    """What the runs integrated together share: their sampled states, parameters, drives at
-    the samples and tables, from which a run's reported quantities are evaluated on request
-    (the same compiled equations at the same states and drive as during the integration),
-    and their measures."""
+    """What the runs integrated together share: their initial states, parameters, drives and
+    tables, their sampled states if kept and their measures. A run's states, when not kept,
+    are integrated again (alone: each run is integrated on its own whatever its batch, so
+    they are the same to the last bit), and its reported quantities are evaluated on
+    request (the same compiled equations at the same states and drive as during the
+    integration)."""
 
-    def __init__(self, states, params, nodes, profile, tables, measures):
-        self.states, self.params, self.nodes = states, params, nodes
-        self.profile, self.tables, self.measures = profile, tables, measures
+    def __init__(self, done, x0, params, drive, profile, interval, tables, settings):
+        self.states, self.measures = done.states, done.measures
+        self.x0, self.params, self.drive, self.profile = x0, params, drive, profile
+        self.interval, self.tables, self.settings = interval, tables, settings
+        self.samples = drive["nodes"].shape[1]
 
-    def info(self, j):
-        """Reported quantities of run ``j`` at its samples (NaN where it had stopped)."""
-        states = self.states[j]
+    def states_of(self, j):
+        """Sampled states of run ``j``."""
+        if self.states is not None:
+            return self.states[j]
+        one = slice(j, j + 1)
+        settings = {**self.settings, "keep_states": True, "workers": 1}
+        return integrate(self.x0[one], self.params[one], self.drive, self.profile[one],
+                         self.interval, self.samples, self.tables, **settings).states[0]
+
+    def info(self, j, states):
+        """Reported quantities of run ``j`` at its samples ``states`` (NaN where it had
+        stopped)."""
         reached = np.isfinite(states[:, 0])
         info = np.full((states.shape[0], N_INFO), np.nan)
         if reached.any():
+            nodes = self.drive["nodes"][self.profile[j]]
             _, info[reached], _ = evaluate_many(states[reached], self.params[j],
-                                                self.nodes[self.profile[j]][reached],
-                                                self.tables)
+                                                nodes[reached], self.tables)
         return info
