@@ -440,7 +440,7 @@ def test_drive_table_interpolation():
 
     d = stack_drives([tabulate_drive(drive, gust.breakpoints, 10.0, 0.1)])
     out = np.empty(9)
-    args = (d["a"], d["h"], d["n"], d["offset"], d["values"], d["vary"], out)
+    args = (d["a"], d["h"], d["n"], d["offset"], d["values"], d["vary"], d["bend"], out)
     assert d["vary"][0].tolist() == [[False, True, True] + [False] * 6] * 3
     for s, t in ((0, 0.7), (1, 3.33333), (2, 7.891)):
         _drive_at(t, 0, s, *args)

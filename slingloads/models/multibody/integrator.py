@@ -69,11 +69,12 @@ FIRST_STEP = 0.01
 
 
 @jit
-def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, out):
+def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
     """Drive at time ``t`` of segment ``s`` of profile ``row``: cubic (Catmull-Rom) in the
     segment's table, exact for a drive linear in time, the end slopes from a quadratic through
-    the last three points. A channel that does not vary over the segment (``vary`` false) is
-    its tabulated value."""
+    the last three points. A channel constant over the segment (``vary`` false) is its value
+    plus the one term of the cubic that its rounding leaves, w^2 ``bend`` (the same number,
+    to the last bit, as the whole cubic gives)."""
     u = (t - seg_a[row, s]) / seg_h[row, s]
     last = seg_n[row, s]
     m = int(u)
@@ -88,7 +89,7 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, out):
     for c in range(9):
         p1 = vals[row, base, c]
         if not vary[row, s, c]:
-            out[c] = p1
+            out[c] = p1 + w2 * bend[row, s, c]
             continue
         p2 = vals[row, base + 1, c]
         if m > 0:
@@ -108,8 +109,8 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, out):
 
 
 @jit_alloc
-def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, nodes, profile,
-               interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
+def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, bend, nodes,
+               profile, interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
                tail_g, tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time, time,
                measured, measures):
     """Integrate runs ``x0`` (runs, N) with parameters ``P`` (runs, NP), in place.
@@ -117,7 +118,8 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
     Profile ``row = profile[j]`` of run j: ``n_seg[row]`` segments from ``seg_a`` to
     ``seg_b`` (profiles, S), each a drive table of ``seg_n`` intervals of ``seg_h`` from row
     ``seg_off`` of ``vals`` (profiles, K, 9), ``vary`` (profiles, S, 9) true for the channels
-    that vary over a segment; ``nodes`` (profiles, n_out, 9) the drive at the samples
+    that vary over a segment, ``bend`` (profiles, S, 9) the rounding term of the others
+    (:func:`_drive_at`); ``nodes`` (profiles, n_out, 9) the drive at the samples
     ``time`` (n_out,), every ``interval``. ``fixed`` > 0: that step; else adaptive with
     ``rtol``, ``atol``. ``C``, ``A``, ``E``, ``PD``: the Dormand-Prince tableau.
 
@@ -209,13 +211,13 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                     for m in range(n):
                         y[m] = x[m]
                     when = t
-                    # a segment over which no channel varies: its drive once for all stages
+                    # a segment whose channels are constant to the last bit: its drive once
                     steady = True
                     for c in range(9):
-                        if vary[row, s, c]:
+                        if vary[row, s, c] or bend[row, s, c] != 0.0:
                             steady = False
                     if steady:
-                        _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary,
+                        _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend,
                                   steady_drive)
                 else:
                     for m in range(n):
@@ -231,7 +233,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                     for c in range(9):
                         d[c] = steady_drive[c]
                 else:
-                    _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, d)
+                    _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, d)
                 want = False
                 evaluating = True
             f = 0
@@ -346,16 +348,14 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, no
                     measured[j, 8], buf, measures[j])
 
 
-def _varies(table):
-    """Channels of a segment's drive table (rows, 9) that :func:`_drive_at` interpolates: all
-    but those constant over the segment on which the cubic gives the constant to the last bit
-    (its curvature term, ((p - 2.5 p) + 2 p) - 0.5 p, is then exactly zero, as it is for zero
-    and most values; the others keep their interpolation, so that the drive, and the
-    integration, do not change by a bit)."""
+def _constant_channels(table):
+    """Which channels of a segment's drive table (rows, 9) vary, and for the constant ones the
+    term w^2 ((p - 2.5 p) + 2 p - 0.5 p) to which :func:`_drive_at`'s cubic reduces there
+    (zero for zero and some values, a rounding error for the others)."""
     p = table[0]
-    constant = np.all(table == p, axis=0)
-    exact = ((p - 2.5 * p) + 2.0 * p) - 0.5 * p == 0.0
-    return ~(constant & exact)
+    vary = np.any(table != p, axis=0)
+    bend = np.where(vary, 0.0, ((p - 2.5 * p) + 2.0 * p) - 0.5 * p)
+    return vary, bend
 
 
 def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
@@ -378,12 +378,13 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
     dict
         ``a``, ``b``, ``h`` (segments' start, end, table step [s]), ``n``, ``offset``
         (intervals and first row of each segment's table), ``values`` (rows, 9), ``vary``
-        (segments, 9: the channels that vary over each segment), ``nodes`` (the drive at the
-        samples, (n_out, 9)).
+        and ``bend`` (segments, 9: the channels that vary over each segment, the rounding
+        term of the others, :func:`_drive_at`), ``nodes`` (the drive at the samples,
+        (n_out, 9)).
     """
     inner = sorted({float(b) for b in breakpoints if 0.0 < b < t_end * (1 - 1e-12)})
     edges = [0.0, *inner, float(t_end)]
-    a, b, h, n, offset, values, vary = [], [], [], [], [], [], []
+    a, b, h, n, offset, values, vary, bend = [], [], [], [], [], [], [], []
     rows = 0
     for start, end in zip(edges[:-1], edges[1:], strict=True):
         count = max(1, int(np.ceil((end - start) / step - 1e-9)))
@@ -393,12 +394,14 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
         offset.append(rows)
         table = np.asarray(drive(times), float)
         values.append(table)
-        vary.append(_varies(table))
+        varies, bends = _constant_channels(table)
+        vary.append(varies)
+        bend.append(bends)
         rows += count + 1
     n_out = int(round(t_end / interval)) + 1
     return {"a": np.array(a), "b": np.array(b), "h": np.array(h), "n": np.array(n),
             "offset": np.array(offset), "values": np.concatenate(values),
-            "vary": np.array(vary, dtype=bool),
+            "vary": np.array(vary, dtype=bool), "bend": np.array(bend),
             "nodes": np.asarray(drive(np.arange(n_out) * interval), float)}
 
 
@@ -413,10 +416,11 @@ def stack_drives(profiles):
            "offset": np.zeros((count, segments), dtype=np.int64),
            "segments": np.array([len(p["a"]) for p in profiles], dtype=np.int64),
            "values": np.zeros((count, rows, 9)), "vary": np.zeros((count, segments, 9), bool),
+           "bend": np.zeros((count, segments, 9)),
            "nodes": np.zeros((count, samples, 9))}
     for k, p in enumerate(profiles):
         m = len(p["a"])
-        for key in ("a", "b", "h", "n", "offset", "vary"):
+        for key in ("a", "b", "h", "n", "offset", "vary", "bend"):
             out[key][k, :m] = p[key]
         out["values"][k, :len(p["values"])] = p["values"]
         out["nodes"][k, :len(p["nodes"])] = p["nodes"]
@@ -541,8 +545,8 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
         own = slice(start, min(start + BLOCK, runs))
         dopri_runs(x0[own], P[own], drives["a"], drives["b"], drives["h"], drives["n"],
                    drives["offset"], drives["segments"], drives["values"], drives["vary"],
-                   drives["nodes"], profile[own], float(interval), fixed, float(rtol),
-                   float(atol), _C, _A, _E, _P, *tables, report or measuring,
+                   drives["bend"], drives["nodes"], profile[own], float(interval), fixed,
+                   float(rtol), float(atol), _C, _A, _E, _P, *tables, report or measuring,
                    states[own] if keep_states else np.empty((1, n_out, N_STATES)),
                    info[own] if report else np.empty((work, n_out * work, N_INFO)),
                    rates[own] if report else np.empty((work, n_out * work, N_STATES)),
@@ -581,7 +585,7 @@ def evaluate_many(states, P, drives, tables):
     flags = np.zeros(n, dtype=np.int64)
     dopri_runs(states, P, none, none, none + 1.0, np.ones((n, 1), dtype=np.int64),
                np.zeros((n, 1), dtype=np.int64), np.zeros(n, dtype=np.int64),
-               np.zeros((n, 2, 9)), np.zeros((n, 1, 9), bool), nodes,
+               np.zeros((n, 2, 9)), np.zeros((n, 1, 9), bool), np.zeros((n, 1, 9)), nodes,
                np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, _C, _A, _E, _P, *tables,
                True, np.empty((n, 1, N_STATES)), info, rates, flags, np.empty(n),
                np.zeros(1), np.zeros((n, 9)), np.empty((0, N_MEASURES)))
