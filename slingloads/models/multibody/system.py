@@ -157,12 +157,12 @@ class SlingSystem:
         return tuple(name in self.restrict for name in RESTRICTIONS)
 
     # ------------------------------------------------------------------ derived quantities
-    @property
+    @cached_property
     def density(self):
         """Air density at the density altitude. [kg/m^3]"""
         return float(isa_density(self.density_altitude))
 
-    @property
+    @cached_property
     def true_airspeed(self):
         """True airspeed of the towed flight. [m/s]"""
         return float(true_airspeed(self.airspeed, self.density_altitude))
