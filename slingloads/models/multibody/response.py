@@ -75,62 +75,50 @@ def scratch(samples):
 
 
 @jit
-def _block_sum(a, lo, n):
-    """Sum of ``a[lo:lo + n]``, n <= 128, in numpy's order."""
-    if n < 8:
-        total = 0.0
-        for i in range(lo, lo + n):
-            total += a[i]
-        return total
-    r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
-    r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
-    i = 8
-    while i < n - n % 8:
-        r0 += a[lo + i]
-        r1 += a[lo + i + 1]
-        r2 += a[lo + i + 2]
-        r3 += a[lo + i + 3]
-        r4 += a[lo + i + 4]
-        r5 += a[lo + i + 5]
-        r6 += a[lo + i + 6]
-        r7 += a[lo + i + 7]
-        i += 8
-    total = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-    while i < n:
-        total += a[lo + i]
-        i += 1
-    return total
-
-
-@jit
-def _left_half(n):
-    """Length of the first half of a pairwise sum of n > 128 values (a multiple of 8)."""
-    half = n // 2
-    return half - half % 8
-
-
-@jit
 def _pairwise_sum(a, n, stack):
-    """Sum of ``a[:n]`` in numpy's order (``np.add.reduce`` on a contiguous array: blocks of
-    at most 128 values, halves above), its tree walked with ``stack`` (4 x _LEVELS) instead
-    of recursion."""
+    """Sum of ``a[:n]`` in numpy's order (``np.add.reduce`` on a contiguous array: below 8
+    values one by one, up to 128 in eight interleaved partial sums, above that the two halves
+    summed so and added; the first half a multiple of 8), the tree walked with ``stack``
+    (4 x _LEVELS) instead of recursion."""
     depth = 0
-    node_lo, node_n = 0, n
+    lo, size = 0, n
     while True:
-        while node_n > _PAIRWISE_BLOCK:  # down to the left half
+        while size > _PAIRWISE_BLOCK:  # down to the left half
             f = 4 * depth
-            stack[f], stack[f + 1], stack[f + 2] = node_lo, node_n, 0.0
+            stack[f], stack[f + 1], stack[f + 2] = lo, size, 0.0
             depth += 1
-            node_n = _left_half(node_n)
-        result = _block_sum(a, node_lo, node_n)
+            size = size // 2 - (size // 2) % 8
+        # a block of at most 128 values
+        if size < 8:
+            result = 0.0
+            for i in range(lo, lo + size):
+                result += a[i]
+        else:
+            r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
+            r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
+            i = 8
+            while i < size - size % 8:
+                r0 += a[lo + i]
+                r1 += a[lo + i + 1]
+                r2 += a[lo + i + 2]
+                r3 += a[lo + i + 3]
+                r4 += a[lo + i + 4]
+                r5 += a[lo + i + 5]
+                r6 += a[lo + i + 6]
+                r7 += a[lo + i + 7]
+                i += 8
+            result = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+            while i < size:
+                result += a[lo + i]
+                i += 1
         right = False
         while depth > 0:  # up, adding each right half to its left half
             f = 4 * (depth - 1)
             if stack[f + 2] == 0.0:  # back from a left half: keep its sum, go right
                 stack[f + 2], stack[f + 3] = 1.0, result
-                parent_lo, parent_n = int(stack[f]), int(stack[f + 1])
-                half = _left_half(parent_n)
-                node_lo, node_n = parent_lo + half, parent_n - half
+                parent_lo, parent = int(stack[f]), int(stack[f + 1])
+                half = parent // 2 - (parent // 2) % 8
+                lo, size = parent_lo + half, parent - half
                 right = True
                 break
             result = stack[f + 3] + result
@@ -271,78 +259,6 @@ def damping_from_peaks(time, y, start, buf):
 
 
 @jit
-def _settling(time, hist, column, start, band_floor):
-    """Time after ``start`` after which |y - y_end| (y: the column less its first value)
-    stays within max(10 % of its peak, ``band_floor``); NaN when it never does."""
-    n = time.shape[0]
-    first = hist[0, column]
-    end = hist[n - 1, column] - first
-    if not math.isfinite(end):
-        return np.nan
-    largest = -np.inf
-    for k in range(n):
-        dev = abs(hist[k, column] - first - end)
-        if dev > largest:  # NaN never is
-            largest = dev
-    band = 0.1 * largest
-    if not band >= band_floor:
-        band = band_floor
-    last = -1
-    for k in range(n):
-        dev = abs(hist[k, column] - first - end)
-        if dev > band:
-            last = k
-    if last < 0:
-        return 0.0
-    if last >= n - 2:
-        return np.nan
-    return max(0.0, time[last + 1] - start)
-
-
-@jit
-def _rms(time, hist, column, relative, start, values, stack):
-    """Root mean square of a column (less its first value if ``relative``) over the samples
-    after ``start`` where the yaw is known, NaN-ignoring (numpy's nanmean)."""
-    first = hist[0, column] if relative else 0.0
-    m, count = 0, 0
-    yaw = _YAW
-    for k in range(time.shape[0]):
-        if time[k] >= start and math.isfinite(hist[k, yaw]):
-            y = hist[k, column] - first
-            if math.isfinite(y):
-                values[m] = y * y
-                count += 1
-            else:
-                values[m] = 0.0
-            m += 1
-    if count == 0:
-        return np.nan
-    return math.sqrt(_pairwise_sum(values, m, stack) / count)
-
-
-@jit
-def _activity(hist, k, dt):
-    """Largest of |yaw rate|, |d(swing lateral)/dt| and |d(swing longitudinal)/dt| at sample
-    ``k`` (numpy.gradient: central differences, one-sided at the ends), in deg/s; NaN if any
-    is."""
-    n = hist.shape[0]
-    best = abs(hist[k, _YAW_RATE])
-    for column in (_SWING_LATERAL, _SWING_LONGITUDINAL):
-        if k == 0:
-            rate = (hist[1, column] - hist[0, column]) / dt
-        elif k == n - 1:
-            rate = (hist[n - 1, column] - hist[n - 2, column]) / dt
-        else:
-            rate = (hist[k + 1, column] - hist[k - 1, column]) / (2.0 * dt)
-        rate = abs(rate)
-        if math.isnan(rate) or math.isnan(best):
-            best = np.nan
-        elif rate > best:
-            best = rate
-    return best * (180.0 / math.pi)
-
-
-@jit
 def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
     """Measures (:data:`MEASURES`) of one run's derived histories ``hist`` (n, N_HISTORY).
 
@@ -380,9 +296,23 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
         else:
             out[2 * p], out[2 * p + 1] = hist[where, column] - first, time[where]
     i = 2 * len(_PEAK_COLUMNS)
-    for c in range(2):  # the yaw's change and the sideslip
+    # RMS of the yaw's change and of the sideslip after the start, NaN-ignoring (nanmean)
+    values = buf[0]
+    for c in range(2):
         column = _YAW if c == 0 else _BETA
-        out[i + c] = _rms(time, hist, column, c == 0, start, buf[0], buf[4])
+        first = hist[0, column] if c == 0 else 0.0
+        m, count = 0, 0
+        for k in range(n):
+            if time[k] >= start and math.isfinite(hist[k, _YAW]):
+                y = hist[k, column] - first
+                if math.isfinite(y):
+                    values[m] = y * y
+                    count += 1
+                else:
+                    values[m] = 0.0
+                m += 1
+        out[i + c] = (np.nan if count == 0
+                      else math.sqrt(_pairwise_sum(values, m, buf[4]) / count))
     high, low, slack, first_slack = -np.inf, np.inf, 0, np.nan
     tension_min, alpha_max, speed_end = np.inf, -np.inf, np.nan
     column = _TENSION_RATIO
@@ -411,17 +341,57 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
     out[i + 8] = alpha_max if alpha_max > -np.inf else np.nan
     period, zeta = damping_from_peaks(time, hist[:, _YAW_RATE], end, buf)
     out[i + 9], out[i + 10] = period, zeta
-    out[i + 11] = _settling(time, hist, _YAW, end, band_floor)
+    # settling: the time after the end after which |yaw change - its final value| stays
+    # within max(10 % of its largest, band_floor); NaN when it never does
+    first = hist[0, _YAW]
+    final = hist[n - 1, _YAW] - first
+    settling = np.nan
+    if math.isfinite(final):
+        largest = -np.inf
+        for k in range(n):
+            dev = abs(hist[k, _YAW] - first - final)
+            if dev > largest:  # NaN never is
+                largest = dev
+        band = 0.1 * largest
+        if not band >= band_floor:
+            band = band_floor
+        last = -1
+        for k in range(n):
+            if abs(hist[k, _YAW] - first - final) > band:
+                last = k
+        if last < 0:
+            settling = 0.0
+        elif last < n - 2:
+            settling = max(0.0, time[last + 1] - end)
+    out[i + 11] = settling
+    # the verdict's activity: the largest of |yaw rate| and the swing angles' |rates|
+    # (numpy.gradient: central differences, one-sided at the ends) in deg/s, NaN if any is,
+    # over the first and the second half of the time from verdict_start
     dt = time[1] - time[0]
     middle = 0.5 * (verdict_start + time[n - 1])
-    first, second = -np.inf, -np.inf
+    first_half, second_half = -np.inf, -np.inf
     for k in range(n):
         if time[k] < verdict_start:
             continue
-        a = _activity(hist, k, dt)
+        a = abs(hist[k, _YAW_RATE])
+        for c in range(2):
+            column = _SWING_LATERAL if c == 0 else _SWING_LONGITUDINAL
+            if k == 0:
+                rate = (hist[1, column] - hist[0, column]) / dt
+            elif k == n - 1:
+                rate = (hist[n - 1, column] - hist[n - 2, column]) / dt
+            else:
+                rate = (hist[k + 1, column] - hist[k - 1, column]) / (2.0 * dt)
+            rate = abs(rate)
+            if math.isnan(rate) or math.isnan(a):
+                a = np.nan
+            elif rate > a:
+                a = rate
+        a *= 180.0 / math.pi
         if time[k] < middle:
-            first = a if (math.isnan(a) or math.isnan(first)) else max(first, a)
+            first_half = a if (math.isnan(a) or math.isnan(first_half)) else max(first_half, a)
         else:
-            second = a if (math.isnan(a) or math.isnan(second)) else max(second, a)
-    out[i + 12], out[i + 13] = first, second
+            second_half = (a if (math.isnan(a) or math.isnan(second_half))
+                           else max(second_half, a))
+    out[i + 12], out[i + 13] = first_half, second_half
     out[i + 14] = speed_end
