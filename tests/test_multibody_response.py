@@ -8,7 +8,7 @@
 * the integration itself: reported quantities evaluated on request must equal, bit for bit,
   those evaluated at the samples during the integration, and a run integrated again must
   give the same states bit for bit (each run is integrated on its own);
-* numpy's pairwise summation order, and scipy's eigenvalues of the linear models.
+* scipy's eigenvalues of the linear models built one by one.
 """
 
 from __future__ import annotations
@@ -41,7 +41,6 @@ from slingloads.models.multibody.integrator import (
     tabulate_drive,
 )
 from slingloads.models.multibody.parachute_line import line_angles
-from slingloads.models.multibody.response import _pairwise_sum, scratch
 from slingloads.models.multibody.rigid_body import euler_angles, rotation_matrix
 from slingloads.models.sample_aircraft import sample_fuselage
 
@@ -242,17 +241,6 @@ def test_histories_not_kept_are_integrated_again_bit_for_bit():
     for a, b in zip(kept.runs, lean.runs, strict=True):
         assert_array_equal(a.states, b.states)
         assert a.to_frame().equals(b.to_frame())
-
-
-def test_pairwise_sum_is_numpys():
-    """The compiled sums of the RMS values and means add in numpy's order (pairwise, blocks of
-    128 with eight partial sums): the same bits as numpy.sum, for lengths across the block
-    boundaries and values of very different magnitudes."""
-    rng = np.random.default_rng(7)
-    stack = scratch(0)[4]
-    for n in [*range(0, 40), 127, 128, 129, 255, 256, 257, 601, 1000, 6001, 100_003]:
-        a = rng.normal(size=n) * np.exp(5 * rng.normal(size=n))
-        assert _pairwise_sum(a, n, stack) == (np.sum(a) if n else 0.0), n
 
 
 def test_fastest_rates_are_the_linear_models():

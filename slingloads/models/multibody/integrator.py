@@ -47,7 +47,6 @@ from slingloads.models.dormand_prince import P as _P
 from slingloads.models.multibody._jit import jit, jit_alloc
 from slingloads.models.multibody.equations import N_INFO, N_STATES, PARAMETERS, evaluate
 from slingloads.models.multibody.response import (
-    MEASURE_SCRATCH,
     N_HISTORY,
     N_MEASURES,
     derive,
@@ -156,7 +155,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
     steady_drive = np.empty(9)
     reported = np.empty(N_INFO)
     hist = np.empty((n_out if measuring else 0, N_HISTORY))
-    buf = np.empty((5, max(n_out, MEASURE_SCRATCH) if measuring else 0))
+    buf = np.empty((4, n_out if measuring else 0))
     for j in range(runs):
         row = profile[j]
         pj = P[j]

@@ -16,7 +16,8 @@ buffer reused from run to run.
 
 The formulas are those of numpy: angles from ``arctan2``, ``arcsin`` and ``arccos`` (here
 the C library's, which may differ from numpy's vectorised ones in the last bit), ``unwrap``
-and ``gradient`` as numpy defines them, means as numpy's pairwise sums.
+and ``gradient`` as numpy defines them; sums are taken in order (numpy's pairwise sums may
+differ in the last bits).
 """
 
 from __future__ import annotations
@@ -61,70 +62,9 @@ MEASURES = tuple(f"{name} {what}" for name, _ in PEAKS for what in ("peak", "at"
     "carrier speed end")
 N_MEASURES = len(MEASURES)
 
-#: Block of a pairwise sum, numpy's (below it eight interleaved partial sums).
-_PAIRWISE_BLOCK = 128
-#: Levels of a pairwise sum's tree the scratch holds (2**64 values).
-_LEVELS = 64
-#: Least length of the rows of :func:`measure`'s work space.
-MEASURE_SCRATCH = 4 * _LEVELS
-
-
 def scratch(samples):
     """Work space of :func:`measure` for runs of ``samples`` samples."""
-    return np.empty((5, max(int(samples), MEASURE_SCRATCH)))
-
-
-@jit
-def _pairwise_sum(a, n, stack):
-    """Sum of ``a[:n]`` in numpy's order (``np.add.reduce`` on a contiguous array: below 8
-    values one by one, up to 128 in eight interleaved partial sums, above that the two halves
-    summed so and added; the first half a multiple of 8), the tree walked with ``stack``
-    (4 x _LEVELS) instead of recursion."""
-    depth = 0
-    lo, size = 0, n
-    while True:
-        while size > _PAIRWISE_BLOCK:  # down to the left half
-            f = 4 * depth
-            stack[f], stack[f + 1], stack[f + 2] = lo, size, 0.0
-            depth += 1
-            size = size // 2 - (size // 2) % 8
-        # a block of at most 128 values
-        if size < 8:
-            result = 0.0
-            for i in range(lo, lo + size):
-                result += a[i]
-        else:
-            r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
-            r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
-            i = 8
-            while i < size - size % 8:
-                r0 += a[lo + i]
-                r1 += a[lo + i + 1]
-                r2 += a[lo + i + 2]
-                r3 += a[lo + i + 3]
-                r4 += a[lo + i + 4]
-                r5 += a[lo + i + 5]
-                r6 += a[lo + i + 6]
-                r7 += a[lo + i + 7]
-                i += 8
-            result = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-            while i < size:
-                result += a[lo + i]
-                i += 1
-        right = False
-        while depth > 0:  # up, adding each right half to its left half
-            f = 4 * (depth - 1)
-            if stack[f + 2] == 0.0:  # back from a left half: keep its sum, go right
-                stack[f + 2], stack[f + 3] = 1.0, result
-                parent_lo, parent = int(stack[f]), int(stack[f + 1])
-                half = parent // 2 - (parent // 2) % 8
-                lo, size = parent_lo + half, parent - half
-                right = True
-                break
-            result = stack[f + 3] + result
-            depth -= 1
-        if not right:
-            return result
+    return np.empty((4, int(samples)))
 
 
 @jit
@@ -253,8 +193,12 @@ def damping_from_peaks(time, y, start, buf):
     for i in range(count - 1):
         t[i] = times[i + 1] - times[i]
         v[i] = math.log(values[i] / values[i + 1])
-    period = _pairwise_sum(t, count - 1, buf[4]) / (count - 1)
-    delta = _pairwise_sum(v, count - 1, buf[4]) / (count - 1)
+    period, delta = 0.0, 0.0
+    for i in range(count - 1):
+        period += t[i]
+        delta += v[i]
+    period /= count - 1
+    delta /= count - 1
     return period, delta / math.sqrt(4 * math.pi ** 2 + delta ** 2)
 
 
@@ -311,8 +255,10 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
                 else:
                     values[m] = 0.0
                 m += 1
-        out[i + c] = (np.nan if count == 0
-                      else math.sqrt(_pairwise_sum(values, m, buf[4]) / count))
+        total = 0.0
+        for k in range(m):
+            total += values[k]
+        out[i + c] = np.nan if count == 0 else math.sqrt(total / count)
     high, low, slack, first_slack = -np.inf, np.inf, 0, np.nan
     tension_min, alpha_max, speed_end = np.inf, -np.inf, np.nan
     column = _TENSION_RATIO
