@@ -252,8 +252,10 @@ class SlingSystem:
 
         def put(name, values):
             i = _INDEX[name]
-            values = np.atleast_1d(np.asarray(values, float)).ravel()
-            p[i:i + values.size] = values
+            if isinstance(values, np.ndarray):
+                p[i:i + values.size] = values.ravel()
+            else:
+                p[i] = values
 
         cg = self.body.cg
         inertia = self.body.inertia
