@@ -71,7 +71,7 @@ def runs():
 
 
 def numpy_histories(run):
-    """The histories written out with numpy (docs/multibody.md, section 'Histories')."""
+    """The histories written out with numpy (docs/multibody.md, section 5)."""
     x, info = run.states, run.info
     yaw, pitch, roll = euler_angles(x[:, 9:13])
     yaw = np.unwrap(np.where(np.isfinite(yaw), yaw, 0.0))
@@ -129,7 +129,7 @@ def _numpy_damping(t, y, start):
 
 
 def numpy_metrics(run, h):
-    """The per-run metrics written out with numpy (docs/multibody.md, section 'Metrics')."""
+    """The per-run metrics written out with numpy (docs/multibody.md, section 5)."""
     t, m = run.time, run.manoeuvre
     start = min(m.breakpoints or (0.0,))
     after = (t >= start) & np.isfinite(h["yaw"])

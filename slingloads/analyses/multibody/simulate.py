@@ -11,6 +11,12 @@ must give |lambda| dt <= 1).
 
 A run that leaves a table stops there: the verdict says which table and when, the history is NaN
 after it (no extrapolation), and the rest of the batch goes on.
+
+Each run's metrics are measured by the kernel as soon as the run is integrated (compiled, from
+the quantities the equations report at its samples: no run's reported quantities are stored).
+A run's reported quantities and histories are computed when asked for, from its sampled
+states, which the batch keeps, or integrates again, the same to the last bit, when it was told
+to keep only the metrics (``keep_histories=False``).
 """
 
 from __future__ import annotations

@@ -3,7 +3,8 @@
 The right-hand side of the multibody equations and the fixed-step integrator are compiled with
 `numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept in the package's
 ``__pycache__`` after the first call, so only the first run on a machine pays the compilation).
-Every kernel is written on scalars and small tuples so that it allocates nothing per evaluation.
+Every kernel is written on scalars and small tuples so that it allocates nothing per evaluation;
+the integration kernel allocates its work arrays once per block of runs.
 
 numba invalidates a cached function when its own source file changes, not when a function it
 calls from another module does. The kernels span several modules, so the cache files of this

@@ -9,8 +9,11 @@ end of a ramp), so that no step straddles a jump; within a segment the drive (wi
 carrier acceleration and velocity) is interpolated (cubic, Catmull-Rom: third order, exact for
 a drive linear in time) in a table sampled every :data:`DRIVE_STEP` or finer, its ends being
 the drive just after the segment's start and just before its end. The histories are the dense
-output at the sampling times, where the reported quantities are evaluated with the drive at
-that time.
+output at the sampling times. There the kernel evaluates the reported quantities with the
+drive at that time, for the caller (``report``) or only into a buffer of one run from which,
+as soon as the run is done, its histories are derived and measured
+(:mod:`slingloads.models.multibody.response`): a batch then keeps its sampled states, or
+nothing but the measures, never the reported quantities of every run.
 
 A run whose flow leaves a table (or its hinge range) stops: with the adaptive step, after the
 step has been halved down to :data:`SMALLEST_STEP` without staying inside; with a fixed step,
@@ -21,7 +24,9 @@ One compiled kernel, :func:`dopri_runs`, integrates a block of runs. It is seria
 the GIL (``nogil``), so :func:`integrate` spreads blocks of runs over a pool of threads: the
 same machine code serves a single run and a batch of thousands, and no parallel variant has to
 be compiled. The kernel calls the equations at a single place (a loop over the stages and the
-samples), which keeps the compiled code, and its one-time compilation, small.
+samples), which keeps the compiled code, and its one-time compilation, small. Each run is
+integrated on its own, whatever the runs beside it: a run integrated again alone gives the
+same numbers to the last bit.
 
 References
 ----------

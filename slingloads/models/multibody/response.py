@@ -9,10 +9,9 @@ measures of a run (:data:`MEASURES`): peaks and when they occur, RMS values, ext
 slack, damping from successive peaks, settling time and the activity the verdict compares;
 the analysis (:mod:`slingloads.analyses.multibody.simulate`) names them and states its rules.
 
-:func:`measure_runs` does both for many runs at once without keeping their histories: each
-run's reported quantities are evaluated at its samples (the same compiled equations at the same
-states and drive as during the integration, so the very numbers a run's ``info`` gives), into a
-buffer reused from run to run.
+The integration kernel (:func:`~slingloads.models.multibody.integrator.dopri_runs`) calls
+both as soon as a run is done, on the reported quantities it evaluated at the run's samples
+into a buffer reused from run to run: a batch's metrics without anyone's histories kept.
 
 The formulas are those of numpy: angles from ``arctan2``, ``arcsin`` and ``arccos`` (here
 the C library's, which may differ from numpy's vectorised ones in the last bit), ``unwrap``
