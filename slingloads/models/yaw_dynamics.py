@@ -451,7 +451,9 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kerne
 
 
 def _compiled_model(model):
-    """The model row and tables of :func:`slingloads.models.yaw_batch.rk4_batch`."""
+    """The model row and tables of :mod:`slingloads.models.yaw_batch`: ``M``, ``fus_x``,
+    ``fus_n``, ``fus_s``, ``fin_x``, ``fin_k``, ``fin_s`` (the tables with the slopes of their
+    segments)."""
     from slingloads.models import yaw_batch as yb
 
     row = np.zeros(yb.N_MODEL)
@@ -469,7 +471,11 @@ def _compiled_model(model):
     if model.parachute is not None:
         row[yb.CHUTE_CD], row[yb.CHUTE_DX], row[yb.CHUTE_DY] = model._chute
         row[yb.HAS_CHUTE] = 1.0
-    return (row, *(np.ascontiguousarray(a, dtype=float) for a in (fus_x, fus_n, fin_x, fin_k)))
+    tables = []
+    for x, f in ((fus_x, fus_n), (fin_x, fin_k)):
+        x, f = (np.ascontiguousarray(a, dtype=float) for a in (x, f))
+        tables += [x, f, np.diff(f) / np.diff(x)]
+    return (row, *tables)
 
 
 #: First trial step of the adaptive runs (the step then grows tenfold a step at most). [s]
@@ -515,10 +521,11 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     unique, index = _distinct(gusts)
     times = settings.output_times()
     t_end = float(times[-1])
-    segments = [_segment_ends(g, t_end) for g in unique]
-    seg_end = _padded(segments)
-    n_seg = np.array([len(e) for e in segments], dtype=np.int64)
     pieces = [_gust_pieces(g, t_end) for g in unique]
+    segments = [_segments(g, p, t_end) for g, p in zip(unique, pieces, strict=True)]
+    seg_end = _padded([e for e, _ in segments], np.inf)
+    seg_piece = _padded([k for _, k in segments], 0).astype(np.int64)
+    n_seg = np.array([len(e) for e, _ in segments], dtype=np.int64)
     width = max(len(p) for p in pieces)
     p_start = np.full((len(unique), width), np.inf)
     p_coef = np.zeros((len(unique), width, 3))
@@ -534,13 +541,12 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
             harm.append(np.asarray(terms, dtype=float).reshape(-1, 3))
             rows += len(terms)
     harm = np.ascontiguousarray(np.concatenate(harm))
-    p_count = np.array([len(p) for p in pieces], dtype=np.int64)
     out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
     left = np.zeros(runs, dtype=bool)
     exit_time = np.full(runs, np.nan)
     steps = np.zeros(runs, dtype=np.int64)
-    yaw_batch.dopri_batch(psi, rate, areas, index.astype(np.int64), seg_end, n_seg, p_start,
-                          p_count, p_coef, h_off, h_count, harm, float(settings.output_interval),
+    yaw_batch.dopri_batch(psi, rate, areas, index.astype(np.int64), seg_end, seg_piece, n_seg,
+                          p_start, p_coef, h_off, h_count, harm, float(settings.output_interval),
                           float(settings.rtol), float(settings.atol), float(settings.max_step),
                           FIRST_STEP, *_compiled_model(model), out_psi, out_rate, left,
                           exit_time, steps)
@@ -550,15 +556,20 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
 
 
-def _segment_ends(gust, t_end):
-    """Ends of the smooth pieces of ``gust`` over (0, ``t_end``]: its breakpoints, then
-    ``t_end``. [s]"""
-    inner = [b for b in gust.breakpoints if b is not None and 0.0 < b < t_end]
-    return np.unique([*inner, t_end])
+def _segments(gust, pieces, t_end):
+    """(ends [s], pieces) of the smooth segments of ``gust`` over (0, ``t_end``]: they end at
+    its breakpoints and at the starts of its ``pieces`` (:func:`_gust_pieces`), then at
+    ``t_end``; each lies on one piece, the last that starts at or before the segment's
+    start."""
+    starts = np.array([p[0] for p in pieces], dtype=float)
+    inner = [b for b in (*gust.breakpoints, *starts) if b is not None and 0.0 < b < t_end]
+    ends = np.unique([*inner, t_end])
+    begins = np.concatenate([[0.0], ends[:-1]])
+    return ends, np.searchsorted(starts, begins, side="right") - 1
 
 
-def _padded(rows):
-    out = np.full((len(rows), max(len(r) for r in rows)), np.inf)
+def _padded(rows, fill):
+    out = np.full((len(rows), max(len(r) for r in rows)), fill, dtype=float)
     for i, r in enumerate(rows):
         out[i, :len(r)] = r
     return out
