@@ -205,8 +205,9 @@ def relative_wind(v, tas):
 
 @_jit
 def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p_coef, h_off,
-               h_count, harm, interval, rtol, atol, max_step, first_step, M, fus_x, fus_n,
-               fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left, exit_time, steps):
+               h_count, harm, interval, rtol, atol, max_step, first_step, max_steps, stop, M,
+               fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left, exit_time,
+               steps):
     """Run ``j`` of :func:`dopri_batch` (same arguments)."""
     n_out = out_psi.shape[1]
     tas = M[TAS]
@@ -223,6 +224,7 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
     h = first_step
     gone = False
     accepted = 0
+    tried = 0
     rejected = False
     for s in range(n_seg[g]):
         b = seg_end[g, s]
@@ -239,6 +241,11 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
         kp[0], kr[0] = rate, acc
         gone = o
         while not gone and t < b:
+            if tried == max_steps or stop[0] != 0:  # over budget: the call is refused
+                stop[0] = 1
+                steps[j] = -1
+                return
+            tried += 1
             h = min(h, max_step)
             last = t + h >= b - 1e-12 * max(1.0, b)
             if last:
@@ -324,8 +331,9 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
 
 @_parallel_jit
 def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p_coef, h_off,
-                h_count, harm, interval, rtol, atol, max_step, first_step, M, fus_x, fus_n,
-                fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left, exit_time, steps):
+                h_count, harm, interval, rtol, atol, max_step, first_step, max_steps, stop, M,
+                fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left, exit_time,
+                steps):
     """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,) by
     the adaptive Dormand-Prince 5(4) pair.
 
@@ -341,7 +349,10 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     t = 0 (dense output); ``left``, ``exit_time`` (runs,) whether and when a run left a
     table: a stage outside a table halves the step, and below :data:`SMALLEST_STEP` the run
     stops (its state frozen from then, its rate set to zero). ``steps`` (runs,) receives the
-    accepted steps of each run. ``M`` and the tables as in the module notes.
+    accepted steps of each run. A run that would try more than ``max_steps`` steps (accepted
+    or rejected) sets ``stop[0]`` (an int64 array of one element, 0 on entry), and every run
+    then stops at once with ``steps[j] = -1``: the call is to be refused, its histories are
+    not complete. ``M`` and the tables as in the module notes.
     """
     # runs spread over the chunks (run j in chunk j mod CHUNKS): the chunks, shared out in
     # order among the threads, then carry like mixes of cheap and costly runs
@@ -350,6 +361,6 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     for c in numba.prange(chunks):
         for j in range(c, runs, chunks):
             _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p_coef,
-                       h_off, h_count, harm, interval, rtol, atol, max_step, first_step, M,
-                       fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left,
-                       exit_time, steps)
+                       h_off, h_count, harm, interval, rtol, atol, max_step, first_step,
+                       max_steps, stop, M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi,
+                       out_rate, left, exit_time, steps)

@@ -57,7 +57,12 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from slingloads.errors import InputError
-from slingloads.limits import MAX_ODE_EVALUATIONS, evaluation_budget
+from slingloads.limits import (
+    MAX_CHUTE_RUN_STEPS,
+    MAX_CHUTE_STEPS,
+    MAX_ODE_EVALUATIONS,
+    evaluation_budget,
+)
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
 from slingloads.models.flight import SIZING_SPEED, FlightCondition
@@ -473,8 +478,8 @@ def _compiled_model(model):
         row[yb.HAS_CHUTE] = 1.0
     tables = []
     for x, f in ((fus_x, fus_n), (fin_x, fin_k)):
-        x, f = (np.ascontiguousarray(a, dtype=float) for a in (x, f))
-        tables += [x, f, np.diff(f) / np.diff(x)]
+        slope = np.zeros(1) if x is none else np.diff(f) / np.diff(x)  # none: never read
+        tables += [np.ascontiguousarray(a, dtype=float) for a in (x, f, slope)]
     return (row, *tables)
 
 
@@ -493,7 +498,12 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     between their gust's breakpoints, and sampled on the output times from the method's
     fourth-order dense output. The gust is evaluated in the kernel from its exact formula
     (:func:`_gust_pieces`). A stage outside a table halves the step; a run that still leaves
-    below 1e-6 s is flagged and frozen from then, never clamped silently.
+    below 1e-6 s is flagged and frozen from then, never clamped silently. The work is
+    bounded: each run may try :data:`~slingloads.limits.MAX_CHUTE_STEPS` steps (accepted or
+    rejected), and :data:`~slingloads.limits.MAX_CHUTE_RUN_STEPS` / runs when that is fewer;
+    a run that needs more stops every run and the call raises an :class:`InputError`
+    (``field="rtol"``) instead of keeping the cores busy for hours (a very stiff model, a
+    tolerance near round-off).
 
     Parameters
     ----------
@@ -545,11 +555,19 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     left = np.zeros(runs, dtype=bool)
     exit_time = np.full(runs, np.nan)
     steps = np.zeros(runs, dtype=np.int64)
+    budget = max(min(MAX_CHUTE_STEPS, MAX_CHUTE_RUN_STEPS // runs), 1)
+    stop = np.zeros(1, dtype=np.int64)
     yaw_batch.dopri_batch(psi, rate, areas, index.astype(np.int64), seg_end, seg_piece, n_seg,
                           p_start, p_coef, h_off, h_count, harm, float(settings.output_interval),
                           float(settings.rtol), float(settings.atol), float(settings.max_step),
-                          FIRST_STEP, *_compiled_model(model), out_psi, out_rate, left,
-                          exit_time, steps)
+                          FIRST_STEP, budget, stop, *_compiled_model(model), out_psi, out_rate,
+                          left, exit_time, steps)
+    if stop[0]:
+        raise InputError(f"too much work: a yaw run needs more than {budget:,} adaptive steps "
+                         f"(limits of slingloads: at most {MAX_CHUTE_STEPS:,} a run and "
+                         f"{MAX_CHUTE_RUN_STEPS:,} over the runs); loosen the tolerance, shorten "
+                         "the runs or check the yaw inertia and the tables for a very stiff "
+                         "case", float(settings.rtol), field="rtol")
     gust_out = np.stack([g.velocity(times) for g in unique])
     gamma_out = model.relative_wind(gust_out)[0]
     beta = gamma_out[index] - out_psi
