@@ -19,6 +19,7 @@ References (each test names its own):
 """
 
 import numpy as np
+import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
@@ -240,6 +241,20 @@ def test_free_free_internal_loads_of_no_case():
         items, np.zeros((1, 3)), np.zeros((0, 1, 3)), None, stations)
     assert loads.shape == (0, 2, 6) and residual.shape == (0, 6)
     assert accel.linear.shape == accel.angular.shape == (0, 3)
+
+
+@pytest.mark.parametrize(("forces", "moments"), [
+    (np.zeros((2, 1, 3)), None),                      # fewer points than positions
+    (np.zeros((2, 2, 3)), np.zeros((1, 2, 3))),       # moments of another case count
+])
+def test_free_free_internal_loads_refuses_mismatched_shapes(forces, moments):
+    """The compiled kernel reads forces and moments by the positions' indices without bounds
+    checks: arrays of the wrong shape are refused, the shapes echoed."""
+    items = MassItems(("a", "b"), np.array([1.0, 2.0]), np.array([[0.0, 0, 0], [1.0, 0, 0]]),
+                      np.broadcast_to(np.eye(3), (2, 3, 3)).copy())
+    stations = np.array([[0.5, 0.0, 0.0], [2.0, 0.0, 0.0]])
+    with pytest.raises(ValueError, match=r"must have the shape \(cases, points, 3\)"):
+        free_free_internal_loads(items, np.zeros((2, 3)), forces, moments, stations)
 
 
 @SETTINGS

@@ -197,6 +197,11 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
                             [1.0 / mass_items.total_mass], inverse_inertia(mass_items).ravel()])
     has_moments = moments is not None
     moments = np.asarray(moments, float) if has_moments else np.empty((0, 0, 3))
+    # the kernel does not check its indices
+    for name, array in (("forces", forces), ("moments", moments if has_moments else forces)):
+        if array.shape != (cases, len(positions), 3):
+            raise ValueError(f"internal loads: {name} must have the shape (cases, points, 3) = "
+                             f"{(cases, len(positions), 3)}, not {array.shape}")
     free_free_rows(basis, forces, moments, has_moments, order, positions[order] - axis_point,
                    count, cuts[:, 0].copy(), rigid, loads.reshape(cases, 6 * n_st), residual,
                    linear, angular)
