@@ -269,6 +269,19 @@ def test_gust_outside_the_tables(tmp_path, capsys):
     assert not out.exists()
 
 
+def test_very_stiff_adaptive_runs_are_refused_at_the_tolerance(tmp_path, capsys):
+    """Rule: an adaptive run tries at most 200,000 steps (limits of slingloads). A yaw
+    inertia of 0.01 kg m^2 (source 'parameter') instead of the example's 10,833 kg m^2 makes the
+    yaw mode's fast root c / I about 2e5 1/s, so the explicit Dormand-Prince pair would need
+    steps below 3.3 / |lambda| (about 1e-5 s), millions of them a run: the runs stop at the
+    limit and the error points at the tolerance row, the setting the user may change (with
+    the advice to check the inertia), instead of computing for minutes."""
+    name = "chute sizing yaw inertia"
+    _bad(tmp_path, capsys, {("Study", "chute sizing yaw inertia source"): "parameter",
+                            ("Study", name): 0.01}, "Study", "chute sizing reference rtol",
+         "too much work", "200,000 adaptive steps", "yaw inertia")
+
+
 def test_us_plots_convert_lengths_and_moments(result):
     """--units US plots: wake distances in ft (1 ft = 0.3048 m) and yawing moments in
     1000 lbf ft (1 lbf ft = 4.4482216152605 x 0.3048 N m), converted from the SI results."""

@@ -74,7 +74,8 @@ class ChuteSizingInputs:
     recommended_factor : float
         Recommended area over the neutral area. [-]
     integrator : str
-        ``"rk4"`` or ``"solve_ivp"``.
+        ``"dopri5"``, ``"rk4"`` or ``"solve_ivp"`` (see
+        :func:`slingloads.analyses.chute_sizing.run_yaw`).
     inertia_source : str
         ``"mass items"`` or ``"parameter"``.
     study_area : float
@@ -245,24 +246,27 @@ def read(reader, params, study):
 
 
 def _check_work(params, runs, t_end, dt, interval, integrator):
-    """The sweep asked for stays within the limits (before anything is computed)."""
+    """The sweep asked for stays within the limits (before anything is computed). The
+    fixed steps of 'rk4' are counted here; 'dopri5' counts the steps it tries while it
+    integrates (and stops at the same limits)."""
     steps = t_end / dt
     samples = runs * (t_end / interval + 1)
-    for name, count, limit, what in (
-            ("chute sizing number of areas", runs, MAX_CHUTE_RUNS,
-             "runs (areas x gust shapes)"),
-            ("chute sizing time step", steps, MAX_CHUTE_STEPS, "time steps per run"),
-            ("chute sizing time step", steps * runs, MAX_CHUTE_RUN_STEPS,
-             "run-steps (runs x time steps)"),
-            ("chute sizing output interval", samples, MAX_CHUTE_SAMPLES,
-             "stored samples (runs x simulation time / output interval)")):
+    checks = [("chute sizing number of areas", runs, MAX_CHUTE_RUNS,
+               "runs (areas x gust shapes)"),
+              ("chute sizing output interval", samples, MAX_CHUTE_SAMPLES,
+               "stored samples (runs x simulation time / output interval)")]
+    if integrator == "rk4":
+        checks += [("chute sizing time step", steps, MAX_CHUTE_STEPS, "time steps per run"),
+                   ("chute sizing time step", steps * runs, MAX_CHUTE_RUN_STEPS,
+                    "run-steps (runs x time steps)")]
+    for name, count, limit, what in checks:
         params.check(name, count <= limit, f"too much work: the sweep asks for {count:,.0f} "
                      f"{what}, more than the {limit:,} allowed (limits of slingloads)")
     if integrator == "solve_ivp":
         params.check("chute sizing integrator", runs <= MAX_CHUTE_REFERENCE_RUNS,
                      f"too much work: the 'solve_ivp' integrator solves each of the {runs:,} "
                      f"runs on its own; at most {MAX_CHUTE_REFERENCE_RUNS} are allowed (limits "
-                     "of slingloads): use 'rk4' or fewer areas")
+                     "of slingloads): use 'dopri5' or fewer areas")
 
 
 def _wake_table(reader):
