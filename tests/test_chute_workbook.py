@@ -296,3 +296,33 @@ def test_us_plots_convert_lengths_and_moments(result):
     first = next(iter(result.static.moments.values()))
     np.testing.assert_allclose(moments.lines[0].get_ydata(),
                                first / (1000 * 4.4482216152605 * 0.3048), rtol=1e-12)
+
+
+def test_rk4_grid_rule_located_at_the_output_interval(tmp_path, capsys):
+    """Rule: with the fixed-step 'rk4' integrator the stored samples fall on its steps, so the
+    output interval must be a whole multiple of the time step: 0.1 s / 0.03 s = 3.33 is not."""
+    _bad(tmp_path, capsys, {("Study", "chute sizing integrator"): "rk4",
+                            ("Study", "chute sizing time step"): 0.03},
+         "Study", "chute sizing output interval", "whole multiple", "0.03 s")
+
+
+def test_simulation_time_must_hold_whole_output_intervals(tmp_path, capsys):
+    """Rule: the stored samples land on the simulation time: 120.05 s is not a whole number
+    of 0.1 s intervals (1,200.5), whatever the integrator."""
+    _bad(tmp_path, capsys, {("Study", "chute sizing simulation time"): 120.05},
+         "Study", "chute sizing simulation time", "output interval", "0.1 s")
+
+
+def test_adaptive_integrator_ignores_the_time_step(tmp_path, result):
+    """'dopri5' chooses its own steps (docs: the time step binds 'rk4' only): a time step of
+    0.03 s, which divides neither 120 s nor the 0.1 s output interval, is accepted, and the
+    result equals the example's (the integration never reads it): same neutral area and
+    the same peak sideslip of every run to round-off."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    book["Study"][f"B{_row(book, 'chute sizing time step')}"] = 0.03
+    path = tmp_path / "odd-step.xlsx"
+    book.save(path)
+    odd = compute(read_study(path, only=["chute sizing"]))
+    assert odd.static.area == result.static.area
+    np.testing.assert_allclose(odd.sweep.to_frame()["peak beta [deg]"],
+                               result.sweep.to_frame()["peak beta [deg]"], rtol=1e-12)

@@ -16,7 +16,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.analyses.chute_sizing import MetricSettings
-from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME_SHEETS
 from slingloads.io.chute.schema import (
@@ -212,13 +211,10 @@ def read(reader, params, study):
     shapes = [s for s in str(params("chute sizing gust shapes") or "").split(",") if s.strip()]
     _check_work(params, int(params("chute sizing number of areas")) * max(len(shapes), 1),
                 t_end, dt, interval, integrator)
-    try:
-        settings = SolverSettings(t_end, dt, interval, method, rtol)
-        settings.fixed_grid()
-    except InputError as err:
-        name = ("chute sizing output interval" if "output_interval" in err.rule
-                else "chute sizing simulation time")
-        raise params.error(name, err.rule) from None
+    _check_grid(params, t_end, dt, interval, integrator)
+    # the adaptive integrators choose their own steps: only the output grid binds them
+    settings = SolverSettings(t_end, dt if integrator == "rk4" else interval, interval,
+                              method, rtol)
     # ---- gusts
     gusts = _gusts(reader, params, model, t_end)
     limit = params.positive("chute sizing sideslip limit")
@@ -243,6 +239,26 @@ def read(reader, params, study):
         recommended_factor=recommended, integrator=integrator, inertia_source=source,
         study_area=float(params("parachute area")),
         study_line=float(params("parachute line length")))
+
+
+def _whole_multiple(value, unit):
+    ratio = value / unit
+    return round(ratio) >= 1 and abs(ratio - round(ratio)) <= 1e-9 * ratio
+
+
+def _check_grid(params, t_end, dt, interval, integrator):
+    """The stored samples land on the simulation time; with 'rk4' the fixed steps land on
+    every sample (the adaptive integrators do not use the time step)."""
+    if integrator == "rk4":
+        params.check("chute sizing output interval", _whole_multiple(interval, dt),
+                     "'chute sizing output interval' must be a whole multiple of 'chute sizing "
+                     f"time step' ({dt:g} s) with the 'rk4' integrator")
+        params.check("chute sizing simulation time", _whole_multiple(t_end, dt),
+                     "'chute sizing simulation time' must be a whole multiple of 'chute sizing "
+                     f"time step' ({dt:g} s) with the 'rk4' integrator")
+    params.check("chute sizing simulation time", _whole_multiple(t_end, interval),
+                 "'chute sizing simulation time' must be a whole multiple of 'chute sizing "
+                 f"output interval' ({interval:g} s)")
 
 
 def _check_work(params, runs, t_end, dt, interval, integrator):

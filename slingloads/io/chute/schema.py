@@ -124,16 +124,19 @@ PARAMETERS = (
               "leaves the linearisation range is not called stable either.", _S,
               Bounds(0, 90, lo_open=True)),
     Parameter("chute sizing simulation time", "time", "s", 120.0,
-              "Simulated time of each 1-DOF run, a whole multiple of the time step; at most "
+              "Simulated time of each 1-DOF run, a whole multiple of the output interval "
+              "(and, with 'rk4', of the time step); at most "
               f"{MAX_CHUTE_STEPS:,} steps a run ('rk4': simulation time / time step; "
               "'dopri5': the steps it tries).", _S, Bounds(0, 3600, lo_open=True)),
     Parameter("chute sizing time step", "time", "s", 0.05,
               "Fixed step of the 'rk4' integrator (gust onsets and ends between its grid "
               "points are inserted into it); 'dopri5' and 'solve_ivp' choose their own steps. "
-              "The simulation time and the output interval are whole multiples of it.", _S,
+              "With 'rk4' the simulation time and the output interval are whole multiples "
+              "of it.", _S,
               above(0)),
     Parameter("chute sizing output interval", "time", "s", 0.1,
-              "Sampling interval of the stored histories, a whole multiple of the time step.",
+              "Sampling interval of the stored histories (with 'rk4', a whole multiple of "
+              "the time step).",
               _S, above(0)),
     Parameter("chute sizing integrator", TEXT, "", "dopri5",
               "'dopri5': adaptive Dormand-Prince 5(4) (the pair of solve_ivp's RK45), compiled, "
