@@ -132,7 +132,9 @@ def derive(time, states, info, weight, mast, chute, out):
             out[k, 20] = out[k, 21] = out[k, 22] = out[k, 23] = nan
         v0, v1, v2 = states[k, 0], states[k, 1], states[k, 2]
         out[k, 24] = math.sqrt(v0 * v0 + v1 * v1 + v2 * v2)
-        out[k, 25] = math.atan2(-info[k, 18], info[k, 20])
+        # (a frozen carrier has no thrust: NaN, as atan2 would give)
+        out[k, 25] = (nan if math.isnan(info[k, 18])
+                      else math.atan2(-info[k, 18], info[k, 20]))
     # numpy.unwrap of the yaw (discontinuity pi, period 2 pi), then NaN where it is missing
     correction = 0.0
     previous = out[0, 4]
