@@ -11,8 +11,9 @@ elastic cable, frozen carrier. Every run lasts 60 s of flight, sampled every 0.1
   run), histories not kept (``keep_histories=False``; a run's are integrated again when
   asked for): 10 parachute areas (0.6-1.5 m^2) x 5 airspeeds (60-100 KEAS) x 4 lateral
   gusts (step, 10 s finite, 1-cosine, continuous; 30 ft/s at 5 s) x 5 cable lengths
-  (60-140 ft). Timed on every processor (the target's figure), then on one thread, three
-  times (the ratio's figure, the median); where the one-thread time goes is printed.
+  (60-140 ft). Timed on every processor (the target's figure), then on one thread, five
+  times in turn with the loop (the ratio's figure, the median); where the one-thread time
+  goes is printed.
 * **baseline**: the loop a competent engineer writes by hand: one
   :func:`scipy.integrate.solve_ivp` call per run on a lean right-hand side in plain Python
   (``benchmarks/lean_multibody.py``: math-module scalars, not the product's compiled kernel),
@@ -21,16 +22,16 @@ elastic cable, frozen carrier. Every run lasts 60 s of flight, sampled every 0.1
   every sampled run and finished them all; looser ones let a trial step leave a table). It
   computes the states at the samples and the two peaks, no other metric; it is handed the
   trimmed initial states for free (its trims are not timed). It is timed on a sample of runs
-  (median of 3) and scaled to 1,000 (``--full``: every run).
+  (median of 5, ``--repeat``) and scaled to 1,000 (``--full``: every run).
 * **accuracy**: peak yaw change and peak lateral swing of the sampled runs, from the batch and
   from the baseline, against a tight reference (DOP853, rtol 1e-10, on the same lean
   right-hand side; split at the jumps); both must lie within 0.5 %.
 
 Both sides are single-threaded for the ratio, which is taken on CPU time (the machine may be
-shared; its load is printed). Run from the repository root (about 2 minutes)::
+shared; its load is printed). Run from the repository root (about a minute)::
 
     .venv/bin/python benchmarks/bench_multibody.py            # sample of 24 baseline runs
-    .venv/bin/python benchmarks/bench_multibody.py --full     # the whole baseline loop
+    .venv/bin/python benchmarks/bench_multibody.py --full --repeat 1   # the whole loop
     .venv/bin/python benchmarks/bench_multibody.py --calibrate   # re-choose the baseline
 
 The figure the targets ask for is printed last: the ratio of the solve_ivp loop to the batch.
@@ -275,7 +276,10 @@ def main():
     parser.add_argument("--sample", type=int, default=24, help="baseline runs timed")
     parser.add_argument("--calibrate", action="store_true",
                         help="try solve_ivp methods and tolerances for the baseline")
+    parser.add_argument("--repeat", type=int, default=REPEAT,
+                        help="times the batch (one thread) and the loop are timed, in turn")
     args = parser.parse_args()
+    repeat = max(1, args.repeat)
     cache = Path(__file__).resolve().parents[1] / "slingloads" / "models" / "multibody"
     cached = any((cache / "__pycache__").glob("*.nbi"))
     print(load())
@@ -313,10 +317,10 @@ def main():
         calibrate(pairs, checked, x0, references)
 
     # the batch on one thread and the loop, in turn (a change of the machine's load falls
-    # on both), REPEAT times each
+    # on both), repeat times each
     names = ("trim_many", "_check_adaptive_work", "tabulate_drive", "integrate")
     singles, laps = [], []
-    for _ in range(REPEAT):
+    for _ in range(repeat):
         fresh = batch_pairs()  # new systems: nothing cached from the previous call
         with _Stopwatch(names) as watch:
             _, one = timed(batch, fresh, workers=1)
@@ -327,7 +331,7 @@ def main():
     single = Timing(statistics.median(t.wall for t, _ in singles),
                     statistics.median(t.cpu for t, _ in singles))
     spent = min(singles, key=lambda item: abs(item[0].cpu - single.cpu))[1]
-    print(f"the same batch on one thread, {REPEAT} times: {single.cpu:.2f} s CPU (median; "
+    print(f"the same batch on one thread, {repeat} times: {single.cpu:.2f} s CPU (median; "
           f"{', '.join(f'{t.cpu:.2f}' for t, _ in singles)}), {single.wall:.2f} s wall")
     other = single.cpu - sum(spent.values())
     print(f"  of which (CPU): {len({id(s) for s, _ in pairs})} trims "
@@ -354,7 +358,7 @@ def main():
     loop = Timing(statistics.median(t.wall for t in laps), statistics.median(t.cpu for t in laps))
     scaled = loop.scaled(len(pairs) / n)
     print(f"solve_ivp loop ({BASELINE['method']}, rtol {BASELINE['rtol']:g}, atol "
-          f"{BASELINE['atol']:g}, lean plain-Python right-hand side) on {n} runs, {REPEAT} "
+          f"{BASELINE['atol']:g}, lean plain-Python right-hand side) on {n} runs, {repeat} "
           f"times: {loop.cpu:.2f} s CPU (median; "
           f"{', '.join(f'{t.cpu:.2f}' for t in laps)}; {1e3 * loop.cpu / n:.1f} ms a run), "
           f"{loop.wall:.2f} s wall; scaled to {len(pairs)} runs: {scaled.cpu:.0f} s CPU, "
@@ -369,7 +373,7 @@ def main():
     untrimmed = single.cpu - spent["trim_many"] - spent["_check_adaptive_work"]
     print(f"ratio of the solve_ivp loop to the batch (metrics of every run included), both "
           f"within {100 * ACCURACY:.1f} % of the reference, single-threaded: "
-          f"{scaled.cpu / single.cpu:.0f}x on CPU time (medians of {REPEAT} timed in turn; "
+          f"{scaled.cpu / single.cpu:.0f}x on CPU time (medians of {repeat} timed in turn; "
           f"{turns[0]:.0f}-{turns[-1]:.0f}x turn by turn; {scaled.wall / single.wall:.0f}x on "
           f"wall time; {scaled.cpu / untrimmed:.0f}x without the batch's trims and step-work "
           f"check, which the loop is given; target >= 30)")
