@@ -41,7 +41,12 @@ from slingloads.models.multibody.integrator import (
     tabulate_drive,
 )
 from slingloads.models.multibody.parachute_line import line_angles
-from slingloads.models.multibody.rigid_body import euler_angles, rotation_matrix
+from slingloads.models.multibody.response import HISTORY, derive
+from slingloads.models.multibody.rigid_body import (
+    euler_angles,
+    quaternion_from_euler,
+    rotation_matrix,
+)
 from slingloads.models.sample_aircraft import sample_fuselage
 
 _I = {name: i for i, name in enumerate(INFO)}
@@ -298,3 +303,26 @@ def test_one_run_alone_equals_the_same_run_in_a_batch():
     together = simulate_runs(others, t_end=12.0).runs[1]
     assert_array_equal(alone.states, together.states)
     assert pd.DataFrame([alone.metrics()]).equals(pd.DataFrame([together.metrics()]))
+
+
+def test_yaw_is_unwrapped_as_numpy_does():
+    """A heading turning through +-180 deg (and back), with a tail of missing samples: the
+    derived yaw is numpy.unwrap of the Euler yaw (continuous through the cut), NaN where the
+    attitude is missing (to round-off: the C library's arctangent against numpy's)."""
+    turn = np.radians(np.concatenate([np.arange(0.0, 400.0, 7.5), np.arange(400.0, -250, -12.5)]))
+    n = turn.size + 5
+    states = np.zeros((n, 20))
+    states[:turn.size, 9:13] = quaternion_from_euler(turn, 0.0, 0.0)
+    states[turn.size:] = np.nan
+    info = np.zeros((n, len(INFO)))
+    info[:, _I["d_Z"]] = -1.0
+    table = np.empty((n, len(HISTORY)))
+    derive(np.arange(n) * 0.1, states, info, 1.0, np.array([0.0, 0.0, 1.0]), False, table)
+    yaw = euler_angles(states[:, 9:13])[0]
+    expected = np.unwrap(np.where(np.isfinite(yaw), yaw, 0.0))
+    expected[turn.size:] = np.nan
+    mine = table[:, HISTORY.index("yaw")]
+    assert_array_equal(np.isnan(mine), np.isnan(expected))
+    assert_allclose(mine[:turn.size], expected[:turn.size], rtol=0, atol=1e-14)
+    assert_allclose(mine[:turn.size], turn, atol=1e-12)
+    assert np.ptp(mine[:turn.size]) > 2 * np.pi  # it went round

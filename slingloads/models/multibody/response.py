@@ -142,12 +142,12 @@ def derive(time, states, info, weight, mast, chute, out):
         raw = out[k, 4]
         dd = raw - previous
         previous = raw
-        ddmod = (dd + math.pi) % (2.0 * math.pi) - math.pi
-        if ddmod == -math.pi and dd > 0:
-            ddmod = math.pi
-        fix = ddmod - dd
-        if abs(dd) < math.pi:
-            fix = 0.0
+        fix = 0.0
+        if not abs(dd) < math.pi:  # a jump: back into (-pi, pi]
+            ddmod = (dd + math.pi) % (2.0 * math.pi) - math.pi
+            if ddmod == -math.pi and dd > 0:
+                ddmod = math.pi
+            fix = ddmod - dd
         correction += fix
         out[k, 4] = raw + correction
     for k in range(n):
