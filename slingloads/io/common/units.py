@@ -70,10 +70,10 @@ UNIT_LABELS = {
 _SLUG = POUND_FORCE / FOOT  # [kg]
 
 #: Exact factors to SI of the units the template, the example and the reports spell, by
-#: (unit as written, kind): read without building pint's registry (a third of a second at
-#: every start, more than half a second when it also loads the libraries pint probes). Any other spelling goes to pint; tests/test_units.py checks that pint gives
-#: the same factors (to the last bits of a double: the factors here are the exact
-#: definitions, pint's carry its rounding).
+#: (unit as written, kind): read without building pint's registry (half a second or more
+#: with the libraries pint probes on import). Any other spelling goes to pint;
+#: tests/test_units.py checks that pint gives the same factors (to the last bits of a double:
+#: the factors here are the exact definitions, pint's carry its rounding).
 EXACT_FACTORS = {
     **{(kind, u): 1.0 for kind, u in (("length", "m"), ("mass", "kg"), ("force", "N"),
                                        ("moment", "N*m"), ("moment", "N m"),
