@@ -227,6 +227,15 @@ def _ask_nastran(study, names):
 
 
 def _analyse(args):
+    from slingloads.io.common.figures import helping
+
+    # the process that draws the figures starts first: it loads matplotlib while the
+    # workbook is read, and draws each analysis's figures once it is computed
+    with helping():
+        return _run_analyses(args)
+
+
+def _run_analyses(args):
     from tqdm import tqdm
 
     from slingloads.io.consistency import consistency_checks
