@@ -64,6 +64,7 @@ from openpyxl.worksheet.pagebreak import Break
 
 from slingloads.errors import InputError
 from slingloads.io.common.formats import header_unit, unit_format, value_format
+from slingloads.io.common.helper import gather
 
 #: Rows in one Excel worksheet (header included) [1]_.
 EXCEL_MAX_ROWS = 1_048_576
@@ -888,7 +889,8 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
     ws.page_setup.orientation = orientation
     writer = _SheetWriter(ws)
     used = 0
-    for title, figure in images.items():
+    pngs = gather(images.values())  # drawn here when no helper process has started them
+    for title, figure in zip(images, pngs, strict=True):
         image = Image(io.BytesIO(figure_png(figure)))
         w, h, rows = _image_box(image.width, image.height, page_rows, pixels - 10)
         # a title wider than the page is cut when printed: wrapped (12 pt bold ~ 1.45 x)

@@ -96,14 +96,13 @@ def draw_png(func, args, kwargs, dpi):
     return figure_png(func(*args, **kwargs), dpi)
 
 
-#: Modules a helper loads before its first figure (the plots and what their data need).
-WARM_MODULES = ("slingloads.io.common.figures", "slingloads.io.common.excel",
-                "slingloads.io.study", "slingloads.io.loads.plots",
-                "slingloads.io.lateral.plots", "slingloads.io.chute.plots",
-                "slingloads.io.multibody.plots", "slingloads.io.campaign.plots",
-                "slingloads.io.loads.report",
-                "slingloads.io.lateral.report", "slingloads.io.chute.report",
-                "slingloads.io.multibody.report")
+#: Modules a helper loads while it waits for figures, in the order of the figures (the
+#: plots and what their data need): the loads' first, drawn while the workbook is read.
+WARM_MODULES = ("slingloads.io.common.figures", "slingloads.io.loads.report",
+                "slingloads.io.loads.plots", "slingloads.io.lateral.report",
+                "slingloads.io.lateral.plots", "slingloads.io.chute.report",
+                "slingloads.io.chute.plots", "slingloads.io.multibody.report",
+                "slingloads.io.multibody.plots", "slingloads.io.campaign.plots")
 
 _ACTIVE = []
 

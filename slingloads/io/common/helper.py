@@ -22,6 +22,7 @@ least two processors (:func:`helper_processes`).
 from __future__ import annotations
 
 import ctypes
+import gc
 import multiprocessing
 import os
 import pickle
@@ -217,6 +218,20 @@ class Helper:
             pass
 
 
+def gather(items):
+    """The results of ``items`` (:class:`Call` objects, or values returned as they are).
+
+    The calls no helper process has started are run here first, from the last one back
+    (a helper takes them from the front: the two meet in the middle), then the others are
+    waited for.
+    """
+    items = list(items)
+    for item in reversed(items):
+        if isinstance(item, Call) and item.state == _PENDING:
+            item.result()
+    return [item.result() if isinstance(item, Call) else item for item in items]
+
+
 # ---- the helper process ---------------------------------------------------------------------
 def _die_with_parent(parent):
     """Be killed when the parent dies (Linux), and stop now if it is already gone."""
@@ -241,18 +256,30 @@ def _portable(err):
     return err
 
 
+def _warm(name):
+    """Import module ``name`` and run its ``warm_up()`` if it has one."""
+    try:
+        module = import_module(name)
+        getattr(module, "warm_up", lambda: None)()
+    except Exception:  # noqa: BLE001 - a call that needs the module will raise the error
+        pass
+
+
 def _serve(conn, parent, warm):
-    """Body of a helper process: run the calls received until told to stop."""
+    """Body of a helper process: run the calls received until told to stop, importing the
+    modules ``warm`` in order whenever no call is waiting."""
     _die_with_parent(parent)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    for name in warm:
-        try:
-            module = import_module(name)
-            getattr(module, "warm_up", lambda: None)()
-        except Exception:  # noqa: BLE001, S112 - a call that needs it will raise it
-            continue
+    warm = list(warm)
+    gc.disable()  # importing makes little garbage; the collector would scan it all, often
     while True:
+        if warm and not conn.poll():  # warm up while no call waits
+            _warm(warm.pop(0))
+            if not warm:
+                gc.freeze()  # what is loaded lives to the end: no need to scan it again
+                gc.enable()
+            continue
         try:
             message = conn.recv_bytes()
         except (EOFError, OSError):
