@@ -82,6 +82,10 @@ class Call:
         started it); re-raises the exception the call raised."""
         return self.helper._result(self)
 
+    def done(self):
+        """True once the call has run (its result is there)."""
+        return self.state == _DONE
+
 
 class Helper:
     """Forked processes that run calls in submission order (see the module notes).
@@ -208,7 +212,8 @@ class Helper:
                 if ok:
                     call.value = value
                 else:
-                    call.error = value
+                    call.error, text = value
+                    call.error.__cause__ = RemoteTraceback(f'\n"""\n{text}"""')
                 call.state = _DONE
                 call.payload = None
                 self._cond.notify_all()
@@ -245,15 +250,14 @@ def _die_with_parent(parent):
 
 
 def _portable(err):
-    """``err`` if it survives pickling, else a RuntimeError with its text; with the helper's
-    traceback as its cause."""
+    """``(err, its traceback as text)``, ``err`` replaced by a RuntimeError with its text if
+    it does not survive pickling."""
     text = "".join(traceback.format_exception(err))
     try:
         pickle.loads(pickle.dumps(err))
     except Exception:  # noqa: BLE001 - any exception that does not travel is replaced
         err = RuntimeError(f"{type(err).__name__}: {err}")
-    err.__cause__ = RemoteTraceback(f'\n"""\n{text}"""')
-    return err
+    return err, text
 
 
 def _warm(name):
