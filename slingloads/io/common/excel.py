@@ -46,6 +46,7 @@ import io
 import math
 import numbers
 import re
+import sys
 import textwrap
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -889,7 +890,9 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
     ws.page_setup.orientation = orientation
     writer = _SheetWriter(ws)
     used = 0
-    pngs = gather(images.values())  # drawn here when no helper process has started them
+    # the figures a helper process has not started are drawn here, when there are enough of
+    # them to pay for loading matplotlib (a third of a second) if it is not loaded yet
+    pngs = gather(images.values(), least=1 if "matplotlib.figure" in sys.modules else 3)
     for title, figure in zip(images, pngs, strict=True):
         image = Image(io.BytesIO(figure_png(figure)))
         w, h, rows = _image_box(image.width, image.height, page_rows, pixels - 10)

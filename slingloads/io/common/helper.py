@@ -77,10 +77,11 @@ class Call:
         self.state = _PENDING
         self.value = self.error = None
 
-    def result(self):
-        """The call's value (waiting for a helper process, or running it here if none has
-        started it); re-raises the exception the call raised."""
-        return self.helper._result(self)
+    def result(self, take_back=True):
+        """The call's value, re-raising the exception the call raised: waiting for the
+        helper process that runs it, or running it here if none has started it (with
+        ``take_back=False``, waiting for a helper to start it, unless none is left)."""
+        return self.helper._result(self, take_back)
 
     def done(self):
         """True once the call has run (its result is there)."""
@@ -108,6 +109,7 @@ class Helper:
         self._cond = threading.Condition()
         self._closing = False
         self._workers = []  # (process, connection, feeding thread)
+        self._alive = 0  # feeding threads still running
         self._started = False
 
     # ---- life cycle ---------------------------------------------------------------------
@@ -127,6 +129,7 @@ class Helper:
                                       daemon=True, name="slingloads-helper")
             process.start()
             there.close()
+            self._alive += 1
             thread = threading.Thread(target=self._feed, args=(here,), daemon=True,
                                       name="slingloads-helper-feed")
             thread.start()
@@ -163,9 +166,11 @@ class Helper:
                 self._cond.notify()
         return call
 
-    def _result(self, call):
+    def _result(self, call, take_back=True):
         with self._cond:
-            while call.state == _RUNNING:
+            while call.state == _RUNNING or (
+                    call.state == _PENDING and not take_back and self._alive
+                    and not self._closing and call in self._calls):
                 self._cond.wait()
             if call.state == _PENDING:  # no helper has started it: run it here
                 if call in self._calls:
@@ -192,6 +197,18 @@ class Helper:
     def _feed(self, conn):
         """Hand the calls to one helper process, one at a time, and collect their results
         (a thread of this process)."""
+        try:
+            self._feed_calls(conn)
+        finally:
+            with self._cond:
+                self._alive -= 1
+                self._cond.notify_all()
+            try:
+                conn.send_bytes(b"")  # stop
+            except OSError:
+                pass
+
+    def _feed_calls(self, conn):
         while True:
             with self._cond:
                 while not self._calls and not self._closing:
@@ -217,24 +234,24 @@ class Helper:
                 call.state = _DONE
                 call.payload = None
                 self._cond.notify_all()
-        try:
-            conn.send_bytes(b"")  # stop
-        except OSError:
-            pass
 
 
-def gather(items):
+def gather(items, least=1):
     """The results of ``items`` (:class:`Call` objects, or values returned as they are).
 
-    The calls no helper process has started are run here first, from the last one back
-    (a helper takes them from the front: the two meet in the middle), then the others are
-    waited for.
+    When at least ``least`` calls wait that no helper process has started, they are run
+    here, from the last one back (a helper takes them from the front: the two meet in the
+    middle); then the others are waited for. (A larger ``least`` keeps a few short calls
+    for the helper when the first one run here would cost more, e.g. a library to load.)
     """
     items = list(items)
-    for item in reversed(items):
-        if isinstance(item, Call) and item.state == _PENDING:
-            item.result()
-    return [item.result() if isinstance(item, Call) else item for item in items]
+    waiting = [i for i in items if isinstance(i, Call) and i.state == _PENDING]
+    if len(waiting) >= least:
+        for call in reversed(waiting):
+            if call.state == _PENDING:
+                call.result()
+    return [item.result(take_back=False) if isinstance(item, Call) else item
+            for item in items]
 
 
 # ---- the helper process ---------------------------------------------------------------------
