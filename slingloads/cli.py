@@ -130,6 +130,8 @@ def main(argv=None):
         return _unexpected(err, args)
     finally:
         _restore_sigterm(previous)
+        if argv is not None:  # called from Python, which goes on: collect as usual again
+            gc.unfreeze()
 
 
 def _forget_interrupt():
