@@ -73,7 +73,7 @@ class Call:
     def __init__(self, helper, func, args, kwargs):
         self.helper = helper
         self.func, self.args, self.kwargs = func, args, kwargs
-        self.payload = pickle.dumps((func, args, kwargs), protocol=pickle.HIGHEST_PROTOCOL)
+        self.payload = None  # the pickled call, for a helper process
         self.state = _PENDING
         self.value = self.error = None
 
@@ -161,6 +161,11 @@ class Helper:
         returns its :class:`Call`."""
         call = Call(self, func, args, kwargs)
         if self._workers:
+            try:
+                call.payload = pickle.dumps((func, args, kwargs),
+                                            protocol=pickle.HIGHEST_PROTOCOL)
+            except Exception:  # noqa: BLE001 - cannot travel: run here when asked for
+                return call
             with self._cond:
                 self._calls.append(call)
                 self._cond.notify()
@@ -293,14 +298,18 @@ def _serve(conn, parent, warm):
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     warm = list(warm)
-    gc.disable()  # importing makes little garbage; the collector would scan it all, often
+    # importing makes little garbage, and what is loaded lives to the end: the collector is
+    # off while modules load before the first call, and told not to scan them again after
+    gc.disable()
     while True:
         if warm and not conn.poll():  # warm up while no call waits
             _warm(warm.pop(0))
-            if not warm:
-                gc.freeze()  # what is loaded lives to the end: no need to scan it again
-                gc.enable()
+            if not warm and gc.isenabled():
+                gc.freeze()
             continue
+        if not gc.isenabled():
+            gc.freeze()
+            gc.enable()
         try:
             message = conn.recv_bytes()
         except (EOFError, OSError):
