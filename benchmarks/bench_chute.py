@@ -21,8 +21,10 @@ sample aircraft HC2 at 80 KIAS, ISA sea level.
   the largest |psi| error of both methods against it is printed side by side.
 
 The sweep runs in parallel over the cores, the loop on one: the speed-up (the last line) is
-taken on CPU time, the work done by all threads; the ratio of wall times is printed above
-it. Run from the repository root::
+taken on CPU time, the work done by all threads of the process (the parallel overhead, threads
+waiting for work included); the sweep is also timed on one thread (the CPU-time ratio of
+single-threaded work), and the ratio of median wall times is printed. The load average is
+printed first: on a shared machine every figure moves with it. Run from the repository root::
 
     .venv/bin/python benchmarks/bench_chute.py           # about 1 minute
     .venv/bin/python benchmarks/bench_chute.py --full    # the whole baseline loop
@@ -33,8 +35,10 @@ from __future__ import annotations
 import argparse
 import bisect
 import math
+import os
 import sys
 
+import numba
 import numpy as np
 from _timing import median_timed, sample, timed
 from scipy.integrate import solve_ivp
@@ -169,8 +173,15 @@ def main(argv=None):
         return sizing_sweep(model, f, gusts, settings, static=static,
                             integrator=args.integrator)
 
+    load = os.getloadavg()
+    print(f"load average {load[0]:.2f}, {load[1]:.2f}, {load[2]:.2f} (1, 5, 15 min) on "
+          f"{os.cpu_count()} cores")
     _, cold = timed(sweep, factors[:2])
     result, fast = median_timed(lambda: sweep(factors), args.repeat)
+    threads = numba.get_num_threads()
+    numba.set_num_threads(1)
+    _, single = median_timed(lambda: sweep(factors), args.repeat)
+    numba.set_num_threads(threads)
     runs = result.runs
     n = runs.areas.size
     print(f"aircraft {args.aircraft}: neutral static area {static.area:.4f} m^2, "
@@ -179,7 +190,7 @@ def main(argv=None):
     scheme = (f"adaptive Dormand-Prince 5(4), rtol {args.rtol:g}, atol {args.atol:g}"
               if args.integrator == "dopri5" else f"RK4, dt {settings.step} s")
     print(f"  compiled sizing sweep ({scheme}, trims and metrics included), "
-          f"median of {args.repeat}: {fast}")
+          f"median of {args.repeat}: {fast} ({threads} threads); {single} (1 thread)")
 
     chosen = np.arange(n) if args.full else sample(n, args.sample)
     areas = runs.areas[chosen]
@@ -207,9 +218,13 @@ def main(argv=None):
     verdicts = runs.to_frame()["verdict"].value_counts().to_dict()
     print(f"  verdicts: {verdicts}")
     ok = bool(err_fast <= ACCURACY_DEG)
-    print(f"  wall-time ratio, medians of {args.repeat}: {loop.wall / fast.wall:.1f}x")
-    print(f"speed-up on CPU time, lean solve_ivp loop / compiled sizing sweep: "
-          f"{loop.cpu / fast.cpu:.1f}x (target >= 50x; accuracy {'met' if ok else 'NOT met'})")
+    print(f"  wall-time ratio, medians of {args.repeat}: {loop.wall / fast.wall:.1f}x; CPU-time "
+          f"ratio with the sweep on 1 thread: {loop.cpu / single.cpu:.1f}x")
+    load = os.getloadavg()
+    print(f"  load average at the end {load[0]:.2f}, {load[1]:.2f}, {load[2]:.2f}")
+    print(f"speed-up on CPU time, lean solve_ivp loop / compiled sizing sweep ({threads} "
+          f"threads): {loop.cpu / fast.cpu:.1f}x (target >= 50x; accuracy "
+          f"{'met' if ok else 'NOT met'})")
     return 0 if ok else 1
 
 

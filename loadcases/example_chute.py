@@ -78,7 +78,6 @@ PARAMETERS = {
     "chute sizing turbulence seed": (1, ""),
     "chute sizing sideslip limit": (20, "deg"),
     "chute sizing simulation time": (120, "s"),
-    "chute sizing time step": (0.1, "s"),
     "chute sizing area factor min": (1.0, ""),
     "chute sizing area factor max": (2.0, ""),
     "chute sizing number of areas": (6, ""),

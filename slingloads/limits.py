@@ -125,9 +125,11 @@ MAX_ODE_EVALUATIONS = 500_000
 MAX_CHUTE_AREAS = 500
 #: Runs of the parachute sweep: areas x gust shapes.
 MAX_CHUTE_RUNS = 2_000
-#: Steps of one parachute run (simulation time / time step).
+#: Steps of one parachute run: simulation time / time step of the fixed-step RK4, or the steps
+#: the adaptive Dormand-Prince 5(4) tries (accepted or rejected; about 1 us each on a core).
 MAX_CHUTE_STEPS = 200_000
-#: Run-steps of the parachute sweep: runs x steps.
+#: Run-steps of the parachute sweep: runs x steps (with the adaptive step, each run may try
+#: this / runs steps when that is fewer than MAX_CHUTE_STEPS).
 MAX_CHUTE_RUN_STEPS = 10_000_000
 #: Stored samples of the parachute sweep: runs x (simulation time / output interval); each is
 #: a row of the histories CSV file.

@@ -269,6 +269,19 @@ def test_gust_outside_the_tables(tmp_path, capsys):
     assert not out.exists()
 
 
+def test_very_stiff_adaptive_runs_are_refused_at_the_tolerance(tmp_path, capsys):
+    """Rule: an adaptive run tries at most 200,000 steps (limits of slingloads). A yaw
+    inertia of 0.01 kg m^2 (source 'parameter') instead of the example's 10,833 kg m^2 makes the
+    yaw mode's fast root c / I about 2e5 1/s, so the explicit Dormand-Prince pair would need
+    steps below 3.3 / |lambda| (about 1e-5 s), millions of them a run: the runs stop at the
+    limit and the error points at the tolerance row, the setting the user may change (with
+    the advice to check the inertia), instead of computing for minutes."""
+    name = "chute sizing yaw inertia"
+    _bad(tmp_path, capsys, {("Study", "chute sizing yaw inertia source"): "parameter",
+                            ("Study", name): 0.01}, "Study", "chute sizing reference rtol",
+         "too much work", "200,000 adaptive steps", "yaw inertia")
+
+
 def test_us_plots_convert_lengths_and_moments(result):
     """--units US plots: wake distances in ft (1 ft = 0.3048 m) and yawing moments in
     1000 lbf ft (1 lbf ft = 4.4482216152605 x 0.3048 N m), converted from the SI results."""
@@ -283,3 +296,33 @@ def test_us_plots_convert_lengths_and_moments(result):
     first = next(iter(result.static.moments.values()))
     np.testing.assert_allclose(moments.lines[0].get_ydata(),
                                first / (1000 * 4.4482216152605 * 0.3048), rtol=1e-12)
+
+
+def test_rk4_grid_rule_located_at_the_output_interval(tmp_path, capsys):
+    """Rule: with the fixed-step 'rk4' integrator the stored samples fall on its steps, so the
+    output interval must be a whole multiple of the time step: 0.1 s / 0.03 s = 3.33 is not."""
+    _bad(tmp_path, capsys, {("Study", "chute sizing integrator"): "rk4",
+                            ("Study", "chute sizing time step"): 0.03},
+         "Study", "chute sizing output interval", "whole multiple", "0.03 s")
+
+
+def test_simulation_time_must_hold_whole_output_intervals(tmp_path, capsys):
+    """Rule: the stored samples land on the simulation time: 120.05 s is not a whole number
+    of 0.1 s intervals (1,200.5), whatever the integrator."""
+    _bad(tmp_path, capsys, {("Study", "chute sizing simulation time"): 120.05},
+         "Study", "chute sizing simulation time", "output interval", "0.1 s")
+
+
+def test_adaptive_integrator_ignores_the_time_step(tmp_path, result):
+    """'dopri5' chooses its own steps (docs: the time step binds 'rk4' only): a time step of
+    0.03 s, which divides neither 120 s nor the 0.1 s output interval, is accepted, and the
+    result equals the example's (the integration never reads it): same neutral area and
+    the same peak sideslip of every run to round-off."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    book["Study"][f"B{_row(book, 'chute sizing time step')}"] = 0.03
+    path = tmp_path / "odd-step.xlsx"
+    book.save(path)
+    odd = compute(read_study(path, only=["chute sizing"]))
+    assert odd.static.area == result.static.area
+    np.testing.assert_allclose(odd.sweep.to_frame()["peak beta [deg]"],
+                               result.sweep.to_frame()["peak beta [deg]"], rtol=1e-12)

@@ -9,6 +9,9 @@ References (each test names its own):
 * Definition of the internal load, docs/conventions.md section 2:
   V(x_c) = -sum_{x_i <= x_c} F_i, M(x_c) = -sum_{x_i <= x_c} [(r_i - p_c) x F_i + M_i],
   evaluated here by brute force (a Python loop), independently of the vectorised cumsum.
+* Free-free internal loads (the compiled pipeline: gravity and unit inertia responses
+  superposed, accelerations from the applied loads' totals) against that definition applied to
+  every load, gravity and inertia loads at the mass items included.
 * Linearity: every step (resultants, the inertia solve, the inertia loads, the cut sums) is
   linear in the applied loads, so loads(a L1 + b L2) = a loads(L1) + b loads(L2).
 * Statics of load transfer, docs/conventions.md section 4: the shared point loads have the
@@ -16,6 +19,7 @@ References (each test names its own):
 """
 
 import numpy as np
+import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
@@ -25,7 +29,7 @@ from slingloads.analyses.inertia_relief import (
     inertia_loads,
     rigid_body_acceleration,
 )
-from slingloads.analyses.sfbm import closure_residual, internal_loads
+from slingloads.analyses.sfbm import closure_residual, free_free_internal_loads, internal_loads
 from slingloads.models.airframe import MassItems
 from slingloads.models.load_sharing import rigid_share
 
@@ -181,6 +185,76 @@ def test_internal_loads_point_at_cut_belongs_to_forward_part():
     out = internal_loads(positions, forces, None, stations)[0]
     np.testing.assert_allclose(out[:, 2], [0.0, -100.0, -100.0], atol=1e-12)
     np.testing.assert_allclose(out[:, 4], [0.0, 0.0, -300.0], atol=1e-12)
+
+
+@SETTINGS
+@given(mass_items(), applied_loads(), st.booleans(), vec(3, bound=1.0), st.data())
+def test_free_free_internal_loads_equal_definition(items, loads, with_moments, vertical, data):
+    """The compiled free-free pipeline against docs/conventions.md section 2 applied to every
+    load by the brute-force loop: gravity along -vertical and the inertia loads
+    -m_j (a + alpha x rho_j), -I_j alpha at each mass item (inertia_loads of
+    rigid_body_acceleration, section 6) plus the applied loads, with cuts at load points and
+    mass items, forward and aft of everything. Also: the accelerations equal
+    rigid_body_acceleration's, the closing residual is zero (free-free closure), the loads are
+    written into ``out``, and strided input arrays give the same loads."""
+    assume(np.linalg.norm(vertical) > 0.1)
+    positions, forces, moments = loads
+    moments = moments if with_moments else np.zeros_like(forces)
+    n, c = len(items.mass), len(forces)
+    extra = data.draw(pos(data.draw(st.integers(0, 4)), lo=-7.0, hi=7.0))
+    xs = np.unique(np.concatenate([positions[:, 0], items.position[:, 0], extra, [-8.0, 8.0]]))
+    y0, z0 = data.draw(vec(2, bound=1.0))
+    stations = np.column_stack([xs, np.full(xs.shape, y0), np.full(xs.shape, z0)])
+    all_pos = np.concatenate([items.position, positions])
+    f = np.concatenate([np.broadcast_to(gravity_forces(items, vertical), (c, n, 3)), forces],
+                       axis=1)
+    m = np.concatenate([np.zeros((c, n, 3)), moments], axis=1)
+    accel = rigid_body_acceleration(items, all_pos, f, m)
+    f_in, m_in = inertia_loads(items, accel)
+    f[:, :n] += f_in
+    m[:, :n] += m_in
+    expected = brute_force_internal(all_pos, f, m, stations)
+
+    strided = np.repeat(forces, 2, axis=1)[:, ::2]     # same values, not contiguous
+    out = np.full(expected.shape, np.nan)
+    got, got_accel, residual = free_free_internal_loads(
+        items, positions, strided, moments if with_moments else None, stations, vertical,
+        out=out)
+    scale = load_scale(all_pos, f, m, stations[0])
+    assert got is out
+    np.testing.assert_allclose(got, expected, atol=ROUNDOFF * scale)
+    np.testing.assert_allclose(residual, 0.0, atol=ROUNDOFF * scale)
+    a_scale = ROUNDOFF * max(np.abs(accel.linear).max(), np.abs(accel.angular).max(), 1.0)
+    np.testing.assert_allclose(got_accel.linear, accel.linear, atol=a_scale)
+    np.testing.assert_allclose(got_accel.angular, accel.angular, atol=a_scale)
+    np.testing.assert_allclose(got_accel.gravity,
+                               -9.80665 * np.asarray(vertical) / np.linalg.norm(vertical),
+                               rtol=1e-15, atol=1e-15)
+
+
+def test_free_free_internal_loads_of_no_case():
+    """No load case: empty loads, accelerations and residuals of the right shapes."""
+    items = MassItems(("a", "b"), np.array([1.0, 2.0]), np.array([[0.0, 0, 0], [1.0, 0, 0]]),
+                      np.broadcast_to(np.eye(3), (2, 3, 3)).copy())
+    stations = np.array([[0.5, 0.0, 0.0], [2.0, 0.0, 0.0]])
+    loads, accel, residual = free_free_internal_loads(
+        items, np.zeros((1, 3)), np.zeros((0, 1, 3)), None, stations)
+    assert loads.shape == (0, 2, 6) and residual.shape == (0, 6)
+    assert accel.linear.shape == accel.angular.shape == (0, 3)
+
+
+@pytest.mark.parametrize(("forces", "moments"), [
+    (np.zeros((2, 1, 3)), None),                      # fewer points than positions
+    (np.zeros((2, 2, 3)), np.zeros((1, 2, 3))),       # moments of another case count
+])
+def test_free_free_internal_loads_refuses_mismatched_shapes(forces, moments):
+    """The compiled kernel reads forces and moments by the positions' indices without bounds
+    checks: arrays of the wrong shape are refused, the shapes echoed."""
+    items = MassItems(("a", "b"), np.array([1.0, 2.0]), np.array([[0.0, 0, 0], [1.0, 0, 0]]),
+                      np.broadcast_to(np.eye(3), (2, 3, 3)).copy())
+    stations = np.array([[0.5, 0.0, 0.0], [2.0, 0.0, 0.0]])
+    with pytest.raises(ValueError, match=r"must have the shape \(cases, points, 3\)"):
+        free_free_internal_loads(items, np.zeros((2, 3)), forces, moments, stations)
 
 
 @SETTINGS

@@ -26,6 +26,7 @@ from slingloads.models.gusts import (
     OneMinusCosineGust,
     StepGust,
     SustainedGust,
+    TabulatedGust,
     standard_gusts,
 )
 from slingloads.models.integration import SolverSettings
@@ -94,18 +95,20 @@ def test_linear_step_and_finite_gust_match_closed_form():
     assert_allclose(h.psi[1], g0 * (step_on - step_off), atol=1e-8)
 
 
-def test_nonlinear_model_small_gust_matches_hand_linearisation():
+@pytest.mark.parametrize("integrate", [integrate_rk4, integrate_dopri])
+def test_nonlinear_model_small_gust_matches_hand_linearisation(integrate):
     """Full model with exactly linear tables and a tiny gust against the closed-form response
     with stiffness and damping derived by hand from the geometry:
     k = q (S L n_b - S_f eta y_b l_f + eta_w CD A l_c),
-    c = 1/2 rho V (-S_f eta y_b l_f^2 + eta_w CD A l_c^2)."""
+    c = 1/2 rho V (-S_f eta y_b l_f^2 + eta_w CD A l_c^2), by the fixed-step RK4 and by the
+    adaptive Dormand-Prince 5(4) (rtol 1e-8) alike."""
     model = linear_model()
     cond = model.condition
     area = 2.0
     k = cond.dynamic_pressure * (3 * 11 * -0.4 - 1 * 0.5 * -3.0 * 5 + 0.95 * 1.0 * area * 6)
     c = 0.5 * cond.density * cond.tas * (-1 * 0.5 * -3.0 * 25 + 0.95 * 1.0 * area * 36)
     s = SolverSettings(t_end=40.0, step=0.02, output_interval=0.1)
-    h = integrate_rk4(model, area, StepGust(0.02, 5.0), settings=s)
+    h = integrate(model, area, StepGust(0.02, 5.0), settings=s)
     g0 = np.arctan2(0.02, cond.tas)
     expected = g0 * np.where(h.time >= 5, oscillator(np.maximum(h.time - 5, 0), k, c)[0], 0.0)
     assert_allclose(h.psi[0], expected, atol=2e-3 * g0)
@@ -181,8 +184,9 @@ def test_adaptive_compiled_runs_match_the_tight_dop853_reference():
     """The compiled adaptive Dormand-Prince 5(4) (rtol 1e-8, atol 1e-10) against the
     reference: scipy's DOP853 at rtol 1e-11, atol 1e-13, one solve_ivp call per run and per
     piece between the gust's breakpoints (:func:`integrate_reference`), on every gust shape:
-    sustained crosswind, finite, 1-cosine (breakpoints off any grid), harmonic and Dryden
-    turbulence, at 1x and 1.6x the neutral area of HC2 from trim. The yaw histories agree
+    sustained crosswind, finite, 1-cosine (breakpoints off any grid), harmonic, Dryden
+    turbulence and a tabulated gust (each of its kinks a segment of the adaptive runs, not of
+    the reference's), at 1x and 1.6x the neutral area of HC2 from trim. The yaw histories agree
     within 1e-3 deg, the accuracy the sizing sweep asks (about 2e-4 deg here); the fixed-step
     RK4 at 0.05 s on the same runs is held to the same bound as the former reference path."""
     ref = sample_reference("HC2")
@@ -192,7 +196,9 @@ def test_adaptive_compiled_runs_match_the_tight_dop853_reference():
     gusts = [SustainedGust(6.0, 5.03, 3.33), FiniteGust(6.0, 5.03, 7.31),
              OneMinusCosineGust(6.0, 5.03, 7.31), HarmonicGust(4.0, 5.0, 9.0),
              DrydenTurbulence(2.0, 250.0, model.condition.tas, onset=5.0, duration=15.0,
-                              seed=1)]
+                              seed=1),
+             TabulatedGust([5.0, 6.0, 8.0, 9.5, 12.0, 14.0, 30.0],
+                           [0.0, 4.0, -2.0, 5.0, 1.0, 0.0, 0.0])]
     tight = SolverSettings(t_end=30.0, step=0.05, output_interval=0.1, method="DOP853",
                            rtol=1e-11, atol=1e-13)
     s = SolverSettings(t_end=30.0, step=0.05, output_interval=0.1, rtol=1e-8, atol=1e-10)
@@ -205,6 +211,23 @@ def test_adaptive_compiled_runs_match_the_tight_dop853_reference():
             assert np.degrees(np.abs(fast.psi - slow.psi)).max() < 1e-3, gust.kind
             assert np.degrees(np.abs(rk4.psi - slow.psi)).max() < 2e-3, gust.kind
             assert np.degrees(np.abs(slow.psi)).max() > 0.5  # the gust did move it
+
+
+def test_adaptive_runs_of_a_very_stiff_model_are_refused_quickly():
+    """A yaw inertia of 0.01 kg m^2 instead of 8,500 (HC2, 2 m^2 parachute): the yaw mode's
+    fastest root, c / I with c = 1/2 rho V eta_w CD A l_c^2 + fin, is about 2.6e5 1/s, so
+    the explicit pair needs steps below 3.3 / |lambda| = 1.3e-5 s, some 10 million of them
+    for a 120 s run. The compiled runs stop at the 200,000 steps a run allowed (all runs at
+    once) and the call is refused with the setting to change, instead of computing for
+    minutes."""
+    ref = sample_reference("HC2")
+    model = YawModel(sample_fuselage("HC2"), sample_fin("HC2"), sample_hardpoints("HC2"), 0.01,
+                     parachute=Parachute(1.0))
+    with pytest.raises(InputError, match="more than 200,000 adaptive steps") as err:
+        integrate_dopri(model, 2.0, standard_gusts(), settings=SolverSettings(t_end=120.0))
+    assert err.value.field == "rtol"
+    sane = replace(model, yaw_inertia=ref.yaw_inertia)
+    assert not integrate_dopri(sane, 2.0, standard_gusts()[:1]).left_table.any()
 
 
 def test_rk4_steps_on_gust_breakpoints_off_the_grid():

@@ -18,6 +18,7 @@ positive; beta positive wind from the right; stable means dN/dbeta > 0.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -573,13 +574,15 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     verdict = np.select(
         [hist.left_table, neutral, ~lin_stable | not_restored, unlinear | over],
         ["divergent", "neutral", "divergent", "beyond limits"], default="stable")
-    reasons = [_reason(*row, fit_range, metric) for row in zip(
-        hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, final_dbeta,
-        unlinear, over, peak_beta, beta_min, beta_max, strict=True)]
+    columns = (hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, final_dbeta,
+               unlinear, over, peak_beta, beta_min, beta_max)  # as Python scalars: quicker
+    reasons = [_reason(*row, fit_range, metric)
+               for row in zip(*(np.asarray(c).tolist() for c in columns), strict=True)]
+    labels = {id(g): (g.kind, g.label) for g in gusts}  # once per distinct gust
     return pd.DataFrame({
         "area [m^2]": areas,
-        "gust": [g.kind for g in gusts],
-        "gust label": [g.label for g in gusts],
+        "gust": [labels[id(g)][0] for g in gusts],
+        "gust label": [labels[id(g)][1] for g in gusts],
         "peak beta [deg]": _deg(peak_beta),
         "peak psi [deg]": _deg(peak_psi),
         "final beta [deg]": _deg(hist.beta[:, -1]),
@@ -624,7 +627,8 @@ def _linear_metrics(model, areas, fit_range):
 
 def _reason(left, exit_time, lin_stable, neutral, not_restored, final, unlinear, over, peak,
             low, high, fit_range, metric):
-    """Why a run got its verdict, in words."""
+    """Why a run got its verdict, in words (the numbers Python floats)."""
+    deg = math.degrees
     why = []
     if left:
         why.append(f"left the aerodynamic tables at t = {exit_time:.4g} s")
@@ -633,17 +637,17 @@ def _reason(left, exit_time, lin_stable, neutral, not_restored, final, unlinear,
     elif not lin_stable:
         why.append("linearly unstable (stiffness or damping <= 0)")
     if not_restored:
-        why.append(f"sideslip {_deg(final):.3g} deg from trim at the end, not back within "
-                   f"{_deg(metric.final_tolerance):.3g} deg")
+        why.append(f"sideslip {deg(final):.3g} deg from trim at the end, not back within "
+                   f"{deg(metric.final_tolerance):.3g} deg")
     if unlinear:
-        why.append(f"sideslip {_deg(low):.3g} to {_deg(high):.3g} deg leaves the linearisation "
-                   f"range [{_deg(fit_range[0]):.3g}, {_deg(fit_range[1]):.3g}] deg")
+        why.append(f"sideslip {deg(low):.3g} to {deg(high):.3g} deg leaves the linearisation "
+                   f"range [{deg(fit_range[0]):.3g}, {deg(fit_range[1]):.3g}] deg")
     if over:
-        why.append(f"peak |beta| {_deg(peak):.3g} deg passes the sideslip limit "
-                   f"{_deg(metric.sideslip_limit):.3g} deg")
+        why.append(f"peak |beta| {deg(peak):.3g} deg passes the sideslip limit "
+                   f"{deg(metric.sideslip_limit):.3g} deg")
     if not why:
-        why.append(f"back to trim; peak |beta| {_deg(peak):.3g} deg within the linearisation "
-                   f"range and the {_deg(metric.sideslip_limit):.3g} deg limit")
+        why.append(f"back to trim; peak |beta| {deg(peak):.3g} deg within the linearisation "
+                   f"range and the {deg(metric.sideslip_limit):.3g} deg limit")
     return "; ".join(why)
 
 

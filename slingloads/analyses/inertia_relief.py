@@ -77,14 +77,28 @@ def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=
     if moments is not None:
         moment_cg += _point_sum(moments)
     if add_gravity:
-        weight = gravity_forces(mass_items, vertical)
-        resultant += weight.sum(axis=0)
-        moment_cg += np.cross(mass_items.position - cg, weight).sum(axis=0)
+        weight, weight_moment = gravity_resultants(mass_items, vertical)
+        resultant += weight
+        moment_cg += weight_moment
     linear = resultant / mass_items.total_mass
-    # pinv: a line of point masses has no inertia about its own axis; a moment about that
-    # axis then stays unbalanced and the closure check reports it.
-    angular = moment_cg @ np.linalg.pinv(mass_items.inertia_about_cg, hermitian=True).T
-    return RigidBodyAcceleration(linear, angular, -G0 * _unit(vertical))
+    angular = moment_cg @ inverse_inertia(mass_items).T
+    return RigidBodyAcceleration(linear, angular, gravity_field(vertical))
+
+
+def inverse_inertia(mass_items):
+    """(Pseudo-)inverse of the inertia tensor about the CG, shape (3, 3). [1/(kg m^2)]
+
+    The pseudo-inverse: a line of point masses has no inertia about its own axis; a moment
+    about that axis then stays unbalanced and the closure check reports it.
+    """
+    return np.linalg.pinv(mass_items.inertia_about_cg, hermitian=True)
+
+
+def gravity_resultants(mass_items, vertical=(0.0, 0.0, 1.0)):
+    """Resultant force [N] and moment about the CG [N m] of the weights, each shape (3,)
+    (the moment is zero but for round-off: the weights act through the CG)."""
+    weight = gravity_forces(mass_items, vertical)
+    return weight.sum(axis=0), np.cross(mass_items.position - mass_items.cg, weight).sum(axis=0)
 
 
 def _point_sum(vectors):
@@ -137,6 +151,12 @@ def gravity_forces(mass_items, vertical=(0.0, 0.0, 1.0)):
         Earth's upward vertical in airframe axes (default +z: the mast vertical). [-]
     """
     return -G0 * mass_items.mass[:, None] * _unit(vertical)[None, :]
+
+
+def gravity_field(vertical=(0.0, 0.0, 1.0)):
+    """Acceleration of gravity, shape (3,): g0 along the earth's downward vertical, airframe
+    axes. [m/s^2]"""
+    return -G0 * _unit(vertical)
 
 
 def _unit(vector):

@@ -393,8 +393,9 @@ class LoadsStudy:
         for first in range(0, max(count, 1), RUN_CHUNK):
             part = slice(first, min(first + RUN_CHUNK, count))
             positions, forces, moments = self.applied_loads(cases.iloc[part])
-            loads[part], accel, residual[part] = free_free_internal_loads(
-                items, positions[n:], forces[:, n:], moments[:, n:], stations, self.vertical)
+            _, accel, residual[part] = free_free_internal_loads(
+                items, positions[n:], forces[:, n:], moments[:, n:], stations, self.vertical,
+                out=loads[part])
             linear[part], angular[part] = accel.linear, accel.angular
             hub[part] = forces[:, n:n + feet].sum(axis=1)
             scale = max(scale, self._load_scale(forces))

@@ -10,8 +10,11 @@ point forces :math:`F_i` at :math:`r_i` and point moments :math:`M_i`:
     V(x_c) = -\\sum_{x_i \\le x_c} F_i, \\qquad
     M(x_c) = -\\sum_{x_i \\le x_c} \\left[(r_i - p_c) \\times F_i + M_i\\right]
 
-computed for all cases and stations at once with one cumulative sum over the points sorted by
-x. The loads are linear in the applied loads, so unit-load solutions superpose.
+:func:`internal_loads` computes them for all cases and stations at once with one cumulative
+sum over the points sorted by x. The loads are linear in the applied loads, so unit-load
+solutions superpose: :func:`free_free_internal_loads` adds gravity and inertia relief as seven
+precomputed responses, and sums only the few applied load points per case, in a compiled
+kernel that writes each case's loads once (:mod:`slingloads.analyses.sfbm_kernel`).
 """
 
 from __future__ import annotations
@@ -81,37 +84,6 @@ def _forward_sums(positions, forces, moments, station_points):
     return out
 
 
-class _ForwardSums:
-    """:func:`_forward_sums` for chunks of at most ``size`` cases, the point order, station
-    counts and working arrays prepared once."""
-
-    def __init__(self, positions, station_points, size):
-        positions = np.asarray(positions, float)
-        station_points = np.asarray(station_points, float)
-        axis = station_points[0, 1:]
-        self.order = np.argsort(positions[:, 0], kind="stable")
-        pos = positions[self.order]
-        self.arm = pos - np.array([0.0, axis[0], axis[1]])
-        self.count = np.searchsorted(pos[:, 0], station_points[:, 0], side="right")
-        self.x = station_points[:, 0]
-        self.per_point = np.zeros((size, len(pos) + 1, 6))
-        self.out = np.empty((size, len(self.count), 6))
-
-    def __call__(self, forces, moments):
-        n = len(forces)
-        per_point, out = self.per_point[:n], self.out[:n]
-        f = forces[:, self.order, :]
-        per_point[:, 1:, :3] = f
-        _cross_into(self.arm, f, per_point[:, 1:, 3:])
-        if moments is not None:
-            per_point[:, 1:, 3:] += moments[:, self.order, :]
-        np.cumsum(per_point, axis=1, out=per_point)
-        np.take(per_point, self.count, axis=1, out=out)
-        out[..., 4] += self.x * out[..., 2]
-        out[..., 5] -= self.x * out[..., 1]
-        return out
-
-
 def _cross_into(r, f, out):
     """out = r x f, r of shape (p, 3) broadcast over the cases of f (c, p, 3)."""
     rx, ry, rz = r[:, 0], r[:, 1], r[:, 2]
@@ -158,21 +130,17 @@ def closure_residual(positions, forces, moments, reference):
     return np.concatenate([total_f, total_m], axis=1)
 
 
-#: Load cases per chunk of :func:`free_free_internal_loads`: the working arrays of a chunk
-#: (a few times chunk x stations x 6 floats) stay in cache and the result is written once.
-CHUNK_CASES = 128
-
-
 def free_free_internal_loads(mass_items, positions, forces, moments, station_points,
-                             vertical=(0.0, 0.0, 1.0), *, chunk=CHUNK_CASES):
+                             vertical=(0.0, 0.0, 1.0), *, out=None):
     """Internal loads of the free-free airframe: applied loads, gravity and inertia relief.
 
     Gravity acts at every mass item; the rigid-body accelerations balance gravity and the
     applied loads (:mod:`slingloads.analyses.inertia_relief`), and their inertia loads enter
     through the unit-acceleration responses (:func:`unit_inertia_responses`), so only the few
-    applied load points are summed per case. The cases are worked in chunks of ``chunk``,
-    each written once into the result, so that the memory used beyond the result is a few
-    chunks' worth, whatever the number of cases.
+    applied load points are summed per case. The cases are worked one at a time by a compiled
+    kernel (:mod:`slingloads.analyses.sfbm_kernel`) that writes each case's loads once into
+    the result: the memory used beyond the result is a few rows, whatever the number of
+    cases.
 
     Parameters
     ----------
@@ -180,14 +148,14 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
     positions : ndarray, shape (p, 3)
         Points of the applied loads (gravity excluded). [m]
     forces, moments : ndarray, shape (c, p, 3)
-        Applied forces [N] and moments [N m].
+        Applied forces [N] and moments [N m] (``moments`` may be None).
     station_points : ndarray, shape (s, 3)
         [m]
     vertical : array_like, shape (3,)
         Earth's upward vertical in airframe axes, along which gravity acts downwards (the
         attitude's, :mod:`slingloads.models.attitude`). [-]
-    chunk : int
-        Cases per chunk, >= 1.
+    out : ndarray, shape (c, s, 6), optional
+        C-contiguous float array to write the loads into (instead of a new one).
 
     Returns
     -------
@@ -198,36 +166,54 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
         Internal loads at a cut aft of every load and mass item, which free-free closure
         makes zero. [N, N m]
     """
-    from slingloads.analyses.inertia_relief import gravity_forces, rigid_body_acceleration
+    from slingloads.analyses.inertia_relief import (
+        RigidBodyAcceleration,
+        gravity_field,
+        gravity_forces,
+        gravity_resultants,
+        inverse_inertia,
+    )
+    from slingloads.analyses.sfbm_kernel import free_free_rows
 
-    acceleration = rigid_body_acceleration(mass_items, positions, forces, moments,
-                                           add_gravity=True, vertical=vertical)
-    linear, angular = acceleration.linear, acceleration.angular
-    x_end = max(np.max(positions[:, 0]), mass_items.position[:, 0].max(),
+    positions = np.asarray(positions, float)
+    forces = np.asarray(forces, float)
+    station_points = np.asarray(station_points, float)
+    x_end = max(np.max(positions[:, 0], initial=-np.inf), mass_items.position[:, 0].max(),
                 station_points[:, 0].max()) + 1.0
     cuts = np.vstack([station_points, [x_end, station_points[0, 1], station_points[0, 2]]])
-    # gravity and the six unit inertia fields, superposed by one matrix product
+    # gravity and the six unit inertia fields, superposed per case
     basis = np.concatenate([
         unit_inertia_responses(mass_items, cuts),
         internal_loads(mass_items.position, gravity_forces(mass_items, vertical)[None], None,
                        cuts),
     ]).reshape(7, -1)
-    weights = np.concatenate([linear, angular, np.ones((len(linear), 1))], axis=1)
-    cases, n_st = len(linear), len(station_points)
-    chunk = int(chunk)
-    if chunk < 1:
-        raise InputError("internal loads: cases per chunk must be >= 1", chunk)
-    loads = np.empty((cases, n_st, 6))
-    residual = np.empty((cases, 6))
-    forward = _ForwardSums(positions, cuts, min(chunk, max(cases, 1)))
-    for first in range(0, cases, chunk):
-        part = slice(first, min(first + chunk, cases))
-        block = loads[part]
-        # einsum: a product of inner size 7, single-threaded (a threaded BLAS call per chunk
-        # costs more than it saves, and much more on a busy machine)
-        np.einsum("ck,kn->cn", weights[part], basis[:, :-6], out=block.reshape(len(block), -1))
-        sums = forward(forces[part], None if moments is None else moments[part])
-        block -= sums[:, :-1]
-        np.einsum("ck,kn->cn", weights[part], basis[:, -6:], out=residual[part])
-        residual[part] -= sums[:, -1]
-    return loads, acceleration, residual
+    cases, n_st = len(forces), len(station_points)
+    loads = _result_array(out, (cases, n_st, 6))
+    residual, linear, angular = np.empty((cases, 6)), np.empty((cases, 3)), np.empty((cases, 3))
+    axis_point = np.array([0.0, cuts[0, 1], cuts[0, 2]])
+    order = np.argsort(positions[:, 0], kind="stable")
+    count = np.searchsorted(positions[order, 0], cuts[:, 0], side="right")
+    rigid = np.concatenate([mass_items.cg - axis_point, *gravity_resultants(mass_items, vertical),
+                            [1.0 / mass_items.total_mass], inverse_inertia(mass_items).ravel()])
+    has_moments = moments is not None
+    moments = np.asarray(moments, float) if has_moments else np.empty((0, 0, 3))
+    # the kernel does not check its indices
+    for name, array in (("forces", forces), ("moments", moments if has_moments else forces)):
+        if array.shape != (cases, len(positions), 3):
+            raise ValueError(f"internal loads: {name} must have the shape (cases, points, 3) = "
+                             f"{(cases, len(positions), 3)}, not {array.shape}")
+    free_free_rows(basis, forces, moments, has_moments, order, positions[order] - axis_point,
+                   count, cuts[:, 0].copy(), rigid, loads.reshape(cases, 6 * n_st), residual,
+                   linear, angular)
+    return loads, RigidBodyAcceleration(linear, angular, gravity_field(vertical)), residual
+
+
+def _result_array(out, shape):
+    """``out`` if it is a C-contiguous float array of ``shape``, a new array if None."""
+    if out is None:
+        return np.empty(shape)
+    if out.shape != shape or out.dtype != np.float64 or not out.flags.c_contiguous:
+        raise ValueError(f"internal loads: out must be a C-contiguous float64 array of shape "
+                         f"{shape}, not {out.dtype} {out.shape} (C-contiguous: "
+                         f"{out.flags.c_contiguous})")
+    return out

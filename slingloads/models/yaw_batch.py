@@ -13,15 +13,20 @@ keeps the cache valid.
 The adaptive kernel :func:`dopri_batch` is the Dormand-Prince pair 5(4) of
 :func:`scipy.integrate.solve_ivp`'s ``RK45`` [1]_ (same error norm, step-size control and
 fourth-order dense output [2]_): each run is integrated segment by segment between its gust's
-breakpoints (no step straddles a jump or a kink) with its own step, and sampled on the output
-times from the dense output. The gust is evaluated in the kernel, exactly, from its pieces
-(between breakpoints ``c0 + c1 (t - start) + sum a cos(omega (t - ref) + phase)``); at a
-segment's end it takes the value just before the breakpoint.
+breakpoints and the starts of its pieces (no step straddles a jump or a kink) with its own
+step, and sampled on the output times from the dense output. The gust is evaluated in the
+kernel, exactly, from the segment's piece (``c0 + c1 (t - start) + sum a cos(omega (t - ref)
++ phase)``), so that at a segment's end it takes the value just before the breakpoint; on a
+steady piece (a constant) the relative wind is computed once per segment instead of at every
+stage.
 
 Model row (``M``): 1/2 rho [kg/m^3], yaw inertia [kg m^2], then flags and constants: has
 fuselage, has fin, fin at its local sideslip, has parachute, fin arm dx, dy [m], fin table
 limits lo, hi [rad], parachute CD [-], parachute arm dx, dy [m], fuselage table limits lo,
-hi [rad], true airspeed [m/s].
+hi [rad], true airspeed [m/s]. Tables: the fuselage's ``fus_x`` [rad], ``fus_n`` (N per
+unit q about the axis) [m^3] and the slopes of its segments ``fus_s`` [m^3/rad]; the fin's
+``fin_x`` [rad], ``fin_k`` (S eta CY) [m^2] and ``fin_s`` [m^2/rad]: a lookup is a search from
+the interval found last, one multiplication and one addition.
 
 References
 ----------
@@ -47,6 +52,8 @@ _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True
  CHUTE_CD, CHUTE_DX, CHUTE_DY, FUS_LO, FUS_HI, TAS) = range(16)
 #: Length of a model row.
 N_MODEL = 16
+#: Chunks of runs of the adaptive kernel, each run j in chunk j mod CHUNKS.
+CHUNKS = 64
 #: Smallest adaptive step before a run that leaves a table is stopped. [s]
 SMALLEST_STEP = 1e-6
 
@@ -55,36 +62,35 @@ DP_C, DP_A, DP_E, DP_P = dormand_prince.C, dormand_prince.A, dormand_prince.E, d
 
 
 @_jit
-def interp(x, xp, fp, hint, slot):
-    """``numpy.interp`` for one value: linear between breakpoints, end values outside.
+def interp(x, xp, fp, slope, lo):
+    """``numpy.interp`` for one value, and the interval used: linear between breakpoints
+    (``slope`` (n - 1,) the slopes of the segments), end values outside.
 
-    The interval is searched from the one found last (``hint[slot]``, updated): successive
-    evaluations of a run move little along a table.
+    The interval is searched from ``lo``, the one found last: successive evaluations of a run
+    move little along a table.
     """
     n = xp.size
     if x != x:
-        return x
+        return x, lo
     if x <= xp[0]:
-        return fp[0]
+        return fp[0], lo
     if x >= xp[n - 1]:
-        return fp[n - 1]
-    lo = hint[slot]
+        return fp[n - 1], lo
     if lo < 0 or lo > n - 2:
         lo = 0
     while xp[lo] > x:
         lo -= 1
     while xp[lo + 1] <= x:
         lo += 1
-    hint[slot] = lo
-    slope = (fp[lo + 1] - fp[lo]) / (xp[lo + 1] - xp[lo])
-    return slope * (x - xp[lo]) + fp[lo]
+    return slope[lo] * (x - xp[lo]) + fp[lo], lo
 
 
 @_jit
-def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fin_x, fin_k, hint):
-    """(psi'' [rad/s^2], outside a table) at yaw ``psi`` [rad], rate [rad/s], wind angle
-    ``gamma`` [rad], relative speed ``v_rel`` [m/s] and parachute ``area`` [m^2]; ``hint``
-    (2,) the table intervals found last (fuselage, fin), updated."""
+def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
+                     fin_s, lo_fus, lo_fin):
+    """(psi'' [rad/s^2], outside a table, fuselage interval, fin interval) at yaw ``psi``
+    [rad], rate [rad/s], wind angle ``gamma`` [rad], relative speed ``v_rel`` [m/s] and
+    parachute ``area`` [m^2]; ``lo_fus``, ``lo_fin`` the table intervals found last."""
     half_rho = M[HALF_RHO]
     beta = gamma - psi
     q = half_rho * (v_rel * v_rel)
@@ -93,7 +99,8 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fin_x, fin_
     n_fin = 0.0
     n_chute = 0.0
     if M[HAS_FUS] != 0.0:
-        n_fus = q * interp(beta, fus_x, fus_n, hint, 0)
+        cn, lo_fus = interp(beta, fus_x, fus_n, fus_s, lo_fus)
+        n_fus = q * cn
         inside = inside and (beta >= M[FUS_LO]) and (beta <= M[FUS_HI])
     ux0 = v_rel * math.cos(beta)
     uy0 = -v_rel * math.sin(beta)
@@ -106,20 +113,21 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fin_x, fin_
             q_f = half_rho * (ux * ux + uy * uy)
         else:
             beta_f, q_f = beta, q
-        n_fin = (-dx * q_f) * interp(beta_f, fin_x, fin_k, hint, 1)
+        k, lo_fin = interp(beta_f, fin_x, fin_k, fin_s, lo_fin)
+        n_fin = (-dx * q_f) * k
         inside = inside and (beta_f >= M[FIN_LO]) and (beta_f <= M[FIN_HI])
     if M[HAS_CHUTE] != 0.0:
         dx, dy = M[CHUTE_DX], M[CHUTE_DY]
         ux = ux0 - rate * dy
         uy = uy0 + rate * dx
-        scale = (half_rho * M[CHUTE_CD]) * area * math.hypot(ux, uy)
+        scale = (half_rho * M[CHUTE_CD]) * area * math.sqrt(ux * ux + uy * uy)
         n_chute = scale * (dy * ux - dx * uy)
-    return (n_fus + n_fin + n_chute) / M[INERTIA], not inside
+    return (n_fus + n_fin + n_chute) / M[INERTIA], not inside, lo_fus, lo_fin
 
 
 @_parallel_jit
-def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fin_x, fin_k,
-              out_psi, out_rate, left, exit_step):
+def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fus_s, fin_x,
+              fin_k, fin_s, out_psi, out_rate, left, exit_step):
     """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,).
 
     ``wind`` (gusts, steps, 3, 2): the wind angle gamma [rad] and relative speed [m/s] of each
@@ -127,12 +135,14 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fi
     gust. ``step`` (steps,) the step lengths [s], ``stored`` (steps + 1,) True at the output
     nodes; ``out_psi``, ``out_rate`` (runs, outputs) receive the histories, ``left`` and
     ``exit_step`` (runs,) whether and in which step a run left a table (its state is then
-    frozen at the start of that step, its rate set to zero).
+    frozen at the start of that step, its rate set to zero). ``M`` and the tables as in
+    the module notes.
     """
     runs = psi0.size
     n_steps = step.size
     for j in numba.prange(runs):
-        hint = np.zeros(2, dtype=np.int64)
+        lf = 0
+        lk = 0
         w = wind[index[j]]
         area = areas[j]
         psi, rate = psi0[j], rate0[j]
@@ -146,17 +156,20 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fi
                 ga, va = w[i, 0, 0], w[i, 0, 1]
                 gb, vb = w[i, 1, 0], w[i, 1, 1]
                 gc, vc = w[i, 2, 0], w[i, 2, 1]
-                k1r, o1 = yaw_acceleration(psi, rate, ga, va, area, M, fus_x, fus_n, fin_x,
-                                           fin_k, hint)
+                k1r, o1, lf, lk = yaw_acceleration(psi, rate, ga, va, area, M, fus_x, fus_n,
+                                                   fus_s, fin_x, fin_k, fin_s, lf, lk)
                 k1p = rate
-                k2r, o2 = yaw_acceleration(psi + half * k1p, rate + half * k1r, gb, vb, area,
-                                           M, fus_x, fus_n, fin_x, fin_k, hint)
+                k2r, o2, lf, lk = yaw_acceleration(psi + half * k1p, rate + half * k1r, gb, vb,
+                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
+                                                   fin_s, lf, lk)
                 k2p = rate + half * k1r
-                k3r, o3 = yaw_acceleration(psi + half * k2p, rate + half * k2r, gb, vb, area,
-                                           M, fus_x, fus_n, fin_x, fin_k, hint)
+                k3r, o3, lf, lk = yaw_acceleration(psi + half * k2p, rate + half * k2r, gb, vb,
+                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
+                                                   fin_s, lf, lk)
                 k3p = rate + half * k2r
-                k4r, o4 = yaw_acceleration(psi + dt * k3p, rate + dt * k3r, gc, vc, area, M,
-                                           fus_x, fus_n, fin_x, fin_k, hint)
+                k4r, o4, lf, lk = yaw_acceleration(psi + dt * k3p, rate + dt * k3r, gc, vc,
+                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
+                                                   fin_s, lf, lk)
                 k4p = rate + dt * k3r
                 if o1 or o2 or o3 or o4:
                     gone = True
@@ -173,151 +186,181 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fi
 
 
 @_jit
-def gust_at(t, before, g, p_start, p_count, p_coef, h_off, h_count, harm, hint):
-    """Lateral gust [m/s] of distinct gust ``g`` at time ``t`` [s]: the piece that starts at
-    or before ``t`` (strictly before when ``before``: the value just before a breakpoint).
-
-    ``p_start`` (gusts, pieces) the pieces' starts, ``p_count`` (gusts,) how many;
-    ``p_coef`` (gusts, pieces, 3): c0 [m/s], c1 [m/s^2], ref [s]; ``h_off``, ``h_count``
-    (gusts, pieces) the piece's rows of ``harm`` (terms, 3): amplitude [m/s], omega [rad/s],
-    phase [rad]. ``hint[2]`` the piece found last, updated.
-    """
-    n = p_count[g]
-    lo = hint[2]
-    if lo < 0 or lo > n - 1:
-        lo = 0
-    while lo > 0 and (p_start[g, lo] > t or (before and p_start[g, lo] >= t)):
-        lo -= 1
-    while lo + 1 < n and (p_start[g, lo + 1] < t or (not before and p_start[g, lo + 1] == t)):
-        lo += 1
-    hint[2] = lo
-    ref = p_coef[g, lo, 2]
-    v = p_coef[g, lo, 0] + p_coef[g, lo, 1] * (t - p_start[g, lo])
-    first = h_off[g, lo]
-    for k in range(first, first + h_count[g, lo]):
+def gust_value(t, start, c0, c1, ref, first, count, harm):
+    """Lateral gust [m/s] at time ``t`` [s] on one piece: ``c0 + c1 (t - start) + sum a
+    cos(omega (t - ref) + phase)`` over rows ``first`` to ``first + count`` of ``harm``
+    (terms, 3): amplitude [m/s], omega [rad/s], phase [rad]."""
+    v = c0 + c1 * (t - start)
+    for k in range(first, first + count):
         v += harm[k, 0] * math.cos(harm[k, 1] * (t - ref) + harm[k, 2])
     return v
 
 
 @_jit
-def _acceleration_at(t, before, psi, rate, g, area, M, fus_x, fus_n, fin_x, fin_k, p_start,
-                     p_count, p_coef, h_off, h_count, harm, hint):
-    """(psi'' [rad/s^2], outside a table) at time ``t`` with the gust evaluated in place."""
-    v = gust_at(t, before, g, p_start, p_count, p_coef, h_off, h_count, harm, hint)
+def relative_wind(v, tas):
+    """(wind angle gamma = atan2(v, V) [rad], relative speed sqrt(V^2 + v^2) [m/s]) of a lateral
+    gust ``v`` [m/s] at true airspeed ``tas`` [m/s]."""
+    return math.atan2(v, tas), math.sqrt(tas * tas + v * v)
+
+
+@_jit
+def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p_coef, h_off,
+               h_count, harm, interval, rtol, atol, max_step, first_step, max_steps, stop, M,
+               fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left, exit_time,
+               steps):
+    """Run ``j`` of :func:`dopri_batch` (same arguments)."""
+    n_out = out_psi.shape[1]
     tas = M[TAS]
-    return yaw_acceleration(psi, rate, math.atan2(v, tas), math.hypot(tas, v), area, M,
-                            fus_x, fus_n, fin_x, fin_k, hint)
+    kp = np.empty(7)
+    kr = np.empty(7)
+    lf = 0
+    lk = 0
+    g = index[j]
+    area = areas[j]
+    psi, rate = psi0[j], rate0[j]
+    out_psi[j, 0], out_rate[j, 0] = psi, rate
+    sample = 1
+    t = 0.0
+    h = first_step
+    gone = False
+    accepted = 0
+    tried = 0
+    rejected = False
+    for s in range(n_seg[g]):
+        b = seg_end[g, s]
+        k = seg_piece[g, s]
+        start, c0, c1, ref = p_start[g, k], p_coef[g, k, 0], p_coef[g, k, 1], p_coef[g, k, 2]
+        first, count = h_off[g, k], h_count[g, k]
+        steady = c1 == 0.0 and count == 0
+        gamma, v_rel = relative_wind(c0, tas)
+        if not steady:
+            gamma, v_rel = relative_wind(
+                gust_value(t, start, c0, c1, ref, first, count, harm), tas)
+        acc, o, lf, lk = yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n,
+                                          fus_s, fin_x, fin_k, fin_s, lf, lk)
+        kp[0], kr[0] = rate, acc
+        gone = o
+        while not gone and t < b:
+            if tried == max_steps or stop[0] != 0:  # over budget: the call is refused
+                stop[0] = 1
+                steps[j] = -1
+                return
+            tried += 1
+            h = min(h, max_step)
+            last = t + h >= b - 1e-12 * max(1.0, b)
+            if last:
+                h = b - t
+            # stages 2 to 7 (7: at the fifth-order solution, first same as last)
+            outside = False
+            for i in range(1, 7):
+                yp, yr = psi, rate
+                for m in range(i):
+                    yp += h * DP_A[i, m] * kp[m]
+                    yr += h * DP_A[i, m] * kr[m]
+                if not steady:
+                    when = b if (last and DP_C[i] == 1.0) else t + DP_C[i] * h
+                    gamma, v_rel = relative_wind(
+                        gust_value(when, start, c0, c1, ref, first, count, harm), tas)
+                acc, o, lf, lk = yaw_acceleration(yp, yr, gamma, v_rel, area, M, fus_x,
+                                                  fus_n, fus_s, fin_x, fin_k, fin_s, lf,
+                                                  lk)
+                kp[i], kr[i] = yr, acc
+                outside = outside or o
+            new_psi, new_rate = yp, yr  # the last stage's argument is the solution
+            if outside:
+                if h < 2.0 * SMALLEST_STEP:
+                    gone = True
+                    break
+                h *= 0.5
+                rejected = True
+                continue
+            ep = 0.0
+            er = 0.0
+            for i in range(7):
+                ep += DP_E[i] * kp[i]
+                er += DP_E[i] * kr[i]
+            sp = atol + rtol * max(abs(psi), abs(new_psi))
+            sr = atol + rtol * max(abs(rate), abs(new_rate))
+            err = math.sqrt(0.5 * ((h * ep / sp) ** 2 + (h * er / sr) ** 2))
+            if err > 1.0:
+                h *= max(0.2, 0.9 * err ** -0.2)
+                rejected = True
+                continue
+            t_new = b if last else t + h
+            # dense output at the samples in (t, t_new]: psi + h theta sum_k q_k theta^k
+            if sample < n_out and sample * interval <= t_new + 1e-9 * interval:
+                qp0 = qp1 = qp2 = qp3 = 0.0
+                qr0 = qr1 = qr2 = qr3 = 0.0
+                for i in range(7):
+                    qp0 += kp[i] * DP_P[i, 0]
+                    qp1 += kp[i] * DP_P[i, 1]
+                    qp2 += kp[i] * DP_P[i, 2]
+                    qp3 += kp[i] * DP_P[i, 3]
+                    qr0 += kr[i] * DP_P[i, 0]
+                    qr1 += kr[i] * DP_P[i, 1]
+                    qr2 += kr[i] * DP_P[i, 2]
+                    qr3 += kr[i] * DP_P[i, 3]
+                while sample < n_out and sample * interval <= t_new + 1e-9 * interval:
+                    theta = (sample * interval - t) / h
+                    out_psi[j, sample] = psi + h * theta * (
+                        qp0 + theta * (qp1 + theta * (qp2 + theta * qp3)))
+                    out_rate[j, sample] = rate + h * theta * (
+                        qr0 + theta * (qr1 + theta * (qr2 + theta * qr3)))
+                    sample += 1
+            accepted += 1
+            t = t_new
+            psi, rate = new_psi, new_rate
+            kp[0], kr[0] = kp[6], kr[6]
+            grow = 10.0 if err == 0.0 else min(10.0, 0.9 * err ** -0.2)
+            if rejected:  # no growth right after a rejected step
+                grow = min(1.0, grow)
+            rejected = False
+            h *= grow
+        if gone:
+            break
+    if gone:
+        left[j] = True
+        exit_time[j] = t
+        rate = 0.0
+    while sample < n_out:
+        out_psi[j, sample] = psi
+        out_rate[j, sample] = rate
+        sample += 1
+    steps[j] = accepted
 
 
 @_parallel_jit
-def dopri_batch(psi0, rate0, areas, index, seg_end, n_seg, p_start, p_count, p_coef, h_off,
-                h_count, harm, interval, rtol, atol, max_step, first_step, M, fus_x, fus_n,
-                fin_x, fin_k, out_psi, out_rate, left, exit_time, steps):
+def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p_coef, h_off,
+                h_count, harm, interval, rtol, atol, max_step, first_step, max_steps, stop, M,
+                fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left, exit_time,
+                steps):
     """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,) by
     the adaptive Dormand-Prince 5(4) pair.
 
     Run j follows distinct gust ``g = index[j]``: ``n_seg[g]`` segments ending at
-    ``seg_end[g]`` (the gust's breakpoints, then the end time), the gust's pieces as in
-    :func:`gust_at`. The local error estimate is kept within ``atol + rtol max(|y|, |y_new|)``
-    (root mean square over psi and r) and the step within ``max_step``; ``first_step`` is the
-    first trial step. ``out_psi``, ``out_rate`` (runs, outputs) receive the histories every
-    ``interval`` from t = 0 (dense output); ``left``, ``exit_time`` (runs,) whether and when
-    a run left a table: a stage outside a table halves the step, and below
-    :data:`SMALLEST_STEP` the run stops (its state frozen from then, its rate set to zero).
-    ``steps`` (runs,) receives the accepted steps of each run.
+    ``seg_end[g]`` (the gust's breakpoints and the starts of its pieces, then the end time),
+    segment s on piece ``seg_piece[g, s]`` of the gust. A piece k starts at ``p_start[g, k]``
+    [s], ``p_coef[g, k]`` = c0 [m/s], c1 [m/s^2], ref [s], its harmonic terms are rows
+    ``h_off[g, k]`` to ``h_off[g, k] + h_count[g, k]`` of ``harm`` (:func:`gust_value`); on a
+    steady piece (c1 = 0, no terms) the relative wind is computed once for the segment. The
+    local error estimate is kept within ``atol + rtol max(|y|, |y_new|)`` (root mean square
+    over psi and r) and the step within ``max_step``; ``first_step`` is the first trial step.
+    ``out_psi``, ``out_rate`` (runs, outputs) receive the histories every ``interval`` from
+    t = 0 (dense output); ``left``, ``exit_time`` (runs,) whether and when a run left a
+    table: a stage outside a table halves the step, and below :data:`SMALLEST_STEP` the run
+    stops (its state frozen from then, its rate set to zero). ``steps`` (runs,) receives the
+    accepted steps of each run. A run that would try more than ``max_steps`` steps (accepted
+    or rejected) sets ``stop[0]`` (an int64 array of one element, 0 on entry), and every run
+    then stops at once with ``steps[j] = -1``: the call is to be refused, its histories are
+    not complete. ``M`` and the tables as in the module notes.
     """
+    # runs spread over the chunks (run j in chunk j mod CHUNKS): the chunks, shared out in
+    # order among the threads, then carry like mixes of cheap and costly runs
     runs = psi0.size
-    n_out = out_psi.shape[1]
-    for j in numba.prange(runs):
-        hint = np.zeros(3, dtype=np.int64)
-        kp = np.empty(7)
-        kr = np.empty(7)
-        g = index[j]
-        area = areas[j]
-        psi, rate = psi0[j], rate0[j]
-        out_psi[j, 0], out_rate[j, 0] = psi, rate
-        sample = 1
-        t = 0.0
-        h = first_step
-        gone = False
-        accepted = 0
-        rejected = False
-        for s in range(n_seg[g]):
-            b = seg_end[g, s]
-            acc, o = _acceleration_at(t, False, psi, rate, g, area, M, fus_x, fus_n, fin_x,
-                                      fin_k, p_start, p_count, p_coef, h_off, h_count, harm,
-                                      hint)
-            kp[0], kr[0] = rate, acc
-            gone = o
-            while not gone and t < b:
-                h = min(h, max_step)
-                last = t + h >= b - 1e-12 * max(1.0, b)
-                if last:
-                    h = b - t
-                # stages 2 to 7 (7: at the fifth-order solution, first same as last)
-                outside = False
-                for i in range(1, 7):
-                    yp, yr = psi, rate
-                    for m in range(i):
-                        yp += h * DP_A[i, m] * kp[m]
-                        yr += h * DP_A[i, m] * kr[m]
-                    when = b if (last and DP_C[i] == 1.0) else t + DP_C[i] * h
-                    acc, o = _acceleration_at(when, last and DP_C[i] == 1.0, yp, yr, g, area,
-                                              M, fus_x, fus_n, fin_x, fin_k, p_start, p_count,
-                                              p_coef, h_off, h_count, harm, hint)
-                    kp[i], kr[i] = yr, acc
-                    outside = outside or o
-                new_psi, new_rate = yp, yr  # the last stage's argument is the solution
-                if outside:
-                    if h < 2.0 * SMALLEST_STEP:
-                        gone = True
-                        break
-                    h *= 0.5
-                    rejected = True
-                    continue
-                ep = 0.0
-                er = 0.0
-                for i in range(7):
-                    ep += DP_E[i] * kp[i]
-                    er += DP_E[i] * kr[i]
-                sp = atol + rtol * max(abs(psi), abs(new_psi))
-                sr = atol + rtol * max(abs(rate), abs(new_rate))
-                err = math.sqrt(0.5 * ((h * ep / sp) ** 2 + (h * er / sr) ** 2))
-                if err > 1.0:
-                    h *= max(0.2, 0.9 * err ** -0.2)
-                    rejected = True
-                    continue
-                t_new = b if last else t + h
-                # dense output at the samples in (t, t_new]
-                while sample < n_out and sample * interval <= t_new + 1e-9 * interval:
-                    theta = (sample * interval - t) / h
-                    dp = 0.0
-                    dr = 0.0
-                    for i in range(7):
-                        w = DP_P[i, 0] + theta * (DP_P[i, 1] + theta * (
-                            DP_P[i, 2] + theta * DP_P[i, 3]))
-                        dp += kp[i] * w
-                        dr += kr[i] * w
-                    out_psi[j, sample] = psi + h * theta * dp
-                    out_rate[j, sample] = rate + h * theta * dr
-                    sample += 1
-                accepted += 1
-                t = t_new
-                psi, rate = new_psi, new_rate
-                kp[0], kr[0] = kp[6], kr[6]
-                grow = 10.0 if err == 0.0 else min(10.0, 0.9 * err ** -0.2)
-                if rejected:  # no growth right after a rejected step
-                    grow = min(1.0, grow)
-                rejected = False
-                h *= grow
-            if gone:
-                break
-        if gone:
-            left[j] = True
-            exit_time[j] = t
-            rate = 0.0
-        while sample < n_out:
-            out_psi[j, sample] = psi
-            out_rate[j, sample] = rate
-            sample += 1
-        steps[j] = accepted
+    chunks = min(runs, CHUNKS)
+    for c in numba.prange(chunks):
+        for j in range(c, runs, chunks):
+            _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p_coef,
+                       h_off, h_count, harm, interval, rtol, atol, max_step, first_step,
+                       max_steps, stop, M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi,
+                       out_rate, left, exit_time, steps)

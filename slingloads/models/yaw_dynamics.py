@@ -57,7 +57,12 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from slingloads.errors import InputError
-from slingloads.limits import MAX_ODE_EVALUATIONS, evaluation_budget
+from slingloads.limits import (
+    MAX_CHUTE_RUN_STEPS,
+    MAX_CHUTE_STEPS,
+    MAX_ODE_EVALUATIONS,
+    evaluation_budget,
+)
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.airframe import Hardpoints
 from slingloads.models.flight import SIZING_SPEED, FlightCondition
@@ -451,7 +456,9 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kerne
 
 
 def _compiled_model(model):
-    """The model row and tables of :func:`slingloads.models.yaw_batch.rk4_batch`."""
+    """The model row and tables of :mod:`slingloads.models.yaw_batch`: ``M``, ``fus_x``,
+    ``fus_n``, ``fus_s``, ``fin_x``, ``fin_k``, ``fin_s`` (the tables with the slopes of their
+    segments)."""
     from slingloads.models import yaw_batch as yb
 
     row = np.zeros(yb.N_MODEL)
@@ -469,7 +476,11 @@ def _compiled_model(model):
     if model.parachute is not None:
         row[yb.CHUTE_CD], row[yb.CHUTE_DX], row[yb.CHUTE_DY] = model._chute
         row[yb.HAS_CHUTE] = 1.0
-    return (row, *(np.ascontiguousarray(a, dtype=float) for a in (fus_x, fus_n, fin_x, fin_k)))
+    tables = []
+    for x, f in ((fus_x, fus_n), (fin_x, fin_k)):
+        slope = np.zeros(1) if x is none else np.diff(f) / np.diff(x)  # none: never read
+        tables += [np.ascontiguousarray(a, dtype=float) for a in (x, f, slope)]
+    return (row, *tables)
 
 
 #: First trial step of the adaptive runs (the step then grows tenfold a step at most). [s]
@@ -487,7 +498,12 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     between their gust's breakpoints, and sampled on the output times from the method's
     fourth-order dense output. The gust is evaluated in the kernel from its exact formula
     (:func:`_gust_pieces`). A stage outside a table halves the step; a run that still leaves
-    below 1e-6 s is flagged and frozen from then, never clamped silently.
+    below 1e-6 s is flagged and frozen from then, never clamped silently. The work is
+    bounded: each run may try :data:`~slingloads.limits.MAX_CHUTE_STEPS` steps (accepted or
+    rejected), and :data:`~slingloads.limits.MAX_CHUTE_RUN_STEPS` / runs when that is fewer;
+    a run that needs more stops every run and the call raises an :class:`InputError`
+    (``field="rtol"``) instead of keeping the cores busy for hours (a very stiff model, a
+    tolerance near round-off).
 
     Parameters
     ----------
@@ -515,10 +531,11 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     unique, index = _distinct(gusts)
     times = settings.output_times()
     t_end = float(times[-1])
-    segments = [_segment_ends(g, t_end) for g in unique]
-    seg_end = _padded(segments)
-    n_seg = np.array([len(e) for e in segments], dtype=np.int64)
     pieces = [_gust_pieces(g, t_end) for g in unique]
+    segments = [_segments(g, p, t_end) for g, p in zip(unique, pieces, strict=True)]
+    seg_end = _padded([e for e, _ in segments], np.inf)
+    seg_piece = _padded([k for _, k in segments], 0).astype(np.int64)
+    n_seg = np.array([len(e) for e, _ in segments], dtype=np.int64)
     width = max(len(p) for p in pieces)
     p_start = np.full((len(unique), width), np.inf)
     p_coef = np.zeros((len(unique), width, 3))
@@ -534,31 +551,43 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
             harm.append(np.asarray(terms, dtype=float).reshape(-1, 3))
             rows += len(terms)
     harm = np.ascontiguousarray(np.concatenate(harm))
-    p_count = np.array([len(p) for p in pieces], dtype=np.int64)
     out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
     left = np.zeros(runs, dtype=bool)
     exit_time = np.full(runs, np.nan)
     steps = np.zeros(runs, dtype=np.int64)
-    yaw_batch.dopri_batch(psi, rate, areas, index.astype(np.int64), seg_end, n_seg, p_start,
-                          p_count, p_coef, h_off, h_count, harm, float(settings.output_interval),
+    budget = max(min(MAX_CHUTE_STEPS, MAX_CHUTE_RUN_STEPS // runs), 1)
+    stop = np.zeros(1, dtype=np.int64)
+    yaw_batch.dopri_batch(psi, rate, areas, index.astype(np.int64), seg_end, seg_piece, n_seg,
+                          p_start, p_coef, h_off, h_count, harm, float(settings.output_interval),
                           float(settings.rtol), float(settings.atol), float(settings.max_step),
-                          FIRST_STEP, *_compiled_model(model), out_psi, out_rate, left,
-                          exit_time, steps)
+                          FIRST_STEP, budget, stop, *_compiled_model(model), out_psi, out_rate,
+                          left, exit_time, steps)
+    if stop[0]:
+        raise InputError(f"too much work: a yaw run needs more than {budget:,} adaptive steps "
+                         f"(limits of slingloads: at most {MAX_CHUTE_STEPS:,} a run and "
+                         f"{MAX_CHUTE_RUN_STEPS:,} over the runs); loosen the tolerance, shorten "
+                         "the runs or check the yaw inertia and the tables for a very stiff "
+                         "case", float(settings.rtol), field="rtol")
     gust_out = np.stack([g.velocity(times) for g in unique])
     gamma_out = model.relative_wind(gust_out)[0]
     beta = gamma_out[index] - out_psi
     return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
 
 
-def _segment_ends(gust, t_end):
-    """Ends of the smooth pieces of ``gust`` over (0, ``t_end``]: its breakpoints, then
-    ``t_end``. [s]"""
-    inner = [b for b in gust.breakpoints if b is not None and 0.0 < b < t_end]
-    return np.unique([*inner, t_end])
+def _segments(gust, pieces, t_end):
+    """(ends [s], pieces) of the smooth segments of ``gust`` over (0, ``t_end``]: they end at
+    its breakpoints and at the starts of its ``pieces`` (:func:`_gust_pieces`), then at
+    ``t_end``; each lies on one piece, the last that starts at or before the segment's
+    start."""
+    starts = np.array([p[0] for p in pieces], dtype=float)
+    inner = [b for b in (*gust.breakpoints, *starts) if b is not None and 0.0 < b < t_end]
+    ends = np.unique([*inner, t_end])
+    begins = np.concatenate([[0.0], ends[:-1]])
+    return ends, np.searchsorted(starts, begins, side="right") - 1
 
 
-def _padded(rows):
-    out = np.full((len(rows), max(len(r) for r in rows)), np.inf)
+def _padded(rows, fill):
+    out = np.full((len(rows), max(len(r) for r in rows)), fill, dtype=float)
     for i, r in enumerate(rows):
         out[i, :len(r)] = r
     return out

@@ -16,7 +16,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.analyses.chute_sizing import MetricSettings
-from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME_SHEETS
 from slingloads.io.chute.schema import (
@@ -74,7 +73,8 @@ class ChuteSizingInputs:
     recommended_factor : float
         Recommended area over the neutral area. [-]
     integrator : str
-        ``"rk4"`` or ``"solve_ivp"``.
+        ``"dopri5"``, ``"rk4"`` or ``"solve_ivp"`` (see
+        :func:`slingloads.analyses.chute_sizing.run_yaw`).
     inertia_source : str
         ``"mass items"`` or ``"parameter"``.
     study_area : float
@@ -211,13 +211,10 @@ def read(reader, params, study):
     shapes = [s for s in str(params("chute sizing gust shapes") or "").split(",") if s.strip()]
     _check_work(params, int(params("chute sizing number of areas")) * max(len(shapes), 1),
                 t_end, dt, interval, integrator)
-    try:
-        settings = SolverSettings(t_end, dt, interval, method, rtol)
-        settings.fixed_grid()
-    except InputError as err:
-        name = ("chute sizing output interval" if "output_interval" in err.rule
-                else "chute sizing simulation time")
-        raise params.error(name, err.rule) from None
+    _check_grid(params, t_end, dt, interval, integrator)
+    # the adaptive integrators choose their own steps: only the output grid binds them
+    settings = SolverSettings(t_end, dt if integrator == "rk4" else interval, interval,
+                              method, rtol)
     # ---- gusts
     gusts = _gusts(reader, params, model, t_end)
     limit = params.positive("chute sizing sideslip limit")
@@ -244,25 +241,48 @@ def read(reader, params, study):
         study_line=float(params("parachute line length")))
 
 
+def _whole_multiple(value, unit):
+    ratio = value / unit
+    return round(ratio) >= 1 and abs(ratio - round(ratio)) <= 1e-9 * ratio
+
+
+def _check_grid(params, t_end, dt, interval, integrator):
+    """The stored samples land on the simulation time; with 'rk4' the fixed steps land on
+    every sample (the adaptive integrators do not use the time step)."""
+    if integrator == "rk4":
+        params.check("chute sizing output interval", _whole_multiple(interval, dt),
+                     "'chute sizing output interval' must be a whole multiple of 'chute sizing "
+                     f"time step' ({dt:g} s) with the 'rk4' integrator")
+        params.check("chute sizing simulation time", _whole_multiple(t_end, dt),
+                     "'chute sizing simulation time' must be a whole multiple of 'chute sizing "
+                     f"time step' ({dt:g} s) with the 'rk4' integrator")
+    params.check("chute sizing simulation time", _whole_multiple(t_end, interval),
+                 "'chute sizing simulation time' must be a whole multiple of 'chute sizing "
+                 f"output interval' ({interval:g} s)")
+
+
 def _check_work(params, runs, t_end, dt, interval, integrator):
-    """The sweep asked for stays within the limits (before anything is computed)."""
+    """The sweep asked for stays within the limits (before anything is computed). The
+    fixed steps of 'rk4' are counted here; 'dopri5' counts the steps it tries while it
+    integrates (and stops at the same limits)."""
     steps = t_end / dt
     samples = runs * (t_end / interval + 1)
-    for name, count, limit, what in (
-            ("chute sizing number of areas", runs, MAX_CHUTE_RUNS,
-             "runs (areas x gust shapes)"),
-            ("chute sizing time step", steps, MAX_CHUTE_STEPS, "time steps per run"),
-            ("chute sizing time step", steps * runs, MAX_CHUTE_RUN_STEPS,
-             "run-steps (runs x time steps)"),
-            ("chute sizing output interval", samples, MAX_CHUTE_SAMPLES,
-             "stored samples (runs x simulation time / output interval)")):
+    checks = [("chute sizing number of areas", runs, MAX_CHUTE_RUNS,
+               "runs (areas x gust shapes)"),
+              ("chute sizing output interval", samples, MAX_CHUTE_SAMPLES,
+               "stored samples (runs x simulation time / output interval)")]
+    if integrator == "rk4":
+        checks += [("chute sizing time step", steps, MAX_CHUTE_STEPS, "time steps per run"),
+                   ("chute sizing time step", steps * runs, MAX_CHUTE_RUN_STEPS,
+                    "run-steps (runs x time steps)")]
+    for name, count, limit, what in checks:
         params.check(name, count <= limit, f"too much work: the sweep asks for {count:,.0f} "
                      f"{what}, more than the {limit:,} allowed (limits of slingloads)")
     if integrator == "solve_ivp":
         params.check("chute sizing integrator", runs <= MAX_CHUTE_REFERENCE_RUNS,
                      f"too much work: the 'solve_ivp' integrator solves each of the {runs:,} "
                      f"runs on its own; at most {MAX_CHUTE_REFERENCE_RUNS} are allowed (limits "
-                     "of slingloads): use 'rk4' or fewer areas")
+                     "of slingloads): use 'dopri5' or fewer areas")
 
 
 def _wake_table(reader):

@@ -22,7 +22,13 @@ from slingloads.io.common.schema import (
     above,
     at_least,
 )
-from slingloads.limits import MAX_AERO_ROWS, MAX_CHUTE_AREAS, MAX_CHUTE_RUNS, MAX_CHUTE_STEPS
+from slingloads.limits import (
+    MAX_AERO_ROWS,
+    MAX_CHUTE_AREAS,
+    MAX_CHUTE_REFERENCE_RUNS,
+    MAX_CHUTE_RUNS,
+    MAX_CHUTE_STEPS,
+)
 from slingloads.models.gusts import GUST_SHAPES, W20
 
 #: Valid values of 'chute sizing wake source'.
@@ -30,7 +36,7 @@ WAKE_SOURCES = ("model", "table")
 #: Valid values of 'chute sizing yaw inertia source'.
 INERTIA_SOURCES = ("mass items", "parameter")
 #: Valid values of 'chute sizing integrator'.
-INTEGRATORS = ("rk4", "solve_ivp")
+INTEGRATORS = ("dopri5", "rk4", "solve_ivp")
 #: Valid values of 'chute sizing turbulence severity' (MIL-F-8785C W20 = 15, 30, 45 kt).
 SEVERITIES = tuple(W20)
 
@@ -118,21 +124,34 @@ PARAMETERS = (
               "leaves the linearisation range is not called stable either.", _S,
               Bounds(0, 90, lo_open=True)),
     Parameter("chute sizing simulation time", "time", "s", 120.0,
-              "Simulated time of each 1-DOF run, a whole multiple of the time step; at most "
-              f"{MAX_CHUTE_STEPS:,} steps.", _S, Bounds(0, 3600, lo_open=True)),
+              "Simulated time of each 1-DOF run, a whole multiple of the output interval "
+              "(and, with 'rk4', of the time step); at most "
+              f"{MAX_CHUTE_STEPS:,} steps a run ('rk4': simulation time / time step; "
+              "'dopri5': the steps it tries).", _S, Bounds(0, 3600, lo_open=True)),
     Parameter("chute sizing time step", "time", "s", 0.05,
-              "Fixed step of the vectorised RK4 integrator (keep gust onset and end on "
-              "multiples of it).", _S, above(0)),
+              "Fixed step of the 'rk4' integrator (gust onsets and ends between its grid "
+              "points are inserted into it); 'dopri5' and 'solve_ivp' choose their own steps. "
+              "With 'rk4' the simulation time and the output interval are whole multiples "
+              "of it.", _S,
+              above(0)),
     Parameter("chute sizing output interval", "time", "s", 0.1,
-              "Sampling interval of the stored histories, a whole multiple of the time step.",
+              "Sampling interval of the stored histories (with 'rk4', a whole multiple of "
+              "the time step).",
               _S, above(0)),
-    Parameter("chute sizing integrator", TEXT, "", "rk4",
-              "'rk4' (vectorised fixed step, all runs at once) or 'solve_ivp' (reference, one "
-              "adaptive solve per run; slow).", _S),
+    Parameter("chute sizing integrator", TEXT, "", "dopri5",
+              "'dopri5': adaptive Dormand-Prince 5(4) (the pair of solve_ivp's RK45), compiled, "
+              "all runs at once, each with its own step within 'chute sizing reference rtol' "
+              "(absolute tolerance 1e-10 rad and rad/s), split at the gust breakpoints; "
+              "'rk4': compiled fixed-step Runge-Kutta 4 at 'chute sizing time step' (no error "
+              "control: halve the step to check it); 'solve_ivp': scipy's solve_ivp one run at "
+              "a time with the reference method and rtol (a cross-check; slow, at most "
+              f"{MAX_CHUTE_REFERENCE_RUNS} runs).", _S),
     Parameter("chute sizing reference method", TEXT, "", "RK45",
-              "solve_ivp method of the reference integrator (RK45, DOP853, Radau, ...).", _S),
+              "solve_ivp method of the 'solve_ivp' integrator (RK45, DOP853, Radau, ...).", _S),
     Parameter("chute sizing reference rtol", "dimensionless", "", 1e-8,
-              "Relative tolerance of the reference integrator, > 0.", _S, RELATIVE_TOLERANCE),
+              "Relative tolerance of the adaptive integrators, 'dopri5' and 'solve_ivp', > 0: "
+              "each step's local error estimate stays within rtol |state| + 1e-10 (solve_ivp's "
+              "norm).", _S, RELATIVE_TOLERANCE),
     Parameter("chute sizing area factor min", "dimensionless", "", 1.0,
               "Smallest swept area over the neutral static area, > 0 (paper: 1).", _S,
               Bounds(0, 100, lo_open=True)),
