@@ -10,7 +10,10 @@ wall-clock time and as processor time of the child process and its helper (user 
 the processor time is the steadier figure when other jobs share the machine, whose load
 average is printed before and after.
 A cold run first compiles the numba kernels into an empty cache, as the first run on a
-machine does; it is printed apart and not counted in the median.
+machine does; it is printed apart and not counted in the median. The runs keep Python's
+bytecode cache as Python does by default (``PYTHONDONTWRITEBYTECODE`` is removed from their
+environment: where it is set, every run compiles the package's hundred modules again, about
+half a second of processor time).
 
 Run: ``python benchmarks/bench_example.py`` (3 repeats, about 2 minutes with the cold run);
 ``python benchmarks/bench_example.py --repeats 10`` for steadier figures.
@@ -40,11 +43,15 @@ ANALYSES_ONLY = (
 )
 
 
+#: The environment of the runs: this one, with Python's default bytecode cache.
+ENVIRONMENT = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+
+
 def _timed(command, env=None):
     """(wall [s], CPU of the child [s]) of one run of ``command``."""
     before = os.times()
     t0 = time.perf_counter()
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, env=env)
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, env=env or ENVIRONMENT)
     wall = time.perf_counter() - t0
     after = os.times()
     cpu = (after.children_user - before.children_user
@@ -74,7 +81,7 @@ def main(argv=None):
     print(f"load average before: {load_average()} (2 cores)")
     with tempfile.TemporaryDirectory() as cache, tempfile.TemporaryDirectory() as out:
         cold = _timed([sys.executable, "-m", "slingloads.cli", "run", args.workbook, "--out",
-                       out, "--quiet"], {**os.environ, "NUMBA_CACHE_DIR": cache})
+                       out, "--quiet"], {**ENVIRONMENT, "NUMBA_CACHE_DIR": cache})
     print(f"cold run (compiling the numba kernels into an empty cache): wall {cold[0]:.2f} s, "
           f"CPU {cold[1]:.2f} s")
     alone, whole = [], []
