@@ -46,7 +46,6 @@ import io
 import math
 import numbers
 import re
-import sys
 import textwrap
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -64,8 +63,8 @@ from openpyxl.utils.exceptions import IllegalCharacterError
 from openpyxl.worksheet.pagebreak import Break
 
 from slingloads.errors import InputError
+from slingloads.io.common.figures import collect_pngs
 from slingloads.io.common.formats import header_unit, unit_format, value_format
-from slingloads.io.common.helper import gather
 
 #: Rows in one Excel worksheet (header included) [1]_.
 EXCEL_MAX_ROWS = 1_048_576
@@ -890,9 +889,7 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
     ws.page_setup.orientation = orientation
     writer = _SheetWriter(ws)
     used = 0
-    # the figures a helper process has not started are drawn here, when there are enough of
-    # them to pay for loading matplotlib (a third of a second) if it is not loaded yet
-    pngs = gather(images.values(), least=1 if "matplotlib.figure" in sys.modules else 3)
+    pngs = collect_pngs(images.values())  # drawn here when the helper is behind
     for title, figure in zip(images, pngs, strict=True):
         image = Image(io.BytesIO(figure_png(figure)))
         w, h, rows = _image_box(image.width, image.height, page_rows, pixels - 10)

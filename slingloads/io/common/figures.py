@@ -18,11 +18,12 @@ unless it draws a figure itself.
 from __future__ import annotations
 
 import io
+import sys
 from contextlib import contextmanager
 from dataclasses import dataclass
 from importlib import import_module
 
-from slingloads.io.common.helper import Helper
+from slingloads.io.common.helper import Call, Helper, gather
 
 #: Width of every report figure: the printable width of an A4 portrait page. [in]
 PAGE_WIDTH = 7.0
@@ -201,6 +202,26 @@ def start_drawing(jobs, dpi=100):
     renderer = FigureRenderer(dpi=dpi)
     renderer.draw(jobs)
     return renderer
+
+
+#: Figures waiting for the helper (every report's) from which the writing process loads
+#: matplotlib to draw some of them itself: loading it costs about a third of a second, more
+#: than waiting for one or two figures.
+SHARE_FROM = 3
+
+
+def collect_pngs(pngs):
+    """The PNG bytes of drawings (bytes, or pending drawings of a :class:`FigureRenderer`).
+
+    The figures no helper process has started are drawn here, from the last one back (the
+    helper takes them from the front), when matplotlib is loaded here already or when at
+    least :data:`SHARE_FROM` figures wait for the helper; else the helper is waited for.
+    """
+    items = list(pngs)
+    calls = [p for p in items if isinstance(p, Call)]
+    share = "matplotlib.figure" in sys.modules or (
+        bool(calls) and calls[0].helper.backlog() >= SHARE_FROM)
+    return [png_bytes(p) for p in gather(items, least=1 if share else len(items) + 1)]
 
 
 def png_bytes(png):

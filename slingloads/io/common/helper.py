@@ -171,6 +171,10 @@ class Helper:
                 self._cond.notify()
         return call
 
+    def backlog(self):
+        """Calls submitted that no helper process has started yet."""
+        return len(self._calls)
+
     def _result(self, call, take_back=True):
         with self._cond:
             while call.state == _RUNNING or (
