@@ -2,14 +2,20 @@
 
 Runs the command line in a fresh Python process, as a user does, writing into a temporary
 directory; and, beside it, the analyses alone in a fresh process (import, read the workbook,
-compute loads, lateral study and parachute sizing; no report written). The difference is the
-cost of writing the reports. Each figure is the median of the repeats, as wall-clock time and as
-CPU time of the child process (user + system): the CPU time is the steadier figure when other
-jobs share the machine.
-A cold run first compiles the multibody kernels into an empty cache, as the first run on a
-machine does; it is printed apart and not counted in the median.
+compute loads, lateral study, parachute sizing and multibody; no report written). The
+difference is the cost of writing the reports (the run draws its figures in a helper process
+on the machine's second core while it computes and writes the tables, so the difference can
+be less than the reports' own processor time). Each figure is the median of the repeats, as
+wall-clock time and as processor time of the child process and its helper (user + system):
+the processor time is the steadier figure when other jobs share the machine, whose load
+average is printed before and after.
+A cold run first compiles the numba kernels into an empty cache, as the first run on a
+machine does; it is printed apart and not counted in the median. The runs keep Python's
+bytecode cache as Python does by default (``PYTHONDONTWRITEBYTECODE`` is removed from their
+environment: where it is set, every run compiles the package's hundred modules again, about
+half a second of processor time).
 
-Run: ``python benchmarks/bench_example.py`` (3 repeats, about 30 s);
+Run: ``python benchmarks/bench_example.py`` (3 repeats, about 2 minutes with the cold run);
 ``python benchmarks/bench_example.py --repeats 10`` for steadier figures.
 """
 
@@ -37,11 +43,15 @@ ANALYSES_ONLY = (
 )
 
 
+#: The environment of the runs: this one, with Python's default bytecode cache.
+ENVIRONMENT = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+
+
 def _timed(command, env=None):
     """(wall [s], CPU of the child [s]) of one run of ``command``."""
     before = os.times()
     t0 = time.perf_counter()
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, env=env)
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, env=env or ENVIRONMENT)
     wall = time.perf_counter() - t0
     after = os.times()
     cpu = (after.children_user - before.children_user
@@ -49,10 +59,17 @@ def _timed(command, env=None):
     return wall, cpu
 
 
-def median(command, repeats):
-    """Median wall and median CPU time of ``repeats`` runs. [s]"""
-    runs = [_timed(command) for _ in range(repeats)]
+def _median(runs):
+    """Median wall and median CPU time of timed runs. [s]"""
     return (statistics.median(w for w, _ in runs), statistics.median(c for _, c in runs))
+
+
+def load_average():
+    """The machine's load average over 1, 5 and 15 minutes, as text."""
+    try:
+        return ", ".join(f"{x:.2f}" for x in os.getloadavg())
+    except OSError:  # pragma: no cover - not available
+        return "unknown"
 
 
 def main(argv=None):
@@ -61,15 +78,20 @@ def main(argv=None):
     parser.add_argument("--workbook", default=str(EXAMPLE),
                         help="input workbook (default: the example)")
     args = parser.parse_args(argv)
+    print(f"load average before: {load_average()} (2 cores)")
     with tempfile.TemporaryDirectory() as cache, tempfile.TemporaryDirectory() as out:
         cold = _timed([sys.executable, "-m", "slingloads.cli", "run", args.workbook, "--out",
-                       out, "--quiet"], {**os.environ, "NUMBA_CACHE_DIR": cache})
-    print(f"cold run (compiling the multibody kernels into an empty cache): wall {cold[0]:.2f} s,"
-          f" CPU {cold[1]:.2f} s")
-    analyses = median([sys.executable, "-c", ANALYSES_ONLY, args.workbook], args.repeats)
+                       out, "--quiet"], {**ENVIRONMENT, "NUMBA_CACHE_DIR": cache})
+    print(f"cold run (compiling the numba kernels into an empty cache): wall {cold[0]:.2f} s, "
+          f"CPU {cold[1]:.2f} s")
+    alone, whole = [], []
     with tempfile.TemporaryDirectory() as out:
-        run = median([sys.executable, "-m", "slingloads.cli", "run", args.workbook, "--out",
-                    out, "--quiet"], args.repeats)
+        for _ in range(args.repeats):  # alternated: a change of load hits both alike
+            alone.append(_timed([sys.executable, "-c", ANALYSES_ONLY, args.workbook]))
+            whole.append(_timed([sys.executable, "-m", "slingloads.cli", "run", args.workbook,
+                                 "--out", out, "--quiet"]))
+    analyses, run = _median(alone), _median(whole)
+    print(f"load average after: {load_average()}")
     print(f"analyses alone (import, read, compute; no report): wall {analyses[0]:.2f} s, "
           f"CPU {analyses[1]:.2f} s")
     print(f"reports (run - analyses): wall {run[0] - analyses[0]:.2f} s, "

@@ -10,6 +10,7 @@ is written, and no Python traceback is shown unless ``--debug`` is given.
 from __future__ import annotations
 
 import argparse
+import gc
 import signal
 import sys
 import threading
@@ -116,6 +117,7 @@ def main(argv=None):
     except OutputError as err:
         return _fail(err, EXIT_ENVIRONMENT)
     except (KeyboardInterrupt, _Terminated):
+        _forget_interrupt()
         print("\nslingloads: interrupted; nothing was written (a campaign's finished runs stay "
               "in its run cache: run the same command again to resume).", file=sys.stderr)
         return EXIT_INTERRUPTED
@@ -128,6 +130,17 @@ def main(argv=None):
         return _unexpected(err, args)
     finally:
         _restore_sigterm(previous)
+        if argv is not None:  # called from Python, which goes on: collect as usual again
+            gc.unfreeze()
+
+
+def _forget_interrupt():
+    """Make ``python -m slingloads.cli`` exit with EXIT_INTERRUPTED after Ctrl-C, as the
+    ``slingloads`` command does. CPython remembers a KeyboardInterrupt that ended code run
+    from a string (``exec``/``eval`` of text: libraries generate functions that way) even
+    when it is caught, and ``-m`` then kills the interpreter with SIGINT at exit instead of
+    returning the code; the next string evaluation clears that memory."""
+    exec("pass")
 
 
 def _quiet_unraisable(unraisable):
@@ -227,6 +240,21 @@ def _ask_nastran(study, names):
 
 
 def _analyse(args):
+    """Run the analyses of a command (:func:`_run_analyses`) with a helper process drawing
+    the figures. What is loaded and read is kept to the end of the run: the garbage
+    collector is told not to scan it again (``gc.freeze``: each full collection would
+    otherwise go through every object of pandas, scipy, numba and the study, a tenth of a
+    second each time)."""
+    from slingloads.io.common.figures import helping
+
+    gc.freeze()
+    # the process that draws the figures starts first: it loads matplotlib while the
+    # workbook is read, and draws each analysis's figures once it is computed
+    with helping():
+        return _run_analyses(args)
+
+
+def _run_analyses(args):
     from tqdm import tqdm
 
     from slingloads.io.consistency import consistency_checks
@@ -238,7 +266,9 @@ def _analyse(args):
         only = None
         if args.command != "run":
             only = [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
-        study = read_study(args.workbook, only=only)
+        first = _FirstComputed(args, only)
+        study = read_study(args.workbook, only=only, on_read=first)
+        gc.freeze()  # the libraries and the study live to the end of the run: see _analyse
         names = _selected(args, study)
         if getattr(args, "nastran", False):
             _ask_nastran(study, names)
@@ -251,14 +281,20 @@ def _analyse(args):
         with ExitStack() as drawing:
             for name in compute_order(names):
                 bar.set_description(f"computing {name}")
-                results[name] = ANALYSES[name][1](study)
+                if name == first.name:  # computed while the workbook was read
+                    results[name], figures[name] = first.outcome()
+                else:
+                    results[name] = ANALYSES[name][1](study)
                 study.results.setdefault(name, results[name])
-                # its figures are drawn (in worker processes) while the next ones compute
-                figures[name] = _BY_NAME[name].start_figures(results[name], args.units, study)
+                # its figures are drawn (by the helper process) while the next ones compute
+                if name != first.name:
+                    figures[name] = _BY_NAME[name].start_figures(results[name], args.units,
+                                                                 study)
                 if figures[name] is not None:
                     drawing.enter_context(figures[name])
                 bar.update(1)
             checks = consistency_checks(results)
+            gc.freeze()
             # one set of outputs for every analysis: all published together, or none
             with outputs:
                 for name in names:
@@ -276,6 +312,42 @@ def _analyse(args):
     for text in study.warnings:
         print(f"slingloads: warning: {text}", file=sys.stderr)
     return 0
+
+
+class _FirstComputed:
+    """The first analysis of a run, computed as soon as its inputs are read (``on_read`` of
+    :func:`~slingloads.io.study.read_study`) and its figures started, so that the helper
+    process draws them while the rest of the workbook is read. What it gives (its result
+    and figures, or the error it raised) is taken at its turn in the compute loop: errors
+    come in the same order as when everything is read first. Not with a campaign (it needs
+    the command line's execution options, set after reading, and it feeds the loads)."""
+
+    def __init__(self, args, only):
+        self.args, self.only = args, only
+        self.name = None
+        self._outcome = None
+
+    def __call__(self, name, study):
+        if self.name is not None:
+            return
+        wanted = self.only if self.only is not None else [n for n in ANALYSES
+                                                          if study.run.get(n)]
+        if not wanted or "campaign" in wanted or compute_order(wanted)[0] != name:
+            return
+        self.name = name
+        try:
+            result = ANALYSES[name][1](study)
+            figures = _BY_NAME[name].start_figures(result, self.args.units, study)
+        except Exception as err:  # noqa: BLE001 - raised at its turn by outcome()
+            self._outcome = err
+        else:
+            self._outcome = (result, figures)
+
+    def outcome(self):
+        """``(result, figures)``, or the error the analysis raised."""
+        if isinstance(self._outcome, BaseException):
+            raise self._outcome
+        return self._outcome
 
 
 def _runtime(args, show):

@@ -290,3 +290,30 @@ def test_work_found_too_large_while_computing_is_located(tmp_path, capsys):
     err = capsys.readouterr().err
     assert f"sheet 'Study', cell {study_cell(book, 'lateral RK4 step')}" in err, err
     assert "RK4 steps per run" in err
+
+
+def test_an_input_read_later_is_reported_before_the_first_analysis_fails(tmp_path, capsys):
+    """The first analysis of a run is computed as soon as its inputs are read (its figures
+    start early), but its error comes at its turn: an error in an input read after it is
+    reported first, as when everything is read before anything is computed. The stiff
+    lateral case above with 'chute sizing number of areas' 0 reports that cell; once the
+    cell is valid, the lateral step row."""
+    book = small_workbook()
+    for name, value, unit in (("lateral cable model", "elastic", None),
+                              ("lateral cable EA", 1e9, "N"), ("lateral simulation time", 0, "s"),
+                              ("lateral RK4 step", 0, "s"), ("run loads", "no", None),
+                              ("chute sizing number of areas", 0, None)):
+        set_parameter(book, name, value, unit)
+    book["LateralBodies"] = [["id", "mass [kg]", "roll inertia [kg m^2]", "CG below hub [m]"],
+                             ["tiny", 0.001, 0.001, 0.5]]
+    out = tmp_path / "out"
+    path = save_xlsx(book, tmp_path / "both.xlsx")
+    assert main(["run", str(path), "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert f"cell {study_cell(book, 'chute sizing number of areas')}" in err, err
+    set_parameter(book, "chute sizing number of areas", 2)
+    path = save_xlsx(book, tmp_path / "lateral.xlsx")
+    assert main(["run", str(path), "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert f"cell {study_cell(book, 'lateral RK4 step')}" in err and "RK4 steps" in err, err
+    assert not out.exists()

@@ -124,7 +124,7 @@ def file_digest(path):
     return h.hexdigest()
 
 
-def read_study(path, only=None, *, reader=None):
+def read_study(path, only=None, *, reader=None, on_read=None):
     """Read an input workbook and build every analysis it asks for.
 
     Parameters
@@ -136,6 +136,10 @@ def read_study(path, only=None, *, reader=None):
     reader : WorkbookReader, optional
         An opened reader of the workbook (e.g. :meth:`WorkbookReader.from_rows`); by default
         the file ``path`` is opened.
+    on_read : callable, optional
+        Called as ``on_read(name, study)`` once the inputs and report options of analysis
+        ``name`` are read, before the next analysis is read (the study is not complete yet:
+        its ``input_files`` and ``warnings`` are filled in at the end).
 
     Returns
     -------
@@ -149,12 +153,12 @@ def read_study(path, only=None, *, reader=None):
     own = reader is None
     reader = WorkbookReader(path) if own else reader
     try:
-        return _build(reader, path, only, file_digest(path) if own else "")
+        return _build(reader, path, only, file_digest(path) if own else "", on_read)
     finally:
         reader.close()
 
 
-def _build(reader, path, only, sha256):
+def _build(reader, path, only, sha256, on_read=None):
     params = StudyParameters(reader, all_parameters())
     run = {a.name: params(a.run_parameter) for a in ANALYSES}
     if only is not None:
@@ -170,6 +174,8 @@ def _build(reader, path, only, sha256):
         if run[analysis.name]:
             study.inputs[analysis.name] = analysis.read(reader, params, study)
         study.options.update(analysis.report_options(params, study))
+        if run[analysis.name] and on_read is not None:
+            on_read(analysis.name, study)
     study.input_files = reader.input_files
     study.warnings = list(reader.warnings)
     return study

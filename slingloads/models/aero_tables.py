@@ -4,6 +4,10 @@ A :class:`Table1D` holds coefficients against one angle (sideslip for a fin, ang
 for a parachute); a :class:`Table2D` holds coefficients on a full grid of angle of attack and
 sideslip (a fuselage). Both interpolate linearly and raise :class:`InputError` for any query
 outside the tabulated range, naming the angle and the range.
+
+The 2-D interpolation is bilinear on the grid cell holding the point (:func:`bilinear`),
+written here with numpy: the formula of ``scipy.interpolate.RegularGridInterpolator``'s
+linear method, without loading scipy.interpolate (and scipy.spatial) when a workbook is read.
 """
 
 from __future__ import annotations
@@ -127,9 +131,7 @@ class Table2D:
     def __post_init__(self):
         alpha = _strictly_increasing(self.alpha, f"{self.what} alpha")
         beta = _strictly_increasing(self.beta, f"{self.what} beta")
-        from scipy.interpolate import RegularGridInterpolator  # (it loads scipy.spatial)
-
-        coeffs, interps = {}, {}
+        coeffs = {}
         for key, values in self.coefficients.items():
             values = np.asarray(values, dtype=float)
             if values.shape != (alpha.size, beta.size) or not np.all(np.isfinite(values)):
@@ -138,19 +140,16 @@ class Table2D:
                     f"(alpha, beta) grid point ({alpha.size} x {beta.size})",
                 )
             coeffs[key] = values
-            interps[key] = RegularGridInterpolator((alpha, beta), values, method="linear")
         object.__setattr__(self, "alpha", alpha)
         object.__setattr__(self, "beta", beta)
         object.__setattr__(self, "coefficients", coeffs)
-        object.__setattr__(self, "_interp", interps)
 
     def __call__(self, name, alpha, beta):
         """Interpolate coefficient ``name`` at ``alpha``, ``beta`` [rad] (broadcast)."""
         a = _check_inside(alpha, self.alpha, "alpha", self.what)
         b = _check_inside(beta, self.beta, "beta", self.what)
         a, b = np.broadcast_arrays(a, b)
-        points = np.stack([a.ravel(), b.ravel()], axis=-1)
-        return self._interp[name](points).reshape(a.shape)
+        return bilinear(self.alpha, self.beta, self.coefficients[name], a, b)
 
     def beta_slice(self, name, alpha):
         """Coefficient ``name`` at the sideslip breakpoints, at angle of attack ``alpha``."""
@@ -200,6 +199,43 @@ class Table2D:
         for key, values in self.coefficients.items():
             frame[key] = values.ravel()
         return frame
+
+
+def _cell(grid, q):
+    """Index ``i`` of the grid interval ``[grid[i], grid[i + 1]]`` holding each of ``q`` (the
+    last interval for the last breakpoint) and the fraction ``t`` of the way across it."""
+    i = np.clip(np.searchsorted(grid, q, side="right") - 1, 0, grid.size - 2)
+    return i, (q - grid[i]) / (grid[i + 1] - grid[i])
+
+
+def bilinear(x, y, values, xq, yq):
+    """Bilinear interpolation of ``values`` on the grid ``x`` by ``y`` at ``(xq, yq)``.
+
+    In the grid cell holding the point, with ``t`` and ``u`` the fractions of the way across
+    it in ``x`` and ``y``: ``v00 (1 - t)(1 - u) + v01 (1 - t) u + v10 t (1 - u) + v11 t u``
+    (the formula and order of operations of ``scipy.interpolate.RegularGridInterpolator``'s
+    linear method). The points must lie on the grid (:func:`_check_inside`): nothing is
+    extrapolated.
+
+    Parameters
+    ----------
+    x : ndarray, shape (nx,)
+        Strictly increasing breakpoints, nx >= 2.
+    y : ndarray, shape (ny,)
+        Strictly increasing breakpoints, ny >= 2.
+    values : ndarray, shape (nx, ny)
+    xq, yq : ndarray
+        Query points, same shape, inside the grid.
+
+    Returns
+    -------
+    ndarray
+        Interpolated values, the shape of ``xq``.
+    """
+    i, t = _cell(x, xq)
+    j, u = _cell(y, yq)
+    return (values[i, j] * (1 - t) * (1 - u) + values[i, j + 1] * (1 - t) * u
+            + values[i + 1, j] * t * (1 - u) + values[i + 1, j + 1] * t * u)
 
 
 def linear_fit(angle, values, lo, hi, what="aerodynamic"):

@@ -35,7 +35,7 @@ from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, png_bytes, start_drawing
+from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
 from slingloads.io.common.report import check_units, column_blocks, warning_sections
 from slingloads.io.common.workbook import located
 
@@ -357,14 +357,11 @@ def sweep_plots(result):
 
 def _figures(report, units):
     """The figures to draw: ``{tag: (title, (plot function, args, kwargs))}``."""
-    from slingloads.io.campaign.plots import (  # matplotlib loads only when plotting
-        plot_envelope,
-        plot_no_parachute,
-        plot_selection,
-        plot_stability_map,
-        plot_sweep,
-    )
-
+    (plot_envelope, plot_no_parachute, plot_selection, plot_stability_map,
+     plot_sweep) = (  # matplotlib loads where they are drawn
+        plot_function("slingloads.io.campaign.plots", name)
+        for name in ("plot_envelope", "plot_no_parachute", "plot_selection",
+                     "plot_stability_map", "plot_sweep"))
     r = report.result
     figs = {"selection": ("Parachute selection", (plot_selection, (r, units), {}))}
     for tag, runs, factor, title in sweep_plots(r):

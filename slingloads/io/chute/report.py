@@ -40,7 +40,7 @@ from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, png_bytes, start_drawing
+from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -474,14 +474,11 @@ def _sheets(result, units, warnings=()):
 
 def _figures(result, units="SI"):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
-    from slingloads.io.chute.plots import (  # matplotlib loads only when plotting
-        plot_histories_by_gust,
-        plot_static_moments,
-        plot_sweep_metrics,
-        plot_wake,
-        plot_yaw_linearisation,
-    )
-
+    (plot_histories_by_gust, plot_static_moments, plot_sweep_metrics, plot_wake,
+     plot_yaw_linearisation) = (  # matplotlib loads where they are drawn
+        plot_function("slingloads.io.chute.plots", name)
+        for name in ("plot_histories_by_gust", "plot_static_moments", "plot_sweep_metrics",
+                     "plot_wake", "plot_yaw_linearisation"))
     figs = {"linearisation": (plot_yaw_linearisation, (result.static.linearisation,), {}),
             "static-moments": (plot_static_moments, (result.static, units), {}),
             "wake": (plot_wake, (result.line, units), {})}

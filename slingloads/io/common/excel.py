@@ -63,6 +63,7 @@ from openpyxl.utils.exceptions import IllegalCharacterError
 from openpyxl.worksheet.pagebreak import Break
 
 from slingloads.errors import InputError
+from slingloads.io.common.figures import collect_pngs
 from slingloads.io.common.formats import header_unit, unit_format, value_format
 
 #: Rows in one Excel worksheet (header included) [1]_.
@@ -198,6 +199,13 @@ def split_sheet_names(name, n_rows, max_rows=EXCEL_MAX_ROWS):
 def _plain(value):
     """A Python value openpyxl writes faithfully (numpy scalars unwrapped, NaN -> None,
     booleans -> ``yes``/``no``)."""
+    kind = type(value)
+    if kind is float:  # the common cases first (a table's cells)
+        if value != value:
+            return None
+        return value if -math.inf < value < math.inf else ("inf" if value > 0 else "-inf")
+    if kind is str or kind is int:
+        return value
     if isinstance(value, np.generic):
         value = value.item()
     if value is None or value is pd.NA or value is pd.NaT:
@@ -231,8 +239,10 @@ class _SheetWriter:
     height of the rows written.
 
     Cell styles are built once per (font, format, alignment, fill, border) and shared, which
-    keeps writing a large table cheap. A row with wrapped text gets the height of its
-    tallest wrapped cell (LibreOffice does not compute it for a streamed sheet).
+    keeps writing a large table cheap (they are looked up by the identity of the style
+    objects: hashing openpyxl's style objects for every cell cost more than the cell). A row
+    with wrapped text gets the height of its tallest wrapped cell (LibreOffice does not
+    compute it for a streamed sheet).
     """
 
     def __init__(self, ws, widths=None):
@@ -257,18 +267,27 @@ class _SheetWriter:
                                  cell=f"{get_column_letter(column + 1)}{self.row + 1}")
             cell.data_type = "s"  # text, never a formula
         if style is not None:
-            if isinstance(value, str) or value is None:
-                style = (style[0], None, *style[2:])  # no number format on text
-            if any(s is not None for s in style):
-                self._style(cell, style)
+            text = isinstance(value, str) or value is None  # no number format on text
+            font, number_format, alignment, fill, border = style
+            key = (id(font), None if text else number_format, id(alignment), id(fill),
+                   id(border))
+            cached = self._styles.get(key)
+            if cached is None:
+                if text:
+                    style = (font, None, alignment, fill, border)
+                cached = (style, self._style(cell, style))  # (keeps the objects alive)
+                self._styles[key] = cached
+            elif cached[1] is not None:
+                cell._style = cached[1]
         return cell
 
-    def _style(self, cell, style):
-        cached = self._styles.get(style)
-        if cached is not None:
-            cell._style = cached
-            return
+    @staticmethod
+    def _style(cell, style):
+        """Set ``style`` on ``cell``; its style array, or None for no style at all."""
         font, number_format, alignment, fill, border = style
+        if font is None and number_format is None and alignment is None and fill is None \
+                and border is None:
+            return None
         if font is not None:
             cell.font = font
         if number_format is not None:
@@ -279,15 +298,20 @@ class _SheetWriter:
             cell.fill = fill
         if border is not None:
             cell.border = border
-        self._styles[style] = cell._style
+        return cell._style
 
-    def lines(self, values, styles):
-        """Lines the row takes: the most of its wrapped text cells."""
+    def lines(self, values, styles, wrapping=None):
+        """Lines the row takes: the most of its wrapped text cells (``wrapping``: the
+        indices of the cells whose style wraps, when known)."""
         most = 1
-        for j, (value, style) in enumerate(zip(values, styles, strict=True)):
-            if style is not None and style[2] is not None and style[2].wrap_text and isinstance(
-                    value, str) and len(value) > 4:
-                bold = style[0] is not None and bool(style[0].b)
+        if wrapping is None:
+            wrapping = [j for j, style in enumerate(styles)
+                        if style is not None and style[2] is not None and style[2].wrap_text]
+        for j in wrapping:
+            value = values[j]
+            if isinstance(value, str) and len(value) > 4:
+                font = styles[j][0]
+                bold = font is not None and bool(font.b)
                 most = max(most, wrapped_lines(value, self.widths.get(j, 10), bold))
         return most
 
@@ -297,11 +321,16 @@ class _SheetWriter:
         values = [_plain(v) for v in values]
         if styles is None or isinstance(styles, tuple):
             styles = [styles] * len(values)
-        lines = self.lines(values, styles)
+        self.append_plain(values, styles)
+
+    def append_plain(self, values, styles, wrapping=None):
+        """:meth:`append` of values already made plain (:func:`_plain`), one style each."""
+        lines = self.lines(values, styles, wrapping)
         if lines > 1:
             self.ws.row_dimensions[self.row + 1].height = 15 * lines
-        self.ws.append([self._cell(v, s, j) for j, (v, s) in enumerate(zip(values, styles,
-                                                                            strict=True))])
+        cell = self._cell
+        self.ws.append([cell(v, s, j) for j, (v, s) in enumerate(zip(values, styles,
+                                                                          strict=True))])
         self.row += 1
         self.pixels += ROW_PIXELS * lines
 
@@ -371,9 +400,13 @@ def _row_unit_columns(frame, formats):
 
 
 def _text_width(series):
-    texts = series.map(lambda v: "" if _plain(v) is None else str(_plain(v)))
-    lengths = texts.str.split("\n").map(lambda parts: max((len(p) for p in parts), default=0))
-    return int(lengths.max()) if len(lengths) else 0
+    """Characters of the longest line of text in ``series`` as written."""
+    widest = 0
+    for value in series:
+        shown = _plain(value)
+        if shown is not None:
+            widest = max(widest, max(len(line) for line in str(shown).split("\n")))
+    return widest
 
 
 def _number_width(series, number_format):
@@ -554,15 +587,14 @@ def _alignments(frame, columns):
     cells, heads = [], []
     for j in range(frame.shape[1]):
         series = frame.iloc[:, j]
-        texts = _is_text(series) and series.map(lambda v: isinstance(v, str) or v is None).all()
+        values = list(series) if _is_text(series) else None
+        texts = values is not None and all(isinstance(v, str) or v is None for v in values)
         if j in columns.wrapped:
             cells.append(_WRAP if texts else _WRAP_GENERAL)  # numbers stay right-aligned
             heads.append(_HEADER_ALIGN)
         elif pd.api.types.is_bool_dtype(series.dtype) or (
-                _is_text(series) and len(series)
-                and series.map(lambda v: isinstance(v, str) or v is None).all()
-                and series.map(lambda v: len(v) if isinstance(v, str) else 0).max()
-                <= _ID_WIDTH):
+                texts and values
+                and max(len(v) if isinstance(v, str) else 0 for v in values) <= _ID_WIDTH):
             cells.append(_CENTER)
             heads.append(_HEADER_CENTER)
         elif pd.api.types.is_numeric_dtype(series.dtype):
@@ -591,7 +623,9 @@ def _write_table(writer, frame, formats, columns, highlight):
     unit_at = names.index("unit") if per_row else None
     base = [_style(None, f, a) for f, a in zip(formats, cells, strict=True)]
     ratio = [header_unit(c) == "-" for c in names]
+    wrapping = [j for j, a in enumerate(cells) if a.wrap_text]
     for row in frame.itertuples(index=False, name=None):
+        values = [_plain(v) for v in row]
         styles = list(base)
         small = ratio
         if per_row:
@@ -601,15 +635,13 @@ def _write_table(writer, frame, formats, columns, highlight):
             for j in per_row:
                 styles[j] = _style(None, fmt, cells[j])
                 small[j] = unit == "-"
-        for j, value in enumerate(row):
+        for j, shown in enumerate(values):
             fmt = styles[j][1]
-            if fmt is not None:
-                shown = _plain(value)
-                if isinstance(shown, (int, float)):
-                    adapted = value_format(shown, fmt, small[j])
-                    if adapted != fmt:
-                        styles[j] = (styles[j][0], adapted, *styles[j][2:])
-        writer.append(row, styles)
+            if fmt is not None and isinstance(shown, (int, float)):
+                adapted = value_format(shown, fmt, small[j])
+                if adapted != fmt:
+                    styles[j] = (styles[j][0], adapted, *styles[j][2:])
+        writer.append_plain(values, styles, wrapping)
     _highlight(writer.ws, frame, first, writer.row, highlight)
 
 
@@ -857,7 +889,8 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
     ws.page_setup.orientation = orientation
     writer = _SheetWriter(ws)
     used = 0
-    for title, figure in images.items():
+    pngs = collect_pngs(images.values())  # drawn here when the helper is behind
+    for title, figure in zip(images, pngs, strict=True):
         image = Image(io.BytesIO(figure_png(figure)))
         w, h, rows = _image_box(image.width, image.height, page_rows, pixels - 10)
         # a title wider than the page is cut when printed: wrapped (12 pt bold ~ 1.45 x)

@@ -7,20 +7,23 @@ drawing the figure an extra time, which doubled the cost of writing a report; fi
 sized for the labels the reports draw (titles of at most two lines, tick labels of at most
 nine characters) cost nothing.
 
-Drawing the figures is most of the cost of a report: :class:`FigureRenderer` draws them in
-worker processes while the workbook's tables are written.
+Drawing the figures is most of the cost of a report: :class:`FigureRenderer` has them drawn
+by a helper process (:mod:`slingloads.io.common.helper`) while the analyses are computed and
+the workbooks' tables are written. The command line starts one helper for the whole run
+(:func:`helping`) as soon as it starts; the report modules name their plot functions with
+:func:`plot_function`, so that the process writing the workbooks does not load matplotlib
+unless it draws a figure itself.
 """
 
 from __future__ import annotations
 
 import io
-import multiprocessing
-import os
 import sys
-from concurrent.futures import ProcessPoolExecutor
 from contextlib import contextmanager
+from dataclasses import dataclass
+from importlib import import_module
 
-from slingloads.errors import InputError
+from slingloads.io.common.helper import Call, Helper, gather
 
 #: Width of every report figure: the printable width of an A4 portrait page. [in]
 PAGE_WIDTH = 7.0
@@ -51,91 +54,104 @@ def fix_margins(fig, left=0.9, right=0.2, bottom=0.55, top=0.6, wspace=None, hsp
 
 
 # ----------------------------------------------------------------------------- rendering
-#: Environment variable: how many processes draw a report's figures beside the one writing
-#: its workbook (``0``: draw them in the writing process, one after the other).
-WORKERS_VARIABLE = "SLINGLOADS_PLOT_WORKERS"
+@dataclass(frozen=True)
+class PlotFunction:
+    """A plot function named by its module, imported when it is called: a drawing job
+    names it without loading matplotlib, and pickles as two strings.
 
-_JOBS = {}
+    Parameters
+    ----------
+    module : str
+        ``"slingloads.io.loads.plots"``.
+    name : str
+        ``"plot_sfbm"``.
+    """
 
+    module: str
+    name: str
 
-def _draw(key):
-    """Draw job ``key`` of :data:`_JOBS` to PNG bytes (in a worker process)."""
-    from slingloads.io.common.excel import figure_png
-
-    func, args, kwargs, dpi = _JOBS[key]
-    return figure_png(func(*args, **kwargs), dpi)
-
-
-class _Later:
-    """A figure drawn when its PNG is first asked for (no worker process)."""
-
-    def __init__(self, key):
-        self.key = key
-        self._png = None
-
-    def result(self):
-        if self._png is None:
-            self._png = _draw(self.key)
-        return self._png
+    def __call__(self, *args, **kwargs):
+        return getattr(import_module(self.module), self.name)(*args, **kwargs)
 
 
-def plot_workers():
-    """Processes that draw figures beside the writing one: ``SLINGLOADS_PLOT_WORKERS`` when
-    set, else up to 2 on a multi-core Linux machine, else 0. Worker processes are forked, so
-    they need no pickling and start in milliseconds; where fork is not the safe default
-    (Windows, macOS), figures are drawn in the writing process."""
-    text = os.environ.get(WORKERS_VARIABLE, "").strip()
-    if text:
-        try:
-            return max(0, int(text))
-        except ValueError:
-            raise InputError(f"{WORKERS_VARIABLE} must be a whole number of processes",
-                             text) from None
-    if not sys.platform.startswith("linux") or (os.cpu_count() or 1) < 2:
-        return 0
-    return 2
+def plot_function(module, name):
+    """:class:`PlotFunction` ``name`` of ``module``."""
+    return PlotFunction(module, name)
 
 
-_WARM = []
-
-
-def _warm_up():
-    """Load the Agg backend and the fonts once in this process, before the workers are
-    forked, so that they share them instead of each loading its own."""
-    if _WARM:
-        return
+def warm_up():
+    """Load the Agg backend and the fonts (a helper process does it before its first
+    figure, while its parent reads the workbook)."""
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(1, 1))
     fig.text(0.5, 0.5, "0.5 [m]")
     fig.add_subplot().set_title("t")
     fig.savefig(io.BytesIO(), format="png", dpi=10)
-    _WARM.append(True)
+
+
+def draw_png(func, args, kwargs, dpi):
+    """PNG bytes of the figure ``func(*args, **kwargs)`` (run where the figure is drawn)."""
+    from slingloads.io.common.excel import figure_png
+
+    return figure_png(func(*args, **kwargs), dpi)
+
+
+#: Modules a helper loads while it waits for figures, in the order of the figures (the
+#: plots and what their data need): the loads' first, drawn while the workbook is read.
+WARM_MODULES = ("slingloads.io.common.figures", "slingloads.io.loads.report",
+                "slingloads.io.loads.plots", "slingloads.io.lateral.report",
+                "slingloads.io.lateral.plots", "slingloads.io.chute.report",
+                "slingloads.io.chute.plots", "slingloads.io.multibody.report",
+                "slingloads.io.multibody.plots", "slingloads.io.campaign.plots")
+
+_ACTIVE = []
+
+
+@contextmanager
+def helping(warm=WARM_MODULES):
+    """The helper of a whole run: every :class:`FigureRenderer` made inside the block has its
+    figures drawn by it. Started at once (forked while the process is still small); killed
+    if the block fails, stopped when it ends.
+
+    Yields
+    ------
+    Helper
+    """
+    with Helper(warm=warm) as helper:
+        _ACTIVE.append(helper)
+        try:
+            yield helper
+        finally:
+            _ACTIVE.remove(helper)
 
 
 class FigureRenderer:
     """Draws a report's figures to PNG while the report's tables are written.
 
     Use as a context manager: :meth:`draw` registers every figure (a plot function and its
-    arguments) and returns, for each, an object whose ``result()`` is the PNG bytes (a
-    :class:`concurrent.futures.Future` when worker processes draw them). The bytes are the
-    same whichever process draws them. On leaving the block the workers are stopped (and
-    pending drawings cancelled if the block failed).
+    arguments) and returns, for each, an object whose ``result()`` is the PNG bytes. They are
+    drawn by the run's helper (:func:`helping`) when there is one, else by a helper of this
+    renderer's own; a figure no helper has started when its PNG is asked for is drawn in
+    this process. The bytes are the same whichever process draws them.
 
     Parameters
     ----------
     workers : int, optional
-        Worker processes (default :func:`plot_workers`); 0 draws each figure in this process
-        when its PNG is first asked for.
+        Helper processes of this renderer's own (default: the run's helper when there is
+        one, else :func:`~slingloads.io.common.helper.helper_processes`); 0 draws each
+        figure in this process when its PNG is first asked for.
     dpi : float
         Resolution of the PNG files. [dots per inch]
     """
 
     def __init__(self, workers=None, dpi=100):
-        self.workers = plot_workers() if workers is None else int(workers)
         self.dpi = dpi
-        self._pool = None
-        self._keys = []
+        self._own = None
+        if workers is None and _ACTIVE:
+            self.helper = _ACTIVE[-1]
+        else:
+            self._own = self.helper = Helper(workers)
         #: Every drawing started, by tag.
         self.pngs = {}
 
@@ -145,28 +161,16 @@ class FigureRenderer:
     def draw(self, jobs):
         """Start drawing ``jobs`` (``{tag: (plot function, args, kwargs)}``); returns
         ``{tag: object with result() -> PNG bytes}`` in the same order."""
-        keys = {}
-        for tag, (func, args, kwargs) in jobs.items():
-            key = (id(self), len(_JOBS), tag)
-            _JOBS[key] = (func, tuple(args), dict(kwargs), self.dpi)
-            keys[tag] = key
-        self._keys += list(keys.values())
-        if self.workers <= 0 or not keys:
-            started = {tag: _Later(key) for tag, key in keys.items()}
-        else:
-            if self._pool is None:
-                _warm_up()
-                context = multiprocessing.get_context("fork")
-                self._pool = ProcessPoolExecutor(max_workers=self.workers, mp_context=context)
-            started = {tag: self._pool.submit(_draw, key) for tag, key in keys.items()}
+        if self._own is not None:
+            self._own.start()
+        started = {tag: self.helper.submit(draw_png, func, tuple(args), dict(kwargs), self.dpi)
+                   for tag, (func, args, kwargs) in jobs.items()}
         self.pngs.update(started)
         return started
 
     def __exit__(self, exc_type, exc, tb):
-        if self._pool is not None:
-            self._pool.shutdown(wait=True, cancel_futures=exc_type is not None)
-        for key in self._keys:
-            _JOBS.pop(key, None)
+        if self._own is not None:
+            self._own.close(abort=exc_type is not None)
         return False
 
 
@@ -198,6 +202,26 @@ def start_drawing(jobs, dpi=100):
     renderer = FigureRenderer(dpi=dpi)
     renderer.draw(jobs)
     return renderer
+
+
+#: Figures waiting for the helper (every report's) from which the writing process loads
+#: matplotlib to draw some of them itself: loading it costs about a third of a second, more
+#: than waiting for one or two figures.
+SHARE_FROM = 3
+
+
+def collect_pngs(pngs):
+    """The PNG bytes of drawings (bytes, or pending drawings of a :class:`FigureRenderer`).
+
+    The figures no helper process has started are drawn here, from the last one back (the
+    helper takes them from the front), when matplotlib is loaded here already or when at
+    least :data:`SHARE_FROM` figures wait for the helper; else the helper is waited for.
+    """
+    items = list(pngs)
+    calls = [p for p in items if isinstance(p, Call)]
+    share = "matplotlib.figure" in sys.modules or (
+        bool(calls) and calls[0].helper.backlog() >= SHARE_FROM)
+    return [png_bytes(p) for p in gather(items, least=1 if share else len(items) + 1)]
 
 
 def png_bytes(png):

@@ -70,10 +70,10 @@ UNIT_LABELS = {
 _SLUG = POUND_FORCE / FOOT  # [kg]
 
 #: Exact factors to SI of the units the template, the example and the reports spell, by
-#: (unit as written, kind): read without building pint's registry (a third of a second at
-#: every start). Any other spelling goes to pint; tests/test_units.py checks that pint gives
-#: the same factors (to the last bits of a double: the factors here are the exact
-#: definitions, pint's carry its rounding).
+#: (unit as written, kind): read without building pint's registry (half a second or more
+#: with the libraries pint probes on import). Any other spelling goes to pint;
+#: tests/test_units.py checks that pint gives the same factors (to the last bits of a double:
+#: the factors here are the exact definitions, pint's carry its rounding).
 EXACT_FACTORS = {
     **{(kind, u): 1.0 for kind, u in (("length", "m"), ("mass", "kg"), ("force", "N"),
                                        ("moment", "N*m"), ("moment", "N m"),
@@ -90,6 +90,8 @@ EXACT_FACTORS = {
     ("mass", "slug"): _SLUG, ("force", "lbf"): POUND_FORCE,
     ("moment", "lbf*in"): POUND_FORCE * INCH, ("moment", "lbf in"): POUND_FORCE * INCH,
     ("moment", "lbf*ft"): POUND_FORCE * FOOT, ("moment", "lbf ft"): POUND_FORCE * FOOT,
+    # the parachute sizing plots' moment units
+    ("moment", "kN*m"): 1000.0, ("moment", "kilolbf*ft"): 1000.0 * POUND_FORCE * FOOT,
     ("inertia", "slug*ft^2"): _SLUG * FOOT**2, ("inertia", "slug ft^2"): _SLUG * FOOT**2,
     ("angle", "deg"): math.pi / 180.0, ("speed", "kt"): KNOT, ("speed", "ft/s"): FOOT,
     ("frequency", "1/s"): 1.0, ("frequency", "deg/s"): math.pi / 180.0,

@@ -50,7 +50,7 @@ from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, png_bytes, start_drawing
+from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -450,13 +450,11 @@ def _damping_table(damping, units):
 
 def _figures(result, units):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
-    from slingloads.io.lateral.plots import (  # matplotlib loads only when plotting
-        plot_max_angle_vs_acceleration,
-        plot_sensitivity,
-        plot_shear_at_angles,
-        plot_time_histories,
-    )
-
+    (plot_max_angle_vs_acceleration, plot_sensitivity, plot_shear_at_angles,
+     plot_time_histories) = (  # matplotlib loads where they are drawn
+        plot_function("slingloads.io.lateral.plots", name)
+        for name in ("plot_max_angle_vs_acceleration", "plot_sensitivity",
+                     "plot_shear_at_angles", "plot_time_histories"))
     figs = {"histories": (plot_time_histories, (result.critical_run,), {}),
             "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {}),
             "sensitivity": (plot_sensitivity, (result.study,), {})}

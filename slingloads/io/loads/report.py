@@ -54,7 +54,7 @@ from slingloads.io.common.excel import (
     format_by_header,
     write_workbook,
 )
-from slingloads.io.common.figures import drawings, png_bytes, start_drawing
+from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -709,12 +709,9 @@ def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_sta
 
     Default hull plots: one per pair at the station where its first component is largest.
     """
-    from slingloads.io.loads.plots import (  # matplotlib loads only when plotting
-        plot_hull,
-        plot_sfbm,
-        plot_station_diagram,
-    )
-
+    plot_hull, plot_sfbm, plot_station_diagram = (  # matplotlib loads where they are drawn
+        plot_function("slingloads.io.loads.plots", name)
+        for name in ("plot_hull", "plot_sfbm", "plot_station_diagram"))
     check_units(units)
     for pair in hull_pairs:
         if len(pair) != 2:

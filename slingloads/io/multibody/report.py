@@ -36,7 +36,7 @@ from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import write_csv
 from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, png_bytes, start_drawing
+from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
     check_units,
@@ -360,12 +360,9 @@ def _sheets(result, units, warnings=()):
 
 def _figures(result, units="SI"):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
-    from slingloads.io.multibody.plots import (  # matplotlib loads only when plotting
-        plot_eigenvalues,
-        plot_histories,
-        plot_views,
-    )
-
+    plot_eigenvalues, plot_histories, plot_views = (  # matplotlib loads where they are drawn
+        plot_function("slingloads.io.multibody.plots", name)
+        for name in ("plot_eigenvalues", "plot_histories", "plot_views"))
     figs = {"histories": (plot_histories, (result.simulation,), {})}
     if result.linear is not None:
         figs["eigenvalues"] = (plot_eigenvalues, (result.linear,), {})

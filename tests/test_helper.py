@@ -1,0 +1,160 @@
+"""The helper process that draws a run's figures, and Ctrl-C on a run that uses it.
+
+Reference: the contract of slingloads.io.common.helper and docs/inputs-and-outputs.md. A
+call gives the value it gives in this process, or raises the error it raises here (an
+InputError keeps its message); a call no helper has started is taken back and run here; a
+helper that dies leaves its calls to this process; a helper never outlives its parent; and
+Ctrl-C on ``slingloads run`` exits with 130 (128 + SIGINT), writes nothing, and leaves no
+process behind, whenever it comes.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from hostile import save_xlsx, small_workbook
+
+from slingloads.errors import InputError
+from slingloads.io.common.atomic import PAUSE_VARIABLE, TEMP_PREFIX
+from slingloads.io.common.helper import Helper, RemoteTraceback, gather
+
+pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"),
+                                reason="helper processes are forked on Linux only")
+
+
+def _refuse(mass):
+    raise InputError("mass must be > 0", mass, sheet="MassItems", cell="C3", unit="kg")
+
+
+def _wait_for(path, pid):
+    """Wait (in a helper) until ``path`` exists; the process id."""
+    deadline = time.monotonic() + 30
+    while not os.path.exists(path) and time.monotonic() < deadline:
+        time.sleep(0.01)
+    return os.getpid()
+
+
+def _die_in_a_helper(parent):
+    """Kill the helper process that runs this; in the parent, say so."""
+    if os.getpid() != parent:
+        os._exit(3)
+    return "run here"
+
+
+def _settle(*calls):
+    """Wait until a helper has run ``calls`` (asking for a result first would run it here)."""
+    deadline = time.monotonic() + 30
+    while not all(c.done() for c in calls) and time.monotonic() < deadline:
+        time.sleep(0.01)
+    return calls
+
+
+def test_calls_give_their_value_from_a_helper_process():
+    """os.getpid run by the helper is another process's id; 2 ** 10 is 1024; a plain
+    value among the calls is given back as it is."""
+    with Helper(1) as helper:
+        pid, power = _settle(helper.submit(os.getpid), helper.submit(pow, 2, 10))
+        assert gather([pid, power, "as is"]) == [pid.result(), 1024, "as is"]
+        assert pid.result() != os.getpid()
+
+
+def test_an_input_error_in_a_helper_is_raised_here_with_its_message():
+    """The InputError a call raises in the helper is raised by result() with the same
+    message (sheet, cell, value and unit), the helper's traceback as its cause."""
+    with pytest.raises(InputError) as here:
+        _refuse(-1.0)
+    with Helper(1) as helper, pytest.raises(InputError) as there:
+        _settle(helper.submit(_refuse, -1.0))[0].result()
+    assert str(there.value) == str(here.value)
+    assert "sheet 'MassItems', cell C3" in str(there.value)
+    assert isinstance(there.value.__cause__, RemoteTraceback)
+    assert "_refuse" in str(there.value.__cause__)
+
+
+def test_calls_no_helper_started_are_run_here(tmp_path):
+    """While the helper is busy with a first call, a second one asked for is taken back and
+    run in this process; the first is still the helper's."""
+    go = tmp_path / "go"
+    with Helper(1) as helper:
+        busy = helper.submit(_wait_for, str(go), 0)
+        deadline = time.monotonic() + 30
+        while busy.state == "pending" and time.monotonic() < deadline:  # until it starts
+            time.sleep(0.01)
+        second = helper.submit(os.getpid)
+        assert gather([second]) == [os.getpid()]
+        go.touch()
+        assert busy.result() != os.getpid()
+
+
+def test_the_calls_of_a_dead_helper_are_run_here():
+    """A helper that dies in a call (here: it kills itself) leaves that call, and those after
+    it, to this process."""
+    with Helper(1) as helper:
+        calls = [helper.submit(_die_in_a_helper, os.getpid()) for _ in range(3)]
+        assert gather(calls) == ["run here"] * 3
+
+
+def _gone(pid):
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (FileNotFoundError, ProcessLookupError):
+        return True
+    return state in ("Z", "X")  # a zombie is dead, waiting to be reaped
+
+
+def test_a_helper_dies_with_its_parent():
+    """A parent killed outright (SIGKILL: no clean-up) takes its helper with it."""
+    code = ("import os, signal, sys\n"
+            "from slingloads.io.common.helper import Helper\n"
+            "helper = Helper(1).start()\n"
+            "print(helper.submit(os.getpid).result(), flush=True)\n"
+            "os.kill(os.getpid(), signal.SIGKILL)\n")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=60)
+    assert proc.returncode == -signal.SIGKILL
+    helper = int(proc.stdout.split()[0])
+    deadline = time.monotonic() + 10
+    while not _gone(helper) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert _gone(helper)
+
+
+def _group_left(pgid):
+    found = subprocess.run(["pgrep", "-g", str(pgid)], capture_output=True, text=True)
+    return [int(p) for p in found.stdout.split() if not _gone(int(p))]
+
+
+@pytest.mark.parametrize("moment", ["reading", "publishing"])
+def test_ctrl_c_exits_130_writes_nothing_and_leaves_no_process(tmp_path, moment):
+    """Ctrl-C (SIGINT to the command's process group, as a terminal sends it) while the
+    workbook is read, and while the complete new set waits to be published: exit code 130,
+    the message, no traceback, the output folder as it was (absent), no staging folder and
+    no process of the run left."""
+    workbook = save_xlsx(small_workbook(), tmp_path / "study.xlsx")
+    out = tmp_path / "reports"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "slingloads.cli", "run", str(workbook), "--out", str(out),
+         "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+        start_new_session=True, env={**os.environ, PAUSE_VARIABLE: "2"})
+    if moment == "reading":
+        time.sleep(0.5)
+    else:  # every file staged: the run pauses before publishing
+        deadline = time.monotonic() + 120
+        while not any(p.name.startswith(TEMP_PREFIX) and len(os.listdir(p)) >= 10
+                      for p in tmp_path.iterdir()):
+            assert proc.poll() is None and time.monotonic() < deadline
+            time.sleep(0.01)
+    os.killpg(proc.pid, signal.SIGINT)
+    stderr = proc.communicate(timeout=60)[1]
+    assert proc.returncode == 130, stderr
+    assert "interrupted; nothing was written" in stderr and "Traceback" not in stderr
+    assert not out.exists()
+    assert not [p.name for p in tmp_path.iterdir() if p.name.startswith(TEMP_PREFIX)]
+    time.sleep(0.2)
+    assert _group_left(proc.pid) == []
