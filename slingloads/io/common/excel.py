@@ -1024,6 +1024,7 @@ def write_cover_sheet(wb, name, sections, info):
     columns = _Columns({0: 24, 1: 72}, {1})
     _set_widths(ws, columns)
     print_setup(ws, pixels=columns.pixels, sheet_title="Cover", info=info)
+    ws.page_setup.fitToHeight = 1  # a long list of sheets and files shrinks, never spills
     writer = _SheetWriter(ws, columns.widths)
     writer.append([info.title], _style(_COVER_TITLE_FONT))
     wrap = _style(None, None, _WRAP)
