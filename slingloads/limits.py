@@ -145,8 +145,8 @@ MAX_MULTIBODY_RUNS = 200
 #: compiled kernel takes about 10 us a run-step on two cores: 3,000,000 is about 30 s.
 MAX_MULTIBODY_RUN_STEPS = 3_000_000
 #: Stored samples of the multibody model: runs x (simulation time / output interval + 1). Each
-#: holds about 560 bytes of states, rates and reported quantities and is a row of the
-#: histories CSV file.
+#: holds 160 bytes of states (the reported quantities are evaluated when a run's histories are
+#: asked for) and is a row of the histories CSV file.
 MAX_MULTIBODY_SAMPLES = 200_000
 #: Values of one comma-separated list of the campaign (area factors, airspeeds, ...).
 MAX_LIST_ITEMS = 50

@@ -428,7 +428,7 @@ def test_drive_table_interpolation():
     quadratic ends reproduces polynomials of degree 1), a 1-cosine gust of 10 s within
     1e-5 of its amplitude (cubic interpolation error ~ h^3 |v'''| with h = 0.01 s), and the
     value at a jump is the one after it at the start of a segment and before it at its
-    end."""
+    end, and a channel constant over a segment is its value exactly."""
     from slingloads.models.multibody.integrator import _drive_at, stack_drives, tabulate_drive
 
     gust = FiniteGust(9.0, 2.0, 3.0)
@@ -440,11 +440,13 @@ def test_drive_table_interpolation():
 
     d = stack_drives([tabulate_drive(drive, gust.breakpoints, 10.0, 0.1)])
     out = np.empty(9)
-    args = (d["a"], d["h"], d["n"], d["offset"], d["values"], out)
+    args = (d["a"], d["h"], d["n"], d["offset"], d["values"], d["vary"], d["bend"], out)
+    assert d["vary"][0].tolist() == [[False, True, True] + [False] * 6] * 3
     for s, t in ((0, 0.7), (1, 3.33333), (2, 7.891)):
         _drive_at(t, 0, s, *args)
         assert out[1] == pytest.approx(1.5 * t - 2.0, abs=1e-12)
         assert out[2] == pytest.approx(drive([t])[0, 2], abs=1e-5 * 9.0)
+        assert out[0] == (9.0 if s == 1 else 0.0) and not out[3:].any()
     _drive_at(2.0, 0, 1, *args)
     assert out[0] == 9.0  # the gust's start: after the jump
     _drive_at(5.0, 0, 1, *args)

@@ -11,11 +11,18 @@ must give |lambda| dt <= 1).
 
 A run that leaves a table stops there: the verdict says which table and when, the history is NaN
 after it (no extrapolation), and the rest of the batch goes on.
+
+Each run's metrics are measured by the kernel as soon as the run is integrated (compiled, from
+the quantities the equations report at its samples: no run's reported quantities are stored).
+A run's reported quantities and histories are computed when asked for, from its sampled
+states, which the batch keeps, or integrates again, the same to the last bit, when it was told
+to keep only the metrics (``keep_histories=False``).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 import pandas as pd
@@ -26,11 +33,20 @@ from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
 from slingloads.models.multibody.integrator import (
     ATOL,
     RTOL,
+    evaluate_many,
     integrate,
     stack_drives,
     tabulate_drive,
 )
-from slingloads.models.multibody.parachute_line import line_angles
+from slingloads.models.multibody.response import (
+    HISTORY,
+    MEASURES,
+    N_HISTORY,
+    PEAKS,
+    damping_from_peaks,
+    derive,
+    scratch,
+)
 from slingloads.models.multibody.rigid_body import (
     euler_angles,
     quaternion_from_euler,
@@ -38,7 +54,7 @@ from slingloads.models.multibody.rigid_body import (
 )
 
 from .manoeuvres import Manoeuvre
-from .trim import flag_text, linearise, trim_many
+from .trim import fastest_rates, flag_text, linearise, trim_many
 
 #: Default run length [s], fixed step (None: adaptive) [s] and sampling interval of the
 #: histories [s].
@@ -50,6 +66,17 @@ STEP_LIMIT = 1.0
 ADAPTIVE_STABILITY = 3.3
 #: Activity (yaw rate, swing rates) below which a response counts as settled. [deg/s]
 QUIET = 0.5
+#: Least half-width of the band a settled yaw stays in. [rad]
+BAND_FLOOR = float(np.radians(1.0))
+#: The rule of a run's response verdict.
+VERDICT_RULE = (
+    "divergent: left a table, or the envelope of the motion (largest |rate| of yaw, lateral "
+    "and longitudinal swing) grows by > 10 % from the first to the second half of the time "
+    "after the input ends (after its onset for a sustained input); convergent: it shrinks by "
+    f"> 10 % or stays below {QUIET} deg/s; otherwise undamped (bounded under a sustained "
+    "input); inconclusive when less than 10 s are left after the input")
+#: Names of the peaks in the metrics, where they differ from the histories'.
+METRIC_LABELS = {"hub load angle": "hub load from mast"}
 
 _INFO = {name: i for i, name in enumerate(INFO)}
 
@@ -100,28 +127,9 @@ def _drive(manoeuvre, base_velocity):
 def _damping_from_peaks(t, y, start=0.0):
     """Period [s] and damping ratio [-] from the successive positive peaks of ``y`` after
     ``start`` (log decrement), or NaN when there are fewer than three peaks above 2 % of the
-    largest."""
-    keep = (t >= start) & np.isfinite(y)
-    t, y = t[keep], y[keep]
-    if y.size < 5:
-        return np.nan, np.nan
-    inner = (y[1:-1] > y[:-2]) & (y[1:-1] >= y[2:]) & (y[1:-1] > 0)
-    idx = np.nonzero(inner)[0] + 1
-    if idx.size == 0:
-        return np.nan, np.nan
-    idx = idx[y[idx] > 0.02 * y[idx].max()]
-    if idx.size < 3:
-        return np.nan, np.nan
-    # parabolic refinement of each peak
-    y0, y1, y2 = y[idx - 1], y[idx], y[idx + 1]
-    den = y0 - 2 * y1 + y2
-    shift = np.where(den != 0, 0.5 * (y0 - y2) / np.where(den != 0, den, 1.0), 0.0)
-    h = t[1] - t[0]
-    times = t[idx] + shift * h
-    peaks = y1 - 0.25 * (y0 - y2) * shift
-    period = float(np.mean(np.diff(times)))
-    delta = float(np.mean(np.log(peaks[:-1] / peaks[1:])))
-    return period, delta / np.sqrt(4 * np.pi**2 + delta**2)
+    largest (:func:`~slingloads.models.multibody.response.damping_from_peaks`)."""
+    t, y = np.ascontiguousarray(t, dtype=float), np.ascontiguousarray(y, dtype=float)
+    return damping_from_peaks(t, y, float(start), scratch(t.size))
 
 
 #: Columns of :meth:`RunResult.to_frame`: (key of :meth:`RunResult.histories`, label,
@@ -156,24 +164,42 @@ class RunResult:
     trim : Trim
     time : ndarray, shape (n,)
         [s]
-    states : ndarray, shape (n, 20)
-        States of the equations (NaN after a stop or without trim).
-    info : ndarray, shape (n, N_INFO)
-        Reported quantities of the equations.
     flag : int
         Table or limit left (0: none); see :func:`~.trim.flag_text`.
     stop_time : float
         Time the run stopped (NaN if it ran to the end). [s]
+    batch : object, optional
+        The runs integrated with this one (their states, parameters, drives and measures),
+        from which :attr:`states` and :attr:`info` come.
+    index : int
+        This run's place in ``batch``.
     """
 
     system: object
     manoeuvre: Manoeuvre
     trim: object
     time: np.ndarray
-    states: np.ndarray
-    info: np.ndarray
     flag: int
     stop_time: float
+    batch: object = field(default=None, repr=False)
+    index: int = 0
+
+    @cached_property
+    def states(self):
+        """States of the equations at the samples, ndarray (n, 20) (NaN after a stop or
+        without trim); integrated again, the same to the last bit, when the batch did not
+        keep them."""
+        if self.batch is None:
+            return np.full((self.time.size, N_STATES), np.nan)
+        return self.batch.states_of(self.index)
+
+    @cached_property
+    def info(self):
+        """Reported quantities of the equations at the samples, ndarray (n, N_INFO) (NaN
+        after a stop or without trim), evaluated on first use."""
+        if self.batch is None:
+            return np.full((self.time.size, N_INFO), np.nan)
+        return self.batch.info(self.index, self.states)
 
     @property
     def name(self):
@@ -192,48 +218,20 @@ class RunResult:
             return f"left the {flag_text(self.flag)} at t = {self.stop_time:.3f} s"
         return ""
 
-    def _q(self, name):
-        return self.info[:, _INFO[name]]
+    def history_table(self):
+        """Derived histories (n, len(HISTORY)) in the order of
+        :data:`~slingloads.models.multibody.response.HISTORY` (SI, angles in rad)."""
+        system = self.system
+        table = np.empty((self.time.size, N_HISTORY))
+        derive(self.time, self.states, self.info, float(system.weight),
+               np.asarray(system.hardpoints.mast_axis, float), system.parachute is not None,
+               table)
+        return table
 
     def histories(self):
         """Derived histories in SI (angles in rad) as a dict of arrays."""
-        yaw, pitch, roll = euler_angles(self.states[:, 9:13])
-        yaw = np.unwrap(np.where(np.isfinite(yaw), yaw, 0.0))
-        yaw[~np.isfinite(self.states[:, 9])] = np.nan
-        d = self.info[:, _INFO["d_X"]:_INFO["d_Z"] + 1]
-        span = np.linalg.norm(d, axis=1)
-        hub = self.info[:, _INFO["hub_x"]:_INFO["hub_z"] + 1]
-        mast = self.system.hardpoints.mast_axis
-        hub_norm = np.linalg.norm(hub, axis=1)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            hub_angle = np.where(hub_norm > 0, np.arccos(np.clip(
-                hub @ mast / np.where(hub_norm > 0, hub_norm, 1.0), -1, 1)), np.nan)
-        theta, psi = line_angles(self.info[:, _INFO["line_x"]:_INFO["line_z"] + 1])
-        r = rotation_matrix(np.where(np.isfinite(self.states[:, 9:13]), self.states[:, 9:13],
-                                     [1.0, 0, 0, 0]))
-        omega_earth = np.einsum("nij,nj->ni", r, self.states[:, 13:16])
-        thrust = self.info[:, _INFO["thrust_X"]:_INFO["thrust_Z"] + 1]
-        out = {
-            "time": self.time, "x": self.states[:, 3], "y": self.states[:, 4],
-            "z": self.states[:, 5], "yaw": yaw, "pitch": pitch, "roll": roll,
-            "yaw rate": -omega_earth[:, 2], "alpha": self._q("alpha"),
-            "beta": self._q("beta"), "airspeed": self._q("airspeed"),
-            "swing longitudinal": np.arctan2(d[:, 0], -d[:, 2]),
-            "swing lateral": np.arctan2(d[:, 1], -d[:, 2]),
-            "swing": np.arccos(np.clip(-d[:, 2] / span, -1, 1)),
-            "tension": self._q("tension"),
-            "tension ratio": self._q("tension") / self.system.weight,
-            "hub Fx": hub[:, 0], "hub Fy": hub[:, 1], "hub Fz": hub[:, 2],
-            "hub load angle": hub_angle,
-            "line theta": theta, "line psi": psi,
-            "line tension": self._q("line_tension"), "chute alpha": self._q("chute_alpha"),
-            "carrier speed": np.linalg.norm(self.states[:, 0:3], axis=1),
-            "thrust tilt": np.arctan2(-thrust[:, 0], thrust[:, 2]),
-        }
-        if self.system.parachute is None:
-            for key in ("line theta", "line psi", "line tension", "chute alpha"):
-                out[key] = np.full(self.time.shape, np.nan)
-        return out
+        table = self.history_table()
+        return {name: table[:, k] for k, name in enumerate(HISTORY)}
 
     def to_frame(self):
         """Time histories with unit-labelled columns (angles in degrees; body-axis hub load;
@@ -248,112 +246,57 @@ class RunResult:
         return frame
 
     # ------------------------------------------------------------------------- metrics
+    def measures(self):
+        """The run's measures (:data:`~slingloads.models.multibody.response.MEASURES`; SI,
+        angles in rad), computed as soon as it was integrated."""
+        return self.batch.measures[self.index]
+
     def metrics(self):
         """Per-run metrics (SI, angles in degrees), see ``docs/multibody.md``."""
-        h = self.histories()
-        t = self.time
         row = {"run": self.name, "manoeuvre": self.manoeuvre.describe(),
                "trim converged": self.trim.converged}
         if not self.trim.converged:
             row.update({"verdict": "no trim", "stopped": self.stop_reason()})
             return row
-        start = min(self.manoeuvre.breakpoints or (0.0,))
-        after = (t >= start) & np.isfinite(h["yaw"])
-        x0 = {k: h[k][0] for k in h}
-
-        def peak(key, relative=True):
-            y = h[key] - (x0[key] if relative else 0.0)
-            y = np.where(after, y, np.nan)
-            if not np.any(np.isfinite(y)):
-                return np.nan, np.nan
-            k = int(np.nanargmax(np.abs(y)))
-            return float(y[k]), float(t[k])
-
-        for key, label, rel in (("yaw", "yaw", True), ("beta", "beta", False),
-                                ("swing lateral", "swing lateral", False),
-                                ("swing longitudinal", "swing longitudinal", True),
-                                ("pitch", "pitch", True), ("roll", "roll", False),
-                                ("hub load angle", "hub load from mast", False),
-                                ("line psi", "line psi", False),
-                                ("line theta", "line theta", True)):
-            value, when = peak(key, rel)
-            what = "change" if rel else "peak"
-            row[f"{label} {what} [deg]"] = np.degrees(value)
-            row[f"{label} at [s]"] = when
-        y = h["yaw"] - x0["yaw"]
-        row["yaw rms [deg]"] = float(np.degrees(np.sqrt(np.nanmean(y[after] ** 2))))
-        b = h["beta"]
-        row["beta rms [deg]"] = float(np.degrees(np.sqrt(np.nanmean(b[after] ** 2))))
-        tr = h["tension ratio"]
-        row["tension / weight max [-]"] = float(np.nanmax(tr))
-        row["tension / weight min [-]"] = float(np.nanmin(tr))
-        slack = tr <= 0
-        row["cable slack"] = bool(np.any(slack))
-        row["cable slack first at [s]"] = float(t[np.argmax(slack)]) if slack.any() else np.nan
-        row["cable slack time [s]"] = float(np.count_nonzero(slack) * (t[1] - t[0]))
+        m = dict(zip(MEASURES, self.measures(), strict=True))
+        for key, relative in PEAKS:
+            label = METRIC_LABELS.get(key, key)
+            row[f"{label} {'change' if relative else 'peak'} [deg]"] = np.degrees(
+                m[f"{key} peak"])
+            row[f"{label} at [s]"] = float(m[f"{key} at"])
+        row["yaw rms [deg]"] = float(np.degrees(m["yaw rms"]))
+        row["beta rms [deg]"] = float(np.degrees(m["beta rms"]))
+        row["tension / weight max [-]"] = float(m["tension ratio max"])
+        row["tension / weight min [-]"] = float(m["tension ratio min"])
+        row["cable slack"] = bool(m["cable slack"])
+        row["cable slack first at [s]"] = float(m["cable slack first at"])
+        row["cable slack time [s]"] = float(m["cable slack time"])
         if self.system.parachute is not None:
-            row["line tension min [N]"] = float(np.nanmin(h["line tension"]))
-            row["line slack"] = bool(np.nanmin(h["line tension"]) < 0)
-            row["canopy alpha max [deg]"] = float(np.degrees(np.nanmax(h["chute alpha"])))
-        end = self.manoeuvre.input_end
-        end = t[0] if end is None else end
-        period, zeta = _damping_from_peaks(t, h["yaw rate"], end)
-        row["yaw period from response [s]"] = period
-        row["yaw damping ratio from response [-]"] = zeta
-        row["settling time [s]"] = self._settling(t, y, end)
-        verdict, rule = self._verdict(h)
-        row["verdict"] = verdict
-        row["verdict rule"] = rule
+            row["line tension min [N]"] = float(m["line tension min"])
+            row["line slack"] = bool(m["line tension min"] < 0)
+            row["canopy alpha max [deg]"] = float(np.degrees(m["chute alpha max"]))
+        row["yaw period from response [s]"] = float(m["yaw period"])
+        row["yaw damping ratio from response [-]"] = float(m["yaw damping ratio"])
+        row["settling time [s]"] = float(m["settling time"])
+        row["verdict"] = self._verdict(m["activity first"], m["activity second"])
+        row["verdict rule"] = VERDICT_RULE
         row["stopped"] = self.stop_reason()
-        row["carrier speed end [m/s]"] = float(h["carrier speed"][np.isfinite(
-            h["carrier speed"])][-1])
+        row["carrier speed end [m/s]"] = float(m["carrier speed end"])
         return row
 
-    @staticmethod
-    def _settling(t, y, start):
-        """Time after ``start`` after which |y - y_end| stays within max(10 % of its peak,
-        1 deg); NaN when it never does."""
-        ok = np.isfinite(y)
-        if not ok[-1]:
-            return np.nan
-        dev = np.abs(y - y[-1])
-        band = max(0.1 * np.nanmax(dev), np.radians(1.0))
-        outside = np.nonzero((dev > band) & ok)[0]
-        if outside.size == 0:
-            return 0.0
-        last = outside[-1]
-        if last >= t.size - 2:
-            return np.nan
-        return max(0.0, float(t[last + 1] - start))
-
-    def _verdict(self, h):
-        rule = ("divergent: left a table, or the envelope of the motion (largest |rate| of "
-                "yaw, lateral and longitudinal swing) grows by > 10 % from the first to the "
-                "second half of the time after the input ends (after its onset for a sustained "
-                f"input); convergent: it shrinks by > 10 % or stays below {QUIET} deg/s; "
-                "otherwise undamped (bounded under a sustained input); inconclusive when less "
-                "than 10 s are left after the input")
+    def _verdict(self, first, second):
+        """Verdict of :data:`VERDICT_RULE` from the largest activity [deg/s] in the first and
+        the second half of the time it looks at."""
         if self.flag:
-            return "divergent", rule
-        t = self.time
-        dt = t[1] - t[0]
-        sustained = self.manoeuvre.input_end is None
-        start = (min(self.manoeuvre.breakpoints or (0.0,)) if sustained
-                 else self.manoeuvre.input_end)
-        if t[-1] - start < 10.0:
-            return "inconclusive", rule
-        rates = np.vstack([np.abs(h["yaw rate"]),
-                           np.abs(np.gradient(h["swing lateral"], dt)),
-                           np.abs(np.gradient(h["swing longitudinal"], dt))])
-        activity = np.degrees(rates.max(axis=0))
-        middle = 0.5 * (start + t[-1])
-        first = activity[(t >= start) & (t < middle)].max()
-        second = activity[t >= middle].max()
+            return "divergent"
+        _, _, start = _measure_times(self.manoeuvre)
+        if self.time[-1] - start < 10.0:
+            return "inconclusive"
         if second > 1.1 * first and second > QUIET:
-            return "divergent", rule
+            return "divergent"
         if second < 0.9 * first or second <= QUIET:
-            return "convergent", rule
-        return ("bounded" if sustained else "undamped"), rule
+            return "convergent"
+        return "bounded" if self.manoeuvre.input_end is None else "undamped"
 
 
 @dataclass(frozen=True, eq=False)
@@ -439,7 +382,7 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
 
 
 def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL, rtol=RTOL,
-                  atol=ATOL, check_step=True, workers=None):
+                  atol=ATOL, check_step=True, workers=None, keep_histories=True):
     """Integrate runs given as (system, manoeuvre) pairs, together (module notes).
 
     Parameters
@@ -455,6 +398,11 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         models).
     workers : int, optional
         Threads integrating the runs (default: every processor this process may use).
+    keep_histories : bool
+        Keep every run's sampled states (default). False keeps only what the metrics need
+        (each run's measures, computed as soon as it is integrated): a run's states and
+        histories are then integrated again when asked for (the same to the last bit, about
+        a millisecond a run), and a large batch needs no memory for histories.
 
     Returns
     -------
@@ -489,11 +437,10 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         if tr.converged:
             groups.setdefault(system.table_key(), []).append(k)
         else:
-            results[k] = RunResult(system, prepared[k][1], tr, time,
-                                   np.full((n_out, N_STATES), np.nan),
-                                   np.full((n_out, N_INFO), np.nan), 0, 0.0)
+            results[k] = RunResult(system, prepared[k][1], tr, time, 0, 0.0)
     drives = _DriveTables(t_end, output_interval)
-    settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers}
+    settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers,
+                "keep_states": bool(keep_histories)}
     for members in groups.values():
         _integrate_group(prepared, members, results, drives, time, settings)
     return Simulation(results, linear, dt, float(rtol), float(atol))
@@ -517,10 +464,9 @@ def _check_adaptive_work(trims, keys, t_end):
     :data:`~slingloads.limits.MAX_MULTIBODY_RUN_STEPS` (an explicit step is stable only
     within |lambda| dt <= ADAPTIVE_STABILITY): a very stiff cable or a very light canopy
     would otherwise keep the integrator busy for hours."""
-    fastest = {}
-    for key, point in trims.items():
-        if point.converged:
-            fastest[key] = float(np.max(np.abs(linearise(point).eigenvalues)))
+    rates = fastest_rates(list(trims.values()))
+    fastest = {key: float(rate) for key, rate in zip(trims, rates, strict=True)
+               if np.isfinite(rate)}
     steps = sum(t_end * fastest.get(key, 0.0) / ADAPTIVE_STABILITY for key in keys)
     if steps > MAX_MULTIBODY_RUN_STEPS:
         worst = max(fastest.values())
@@ -567,10 +513,67 @@ def _integrate_group(prepared, members, results, drives, time, settings):
             seen[key] = len(profiles)
             profiles.append(table)
         index[j] = seen[key]
-    out, _, info, flags, stops = integrate(
-        x0, params, stack_drives(profiles), index, drives.interval, time.size,
-        system0.tables(), **settings)
+    drive = stack_drives(profiles)
+    measured = np.array([_measured(system, manoeuvre) for system, manoeuvre, _ in
+                         (prepared[k] for k in members)])
+    done = integrate(x0, params, drive, index, drives.interval, time.size, system0.tables(),
+                     measured=measured, **settings)
+    batch = _Batch(done, x0, params, drive, index, drives.interval, system0.tables(),
+                   settings)
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        results[k] = RunResult(system, manoeuvre, tr, time, out[j], info[j], int(flags[j]),
-                               float(stops[j]))
+        results[k] = RunResult(system, manoeuvre, tr, time, int(done.flags[j]),
+                               float(done.stop_time[j]), batch, j)
+
+
+def _measure_times(manoeuvre):
+    """(start, end, verdict start) [s] of a run's measures: its input's start (peaks and RMS
+    from then on), its end (damping and settling from then on; the first sample, 0, for a
+    sustained input) and the start of the time whose halves the verdict compares (the
+    input's start for a sustained input)."""
+    start = min(manoeuvre.breakpoints or (0.0,))
+    end = manoeuvre.input_end
+    if end is None:
+        return start, 0.0, start
+    return start, end, end
+
+
+def _measured(system, manoeuvre):
+    """What the kernel needs to measure a run (see the integrator's ``dopri_runs``)."""
+    return [system.weight, *system.hardpoints.mast_axis, float(system.parachute is not None),
+            *_measure_times(manoeuvre), BAND_FLOOR]
+
+
+class _Batch:
+    """What the runs integrated together share: their initial states, parameters, drives and
+    tables, their sampled states if kept and their measures. A run's states, when not kept,
+    are integrated again (alone: each run is integrated on its own whatever its batch, so
+    they are the same to the last bit), and its reported quantities are evaluated on
+    request (the same compiled equations at the same states and drive as during the
+    integration)."""
+
+    def __init__(self, done, x0, params, drive, profile, interval, tables, settings):
+        self.states, self.measures = done.states, done.measures
+        self.x0, self.params, self.drive, self.profile = x0, params, drive, profile
+        self.interval, self.tables, self.settings = interval, tables, settings
+        self.samples = drive["nodes"].shape[1]
+
+    def states_of(self, j):
+        """Sampled states of run ``j``."""
+        if self.states is not None:
+            return self.states[j]
+        one = slice(j, j + 1)
+        settings = {**self.settings, "keep_states": True, "workers": 1}
+        return integrate(self.x0[one], self.params[one], self.drive, self.profile[one],
+                         self.interval, self.samples, self.tables, **settings).states[0]
+
+    def info(self, j, states):
+        """Reported quantities of run ``j`` at its samples ``states`` (NaN where it had
+        stopped)."""
+        reached = np.isfinite(states[:, 0])
+        info = np.full((states.shape[0], N_INFO), np.nan)
+        if reached.any():
+            nodes = self.drive["nodes"][self.profile[j]]
+            _, info[reached], _ = evaluate_many(states[reached], self.params[j],
+                                                nodes[reached], self.tables)
+        return info

@@ -654,13 +654,19 @@ _FULL = {"Vc_X": 0, "Vc_Y": 1, "Vc_Z": 2, "p_X": 3, "p_Y": 4, "p_Z": 5, "v_X": 6
 def perturbed_states(trim_point, names, z):
     """Full states of the trim plus the perturbations ``z`` (m, n) in the coordinates
     ``names``, shape (m, 20)."""
+    return _perturbed(trim_point.state[None, :], names, z)[0]
+
+
+def _perturbed(states, names, z):
+    """Full states (t, m, 20) of trim states ``states`` (t, 20) plus the perturbations ``z``
+    (m, n) in the coordinates ``names``."""
     z = np.atleast_2d(np.asarray(z, float))
-    x = np.tile(trim_point.state, (z.shape[0], 1))
+    x = np.repeat(states[:, None, :], z.shape[0], axis=1)
     for k, name in enumerate(names):
         if name in _FULL:
-            x[:, _FULL[name]] += z[:, k]
+            x[:, :, _FULL[name]] += z[:, k]
     phi = z[:, [names.index(n) for n in ("phi_x", "phi_y", "phi_z")]]
-    x[:, 9:13] = small_rotation(trim_point.state[9:13], phi)
+    x[:, :, 9:13] = small_rotation(states[:, None, 9:13], phi)
     return x
 
 
@@ -672,11 +678,17 @@ def perturbed_state(trim_point, names, z):
 def coordinate_rates(trim_point, names, dx):
     """Derivatives (m, 20) of the full state expressed in the coordinates ``names`` (the
     small rotation's rate from the quaternion's: 2 conj(q_trim) (x) q')."""
-    dx = np.atleast_2d(dx)
-    dphi = 2.0 * quaternion_product(conjugate(trim_point.state[9:13]), dx[:, 9:13])[:, 1:]
-    out = np.empty((dx.shape[0], len(names)))
+    return _coordinate_rates(trim_point.state[None, 9:13], names,
+                             np.atleast_2d(dx)[None])[0]
+
+
+def _coordinate_rates(attitudes, names, dx):
+    """:func:`coordinate_rates` of trims of attitudes (t, 4), derivatives (t, m, 20)."""
+    dphi = 2.0 * quaternion_product(conjugate(attitudes[:, None, :]), dx[:, :, 9:13])[..., 1:]
+    out = np.empty(dx.shape[:2] + (len(names),))
     for k, name in enumerate(names):
-        out[:, k] = dx[:, _FULL[name]] if name in _FULL else dphi[:, "xyz".index(name[-1])]
+        out[:, :, k] = (dx[:, :, _FULL[name]] if name in _FULL
+                        else dphi[:, :, "xyz".index(name[-1])])
     return out
 
 
@@ -706,6 +718,43 @@ def linearise(trim_point, *, step=1e-6):
     a = ((rates[:n] - rates[n:]) / (2 * step)).T
     values, vectors = eig(a)
     return LinearModel(trim_point, a, names, values, vectors)
+
+
+def fastest_rates(trim_points, *, step=1e-6):
+    """Largest |eigenvalue| [1/s] of the linear model (:func:`linearise`) of each trim (NaN
+    for one that did not converge): the state matrices of trims that share their coordinates
+    and tables from one evaluation of the equations, eigenvalues only.
+
+    Parameters
+    ----------
+    trim_points : sequence of Trim
+    step : float
+        Central-difference step, in SI units of each coordinate (as :func:`linearise`).
+
+    Returns
+    -------
+    ndarray, shape (len(trim_points),)
+    """
+    out = np.full(len(trim_points), np.nan)
+    groups = {}
+    for k, point in enumerate(trim_points):
+        if point.converged:
+            key = (_coordinates(point.system), point.system.table_key())
+            groups.setdefault(key, []).append(k)
+    for (names, _), members in groups.items():
+        n = len(names)
+        z = np.vstack([step * np.eye(n), -step * np.eye(n)])
+        points = [trim_points[k] for k in members]
+        trims = np.array([p.state for p in points])
+        states = _perturbed(trims, names, z).reshape(-1, N_STATES)
+        params = np.repeat([p.system.parameters(locks=p.system.locks) for p in points],
+                           2 * n, axis=0)
+        drives = np.repeat([p.drive for p in points], 2 * n, axis=0)
+        dx, _, _ = evaluate_many(states, params, drives, points[0].system.tables())
+        rates = _coordinate_rates(trims[:, 9:13], names, dx.reshape(len(points), 2 * n, -1))
+        a = np.transpose((rates[:, :n] - rates[:, n:]) / (2 * step), (0, 2, 1))
+        out[members] = np.max(np.abs(np.linalg.eigvals(a)), axis=1)
+    return out
 
 
 def attitude_matrix(state):

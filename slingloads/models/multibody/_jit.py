@@ -3,7 +3,8 @@
 The right-hand side of the multibody equations and the fixed-step integrator are compiled with
 `numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept in the package's
 ``__pycache__`` after the first call, so only the first run on a machine pays the compilation).
-Every kernel is written on scalars and small tuples so that it allocates nothing per evaluation.
+Every kernel is written on scalars and small tuples so that it allocates nothing per evaluation;
+the integration kernel allocates its work arrays once per block of runs.
 
 numba invalidates a cached function when its own source file changes, not when a function it
 calls from another module does. The kernels span several modules, so the cache files of this
@@ -42,6 +43,10 @@ def _drop_stale_cache(folder=_HERE):
 
 _drop_stale_cache()
 
-#: Compile a scalar kernel (no Python objects, cached on disk, releases the GIL so that
-#: several threads run it at once).
-jit = numba.njit(cache=True, fastmath=False, nogil=True)
+#: Compile a scalar kernel that allocates nothing (cached on disk, releases the GIL so that
+#: several threads run it at once). numba's reference counting of arrays is off for it
+#: (``_nrt=False``): with it on, every call that hands an array on counts a reference up and
+#: down, atomic operations that took about a tenth of the integration's time.
+jit = numba.njit(cache=True, fastmath=False, nogil=True, _nrt=False)
+#: Compile a kernel that allocates its own work arrays (reference counting on).
+jit_alloc = numba.njit(cache=True, fastmath=False, nogil=True)

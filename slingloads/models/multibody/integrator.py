@@ -9,8 +9,11 @@ end of a ramp), so that no step straddles a jump; within a segment the drive (wi
 carrier acceleration and velocity) is interpolated (cubic, Catmull-Rom: third order, exact for
 a drive linear in time) in a table sampled every :data:`DRIVE_STEP` or finer, its ends being
 the drive just after the segment's start and just before its end. The histories are the dense
-output at the sampling times, where the reported quantities are evaluated with the drive at
-that time.
+output at the sampling times. There the kernel evaluates the reported quantities with the
+drive at that time, for the caller (``report``) or only into a buffer of one run from which,
+as soon as the run is done, its histories are derived and measured
+(:mod:`slingloads.models.multibody.response`): a batch then keeps its sampled states, or
+nothing but the measures, never the reported quantities of every run.
 
 A run whose flow leaves a table (or its hinge range) stops: with the adaptive step, after the
 step has been halved down to :data:`SMALLEST_STEP` without staying inside; with a fixed step,
@@ -21,7 +24,9 @@ One compiled kernel, :func:`dopri_runs`, integrates a block of runs. It is seria
 the GIL (``nogil``), so :func:`integrate` spreads blocks of runs over a pool of threads: the
 same machine code serves a single run and a batch of thousands, and no parallel variant has to
 be compiled. The kernel calls the equations at a single place (a loop over the stages and the
-samples), which keeps the compiled code, and its one-time compilation, small.
+samples), which keeps the compiled code, and its one-time compilation, small. Each run is
+integrated on its own, whatever the runs beside it: a run integrated again alone gives the
+same numbers to the last bit.
 
 References
 ----------
@@ -36,6 +41,7 @@ from __future__ import annotations
 import math
 import os
 from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -43,8 +49,14 @@ from slingloads.models.dormand_prince import A as _A
 from slingloads.models.dormand_prince import C as _C
 from slingloads.models.dormand_prince import E as _E
 from slingloads.models.dormand_prince import P as _P
-from slingloads.models.multibody._jit import jit
-from slingloads.models.multibody.equations import N_INFO, N_STATES, evaluate
+from slingloads.models.multibody._jit import jit, jit_alloc
+from slingloads.models.multibody.equations import N_INFO, N_STATES, PARAMETERS, evaluate
+from slingloads.models.multibody.response import (
+    N_HISTORY,
+    N_MEASURES,
+    derive,
+    measure,
+)
 
 #: Runs per block handed to one thread (small blocks balance the load of uneven runs).
 BLOCK = 16
@@ -56,15 +68,19 @@ DRIVE_STEP = 0.01
 SMALLEST_STEP = 1e-6
 #: First trial step of a run. [s]
 FIRST_STEP = 0.01
+#: Parameter that tells a free carrier (> 0) from a frozen one.
+_CARRIER_FREE = PARAMETERS.index("carrier_free")
 
 # Dormand-Prince 5(4) (scipy's RK45), passed to the kernels as arguments
 
 
 @jit
-def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, out):
+def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
     """Drive at time ``t`` of segment ``s`` of profile ``row``: cubic (Catmull-Rom) in the
     segment's table, exact for a drive linear in time, the end slopes from a quadratic through
-    the last three points."""
+    the last three points. A channel constant over the segment (``vary`` false) is its value
+    plus the one term of the cubic that its rounding leaves, w^2 ``bend`` (the same number,
+    to the last bit, as the whole cubic gives)."""
     u = (t - seg_a[row, s]) / seg_h[row, s]
     last = seg_n[row, s]
     m = int(u)
@@ -78,6 +94,9 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, out):
     w3 = w2 * w
     for c in range(9):
         p1 = vals[row, base, c]
+        if not vary[row, s, c]:
+            out[c] = p1 + w2 * bend[row, s, c]
+            continue
         p2 = vals[row, base + 1, c]
         if m > 0:
             p0 = vals[row, base - 1, c]
@@ -95,34 +114,58 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, out):
                   + w3 * (1.5 * (p1 - p2) + 0.5 * (p3 - p0)))
 
 
-@jit
-def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, profile,
-               interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
-               tail_g, tail_v, cd_g, cd_v, out, info, rates, flags, stop_time):
+@jit_alloc
+def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, bend, nodes,
+               profile, interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
+               tail_g, tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time, time,
+               measured, measures):
     """Integrate runs ``x0`` (runs, N) with parameters ``P`` (runs, NP), in place.
 
     Profile ``row = profile[j]`` of run j: ``n_seg[row]`` segments from ``seg_a`` to
     ``seg_b`` (profiles, S), each a drive table of ``seg_n`` intervals of ``seg_h`` from row
-    ``seg_off`` of ``vals`` (profiles, K, 9); ``nodes`` (profiles, n_out, 9) the drive at the
-    samples, every ``interval``. ``fixed`` > 0: that step; else adaptive with ``rtol``,
-    ``atol``. ``C``, ``A``, ``E``, ``PD``: the Dormand-Prince tableau. ``out``, ``rates``
-    (runs, n_out, N) and ``info`` (runs, n_out, N_INFO) receive the states, their derivatives
-    and the reported quantities at the samples (pre-filled with NaN); ``flags`` and
-    ``stop_time`` (runs,) the flag and the time of a run that stopped. With no segment, only
-    the first sample is evaluated (its flag returned): the equations at the states ``x0``.
+    ``seg_off`` of ``vals`` (profiles, K, 9), ``vary`` (profiles, S, 9) true for the channels
+    that vary over a segment, ``bend`` (profiles, S, 9) the rounding term of the others
+    (:func:`_drive_at`); ``nodes`` (profiles, n_out, 9) the drive at the samples
+    ``time`` (n_out,), every ``interval``. ``fixed`` > 0: that step; else adaptive with
+    ``rtol``, ``atol``. ``C``, ``A``, ``E``, ``PD``: the Dormand-Prince tableau.
+
+    ``out`` receives the states at the samples (NaN after a stop): (runs, n_out, N), or
+    (1, n_out, N) to keep only those of the run in hand. With ``report``, the reported
+    quantities are evaluated at the samples into ``info`` (runs or 1, n_out, N_INFO) and
+    their derivatives into ``rates`` (same leading size), NaN after a stop. ``flags`` and
+    ``stop_time`` (runs,) receive the flag and the time of a run that stopped. With
+    ``measures`` of a row per run (runs, N_MEASURES) and ``report``, each run's measures
+    (:func:`~slingloads.models.multibody.response.measure`) are computed after its
+    integration, ``measured`` (runs, 9) holding its weight [N], mast axis (3), whether it
+    has a parachute (0 or 1), the start and end of its input, the start of its verdict's
+    time [s] and the settling band's floor [rad].
+
+    With no segment, only the first sample is evaluated (its flag returned): the equations at
+    the states ``x0``.
     """
     runs = x0.shape[0]
     n = x0.shape[1]
     n_out = out.shape[1]
+    keep_states = out.shape[0] == runs
+    keep_info = info.shape[0] == runs
+    measuring = report and measures.shape[0] == runs
     K = np.empty((7, n))
     x = np.empty(n)
     x5 = np.empty(n)
     y = np.empty(n)
+    dx = np.empty(n)
+    acc = np.empty(n)
+    weights = np.empty(7)
     d = np.empty(9)
-    scratch = np.empty(N_INFO)
+    steady_drive = np.empty(9)
+    reported = np.empty(N_INFO)
+    hist = np.empty((n_out if measuring else 0, N_HISTORY))
+    buf = np.empty((4, n_out if measuring else 0))
     for j in range(runs):
         row = profile[j]
         pj = P[j]
+        js = j if keep_states else 0
+        ji = j if keep_info else 0
         for m in range(n):
             x[m] = x0[j, m]
         segments = n_seg[row]
@@ -135,6 +178,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
         rejected = False
         flag0 = 0
         stage_flag = 0
+        steady = False
         # phase 7: the next sample (dense output); 0: derivative at a segment's start;
         # 1 to 6: the stages of a step (6: at the fifth-order solution, first same as last)
         phase = 7
@@ -147,43 +191,69 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
                         y[m] = x[m]
                 else:
                     theta = (sample * interval - t) / h
+                    for i in range(7):
+                        weights[i] = PD[i, 0] + theta * (PD[i, 1] + theta * (
+                            PD[i, 2] + theta * PD[i, 3]))
                     for m in range(n):
-                        acc = 0.0
-                        for i in range(7):
-                            acc += K[i, m] * (PD[i, 0] + theta * (PD[i, 1] + theta * (
-                                PD[i, 2] + theta * PD[i, 3])))
-                        y[m] = x[m] + h * theta * acc
+                        acc[m] = 0.0
+                    for i in range(7):
+                        w = weights[i]
+                        for m in range(n):
+                            acc[m] += K[i, m] * w
+                    for m in range(n):
+                        y[m] = x[m] + h * theta * acc[m]
                     qn = math.sqrt(y[9] * y[9] + y[10] * y[10] + y[11] * y[11]
                                    + y[12] * y[12])
                     for m in range(9, 13):
                         y[m] /= qn
                 for m in range(n):
-                    out[j, sample, m] = y[m]
+                    out[js, sample, m] = y[m]
                 for c in range(9):
                     d[c] = nodes[row, sample, c]
-                dx = rates[j, sample]
-                reported = info[j, sample]
                 want = True
+                evaluating = report
             else:
                 if phase == 0:
                     for m in range(n):
                         y[m] = x[m]
                     when = t
+                    # a segment whose channels are constant to the last bit: its drive once
+                    # (the commanded velocity drives a free carrier only)
+                    steady = True
+                    for c in range(9 if pj[_CARRIER_FREE] > 0.0 else 6):
+                        if vary[row, s, c] or bend[row, s, c] != 0.0:
+                            steady = False
+                    if steady:
+                        _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend,
+                                  steady_drive)
                 else:
                     for m in range(n):
-                        acc = 0.0
-                        for i in range(phase):
-                            acc += A[phase, i] * K[i, m]
-                        y[m] = x[m] + h * acc
+                        acc[m] = 0.0
+                    for i in range(phase):
+                        a = A[phase, i]
+                        for m in range(n):
+                            acc[m] += a * K[i, m]
+                    for m in range(n):
+                        y[m] = x[m] + h * acc[m]
                     when = t + C[phase] * h
-                _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, d)
-                dx = K[phase]
-                reported = scratch
+                if steady:
+                    for c in range(9):
+                        d[c] = steady_drive[c]
+                else:
+                    _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, d)
                 want = False
-            f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g,
-                         cd_v, dx, reported, want)
+                evaluating = True
+            f = 0
+            if evaluating:
+                f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
+                             cd_g, cd_v, dx, reported, want)
             # ------------------------------------------------------------- what next
             if phase == 7:
+                if report:
+                    for m in range(n):
+                        rates[ji, sample, m] = dx[m]
+                    for m in range(N_INFO):
+                        info[ji, sample, m] = reported[m]
                 if sample == 0:
                     sample = 1
                     if segments == 0:
@@ -194,13 +264,15 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
                 sample += 1
                 if not (sample < n_out and sample * interval <= t_new + 1e-9 * interval):
                     finish = True
-            elif phase == 0:
-                flag0 = f
-                stage_flag = f
-                h = min(h_try, seg_b[row, s] - t)
-                phase = 1
-                continue
             else:
+                for m in range(n):
+                    K[phase, m] = dx[m]
+                if phase == 0:
+                    flag0 = f
+                    stage_flag = f
+                    h = min(h_try, seg_b[row, s] - t)
+                    phase = 1
+                    continue
                 stage_flag |= f
                 if phase < 6:
                     phase += 1
@@ -220,13 +292,16 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
                     continue
                 grow = 1.0
                 if fixed <= 0.0:
+                    for m in range(n):
+                        acc[m] = 0.0
+                    for i in range(7):
+                        e = E[i]
+                        for m in range(n):
+                            acc[m] += e * K[i, m]
                     err = 0.0
                     for m in range(n):
-                        e = 0.0
-                        for i in range(7):
-                            e += E[i] * K[i, m]
                         scale = atol + rtol * max(abs(x[m]), abs(x5[m]))
-                        err += (h * e / scale) ** 2
+                        err += (h * acc[m] / scale) ** 2
                     err = math.sqrt(err / n)
                     if err > 1.0:
                         h *= max(0.2, 0.9 * err ** -0.2)
@@ -264,6 +339,30 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, nodes, p
                 else:
                     h = min(h_try, seg_b[row, s] - t)
                     phase = 1
+        # the samples a stopped run did not reach
+        for k in range(sample, n_out):
+            for m in range(n):
+                out[js, k, m] = np.nan
+            if report:
+                for m in range(n):
+                    rates[ji, k, m] = np.nan
+                for m in range(N_INFO):
+                    info[ji, k, m] = np.nan
+        if measuring:
+            derive(time, out[js], info[ji], measured[j, 0], measured[j, 1:4],
+                   measured[j, 4] > 0.0, hist)
+            measure(time, hist, measured[j, 5], measured[j, 6], measured[j, 7],
+                    measured[j, 8], buf, measures[j])
+
+
+def _constant_channels(table):
+    """Which channels of a segment's drive table (rows, 9) vary, and for the constant ones the
+    term w^2 ((p - 2.5 p) + 2 p - 0.5 p) to which :func:`_drive_at`'s cubic reduces there
+    (zero for zero and some values, a rounding error for the others)."""
+    p = table[0]
+    vary = np.any(table != p, axis=0)
+    bend = np.where(vary, 0.0, ((p - 2.5 * p) + 2.0 * p) - 0.5 * p)
+    return vary, bend
 
 
 def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
@@ -285,12 +384,14 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
     -------
     dict
         ``a``, ``b``, ``h`` (segments' start, end, table step [s]), ``n``, ``offset``
-        (intervals and first row of each segment's table), ``values`` (rows, 9), ``nodes``
-        (the drive at the samples, (n_out, 9)).
+        (intervals and first row of each segment's table), ``values`` (rows, 9), ``vary``
+        and ``bend`` (segments, 9: the channels that vary over each segment, the rounding
+        term of the others, :func:`_drive_at`), ``nodes`` (the drive at the samples,
+        (n_out, 9)).
     """
     inner = sorted({float(b) for b in breakpoints if 0.0 < b < t_end * (1 - 1e-12)})
     edges = [0.0, *inner, float(t_end)]
-    a, b, h, n, offset, values = [], [], [], [], [], []
+    a, b, h, n, offset, values, vary, bend = [], [], [], [], [], [], [], []
     rows = 0
     for start, end in zip(edges[:-1], edges[1:], strict=True):
         count = max(1, int(np.ceil((end - start) / step - 1e-9)))
@@ -298,11 +399,16 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
         times[-1] = end - 1e-9 * (end - start)  # just before the end: the left limit
         a.append(start), b.append(end), h.append((end - start) / count), n.append(count)
         offset.append(rows)
-        values.append(np.asarray(drive(times), float))
+        table = np.asarray(drive(times), float)
+        values.append(table)
+        varies, bends = _constant_channels(table)
+        vary.append(varies)
+        bend.append(bends)
         rows += count + 1
     n_out = int(round(t_end / interval)) + 1
     return {"a": np.array(a), "b": np.array(b), "h": np.array(h), "n": np.array(n),
             "offset": np.array(offset), "values": np.concatenate(values),
+            "vary": np.array(vary, dtype=bool), "bend": np.array(bend),
             "nodes": np.asarray(drive(np.arange(n_out) * interval), float)}
 
 
@@ -316,10 +422,12 @@ def stack_drives(profiles):
            "h": np.ones((count, segments)), "n": np.ones((count, segments), dtype=np.int64),
            "offset": np.zeros((count, segments), dtype=np.int64),
            "segments": np.array([len(p["a"]) for p in profiles], dtype=np.int64),
-           "values": np.zeros((count, rows, 9)), "nodes": np.zeros((count, samples, 9))}
+           "values": np.zeros((count, rows, 9)), "vary": np.zeros((count, segments, 9), bool),
+           "bend": np.zeros((count, segments, 9)),
+           "nodes": np.zeros((count, samples, 9))}
     for k, p in enumerate(profiles):
         m = len(p["a"])
-        for key in ("a", "b", "h", "n", "offset"):
+        for key in ("a", "b", "h", "n", "offset", "vary", "bend"):
             out[key][k, :m] = p[key]
         out["values"][k, :len(p["values"])] = p["values"]
         out["nodes"][k, :len(p["nodes"])] = p["nodes"]
@@ -344,8 +452,47 @@ def worker_count():
         return max(1, os.cpu_count() or 1)
 
 
+def in_blocks(block, runs, workers=None):
+    """Call ``block(start)`` for the blocks of :data:`BLOCK` runs from ``start``, on a pool of
+    ``workers`` threads (default :func:`worker_count`; the compiled kernels release the
+    GIL)."""
+    starts = range(0, runs, BLOCK)
+    workers = min(worker_count() if workers is None else int(workers), len(starts))
+    if workers <= 1:
+        for start in starts:
+            block(start)
+    else:
+        with ThreadPoolExecutor(max_workers=workers) as pool:
+            list(pool.map(block, starts))
+
+
+@dataclass(frozen=True)
+class Integrated:
+    """What :func:`integrate` returns.
+
+    Attributes
+    ----------
+    states : ndarray, shape (runs, n_out, N), or None
+        States at the samples (NaN after a stop); None unless kept.
+    info : ndarray, shape (runs, n_out, N_INFO), or None
+        Reported quantities at the samples, with ``report``.
+    flags : ndarray of int, shape (runs,)
+        Table or limit each run left (0: none).
+    stop_time : ndarray, shape (runs,)
+        When a run stopped (NaN if it did not). [s]
+    measures : ndarray, shape (runs, N_MEASURES), or None
+        Each run's measures, when asked for.
+    """
+
+    states: np.ndarray | None
+    info: np.ndarray | None
+    flags: np.ndarray
+    stop_time: np.ndarray
+    measures: np.ndarray | None
+
+
 def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rtol=RTOL,
-              atol=ATOL, workers=None):
+              atol=ATOL, workers=None, report=False, measured=None, keep_states=True):
     """Integrate runs with :func:`dopri_runs`, blocks of runs on a pool of threads.
 
     Parameters
@@ -370,44 +517,51 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
         Tolerances of the adaptive step (SI units of the states). [-], [SI]
     workers : int, optional
         Threads (default :func:`worker_count`).
+    report : bool
+        Also keep the reported quantities at the samples, evaluated during the integration
+        (the same numbers as :func:`evaluate_many` gives afterwards at the sampled states and
+        the drive at the samples).
+    measured : ndarray, shape (runs, 9), optional
+        With it, each run's measures are computed as soon as it is integrated, from its
+        reported quantities evaluated at its samples (see :func:`dopri_runs` for the
+        columns).
+    keep_states : bool
+        Keep the sampled states of every run (else only the measures are kept).
 
     Returns
     -------
-    states, rates : ndarray, shape (runs, n_out, N)
-        States and their derivatives at the samples.
-    info : ndarray, shape (runs, n_out, N_INFO)
-    flags : ndarray of int, shape (runs,)
-    stop_time : ndarray, shape (runs,)
-        When a run stopped (NaN if it did not). [s]
+    Integrated
     """
     runs = x0.shape[0]
-    states = np.full((runs, n_out, N_STATES), np.nan)
-    rates = np.full((runs, n_out, N_STATES), np.nan)
-    info = np.full((runs, n_out, N_INFO), np.nan)
+    measuring = measured is not None
+    states = np.empty((runs, n_out, N_STATES)) if keep_states else None  # the kernel fills it
+    info = np.empty((runs, n_out, N_INFO)) if report else None
+    rates = np.empty((runs, n_out, N_STATES)) if report else None
+    measures = np.empty((runs, N_MEASURES)) if measuring else np.empty((0, N_MEASURES))
+    measured = _plain(np.zeros((runs, 9)) if measured is None else measured)
     flags = np.zeros(runs, dtype=np.int64)
     stop_time = np.full(runs, np.nan)
     x0, P = _plain(x0), _plain(P)
     profile = np.require(profile, np.int64, _KERNEL_ARRAYS)
     fixed = 0.0 if step is None else float(step)
+    time = np.arange(n_out) * float(interval)
+    # what a block does not keep goes to work rows of one run, reused from run to run
+    work = 1 if measuring else 0
 
     def block(start):
-        stop = min(start + BLOCK, runs)
-        dopri_runs(x0[start:stop], P[start:stop], drives["a"], drives["b"], drives["h"],
-                   drives["n"], drives["offset"], drives["segments"], drives["values"],
-                   drives["nodes"], profile[start:stop], float(interval), fixed, float(rtol),
-                   float(atol), _C, _A, _E, _P, *tables, states[start:stop],
-                   info[start:stop], rates[start:stop], flags[start:stop],
-                   stop_time[start:stop])
+        own = slice(start, min(start + BLOCK, runs))
+        dopri_runs(x0[own], P[own], drives["a"], drives["b"], drives["h"], drives["n"],
+                   drives["offset"], drives["segments"], drives["values"], drives["vary"],
+                   drives["bend"], drives["nodes"], profile[own], float(interval), fixed,
+                   float(rtol), float(atol), _C, _A, _E, _P, *tables, report or measuring,
+                   states[own] if keep_states else np.empty((1, n_out, N_STATES)),
+                   info[own] if report else np.empty((work, n_out * work, N_INFO)),
+                   rates[own] if report else np.empty((work, n_out * work, N_STATES)),
+                   flags[own], stop_time[own], time, measured[own],
+                   measures[own] if measuring else measures)
 
-    starts = range(0, runs, BLOCK)
-    workers = min(worker_count() if workers is None else int(workers), len(starts))
-    if workers <= 1:
-        for start in starts:
-            block(start)
-    else:
-        with ThreadPoolExecutor(max_workers=workers) as pool:
-            list(pool.map(block, starts))
-    return states, rates, info, flags, stop_time
+    in_blocks(block, runs, workers)
+    return Integrated(states, info, flags, stop_time, measures if measuring else None)
 
 
 def evaluate_many(states, P, drives, tables):
@@ -438,7 +592,8 @@ def evaluate_many(states, P, drives, tables):
     flags = np.zeros(n, dtype=np.int64)
     dopri_runs(states, P, none, none, none + 1.0, np.ones((n, 1), dtype=np.int64),
                np.zeros((n, 1), dtype=np.int64), np.zeros(n, dtype=np.int64),
-               np.zeros((n, 2, 9)), nodes, np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL,
-               ATOL, _C, _A, _E, _P, *tables, np.empty((n, 1, N_STATES)), info, rates, flags,
-               np.empty(n))
+               np.zeros((n, 2, 9)), np.zeros((n, 1, 9), bool), np.zeros((n, 1, 9)), nodes,
+               np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, _C, _A, _E, _P, *tables,
+               True, np.empty((n, 1, N_STATES)), info, rates, flags, np.empty(n),
+               np.zeros(1), np.zeros((n, 9)), np.empty((0, N_MEASURES)))
     return rates[:, 0], info[:, 0], flags

@@ -11,6 +11,7 @@ to the equations relative to the CG.
 from __future__ import annotations
 
 import hashlib
+import weakref
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
@@ -156,12 +157,12 @@ class SlingSystem:
         return tuple(name in self.restrict for name in RESTRICTIONS)
 
     # ------------------------------------------------------------------ derived quantities
-    @property
+    @cached_property
     def density(self):
         """Air density at the density altitude. [kg/m^3]"""
         return float(isa_density(self.density_altitude))
 
-    @property
+    @cached_property
     def true_airspeed(self):
         """True airspeed of the towed flight. [m/s]"""
         return float(true_airspeed(self.airspeed, self.density_altitude))
@@ -202,7 +203,7 @@ class SlingSystem:
         start a trim at a sensible swing angle. [m^2]"""
         area = 0.0
         if self.fuselage is not None:
-            area += self.fuselage.area * float(self.fuselage.drag_coefficient(0.0, 0.0))
+            area += self.fuselage.area * _ZERO_ANGLE_CD.get(self.fuselage)
         if self.parachute is not None:
             area += float(self.parachute.parachute.drag_area(0.0))
         return area
@@ -251,8 +252,10 @@ class SlingSystem:
 
         def put(name, values):
             i = _INDEX[name]
-            values = np.atleast_1d(np.asarray(values, float)).ravel()
-            p[i:i + values.size] = values
+            if isinstance(values, np.ndarray):
+                p[i:i + values.size] = values.ravel()
+            else:
+                p[i] = values
 
         cg = self.body.cg
         inertia = self.body.inertia
@@ -305,17 +308,21 @@ class SlingSystem:
         parachute CD (breakpoints, values), computed once per system."""
         return self._tables
 
+    def _table_sources(self):
+        """(table or None, coefficient names) of the fuselage, fin, tail and parachute."""
+        return ((None if self.fuselage is None else self.fuselage.table,
+                 () if self.fuselage is None else self.fuselage.columns),
+                (None if self.fin is None else self.fin.table, ("CY",)),
+                (None if self.tail is None else self.tail.table, ("CN",)),
+                (None if self.parachute is None else self.parachute.parachute.cd, ("CD",)))
+
     @cached_property
     def _tables(self):
-        fus = table_arrays(None if self.fuselage is None else self.fuselage.table,
-                           () if self.fuselage is None else self.fuselage.columns)
+        arrays = [_TABLE_ARRAYS.get(table, names)[0] for table, names in self._table_sources()]
         if self.fuselage is None:
-            fus = (np.array([-np.pi, np.pi]), np.array([-np.pi, np.pi]), np.zeros((6, 2, 2)))
-        fin = table_arrays(None if self.fin is None else self.fin.table, ("CY",))
-        tail = table_arrays(None if self.tail is None else self.tail.table, ("CN",))
-        cd = table_arrays(None if self.parachute is None else self.parachute.parachute.cd,
-                          ("CD",))
-        return fus + fin + tail + cd
+            arrays[0] = (np.array([-np.pi, np.pi]), np.array([-np.pi, np.pi]),
+                         np.zeros((6, 2, 2)))
+        return sum(arrays, ())
 
     def table_key(self):
         """Identity of the tables' contents (runs with the same key share one batch)."""
@@ -324,7 +331,49 @@ class SlingSystem:
     @cached_property
     def _table_key(self):
         digest = hashlib.sha1()
-        for array in self.tables():
-            digest.update(str(array.shape).encode())
-            digest.update(array.tobytes())
+        for k, (table, names) in enumerate(self._table_sources()):
+            part = (_digest(self._tables[:3]) if k == 0 and table is None
+                    else _TABLE_ARRAYS.get(table, names)[1])
+            digest.update(part.encode())
         return digest.hexdigest()
+
+
+def _digest(arrays):
+    """SHA-1 of arrays' shapes and contents."""
+    digest = hashlib.sha1()
+    for array in arrays:
+        digest.update(str(array.shape).encode())
+        digest.update(array.tobytes())
+    return digest.hexdigest()
+
+
+class _PerObject:
+    """Values computed once per (immutable) object, kept while the object lives (systems that
+    share a fuselage or a table, as the variants of a study do, compute them once)."""
+
+    def __init__(self, compute):
+        self.compute = compute
+        self._values = {}
+
+    def get(self, obj, *args):
+        if obj is None:
+            return self.compute(None, *args)
+        key = (id(obj), *args)
+        hit = self._values.get(key)
+        if hit is not None and hit[0]() is obj:
+            return hit[1]
+        value = self.compute(obj, *args)
+        self._values[key] = (weakref.ref(obj), value)
+        weakref.finalize(obj, self._values.pop, key, None)
+        return value
+
+
+def _table_arrays_and_digest(table, names):
+    arrays = table_arrays(table, names)
+    return arrays, _digest(arrays)
+
+
+#: The kernels' arrays of a table and their digest.
+_TABLE_ARRAYS = _PerObject(_table_arrays_and_digest)
+#: A fuselage's drag coefficient at zero angle of attack and sideslip. [-]
+_ZERO_ANGLE_CD = _PerObject(lambda fuselage: float(fuselage.drag_coefficient(0.0, 0.0)))
