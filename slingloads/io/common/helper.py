@@ -119,10 +119,11 @@ class Helper:
 
     def start(self):
         """Fork the helper processes now (no-op when already started or none asked)."""
-        if self._started:
+        if self._started or self.processes <= 0:
+            self._started = True
             return self
         self._started = True
-        context = multiprocessing.get_context("fork")
+        context = multiprocessing.get_context("fork")  # (none where fork is unsafe: 0 asked)
         for _ in range(self.processes):
             here, there = context.Pipe()
             process = context.Process(target=_serve, args=(there, os.getpid(), self._warm),
