@@ -63,7 +63,7 @@ from openpyxl.utils.exceptions import IllegalCharacterError
 from openpyxl.worksheet.pagebreak import Break
 
 from slingloads.errors import InputError
-from slingloads.io.common.figures import collect_pngs
+from slingloads.io.common.figures import collect_pngs, figure_png
 from slingloads.io.common.formats import header_unit, unit_format, value_format
 
 #: Rows in one Excel worksheet (header included) [1]_.
@@ -795,32 +795,6 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
 
 
 # ----------------------------------------------------------------------------- images
-def figure_png(figure, dpi=100):
-    """PNG bytes of a matplotlib Figure (no timestamp or version metadata, so reproducible).
-
-    Parameters
-    ----------
-    figure : matplotlib.figure.Figure or bytes
-        A figure, PNG bytes returned unchanged, or a pending drawing of
-        :class:`~slingloads.io.common.figures.FigureRenderer` (its ``result()``).
-    dpi : float
-        Resolution. [dots per inch]
-
-    Returns
-    -------
-    bytes
-    """
-    if isinstance(figure, (bytes, bytearray)):
-        return bytes(figure)
-    if hasattr(figure, "result"):  # drawn elsewhere (FigureRenderer): its PNG bytes
-        return bytes(figure.result())
-    _plain_text(figure)
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None},
-                   pil_kwargs={"compress_level": 1})  # fast; files about 30 % larger
-    return buffer.getvalue()
-
-
 def header_footer_text(text):
     """Text from an input made safe for a printed header or footer: there ``&`` starts a
     control code (``&P`` page number, ``&"font"``, ``&[Path]``...), so it is doubled, and
@@ -831,15 +805,6 @@ def header_footer_text(text):
     """
     text = "".join(c for c in str(text) if c >= " " or c == "\n")
     return text.replace("&", "&&")
-
-
-def _plain_text(figure):
-    """Draw every text of ``figure`` literally: ids from the inputs (a station ``FS$1$``, a
-    case ``$\\frac$``) are never parsed as mathtext, which could fail or mislead."""
-    from matplotlib.text import Text
-
-    for text in figure.findobj(Text):
-        text.set_parse_math(False)
 
 
 def _image_box(width, height, page_rows, page_width):
