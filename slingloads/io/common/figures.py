@@ -90,9 +90,19 @@ def warm_up():
     fig.savefig(io.BytesIO(), format="png", dpi=10)
 
 
+#: Settings every report figure is drawn with: text drawn literally, never parsed as
+#: mathtext (ids from the inputs, a station ``FS$1$`` or a case ``$\\frac$``, could fail or
+#: mislead), including the tick labels made as the figure is drawn.
+PLAIN_TEXT = {"text.parse_math": False}
+
+
 def draw_png(func, args, kwargs, dpi):
-    """PNG bytes of the figure ``func(*args, **kwargs)`` (run where the figure is drawn)."""
-    return figure_png(func(*args, **kwargs), dpi)
+    """PNG bytes of the figure ``func(*args, **kwargs)``, made and drawn with
+    :data:`PLAIN_TEXT` (run where the figure is drawn)."""
+    from matplotlib import rc_context
+
+    with rc_context(PLAIN_TEXT):
+        return _png(func(*args, **kwargs), dpi)
 
 
 #: Modules a helper loads while it waits for figures, in the order of the figures (the
@@ -247,6 +257,11 @@ def figure_png(figure, dpi=100):
     if hasattr(figure, "result"):  # drawn elsewhere (FigureRenderer): its PNG bytes
         return bytes(figure.result())
     _plain_text(figure)
+    return _png(figure, dpi)
+
+
+def _png(figure, dpi):
+    """PNG bytes of a matplotlib Figure as it is."""
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None},
                    pil_kwargs={"compress_level": 1})  # fast; files about 30 % larger
@@ -254,8 +269,8 @@ def figure_png(figure, dpi=100):
 
 
 def _plain_text(figure):
-    """Draw every text of ``figure`` literally: ids from the inputs (a station ``FS$1$``, a
-    case ``$\\frac$``) are never parsed as mathtext, which could fail or mislead."""
+    """Draw every text of a figure made elsewhere literally (as :data:`PLAIN_TEXT` does for
+    the report's own): ids from the inputs are never parsed as mathtext."""
     from matplotlib.text import Text
 
     for text in figure.findobj(Text):
