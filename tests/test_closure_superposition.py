@@ -9,14 +9,17 @@ References (each test names its own):
 * Definition of the internal load, docs/conventions.md section 2:
   V(x_c) = -sum_{x_i <= x_c} F_i, M(x_c) = -sum_{x_i <= x_c} [(r_i - p_c) x F_i + M_i],
   evaluated here by brute force (a Python loop), independently of the vectorised cumsum.
-* Free-free internal loads (the compiled pipeline: gravity and unit inertia responses
-  superposed, accelerations from the applied loads' totals) against that definition applied to
-  every load, gravity and inertia loads at the mass items included.
+* Free-free internal loads (the compiled pipeline and its numpy twin for small studies:
+  gravity and unit inertia responses superposed, accelerations from the applied loads'
+  totals) against that definition applied to every load, gravity and inertia loads at the
+  mass items included; and the two twins against each other, bit for bit.
 * Linearity: every step (resultants, the inertia solve, the inertia loads, the cut sums) is
   linear in the applied loads, so loads(a L1 + b L2) = a loads(L1) + b loads(L2).
 * Statics of load transfer, docs/conventions.md section 4: the shared point loads have the
   same resultant force and the same moment about any point as the load they replace.
 """
+
+from unittest import mock
 
 import numpy as np
 import pytest
@@ -24,6 +27,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
+from slingloads.analyses import sfbm
 from slingloads.analyses.inertia_relief import (
     gravity_forces,
     inertia_loads,
@@ -187,12 +191,19 @@ def test_internal_loads_point_at_cut_belongs_to_forward_part():
     np.testing.assert_allclose(out[:, 4], [0.0, 0.0, -300.0], atol=1e-12)
 
 
+def _worked_by(compiled):
+    """Force the compiled kernel (``True``) or its numpy twin (``False``) whatever the size."""
+    return mock.patch.object(sfbm, "NUMPY_CUTS", -1 if compiled else 10**12)
+
+
 @SETTINGS
-@given(mass_items(), applied_loads(), st.booleans(), vec(3, bound=1.0), st.data())
-def test_free_free_internal_loads_equal_definition(items, loads, with_moments, vertical, data):
-    """The compiled free-free pipeline against docs/conventions.md section 2 applied to every
-    load by the brute-force loop: gravity along -vertical and the inertia loads
-    -m_j (a + alpha x rho_j), -I_j alpha at each mass item (inertia_loads of
+@given(mass_items(), applied_loads(), st.booleans(), vec(3, bound=1.0), st.booleans(),
+       st.data())
+def test_free_free_internal_loads_equal_definition(items, loads, with_moments, vertical,
+                                                   compiled, data):
+    """The free-free pipeline (compiled kernel or numpy twin) against docs/conventions.md
+    section 2 applied to every load by the brute-force loop: gravity along -vertical and the
+    inertia loads -m_j (a + alpha x rho_j), -I_j alpha at each mass item (inertia_loads of
     rigid_body_acceleration, section 6) plus the applied loads, with cuts at load points and
     mass items, forward and aft of everything. Also: the accelerations equal
     rigid_body_acceleration's, the closing residual is zero (free-free closure), the loads are
@@ -217,9 +228,10 @@ def test_free_free_internal_loads_equal_definition(items, loads, with_moments, v
 
     strided = np.repeat(forces, 2, axis=1)[:, ::2]     # same values, not contiguous
     out = np.full(expected.shape, np.nan)
-    got, got_accel, residual = free_free_internal_loads(
-        items, positions, strided, moments if with_moments else None, stations, vertical,
-        out=out)
+    with _worked_by(compiled):
+        got, got_accel, residual = free_free_internal_loads(
+            items, positions, strided, moments if with_moments else None, stations, vertical,
+            out=out)
     scale = load_scale(all_pos, f, m, stations[0])
     assert got is out
     np.testing.assert_allclose(got, expected, atol=ROUNDOFF * scale)
@@ -230,6 +242,49 @@ def test_free_free_internal_loads_equal_definition(items, loads, with_moments, v
     np.testing.assert_allclose(got_accel.gravity,
                                -9.80665 * np.asarray(vertical) / np.linalg.norm(vertical),
                                rtol=1e-15, atol=1e-15)
+
+
+@SETTINGS
+@given(mass_items(), applied_loads(), st.booleans(), vec(3, bound=1.0), st.data())
+def test_numpy_twin_equals_compiled_kernel_bit_for_bit(items, loads, with_moments, vertical,
+                                                       data):
+    """The numpy twin of small studies against the compiled kernel: the same operations in the
+    same order, so the same loads, accelerations and residuals to the last bit (a study
+    changes path with its size only, never its numbers)."""
+    assume(np.linalg.norm(vertical) > 0.1)
+    positions, forces, moments = loads
+    xs = np.unique(np.concatenate([positions[:, 0], items.position[:, 0], [-8.0, 8.0]]))
+    y0, z0 = data.draw(vec(2, bound=1.0))
+    stations = np.column_stack([xs, np.full(xs.shape, y0), np.full(xs.shape, z0)])
+    moments = moments if with_moments else None
+    results = []
+    for compiled in (True, False):
+        with _worked_by(compiled):
+            results.append(free_free_internal_loads(items, positions, forces, moments,
+                                                    stations, vertical))
+    (l1, a1, r1), (l2, a2, r2) = results
+    np.testing.assert_array_equal(l1, l2)
+    np.testing.assert_array_equal(r1, r2)
+    np.testing.assert_array_equal(a1.linear, a2.linear)
+    np.testing.assert_array_equal(a1.angular, a2.angular)
+
+
+def test_small_studies_are_worked_by_numpy_large_ones_compiled():
+    """The size rule of free_free_internal_loads: cases x cuts up to NUMPY_CUTS by numpy, above
+    it by the compiled kernel (told apart by which of the two is called)."""
+    items = MassItems(("a", "b"), np.array([1.0, 2.0]), np.array([[0.0, 0, 0], [1.0, 0, 0]]),
+                      np.broadcast_to(np.eye(3), (2, 3, 3)).copy())
+    stations = np.array([[0.5, 0.0, 0.0], [2.0, 0.0, 0.0]])
+    cuts = len(stations) + 1
+    for cases, numpy_expected in ((sfbm.NUMPY_CUTS // cuts, True),
+                                  (sfbm.NUMPY_CUTS // cuts + 1, False)):
+        forces = np.ones((cases, 1, 3))
+        numpy_rows, compiled_rows = mock.Mock(), mock.Mock()
+        with mock.patch.object(sfbm, "free_free_rows_numpy", numpy_rows), \
+                mock.patch.object(sfbm, "_compiled_rows", return_value=compiled_rows):
+            free_free_internal_loads(items, np.zeros((1, 3)), forces, None, stations)
+        assert (numpy_rows.called, compiled_rows.called) == (numpy_expected,
+                                                             not numpy_expected), cases
 
 
 def test_free_free_internal_loads_of_no_case():

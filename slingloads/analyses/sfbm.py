@@ -14,7 +14,8 @@ point forces :math:`F_i` at :math:`r_i` and point moments :math:`M_i`:
 sum over the points sorted by x. The loads are linear in the applied loads, so unit-load
 solutions superpose: :func:`free_free_internal_loads` adds gravity and inertia relief as seven
 precomputed responses, and sums only the few applied load points per case, in a compiled
-kernel that writes each case's loads once (:mod:`slingloads.analyses.sfbm_kernel`).
+kernel that writes each case's loads once (:mod:`slingloads.analyses.sfbm_kernel`), or in
+numpy for a small study.
 """
 
 from __future__ import annotations
@@ -140,7 +141,9 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
     applied load points are summed per case. The cases are worked one at a time by a compiled
     kernel (:mod:`slingloads.analyses.sfbm_kernel`) that writes each case's loads once into
     the result: the memory used beyond the result is a few rows, whatever the number of
-    cases.
+    cases. A small study (at most :data:`NUMPY_CUTS` cases x cuts) is worked by the same
+    operations in numpy (:func:`free_free_rows_numpy`, the same numbers to the last bit),
+    which spares it the kernel's start-up.
 
     Parameters
     ----------
@@ -173,8 +176,6 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
         gravity_resultants,
         inverse_inertia,
     )
-    from slingloads.analyses.sfbm_kernel import free_free_rows
-
     positions = np.asarray(positions, float)
     forces = np.asarray(forces, float)
     station_points = np.asarray(station_points, float)
@@ -202,10 +203,64 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
         if array.shape != (cases, len(positions), 3):
             raise ValueError(f"internal loads: {name} must have the shape (cases, points, 3) = "
                              f"{(cases, len(positions), 3)}, not {array.shape}")
-    free_free_rows(basis, forces, moments, has_moments, order, positions[order] - axis_point,
-                   count, cuts[:, 0].copy(), rigid, loads.reshape(cases, 6 * n_st), residual,
-                   linear, angular)
+    rows = free_free_rows_numpy if cases * len(cuts) <= NUMPY_CUTS else _compiled_rows()
+    rows(basis, forces, moments, has_moments, order, positions[order] - axis_point, count,
+         cuts[:, 0].copy(), rigid, loads.reshape(cases, 6 * n_st), residual, linear, angular)
     return loads, RigidBodyAcceleration(linear, angular, gravity_field(vertical)), residual
+
+
+#: Largest cases x cuts worked by numpy (:func:`free_free_rows_numpy`) rather than the
+#: compiled kernel: below it numpy takes a few milliseconds, while the kernel's first call in
+#: a process costs about 0.7 s (numba's import and the loading of its machine code), most of
+#: a small study; above it the kernel is faster and its memory bounded. [-]
+NUMPY_CUTS = 100_000
+
+
+def _compiled_rows():
+    """The compiled kernel (numba is imported on first use)."""
+    from slingloads.analyses.sfbm_kernel import free_free_rows
+
+    return free_free_rows
+
+
+def free_free_rows_numpy(basis, forces, moments, has_moments, order, arm, count, x, rigid,
+                         out, residual, linear, angular):
+    """:func:`slingloads.analyses.sfbm_kernel.free_free_rows` in numpy, all cases at once:
+    the same arguments, the same operations in the same order (sums left to right, no fused
+    or reordered products), so the same numbers to the last bit; temporaries of the
+    result's size, so for small studies only (:data:`NUMPY_CUTS`)."""
+    f = forces[:, order, :]
+    cum = np.zeros((len(f), len(order) + 1, 6))
+    cum[:, 1:, :3] = f
+    _cross_into(arm, f, cum[:, 1:, 3:])
+    if has_moments:
+        cum[:, 1:, 3:] += moments[:, order, :]
+    np.add.accumulate(cum, axis=1, out=cum)  # sequential, as the kernel's running sums
+    sums = cum[:, count, :]
+    sums[..., 4] += x * sums[..., 2]
+    sums[..., 5] -= x * sums[..., 1]
+    _accelerations_numpy(cum[:, -1, :], rigid, linear, angular)
+    w = np.concatenate([linear, angular], axis=1)
+    total = w[:, :1] * basis[0]
+    for k in range(1, 6):
+        total += w[:, k:k + 1] * basis[k]
+    total += basis[6]
+    total -= sums.reshape(len(f), basis.shape[1])
+    n_out = out.shape[1]
+    out[:] = total[:, :n_out]
+    residual[:] = total[:, n_out:]
+
+
+def _accelerations_numpy(totals, rigid, linear, angular):
+    """The kernel's inertia relief from the applied loads' totals (c, 6), for all cases."""
+    fx, fy, fz = totals[:, 0], totals[:, 1], totals[:, 2]
+    dx, dy, dz = rigid[0], rigid[1], rigid[2]
+    mx = totals[:, 3] - (dy * fz - dz * fy) + rigid[6]
+    my = totals[:, 4] - (dz * fx - dx * fz) + rigid[7]
+    mz = totals[:, 5] - (dx * fy - dy * fx) + rigid[8]
+    for k in range(3):
+        linear[:, k] = (totals[:, k] + rigid[3 + k]) * rigid[9]
+        angular[:, k] = rigid[10 + 3 * k] * mx + rigid[11 + 3 * k] * my + rigid[12 + 3 * k] * mz
 
 
 def _result_array(out, shape):
