@@ -26,6 +26,7 @@ combines, in airframe axes:
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 import pandas as pd
@@ -693,7 +694,12 @@ class LoadsResult:
         return convex_hull(self.loads, self.case_ids, index, pair)
 
     def comparison(self):
-        """Exceedance over the previous design envelope, or None if none was given."""
+        """Exceedance over the previous design envelope, or None if none was given (a copy of
+        the table, which is computed once: the report reads it three times)."""
+        return None if self._comparison is None else self._comparison.copy()
+
+    @cached_property
+    def _comparison(self):
         prev = self.study.previous_envelope
         if prev is None:
             return None
