@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.errors import InputError
-from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
+from slingloads.io.common.figures import PAGE_WIDTH, cycle_colour, fix_margins
 from slingloads.io.common.units import si_factor
 
 
@@ -101,12 +101,12 @@ def plot_wake(result, units="SI"):
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.0)), left=0.8, bottom=0.5, top=0.35)
     ax = fig.subplots()
     ax.plot(np.asarray(result.distance) * length, result.ratio, label=result.wake_source)
-    ax.axhline(result.target, color="C1", ls="--", label=f"target {result.target:.3g}")
-    ax.axvline(result.line_length * length, color="C2", ls=":",
+    ax.axhline(result.target, color=cycle_colour(1), ls="--", label=f"target {result.target:.3g}")
+    ax.axvline(result.line_length * length, color=cycle_colour(2), ls=":",
                label=f"line {result.line_length * length:.3g} {label}")
     if result.cable is not None:
         cable = result.cable.cable_length * length
-        ax.axvline(cable, color="C3" if not result.cable.ok else "C4",
+        ax.axvline(cable, color=cycle_colour(3 if not result.cable.ok else 4),
                    ls="-.", label=f"carrier cable {cable:.3g} {label}")
     ax.set(xlabel=f"distance behind the attachment [{label}]", ylabel="q_wake / q [-]",
            title="Dynamic pressure in the fuselage wake")
@@ -208,7 +208,7 @@ def plot_histories_by_gust(runs, indices, title=None, units="SI"):
     axes = np.atleast_1d(fig.subplots(rows, cols, sharex=True, sharey=True, squeeze=False)
                          ).ravel()
     areas = sorted({float(runs.areas[j]) for j in indices})
-    colours = {a: f"C{k % 10}" for k, a in enumerate(areas)}
+    colours = {a: cycle_colour(k) for k, a in enumerate(areas)}
     for ax, kind in zip(axes, kinds, strict=False):
         for j in (j for j in indices if runs.gusts[j].kind == kind):
             colour = colours[float(runs.areas[j])]

@@ -15,7 +15,7 @@ from matplotlib.figure import Figure
 
 from slingloads.analyses.lateral import REGULATORY_ANGLE
 from slingloads.constants import FOOT, G0
-from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
+from slingloads.io.common.figures import PAGE_WIDTH, cycle_colour, fix_margins
 
 _REG_STYLE = {"color": "tab:red", "linestyle": "--", "linewidth": 1.0}
 
@@ -114,7 +114,7 @@ def plot_max_angle_vs_acceleration(study, title=None):
     envelope = (runs.groupby([rope, "motion", "peak S'' [g]"], as_index=False)
                 ["max |theta1 - theta2| [deg]"].max())
     lengths = sorted(envelope[rope].unique())
-    colours = {length: f"C{k % 10}" for k, length in enumerate(lengths)}
+    colours = {length: cycle_colour(k) for k, length in enumerate(lengths)}
     for (length, motion), rows in envelope.groupby([rope, "motion"]):
         rows = rows.sort_values("peak S'' [g]")
         style, marker = _MOTION_STYLES.get(motion, ("-.", "v"))

@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.errors import InputError
-from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
+from slingloads.io.common.figures import PAGE_WIDTH, cycle_colour, fix_margins
 from slingloads.io.common.units import si_factor
 from slingloads.models.multibody.equations import INFO
 from slingloads.models.multibody.parachute_line import line_direction
@@ -46,7 +46,7 @@ def plot_histories(simulation, title=None):
     axes = fig.subplots(len(HISTORY_PANELS), 1, sharex=True)
     for k, run in enumerate(simulation.runs):
         h = run.histories()
-        style = {"lw": 1.1, "color": f"C{k % 10}", "ls": ("-", "--", ":", "-.")[k // 10 % 4]}
+        style = {"lw": 1.1, "color": cycle_colour(k), "ls": ("-", "--", ":", "-.")[k // 10 % 4]}
         for ax, (key, _) in zip(axes, HISTORY_PANELS, strict=True):
             values = h[key] if key == "tension ratio" else np.degrees(h[key])
             ax.plot(h["time"], values, label=run.name, **style)
@@ -86,7 +86,7 @@ def plot_eigenvalues(linear, title=None):
         label = (f"{row['mode']}: {row['natural frequency [rad/s]']:.3g} rad/s, "
                  f"zeta {row['damping ratio [-]']:.3g}")
         style = {"ls": "none", "marker": "xo+sd^v<>p"[k // 10 % 10], "ms": 8, "mew": 2,
-                 "color": f"C{k % 10}"}
+                 "color": cycle_colour(k)}
         for ax in (every, slow):
             ax.plot([re, re], [im, -im], label=label if ax is every else None, **style)
     for ax in (every, slow):
@@ -182,7 +182,7 @@ def plot_views(system, states, outline, units="SI", title=None):
     side, top = fig.subplots(1, 2)
     for k, (name, state, info) in enumerate(states):
         points = system_points(system, state, info, outline)
-        color, ls = ("0.55", "--") if k == 0 else (f"C{k - 1}", "-")
+        color, ls = ("0.55", "--") if k == 0 else (cycle_colour(k - 1), "-")
         for ax, (i, j) in ((side, (0, 2)), (top, (0, 1))):
             for key, line in points.items():
                 line = line * scale
