@@ -255,14 +255,11 @@ def _analyse(args):
 
 
 def _run_analyses(args):
-    from tqdm import tqdm
-
     from slingloads.io.consistency import consistency_checks
     from slingloads.io.study import read_study
 
     show = not args.quiet
-    with tqdm(total=3, desc="reading", disable=not show, unit="step",
-              bar_format="{desc:<28}{bar:20}| {n_fmt}/{total_fmt} [{elapsed}]") as bar:
+    with _progress(show) as bar:
         only = None
         if args.command != "run":
             only = [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
@@ -312,6 +309,34 @@ def _run_analyses(args):
     for text in study.warnings:
         print(f"slingloads: warning: {text}", file=sys.stderr)
     return 0
+
+
+def _progress(show):
+    """The run's progress bar (tqdm, loaded only when it is shown), or a silent stand-in."""
+    if not show:
+        return _NoProgress()
+    from tqdm import tqdm
+
+    return tqdm(total=3, desc="reading", unit="step",
+                bar_format="{desc:<28}{bar:20}| {n_fmt}/{total_fmt} [{elapsed}]")
+
+
+class _NoProgress:
+    """What ``--quiet`` shows: nothing (the interface of the tqdm bar the run uses)."""
+
+    total = 0
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+    def update(self, n=1):
+        pass
+
+    def set_description(self, text):
+        pass
 
 
 class _FirstComputed:

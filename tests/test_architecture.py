@@ -181,3 +181,19 @@ def test_libraries_load_only_where_used(module, absent):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip().splitlines()
     assert out[-1] == "loaded:", f"importing {module} loaded {out[-1]}"
+
+
+def test_a_quiet_run_loads_no_progress_bar():
+    """`--quiet` shows no progress bar, so the run's stand-in loads no tqdm (which imports
+    importlib.metadata and more, a tenth of a second); a shown bar is tqdm's."""
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom slingloads import cli\n"
+            "with cli._progress(False) as bar:\n"
+            "    bar.total = 4\n    bar.update(1)\n    bar.set_description('x')\n"
+            "print('loaded:' + ('tqdm' if 'tqdm' in sys.modules else ''))\n"
+            "with cli._progress(True) as bar:\n    print(type(bar).__module__.split('.')[0])")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.strip().splitlines()
+    assert out == ["loaded:", "tqdm"]
