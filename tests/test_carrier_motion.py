@@ -152,3 +152,36 @@ def test_bad_motion_input(build, match):
     """Bad motion input raises InputError naming the rule and echoing the value."""
     with pytest.raises(InputError, match=match):
         build()
+
+
+_SAMPLED = np.linspace(0.0, 4.0, 41)
+_RAMP = np.linspace(0.3, 5.0, 60)
+_IRREGULAR = np.sort(np.random.default_rng(7).uniform(0.0, 10.0, 300))
+
+
+@pytest.mark.parametrize("motion", [
+    QuinticStep(3.0, 4.0), QuinticStep(-1.3, 0.7), CycloidalStep(-2.0, 1.5),
+    CycloidalStep(1.1, 3.3), ConstantAcceleration(2.0, 3.0, "hold"),
+    ConstantAcceleration(-4.9, 1.3, "stop"), VelocityStep(2.0), VelocityStep(-0.3),
+    TimeHistory(_SAMPLED, QuinticStep(3.0, 4.0).displacement(_SAMPLED), name="sampled step"),
+    TimeHistory(_RAMP, 0.7 * (_RAMP - 0.3) + 0.2 * np.sin(3.0 * _RAMP), name="ramp"),
+    TimeHistory(_IRREGULAR, np.random.default_rng(8).normal(size=300), name="irregular"),
+], ids=lambda m: m.describe())
+def test_kinematics_at_is_kinematics_in_floats(motion):
+    """The scalar fast path kinematics_at gives the same doubles as kinematics at that one
+    time (numpy's path the solve_ivp runs took before it), at random times before, inside and
+    after the motion, exactly at and one ulp either side of its breakpoints, at a time
+    history's samples, and at -0.0; and floats, not numpy scalars. Against kinematics on a
+    whole array of times (numpy computes powers of arrays by other means) it agrees to the
+    last place or so."""
+    end = max(motion.breakpoints)
+    rng = np.random.default_rng(0)
+    special = [np.nextafter(b, side) for b in motion.breakpoints
+               for side in (-np.inf, b, np.inf)]
+    times = np.concatenate([rng.uniform(-1.0, 2.0 * end + 1.0, 3000), special,
+                            [-0.0, 0.0, 2.0 * end, 50.0], getattr(motion, "time", [])])
+    fast = np.array([motion.kinematics_at(t) for t in times]).T
+    one_by_one = np.array([[float(x) for x in motion.kinematics(t)] for t in times]).T
+    np.testing.assert_array_equal(fast, one_by_one)
+    assert all(type(x) is float for x in motion.kinematics_at(np.float64(0.3 * end)))
+    assert_allclose(fast, np.stack(motion.kinematics(times)), rtol=1e-15)

@@ -8,6 +8,7 @@ from matplotlib.figure import Figure
 from numpy.testing import assert_allclose
 from scipy.special import ellipk
 
+from slingloads.analyses import lateral
 from slingloads.analyses.lateral import (
     REGULATORY_ANGLE,
     ParameterRanges,
@@ -21,6 +22,7 @@ from slingloads.errors import InputError
 from slingloads.io.lateral.plots import plot_max_angle_vs_acceleration, plot_time_histories
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
+    CycloidalStep,
     QuinticStep,
     TimeHistory,
     VelocityStep,
@@ -233,3 +235,92 @@ def test_models_and_analyses_do_not_import_io():
         for banned in ("slingloads.io", "openpyxl", "matplotlib"):
             assert banned not in text, (name, banned)
     assert isinstance(pd.DataFrame(), pd.DataFrame)
+
+
+def _numpy_right_hand_side(pendulum, motion):
+    """simulate's right-hand side before the compiled fast path: the numpy equations at the
+    motion's array kinematics."""
+    def derivatives(t, x):
+        _, v, a = motion.kinematics(t)
+        return pendulum.derivatives(x, v, a)[0]
+
+    return derivatives
+
+
+_T = np.linspace(0.0, 4.0, 41)
+_HISTORY = TimeHistory(_T + 0.5, 2.0 * _T + 0.3 * np.sin(2.0 * _T), name="ramp")
+_DAMPED = {"lateral_damping": 2000.0, "roll_damping": 5000.0, "damping_height": 0.4}
+_FAST_PATH_CASES = [
+    (LateralPendulum(UH60, ROPES[0]), QuinticStep.from_peak_acceleration(0.3 * G0, 2.0)),
+    (LateralPendulum(BO105, ROPES[1], **_DAMPED), CycloidalStep(-2.0, 1.5)),
+    (LateralPendulum(UH60, ROPES[0], cable_ea=2e7), ConstantAcceleration(2.0, 1.0, "stop")),
+    (LateralPendulum(BO105, ROPES[0], cable_ea=2e7, **_DAMPED), _HISTORY),
+    (LateralPendulum(POINT, ROPES[2]), VelocityStep(2.0)),
+]
+
+
+@pytest.mark.parametrize("pendulum, motion", _FAST_PATH_CASES)
+def test_right_hand_side_is_the_numpy_one(pendulum, motion):
+    """simulate's right-hand side (compiled equations at kinematics_at) against the numpy
+    equations at the motion's array kinematics, the right-hand side it replaces: the same
+    doubles at random states and times (before, inside and after the motion, and at its
+    breakpoints), a new array each call (solve_ivp keeps them), several states at once (the
+    implicit methods' Jacobians) as numpy gives them, and numpy's nan (not an exception)
+    where the elastic cable's hub is exactly at the hook."""
+    fast = lateral._right_hand_side(pendulum, motion)
+    numpy_rhs = _numpy_right_hand_side(pendulum, motion)
+    rng = np.random.default_rng(3)
+    n = len(pendulum.state_names)
+    times = np.concatenate([rng.uniform(-1.0, 8.0, 300), motion.breakpoints])
+    for t in times:
+        x = pendulum.initial_state(1.0) + rng.normal(0.0, 0.5, n)
+        got = fast(t, x[:, None])
+        assert got.shape == (n,)
+        np.testing.assert_array_equal(got, numpy_rhs(t, x[:, None])[:, 0])
+    assert fast(1.0, x[:, None]) is not fast(1.0, x[:, None])
+    columns = pendulum.initial_state(0.5)[:, None] + rng.normal(0.0, 0.5, (n, 3))
+    np.testing.assert_array_equal(fast(0.7, columns), numpy_rhs(0.7, columns))
+    if not pendulum.rigid:
+        with np.errstate(invalid="ignore"):
+            at_hook = fast(0.7, np.zeros((n, 1)))
+        assert np.isnan(at_hook[3:5]).all()
+
+
+@pytest.mark.parametrize("pendulum, motion", _FAST_PATH_CASES)
+def test_simulate_histories_are_those_of_the_numpy_equations(pendulum, motion, monkeypatch):
+    """End to end: simulate with its compiled right-hand side against simulate with the numpy
+    one (monkeypatched in): the same number of evaluations and the same states, tension and
+    carrier histories to the last bit, so solve_ivp took the same steps."""
+    counts = []
+    budget = lateral.evaluation_budget
+
+    def counted_budget(function, *args, **kwargs):
+        counts.append(0)
+        inner = budget(function, *args, **kwargs)
+
+        def f(*a):
+            counts[-1] += 1
+            return inner(*a)
+
+        return f
+
+    monkeypatch.setattr(lateral, "evaluation_budget", counted_budget)
+    solver = SolverSettings(t_end=4.0, method="DOP853", rtol=1e-8)
+    fast = simulate(pendulum, motion, solver=solver)
+    monkeypatch.setattr(lateral, "_right_hand_side", _numpy_right_hand_side)
+    reference = simulate(pendulum, motion, solver=solver)
+    assert counts[0] == counts[1] > 50
+    for name in ("t", "states", "tension", "carrier"):
+        np.testing.assert_array_equal(getattr(fast, name), getattr(reference, name))
+
+
+def test_simulate_counts_every_evaluation(monkeypatch):
+    """The evaluation budget still counts every call of the fast right-hand side: with the
+    limit set to 200, a run needing more is refused with the located budget error (field
+    rtol) instead of finishing."""
+    import slingloads.limits
+
+    monkeypatch.setattr(slingloads.limits, "MAX_ODE_EVALUATIONS", 200)
+    with pytest.raises(InputError, match="needs more than 200 evaluations") as error:
+        simulate(*_FAST_PATH_CASES[0], solver=SolverSettings(t_end=4.0))
+    assert error.value.field == "rtol"

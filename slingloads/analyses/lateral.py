@@ -334,11 +334,8 @@ def simulate(pendulum, motion, *, solver=None, x0=None):
     if isinstance(motion, TimeHistory):
         max_step = min(max_step, motion.min_interval)
 
-    def derivatives(t, x):
-        _, v, a = motion.kinematics(t)
-        return pendulum.derivatives(x, v, a)[0]
-
-    rhs = evaluation_budget(derivatives, "the time-history run", field="rtol")
+    rhs = evaluation_budget(_right_hand_side(pendulum, motion), "the time-history run",
+                            field="rtol")
     n_out = max(int(np.ceil(t_end / solver.output_interval - 1e-9)), 2)
     check_count(n_out, MAX_HISTORY_OUTPUT, "stored samples of a time-history run",
                 field="output_interval")
@@ -367,6 +364,52 @@ def simulate(pendulum, motion, *, solver=None, x0=None):
     carrier = np.stack(motion.kinematics(t_out))
     _, tension = pendulum.derivatives(states, carrier[1], carrier[2])
     return LateralRun(pendulum, motion, t_out, states, carrier, tension, solver)
+
+
+def _right_hand_side(pendulum, motion):
+    """The state derivative f(t, x) of one run, for solve_ivp with ``vectorized=True``.
+
+    A single state (shape (states, 1): every call of the explicit methods) goes through the
+    compiled scalar equations of :mod:`slingloads.models.pendulum_batch` at the hook's
+    velocity and acceleration from the motion's ``kinematics_at``; several states at once (the
+    finite-difference Jacobians of the implicit methods) through the numpy equations, and so
+    does a call the compiled code refuses (an elastic cable's hub exactly at the hook: 0/0,
+    which numpy makes nan and solve_ivp then reports), so that errors are those of before.
+
+    Why: the numpy equations on 0-d arrays and the motion's array kinematics cost about
+    190 us a call, nearly all of a run's time (4,500 calls for the example's critical case);
+    this path takes a few us. Why it is exact: the compiled equations are the numpy ones
+    operation for operation, without fast-math, calling the same C library sin, cos and sqrt,
+    and ``kinematics_at`` is ``kinematics`` in floats likewise, so each derivative is the same
+    double and solve_ivp takes the same steps (tested in ``tests/test_lateral_study.py``).
+
+    Returns
+    -------
+    callable
+        ``f(t, x)`` of t [s] and x of shape (states, k): a new array of shape (states,) for
+        k = 1, (states, k) otherwise. [state units / s]
+    """
+    from slingloads.models import pendulum_batch
+
+    params = pendulum.arrays()
+    row = np.array([params[name] for name in pendulum_batch.PARAMETERS])
+    equations = pendulum_batch.rigid_rope if pendulum.rigid else pendulum_batch.elastic_cable
+    n = len(pendulum.state_names)
+    kinematics_at = motion.kinematics_at
+
+    def derivatives(t, x):
+        if x.shape[1] != 1:
+            _, v, a = motion.kinematics(t)
+            return pendulum.derivatives(x, v, a)[0]
+        _, v, a = kinematics_at(t)
+        dx = np.empty(n)  # a new array: solve_ivp keeps the ones it is given
+        try:
+            equations(x[:, 0], v, a, row, dx)
+        except ZeroDivisionError:
+            return pendulum.derivatives(x, v, a)[0]
+        return dx
+
+    return derivatives
 
 
 def _settings(solver):
