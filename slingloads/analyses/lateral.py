@@ -33,7 +33,6 @@ from dataclasses import dataclass, fields, replace
 
 import numpy as np
 import pandas as pd
-from scipy.integrate import solve_ivp
 
 from slingloads.analyses.lateral_damping import LateralDamping
 from slingloads.constants import FOOT, G0
@@ -326,6 +325,8 @@ def simulate(pendulum, motion, *, solver=None, x0=None):
     InputError
         For a bad initial state, or if the integrator fails.
     """
+    from scipy.integrate import solve_ivp  # scipy loads where it is used
+
     solver = _settings(solver).with_defaults(output_interval=OUTPUT_INTERVAL)
     if solver.t_end is None:
         solver = solver.with_defaults(t_end=default_end_time([pendulum], [motion]))

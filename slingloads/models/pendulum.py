@@ -38,7 +38,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
-from scipy.linalg import eigh
 
 from slingloads.checks import finite as _finite
 from slingloads.checks import non_negative as _non_negative
@@ -228,6 +227,8 @@ class LateralPendulum:
         -------
         LinearModes
         """
+        from scipy.linalg import eigh  # scipy loads where it is used (docs/reports.md)
+
         w2, phi = eigh(self.stiffness_matrix(), self.mass_matrix())
         w2 = np.clip(w2, 0.0, None)  # e = 0 gives an exact zero (free rotation) mode
         big = np.argmax(np.abs(phi), axis=0)

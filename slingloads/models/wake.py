@@ -45,7 +45,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from slingloads.checks import positive
 from slingloads.errors import InputError
@@ -221,6 +220,8 @@ class BluffBodyWake:
         hi = 2.0 * self.min_distance
         while self(hi) < target:
             hi *= 2.0
+        from scipy.optimize import brentq  # scipy loads where it is used
+
         return float(brentq(lambda x: self(x) - target, self.min_distance, hi, xtol=1e-9))
 
     def _check(self, distance):

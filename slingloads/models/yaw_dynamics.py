@@ -54,7 +54,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from slingloads.errors import InputError
 from slingloads.limits import (
@@ -699,6 +698,8 @@ def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None)
     jump). It is the reference for runs that stay inside their tables: a run found outside
     them at an output time is flagged (``left_table``) but not frozen.
     """
+    from scipy.integrate import solve_ivp  # scipy loads where it is used
+
     settings = yaw_solver_settings(settings)
     areas, gusts, psi0, rate0 = _check_runs(model, areas, gusts, psi0, rate0)
     times = settings.output_times()
