@@ -380,11 +380,112 @@ def test_generic_writer_sections_and_highlight(tmp_path):
     table = pd.DataFrame({"id": ["a", "b"], "ratio": [0.5, 1.5]})
     write_workbook(path, {"S": [Section("Title", table, note="line 1\nline 2")]},
                    highlight={"S": Highlight(["ratio"], 1.0)})
-    rows = _sheet_rows(path, "S")
+    # a reader pads every row to the sheet's last column (the file's dimension): cut the
+    # empty cells that end a row
+    rows = [r[:max((j + 1 for j, v in enumerate(r) if v is not None), default=0)]
+            for r in _sheet_rows(path, "S")]
     assert rows[:3] == [["Title"], ["line 1"], ["line 2"]]
     assert rows[3:] == [["id", "ratio"], ["a", 0.5], ["b", 1.5]]
     ws = load_workbook(path)["S"]
     assert [str(cf.sqref) for cf in ws.conditional_formatting] == ["B5:B6"]
+
+
+#: Texts a workbook writer could mistake for markup: XlsxWriter writes a string that starts
+#: with <r> and ends with </r> as rich-text XML, and _xHHHH_ is the escape of a character.
+MARKUP = ["<r><t>x</t></r>", "<r></r>", "</r>", "_x0041_", " lead", "trail ", "=1+1"]
+
+
+def _as_excel_reads(value):
+    """A cell value as Excel reads it: openpyxl leaves the ``_x005F_`` escape (a literal
+    ``_`` before ``xHHHH_``) of an inline string undecoded."""
+    return value.replace("_x005F_", "_") if isinstance(value, str) else value
+
+
+@pytest.mark.parametrize("streamed", [False, True])
+def test_markup_looking_text_is_stored_verbatim(tmp_path, monkeypatch, streamed):
+    """Texts that look like the file's own markup are stored as the text they are, on a
+    workbook built in memory and on one streamed row by row (a large one), and the two hold
+    the same cells, formats and row heights."""
+    import slingloads.io.common.excel as excel
+
+    frame = pd.DataFrame({"text": MARKUP, "note": ["long words " * 8] * len(MARKUP),
+                          "x [m]": np.arange(len(MARKUP)) * 0.1})
+    sheets = {"T": frame, "S": [Section("Title", frame)]}
+    monkeypatch.setattr(excel, "IN_MEMORY_CELLS", -1 if streamed else 10**9)
+    write_workbook(tmp_path / "m.xlsx", sheets)
+    monkeypatch.setattr(excel, "IN_MEMORY_CELLS", 10**9)
+    write_workbook(tmp_path / "ref.xlsx", sheets)
+    got, ref = load_workbook(tmp_path / "m.xlsx"), load_workbook(tmp_path / "ref.xlsx")
+    for name in ("T", "S"):
+        ws = got[name]
+        texts = [_as_excel_reads(c.value) for c in ws["A"]]
+        assert [t for t in texts if t in MARKUP] == MARKUP, name
+        assert {c.data_type for c in ws["A"] if c.value is not None} == {"s"}, name
+        cells = [[(_as_excel_reads(c.value), c.data_type, c.number_format) for c in r]
+                 for r in ws.iter_rows()]
+        assert cells == [[(c.value, c.data_type, c.number_format) for c in r]
+                         for r in ref[name].iter_rows()], name
+        heights = {k: d.height for k, d in ws.row_dimensions.items() if d.height}
+        assert heights and heights == {k: d.height for k, d in ref[name].row_dimensions.items()
+                                       if d.height}, name
+
+
+@pytest.mark.parametrize("streamed", [False, True])
+def test_text_excel_cannot_store_is_refused(tmp_path, monkeypatch, streamed):
+    """A control character, a text longer than 32,767 characters and a table wider than
+    16,384 columns are refused with the sheet and the cell; nothing is written, and no
+    temporary file is left."""
+    import tempfile
+
+    import slingloads.io.common.excel as excel
+
+    monkeypatch.setattr(excel, "IN_MEMORY_CELLS", -1 if streamed else 10**9)
+    temp = tmp_path / "temp"
+    temp.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(temp))
+    path = tmp_path / "bad.xlsx"
+    for bad, rule, cell in (("a\x01b", "control character", "A3"),
+                            ("x" * 32_768, "longer than Excel's 32767", "A3"),
+                            ("\U0001F600" * 16_384, "longer than Excel's 32767", "A3")):
+        with pytest.raises(InputError, match=rule) as err:
+            write_workbook(path, {"T": pd.DataFrame({"t": ["ok", bad]})})
+        assert (err.value.sheet, err.value.cell) == ("T", cell)
+    with pytest.raises(InputError, match="16384 columns"):
+        write_workbook(path, {"W": pd.DataFrame(np.zeros((1, 16_385)))})
+    assert not path.exists()
+    assert not list(temp.iterdir())
+
+
+def test_page_header_codes_in_input_text(tmp_path):
+    """Text from the inputs in a page header prints as written: '&' is doubled, '&G' and
+    '&[Picture]' (image codes) stay text, and a text full of '&' is shortened to Excel's 255
+    characters instead of losing the header."""
+    import warnings
+
+    from slingloads.io.common.cover import ReportInfo
+
+    short = ReportInfo(title="R&G &[Picture]", analysis="a", study="s",
+                       input_name="in&G.xlsx", document="D&G")
+    full = replace(short, title=short.title + "&" * 200, document="D&G" + "&" * 200)
+    frame = pd.DataFrame({"a": [1.0]})
+    frame.attrs["title"] = "T&G" + "&" * 200
+    path = tmp_path / "h.xlsx"
+    for info in (short, full):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # XlsxWriter warns when it drops a header
+            write_workbook(path, {"T": frame}, info=info)
+        ws = load_workbook(path)["T"]
+        assert ws.oddHeader.left.text.startswith("R&&G &&[Picture]")
+        assert ws.oddHeader.center.text.startswith("T&&G&&")
+        assert ws.oddHeader.right.text.startswith("D&&G")
+        assert ws.oddHeader.left.size == ws.oddHeader.right.size == 8
+        assert ws.oddFooter.center.text == "page &P of &N"
+        with zipfile.ZipFile(path) as z:
+            xml = z.read("xl/worksheets/sheet2.xml").decode()
+        header = xml.split("<oddHeader>")[1].split("</oddHeader>")[0].replace("&amp;", "&")
+        assert len(header) <= 255
+    assert ws.oddHeader.left.text.endswith("&&...") and len(header) > 200
+    assert load_workbook(path)["Cover"].oddHeader.right.text.startswith("D&&G&&")
 
 
 @pytest.mark.skipif(shutil.which("soffice") is None, reason="LibreOffice (soffice) not found")

@@ -17,9 +17,11 @@ headers, and images already drawn. Every sheet it writes, whatever its content, 
   :data:`MAX_TEXT_WIDTH` characters), header cells bold and wrapped, notes wrapped to the
   table width;
 * **safety**: every string stored as text, never as a formula (a case description such as
-  ``=HYPERLINK("x")`` is an inline string cell, ``data_type "s"``); NaN an empty cell and
-  +/-inf the text ``inf``/``-inf`` (Excel has neither); a table longer than Excel's row
-  limit split over ``NAME_1``, ``NAME_2``... with the header repeated, never truncated;
+  ``=HYPERLINK("x")`` is a string cell, ``data_type "s"``; a text that looks like
+  XlsxWriter's own rich-string markup, ``<r>...</r>``, is written as a rich string of two
+  runs, so that it too is escaped); NaN an empty cell and +/-inf the text ``inf``/``-inf``
+  (Excel has neither); a table longer than Excel's row limit split over ``NAME_1``,
+  ``NAME_2``... with the header repeated, never truncated;
 * images scaled to the printable width, two to a page when they fit, never cut by a page
   break; a red fill on ratio cells above a threshold (conditional formatting).
 
@@ -29,15 +31,22 @@ and source revision, run date, project / document / author / checker, list of sh
 conventions). A new report sheet therefore needs nothing but its DataFrame (or titled
 :class:`Section` blocks): print setup, formats and panes come from here.
 
-The workbook is written in openpyxl's write-only (streaming) mode.
+The workbook is written with XlsxWriter, each cell format made once: in memory up to
+:data:`IN_MEMORY_CELLS` table cells, else streamed row by row through temporary files
+(``constant_memory``: memory does not grow with a table). Nothing is written at ``path``
+until every sheet is done: a workbook refused half-way (text Excel cannot store) leaves no
+file, and no temporary file.
 
 References
 ----------
 .. [1] Microsoft, "Excel specifications and limits": 1,048,576 rows by 16,384 columns;
    32,767 characters per cell; sheet names of at most 31 characters without ``: \\ / ? * [ ]``;
    255 characters in a page header or footer.
-.. [2] ECMA-376 Part 1, 18.3.1.63 ``pageSetup`` (paperSize 9 = A4) and 18.3.1.46
-   ``headerFooter`` codes (``&P`` page, ``&N`` pages, ``&&`` an ampersand).
+.. [2] ECMA-376 Part 1, 18.3.1.63 ``pageSetup`` (paperSize 9 = A4; ``fitToWidth`` and
+   ``fitToHeight`` default to 1) and 18.3.1.46 ``headerFooter`` codes (``&P`` page, ``&N``
+   pages, ``&&`` an ampersand, ``&8`` an 8-point font).
+.. [3] W3C, "Extensible Markup Language (XML) 1.0", 2.2 Characters: the control characters
+   below U+0020 other than tab, line feed and carriage return are not allowed.
 """
 
 from __future__ import annotations
@@ -46,21 +55,16 @@ import io
 import math
 import numbers
 import re
+import tempfile
 import textwrap
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
-from openpyxl import Workbook
-from openpyxl.cell import WriteOnlyCell
-from openpyxl.drawing.image import Image
-from openpyxl.formatting.formatting import ConditionalFormattingList
-from openpyxl.formatting.rule import FormulaRule
-from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
-from openpyxl.utils import get_column_letter
-from openpyxl.utils.exceptions import IllegalCharacterError
-from openpyxl.worksheet.pagebreak import Break
+import xlsxwriter
+from xlsxwriter.exceptions import FileCreateError
+from xlsxwriter.utility import xl_col_to_name, xl_rowcol_to_cell
 
 from slingloads.errors import InputError
 from slingloads.io.common.figures import collect_pngs, figure_png
@@ -74,6 +78,8 @@ EXCEL_MAX_COLUMNS = 16_384
 EXCEL_MAX_CELL_CHARS = 32_767
 #: Characters in a sheet name [1]_.
 EXCEL_MAX_SHEET_NAME = 31
+#: Characters (UTF-16 code units) in a page header or footer, codes included [1]_.
+EXCEL_MAX_HEADER_CHARS = 255
 #: Widest text column [characters]; longer text wraps.
 MAX_TEXT_WIDTH = 40
 #: Widest numeric column [characters].
@@ -87,29 +93,46 @@ PRINTABLE = {"portrait": (round((8.27 - 1.0) * 96), round((11.69 - 1.5) * 96)),
              "landscape": (round((11.69 - 1.0) * 96), round((8.27 - 1.5) * 96))}
 #: Pixel height of a default row (15 pt at 96 dpi).
 ROW_PIXELS = 20
+#: Most table cells of a workbook built in memory (XlsxWriter keeps about 250 bytes a cell:
+#: some 60 MB at most); a larger one is streamed through temporary files, which is slower.
+IN_MEMORY_CELLS = 250_000
 
 _BAD_SHEET_CHARS = re.compile(r"[:\\/?*\[\]]")
+#: Characters an XML 1.0 document cannot hold [3]_ (openpyxl's ``ILLEGAL_CHARACTERS_RE``).
+_ILLEGAL_CHARACTERS = re.compile(r"[\000-\010]|[\013-\014]|[\016-\037]")
+#: A literal ``&`` (doubled) before what XlsxWriter's ``set_header`` reads as an image code.
+_IMAGE_CODE = re.compile(r"&&(?=G|\[Picture\])")
 _FONT = "Calibri"
-_TITLE_FONT = Font(name=_FONT, bold=True, size=12)
-_COVER_TITLE_FONT = Font(name=_FONT, bold=True, size=16)
-_HEADER_FONT = Font(name=_FONT, bold=True)
-_HEADER_FILL = PatternFill("solid", start_color="DDEBF7", end_color="DDEBF7")
-_HEADER_BORDER = Border(bottom=Side(style="thin"))
-_HEADER_ALIGN = Alignment(wrap_text=True, vertical="bottom")
-_HEADER_RIGHT = Alignment(wrap_text=True, vertical="bottom", horizontal="right")
-_HEADER_CENTER = Alignment(wrap_text=True, vertical="bottom", horizontal="center")
-_WRAP = Alignment(wrap_text=True, vertical="top", horizontal="left", indent=1)
-_WRAP_GENERAL = Alignment(wrap_text=True, vertical="top")
-_TOP = Alignment(vertical="top")
-_LEFT = Alignment(vertical="top", horizontal="left", indent=1)
-_RIGHT = Alignment(vertical="top", horizontal="right")
-_CENTER = Alignment(vertical="top", horizontal="center")
+
+
+def _props(**kwargs):
+    """XlsxWriter format properties as a hashable tuple of ``(name, value)`` pairs."""
+    return tuple(sorted(kwargs.items()))
+
+
+# Parts of a cell style: tuples of XlsxWriter format properties, combined by _style().
+_TITLE_FONT = _props(font_name=_FONT, bold=True, font_size=12)
+_COVER_TITLE_FONT = _props(font_name=_FONT, bold=True, font_size=16)
+_HEADER_FONT = _props(font_name=_FONT, bold=True)
+_HEADER_FILL = _props(pattern=1, fg_color="#DDEBF7", bg_color="#DDEBF7")  # solid
+_HEADER_BORDER = _props(bottom=1)  # thin
+_HEADER_ALIGN = _props(text_wrap=True, valign="bottom")
+_HEADER_RIGHT = _props(text_wrap=True, valign="bottom", align="right")
+_HEADER_CENTER = _props(text_wrap=True, valign="bottom", align="center")
+_WRAP = _props(text_wrap=True, valign="top", align="left", indent=1)
+_WRAP_GENERAL = _props(text_wrap=True, valign="top")
+_TOP = _props(valign="top")
+_LEFT = _props(valign="top", align="left", indent=1)
+_RIGHT = _props(valign="top", align="right")
+_CENTER = _props(valign="top", align="center")
 #: Longest text of a column of ids that is centred (case, station, yes/no).
 _ID_WIDTH = 10
-_RED_FILL = PatternFill("solid", start_color="FFC7CE", end_color="FFC7CE")
-_RED_FONT = Font(name=_FONT, color="9C0006")
+#: The conditional format of a highlighted cell: red fill, dark red text.
+_RED = {"bg_color": "#FFC7CE", "font_color": "#9C0006"}
 #: Average width of a character of text in Calibri 11 (digits are 7 px). [px]
 _CHAR_PIXELS = 6.3
+#: Pixels of a column per character of its stored width (a Calibri 11 digit).
+_DIGIT_PIXELS = 7
 
 
 def _px(width):
@@ -197,7 +220,7 @@ def split_sheet_names(name, n_rows, max_rows=EXCEL_MAX_ROWS):
 
 
 def _plain(value):
-    """A Python value openpyxl writes faithfully (numpy scalars unwrapped, NaN -> None,
+    """A Python value the writer stores faithfully (numpy scalars unwrapped, NaN -> None,
     booleans -> ``yes``/``no``)."""
     kind = type(value)
     if kind is float:  # the common cases first (a table's cells)
@@ -234,85 +257,155 @@ def wrapped_lines(text, width, bold=False):
     return sum(max(1, len(textwrap.wrap(part, chars))) for part in str(text).split("\n"))
 
 
-class _SheetWriter:
-    """Streams rows into one write-only sheet, keeping track of the row number and of the
-    height of the rows written.
+class _Workbook(xlsxwriter.Workbook):
+    """An XlsxWriter workbook that makes each cell format once.
 
-    Cell styles are built once per (font, format, alignment, fill, border) and shared, which
-    keeps writing a large table cheap (they are looked up by the identity of the style
-    objects: hashing openpyxl's style objects for every cell cost more than the cell). A row
-    with wrapped text gets the height of its tallest wrapped cell (LibreOffice does not
-    compute it for a streamed sheet).
+    Parameters
+    ----------
+    path : path-like
+        ``.xlsx`` file written by :meth:`save`.
+    stream : bool
+        Write each row to a temporary file as soon as the next one starts (XlsxWriter's
+        ``constant_memory``: memory does not grow with the tables, strings are inline)
+        instead of keeping the workbook in memory until it is saved (``in_memory``: no
+        temporary file, strings shared).
+    tmpdir : str, optional
+        Folder of XlsxWriter's temporary files (default: the system's).
     """
 
-    def __init__(self, ws, widths=None):
+    def __init__(self, path, *, stream=False, tmpdir=None):
+        mode = "constant_memory" if stream else "in_memory"
+        super().__init__(str(path), {mode: True, "use_zip64": True, "tmpdir": tmpdir})
+        self._cell_formats = {}
+        self._red = None
+
+    def cell_format(self, style):
+        """The XlsxWriter ``Format`` of a (font, number format, alignment, fill, border)
+        style (:func:`_style`), made on first use; None for a style of nothing."""
+        try:
+            return self._cell_formats[style]
+        except KeyError:
+            pass
+        font, number_format, alignment, fill, border = style
+        props = {}
+        for part in (font, alignment, fill, border):
+            props.update(part or ())
+        if number_format is not None:
+            props["num_format"] = number_format
+        made = self.add_format(props) if props else None
+        self._cell_formats[style] = made
+        return made
+
+    def red(self):
+        """The format of a highlighted cell (a conditional format's red fill)."""
+        if self._red is None:
+            self._red = self.add_format(_RED)
+        return self._red
+
+    def save(self):
+        """Write the file; an OSError (full disk, no permission) is raised as itself, not
+        as XlsxWriter's ``FileCreateError``."""
+        try:
+            self.close()
+        except FileCreateError as err:
+            cause = err.args[0] if err.args else None
+            if isinstance(cause, OSError):
+                raise cause from None
+            raise
+
+
+def _text_style(style):
+    """``style`` without its number format (text and empty cells take none)."""
+    return None if style is None else (style[0], None, *style[2:])
+
+
+def _wraps(style):
+    """Whether cells of ``style`` wrap their text."""
+    return style is not None and style[2] is not None and ("text_wrap", True) in style[2]
+
+
+def _bold(style):
+    """Whether cells of ``style`` are in a bold font."""
+    return style is not None and style[0] is not None and ("bold", True) in style[0]
+
+
+class _SheetWriter:
+    """Writes rows into one sheet, one after the other, keeping track of the row number, of
+    the height of the rows written and of the page breaks asked for.
+
+    Cell formats come from :meth:`_Workbook.cell_format`, one per style. A row with wrapped
+    text gets the height of its tallest wrapped cell (LibreOffice does not compute it when
+    it opens the file).
+
+    Parameters
+    ----------
+    wb : _Workbook
+    ws : xlsxwriter.worksheet.Worksheet
+        A sheet of ``wb``.
+    widths : dict of int to float, optional
+        Column widths [characters], for the lines of wrapped text.
+    """
+
+    def __init__(self, wb, ws, widths=None):
+        self.wb = wb
         self.ws = ws
         self.widths = widths or {}
         self.row = 0
         self.pixels = 0
-        self._styles = {}
+        self.breaks = []
 
-    def _cell(self, value, style=None, column=0):
-        cell = WriteOnlyCell(self.ws)
-        try:
-            cell.value = value
-        except IllegalCharacterError:
+    def _where(self, column):
+        return {"sheet": self.ws.name, "cell": xl_rowcol_to_cell(self.row, column)}
+
+    def _text(self, column, value, cell_format):
+        """Write the string ``value`` as text (never a formula)."""
+        if _ILLEGAL_CHARACTERS.search(value):
             raise InputError("text contains a control character that Excel cannot store",
-                             value, sheet=self.ws.title,
-                             cell=f"{get_column_letter(column + 1)}{self.row + 1}") from None
-        if isinstance(value, str):
-            if len(value) > EXCEL_MAX_CELL_CHARS:
-                raise InputError(f"text longer than Excel's {EXCEL_MAX_CELL_CHARS} characters "
-                                 "per cell", value[:40] + "...", sheet=self.ws.title,
-                                 cell=f"{get_column_letter(column + 1)}{self.row + 1}")
-            cell.data_type = "s"  # text, never a formula
-        if style is not None:
-            text = isinstance(value, str) or value is None  # no number format on text
-            font, number_format, alignment, fill, border = style
-            key = (id(font), None if text else number_format, id(alignment), id(fill),
-                   id(border))
-            cached = self._styles.get(key)
-            if cached is None:
-                if text:
-                    style = (font, None, alignment, fill, border)
-                cached = (style, self._style(cell, style))  # (keeps the objects alive)
-                self._styles[key] = cached
-            elif cached[1] is not None:
-                cell._style = cached[1]
-        return cell
+                             value, **self._where(column))
+        if len(value) > EXCEL_MAX_CELL_CHARS:
+            done = -2
+        elif value.startswith("<r>") and value.endswith("</r>"):
+            # XlsxWriter writes such a string unescaped, as rich-text XML: two runs instead
+            done = self.ws.write_rich_string(self.row, column, "<",
+                                             cell_format or self.wb.cell_format(_PLAIN),
+                                             value[1:], *[cell_format] if cell_format else [])
+        else:
+            done = self.ws.write_string(self.row, column, value, cell_format)
+        if done == -2:  # longer than 32,767 UTF-16 units: XlsxWriter would truncate it
+            raise InputError(f"text longer than Excel's {EXCEL_MAX_CELL_CHARS} characters "
+                             "per cell", value[:40] + "...", **self._where(column))
 
-    @staticmethod
-    def _style(cell, style):
-        """Set ``style`` on ``cell``; its style array, or None for no style at all."""
-        font, number_format, alignment, fill, border = style
-        if font is None and number_format is None and alignment is None and fill is None \
-                and border is None:
-            return None
-        if font is not None:
-            cell.font = font
-        if number_format is not None:
-            cell.number_format = number_format
-        if alignment is not None:
-            cell.alignment = alignment
-        if fill is not None:
-            cell.fill = fill
-        if border is not None:
-            cell.border = border
-        return cell._style
+    def write(self, values, formats, lines=1):
+        """Write one row of plain values (:func:`_plain`), one format (or None) each, of
+        ``lines`` lines of text."""
+        if self.row >= EXCEL_MAX_ROWS:
+            raise InputError(f"a sheet has more than Excel's {EXCEL_MAX_ROWS} rows",
+                             self.row + 1, sheet=self.ws.name)
+        if lines > 1:
+            self.ws.set_row(self.row, 15 * lines)
+        ws, row = self.ws, self.row
+        for j, (value, cell_format) in enumerate(zip(values, formats, strict=True)):
+            if value is None:
+                if cell_format is not None:  # a styled empty cell
+                    ws.write_blank(row, j, None, cell_format)
+            elif type(value) is str:
+                if value:
+                    self._text(j, value, cell_format)
+                elif cell_format is not None:  # an empty text is an empty cell
+                    ws.write_blank(row, j, None, cell_format)
+            else:
+                ws.write_number(row, j, value, cell_format)
+        self.row += 1
+        self.pixels += ROW_PIXELS * lines
 
-    def lines(self, values, styles, wrapping=None):
+    def lines(self, values, wrapping, bold=()):
         """Lines the row takes: the most of its wrapped text cells (``wrapping``: the
-        indices of the cells whose style wraps, when known)."""
+        indices of the cells whose style wraps; ``bold``: those in a bold font)."""
         most = 1
-        if wrapping is None:
-            wrapping = [j for j, style in enumerate(styles)
-                        if style is not None and style[2] is not None and style[2].wrap_text]
         for j in wrapping:
             value = values[j]
             if isinstance(value, str) and len(value) > 4:
-                font = styles[j][0]
-                bold = font is not None and bool(font.b)
-                most = max(most, wrapped_lines(value, self.widths.get(j, 10), bold))
+                most = max(most, wrapped_lines(value, self.widths.get(j, 10), j in bold))
         return most
 
     def append(self, values, styles=None):
@@ -321,30 +414,32 @@ class _SheetWriter:
         values = [_plain(v) for v in values]
         if styles is None or isinstance(styles, tuple):
             styles = [styles] * len(values)
-        self.append_plain(values, styles)
-
-    def append_plain(self, values, styles, wrapping=None):
-        """:meth:`append` of values already made plain (:func:`_plain`), one style each."""
-        lines = self.lines(values, styles, wrapping)
-        if lines > 1:
-            self.ws.row_dimensions[self.row + 1].height = 15 * lines
-        cell = self._cell
-        self.ws.append([cell(v, s, j) for j, (v, s) in enumerate(zip(values, styles,
-                                                                          strict=True))])
-        self.row += 1
-        self.pixels += ROW_PIXELS * lines
+        formats = [self.wb.cell_format(s if isinstance(v, (int, float)) else _text_style(s))
+                   if s is not None else None for v, s in zip(values, styles, strict=True)]
+        wrapping = [j for j, s in enumerate(styles) if _wraps(s)]
+        bold = {j for j in wrapping if _bold(styles[j])}
+        self.write(values, formats, self.lines(values, wrapping, bold))
 
     def blank(self, n=1):
-        for _ in range(n):
-            self.ws.append([])
-            self.row += 1
-            self.pixels += ROW_PIXELS
+        """Leave ``n`` empty rows."""
+        self.row += n
+        self.pixels += ROW_PIXELS * n
+
+    def page_break(self):
+        """A page break above the next row."""
+        self.breaks.append(self.row)
+
+    def close(self):
+        """Set the page breaks asked for (XlsxWriter takes them all at once)."""
+        if self.breaks:
+            self.ws.set_h_pagebreaks(self.breaks)
 
 
 def _style(font=None, number_format=None, alignment=None, fill=None, border=None):
     return (font, number_format, alignment, fill, border)
 
 
+_PLAIN = _style(_props(font_name=_FONT))
 _TITLE_STYLE = _style(_TITLE_FONT)
 _HEADER_STYLE = _style(_HEADER_FONT, None, _HEADER_ALIGN, _HEADER_FILL, _HEADER_BORDER)
 
@@ -451,8 +546,14 @@ def _column_plan(tables, notes=(), formats_of=None):
 
 
 def _set_widths(ws, columns):
+    """Set the column widths of the plan [characters], stored as they are.
+
+    A width stored as ``w`` characters shows 7 ``w`` px wide (Excel's rule for Calibri 11);
+    XlsxWriter stores ``pixels / 7``, whereas its ``set_column(w)`` would add the 5 px of
+    cell padding (``w + 5/7`` stored).
+    """
     for j, width in columns.widths.items():
-        ws.column_dimensions[get_column_letter(j + 1)].width = width
+        ws.set_column_pixels(j, j, _DIGIT_PIXELS * width)
 
 
 def _note_lines(text, columns):
@@ -496,8 +597,7 @@ def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info
 
     Parameters
     ----------
-    ws : openpyxl worksheet
-        Set before its first row is written (write-only sheets).
+    ws : xlsxwriter.worksheet.Worksheet
     pixels : float
         Width of the sheet's used columns. [px]
     height : float
@@ -516,33 +616,68 @@ def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info
         The orientation chosen.
     """
     orientation = orientation_for(pixels, height)
-    ws.page_setup.paperSize = PAPER_A4
-    ws.page_setup.orientation = orientation
-    ws.page_setup.fitToWidth = 1
-    ws.page_setup.fitToHeight = 0
-    ws.sheet_properties.pageSetUpPr.fitToPage = True
+    ws.set_paper(PAPER_A4)
+    _orient(ws, orientation)
+    ws.fit_to_pages(1, 0)  # 1 page wide, as many high as needed
     left, right, top, bottom, header, footer = MARGINS
-    ws.page_margins.left, ws.page_margins.right = left, right
-    ws.page_margins.top, ws.page_margins.bottom = top, bottom
-    ws.page_margins.header, ws.page_margins.footer = header, footer
-    ws.print_options.horizontalCentered = False
+    ws.set_margins(left=left, right=right, top=top, bottom=bottom)
     if title_rows:
-        ws.print_title_rows = f"1:{int(title_rows)}"
+        ws.repeat_rows(0, int(title_rows) - 1)
     title = info.title if info is not None else "slingloads report"
     narrow = orientation == "portrait"
-    ws.oddHeader.left.text = _escape(title, 45 if narrow else 60)
-    ws.oddHeader.center.text = _escape(sheet_title or ws.title, 45 if narrow else 70)
     right = " | ".join(t for t in ((info.document, info.input_name) if info is not None
                                    else ()) if t)
-    ws.oddHeader.right.text = _escape(right, 45)
-    for part in (ws.oddHeader.left, ws.oddHeader.center, ws.oddHeader.right):
-        part.size = 8
-    ws.oddFooter.left.text = _escape(f"run {info.run_date}" if info is not None else "", 40)
-    ws.oddFooter.center.text = "page &P of &N"
-    ws.oddFooter.right.text = _escape(info.software if info is not None else "slingloads", 45)
-    for part in (ws.oddFooter.left, ws.oddFooter.center, ws.oddFooter.right):
-        part.size = 8
+    ws.set_header(_header_footer([(title, 45 if narrow else 60),
+                                  (sheet_title or ws.name, 45 if narrow else 70),
+                                  (right, 45)]), {"margin": header})
+    ws.set_footer(_header_footer([(f"run {info.run_date}" if info is not None else "", 40),
+                                  None, (info.software if info is not None else "slingloads",
+                                         45)]), {"margin": footer})
     return orientation
+
+
+def _orient(ws, orientation):
+    """Print ``ws`` in ``orientation`` (``"portrait"`` or ``"landscape"``)."""
+    if orientation == "portrait":
+        ws.set_portrait()
+    else:
+        ws.set_landscape()
+
+
+def _header_footer(parts):
+    """A page header or footer: left, centre and right parts in 8 pt, ``&L&8 left&C&8
+    centre&R&8 right`` [2]_.
+
+    Parameters
+    ----------
+    parts : sequence of 3 (str, int) or None
+        ``(text, most characters)`` of each part, the text made safe by :func:`_escape`;
+        None for the page number, ``page &P of &N``.
+
+    Returns
+    -------
+    str
+        At most :data:`EXCEL_MAX_HEADER_CHARS` UTF-16 units: the longest part is shortened
+        while it is longer (only a text full of ``&``, each written ``&&``, comes near).
+    """
+    limits = [None if p is None else p[1] for p in parts]
+    while True:
+        texts = ["page &P of &N" if p is None else _escape(p[0], limit)
+                 for p, limit in zip(parts, limits, strict=True)]
+        text = "".join(f"&{key}&8 {part}" for key, part in zip("LCR", texts, strict=True))
+        # XlsxWriter reads &G and &[Picture] as image codes, even after a literal &&: an
+        # 8 pt size code between (the part's size already) keeps them text
+        text = _IMAGE_CODE.sub("&&&8", text)
+        shorter = [k for k, limit in enumerate(limits) if limit is not None and limit > 10]
+        if _utf16_units(text) <= EXCEL_MAX_HEADER_CHARS or not shorter:
+            return text
+        k = max(shorter, key=lambda k: _utf16_units(texts[k]))
+        limits[k] = max(10, min(limits[k], len(str(parts[k][0]))) - 5)
+
+
+def _utf16_units(text):
+    """Length of ``text`` as Excel counts it: UTF-16 code units."""
+    return len(text.encode("utf-16-le")) // 2
 
 
 def _freeze(frame, header_row):
@@ -554,21 +689,19 @@ def _freeze(frame, header_row):
 
 
 # ----------------------------------------------------------------------------- tables
-def _highlight(ws, frame, first_row, last_row, highlight):
-    """Add a red-fill conditional format on the highlighted columns of rows first..last."""
+def _highlight(writer, frame, first_row, last_row, highlight):
+    """Add a red-fill conditional format on the highlighted columns of rows first..last
+    (1-based)."""
     if highlight is None or last_row < first_row:
         return
-    if getattr(ws, "conditional_formatting", None) is None:
-        ws.conditional_formatting = ConditionalFormattingList()
     for name in highlight.columns:
         if name not in frame.columns:
             continue
-        letter = get_column_letter(list(frame.columns).index(name) + 1)
-        top = f"{letter}{first_row}"
-        rule = FormulaRule(
-            formula=[f'OR(AND(ISNUMBER({top}),{top}>{highlight.threshold!r}),{top}="inf")'],
-            fill=_RED_FILL, font=_RED_FONT)
-        ws.conditional_formatting.add(f"{letter}{first_row}:{letter}{last_row}", rule)
+        j = list(frame.columns).index(name)
+        top = f"{xl_col_to_name(j)}{first_row}"
+        writer.ws.conditional_format(first_row - 1, j, last_row - 1, j, {
+            "type": "formula", "format": writer.wb.red(),
+            "criteria": f'=OR(AND(ISNUMBER({top}),{top}>{highlight.threshold!r}),{top}="inf")'})
 
 
 def _check_highlight(frames, highlight, sheet):
@@ -614,35 +747,39 @@ def _write_table(writer, frame, formats, columns, highlight):
     names = [str(c) for c in frame.columns]
     if len(names) > EXCEL_MAX_COLUMNS:
         raise InputError(f"a table has more than Excel's {EXCEL_MAX_COLUMNS} columns",
-                         len(names), sheet=writer.ws.title)
+                         len(names), sheet=writer.ws.name)
     cells, heads = _alignments(frame, columns)
     writer.append(names, [_style(_HEADER_FONT, None, h, _HEADER_FILL, _HEADER_BORDER)
                           for h in heads])
     first = writer.row + 1
     per_row = _row_unit_columns(frame, formats)
     unit_at = names.index("unit") if per_row else None
-    base = [_style(None, f, a) for f, a in zip(formats, cells, strict=True)]
     ratio = [header_unit(c) == "-" for c in names]
-    wrapping = [j for j, a in enumerate(cells) if a.wrap_text]
+    wrapping = [j for j, a in enumerate(cells) if ("text_wrap", True) in a]
+    cell_format = writer.wb.cell_format
+    texts = [cell_format(_style(None, None, a)) for a in cells]  # text: no number format
+    looks = [{} for _ in cells]  # per column: number format -> cell format
     for row in frame.itertuples(index=False, name=None):
         values = [_plain(v) for v in row]
-        styles = list(base)
-        small = ratio
+        fmts, small = formats, ratio
         if per_row:
             unit = row[unit_at]
-            fmt = unit_format(unit)
-            small = list(ratio)
+            fmts, small = list(formats), list(ratio)
             for j in per_row:
-                styles[j] = _style(None, fmt, cells[j])
+                fmts[j] = unit_format(unit)
                 small[j] = unit == "-"
+        out = list(texts)
         for j, shown in enumerate(values):
-            fmt = styles[j][1]
-            if fmt is not None and isinstance(shown, (int, float)):
-                adapted = value_format(shown, fmt, small[j])
-                if adapted != fmt:
-                    styles[j] = (styles[j][0], adapted, *styles[j][2:])
-        writer.append_plain(values, styles, wrapping)
-    _highlight(writer.ws, frame, first, writer.row, highlight)
+            if isinstance(shown, (int, float)):
+                fmt = fmts[j]
+                if fmt is not None:
+                    fmt = value_format(shown, fmt, small[j])
+                made = looks[j].get(fmt)
+                if made is None:
+                    made = looks[j][fmt] = cell_format(_style(None, fmt, cells[j]))
+                out[j] = made
+        writer.write(values, out, writer.lines(values, wrapping))
+    _highlight(writer, frame, first, writer.row, highlight)
 
 
 def frame_title(frame, default=""):
@@ -659,8 +796,8 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
 
     Parameters
     ----------
-    wb : openpyxl.Workbook
-        A write-only workbook.
+    wb : _Workbook
+        The workbook being written.
     name : str
         Sheet name (base name when split).
     frame : pandas.DataFrame
@@ -687,12 +824,12 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     title = frame_title(frame, name)
     names = []
     for sheet_name, start, stop in split_sheet_names(name, len(frame), max_rows):
-        ws = wb.create_sheet(sheet_name)
-        ws.freeze_panes = _freeze(frame, 1)
+        ws = wb.add_worksheet(sheet_name)
+        ws.freeze_panes(_freeze(frame, 1))
         _set_widths(ws, columns)
         print_setup(ws, pixels=columns.pixels, height=ROW_PIXELS * (stop - start + 1),
                     title_rows=1, sheet_title=title, info=info)
-        _write_table(_SheetWriter(ws, columns.widths), frame.iloc[start:stop], formats,
+        _write_table(_SheetWriter(wb, ws, columns.widths), frame.iloc[start:stop], formats,
                      columns, highlight)
         names.append(sheet_name)
     return names
@@ -729,8 +866,8 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
 
     Parameters
     ----------
-    wb : openpyxl.Workbook
-        A write-only workbook.
+    wb : _Workbook
+        The workbook being written.
     name : str
         Sheet name.
     sections : sequence of Section
@@ -744,7 +881,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     list of str
         ``[name]``.
     """
-    ws = wb.create_sheet(check_sheet_name(name))
+    ws = wb.add_worksheet(check_sheet_name(name))
     tables = [s.table for s in sections if s.table is not None]
     _check_highlight(tables, highlight, name)
     columns = _column_plan(tables, [s.note for s in sections],
@@ -755,11 +892,12 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     one_table = len(tables) == 1 and sections[-1].table is not None
     if one_table:
         header_row = sum(bool(t) + len(n) + (k > 0) for k, (t, n, _) in enumerate(blocks)) + 1
-        ws.freeze_panes = _freeze(tables[0], header_row)
+        ws.freeze_panes(_freeze(tables[0], header_row))
         title_rows = header_row
     else:  # the first row is the sheet's title when the first block has no table
         heading = bool(blocks) and bool(blocks[0][0]) and blocks[0][2] is None
-        ws.freeze_panes = "A2" if heading else None
+        if heading:
+            ws.freeze_panes("A2")
         title_rows = 1 if heading else None
     sheet_title = next((s.title for s in sections if s.title), name)
     needs = [ROW_PIXELS * (bool(title) + len(lines) + (k > 0))
@@ -769,7 +907,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
                               title_rows=title_rows, sheet_title=sheet_title, info=info)
     page = _page_pixels(orientation, columns.pixels) * 0.95
     repeated = ROW_PIXELS * (title_rows or 0)
-    writer = _SheetWriter(ws, columns.widths)
+    writer = _SheetWriter(wb, ws, columns.widths)
     top = 0  # pixels written when the current page began
 
     def capacity(start):
@@ -780,7 +918,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
             top += capacity(top)
         fits = writer.pixels - top + need <= capacity(top)
         if not one_table and k and not fits and need <= capacity(1):
-            ws.row_breaks.append(Break(id=writer.row))
+            writer.page_break()
             top = writer.pixels
         if k:
             writer.blank()
@@ -791,6 +929,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
         if table is not None:
             formats = _number_formats(table.columns, number_format)
             _write_table(writer, table, formats, columns, highlight)
+    writer.close()
     return [name]
 
 
@@ -819,14 +958,61 @@ def _image_box(width, height, page_rows, page_width):
     return w, h, math.ceil(h / ROW_PIXELS) + 2
 
 
+def _png_geometry(png):
+    """Size and resolution of a PNG image, from its ``IHDR`` and ``pHYs`` chunks.
+
+    Parameters
+    ----------
+    png : bytes
+
+    Returns
+    -------
+    (int, int, float, float)
+        Width and height [px], horizontal and vertical resolution [dots per inch] as
+        XlsxWriter reads them (96 when the file states none, or none in metres).
+
+    Raises
+    ------
+    InputError
+        If ``png`` is not a PNG image.
+    """
+    if png[:8] != b"\x89PNG\r\n\x1a\n" or png[12:16] != b"IHDR":
+        raise InputError("a report image must be a PNG image", bytes(png[:8]))
+    width, height = int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
+    dpi = (96.0, 96.0)
+    at = 8
+    while at + 8 <= len(png):
+        size, kind = int.from_bytes(png[at:at + 4], "big"), png[at + 4:at + 8]
+        if kind == b"pHYs" and size >= 9:
+            x, y = int.from_bytes(png[at + 8:at + 12], "big"), \
+                int.from_bytes(png[at + 12:at + 16], "big")
+            if png[at + 16] == 1 and x > 0 and y > 0:  # pixels per metre
+                dpi = (x * 0.0254, y * 0.0254)
+            break
+        if kind in (b"IDAT", b"IEND"):  # pHYs comes before the image data
+            break
+        at += 12 + size
+    return width, height, *dpi
+
+
+def _insert_png(ws, row, png, width, height, name):
+    """Embed ``png`` with its top left corner at the top left of cell (row, A), displayed
+    ``width`` x ``height`` px (as at 96 dpi), moving with its cell (not sized with it)."""
+    w, h, x_dpi, y_dpi = _png_geometry(png)
+    # XlsxWriter displays w * x_scale * 96 / x_dpi pixels
+    ws.insert_image(row, 0, name, {
+        "image_data": io.BytesIO(png), "object_position": 2,
+        "x_scale": width * x_dpi / (96.0 * w), "y_scale": height * y_dpi / (96.0 * h)})
+
+
 def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", title=""):
     """Embed PNG images one under another, each under its title, scaled to the printable
     width, with a page break wherever the next one would not fit on the page.
 
     Parameters
     ----------
-    wb : openpyxl.Workbook
-        A write-only workbook.
+    wb : _Workbook
+        The workbook being written.
     name : str
         Sheet name.
     images : mapping of str to (matplotlib.figure.Figure or bytes)
@@ -843,35 +1029,36 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
     list of str
         ``[name]``.
     """
-    ws = wb.create_sheet(check_sheet_name(name))
+    ws = wb.add_worksheet(check_sheet_name(name))
     page_width, page_height = PRINTABLE[orientation]
     page_rows = page_height // ROW_PIXELS
     width = (page_width - 10 - 5) // 7
-    ws.column_dimensions["A"].width = width
+    _set_widths(ws, _Columns({0: width}, set()))
     pixels = _px(width)
     print_setup(ws, pixels=pixels if orientation == "portrait" else 2 * pixels,
                 sheet_title=title or f"Plots ({len(images)})", info=info)
-    ws.page_setup.orientation = orientation
-    writer = _SheetWriter(ws)
+    _orient(ws, orientation)
+    writer = _SheetWriter(wb, ws)
     used = 0
     pngs = collect_pngs(images.values())  # drawn here when the helper is behind
-    for title, figure in zip(images, pngs, strict=True):
-        image = Image(io.BytesIO(figure_png(figure)))
-        w, h, rows = _image_box(image.width, image.height, page_rows, pixels - 10)
+    for k, (title, figure) in enumerate(zip(images, pngs, strict=True)):
+        png = figure_png(figure)
+        size = _png_geometry(png)[:2]
+        w, h, rows = _image_box(*size, page_rows, pixels - 10)
         # a title wider than the page is cut when printed: wrapped (12 pt bold ~ 1.45 x)
         lines = textwrap.wrap(str(title), max(20, int((pixels - 10) / (_CHAR_PIXELS * 1.45))))
         lines = lines or [""]
         rows += len(lines) - 1
         if used and used + rows > page_rows:
-            ws.row_breaks.append(Break(id=writer.row))
+            writer.page_break()
             used = 0
         for line in lines[:-1]:
             writer.append([line], _TITLE_STYLE)
         writer.append([lines[-1]], _TITLE_STYLE)
-        image.width, image.height = w, h
-        ws.add_image(image, f"A{writer.row + 1}")
+        _insert_png(ws, writer.row, png, w, h, f"plot{k + 1}.png")
         writer.blank(rows - 1)
         used += rows
+    writer.close()
     return [name]
 
 
@@ -899,6 +1086,14 @@ def _sheet_plan(sheets, images, images_sheet, max_rows):
             raise InputError("sheet names must be unique (Excel ignores case)", n)
         seen.add(n.lower())
     return plan
+
+
+def _table_cells(sheets):
+    """Cells of the tables of ``sheets`` (of :func:`write_workbook`)."""
+    frames = [c for c in sheets.values() if isinstance(c, pd.DataFrame)]
+    frames += [s.table for c in sheets.values() if not isinstance(c, (pd.DataFrame, str))
+               for s in c if s.table is not None]
+    return sum(f.size for f in frames)
 
 
 def write_workbook(path, sheets, images=None, *, number_format=None,
@@ -955,42 +1150,47 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
     plan = _sheet_plan(sheets, images, images_sheet, max_rows)
     if not plan:
         raise InputError("a workbook needs at least one sheet")
-    wb = Workbook(write_only=True)
-    wb.properties.creator = creator
-    written = []
     if info is not None:
         from slingloads.io.common.cover import COVER_SHEET, cover_sections
 
         if any(n.lower() == COVER_SHEET.lower() for n, _ in plan):
             raise InputError("sheet names must be unique (Excel ignores case)", COVER_SHEET)
-        wb.properties.title = info.title
-        written += write_cover_sheet(wb, COVER_SHEET, cover_sections(info, plan), info)
-    for name, content in sheets.items():
-        mark = highlight.get(name)
-        if isinstance(content, pd.DataFrame):
-            written += write_table_sheets(wb, name, content, number_format=number_format,
-                                          highlight=mark, max_rows=max_rows, info=info)
-        elif isinstance(content, str):
-            written += write_sections_sheet(wb, name, [Section(note=content)], info=info)
-        else:
-            written += write_sections_sheet(wb, name, list(content),
-                                            number_format=number_format, highlight=mark,
-                                            info=info)
-    if images:
-        written += write_images_sheet(wb, images_sheet, images, info=info, title=images_title)
-    wb.save(path)
+    # XlsxWriter's temporary files (the rows of each sheet, the parts of the file) go to a
+    # folder of their own, removed with whatever a workbook refused half-way leaves there
+    with tempfile.TemporaryDirectory(prefix="slingloads-xlsx-",
+                                     ignore_cleanup_errors=True) as tmp:
+        wb = _Workbook(path, stream=_table_cells(sheets) > IN_MEMORY_CELLS, tmpdir=tmp)
+        wb.set_properties({"author": creator, **({"title": info.title} if info else {})})
+        written = []
+        if info is not None:
+            written += write_cover_sheet(wb, COVER_SHEET, cover_sections(info, plan), info)
+        for name, content in sheets.items():
+            mark = highlight.get(name)
+            if isinstance(content, pd.DataFrame):
+                written += write_table_sheets(wb, name, content, number_format=number_format,
+                                              highlight=mark, max_rows=max_rows, info=info)
+            elif isinstance(content, str):
+                written += write_sections_sheet(wb, name, [Section(note=content)], info=info)
+            else:
+                written += write_sections_sheet(wb, name, list(content),
+                                                number_format=number_format, highlight=mark,
+                                                info=info)
+        if images:
+            written += write_images_sheet(wb, images_sheet, images, info=info,
+                                          title=images_title)
+        wb.save()
     return written
 
 
 def write_cover_sheet(wb, name, sections, info):
     """The cover: a large title, then the cover's sections (two-column tables and notes),
     on one portrait page."""
-    ws = wb.create_sheet(check_sheet_name(name))
+    ws = wb.add_worksheet(check_sheet_name(name))
     columns = _Columns({0: 24, 1: 72}, {1})
     _set_widths(ws, columns)
     print_setup(ws, pixels=columns.pixels, sheet_title="Cover", info=info)
-    ws.page_setup.fitToHeight = 1  # a long list of sheets and files shrinks, never spills
-    writer = _SheetWriter(ws, columns.widths)
+    ws.fit_to_pages(1, 1)  # a long list of sheets and files shrinks, never spills
+    writer = _SheetWriter(wb, ws, columns.widths)
     writer.append([info.title], _style(_COVER_TITLE_FONT))
     wrap = _style(None, None, _WRAP)
     for title, note, table in sections:
