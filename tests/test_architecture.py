@@ -172,13 +172,15 @@ def test_help_imports_no_heavy_library():
     ("slingloads.analyses.chute_sizing", ("scipy", "numba")),
     ("slingloads.io.lateral.plots", ("scipy", "numba")),
     ("slingloads.io.chute.plots", ("scipy", "numba")),
+    ("slingloads.io.multibody.plots", ("scipy", "numba")),
 ])
 def test_libraries_load_only_where_used(module, absent):
     """Importing a report module (or the CLI) loads neither matplotlib (only the plots
     modules use it, when figures are drawn), nor scipy.spatial (only the convex hull), nor
     numba (only the compiled batch integrators), nor tqdm (only a running analysis); the
-    lateral and sizing analyses and their plots load neither scipy nor numba (the process
-    that draws their figures from their results needs neither: about 0.7 s)."""
+    lateral and sizing analyses and their plots, and the multibody plots (drawn from plain
+    data), load neither scipy nor numba: the process that draws the figures needs neither
+    (about 1 s)."""
     import subprocess
     import sys
 

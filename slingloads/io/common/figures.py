@@ -129,12 +129,14 @@ def draw_png(func, args, kwargs, dpi):
 
 
 #: Modules a helper loads while it waits for figures, in the order of the figures (the
-#: plots and what their data need): the loads' first, drawn while the workbook is read.
+#: plots and what their data need): the loads' first, drawn while the workbook is read. The
+#: multibody figures are drawn from plain data (:mod:`slingloads.io.multibody.figure_data`):
+#: the helper does not load the model's compiled code or scipy for them.
 WARM_MODULES = ("slingloads.io.common.figures", "slingloads.io.loads.report",
                 "slingloads.io.loads.plots", "slingloads.io.lateral.report",
                 "slingloads.io.lateral.plots", "slingloads.io.chute.report",
-                "slingloads.io.chute.plots", "slingloads.io.multibody.report",
-                "slingloads.io.multibody.plots", "slingloads.io.campaign.plots")
+                "slingloads.io.chute.plots", "slingloads.io.multibody.plots",
+                "slingloads.io.campaign.plots")
 
 _ACTIVE = []
 

@@ -1,6 +1,10 @@
 """Plots of the multibody model (object API only: every function returns a new Figure).
 
-No pyplot state is touched. Angles are shown in degrees; lengths of the views in the unit
+No pyplot state is touched. Each plot of a model's objects (``plot_histories(simulation)``)
+has a twin drawn from plain data (``plot_history_panels(runs)``: names, arrays, tables,
+from :mod:`slingloads.io.multibody.figure_data`), which the report hands to the process that
+draws its figures: that process then needs neither the model's compiled code nor scipy, so
+it loads neither. Angles are shown in degrees; lengths of the views in the unit
 system asked for (``"SI"``: m, ``"US"``: ft). Earth axes of the simulation: X aft along the flight
 path (the carrier flies towards -X), Y right, Z up (``docs/multibody.md``).
 """
@@ -13,19 +17,14 @@ from matplotlib.figure import Figure
 from slingloads.errors import InputError
 from slingloads.io.common.figures import PAGE_WIDTH, cycle_colour, fix_margins
 from slingloads.io.common.units import si_factor
-from slingloads.models.multibody.equations import INFO
-from slingloads.models.multibody.parachute_line import line_direction
-from slingloads.models.multibody.rigid_body import rotation_matrix
+from slingloads.io.multibody.figure_data import (
+    HISTORY_PANELS,
+    history_panels,
+    view_points,
+)
 
 #: Length unit of the views: (pint unit, label) per unit system.
 VIEW_UNITS = {"SI": ("m", "m"), "US": ("ft", "ft")}
-#: Panels of the histories plot: (history key, axis label).
-HISTORY_PANELS = (("yaw", "yaw, heading from\nthe flight path [deg]"),
-                  ("beta", "sideslip beta [deg]"),
-                  ("swing longitudinal", "cable swing\nlongitudinal [deg]"),
-                  ("swing lateral", "cable swing\nlateral [deg]"),
-                  ("tension ratio", "cable tension /\nweight [-]"))
-_INFO = {name: i for i, name in enumerate(INFO)}
 _MAX_LEGEND = 24
 
 
@@ -41,21 +40,25 @@ def plot_histories(simulation, title=None):
     -------
     matplotlib.figure.Figure
     """
+    return plot_history_panels(history_panels(simulation), title)
+
+
+def plot_history_panels(runs, title=None):
+    """:func:`plot_histories` from the runs' data (:func:`history_panels`)."""
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 8.8)), left=1.0, right=0.2, bottom=0.5,
                       top=0.45, hspace=0.1)
     axes = fig.subplots(len(HISTORY_PANELS), 1, sharex=True)
-    for k, run in enumerate(simulation.runs):
-        h = run.histories()
+    for k, (name, h) in enumerate(runs):
         style = {"lw": 1.1, "color": cycle_colour(k), "ls": ("-", "--", ":", "-.")[k // 10 % 4]}
         for ax, (key, _) in zip(axes, HISTORY_PANELS, strict=True):
             values = h[key] if key == "tension ratio" else np.degrees(h[key])
-            ax.plot(h["time"], values, label=run.name, **style)
+            ax.plot(h["time"], values, label=name, **style)
     for ax, (_, label) in zip(axes, HISTORY_PANELS, strict=True):
         ax.set_ylabel(label, fontsize=8)
         ax.tick_params(labelsize=8)
         ax.grid(True, alpha=0.4)
     axes[-1].set_xlabel("time [s]")
-    if simulation.runs and len(simulation.runs) <= _MAX_LEGEND:
+    if runs and len(runs) <= _MAX_LEGEND:
         axes[0].legend(fontsize=7, ncol=2, loc="upper right", framealpha=0.85)
     axes[0].set_title(title or "Multibody time histories", fontsize=10)
     return fig
@@ -76,7 +79,12 @@ def plot_eigenvalues(linear, title=None):
     -------
     matplotlib.figure.Figure
     """
-    modes = linear.modes_frame()
+    return plot_modes(linear.modes_frame(), linear.verdict(), title)
+
+
+def plot_modes(modes, verdict, title=None):
+    """:func:`plot_eigenvalues` from the model's modes table (``LinearModel.modes_frame()``)
+    and stability verdict."""
     legend_rows = -(-len(modes) // 2)
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 3.6 + 0.17 * legend_rows)), left=0.7,
                       right=0.15, bottom=0.6 + 0.17 * legend_rows, top=0.55, wspace=0.35)
@@ -105,53 +113,8 @@ def plot_eigenvalues(linear, title=None):
         slow.set_xlim(-reach, 0.25 * reach)
         slow.set_ylim(-top, top)
     fig.legend(loc="lower center", ncol=2, fontsize=7, frameon=False)
-    fig.suptitle(title or f"Eigenvalues about the trim ({linear.verdict()})", fontsize=10)
+    fig.suptitle(title or f"Eigenvalues about the trim ({verdict})", fontsize=10)
     return fig
-
-
-def system_points(system, state, info, outline):
-    """Earth-axis points of the system at a state: hook, hub, CG, outline, attachment, canopy.
-
-    Parameters
-    ----------
-    system : SlingSystem
-    state : array_like, shape (20,)
-        State of the equations.
-    info : array_like
-        Reported quantities at that state (:data:`~slingloads.models.multibody.equations.INFO`).
-    outline : dict of str to array_like, shape (n, 3)
-        Polylines of the airframe in airframe axes (e.g. nose - CG - tail, CG - hub). [m]
-
-    Returns
-    -------
-    dict of str to ndarray, shape (n, 3)
-        Relative to the hook. [m]
-    """
-    x = np.asarray(state, float)
-    r = rotation_matrix(x[9:13] / np.linalg.norm(x[9:13]))
-    cg = system.body.cg
-    where = x[3:6]
-
-    def earth(points):
-        return where + (np.atleast_2d(np.asarray(points, float)) - cg) @ r.T
-
-    hub = earth(system.hardpoints.hub)
-    out = {"hook": np.zeros((1, 3)), "cable": np.vstack([np.zeros(3), hub]), "CG": earth(cg)}
-    for name, line in outline.items():
-        out[name] = earth(line)
-    if system.parachute is not None:
-        attach = system.hardpoints.chute
-        if system.parachute.kind == "hinged":
-            e, _, _ = line_direction(x[16], x[17])
-            e = np.array(e)
-        else:
-            e = np.asarray(info, float)[_INFO["line_x"]:_INFO["line_z"] + 1]
-            e = e / np.linalg.norm(e) if np.all(np.isfinite(e)) and np.any(e) else \
-                np.array([1.0, 0.0, 0.0])
-        canopy = attach + system.parachute.line_length * e
-        out["parachute line"] = earth(np.vstack([attach, canopy]))
-        out["canopy"] = earth(canopy)
-    return out
 
 
 def plot_views(system, states, outline, units="SI", title=None):
@@ -173,15 +136,19 @@ def plot_views(system, states, outline, units="SI", title=None):
     -------
     matplotlib.figure.Figure
     """
+    return plot_view_points(view_points(system, states, outline), units, title)
+
+
+def plot_view_points(views, units="SI", title=None):
+    """:func:`plot_views` from the system's points at each state (:func:`view_points`)."""
     if units not in VIEW_UNITS:
         raise InputError(f"unknown unit system; valid are {sorted(VIEW_UNITS)}", units)
     unit, label = VIEW_UNITS[units]
     scale = 1.0 / si_factor(unit, "length")
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.4)), left=0.7, right=0.15,
-                      bottom=0.55 + 0.17 * len(states), top=0.7, wspace=0.35)
+                      bottom=0.55 + 0.17 * len(views), top=0.7, wspace=0.35)
     side, top = fig.subplots(1, 2)
-    for k, (name, state, info) in enumerate(states):
-        points = system_points(system, state, info, outline)
+    for k, (name, points) in enumerate(views):
         color, ls = ("0.55", "--") if k == 0 else (cycle_colour(k - 1), "-")
         for ax, (i, j) in ((side, (0, 2)), (top, (0, 1))):
             for key, line in points.items():

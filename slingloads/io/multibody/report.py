@@ -50,6 +50,7 @@ from slingloads.io.common.report import (
 )
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
+from slingloads.io.multibody.figure_data import history_panels, view_points
 
 ANALYSIS = "multibody"
 #: PNG files written, by tag: ``<stem>-multibody-<tag>.png``.
@@ -359,13 +360,16 @@ def _sheets(result, units, warnings=()):
 
 
 def _figures(result, units="SI"):
-    """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
-    plot_eigenvalues, plot_histories, plot_views = (  # matplotlib loads where they are drawn
+    """The figures to draw: ``{tag: (plot function, args, kwargs)}``, each plot's plain-data
+    twin with its data (names, arrays, tables), so that the process that draws them loads
+    neither the model's compiled code nor scipy."""
+    plot_modes, plot_history_panels, plot_view_points = (  # matplotlib loads where drawn
         plot_function("slingloads.io.multibody.plots", name)
-        for name in ("plot_eigenvalues", "plot_histories", "plot_views"))
-    figs = {"histories": (plot_histories, (result.simulation,), {})}
+        for name in ("plot_modes", "plot_history_panels", "plot_view_points"))
+    figs = {"histories": (plot_history_panels, (history_panels(result.simulation),), {})}
     if result.linear is not None:
-        figs["eigenvalues"] = (plot_eigenvalues, (result.linear,), {})
+        figs["eigenvalues"] = (plot_modes, (result.linear.modes_frame(),
+                                            result.linear.verdict()), {})
     states = []
     if result.trim.converged:
         states.append((f"trim at {result.inputs.system.airspeed / KNOT:.4g} KEAS",
@@ -376,8 +380,10 @@ def _figures(result, units="SI"):
         states.append((f"{run.name}, t = {run.time[k]:.1f} s (largest excursion, "
                        f"{np.degrees(depart):.1f} deg)", run.states[k], run.info[k]))
     if states:
-        figs["views"] = (plot_views, (result.inputs.system, states, result.outline, units,
-                                      "The system at trim and at the largest excursion"), {})
+        figs["views"] = (plot_view_points, (view_points(result.inputs.system, states,
+                                                        result.outline), units,
+                                            "The system at trim and at the largest excursion"),
+                         {})
     return figs
 
 
