@@ -525,7 +525,8 @@ def write(result, out_dir, stem, units, study, figures=None):
               "static-moments": "Static yawing moments at the neutral area",
               "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
               "histories": "Time histories for every gust shape (paper figure 7)"}
-    with drawings(_figures(result, units), figures, _PNG_DPI) as pngs:
+    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
+    with drawings(jobs, figures, _PNG_DPI) as pngs:
         sheets = _sheets(result, units, study.warnings)
         files = ([f"{stem}-chute-histories.csv"] if result.sweep is not None else []) + [
             f"{stem}-chute-{tag}.png" for tag in pngs]

@@ -216,7 +216,8 @@ def drawings(jobs, started=None, dpi=100):
     Parameters
     ----------
     jobs : dict
-        ``{tag: (plot function, args, kwargs)}``.
+        ``{tag: (plot function, args, kwargs)}`` (with ``started``, only its tags are read:
+        ``started.pngs`` will do).
     started : FigureRenderer, optional
         Already drawing exactly these jobs.
     dpi : float

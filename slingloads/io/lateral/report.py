@@ -498,7 +498,8 @@ def write(result, out_dir, stem, units, study, figures=None):
               "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",
               "shear": "Y shear of the hook cases (LIMIT): 30 deg against the recommended "
                        "angle"}
-    with drawings(_figures(result, units), figures, _PNG_DPI) as pngs:
+    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
+    with drawings(jobs, figures, _PNG_DPI) as pngs:
         info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
                            conventions=CONVENTIONS,
                            files=[f"{stem}-lateral-histories.csv",

@@ -414,7 +414,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     """
     check_units(units)
     inputs = study.input_files or [study.path]
-    jobs = _figures(result, units)
+    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
     names = ([f"{stem}-multibody.xlsx", f"{stem}-multibody-histories.csv"]
              + [f"{stem}-multibody-{tag}.png" for tag in jobs])
     check_outputs_not_inputs(out_dir, names, inputs)
