@@ -22,7 +22,7 @@ from hostile import save_xlsx, small_workbook
 
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import PAUSE_VARIABLE, TEMP_PREFIX
-from slingloads.io.common.helper import Helper, RemoteTraceback, gather
+from slingloads.io.common.helper import Helper, RemoteTraceback, gather, in_background, running
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"),
                                 reason="helper processes are forked on Linux only")
@@ -75,6 +75,28 @@ def test_an_input_error_in_a_helper_is_raised_here_with_its_message():
     assert "sheet 'MassItems', cell C3" in str(there.value)
     assert isinstance(there.value.__cause__, RemoteTraceback)
     assert "_refuse" in str(there.value.__cause__)
+
+
+def test_background_work_runs_in_the_run_helper_else_here():
+    """in_background hands a call to the run's helper (another process's id) inside
+    ``running``, and runs it here when asked for outside any run (this process's id); a
+    report's CSV bytes made by a renderer's helper equal those made here."""
+    import pandas as pd
+
+    from slingloads.io.common.csvout import csv_bytes
+    from slingloads.io.common.figures import FigureRenderer, task_result
+
+    assert in_background(os.getpid).result() == os.getpid()
+    frame = pd.DataFrame({"case": ["=LC1", "LC2"], "Vy [N]": [1.5, -2.25e-7]})
+    with Helper(1) as helper, running(helper):
+        pid = _settle(in_background(os.getpid))[0]
+        assert pid.result() != os.getpid()
+        with FigureRenderer() as renderer:
+            _settle(renderer.later("t.csv", csv_bytes, frame))
+            assert renderer.tasks["t.csv"].done()
+            assert task_result(renderer, "t.csv", csv_bytes, frame) == csv_bytes(frame)
+    assert task_result(None, "t.csv", csv_bytes, frame) == csv_bytes(frame)
+    assert csv_bytes(frame).startswith(b"case,Vy [N]\n'=LC1,1.5\n")
 
 
 def test_calls_no_helper_started_are_run_here(tmp_path):

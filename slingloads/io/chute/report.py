@@ -38,9 +38,15 @@ from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
-from slingloads.io.common.csvout import write_csv
+from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
+from slingloads.io.common.figures import (
+    drawings,
+    plot_function,
+    png_bytes,
+    start_drawing,
+    task_result,
+)
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -492,8 +498,17 @@ def _figures(result, units="SI"):
 
 
 def start_figures(result, units, study):
-    """Start drawing the sizing report's figures (while the other analyses run)."""
-    return start_drawing(_figures(result, units), _PNG_DPI)
+    """Start drawing the sizing report's figures (while the other analyses run), and its CSV
+    file after them."""
+    renderer = start_drawing(_figures(result, units), _PNG_DPI)
+    if result.sweep is not None:
+        renderer.later("histories.csv", histories_csv, result)
+    return renderer
+
+
+def histories_csv(result):
+    """The bytes of ``<stem>-chute-histories.csv`` (:func:`history_csv_frame`)."""
+    return csv_bytes(history_csv_frame(result))
 
 
 def write(result, out_dir, stem, units, study, figures=None):
@@ -536,8 +551,8 @@ def write(result, out_dir, stem, units, study, figures=None):
             write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info)
             if result.sweep is not None:
-                write_csv(history_csv_frame(result),
-                          out.path(f"{stem}-chute-histories.csv"))
+                out.path(f"{stem}-chute-histories.csv").write_bytes(
+                    task_result(figures, "histories.csv", histories_csv, result))
             for tag, png in pngs.items():
                 out.path(f"{stem}-chute-{tag}.png").write_bytes(png_bytes(png))
     return out.written

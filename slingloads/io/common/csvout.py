@@ -14,6 +14,7 @@ Workbooks need no such prefix: their text cells are stored as text, never as for
 
 from __future__ import annotations
 
+import io
 import re
 
 import numpy as np
@@ -64,8 +65,23 @@ def write_csv(frame, path, columns=None):
     columns : sequence of str, optional
         Columns to write, in order (default: all).
     """
+    with open(path, "wb") as stream:
+        stream.write(csv_bytes(frame, columns))
+
+
+def csv_bytes(frame, columns=None):
+    """The bytes of :func:`write_csv`'s file (UTF-8), made where it is convenient (a report
+    hands its large tables to the run's helper process:
+    :func:`slingloads.io.common.helper.in_background`).
+
+    Returns
+    -------
+    bytes
+    """
     if columns is not None:
         frame = frame[list(columns)]
     safe = neutralise_frame(frame)
+    text = io.StringIO()
     with np.errstate(all="ignore"):
-        safe.to_csv(path, index=False, lineterminator="\n")
+        safe.to_csv(text, index=False, lineterminator="\n")
+    return text.getvalue().encode("utf-8")

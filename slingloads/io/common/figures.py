@@ -23,7 +23,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from importlib import import_module
 
-from slingloads.io.common.helper import Call, Helper, gather
+from slingloads.io.common.helper import Call, Helper, current, gather, running
 
 #: Width of every report figure: the printable width of an A4 portrait page. [in]
 PAGE_WIDTH = 7.0
@@ -138,9 +138,6 @@ WARM_MODULES = ("slingloads.io.common.figures", "slingloads.io.loads.report",
                 "slingloads.io.chute.plots", "slingloads.io.multibody.plots",
                 "slingloads.io.campaign.plots")
 
-_ACTIVE = []
-
-
 @contextmanager
 def helping(warm=WARM_MODULES):
     """The helper of a whole run: every :class:`FigureRenderer` made inside the block has its
@@ -151,12 +148,8 @@ def helping(warm=WARM_MODULES):
     ------
     Helper
     """
-    with Helper(warm=warm) as helper:
-        _ACTIVE.append(helper)
-        try:
-            yield helper
-        finally:
-            _ACTIVE.remove(helper)
+    with Helper(warm=warm) as helper, running(helper):
+        yield helper
 
 
 class FigureRenderer:
@@ -181,12 +174,14 @@ class FigureRenderer:
     def __init__(self, workers=None, dpi=100):
         self.dpi = dpi
         self._own = None
-        if workers is None and _ACTIVE:
-            self.helper = _ACTIVE[-1]
+        if workers is None and current() is not None:
+            self.helper = current()
         else:
             self._own = self.helper = Helper(workers)
         #: Every drawing started, by tag.
         self.pngs = {}
+        #: Other work of the report handed to the same helper (:meth:`later`), by tag.
+        self.tasks = {}
 
     def __enter__(self):
         return self
@@ -201,10 +196,27 @@ class FigureRenderer:
         self.pngs.update(started)
         return started
 
+    def later(self, tag, func, *args):
+        """Hand ``func(*args)``, other work of the report (the bytes of a large CSV file),
+        to the helper that draws the figures, after them: :data:`tasks` ``[tag]``, taken
+        with :func:`task_result`."""
+        if self._own is not None:
+            self._own.start()
+        self.tasks[tag] = self.helper.submit(func, *args)
+        return self.tasks[tag]
+
     def __exit__(self, exc_type, exc, tb):
         if self._own is not None:
             self._own.close(abort=exc_type is not None)
         return False
+
+
+def task_result(started, tag, func, *args):
+    """``func(*args)``: the value of the task ``tag`` of an already started renderer
+    (:meth:`FigureRenderer.later`, the same call), else computed here now."""
+    if started is not None and tag in started.tasks:
+        return started.tasks[tag].result()
+    return func(*args)
 
 
 @contextmanager

@@ -31,6 +31,7 @@ import sys
 import threading
 import traceback
 from collections import deque
+from contextlib import contextmanager
 from importlib import import_module
 
 from slingloads.errors import InputError
@@ -244,6 +245,34 @@ class Helper:
                 call.state = _DONE
                 call.payload = None
                 self._cond.notify_all()
+
+
+_CURRENT = []
+
+
+@contextmanager
+def running(helper):
+    """Make ``helper`` the run's helper inside the block (:func:`current`,
+    :func:`in_background`)."""
+    _CURRENT.append(helper)
+    try:
+        yield helper
+    finally:
+        _CURRENT.remove(helper)
+
+
+def current():
+    """The helper of the run in progress (:func:`running`), or None."""
+    return _CURRENT[-1] if _CURRENT else None
+
+
+def in_background(func, *args, **kwargs):
+    """``func(*args, **kwargs)`` handed to the run's helper: its :class:`Call`, whose
+    ``result()`` is the value. The helper runs it after the calls submitted before it; when
+    its result is asked for before a helper has started it, or with no helper, it runs in the
+    asking process (the same value either way)."""
+    helper = current()
+    return (helper if helper is not None else Helper(0)).submit(func, *args, **kwargs)
 
 
 def gather(items, least=1):

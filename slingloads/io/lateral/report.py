@@ -48,9 +48,15 @@ from slingloads.constants import FOOT
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
-from slingloads.io.common.csvout import write_csv
+from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
+from slingloads.io.common.figures import (
+    drawings,
+    plot_function,
+    png_bytes,
+    start_drawing,
+    task_result,
+)
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -464,8 +470,16 @@ def _figures(result, units):
 
 
 def start_figures(result, units, study):
-    """Start drawing the lateral report's figures (while the other analyses run)."""
-    return start_drawing(_figures(result, units), _PNG_DPI)
+    """Start drawing the lateral report's figures (while the other analyses run), and its
+    CSV file after them."""
+    renderer = start_drawing(_figures(result, units), _PNG_DPI)
+    renderer.later("histories.csv", histories_csv, result)
+    return renderer
+
+
+def histories_csv(result):
+    """The bytes of ``<stem>-lateral-histories.csv``: every sample of the critical run, SI."""
+    return csv_bytes(csv_frame(result.critical_run.to_frame()))
 
 
 def write(result, out_dir, stem, units, study, figures=None):
@@ -508,8 +522,8 @@ def write(result, out_dir, stem, units, study, figures=None):
         with atomic_outputs(out_dir, inputs=inputs) as out:
             write_workbook(out.path(f"{stem}-lateral.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info)
-            write_csv(csv_frame(result.critical_run.to_frame()),
-                      out.path(f"{stem}-lateral-histories.csv"))
+            out.path(f"{stem}-lateral-histories.csv").write_bytes(
+                task_result(figures, "histories.csv", histories_csv, result))
             for tag, png in pngs.items():
                 out.path(f"{stem}-lateral-{tag}.png").write_bytes(png_bytes(png))
     return out.written

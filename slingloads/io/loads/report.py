@@ -46,7 +46,7 @@ from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs, safe_file_part
 from slingloads.io.common.cover import info_from_digest, report_info
-from slingloads.io.common.csvout import write_csv
+from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
@@ -54,7 +54,13 @@ from slingloads.io.common.excel import (
     format_by_header,
     write_workbook,
 )
-from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
+from slingloads.io.common.figures import (
+    drawings,
+    plot_function,
+    png_bytes,
+    start_drawing,
+    task_result,
+)
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -700,7 +706,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     with drawings(jobs, figures) as pngs:  # drawn while the tables are built and written
         return _publish(result, out_dir, stem, units, hull_pairs, stations, findings,
                         input_paths, info, max_rows, sfbm_workbook, pngs, titles, deck,
-                        checks, dynamics)
+                        checks, dynamics, figures)
 
 
 def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None):
@@ -739,9 +745,10 @@ def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_sta
 
 def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input_paths,
              info, max_rows, sfbm_workbook, pngs, titles, deck=None, checks=None,
-             dynamics=None):
+             dynamics=None, figures=None):
     """Build the tables and publish every file of the loads report (the PNGs are awaited
-    when the Plots sheet is written)."""
+    when the Plots sheet is written; the CSV files are those the renderer ``figures`` made,
+    when it was started with them: :func:`start_figures`)."""
     embedded = {titles[tag]: png for tag, png in pngs.items()}
     sheets = _workbook_sheets(result, units, hull_pairs, stations, findings or {}, checks)
     if deck is not None:
@@ -760,8 +767,8 @@ def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input
                            max_rows=max_rows,
                            info=replace(info, title=f"{TITLE}: SFBM of every case (data)",
                                         files=()))
-        write_csv(result.to_frame(), out.path(f"{stem}-sfbm.csv"), columns=SFBM_CSV_COLUMNS)
-        write_csv(envelope_csv_frame(result), out.path(f"{stem}-envelope.csv"))
+        for name, make in CSV_FILES.items():
+            out.path(f"{stem}-{name}").write_bytes(task_result(figures, name, make, result))
         for tag, png in pngs.items():
             out.path(f"{stem}-{tag}.png").write_bytes(png_bytes(png))
         if deck is not None:
@@ -1004,7 +1011,24 @@ def start_figures(result, units, study):
     draw them while the other analyses run); pass the result to :func:`write`."""
     jobs, _, _ = figure_jobs(result, units, study.options.get("hull pairs", (("Vy", "Mz"),)),
                              study.options.get("hull stations"))
-    return start_drawing(jobs, _PNG_DPI)
+    renderer = start_drawing(jobs, _PNG_DPI)
+    for name, make in CSV_FILES.items():  # after the figures
+        renderer.later(name, make, result)
+    return renderer
+
+
+def sfbm_csv(result):
+    """The bytes of ``<stem>-sfbm.csv``: every case at every station, SI LIMIT loads."""
+    return csv_bytes(result.to_frame(), columns=SFBM_CSV_COLUMNS)
+
+
+def envelope_csv(result):
+    """The bytes of ``<stem>-envelope.csv`` (:func:`envelope_csv_frame`)."""
+    return csv_bytes(envelope_csv_frame(result))
+
+
+#: The loads report's CSV files: name after the stem -> function of the result to its bytes.
+CSV_FILES = {"sfbm.csv": sfbm_csv, "envelope.csv": envelope_csv}
 
 
 def write(result, out_dir, stem, units, study, figures=None, checks=None):

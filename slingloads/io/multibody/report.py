@@ -34,9 +34,15 @@ from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
 from slingloads.io.common.cover import report_info
-from slingloads.io.common.csvout import write_csv
+from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
+from slingloads.io.common.figures import (
+    drawings,
+    plot_function,
+    png_bytes,
+    start_drawing,
+    task_result,
+)
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
     check_units,
@@ -388,8 +394,16 @@ def _figures(result, units="SI"):
 
 
 def start_figures(result, units, study):
-    """Start drawing the multibody report's figures (while the other analyses run)."""
-    return start_drawing(_figures(result, units), _PNG_DPI)
+    """Start drawing the multibody report's figures (while the other analyses run), and its
+    CSV file after them (from the table made here: the model's code stays here)."""
+    renderer = start_drawing(_figures(result, units), _PNG_DPI)
+    renderer.later("histories.csv", csv_bytes, csv_frame(history_table(result, "SI")))
+    return renderer
+
+
+def histories_csv(result):
+    """The bytes of ``<stem>-multibody-histories.csv``: every stored sample, SI."""
+    return csv_bytes(csv_frame(history_table(result, "SI")))
 
 
 def write(result, out_dir, stem, units, study, figures=None):
@@ -433,8 +447,8 @@ def write(result, out_dir, stem, units, study, figures=None):
             write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info,
                            number_format=formats)
-            write_csv(csv_frame(history_table(result, "SI")),
-                      out.path(f"{stem}-multibody-histories.csv"))
+            out.path(f"{stem}-multibody-histories.csv").write_bytes(
+                task_result(figures, "histories.csv", histories_csv, result))
             for tag, png in pngs.items():
                 out.path(f"{stem}-multibody-{tag}.png").write_bytes(png_bytes(png))
     return out.written
