@@ -159,7 +159,7 @@ def plot_view_points(views, units="SI", title=None):
                 else:
                     ax.plot(line[:, i], line[:, j], ls=ls, color=color,
                             lw=2.0 if key == "fuselage" else 1.2)
-            ax.plot([], [], ls=ls, color=color, label=name)
+        side.plot([], [], ls=ls, color=color, label=name)  # one legend entry per state
     side.set(xlabel=f"X aft [{label}]", ylabel=f"Z up [{label}]",
              title="side view (flight towards -X)")
     top.set(xlabel=f"X aft [{label}]", ylabel=f"Y right [{label}]",
