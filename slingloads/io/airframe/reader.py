@@ -317,12 +317,11 @@ def _columns_match(reader, table, needed, optional, why):
 
 def _check_full_grid(t):
     """The FuselageAero rows form a full alpha x beta grid without repeats."""
-    rows = {}
-    for i, key in enumerate(zip(t["alpha"], t["beta"], strict=True)):
-        if key in rows:
-            raise t.error("beta", i, f"the (alpha, beta) point of this row repeats row "
-                          f"{t.cell('alpha', rows[key])[1:]}")
-        rows[key] = i
+    repeat = _first_repeat(t["alpha"], t["beta"])
+    if repeat is not None:
+        i, first = repeat
+        raise t.error("beta", i, f"the (alpha, beta) point of this row repeats row "
+                      f"{t.cell('alpha', first)[1:]}")
     alphas = np.unique(t["alpha"])
     betas = np.unique(t["beta"])
     for name, values in (("alpha", alphas), ("beta", betas)):
@@ -337,6 +336,29 @@ def _check_full_grid(t):
                               f"{count} rows but there are {betas.size} beta values "
                               f"({alphas.size} x {betas.size} = {alphas.size * betas.size} "
                               "rows needed)")
+
+
+def _first_repeat(alpha, beta):
+    """``(i, j)``: the first row ``i`` whose ``(alpha, beta)`` equals that of an earlier row
+    ``j``, or None if no point repeats.
+
+    The pairs are sorted (a stable sort: equal pairs keep the order of their rows), so that
+    each repeat follows the first row of its point; the first repeat is the smallest row
+    that is not the first of its point, and its point has only one earlier row. Adding 0.0
+    makes -0.0 and 0.0 one point, as ``==`` does; the values are finite (read as such).
+    """
+    alpha, beta = np.asarray(alpha) + 0.0, np.asarray(beta) + 0.0
+    order = np.lexsort((beta, alpha))
+    a, b = alpha[order], beta[order]
+    same = (a[1:] == a[:-1]) & (b[1:] == b[:-1])  # sorted row k + 1 repeats row k
+    if not same.any():
+        return None
+    new_point = np.r_[True, ~same]
+    starts = np.flatnonzero(new_point)  # sorted index of the first row of each point
+    point = np.cumsum(new_point) - 1  # point of each sorted row
+    repeats = np.flatnonzero(~new_point)  # sorted indices of the rows that repeat
+    k = repeats[np.argmin(order[repeats])]  # the repeat of the smallest row
+    return int(order[k]), int(order[starts[point[k]]])
 
 
 def read_fin_aero(reader, params, refs):

@@ -20,6 +20,13 @@ it broke. A workbook is read in bounded memory and time whatever it holds:
   (:class:`~slingloads.io.common.schema.Bounds`) and the magnitude limit of its kind
   (:data:`~slingloads.limits.MAX_MAGNITUDE`), every text against its length limit.
 
+Tables are read fast without loosening any of this: a cell holding a plain number or an
+inline string is read without openpyxl's per-cell parser (:func:`_simple_cell`, taken only
+where that parser would do the same), and a column of numbers is checked and converted at once
+(:meth:`WorkbookReader._columns_at_once`); any other cell goes through openpyxl's parser, and a
+table with any bad cell is read again cell by cell (:meth:`WorkbookReader._records`), so that
+the error names the first bad cell exactly as before (tests/test_workbook_fast_path.py).
+
 Files a workbook refers to (CSV time histories) are opened through
 :meth:`WorkbookReader.referenced_file`, which checks them the same way and records them as
 inputs, so that no output ever replaces one.
@@ -44,7 +51,8 @@ from typing import NamedTuple
 from xml.etree.ElementTree import iterparse
 
 import numpy as np
-from openpyxl.utils import get_column_letter
+from openpyxl.utils import column_index_from_string, get_column_letter
+from openpyxl.worksheet._reader import _cast_number
 
 from slingloads.errors import InputError
 from slingloads.io.common.schema import (
@@ -82,7 +90,8 @@ _FALSE = {"no", "n", "false", "0", "off", ""}
 
 
 _MAIN = "{http://schemas.openxmlformats.org/spreadsheetml/2006/main}"
-_ROW_TAG, _CELL_TAG = f"{_MAIN}row", f"{_MAIN}c"
+_ROW_TAG, _CELL_TAG, _VALUE_TAG = f"{_MAIN}row", f"{_MAIN}c", f"{_MAIN}v"
+_INLINE_TAG, _TEXT_TAG = f"{_MAIN}is", f"{_MAIN}t"
 #: Elements that may be part of a cell (kept until their row is read).
 _CELL_PARTS = frozenset(f"{_MAIN}{t}" for t in (
     "c", "v", "f", "is", "t", "r", "rPr", "rFont", "b", "i", "strike", "condense", "extend",
@@ -113,7 +122,7 @@ def _check_prolog(source, error):
     parser.StartElementHandler = root
     try:
         while True:
-            chunk = source.read(1 << 16)
+            chunk = source.read(1 << 12)  # small reads: the prolog is short, the rest unread
             parser.Parse(chunk, not chunk)
             if not chunk:
                 return
@@ -237,9 +246,11 @@ class _MemorySource:
         self.sheetnames = list(self.sheets)
 
     def rows(self, name):
+        """``(row number, {column: value}, cells stored)`` of each row, as
+        :meth:`_XlsxSource.rows`."""
         for r, row in enumerate(self.sheets[name], start=1):
             values = list(row)
-            yield r, [(c, v) for c, v in enumerate(values, start=1)], len(values)
+            yield r, {c: v for c, v in enumerate(values, start=1) if not _is_empty(v)}, len(values)
 
     def close(self):
         pass
@@ -279,10 +290,15 @@ class _XlsxSource:
             raise error(f"not a readable .xlsx workbook ({type(root).__name__}: {text})",
                         None) from None
         self.sheetnames = list(self.book.sheetnames)
+        #: ``s`` attribute of a cell (None if absent) -> how openpyxl reads a number of that
+        #: style (see :func:`_style_kind`)
+        self._styles = {}
 
     def rows(self, name):
-        """``(row number, [(column, value), ...], cells stored)`` for each row element of the
-        sheet (empty cells are counted, not listed).
+        """``(row number, {column: value}, cells stored)`` for each row element of the sheet:
+        the values of its non-empty cells by column (for a column given twice, its last
+        non-empty value at the place of its first), and the number of cells it stores
+        (empty cells are counted, not listed).
 
         Only end events are handled: a row is read when it ends and then cleared, and every
         element that cannot be part of a cell is cleared when it ends, so memory stays flat;
@@ -295,55 +311,184 @@ class _XlsxSource:
                                  epoch=self.book.epoch, date_formats=self.book._date_formats,
                                  timedelta_formats=self.book._timedelta_formats)
         count = in_row = 0
+        # the limits as locals: this loop runs once per XML element of the sheet
+        most, parts, widest = MAX_SHEET_ELEMENTS, _CELL_PARTS, 8 * EXCEL_COLUMNS
         with ws._get_source() as source:
             _check_prolog(source, self.error)
         with ws._get_source() as source:
             for _, element in iterparse(source):
                 count += 1
-                if count > MAX_SHEET_ELEMENTS:
+                if count > most:
                     raise self.error(f"the sheet holds more than {MAX_SHEET_ELEMENTS:,} XML "
                                      "elements (cells, merged ranges, formats...): delete its "
                                      "unused rows and columns", None)
                 tag = element.tag
-                if tag == _ROW_TAG:
+                if tag in parts:  # (the most frequent: <c> and <v>; a row is not a part)
+                    in_row += 1  # kept until its row ends: bounded by Excel's row width
+                    if in_row > widest:
+                        raise self.error("corrupt sheet: a row holds more cells than Excel "
+                                         "allows", None)
+                elif tag == _ROW_TAG:
                     in_row = 0
                     yield self._row(parser, element)
                     element.clear()
-                elif tag not in _CELL_PARTS:
-                    element.clear()
                 else:
-                    in_row += 1  # kept until its row ends: bounded by Excel's row width
-                    if in_row > 8 * EXCEL_COLUMNS:
-                        raise self.error("corrupt sheet: a row holds more cells than Excel "
-                                         "allows", None)
+                    element.clear()
 
     def _row(self, parser, element):
+        """``(row number, {column: value}, cells stored)`` of a ``<row>`` element (see
+        :meth:`rows`).
+
+        Plain numbers and inline strings (nearly every cell of a table) are read by
+        :func:`_simple_cell`; every other cell by openpyxl's ``parse_cell`` (:meth:`_cell`).
+        """
         r = element.get("r")
         try:
             parser.row_counter = int(r) if r is not None else parser.row_counter + 1
         except ValueError:
             raise self.error("corrupt sheet: invalid row number", r) from None
-        parser.col_counter = 0
-        cells = []
+        # every coordinate of this row ends with this number (none can if it is not >= 1)
+        suffix = str(parser.row_counter) if parser.row_counter >= 1 else None
+        cut = -len(suffix) if suffix is not None else 0
+        styles, date_formats = self._styles, parser.date_formats
+        column = 0  # of the previous cell (openpyxl's parser.col_counter)
+        values = {}
         for c in element:
             if c.tag != _CELL_TAG:
                 continue
             if not len(c) and c.text is None:  # an empty (formatted) cell: nothing to read
                 continue
-            try:
-                cell = parser.parse_cell(c)
-            except Exception:  # noqa: BLE001 - any malformed cell of a hostile file
-                raise self.error("corrupt sheet: unreadable cell", c.get("r")) from None
-            value = cell["value"]
-            if cell["data_type"] == "e" and value is not None:
-                value = CellError(value)
-            if cell["row"] != parser.row_counter:
-                raise self.error("corrupt sheet: a cell lies outside its row", c.get("r"))
-            cells.append((cell["column"], value))
-        return parser.row_counter, cells, len(element)
+            cell = _simple_cell(c, column, suffix, cut, styles, date_formats)
+            if cell is None:
+                parser.col_counter = column
+                cell = self._cell(parser, c)
+            column, value = cell
+            if value is None or (isinstance(value, str) and not value.strip()):  # _is_empty
+                continue
+            values[column] = value
+        return parser.row_counter, values, len(element)
+
+    def _cell(self, parser, c):
+        """``(column, value)`` of any cell, read by openpyxl's ``parse_cell`` (shared and
+        inline strings, booleans, errors, dates by number format, formulas' cached values)."""
+        try:
+            cell = parser.parse_cell(c)
+        except Exception:  # noqa: BLE001 - any malformed cell of a hostile file
+            raise self.error("corrupt sheet: unreadable cell", c.get("r")) from None
+        value = cell["value"]
+        if cell["data_type"] == "e" and value is not None:
+            value = CellError(value)
+        if cell["row"] != parser.row_counter:
+            raise self.error("corrupt sheet: a cell lies outside its row", c.get("r"))
+        return cell["column"], value
 
     def close(self):
         self.book.close()
+
+
+#: Column letters (upper case, as Excel writes them) -> column number, filled as met.
+_COLUMN_NUMBERS = {}
+_COLUMN_LETTERS = re.compile(r"[A-Z]{1,3}")
+
+
+def _column_number(letters):
+    """Column number of ``letters`` (``"C"`` -> 3), or None unless they are 1 to 3 upper-case
+    letters (openpyxl's ``parse_cell`` then reads the coordinate itself)."""
+    column = _COLUMN_NUMBERS.get(letters)
+    if column is None and _COLUMN_LETTERS.fullmatch(letters):
+        column = _COLUMN_NUMBERS[letters] = column_index_from_string(letters)
+    return column
+
+
+#: How openpyxl's ``parse_cell`` reads a number of a style (see :func:`_style_kind`).
+_PLAIN, _DATE, _UNREADABLE = "plain", "date", "unreadable"
+
+
+def _style_kind(style, date_formats):
+    """How openpyxl's ``parse_cell`` reads a number of style attribute ``style`` (its text,
+    None if absent): as a plain number (:data:`_PLAIN`), as a date or duration
+    (:data:`_DATE`), or not at all (:data:`_UNREADABLE`: ``parse_cell`` raises on any cell of
+    that style, which is then refused as unreadable)."""
+    style_id = style if style is not None else 0  # as parse_cell: element.get('s', 0)
+    if style_id:
+        try:
+            style_id = int(style_id)
+        except ValueError:
+            return _UNREADABLE
+    return _DATE if style_id in date_formats else _PLAIN
+
+
+def _simple_cell(c, previous, suffix, cut, styles, date_formats):
+    """``(column, value)`` of a cell holding a plain number or an inline string, or None for
+    any other cell (then read by openpyxl's ``parse_cell``).
+
+    A shortcut of ``parse_cell`` for the cells of nearly every table, ``<c r="C7" t="n"><v>
+    0.25</v></c>`` and ``<c r="A1" t="inlineStr"><is><t>CD</t></is></c>``. It is exact
+    because it is taken only where ``parse_cell`` does the same few steps:
+
+    * the coordinate is 1 to 3 upper-case letters followed by the row's own number
+      ``suffix`` (so the cell lies in its row), or absent (the column after ``previous``);
+    * a number (type ``n`` or none) has one child, its ``<v>`` value with text (no formula),
+      and a style that is not a date or duration format; its text is converted by
+      openpyxl's own ``_cast_number`` (a text it refuses is left to ``parse_cell``);
+    * an inline string has one child ``<is>`` without attributes holding one ``<t>``
+      without children, and a style ``parse_cell`` can read; its value is the text of
+      ``<t>`` (``""`` if none), as openpyxl's ``Text.content`` gives it.
+
+    Parameters
+    ----------
+    c : Element
+        The ``<c>`` element.
+    previous : int
+        Column of the previous cell of the row (0 for the first): openpyxl's
+        ``parser.col_counter``.
+    suffix : str or None
+        The row number as text; None if the row number is not >= 1.
+    cut : int
+        ``-len(suffix)``.
+    styles : dict
+        Cache of :func:`_style_kind` by style attribute.
+    date_formats : set
+        The workbook's date and duration formats (style ids).
+    """
+    if suffix is None or len(c) != 1:
+        return None
+    kind = c.get("t", "n")
+    child = c[0]
+    if kind == "n":
+        text = child.text
+        if child.tag != _VALUE_TAG or not text:
+            return None
+    elif kind == "inlineStr":
+        if child.tag != _INLINE_TAG or child.attrib or len(child) != 1:
+            return None
+        text = child[0]
+        if text.tag != _TEXT_TAG or len(text):
+            return None
+    else:
+        return None
+    style = c.get("s")
+    how = styles.get(style)
+    if how is None:
+        how = styles[style] = _style_kind(style, date_formats)
+    if how != _PLAIN and (kind == "n" or how == _UNREADABLE):
+        return None
+    coordinate = c.get("r")
+    if coordinate is None:
+        column = previous + 1
+    elif coordinate.endswith(suffix):
+        letters = coordinate[:cut]
+        column = _COLUMN_NUMBERS.get(letters) or _column_number(letters)
+        if column is None:
+            return None
+    else:
+        return None
+    if kind == "n":
+        try:
+            return column, _cast_number(text)
+        except ValueError:
+            return None
+    return column, text.text or ""
 
 
 class WorkbookReader:
@@ -511,7 +656,7 @@ class WorkbookReader:
         last = 0
         data_rows = 0
         try:
-            for r, row, stored in self._source.rows(actual):
+            for r, values, stored in self._source.rows(actual):
                 cells += stored
                 if cells > MAX_SHEET_CELLS:
                     raise self.error(f"the sheet stores more than {MAX_SHEET_CELLS:,} cells "
@@ -521,16 +666,13 @@ class WorkbookReader:
                     raise self.error("corrupt sheet: rows out of order or beyond Excel's "
                                      "limit", r, name)
                 last = r
-                values = {}
-                for c, v in row:
-                    if _is_empty(v):
-                        continue
-                    if not 1 <= c <= EXCEL_COLUMNS:
-                        raise self.error("corrupt sheet: a column beyond Excel's limit", c,
-                                         name)
-                    values[c] = v
                 if not values:
                     continue
+                if not (1 <= min(values) and max(values) <= EXCEL_COLUMNS):
+                    # the first in the order of the cells (a column keeps its first place)
+                    beyond = next(c for c in values if not 1 <= c <= EXCEL_COLUMNS)
+                    raise self.error("corrupt sheet: a column beyond Excel's limit", beyond,
+                                     name)
                 if r >= first_data_row:
                     data_rows += 1
                     if data_rows > max_rows:
@@ -565,10 +707,43 @@ class WorkbookReader:
             if column.required and column.name not in found:
                 raise self.error(f"missing column {column.header!r}", sheet=spec.name,
                                  cell=cell_name(1, last + 1))
+        records = rows[1:]
+        columns = self._columns_at_once(spec, header, found, records)
+        if columns is None:  # some cell breaks a rule: the careful path names the first one
+            columns = self._records(spec, header, found, records)
+        values, raw, cells = columns
+        if not values or not len(next(iter(values.values()))):
+            raise self.error("sheet has no data rows below its header", sheet=spec.name,
+                             cell="A2")
+        units = {name: found[name][3] for name in found}
+        return Table(spec.name, values, cells, units, raw, self.file)
+
+    def _records(self, spec, header, found, records):
+        """``(values, raw, cells)`` of the table read record by record, cell by cell.
+
+        The careful path: the cells are checked in the order of the sheet (row by row, then
+        the columns in header order), so that the first bad cell raises its located error.
+
+        Parameters
+        ----------
+        spec : TableSheet
+        header : dict
+            Column number -> header (None for a note column).
+        found : dict
+            The table's columns (:meth:`_columns`).
+        records : list
+            ``(row number, {column number: value})`` of the data rows.
+
+        Returns
+        -------
+        values, raw, cells : dict
+            By column name: SI values (ndarray for numbers, list for text and flags), the cell
+            values as written, the cell coordinates.
+        """
         values = {c.name: [] for c in spec.columns if c.name in found}
         raw = {name: [] for name in values}
         cells = {name: [] for name in values}
-        for r, row in rows[1:]:
+        for r, row in records:
             for col in row:
                 if col not in header:
                     raise self.error("value in a column without a header (give the column a "
@@ -581,15 +756,38 @@ class WorkbookReader:
                     self._value(value, column, factor, unit, spec.name, where))
                 raw[column.name].append(value)
                 cells[column.name].append(where)
-        if not values or not next(iter(values.values())):
-            raise self.error("sheet has no data rows below its header", sheet=spec.name,
-                             cell="A2")
-        arrays = {}
-        for name, vals in values.items():
-            kind = found[name][1].kind
-            arrays[name] = vals if kind in (TEXT, FLAG) else np.asarray(vals, dtype=float)
-        units = {name: found[name][3] for name in found}
-        return Table(spec.name, arrays, cells, units, raw, self.file)
+        arrays = {name: _as_column(vals, found[name][1].kind) for name, vals in values.items()}
+        return arrays, raw, cells
+
+    def _columns_at_once(self, spec, header, found, records):
+        """``(values, raw, cells)`` of the table read column by column, or None if any cell
+        breaks a rule (then :meth:`_records` reads it again to name the first bad cell).
+
+        The fast path, giving exactly what :meth:`_records` gives for a table without a bad
+        cell: a column of plain numbers (Python ``int`` and ``float``, nearly every numeric
+        column) is checked and converted at once (:func:`_plain_quantities`); any other
+        column goes through :meth:`_value` cell by cell. It raises nothing: errors are left
+        to the careful path, which finds them in the order of the sheet.
+        """
+        if not set().union(*(row for _, row in records)) <= set(header):
+            return None  # a value in a column without a header
+        numbers = [str(r) for r, _ in records]
+        values, raw, cells = {}, {}, {}
+        for col, column, factor, unit in found.values():
+            name = column.name
+            raw[name] = [row.get(col) for _, row in records]
+            letter = get_column_letter(col)
+            cells[name] = [letter + r for r in numbers]  # cell_name(r, col) of each
+            try:
+                array = _plain_quantities(raw[name], column, factor)
+                if array is None:
+                    array = _as_column([self._value(v, column, factor, unit, spec.name, where)
+                                        for v, where in zip(raw[name], cells[name],
+                                                            strict=True)], column.kind)
+            except Exception:  # noqa: BLE001 - any error is raised again by the careful path
+                return None
+            values[name] = array
+        return values, raw, cells
 
     def _columns(self, spec, header):
         """``{column name: (column number, Column, SI factor, unit as written)}``."""
@@ -851,6 +1049,61 @@ class WorkbookReader:
         except csv.Error as err:
             raise self.error(f"CSV {name}: malformed ({err})", text, *where) from None
         return {wanted[key][0]: np.asarray(v, dtype=float) for key, v in data.items()}
+
+
+def _as_column(values, kind):
+    """The values of a column as a Table holds them: a list for text and flags, else an
+    ndarray of floats."""
+    return values if kind in (TEXT, FLAG) else np.asarray(values, dtype=float)
+
+
+def _plain_quantities(raw, column, factor):
+    """SI values of a column of plain numbers, or None unless every cell passes every check.
+
+    The column-at-once form of :func:`parse_number` and :func:`check_quantity`, giving the
+    same float for each cell: it applies only to a numeric column (not text, flag or integer)
+    whose cells are all Python ``int`` or ``float`` (not ``bool``: no empty cell, no text,
+    date or spreadsheet error), converted by ``float`` as :func:`parse_number` does, then
+    multiplied by ``factor`` in IEEE double precision as the scalar path does. The magnitude
+    limit and the bounds are checked on the whole column; the bounds through
+    :meth:`Bounds.contains` itself on each distinct value (``np.unique`` merges 0.0 and -0.0,
+    which every comparison treats alike). None means "read cell by cell": a value that is
+    not a plain number, or any cell that breaks a rule (the careful path then names it).
+
+    Parameters
+    ----------
+    raw : list
+        The cell values as read.
+    column : Column
+    factor : float
+        SI factor of the header's unit.
+
+    Returns
+    -------
+    ndarray or None
+    """
+    kind = column.kind
+    # exact types: bool (a subclass of int), numpy scalars and the like go cell by cell
+    if kind in (TEXT, FLAG, INTEGER) or not raw or not set(map(type, raw)) <= {int, float}:
+        return None
+    try:
+        numbers = np.fromiter(map(float, raw), dtype=float, count=len(raw))
+    except OverflowError:  # an int beyond floats: parse_number's "finite number" error
+        return None
+    with np.errstate(all="ignore"):  # an overflow to inf is an error below, never a warning
+        values = numbers * factor
+        if not np.isfinite(numbers).all():
+            return None
+        limit = MAX_MAGNITUDE.get(kind)
+        if limit is not None and not (np.abs(values) <= limit).all():
+            return None
+        bounds = column.bounds
+        if bounds is not None:
+            b_unit = bounds.unit if bounds.unit is not None else column.unit
+            b_factor = si_factor(b_unit or "", kind)
+            if not all(bounds.contains(v) for v in np.unique(values / b_factor).tolist()):
+                return None
+    return values
 
 
 def _part_kind(name):
