@@ -146,20 +146,25 @@ def test_the_cycle_check_finds_a_circle():
     assert _cycle({"a": {"b"}, "b": set()}) is None
 
 
+def _python_lines(code):
+    """The lines ``code`` prints when run by a fresh Python (nothing imported before it)."""
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          check=True).stdout.strip().splitlines()
+
+
 def test_help_imports_no_heavy_library():
     """`slingloads --help` lists the analyses from the registry without importing numpy,
     pandas, pint, openpyxl, matplotlib, scipy, numba or tqdm (the analyses' modules load on
     first use)."""
-    import subprocess
-    import sys
-
     code = ("import sys\nfrom slingloads import cli\ntry:\n    cli.main(['--help'])\n"
             "except SystemExit:\n    pass\n"
             "heavy = ('numpy', 'pandas', 'pint', 'openpyxl', 'matplotlib', 'scipy', 'numba',"
             " 'tqdm')\n"
             "print('loaded:' + ','.join(m for m in heavy if m in sys.modules))")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout.strip().splitlines()
+    out = _python_lines(code)
     assert out[-1] == "loaded:", f"--help imported {out[-1]}"
 
 
@@ -181,27 +186,19 @@ def test_libraries_load_only_where_used(module, absent):
     lateral and sizing analyses and their plots, and the multibody plots (drawn from plain
     data), load neither scipy nor numba: the process that draws the figures needs neither
     (about 1 s)."""
-    import subprocess
-    import sys
-
     code = (f"import sys\nimport {module}\n"
             f"print('loaded:' + ','.join(m for m in {absent!r} if m in sys.modules))")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout.strip().splitlines()
+    out = _python_lines(code)
     assert out[-1] == "loaded:", f"importing {module} loaded {out[-1]}"
 
 
 def test_a_quiet_run_loads_no_progress_bar():
     """`--quiet` shows no progress bar, so the run's stand-in loads no tqdm (which imports
     importlib.metadata and more, a tenth of a second); a shown bar is tqdm's."""
-    import subprocess
-    import sys
-
     code = ("import sys\nfrom slingloads import cli\n"
             "with cli._progress(False) as bar:\n"
             "    bar.total = 4\n    bar.update(1)\n    bar.set_description('x')\n"
             "print('loaded:' + ('tqdm' if 'tqdm' in sys.modules else ''))\n"
             "with cli._progress(True) as bar:\n    print(type(bar).__module__.split('.')[0])")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout.strip().splitlines()
+    out = _python_lines(code)
     assert out == ["loaded:", "tqdm"]
