@@ -179,3 +179,35 @@ def test_compare_with_previous_exactly_equal_is_not_an_exceedance():
     vz = out.set_index("component").loc["Vz"]
     assert vz["exceedance ratio"] == pytest.approx(1.0, rel=1e-15)
     assert not vz["exceeds"]
+
+
+@pytest.mark.parametrize("shape", ["gaussian", "disc", "circle", "square grid", "thin"])
+def test_convex_hull_matches_qhull(shape):
+    """Reference: scipy.spatial.ConvexHull (Qhull) on clouds of 2000 cases of loads of very
+    different magnitudes (N against N m): the same vertex cases, counter-clockwise (positive
+    shoelace area equal to Qhull's hull area), starting from the case of smallest Vy."""
+    from scipy.spatial import ConvexHull
+
+    rng = np.random.default_rng(len(shape))
+    n = 2000
+    if shape == "gaussian":
+        pts = rng.normal(size=(n, 2))
+    elif shape == "disc":
+        r, a = np.sqrt(rng.uniform(size=n)), rng.uniform(0, 2 * np.pi, n)
+        pts = np.column_stack([r * np.cos(a), r * np.sin(a)])
+    elif shape == "circle":  # every case a vertex (hook-load directions on a cone)
+        a = np.sort(rng.uniform(0, 2 * np.pi, 500))
+        pts = np.column_stack([np.cos(a), np.sin(a)])
+    elif shape == "square grid":  # many cases on the edges, which are not vertices
+        g = np.arange(-10.0, 11.0)
+        pts = np.array([(x, y) for x in g for y in g])
+    else:
+        pts = np.column_stack([rng.uniform(-1, 1, n), 1e-3 * rng.normal(size=n)])
+    pts = pts * [3000.0, 8.0e4] + [500.0, -2.0e4]
+    ids = [f"LC{k:04d}" for k in range(len(pts))]
+    hull = convex_hull(cloud(pts), ids, 0, ("Vy", "Mz"))
+    qhull = ConvexHull(pts)
+    assert sorted(hull["case"]) == sorted(ids[k] for k in qhull.vertices)
+    xy = hull[["Vy", "Mz"]].to_numpy(float)
+    assert counter_clockwise_area(xy) == pytest.approx(qhull.volume, rel=1e-12)
+    assert xy[0, 0] == pts[:, 0].min()

@@ -83,28 +83,78 @@ def convex_hull(loads, case_ids, station_index, pair):
     Returns
     -------
     pandas.DataFrame
-        Hull vertices in counter-clockwise order: ``case`` and the two components. Degenerate
-        clouds (all cases on a line or a point) return the extreme cases along the line.
+        Hull vertices in counter-clockwise order from the case of smallest first component
+        (then smallest second): ``case`` and the two components. Cases on an edge of the
+        hull between two vertices are not vertices. Degenerate clouds (all cases on a line
+        or a point) return the extreme cases along the line (or the one point).
     """
-    from scipy.spatial import ConvexHull, QhullError  # loads only when a hull is asked
-
     i, j = component_index(pair[0]), component_index(pair[1])
     pts = loads[:, station_index, :][:, [i, j]]
     case_ids = np.asarray(case_ids, dtype=object)
     scale = np.abs(pts).max(axis=0)
     scale[scale == 0] = 1.0
-    unique, first = np.unique(np.round(pts / scale, 12), axis=0, return_index=True)
-    try:
-        if len(unique) < 3:
-            raise QhullError("fewer than three distinct points")
-        vertices = first[ConvexHull(pts[first] / scale).vertices]
-    except QhullError:
-        centred = pts[first] / scale - (pts[first] / scale).mean(axis=0)
-        direction = np.linalg.svd(centred, full_matrices=False)[2][0]
-        t = centred @ direction
-        vertices = np.unique(first[[int(np.argmin(t)), int(np.argmax(t))]])
+    _, first = np.unique(np.round(pts / scale, 12), axis=0, return_index=True)
+    vertices = first[hull_vertices(pts[first] / scale)]
     return pd.DataFrame({"case": case_ids[vertices], pair[0]: pts[vertices, 0],
                          pair[1]: pts[vertices, 1]})
+
+
+#: Least distance from a hull edge, relative to the cloud's size, at which a point counts as
+#: outside it (nearer points are on the edge, not vertices). [-]
+HULL_TOLERANCE = 1e-12
+
+
+def hull_vertices(points):
+    """Indices of the vertices of the convex hull of distinct 2-D points, counter-clockwise
+    from the lowest point in (x, y) order (quickhull, vectorised over the points: one numpy
+    pass per hull edge found).
+
+    Parameters
+    ----------
+    points : ndarray, shape (n, 2)
+        Distinct points, n >= 1, of a size about 1 (the loads scaled by their largest
+        magnitude).
+
+    Returns
+    -------
+    ndarray of int
+        The vertices; the two ends alone when every point is on one line (within
+        :data:`HULL_TOLERANCE`), the one point when n = 1.
+    """
+    order = np.lexsort((points[:, 1], points[:, 0]))
+    start, end = int(order[0]), int(order[-1])
+    if start == end:
+        return np.array([start])
+    everyone = np.arange(len(points))
+    lower = _chain(points, start, end, everyone)  # right of start -> end: below
+    upper = _chain(points, end, start, everyone)  # right of end -> start: above
+    return np.array([start, *lower, end, *upper], dtype=int)
+
+
+def _chain(points, a, b, candidates):
+    """Hull vertices strictly to the right of the directed line a -> b, in order from a to
+    b (an explicit stack: no recursion limit)."""
+    tolerance = HULL_TOLERANCE * max(float(np.ptp(points, axis=0).max()), 1e-300)
+    out, stack = [], [(a, b, candidates, False)]
+    while stack:
+        a, b, candidates, emit = stack.pop()
+        if emit:  # (a is the vertex found between two chains: emitted between them)
+            out.append(a)
+            continue
+        pa, pb = points[a], points[b]
+        edge = pb - pa
+        length = float(np.hypot(*edge))
+        d = points[candidates] - pa
+        distance = (edge[1] * d[:, 0] - edge[0] * d[:, 1]) / length  # > 0: right of a -> b
+        outside = candidates[distance > tolerance]
+        if outside.size == 0:
+            continue
+        far = int(outside[np.argmax(distance[distance > tolerance])])
+        # a -> far first, then far, then far -> b (pushed in reverse)
+        stack.append((far, b, outside, False))
+        stack.append((far, None, None, True))
+        stack.append((a, far, outside, False))
+    return out
 
 
 def compare_with_previous(loads, stations, station_ids, previous):

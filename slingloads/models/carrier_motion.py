@@ -18,7 +18,8 @@ Five kinds are offered, each named for its law:
   (``then="stop"``).
 * :class:`VelocityStep`: the hook's speed jumps from 0 to ``dV`` at t = 0.
 * :class:`TimeHistory`: displacement samples (from a workbook or CSV file, read by the io
-  layer), interpolated by a natural cubic spline so that velocity and acceleration exist.
+  layer), interpolated by a natural cubic spline so that velocity and acceleration exist
+  (:mod:`slingloads.models.cubic_spline`, scipy's ``CubicSpline`` computed with numpy).
 
 Every motion also has :meth:`~_Motion.kinematics_at`, the same numbers at one time in plain
 Python floats. It exists for speed: the right-hand side of an adaptive solve
@@ -47,6 +48,7 @@ import numpy as np
 from slingloads.checks import finite as _finite
 from slingloads.checks import positive as _positive
 from slingloads.errors import InputError
+from slingloads.models.cubic_spline import natural_cubic_spline
 
 #: Peak acceleration of the unit quintic step over unit time: 10/sqrt(3). [-]
 QUINTIC_PEAK = 10.0 / np.sqrt(3.0)
@@ -426,10 +428,8 @@ class TimeHistory(_Motion):
                 f"carrier time-history times must be strictly increasing; sample {i + 2} "
                 f"(t = {t[i + 1]:.6g} s) does not come after sample {i + 1} "
                 f"(t = {t[i]:.6g} s)", t[i + 1].item())
-        from scipy.interpolate import CubicSpline  # (it loads scipy.spatial)
-
         t = t - t[0]
-        spline = CubicSpline(t, s - s[0], bc_type="natural")
+        spline = natural_cubic_spline(t, s - s[0])  # scipy's CubicSpline, natural, in numpy
         object.__setattr__(self, "time", t)
         object.__setattr__(self, "displacement_samples", s - s[0])
         object.__setattr__(self, "_spline", spline)
@@ -484,7 +484,8 @@ class TimeHistory(_Motion):
     def kinematics_at(self, t):
         """S [m], S' [m/s], S'' [m/s^2] at one time ``t`` [s]: :meth:`kinematics` in floats.
 
-        The spline's pieces are evaluated as scipy's ``PPoly`` does: the interval with
+        The spline's pieces are evaluated as scipy's ``PPoly`` does (and
+        :class:`~slingloads.models.cubic_spline.PiecewiseCubic`): the interval with
         ``x[i] <= t < x[i + 1]`` (the last one closed), then the sum of ``c[k] s**(m - k)``,
         ``s = t - x[i]``, from the constant term up, the powers by repeated products.
         """
