@@ -192,6 +192,23 @@ def test_libraries_load_only_where_used(module, absent):
     assert out[-1] == "loaded:", f"importing {module} loaded {out[-1]}"
 
 
+def test_a_hull_and_a_measured_motion_need_no_scipy():
+    """The helper that draws the figures receives the results pickled: a measured carrier
+    motion (its spline) and the 2-D hulls of the loads plots are numpy alone, so making
+    them, pickling and unpickling them, and evaluating them loads no scipy (scipy's
+    interpolation and spatial packages cost the helper about a third of a second)."""
+    code = ("import pickle, sys\nimport numpy as np\n"
+            "from slingloads.models.carrier_motion import TimeHistory\n"
+            "from slingloads.analyses.envelopes import convex_hull\n"
+            "h = pickle.loads(pickle.dumps(TimeHistory([0, 1, 2, 4], [0, 1, 3, 4])))\n"
+            "h.kinematics(np.linspace(0, 5, 9))\n"
+            "loads = np.random.default_rng(0).normal(size=(50, 1, 6))\n"
+            "convex_hull(loads, [str(k) for k in range(50)], 0, ('Vy', 'Mz'))\n"
+            "print('loaded:' + ('scipy' if 'scipy' in sys.modules else ''))")
+    out = _python_lines(code)
+    assert out[-1] == "loaded:", f"loaded {out[-1]}"
+
+
 def test_a_quiet_run_loads_no_progress_bar():
     """`--quiet` shows no progress bar, so the run's stand-in loads no tqdm (which imports
     importlib.metadata and more, a tenth of a second); a shown bar is tqdm's."""
