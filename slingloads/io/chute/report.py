@@ -547,12 +547,13 @@ def write(result, out_dir, stem, units, study, figures=None):
             f"{stem}-chute-{tag}.png" for tag in pngs]
         info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
                            conventions=CONVENTIONS, files=files)
+        csv = (task_result(figures, "histories.csv", histories_csv, result)  # (before the
+               if result.sweep is not None else None)  # figures are awaited: see lateral)
         with atomic_outputs(out_dir, inputs=inputs) as out:
             write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info)
-            if result.sweep is not None:
-                out.path(f"{stem}-chute-histories.csv").write_bytes(
-                    task_result(figures, "histories.csv", histories_csv, result))
+            if csv is not None:
+                out.path(f"{stem}-chute-histories.csv").write_bytes(csv)
             for tag, png in pngs.items():
                 out.path(f"{stem}-chute-{tag}.png").write_bytes(png_bytes(png))
     return out.written

@@ -128,13 +128,17 @@ def draw_png(func, args, kwargs, dpi):
         return _png(func(*args, **kwargs), dpi)
 
 
-#: Modules a helper loads while it waits for figures, in the order of the figures (the
-#: plots and what their data need): the loads' first, drawn while the workbook is read. The
-#: multibody figures are drawn from plain data (:mod:`slingloads.io.multibody.figure_data`):
-#: the helper does not load the model's compiled code or scipy for them.
-WARM_MODULES = ("slingloads.io.common.figures", "slingloads.io.loads.report",
-                "slingloads.io.loads.plots", "slingloads.io.lateral.report",
-                "slingloads.io.lateral.plots", "slingloads.io.chute.report",
+#: Modules a helper loads while it waits for figures, in the order of the figures: the
+#: plots, and the analyses whose results the figures are drawn from (unpickling a result
+#: loads its module: pandas with the loads'), the loads' first, drawn while the workbook is
+#: read. Not the report modules: they load what writes workbooks (openpyxl, XlsxWriter,
+#: about 0.3 s), which a helper needs only for a CSV file it makes when no figure waits
+#: (:meth:`FigureRenderer.later`). The multibody figures are drawn from plain data
+#: (:mod:`slingloads.io.multibody.figure_data`): the helper does not load the model's
+#: compiled code or scipy for them.
+WARM_MODULES = ("slingloads.io.common.figures", "slingloads.analyses.loads",
+                "slingloads.io.loads.plots", "slingloads.analyses.lateral",
+                "slingloads.io.lateral.plots", "slingloads.analyses.chute_sizing",
                 "slingloads.io.chute.plots", "slingloads.io.multibody.plots",
                 "slingloads.io.campaign.plots")
 
@@ -197,12 +201,15 @@ class FigureRenderer:
         return started
 
     def later(self, tag, func, *args):
-        """Hand ``func(*args)``, other work of the report (the bytes of a large CSV file),
-        to the helper that draws the figures, after them: :data:`tasks` ``[tag]``, taken
-        with :func:`task_result`."""
+        """Offer ``func(*args)``, other work of the report (the bytes of a large CSV file),
+        to the helper that draws the figures, for when no figure waits (of any report): the
+        process writing the report does it itself when it gets there first, which saves the
+        helper's time for the figures, which only it draws cheaply (loading matplotlib
+        costs the writing process about 0.4 s). :data:`tasks` ``[tag]``, taken with
+        :func:`task_result`."""
         if self._own is not None:
             self._own.start()
-        self.tasks[tag] = self.helper.submit(func, *args)
+        self.tasks[tag] = self.helper.submit_when_idle(func, *args)
         return self.tasks[tag]
 
     def __exit__(self, exc_type, exc, tb):

@@ -519,11 +519,12 @@ def write(result, out_dir, stem, units, study, figures=None):
                            files=[f"{stem}-lateral-histories.csv",
                                   *(f"{stem}-lateral-{tag}.png" for tag in pngs)])
         sheets = _sheets(result, units, study.warnings)
+        csv = task_result(figures, "histories.csv", histories_csv, result)  # (before the
+        # figures are awaited: made here while the helper draws, unless it has made it)
         with atomic_outputs(out_dir, inputs=inputs) as out:
             write_workbook(out.path(f"{stem}-lateral.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info)
-            out.path(f"{stem}-lateral-histories.csv").write_bytes(
-                task_result(figures, "histories.csv", histories_csv, result))
+            out.path(f"{stem}-lateral-histories.csv").write_bytes(csv)
             for tag, png in pngs.items():
                 out.path(f"{stem}-lateral-{tag}.png").write_bytes(png_bytes(png))
     return out.written

@@ -758,6 +758,10 @@ def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input
                  "ExceedanceDetail": Highlight(["exceedance ratio [-]"], 1.0)}
     if dynamics is not None:
         sheets["Dynamics"] = dynamics_sections(result, dynamics, units)
+    # the CSV files first: made here unless the helper has made them (it makes them only
+    # when no figure waits), while the helper goes on with the figures
+    csv_files = {name: task_result(figures, name, make, result)
+                 for name, make in CSV_FILES.items()}
     with atomic_outputs(out_dir, inputs=input_paths) as out:
         write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,
                        number_format=NUMBER_FORMATS, highlight=highlight, info=info,
@@ -767,8 +771,8 @@ def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input
                            max_rows=max_rows,
                            info=replace(info, title=f"{TITLE}: SFBM of every case (data)",
                                         files=()))
-        for name, make in CSV_FILES.items():
-            out.path(f"{stem}-{name}").write_bytes(task_result(figures, name, make, result))
+        for name, data in csv_files.items():
+            out.path(f"{stem}-{name}").write_bytes(data)
         for tag, png in pngs.items():
             out.path(f"{stem}-{tag}.png").write_bytes(png_bytes(png))
         if deck is not None:

@@ -443,12 +443,13 @@ def write(result, out_dir, stem, units, study, figures=None):
         sheets = _sheets(result, units, _warnings(result, study))
         formats = ({name: MATRIX_FORMAT for name in result.linear.a_frame().columns}
                    if result.linear is not None else None)
+        csv = task_result(figures, "histories.csv", histories_csv, result)  # (before the
+        # figures are awaited: made here while the helper draws, unless it has made it)
         with atomic_outputs(out_dir, inputs=inputs) as out:
             write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info,
                            number_format=formats)
-            out.path(f"{stem}-multibody-histories.csv").write_bytes(
-                task_result(figures, "histories.csv", histories_csv, result))
+            out.path(f"{stem}-multibody-histories.csv").write_bytes(csv)
             for tag, png in pngs.items():
                 out.path(f"{stem}-multibody-{tag}.png").write_bytes(png_bytes(png))
     return out.written
