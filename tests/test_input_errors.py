@@ -104,6 +104,45 @@ def test_empty_cell(tmp_path, example_book):
     expect_error(edited(tmp_path, example_book, edit), "cell D7", "empty cell")
 
 
+def test_errors_name_the_column_as_written(tmp_path, example_book):
+    """Rule: an error names the column with the unit the user wrote in its header (the
+    example's masses are in lb, stations in in), not the SI unit it is converted to."""
+    def edit(b):
+        b["MassItems"]["C5"] = "heavy"
+        b["MassItems"]["D7"] = None
+    expect_error(edited(tmp_path, example_book, edit), "cell C5", "'mass [lb]' must be a "
+                 "number")
+
+    def edit_station(b):
+        b["Stations"]["B3"] = None
+    error = expect_error(edited(tmp_path, example_book, edit_station), "cell B3",
+                         "empty cell in required column 'x [in]'")
+    assert "[m]" not in str(error)
+
+
+@pytest.mark.parametrize("sheet, cell", [("FuselageAero", "C3"), ("FuselageAero", "E40")])
+def test_empty_or_uncomputed_coefficient_names_its_cell(tmp_path, example_book, sheet, cell):
+    """Rule: the fuselage table needs every coefficient of its frame at every grid point.
+    An empty cell, or a formula saved without its value (openpyxl saves none), is named at
+    its cell with the column as written, with the hint to recompute formulas."""
+    def edit(b):
+        b[sheet][cell] = "=1+1" if cell == "C3" else None
+    column = example_book[sheet][f"{cell[0]}1"].value
+    expect_error(edited(tmp_path, example_book, edit), f"sheet '{sheet}'", f"cell {cell}",
+                 "empty cell in", f"column '{column}'", "formula whose value was never computed")
+
+
+def test_empty_parachute_coefficient_names_its_cell(tmp_path):
+    """Rule: the ParachuteCD table needs its coefficient (CD in wind axes) at every alpha:
+    an empty one is named at its cell."""
+    from hostile import save_xlsx, small_workbook
+
+    sheets = small_workbook()
+    sheets["ParachuteCD"] = [("alpha [deg]", "CD"), (-10.0, 0.9), (0.0, None), (10.0, 0.9)]
+    path = save_xlsx(sheets, tmp_path / "chute.xlsx")
+    expect_error(path, "sheet 'ParachuteCD'", "cell B3", "empty cell in column 'CD'")
+
+
 @pytest.mark.parametrize("mass", [0, -12.5])
 def test_zero_or_negative_mass(tmp_path, example_book, mass):
     """Rule: every mass is > 0."""

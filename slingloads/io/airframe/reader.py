@@ -295,6 +295,8 @@ def read_fuselage_aero(reader, params, refs):
     columns = fuselage_columns(force_axes)
     _columns_match(reader, t, columns, ("CD", "CL", "CX", "CZ"),
                    f"'fuselage force axes' is {force_axes!r}")
+    t.require_filled(columns, "the table needs every coefficient of its frame at every "
+                     "(alpha, beta) point")
     _check_full_grid(t)
     with t.located():
         table = Table2D.from_long(t["alpha"], t["beta"], {c: t[c] for c in columns})
@@ -404,6 +406,7 @@ def read_parachute_cd(reader, axes="wind"):
     column = PARACHUTE_AXES[axes]
     _columns_match(reader, t, (column,), tuple(PARACHUTE_AXES.values()),
                    f"'parachute table axes' is {axes!r}")
+    t.require_filled((column,), f"the table needs {column} at every alpha")
     with t.located():
         table = Table1D(t["alpha"], {column: t[column]}, angle_name="alpha",
                         what="parachute")

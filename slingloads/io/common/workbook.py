@@ -207,6 +207,23 @@ class Table:
         return InputError(rule, value, file=self.file, sheet=self.sheet,
                           cell=self.cell(name, index), unit=unit)
 
+    def require_filled(self, names, why):
+        """Refuse the first empty cell (or formula never computed) of the number columns
+        ``names`` that are optional in the sheet's schema but needed here (``why``)."""
+        for name in names:
+            values = self.values.get(name)
+            if values is None or not isinstance(values, np.ndarray):
+                continue
+            empty = np.flatnonzero(np.isnan(values))
+            if empty.size:
+                raise self.error(name, int(empty[0]), f"empty cell in column "
+                                 f"{self.header(name)!r}: {why}{_FORMULA_HINT}")
+
+    def header(self, name):
+        """Column ``name``'s header as written (with its unit, when it has one)."""
+        unit = self.units.get(name)
+        return f"{name} [{unit}]" if unit else name
+
     @contextlib.contextmanager
     def located(self, fields=None, cell=None):
         """Locate an :class:`InputError` a model raises on this table's values.
@@ -831,21 +848,22 @@ class WorkbookReader:
         return found
 
     def _value(self, raw, column, factor, unit, sheet, where):
+        header = f"{column.name} [{unit}]" if unit else column.header  # as written
         if column.kind == TEXT:
             if _is_empty(raw):
                 if column.required:
-                    raise self.error(f"empty cell in required column {column.header!r}"
+                    raise self.error(f"empty cell in required column {header!r}"
                                      f"{_FORMULA_HINT}", None, sheet, where)
                 return column.default
-            return parse_text(raw, column.header, column.char_limit, self.error, sheet, where)
+            return parse_text(raw, header, column.char_limit, self.error, sheet, where)
         if column.kind == FLAG:
-            return parse_flag(raw, column.header, self.error, sheet, where, column.default)
+            return parse_flag(raw, header, self.error, sheet, where, column.default)
         if _is_empty(raw):
             if column.required:
-                raise self.error(f"empty cell in required column {column.header!r}"
+                raise self.error(f"empty cell in required column {header!r}"
                                  f"{_FORMULA_HINT}", None, sheet, where)
             return column.default
-        number = parse_number(raw, column.header, self.error, sheet, where)
+        number = parse_number(raw, header, self.error, sheet, where)
         return check_quantity(number, raw, column.kind, factor, unit, column.bounds,
                               column.unit, column.name, self.error, sheet, where)
 
@@ -893,8 +911,8 @@ class WorkbookReader:
                     out[key] = ParameterValue("", where, raw, unit_text)
                     continue
                 raise self.error(f"empty value for parameter {spec.name!r} (delete the row "
-                                 f"to use the default {spec.default!r} {spec.unit})", None,
-                                 sheet, where)
+                                 f"to use the default {spec.default!r} {spec.unit})"
+                                 f"{_FORMULA_HINT}", None, sheet, where)
             value = self._parameter_value(spec, raw, unit_text, sheet, r)
             out[key] = ParameterValue(value, where, raw, unit_text.strip())
         return out
