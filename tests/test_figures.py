@@ -73,3 +73,31 @@ def test_report_figure_text_is_plain_including_tick_labels_made_when_drawn():
 def test_a_figure_made_elsewhere_is_drawn_literally_too():
     """figure_png on a Figure made by a caller (not through draw_png) also draws literally."""
     assert _is_png(figure_png(_figure_with_ids(), dpi=20))
+
+
+def test_titles_at_the_top_of_their_axes_are_where_matplotlib_puts_them():
+    """Reference: matplotlib's automatic title placement (``axes.titley`` None), which
+    raises a title only above tick labels on top of the axes. The report style fixes titles
+    at the top of their axes (a layout pass saved); for figures like the reports' (grids of
+    axes with titles, labels, legends, no tick labels on top) the pixels are the same."""
+    import matplotlib
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    from slingloads.io.common.figures import fix_margins, report_style
+
+    def plot():
+        fig = Figure(figsize=(7.0, 5.0))
+        axes = fig.subplots(2, 2)
+        t = np.linspace(0.0, 10.0, 200)
+        for k, ax in enumerate(axes.flat):
+            ax.plot(t, np.sin(t + k) * 10 ** k, label=f"run {k}")
+            ax.set_title(f"panel {k}: yaw [deg]\nsecond line")
+            ax.set_xlabel("t [s]")
+            ax.legend(loc="upper right")
+        return fix_margins(fig, top=0.8, hspace=0.6)
+
+    assert report_style()["axes.titley"] == 1.0
+    with matplotlib.rc_context({**report_style(), "axes.titley": None}):
+        automatic = figure_png(plot(), dpi=60)
+    assert draw_png(plot, (), {}, 60) == automatic
