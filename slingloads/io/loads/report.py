@@ -909,7 +909,8 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
                 envelope_wide_table(result, COMPONENTS[3:], units, ultimate=True)),
     ]
     hulls = ([Section("2-D envelopes (convex hulls) of LIMIT loads at chosen stations",
-                      note="Vertices counter-clockwise; every case inside or on the hull. "
+                      note="Vertices counter-clockwise from the case of the smallest first "
+                           "component; every case inside or on the hull. "
                            "Stations and pairs: Study sheet 'hull stations', 'hull pairs'.")]
              + [Section(f"{a}-{b} convex hull vertices, LIMIT loads",
                         hull_report_table(result, (a, b), stations, units))
