@@ -288,3 +288,100 @@ def test_cli_refuses_to_overwrite_the_input(tmp_path, capsys):
     assert code == 2
     assert "never overwritten" in capsys.readouterr().err
     assert source.read_bytes() == before
+
+
+@pytest.mark.parametrize("text", ["1_0", "\u0662", "\uff13\uff19\uff16", "0x1A", "1e", "--2"])
+def test_numbers_are_written_with_ascii_digits(tmp_path, example_book, text):
+    """Rule (docs/inputs-and-outputs.md): a number written as text is plain decimal
+    notation with the digits 0-9. Python's float() reads '1_0' as 10 and other scripts'
+    digits ('\u0662' is 2, full-width '\uff13\uff19\uff16' is 396): refused at the cell."""
+    def edit(b):
+        b["MassItems"]["C3"] = text
+    expect_error(edited(tmp_path, example_book, edit), "cell C3", "must be a number",
+                 repr(text))
+
+
+def test_plain_numbers_written_as_text_are_read(tmp_path, example_book):
+    """Rule: text holding a plain decimal number, spaces around it ignored, is that number
+    (' 396.83\\n' is the example's 396.83 lb)."""
+    def edit(b):
+        b["MassItems"]["C3"] = " 396.83\n"
+    study = read_study(edited(tmp_path, example_book, edit))
+    reference = read_study(EXAMPLE)
+    got, expected = study.airframe.mass_items, reference.airframe.mass_items
+    assert got.mass[1] == expected.mass[1] == pytest.approx(396.83 * 0.45359237, rel=1e-15)
+    assert list(got.mass) == list(expected.mass)
+
+
+def test_two_sheets_matching_one_name_are_refused(tmp_path, example_book):
+    """Rule: sheet names are matched with case and surrounding spaces ignored, so a second
+    sheet ' STUDY ' beside 'Study' is ambiguous: refused, naming both, not silently
+    ignored."""
+    def edit(b):
+        ws = b.create_sheet(" STUDY ")
+        ws.append(["parameter", "value", "unit"])
+        ws.append(["hook load factor Nz", 19, None])
+    expect_error(edited(tmp_path, example_book, edit), "2 sheets match 'Study'", "' STUDY '")
+
+
+@pytest.mark.parametrize("text, char", [("CK\tPT", "U+0009 (TAB)"),
+                                        ("CR\nEW", "U+000A (LINE FEED)"),
+                                        ("CK\u202ePT", "U+202E (RIGHT-TO-LEFT OVERRIDE)"),
+                                        ("CK\u200bPT", "U+200B (ZERO WIDTH SPACE)"),
+                                        ("CK\u00a0PT", "U+00A0 (NO-BREAK SPACE)")])
+def test_ids_hold_visible_characters_only(tmp_path, example_book, text, char):
+    """Rule: an id holds visible characters and plain spaces only, so that two ids that
+    look alike on a printed report are alike (a tab, line break, zero-width or no-break
+    space, or a direction override would make them differ unseen)."""
+    def edit(b):
+        b["MassItems"]["A3"] = text
+    expect_error(edited(tmp_path, example_book, edit), "cell A3", char)
+
+
+def test_descriptions_refuse_direction_controls_but_keep_line_breaks(tmp_path, example_book):
+    """Rule: free text may hold line breaks and any script, never a Unicode direction
+    control (which can make a text display as another: 'Trojan source')."""
+    def edit(b):
+        b["MassItems"]["B3"] = "cockpit \u202estructure"
+    expect_error(edited(tmp_path, example_book, edit), "cell B3", "U+202E")
+
+    def fine(b):
+        b["MassItems"]["B3"] = "cockpit\nstructure, \u00e9\u6f22"
+    read_study(edited(tmp_path, example_book, fine, "fine.xlsx"))
+
+
+def test_ids_differing_only_in_case_are_duplicates(tmp_path, example_book):
+    """Rule: ids are unique with case ignored ('NOSE' and 'nose' cannot be told apart by a
+    reader of the report): the second is refused, naming the first."""
+    def edit(b):
+        b["MassItems"]["A3"] = b["MassItems"]["A2"].value.lower()
+    expect_error(edited(tmp_path, example_book, edit), "cell A3", "duplicate id",
+                 "first at A2")
+
+
+def test_the_no_aero_id_is_reserved(tmp_path, example_book):
+    """Rule: in LoadCases, aero NONE means no aerodynamic load, so no AeroEnvelope point
+    may be called NONE (in any case)."""
+    def edit(b):
+        b["AeroEnvelope"]["A3"] = "None"
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'AeroEnvelope'", "cell A3",
+                 "'NONE' is reserved")
+
+
+def test_a_study_value_under_no_header_is_refused(tmp_path, example_book):
+    """Rule: no data is silently ignored: a value in a Study column without a header, as in
+    every table sheet, is refused at its cell."""
+    def edit(b):
+        b["Study"].cell(5, 5).value = 42
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'Study'", "cell E5",
+                 "column without a header")
+
+
+def test_an_empty_zip_is_explained_without_python_names(tmp_path):
+    """Rule: a file that is a zip but not a workbook is refused in a user's words (the
+    missing part of the package named, no Python exception class)."""
+    path = tmp_path / "empty.xlsx"
+    zipfile.ZipFile(path, "w").close()
+    error = expect_error(path, "not a readable .xlsx workbook", "[Content_Types].xml",
+                         "save it again")
+    assert "KeyError" not in str(error)

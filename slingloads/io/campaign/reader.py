@@ -31,7 +31,7 @@ from slingloads.io.campaign.schema import (
 )
 from slingloads.io.common.schema import STUDY_SHEET, TEXT
 from slingloads.io.common.units import si_factor
-from slingloads.io.common.workbook import cell_name, check_quantity, located
+from slingloads.io.common.workbook import cell_name, check_quantity, located, number_from_text
 from slingloads.limits import (
     MAX_CAMPAIGN_RUN_STEPS,
     MAX_CAMPAIGN_RUNS,
@@ -135,10 +135,9 @@ def list_parameter(params, name):
         factor = si_factor(unit, kind)
     values = []
     for item in items:
-        try:
-            value = float(item)
-        except ValueError:
-            raise params.error(name, f"{name!r}: every value must be a number", item) from None
+        value = number_from_text(item)
+        if value is None:
+            raise params.error(name, f"{name!r}: every value must be a number", item)
         if not np.isfinite(value):
             raise params.error(name, f"{name!r}: every value must be a finite number", item)
         values.append(check_quantity(value, item, kind, factor, unit.strip(),

@@ -42,6 +42,7 @@ import os
 import pyexpat
 import re
 import stat
+import unicodedata
 import warnings
 import zipfile
 from dataclasses import dataclass, field
@@ -66,6 +67,7 @@ from slingloads.io.common.units import si_factor
 from slingloads.limits import (
     MAX_CSV_BYTES,
     MAX_CSV_ROWS,
+    MAX_ID_CHARS,
     MAX_MAGNITUDE,
     MAX_PART_BYTES,
     MAX_PATH_CHARS,
@@ -101,6 +103,15 @@ _CELL_PARTS = frozenset(f"{_MAIN}{t}" for t in (
 
 class _RootReached(Exception):
     """The prolog of an XML part was read to its first element."""
+
+
+def _why_unreadable(err):
+    """What openpyxl's error on an unreadable workbook says, in a user's words: a missing part
+    of the package by its name, else the error's first line (without the Python class)."""
+    if isinstance(err, KeyError) and err.args:
+        return f"a part of an .xlsx file is missing: {str(err.args[0])[:200]}"
+    text = str(err).splitlines()[0][:200] if str(err) else ""
+    return text or "its content is not that of an .xlsx workbook"
 
 
 def _check_prolog(source, error):
@@ -303,8 +314,8 @@ class _XlsxSource:
             root = err
             while root.__cause__ is not None or root.__context__ is not None:
                 root = root.__cause__ or root.__context__
-            text = str(root).splitlines()[0][:200] if str(root) else ""
-            raise error(f"not a readable .xlsx workbook ({type(root).__name__}: {text})",
+            raise error(f"not a readable .xlsx workbook ({_why_unreadable(root)}); save it "
+                        "again from Excel or LibreOffice as an Excel workbook (.xlsx)",
                         None) from None
         self.sheetnames = list(self.book.sheetnames)
         #: ``s`` attribute of a cell (None if absent) -> how openpyxl reads a number of that
@@ -634,13 +645,22 @@ class WorkbookReader:
         return self._sheet(name) is not None
 
     def _sheet(self, name):
-        """The workbook's name of sheet ``name``: exact, else the one sheet whose name matches
-        it with case and surrounding spaces ignored; None if there is none."""
+        """The workbook's name of sheet ``name``: the one sheet whose name matches it with
+        case and surrounding spaces ignored; None if there is none.
+
+        Raises
+        ------
+        InputError
+            If two sheets match (``Study`` and `` STUDY ``): which one is meant is not for
+            the reader to guess.
+        """
         names = self._source.sheetnames
-        if name in names:
-            return name
         matches = [n for n in names if n.strip().casefold() == name.casefold()]
-        return matches[0] if len(matches) == 1 else None
+        if len(matches) > 1:
+            raise self.error(f"{len(matches)} sheets match {name!r} (case and surrounding "
+                             f"spaces ignored): {', '.join(repr(n) for n in matches)}; delete "
+                             "or rename all but one", sheet=matches[1])
+        return matches[0] if matches else None
 
     def error(self, rule, value=None, sheet=None, cell=None, unit=None):
         """An InputError located in this file."""
@@ -885,6 +905,11 @@ class WorkbookReader:
                                  _echo(got), sheet, cell_name(1, col))
         out = {}
         for r, row in rows[1:]:
+            stray = next((c for c in sorted(row) if c not in header), None)
+            if stray is not None:
+                raise self.error("value in a column without a header (give the column a "
+                                 "header, e.g. 'notes', or clear the cell)", _echo(row[stray]),
+                                 sheet, cell_name(r, stray))
             name, raw, unit = row.get(1), row.get(2), row.get(3)
             if name is None:
                 if raw is not None or unit is not None:
@@ -1051,9 +1076,8 @@ class WorkbookReader:
                 for key, (_label, kind) in wanted.items():
                     j, head, unit = index[key]
                     cell_text = row[j] if j < len(row) else ""
-                    try:
-                        value = float(cell_text.strip())
-                    except ValueError:
+                    value = number_from_text(cell_text)
+                    if value is None:
                         value = math.nan
                     if not math.isfinite(value):
                         raise self.error(f"CSV {name}: column {head!r}, data row {k} is not a "
@@ -1166,13 +1190,19 @@ def _echo(value, n=200):
 
 
 def check_unique(reader, table, column):
-    """Raise an InputError at the second occurrence of a value repeated in ``column``."""
+    """Raise an InputError at the second occurrence of a value repeated in ``column``; texts
+    are compared with case ignored (``NOSE`` and ``nose`` would be told apart by the program
+    but not by a reader of the report)."""
     seen = {}
     for i, value in enumerate(table[column]):
-        if value in seen:
-            raise table.error(column, i,
-                              f"duplicate {column} (first at {table.cell(column, seen[value])})")
-        seen[value] = i
+        key = value.casefold() if isinstance(value, str) else value
+        if key in seen:
+            first = seen[key]
+            same = "" if table[column][first] == value else (
+                f" {table[column][first]!r}: ids are compared with case ignored")
+            raise table.error(column, i, f"duplicate {column} (first at "
+                                         f"{table.cell(column, first)}{same})")
+        seen[key] = i
 
 
 def parse_text(raw, what, max_chars, error, sheet, where):
@@ -1187,7 +1217,59 @@ def parse_text(raw, what, max_chars, error, sheet, where):
                     where)
     if ILLEGAL_CHARACTERS_RE.search(text):
         raise error(f"{what!r} contains control characters", _echo(text), sheet, where)
+    hidden = hidden_character(text, name_like=max_chars <= MAX_ID_CHARS)
+    if hidden is not None:
+        k, char = hidden
+        rule = ("an id or name holds visible characters and spaces only"
+                if max_chars <= MAX_ID_CHARS else "text holds no direction controls")
+        name = unicodedata.name(char, None) or _CONTROL_NAMES.get(char, "a control")
+        raise error(f"{what!r} contains the invisible character U+{ord(char):04X} ({name}) "
+                    f"at position {k + 1}: {rule}", _echo(text), sheet, where)
     return text
+
+
+_CONTROL_NAMES = {"\t": "TAB", "\n": "LINE FEED", "\r": "CARRIAGE RETURN"}
+#: Characters that reorder the display of text (Unicode bidirectional controls): a text that
+#: holds them can show as another ("Trojan source"); never accepted in any text.
+BIDI_CONTROLS = frozenset("\u061c\u200e\u200f\u202a\u202b\u202c\u202d\u202e"
+                          "\u2066\u2067\u2068\u2069")
+
+
+def hidden_character(text, name_like):
+    """``(position, character)`` of the first character of ``text`` a reader of the report
+    could not see, or None: a direction control anywhere; in an id or name
+    (``name_like``) also any control or format character (zero-width space, soft hyphen...)
+    and any white space but the plain space (tab, line break, no-break space), so that two
+    ids that look alike are alike."""
+    if text.isascii() and (text.isprintable() or not name_like):
+        return None  # (nearly every cell: ASCII has no direction control)
+    for k, char in enumerate(text):
+        if char in BIDI_CONTROLS:
+            return k, char
+        if name_like and char != " " and (char.isspace()
+                                          or unicodedata.category(char)[0] in "CZ"):
+            return k, char
+    return None
+
+
+#: A number written as text: plain decimal notation with the ASCII digits 0-9, an optional
+#: sign, decimal point and exponent (``12.5``, ``-3``, ``.5``, ``1e-3``). Python's float()
+#: also takes ``1_0`` (ten), other scripts' digits (``٢``, ``３``) and ``infinity``: a
+#: workbook's text is never read that way.
+PLAIN_NUMBER = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+
+
+def number_from_text(text):
+    """The number a text cell (or CSV field, or list item) holds, surrounding spaces ignored:
+    a float when the text is a plain decimal number (:data:`PLAIN_NUMBER`), ``inf`` or
+    ``nan`` when it says so (``inf``, ``-Infinity``, ``nan``: refused as not finite by the
+    caller), else None (not a number)."""
+    text = text.strip()
+    if PLAIN_NUMBER.fullmatch(text):
+        return float(text)
+    if text.lower().lstrip("+-") in ("inf", "infinity", "nan"):
+        return float(text)
+    return None
 
 
 def parse_number(raw, what, error, sheet, where):
@@ -1206,10 +1288,10 @@ def parse_number(raw, what, error, sheet, where):
         except OverflowError:
             value = math.inf
     elif isinstance(raw, str):
-        try:
-            value = float(raw.strip())
-        except ValueError:
-            raise error(f"{what!r} must be a number", _echo(raw), sheet, where) from None
+        value = number_from_text(raw)
+        if value is None:
+            raise error(f"{what!r} must be a number (digits 0-9, e.g. 12.5 or 1.2e3)",
+                        _echo(raw), sheet, where)
     else:
         raise error(f"{what!r} must be a number", _echo(str(raw)), sheet, where)
     if not math.isfinite(value):

@@ -81,6 +81,10 @@ def read(reader, params, study):
     if reader.has_sheet("AeroEnvelope"):
         t = reader.table(_SPEC["AeroEnvelope"])
         check_unique(reader, t, "id")
+        for i, point in enumerate(t["id"]):
+            if point.casefold() == NO_AERO.casefold():
+                raise t.error("id", i, f"{NO_AERO!r} is reserved: in LoadCases, aero "
+                                       f"{NO_AERO} means no aerodynamic load; choose another id")
         envelope = AeroEnvelope(tuple(t["id"]), t["alpha"], t["beta"])
         _check_envelope_in_tables(reader, t, fuselage, fin)
     elif fuselage is not None or fin is not None:
