@@ -385,3 +385,12 @@ def test_an_empty_zip_is_explained_without_python_names(tmp_path):
     error = expect_error(path, "not a readable .xlsx workbook", "[Content_Types].xml",
                          "save it again")
     assert "KeyError" not in str(error)
+
+
+def test_a_numeric_factor_in_a_unit_is_refused_with_the_reason(tmp_path, example_book):
+    """Rule (docs/inputs-and-outputs.md): a unit is unit names and powers only; a numeric
+    factor (0.0254*m for inches) is refused at the header, saying so."""
+    def edit(b):
+        b["Stations"]["B1"] = "x [0.0254*m]"
+    expect_error(edited(tmp_path, example_book, edit), "cell B1", "never a numeric factor",
+                 "0.0254*m")

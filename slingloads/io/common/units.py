@@ -212,7 +212,14 @@ def _pint_factor(text, kind, unit):
     except Exception:  # noqa: BLE001 - pint parses arbitrary text: any failure is a bad unit
         # (seen: ZeroDivisionError for kg/0, KeyError for kg**0, RecursionError for deep
         # brackets, OverflowError for percent**-200, OffsetUnitCalculusError)
-        raise UnitError("unknown unit (or a malformed unit expression)", unit) from None
+        hint = ("; a unit is written with unit names and powers only, never a numeric "
+                "factor (write 'in', not '0.0254*m')" if _FACTOR.search(unit) else "")
+        raise UnitError(f"unknown unit (or a malformed unit expression){hint}", unit) from None
+
+
+#: A number standing as a factor in a unit expression (``0.0254*m``, ``2 m``, ``1e999 kg``),
+#: not a power (``m^2``, ``m**2``).
+_FACTOR = re.compile(r"(?:^|[\s*/(])[0-9.]")
 
 
 def to_si(values, unit, kind):
