@@ -152,3 +152,15 @@ def set_parameter(sheets, name, value, unit=None):
             return sheets
     sheets["Study"].append([name, value, unit, None])
     return sheets
+
+
+def publish_earlier(folder, files):
+    """Publish ``{file name: bytes}`` into ``folder`` as a run publishes its set, so that the
+    files stand for an earlier report (the folder's manifest lists them); returns their
+    paths."""
+    from slingloads.io.common.atomic import atomic_outputs
+
+    with atomic_outputs(folder) as out:
+        for name, data in files.items():
+            out.path(name).write_bytes(data)
+    return out.written

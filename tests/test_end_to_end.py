@@ -15,9 +15,11 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from hostile import publish_earlier
 
 from slingloads.cli import main
 from slingloads.io.analyses import all_parameters
+from slingloads.io.common.ownership import MANIFEST_NAME
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.io.study import read_study
 
@@ -161,10 +163,12 @@ def test_run_publishes_all_analyses_or_none(tmp_path, monkeypatch, capsys):
     subcommand, compute, _ = cli.ANALYSES[name]
     monkeypatch.setitem(cli.ANALYSES, name, (subcommand, compute, failing_writer))
     out = tmp_path / "reports"
-    out.mkdir()
-    (out / "example-light-twin-loads.xlsx").write_bytes(b"earlier")
+    publish_earlier(out, {"example-light-twin-loads.xlsx": b"earlier"})
+    manifest = (out / MANIFEST_NAME).read_bytes()
     assert main(["run", str(EXAMPLE), "--out", str(out), "--quiet"]) == 1
     assert "disk full" in capsys.readouterr().err
-    assert [p.name for p in out.iterdir()] == ["example-light-twin-loads.xlsx"]
+    assert sorted(p.name for p in out.iterdir()) == [MANIFEST_NAME,
+                                                     "example-light-twin-loads.xlsx"]
     assert (out / "example-light-twin-loads.xlsx").read_bytes() == b"earlier"
+    assert (out / MANIFEST_NAME).read_bytes() == manifest
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".slingloads-")]

@@ -17,6 +17,7 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 import pytest
+from hostile import publish_earlier
 from numpy.testing import assert_allclose
 from openpyxl import load_workbook
 
@@ -24,6 +25,7 @@ from slingloads.analyses.loads import ListedCase, LoadsStudy
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import TEMP_PREFIX, atomic_outputs
 from slingloads.io.common.excel import Highlight, Section, write_workbook
+from slingloads.io.common.ownership import MANIFEST_NAME
 from slingloads.io.loads import report as loads_report
 from slingloads.io.loads.report import (
     ENVELOPE_CSV_COLUMNS,
@@ -109,7 +111,7 @@ def test_written_files(reports):
     assert {"demo-loads.xlsx", "demo-sfbm.xlsx", "demo-sfbm.csv", "demo-envelope.csv",
             "demo-stations.png", "demo-X_shear.png", "demo-Y_shear.png", "demo-Z_shear.png",
             "demo-X_moment.png", "demo-Y_moment.png", "demo-Z_moment.png"} <= names
-    assert {p.name for p in d.iterdir()} == names
+    assert {p.name for p in d.iterdir()} == names | {MANIFEST_NAME}
     for p in paths:
         if p.suffix == ".png":
             assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -308,7 +310,7 @@ def test_atomic_failure_keeps_earlier_report(result, tmp_path, monkeypatch):
     the earlier report byte for byte intact and no temporary file or directory behind."""
     first = write_loads_outputs(result, tmp_path, "demo", hull_pairs=(), plots=False)
     before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
-    assert {p.name for p in first} == set(before)
+    assert {p.name for p in first} | {MANIFEST_NAME} == set(before)
     real = loads_report.write_workbook
 
     def write_then_fail(path, *args, **kwargs):
@@ -329,7 +331,7 @@ def test_atomic_outputs_helper(tmp_path):
     moved into place; on an exception nothing is published and the temporary directory is
     gone; a new output directory that failed is removed again."""
     target = tmp_path / "a.txt"
-    target.write_text("old")
+    publish_earlier(tmp_path, {"a.txt": b"old"})
     with atomic_outputs(tmp_path) as out:
         out.path("a.txt").write_text("new")
         assert target.read_text() == "old"
@@ -338,7 +340,7 @@ def test_atomic_outputs_helper(tmp_path):
         out.path("a.txt").write_text("newer")
         out.path("b.txt").write_text("b")
         raise RuntimeError("boom")
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.txt"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == [MANIFEST_NAME, "a.txt"]
     assert target.read_text() == "new"
     fresh = tmp_path / "fresh"
     with pytest.raises(RuntimeError), atomic_outputs(fresh) as out:

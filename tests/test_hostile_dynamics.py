@@ -23,6 +23,7 @@ from hostile import copy_book, save_xlsx, set_parameter, small_dynamics_workbook
 from slingloads.cli import main
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import PAUSE_VARIABLE, TEMP_PREFIX
+from slingloads.io.common.ownership import MANIFEST_NAME, carries_mark
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.io.study import read_study
 from slingloads.limits import (
@@ -250,7 +251,9 @@ def test_simulate_and_campaign_outputs_neutralise_hostile_names(tmp_path):
 
 def test_report_outputs_lists_name_every_file_written(dynamics, tmp_path):
     """Every file `run` writes for the two analyses matches its report module's OUTPUTS
-    (the publisher replaces exactly those of the previous report)."""
+    (the publisher replaces exactly those of the previous report), and every one but the
+    CSV tables carries slingloads' mark (the Parquet histories in their metadata:
+    slingloads.io.common.ownership), so that a later run may replace it."""
     from slingloads.io.analyses import ANALYSES
 
     out = tmp_path / "out"
@@ -258,8 +261,10 @@ def test_report_outputs_lists_name_every_file_written(dynamics, tmp_path):
                  str(tmp_path / "cache")]) == 0
     patterns = [p for a in ANALYSES if a.name in ("multibody", "campaign")
                 for p in a.output_patterns("dyn")]
-    files = sorted(p.name for p in out.iterdir())
+    files = sorted(p.name for p in out.iterdir() if p.name != MANIFEST_NAME)
     assert files and all(any(p.fullmatch(f) for p in patterns) for f in files), files
+    assert "dyn-campaign-histories.parquet" in files
+    assert [f for f in files if not f.endswith(".csv") and not carries_mark(out / f)] == []
 
 
 def test_a_killed_simulate_leaves_the_previous_set_or_the_new_one(tmp_path):

@@ -11,6 +11,7 @@ be written ends with exit code 1, a refused argument with exit code 2, and nothi
 from __future__ import annotations
 
 import hashlib
+import json
 import os
 import subprocess
 import sys
@@ -18,7 +19,7 @@ import time
 from pathlib import Path
 
 import pytest
-from hostile import save_xlsx, set_parameter, small_workbook
+from hostile import publish_earlier, save_xlsx, set_parameter, small_workbook
 from openpyxl import load_workbook
 
 from slingloads.cli import main
@@ -30,6 +31,7 @@ from slingloads.io.common.atomic import (
     AtomicOutputs,
     atomic_outputs,
 )
+from slingloads.io.common.ownership import MANIFEST_NAME, file_entry
 
 STEM = "study"
 
@@ -68,6 +70,15 @@ def _fingerprint(folder):
     origin is checked by :func:`_xlsx_origin`)."""
     return {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
             for p in sorted(Path(folder).iterdir())}
+
+
+def _assert_manifest_lists_the_reports(folder, user_files=("notes.txt",)):
+    """The folder's manifest lists every report file as it is (size and SHA-256), and
+    neither the user's files nor itself."""
+    listed = json.loads((Path(folder) / MANIFEST_NAME).read_bytes())["files"]
+    reports = {p.name for p in Path(folder).iterdir()} - {MANIFEST_NAME, *user_files}
+    assert set(listed) == reports
+    assert all(listed[n] == file_entry(Path(folder) / n) for n in reports)
 
 
 def _xlsx_origin(folder, old_sha, new_sha):
@@ -121,11 +132,12 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
         if mode == "rename" and not folder.exists():
             atomic._recover(folder.parent, folder.resolve())  # what every run does first
         got = _fingerprint(folder)
+        _assert_manifest_lists_the_reports(folder)  # (it names the workbooks' digests)
         origin = _xlsx_origin(folder, digest["old"], digest["new"])
         for label, ref in reference.items():
             if set(got) == set(ref) and all(
                     origin.get(n) == label if n.endswith(".xlsx") else got[n] == ref[n]
-                    for n in got):
+                    for n in got if n != MANIFEST_NAME):
                 return label
         raise AssertionError(f"the output folder holds a mix: {sorted(got)} {origin}")
 
@@ -142,7 +154,7 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
                 time.sleep(kill[1] * duration)
             else:
                 deadline = time.monotonic() + 120
-                files = len(reference[target]) - 1  # the new set, without the user's file
+                files = len(reference[target]) - 2  # the new set: no user file, manifest
                 while not any(p.name.startswith(TEMP_PREFIX) and p.name not in before
                               and len(os.listdir(p)) >= files
                               for p in folder.parent.iterdir()):
@@ -186,9 +198,10 @@ def test_concurrent_runs_on_one_folder_keep_both_sets(inputs, tmp_path):
     first = _run(old_input, out, {PAUSE_VARIABLE: "0.3"})
     second = _run(other, out, {PAUSE_VARIABLE: "0.3"})
     assert first.wait() == 0 and second.wait() == 0
-    names = {p.name for p in out.iterdir()}
+    names = {p.name for p in out.iterdir()} - {MANIFEST_NAME}
     assert f"{STEM}-loads.xlsx" in names and "other-loads.xlsx" in names
     assert len(names) == 2 * len([n for n in names if n.startswith(f"{STEM}-")])
+    _assert_manifest_lists_the_reports(out, ())
 
 
 @pytest.fixture
@@ -327,15 +340,16 @@ def test_other_files_are_kept_and_stale_reports_removed(tmp_path):
     """A new set keeps the folder's other files (other inputs' reports, user files) and
     replaces the earlier files of its own analyses, also those it no longer writes."""
     out = tmp_path / "out"
-    out.mkdir()
-    for name in ("notes.txt", "other-loads.xlsx", f"{STEM}-hull_Vy_Mz_OLD.png"):
-        (out / name).write_text(name)
+    publish_earlier(out, {name: name.encode() for name in ("other-loads.xlsx",
+                                                          f"{STEM}-hull_Vy_Mz_OLD.png")})
+    (out / "notes.txt").write_text("notes.txt")
     pattern = atomic.output_pattern("{stem}-hull_*.png", STEM)
     with atomic_outputs(out, replaces=[pattern]) as outputs:
         outputs.path(f"{STEM}-hull_Vy_Mz_NEW.png").write_text("new")
     assert sorted(p.name for p in out.iterdir()) == [
-        "notes.txt", "other-loads.xlsx", f"{STEM}-hull_Vy_Mz_NEW.png"]
+        MANIFEST_NAME, "notes.txt", "other-loads.xlsx", f"{STEM}-hull_Vy_Mz_NEW.png"]
     assert (out / "notes.txt").read_text() == "notes.txt"
+    _assert_manifest_lists_the_reports(out)
 
 
 def test_template_refusals(tmp_path, capsys):

@@ -27,6 +27,7 @@ from slingloads.analyses.hook_loads import HookLoadOptions
 from slingloads.analyses.lateral import ParameterRanges, lateral_study
 from slingloads.cli import main
 from slingloads.constants import FOOT, G0, POUND_FORCE
+from slingloads.io.common.ownership import MANIFEST_NAME
 from slingloads.io.lateral.report import PLOTS, compute
 from slingloads.io.study import read_study
 from slingloads.models.carrier_motion import (
@@ -326,7 +327,7 @@ def test_run_command_includes_lateral(tmp_path):
     out = tmp_path / "out"
     assert main(["run", str(path), "--out", str(out), "--quiet"]) == 0
     assert sorted(p.name for p in out.iterdir()) == sorted(
-        ["only-lateral-lateral.xlsx", "only-lateral-lateral-histories.csv"]
+        [MANIFEST_NAME, "only-lateral-lateral.xlsx", "only-lateral-lateral-histories.csv"]
         + [f"only-lateral-lateral-{t}.png" for t in PLOTS])
 
 

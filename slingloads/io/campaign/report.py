@@ -30,12 +30,14 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from slingloads import __version__
 from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
+from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
+from slingloads.io.common.ownership import PARQUET_KEY
 from slingloads.io.common.report import check_units, column_blocks, warning_sections
 from slingloads.io.common.workbook import located
 
@@ -384,7 +386,9 @@ def start_figures(report, units, study):
 
 
 def write_histories(result, path):
-    """Every stored history as one Parquet file (SI, angles in degrees), ``run`` first.
+    """Every stored history as one Parquet file (SI, angles in degrees), ``run`` first, with
+    slingloads' mark in its key-value metadata (``PARQUET_KEY`` = the version:
+    :mod:`slingloads.io.common.ownership`).
 
     Returns
     -------
@@ -399,6 +403,7 @@ def write_histories(result, path):
     # the run ids by dictionary, the float columns split by byte (as in the run cache)
     options = {"compression": "zstd", "use_dictionary": ["run"],
                "use_byte_stream_split": list(HISTORY_LABELS)}
+    mark = {PARQUET_KEY: __version__}
 
     runs = [(run, result.keys[run]) for run in result.metrics["run"]]
     if result.no_parachute is not None:
@@ -421,7 +426,7 @@ def write_histories(result, path):
                 [pa.array(names)] + [pa.array(data[:, j]) for j in range(data.shape[1])],
                 names=["run", *HISTORY_LABELS])
             if writer is None:
-                writer = pq.ParquetWriter(path, table.schema, **options)
+                writer = pq.ParquetWriter(path, table.schema.with_metadata(mark), **options)
             writer.write_table(table)
             count += len(arrays)
         if writer is None:  # no history kept: an empty table with the columns
@@ -429,7 +434,7 @@ def write_histories(result, path):
                 [pa.array([], pa.string())] + [pa.array([], pa.float64())
                                                for _ in HISTORY_LABELS],
                 names=["run", *HISTORY_LABELS])
-            pq.write_table(empty, path, **options)
+            pq.write_table(empty.replace_schema_metadata(mark), path, **options)
     finally:
         if writer is not None:
             writer.close()
@@ -460,7 +465,7 @@ def write(report, out_dir, stem, units, study, figures=None):
     figs = _figures(report, units)
     names = ([f"{stem}-campaign.xlsx", f"{stem}-campaign-histories.parquet"]
              + [f"{stem}-campaign-{tag}.png" for tag in figs])
-    check_outputs_not_inputs(out_dir, names, inputs)
+    check_outputs(out_dir, names, inputs)
     jobs = {tag: job for tag, (_, job) in figs.items()}
     with drawings(jobs, figures, _PNG_DPI) as pngs:
         info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,

@@ -36,7 +36,7 @@ from slingloads.analyses.chute_sizing import (
 )
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
+from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section, write_workbook
@@ -535,7 +535,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     inputs = study.input_files
     names = ([f"{stem}-chute.xlsx", f"{stem}-chute-histories.csv"]
              + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
-    check_outputs_not_inputs(out_dir, names, inputs)
+    check_outputs(out_dir, names, inputs)
     titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
               "static-moments": "Static yawing moments at the neutral area",
               "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",

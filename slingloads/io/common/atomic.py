@@ -28,6 +28,14 @@ refers to) is compared with the outputs by resolved path, by file identity (hard
 links) and by case-folded name (case-insensitive file systems), before anything is computed
 (:meth:`AtomicOutputs.check`) and again for each file.
 
+Nor does a set replace (or remove as an earlier file of its report) a file that slingloads did
+not write: each file of ``DIR`` that it would replace must carry slingloads' mark or be listed,
+unchanged, in the folder's manifest (:mod:`slingloads.io.common.ownership`), checked with
+the inputs (:meth:`AtomicOutputs.check`, :func:`check_outputs`) and again under the lock
+before publishing. The manifest
+(``.slingloads.manifest.json``) is written into the staging folder with the set, listing the
+new files and keeping the entries of the files carried over.
+
 Examples
 --------
 >>> import tempfile, pathlib
@@ -55,6 +63,14 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from slingloads.errors import InputError, OutputError
+from slingloads.io.common.ownership import (
+    MANIFEST_NAME,
+    file_entry,
+    foreign_reason,
+    manifest_bytes,
+    read_manifest,
+    refusal,
+)
 from slingloads.limits import MAX_OUTPUT_ENTRIES
 
 try:  # POSIX advisory locks; elsewhere runs are not serialised
@@ -149,12 +165,69 @@ def check_not_input(path, inputs):
                              str(path), file=str(source))
 
 
-def check_outputs_not_inputs(out_dir, names, inputs):
-    """:func:`check_not_input` for each file ``names`` of ``out_dir``: a report checks its
-    whole set before the slow work, not when it reaches the one file that would replace an
-    input."""
+#: Why a run would replace a file of the output folder: it has an output's name.
+SAME_NAME = "an output of this run has its name"
+#: Why a run would remove a file of the output folder: an earlier-report pattern
+#: (``replaces``) names it.
+EARLIER_FILE = "this run would remove it as an earlier file of the same report"
+
+
+def check_outputs(out_dir, names, inputs):
+    """Check the files ``names`` of ``out_dir`` before the slow work: none is an input
+    (:func:`check_not_input`) and none would replace a file of ``out_dir`` that slingloads did
+    not write (:func:`check_replaceable`). A report checks its whole set this way, rather
+    than stopping at the one file that is refused when it comes to write it.
+
+    Raises
+    ------
+    InputError
+        Naming the input, or the file that is not slingloads' own.
+    """
     for name in names:
         check_not_input(Path(out_dir) / name, inputs)
+    folded = {str(n).casefold() for n in names}
+    check_replaceable(out_dir, lambda name: SAME_NAME if name.casefold() in folded else None)
+
+
+def check_replaceable(out_dir, clash_of):
+    """Refuse to replace or remove a file of ``out_dir`` that is not slingloads' own.
+
+    Parameters
+    ----------
+    out_dir : path-like
+        Output folder (nothing to check if it does not exist yet).
+    clash_of : callable
+        ``clash_of(file name)``: what the run would do to that file of the folder (a clause
+        of the message, :data:`SAME_NAME` or :data:`EARLIER_FILE`), or None if it keeps it.
+
+    Returns
+    -------
+    dict
+        The folder's manifest entries (:func:`~slingloads.io.common.ownership.read_manifest`).
+
+    Raises
+    ------
+    InputError
+        Naming the first such file, why it is not slingloads' own, and what to do; or if the
+        folder's manifest is not one slingloads wrote.
+    """
+    folder = Path(os.path.realpath(os.fspath(out_dir)))
+    try:
+        entries = sorted(os.scandir(folder), key=lambda e: e.name)
+    except OSError:  # no folder yet (or one that cannot be listed: refused elsewhere)
+        return {}
+    manifest = read_manifest(folder)
+    for entry in entries:
+        clash = None if entry.name == MANIFEST_NAME else clash_of(entry.name)
+        if clash is None:
+            continue
+        if entry.is_file(follow_symlinks=False):
+            why = foreign_reason(entry.path, manifest)
+        else:
+            why = "it is a symbolic link or a special file, which slingloads never writes"
+        if why is not None:
+            raise refusal(Path(out_dir) / entry.name, why, clash)
+    return manifest
 
 
 def _os_error(err, what, path):
@@ -189,6 +262,8 @@ class AtomicOutputs:
     replaces : iterable of re.Pattern
         Names of files of ``out_dir`` that this set replaces even when it does not write them
         (the earlier outputs of the same analyses of the same input); other files are kept.
+        A file this set would replace (by name or pattern) must be slingloads' own: see
+        :func:`check_replaceable`.
     """
 
     def __init__(self, out_dir, inputs=(), replaces=()):
@@ -220,7 +295,7 @@ class AtomicOutputs:
             file system, a mount point) or a name is too long for the file system.
         InputError
             If the folder is the current folder or holds sub-folders, or an output of this
-            set could replace an input.
+            set could replace an input or a file slingloads did not write.
         """
         real = self._resolve()
         parent = real.parent
@@ -254,6 +329,9 @@ class AtomicOutputs:
                 raise OutputError("an output path is too long for the file system: use a "
                                   "shorter output folder", str(real / name)[:80] + "...")
         self._check_inputs(real)
+        if existing == real:
+            folded = {str(n).casefold() for n in names}
+            check_replaceable(real, lambda name: self._clash(name, folded))
         return self
 
     def _resolve(self):
@@ -341,6 +419,18 @@ class AtomicOutputs:
                                      "overwritten): choose another output folder",
                                      entry.path, file=str(source))
 
+    def _clash(self, name, folded=()):
+        """What this set would do to the file ``name`` of the output folder (a clause of the
+        refusal, :data:`SAME_NAME` or :data:`EARLIER_FILE`), or None if it keeps it; case is
+        ignored (a case-insensitive file system makes them one file). ``folded``: more
+        output names (case-folded) known in advance."""
+        key = name.casefold()
+        if key in self._folded or key in folded:
+            return SAME_NAME
+        if self._claims(name):
+            return EARLIER_FILE
+        return None
+
     def _claims(self, name):
         """True if a file of this name in the output folder would be replaced by this set."""
         folded = name.casefold()
@@ -418,6 +508,9 @@ class AtomicOutputs:
         if name.casefold() in self._folded:
             raise InputError("two outputs of this run have the same file name (case "
                              "ignored): one would be lost", name)
+        if name.casefold() == MANIFEST_NAME.casefold():
+            raise InputError("this name is reserved for the output folder's manifest of the "
+                             "files slingloads wrote", name)
         final = self.out_dir / name
         check_not_input(final, self.inputs)
         self._names[name] = final
@@ -444,13 +537,17 @@ class AtomicOutputs:
             raise RuntimeError(f"outputs were announced but not written: {missing}")
         real = self._resolve()
         parent = real.parent
+        written = {name: file_entry(self._stage / name) for name in self._names}
         _pause()
         with _locked(parent):
             _recover(parent, real)
             if real.exists():
                 self._check_folder(real)
                 self._check_inputs(real)
-                self._carry_over(real)
+                manifest = check_replaceable(real, self._clash)
+                carried = self._carry_over(real)
+                kept = {n: manifest[n] for n in carried if n in manifest}
+                self._write_manifest({**kept, **written})
                 _pause()
                 os.chmod(self._stage, stat.S_IMODE(os.stat(real).st_mode))
                 _exchange(self._stage, real)
@@ -459,6 +556,7 @@ class AtomicOutputs:
                 # to the next run's recovery
                 self._old = self._stage
             else:
+                self._write_manifest(written)
                 umask = os.umask(0)
                 os.umask(umask)
                 os.chmod(self._stage, 0o777 & ~umask)
@@ -470,12 +568,19 @@ class AtomicOutputs:
         if self._old is not None:
             shutil.rmtree(self._old, ignore_errors=True)
 
+    def _write_manifest(self, files):
+        """The manifest of the new set (``{file name: entry}``) into the staging folder."""
+        (self._stage / MANIFEST_NAME).write_bytes(manifest_bytes(files))
+
     def _carry_over(self, real):
         """Hard-link (or copy) into the staging folder the files of the output folder that
-        this set neither writes nor replaces."""
+        this set neither writes nor replaces (nor the folder's manifest, which the set
+        rewrites); returns their names."""
+        carried = []
         for entry in os.scandir(real):
             name = entry.name
-            if name in self._names or any(p.match(name) for p in self.replaces):
+            if (name in self._names or name == MANIFEST_NAME
+                    or any(p.match(name) for p in self.replaces)):
                 continue
             source, target = entry.path, self._stage / name
             if entry.is_symlink():
@@ -494,6 +599,8 @@ class AtomicOutputs:
                 raise InputError("the output folder holds a special file (pipe, socket or "
                                  "device): write the reports to a folder of their own",
                                  source)
+            carried.append(name)
+        return carried
 
     def _cleanup(self):
         if self._stage_fd is not None:

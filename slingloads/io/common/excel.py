@@ -1161,6 +1161,7 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
                                      ignore_cleanup_errors=True) as tmp:
         wb = _Workbook(path, stream=_table_cells(sheets) > IN_MEMORY_CELLS, tmpdir=tmp)
         wb.set_properties({"author": creator, **({"title": info.title} if info else {})})
+        mark_report(wb)
         written = []
         if info is not None:
             written += write_cover_sheet(wb, COVER_SHEET, cover_sections(info, plan), info)
@@ -1180,6 +1181,16 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
                                           title=images_title)
         wb.save()
     return written
+
+
+def mark_report(wb):
+    """Give a workbook slingloads' mark: the custom document property
+    :data:`~slingloads.io.common.ownership.XLSX_PROPERTY` = ``slingloads <version>``, by
+    which a later run knows it may replace the file (no cell changes)."""
+    from slingloads import __version__
+    from slingloads.io.common.ownership import XLSX_PROPERTY
+
+    wb.set_custom_property(XLSX_PROPERTY, f"slingloads {__version__}")
 
 
 def write_cover_sheet(wb, name, sections, info):

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from importlib import import_module
 
 from slingloads.io.common.helper import Call, Helper, current, gather, running
+from slingloads.io.common.ownership import PNG_SOFTWARE
 
 #: Width of every report figure: the printable width of an A4 portrait page. [in]
 PAGE_WIDTH = 7.0
@@ -311,9 +312,11 @@ def figure_png(figure, dpi=100):
 
 
 def _png(figure, dpi):
-    """PNG bytes of a matplotlib Figure as it is."""
+    """PNG bytes of a matplotlib Figure as it is, with slingloads' mark (the text chunk
+    ``Software`` = :data:`~slingloads.io.common.ownership.PNG_SOFTWARE`, a fixed text in
+    place of matplotlib's version: the bytes stay reproducible)."""
     buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None},
+    figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": PNG_SOFTWARE},
                    pil_kwargs={"compress_level": 1})  # fast; files about 30 % larger
     return buffer.getvalue()
 

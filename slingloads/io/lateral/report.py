@@ -46,7 +46,7 @@ from slingloads.analyses.lateral import lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
+from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section, write_workbook
@@ -506,7 +506,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     inputs = study.input_files
     names = ([f"{stem}-lateral.xlsx", f"{stem}-lateral-histories.csv"]
              + [f"{stem}-lateral-{tag}.png" for tag in PLOTS])
-    check_outputs_not_inputs(out_dir, names, inputs)
+    check_outputs(out_dir, names, inputs)
     titles = {"histories": "Critical case: time histories (30 deg line)",
               "max-angle": "Largest load angle against carrier acceleration",
               "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",

@@ -41,7 +41,7 @@ import slingloads
 from slingloads.analyses.fe_loads import HOOK_POINTS, ModelAxes, PointLoadCases
 from slingloads.constants import G0, INCH, POUND_FORCE
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs
+from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.report import digest_frame
 from slingloads.io.common.workbook import located
 
@@ -144,9 +144,12 @@ def write_nastran(result, path, **options):
     Raises
     ------
     InputError
-        On a bad option (see :func:`prepare_nastran`); nothing is written then.
+        On a bad option (see :func:`prepare_nastran`), or if ``path`` is a file slingloads
+        did not write (:func:`slingloads.io.common.atomic.check_outputs`); nothing is
+        written then.
     """
     path = Path(path)
+    check_outputs(path.parent, [path.name], ())
     deck = prepare_nastran(result, **options)
     with atomic_outputs(path.parent) as out:
         deck.write(out.path(path.name))

@@ -44,7 +44,7 @@ from slingloads.analyses.envelopes import component_index
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs, safe_file_part
+from slingloads.io.common.atomic import atomic_outputs, check_outputs, safe_file_part
 from slingloads.io.common.cover import info_from_digest, report_info
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import (
@@ -697,7 +697,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         deck = prepare_nastran(result, units=units, inputs_digest=inputs_digest,
                                **({} if nastran is True else dict(nastran)))
         names.append(f"{stem}-loads.bdf")
-    check_outputs_not_inputs(out_dir, names, input_paths)
+    check_outputs(out_dir, names, input_paths)
     if info is None:
         info = info_from_digest(inputs_digest, title=TITLE, analysis=ANALYSIS,
                                 study=result.study.name, units=units, conventions=CONVENTIONS)

@@ -32,7 +32,7 @@ import pandas as pd
 from slingloads.analyses.multibody import linearise, simulate, trim
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs_not_inputs
+from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section, write_workbook
@@ -431,7 +431,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
     names = ([f"{stem}-multibody.xlsx", f"{stem}-multibody-histories.csv"]
              + [f"{stem}-multibody-{tag}.png" for tag in jobs])
-    check_outputs_not_inputs(out_dir, names, inputs)
+    check_outputs(out_dir, names, inputs)
     titles = {"histories": "Time histories: yaw, sideslip, cable swing, tension",
               "eigenvalues": "Eigenvalues about the trim",
               "views": "Side and top views at trim and at the largest excursion"}
