@@ -23,7 +23,8 @@ class InputError(SlingloadsError, ValueError):
     rule : str
         The rule that was broken, phrased as the rule ("mass must be > 0").
     value : object, optional
-        The offending value, echoed with ``repr``.
+        The offending value, echoed with ``repr`` (numpy scalars and arrays as plain Python
+        numbers and lists, never as ``np.float64(...)``).
     file, sheet, cell : str, optional
         Where the value was read from, when it came from a workbook or CSV file.
     unit : str, optional
@@ -38,7 +39,7 @@ class InputError(SlingloadsError, ValueError):
     def __init__(self, rule, value=None, *, file=None, sheet=None, cell=None, unit=None,
                  field=None, index=None):
         self.rule = rule
-        self.value = value
+        self.value = plain(value)
         self.file = file
         self.sheet = sheet
         self.cell = cell
@@ -85,6 +86,18 @@ class InputError(SlingloadsError, ValueError):
             value = f": value {self.value!r}{unit}"
         text = f"{self.rule}{value}"
         return f"{prefix}: {text}" if prefix else text
+
+
+def plain(value):
+    """``value`` with numpy scalars and arrays (also inside tuples and lists) turned into
+    Python numbers and lists, so that a message shows ``5.0``, not ``np.float64(5.0)``."""
+    if isinstance(value, (list, tuple)):
+        items = [plain(v) for v in value]
+        return items if isinstance(value, list) else tuple(items)
+    tolist = getattr(value, "tolist", None)  # numpy scalars and arrays (no numpy import here)
+    if tolist is not None and type(value).__module__ == "numpy":
+        return tolist()
+    return value
 
 
 class UnitError(InputError):

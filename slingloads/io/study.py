@@ -9,12 +9,15 @@ from dataclasses import dataclass, field
 
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_airframe
+from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
 from slingloads.io.common.cover import IDENTIFICATION, now_stamp
 from slingloads.io.common.parameters import StudyParameters
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.models.airframe import Airframe
+
+AIRFRAME_SHEETS = {s.name: s for s in SHEETS}
 
 
 @dataclass
@@ -56,6 +59,13 @@ class WorkbookStudy:
     cells : dict
         Cell of each Study parameter given, by lower-case name (to locate errors found while
         computing).
+    written : dict
+        ``(value as written, unit as written)`` of each Study parameter given, by lower-case
+        name: what an error located at its cell echoes.
+    tables : dict
+        Tables read from the sheets, by sheet name (at least MassItems and Hardpoints), so
+        that an error found while computing can be located at the cells of its inputs, with
+        their values as written.
     runtime : dict
         How to execute (set by the command line): ``scheduler``, ``workers``, ``cache``,
         ``timeout``, ``progress`` of the campaign.
@@ -75,6 +85,8 @@ class WorkbookStudy:
     input_files: list = field(default_factory=list)
     warnings: list = field(default_factory=list)
     cells: dict = field(default_factory=dict)
+    written: dict = field(default_factory=dict)
+    tables: dict = field(default_factory=dict)
     identification: dict = field(default_factory=dict)
     run_date: str = field(default_factory=now_stamp)
     runtime: dict = field(default_factory=dict)
@@ -103,15 +115,23 @@ class WorkbookStudy:
     @contextlib.contextmanager
     def located(self, fields=None):
         """Locate an :class:`InputError` raised while computing: in this workbook, at the
-        Study cell of the parameter ``fields[error.field]`` when there is one."""
+        Study cell of the parameter ``fields[error.field]`` when there is one, echoing that
+        parameter's value as written with its unit (not the model's value)."""
         fields = fields or {}
         try:
             yield
         except InputError as err:
             name = fields.get(err.field)
             if err.cell is None and err.sheet in (None, STUDY_SHEET) and name is not None:
-                cell = self.cells.get(name.lower(), "(default)")
-                raise err.located(file=self.path, sheet=STUDY_SHEET, cell=cell) from None
+                key = name.lower()
+                cell = self.cells.get(key, "(default)")
+                if key in self.written:
+                    value, unit = self.written[key]
+                else:  # the parameter's default
+                    spec = all_parameters()[key]
+                    value, unit = spec.default, spec.unit
+                raise err.located(file=self.path, sheet=STUDY_SHEET, cell=cell, value=value,
+                                  unit=unit or None) from None
             raise err.located(file=self.path) from None
 
 
@@ -168,6 +188,9 @@ def _build(reader, path, only, sha256, on_read=None):
                           run=run, airframe=airframe,
                           parameters={k: v[0] for k, v in params.given.items()}, points=refs,
                           cells={k: v[1] for k, v in params.given.items()},
+                          written={k: (v.raw, v.unit) for k, v in params.given.items()},
+                          tables={name: reader.table(AIRFRAME_SHEETS[name])
+                                  for name in ("MassItems", "Hardpoints")},
                           identification={k: str(params(k) or "").strip()
                                           for k in IDENTIFICATION})
     for analysis in ANALYSES:

@@ -23,9 +23,14 @@ from slingloads.errors import InputError
 def _strictly_increasing(values, name, field=None):
     values = np.asarray(values, dtype=float)
     if values.ndim != 1 or values.size < 2:
-        raise InputError(f"{name} needs at least two breakpoints", values.tolist())
+        one = values.ndim == 1 and values.size == 1
+        raise InputError(f"{name} needs at least two breakpoints (it is never extrapolated)",
+                         np.degrees(values).tolist(), field=field if one else None,
+                         index=0 if one else None)
     if not np.all(np.isfinite(values)):
-        raise InputError(f"{name} breakpoints must be finite numbers", values.tolist())
+        bad = int(np.argmax(~np.isfinite(values)))
+        raise InputError(f"{name} breakpoints must be finite numbers", values[bad].item(),
+                         field=field, index=bad)
     steps = np.diff(values)
     if np.any(steps <= 0):
         bad = int(np.argmax(steps <= 0))
@@ -47,7 +52,7 @@ def _check_inside(query, grid, name, what):
         raise InputError(
             f"{name} = {np.degrees(bad):.6g} deg is outside the {what} table's range "
             f"[{np.degrees(lo):.6g}, {np.degrees(hi):.6g}] deg; no extrapolation is done",
-            float(np.degrees(bad)),
+            float(np.degrees(bad)), field=name,
         )
     return np.clip(q, lo, hi)  # only round-off is clipped here
 
@@ -79,11 +84,15 @@ class Table1D:
         coeffs = {}
         for key, values in self.coefficients.items():
             values = np.asarray(values, dtype=float)
-            if values.shape != angle.shape or not np.all(np.isfinite(values)):
+            if values.shape != angle.shape:
                 raise InputError(
                     f"{self.what} coefficient {key} needs one finite value per breakpoint",
-                    values.tolist(),
-                )
+                    values.tolist())
+            if not np.all(np.isfinite(values)):
+                bad = int(np.argmax(~np.isfinite(values)))
+                raise InputError(
+                    f"{self.what} coefficient {key} needs one finite value per breakpoint",
+                    values[bad].item(), field=key, index=bad)
             coeffs[key] = values
         object.__setattr__(self, "angle", angle)
         object.__setattr__(self, "coefficients", coeffs)

@@ -69,14 +69,18 @@ class FlightCondition:
     def __post_init__(self):
         eas = float(self.eas)
         if not np.isfinite(eas) or eas < 0:
-            raise InputError("equivalent airspeed must be >= 0 [m/s]", eas)
+            raise InputError("equivalent airspeed must be >= 0 [m/s]", eas, field="eas")
         alpha = float(self.alpha)
         if not np.isfinite(alpha):
-            raise InputError("trim angle of attack must be a finite number [rad]", alpha)
+            raise InputError("trim angle of attack must be a finite number [rad]", alpha,
+                             field="alpha")
         object.__setattr__(self, "eas", eas)
         object.__setattr__(self, "alpha", alpha)
         object.__setattr__(self, "density_altitude", float(self.density_altitude))
-        isa_density(self.density_altitude)  # validates the altitude
+        try:
+            isa_density(self.density_altitude)  # validates the altitude
+        except InputError as err:  # the field names the argument, for the io layer
+            raise InputError(err.rule, err.value, field="density_altitude") from None
 
     @property
     def ias(self):

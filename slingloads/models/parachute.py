@@ -41,6 +41,8 @@ PAPER_CD_RANGE = np.radians(8.0)
 CANOPY_CD = 1.0
 #: Dynamic-pressure ratio at the canopy in the fuselage wake (the paper's q_loss = 0.95). [-]
 WAKE_RATIO = 0.95
+#: Largest force coefficient of a parachute table (a flat plate normal to the flow has 1.17). [-]
+PARACHUTE_CD_MAX = 2.0
 #: Axes a parachute table may be given in, with the name of its coefficient column.
 PARACHUTE_AXES = {"wind": "CD", "canopy": "CT"}
 
@@ -116,16 +118,20 @@ class Parachute:
     def __post_init__(self):
         area = float(self.area)
         if not np.isfinite(area) or area <= 0:
-            raise InputError("parachute flat-plate area must be > 0 [m^2]", area)
+            raise InputError("parachute flat-plate area must be > 0 [m^2]", area,
+                             field="area")
         eta = float(self.wake_ratio)
         if not (0 < eta <= 1):
-            raise InputError("parachute wake dynamic-pressure ratio must lie in (0, 1]", eta)
+            raise InputError("parachute wake dynamic-pressure ratio must lie in (0, 1]", eta,
+                             field="wake_ratio")
         line = float(self.line_length)
         if not np.isfinite(line) or line <= 0:
-            raise InputError("parachute line length must be > 0 [m]", line)
+            raise InputError("parachute line length must be > 0 [m]", line,
+                             field="line_length")
         k = float(self.opening_factor)
         if not np.isfinite(k) or k < 1:
-            raise InputError("parachute opening-load factor must be >= 1", k)
+            raise InputError("parachute opening-load factor must be >= 1", k,
+                             field="opening_factor")
         if self.axes not in PARACHUTE_AXES:
             raise InputError(f"parachute table axes must be one of {list(PARACHUTE_AXES)}",
                              self.axes)
@@ -137,10 +143,12 @@ class Parachute:
             raise InputError(f"a parachute table in {self.axes} axes needs a {column} column",
                              sorted(cd.coefficients))
         values = cd.coefficients[column]
-        if np.any((values <= 0) | (values > 2.0)):
-            raise InputError(f"parachute {column} must lie in (0, 2] (a flat plate normal to "
-                             "the flow has 1.17)",
-                             float(values[(values <= 0) | (values > 2)][0]))
+        bad = (values <= 0) | (values > PARACHUTE_CD_MAX)
+        if np.any(bad):
+            i = int(np.argmax(bad))
+            raise InputError(f"parachute {column} must lie in (0, {PARACHUTE_CD_MAX:g}] (a flat "
+                             "plate normal to the flow has 1.17)", float(values[i]),
+                             field=column, index=i)
         if not (cd.angle[0] <= 0 <= cd.angle[-1]):
             raise InputError("parachute CD table must include alpha = 0 deg",
                              np.degrees(cd.angle).tolist())

@@ -73,12 +73,16 @@ class SlungBody:
     name: str = "HC"
 
     def __post_init__(self):
-        object.__setattr__(self, "mass", _positive(
-            self.mass, f"mass of {self.name!r} must be > 0 [kg]"))
-        object.__setattr__(self, "roll_inertia", _positive(
-            self.roll_inertia, f"roll inertia of {self.name!r} must be > 0 [kg m^2]"))
-        object.__setattr__(self, "cg_below_hub", _non_negative(
-            self.cg_below_hub, f"CG distance below the hub of {self.name!r} must be >= 0 [m]"))
+        for name, check, rule in (
+                ("mass", _positive, f"mass of {self.name!r} must be > 0 [kg]"),
+                ("roll_inertia", _positive, f"roll inertia of {self.name!r} must be > 0 "
+                                            "[kg m^2]"),
+                ("cg_below_hub", _non_negative, f"CG distance below the hub of {self.name!r} "
+                                                "must be >= 0 [m]")):
+            try:
+                object.__setattr__(self, name, check(getattr(self, name), rule))
+            except InputError as err:  # the field names the argument, for the io layer
+                raise InputError(err.rule, err.value, field=name) from None
 
     @property
     def radius_of_gyration(self):

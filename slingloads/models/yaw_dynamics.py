@@ -127,7 +127,8 @@ class YawModel:
                              type(self.condition).__name__)
         if self.condition.hover:
             raise InputError("the yaw model needs an airspeed > 0 [m/s] (its stiffness and "
-                             "damping come from the free stream)", self.condition.eas)
+                             "damping come from the free stream)", self.condition.eas,
+                             field="airspeed")
         object.__setattr__(self, "_half_rho", 0.5 * self.condition.density)
         object.__setattr__(self, "_tas", self.condition.tas)
         hub = self.hardpoints.hub
@@ -296,9 +297,12 @@ class YawModel:
                                                                constant_values=np.nan))
         found = np.isfinite(roots).any(axis=1)
         if not found.all():
+            i, j = int(np.argmin(found)), int(np.argmin(np.abs(grid)))
+            area = f", parachute area {areas[i]:.4g} m^2" if areas[i] else ", no parachute"
             raise InputError(f"no yaw trim within +-{np.degrees(search):.3g} deg of sideslip: "
-                             f"the yawing moment does not change sign",
-                             float(total[np.argmin(found), 400]))
+                             f"the yawing moment about the hub does not change sign "
+                             f"({total[i, j]:.4g} N m at beta = {np.degrees(grid[j]):.3g} deg"
+                             f"{area})", field="trim")
         nearest = np.nanargmin(np.abs(roots), axis=1)
         return roots[np.arange(areas.size), nearest]
 

@@ -15,6 +15,7 @@ import numpy as np
 from slingloads.errors import InputError
 from slingloads.io.airframe.schema import HARDPOINT_KINDS, SHEETS
 from slingloads.io.common.atomic import safe_file_part
+from slingloads.io.common.locate import column_quantity, quantity, quantity_range
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import cell_name, check_unique, located
 from slingloads.limits import MAX_AIRFRAME_SIZE
@@ -27,8 +28,8 @@ from slingloads.models.aerodynamics import (
     FuselageAero,
     fuselage_columns,
 )
-from slingloads.models.airframe import Airframe, Hardpoints, MassItems, check_inside
-from slingloads.models.parachute import PARACHUTE_AXES, Parachute
+from slingloads.models.airframe import Airframe, Hardpoints, MassItems
+from slingloads.models.parachute import PARACHUTE_AXES, PARACHUTE_CD_MAX, Parachute
 
 _SPEC = {s.name: s for s in SHEETS}
 
@@ -74,8 +75,8 @@ def read_airframe(reader, params):
     axis = (params("reference axis y"), params("reference axis z"))
     mast = _mast_axis(params)
     _mass_item_warnings(reader, items_t, items, axis)
-    hp_t, points = _hardpoint_rows(reader, items, axis)
-    aero_points, aero_weights = _aero_points(reader, items, axis)
+    hp_t, points = _hardpoint_rows(reader, params, items_t, items, axis)
+    aero_points, aero_weights = _aero_points(reader, params, items_t, items, axis)
     with hp_t.located({"mast_weights": "weight"}):
         hardpoints = Hardpoints(
             hub=points["hub"][0][1],
@@ -138,10 +139,13 @@ def _check_stations_span(reader, stations, items_t, hp_t, airframe):
     outside = []
     for i, x in enumerate(stations["x"]):
         if x < lo - reach or x > hi + reach:
-            raise stations.error("x", i, f"cut station lies far outside the airframe: the "
-                                 f"load points span x = [{lo:.4g}, {hi:.4g}] m and a cut "
-                                 f"more than the airframe length ({reach:.4g} m) beyond "
-                                 "them is refused (check the unit of the header)")
+            raise stations.error("x", i, (
+                f"cut station lies far outside the airframe: the load points (mass items, "
+                f"hardpoints, aerodynamic points) span x = "
+                f"{quantity_range(lo, hi, stations.units.get('x'), 'length')} and a cut more "
+                f"than the airframe length "
+                f"({column_quantity(stations, 'x', reach, 'length')}) beyond them is refused "
+                "(check the unit of the header)"))
         if not lo <= x <= hi:
             outside.append(f"{stations['id'][i]} ({stations.cell('x', i)})")
     if outside:
@@ -169,9 +173,11 @@ def _mass_items(reader):
         items = MassItems(tuple(items_t["id"]), masses, position, inertia,
                           tuple(items_t["description"]) if items_t.has("description") else ())
     if items.total_mass < MIN_TOTAL_MASS:
-        raise items_t.error("mass", int(np.argmax(masses)), f"the mass items weigh "
-                            f"{items.total_mass:.3g} kg in all, less than the "
-                            f"{MIN_TOTAL_MASS:g} kg of any aircraft (check the header's unit)")
+        raise items_t.error("mass", int(np.argmax(masses)), (
+            f"the mass items weigh {column_quantity(items_t, 'mass', items.total_mass, 'mass', 3)}"
+            f" in all, less than the {MIN_TOTAL_MASS:g} kg "
+            f"({column_quantity(items_t, 'mass', MIN_TOTAL_MASS, 'mass', 3)}) of any aircraft "
+            "(check the header's unit)"))
     _check_rigid_inertia(items_t, items)
     return items, items_t
 
@@ -205,13 +211,16 @@ def _check_extent(items_t, position):
         if values.max() - values.min() > MAX_AIRFRAME_SIZE:
             median = float(np.median(values))
             i = int(np.argmax(np.abs(values - median)))
-            raise items_t.error(column, i, f"mass items span {values.max() - values.min():.4g}"
-                                f" m along {column}, more than the {MAX_AIRFRAME_SIZE:g} m "
-                                "an airframe may measure: this item lies far outside the "
-                                "others (check its value and the header's unit)")
+            size = values.max() - values.min()
+            raise items_t.error(column, i, (
+                f"mass items span {column_quantity(items_t, column, size, 'length')} along "
+                f"{column}, more than the {MAX_AIRFRAME_SIZE:g} m "
+                f"({column_quantity(items_t, column, MAX_AIRFRAME_SIZE, 'length')}) an "
+                "airframe may measure: this item lies far outside the others (check its value "
+                "and the header's unit)"))
 
 
-def _hardpoint_rows(reader, items, axis):
+def _hardpoint_rows(reader, params, items_t, items, axis):
     """The Hardpoints table and its rows by kind: ``{kind: [(id, position, weight, row)]}``."""
     hp_t = reader.table(_SPEC["Hardpoints"])
     check_unique(reader, hp_t, "id")
@@ -223,8 +232,8 @@ def _hardpoint_rows(reader, items, axis):
                              f"{list(HARDPOINT_KINDS)}")
         p = np.array([hp_t["x"][i], hp_t["y"][i], hp_t["z"][i]])
         if k != "aero_reference":
-            with located(reader.file, hp_t.sheet, hp_t.cell("x", i)):
-                check_inside(items, axis, f"{hp_t['id'][i]!r}", p)
+            _check_inside(params, items_t, items, axis, hp_t, i,
+                          f"hardpoint {hp_t['id'][i]!r}", p)
         w = hp_t["weight"][i] if hp_t.has("weight") else 1.0
         points[k].append((hp_t["id"][i], p, w, i))
     for kind, lo, hi in (("hub", 1, 1), ("mast_foot", 1, None), ("chute", 0, 1),
@@ -233,23 +242,61 @@ def _hardpoint_rows(reader, items, axis):
         if n < lo or (hi is not None and n > hi):
             want = f"exactly {lo}" if lo == hi else (f"at least {lo}" if hi is None
                                                     else f"at most {hi}")
-            cell = (hp_t.cell("kind", points[kind][hi][3]) if hi is not None and n > hi
-                    else "B1")
-            raise reader.error(f"the Hardpoints sheet needs {want} row(s) of kind {kind!r}",
-                               n, hp_t.sheet, cell)
+            rule = f"the Hardpoints sheet needs {want} row(s) of kind {kind!r} (it has {n})"
+            if hi is not None and n > hi:  # at the first row too many
+                raise hp_t.error("kind", points[kind][hi][3], rule)
+            raise reader.error(rule, None, hp_t.sheet, "B1")
     return hp_t, points
 
 
-def _aero_points(reader, items, axis):
+def _check_inside(params, items_t, items, axis, table, i, label, point):
+    """A point of row ``i`` of ``table`` (Hardpoints, AeroPoints) lies inside the airframe
+    (the rule of :func:`~slingloads.models.airframe.check_inside`), else an error at the cell
+    to change, with the value as written and the mass items' range in that cell's unit.
+
+    Inside means: x within the mass items' x range (where the beam exists), and a distance
+    from the loads reference axis no larger than that range (at least 1 m).
+    """
+    x = items.position[:, 0]
+    lo, hi = int(np.argmin(x)), int(np.argmax(x))
+    if not x[lo] <= point[0] <= x[hi]:
+        where = quantity_range(x[lo], x[hi], table.units.get("x"), "length")
+        if x[lo] == x[hi]:
+            rule = (f"{label} lies outside the airframe: the mass items all lie at x = "
+                    f"{column_quantity(table, 'x', x[lo], 'length')} ({items_t.sheet} "
+                    f"{items_t.cell('x', lo)}{' ...' if len(x) > 1 else ''}), so the airframe "
+                    "has no length along x for the loads; give the mass items along the "
+                    "airframe (or check this x and the headers' units)")
+        else:
+            rule = (f"{label} lies outside the airframe: x must lie within the mass items' x "
+                    f"range {where} ({items_t.sheet} {items_t.cell('x', lo)} to "
+                    f"{items_t.cell('x', hi)}); check the value and the headers' units")
+        raise table.error("x", i, rule)
+    if not (table.has("y") and table.has("z")):
+        return
+    reach = max(float(x[hi] - x[lo]), 1.0)
+    dy, dz = point[1] - axis[0], point[2] - axis[1]
+    if np.hypot(dy, dz) > reach:
+        column = "y" if abs(dy) >= abs(dz) else "z"
+        axis_text = ", ".join(f"{n!r} {params.quantity(n, v)}" for n, v in
+                              (("reference axis y", axis[0]), ("reference axis z", axis[1])))
+        raise table.error(column, i, (
+            f"{label} lies outside the airframe: it lies "
+            f"{column_quantity(table, column, np.hypot(dy, dz), 'length')} from the loads "
+            f"reference axis ({axis_text}), more than the airframe length "
+            f"{column_quantity(table, column, reach, 'length')} (the mass items' x extent, at "
+            f"least 1 m); check the value and the headers' units"))
+
+
+def _aero_points(reader, params, items_t, items, axis):
     """The optional AeroPoints sheet: stations and weights, or (None, None)."""
     if not reader.has_sheet("AeroPoints"):
         return None, None
     ap = reader.table(_SPEC["AeroPoints"])
     aero_points, aero_weights = ap["x"], ap["weight"]
     for i, xa in enumerate(aero_points):
-        with located(reader.file, ap.sheet, ap.cell("x", i)):
-            check_inside(items, axis, f"aerodynamic point {i + 1}",
-                         np.array([xa, axis[0], axis[1]]))
+        _check_inside(params, items_t, items, axis, ap, i, f"aerodynamic point {i + 1}",
+                      np.array([xa, axis[0], axis[1]]))
     return aero_points, aero_weights
 
 
@@ -407,6 +454,10 @@ def read_parachute_cd(reader, axes="wind"):
     _columns_match(reader, t, (column,), tuple(PARACHUTE_AXES.values()),
                    f"'parachute table axes' is {axes!r}")
     t.require_filled((column,), f"the table needs {column} at every alpha")
+    for i, value in enumerate(t[column]):  # the rule of Parachute, at the cell
+        if not 0 < value <= PARACHUTE_CD_MAX:
+            raise t.error(column, i, f"parachute {column} must lie in (0, "
+                          f"{PARACHUTE_CD_MAX:g}] (a flat plate normal to the flow has 1.17)")
     with t.located():
         table = Table1D(t["alpha"], {column: t[column]}, angle_name="alpha",
                         what="parachute")
@@ -435,10 +486,44 @@ def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
     Parachute
     """
     axes = params.choice("parachute table axes", tuple(PARACHUTE_AXES))
-    cd = read_parachute_cd(reader, axes)
-    for name, arg in parameters.items():
-        with params.located({}, name):
-            Parachute(area, cd, axes=axes, **{arg: params(name)})
+    cd = read_parachute_cd(reader, axes)  # checked at its cells
+    for name, arg in parameters.items():  # each with the default table: only its own error
+        with params.at(name):
+            Parachute(area, None, axes=axes, **{arg: params(name)})
     with located(reader.file, "ParachuteCD" if cd is not None else STUDY_SHEET):
         return Parachute(area, cd, axes=axes,
                          **{arg: params(name) for name, arg in parameters.items()})
+
+
+def parachute_reach_rule(reader, params, refs, hardpoints, line, cable, unit):
+    """The rule a carrier cable of ``cable`` [m] breaks when the parachute could reach the
+    carrier (its line plus the distance from the hub to its attachment not less than the
+    cable), in the cable's ``unit`` (as the user wrote it) and naming the cells the reach
+    comes from; None when the cable is long enough.
+
+    Parameters
+    ----------
+    reader : WorkbookReader
+    params : StudyParameters
+    refs : dict
+        Hardpoints by kind, with their rows (:func:`read_airframe`).
+    hardpoints : Hardpoints
+    line : float
+        The parachute's line length. [m]
+    cable : float
+        [m]
+    unit : str
+        Unit of the cable length as written.
+    """
+    arm = float(np.linalg.norm(hardpoints.chute - hardpoints.hub))
+    reach = line + arm
+    if reach < cable:
+        return None
+    hp_t = reader.table(_SPEC["Hardpoints"])
+    rows = [refs["rows"]["hub"][0], refs["chute_row"]]
+    cells = " and ".join(f"{hp_t.cell('x', r)}:{hp_t.cell('z', r)}" for r in rows)
+    return (f"the parachute could reach the carrier: its line ('parachute line length' "
+            f"{params.quantity('parachute line length', line)}) plus the distance from the hub "
+            f"to its attachment ({quantity(arm, unit, 'length')}, Hardpoints {cells}) reach "
+            f"{quantity(reach, unit, 'length')} from the hub, not less than the carrier cable "
+            f"({quantity(cable, unit, 'length')}); lengthen the cable (or shorten the line)")

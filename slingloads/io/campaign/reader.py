@@ -20,7 +20,12 @@ from dataclasses import dataclass, replace
 import numpy as np
 import pandas as pd
 
-from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
+from slingloads.io.airframe.reader import (
+    parachute_reach_rule,
+    read_fin_aero,
+    read_fuselage_aero,
+    read_parachute,
+)
 from slingloads.io.campaign.schema import (
     HOOK_ANGLE_SOURCES,
     LIST_BOUNDS,
@@ -29,6 +34,7 @@ from slingloads.io.campaign.schema import (
     SAMPLE_HELICOPTERS,
     SHEETS,
 )
+from slingloads.io.common.locate import at_cell, at_row
 from slingloads.io.common.schema import STUDY_SHEET, TEXT
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.workbook import cell_name, check_quantity, located, number_from_text
@@ -131,7 +137,7 @@ def list_parameter(params, name):
         if kind != "dimensionless" and not unit.strip():
             raise params.reader.error(f"{name!r} needs a unit in its unit column, e.g. "
                                       f"{spec.unit!r}", None, STUDY_SHEET, where)
-    with located(params.reader.file, STUDY_SHEET, where):
+    with at_cell(params.reader.file, STUDY_SHEET, where, unit):  # the unit cell
         factor = si_factor(unit, kind)
     values = []
     for item in items:
@@ -172,16 +178,23 @@ def read_system(reader, params, study):
     chute = read_parachute(reader, params, 1.0)
     if not reader.has_sheet("ParachuteCD"):
         chute = replace(chute, cd=extended_cd_table())
-    with located(file, STUDY_SHEET, params.where("campaign canopy mass")):
+    with params.at("campaign canopy mass"):
         holder = HingedParachute(chute, params("campaign canopy mass"))
     with located(file, "MassItems"):
         body = RigidBody.from_mass_items(airframe.mass_items)
-    length = list_parameter(params, "campaign cable lengths")[0]
-    with located(file, STUDY_SHEET, params.where("campaign cable EA")):
+    lengths = list_parameter(params, "campaign cable lengths")
+    for length in lengths:  # each checked at the list's cell, in the list's unit
+        rule = parachute_reach_rule(reader, params, study.points, airframe.hardpoints,
+                                    chute.line_length, length,
+                                    params.unit("campaign cable lengths"))
+        if rule is not None:
+            raise params.error("campaign cable lengths", rule)
+    length = lengths[0]
+    with params.at("campaign cable EA"):
         cable = Cable(length if length > 0 else 1.0, params("campaign cable EA"),
                       params("campaign cable damping ratio"))
     surfaces = () if fin is None else (LiftingSurface.from_fin(fin),)
-    with located(file, STUDY_SHEET, params.where("campaign cable lengths")):
+    with params.at("campaign cable lengths"):
         return SlingSystem(body, airframe.hardpoints, cable, fuselage, surfaces, holder,
                            name=str(params("study name")))
 
@@ -194,7 +207,7 @@ def _masses(reader):
     t = reader.table(_SPEC["CampaignMasses"])
     out = []
     for i in range(len(t)):
-        with located(reader.file, t.sheet, t.cell("mass", i)):
+        with at_row(t, "mass", i):
             out.append(MassCase(t["mass case"][i], t["mass"][i]))
     names = [m.name for m in out]
     for i, n in enumerate(names):
@@ -203,7 +216,7 @@ def _masses(reader):
     return tuple(out)
 
 
-def _rows(reader, masses):
+def _rows(reader, params, study, system, masses):
     """The CampaignRuns sheet as listed rows, each bad value located at its cell."""
     from slingloads.analyses.campaign import CARRIERS, MANOEUVRES
 
@@ -212,13 +225,16 @@ def _rows(reader, masses):
     for i in range(len(t)):
         for column in ("area factor", "airspeed EAS", "cable length"):
             if not t[column][i] > 0:
-                raise reader.error(f"{column} must be > 0", float(t[column][i]), t.sheet,
-                                   t.cell(column, i))
+                raise t.error(column, i, f"{column} must be > 0")
+        rule = parachute_reach_rule(reader, params, study.points, study.airframe.hardpoints,
+                                    system.parachute.parachute.line_length,
+                                    t["cable length"][i], t.units.get("cable length"))
+        if rule is not None:
+            raise t.error("cable length", i, rule)
         checks = (("carrier", list(CARRIERS), str.lower), ("manoeuvre", list(MANOEUVRES), str))
         for column, valid, norm in checks:
             if norm(t[column][i]) not in valid:
-                raise reader.error(f"unknown {column}; valid values are {valid}", t[column][i],
-                                   t.sheet, t.cell(column, i))
+                raise t.error(column, i, f"unknown {column}; valid values are {valid}")
         if t.has("mass case"):
             case = t["mass case"][i] or (names[0] if len(names) == 1 else "")
             if case not in names:
@@ -255,8 +271,7 @@ def read(reader, params, study):
 
     file = reader.file
 
-    def at(name):
-        return located(file, STUDY_SHEET, params.where(name))
+    at = params.at
 
     system = read_system(reader, params, study)
     with at("campaign carrier mass"):
@@ -290,10 +305,11 @@ def read(reader, params, study):
         if not reader.has_sheet("CampaignRuns"):
             raise params.error("campaign matrix", "'campaign matrix' = listed rows needs the "
                                "CampaignRuns sheet", "listed rows")
-        rows, table = _rows(reader, masses)
+        rows, table = _rows(reader, params, study, system, masses)
         sheet = table.sheet
-        with located(file, sheet, table.cell("cable length", 0)):
-            for length in rows["cable length [m]"].unique():
+        lengths = rows["cable length [m]"].to_numpy()
+        for length in np.unique(lengths):  # each at the first row that gives it
+            with at_row(table, "cable length", int(np.flatnonzero(lengths == length)[0])):
                 system.with_(cable=replace(system.cable, length=float(length)))
     with at("campaign run length"):
         step = params("campaign time step")
@@ -333,8 +349,7 @@ def read(reader, params, study):
     listed = sorted(float(f) for f in campaign.matrix.frame["area factor [-]"].unique())
     if chosen and not np.any(np.isclose(listed, chosen)):
         raise params.error("campaign chosen area factor", "the chosen area factor must be one "
-                           f"of the matrix's area factors {listed}",
-                           params.raw("campaign chosen area factor"))
+                           f"of the matrix's area factors {listed}")
     workers = params("campaign workers")
     params.check("campaign workers", workers >= 0, "'campaign workers' must be >= 0")
     scheduler = str(params("campaign scheduler") or "").strip()
@@ -354,7 +369,7 @@ def _check_needs_parachute(params, system, rows, factors):
     from slingloads.analyses.campaign import neutral_area_of
 
     speeds = rows["airspeed EAS [m/s]"] if rows is not None else factors.airspeeds
-    with located(params.reader.file, STUDY_SHEET, params.where("fin area")):
+    with params.at("fin area"):
         neutral = neutral_area_of(system, float(np.max(np.asarray(speeds, float))))
     if neutral.already_stable:
         raise params.error("fin area", "fuselage and fin are already statically stable in yaw "
@@ -417,7 +432,7 @@ def _no_parachute(params, system, study_type, sample):
             raise params.error(name, f"unknown helicopter; valid are {list(SAMPLE_HELICOPTERS)} "
                                "or 'none'", h)
     ramps = list_parameter(params, "campaign no-parachute ramps")
-    with located(params.reader.file, STUDY_SHEET, params.where("campaign no-parachute ramps")):
+    with params.at("campaign no-parachute ramps"):
         return study_type({h: sample(h, system.cable.length, system.cable.ea)
                            for h in dict.fromkeys(helicopters)}, ramps)
 

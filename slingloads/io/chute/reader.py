@@ -25,6 +25,7 @@ from slingloads.io.chute.schema import (
     SHEETS,
     WAKE_SOURCES,
 )
+from slingloads.io.common.locate import column_quantity
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import located
 from slingloads.limits import (
@@ -120,10 +121,11 @@ def read(reader, params, study):
     InputError
         With the file, sheet, cell, value and rule.
     """
-    file = reader.file
     # ---- condition (IAS taken equal to EAS)
     ias = params.positive("chute sizing airspeed IAS")
-    with located(file, STUDY_SHEET, params.where("chute sizing density altitude")):
+    with params.located({"eas": "chute sizing airspeed IAS",
+                         "density_altitude": "chute sizing density altitude",
+                         "alpha": "chute sizing alpha trim"}):
         condition = FlightCondition(eas=ias,
                                     density_altitude=params("chute sizing density altitude"),
                                     alpha=params("chute sizing alpha trim"))
@@ -144,8 +146,12 @@ def read(reader, params, study):
     arm = hardpoints.chute[0] - hardpoints.hub[0]
     if arm <= 0:
         hp_t = reader.table(HARDPOINT_SHEETS["Hardpoints"])
+        hub_row = refs["rows"]["hub"][0]
+        hub_x, hub_unit = hp_t.shown("x", hub_row)
         raise hp_t.error("x", refs["chute_row"], "the parachute attachment (kind 'chute') must "
-                         "lie aft of the rotor hub (x greater) to stabilise in yaw")
+                         "lie aft of the rotor hub (x greater) to stabilise in yaw; the hub "
+                         f"is at x = {hub_x}{' ' + hub_unit if hub_unit else ''} "
+                         f"({hp_t.cell('x', hub_row)})")
     parachute = read_parachute(reader, params, 1.0)
     # ---- yaw inertia
     source = params.choice("chute sizing yaw inertia source", INERTIA_SOURCES)
@@ -163,7 +169,8 @@ def read(reader, params, study):
             raise params.error("chute sizing yaw inertia source", "the yaw inertia about the "
                                "hub computed from the mass items is 0 (every item on the hub's "
                                "vertical, without Izz): give it with the source 'parameter'")
-    with located(file, STUDY_SHEET, params.where("chute sizing alpha trim")):
+    with params.located({"airspeed": "chute sizing airspeed IAS",
+                         "alpha": "chute sizing alpha trim"}, "chute sizing alpha trim"):
         model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute)
     lo, hi = model.beta_range()
     params.check("chute sizing linearisation range", half <= min(-lo, hi),
@@ -182,8 +189,7 @@ def read(reader, params, study):
            "'chute sizing target q ratio' must lie in (0, 1]")
     wake_source = params.choice("chute sizing wake source", WAKE_SOURCES)
     if wake_source == "table":
-        wake = _wake_table(reader)
-        where = ("ChuteWake", "B1")
+        wake = _wake_table(reader, params, target)
     else:
         k = params.positive("chute sizing wake coefficient")
         area = params.positive("chute sizing wake drag area", allow_zero=True)
@@ -192,13 +198,12 @@ def read(reader, params, study):
                 raise reader.error("the wake model needs 'chute sizing wake drag area' > 0 "
                                    "when there is no FuselageAero sheet", 0.0, STUDY_SHEET,
                                    params.where("chute sizing wake drag area"))
-            with located(file, "FuselageAero"):
+            with params.at("chute sizing alpha trim"):  # the table's drag at the trim alpha
                 area = float(fuselage.drag_coefficient(condition.alpha, 0.0)) * fuselage.area
-        with located(file, STUDY_SHEET, params.where("chute sizing wake coefficient")):
+        with params.at("chute sizing wake coefficient"):
             wake = BluffBodyWake(area, k)
-        where = (STUDY_SHEET, params.where("chute sizing target q ratio"))
-    with located(file, *where):
-        wake.line_length(target)
+        with params.at("chute sizing target q ratio"):
+            wake.line_length(target)
     cable = params.positive("chute sizing carrier cable length", allow_zero=True)
     margin = params.positive("chute sizing cable margin", allow_zero=True)
     # ---- solver
@@ -285,12 +290,14 @@ def _check_work(params, runs, t_end, dt, interval, integrator):
                      "of slingloads): use 'dopri5' or fewer areas")
 
 
-def _wake_table(reader):
-    """The ChuteWake sheet as a TabulatedWake, each bad value located at its cell."""
+def _wake_table(reader, params, target):
+    """The ChuteWake sheet as a TabulatedWake, each bad value located at its cell; a table
+    that never reaches 'chute sizing target q ratio' is refused at its largest ratio."""
     t = reader.table(SHEETS[0])
     x, r = t["distance"], t["q ratio"]
     if len(t) < 2:
-        raise reader.error("the ChuteWake table needs at least two rows", len(t), t.sheet, "A3")
+        raise reader.error(f"the ChuteWake table needs at least two rows (it has {len(t)})",
+                           None, t.sheet, "A3")
     for i in range(len(t)):
         if x[i] < 0:
             raise t.error("distance", i, "wake distance must be >= 0")
@@ -299,6 +306,14 @@ def _wake_table(reader):
                           f"at {t.cell('distance', i - 1)})")
         if not 0 < r[i] <= 1.2:
             raise t.error("q ratio", i, "wake q ratio must lie in (0, 1.2]")
+    if 0 < target <= 1 and not r.max() >= target:
+        i = int(np.argmax(r))
+        raise t.error("q ratio", i, (
+            f"the wake table never reaches the target dynamic-pressure ratio {target:.4g} "
+            f"('chute sizing target q ratio', {STUDY_SHEET} "
+            f"{params.where('chute sizing target q ratio')}): its largest q ratio is this one, "
+            f"at {column_quantity(t, 'distance', x[i], 'length')} "
+            f"({t.cell('distance', i)}); extend the table downstream"))
     with located(reader.file, t.sheet):
         return TabulatedWake(x, r, source="ChuteWake sheet")
 
@@ -334,9 +349,9 @@ def _gusts(reader, params, model, t_end):
     tas = model.condition.tas
     gamma = np.arctan(amplitude / tas)
     params.check("chute sizing gust amplitude", gamma < min(-lo, hi),
-                 f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at {tas:.4g} m/s "
-                 f"true airspeed, outside the aerodynamic tables' range "
-                 f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
+                 f"the gust makes a sideslip of {np.degrees(gamma):.4g} deg at "
+                 f"{params.quantity('chute sizing airspeed IAS', tas)} true airspeed, outside "
+                 f"the aerodynamic tables' range [{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
     gusts = []
     for s in shapes:
         if s == DrydenTurbulence.kind:
@@ -358,13 +373,36 @@ def _turbulence(reader, params, model, onset, t_end):
     params.check("chute sizing turbulence seed", float(seed) == int(seed) and seed >= 0,
                  "'chute sizing turbulence seed' must be a whole number >= 0")
     altitude = params("chute sizing turbulence altitude")
-    with located(reader.file, STUDY_SHEET, params.where("chute sizing turbulence altitude")):
+    with params.at("chute sizing turbulence altitude"):
         gust = DrydenTurbulence.low_altitude(altitude, model.condition.tas, severity,
                                              onset=onset, duration=length, seed=int(seed))
     lo, hi = model.beta_range()
     gamma = np.arctan(gust.peak / model.condition.tas)
     params.check("chute sizing turbulence altitude", gamma < min(-lo, hi),
-                 f"the turbulence's largest gust ({gust.peak:.4g} m/s) makes a sideslip of "
+                 f"the turbulence's largest gust "
+                 f"({params.quantity('chute sizing gust amplitude', gust.peak)}) makes a "
+                 f"sideslip of "
                  f"{np.degrees(gamma):.4g} deg, outside the aerodynamic tables' range "
                  f"[{np.degrees(lo):.4g}, {np.degrees(hi):.4g}] deg")
     return gust
+
+
+def trim_error(err, study):
+    """The error to raise for ``err``, raised while the sizing computes: a yaw trim that
+    cannot be found (``field = "trim"``: the yawing moment about the hub keeps one sign) is
+    put at the hub's y cell, with the hub's position as written and what sets that moment;
+    any other error is returned unchanged."""
+    hp_t = getattr(study, "tables", {}).get("Hardpoints")
+    if err.field != "trim" or err.cell is not None or hp_t is None:
+        return err
+    row = study.points["rows"]["hub"][0]
+    shown = []
+    for column in ("x", "y", "z"):
+        value, unit = hp_t.shown(column, row)
+        shown.append(f"{column} {value}{' ' + unit if unit else ''}")
+    return hp_t.error("y", row, (
+        f"{err.rule}; the moment is taken about the rotor hub's vertical (Hardpoints "
+        f"{hp_t.cell('x', row)}:{hp_t.cell('z', row)}: {', '.join(shown)}): a hub off the "
+        "airframe's plane of symmetry, or FuselageAero / FinAero tables that are not "
+        "antisymmetric in beta, give a moment at zero sideslip that the fin and the parachute "
+        "cannot balance; check the hub's position, the tables and the headers' units"))

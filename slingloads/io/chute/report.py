@@ -22,6 +22,7 @@ Lengths, areas, speeds and moments are in the report unit system (``--units``).
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass
 
 import numpy as np
@@ -184,7 +185,7 @@ def compute(study):
     if inputs is None:
         raise InputError("the workbook does not ask for the parachute sizing (Study sheet: "
                          "'run chute sizing' is no)", file=study.path, sheet="Study")
-    with located(study.path):
+    with located(study.path), _trim_located(study):
         static = neutral_area(inputs.model, inputs.fit_range)
         line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
         sweep = None
@@ -198,6 +199,18 @@ def compute(study):
                                inputs.fit_range, inputs.metrics, inputs.integrator)
     recommended = inputs.recommended_factor * static.area if sweep is not None else 0.0
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study)
+
+
+@contextlib.contextmanager
+def _trim_located(study):
+    """Locate a yaw trim that cannot be found at the hub's cells (see
+    :func:`slingloads.io.chute.reader.trim_error`)."""
+    try:
+        yield
+    except InputError as err:
+        from slingloads.io.chute.reader import trim_error
+
+        raise trim_error(err, study) from None
 
 
 # ------------------------------------------------------------------------------- tables

@@ -93,6 +93,20 @@ class StudyParameters:
         self.check(name, ok, f"{name!r} must be {'>= 0' if allow_zero else '> 0'}")
         return float(value)
 
+    def at(self, name):
+        """Locate an :class:`InputError` a model raises inside (one naming no cell yet) at
+        the cell of parameter ``name``, with its value as typed and its unit in place of the
+        model's SI value (see :mod:`slingloads.io.common.locate`)."""
+        return self.located({}, name)
+
+    def quantity(self, name, si_value, kind=None, digits=4):
+        """An SI value in the unit of parameter ``name`` as the user wrote it (its default
+        unit when the row is absent), for a message: ``"54.3 ft"``."""
+        from slingloads.io.common.locate import quantity
+
+        return quantity(si_value, self.unit(name), kind or self.specs[name.lower()].kind,
+                        digits)
+
     @contextlib.contextmanager
     def located(self, fields, default=None):
         """Locate an :class:`InputError` a model raises on parameter values.

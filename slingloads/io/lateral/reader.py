@@ -27,6 +27,7 @@ from slingloads.analyses.lateral_damping import (
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
+from slingloads.io.common.locate import at_cell, at_row, column_quantity
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.lateral.schema import (
@@ -154,6 +155,8 @@ def read(reader, params, study):
                             step=step if step > 0 else None, output_interval=output,
                             method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2))
     ropes = _ropes(reader)
+    if hasattr(study, "tables"):  # to locate the errors found while computing
+        study.tables["LateralRopes"] = reader.table(_SPEC["LateralRopes"])
     bodies, source = _bodies(reader, study)
     histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
     motions, ids = _motions(reader, histories)
@@ -180,7 +183,8 @@ def _damping(reader, params, study):
     for name, value in (("lateral damping", lateral), ("lateral roll damping", roll)):
         params.check(name, value == 0, f"{name!r} is used only with 'lateral damping source' "
                      "= parameters; leave it 0 with 'aerodynamic tables'")
-    with located(reader.file, STUDY_SHEET, params.where("lateral density altitude")):
+    with params.located({"eas": "lateral airspeed EAS",
+                         "density_altitude": "lateral density altitude"}):
         condition = FlightCondition(speed, params("lateral density altitude"))
     fuselage = read_fuselage_aero(reader, params, study.points)
     fin = read_fin_aero(reader, params, study.points)
@@ -221,7 +225,7 @@ def _check_work(reader, params, motions, ropes, bodies, t_end, step, output):
     if runs > MAX_LATERAL_RUNS:
         raise reader.error(f"too much work: {motions} motions x {ropes} ropes x {bodies} "
                            f"bodies give {runs:,} runs, more than the {MAX_LATERAL_RUNS:,} "
-                           "allowed (limits of slingloads)", runs, "LateralMotions", "A1")
+                           "allowed (limits of slingloads)", None, "LateralMotions", "A1")
     if t_end > 0 and step > 0:
         steps = t_end / step
         for count, limit, what in ((steps, MAX_LATERAL_STEPS, "RK4 steps per run"),
@@ -245,14 +249,52 @@ def _ropes(reader):
     return tuple(float(x) for x in t["rope length"])
 
 
+def run_case_error(err, study, result):
+    """The error to raise for ``err``, raised by the time-history re-run of the study's
+    critical case (:meth:`~slingloads.analyses.lateral.LateralStudy.run_case`).
+
+    Its work limit (the solver's evaluations, ``field = "rtol"``) is reached when the case is
+    far stiffer than its run is long: it is put at the LateralRopes cell of the case's rope
+    length, as written, with the period of the case's fastest mode and the run length, and
+    names the tolerance; any other error is returned unchanged.
+    """
+    ropes = getattr(study, "tables", {}).get("LateralRopes")
+    if err.field != "rtol" or err.cell is not None or ropes is None:
+        return err
+    inputs = study.inputs[ANALYSIS]
+    k = result.critical_index
+    pendulum, motion = result.pendulums[k], result.motions[k]
+    row = [float(v) for v in inputs.rope_lengths].index(float(result.nominal_rope[k]))
+    factor = float(result.factors[k, 2])
+    periods = pendulum.linear_modes().period
+    fastest = float(np.min(periods[periods > 0])) if np.any(periods > 0) else np.inf
+    spread = f" x {factor:.4g} (rope length spread)" if factor != 1 else ""
+    name = "lateral history rtol"
+    rtol = study.written.get(name, (inputs.solver.rtol, None))[0]
+    where = study.cells.get(name, "(default)")
+    return ropes.error("rope length", row, (
+        f"too much work: the time-history re-run of the critical case (case {k + 1}: body "
+        f"{pendulum.body.name!r}, motion {inputs.motion_ids[_motion_index(inputs, motion)]!r}, "
+        f"this rope length{spread}) needs more than {err.value:,} solver evaluations (limits "
+        f"of slingloads): its fastest mode has a period of {fastest:.3g} s, against a run of "
+        f"{result.t_end:.4g} s; check this rope length and the header's unit, or loosen "
+        f"{name!r} ({STUDY_SHEET} {where} = {rtol})"))
+
+
+def _motion_index(inputs, motion):
+    """Index of ``motion`` among the study's motions (by identity)."""
+    return next((i for i, m in enumerate(inputs.motions) if m is motion), 0)
+
+
 def _bodies(reader, study):
     if not reader.has_sheet("LateralBodies"):
         return (_airframe_body(reader, study),), "MassItems"
     t = reader.table(_SPEC["LateralBodies"])
     check_unique(reader, t, "id")
     bodies = []
+    fields = {"roll_inertia": "roll inertia", "cg_below_hub": "CG below hub"}
     for i, name in enumerate(t["id"]):
-        with located(reader.file, t.sheet, t.cell("mass", i)):
+        with at_row(t, "mass", i, fields):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))
     return tuple(bodies), "LateralBodies"
@@ -266,11 +308,18 @@ def _airframe_body(reader, study):
     except InputError as err:
         if "inertia" in err.rule:
             items = reader.table(AIRFRAME_SHEETS["MassItems"])
-            cell = (items.cells["Ixx"][0] if items.has("Ixx")
-                    else f"{get_column_letter(len(items.cells) + 1)}1")
-            raise err.located(file=reader.file, sheet="MassItems", cell=cell) from None
+            if items.has("Ixx"):
+                raise items.error("Ixx", 0, err.rule) from None
+            cell = f"{get_column_letter(len(items.cells) + 1)}1"
+            raise InputError(f"{err.rule}: give the mass items their own inertias (no Ixx "
+                             "column)", file=reader.file, sheet="MassItems",
+                             cell=cell) from None
         hardpoints = reader.table(AIRFRAME_SHEETS["Hardpoints"])
-        raise hardpoints.error("z", study.points["rows"]["hub"][0], err.rule) from None
+        rule = err.rule.removesuffix(" [m]")
+        if isinstance(err.value, float):  # how far above the hub the CG lies, along the mast
+            rule += (f" (the CG lies {column_quantity(hardpoints, 'z', -err.value, 'length')}"
+                     " above the hub along the mast)")
+        raise hardpoints.error("z", study.points["rows"]["hub"][0], rule) from None
 
 
 def _histories(reader):
@@ -293,7 +342,7 @@ def _histories(reader):
                 raise t.error("t", idx[k], f"time-history samples must be at least "
                               f"{MIN_SAMPLE_INTERVAL:g} s apart (previous sample at "
                               f"{t.cell('t', idx[k - 1])})")
-        with located(reader.file, t.sheet, t.cell("t", idx[0])):
+        with at_row(t, "t", idx[0]):
             out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
     return out
 
@@ -311,16 +360,18 @@ def _csv_history(reader, text, t, i):
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0)) + 1
         raise reader.error(f"CSV {name}: times must be strictly increasing (data row "
-                           f"{k + 1} does not come after row {k})", float(time[k]), *where)
+                           f"{k + 1}, t = {time[k]:.6g} s, does not come after row {k}, "
+                           f"t = {time[k - 1]:.6g} s)", text, *where)
     if np.any(steps < MIN_SAMPLE_INTERVAL):
         k = int(np.argmax(steps < MIN_SAMPLE_INTERVAL)) + 1
         raise reader.error(f"CSV {name}: samples must be at least {MIN_SAMPLE_INTERVAL:g} s "
-                           f"apart (data rows {k} and {k + 1})", float(time[k]), *where)
+                           f"apart (data rows {k} and {k + 1}, t = {time[k - 1]:.6g} s and "
+                           f"{time[k]:.6g} s)", text, *where)
     if time[-1] - time[0] > MAX_MAGNITUDE_TIME_HISTORY:
         raise reader.error(f"CSV {name}: a time history may last at most "
-                           f"{MAX_MAGNITUDE_TIME_HISTORY:g} s", float(time[-1] - time[0]),
-                           *where)
-    with located(reader.file, *where):
+                           f"{MAX_MAGNITUDE_TIME_HISTORY:g} s; this one lasts "
+                           f"{time[-1] - time[0]:.6g} s", text, *where)
+    with at_cell(reader.file, *where, text):
         return TimeHistory(time, s, name=f"CSV {name}")
 
 
@@ -357,8 +408,8 @@ def _motions(reader, histories):
             filled = (t.has(column) and (not np.isnan(t[column][i]) if column not in
                                          ("then", "history") else bool(t[column][i])))
             if filled:
-                raise reader.error(f"a {kind} does not use the column {column!r}; leave it "
-                                   "empty", t[column][i], t.sheet, t.cell(column, i))
+                raise t.error(column, i, f"a {kind} does not use the column {column!r}; leave "
+                              "it empty")
 
     def nonzero(v):
         return v != 0
@@ -369,7 +420,6 @@ def _motions(reader, histories):
     motions = []
     for i in range(len(t)):
         kind = _motion_type(reader, t, i)
-        where = (reader.file, t.sheet, t.cell("type", i))
         if kind in STEP_LAWS:
             unused(("then", "delta V", "history"), i, kind)
             duration = need("duration", i, kind, positive)
@@ -380,7 +430,7 @@ def _motions(reader, histories):
                                    "'amplitude', not both nor neither", None, t.sheet,
                                    t.cell("type", i))
             law = STEP_LAWS[kind]
-            with located(*where):
+            with at_row(t, "type", i):
                 if has_acc:
                     motion = law.from_peak_acceleration(
                         need("acceleration", i, kind, nonzero), duration)
@@ -395,11 +445,11 @@ def _motions(reader, histories):
                 raise reader.error(f"a constant acceleration needs 'then' = one of "
                                    f"{list(THEN)}", then,
                                    t.sheet, t.cell("then", i) if t.has("then") else "A1")
-            with located(*where):
+            with at_row(t, "type", i):
                 motion = ConstantAcceleration(rate, duration, then)
         elif kind == "velocity step":
             unused(("acceleration", "duration", "amplitude", "then", "history"), i, kind)
-            with located(*where):
+            with at_row(t, "type", i):
                 motion = VelocityStep(need("delta V", i, kind, nonzero))
         else:
             unused(("acceleration", "duration", "amplitude", "then", "delta V"), i, kind)

@@ -156,7 +156,12 @@ def compute(study):
                                margin=inputs.margin, cable_ea=inputs.cable_ea,
                                damping=inputs.damping, ranges=inputs.ranges,
                                hook_load_factor=inputs.loads.hook.nz, solver=inputs.solver)
-        run = result.run_case()
+        try:
+            run = result.run_case()
+        except InputError as err:  # too stiff a case: at the cell of its rope length
+            from slingloads.io.lateral.reader import run_case_error
+
+            raise run_case_error(err, study, result) from None
         comparison = None
         if result.recommended_angle < np.pi / 2:
             comparison = hook_angle_comparison(inputs.loads, result.recommended_angle)

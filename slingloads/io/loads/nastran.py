@@ -42,6 +42,7 @@ from slingloads.analyses.fe_loads import HOOK_POINTS, ModelAxes, PointLoadCases
 from slingloads.constants import G0, INCH, POUND_FORCE
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs
+from slingloads.io.common.locate import at_cell
 from slingloads.io.common.report import digest_frame
 from slingloads.io.common.workbook import located
 
@@ -248,8 +249,10 @@ class _Locator:
         self.locations = dict(locations or {})
 
     def get(self, key):
+        """``sheet`` and ``cell`` of option ``key`` (empty if unknown)."""
         where = dict(self.locations.get(key) or {})
-        where.pop("name", None)
+        for extra in ("name", "value", "unit"):
+            where.pop(extra, None)
         return where
 
     def name(self, key):
@@ -260,6 +263,12 @@ class _Locator:
         return InputError(rule, value, **self.get(key))
 
     def of(self, key):
+        """Locate the errors of a model built from option ``key`` at its cell, echoing its
+        value as written (when the locations give it) in place of the model's."""
+        where = self.locations.get(key) or {}
+        if where.get("cell") is not None:
+            return at_cell(None, where.get("sheet"), where["cell"], where.get("value"),
+                           where.get("unit"))
         return located(**self.get(key))
 
 

@@ -36,6 +36,8 @@ from slingloads.io.airframe.reader import (
     read_fuselage_aero,
     read_parachute,
 )
+from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
+from slingloads.io.common.locate import at_row, column_quantity
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
@@ -45,6 +47,7 @@ from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attit
 from slingloads.models.flight import FlightCondition
 
 _SPEC = {s.name: s for s in SHEETS}
+AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
 
 
 def read(reader, params, study):
@@ -92,9 +95,9 @@ def read(reader, params, study):
                            "(FuselageAero or FinAero) and the loads need the envelope's angle-"
                            "of-attack / sideslip points", sheet="AeroEnvelope")
     hook = _hook_options(reader, params)
-    with params.located({"eas": "airspeed EAS"}, "density altitude"):
+    with params.located({"eas": "airspeed EAS", "density_altitude": "density altitude"}):
         flight = FlightCondition(params("airspeed EAS"), params("density altitude"))
-    attitude = _attitude(reader, params, airframe)
+    attitude = _attitude(reader, params, airframe, refs)
     line = params.choice("parachute line direction", CHUTE_LINE_DIRECTIONS)
     generate = params("generate case matrix")
     listed = _listed_cases(reader, params, hook, envelope, parachute, generate)
@@ -118,13 +121,13 @@ def _hook_options(reader, params):
         kwargs["lateral_angle"] = None  # 0: the same as 'hook angle from vertical'
     kwargs["cone"] = params.choice("hook cone shape", CONE_SHAPES)
     for arg, name in names.items():
-        with located(reader.file, STUDY_SHEET, params.where(name)):
+        with params.at(name):
             HookLoadOptions(**{arg: kwargs[arg]})
-    with located(reader.file, STUDY_SHEET, params.where("hook azimuths")):
+    with params.at("hook azimuths"):
         return HookLoadOptions(**kwargs)
 
 
-def _attitude(reader, params, airframe):
+def _attitude(reader, params, airframe, refs):
     """'hanging', 'mast vertical' or the Attitude given by 'attitude pitch' and 'roll'."""
     source = params.choice("attitude", (*ATTITUDE_SOURCES, "given"))
     angles = {name: params(name) for name in ("attitude pitch", "attitude roll")}
@@ -132,15 +135,35 @@ def _attitude(reader, params, airframe):
         for name, value in angles.items():
             params.check(name, value == 0, f"{name!r} is used only with 'attitude' = given; "
                          f"leave it 0 with {source!r}")
-        with located(reader.file, STUDY_SHEET, params.where("attitude")):
+        if source == "hanging":
+            _check_hanging(reader, params, airframe, refs)
+        with params.at("attitude"):
             return resolve_attitude(source, airframe)
     for name, value in angles.items():
-        with located(reader.file, STUDY_SHEET, params.where(name)):
+        with params.at(name):
             Attitude(**{name.split()[1]: value})
-    with located(reader.file, STUDY_SHEET, params.where("attitude")):
+    with params.at("attitude"):
         attitude = Attitude(angles["attitude pitch"], angles["attitude roll"])
         horizontal_basis(attitude.vertical)
     return attitude
+
+
+def _check_hanging(reader, params, airframe, refs):
+    """The hanging attitude needs the hub above the CG of the mass items (the rule of
+    :meth:`~slingloads.models.attitude.Attitude.hanging`): else an error at the hub's z cell,
+    with the CG's z in that cell's unit."""
+    hub, cg = airframe.hardpoints.hub, airframe.mass_items.cg
+    if hub[2] - cg[2] > 0 and np.linalg.norm(hub - cg) >= 1e-9:
+        return
+    hp_t = reader.table(AIRFRAME_SHEETS["Hardpoints"])
+    cell = params.cell("attitude")
+    source = (f"'attitude' = hanging, {STUDY_SHEET} {cell}" if cell
+              else "the default 'attitude' = hanging")
+    raise hp_t.error("z", refs["rows"]["hub"][0], (
+        f"the rotor hub must lie above the CG of the mass items (CG z = "
+        f"{column_quantity(hp_t, 'z', cg[2], 'length')}, from the MassItems) for the airframe "
+        f"to hang upright from it ({source}); check the hub's z and the headers' units, or "
+        "give 'attitude' = given with 'attitude pitch' and 'attitude roll'"))
 
 
 def _listed_cases(reader, params, hook, envelope, parachute, generate):
@@ -210,7 +233,7 @@ def _check_case_count(reader, params, hook, airframe, envelope, parachute, gener
                     "cases or the cut stations")
             if generate and generated >= len(listed):
                 raise params.error("hook azimuths", rule)
-            raise reader.error(rule, count, "LoadCases", "A1")
+            raise reader.error(rule, None, "LoadCases", "A1")
 
 
 _PARACHUTE_PARAMETERS = {**PARACHUTE_PARAMETERS, "parachute opening factor": "opening_factor"}
@@ -219,11 +242,11 @@ _PARACHUTE_PARAMETERS = {**PARACHUTE_PARAMETERS, "parachute opening factor": "op
 def _check_envelope_in_tables(reader, t, fuselage, fin):
     """Each envelope point must lie inside the aerodynamic tables (no extrapolation)."""
     for i in range(len(t)):
-        if fuselage is not None:
-            with located(reader.file, t.sheet, t.cell("alpha", i)):
+        if fuselage is not None:  # the angle outside the table names its cell
+            with at_row(t, "alpha", i, {"alpha": "alpha", "beta": "beta"}):
                 fuselage.airframe_coefficients(t["alpha"][i], t["beta"][i])
         if fin is not None:
-            with located(reader.file, t.sheet, t.cell("beta", i)):
+            with at_row(t, "beta", i):
                 fin.force(t["beta"][i], 0.0)
 
 
@@ -303,12 +326,11 @@ def _nastran_options(params, study):
     ``nastran settings`` (options of :func:`~slingloads.io.loads.nastran.prepare_nastran`)
     and ``nastran locations`` (the cell of each option and of each listed case id, for the
     errors found when the file is laid out)."""
-    file = params.reader.file
     settings = {"inertia_relief": params.choice("nastran inertia relief", INERTIA_RELIEF),
                 "hook_at": params.choice("nastran hook load at", HOOK_POINTS),
                 "axes": str(params("nastran model axes") or "").strip(),
                 "offset": tuple(float(params(f"nastran offset {a}")) for a in "xyz")}
-    with located(file, STUDY_SHEET, params.where("nastran model axes")):
+    with params.at("nastran model axes"):
         ModelAxes(settings["axes"])
     for arg, name in _NASTRAN_IDS.items():
         value = params(name)
@@ -319,7 +341,8 @@ def _nastran_options(params, study):
     names = {"axes": "nastran model axes", "offset": "nastran offset x",
              "inertia_relief": "nastran inertia relief", "hook_at": "nastran hook load at",
              **_NASTRAN_IDS}
-    locations = {arg: {"sheet": STUDY_SHEET, "cell": params.where(name), "name": name}
+    locations = {arg: {"sheet": STUDY_SHEET, "cell": params.where(name), "name": name,
+                       "value": params.raw(name), "unit": params.unit(name)}
                  for arg, name in names.items()}
     reader = params.reader
     if study.loads is not None and reader.has_sheet("LoadCases"):

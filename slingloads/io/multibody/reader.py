@@ -22,12 +22,13 @@ from slingloads.analyses.multibody.manoeuvres import (
     Manoeuvre,
     paper_manoeuvres,
 )
-from slingloads.constants import FOOT
 from slingloads.io.airframe.reader import (
+    parachute_reach_rule,
     read_fin_aero,
     read_fuselage_aero,
     read_parachute,
 )
+from slingloads.io.common.locate import at_row
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import located
 from slingloads.io.multibody.schema import (
@@ -209,9 +210,9 @@ def read_system(reader, params, study):
         parachute = _parachute(reader, params, hardpoints, parachute_model, canopy_table)
     cable = _cable(params)
     if parachute is not None:
-        _check_reach(params, hardpoints, parachute, cable)
+        _check_reach(reader, params, refs, hardpoints, parachute, cable)
     carrier = _carrier(params, carrier_choice)
-    with located(file, STUDY_SHEET, params.where("multibody density altitude")):
+    with params.at("multibody density altitude"):
         isa_density(altitude)
     with located(file, STUDY_SHEET):
         system = SlingSystem(body, hardpoints, cable, fuselage, surfaces, parachute, carrier,
@@ -231,7 +232,7 @@ def _surfaces(reader, params, refs, tail_choice):
     """The fin (cut down, or intact with the full tail) and the horizontal tail."""
     fin = read_fin_aero(reader, params, refs)
     if fin is not None:
-        with located(reader.file, STUDY_SHEET, params.where("fin axes")):
+        with params.at("fin axes"):
             LiftingSurface.from_fin(fin)  # a normal-force table: body axes
     if tail_choice == "cut-down fin":
         return (LiftingSurface.from_fin(fin),) if fin is not None else ()
@@ -248,9 +249,10 @@ def _surfaces(reader, params, refs, tail_choice):
                            sheet="Hardpoints", cell="B1")
     area = params.positive("multibody horizontal tail area")
     t = reader.table(_SPEC["HTailAero"])
-    with located(reader.file, t.sheet):
+    with t.located():
         table = Table1D(t["alpha"], {"CN": t["CN"]}, angle_name="alpha",
                         what="horizontal tail")
+    with params.at("multibody horizontal tail area"):
         tail = LiftingSurface(table, area, refs["htail_cp"], "z", 1.0, "horizontal tail")
     return LiftingSurface.from_fin(fin, efficiency=1.0), tail
 
@@ -267,19 +269,18 @@ def _parachute(reader, params, hardpoints, model, canopy_table):
         if area == 0:
             raise params.error("multibody parachute area", "the parachute needs an area: "
                                "'multibody parachute area' > 0, or the Study's 'parachute "
-                               "area' > 0 when it is 0", params.raw("multibody parachute area"))
+                               "area' > 0 when it is 0")
     chute = read_parachute(reader, params, area)
     if canopy_table == "extended":
         chute = replace(chute, cd=extended_cd_table(), axes="wind")
     elif chute.axes != "wind":
         raise params.error("parachute table axes", "the multibody canopy pulls along its "
                            "relative wind: its table must be in wind axes (CD), or set "
-                           "'multibody canopy CD' to extended", params.raw(
-                               "parachute table axes"))
+                           "'multibody canopy CD' to extended")
     if model == "quasi-static":
         return QuasiStaticParachute(chute)
     mass = params.positive("multibody canopy mass")
-    with located(reader.file, STUDY_SHEET, params.where("multibody canopy mass")):
+    with params.at("multibody canopy mass"):
         return HingedParachute(chute, mass)
 
 
@@ -290,20 +291,14 @@ def _cable(params):
     return Cable(length, ea, damping)
 
 
-def _check_reach(params, hardpoints, parachute, cable):
+def _check_reach(reader, params, refs, hardpoints, parachute, cable):
     """The canopy must not be able to reach the carrier: line plus hub-to-attachment distance
-    shorter than the cable."""
-    line = parachute.line_length
-    arm = float(np.linalg.norm(hardpoints.chute - hardpoints.hub))
-    reach = line + arm
-    if reach >= cable.length:
-        raise params.error(
-            "multibody cable length",
-            f"the parachute could reach the carrier: its line ({line:.4g} m = "
-            f"{line / FOOT:.4g} ft) plus the distance from the hub to its attachment "
-            f"({arm:.4g} m) reach {reach:.4g} m ({reach / FOOT:.4g} ft) from the hub, not less "
-            f"than the carrier cable ({cable.length:.4g} m); lengthen the cable",
-            params.raw("multibody cable length"))
+    shorter than the cable (stated in the cable's unit, at its cell)."""
+    name = "multibody cable length"
+    rule = parachute_reach_rule(reader, params, refs, hardpoints, parachute.line_length,
+                                cable.length, params.unit(name))
+    if rule is not None:
+        raise params.error(name, rule)
 
 
 def _carrier(params, choice):
@@ -347,7 +342,7 @@ def read_manoeuvres(reader, params, system, t_end):
         kind = rows.choice("kind", i, MANOEUVRE_KINDS, required=True)
         builder = {"free response": _free_response, "gust": _gust,
                    "forward acceleration": _acceleration, "wind ramp": _wind_ramp}[kind]
-        with located(reader.file, t.sheet, t.cell("kind", i)):
+        with at_row(t, "kind", i):
             out.append(builder(rows, i, name, system, t_end))
     return tuple(out), "MultibodyManoeuvres sheet"
 
