@@ -409,3 +409,13 @@ def test_hidden_rows_and_sheets_that_are_read_are_reported(tmp_path, example_boo
     assert len(study.airframe.mass_items.mass) == len(read_study(EXAMPLE).airframe
                                                       .mass_items.mass)
     assert not any("hidden" in w for w in read_study(EXAMPLE).warnings)
+
+
+def test_a_merged_header_is_named_where_the_header_is_missing(tmp_path, example_book):
+    """Rule: every required column has a header. Merging C1:D1 empties D1 while D2 down
+    still hold the x values: the error is at D1 (not past the table), saying that column D
+    holds values under an empty header."""
+    def edit(b):
+        b["MassItems"].merge_cells("C1:D1")
+    expect_error(edited(tmp_path, example_book, edit), "sheet 'MassItems'", "cell D1",
+                 "missing column 'x [m]'", "column D holds values under an empty header")

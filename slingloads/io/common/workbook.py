@@ -766,11 +766,10 @@ class WorkbookReader:
         header = rows[0][1]
         found = self._columns(spec, header)
         last = max(header)
+        records = rows[1:]
         for column in spec.columns:
             if column.required and column.name not in found:
-                raise self.error(f"missing column {column.header!r}", sheet=spec.name,
-                                 cell=cell_name(1, last + 1))
-        records = rows[1:]
+                raise self._missing_column(spec, column, header, records, last)
         columns = self._columns_at_once(spec, header, found, records)
         if columns is None:  # some cell breaks a rule: the careful path names the first one
             columns = self._records(spec, header, found, records)
@@ -821,6 +820,22 @@ class WorkbookReader:
                 cells[column.name].append(where)
         arrays = {name: _as_column(vals, found[name][1].kind) for name, vals in values.items()}
         return arrays, raw, cells
+
+    def _missing_column(self, spec, column, header, records, last):
+        """The error of a required column that no header names: at the first column holding
+        values under an empty header cell (a merged or cleared header), which is likely the
+        one, else at the cell after the last header."""
+        unit = f" [{column.unit}]" if column.unit else ""
+        kind = f" (any {column.kind} unit)" if column.unit else ""
+        stray = sorted({c for _, row in records for c in row if c not in header})
+        if stray:
+            where = cell_name(1, stray[0])
+            return self.error(f"missing column '{column.name}{unit}'{kind}, and column "
+                              f"{where.rstrip('0123456789')} holds values under an empty "
+                              f"header cell (a merged or cleared header?): give it its "
+                              "header", None, spec.name, where)
+        return self.error(f"missing column '{column.name}{unit}'{kind}", sheet=spec.name,
+                          cell=cell_name(1, last + 1))
 
     def _columns_at_once(self, spec, header, found, records):
         """``(values, raw, cells)`` of the table read column by column, or None if any cell
