@@ -31,6 +31,7 @@ from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
+    MIN_ROLL_GYRATION,
     MOTION_ALIASES,
     MOTION_TYPES,
     SHEETS,
@@ -252,6 +253,13 @@ def _bodies(reader, study):
     check_unique(reader, t, "id")
     bodies = []
     for i, name in enumerate(t["id"]):
+        gyration = np.sqrt(t["roll inertia"][i] / t["mass"][i])
+        if gyration < MIN_ROLL_GYRATION:
+            raise t.error("roll inertia", i, f"the roll radius of gyration sqrt(roll "
+                          f"inertia / mass) is {gyration:.3g} m, less than the "
+                          f"{MIN_ROLL_GYRATION:g} m of a solid cylinder 0.28 m across "
+                          "(helicopters: about 1 m): check the inertia, the mass and their "
+                          "units")
         with located(reader.file, t.sheet, t.cell("mass", i)):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))
