@@ -4,7 +4,10 @@ Exit codes: 0 success; 2 bad input (a workbook or argument that breaks a stated 
 message names the file, sheet, cell, value and rule); 1 a failure of the environment (an
 output folder that cannot be written, a full disk, a name too long) or an unexpected error;
 130 interrupted (a campaign's finished runs stay in its run cache). In every failure nothing
-is written, and no Python traceback is shown unless ``--debug`` is given.
+is written, and no Python traceback is shown unless ``--debug`` is given. 3: the reports
+were written, but an analysis could not compute some results asked for (the multibody model
+found no trim: no linear modes, no stability verdict, runs not flown); each is named on
+stderr (``slingloads: incomplete: ...``) and in its report.
 """
 
 from __future__ import annotations
@@ -24,6 +27,9 @@ from slingloads.io.analyses import compute_order
 
 EXIT_BAD_INPUT = 2
 EXIT_ENVIRONMENT = 1
+#: Exit code of a run that wrote its reports but could not compute some results asked for
+#: (``Analysis.shortfalls``: the multibody model without a trim).
+EXIT_INCOMPLETE = 3
 #: Exit code after Ctrl-C (128 + SIGINT, the shells' convention).
 EXIT_INTERRUPTED = 130
 
@@ -308,6 +314,13 @@ def _run_analyses(args):
         print(f"wrote {path}")
     for text in study.warnings:
         print(f"slingloads: warning: {text}", file=sys.stderr)
+    shortfalls = [text for name in names for text in _BY_NAME[name].shortfalls(results[name])]
+    for text in shortfalls:
+        print(f"slingloads: incomplete: {text}", file=sys.stderr)
+    if shortfalls:
+        print("slingloads: the reports were written, but some results asked for could not be "
+              f"computed (exit code {EXIT_INCOMPLETE}; the reports say why)", file=sys.stderr)
+        return EXIT_INCOMPLETE
     return 0
 
 

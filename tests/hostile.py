@@ -47,12 +47,15 @@ def small_workbook():
     return copy_book({
         "Study": [("parameter", "value", "unit", "description"), *study],
         "MassItems": [
-            ("id", "description", "mass [kg]", "x [m]", "y [m]", "z [m]", "Izz [kg m^2]"),
-            ("nose", "forward structure", 300.0, 1.0, 0.0, 0.5, 20.0),
-            ("cabin", "", 900.0, 3.0, 0.0, 0.6, 200.0),
-            ("gearbox", "", 250.0, 3.2, 0.0, 1.6, 10.0),
-            ("tail", "boom and fin", 200.0, 8.0, 0.0, 1.0, 30.0),
-            ("left", "", 50.0, 3.0, -0.8, 0.4, 1.0),
+            ("id", "description", "mass [kg]", "x [m]", "y [m]", "z [m]", "Izz [kg m^2]",
+             "Ixx [kg m^2]", "Iyy [kg m^2]"),
+            # own inertias of items flat in the x-y plane (Izz = Ixx + Iyy: the triangle
+            # inequality of a physical tensor met with equality)
+            ("nose", "forward structure", 300.0, 1.0, 0.0, 0.5, 20.0, 10.0, 10.0),
+            ("cabin", "", 900.0, 3.0, 0.0, 0.6, 200.0, 100.0, 100.0),
+            ("gearbox", "", 250.0, 3.2, 0.0, 1.6, 10.0, 5.0, 5.0),
+            ("tail", "boom and fin", 200.0, 8.0, 0.0, 1.0, 30.0, 15.0, 15.0),
+            ("left", "", 50.0, 3.0, -0.8, 0.4, 1.0, 0.5, 0.5),
         ],
         "Stations": [("id", "x [m]"), ("S1", 1.5), ("S2", 3.1), ("S3", 5.0), ("S4", 7.5)],
         "Hardpoints": [

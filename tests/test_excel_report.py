@@ -30,6 +30,7 @@ from slingloads.io.loads import report as loads_report
 from slingloads.io.loads.report import (
     ENVELOPE_CSV_COLUMNS,
     SFBM_CSV_COLUMNS,
+    UNBOUNDED_RATIO,
     write_loads_outputs,
 )
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
@@ -243,7 +244,8 @@ def test_hostile_description_is_text(reports):
 
 def test_generic_writer_text_never_formula(tmp_path):
     """write_workbook stores '=...', '+cmd|...', '-1+2' and '@SUM(A1)' strings as text cells,
-    NaN as an empty cell and inf as the text 'inf' (Excel has no NaN or inf)."""
+    NaN as an empty cell and an unexplained inf as the text 'infinite', never the bare 'inf'
+    (Excel has no NaN or inf)."""
     frame = pd.DataFrame({"text": [HOSTILE, "+cmd|' /C calc'!A0", "-1+2", "@SUM(A1)"],
                           "number": [1.5, np.nan, np.inf, -2.0]})
     path = tmp_path / "t.xlsx"
@@ -252,7 +254,7 @@ def test_generic_writer_text_never_formula(tmp_path):
     col = [c for c in wb["T"]["A"]][1:]
     assert [c.value for c in col] == frame["text"].tolist()
     assert all(c.data_type == "s" for c in col)
-    assert [c.value for c in wb["T"]["B"]][1:] == [1.5, None, "inf", -2.0]
+    assert [c.value for c in wb["T"]["B"]][1:] == [1.5, None, "infinite", -2.0]
     assert wb["T"].freeze_panes == "B2"
     assert wb["T"]["A1"].font.b
 
@@ -286,13 +288,14 @@ def test_exceedance_sheet(result, reports, tmp_path):
     table = _table_after(_sheet_rows(path, "ExceedanceDetail"), "station")
     ref = result.comparison()
     assert table["station"].tolist() == ref["station"].tolist()
-    got = pd.to_numeric(table["exceedance ratio [-]"].replace("inf", np.inf))
+    got = pd.to_numeric(table["exceedance ratio [-]"].replace(UNBOUNDED_RATIO, np.inf))
     assert_allclose(got.to_numpy(float), ref["exceedance ratio"].to_numpy(), rtol=1e-15)
     assert np.nanmax(got.to_numpy(float)[np.isfinite(got)]) == pytest.approx(1.25)
     wide = _table_after(_sheet_rows(path, "Exceedance"), "station")
     assert wide["station"].tolist() == list(result.station_ids)
     vy = ref[ref["component"] == "Vy"]["exceedance ratio"].to_numpy()
-    assert_allclose(pd.to_numeric(wide["Vy ratio [-]"].replace("inf", np.inf)).to_numpy(float),
+    assert_allclose(pd.to_numeric(wide["Vy ratio [-]"].replace(UNBOUNDED_RATIO, np.inf))
+                    .to_numpy(float),
                     vy, rtol=1e-15)
     ws = load_workbook(path)["ExceedanceDetail"]
     col = list(table.columns).index("exceedance ratio [-]")

@@ -85,7 +85,7 @@ def test_parameters_out_of_their_bounds_are_refused_at_their_cell(name, value, u
     ("MultibodyManoeuvres", 2, 4, -1e9, "must not exceed"),
     ("MultibodyManoeuvres", 2, 5, 1e5, "must be <= 3600 s"),
     ("MultibodyManoeuvres", 1, 9, 720.0, "must be <= 180 deg"),
-    ("HTailAero", 2, 1, 50.0, "must be <= 10"),
+    ("HTailAero", 2, 1, 50.0, "must be <= 3"),
     ("CampaignMasses", 1, 1, 1e7, "must"),
     ("CampaignMasses", 1, 1, 0.0, "must be > 0 kg"),
 ])

@@ -289,10 +289,11 @@ def test_bad_rope_length(tmp_path, capsys, length):
     _bad(tmp_path, capsys, edit, "LateralRopes", "A3", "rope length must be > 0")
 
 
-@pytest.mark.parametrize("mass", [0.0, -100.0])
+@pytest.mark.parametrize("mass", [0.0, -100.0, 0.5])
 def test_bad_body_mass(tmp_path, capsys, mass):
-    """Rule: every body mass of LateralBodies is > 0."""
-    _bad(tmp_path, capsys, _bodies(mass=mass), "LateralBodies", "B3", "mass must be > 0")
+    """Rule: every body mass of LateralBodies is >= 1 kg (the smallest total of the
+    MassItems: below it no aircraft)."""
+    _bad(tmp_path, capsys, _bodies(mass=mass), "LateralBodies", "B3", "mass must be >= 1 kg")
 
 
 @pytest.mark.parametrize("inertia", [0.0, -5.0])

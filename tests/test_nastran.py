@@ -66,7 +66,9 @@ def example():
     items = study.airframe.mass_items
     rng = np.random.default_rng(3)
     root = rng.normal(0.0, 1.0, (len(items.mass), 3, 3))
-    inertia = np.einsum("nij,nkj->nik", root, root) + np.eye(3)   # symmetric, positive
+    second = np.einsum("nij,nkj->nik", root, root) + np.eye(3)  # integral(r r^T dm) > 0
+    trace = np.trace(second, axis1=1, axis2=2)[:, None, None]
+    inertia = trace * np.eye(3) - second  # a body's tensor: the triangle inequality holds
     items = MassItems(items.ids, items.mass, items.position, inertia, items.description)
     listed = (ListedCase("vérification-1", "AZ090", "NONE", False, "accented id"),
               ListedCase("L" * 60, "TOW", "A+B+", True, "a sixty-character id"),

@@ -12,7 +12,9 @@ Each analysis has a folder ``slingloads/io/<folder>/`` with
   ``checks``, the checks against the other analyses of the run:
   :mod:`slingloads.io.consistency`); optionally ``start_figures(result, units, study)`` (a
   started :class:`~slingloads.io.common.figures.FigureRenderer`, then passed to ``write`` as
-  ``figures=``) so that the figures are drawn while the next analyses are computed;
+  ``figures=``) so that the figures are drawn while the next analyses are computed; and
+  optionally ``shortfalls(result) -> list of str``, what the analysis was asked for and could
+  not compute (the command line then says so and exits with code 3);
 * ``plots.py``: the figures of the report.
 
 The study builder (:func:`slingloads.io.study.read_study`), the blank template
@@ -102,6 +104,13 @@ class Analysis:
         is written, or None when its report module draws them at writing time."""
         start = getattr(self.module("report"), "start_figures", None)
         return start(result, units, study) if start is not None else None
+
+    def shortfalls(self, result):
+        """What the analysis was asked for and could not compute (e.g. the multibody model
+        without a trim: no linear modes, no stability verdict), one line each; empty when
+        its report holds every result asked for."""
+        find = getattr(self.module("report"), "shortfalls", None)
+        return list(find(result)) if find is not None else []
 
     def output_patterns(self, stem):
         """Regular expressions of the names of its report files for input ``stem`` (its

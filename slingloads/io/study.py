@@ -12,6 +12,7 @@ from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
 from slingloads.io.common.cover import IDENTIFICATION, now_stamp
+from slingloads.io.common.hidden import hidden_warnings, read_cells
 from slingloads.io.common.parameters import StudyParameters
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import WorkbookReader
@@ -200,5 +201,5 @@ def _build(reader, path, only, sha256, on_read=None):
         if run[analysis.name] and on_read is not None:
             on_read(analysis.name, study)
     study.input_files = reader.input_files
-    study.warnings = list(reader.warnings)
+    study.warnings = [*reader.warnings, *hidden_warnings(reader, read_cells(reader, params))]
     return study

@@ -25,6 +25,41 @@ def _ids(ids, what):
     return ids
 
 
+#: Share of the largest principal moment by which it may exceed the sum of the other two
+#: (rounding of the written values: a thin plate meets the inequality with equality).
+INERTIA_TRIANGLE_TOLERANCE = 0.01
+
+#: The own-inertia columns of the MassItems sheet, by axis (an error names the one to fix).
+_MOMENT_FIELDS = ("Ixx", "Iyy", "Izz")
+
+
+def _check_triangle(ids, inertia, eig):
+    """Each item's principal moments meet the triangle inequality: none exceeds the sum of
+    the other two by more than :data:`INERTIA_TRIANGLE_TOLERANCE` of itself.
+
+    Rigid-body mechanics: about principal axes through the CG, I1 + I2 - I3 = 2 integral(x3^2
+    dm) >= 0 (and so for every pair), whatever the mass distribution; a tensor breaking it
+    has no body. The error names the diagonal term (field ``Ixx``, ``Iyy`` or ``Izz``) that
+    breaks the inequality most when one does, else the item's inertia (``inertia``)."""
+    excess = eig[:, 2] - eig[:, 0] - eig[:, 1]  # eigvalsh: ascending
+    bad = excess > INERTIA_TRIANGLE_TOLERANCE * eig[:, 2]
+    if not np.any(bad):
+        return
+    i = int(np.argmax(bad))
+    diag = np.diagonal(inertia[i]).copy()
+    over = 2.0 * diag - diag.sum()  # I_kk - (sum of the other two)
+    k = int(np.argmax(over))
+    field_name = (_MOMENT_FIELDS[k] if over[k] > INERTIA_TRIANGLE_TOLERANCE * diag[k]
+                  else "inertia")
+    low, mid, high = (float(f"{v:.6g}") for v in eig[i])
+    raise InputError(
+        f"own inertia of item {ids[i]!r} is not physical: its largest principal moment "
+        f"{high:g} kg m^2 exceeds the sum of the other two ({low:g} + {mid:g} kg m^2); no "
+        "body has a moment of inertia larger than the sum of the other two (Ixx + Iyy - Izz "
+        "= 2 integral(z^2 dm) >= 0; 1 % allowed for rounding): give all three own moments "
+        "(an item flat in the x-y plane has Izz = Ixx + Iyy)", field=field_name, index=i)
+
+
 @dataclass(frozen=True)
 class MassItems:
     """Lumped mass items of the airframe.
@@ -38,7 +73,8 @@ class MassItems:
     position : array_like, shape (n, 3)
         Item centres of gravity (x aft, y right, z up). [m]
     inertia : array_like, shape (n, 3, 3), optional
-        Each item's own inertia tensor about its own CG (zero for point masses). [kg m^2]
+        Each item's own inertia tensor about its own CG (zero for point masses), physical:
+        principal moments >= 0, none larger than the sum of the other two. [kg m^2]
     description : sequence of str, optional
         Readable text per item.
     """
@@ -82,6 +118,7 @@ class MassItems:
                 f"{[float(f'{v:.6g}') for v in eig[i]]} kg m^2 must all be >= 0 (negative "
                 "principal moment: the products of inertia are too large for the moments)",
                 field="inertia", index=i)
+        _check_triangle(ids, inertia, eig)
         desc = tuple(self.description) or ("",) * n
         object.__setattr__(self, "ids", ids)
         object.__setattr__(self, "mass", mass)

@@ -69,7 +69,8 @@ class TabulatedWake:
         Strictly increasing distances behind the fuselage (measured from the parachute
         attachment), >= 0. [m]
     ratio : array_like, shape (n,)
-        q_wake / q at those distances, in (0, 1.2]. [-]
+        q_wake / q at those distances, in (0, 1.2], not decreasing: the wake recovers
+        downstream (its velocity deficit decays with distance). [-]
     source : str
         Where the table comes from, for reports.
     """
@@ -97,6 +98,12 @@ class TabulatedWake:
         if np.any(bad):
             raise InputError("wake dynamic-pressure ratios must lie in (0, 1.2]",
                              r[bad][0].item())
+        falls = np.diff(r) < 0
+        if np.any(falls):
+            i = int(np.argmax(falls)) + 1
+            raise InputError("wake dynamic-pressure ratios must not decrease downstream (a "
+                             "wake recovers with distance)", r[i].item(), field="ratio",
+                             index=i)
         object.__setattr__(self, "distance", x)
         object.__setattr__(self, "ratio", r)
 

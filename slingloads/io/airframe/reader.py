@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from slingloads.errors import InputError
-from slingloads.io.airframe.schema import HARDPOINT_KINDS, SHEETS
+from slingloads.io.airframe.schema import HARDPOINT_KINDS, PLATE_FORCE_COEFFICIENT, SHEETS
 from slingloads.io.common.atomic import safe_file_part
 from slingloads.io.common.locate import column_quantity, quantity, quantity_range
 from slingloads.io.common.schema import STUDY_SHEET
@@ -345,10 +345,56 @@ def read_fuselage_aero(reader, params, refs):
     t.require_filled(columns, "the table needs every coefficient of its frame at every "
                      "(alpha, beta) point")
     _check_full_grid(t)
+    _check_force_areas(reader, t, columns, force_axes, area, length, refs)
     with t.located():
         table = Table2D.from_long(t["alpha"], t["beta"], {c: t[c] for c in columns})
         return FuselageAero(table, area, length, refs["aero_reference"], force_axes,
                             moment_axes)
+
+
+def _check_force_areas(reader, t, columns, force_axes, area, length, refs):
+    """Bounds of the FuselageAero coefficients, at the cell of the first that breaks one.
+
+    The coefficients may be on any reference area and length (D/q tables on 1 ft^2 too), so
+    the bounds are on what does not depend on that choice: no force area |C| x S above that
+    of a flat plate L x L square to the flow (force coefficient
+    :data:`~slingloads.io.airframe.schema.PLATE_FORCE_COEFFICIENT`), L the airframe's length
+    (the x span of the mass items and hardpoints, at least 1 m), and no moment |C| x S x l
+    above that force times the distance from the aero_reference hardpoint to the farthest
+    airframe point. In wind axes the drag CD is >= 0: a body without propulsion takes energy
+    from the flow (the drag force is along the airflow)."""
+    if force_axes == "wind" and "CD" in columns:
+        negative = np.flatnonzero(t["CD"] < 0)
+        if negative.size:
+            raise t.error("CD", int(negative[0]), "the drag coefficient CD must be >= 0 in "
+                          "wind axes (a body without propulsion takes energy from the flow: "
+                          "its drag is along the airflow)")
+    items = reader.table(_SPEC["MassItems"])
+    points = [np.column_stack([items["x"], items["y"], items["z"]])]
+    points += [np.atleast_2d(p) for k, p in refs.items()
+               if k in HARDPOINT_KINDS and p is not None]
+    points = np.concatenate(points)
+    size = max(float(np.ptp(points[:, 0])), 1.0)
+    force_area = PLATE_FORCE_COEFFICIENT * size**2
+    arm = max(float(np.linalg.norm(points - refs["aero_reference"], axis=1).max()), size)
+    for column in columns:
+        values = np.abs(t[column])
+        i = int(np.argmax(values))
+        moment = column in ("Cl", "Cm", "Cn")
+        got = values[i] * area * (length if moment else 1.0)
+        limit = force_area * (arm if moment else 1.0)
+        if got > limit:
+            plate = (f"a flat plate as long as the airframe ({size:.4g} m) and as wide, "
+                     f"square to the flow (force coefficient {PLATE_FORCE_COEFFICIENT:g}): "
+                     f"{force_area:.4g} m^2")
+            what = (f"|{column}| x 'fuselage reference area' x 'fuselage reference length' "
+                    f"= {got:.4g} m^3 exceeds {limit:.4g} m^3, the force area of {plate} at "
+                    f"{arm:.4g} m (the farthest airframe point from the aero_reference "
+                    "hardpoint)") if moment else (
+                    f"the force area |{column}| x 'fuselage reference area' = {got:.4g} m^2 "
+                    f"exceeds that of {plate}")
+            raise t.error(column, i, f"{what}: no airframe makes that much; check the "
+                          "coefficient and the reference area and length")
 
 
 def _columns_match(reader, table, needed, optional, why):
@@ -463,7 +509,9 @@ def read_parachute_cd(reader, axes="wind"):
                         what="parachute")
     if not t["alpha"].min() <= 0 <= t["alpha"].max():
         raise t.error("alpha", int(np.argmin(np.abs(t["alpha"]))),
-                      "the parachute table must include alpha = 0 deg")
+                      "the parachute table must cover alpha = 0 deg (from a negative to a "
+                      "positive alpha, or with a row at 0): the canopy trails at 0 in steady "
+                      "flight")
     return table
 
 

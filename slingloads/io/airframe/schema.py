@@ -31,6 +31,16 @@ COORDINATE = Bounds(-MAX_COORDINATE, MAX_COORDINATE, unit="m")
 #: Bounds of a table's angle of attack or sideslip.
 TABLE_ANGLE = Bounds(-180.0, 180.0, unit="deg")
 
+#: Bounds of the force coefficient of a lifting surface on its own planform area (FinAero CY,
+#: HTailAero CN): a flat plate square to the flow reaches about 1.2 (2.0 in two dimensions)
+#: and an unflapped aerofoil stalls below 2, so |C| <= 3 leaves half as much again; a larger
+#: value is a typing or reference-area mistake.
+SURFACE_COEFFICIENT = Bounds(-3.0, 3.0)
+#: Force coefficient of a flat plate square to the flow in two dimensions (the largest of a
+#: bluff body's); the FuselageAero force areas are bounded by a square plate as long as the
+#: airframe at this coefficient.
+PLATE_FORCE_COEFFICIENT = 2.0
+
 #: Kinds of the Hardpoints rows.
 HARDPOINT_KINDS = ("hub", "mast_foot", "chute", "fin_cp", "aero_reference", "htail_cp")
 
@@ -107,13 +117,16 @@ SHEETS = (
         Column("Ixx", "inertia", "kg m^2", False, 0.0,
                "Own moment of inertia of the item about the x axis through its OWN CG (the "
                "offset from the aircraft CG is added by slingloads), >= 0; 0 for a point mass. "
-               "Typical: 0 to 50 kg m^2 (a gearbox).", at_least(0)),
+               "An item's own moments are a body's: none larger than the sum of the other two "
+               "(Iyy + Izz - Ixx = 2 integral(x^2 dm) >= 0; 1 % allowed for rounding), so "
+               "give all three. Typical: 0 to 50 kg m^2 (a gearbox).", at_least(0)),
         Column("Iyy", "inertia", "kg m^2", False, 0.0,
                "Own moment of inertia about the y axis through the item's own CG, >= 0; 0 for a "
-               "point mass. Typical: 0 to 50 kg m^2.", at_least(0)),
+               "point mass; at most Ixx + Izz. Typical: 0 to 50 kg m^2.", at_least(0)),
         Column("Izz", "inertia", "kg m^2", False, 0.0,
                "Own moment of inertia about the z axis through the item's own CG, >= 0; 0 for a "
-               "point mass. Typical: 0 to 50 kg m^2.", at_least(0)),
+               "point mass; at most Ixx + Iyy (an item flat in the x-y plane has Izz = Ixx + "
+               "Iyy). Typical: 0 to 50 kg m^2.", at_least(0)),
         Column("Ixy", "inertia", "kg m^2", False, 0.0,
                "Product of inertia about the item's own CG, tensor sign: the tensor's xy term "
                "= -integral(x y dm). Typical: 0 (item symmetric about its own axes)."),
@@ -190,7 +203,8 @@ SHEETS = (
                     "deg.", bounds=TABLE_ANGLE),
         Column("CD", "dimensionless", required=False,
                help="DRAG coefficient on 'fuselage reference area' ('fuselage force axes' wind "
-                    "or stability): along the airflow (downstream), >= 0. Typical (generic HC1 "
+                    "or stability): along the airflow (downstream), >= 0 in wind axes (a body "
+                    "without propulsion takes energy from the flow). Typical (generic HC1 "
                     "tables of slingloads/data, wind axes): 0.30 at alpha = beta = 0, 2.0 "
                     "side-on (beta 90 deg)."),
         Column("CY", "dimensionless",
@@ -226,7 +240,13 @@ SHEETS = (
                     "beta 10 deg (a fuselage alone is unstable)."),
     ), help="Fuselage coefficients on a full alpha x beta grid, in the frames declared by "
        "'fuselage force axes' (CD, CY, CL for wind or stability; CX, CY, CZ for body) and "
-       "'fuselage moment axes' (docs/conventions.md section 3). Never extrapolated.",
+       "'fuselage moment axes' (docs/conventions.md section 3). Never extrapolated. Any "
+       "reference area and length may be used (D/q tables on 1 ft^2 too), so the bound is on "
+       "the force area: |coefficient| x 'fuselage reference area' at most 2 L^2, the force on "
+       "a flat plate L x L square to the flow (force coefficient 2), L the airframe's length "
+       "(the x span of the mass items and hardpoints); a moment coefficient x area x "
+       "reference length at most 2 L^2 times the farthest airframe point from the "
+       "aero_reference hardpoint.",
        max_rows=MAX_AERO_ROWS),
     TableSheet("FinAero", (
         Column("beta", "angle", "deg",
@@ -237,13 +257,18 @@ SHEETS = (
                     "fin_cp hardpoint (the cut-down fin keeps 'fin efficiency' of it): along +y "
                     "normal to the fin ('fin axes' body) or along y_W normal to the airflow "
                     "(wind). A stabilising fin has CY < 0 for beta > 0. Typical (HC1, body "
-                    "axes): -0.53 at beta 10 deg, -0.86 at 20 deg, then stall."),
-    ), help="Intact fin side-force coefficient against sideslip, on 'fin area', in the frame "
-       "of 'fin axes'.", max_rows=MAX_AERO_ROWS),
+                    "axes): -0.53 at beta 10 deg, -0.86 at 20 deg, then stall. Within "
+                    "[-3, 3] on the fin's own area: a flat plate square to the flow reaches "
+                    "about 1.2 (2.0 in two dimensions).", bounds=SURFACE_COEFFICIENT),
+    ), help="Intact fin side-force coefficient against sideslip, on 'fin area' (the fin's "
+       "planform area), in the frame of 'fin axes'.", max_rows=MAX_AERO_ROWS),
     TableSheet("ParachuteCD", (
         Column("alpha", "angle", "deg",
                help="Angle of attack of the canopy (between its axis and the relative wind), "
-                    "strictly increasing, including 0. Typical: -30 to +30 deg.",
+                    "strictly increasing, covering 0 (the canopy trails at 0 in steady "
+                    "flight): from a negative to a positive alpha, or with a row at 0; the "
+                    "coefficient at 0 is then read or interpolated linearly. Typical: -30 to "
+                    "+30 deg (the default table: -8 and +8 deg).",
                bounds=TABLE_ANGLE),
         Column("CD", "dimensionless", required=False,
                help="Free-stream drag coefficient on the flat-plate area ('parachute area'), "

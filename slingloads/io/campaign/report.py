@@ -39,7 +39,12 @@ from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
 from slingloads.io.common.locate import at_cell
 from slingloads.io.common.ownership import PARQUET_KEY
-from slingloads.io.common.report import check_units, column_blocks, warning_sections
+from slingloads.io.common.report import (
+    check_units,
+    column_blocks,
+    explain_infinite,
+    warning_sections,
+)
 
 ANALYSIS = "campaign"
 _PNG_DPI = 90
@@ -85,6 +90,19 @@ class CampaignReport:
     inputs: object
     result: object
     cache: str
+
+
+#: How the campaign's tables write the metrics that have no finite value.
+_INFINITE = {"yaw mode period [s]": "none (aperiodic)",
+             "yaw mode time to half amplitude [s]": "none (not damped)",
+             "longest yaw-mode time to half amplitude [s]": "none (not damped)"}
+
+
+def _explained(frame):
+    """``frame`` with the infinite metrics of :data:`_INFINITE` written as what they mean."""
+    for column, text in _INFINITE.items():
+        frame = explain_infinite(frame, [column], text)
+    return frame
 
 
 def in_units(frame, units):
@@ -305,8 +323,9 @@ def _sheets(report, units, warnings=()):
         "Summary": summary,
         "Matrix": _parts("The run matrix", in_units(r.campaign.matrix.frame, units), ["run"]),
         "Metrics": _parts("Metrics of every run (its definition: sheet Matrix)",
-                          in_units(results, units), ["run"]),
-        "Selection": [Section("By area factor", in_units(r.selection.by_area, units))],
+                          _explained(in_units(results, units)), ["run"]),
+        "Selection": [Section("By area factor",
+                              _explained(in_units(r.selection.by_area, units)))],
         "NeutralArea": [Section("1.0 x neutral area: 1-DOF and multibody verdicts",
                                 r.neutral_check)],
     }

@@ -306,6 +306,11 @@ def _wake_table(reader, params, target):
                           f"at {t.cell('distance', i - 1)})")
         if not 0 < r[i] <= 1.2:
             raise t.error("q ratio", i, "wake q ratio must lie in (0, 1.2]")
+        if i and r[i] < r[i - 1]:
+            raise t.error("q ratio", i, "wake q ratio must not decrease downstream (a "
+                          "wake recovers with distance: its velocity defect decays, as "
+                          f"x^(-2/3) far behind the body); it falls from {r[i - 1]:.4g} at "
+                          f"{t.cell('q ratio', i - 1)}")
     if 0 < target <= 1 and not r.max() >= target:
         i = int(np.argmax(r))
         raise t.error("q ratio", i, (

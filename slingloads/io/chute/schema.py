@@ -11,6 +11,7 @@ length'. Method and signs: ``docs/parachute-sizing.md``.
 from __future__ import annotations
 
 from slingloads.io.common.schema import (
+    AIRSPEED,
     INTEGER,
     RELATIVE_TOLERANCE,
     TEXT,
@@ -44,8 +45,9 @@ _S = "chute sizing"
 
 PARAMETERS = (
     Parameter("chute sizing airspeed IAS", "speed", "kt", 80.0,
-              "Indicated airspeed of the sizing, taken equal to EAS, > 0 (paper: 80 KIAS).",
-              _S, above(0)),
+              "Indicated airspeed of the sizing, taken equal to EAS, > 0 and at most 200 kt "
+              "(the cap of every analysis; paper: 80 KIAS).", _S,
+              Bounds(0, AIRSPEED.hi, lo_open=True, unit=AIRSPEED.unit)),
     Parameter("chute sizing density altitude", "length", "ft", 0.0,
               "ISA density altitude of the sizing (paper: sea level).", _S,
               Bounds(-610, 11000, unit="m")),
@@ -178,8 +180,9 @@ SHEETS = (
                bounds=Bounds(0, 10_000, unit="m")),
         Column("q ratio", "dimensionless",
                help="Dynamic pressure in the fuselage wake at that distance over the free "
-                    "stream's, in (0, 1.2]. Typical: 0.5 just behind the fuselage, 0.95 at "
-                    "10 m.",
+                    "stream's, in (0, 1.2], not decreasing down the sheet (the wake recovers "
+                    "with distance: its velocity defect decays). Typical: 0.5 just behind the "
+                    "fuselage, 0.95 at 10 m.",
                bounds=Bounds(0, 1.2, lo_open=True)),
     ), help="Optional (with 'chute sizing wake source' = table): dynamic-pressure ratio in the "
        "fuselage wake against distance, from CFD or test (paper section 3.2). Never "

@@ -19,8 +19,10 @@ headers, and images already drawn. Every sheet it writes, whatever its content, 
 * **safety**: every string stored as text, never as a formula (a case description such as
   ``=HYPERLINK("x")`` is a string cell, ``data_type "s"``; a text that looks like
   XlsxWriter's own rich-string markup, ``<r>...</r>``, is written as a rich string of two
-  runs, so that it too is escaped); NaN an empty cell and +/-inf the text ``inf``/``-inf``
-  (Excel has neither); a table longer than Excel's row limit split over ``NAME_1``,
+  runs, so that it too is escaped); NaN an empty cell and +/-inf the text
+  :data:`INFINITE_TEXT`, never a bare ``inf`` (Excel has neither; the reports write what
+  their infinite values mean instead, :func:`slingloads.io.common.report.explain_infinite`:
+  this is the last resort); a table longer than Excel's row limit split over ``NAME_1``,
   ``NAME_2``... with the header repeated, never truncated;
 * images scaled to the printable width, two to a page when they fit, never cut by a page
   break; a red fill on ratio cells above a threshold (conditional formatting).
@@ -168,7 +170,8 @@ class Highlight:
     columns : sequence of str
         Header names of the columns to watch.
     threshold : float
-        Cells with a number greater than this (or the text ``inf``) are filled red.
+        Cells with a number greater than this, or with a text (a ratio without a finite
+        value, written as what it means: ``"unbounded (previous 0)"``), are filled red.
     """
 
     columns: Sequence[str] = field(default_factory=tuple)
@@ -219,6 +222,10 @@ def split_sheet_names(name, n_rows, max_rows=EXCEL_MAX_ROWS):
              min((k + 1) * per_sheet, n_rows)) for k in range(parts)]
 
 
+#: Text of an infinite number the report has not explained, by sign (+inf: True).
+INFINITE_TEXT = {True: "infinite", False: "-infinite"}
+
+
 def _plain(value):
     """A Python value the writer stores faithfully (numpy scalars unwrapped, NaN -> None,
     booleans -> ``yes``/``no``)."""
@@ -226,7 +233,7 @@ def _plain(value):
     if kind is float:  # the common cases first (a table's cells)
         if value != value:
             return None
-        return value if -math.inf < value < math.inf else ("inf" if value > 0 else "-inf")
+        return value if -math.inf < value < math.inf else INFINITE_TEXT[value > 0]
     if kind is str or kind is int:
         return value
     if isinstance(value, np.generic):
@@ -241,7 +248,7 @@ def _plain(value):
             if math.isnan(value):
                 return None
             if math.isinf(value):
-                return "inf" if value > 0 else "-inf"
+                return INFINITE_TEXT[value > 0]
         return value
     if isinstance(value, str):
         return value
@@ -475,6 +482,18 @@ def _is_text(series):
     return series.dtype == object or pd.api.types.is_string_dtype(series.dtype)
 
 
+def _explained_numbers(series, header):
+    """A column of numbers in which some values are written as what they mean (the texts of
+    :func:`~slingloads.io.common.report.explain_infinite`): its header carries a unit and
+    every value is a number, a text or empty. It is laid out as a column of numbers (right
+    aligned, as wide as its numbers and its texts)."""
+    if series.dtype != object or header_unit(header) is None:
+        return False
+    kinds = {type(v) for v in series if v is not None and not (isinstance(v, float) and v != v)}
+    return str in kinds and all(k is str or (issubclass(k, numbers.Real) and k is not bool)
+                                for k in kinds)
+
+
 def _row_unit_columns(frame, formats):
     """Columns whose format comes from the row's ``unit`` column: numeric columns with no
     unit in their header, in a table that has a ``unit`` column."""
@@ -526,14 +545,18 @@ def _column_plan(tables, notes=(), formats_of=None):
         formats = formats_of(frame) if formats_of else [None] * frame.shape[1]
         for j, col in enumerate(frame.columns):
             series = frame.iloc[:, j]
+            explained = _explained_numbers(series, col)
             if pd.api.types.is_bool_dtype(series.dtype):
                 data = 3
             elif pd.api.types.is_numeric_dtype(series.dtype):
                 data = _number_width(series, formats[j])
+            elif explained:
+                data = max(_number_width(series, formats[j]),
+                           _text_width(v for v in series if isinstance(v, str)))
             else:
                 data = _text_width(series)
             words = max((len(w) for w in str(col).split()), default=0)
-            text = not (pd.api.types.is_numeric_dtype(series.dtype)
+            text = not (pd.api.types.is_numeric_dtype(series.dtype) or explained
                         or pd.api.types.is_bool_dtype(series.dtype))
             width = max(data + text, int(1.1 * words) + 1, min(len(str(col)), 10), 4) + 2
             if width > MAX_TEXT_WIDTH:
@@ -701,7 +724,8 @@ def _highlight(writer, frame, first_row, last_row, highlight):
         top = f"{xl_col_to_name(j)}{first_row}"
         writer.ws.conditional_format(first_row - 1, j, last_row - 1, j, {
             "type": "formula", "format": writer.wb.red(),
-            "criteria": f'=OR(AND(ISNUMBER({top}),{top}>{highlight.threshold!r}),{top}="inf")'})
+            "criteria": f'=OR(AND(ISNUMBER({top}),{top}>{highlight.threshold!r}),'
+                        f'ISTEXT({top}))'})
 
 
 def _check_highlight(frames, highlight, sheet):
@@ -730,8 +754,9 @@ def _alignments(frame, columns):
                 and max(len(v) if isinstance(v, str) else 0 for v in values) <= _ID_WIDTH):
             cells.append(_CENTER)
             heads.append(_HEADER_CENTER)
-        elif pd.api.types.is_numeric_dtype(series.dtype):
-            cells.append(_RIGHT)  # numbers, and the text inf of an infinite one
+        elif (pd.api.types.is_numeric_dtype(series.dtype)
+              or _explained_numbers(series, frame.columns[j])):
+            cells.append(_RIGHT)  # numbers, and the text of an infinite one
             heads.append(_HEADER_RIGHT)
         elif texts:
             cells.append(_LEFT)  # text: a little room from the number on its left

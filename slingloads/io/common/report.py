@@ -86,6 +86,30 @@ def convert_columns(frame, spec, units):
     return out.rename(columns=renames)
 
 
+def explain_infinite(frame, columns, text, negative=None):
+    """A copy of ``frame`` whose infinite numbers in ``columns`` are written as what they
+    mean: ``text`` for +inf, ``negative`` for -inf (default ``"-" + text``).
+
+    Excel has no infinity, and a bare ``inf`` in a column of numbers reads as a fault; a
+    report says instead why the value has no finite size (``"unbounded (velocity step)"``:
+    the acceleration of an impulse; ``"unbounded (previous 0)"``: a ratio over zero). The
+    other cells keep their numbers (and their number format); absent columns are skipped.
+    """
+    out = frame.copy()
+    for column in columns:
+        if column not in out.columns:
+            continue
+        values = pd.to_numeric(out[column], errors="coerce").to_numpy(float)
+        infinite = np.isinf(values)
+        if not infinite.any():
+            continue
+        cells = out[column].astype(object).to_numpy(copy=True)
+        cells[infinite & (values > 0)] = text
+        cells[infinite & (values < 0)] = negative if negative is not None else f"-{text}"
+        out[column] = cells
+    return out
+
+
 def digest_frame(inputs_digest):
     """What a report was computed from, as a two-column table ``input | entry``.
 

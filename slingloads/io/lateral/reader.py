@@ -32,6 +32,7 @@ from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import check_unique, located
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
+    MIN_ROLL_GYRATION,
     MOTION_ALIASES,
     MOTION_TYPES,
     SHEETS,
@@ -294,6 +295,13 @@ def _bodies(reader, study):
     bodies = []
     fields = {"roll_inertia": "roll inertia", "cg_below_hub": "CG below hub"}
     for i, name in enumerate(t["id"]):
+        gyration = np.sqrt(t["roll inertia"][i] / t["mass"][i])
+        if gyration < MIN_ROLL_GYRATION:
+            raise t.error("roll inertia", i, f"the roll radius of gyration sqrt(roll "
+                          f"inertia / mass) is {gyration:.3g} m, less than the "
+                          f"{MIN_ROLL_GYRATION:g} m of a solid cylinder 0.28 m across "
+                          "(helicopters: about 1 m): check the inertia, the mass and their "
+                          "units")
         with at_row(t, "mass", i, fields):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))

@@ -61,6 +61,7 @@ from slingloads.io.common.report import (
     check_units,
     convert_columns,
     csv_frame,
+    explain_infinite,
     in_report_units,
     report_unit,
     sample_rows,
@@ -70,6 +71,9 @@ from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
 
 ANALYSIS = "lateral"
+#: The peak hook acceleration of a velocity step, as the Runs sheet writes it (its note says
+#: why): the speed jumps at t = 0, an impulse of acceleration without a finite peak.
+UNBOUNDED_STEP = "unbounded"
 #: PNG files written, by tag: ``<stem>-lateral-<tag>.png``.
 PLOTS = ("histories", "max-angle", "sensitivity", "shear")
 #: Names of the files of a lateral report, for the publisher (a new report replaces them all).
@@ -307,7 +311,7 @@ def runs_table(result, units="SI"):
     frame.insert(1, "motion id", [result.motion_id(int(c) - 1) for c in frame["case"]])
     frame.insert(list(frame.columns).index("rope length [m]") + 1, "rope length [ft]",
                  frame["rope length [m]"] / FOOT)
-    return convert_columns(frame, {
+    frame = convert_columns(frame, {
         "mass [kg]": ("mass", "mass"), "roll inertia [kg m^2]": ("roll inertia", "inertia"),
         "CG below hub [m]": ("CG below hub", "length"),
         "rope length [m]": ("rope length", "length"),
@@ -315,6 +319,11 @@ def runs_table(result, units="SI"):
         "cable EA [N]": ("cable EA", "force"),
         "peak S'' [m/s^2]": ("peak S''", "acceleration"),
         "velocity jump [m/s]": ("velocity jump", "speed")}, units)
+    # a velocity step's acceleration is an impulse; a rigid cable's EA has no finite value
+    frame = explain_infinite(frame, [c for c in frame.columns if c.startswith("peak S'' [")],
+                             UNBOUNDED_STEP)
+    return explain_infinite(frame, [c for c in frame.columns if c.startswith("cable EA [")],
+                            "rigid")
 
 
 def history_table(result, units="SI"):
@@ -340,7 +349,10 @@ def comparison_station_table(comparison, units="SI"):
         kind = COMPONENT_KINDS[COMPONENTS.index(name)]
         for label in comparison.labels():
             spec[f"max |{name}| {label} [{SI_LABELS[kind]}]"] = (f"max |{name}| {label}", kind)
-    return convert_columns(comparison.station_frame(), spec, units)
+    frame = convert_columns(comparison.station_frame(), spec, units)
+    # a load where the 30 deg cone gives none: no finite reduction (an increase from 0)
+    return explain_infinite(frame, [c for c in frame.columns if c.endswith(" reduction [%]")],
+                            "unbounded", "increase from 0")
 
 
 def comparison_summary_table(comparison, units="SI"):
@@ -423,7 +435,9 @@ def _sheets(result, units, warnings=()):
         "Runs": [Section(f"Every case: {len(st.pendulums)} runs, RK4 step {st.step:.4g} s "
                          f"over {st.t_end:.4g} s",
                          note="Motion ids: LateralMotions sheet; cases are motions x rope "
-                              "lengths x bodies."),
+                              "lengths x bodies. peak S'' of a velocity step: "
+                              f"'{UNBOUNDED_STEP}', the hook's speed jumps at t = 0 (an "
+                              "impulse of acceleration, of the size of the velocity jump)."),
                  Section("Bodies (mass cases)", bodies),
                  Section("Definition of every case (cable model: sheet Summary)", definition),
                  Section("Results of every case", results)],

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from slingloads.analyses.lateral_damping import DAMPING_SOURCES
 from slingloads.io.common.schema import (
+    AIRSPEED,
     INTEGER,
     RELATIVE_TOLERANCE,
     TEXT,
@@ -44,6 +45,12 @@ THEN = ("hold", "stop")
 SOLVER_METHODS = SOLVE_IVP_METHODS
 
 _S = "lateral"
+#: Smallest mass of a LateralBodies row (the smallest total of the MassItems). [kg]
+MIN_BODY_MASS = 1.0
+#: Smallest roll radius of gyration sqrt(I/m) of a LateralBodies row: a solid cylinder
+#: 0.28 m across (k = R / sqrt(2)); helicopters have about 0.9 to 1 m (BO-105C 0.93 m, NASA
+#: CR-3144; UH-60A 1.01 m, NASA TM 85890). [m]
+MIN_ROLL_GYRATION = 0.1
 
 PARAMETERS = (
     Parameter("lateral design-angle margin", "dimensionless", "", 1.5,
@@ -71,8 +78,8 @@ PARAMETERS = (
               at_least(0)),
     Parameter("lateral airspeed EAS", "speed", "kt", 0.0,
               "Airspeed at which the aerodynamic damping is derived, >= 0 (0 = hover, the "
-              "paper's lateral step: no linear aerodynamic damping).", _S,
-              Bounds(0, 400, unit="kt")),
+              "paper's lateral step: no linear aerodynamic damping), at most 200 kt (the "
+              "cap of every analysis).", _S, AIRSPEED),
     Parameter("lateral density altitude", "length", "ft", 0.0,
               "ISA density altitude of the aerodynamic damping.", _S,
               Bounds(-610, 11000, unit="m")),
@@ -168,12 +175,16 @@ SHEETS = (
     ), help="Rope (cable) lengths to sweep.", max_rows=MAX_LATERAL_RUNS),
     TableSheet("LateralBodies", (
         Column("id", TEXT, help="Unique name of the mass case, e.g. HEAVY."),
-        Column("mass", "mass", "kg", help="Mass of the carried helicopter, > 0. Typical: "
+        Column("mass", "mass", "kg", help="Mass of the carried helicopter, >= 1 kg (as the "
+                                          "MassItems' total: below it no aircraft). Typical: "
                                           "2,000 to 3,000 kg for a light twin.",
-               bounds=above(0)),
+               bounds=at_least(MIN_BODY_MASS, unit="kg")),
         Column("roll inertia", "inertia", "kg m^2",
-               help="Roll moment of inertia about the x axis through the CG, > 0. Typical: "
-                    "1,000 to 2,000 kg m^2 for a 2.9 t light twin without blades.",
+               help="Roll moment of inertia about the x axis through the CG, > 0, with a "
+                    f"radius of gyration sqrt(inertia / mass) of at least "
+                    f"{MIN_ROLL_GYRATION:g} m (a solid cylinder 0.28 m across; helicopters: "
+                    "about 0.9 to 1 m). Typical: 1,000 to 2,000 kg m^2 for a 2.9 t light "
+                    "twin without blades.",
                bounds=above(0)),
         Column("CG below hub", "length", "m",
                help="Distance from the rotor hub down the mast axis to the CG, >= 0 "

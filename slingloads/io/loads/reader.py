@@ -117,6 +117,7 @@ def _hook_options(reader, params):
              "lateral_angle": "hook lateral angle", "n_azimuth": "hook azimuths",
              "include_vertical": "hook vertical case", "towed": "towed equilibrium cases"}
     kwargs = {arg: params(name) for arg, name in names.items()}
+    _nz_warning(reader, params, kwargs["nz"])
     if kwargs["lateral_angle"] == 0:
         kwargs["lateral_angle"] = None  # 0: the same as 'hook angle from vertical'
     kwargs["cone"] = params.choice("hook cone shape", CONE_SHAPES)
@@ -125,6 +126,22 @@ def _hook_options(reader, params):
             HookLoadOptions(**{arg: kwargs[arg]})
     with params.at("hook azimuths"):
         return HookLoadOptions(**kwargs)
+
+
+#: The hook load factor of CS 29.865(a) for non-human external cargo.
+REGULATORY_NZ = 2.5
+
+
+def _nz_warning(reader, params, nz):
+    """Flag a hook load factor below the 2.5 of CS 29.865(a): a lower factor is allowed only
+    when approved under CS 29.337 to 29.341 (the Study sheet refuses one below 1)."""
+    if nz < REGULATORY_NZ:
+        text = (f"hook load factor Nz = {nz:g} (Study {params.where('hook load factor Nz')}) "
+                f"is below the {REGULATORY_NZ:g} of CS 29.865(a): a lower factor must be "
+                "approved under CS 29.337 to 29.341 (CS 29.337 allows no positive limit "
+                "manoeuvring factor below +2.0)")
+        if text not in reader.warnings:
+            reader.warnings.append(text)
 
 
 def _attitude(reader, params, airframe, refs):

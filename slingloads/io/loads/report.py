@@ -64,6 +64,7 @@ from slingloads.io.common.figures import (
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
+    explain_infinite,
     in_report_units,
     labelled,
     report_unit,
@@ -284,8 +285,13 @@ def comparison_report_table(result, units="SI"):
     frame["status"] = frame["status"].map(_SHORT_STATUS).fillna(frame["status"])
     frame = frame.rename(columns={"exceedance ratio": "exceedance ratio [-]"})
     frame = frame.drop(columns=["exceeds"])
+    frame = explain_infinite(frame, ["exceedance ratio [-]"], UNBOUNDED_RATIO)
     return convert_columns(frame, {"x [m]": ("x", "length")}, units)
 
+
+#: An exceedance ratio over a previous envelope of 0 (a new load where there was none), as
+#: the Exceedance sheets write it (filled red like a ratio above 1).
+UNBOUNDED_RATIO = "unbounded (previous 0)"
 
 _SHORT_STATUS = {"EXCEEDS previous envelope": "EXCEEDS", "within": "within",
                  "not covered by previous envelope": "not covered"}
@@ -306,7 +312,8 @@ def exceedance_wide_table(result, units="SI"):
         frame[f"{name} ratio [-]"] = ratios[name].to_numpy(float)
     frame["worst [-]"] = ratios[list(COMPONENTS)].max(axis=1).to_numpy(float)
     frame["previous values"] = previous_station_status(result)
-    return frame
+    return explain_infinite(frame, [*(f"{name} ratio [-]" for name in COMPONENTS),
+                                    "worst [-]"], UNBOUNDED_RATIO)
 
 
 def hull_report_table(result, pair, stations, units="SI"):
@@ -890,7 +897,9 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
             "Exceedance of the LIMIT envelope over the previous design envelope, by station",
             wide,
             note="ratio = max(new max+ / previous max+, |new min-| / |previous min-|); above 1 "
-                 "(red) the new envelope exceeds the previous one. 'previous values': given at "
+                 "(red) the new envelope exceeds the previous one; "
+                 f"'{UNBOUNDED_RATIO}' (red): a new load where the previous envelope is 0. "
+                 "'previous values': given at "
                  "this station, or INTERPOLATED linearly between the previous envelope's "
                  "stations. Where the previous envelope comes from: "
                  + ("Summary, findings." if source else "not stated (Study sheet 'previous "

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from slingloads.io.airframe.schema import COORDINATE, TABLE_ANGLE
 from slingloads.io.common.schema import (
+    AIRSPEED,
     FLAG,
     INTEGER,
     TEXT,
@@ -56,14 +57,17 @@ NASTRAN_PARAMETERS = (
 
 PARAMETERS = (
     Parameter("airspeed EAS", "speed", "kt", 100.0,
-              "Equivalent airspeed of the loads cases (paper: 100 KEAS).", "flight",
-              at_least(0)),
+              "Equivalent airspeed of the loads cases (paper: 100 KEAS), at most 200 kt "
+              "(above the never-exceed speed of the heavy-lift helicopters that carry slung "
+              "loads; the cap of every analysis).", "flight", AIRSPEED),
     Parameter("density altitude", "length", "ft", 0.0,
               "ISA density altitude (paper: 0, 5000, 10000 ft).", "flight",
               Bounds(-610, 11000, unit="m")),
     Parameter("hook load factor Nz", "dimensionless", "", 2.5,
-              "CS-29.865(a): limit hook load = Nz x carried aircraft weight.", "hook",
-              Bounds(0, 20, lo_open=True)),
+              "CS-29.865(a): limit hook load = Nz x carried aircraft weight; 2.5, or a lower "
+              "factor approved under CS 29.337 to 29.341 (a value below 2.5 is flagged as a "
+              "warning). At least 1: the hook carries the whole weight in steady flight, so "
+              "no limit hook load is below 1 g.", "hook", Bounds(1, 20)),
     Parameter("attitude", TEXT, "", "hanging",
               "Attitude that fixes the earth vertical for gravity, the vertical hook case and "
               "the cone: 'hanging' (pitch and roll until the CG lies under the hub, from the "

@@ -49,6 +49,7 @@ from slingloads.io.common.report import (
     column_blocks,
     convert_columns,
     csv_frame,
+    explain_infinite,
     in_report_units,
     report_unit,
     split_unit,
@@ -162,6 +163,26 @@ def compute(study):
     return MultibodyReport(inputs, point, linear, sim, airframe_outline(study.airframe))
 
 
+def shortfalls(result):
+    """What the multibody model was asked for and could not compute, one line each: no trim
+    at the system airspeed (then no linear model, no eigenvalue figure, no stability
+    verdict), and the runs that could not start because their own trim failed. A run that
+    stops because it left a table is a result (its verdict says so), not a shortfall."""
+    out = []
+    airspeed = result.inputs.system.airspeed / KNOT
+    if not result.trim.converged:
+        out.append(f"multibody: no trim at {airspeed:.4g} kt EAS ({result.trim.message}): no "
+                   "linear modes, no eigenvalue figure and no stability verdict")
+    runs = result.simulation.runs
+    failed = [run.name for run in runs if not run.trim.converged]
+    if failed:
+        shown = ", ".join(repr(name) for name in failed[:5])
+        more = f" and {len(failed) - 5} more" if len(failed) > 5 else ""
+        out.append(f"multibody: {len(failed)} of {len(runs)} runs not flown for want of a "
+                   f"trim: {shown}{more}")
+    return out
+
+
 def airframe_outline(airframe):
     """Polylines of the airframe for the views: fuselage (foremost mass item, CG, aftmost
     mass item) and mast (CG to hub), airframe axes. [m]"""
@@ -270,6 +291,13 @@ def runs_table(result):
     return metrics[columns]
 
 
+def modes_table(linear):
+    """The modes of the linear model as the report writes them: an aperiodic mode has no
+    period, a neutral one (real part 0) no time to half or double."""
+    frame = explain_infinite(linear.modes_frame(), ["period [s]"], "none (aperiodic)")
+    return explain_infinite(frame, ["time to half or double [s]"], "none (neutral)")
+
+
 def stability_text(result):
     """The stability verdict of the linear model, with its rule."""
     if result.linear is None:
@@ -345,7 +373,7 @@ def _sheets(result, units, warnings=()):
     sheets = {"Summary": summary}
     if result.linear is not None:
         sheets["Modes"] = _parts("Modes of the linear model about the trim",
-                                 column_blocks(result.linear.modes_frame(), ["mode"]))
+                                 column_blocks(modes_table(result.linear), ["mode"]))
         sheets["StateMatrix"] = [Section(
             "State matrix A (dz/dt = A z), SI: positions m, velocities m/s, angles rad, rates "
             "rad/s; phi_x, phi_y, phi_z a small rotation in body axes",

@@ -10,8 +10,10 @@ and signs: ``docs/multibody.md``.
 
 from __future__ import annotations
 
+from slingloads.io.airframe.schema import SURFACE_COEFFICIENT
 from slingloads.io.common.schema import (
     ABSOLUTE_TOLERANCE,
+    AIRSPEED,
     CABLE_EA,
     CABLE_LENGTH,
     CANOPY_MASS,
@@ -59,7 +61,8 @@ PARAMETERS = (
     Parameter("multibody airspeed EAS", "speed", "kt", 80.0,
               "Equivalent airspeed of the towed flight, >= 0: the trim, the linear modes, "
               "the free responses and the gusts (forward accelerations and wind ramps start "
-              "from hover).", _S, Bounds(0, 200, unit="kt")),
+              "from hover), at most 200 kt (above the never-exceed speed of the heavy-lift "
+              "helicopters that carry slung loads).", _S, AIRSPEED),
     Parameter("multibody density altitude", "length", "ft", 0.0,
               "ISA density altitude (paper: sea level, 5000 and 10000 ft).", _S, ISA_ALTITUDE),
     Parameter("multibody configuration", TEXT, "", "with parachute",
@@ -191,9 +194,11 @@ SHEETS = (
                     "should cover -180..180 deg (never extrapolated: a run that leaves it "
                     "stops). Typical: -180 to 180 deg in 5 to 10 deg steps.",
                bounds=Bounds(-180, 180, unit="deg")),
-        Column("CN", "dimensionless", bounds=Bounds(-10, 10),
-               help="Normal-force coefficient on 'multibody horizontal tail area', positive "
-                    "up for a positive alpha."),
+        Column("CN", "dimensionless", bounds=SURFACE_COEFFICIENT,
+               help="Normal-force coefficient on 'multibody horizontal tail area' (the tail's "
+                    "planform area), positive up for a positive alpha. Within [-3, 3], as the "
+                    "fin's CY: a flat plate square to the flow reaches about 1.2 (2.0 in two "
+                    "dimensions). Typical (HC1): 1.17 at 90 deg."),
     ), help="Optional (with 'multibody tail' = full tail): the horizontal tail's normal-force "
        "coefficient against its local angle of attack.", max_rows=MAX_AERO_ROWS),
 )
