@@ -396,20 +396,6 @@ def test_a_numeric_factor_in_a_unit_is_refused_with_the_reason(tmp_path, example
                  "0.0254*m")
 
 
-def test_hidden_rows_and_sheets_that_are_read_are_reported(tmp_path, example_book):
-    """Rule: nothing that is used is out of a reviewer's sight without notice: a hidden row
-    holding values, and a hidden sheet that is read, are listed in the study's warnings
-    (printed by the command and on the reports' Summary); the values are still read."""
-    def edit(b):
-        b["MassItems"].row_dimensions[4].hidden = True
-        b["FinAero"].sheet_state = "hidden"
-    study = read_study(edited(tmp_path, example_book, edit))
-    assert any("'MassItems': 1 hidden row(s)" in w and "row 4" in w for w in study.warnings)
-    assert any("'FinAero' is hidden" in w for w in study.warnings)
-    assert len(study.airframe.mass_items.mass) == len(read_study(EXAMPLE).airframe
-                                                      .mass_items.mass)
-    assert not any("hidden" in w for w in read_study(EXAMPLE).warnings)
-
 
 def test_a_merged_header_is_named_where_the_header_is_missing(tmp_path, example_book):
     """Rule: every required column has a header. Merging C1:D1 empties D1 while D2 down

@@ -321,13 +321,6 @@ class _XlsxSource:
         #: ``s`` attribute of a cell (None if absent) -> how openpyxl reads a number of that
         #: style (see :func:`_style_kind`)
         self._styles = {}
-        #: Sheet name -> numbers of the rows holding values that the workbook hides (filled
-        #: as each sheet is read), and the sheets it hides: read, but a reviewer looking at
-        #: the workbook does not see them.
-        self.hidden_rows = {}
-        self.hidden_sheets = {ws.title for ws in self.book.worksheets
-                              if getattr(ws, "sheet_state", "visible") != "visible"}
-        self._hidden = []
 
     def rows(self, name):
         """``(row number, {column: value}, cells stored)`` for each row element of the sheet:
@@ -342,7 +335,6 @@ class _XlsxSource:
         from openpyxl.worksheet._reader import WorkSheetParser
 
         ws = self.book[name]
-        self._hidden = self.hidden_rows[name] = []
         parser = WorkSheetParser(None, ws._shared_strings, data_only=True,
                                  epoch=self.book.epoch, date_formats=self.book._date_formats,
                                  timedelta_formats=self.book._timedelta_formats)
@@ -402,8 +394,6 @@ class _XlsxSource:
             if value is None or (isinstance(value, str) and not value.strip()):  # _is_empty
                 continue
             values[column] = value
-        if values and element.get("hidden") in ("1", "true"):
-            self._hidden.append(parser.row_counter)
         return parser.row_counter, values, len(element)
 
     def _cell(self, parser, c):
@@ -735,23 +725,7 @@ class WorkbookReader:
             # stream raises the others
             raise self.error(f"corrupt or refused sheet ({type(err).__name__}: "
                              f"{str(err)[:200]})", sheet=name) from None
-        self._warn_hidden(actual)
         return out
-
-    def _warn_hidden(self, sheet):
-        """Warn (on the reports' Summary and the command line) that a sheet read, or rows of
-        it, are hidden in the workbook: their values were used, and a reviewer of the
-        workbook does not see them."""
-        notes = []
-        if sheet in getattr(self._source, "hidden_sheets", ()):
-            notes.append(f"sheet {sheet!r} is hidden in the workbook; its values were read "
-                         "(unhide it to review them)")
-        rows = getattr(self._source, "hidden_rows", {}).get(sheet)
-        if rows:
-            listed = ", ".join(str(r) for r in rows[:10]) + (" ..." if len(rows) > 10 else "")
-            notes.append(f"sheet {sheet!r}: {len(rows)} hidden row(s) hold values that were "
-                         f"read (row {listed}; unhide them to review them)")
-        self.warnings.extend(n for n in notes if n not in self.warnings)
 
     def table(self, spec):
         """Read the table sheet described by ``spec`` (a :class:`TableSheet`), once."""
