@@ -207,15 +207,14 @@ class FigureRenderer:
         return started
 
     def later(self, tag, func, *args):
-        """Offer ``func(*args)``, other work of the report (the bytes of a large CSV file),
-        to the helper that draws the figures, for when no figure waits (of any report): the
-        process writing the report does it itself when it gets there first, which saves the
-        helper's time for the figures, which only it draws cheaply (loading matplotlib
-        costs the writing process about 0.4 s). :data:`tasks` ``[tag]``, taken with
-        :func:`task_result`."""
-        if self._own is not None:
-            self._own.start()
-        self.tasks[tag] = self.helper.submit_when_idle(func, *args)
+        """Keep ``func(*args)``, other work of the report (the bytes of a large CSV file), to
+        be done by the process writing the report when it asks for it: :data:`tasks`
+        ``[tag]``, taken with :func:`task_result`. It is not handed to the helper: the helper's
+        time goes to the figures, which only it draws cheaply (loading matplotlib costs the
+        writing process about 0.4 s), and a helper idle for a moment would load the report
+        writers (openpyxl, XlsxWriter: 0.2 s) to make a CSV file, and be late for the next
+        figures."""
+        self.tasks[tag] = Helper(0).submit(func, *args)
         return self.tasks[tag]
 
     def __exit__(self, exc_type, exc, tb):
