@@ -118,44 +118,6 @@ def test_calls_no_helper_started_are_run_here(tmp_path):
         assert busy.result() != os.getpid()
 
 
-def _stamp(path, tag):
-    """Append ``tag`` to the file ``path`` (in whichever process runs it); ``tag``."""
-    with open(path, "a") as f:
-        f.write(tag + "\n")
-    return tag
-
-
-def _started(call):
-    """Wait until a helper has started ``call``."""
-    deadline = time.monotonic() + 30
-    while call.state == "pending" and time.monotonic() < deadline:
-        time.sleep(0.01)
-
-
-def test_work_offered_when_idle_waits_for_every_other_call(tmp_path):
-    """Calls submitted with submit_when_idle run after every call submitted with submit,
-    even those submitted after them (the log the calls write is in that order), and are
-    not counted in the backlog; asked for while the helper is busy, one is taken back and
-    run here."""
-    go, log = tmp_path / "go", tmp_path / "log"
-    with Helper(1) as helper:
-        busy = helper.submit(_wait_for, str(go), 0)
-        _started(busy)
-        idle = helper.submit_when_idle(_stamp, str(log), "idle")
-        figures = [helper.submit(_stamp, str(log), f"figure {k}") for k in range(3)]
-        assert helper.backlog() == 3
-        go.touch()
-        _settle(idle, *figures)
-        assert log.read_text().split("\n")[:-1] == ["figure 0", "figure 1", "figure 2",
-                                                     "idle"]
-        go.unlink()
-        busy = helper.submit(_wait_for, str(go), 0)
-        _started(busy)
-        mine = helper.submit_when_idle(os.getpid)
-        assert mine.result() == os.getpid()  # taken back: the helper is busy
-        go.touch()
-
-
 def test_the_calls_of_a_dead_helper_are_run_here():
     """A helper that dies in a call (here: it kills itself) leaves that call, and those after
     it, to this process."""

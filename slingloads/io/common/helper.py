@@ -107,7 +107,6 @@ class Helper:
         self.processes = helper_processes() if processes is None else int(processes)
         self._warm = tuple(warm)
         self._calls = deque()
-        self._spare = deque()  # calls submitted with when_idle: run after every other one
         self._cond = threading.Condition()
         self._closing = False
         self._workers = []  # (process, connection, feeding thread)
@@ -149,7 +148,6 @@ class Helper:
         with self._cond:
             self._closing = True
             self._calls.clear()  # no one asked for their results
-            self._spare.clear()
             self._cond.notify_all()
         for process, conn, thread in self._workers:
             if abort and process.is_alive():
@@ -163,15 +161,6 @@ class Helper:
     def submit(self, func, *args, **kwargs):
         """Submit ``func(*args, **kwargs)`` (picklable: a module-level function and data);
         returns its :class:`Call`."""
-        return self._submit(self._calls, func, args, kwargs)
-
-    def submit_when_idle(self, func, *args, **kwargs):
-        """Submit ``func(*args, **kwargs)`` as work a helper process takes only when no call
-        submitted with :meth:`submit` waits (the process that asks for its result first runs
-        it itself, unless a helper has started it); returns its :class:`Call`."""
-        return self._submit(self._spare, func, args, kwargs)
-
-    def _submit(self, queue, func, args, kwargs):
         call = Call(self, func, args, kwargs)
         if self._workers:
             try:
@@ -180,27 +169,23 @@ class Helper:
             except Exception:  # noqa: BLE001 - cannot travel: run here when asked for
                 return call
             with self._cond:
-                queue.append(call)
+                self._calls.append(call)
                 self._cond.notify()
         return call
 
     def backlog(self):
-        """Calls submitted with :meth:`submit` that no helper process has started yet."""
+        """Calls submitted that no helper process has started yet."""
         return len(self._calls)
-
-    def _queued(self, call):
-        return call in self._calls or call in self._spare
 
     def _result(self, call, take_back=True):
         with self._cond:
             while call.state == _RUNNING or (
                     call.state == _PENDING and not take_back and self._alive
-                    and not self._closing and self._queued(call)):
+                    and not self._closing and call in self._calls):
                 self._cond.wait()
             if call.state == _PENDING:  # no helper has started it: run it here
-                for queue in (self._calls, self._spare):
-                    if call in queue:
-                        queue.remove(call)
+                if call in self._calls:
+                    self._calls.remove(call)
                 call.state = _RUNNING
                 local = True
             else:
@@ -237,11 +222,11 @@ class Helper:
     def _feed_calls(self, conn):
         while True:
             with self._cond:
-                while not (self._calls or self._spare) and not self._closing:
+                while not self._calls and not self._closing:
                     self._cond.wait()
-                if not (self._calls or self._spare):
+                if not self._calls:
                     break
-                call = (self._calls or self._spare).popleft()
+                call = self._calls.popleft()
                 call.state = _RUNNING
             try:
                 conn.send_bytes(call.payload)
