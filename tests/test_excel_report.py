@@ -506,3 +506,29 @@ def test_libreoffice_opens_workbook(reports, tmp_path):
     pdf = tmp_path / "demo-loads.pdf"
     assert pdf.exists() and pdf.read_bytes()[:5] == b"%PDF-"
     assert pdf.stat().st_size > 10_000
+
+
+def test_a_long_table_of_a_sheet_of_sections_continues_under_its_header(tmp_path):
+    """Rule (issue 9, print setup): the header of a table is on every printed page. A sheet
+    of several sections repeats only its title row, so a table longer than a page gets page
+    breaks with its header row written again just below each (and no page starts with a
+    data row); the red fill of a highlighted column covers the data rows, not the repeated
+    headers."""
+    long = pd.DataFrame({"case": [f"LC{k:04d}" for k in range(300)],
+                         "ratio [-]": np.linspace(0.5, 1.5, 300)})
+    path = tmp_path / "s.xlsx"
+    write_workbook(path, {"S": [Section("Short", pd.DataFrame({"a": [1, 2]})),
+                                Section("Long", long)]},
+                   highlight={"S": Highlight(["ratio [-]"])})
+    ws = load_workbook(path)["S"]
+    breaks = [b.id for b in ws.row_breaks.brk]
+    assert len(breaks) >= 4  # 300 rows: several pages
+    rows = list(ws.iter_rows(values_only=True))
+    for b in breaks:  # openpyxl: the break lies below row b (1-based), the page starts at b+1
+        assert rows[b][:2] == ("case", "ratio [-]"), (b, rows[b])
+    data = [r for r in rows if isinstance(r[0], str) and r[0].startswith("LC")]
+    assert [r[0] for r in data] == list(long["case"])  # every row once, in order
+    for rule in ws.conditional_formatting:
+        for cells in rule.sqref.ranges:
+            headers = [rows[r - 1][1] for r in range(cells.min_row, cells.max_row + 1)]
+            assert "ratio [-]" not in headers

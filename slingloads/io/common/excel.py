@@ -767,16 +767,24 @@ def _alignments(frame, columns):
     return cells, heads
 
 
-def _write_table(writer, frame, formats, columns, highlight):
-    """Header and rows of ``frame`` at the writer's current row."""
+def _write_table(writer, frame, formats, columns, highlight, paginate=None):
+    """Header and rows of ``frame`` at the writer's current row.
+
+    ``paginate``, when given, is called with the printed height [px] of each data row before
+    it is written, and returns True when it has put a page break above it: the header row
+    is then written again at the top of the new page (a table of a sheet of several
+    sections continues under its own column headers, which the sheet's repeated title rows
+    cannot give)."""
     names = [str(c) for c in frame.columns]
     if len(names) > EXCEL_MAX_COLUMNS:
         raise InputError(f"a table has more than Excel's {EXCEL_MAX_COLUMNS} columns",
                          len(names), sheet=writer.ws.name)
     cells, heads = _alignments(frame, columns)
-    writer.append(names, [_style(_HEADER_FONT, None, h, _HEADER_FILL, _HEADER_BORDER)
-                          for h in heads])
+    header_styles = [_style(_HEADER_FONT, None, h, _HEADER_FILL, _HEADER_BORDER)
+                     for h in heads]
+    writer.append(names, header_styles)
     first = writer.row + 1
+    segments = []  # (first, last) rows of the data between repeated headers (1-based)
     per_row = _row_unit_columns(frame, formats)
     unit_at = names.index("unit") if per_row else None
     ratio = [header_unit(c) == "-" for c in names]
@@ -803,8 +811,15 @@ def _write_table(writer, frame, formats, columns, highlight):
                 if made is None:
                     made = looks[j][fmt] = cell_format(_style(None, fmt, cells[j]))
                 out[j] = made
-        writer.write(values, out, writer.lines(values, wrapping))
-    _highlight(writer, frame, first, writer.row, highlight)
+        lines = writer.lines(values, wrapping)
+        if paginate is not None and paginate(ROW_PIXELS * lines):
+            segments.append((first, writer.row))
+            writer.append(names, header_styles)
+            first = writer.row + 1
+        writer.write(values, out, lines)
+    segments.append((first, writer.row))
+    for start, stop in segments:
+        _highlight(writer, frame, start, stop, highlight)
 
 
 def frame_title(frame, default=""):
@@ -938,6 +953,18 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     def capacity(start):
         return page - (repeated if start else 0)
 
+    def paginate(need):
+        """Break the page above a data row that would not fit on the current one (a sheet
+        of several sections: its tables continue under their headers)."""
+        nonlocal top
+        while writer.pixels - top > capacity(top):
+            top += capacity(top)
+        if writer.pixels - top + need <= capacity(top) or writer.pixels == top:
+            return False
+        writer.page_break()
+        top = writer.pixels
+        return True
+
     for k, ((title, lines, table), need) in enumerate(zip(blocks, needs, strict=True)):
         while writer.pixels - top > capacity(top):
             top += capacity(top)
@@ -953,7 +980,8 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
             writer.append([line])
         if table is not None:
             formats = _number_formats(table.columns, number_format)
-            _write_table(writer, table, formats, columns, highlight)
+            _write_table(writer, table, formats, columns, highlight,
+                         paginate=None if one_table else paginate)
     writer.close()
     return [name]
 
