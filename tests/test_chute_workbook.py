@@ -97,6 +97,7 @@ def test_report_reads_back(run_dir, result):
     sweep = pd.read_excel(run_dir / f"{STEM}-chute.xlsx", sheet_name="Sweep", header=None)
     head = int(np.nonzero(sweep[0].to_numpy() == "Every run")[0][0]) + 1
     runs = sweep.iloc[head + 1:].copy()
+    runs = runs[runs[0] != sweep.iloc[head, 0]]  # the header repeated on each printed page
     runs.columns = sweep.iloc[head]
     api = result.sweep.to_frame()
     assert len(runs) == len(api) == 30                # 6 areas x 5 gust shapes
