@@ -167,3 +167,35 @@ def publish_earlier(folder, files):
         for name, data in files.items():
             out.path(name).write_bytes(data)
     return out.written
+
+
+def read_book(book, file):
+    """Read ``{sheet: rows}`` as the study of a workbook named ``file`` (in memory)."""
+    from slingloads.io.common.workbook import WorkbookReader
+    from slingloads.io.study import read_study
+
+    return read_study(file, reader=WorkbookReader.from_rows(book, file=file))
+
+
+def located_error(book, file, sheet, cell, *fragments):
+    """Read ``book``: an InputError at ``file``/``sheet``/``cell`` whose message holds every
+    fragment; the error."""
+    import pytest
+
+    from slingloads.errors import InputError
+
+    with pytest.raises(InputError) as info:
+        read_book(book, file)
+    err = info.value
+    assert (err.file, err.sheet, err.cell) == (file, sheet, cell), str(err)
+    for fragment in fragments:
+        assert fragment in str(err), str(err)
+    return err
+
+
+def study_cell(book, name):
+    """The value cell (``B<row>``) of Study parameter ``name`` in ``book``."""
+    for r, row in enumerate(book["Study"], start=1):
+        if row[0] == name:
+            return f"B{r}"
+    raise KeyError(name)

@@ -11,37 +11,23 @@ limits stated in the template (coordinates within 100 m of the datum, mass items
 from __future__ import annotations
 
 import pytest
-from hostile import save_xlsx, set_parameter, small_workbook
+from hostile import located_error, read_book, save_xlsx, set_parameter, small_workbook, study_cell
 
 from slingloads.cli import main
 from slingloads.errors import InputError
-from slingloads.io.common.workbook import CellError, WorkbookReader
-from slingloads.io.study import read_study
+from slingloads.io.common.workbook import CellError
 
 FILE = "located.xlsx"
 
 
 def read(book):
-    return read_study(FILE, reader=WorkbookReader.from_rows(book, file=FILE))
+    return read_book(book, FILE)
 
 
 def error(book, sheet, cell, *fragments):
-    """Read ``book``, expect an InputError at ``sheet``/``cell`` whose message holds every
-    fragment."""
-    with pytest.raises(InputError) as info:
-        read(book)
-    err = info.value
-    assert (err.file, err.sheet, err.cell) == (FILE, sheet, cell), str(err)
-    for fragment in fragments:
-        assert fragment in str(err), str(err)
-    return err
-
-
-def study_cell(book, name):
-    for r, row in enumerate(book["Study"], start=1):
-        if row[0] == name:
-            return f"B{r}"
-    raise KeyError(name)
+    """Read ``book``: an InputError at ``sheet``/``cell`` whose message holds every
+    fragment (:func:`hostile.located_error`)."""
+    return located_error(book, FILE, sheet, cell, *fragments)
 
 
 def with_parameter(name, value, unit=None):

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hostile import set_parameter, small_dynamics_workbook, small_workbook
+from hostile import set_parameter, small_dynamics_workbook, small_workbook, study_cell
 
 from slingloads.constants import INCH
 from slingloads.errors import InputError
@@ -97,11 +97,6 @@ def error(book, sheet, cell, *fragments, analysis=None, absent=()):
     return err
 
 
-def study_cell(book, name):
-    for r, row in enumerate(book["Study"], start=1):
-        if row[0] == name:
-            return f"B{r}"
-    raise KeyError(name)
 
 
 # ---- the error names the right cell ----------------------------------------------------

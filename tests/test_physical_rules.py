@@ -11,14 +11,21 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-from hostile import save_xlsx, set_parameter, small_dynamics_workbook, small_workbook
+from hostile import (
+    located_error,
+    read_book,
+    save_xlsx,
+    set_parameter,
+    small_dynamics_workbook,
+    small_workbook,
+    study_cell,
+)
 from openpyxl import load_workbook
 
 from slingloads.cli import EXIT_INCOMPLETE, main
 from slingloads.errors import InputError
 from slingloads.io.common.excel import INFINITE_TEXT, Highlight, write_workbook
 from slingloads.io.common.report import explain_infinite
-from slingloads.io.common.workbook import WorkbookReader
 from slingloads.io.lateral import report as lateral_report
 from slingloads.io.multibody.report import modes_table
 from slingloads.io.study import read_study
@@ -29,26 +36,13 @@ FILE = "physical.xlsx"
 
 
 def read(book):
-    return read_study(FILE, reader=WorkbookReader.from_rows(book, file=FILE))
+    return read_book(book, FILE)
 
 
 def error(book, sheet, cell, *fragments):
     """Read ``book``: an InputError at ``sheet``/``cell`` whose message holds every
-    fragment."""
-    with pytest.raises(InputError) as info:
-        read(book)
-    err = info.value
-    assert (err.file, err.sheet, err.cell) == (FILE, sheet, cell), str(err)
-    for fragment in fragments:
-        assert fragment in str(err), str(err)
-    return err
-
-
-def study_cell(book, name):
-    for r, row in enumerate(book["Study"], start=1):
-        if row[0] == name:
-            return f"B{r}"
-    raise KeyError(name)
+    fragment (:func:`hostile.located_error`)."""
+    return located_error(book, FILE, sheet, cell, *fragments)
 
 
 def column(book, sheet, header):
