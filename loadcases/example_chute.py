@@ -116,7 +116,11 @@ def parachute_size(frame, fin_cp, aero_ref):
     Returns
     -------
     area : float
-        1.4 x the neutral static area, rounded to 0.1 m^2. [m^2]
+        1.4 x the neutral static area on the least-squares slopes over the linearisation
+        range (the paper's section 4.1 linearisation), rounded to 0.1 m^2: the Study's
+        parachute as first chosen; the sizing report now also computes the neutral area on
+        the local slopes at zero sideslip and says whether this area meets its criterion.
+        [m^2]
     line : float
         Wake line length for q ratio 0.95, rounded up to 0.1 m. [m]
     """
@@ -126,7 +130,7 @@ def parachute_size(frame, fin_cp, aero_ref):
     model = YawModel(fuselage, fin, frame.hardpoints, yaw_inertia_about_hub(frame),
                      FlightCondition(AIRSPEED_KT * KNOT), Parachute(1.0))
     half = np.radians(LINEARISATION_DEG)
-    static = neutral_area(model, (-half, half))
+    static = neutral_area(model, (-half, half), basis="fit")
     wake = TabulatedWake(WAKE["distance [ft]"].to_numpy() * FOOT, WAKE["q ratio [-]"])
     line = line_length(wake).line_length
     return round(RECOMMENDED_FACTOR * static.area, 1), float(np.ceil(line * 10) / 10)

@@ -162,7 +162,8 @@ def test_log_decrement_matches_linear_damping_ratio():
     row = runs.to_frame().iloc[0]
     assert row["damping ratio log decrement [-]"] == pytest.approx(zeta, rel=5e-3)
     assert row["damping ratio linear [-]"] == pytest.approx(zeta, rel=1e-9)
-    assert row["verdict"] == "stable"
+    assert row["verdict"] == "convergent"
+    assert row["damping check"].startswith("agrees with the yaw (1-DOF) mode")
 
 
 def test_vectorised_rk4_agrees_with_solve_ivp():
@@ -192,7 +193,7 @@ def test_adaptive_compiled_runs_match_the_tight_dop853_reference():
     ref = sample_reference("HC2")
     model = YawModel(sample_fuselage("HC2"), sample_fin("HC2"), sample_hardpoints("HC2"),
                      ref.yaw_inertia, parachute=Parachute(1.0))
-    neutral = neutral_area(model).area
+    neutral = neutral_area(model, basis="fit").area
     gusts = [SustainedGust(6.0, 5.03, 3.33), FiniteGust(6.0, 5.03, 7.31),
              OneMinusCosineGust(6.0, 5.03, 7.31), HarmonicGust(4.0, 5.0, 9.0),
              DrydenTurbulence(2.0, 250.0, model.condition.tas, onset=5.0, duration=15.0,
@@ -264,22 +265,23 @@ def test_run_beyond_the_linearised_range_or_the_limit_is_never_stable():
     small = SustainedGust(tas * np.tan(np.radians(7.0)), 5.0, 0.0)
     ten = (np.radians(-10.0), np.radians(10.0))
     runs = run_yaw(model, 2.0, [big, small], s, fit_range=ten).to_frame()
-    assert list(runs["verdict"]) == ["beyond limits", "stable"]
-    assert "leaves the linearisation range [-10, 10] deg" in runs["verdict reason"][0]
+    assert list(runs["verdict"]) == ["outside domain", "convergent"]
+    assert "left the linearisation range [-10, 10] deg at t = " in runs["verdict reason"][0]
     assert runs["peak beta [deg]"][0] == pytest.approx(12.6, rel=1e-3)
     tight = run_yaw(model, 2.0, small, s, fit_range=ten,
                     metrics=MetricSettings(sideslip_limit=np.radians(5.0))).to_frame()
-    assert tight["verdict"][0] == "beyond limits"
-    assert "passes the sideslip limit 5 deg" in tight["verdict reason"][0]
+    assert tight["verdict"][0] == "outside domain"
+    assert "passed the sideslip limit 5 deg at t = " in tight["verdict reason"][0]
 
 
-def test_run_leaving_the_table_is_flagged_divergent():
+def test_run_leaving_the_table_is_flagged_outside_the_domain():
     """No silent clamping: an unstable fuselage driven out of a +-60 deg table is flagged and
-    judged divergent."""
+    judged outside the model's domain, with the time it left."""
     model = linear_model(fin=False, chute=False)
     runs = run_yaw(model, 0.0, StepGust(2.0, 1.0), SolverSettings(t_end=60.0))
     row = runs.to_frame().iloc[0]
-    assert bool(row["left table"]) and row["verdict"] == "divergent"
+    assert bool(row["left table"]) and row["verdict"] == "outside domain"
+    assert "left the aerodynamic tables at t = " in row["verdict reason"]
 
 
 def test_bad_dynamic_input():

@@ -84,7 +84,9 @@ def test_sample_neutral_area_from_raw_csv():
     """Independent recomputation for HC1 from the CSV file with pandas and np.polyfit: fuselage
     Cn about the hub axis is Cn - dx_ref F_y / L at alpha 0 with the body-axis side force
     F_y = CY cos beta - CD sin beta of the wind-axes table (SAMPLE_DATA.md), fin Cn = -eta CY;
-    least squares over +-10 deg; area = -(q S L n_b + q S_f l_f (-eta) y_b) / (q eta_w CD l_c)."""
+    least squares over +-10 deg; area = -(q S L n_b + q S_f l_f (-eta) y_b) / (q eta_w CD l_c).
+    The local area: the same with the central differences of the raw tables over their
+    breakpoints at +-2 deg (the slope at zero sideslip); the area used is the larger."""
     ref = sample_reference("HC1")
     raw = pd.read_csv(ROOT / "slingloads" / "data" / "hc1_fuselage.csv")
     raw = raw[(raw["alpha [deg]"] == 0) & (raw["beta [deg]"].abs() <= 10)]
@@ -103,8 +105,18 @@ def test_sample_neutral_area_from_raw_csv():
     model = YawModel(sample_fuselage("HC1"), sample_fin("HC1"), sample_hardpoints("HC1"),
                      ref.yaw_inertia, parachute=Parachute(1.0))
     result = neutral_area(model)
-    assert result.area == pytest.approx(expected, rel=1e-9)
-    assert result.area > 0
+    assert result.area_fit == pytest.approx(expected, rel=1e-9)
+    # local slopes: central differences over the breakpoints -2, 0, +2 deg
+    at = {round(float(np.degrees(x))): v for x, v in zip(b, cn, strict=True)}
+    n_b0 = (at[2] - at[-2]) / np.radians(4.0)
+    fin_at = dict(zip(fin["beta [deg]"].round().astype(int), fin["CY"], strict=True))
+    y_b0 = (fin_at[2] - fin_at[-2]) / np.radians(4.0)
+    local = -(ref.fuselage_area * ref.fuselage_length * n_b0
+              - ref.fin_area * 0.5 * y_b0 * l_f) / (0.95 * l_c)
+    assert result.area_local == pytest.approx(local, rel=1e-9)
+    assert result.area == max(result.area_fit, result.area_local) and result.area > 0
+    assert result.basis == ("local" if local > expected else "fit")
+    assert neutral_area(model, basis="fit").area == pytest.approx(expected, rel=1e-9)
     frame = result.to_frame()
     assert list(frame["component"]) == ["fuselage", "fin", "parachute", "total"]
     curves = result.curves_frame()

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import pandas as pd
 
+from slingloads.analyses import verdicts as _verdicts
 from slingloads.errors import InputError
 from slingloads.models.aero_tables import linear_fit
 from slingloads.models.gusts import standard_gusts
@@ -47,8 +48,8 @@ SIDESLIP_LIMIT = np.radians(20.0)
 INTEGRATORS = {"dopri5": integrate_dopri, "rk4": integrate_rk4,
                "solve_ivp": integrate_reference}
 
-#: Verdicts of a run.
-VERDICTS = ("stable", "neutral", "divergent", "beyond limits")
+#: Verdicts of a run (:mod:`slingloads.analyses.verdicts`).
+VERDICTS = _verdicts.VERDICTS
 
 
 def _deg(x):
@@ -85,6 +86,18 @@ class LinearisationResult:
     fin_slope: float | None
     fin_intercept: float | None
     fit_range: tuple
+    fuselage_local_slope: float | None = None
+    fin_local_slope: float | None = None
+
+    def slopes(self, basis="fit"):
+        """(fuselage, fin) dCn/dbeta of ``basis``: "fit" (least squares over
+        ``fit_range``) or "local" (at zero sideslip, :func:`local_slope`). [1/rad]"""
+        if basis == "local":
+            return self.fuselage_local_slope, self.fin_local_slope
+        if basis == "fit":
+            return self.fuselage_slope, self.fin_slope
+        raise InputError(f"{basis=!r} is not a valid slope basis. Valid options are: "
+                         "'fit', 'local'", basis)
 
     def to_frame(self):
         """Slopes and intercepts, one row per component."""
@@ -92,8 +105,12 @@ class LinearisationResult:
         for name, slope, icpt in (("fuselage", self.fuselage_slope, self.fuselage_intercept),
                                   ("fin", self.fin_slope, self.fin_intercept)):
             if slope is not None:
+                local = (self.fuselage_local_slope if name == "fuselage"
+                         else self.fin_local_slope)
                 rows.append({"component": name, "dCn/dbeta [1/rad]": slope,
                              "dCn/dbeta [1/deg]": slope * np.pi / 180,
+                             "local dCn/dbeta at beta 0 [1/deg]": (
+                                 np.nan if local is None else local * np.pi / 180),
                              "Cn at beta 0 [-]": icpt,
                              "fit from [deg]": _deg(self.fit_range[0]),
                              "fit to [deg]": _deg(self.fit_range[1])})
@@ -128,12 +145,13 @@ def yaw_linearisation(model, fit_range=FIT_RANGE):
     LinearisationResult
     """
     lo, hi = _check_range(fit_range)
-    fus_cn = fin_cn = fus = fin = None
+    fus_cn = fin_cn = fus = fin = fus_local = fin_local = None
     grids = []
     if model.fuselage is not None:
         grid, n_per_q = model.fuselage_moment_table
         fus_cn = n_per_q / (model.fuselage.area * model.fuselage.length)
         fus = linear_fit(grid, fus_cn, lo, hi, "fuselage")
+        fus_local = local_slope(grid, fus_cn, "fuselage")
         grids.append((grid, fus_cn))
     if model.fin is not None:
         (grid, k), dx = model.fin_side_force_table, model.fin_arm[0]
@@ -141,6 +159,7 @@ def yaw_linearisation(model, fit_range=FIT_RANGE):
             raise InputError("the fin's centre of pressure lies on the suspension axis", dx)
         fin_cn = -k / model.fin.area  # -eta CY: N_fin / (q S_fin dx)
         fin = linear_fit(grid, fin_cn, lo, hi, "fin")
+        fin_local = local_slope(grid, fin_cn, "fin")
         grids.append((grid, fin_cn))
     if not grids:
         raise InputError("the yaw model has neither fuselage nor fin to linearise")
@@ -153,7 +172,22 @@ def yaw_linearisation(model, fit_range=FIT_RANGE):
     return LinearisationResult(
         beta, fus_vals, fin_vals, None if fus is None else fus[0],
         None if fus is None else fus[1], None if fin is None else fin[0],
-        None if fin is None else fin[1], (lo, hi))
+        None if fin is None else fin[1], (lo, hi), fus_local, fin_local)
+
+
+def local_slope(angle, values, what="aerodynamic"):
+    """Slope of a table at zero sideslip: the least-squares line through the breakpoints
+    within +-h of 0, h the larger distance from 0 to its nearest breakpoint on either side
+    (the central difference of the interpolated table when the breakpoints are symmetric
+    about 0). This is the derivative a small disturbance about beta = 0 sees, where the fit
+    over ``fit_range`` is a finite-amplitude average. [1/rad]"""
+    angle = np.asarray(angle, dtype=float)
+    below, above = angle[angle < -1e-12], angle[angle > 1e-12]
+    if below.size == 0 or above.size == 0:
+        raise InputError(f"the {what} table does not bracket zero sideslip: no local slope",
+                         field="fit_range")
+    h = max(-below.max(), above.min())
+    return linear_fit(angle, values, -h, h, what)[0]
 
 
 def _check_range(fit_range):
@@ -232,11 +266,12 @@ class _Tas:
     tas: float
 
 
-def linear_yaw(model, area, fit_range=FIT_RANGE):
+def linear_yaw(model, area, fit_range=FIT_RANGE, basis="fit"):
     """Linearise the yaw model about beta = 0, r = 0 with parachute ``area`` [m^2].
 
-    The fuselage and fin stiffnesses come from the least-squares slopes of
-    :func:`yaw_linearisation`; the parachute's from its drag at the attachment,
+    The fuselage and fin stiffnesses come from the slopes of :func:`yaw_linearisation` of
+    ``basis``: "fit" (least squares over ``fit_range``) or "local" (at zero sideslip); the
+    parachute's from its drag at the attachment,
     ``q eta_w CD A dx_c``. Damping: fin ``-1/2 rho V S_f eta CY_beta dx_f^2`` and parachute
     ``1/2 rho V eta_w CD A dx_c^2`` (attachment-point velocity, Apollo legacy model).
 
@@ -248,15 +283,16 @@ def linear_yaw(model, area, fit_range=FIT_RANGE):
     if not np.isfinite(area) or area < 0:
         raise InputError("parachute area must be >= 0 [m^2]", area)
     lin = yaw_linearisation(model, fit_range)
+    fus_slope, fin_slope = lin.slopes(basis)
     q, rho, v = model.condition.dynamic_pressure, model.condition.density, model.condition.tas
     parts = {}
-    if lin.fuselage_slope is not None:
+    if fus_slope is not None:
         f = model.fuselage
-        parts["fuselage"] = (q * f.area * f.length * lin.fuselage_slope, 0.0)
-    if lin.fin_slope is not None:
+        parts["fuselage"] = (q * f.area * f.length * fus_slope, 0.0)
+    if fin_slope is not None:
         dx = model.fin_arm[0]
-        k = q * model.fin.area * dx * lin.fin_slope
-        c = (0.5 * rho * v * model.fin.area * dx**2 * lin.fin_slope
+        k = q * model.fin.area * dx * fin_slope
+        c = (0.5 * rho * v * model.fin.area * dx**2 * fin_slope
              if model.fin_rate_damping else 0.0)
         parts["fin"] = (k, c)
     if model.parachute is not None:
@@ -277,9 +313,11 @@ class NeutralAreaResult:
     Attributes
     ----------
     area : float
-        Flat-plate area that makes the total dN/dbeta zero (negative: already stable). [m^2]
+        Flat-plate area that makes the total dN/dbeta zero (negative: already stable), on the
+        slope basis ``basis``. [m^2]
     derivatives : dict
-        dN/dbeta of the fuselage, the fin and the parachute at ``area``. [N m/rad]
+        dN/dbeta of the fuselage, the fin and the parachute at ``area`` (slopes of
+        ``basis``). [N m/rad]
     per_area : float
         Parachute dN/dbeta per unit area, q eta_w CD dx_c. [N m/rad/m^2]
     q : float
@@ -299,6 +337,17 @@ class NeutralAreaResult:
     beta: np.ndarray
     moments: dict
     linearisation: LinearisationResult
+    area_fit: float = np.nan
+    area_local: float = np.nan
+    basis: str = "fit"
+
+    @property
+    def basis_text(self):
+        """Which neutral area is used, in words."""
+        lo, hi = (float(np.degrees(v)) for v in self.linearisation.fit_range)
+        which = {"fit": f"least-squares slopes over [{lo:.3g}, {hi:.3g}] deg",
+                 "local": "local slopes at zero sideslip"}[self.basis]
+        return f"{which} (fit {self.area_fit:.4g} m^2, local {self.area_local:.4g} m^2)"
 
     @property
     def already_stable(self):
@@ -317,7 +366,10 @@ class NeutralAreaResult:
         return frame
 
     def summary_frame(self):
-        return pd.DataFrame([{"neutral area [m^2]": self.area, "q [Pa]": self.q,
+        return pd.DataFrame([{"neutral area [m^2]": self.area,
+                              "neutral area, fit slopes [m^2]": self.area_fit,
+                              "neutral area, local slopes [m^2]": self.area_local,
+                              "neutral area basis": self.basis, "q [Pa]": self.q,
                               "chute arm [m]": self.chute_arm,
                               "chute dN/dbeta per area [N m/rad/m^2]": self.per_area,
                               "already stable": self.already_stable}])
@@ -335,7 +387,13 @@ class NeutralAreaResult:
                 **self.linearisation.frames()}
 
 
-def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
+#: Slope bases of the neutral area: the larger of the two areas (default), the least-squares
+#: slopes over the fit range (the paper's linearisation, figures 4 and 5) or the local slopes
+#: at zero sideslip.
+NEUTRAL_BASES = ("larger", "fit", "local")
+
+
+def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None, basis="larger"):
     """Parachute flat-plate area for neutral yaw static stability (paper section 4.1).
 
     .. math:: \\frac{dN_{fus}}{d\\beta} + \\frac{dN_{fin}}{d\\beta}
@@ -352,21 +410,34 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
         [rad]
     beta_plot : array_like, optional
         Sideslip of the moment curves (default: -45..45 deg within the tables). [rad]
+    basis : {"larger", "fit", "local"}
+        Slopes of the fuselage and fin: both areas are computed, from the least-squares
+        slopes over ``fit_range`` and from the local slopes at zero sideslip
+        (:func:`local_slope`); the one used is the larger (default: a small disturbance about
+        the trim must be restored as well as a finite one), or the one named.
 
     Returns
     -------
     NeutralAreaResult
     """
+    if basis not in NEUTRAL_BASES:
+        raise InputError(f"{basis=!r} is not a valid neutral-area basis. Valid options are: "
+                         f"{', '.join(map(repr, NEUTRAL_BASES))}", basis)
     if model.parachute is None:
         raise InputError("neutral-area sizing needs a parachute (its CD and wake ratio)")
     dx = model.chute_arm[0]
     if dx <= 0:
         raise InputError("the parachute attachment must lie aft of the suspension axis "
                          "(dx > 0 [m]) to stabilise", float(dx))
-    base = linear_yaw(model, 0.0, fit_range)
     per_area = model.condition.dynamic_pressure * model.chute_drag_coefficient * dx
-    others = sum(k for name, (k, _) in base.parts.items() if name != "parachute")
-    area = -others / per_area
+    areas, bases = {}, {}
+    for which in ("fit", "local"):
+        bases[which] = linear_yaw(model, 0.0, fit_range, which)
+        others = sum(k for name, (k, _) in bases[which].parts.items() if name != "parachute")
+        areas[which] = -others / per_area
+    used = (basis if basis != "larger"
+            else ("local" if areas["local"] > areas["fit"] else "fit"))
+    base, area = bases[used], areas[used]
     derivs = {name: k for name, (k, _) in base.parts.items() if name != "parachute"}
     derivs["parachute"] = per_area * area
     lo, hi = model.beta_range()
@@ -384,7 +455,8 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None):
     moments["total"] = n_fus + n_fin + n_chute
     return NeutralAreaResult(float(area), derivs, float(per_area),
                              model.condition.dynamic_pressure, float(dx), beta_plot, moments,
-                             yaw_linearisation(model, fit_range))
+                             yaw_linearisation(model, fit_range), float(areas["fit"]),
+                             float(areas["local"]), used)
 
 
 # ------------------------------------------------------------------------ line length
@@ -466,10 +538,12 @@ class MetricSettings:
     Parameters
     ----------
     settle_fraction : float
-        Settling band as a share of the peak sideslip excursion. [-]
+        Settling band as a share of the peak sideslip excursion from trim. [-]
     final_tolerance : float
-        A run whose sideslip has not come back within this of the trim at the end (gusts that
-        end or become steady) is divergent. [rad]
+        Band and offset of the envelope test (:class:`~slingloads.analyses.verdicts.
+        EnvelopeTest`): a sideslip whose second-half half amplitude is within it has
+        settled, and one that settles farther than this from the trim is a static departure.
+        [rad]
     peak_threshold : float
         Yaw-rate peaks smaller than this are ignored by the logarithmic decrement. [rad/s]
     sideslip_limit : float
@@ -480,8 +554,8 @@ class MetricSettings:
         envelope of the loads analysis to keep the two consistent. [rad]
 
     A run whose sideslip also leaves the range over which the tables were linearised (the
-    ``fit_range`` of the runs) is never called stable either: the linear stiffness and
-    damping behind the verdict no longer describe it.
+    ``fit_range`` of the runs) is outside the model's domain as well: the linear stiffness
+    and damping behind the mode check no longer describe it.
     """
 
     settle_fraction: float = 0.05
@@ -497,6 +571,11 @@ class MetricSettings:
                 raise InputError(f"metric setting {name} must be > 0", value)
             object.__setattr__(self, name, value)
 
+    @property
+    def envelope_test(self):
+        """The envelope test of the runs' sideslip."""
+        return _verdicts.EnvelopeTest(band=self.final_tolerance, offset=self.final_tolerance)
+
 
 @dataclass(frozen=True)
 class YawRuns:
@@ -509,16 +588,21 @@ class YawRuns:
     gusts : tuple
     histories : Histories
     metrics : pandas.DataFrame
-        One row per run: peak |beta| and |psi|; linear damping ratio c / (2 sqrt(k I)) and
-        natural frequency; damping ratio from the logarithmic decrement of the first two
+        One row per run: peak |beta| and |psi|; the sideslip's offset from trim and its
+        half amplitudes over the two halves of the envelope test; linear damping ratio
+        c / (2 sqrt(k I)) and natural frequency on the local slopes at zero sideslip (the
+        yaw mode's eigenvalue); damping ratio from the logarithmic decrement of the first two
         positive yaw-rate peaks after the gust ends (NaN for continuous gusts or no
-        oscillation); settling time from the gust onset until |beta - beta_trim| stays within
-        ``settle_fraction`` of its peak (NaN if never, or a gust that never ends); verdict
-        "divergent" (linearly unstable, left the tables, or sideslip not restored within
-        ``final_tolerance`` at the end of a gust that ends), "neutral" (zero linear
-        stiffness, inside the tables), else "beyond limits" (the sideslip left the
-        linearisation range or passed ``sideslip_limit``: never called stable), else
-        "stable"; "verdict reason" says why.
+        oscillation) and whether it agrees with the linear one ("damping check",
+        :func:`~slingloads.analyses.verdicts.damping_check`); settling time from the gust
+        onset until |beta - beta_trim| stays within the "settling band" (``settle_fraction``
+        of its peak excursion; NaN if never, for a gust that never ends, or for a run that
+        is not convergent); verdict (:mod:`slingloads.analyses.verdicts`): "outside domain"
+        (left the tables, passed ``sideslip_limit`` or left the linearisation range, with
+        the time), else the envelope test's on the sideslip ("divergent", "limit cycle",
+        "bounded", "static departure" with its size, "convergent"), "convergent" only if the
+        linear yaw mode is stable too ("inconclusive" otherwise); "verdict reason" says why,
+        with the numbers.
     """
 
     areas: np.ndarray
@@ -549,6 +633,7 @@ class YawRuns:
 
 def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     """Metrics of every run, vectorised over runs (no per-run loop on the histories)."""
+    from slingloads.analyses import verdicts as vd
     from slingloads.analyses.chute_metrics import history_metrics
 
     t = hist.time
@@ -564,20 +649,46 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     with np.errstate(divide="ignore", invalid="ignore"):
         delta = np.where((p1 > 0) & (p2 > 0), np.log(p1 / p2), np.nan)
     zeta_log = delta / np.sqrt(4 * np.pi**2 + delta**2)
-    final_dbeta = hist.beta[:, -1] - trim
-    zeta_lin, omega, lin_stable, neutral = _linear_metrics(model, areas, fit_range)
-    final_off = np.abs(final_dbeta) > metric.final_tolerance
-    not_restored = np.isfinite(free) & final_off
+    zeta_lin, omega, lin_stable, stiffness, damping = _linear_metrics(model, areas, fit_range)
+    # domain of the 1-DOF model: inside the tables, |beta| within the sideslip limit and
+    # within the range the linearisation (and so the mode check) holds
     lo, hi = fit_range
-    unlinear = (beta_min < lo) | (beta_max > hi)
-    over = peak_beta > metric.sideslip_limit
-    verdict = np.select(
-        [hist.left_table, neutral, ~lin_stable | not_restored, unlinear | over],
-        ["divergent", "neutral", "divergent", "beyond limits"], default="stable")
-    columns = (hist.left_table, hist.exit_time, lin_stable, neutral, not_restored, final_dbeta,
-               unlinear, over, peak_beta, beta_min, beta_max)  # as Python scalars: quicker
-    reasons = [_reason(*row, fit_range, metric)
-               for row in zip(*(np.asarray(c).tolist() for c in columns), strict=True)]
+    over_at = _first_time(t, np.abs(hist.beta) > metric.sideslip_limit)
+    unlinear_at = _first_time(t, (hist.beta < lo) | (hist.beta > hi))
+    outside = hist.left_table | np.isfinite(over_at) | np.isfinite(unlinear_at)
+    sustained = ~np.isfinite(free)
+    test = metric.envelope_test
+    env = vd.envelope(t, hist.beta, np.where(sustained, onset, free), trim, sustained, test)
+    response = env.verdict
+    verdict = np.where(outside, vd.OUTSIDE_DOMAIN,
+                       np.where((response == vd.CONVERGENT) & ~lin_stable, vd.INCONCLUSIVE,
+                                response)).astype(object)
+    excursion = np.nanmax(np.abs(hist.beta - trim[:, None]), axis=1)
+    band = metric.settle_fraction * excursion
+    settling = np.where(np.isin(verdict, vd.ACCEPTED) & ~sustained, settling, np.nan)
+    period_lin = np.where(np.isfinite(omega) & (zeta_lin < 1),
+                          2 * np.pi / (omega * np.sqrt(np.abs(1 - zeta_lin**2))), np.nan)
+    checks = [vd.damping_check(zl, pl if np.isfinite(zl) else np.nan, z, pl, "yaw (1-DOF)")
+              for zl, z, pl in zip(zeta_log.tolist(), zeta_lin.tolist(), period_lin.tolist(),
+                                   strict=True)]
+    reasons = []
+    for j in range(runs):
+        why = []
+        if hist.left_table[j]:
+            why.append(f"left the aerodynamic tables at t = {hist.exit_time[j]:.4g} s")
+        if np.isfinite(over_at[j]):
+            why.append(f"|beta| passed the sideslip limit "
+                       f"{math.degrees(metric.sideslip_limit):.3g} deg at t = {over_at[j]:.4g} s"
+                       f" (peak {math.degrees(peak_beta[j]):.3g} deg)")
+        if np.isfinite(unlinear_at[j]):
+            why.append(f"sideslip left the linearisation range [{math.degrees(lo):.3g}, "
+                       f"{math.degrees(hi):.3g}] deg at t = {unlinear_at[j]:.4g} s")
+        if not why:
+            why.append(env.reason(j))
+            if not lin_stable[j]:
+                why.append(f"linear yaw mode (local slopes) not stable: k = "
+                           f"{stiffness[j]:.4g} N m/rad, c = {damping[j]:.4g} N m s/rad")
+        reasons.append("; ".join(why))
     labels = {id(g): (g.kind, g.label) for g in gusts}  # once per distinct gust
     return pd.DataFrame({
         "area [m^2]": areas,
@@ -587,21 +698,34 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
         "peak psi [deg]": _deg(peak_psi),
         "final beta [deg]": _deg(hist.beta[:, -1]),
         "final psi [deg]": _deg(hist.psi[:, -1]),
+        "beta offset from trim [deg]": _deg(env.offset),
+        "beta amplitude first half [deg]": _deg(env.first),
+        "beta amplitude second half [deg]": _deg(env.second),
         "damping ratio linear [-]": zeta_lin,
         "damping ratio log decrement [-]": zeta_log,
+        "damping check": checks,
         "natural frequency [rad/s]": omega,
         "settling time [s]": settling,
+        "settling band [deg]": _deg(band),
         "left table": hist.left_table,
         "verdict": verdict,
         "verdict reason": reasons,
     })
 
 
+def _first_time(t, flags):
+    """First time at which each row of ``flags`` (runs, n) is True (NaN if never). [s]"""
+    hit = flags.any(axis=1)
+    return np.where(hit, t[np.argmax(flags, axis=1)], np.nan)
+
+
 def _linear_metrics(model, areas, fit_range):
-    """Linear damping ratio [-], natural frequency [rad/s], linear stability and zero
-    stiffness of every run, as :func:`linear_yaw` gives them, on arrays: fuselage and fin
-    linearised once, the parachute's stiffness and damping proportional to its area."""
-    base = linear_yaw(model, 0.0, fit_range)
+    """Linear damping ratio [-], natural frequency [rad/s], linear stability, stiffness
+    [N m/rad] and damping [N m s/rad] of every run, as :func:`linear_yaw` gives them on the
+    local slopes at zero sideslip (the eigenvalue of a small disturbance about the trim), on
+    arrays: fuselage and fin linearised once, the parachute's stiffness and damping
+    proportional to its area."""
+    base = linear_yaw(model, 0.0, fit_range, "local")
     if model.parachute is None and np.any(areas > 0):
         linear_yaw(model, float(areas.max()), fit_range)  # refuses the area
     k_rest = sum(k for name, (k, _) in base.parts.items() if name != "parachute")
@@ -619,36 +743,7 @@ def _linear_metrics(model, areas, fit_range):
     with np.errstate(invalid="ignore", divide="ignore"):
         omega = np.where(positive, np.sqrt(stiffness / inertia), np.nan)
         zeta = np.where(positive, damping / (2.0 * np.sqrt(stiffness * inertia)), np.nan)
-    parts = [abs(k) for name, (k, _) in base.parts.items() if name != "parachute"]
-    scale = max(sum(parts) + abs(k_chute[np.argmin(areas)]), 1e-300)
-    neutral = np.abs(stiffness) <= 1e-9 * scale
-    return zeta, omega, positive & (damping > 0), neutral
-
-
-def _reason(left, exit_time, lin_stable, neutral, not_restored, final, unlinear, over, peak,
-            low, high, fit_range, metric):
-    """Why a run got its verdict, in words (the numbers Python floats)."""
-    deg = math.degrees
-    why = []
-    if left:
-        why.append(f"left the aerodynamic tables at t = {exit_time:.4g} s")
-    if neutral:
-        why.append("zero linear yaw stiffness (neutral)")
-    elif not lin_stable:
-        why.append("linearly unstable (stiffness or damping <= 0)")
-    if not_restored:
-        why.append(f"sideslip {deg(final):.3g} deg from trim at the end, not back within "
-                   f"{deg(metric.final_tolerance):.3g} deg")
-    if unlinear:
-        why.append(f"sideslip {deg(low):.3g} to {deg(high):.3g} deg leaves the linearisation "
-                   f"range [{deg(fit_range[0]):.3g}, {deg(fit_range[1]):.3g}] deg")
-    if over:
-        why.append(f"peak |beta| {deg(peak):.3g} deg passes the sideslip limit "
-                   f"{deg(metric.sideslip_limit):.3g} deg")
-    if not why:
-        why.append(f"back to trim; peak |beta| {deg(peak):.3g} deg within the linearisation "
-                   f"range and the {deg(metric.sideslip_limit):.3g} deg limit")
-    return "; ".join(why)
+    return zeta, omega, positive & (damping > 0), stiffness, damping
 
 
 def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=None,
@@ -725,6 +820,31 @@ class SweepResult:
         frame.insert(1, "area / neutral area [-]", frame["area [m^2]"] / self.static.area)
         return frame
 
+    def by_area(self):
+        """One row per swept area: every gust meets the criterion (verdict in
+        :data:`~slingloads.analyses.verdicts.ACCEPTED`)?, the worst verdict, peak sideslip
+        and yaw over the gusts."""
+        frame = self.to_frame()
+        grouped = frame.groupby("area [m^2]", sort=True)
+        return pd.DataFrame({
+            "area / neutral area [-]": grouped["area / neutral area [-]"].first(),
+            "all gusts stable": grouped["verdict"].agg(
+                lambda v: bool(v.isin(_verdicts.ACCEPTED).all())),
+            "worst verdict": grouped["verdict"].agg(lambda v: _verdicts.worst(list(v))),
+            "worst peak beta [deg]": grouped["peak beta [deg]"].max(),
+            "worst peak psi [deg]": grouped["peak psi [deg]"].max(),
+        }).reset_index()
+
+    @property
+    def smallest_stable_area(self):
+        """Smallest swept area at which every gust run meets the criterion (convergent,
+        or bounded under a sustained gust); NaN if none does. This, not a factor on the
+        neutral area, is the sizing's recommendation: an area the sweep shows failing is
+        never recommended. [m^2]"""
+        table = self.by_area()
+        ok = table[table["all gusts stable"]]
+        return float(ok["area [m^2]"].min()) if len(ok) else float("nan")
+
     def history_frame(self, factors=(1.0, 1.5, 2.0)):
         """Histories of the runs whose area ratio is nearest each of ``factors``."""
         ratio = self.runs.areas / self.static.area
@@ -787,8 +907,8 @@ def with_area(model, area):
 
 
 __all__ = [
-    "FIT_RANGE", "SIDESLIP_LIMIT", "VERDICTS", "LineLengthResult", "LinearYaw",
+    "FIT_RANGE", "NEUTRAL_BASES", "SIDESLIP_LIMIT", "VERDICTS", "LineLengthResult", "LinearYaw",
     "LinearisationResult", "MetricSettings", "NeutralAreaResult", "SweepResult", "YawModel",
-    "YawRuns", "gust_frame", "line_length", "linear_yaw", "neutral_area", "run_yaw",
+    "YawRuns", "gust_frame", "line_length", "local_slope", "linear_yaw", "neutral_area", "run_yaw",
     "sizing_sweep", "with_area", "yaw_linearisation",
 ]

@@ -100,7 +100,8 @@ class ChuteSizingReport:
     sweep : SweepResult or None
         None when fuselage and fin are already statically stable (no positive neutral area).
     recommended_area : float
-        ``recommended_factor`` x neutral area (0 when already stable). [m^2]
+        The smallest swept area at which every gust run meets the criterion (NaN when none
+        does; 0 when already stable). [m^2]
     study_area_runs : YawRuns or None
         Every gust at the Study's 'parachute area', the one the loads use (None if it is 0).
     """
@@ -126,21 +127,12 @@ class ChuteSizingReport:
         """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""
         if self.sweep is None:
             return pd.DataFrame()
-        frame = self.sweep.to_frame()
-        grouped = frame.groupby("area [m^2]", sort=True)
-        return pd.DataFrame({
-            "area / neutral area [-]": grouped["area / neutral area [-]"].first(),
-            "all gusts stable": grouped["verdict"].agg(lambda v: bool((v == "stable").all())),
-            "worst peak beta [deg]": grouped["peak beta [deg]"].max(),
-            "worst peak psi [deg]": grouped["peak psi [deg]"].max(),
-        }).reset_index()
+        return self.sweep.by_area()
 
     @property
     def smallest_stable_area(self):
         """Smallest swept area at which every gust run is stable (NaN if none). [m^2]"""
-        table = self.stability_by_area()
-        ok = table[table["all gusts stable"]] if len(table) else table
-        return float(ok["area [m^2]"].min()) if len(ok) else float("nan")
+        return self.sweep.smallest_stable_area if self.sweep is not None else float("nan")
 
     def history_runs(self):
         """Indices of the runs at the smallest, recommended and largest swept areas."""
@@ -149,7 +141,9 @@ class ChuteSizingReport:
         ratio = self.sweep.runs.areas / self.static.area
         f = self.inputs.factors
         chosen = []
-        for target in (f.min(), self.inputs.recommended_factor, f.max()):
+        recommended = (self.recommended_area / self.static.area
+                       if np.isfinite(self.recommended_area) else self.inputs.recommended_factor)
+        for target in (f.min(), recommended, f.max()):
             nearest = ratio[np.argmin(np.abs(ratio - target))]
             chosen += list(np.nonzero(np.isclose(ratio, nearest))[0])
         return sorted(set(chosen))
@@ -197,7 +191,7 @@ def compute(study):
         if inputs.study_area > 0:
             at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
                                inputs.fit_range, inputs.metrics, inputs.integrator)
-    recommended = inputs.recommended_factor * static.area if sweep is not None else 0.0
+    recommended = sweep.smallest_stable_area if sweep is not None else 0.0
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study)
 
 
@@ -247,9 +241,9 @@ def summary_tables(result, units="SI"):
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),
         ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg",
-         "fit over +- this; a run leaving it is never called stable"),
+         "fit over +- this; a run leaving it is outside the domain"),
         ("sideslip limit", float(np.degrees(inp.metrics.sideslip_limit)), "deg",
-         "a run passing it is never called stable"),
+         "a run passing it is outside the domain"),
         ("parachute canopy CD (free stream)", float(m.parachute.coefficient(0.0)), "-",
          "ParachuteCD at canopy alpha 0 (default 1.0)"),
         ("parachute wake ratio", float(m.parachute.wake_ratio), "-",
@@ -263,23 +257,30 @@ def summary_tables(result, units="SI"):
         stable = result.stability_by_area()
         ratio = stable["area / neutral area [-]"].to_numpy()
         at = stable.iloc[int(np.argmin(np.abs(ratio - inp.recommended_factor)))]
+        rec = result.recommended_area
         sweep_rows = [
-            ("smallest swept area with every gust stable", result.smallest_stable_area,
-             "area", "1-DOF; NaN: none"),
-            ("1-DOF verdict near the recommended area",
-             "stable" if at["all gusts stable"] else "NOT stable for every gust", None,
+            ("recommended area", rec, "area",
+             f"{rec / static.area:.3g} x neutral: the smallest swept area with every gust "
+             "convergent (bounded under the continuous gust), 1-DOF"
+             if np.isfinite(rec) else
+             "NONE: no swept area is convergent under every gust (1-DOF); widen the sweep"),
+            (f"1-DOF verdict at the paper's factor ({inp.recommended_factor:g} x neutral)",
+             "stable for every gust" if at["all gusts stable"]
+             else f"NOT stable for every gust (worst: {at['worst verdict']})", None,
              f"swept area {float(at['area / neutral area [-]']):.3g} x neutral"),
         ]
     sizing = _items([
         ("neutral static area", static.area, "area",
          "fuselage and fin already stable" if static.already_stable
-         else "total dN/dbeta = 0 (paper 4.1)"),
-        ("recommended factor", inp.recommended_factor, "-",
+         else f"total dN/dbeta = 0 (paper 4.1), used: {static.basis_text}"),
+        ("neutral area, least-squares slopes", static.area_fit, "area",
+         f"slopes fitted over +-{np.degrees(inp.fit_range[1]):.3g} deg"),
+        ("neutral area, local slopes at beta 0", static.area_local, "area",
+         "slopes of the tables at zero sideslip"),
+        ("paper's factor", inp.recommended_factor, "-",
          "x neutral area: the paper's optimum for its own aircraft (FPA + 40 %, from its "
-         "multibody campaign, section 4.5); a placeholder until a multibody campaign "
-         "computes this aircraft's"),
-        ("recommended area", result.recommended_area, "area", ""),
-        *sweep_rows,
+         "multibody campaign, section 4.5); shown for comparison, not used"),
+        *(sweep_rows or [("recommended area", result.recommended_area, "area", "")]),
         ("Study 'parachute area' (loads)", inp.study_area, "area",
          f"{inp.study_area / static.area:.3g} x neutral" if static.area > 0 else ""),
         *_study_area_rows(result),
@@ -432,9 +433,13 @@ def _summary_note(result, units):
     area, unit = _value(static.area, "area", units)
     rec, _ = _value(result.recommended_area, "area", units)
     line, lunit = _value(result.line.line_length, "length", units)
+    if not np.isfinite(result.recommended_area):
+        return (f"Neutral static area {area:.3g} {unit}; NO swept area is stable under every "
+                f"gust (1-DOF): no area recommended; parachute line {line:.4g} {lunit} from "
+                "the wake.")
     return (f"Neutral static area {area:.3g} {unit}; recommended area {rec:.3g} {unit} "
-            f"({result.inputs.recommended_factor:g} x neutral); parachute line {line:.4g} "
-            f"{lunit} from the wake.")
+            f"({result.recommended_area / static.area:.3g} x neutral, the smallest swept area "
+            f"stable under every gust); parachute line {line:.4g} {lunit} from the wake.")
 
 
 def _sheets(result, units, warnings=()):
@@ -468,10 +473,14 @@ def _sheets(result, units, warnings=()):
         speed = {c: (c[:c.index(" [")], "speed") for c in ("peak gust [m/s]",)}
         sheets["Sweep"] = [
             Section("Sweep of the parachute area: 1-DOF yaw runs under every gust shape",
-                    note="Verdict per run: stable when the yaw settles and the sideslip stays "
-                         "within the linearisation range and the sideslip limit (else 'beyond "
-                         "limits', with the reason); damping ratio from the logarithmic "
-                         "decrement."),
+                    note="Verdict per run (docs/parachute-sizing.md): 'outside domain' when "
+                         "the sideslip leaves the tables, the linearisation range or the "
+                         "sideslip limit (with the time); else the envelope test on the "
+                         "sideslip after the gust: divergent, limit cycle, static departure "
+                         "(settles off trim, with its size) or convergent (only if the linear "
+                         "yaw mode is stable, else inconclusive). An area is stable when every "
+                         "gust is convergent. Damping from the logarithmic decrement, checked "
+                         "against the linear yaw mode ('damping check')."),
             Section("Gust shapes", convert_columns(result.sweep.gust_frame(), speed, units)),
             Section("Stability by area",
                     convert_columns(result.stability_by_area(), area, units)),

@@ -1,0 +1,260 @@
+"""One vocabulary of response verdicts, one envelope test, one settling time.
+
+Every dynamic analysis (the 1-DOF yaw runs of :mod:`~slingloads.analyses.chute_sizing`, the
+multibody runs of :mod:`~slingloads.analyses.multibody.simulate`, the campaign and its
+transport without parachute) names the outcome of a run with one of :data:`VERDICTS`, by
+the same rule, applied to its sampled response:
+
+``outside domain``
+    The run left the domain in which its model holds (a table left, a sideslip past the
+    model's limit, a slack cable...): the caller says when and why; nothing after that time
+    is a result.
+``divergent``
+    The envelope grows: the half peak-to-peak amplitude over the second half of the observed
+    window exceeds :attr:`EnvelopeTest.growth` times that of the first half, and the band.
+``limit cycle``
+    Neither growth nor decay (within the factors) of an oscillation larger than the band,
+    with no input left to sustain it.
+``bounded``
+    The same under a sustained input (a continuous gust): a forced, bounded response.
+``static departure``
+    The motion settles (second-half amplitude within the band) or decays, about a value more
+    than :attr:`EnvelopeTest.offset` away from the trim: the run stays off heading; its size
+    is the offset.
+``convergent``
+    The motion decays (second-half amplitude below :attr:`EnvelopeTest.decay` times the
+    first's) or settles within the band, back within :attr:`EnvelopeTest.offset` of the trim,
+    and the least-damped relevant mode of the linear model is stable (checked by the caller,
+    which otherwise says ``inconclusive`` with the reason).
+``inconclusive``
+    Less than :attr:`EnvelopeTest.min_window` seconds observed after the input, or a
+    response that decays while the linear model says the mode grows.
+
+No label overrides another: the rules are tried in the order above and the first that holds
+is the verdict. A design value (area, angle, speed) is only ever taken from runs whose
+verdict is ``convergent`` (or ``bounded`` under a sustained input).
+
+The **settling time** is the time from the input's onset until the signal stays within a
+stated band of its trim value; NaN when it never does within the run, and 0 only when it
+never left the band (the band is reported beside it).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from slingloads.errors import InputError
+
+CONVERGENT = "convergent"
+STATIC_DEPARTURE = "static departure"
+BOUNDED = "bounded"
+LIMIT_CYCLE = "limit cycle"
+DIVERGENT = "divergent"
+OUTSIDE_DOMAIN = "outside domain"
+INCONCLUSIVE = "inconclusive"
+#: The verdicts of a run, from the best to the worst.
+VERDICTS = (CONVERGENT, BOUNDED, STATIC_DEPARTURE, LIMIT_CYCLE, INCONCLUSIVE, DIVERGENT,
+            OUTSIDE_DOMAIN)
+#: Verdicts that meet a stability criterion (``bounded`` only under a sustained input).
+ACCEPTED = (CONVERGENT, BOUNDED)
+#: Largest difference between the damping ratio measured on a response and that of the
+#: linear mode it was measured on for the two to agree. [-]
+DAMPING_TOLERANCE = 0.05
+#: Largest relative difference between the period measured on a response and that of the
+#: mode named for it. [-]
+PERIOD_TOLERANCE = 0.25
+
+
+def worst(verdicts):
+    """The worst of several verdicts (order of :data:`VERDICTS`)."""
+    rank = {v: k for k, v in enumerate(VERDICTS)}
+    return max(verdicts, key=lambda v: rank.get(v, len(VERDICTS)))
+
+
+@dataclass(frozen=True)
+class EnvelopeTest:
+    """The envelope test of a response (module notes).
+
+    Parameters
+    ----------
+    growth : float
+        Second-half over first-half amplitude above which the envelope grows, > 1. [-]
+    decay : float
+        Ratio below which it decays, 0 < decay < 1. [-]
+    band : float
+        Half peak-to-peak amplitude within which a response has settled, > 0. [rad]
+    offset : float
+        Distance of the settled value from the trim beyond which the run is a static
+        departure, > 0. [rad]
+    min_window : float
+        Least observed time after the input for a verdict, > 0. [s]
+    """
+
+    growth: float = 1.1
+    decay: float = 0.9
+    band: float = math.radians(1.0)
+    offset: float = math.radians(1.0)
+    min_window: float = 10.0
+
+    def __post_init__(self):
+        for name in ("growth", "decay", "band", "offset", "min_window"):
+            value = float(getattr(self, name))
+            if not math.isfinite(value) or value <= 0:
+                raise InputError(f"envelope test {name} must be > 0", value)
+            object.__setattr__(self, name, value)
+        if not self.decay < 1 < self.growth:
+            raise InputError("envelope test: decay < 1 < growth", (self.decay, self.growth))
+
+    def rule(self, what="the signal"):
+        """The rule in words, with its numbers."""
+        return (f"envelope test on {what} over the time after the input ends (after its onset "
+                f"for a sustained input), in two halves: divergent if the second half's half "
+                f"peak-to-peak amplitude is > {self.growth:g} x the first's and > "
+                f"{math.degrees(self.band):.3g} deg; settled if it is <= "
+                f"{math.degrees(self.band):.3g} deg, decaying if < {self.decay:g} x the "
+                f"first's; a settled or decaying run centred more than "
+                f"{math.degrees(self.offset):.3g} deg from its trim is a static departure, "
+                f"else convergent (if its linear mode is stable); otherwise limit cycle "
+                f"(bounded under a sustained input); inconclusive with less than "
+                f"{self.min_window:g} s observed")
+
+
+@dataclass(frozen=True)
+class Envelope:
+    """Envelope of a batch of responses (arrays of shape (runs,)).
+
+    Attributes
+    ----------
+    verdict : ndarray of str
+    first, second : ndarray
+        Half peak-to-peak amplitude over the first and the second half of the window. [rad]
+    offset : ndarray
+        Centre of the second half (mid-range) minus the trim. [rad]
+    """
+
+    verdict: np.ndarray
+    first: np.ndarray
+    second: np.ndarray
+    offset: np.ndarray
+
+    def reason(self, j, what="sideslip"):
+        """Why run ``j`` got its envelope verdict, with its numbers."""
+        d = math.degrees
+        v = str(self.verdict[j])
+        a1, a2, off = d(self.first[j]), d(self.second[j]), d(self.offset[j])
+        if v == INCONCLUSIVE:
+            return "too little time observed after the input"
+        amp = f"{what} amplitude {a1:.3g} -> {a2:.3g} deg over the two halves"
+        if v == STATIC_DEPARTURE:
+            return f"{amp}; settles {off:+.3g} deg from trim (static departure)"
+        return f"{amp}; centred {off:+.3g} deg from trim"
+
+
+def envelope(time, y, start, reference, sustained, test=None):
+    """Envelope verdict of responses ``y`` (runs, n) over ``time`` (n,) from ``start`` (runs,)
+    to the end, about their trim values ``reference`` (runs,); ``sustained`` (runs,) bool
+    marks a sustained input. NaN samples (after a stop) are ignored. Module notes.
+
+    Returns
+    -------
+    Envelope
+    """
+    test = EnvelopeTest() if test is None else test
+    time = np.asarray(time, float)
+    y = np.atleast_2d(np.asarray(y, float))
+    runs = y.shape[0]
+    start = np.broadcast_to(np.asarray(start, float), (runs,))
+    reference = np.broadcast_to(np.asarray(reference, float), (runs,))
+    sustained = np.broadcast_to(np.asarray(sustained, bool), (runs,))
+    finite = np.isfinite(y)
+    last = np.where(finite.any(axis=1),
+                    time[np.clip(finite.shape[1] - 1 - np.argmax(finite[:, ::-1], axis=1), 0,
+                                 None)], np.nan)
+    middle = 0.5 * (start + last)
+    inside = (time[None, :] >= start[:, None]) & finite
+    one = inside & (time[None, :] < middle[:, None])
+    two = inside & (time[None, :] >= middle[:, None])
+
+    def half_range(mask):
+        with np.errstate(invalid="ignore"):
+            hi = np.max(np.where(mask, y, -np.inf), axis=1)
+            lo = np.min(np.where(mask, y, np.inf), axis=1)
+        ok = mask.any(axis=1)
+        return np.where(ok, 0.5 * (hi - lo), np.nan), np.where(ok, 0.5 * (hi + lo), np.nan)
+
+    a1, _ = half_range(one)
+    a2, centre = half_range(two)
+    offset = centre - reference
+    short = ~((last - start) >= test.min_window) | ~np.isfinite(a1) | ~np.isfinite(a2)
+    grows = (a2 > test.growth * a1) & (a2 > test.band)
+    settles = (a2 <= test.band) | (a2 < test.decay * a1)
+    off = np.abs(offset) > test.offset
+    verdict = np.select(
+        [short, grows, settles & off, settles, sustained],
+        [INCONCLUSIVE, DIVERGENT, STATIC_DEPARTURE, CONVERGENT, BOUNDED], default=LIMIT_CYCLE)
+    return Envelope(verdict.astype(object), a1, a2, offset)
+
+
+def settling_time(time, y, onset, reference, band):
+    """Time from ``onset`` [s] (runs,) until ``|y - reference|`` stays within ``band``
+    [rad] (runs,): NaN when the last sample is outside it (or NaN), 0 when no sample after
+    the onset ever left it. ``y`` (runs, n) over ``time`` (n,). [s]"""
+    time = np.asarray(time, float)
+    y = np.atleast_2d(np.asarray(y, float))
+    runs = y.shape[0]
+    onset = np.broadcast_to(np.asarray(onset, float), (runs,))
+    reference = np.broadcast_to(np.asarray(reference, float), (runs,))
+    band = np.broadcast_to(np.asarray(band, float), (runs,))
+    after = time[None, :] >= onset[:, None]
+    with np.errstate(invalid="ignore"):
+        outside = after & ~(np.abs(y - reference[:, None]) <= band[:, None])
+    n = time.size
+    any_out = outside.any(axis=1)
+    last = n - 1 - np.argmax(outside[:, ::-1], axis=1)
+    out = np.where(any_out, np.nan, 0.0)
+    ends = any_out & (last < n - 1)
+    out[ends] = time[last[ends] + 1] - onset[ends]
+    return out
+
+
+def damping_check(measured, period, mode_zeta, mode_period, mode_name):
+    """Whether a damping ratio measured on a response agrees with the linear mode it was
+    measured on (:data:`DAMPING_TOLERANCE`, periods within :data:`PERIOD_TOLERANCE`), in
+    words."""
+    if not (math.isfinite(measured) and math.isfinite(period)):
+        return "not measured (fewer than three peaks after the input)"
+    if not mode_name:
+        return "no linear mode to compare with"
+    if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
+        return (f"period {period:.3g} s matches no mode within {PERIOD_TOLERANCE:.0%} (nearest: "
+                f"{mode_name}, {mode_period:.3g} s): a mixed or nonlinear response")
+    diff = measured - mode_zeta
+    if abs(diff) <= DAMPING_TOLERANCE:
+        return (f"agrees with the {mode_name} mode (zeta {mode_zeta:.3g}, within "
+                f"{DAMPING_TOLERANCE:g})")
+    return (f"differs from the {mode_name} mode (zeta {mode_zeta:.3g}) by {diff:+.3g} > "
+            f"{DAMPING_TOLERANCE:g}: amplitude-dependent (nonlinear) or several modes")
+
+
+def nearest_mode(period, modes):
+    """The mode of ``modes`` (a :meth:`LinearModel.modes_frame`) whose period is nearest
+    ``period`` [s]: (name, damping ratio [-], period [s]), or ("", NaN, NaN)."""
+    if modes is None or len(modes) == 0 or not math.isfinite(period):
+        return "", float("nan"), float("nan")
+    periods = np.asarray(modes["period [s]"], float)
+    ok = np.isfinite(periods)
+    if not ok.any():
+        return "", float("nan"), float("nan")
+    k = int(np.argmin(np.where(ok, np.abs(np.log(np.where(ok, periods, 1.0) / period)),
+                               np.inf)))
+    return (str(modes["mode"].iloc[k]), float(modes["damping ratio [-]"].iloc[k]),
+            float(periods[k]))
+
+
+__all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT",
+           "INCONCLUSIVE", "LIMIT_CYCLE", "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE",
+           "STATIC_DEPARTURE", "VERDICTS", "Envelope", "EnvelopeTest", "damping_check",
+           "envelope", "nearest_mode", "settling_time", "worst"]
