@@ -236,24 +236,31 @@ def test_stability_map_against_eigenvalues_computed_directly():
 # ----------------------------------------------------------------- without parachute
 def test_speed_limits_logic():
     """HC1 converges at 20 and 30 kt and diverges at 40: limit 30 kt. HC2 converges at 20,
-    departs at 30 and converges again at 40 (the first failure ends the range): limit 20 kt.
-    HC3 is undamped at 20 kt already: no limit (NaN). A ramp is convergent only when its
-    response converges and its final equilibrium is stable (else it departs)."""
+    departs statically at 30 and converges again at 40 (the first failure ends the range):
+    limit 20 kt. HC3 is a limit cycle at 20 kt already: no limit (NaN). HC4 converges at every
+    ramp tried: its limit is only known to be at least the highest, ">= 40 kt". A ramp is
+    convergent only when its response converges and its final equilibrium is stable (else
+    inconclusive)."""
     from slingloads.analyses.campaign.no_parachute import ramp_verdict
 
     assert ramp_verdict("convergent", "stable") == "convergent"
-    assert ramp_verdict("convergent", "unstable") == "departs"
+    assert ramp_verdict("convergent", "unstable") == "inconclusive"
+    assert ramp_verdict("static departure", "unstable") == "static departure"
     assert ramp_verdict("divergent", "stable") == "divergent"
     rows = [("HC1", 20, "convergent"), ("HC1", 30, "convergent"), ("HC1", 40, "divergent"),
-            ("HC2", 40, "convergent"), ("HC2", 20, "convergent"), ("HC2", 30, "departs"),
-            ("HC3", 20, "undamped"), ("HC3", 30, "convergent")]
+            ("HC2", 40, "convergent"), ("HC2", 20, "convergent"),
+            ("HC2", 30, "static departure"), ("HC3", 20, "limit cycle"),
+            ("HC3", 30, "convergent"), ("HC4", 20, "convergent"), ("HC4", 40, "convergent")]
     runs = pd.DataFrame(rows, columns=["helicopter", "kt", "verdict"])
     runs["ramp target [m/s]"] = runs.pop("kt") * KNOT
     limits = speed_limits(runs).set_index("helicopter")
-    assert_allclose(limits["largest convergent ramp [kt]"].to_numpy(), [30, 20, np.nan])
+    assert_allclose(limits["largest convergent ramp [kt]"].to_numpy(), [30, 20, np.nan, 40])
     assert limits.loc["HC2", "first non-convergent ramp [kt]"] == pytest.approx(30)
-    assert limits.loc["HC2", "its verdict"] == "departs"
-    assert limits.loc["HC3", "its verdict"] == "undamped"
+    assert limits.loc["HC2", "its verdict"] == "static departure"
+    assert limits.loc["HC3", "its verdict"] == "limit cycle"
+    assert list(limits["speed limit"]) == [
+        "30 kt", "20 kt", "none (the lowest ramp does not converge)",
+        ">= 40 kt (every ramp tried converges)"]
 
 
 # --------------------------------------------------------------- loads hand-off

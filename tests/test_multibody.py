@@ -295,7 +295,7 @@ def test_eigenvalue_matches_the_simulated_free_response():
 # ------------------------------------------------------------------------ verdicts
 def test_a_run_that_leaves_a_table_stops_with_its_verdict_and_the_batch_goes_on():
     """Fuselage table limited to beta +-12 deg: a 30 ft/s gust at 60 kt takes the sideslip
-    past it; the run stops (verdict divergent, table and time named, NaN after), while the
+    past it; the run stops (verdict outside domain, table and time named, NaN after), while the
     free response in the same batch runs to the end. No extrapolation."""
     full = sample_fuselage("HC1")
     keep = np.abs(full.table.beta) <= np.radians(12.01)
@@ -309,7 +309,7 @@ def test_a_run_that_leaves_a_table_stops_with_its_verdict_and_the_batch_goes_on(
     assert gust.stopped and "fuselage table's beta range" in gust.stop_reason()
     assert 1.0 <= gust.stop_time < 20.0
     assert np.isnan(gust.states[-1, 0])
-    assert gust.metrics()["verdict"] == "divergent"
+    assert gust.metrics()["verdict"] == "outside domain"
     assert not free.stopped and np.all(np.isfinite(free.states))
 
 

@@ -146,11 +146,11 @@ def test_manoeuvres_from_the_sheet_equal_the_builders(study):
     assert runs["head-wind ramp to 40 kt"].from_hover
 
 
-def _table(workbook, sheet, header):
-    """The first table of a report sheet whose header row holds ``header``, down to its
-    first empty row."""
+def _table(workbook, sheet, header, part=0):
+    """The first table (or its ``part``-th part, when printed in parts) of a report sheet
+    whose header row holds ``header``, down to its first empty row."""
     raw = pd.read_excel(workbook, sheet_name=sheet, header=None)
-    at = int(np.flatnonzero((raw == header).any(axis=1))[0])
+    at = int(np.flatnonzero((raw == header).any(axis=1))[part])
     body = raw.iloc[at + 1:]
     end = np.flatnonzero(body.isna().all(axis=1).to_numpy())
     body = body.iloc[:end[0]] if end.size else body
@@ -178,7 +178,10 @@ def test_report_reads_back(run_dir, study, result):
     np.testing.assert_allclose(modes["natural frequency [rad/s]"].astype(float),
                                expected["natural frequency [rad/s]"], rtol=1e-6)
     sim = simulate(api, study.inputs["multibody"].manoeuvres)
-    metrics = _table(workbook, "Metrics", "metric").set_index("metric")
+    parts = int(pd.read_excel(workbook, sheet_name="Metrics", header=None).eq(
+        "metric").any(axis=1).sum())
+    metrics = pd.concat([_table(workbook, "Metrics", "metric", k).set_index("metric")
+                         .drop(columns="unit") for k in range(parts)], axis=1)
     runs = list(sim.metrics_frame()["run"])
     assert list(metrics.loc["verdict", runs]) == list(sim.metrics_frame()["verdict"])
     np.testing.assert_allclose(metrics.loc["yaw change", runs].astype(float),

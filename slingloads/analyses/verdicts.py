@@ -18,9 +18,9 @@ the same rule, applied to its sampled response:
 ``bounded``
     The same under a sustained input (a continuous gust): a forced, bounded response.
 ``static departure``
-    The motion settles (second-half amplitude within the band) or decays, about a value more
-    than :attr:`EnvelopeTest.offset` away from the trim: the run stays off heading; its size
-    is the offset.
+    The motion settles (second-half amplitude within the band) or decays, about a value (its
+    mean over the second half) more than :attr:`EnvelopeTest.offset` away from the trim: the
+    run stays off heading; its size is the offset.
 ``convergent``
     The motion decays (second-half amplitude below :attr:`EnvelopeTest.decay` times the
     first's) or settles within the band, back within :attr:`EnvelopeTest.offset` of the trim,
@@ -132,7 +132,7 @@ class Envelope:
     first, second : ndarray
         Half peak-to-peak amplitude over the first and the second half of the window. [rad]
     offset : ndarray
-        Centre of the second half (mid-range) minus the trim. [rad]
+        Mean over the second half minus the trim. [rad]
     """
 
     verdict: np.ndarray
@@ -179,11 +179,12 @@ def envelope(time, y, start, reference, sustained, test=None):
     two = inside & (time[None, :] >= middle[:, None])
 
     def half_range(mask):
-        with np.errstate(invalid="ignore"):
+        with np.errstate(invalid="ignore", divide="ignore"):
             hi = np.max(np.where(mask, y, -np.inf), axis=1)
             lo = np.min(np.where(mask, y, np.inf), axis=1)
+            mean = np.sum(np.where(mask, y, 0.0), axis=1) / mask.sum(axis=1)
         ok = mask.any(axis=1)
-        return np.where(ok, 0.5 * (hi - lo), np.nan), np.where(ok, 0.5 * (hi + lo), np.nan)
+        return np.where(ok, 0.5 * (hi - lo), np.nan), np.where(ok, mean, np.nan)
 
     a1, _ = half_range(one)
     a2, centre = half_range(two)
@@ -239,17 +240,25 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name):
             f"{DAMPING_TOLERANCE:g}: amplitude-dependent (nonlinear) or several modes")
 
 
-def nearest_mode(period, modes):
-    """The mode of ``modes`` (a :meth:`LinearModel.modes_frame`) whose period is nearest
-    ``period`` [s]: (name, damping ratio [-], period [s]), or ("", NaN, NaN)."""
+def nearest_mode(period, modes, zeta=float("nan")):
+    """The mode of ``modes`` (a :meth:`LinearModel.modes_frame`) a response of ``period``
+    [s] and damping ratio ``zeta`` [-] was measured on: among the modes whose period lies
+    within :data:`PERIOD_TOLERANCE` of it, the one of nearest damping ratio; else the mode of
+    nearest period. (name, damping ratio [-], period [s]), or ("", NaN, NaN)."""
     if modes is None or len(modes) == 0 or not math.isfinite(period):
         return "", float("nan"), float("nan")
     periods = np.asarray(modes["period [s]"], float)
     ok = np.isfinite(periods)
     if not ok.any():
         return "", float("nan"), float("nan")
-    k = int(np.argmin(np.where(ok, np.abs(np.log(np.where(ok, periods, 1.0) / period)),
-                               np.inf)))
+    distance = np.where(ok, np.abs(np.log(np.where(ok, periods, 1.0) / period)), np.inf)
+    near = np.abs(np.where(ok, periods, np.inf) - period) <= PERIOD_TOLERANCE * np.where(
+        ok, periods, np.inf)
+    if near.sum() > 1 and math.isfinite(zeta):
+        gap = np.abs(np.asarray(modes["damping ratio [-]"], float) - zeta)
+        k = int(np.argmin(np.where(near, gap, np.inf)))
+    else:
+        k = int(np.argmin(distance))
     return (str(modes["mode"].iloc[k]), float(modes["damping ratio [-]"].iloc[k]),
             float(periods[k]))
 

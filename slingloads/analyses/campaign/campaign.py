@@ -296,8 +296,10 @@ def neutral_check(campaign, metrics):
     speed = float(m.frame["airspeed EAS [m/s]"].max())
     altitude = float(m.frame["density altitude [m]"].iloc[0])
     model = yaw_model_of(campaign.setup.system, speed, altitude)
+    fit = (FIT_RANGE if campaign.neutral_fit_range is None
+           else tuple(float(b) for b in campaign.neutral_fit_range))
     runs = run_yaw(model, campaign.neutral.area, standard_gusts(),
-                   SolverSettings(ONE_DOF_TIME, ONE_DOF_STEP)).to_frame()
+                   SolverSettings(ONE_DOF_TIME, ONE_DOF_STEP), fit_range=fit).to_frame()
     rows = [{"model": "1-DOF yaw", "condition": f"{speed:.4g} m/s EAS, {altitude:.4g} m",
              "test": f"lateral gust {g}", "verdict": v,
              "peak beta [deg]": b, "damping ratio [-]": z}
@@ -319,10 +321,9 @@ def neutral_check(campaign, metrics):
             same = same[same[column] == cond[column]]
         for _, r in same.iterrows():
             rows.append({"model": "multibody", "condition": text, "test": r["manoeuvre"],
-                         "verdict": "stable" if r["stable"] else (
-                             r["response verdict"] if r["linear verdict"] == "stable"
-                             else f"{r['response verdict']} (eigenvalues "
-                                  f"{r['linear verdict']})"),
+                         "verdict": (r["response verdict"] if r["linear verdict"] == "stable"
+                                     else f"{r['response verdict']} (eigenvalues "
+                                          f"{r['linear verdict']})"),
                          "peak beta [deg]": r["beta peak [deg]"],
                          "damping ratio [-]": r["yaw mode damping ratio [-]"]})
     return pd.DataFrame(rows)
@@ -375,11 +376,15 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
     groups = [(campaign.settings.as_dict(), jobs)]
     chute_jobs = []
     if campaign.no_parachute is not None:
-        ramp = campaign.settings.as_dict(campaign.no_parachute.run_length)
-        ramp_keys = KeyMaker(ramp)
-        chute_jobs = [(name, target, ramp_keys.key(system, m), system, m)
-                      for name, target, system, m in campaign.no_parachute.jobs()]
-        groups.append((ramp, [(k, s, m) for _, _, k, s, m in chute_jobs]))
+        # each ramp runs for its own length (its verdict must not depend on the others)
+        study = campaign.no_parachute
+        by_length = {}
+        for name, target, system, m in study.jobs():
+            ramp = campaign.settings.as_dict(study.run_length_of(target))
+            key = KeyMaker(ramp).key(system, m)
+            chute_jobs.append((name, target, key, system, m))
+            by_length.setdefault(ramp["t_end"], (ramp, []))[1].append((key, system, m))
+        groups += list(by_length.values())
     if executor is None:
         executor = make_executor(runs=len(jobs) + len(chute_jobs))
     with executor:

@@ -4,17 +4,18 @@ their full-tail configuration.
 Each helicopter hangs without parachute, with its intact fin and horizontal tail (paper
 section 5.1), under a hovering carrier, and meets a head wind rising from 0 at ``rate`` to each
 target speed (paper figure 15: 20, 30, 40, 60 and 80 kt here; the paper shows 20, 30 and 40 kIAS
-in figures 16 to 18). A run is long enough to see the response for :data:`OBSERVE` seconds
-after the ramp ends; every ramp runs for the same time, :data:`OBSERVE` s after the highest
-ramp ends. Its **verdict**: "convergent" when the response converges (the multibody response
-verdict, ``docs/multibody.md``) and the towed equilibrium at the ramp's final airspeed is
-stable (eigenvalues of its linear model); "departs" when the response settles but that
-equilibrium is unstable (the helicopter weathervanes away from the flight path to another
-heading, a static divergence); otherwise the response verdict (divergent: the motion grows or
-it left a table; undamped; inconclusive).
+in figures 16 to 18). Each ramp runs for its own length, :data:`OBSERVE` s after its ramp ends
+(:func:`ramp_length`), so that its verdict does not depend on which other ramps were run.
+Its **verdict** is the multibody response verdict (``docs/multibody.md``,
+:mod:`slingloads.analyses.verdicts`): "convergent" when the response decays back to its trim
+and the towed equilibrium at the ramp's final airspeed is stable (eigenvalues of its linear
+model); "static departure" when it settles off its trim heading (the helicopter weathervanes
+away from the flight path, a static divergence; the size in the reason); "limit cycle";
+"divergent"; "outside domain" (left a table, slack cable); "inconclusive".
 
 **Speed limit** of a helicopter: the largest ramp target whose run, and the run of every lower
-target, is convergent (NaN when even the lowest is not).
+target, is convergent (NaN when even the lowest is not); when every ramp tried is convergent,
+the limit is only known to be at least the highest target (``">= X"``).
 """
 
 from __future__ import annotations
@@ -120,8 +121,13 @@ class NoParachuteStudy:
 
     @property
     def run_length(self):
-        """Length of every ramp run: :data:`OBSERVE` s after the highest ramp ends. [s]"""
+        """Length of the longest ramp run: :data:`OBSERVE` s after the highest ramp ends. [s]"""
         return ramp_length(max(self.targets), self.rate, self.onset)
+
+    def run_length_of(self, target):
+        """Length of the run of the ramp to ``target`` [m/s]: :data:`OBSERVE` s after it
+        ends, whatever the other ramps. [s]"""
+        return ramp_length(target, self.rate, self.onset)
 
     def jobs(self):
         """(name, target, system, manoeuvre) of every ramp."""
@@ -159,9 +165,10 @@ class NoParachuteResult:
 
 
 def ramp_verdict(response, linear):
-    """Verdict of a ramp (module notes) from its response and linear verdicts."""
-    if response == "convergent":
-        return "convergent" if linear == "stable" else "departs"
+    """Verdict of a ramp (module notes) from its response and linear verdicts: the response
+    verdict, "convergent" only with a stable linear verdict ("inconclusive" otherwise)."""
+    if response == "convergent" and linear != "stable":
+        return "inconclusive"
     return response
 
 
@@ -176,8 +183,15 @@ def speed_limits(runs):
         first_bad = np.argmin(ok) if not ok.all() else ok.size
         limit = targets[first_bad - 1] if first_bad > 0 else np.nan
         beyond = group.iloc[first_bad] if first_bad < ok.size else None
+        if beyond is None:
+            text = f">= {limit / KNOT:.0f} kt (every ramp tried converges)"
+        elif np.isfinite(limit):
+            text = f"{limit / KNOT:.0f} kt"
+        else:
+            text = "none (the lowest ramp does not converge)"
         rows.append({
-            "helicopter": name, "largest convergent ramp [m/s]": limit,
+            "helicopter": name, "speed limit": text,
+            "largest convergent ramp [m/s]": limit,
             "largest convergent ramp [kt]": limit / KNOT,
             "first non-convergent ramp [kt]": (beyond["ramp target [m/s]"] / KNOT
                                                if beyond is not None else np.nan),

@@ -1,9 +1,10 @@
 """Parachute selection from the campaign's metrics (paper section 4.5).
 
 **Stable run**: its condition trims, every eigenvalue of the condition's linear model has a
-negative real part (linear verdict "stable"), and its response converges (response verdict
-"convergent", or "bounded" under a sustained input). A run whose response is "undamped",
-"divergent", "inconclusive" or that has no trim is not stable.
+real part below -1e-6 1/s (linear verdict "stable"), and its response converges (response
+verdict "convergent", or "bounded" under a sustained input, :mod:`slingloads.analyses.
+verdicts`). A run whose response is a "static departure", a "limit cycle", "divergent",
+"outside domain", "inconclusive" or that has no trim is not stable.
 
 **Damping criterion** (:class:`SelectionCriteria`): a stable run whose yaw modes (the modes
 in which the yaw takes part, :mod:`.metrics`) have a damping ratio of at least ``min_damping``
@@ -39,12 +40,13 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from slingloads.analyses.verdicts import ACCEPTED
 from slingloads.errors import InputError
 
 from .matrix import CONDITION_COLUMNS
 
 #: Response verdicts that count as stable.
-STABLE_RESPONSES = ("convergent", "bounded")
+STABLE_RESPONSES = ACCEPTED
 #: Default minimum yaw-mode damping ratio of the recommended area. [-]
 MIN_DAMPING = 0.05
 #: Default longest yaw-mode time to half amplitude of the recommended area. [s]

@@ -21,12 +21,15 @@ to keep only the metrics (``keep_histories=False``).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
 import pandas as pd
 
+from slingloads.analyses import verdicts as vd
+from slingloads.analyses.verdicts import EnvelopeTest
 from slingloads.errors import InputError
 from slingloads.limits import MAX_MULTIBODY_RUN_STEPS
 from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
@@ -64,17 +67,19 @@ STEP_LIMIT = 1.0
 #: |lambda| dt at the edge of the stability region of the Dormand-Prince 5(4) pair on the
 #: negative real axis (Hairer and Wanner, Solving ODEs II, section IV.2). [-]
 ADAPTIVE_STABILITY = 3.3
-#: Activity (yaw rate, swing rates) below which a response counts as settled. [deg/s]
-QUIET = 0.5
 #: Least half-width of the band a settled yaw stays in. [rad]
 BAND_FLOOR = float(np.radians(1.0))
+#: The envelope test of a run's response (:mod:`slingloads.analyses.verdicts`).
+ENVELOPE = EnvelopeTest(band=BAND_FLOOR, offset=BAND_FLOOR)
+#: Share of the peak excursion of the sideslip from trim that bounds the settling band (at
+#: least :data:`BAND_FLOOR`). [-]
+SETTLE_FRACTION = 0.1
 #: The rule of a run's response verdict.
 VERDICT_RULE = (
-    "divergent: left a table, or the envelope of the motion (largest |rate| of yaw, lateral "
-    "and longitudinal swing) grows by > 10 % from the first to the second half of the time "
-    "after the input ends (after its onset for a sustained input); convergent: it shrinks by "
-    f"> 10 % or stays below {QUIET} deg/s; otherwise undamped (bounded under a sustained "
-    "input); inconclusive when less than 10 s are left after the input")
+    "outside domain: left a table or the cable went slack (with the time); otherwise the worst "
+    "of the " + ENVELOPE.rule("the sideslip (offset from its trim) and the lateral and "
+    "longitudinal swing angles") + "; convergent also needs every eigenvalue of the trim's "
+    "linear model to have a real part below -1e-6 1/s (else inconclusive)")
 #: Names of the peaks in the metrics, where they differ from the histories'.
 METRIC_LABELS = {"hub load angle": "hub load from mast"}
 
@@ -275,28 +280,83 @@ class RunResult:
             row["line tension min [N]"] = float(m["line tension min"])
             row["line slack"] = bool(m["line tension min"] < 0)
             row["canopy alpha max [deg]"] = float(np.degrees(m["chute alpha max"]))
-        row["yaw period from response [s]"] = float(m["yaw period"])
-        row["yaw damping ratio from response [-]"] = float(m["yaw damping ratio"])
-        row["settling time [s]"] = float(m["settling time"])
-        row["verdict"] = self._verdict(m["activity first"], m["activity second"])
+        verdict, reason, settling, band = self._response()
+        period, zeta = float(m["yaw period"]), float(m["yaw damping ratio"])
+        linear = self.linear_at_condition
+        modes = linear.modes_frame() if linear is not None else None
+        name, mode_zeta, mode_period = vd.nearest_mode(period, modes, zeta)
+        row["yaw period from response [s]"] = period
+        row["yaw damping ratio from response [-]"] = zeta
+        row["response damping measured on mode"] = (
+            f"{name} ({mode_period:.3g} s, zeta {mode_zeta:.3g})" if name else "")
+        row["response damping check"] = vd.damping_check(zeta, period, mode_zeta,
+                                                         mode_period, name)
+        row["settling time [s]"] = settling
+        row["settling band [deg]"] = float(np.degrees(band))
+        row["verdict"] = verdict
+        row["verdict reason"] = reason
         row["verdict rule"] = VERDICT_RULE
         row["stopped"] = self.stop_reason()
         row["carrier speed end [m/s]"] = float(m["carrier speed end"])
         return row
 
-    def _verdict(self, first, second):
-        """Verdict of :data:`VERDICT_RULE` from the largest activity [deg/s] in the first and
-        the second half of the time it looks at."""
+    @cached_property
+    def linear(self):
+        """Linear model of the run's trim (None without trim)."""
+        return linearise(self.trim) if self.trim.converged else None
+
+    @property
+    def linear_at_condition(self):
+        """Linear model of the run's trim when the run starts and ends at its system's
+        condition (free responses, gusts), else None: the modes a ramp or an acceleration
+        ends in are those of another trim (the campaign checks them there)."""
+        same = (self.manoeuvre.input_end is not None
+                and abs(self.trim.airspeed - self.system.airspeed) <= 1e-9
+                * max(1.0, self.system.airspeed))
+        return self.linear if same else None
+
+    def _response(self):
+        """(verdict, reason, settling time [s], settling band [rad]) of :data:`VERDICT_RULE`
+        (:mod:`slingloads.analyses.verdicts`)."""
+        m = dict(zip(MEASURES, self.measures(), strict=True))
+        nan = float("nan")
         if self.flag:
-            return "divergent"
-        _, _, start = _measure_times(self.manoeuvre)
-        if self.time[-1] - start < 10.0:
-            return "inconclusive"
-        if second > 1.1 * first and second > QUIET:
-            return "divergent"
-        if second < 0.9 * first or second <= QUIET:
-            return "convergent"
-        return "bounded" if self.manoeuvre.input_end is None else "undamped"
+            return (vd.OUTSIDE_DOMAIN, f"left the {flag_text(self.flag)} at t = "
+                    f"{self.stop_time:.3f} s", nan, nan)
+        if m["cable slack"]:
+            return (vd.OUTSIDE_DOMAIN, f"cable slack from t = {m['cable slack first at']:.3f} s"
+                    f" ({m['cable slack time']:.3g} s in all): the taut-cable results do not "
+                    "hold", nan, nan)
+        start, _, window = _measure_times(self.manoeuvre)
+        sustained = self.manoeuvre.input_end is None
+        h = self.histories()
+        trim_beta = self.trim.quantity("beta")
+        signals = np.vstack([h["beta"], h["swing lateral"], h["swing longitudinal"]])
+        env = vd.envelope(self.time, signals, window, [trim_beta, np.nan, np.nan], sustained,
+                          ENVELOPE)
+        verdict, reason = str(env.verdict[0]), env.reason(0, "sideslip")
+        # the swing pendulum modes are lightly damped whatever the parachute: a swing counts
+        # only when its envelope grows (the sideslip decides the rest), and is named
+        for k, what in ((1, "lateral swing"), (2, "longitudinal swing")):
+            if env.verdict[k] == vd.DIVERGENT:
+                verdict = vd.worst([verdict, vd.DIVERGENT])
+                reason += "; " + env.reason(k, what)
+            elif env.verdict[k] in (vd.LIMIT_CYCLE, vd.BOUNDED):
+                reason += (f"; {what} not decaying ({math.degrees(env.first[k]):.3g} -> "
+                           f"{math.degrees(env.second[k]):.3g} deg: a lightly damped pendulum "
+                           "mode)")
+        linear = self.linear_at_condition
+        if verdict == vd.CONVERGENT and linear is not None and not linear.stable:
+            verdict = vd.INCONCLUSIVE
+            reason += (f"; the response decays but the trim's linear model is not stable "
+                       f"(largest real part {float(np.max(linear.eigenvalues.real)):.3g} 1/s)")
+        excursion = float(np.nanmax(np.abs(h["beta"][self.time >= start] - trim_beta)))
+        band = max(SETTLE_FRACTION * excursion, BAND_FLOOR)
+        settling = nan
+        if verdict in vd.ACCEPTED and not sustained:
+            settling = float(vd.settling_time(self.time, h["beta"], start, trim_beta,
+                                              band)[0])
+        return verdict, reason, settling, band
 
 
 @dataclass(frozen=True, eq=False)

@@ -494,9 +494,10 @@ class LinearModel:
 
     @property
     def stable(self):
-        """True when every eigenvalue has a real part below -:data:`STABILITY_TOLERANCE`
-        (strictly) or within it (neutral): no mode grows."""
-        return bool(np.all(self.eigenvalues.real <= STABILITY_TOLERANCE))
+        """True when every eigenvalue has a real part below -:data:`STABILITY_TOLERANCE`:
+        every mode decays (a real part within the tolerance of 0 is neutral, not stable; the
+        same rule as :meth:`verdict`)."""
+        return bool(np.all(self.eigenvalues.real < -STABILITY_TOLERANCE))
 
     def verdict(self):
         """"stable", "neutral" (some real parts within round-off of 0) or "unstable", with
@@ -606,7 +607,7 @@ class LinearModel:
                    "time to half or double [s]": (np.log(2) / abs(value.real)
                                                   if abs(value.real) > 0 else np.inf),
                    "kind": "oscillatory" if oscillatory else "aperiodic",
-                   "stable": bool(value.real <= STABILITY_TOLERANCE)}
+                   "stable": bool(value.real < -STABILITY_TOLERANCE)}
             for j, group in enumerate(("longitudinal", "lateral", "yaw", "parachute")):
                 row[f"{group} amplitude [-]"] = angles[k][j]
             for j, motion in enumerate(MOTIONS):
