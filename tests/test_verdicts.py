@@ -63,3 +63,42 @@ def test_worst_and_damping_check():
     assert vd.damping_check(0.21, 4.0, 0.2, 4.1, "yaw").startswith("agrees")
     assert vd.damping_check(0.31, 4.0, 0.2, 4.1, "yaw").startswith("differs")
     assert vd.damping_check(0.2, 1.6, 0.2, 14.6, "yaw").startswith("period 1.6 s matches no")
+
+
+def test_eigenvalue_test_does_what_its_docstring_says():
+    """LinearModel.stable: every real part below -1e-6 1/s (the documented tolerance); a real
+    part of +1e-7 (within round-off of 0) is neutral, not stable, and +1e-3 unstable."""
+    from slingloads.analyses.multibody.trim import LinearModel
+
+    def model(*values):
+        return LinearModel(None, None, (), np.array(values, dtype=complex), None)
+
+    assert model(-1.0, -2e-6).stable and model(-1.0, -2e-6).verdict() == "stable"
+    assert not model(-1.0, 1e-7).stable and model(-1.0, 1e-7).verdict() == "neutral"
+    assert not model(-1.0, -5e-7).stable
+    assert not model(-1.0, 1e-3).stable and model(-1.0, 1e-3).verdict() == "unstable"
+
+
+def test_one_dof_verdicts_about_the_neutral_area():
+    """Linear tables (Cn = -0.4 beta, fin CY = -3 beta) so the fitted and local slopes agree
+    and the neutral area is exact: at it the yaw stiffness k is zero, no moment restores the
+    heading and the linear mode is neutral, so the run is not convergent although the gust's
+    sideslip dies with the gust (inconclusive, k printed); 10 % below it k < 0 and the heading
+    departs (static departure, divergent or outside the domain, never convergent); at 1.5 x
+    k > 0 and c > 0: convergent. One rule, no override (no 'neutral' label)."""
+    from slingloads.analyses.chute_sizing import neutral_area, run_yaw
+    from slingloads.models.gusts import FiniteGust
+    from slingloads.models.integration import SolverSettings
+    from tests.test_yaw_dynamics import linear_model
+
+    model = linear_model()
+    static = neutral_area(model)
+    assert static.area_fit == pytest.approx(static.area_local, rel=1e-9)
+    areas = np.array([1.0, 0.9, 1.5]) * static.area
+    runs = run_yaw(model, areas, FiniteGust(2.0, 5.0, 5.0),
+                   SolverSettings(t_end=80.0)).to_frame()
+    assert runs["verdict"][0] == "inconclusive"
+    assert "linear yaw mode (local slopes) not stable" in runs["verdict reason"][0]
+    assert runs["verdict"][1] in ("static departure", "divergent", "outside domain")
+    assert runs["verdict"][2] == "convergent"
+    assert "neutral" not in set(runs["verdict"])

@@ -720,7 +720,8 @@ def _first_time(t, flags):
 
 
 def _linear_metrics(model, areas, fit_range):
-    """Linear damping ratio [-], natural frequency [rad/s], linear stability, stiffness
+    """Linear damping ratio [-], natural frequency [rad/s], linear stability (both roots'
+    real parts below -:data:`~slingloads.analyses.verdicts.EIGENVALUE_TOLERANCE`), stiffness
     [N m/rad] and damping [N m s/rad] of every run, as :func:`linear_yaw` gives them on the
     local slopes at zero sideslip (the eigenvalue of a small disturbance about the trim), on
     arrays: fuselage and fin linearised once, the parachute's stiffness and damping
@@ -743,7 +744,13 @@ def _linear_metrics(model, areas, fit_range):
     with np.errstate(invalid="ignore", divide="ignore"):
         omega = np.where(positive, np.sqrt(stiffness / inertia), np.nan)
         zeta = np.where(positive, damping / (2.0 * np.sqrt(stiffness * inertia)), np.nan)
-    return zeta, omega, positive & (damping > 0), stiffness, damping
+        # real part of the slower root of I s^2 + c s + k = 0 (the stable-root form
+        # -2k / (c + sqrt(c^2 - 4 k I)) when both roots are real)
+        disc = damping**2 - 4.0 * stiffness * inertia
+        slowest = np.where(disc >= 0, -2.0 * stiffness / (damping + np.sqrt(np.abs(disc))),
+                           -damping / (2.0 * inertia))
+    stable = positive & (damping > 0) & (slowest < -_verdicts.EIGENVALUE_TOLERANCE)
+    return zeta, omega, stable, stiffness, damping
 
 
 def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=None,

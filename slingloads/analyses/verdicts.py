@@ -60,6 +60,9 @@ VERDICTS = (CONVERGENT, BOUNDED, STATIC_DEPARTURE, LIMIT_CYCLE, INCONCLUSIVE, DI
             OUTSIDE_DOMAIN)
 #: Verdicts that meet a stability criterion (``bounded`` only under a sustained input).
 ACCEPTED = (CONVERGENT, BOUNDED)
+#: A linear mode is stable when the real part of its eigenvalue is below minus this (a real
+#: part within it of 0 is neutral): the same rule in the 1-DOF and multibody models. [1/s]
+EIGENVALUE_TOLERANCE = 1e-6
 #: Largest difference between the damping ratio measured on a response and that of the
 #: linear mode it was measured on for the two to agree. [-]
 DAMPING_TOLERANCE = 0.05
@@ -264,6 +267,7 @@ def nearest_mode(period, modes, zeta=float("nan")):
 
 
 __all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT",
+           "EIGENVALUE_TOLERANCE",
            "INCONCLUSIVE", "LIMIT_CYCLE", "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE",
            "STATIC_DEPARTURE", "VERDICTS", "Envelope", "EnvelopeTest", "damping_check",
            "envelope", "nearest_mode", "settling_time", "worst"]
