@@ -152,7 +152,7 @@ ANALYSES = (
              "multibody campaign only: parachute selection over the operating envelope, "
              "sensitivity, stability maps, transport without parachute, loads hand-off",
              "Run the multibody campaign (Study rows 'campaign ...'); with 'run loads' the "
-             "loads then take the dynamics' cases.", feeds=("loads",)),
+             "loads then take the dynamics' cases.", feeds=("loads", "chute sizing")),
 )
 
 

@@ -234,6 +234,9 @@ class CampaignResult:
     neutral_check : pandas.DataFrame
         The 1.0 x neutral area: 1-DOF verdicts and the multibody verdict per condition.
     no_parachute : NoParachuteResult or None
+    decision : ParachuteDecision or None
+        The parachute decision of the campaign alone
+        (:func:`~slingloads.analyses.parachute_decision.decide`, without the 1-DOF sweep).
     """
 
     campaign: Campaign
@@ -248,6 +251,7 @@ class CampaignResult:
     stability: object
     neutral_check: pd.DataFrame
     no_parachute: NoParachuteResult | None
+    decision: object = None
 
     @property
     def neutral(self):
@@ -415,4 +419,34 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
     return CampaignResult(
         campaign, metrics, run_keys, store, report, selection, envelope,
         sensitivity_tables(metrics, chosen if chosen is not None else np.nan),
-        carrier_comparison(metrics), stability, neutral_check(campaign, metrics), no_chute)
+        carrier_comparison(metrics), stability, neutral_check(campaign, metrics), no_chute,
+        campaign_decision(campaign, metrics, selection))
+
+
+def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one_dof=None,
+                      study_area=None):
+    """The parachute decision of a campaign (:func:`~slingloads.analyses.parachute_decision.
+    decide`), with a 1-DOF sizing sweep if given; the 1-DOF verdicts at the chosen area from
+    the campaign's yaw model at its highest airspeed (as :func:`neutral_check`) unless
+    ``one_dof`` is given."""
+    from slingloads.analyses.parachute_decision import decide
+
+    from .selection import stable_runs
+
+    if one_dof is None:
+        m = campaign.matrix
+        speed = float(m.frame["airspeed EAS [m/s]"].max())
+        altitude = float(m.frame["density altitude [m]"].iloc[0])
+        model = yaw_model_of(campaign.setup.system, speed, altitude)
+        fit = (FIT_RANGE if campaign.neutral_fit_range is None
+               else tuple(float(b) for b in campaign.neutral_fit_range))
+
+        def one_dof(area):
+            return run_yaw(model, area, standard_gusts(),
+                           SolverSettings(ONE_DOF_TIME, ONE_DOF_STEP), fit_range=fit).to_frame()
+
+    line = campaign.setup.system.parachute
+    area = (float(line.parachute.area) if line is not None else float("nan")
+            ) if study_area is None else study_area
+    return decide(campaign.neutral if static is None else static, sweep, selection, metrics,
+                  stable_runs(metrics).to_numpy(), one_dof, area)

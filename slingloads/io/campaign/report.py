@@ -299,12 +299,19 @@ def _parts(title, frame, keys):
                               for k, table in enumerate(tables))]
 
 
-def _sheets(report, units, warnings=()):
+def _sheets(report, units, warnings=(), decision=None):
+    from slingloads.io.chute.report import decision_table
+
     r = report.result
+    decision = r.decision if decision is None else decision
     summary = [Section("Summary of the campaign",
                        note="Parachute selection first; every run: sheets Matrix and "
                             "Metrics."),
                *warning_sections(warnings),
+               *([Section("Parachute decision", decision_table(decision, units),
+                          note="One decision, the same in every report that mentions the "
+                               "parachute (docs/parachute-sizing.md).")]
+                 if decision is not None else []),
                Section("Parachute selection", selection_table(report, units)),
                Section("Campaign", definition_table(report, units))]
     limits = no_parachute_table(report, units)
@@ -492,7 +499,8 @@ def write(report, out_dir, stem, units, study, figures=None):
                            conventions=CONVENTIONS,
                            files=[f"{stem}-campaign-histories.parquet",
                                   *(f"{stem}-campaign-{tag}.png" for tag in pngs)])
-        sheets = _sheets(report, units, study.warnings)
+        sheets = _sheets(report, units, study.warnings,
+                         getattr(study, "results", {}).get("parachute decision"))
         with atomic_outputs(out_dir, inputs=inputs) as out:
             write_workbook(out.path(f"{stem}-campaign.xlsx"), sheets,
                            {figs[tag][0]: png for tag, png in pngs.items()}, info=info)

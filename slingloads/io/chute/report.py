@@ -104,6 +104,9 @@ class ChuteSizingReport:
         does; 0 when already stable). [m^2]
     study_area_runs : YawRuns or None
         Every gust at the Study's 'parachute area', the one the loads use (None if it is 0).
+    decision : ParachuteDecision or None
+        The parachute decision (:mod:`slingloads.analyses.parachute_decision`), with the
+        campaign's selection when the campaign ran in the same study.
     """
 
     inputs: object
@@ -112,6 +115,7 @@ class ChuteSizingReport:
     sweep: object
     recommended_area: float
     study_area_runs: object = None
+    decision: object = None
 
     @property
     def study_area_peak_sideslip(self):
@@ -192,7 +196,47 @@ def compute(study):
             at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
                                inputs.fit_range, inputs.metrics, inputs.integrator)
     recommended = sweep.smallest_stable_area if sweep is not None else 0.0
-    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study)
+    decision = None
+    if sweep is not None:
+        decision = _decision(study, inputs, static, sweep)
+    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
+                             decision)
+
+
+def _decision(study, inputs, static, sweep):
+    """The parachute decision: the sizing's, with the campaign's selection when the campaign
+    was computed in the same study (it is computed first); left in
+    ``study.results["parachute decision"]`` for every report that mentions the parachute."""
+    from slingloads.analyses.campaign.campaign import campaign_decision
+    from slingloads.analyses.parachute_decision import decide
+
+    def one_dof(area):
+        return run_yaw(inputs.model, area, inputs.gusts, inputs.settings, inputs.fit_range,
+                       inputs.metrics, inputs.integrator).to_frame()
+
+    results = getattr(study, "results", None)
+    campaign = results.get("campaign") if results is not None else None
+    if campaign is not None:
+        r = campaign.result
+        decision = campaign_decision(r.campaign, r.metrics, r.selection, sweep, static,
+                                     one_dof, inputs.study_area)
+    else:
+        decision = decide(static, sweep, one_dof=one_dof, study_area=inputs.study_area)
+    if results is not None:
+        results["parachute decision"] = decision
+    return decision
+
+
+def decision_table(decision, units="SI"):
+    """The parachute decision's table in report units (areas converted), the same in every
+    report that carries it."""
+    frame = decision.to_frame()
+    areas = frame["unit"] == "m^2"
+    unit = unit_label(report_unit("area", units))
+    frame.loc[areas, "value"] = [float(in_report_units(float(v), "area", units))
+                                 for v in frame.loc[areas, "value"]]
+    frame.loc[areas, "unit"] = unit
+    return frame
 
 
 @contextlib.contextmanager
@@ -442,8 +486,9 @@ def _summary_note(result, units):
             f"stable under every gust); parachute line {line:.4g} {lunit} from the wake.")
 
 
-def _sheets(result, units, warnings=()):
+def _sheets(result, units, warnings=(), decision=None):
     tables = summary_tables(result, units)
+    decision = result.decision if decision is None else decision
     lin = result.static.linearisation
     static = result.static.curves_frame()
     moment_spec = {c: (c[:c.index(" [")], "moment") for c in static.columns if c.startswith("N ")}
@@ -454,6 +499,10 @@ def _sheets(result, units, warnings=()):
     summary = [Section("Summary of the parachute sizing", note=_summary_note(result, units)),
                *warning_sections(warnings),
                Section("Condition", tables["condition"]),
+               *([Section("Parachute decision", decision_table(decision, units),
+                          note="One decision, the same in every report that mentions the "
+                               "parachute (docs/parachute-sizing.md).")]
+                 if decision is not None else []),
                Section("Parachute area", tables["sizing"], note=PAPER_NOTE),
                Section("Yaw stiffness breakdown at the neutral area", tables["breakdown"]),
                Section("Parachute line and carrier cable", tables["line"])]
@@ -564,7 +613,8 @@ def write(result, out_dir, stem, units, study, figures=None):
               "histories": "Time histories for every gust shape (paper figure 7)"}
     jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
     with drawings(jobs, figures, _PNG_DPI) as pngs:
-        sheets = _sheets(result, units, study.warnings)
+        sheets = _sheets(result, units, study.warnings,
+                         getattr(study, "results", {}).get("parachute decision"))
         files = ([f"{stem}-chute-histories.csv"] if result.sweep is not None else []) + [
             f"{stem}-chute-{tag}.png" for tag in pngs]
         info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,

@@ -1,0 +1,92 @@
+"""The one parachute decision (slingloads.analyses.parachute_decision): the rule that both
+models' criteria must hold, so the larger of their proposals is chosen, and that a model
+which finds no area leaves none (the reference: the rule stated in the module notes and
+docs/parachute-sizing.md, worked by hand on stand-in results)."""
+
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from slingloads.analyses.parachute_decision import MULTIBODY, ONE_DOF, decide
+
+STATIC = SimpleNamespace(area=0.8, area_fit=0.7, area_local=0.8,
+                         basis_text="local slopes at zero sideslip")
+
+
+class Sweep:
+    """A 1-DOF sweep whose areas 0.8, 1.0, 1.2 m^2 have the given verdicts (two gusts)."""
+
+    def __init__(self, verdicts):
+        self.rows = pd.DataFrame(
+            [{"area [m^2]": a, "gust": g, "verdict": v}
+             for a, vs in zip((0.8, 1.0, 1.2), verdicts, strict=True)
+             for g, v in zip(("step", "finite"), vs, strict=True)])
+
+    def to_frame(self):
+        return self.rows
+
+    def by_area(self):
+        g = self.rows.groupby("area [m^2]")
+        return pd.DataFrame({"all gusts stable": g["verdict"].agg(
+            lambda v: bool(v.isin(("convergent", "bounded")).all()))}).reset_index()
+
+    @property
+    def smallest_stable_area(self):
+        t = self.by_area()
+        ok = t[t["all gusts stable"]]
+        return float(ok["area [m^2]"].min()) if len(ok) else math.nan
+
+
+def selection(area):
+    governing = {"condition": "80 KEAS", "needs area factor [-]": 1.5}
+    return SimpleNamespace(recommended_area=area, governing_recommended=governing,
+                           governing_stable=governing)
+
+
+METRICS = pd.DataFrame({"area [m^2]": [1.2, 1.2, 1.4, 1.4],
+                        "response verdict": ["convergent", "limit cycle", "convergent",
+                                             "convergent"]})
+STABLE = np.array([True, False, True, True])
+
+
+def one_dof(area):
+    return pd.DataFrame({"gust": ["step", "finite"], "verdict": ["convergent", "convergent"]})
+
+
+def test_the_larger_proposal_decides():
+    """1-DOF needs 1.0 m^2 (0.8 fails the finite gust), the campaign 1.4: 1.4 is chosen, the
+    multibody model decides; its runs at 1.4 are all stable. With the campaign at 0.9 the
+    1-DOF's 1.0 is chosen and the 1-DOF decides; the campaign has no run at 1.0."""
+    sweep = Sweep([("convergent", "outside domain"), ("convergent", "convergent"),
+                   ("convergent", "convergent")])
+    d = decide(STATIC, sweep, selection(1.4), METRICS, STABLE, one_dof, 0.9)
+    assert d.chosen_area == 1.4 and d.deciding_model == MULTIBODY
+    assert d.multibody_verdict == "stable in all 2 runs"
+    assert "SMALLER" in d.study_area_verdict()
+    assert "finite gust (outside domain)" in decide(STATIC, sweep).governing
+    d = decide(STATIC, sweep, selection(0.9), METRICS, STABLE, one_dof, 1.2)
+    assert d.chosen_area == 1.0 and d.deciding_model == ONE_DOF
+    assert d.multibody_verdict == "not run at this area"
+    frame = d.to_frame().set_index("item")
+    assert frame.loc["chosen area", "value"] == pytest.approx(1.0)
+
+
+def test_no_area_when_a_model_finds_none():
+    """A campaign with no area meeting its criterion leaves no chosen area (a finding, with
+    the model named), whatever the 1-DOF sweep found; so does a sweep with no stable area.
+    The verdict over the campaign's runs at 1.2 m^2 counts the limit cycle as not stable."""
+    sweep = Sweep([("convergent", "convergent")] * 3)
+    d = decide(STATIC, sweep, selection(math.nan), METRICS, STABLE, one_dof)
+    assert not d.found and d.deciding_model == MULTIBODY
+    assert "no area meets the criterion of the multibody campaign" in d.reason
+    bad = Sweep([("divergent", "convergent")] * 3)
+    d = decide(STATIC, bad)
+    assert not d.found and d.deciding_model == ONE_DOF
+    from slingloads.analyses.parachute_decision import multibody_verdict_at
+    text = multibody_verdict_at(METRICS, 1.2, STABLE)
+    assert text.startswith("NOT stable: 1 of 2 runs") and "limit cycle" in text
