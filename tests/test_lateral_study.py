@@ -324,3 +324,26 @@ def test_simulate_counts_every_evaluation(monkeypatch):
     with pytest.raises(InputError, match="needs more than 200 evaluations") as error:
         simulate(*_FAST_PATH_CASES[0], solver=SolverSettings(t_end=4.0))
     assert error.value.field == "rtol"
+
+
+def test_a_case_leaving_the_domain_yields_no_design_angle():
+    """Point mass, hook speed step dV (FACTS 5): cos(theta_max) = 1 - dV^2/(2 g L). For
+    dV^2 = 0.5 g L the swing peaks at acos(0.75) = 41.41 deg, inside the domain. For
+    dV^2 = 3 g L the rope passes the horizontal (cos would be -0.5) and the rigid rope goes
+    slack at cos(theta) = (2 - dV^2/(g L)) / 3 = -1/3 (109.5 deg): that case is outside the
+    model's domain, with its reason, and the design angle (margin 1) is the 41.41 deg of the
+    other case alone; the verdict says no reduction is supported while the case is in the set.
+    Alone, the violent step leaves no design angle at all (NaN, never a value past 90 deg)."""
+    length = ROPES[0]
+    motions = [VelocityStep(np.sqrt(0.5 * G0 * length)), VelocityStep(np.sqrt(3 * G0 * length))]
+    study = lateral_study([POINT], [length], motions, margin=1.0,
+                          ranges=ParameterRanges.nominal(), solver=SolverSettings(t_end=6.0))
+    assert list(study.in_domain) == [True, False]
+    note = study.domain_notes()[1]
+    assert "cable slack" in note and "over the top" in note
+    assert np.degrees(study.recommended_angle) == pytest.approx(
+        np.degrees(np.arccos(0.75)), rel=2e-3)
+    assert "1 of 2 cases leave the model's domain" in study.verdict()
+    alone = lateral_study([POINT], [length], motions[1:], margin=1.0,
+                          ranges=ParameterRanges.nominal(), solver=SolverSettings(t_end=6.0))
+    assert np.isnan(alone.recommended_angle) and "no design angle" in alone.verdict()

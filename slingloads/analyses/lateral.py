@@ -68,6 +68,12 @@ from slingloads.models.pendulum import (
 
 #: CS-29.865 minimum angle of the hook load from the mast. [rad]
 REGULATORY_ANGLE = np.radians(30.0)
+#: Domain of the lateral pendulum: the cable stays taut (T > 0 throughout), the rope angle
+#: from the vertical stays below this (past it the hub is above the hook's horizontal: the
+#: body goes over the top, a motion no carrier flies and a cable that only pulls cannot
+#: hold), and the hub load's angle from the mast stays below it (past 90 deg the cable pulls
+#: the hub from below its own horizontal plane: no hook load case). [rad]
+DOMAIN_ANGLE = np.radians(90.0)
 
 #: The paper's rope lengths, 18, 60 and 100 ft. [m]
 PAPER_ROPE_LENGTHS = tuple(ft * FOOT for ft in (18.0, 60.0, 100.0))
@@ -948,19 +954,65 @@ class LateralStudy:
         return np.all(self.factors == 1.0, axis=1)
 
     @property
+    def in_domain(self):
+        """True for the cases that stay inside the model's domain (:data:`DOMAIN_ANGLE`):
+        taut cable throughout, rope angle and load angle below 90 deg. The others yield no
+        design angle."""
+        m = self.metrics
+        with np.errstate(invalid="ignore"):
+            return (~np.asarray(m.slack, bool)
+                    & (np.asarray(m.max_rope_angle) < DOMAIN_ANGLE)
+                    & (np.asarray(m.max_load_angle) < DOMAIN_ANGLE))
+
+    def domain_notes(self):
+        """Why each case is outside the domain, with the time ('' inside). [str]"""
+        m, d = self.metrics, np.degrees
+        notes = []
+        for k in range(len(self.pendulums)):
+            why = []
+            if bool(np.asarray(m.slack)[k]):
+                why.append(f"cable slack (min T/(m g) {float(m.min_tension_ratio[k]):.3g})")
+            if not np.asarray(m.max_rope_angle)[k] < DOMAIN_ANGLE:
+                why.append(f"rope angle {float(d(m.max_rope_angle[k])):.4g} deg at t = "
+                           f"{float(m.t_max_rope_angle[k]):.4g} s passes "
+                           f"{float(d(DOMAIN_ANGLE)):.3g} deg (over the top)")
+            if not np.asarray(m.max_load_angle)[k] < DOMAIN_ANGLE:
+                why.append(f"load angle {float(d(m.max_load_angle[k])):.4g} deg at t = "
+                           f"{float(m.t_max_load_angle[k]):.4g} s passes "
+                           f"{float(d(DOMAIN_ANGLE)):.3g} deg")
+            notes.append("; ".join(why))
+        return notes
+
+    @property
+    def outside_domain(self):
+        """Number of cases outside the domain."""
+        return int(np.count_nonzero(~self.in_domain))
+
+    def _inside(self, values):
+        return np.where(self.in_domain, values, np.nan)
+
+    @property
     def critical_index(self):
-        """Index of the case with the largest load angle."""
+        """Index of the case with the largest load angle among those inside the domain (of
+        all cases when none is)."""
+        inside = self._inside(self.metrics.max_load_angle)
+        if np.any(np.isfinite(inside)):
+            return int(np.nanargmax(inside))
         return int(np.nanargmax(self.metrics.max_load_angle))
 
     @property
     def max_load_angle(self):
-        """Largest |theta1 - theta2| over all cases, the envelope over the ranges. [rad]"""
-        return float(self.metrics.max_load_angle[self.critical_index])
+        """Largest |theta1 - theta2| over the cases inside the domain, the envelope over the
+        ranges (NaN when no case is inside). [rad]"""
+        value = float(self._inside(self.metrics.max_load_angle)[self.critical_index])
+        return value
 
     @property
     def nominal_max_load_angle(self):
-        """Largest |theta1 - theta2| over the nominal cases. [rad]"""
-        return float(np.nanmax(self.metrics.max_load_angle[self.nominal]))
+        """Largest |theta1 - theta2| over the nominal cases inside the domain (NaN if
+        none). [rad]"""
+        values = self._inside(self.metrics.max_load_angle)[self.nominal]
+        return float(np.nanmax(values)) if np.any(np.isfinite(values)) else np.nan
 
     @property
     def critical_case(self):
@@ -977,8 +1029,10 @@ class LateralStudy:
     @property
     def recommended_angle(self):
         """Recommended design angle of the hook load from the mast = margin x the largest
-        load angle over the envelope of the ranges. [rad]"""
-        return self.margin * self.max_load_angle
+        load angle over the envelope of the ranges, the cases inside the domain only; NaN
+        when no case is inside or when it would reach 90 deg (no hook cone). [rad]"""
+        value = self.margin * self.max_load_angle
+        return value if value < DOMAIN_ANGLE else np.nan
 
     @property
     def exceeds_regulatory_angle(self):
@@ -1008,6 +1062,25 @@ class LateralStudy:
         """The study's conclusion on the 30 deg rule, in words."""
         found, rec = np.degrees(self.max_load_angle), np.degrees(self.recommended_angle)
         reg = np.degrees(self.regulatory_angle)
+        out = self.outside_domain
+        if out == len(self.pendulums):
+            return (f"Every case leaves the lateral pendulum's domain (slack cable, or rope or "
+                    f"load angle past {np.degrees(DOMAIN_ANGLE):.3g} deg): no design angle; "
+                    f"for this motion set the {reg:.3g} deg rule can be neither reduced nor "
+                    "confirmed. Use flyable carrier motions.")
+        left = ""
+        if out:
+            left = (f" {out} of {len(self.pendulums)} cases leave the model's domain (sheet "
+                    f"Runs, 'domain'): their motions bound no angle, so no reduction below "
+                    f"{reg:.3g} deg is supported while they are in the motion set.")
+        if not np.isfinite(rec):
+            return (f"The largest load angle inside the domain is {found:.3g} deg; with the "
+                    f"margin {self.margin:g} it reaches 90 deg: no hook cone can be built, no "
+                    f"design angle. Restrict the operation (motions, masses, rope lengths) or "
+                    f"show more damping.{left}")
+        return self._verdict_inside(found, rec, reg) + left
+
+    def _verdict_inside(self, found, rec, reg):
         if self.regulatory_angle_not_conservative:
             need = (f"the hook cases need at least {rec:.3g} deg ({self.margin:g} x "
                     f"{found:.3g} deg)." if rec < 90.0 else
@@ -1046,19 +1119,26 @@ class LateralStudy:
             frame[key] = values
         if self.hook_load_factor is not None:
             frame["T/(m g) > Nz [-]"] = self.exceeds_hook_load_factor
+        frame["inside domain [-]"] = self.in_domain
+        frame["domain"] = self.domain_notes()
         return frame
 
     def case_frame(self):
         """One row per nominal case (body x rope length x motion): its inputs and metrics
         with the nominal roll inertia, CG and rope, and beside them the largest load angle
-        and tension factor over the stated ranges, with the factors that gave that angle."""
+        over the stated ranges among the cases inside the model's domain (NaN: none), the
+        factors that gave it, the largest tension factor and the number of cases of the
+        ranges outside the domain."""
         frame = self.to_frame()
         per_pendulum = len(self.pendulums) // len({id(p) for p in self.pendulums})
         frame["motion number"] = np.arange(len(frame)) % per_pendulum
         key = ["body", "nominal rope length [m]", "motion number"]
-        angle = frame["max |theta1 - theta2| [deg]"].fillna(-np.inf)
+        inside = frame["inside domain [-]"].astype(bool)
+        angle = frame["max |theta1 - theta2| [deg]"].where(inside).fillna(-np.inf)
         worst = frame.loc[angle.groupby([frame[k] for k in key], sort=False).idxmax()]
         worst = worst.set_index(key)
+        worst.loc[~worst["inside domain [-]"].astype(bool), "max |theta1 - theta2| [deg]"] = (
+            np.nan)
         factors = ["roll inertia factor [-]", "CG below hub factor [-]",
                    "rope length factor [-]"]
         out = frame[frame["nominal [-]"]].set_index(key)
@@ -1067,6 +1147,8 @@ class LateralStudy:
         for name in factors:
             out[name.replace(" [-]", " at that maximum [-]")] = worst[name]
         out["max T/(m g) over the ranges [-]"] = frame.groupby(key)["max T/(m g) [-]"].max()
+        out["cases outside the domain over the ranges [-]"] = (~inside).groupby(
+            [frame[k] for k in key]).sum()
         out = out.reset_index().drop(columns=[*factors, "nominal [-]", "motion number"])
         return out[["case", *[c for c in out.columns if c != "case"]]]
 
@@ -1088,6 +1170,7 @@ class LateralStudy:
             ("  time of the maximum", case["t at max |theta1 - theta2| [s]"], "s"),
             ("  cable slack in that case", bool(case["slack [-]"]), "-"),
             ("cases whose cable went slack", int(np.sum(self.metrics.slack)), "-"),
+            ("cases outside the model's domain (no design value)", self.outside_domain, "-"),
             ("largest load angle, cases that stayed taut",
              np.degrees(self.max_load_angle_taut), "deg"),
             ("margin", self.margin, "-"),

@@ -130,9 +130,10 @@ def plot_max_angle_vs_acceleration(study, title=None):
                 label=motion.replace("_", " "))
     reg = np.degrees(study.regulatory_angle)
     ax.axhline(reg, label=f"CS-29.865 {reg:.0f} deg", **_REG_STYLE)
-    ax.axhline(np.degrees(study.recommended_angle), color="tab:green", linestyle="-.",
-               label=f"recommended {np.degrees(study.recommended_angle):.1f} deg "
-                     f"(margin {study.margin:g})")
+    if np.isfinite(study.recommended_angle):  # none outside the model's domain
+        ax.axhline(np.degrees(study.recommended_angle), color="tab:green", linestyle="-.",
+                   label=f"recommended {np.degrees(study.recommended_angle):.1f} deg "
+                         f"(margin {study.margin:g})")
     ax.set_xlabel("carrier peak lateral acceleration [g]")
     ax.set_ylabel("max |theta1 - theta2| [deg]")
     ax.set_ylim(bottom=0.0)
@@ -222,8 +223,10 @@ def plot_sensitivity(study, title=None):
                         color=color, linestyle="--")
     reg = np.degrees(study.regulatory_angle)
     ax_angle.axhline(reg, label=f"CS-29.865 {reg:.0f} deg", **_REG_STYLE)
-    ax_angle.axhline(np.degrees(study.recommended_angle), color="tab:green", linestyle="-.",
-                     label=f"recommended {np.degrees(study.recommended_angle):.1f} deg")
+    if np.isfinite(study.recommended_angle):  # none outside the model's domain
+        ax_angle.axhline(np.degrees(study.recommended_angle), color="tab:green",
+                         linestyle="-.",
+                         label=f"recommended {np.degrees(study.recommended_angle):.1f} deg")
     if study.hook_load_factor is not None:
         ax_tension.axhline(study.hook_load_factor, label=f"Nz {study.hook_load_factor:g}",
                            **_REG_STYLE)

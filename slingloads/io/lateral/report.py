@@ -253,9 +253,13 @@ def summary_tables(result, units="SI"):
          "rigid rope not valid after slack: use the elastic cable" if case["slack [-]"]
          else ""),
         ("cases whose cable went slack", int(np.sum(st.metrics.slack)), "-", ""),
+        ("cases outside the model's domain", st.outside_domain, "-",
+         "slack cable, or rope or load angle past 90 deg (sheet Runs, 'domain'): no design "
+         "value from them"),
         ("design-angle margin", st.margin, "-", "input"),
         ("recommended design angle", float(np.degrees(st.recommended_angle)), "deg",
-         "margin x largest load angle"),
+         "margin x largest load angle inside the domain" if np.isfinite(st.recommended_angle)
+         else "NONE: no case inside the domain, or 90 deg reached with the margin"),
         ("CS-29.865 angle", float(np.degrees(st.regulatory_angle)), "deg",
          "'not less than 30 deg' unless a smaller angle is shown not to be exceeded"),
         ("recommended angle exceeds CS-29.865", bool(st.exceeds_regulatory_angle), None,
