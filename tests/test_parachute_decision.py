@@ -90,3 +90,25 @@ def test_no_area_when_a_model_finds_none():
     from slingloads.analyses.parachute_decision import multibody_verdict_at
     text = multibody_verdict_at(METRICS, 1.2, STABLE)
     assert text.startswith("NOT stable: 1 of 2 runs") and "limit cycle" in text
+
+
+def test_a_finding_is_reported_not_refused():
+    """No stable area is a finding, not an input error: the campaign's and the sizing's
+    shortfalls name it (``slingloads`` exits 3 with the reports written, cli.EXIT_INCOMPLETE),
+    and the loads keep the hand-entered cases. Checked on stand-in results; the whole run is
+    exercised by the example with 'campaign area factors' 0.5 (exit 3)."""
+    from slingloads.cli import EXIT_INCOMPLETE
+    from slingloads.io.campaign.report import shortfalls as campaign_shortfalls
+    from slingloads.io.chute.report import shortfalls as chute_shortfalls
+
+    none = decide(STATIC, None, selection(math.nan), METRICS, STABLE)
+    report = SimpleNamespace(
+        result=SimpleNamespace(selection=SimpleNamespace(smallest_stable=math.nan),
+                               envelope=None, decision=none),
+        inputs=SimpleNamespace(loads_from_dynamics=True))
+    lines = campaign_shortfalls(report)
+    assert len(lines) == 3 and "stable in every condition" in lines[0]
+    assert "hand-entered cases only" in lines[1] and "parachute decision" in lines[2]
+    sized = SimpleNamespace(sweep=object(), recommended_area=math.nan, decision=None)
+    assert "no swept area is stable" in chute_shortfalls(sized)[0]
+    assert EXIT_INCOMPLETE == 3

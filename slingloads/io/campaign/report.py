@@ -168,6 +168,25 @@ def compute(study):
 
 
 # ------------------------------------------------------------------------------- tables
+def shortfalls(report):
+    """The campaign's findings that leave a result asked for without a value, one line each
+    (``slingloads`` then exits 3 with the reports written): no parachute area stable in every
+    condition, and then no dynamics' cases for the loads; no area meeting every criterion of
+    the parachute decision."""
+    r = report.result
+    out = []
+    sel = r.selection
+    if not np.isfinite(sel.smallest_stable):
+        out.append("campaign: no parachute area of the matrix is stable in every condition "
+                   "(sheet Selection)")
+    if r.envelope is None and report.inputs.loads_from_dynamics:
+        out.append("campaign: no area chosen, so the loads keep their hand-entered cases only "
+                   "(no cases from the dynamics)")
+    if r.decision is not None and not r.decision.found:
+        out.append(f"parachute decision: {r.decision.reason}")
+    return out
+
+
 def _items(rows):
     return pd.DataFrame(rows, columns=["item", "value", "unit", "note"])
 

@@ -203,6 +203,19 @@ def compute(study):
                              decision)
 
 
+def shortfalls(result):
+    """The sizing's findings that leave a result asked for without a value, one line each
+    (``slingloads`` then exits 3 with the reports written): no swept area stable under every
+    gust, no area meeting every criterion of the parachute decision."""
+    out = []
+    if result.sweep is not None and not np.isfinite(result.recommended_area):
+        out.append("chute sizing: no swept area is stable under every gust (sheet Sweep): no "
+                   "area recommended")
+    if result.decision is not None and not result.decision.found:
+        out.append(f"parachute decision: {result.decision.reason}")
+    return out
+
+
 def _decision(study, inputs, static, sweep):
     """The parachute decision: the sizing's, with the campaign's selection when the campaign
     was computed in the same study (it is computed first); left in

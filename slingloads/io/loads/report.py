@@ -998,10 +998,9 @@ def compute(study):
     if campaign is None or not campaign.inputs.loads_from_dynamics:
         return _finite(study.loads.run(), study)
     if campaign.result.envelope is None:
-        raise InputError("the loads are to take the dynamics' cases, but no parachute area of "
-                         "the campaign is stable in every condition and none was chosen "
-                         "('campaign chosen area factor'); choose one or set 'campaign loads "
-                         "from dynamics' to no", file=study.path, sheet="Study")
+        # a finding of the campaign, not an input error: the loads keep the hand-entered
+        # cases and the campaign's report says why (exit 3, see its shortfalls)
+        return _finite(study.loads.run(), study)
     from slingloads.analyses.campaign import loads_from_dynamics
 
     with located(study.path, "Study"):
