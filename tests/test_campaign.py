@@ -360,10 +360,12 @@ def example_loads():
 
 def test_loads_take_the_dynamics_cases(local, example_loads):
     """The hand-off keeps the hand-entered points and adds the dynamics' corners and centre
-    (the margin bounds); it keeps the CS-29.865 30 deg cone and Nz 2.5, which the dynamics
-    (x 1.25) do not reach; it gives the loads the chosen parachute's area. A LINE case loads
-    the parachute fitting with the line tension x margin along e = (cos t cos p, sin p,
-    sin t cos p), worked here from the line angles' corners."""
+    (the margin bounds, the sideslip mirrored about zero); it keeps the CS-29.865 30 deg cone
+    and Nz 2.5, which the dynamics (x 1.25) do not reach; it keeps the Study's parachute
+    (the chosen one only when asked). A LINE case loads the parachute fitting along
+    e = (cos t cos p, sin p, sin t cos p) (psi mirrored) with the line load scaled to the
+    loads' dynamic pressure and area: margin x max over the runs of T_line / (q_EAS A) x
+    q_loads x A_loads, worked here from the metrics by hand."""
     from slingloads.analyses.campaign import loads_from_dynamics
 
     env = dynamics_envelope(local.metrics, 1.6, margin=1.25)
@@ -374,17 +376,24 @@ def test_loads_take_the_dynamics_cases(local, example_loads):
     dyn = dict(zip(study.envelope.ids, zip(study.envelope.alpha, study.envelope.beta,
                                            strict=True), strict=True))
     a0, a1 = np.radians(env.bounds("alpha"))
-    b0, b1 = np.radians(env.bounds("beta"))
-    assert dyn["DYN-A+B-"] == pytest.approx((a1, b0)) and dyn["DYN-CENTRE"] == (0.0, 0.0)
+    b = np.radians(max(np.abs(env.bounds("beta"))))
+    assert dyn["DYN-A+B-"] == pytest.approx((a1, -b)) and dyn["DYN-CENTRE"] == (0.0, 0.0)
     assert study.hook.angle == pytest.approx(np.radians(30.0)) and study.hook.nz == 2.5
-    assert study.parachute.area == pytest.approx(env.area)
+    assert study.parachute.area == pytest.approx(example_loads.parachute.area)
+    chosen = loads_from_dynamics(example_loads, env, "CS-29.865", parachute="chosen")
+    assert chosen.study.parachute.area == pytest.approx(env.area)
+    runs = local.metrics[np.isclose(local.metrics["area factor [-]"], 1.6)]
+    per = (runs["line tension max [N]"]
+           / (0.5 * 1.225 * runs["airspeed EAS [m/s]"] ** 2 * runs["area [m^2]"])).max()
+    line_load = 1.25 * per * example_loads.flight.dynamic_pressure * example_loads.parachute.area
     cases = study.case_matrix()
     line = cases[cases["chute line"] == "LINE-T+P-"].index[0]
     _, forces, _ = study.applied_loads(cases.loc[[line]])
-    t1, p0 = np.radians(env.bounds("line theta")[1]), np.radians(env.bounds("line psi")[0])
-    expected = env.chute_drag * np.array([np.cos(t1) * np.cos(p0), np.sin(p0),
-                                          np.sin(t1) * np.cos(p0)])
-    assert_allclose(forces[0, -1], expected, rtol=1e-12)
+    t1 = np.radians(env.bounds("line theta")[1])
+    p0 = -np.radians(max(np.abs(env.bounds("line psi"))))
+    expected = line_load * np.array([np.cos(t1) * np.cos(p0), np.sin(p0),
+                                     np.sin(t1) * np.cos(p0)])
+    assert_allclose(forces[0, -1], expected, rtol=1e-9)
     hooks = len(study.hook_table()) + 1  # the cone, the vertical and the towed case
     assert (cases["source"] == "dynamics").sum() == hooks * 5 * (2 + 5)
 
@@ -411,6 +420,11 @@ def test_loads_hook_cone_from_the_dynamics_and_table_limits(example_loads):
     assert alpha["DYN-A-B+"] == pytest.approx(np.radians(-40.0))
     notes = handoff.comparison.set_index("quantity")["note"]
     assert "limited to the fuselage alpha table's range" in notes["alpha range"]
+    # the dynamics' smaller cone is below the Study's 30 deg: flagged beside it
+    lowered = handoff.comparison.set_index("quantity")["lowered"]
+    assert lowered["hook cone, fore-and-aft angle from the vertical"]
+    assert notes["hook cone, fore-and-aft angle from the vertical"].startswith("LOWER")
+    assert not lowered["hook load factor Nz"]
     kept = loads_from_dynamics(example_loads, env, "CS-29.865").study.hook
     assert kept.angle == pytest.approx(np.radians(30.0))
     with pytest.raises(InputError, match="not a valid hook-cone source"):

@@ -5,12 +5,17 @@ From a :class:`~.loads_envelope.DynamicsEnvelope` (the chosen parachute's runs, 
 margin), :func:`loads_from_dynamics` returns a copy of the loads study with
 
 * **aerodynamic envelope**: the hand-entered points kept, and the dynamics' corners and centre
-  added (ids ``DYN-CENTRE``, ``DYN-A+B+``...). A bound that the margin takes beyond the
-  fuselage or fin table is set at the table's edge and flagged (tables are never
-  extrapolated; the runs themselves stay inside them);
-* **parachute**: the chosen parachute's area in the parachute model, and line cases
-  (``LINE-AFT``, ``LINE-T+P+``...): the largest line tension x margin along the trailing
-  direction and the corners of the line-angle range, combined with every hook direction and
+  added (ids ``DYN-CENTRE``, ``DYN-A+B+``...). The sideslip range is mirrored about zero (a
+  gust set from one side says nothing of the other; the aircraft is taken as symmetric), and
+  the comparison says so. A bound that the margin takes beyond the fuselage or fin table is
+  set at the table's edge and flagged (tables are never extrapolated; the runs themselves
+  stay inside them);
+* **parachute**: the Study's parachute kept in the parachute model (``parachute="study"``,
+  the default) or the chosen one (``"chosen"``), the comparison giving both areas; line cases
+  (``LINE-AFT``, ``LINE-T+P+``...): the line load scaled to the loads' dynamic pressure and
+  parachute area (the largest line tension over q x area of the runs, x margin, x the loads'
+  q x area: never the campaign's load at a lower airspeed), along the trailing direction and
+  the corners of the line-angle range (psi mirrored), combined with every hook direction and
   each dynamics point (:class:`~slingloads.analyses.loads.DynamicsCases`);
 * **hook cone** (``hook_source``): ``"CS-29.865"`` keeps the Study's angles (30 deg unless a
   smaller one is justified) and raises each to the dynamics' x margin where they reach
@@ -21,7 +26,8 @@ margin), :func:`loads_from_dynamics` returns a copy of the loads study with
   dynamics exceed it.
 
 Every change is a row of :attr:`Handoff.comparison`: the hand-entered value, what the
-dynamics reached, with the margin, what the loads use.
+dynamics reached, with the margin, what the loads use, and ``lowered``: True, with the note
+starting "LOWER", where the loads use less than the hand-entered value.
 """
 
 from __future__ import annotations
@@ -36,6 +42,8 @@ from slingloads.errors import InputError
 
 #: Sources of the loads' hook cone.
 HOOK_SOURCES = ("CS-29.865", "dynamics")
+#: Parachutes of the loads after the hand-off: the Study's, or the campaign's chosen one.
+PARACHUTE_SOURCES = ("study", "chosen")
 
 
 @dataclass(frozen=True, eq=False)
@@ -71,8 +79,12 @@ def _limit(bounds, grid, what):
 
 def _aero(study, env):
     """The envelope with the dynamics' points, and the comparison rows."""
-    bounds = {"alpha": env.bounds("alpha"), "beta": env.bounds("beta")}
+    bounds = {"alpha": env.bounds("alpha"), "beta": env.mirrored("beta")}
     notes = {"alpha": [], "beta": []}
+    if not np.allclose(env.mirrored("beta"), env.bounds("beta")):
+        b0, b1 = env.bounds("beta")
+        notes["beta"].append(f"mirrored about zero (with margin {b0:.4g} to {b1:.4g}: the "
+                             "gusts came from one side)")
     tables = []
     if study.fuselage is not None:
         tables += [("alpha", study.fuselage.table.alpha, "fuselage alpha"),
@@ -97,7 +109,7 @@ def _aero(study, env):
                              np.concatenate([hand.beta, beta])))
     rows = []
     for name in ("alpha", "beta"):
-        reached, margin, used = env.reached[name], env.bounds(name), bounds[name]
+        reached, margin, used = env.reached[name], bounds[name], bounds[name]
         hand_values = None if hand is None else getattr(hand, name)
         rows.append({"quantity": f"{name} range", "unit": "deg",
                      "hand-entered": "none" if hand_values is None else _range(hand_values),
@@ -153,35 +165,44 @@ def _hook(study, env, source):
     return new, rows
 
 
-def _parachute(study, env, chosen_area):
+def _parachute(study, env, chosen_area, source="study"):
     if study.parachute is None:
         return None, None, [{"quantity": "parachute", "unit": "", "hand-entered": "none",
                              "dynamics reached": f"{env.area:.4g} m^2",
                              "with margin": np.nan, "used in the loads": "none",
                              "note": "the loads study has no parachute ('parachute area' 0): "
                                      "no parachute case added"}]
-    area = env.area if chosen_area is None else chosen_area
+    chosen = env.area if chosen_area is None else chosen_area
+    area = study.parachute.area if source == "study" else chosen
     chute = replace(study.parachute, area=area)
     q = study.flight.dynamic_pressure
 
     def drag(parachute):
         return float(np.asarray(parachute.drag(q, 0.0, opening=True)).reshape(-1)[0])
 
+    line = env.chute_drag_at(q, area)
+    if not np.isfinite(line):
+        line = env.chute_drag
     ids, theta, psi = env.line_directions()
-    cases = DynamicsCases(line_ids=ids, line_theta=theta, line_psi=psi,
-                          line_force=env.chute_drag)
+    p0, p1 = env.mirrored("line psi")
+    psi = np.radians(np.array([0.0, p1, p0, p1, p0]))
+    cases = DynamicsCases(line_ids=ids, line_theta=theta, line_psi=psi, line_force=line)
     t0, t1 = env.bounds("line theta")
-    p0, p1 = env.bounds("line psi")
     rows = [
         {"quantity": "parachute area", "unit": "m^2", "hand-entered": study.parachute.area,
          "dynamics reached": env.area, "with margin": np.nan, "used in the loads": area,
-         "note": f"the chosen parachute, {env.area_factor:g} x neutral area"},
+         "note": (f"the Study's parachute kept (the campaign's chosen: {chosen:.4g} m^2, "
+                  f"{env.area_factor:g} x neutral area)" if source == "study" else
+                  f"the campaign's chosen parachute, {env.area_factor:g} x neutral area, in "
+                  f"place of the Study's {study.parachute.area:.4g} m^2")},
         {"quantity": "parachute load", "unit": "N", "hand-entered": drag(study.parachute),
          "dynamics reached": env.reached["line tension"][1], "with margin": env.chute_drag,
-         "used in the loads": env.chute_drag,
-         "note": f"hand-entered: the parachute model's drag at the loads' airspeed (with the "
-                 f"chosen area: {drag(chute):.4g} N, on the 'parachute on' cases); with "
-                 f"margin: on the LINE-* cases"},
+         "used in the loads": line,
+         "note": f"on the LINE-* cases: the runs' largest line tension over q x area x "
+                 f"margin, at the loads' q {q:.4g} Pa and area {area:.4g} m^2 (the "
+                 f"campaign's own peak x margin: {env.chute_drag:.4g} N); hand-entered: the "
+                 f"parachute model's drag at the loads' airspeed, on the 'parachute on' "
+                 f"cases"},
         {"quantity": "parachute line direction", "unit": "deg",
          "hand-entered": study.chute_line,
          "dynamics reached": (f"theta {env.reached['line theta'][0]:.4g} to "
@@ -190,12 +211,26 @@ def _parachute(study, env, chosen_area):
                               f"{env.reached['line psi'][1]:.4g}"),
          "with margin": f"theta {t0:.4g} to {t1:.4g}, psi {p0:.4g} to {p1:.4g}",
          "used in the loads": ", ".join(ids),
-         "note": "trailing direction and the corners of the range"},
+         "note": "trailing direction and the corners of the range (psi mirrored about zero)"},
     ]
     return chute, cases, rows
 
 
-def loads_from_dynamics(study, envelope, hook_source="CS-29.865", chosen_area=None):
+def _flag_lowered(rows):
+    """Mark the rows whose value used in the loads is below the hand-entered one."""
+    for row in rows:
+        hand, used = row.get("hand-entered"), row.get("used in the loads")
+        lowered = (isinstance(hand, (int, float)) and isinstance(used, (int, float))
+                   and np.isfinite(hand) and np.isfinite(used) and used < hand * (1 - 1e-9))
+        row["lowered"] = bool(lowered)
+        if lowered:
+            row["note"] = (f"LOWER than the hand-entered value ({used:.4g} < {hand:.4g}); "
+                           + row["note"])
+    return rows
+
+
+def loads_from_dynamics(study, envelope, hook_source="CS-29.865", chosen_area=None,
+                        parachute="study"):
     """The loads study with the dynamics' cases (module notes).
 
     Parameters
@@ -205,7 +240,9 @@ def loads_from_dynamics(study, envelope, hook_source="CS-29.865", chosen_area=No
     envelope : DynamicsEnvelope
     hook_source : {"CS-29.865", "dynamics"}
     chosen_area : float, optional
-        Parachute area of the loads (default: the envelope's). [m^2]
+        The chosen parachute's area (default: the envelope's). [m^2]
+    parachute : {"study", "chosen"}
+        The parachute of the loads: the Study's (default) or the chosen one.
 
     Returns
     -------
@@ -216,6 +253,9 @@ def loads_from_dynamics(study, envelope, hook_source="CS-29.865", chosen_area=No
                          f"are {list(HOOK_SOURCES)}", hook_source)
     if not isinstance(study, LoadsStudy):
         raise InputError("the hand-off needs a LoadsStudy", type(study).__name__)
+    if parachute not in PARACHUTE_SOURCES:
+        raise InputError(f"{parachute=!r} is not a valid parachute source; valid sources are "
+                         f"{list(PARACHUTE_SOURCES)}", parachute)
     rows = []
     aero_ids = ()
     new = {}
@@ -224,7 +264,7 @@ def loads_from_dynamics(study, envelope, hook_source="CS-29.865", chosen_area=No
         rows += aero_rows
     new["hook"], hook_rows = _hook(study, envelope, hook_source)
     rows += hook_rows
-    chute, cases, chute_rows = _parachute(study, envelope, chosen_area)
+    chute, cases, chute_rows = _parachute(study, envelope, chosen_area, parachute)
     rows += chute_rows
     if chute is not None:
         new["parachute"] = chute
@@ -235,7 +275,7 @@ def loads_from_dynamics(study, envelope, hook_source="CS-29.865", chosen_area=No
         line_force=0.0 if cases is None else cases.line_force,
         note=f"campaign runs at {envelope.area_factor:g} x neutral area, margin "
              f"{envelope.margin:g}")
-    return Handoff(replace(study, **new), pd.DataFrame(rows), envelope)
+    return Handoff(replace(study, **new), pd.DataFrame(_flag_lowered(rows)), envelope)
 
 
 def loads_comparison(result):

@@ -82,6 +82,22 @@ class DynamicsEnvelope:
     source: dict
     runs: int
     unstable_runs: int
+    line_coefficient: float = float("nan")
+
+    def chute_drag_at(self, q, area):
+        """Parachute line load with the margin at dynamic pressure ``q`` [Pa] and area
+        ``area`` [m^2]: margin x the largest line tension over q_EAS x area among the runs
+        (:attr:`line_coefficient`) x q x area, so that a load taken at the loads' airspeed is
+        never the lower one of the campaign's airspeeds. [N]"""
+        return self.margin * self.line_coefficient * float(q) * float(area)
+
+    def mirrored(self, quantity):
+        """(lower, upper) of an angle range with the margin, made symmetric about zero
+        (-m, m), m the larger magnitude: a set of gusts from one side only says nothing of
+        the other, and the aircraft is taken as symmetric. Degrees."""
+        lo, hi = self.bounds(quantity)
+        m = max(abs(lo), abs(hi))
+        return -m, m
 
     def bounds(self, quantity):
         """(lower, upper) of a quantity with the margin (module notes); degrees for angles."""
@@ -194,5 +210,11 @@ def dynamics_envelope(metrics, area_factor, margin=MARGIN):
         reached[quantity] = (lo, float(hi_values[i_hi]))
         source[quantity] = (None if i_lo is None else runs.loc[i_lo, "run"],
                             runs.loc[i_hi, "run"])
+    from slingloads.models.atmosphere import dynamic_pressure_eas as dynamic_pressure
+
+    q = dynamic_pressure(pd.to_numeric(runs["airspeed EAS [m/s]"]).to_numpy(float))
+    per = (pd.to_numeric(runs["line tension max [N]"], errors="coerce").to_numpy(float)
+           / (q * pd.to_numeric(runs["area [m^2]"]).to_numpy(float)))
+    coefficient = float(np.nanmax(per)) if np.any(np.isfinite(per)) else float("nan")
     return DynamicsEnvelope(factor, float(runs["area [m^2]"].iloc[0]), k, reached, source,
-                            len(runs), int((~stable_runs(runs)).sum()))
+                            len(runs), int((~stable_runs(runs)).sum()), coefficient)
