@@ -347,3 +347,26 @@ def test_a_case_leaving_the_domain_yields_no_design_angle():
     alone = lateral_study([POINT], [length], motions[1:], margin=1.0,
                           ranges=ParameterRanges.nominal(), solver=SolverSettings(t_end=6.0))
     assert np.isnan(alone.recommended_angle) and "no design angle" in alone.verdict()
+
+
+def test_carrier_limits_and_flyable_motions():
+    """A coordinated carrier banked phi accelerates sideways at g tan(phi): at 20 deg,
+    0.364 g; its rate at roll rate p is g sec^2(phi) p (1.94 m/s^3 at 10 deg/s). A quintic
+    step's jerk is 60 A / T^3, checked against the finite difference of its acceleration; the
+    example's quickest 0.36 g step (19 s) is flyable, a 0.5 g step in 2 s is not (both limits
+    named), nor is any motion whose acceleration jumps (infinite jerk)."""
+    from slingloads.analyses.lateral import CarrierLimits, flyable, peak_jerk
+
+    limits = CarrierLimits()
+    assert limits.acceleration == pytest.approx(G0 * np.tan(np.radians(20.0)), rel=1e-12)
+    assert limits.jerk == pytest.approx(
+        G0 * np.radians(10.0) / np.cos(np.radians(20.0)) ** 2, rel=1e-12)
+    step = QuinticStep.from_peak_acceleration(0.36 * G0, 19.0)
+    h = 1e-4
+    numeric = (step.acceleration(h) - step.acceleration(0.0)) / h
+    assert peak_jerk(step) == pytest.approx(numeric, rel=1e-3)
+    assert flyable(step, limits) == ""
+    fast = flyable(QuinticStep.from_peak_acceleration(0.5 * G0, 2.0), limits)
+    assert "peak acceleration" in fast and "peak jerk" in fast
+    assert np.isinf(peak_jerk(VelocityStep(1.0)))
+    assert "peak jerk inf" in flyable(VelocityStep(1.0), limits)

@@ -53,6 +53,7 @@ from slingloads.models.carrier_motion import (
     MotionBatch,
     QuinticStep,
     TimeHistory,
+    VelocityStep,
 )
 from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import (
@@ -74,6 +75,99 @@ REGULATORY_ANGLE = np.radians(30.0)
 #: hold), and the hub load's angle from the mast stays below it (past 90 deg the cable pulls
 #: the hub from below its own horizontal plane: no hook load case). [rad]
 DOMAIN_ANGLE = np.radians(90.0)
+
+#: Default largest bank angle of the carrier: 20 deg, the limit of damaged-helicopter
+#: recovery under CH-47 / UH-60 (US Army TM 1-1670-260-12&P, "about 30-40 KIAS, 20 deg bank").
+#: [rad]
+BANK_LIMIT = np.radians(20.0)
+#: Default largest roll rate of the carrier: 10 deg/s, an engineering assumption (no
+#: published limit for sling-load recovery was found): a gentle roll for a carrier with an
+#: external load; set it to the operation's own limit. [rad/s]
+ROLL_RATE_LIMIT = np.radians(10.0)
+
+
+@dataclass(frozen=True)
+class CarrierLimits:
+    """What a pilot can fly laterally: a coordinated carrier banked phi accelerates sideways
+    at a_y = g tan(phi), so the bank and roll-rate limits bound the hook's lateral
+    acceleration, |S''| <= g tan(phi_max), and its rate, |S'''| <= g sec^2(phi_max) p_max.
+
+    Parameters
+    ----------
+    bank : float
+        Largest bank angle, 0 < bank < 90 deg. [rad]
+    roll_rate : float
+        Largest roll rate, > 0. [rad/s]
+    gravity : float
+        [m/s^2]
+    """
+
+    bank: float = BANK_LIMIT
+    roll_rate: float = ROLL_RATE_LIMIT
+    gravity: float = G0
+
+    def __post_init__(self):
+        bank, rate = float(self.bank), float(self.roll_rate)
+        if not (np.isfinite(bank) and 0 < bank < np.pi / 2):
+            raise InputError("carrier bank-angle limit must lie in (0, 90) deg",
+                             np.degrees(bank))
+        if not (np.isfinite(rate) and rate > 0):
+            raise InputError("carrier roll-rate limit must be > 0 [deg/s]", np.degrees(rate))
+        object.__setattr__(self, "bank", bank)
+        object.__setattr__(self, "roll_rate", rate)
+
+    @property
+    def acceleration(self):
+        """Largest lateral acceleration g tan(phi_max). [m/s^2]"""
+        return self.gravity * np.tan(self.bank)
+
+    @property
+    def jerk(self):
+        """Largest rate of lateral acceleration g sec^2(phi_max) p_max. [m/s^3]"""
+        return self.gravity * self.roll_rate / np.cos(self.bank) ** 2
+
+    def describe(self):
+        """The limits in words."""
+        return (f"bank <= {np.degrees(self.bank):.3g} deg (peak S'' <= "
+                f"{self.acceleration:.3g} m/s^2 = {self.acceleration / self.gravity:.3g} g), "
+                f"roll rate <= {np.degrees(self.roll_rate):.3g} deg/s (peak jerk <= "
+                f"{self.jerk:.3g} m/s^3)")
+
+
+def peak_jerk(motion):
+    """Largest |S'''| of a carrier motion [m/s^3]: inf for a motion whose acceleration jumps
+    (constant acceleration, velocity step); 60 A/T^3 for a quintic step and (2 pi)^2 A/T^3 for
+    a cycloidal one (the derivatives of their laws at the start); the largest slope of a
+    time history's piecewise-linear spline acceleration."""
+    if isinstance(motion, (ConstantAcceleration, VelocityStep)):
+        return np.inf
+    if isinstance(motion, QuinticStep):
+        return 60.0 * abs(motion.amplitude) / motion.duration**3
+    if isinstance(motion, CycloidalStep):
+        return (2 * np.pi) ** 2 * abs(motion.amplitude) / motion.duration**3
+    if isinstance(motion, TimeHistory):
+        t = np.asarray(motion.time, float)
+        a = np.asarray(motion.acceleration(t), float)
+        return float(np.max(np.abs(np.diff(a) / np.diff(t)))) if t.size > 1 else 0.0
+    return np.nan
+
+
+def flyable(motion, limits=None):
+    """'' if the carrier can fly ``motion`` within ``limits`` (:class:`CarrierLimits`), else
+    why, with the numbers."""
+    limits = CarrierLimits() if limits is None else limits
+    acc = float(getattr(motion, "peak_acceleration", np.nan))
+    jerk = peak_jerk(motion)
+    why = []
+    if not acc <= limits.acceleration * (1 + 1e-9):
+        why.append(f"peak acceleration {acc:.3g} m/s^2 ({acc / limits.gravity:.3g} g) above "
+                   f"g tan({np.degrees(limits.bank):.3g} deg) = {limits.acceleration:.3g} "
+                   "m/s^2")
+    if not jerk <= limits.jerk * (1 + 1e-9):
+        why.append(f"peak jerk {jerk:.3g} m/s^3 above {limits.jerk:.3g} m/s^3 (roll rate "
+                   f"{np.degrees(limits.roll_rate):.3g} deg/s)")
+    return "; ".join(why)
+
 
 #: The paper's rope lengths, 18, 60 and 100 ft. [m]
 PAPER_ROPE_LENGTHS = tuple(ft * FOOT for ft in (18.0, 60.0, 100.0))
@@ -818,7 +912,7 @@ class ParameterRanges:
 
 def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None, damping=None,
                   ranges=None, hook_load_factor=None, solver=None, gravity=G0,
-                  regulatory_angle=REGULATORY_ANGLE):
+                  regulatory_angle=REGULATORY_ANGLE, limits=None):
     """The design-angle study: every body x rope length x carrier motion, over the stated
     ranges of roll inertia, CG distance below the hub and rope length.
 
@@ -850,6 +944,11 @@ def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None, dampi
         [m/s^2]
     regulatory_angle : float
         The angle set beside the recommendation (CS-29.865: 30 deg). [rad]
+    limits : CarrierLimits, optional
+        What the carrier can fly (``CarrierLimits()``: 20 deg bank, 10 deg/s roll rate); a
+        motion beyond them is flagged and bounds no design angle (CS-29.865: the angle
+        achievable in service). Default None: not checked (the workbook's study checks
+        them).
 
     Returns
     -------
@@ -899,7 +998,8 @@ def lateral_study(bodies, rope_lengths, motions, *, margin, cable_ea=None, dampi
     metrics, h = sweep(case_pendulums, case_motions, solver=solver)
     return LateralStudy(tuple(case_pendulums), tuple(case_motions), metrics, margin,
                         solver.t_end, h, float(regulatory_angle), solver, factors,
-                        nominal_lengths, ranges, damping, hook_load_factor)
+                        nominal_lengths, ranges, damping, hook_load_factor,
+                        limits)
 
 
 @dataclass(frozen=True, eq=False)
@@ -920,6 +1020,7 @@ class LateralStudy:
     ranges : ParameterRanges
     damping : LateralDamping
     hook_load_factor : float or None, Nz of the hook cases [-]
+    limits : CarrierLimits or None, what the carrier can fly (None: not checked)
     """
 
     pendulums: tuple
@@ -935,6 +1036,7 @@ class LateralStudy:
     ranges: ParameterRanges | None = None
     damping: LateralDamping | None = None
     hook_load_factor: float | None = None
+    limits: CarrierLimits | None = None
 
     def __post_init__(self):
         n = len(self.pendulums)
@@ -988,8 +1090,27 @@ class LateralStudy:
         """Number of cases outside the domain."""
         return int(np.count_nonzero(~self.in_domain))
 
+    def flyable_notes(self):
+        """Why each case's carrier motion is beyond :attr:`limits` ('' if flyable or not
+        checked). [str]"""
+        if self.limits is None:
+            return [""] * len(self.motions)
+        seen = {}
+        return [seen.setdefault(id(m), flyable(m, self.limits)) for m in self.motions]
+
+    @property
+    def flyable(self):
+        """True for the cases whose carrier motion the carrier can fly (all without
+        limits)."""
+        return np.array([not note for note in self.flyable_notes()], dtype=bool)
+
+    @property
+    def counted(self):
+        """The cases the design angle is taken over: inside the domain, motion flyable."""
+        return self.in_domain & self.flyable
+
     def _inside(self, values):
-        return np.where(self.in_domain, values, np.nan)
+        return np.where(self.counted, values, np.nan)
 
     @property
     def critical_index(self):
@@ -1063,6 +1184,15 @@ class LateralStudy:
         found, rec = np.degrees(self.max_load_angle), np.degrees(self.recommended_angle)
         reg = np.degrees(self.regulatory_angle)
         out = self.outside_domain
+        unflyable = int(np.count_nonzero(~self.flyable))
+        beyond = ""
+        if unflyable:
+            beyond = (f" {unflyable} of {len(self.pendulums)} cases have carrier motions beyond "
+                      f"what the carrier can fly ({self.limits.describe()}; sheet Runs, "
+                      f"'flyable'): they bound no angle.")
+        if not np.any(self.counted) and out < len(self.pendulums):
+            return ("No case has a flyable carrier motion inside the model's domain: no design "
+                    f"angle.{beyond}")
         if out == len(self.pendulums):
             return (f"Every case leaves the lateral pendulum's domain (slack cable, or rope or "
                     f"load angle past {np.degrees(DOMAIN_ANGLE):.3g} deg): no design angle; "
@@ -1077,8 +1207,8 @@ class LateralStudy:
             return (f"The largest load angle inside the domain is {found:.3g} deg; with the "
                     f"margin {self.margin:g} it reaches 90 deg: no hook cone can be built, no "
                     f"design angle. Restrict the operation (motions, masses, rope lengths) or "
-                    f"show more damping.{left}")
-        return self._verdict_inside(found, rec, reg) + left
+                    f"show more damping.{left}{beyond}")
+        return self._verdict_inside(found, rec, reg) + left + beyond
 
     def _verdict_inside(self, found, rec, reg):
         if self.regulatory_angle_not_conservative:
@@ -1121,6 +1251,8 @@ class LateralStudy:
             frame["T/(m g) > Nz [-]"] = self.exceeds_hook_load_factor
         frame["inside domain [-]"] = self.in_domain
         frame["domain"] = self.domain_notes()
+        frame["flyable [-]"] = self.flyable
+        frame["flyable note"] = self.flyable_notes()
         return frame
 
     def case_frame(self):
@@ -1133,7 +1265,7 @@ class LateralStudy:
         per_pendulum = len(self.pendulums) // len({id(p) for p in self.pendulums})
         frame["motion number"] = np.arange(len(frame)) % per_pendulum
         key = ["body", "nominal rope length [m]", "motion number"]
-        inside = frame["inside domain [-]"].astype(bool)
+        inside = frame["inside domain [-]"].astype(bool) & frame["flyable [-]"].astype(bool)
         angle = frame["max |theta1 - theta2| [deg]"].where(inside).fillna(-np.inf)
         worst = frame.loc[angle.groupby([frame[k] for k in key], sort=False).idxmax()]
         worst = worst.set_index(key)
@@ -1171,6 +1303,8 @@ class LateralStudy:
             ("  cable slack in that case", bool(case["slack [-]"]), "-"),
             ("cases whose cable went slack", int(np.sum(self.metrics.slack)), "-"),
             ("cases outside the model's domain (no design value)", self.outside_domain, "-"),
+            ("cases with a carrier motion beyond the carrier's limits",
+             int(np.count_nonzero(~self.flyable)), "-"),
             ("largest load angle, cases that stayed taut",
              np.degrees(self.max_load_angle_taut), "deg"),
             ("margin", self.margin, "-"),

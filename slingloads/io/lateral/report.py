@@ -42,7 +42,7 @@ from slingloads.analyses.hook_angle import (
     HookAngleComparison,
     hook_angle_comparison,
 )
-from slingloads.analyses.lateral import lateral_study
+from slingloads.analyses.lateral import CarrierLimits, lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
 from slingloads.errors import InputError
@@ -159,7 +159,8 @@ def compute(study):
         result = lateral_study(inputs.bodies, inputs.rope_lengths, inputs.motions,
                                margin=inputs.margin, cable_ea=inputs.cable_ea,
                                damping=inputs.damping, ranges=inputs.ranges,
-                               hook_load_factor=inputs.loads.hook.nz, solver=inputs.solver)
+                               hook_load_factor=inputs.loads.hook.nz, solver=inputs.solver,
+                               limits=CarrierLimits())
         try:
             run = result.run_case()
         except InputError as err:  # too stiff a case: at the cell of its rope length
@@ -253,6 +254,10 @@ def summary_tables(result, units="SI"):
          "rigid rope not valid after slack: use the elastic cable" if case["slack [-]"]
          else ""),
         ("cases whose cable went slack", int(np.sum(st.metrics.slack)), "-", ""),
+        ("cases with a carrier motion beyond the carrier's limits",
+         int(np.count_nonzero(~st.flyable)), "-",
+         (st.limits.describe() + " (sheet Runs, 'flyable'): no design value from them")
+         if st.limits is not None else "not checked"),
         ("cases outside the model's domain", st.outside_domain, "-",
          "slack cable, or rope or load angle past 90 deg (sheet Runs, 'domain'): no design "
          "value from them"),
