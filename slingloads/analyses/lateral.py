@@ -100,11 +100,14 @@ class CarrierLimits:
         Largest roll rate, > 0. [rad/s]
     gravity : float
         [m/s^2]
+    carrier_mass : float
+        Mass of the carrier, for the frozen-carrier check (NaN: not checked). [kg]
     """
 
     bank: float = BANK_LIMIT
     roll_rate: float = ROLL_RATE_LIMIT
     gravity: float = G0
+    carrier_mass: float = float("nan")
 
     def __post_init__(self):
         bank, rate = float(self.bank), float(self.roll_rate)
@@ -168,6 +171,11 @@ def flyable(motion, limits=None):
                    f"{np.degrees(limits.roll_rate):.3g} deg/s)")
     return "; ".join(why)
 
+
+#: Largest lateral cable force over the carrier's weight for which the carrier is taken to
+#: follow its prescribed path (the frozen carrier of the paper's figure 13): beyond, the
+#: load would push the carrier off it by more than a tenth of g. [-]
+CARRIER_FORCE_LIMIT = 0.1
 
 #: The paper's rope lengths, 18, 60 and 100 ft. [m]
 PAPER_ROPE_LENGTHS = tuple(ft * FOOT for ft in (18.0, 60.0, 100.0))
@@ -1105,6 +1113,17 @@ class LateralStudy:
         return np.array([not note for note in self.flyable_notes()], dtype=bool)
 
     @property
+    def carrier_force_ratio(self):
+        """Upper bound of each case's lateral cable force on the carrier over the carrier's
+        weight, max T x sin(max |theta1|) / (m_carrier g) (NaN without a carrier mass). [-]"""
+        m = self.metrics
+        mass = np.nan if self.limits is None else self.limits.carrier_mass
+        weights = np.array([p.body.mass for p in self.pendulums]) * G0
+        force = (np.asarray(m.max_tension_ratio) * weights
+                 * np.sin(np.minimum(np.asarray(m.max_rope_angle), np.pi / 2)))
+        return force / (mass * G0)
+
+    @property
     def counted(self):
         """The cases the design angle is taken over: inside the domain, motion flyable."""
         return self.in_domain & self.flyable
@@ -1190,6 +1209,11 @@ class LateralStudy:
             beyond = (f" {unflyable} of {len(self.pendulums)} cases have carrier motions beyond "
                       f"what the carrier can fly ({self.limits.describe()}; sheet Runs, "
                       f"'flyable'): they bound no angle.")
+        heavy = int(np.count_nonzero(self.carrier_force_ratio > CARRIER_FORCE_LIMIT))
+        if heavy:
+            beyond += (f" {heavy} cases load the carrier sideways above "
+                       f"{CARRIER_FORCE_LIMIT:g} x its weight: the prescribed (frozen-carrier) "
+                       "path is not assured for them.")
         if not np.any(self.counted) and out < len(self.pendulums):
             return ("No case has a flyable carrier motion inside the model's domain: no design "
                     f"angle.{beyond}")
@@ -1253,6 +1277,7 @@ class LateralStudy:
         frame["domain"] = self.domain_notes()
         frame["flyable [-]"] = self.flyable
         frame["flyable note"] = self.flyable_notes()
+        frame["lateral cable force / carrier weight, bound [-]"] = self.carrier_force_ratio
         return frame
 
     def case_frame(self):

@@ -97,6 +97,8 @@ class LateralInputs:
         solve_ivp settings of the critical case's time-history re-run.
     loads : LoadsStudy or None
         The loads study of the workbook (for the hook cases at the recommended angle).
+    limits : CarrierLimits
+        What the carrier can fly, and its mass (the frozen-carrier check).
     """
 
     bodies: tuple
@@ -110,6 +112,7 @@ class LateralInputs:
     ranges: ParameterRanges
     solver: SolverSettings
     loads: object
+    limits: object = None
 
 
 def read(reader, params, study):
@@ -166,10 +169,15 @@ def read(reader, params, study):
     if loads is None:
         with located(reader.file):
             loads = loads_reader.read(reader, params, study)
+    from slingloads.analyses.lateral import CarrierLimits
+
+    limits = CarrierLimits(params("lateral carrier bank limit"),
+                           params("lateral carrier roll rate limit"),
+                           carrier_mass=params("lateral carrier mass"))
     return LateralInputs(
         bodies=bodies, body_source=source, rope_lengths=ropes, motions=motions,
         motion_ids=ids, margin=float(margin), cable_ea=cable_ea, damping=damping,
-        ranges=ranges, solver=solver, loads=loads)
+        ranges=ranges, solver=solver, loads=loads, limits=limits)
 
 
 def _damping(reader, params, study):

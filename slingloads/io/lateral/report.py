@@ -42,7 +42,7 @@ from slingloads.analyses.hook_angle import (
     HookAngleComparison,
     hook_angle_comparison,
 )
-from slingloads.analyses.lateral import CarrierLimits, lateral_study
+from slingloads.analyses.lateral import CARRIER_FORCE_LIMIT, CarrierLimits, lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
 from slingloads.errors import InputError
@@ -160,7 +160,7 @@ def compute(study):
                                margin=inputs.margin, cable_ea=inputs.cable_ea,
                                damping=inputs.damping, ranges=inputs.ranges,
                                hook_load_factor=inputs.loads.hook.nz, solver=inputs.solver,
-                               limits=CarrierLimits())
+                               limits=inputs.limits or CarrierLimits())
         try:
             run = result.run_case()
         except InputError as err:  # too stiff a case: at the cell of its rope length
@@ -258,6 +258,11 @@ def summary_tables(result, units="SI"):
          int(np.count_nonzero(~st.flyable)), "-",
          (st.limits.describe() + " (sheet Runs, 'flyable'): no design value from them")
          if st.limits is not None else "not checked"),
+        ("cases whose lateral cable force passes 10 % of the carrier's weight",
+         int(np.count_nonzero(st.carrier_force_ratio > CARRIER_FORCE_LIMIT)), "-",
+         f"largest T sin(theta1) / (m_carrier g) bound {np.nanmax(st.carrier_force_ratio):.3g}"
+         "; above 0.1 the frozen-carrier path is not assured (flagged, sheet Runs)"
+         if st.limits is not None and np.isfinite(st.limits.carrier_mass) else "not checked"),
         ("cases outside the model's domain", st.outside_domain, "-",
          "slack cable, or rope or load angle past 90 deg (sheet Runs, 'domain'): no design "
          "value from them"),

@@ -13,6 +13,7 @@ from __future__ import annotations
 from slingloads.analyses.lateral_damping import DAMPING_SOURCES
 from slingloads.io.common.schema import (
     AIRSPEED,
+    CARRIER_MASS,
     INTEGER,
     RELATIVE_TOLERANCE,
     TEXT,
@@ -56,6 +57,21 @@ PARAMETERS = (
     Parameter("lateral design-angle margin", "dimensionless", "", 1.5,
               "Factor on the largest load angle found: recommended design angle = margin x "
               "max |theta1 - theta2|, >= 1.", _S, Bounds(1, 10)),
+    Parameter("lateral carrier bank limit", "angle", "deg", 20.0,
+              "Largest bank angle of the carrier: a coordinated carrier banked phi accelerates "
+              "sideways at g tan(phi), so no flyable motion exceeds g tan(limit). Default 20 "
+              "deg (US Army TM 1-1670-260-12&P, damaged-helicopter recovery). A motion beyond "
+              "it is flagged and bounds no design angle.", _S,
+              Bounds(0, 60, lo_open=True, unit="deg")),
+    Parameter("lateral carrier roll rate limit", "frequency", "deg/s", 10.0,
+              "Largest roll rate of the carrier: the hook's lateral acceleration changes at "
+              "most g sec^2(bank limit) x this. Default 10 deg/s, an engineering assumption "
+              "(no published limit found): set the operation's own.", _S,
+              Bounds(0, 1.0, lo_open=True, unit="1/s")),
+    Parameter("lateral carrier mass", "mass", "kg", 15000.0,
+              "Mass of the carrier, > 0 (GENERIC heavy-lift class): the frozen-carrier "
+              "assumption (the hook follows its prescribed path) is flagged where the cable's "
+              "lateral force exceeds 10 % of its weight.", _S, CARRIER_MASS),
     Parameter("lateral cable model", TEXT, "", "rigid",
               "'rigid' (inextensible rope, fast; not valid once the tension goes negative) or "
               "'elastic' (tension-only spring EA/l: slack and snatch).", _S),
