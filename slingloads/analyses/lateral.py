@@ -1198,41 +1198,49 @@ class LateralStudy:
             return np.zeros(len(self.pendulums), dtype=bool)
         return self.metrics.max_tension_ratio > self.hook_load_factor
 
+    def caveats(self):
+        """What limits the conclusion, in words ('' when nothing): cases outside the domain,
+        carrier motions beyond the carrier's limits, cases loading the carrier sideways
+        beyond :data:`CARRIER_FORCE_LIMIT` of its weight."""
+        reg = np.degrees(self.regulatory_angle)
+        n = len(self.pendulums)
+        text = ""
+        out = self.outside_domain
+        if out:
+            text += (f" {out} of {n} cases leave the model's domain (sheet Runs, 'domain'): "
+                     f"their motions bound no angle, so no reduction below {reg:.3g} deg is "
+                     "supported while they are in the motion set.")
+        unflyable = int(np.count_nonzero(~self.flyable))
+        if unflyable:
+            text += (f" {unflyable} of {n} cases have carrier motions beyond what the carrier "
+                     f"can fly ({self.limits.describe()}; sheet Runs, 'flyable'): they bound "
+                     "no angle.")
+        heavy = int(np.count_nonzero(self.carrier_force_ratio > CARRIER_FORCE_LIMIT))
+        if heavy:
+            text += (f" {heavy} cases may load the carrier sideways above "
+                     f"{CARRIER_FORCE_LIMIT:g} x its weight (a bound): the prescribed "
+                     "(frozen-carrier) path is not assured for them.")
+        return text
+
     def verdict(self):
         """The study's conclusion on the 30 deg rule, in words."""
         found, rec = np.degrees(self.max_load_angle), np.degrees(self.recommended_angle)
         reg = np.degrees(self.regulatory_angle)
-        out = self.outside_domain
-        unflyable = int(np.count_nonzero(~self.flyable))
-        beyond = ""
-        if unflyable:
-            beyond = (f" {unflyable} of {len(self.pendulums)} cases have carrier motions beyond "
-                      f"what the carrier can fly ({self.limits.describe()}; sheet Runs, "
-                      f"'flyable'): they bound no angle.")
-        heavy = int(np.count_nonzero(self.carrier_force_ratio > CARRIER_FORCE_LIMIT))
-        if heavy:
-            beyond += (f" {heavy} cases load the carrier sideways above "
-                       f"{CARRIER_FORCE_LIMIT:g} x its weight: the prescribed (frozen-carrier) "
-                       "path is not assured for them.")
-        if not np.any(self.counted) and out < len(self.pendulums):
-            return ("No case has a flyable carrier motion inside the model's domain: no design "
-                    f"angle.{beyond}")
-        if out == len(self.pendulums):
+        caveats = self.caveats()
+        if self.outside_domain == len(self.pendulums):
             return (f"Every case leaves the lateral pendulum's domain (slack cable, or rope or "
                     f"load angle past {np.degrees(DOMAIN_ANGLE):.3g} deg): no design angle; "
                     f"for this motion set the {reg:.3g} deg rule can be neither reduced nor "
                     "confirmed. Use flyable carrier motions.")
-        left = ""
-        if out:
-            left = (f" {out} of {len(self.pendulums)} cases leave the model's domain (sheet "
-                    f"Runs, 'domain'): their motions bound no angle, so no reduction below "
-                    f"{reg:.3g} deg is supported while they are in the motion set.")
+        if not np.any(self.counted):
+            return ("No case has a flyable carrier motion inside the model's domain: no design "
+                    f"angle.{caveats}")
         if not np.isfinite(rec):
             return (f"The largest load angle inside the domain is {found:.3g} deg; with the "
                     f"margin {self.margin:g} it reaches 90 deg: no hook cone can be built, no "
                     f"design angle. Restrict the operation (motions, masses, rope lengths) or "
-                    f"show more damping.{left}{beyond}")
-        return self._verdict_inside(found, rec, reg) + left + beyond
+                    f"show more damping.{caveats}")
+        return self._verdict_inside(found, rec, reg) + caveats
 
     def _verdict_inside(self, found, rec, reg):
         if self.regulatory_angle_not_conservative:

@@ -207,17 +207,17 @@ def _items(rows, units):
 def verdict(result):
     """One sentence on the recommended angle against the CS-29.865 30 deg."""
     rec, reg = np.degrees(result.recommended_angle), np.degrees(result.study.regulatory_angle)
-    if result.study.regulatory_angle_not_conservative:
+    if result.study.regulatory_angle_not_conservative or not np.isfinite(rec):
         return result.study.verdict()
     if result.study.exceeds_regulatory_angle:
         return (f"The recommended angle {rec:.1f} deg EXCEEDS the {reg:.0f} deg of CS-29.865: "
                 f"the motions swept can put the hook load further from the mast than the "
                 f"regulation's minimum, so the hook cases must be run at {rec:.1f} deg at "
-                f"least (no reduction is possible).")
+                f"least (no reduction is possible).{result.study.caveats()}")
     return (f"The recommended angle {rec:.1f} deg is below the {reg:.0f} deg of CS-29.865. "
             f"CS 29.865(a) allows the smaller angle only if it is shown that it cannot be "
             f"exceeded in service: that holds only if the motions, rope lengths and masses "
-            f"swept cover the operation being certified.")
+            f"swept cover the operation being certified.{result.study.caveats()}")
 
 
 def summary_tables(result, units="SI"):
