@@ -107,6 +107,10 @@ class ChuteSizingReport:
     decision : ParachuteDecision or None
         The parachute decision (:mod:`slingloads.analyses.parachute_decision`), with the
         campaign's selection when the campaign ran in the same study.
+    axes_angle : float
+        Angle between the axis the yawing moments are taken about (airframe z through the
+        hub) and the axis of the yaw inertia (the hub-CG line, the hanging vertical); NaN
+        without mass items. [rad]
     """
 
     inputs: object
@@ -116,6 +120,7 @@ class ChuteSizingReport:
     recommended_area: float
     study_area_runs: object = None
     decision: object = None
+    axes_angle: float = float("nan")
 
     @property
     def study_area_peak_sideslip(self):
@@ -200,7 +205,18 @@ def compute(study):
     if sweep is not None:
         decision = _decision(study, inputs, static, sweep)
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
-                             decision)
+                             decision, _axes_angle(study))
+
+
+def _axes_angle(study):
+    """Angle between airframe z and the hub-CG line (NaN without mass items). [rad]"""
+    airframe = getattr(study, "airframe", None)
+    items = getattr(airframe, "mass_items", None)
+    if items is None:
+        return float("nan")
+    k = np.asarray(airframe.hardpoints.hub, float) - np.asarray(items.cg, float)
+    norm = np.linalg.norm(k)
+    return float(np.arccos(np.clip(k[2] / norm, -1.0, 1.0))) if norm > 0 else float("nan")
 
 
 def shortfalls(result):
@@ -297,6 +313,10 @@ def summary_tables(result, units="SI"):
         ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),
+        ("moment axis against inertia axis", float(np.degrees(result.axes_angle)), "deg",
+         "yawing moments about airframe z through the hub, yaw inertia about the hub-CG "
+         "line (hanging vertical): not yet one axis; the sizing is exact only when this is "
+         "small" if np.isfinite(result.axes_angle) else "inertia given as a parameter"),
         ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg",
          "fit over +- this; a run leaving it is outside the domain"),
         ("sideslip limit", float(np.degrees(inp.metrics.sideslip_limit)), "deg",
