@@ -390,7 +390,7 @@ class _FirstComputed:
 
 def _runtime(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
-    from slingloads.io.campaign.cache import check_outside, check_writable, default_cache_dir
+    from slingloads.runs.cache import check_outside, check_writable, default_cache_dir
     from slingloads.io.campaign.reader import address_rule
     from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
 

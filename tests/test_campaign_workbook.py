@@ -19,7 +19,7 @@ import pytest
 
 from slingloads.analyses.campaign import HISTORY_LABELS, MemoryStore, run_campaign
 from slingloads.cli import main
-from slingloads.io.campaign.cache import RunCache
+from slingloads.runs.cache import RunCache
 from slingloads.io.study import read_study
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"

@@ -2,7 +2,7 @@
 
 :func:`compute` runs the campaign read by :mod:`slingloads.io.campaign.reader` on the executor
 the command line or the workbook asks for (a Dask scheduler, local worker processes), with the
-run cache of :mod:`slingloads.io.campaign.cache`. :func:`write` publishes, all at once or not at
+run cache of :mod:`slingloads.runs.cache`. :func:`write` publishes, all at once or not at
 all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-campaign.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*
@@ -140,7 +140,7 @@ def compute(study):
         run refuses its inputs.
     """
     from slingloads.analyses.campaign import make_executor, run_campaign
-    from slingloads.io.campaign.cache import RunCache, default_cache_dir
+    from slingloads.runs.cache import RunCache, default_cache_dir
 
     inputs = study.inputs.get(ANALYSIS)
     if inputs is None:
