@@ -390,9 +390,9 @@ class _FirstComputed:
 
 def _runtime(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
-    from slingloads.runs.cache import check_outside, check_writable, default_cache_dir
     from slingloads.io.campaign.reader import address_rule
     from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
+    from slingloads.runs.cache import check_outside, check_writable, default_cache_dir
 
     if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
         raise InputError(f"--workers must be in [1, {MAX_WORKERS}] (limits of slingloads)",

@@ -19,8 +19,8 @@ import pytest
 
 from slingloads.analyses.campaign import HISTORY_LABELS, MemoryStore, run_campaign
 from slingloads.cli import main
-from slingloads.runs.cache import RunCache
 from slingloads.io.study import read_study
+from slingloads.runs.cache import RunCache
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 

@@ -20,13 +20,14 @@ import pytest
 from slingloads.analyses.chute_sizing import neutral_area
 from slingloads.cli import main
 from slingloads.constants import FOOT, KNOT
-from slingloads.io.chute.report import PLOTS, compute
+from slingloads.io.chute.report import PLOTS
 from slingloads.io.study import read_study
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.flight import FlightCondition
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
 from slingloads.models.yaw_dynamics import YawModel
+from slingloads.runs.chute_sizing import compute
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem

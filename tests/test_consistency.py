@@ -14,10 +14,10 @@ import pytest
 
 from slingloads.analyses.loads import AeroEnvelope
 from slingloads.cli import main
-from slingloads.io.chute.report import compute as compute_chute
 from slingloads.io.consistency import consistency_checks
-from slingloads.io.loads.report import compute as compute_loads
 from slingloads.io.study import read_study
+from slingloads.runs.chute_sizing import compute as compute_chute
+from slingloads.runs.loads import compute as compute_loads
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 

@@ -28,7 +28,7 @@ from slingloads.analyses.lateral import ParameterRanges, lateral_study
 from slingloads.cli import main
 from slingloads.constants import FOOT, G0, POUND_FORCE
 from slingloads.io.common.ownership import MANIFEST_NAME
-from slingloads.io.lateral.report import PLOTS, compute
+from slingloads.io.lateral.report import PLOTS
 from slingloads.io.study import read_study
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
@@ -39,6 +39,7 @@ from slingloads.models.carrier_motion import (
 )
 from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
+from slingloads.runs.lateral import compute
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem

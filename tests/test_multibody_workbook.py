@@ -31,7 +31,6 @@ from slingloads.analyses.multibody import (
 from slingloads.cli import main
 from slingloads.constants import FOOT, KNOT
 from slingloads.io.multibody.reader import load_workbook_system
-from slingloads.io.multibody.report import compute
 from slingloads.io.study import read_study
 from slingloads.models.multibody import (
     Cable,
@@ -48,6 +47,7 @@ from slingloads.models.sample_aircraft import (
     sample_htail,
     sample_reference,
 )
+from slingloads.runs.multibody import compute
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem

@@ -75,6 +75,10 @@ class Analysis:
         """Its ``schema``, ``reader``, ``report`` or ``plots`` module (imported on first use)."""
         return import_module(f"slingloads.io.{self.folder}.{part}")
 
+    def runner(self):
+        """Its module of :mod:`slingloads.runs`."""
+        return import_module(f"slingloads.runs.{self.name.replace(' ', '_')}")
+
     @property
     def section(self):
         """Its Study-sheet parameters and sheets."""
@@ -96,7 +100,7 @@ class Analysis:
         analysis's schema maps it (``COMPUTE_FIELDS``: model argument -> Study parameter)."""
         fields = getattr(self.module("schema"), "COMPUTE_FIELDS", {})
         with study.located(fields):
-            return self.module("report").compute(study)
+            return self.runner().compute(study)
 
     def start_figures(self, result, units, study):
         """Start drawing its report's figures in worker processes (so that they are drawn
@@ -109,7 +113,7 @@ class Analysis:
         """What the analysis was asked for and could not compute (e.g. the multibody model
         without a trim: no linear modes, no stability verdict), one line each; empty when
         its report holds every result asked for."""
-        find = getattr(self.module("report"), "shortfalls", None)
+        find = getattr(self.runner(), "shortfalls", None)
         return list(find(result)) if find is not None else []
 
     def output_patterns(self, stem):

@@ -15,7 +15,7 @@ Study rows; the matrix from the list rows, the ``CampaignMasses`` sheet, or the
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 import pandas as pd
@@ -45,38 +45,10 @@ from slingloads.limits import (
     MAX_LIST_ITEMS,
     MAX_MAP_POINTS,
 )
+from slingloads.runs.campaign import CampaignInputs
 
 ANALYSIS = "campaign"
 _SPEC = {s.name: s for s in SHEETS}
-
-
-@dataclass(frozen=True, eq=False)
-class CampaignInputs:
-    """Everything the campaign of a workbook needs.
-
-    Attributes
-    ----------
-    campaign : Campaign
-    scheduler : str
-        Dask scheduler address ('' for local execution).
-    workers : int or None
-        Local worker processes (None: automatic).
-    timeout : float
-        Scheduler time-out. [s]
-    loads_from_dynamics : bool
-    hook_angle_source : str
-        'CS-29.865' or 'dynamics'.
-    scheduler_cell : str
-        Cell of 'campaign scheduler' on the Study sheet (errors reaching it are put there).
-    """
-
-    campaign: object
-    scheduler: str
-    workers: int | None
-    timeout: float
-    loads_from_dynamics: bool
-    hook_angle_source: str
-    scheduler_cell: str = "(default)"
 
 
 #: A Dask scheduler address: ``[protocol://]host[:port]``.

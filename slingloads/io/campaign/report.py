@@ -23,21 +23,17 @@ kt, ft, lb, ft^2, lbf); the Parquet file is SI.
 
 from __future__ import annotations
 
-import contextlib
 import re
-from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
 from slingloads import __version__
 from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
-from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
-from slingloads.io.common.locate import at_cell
 from slingloads.io.common.ownership import PARQUET_KEY
 from slingloads.io.common.report import (
     check_units,
@@ -75,23 +71,6 @@ _US = {"m/s": (1.0 / KNOT, "kt"), "m": (1.0 / FOOT, "ft"), "kg": (1.0 / POUND, "
 _HEADER = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
 
 
-@dataclass(frozen=True, eq=False)
-class CampaignReport:
-    """The campaign of one workbook and its results.
-
-    Attributes
-    ----------
-    inputs : CampaignInputs
-    result : CampaignResult
-    cache : str
-        Where the run cache is.
-    """
-
-    inputs: object
-    result: object
-    cache: str
-
-
 #: How the campaign's tables write the metrics that have no finite value.
 _INFINITE = {"yaw mode period [s]": "none (aperiodic)",
              "yaw mode time to half amplitude [s]": "none (not damped)",
@@ -120,51 +99,6 @@ def in_units(frame, units):
             out[column] = pd.to_numeric(out[column], errors="coerce") * factor
             renames[column] = f"{match.group('name')} [{unit}]"
     return out.rename(columns=renames)
-
-
-def compute(study):
-    """Run the campaign read from a workbook (module notes).
-
-    The execution options come from ``study.runtime`` (the command line: ``scheduler``,
-    ``workers``, ``cache``, ``timeout``, ``progress``), else from the workbook. The result is
-    also left in ``study.results["campaign"]`` for the loads that follow.
-
-    Returns
-    -------
-    CampaignReport
-
-    Raises
-    ------
-    InputError
-        If the workbook does not ask for the campaign, the scheduler cannot be reached, or a
-        run refuses its inputs.
-    """
-    from slingloads.analyses.campaign import make_executor, run_campaign
-    from slingloads.runs.cache import RunCache, default_cache_dir
-
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the campaign (Study sheet: 'run "
-                         "campaign' is no)", file=study.path, sheet="Study")
-    runtime = getattr(study, "runtime", {}) or {}
-    cache_dir = runtime.get("cache") or default_cache_dir()
-    scheduler = runtime.get("scheduler") or inputs.scheduler
-    workers = runtime.get("workers") or inputs.workers
-    timeout = runtime.get("timeout") or inputs.timeout
-    campaign = inputs.campaign
-    total = campaign.size + (len(campaign.no_parachute.jobs()) if campaign.no_parachute else 0)
-    store = RunCache(cache_dir)
-    written = getattr(study, "written", {}).get("campaign scheduler", (scheduler, None))
-    where = (at_cell(study.path, "Study", inputs.scheduler_cell, written[0])
-             if scheduler and not runtime.get("scheduler") else contextlib.nullcontext())
-    with where:
-        executor = make_executor(scheduler or None, workers, timeout, runs=total)
-    result = run_campaign(campaign, executor=executor, store=store,
-                          progress=runtime.get("progress"))
-    report = CampaignReport(inputs, result, str(cache_dir))
-    if hasattr(study, "results"):
-        study.results[ANALYSIS] = report
-    return report
 
 
 # ------------------------------------------------------------------------------- tables

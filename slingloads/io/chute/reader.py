@@ -11,8 +11,6 @@ sheet, and the airframe's aerodynamic sheets (``FuselageAero``, ``FinAero``,
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from slingloads.analyses.chute_sizing import MetricSettings
@@ -41,64 +39,10 @@ from slingloads.models.gusts import GUST_SHAPES, DrydenTurbulence, make_gust
 from slingloads.models.integration import SOLVE_IVP_METHODS, SolverSettings
 from slingloads.models.wake import BluffBodyWake, TabulatedWake
 from slingloads.models.yaw_dynamics import YawModel
+from slingloads.runs.chute_sizing import ChuteSizingInputs
 
 ANALYSIS = "chute sizing"
 HARDPOINT_SHEETS = {s.name: s for s in _AIRFRAME_SHEETS}
-
-
-@dataclass(frozen=True)
-class ChuteSizingInputs:
-    """Everything the parachute sizing needs, in SI.
-
-    Attributes
-    ----------
-    model : YawModel
-        Fuselage, fin, hardpoints, yaw inertia about the suspension axis, condition, and a
-        parachute template (its CD and wake ratio; the area is swept).
-    fit_range : tuple of float
-        Sideslip range of the linearisation. [rad]
-    wake : TabulatedWake or BluffBodyWake
-    target : float
-        Dynamic-pressure ratio the canopy must see. [-]
-    cable_length : float or None
-        Carrier cable; None skips the check. [m]
-    margin : float
-        Required excess of the cable over the line. [-]
-    gusts : tuple
-        Gust shapes of the sweep.
-    settings : SolverSettings
-    metrics : MetricSettings
-        With the sideslip limit past which no run is called stable.
-    factors : ndarray
-        Swept areas over the neutral area. [-]
-    recommended_factor : float
-        Recommended area over the neutral area. [-]
-    integrator : str
-        ``"dopri5"``, ``"rk4"`` or ``"solve_ivp"`` (see
-        :func:`slingloads.analyses.chute_sizing.run_yaw`).
-    inertia_source : str
-        ``"mass items"`` or ``"parameter"``.
-    study_area : float
-        The Study's 'parachute area' (used by the loads; 0 if none). [m^2]
-    study_line : float
-        The Study's 'parachute line length'. [m]
-    """
-
-    model: YawModel
-    fit_range: tuple
-    wake: object
-    target: float
-    cable_length: float | None
-    margin: float
-    gusts: tuple
-    settings: SolverSettings
-    metrics: MetricSettings
-    factors: np.ndarray
-    recommended_factor: float
-    integrator: str
-    inertia_source: str
-    study_area: float
-    study_line: float
 
 
 def read(reader, params, study):

@@ -13,8 +13,6 @@ asked for). Every value is SI after reading; every bad value raises
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 from openpyxl.utils import get_column_letter
 
@@ -59,6 +57,7 @@ from slingloads.models.carrier_motion import (
 from slingloads.models.flight import FlightCondition
 from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
+from slingloads.runs.lateral import LateralInputs
 
 ANALYSIS = "lateral"
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
@@ -67,49 +66,6 @@ MAX_MAGNITUDE_TIME_HISTORY = 3600.0
 #: The displacement steps of the LateralMotions sheet, by type.
 STEP_LAWS = {"quintic step": QuinticStep, "cycloidal step": CycloidalStep}
 _SPEC = {s.name: s for s in SHEETS}
-
-
-@dataclass(frozen=True)
-class LateralInputs:
-    """Everything the lateral study needs, in SI.
-
-    Attributes
-    ----------
-    bodies : tuple of SlungBody
-    body_source : str
-        ``"LateralBodies"`` or ``"MassItems"``.
-    rope_lengths : tuple of float
-        [m]
-    motions : tuple
-        Carrier motions (:mod:`slingloads.models.carrier_motion`).
-    motion_ids : tuple of str
-        The LateralMotions ids, one per motion.
-    margin : float
-        Design-angle margin, >= 1. [-]
-    cable_ea : float or None
-        None: rigid rope. [N]
-    damping : LateralDamping
-        From the parameters or derived from the aerodynamic tables.
-    ranges : ParameterRanges
-        Uncertainty of roll inertia, CG below hub and rope length.
-    solver : SolverSettings
-        Run length ``t_end`` and RK4 ``step`` of the sweep (None: automatic), and the
-        solve_ivp settings of the critical case's time-history re-run.
-    loads : LoadsStudy or None
-        The loads study of the workbook (for the hook cases at the recommended angle).
-    """
-
-    bodies: tuple
-    body_source: str
-    rope_lengths: tuple
-    motions: tuple
-    motion_ids: tuple
-    margin: float
-    cable_ea: float | None
-    damping: LateralDamping
-    ranges: ParameterRanges
-    solver: SolverSettings
-    loads: object
 
 
 def read(reader, params, study):

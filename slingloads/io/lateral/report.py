@@ -31,21 +31,15 @@ Lengths, forces, moments, masses, speeds and accelerations are in the report uni
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 import pandas as pd
 
 from slingloads.analyses.hook_angle import (
     COMPARISON_ORDER,
     SI_LABELS,
-    HookAngleComparison,
-    hook_angle_comparison,
 )
-from slingloads.analyses.lateral import lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
-from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
@@ -68,7 +62,6 @@ from slingloads.io.common.report import (
     warning_sections,
 )
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 
 ANALYSIS = "lateral"
 #: The peak hook acceleration of a velocity step, as the Runs sheet writes it (its note says
@@ -97,97 +90,6 @@ CONVENTIONS = (
     "Carrier motion S: lateral hook displacement, + right. Loads on the LoadsAtAngle sheet are "
     "LIMIT loads (hook cases alone: Nz x weight on the cone, with inertia relief).",
 )
-
-
-@dataclass(frozen=True, eq=False)
-class LateralReport:
-    """Results of the lateral study of one workbook.
-
-    Attributes
-    ----------
-    inputs : LateralInputs
-    study : LateralStudy
-    critical_run : LateralRun
-        The critical case re-run with solve_ivp (time histories).
-    modes : pandas.DataFrame
-        Natural modes of every body x rope length (SI).
-    comparison : HookAngleComparison or None
-        None when the recommended angle is 90 deg or more (no hook cone can be built).
-    """
-
-    inputs: object
-    study: object
-    critical_run: object
-    modes: pd.DataFrame
-    comparison: HookAngleComparison | None
-
-    @property
-    def recommended_angle(self):
-        """[rad]"""
-        return self.study.recommended_angle
-
-    def motion_id(self, index):
-        """LateralMotions id of case ``index`` (0-based)."""
-        n = len(self.inputs.motions)
-        return self.inputs.motion_ids[index % n]
-
-
-def compute(study):
-    """Run the lateral study read from a workbook.
-
-    Parameters
-    ----------
-    study : WorkbookStudy
-        With ``study.inputs["lateral"]``
-        (:class:`~slingloads.io.lateral.reader.LateralInputs`).
-
-    Returns
-    -------
-    LateralReport
-
-    Raises
-    ------
-    InputError
-        If the workbook does not ask for the lateral study, or the analysis refuses its
-        inputs (the file is named).
-    """
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the lateral study (Study sheet: "
-                         "'run lateral' is no)", file=study.path, sheet="Study")
-    with located(study.path):
-        result = lateral_study(inputs.bodies, inputs.rope_lengths, inputs.motions,
-                               margin=inputs.margin, cable_ea=inputs.cable_ea,
-                               damping=inputs.damping, ranges=inputs.ranges,
-                               hook_load_factor=inputs.loads.hook.nz, solver=inputs.solver)
-        try:
-            run = result.run_case()
-        except InputError as err:  # too stiff a case: at the cell of its rope length
-            from slingloads.io.lateral.reader import run_case_error
-
-            raise run_case_error(err, study, result) from None
-        comparison = None
-        if result.recommended_angle < np.pi / 2:
-            comparison = hook_angle_comparison(inputs.loads, result.recommended_angle)
-    return LateralReport(inputs, result, run, _modes(result), comparison)
-
-
-def _modes(result):
-    """Natural modes of the nominal pendulums (every body x rope length)."""
-    frames, seen = [], set()
-    for p, nominal in zip(result.pendulums, result.nominal, strict=True):
-        key = id(p)
-        if not nominal:
-            continue
-        if key in seen:
-            continue
-        seen.add(key)
-        frame = p.linear_modes().to_frame()
-        frame.insert(0, "body", p.body.name)
-        frame.insert(1, "rope length [m]", p.rope_length)
-        frame.insert(2, "rope length [ft]", p.rope_length / FOOT)
-        frames.append(frame)
-    return pd.concat(frames, ignore_index=True)
 
 
 # ------------------------------------------------------------------------------- tables

@@ -12,7 +12,7 @@ naming the file, sheet, cell, the value as written and the rule broken.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
@@ -54,45 +54,12 @@ from slingloads.models.multibody.parachute_line import HingedParachute, QuasiSta
 from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.multibody.system import SlingSystem
 from slingloads.models.parachute import extended_cd_table
+from slingloads.runs.multibody import MultibodyInputs
 
 ANALYSIS = "multibody"
 _SPEC = {s.name: s for s in SHEETS}
 #: Defaults of the MultibodyManoeuvres columns (SI).
 ONSET, DURATION, ACCELERATION, RAMP_RATE = 5.0, 10.0, 1.0, 0.5
-
-
-@dataclass(frozen=True)
-class MultibodyInputs:
-    """Everything the multibody analysis needs, in SI.
-
-    Attributes
-    ----------
-    system : SlingSystem
-    manoeuvres : tuple of Manoeuvre
-    settings : dict
-        Keywords of :func:`~slingloads.analyses.multibody.simulate`: ``t_end``, ``dt`` (None:
-        adaptive), ``output_interval`` [s], ``rtol`` [-], ``atol`` [SI].
-    configuration, tail, carrier, parachute_model, canopy_table : str
-        The Study's choices, as spelt in :mod:`slingloads.io.multibody.schema`.
-    margin : float
-        Required excess of the cable over the parachute line. [-]
-    warnings : tuple of str
-        Rules broken that do not prevent the runs (shown in the report).
-    manoeuvre_source : str
-        "MultibodyManoeuvres sheet" or "the paper's list".
-    """
-
-    system: SlingSystem
-    manoeuvres: tuple
-    settings: dict
-    configuration: str
-    tail: str
-    carrier: str
-    parachute_model: str
-    canopy_table: str
-    margin: float
-    warnings: tuple
-    manoeuvre_source: str
 
 
 def read(reader, params, study):
