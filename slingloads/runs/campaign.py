@@ -1,14 +1,12 @@
-"""Run the multibody campaign of a study: its inputs, its result and :func:`compute`."""
+"""Run the multibody campaign of a study: its inputs, its result and :func:`run`."""
 
 from __future__ import annotations
 
-import contextlib
 from dataclasses import dataclass
 
-from slingloads.errors import InputError
-from slingloads.io.common.locate import at_cell
-
 ANALYSIS = "campaign"
+#: The context of an error reaching the study's own scheduler (:meth:`Study.located`).
+SCHEDULER = "scheduler"
 
 
 @dataclass(frozen=True, eq=False)
@@ -57,12 +55,14 @@ class CampaignReport:
     cache: str
 
 
-def compute(study):
-    """Run the campaign read from a workbook (module notes).
+def run(study):
+    """Run the campaign of a study, on the executor and with the run cache its options ask
+    for.
 
-    The execution options come from ``study.runtime`` (the command line: ``scheduler``,
-    ``workers``, ``cache``, ``timeout``, ``progress``), else from the workbook. The result is
-    also left in ``study.results["campaign"]`` for the loads that follow.
+    The execution options come from ``study.options`` (:class:`~slingloads.runs.study.
+    RunOptions`: the command line's ``--scheduler``, ``--workers``, ``--cache``,
+    ``--scheduler-timeout`` and progress bar), else from the campaign's inputs (its Study
+    rows), else the defaults (local processes; the user's cache folder).
 
     Returns
     -------
@@ -77,26 +77,20 @@ def compute(study):
     from slingloads.analyses.campaign import make_executor, run_campaign
     from slingloads.runs.cache import RunCache, default_cache_dir
 
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the campaign (Study sheet: 'run "
-                         "campaign' is no)", file=study.path, sheet="Study")
-    runtime = getattr(study, "runtime", {}) or {}
-    cache_dir = runtime.get("cache") or default_cache_dir()
-    scheduler = runtime.get("scheduler") or inputs.scheduler
-    workers = runtime.get("workers") or inputs.workers
-    timeout = runtime.get("timeout") or inputs.timeout
+    inputs = study.require(ANALYSIS)
+    options = study.options
+    cache_dir = options.cache or default_cache_dir()
+    scheduler = options.scheduler or inputs.scheduler
+    workers = options.workers or inputs.workers
+    timeout = options.timeout or inputs.timeout
     campaign = inputs.campaign
     total = campaign.size + (len(campaign.no_parachute.jobs()) if campaign.no_parachute else 0)
-    store = RunCache(cache_dir)
-    written = getattr(study, "written", {}).get("campaign scheduler", (scheduler, None))
-    where = (at_cell(study.path, "Study", inputs.scheduler_cell, written[0])
-             if scheduler and not runtime.get("scheduler") else contextlib.nullcontext())
-    with where:
-        executor = make_executor(scheduler or None, workers, timeout, runs=total)
-    result = run_campaign(campaign, executor=executor, store=store,
-                          progress=runtime.get("progress"))
-    report = CampaignReport(inputs, result, str(cache_dir))
-    if hasattr(study, "results"):
-        study.results[ANALYSIS] = report
-    return report
+    with study.located(ANALYSIS):
+        store = RunCache(cache_dir)
+        # the study's own scheduler (not the command line's): errors at its Study cell
+        with study.located(ANALYSIS, SCHEDULER if scheduler and not options.scheduler
+                           else None):
+            executor = make_executor(scheduler or None, workers, timeout, runs=total)
+        result = run_campaign(campaign, executor=executor, store=store,
+                              progress=options.progress)
+    return CampaignReport(inputs, result, str(cache_dir))

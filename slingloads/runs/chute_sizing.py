@@ -1,8 +1,7 @@
-"""Run the parachute sizing of a study: its inputs, its result and :func:`compute`."""
+"""Run the parachute sizing of a study: its inputs, its result and :func:`run`."""
 
 from __future__ import annotations
 
-import contextlib
 from dataclasses import dataclass
 
 import numpy as np
@@ -15,8 +14,6 @@ from slingloads.analyses.chute_sizing import (
     run_yaw,
     sizing_sweep,
 )
-from slingloads.errors import InputError
-from slingloads.io.common.workbook import located
 from slingloads.models.integration import SolverSettings
 from slingloads.models.yaw_dynamics import YawModel
 
@@ -145,13 +142,13 @@ class ChuteSizingReport:
         return sorted(set(chosen))
 
 
-def compute(study):
-    """Run the parachute sizing read from a workbook.
+def run(study):
+    """Run the parachute sizing of a study.
 
     Parameters
     ----------
-    study : WorkbookStudy
-        With ``study.inputs["chute sizing"]`` (:class:`ChuteSizingInputs`).
+    study : Study
+        With ``study.inputs.chute_sizing`` (:class:`ChuteSizingInputs`).
 
     Returns
     -------
@@ -160,14 +157,12 @@ def compute(study):
     Raises
     ------
     InputError
-        If the workbook does not ask for the sizing, or the analysis refuses its inputs (the
-        file is named).
+        If the study does not ask for the sizing, or the analysis refuses its inputs
+        (located where they came from: :meth:`Study.located`; a yaw trim that cannot be found
+        has ``field = "trim"``).
     """
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the parachute sizing (Study sheet: "
-                         "'run chute sizing' is no)", file=study.path, sheet="Study")
-    with located(study.path), _trim_located(study):
+    inputs = study.require(ANALYSIS)
+    with study.located(ANALYSIS):
         static = neutral_area(inputs.model, inputs.fit_range)
         line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
         sweep = None
@@ -182,14 +177,3 @@ def compute(study):
     recommended = inputs.recommended_factor * static.area if sweep is not None else 0.0
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study)
 
-
-@contextlib.contextmanager
-def _trim_located(study):
-    """Locate a yaw trim that cannot be found at the hub's cells (see
-    :func:`slingloads.io.chute.reader.trim_error`)."""
-    try:
-        yield
-    except InputError as err:
-        from slingloads.io.chute.reader import trim_error
-
-        raise trim_error(err, study) from None

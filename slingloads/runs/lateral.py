@@ -1,6 +1,6 @@
-"""Run the lateral-step pendulum study of a study: its inputs, its result and :func:`compute`.
+"""Run the lateral-step pendulum study of a study: its inputs, its result and :func:`run`.
 
-:func:`compute` runs the study (every motion x rope length x body in one vectorised RK4
+:func:`run` runs the study (every motion x rope length x body in one vectorised RK4
 sweep), re-runs the critical case with :func:`scipy.integrate.solve_ivp` for its time
 histories, computes the natural modes about the hanging equilibrium, and, the link to the
 loads, re-runs the CS-29.865 hook cases at the recommended angle and at the 30 deg of
@@ -18,8 +18,6 @@ from slingloads.analyses.hook_angle import HookAngleComparison, hook_angle_compa
 from slingloads.analyses.lateral import ParameterRanges, lateral_study
 from slingloads.analyses.lateral_damping import LateralDamping
 from slingloads.constants import FOOT
-from slingloads.errors import InputError
-from slingloads.io.common.workbook import located
 from slingloads.models.integration import SolverSettings
 
 ANALYSIS = "lateral"
@@ -101,14 +99,13 @@ class LateralReport:
         return self.inputs.motion_ids[index % n]
 
 
-def compute(study):
-    """Run the lateral study read from a workbook.
+def run(study):
+    """Run the lateral study of a study.
 
     Parameters
     ----------
-    study : WorkbookStudy
-        With ``study.inputs["lateral"]``
-        (:class:`~slingloads.io.lateral.reader.LateralInputs`).
+    study : Study
+        With ``study.inputs.lateral`` (:class:`LateralInputs`).
 
     Returns
     -------
@@ -117,24 +114,18 @@ def compute(study):
     Raises
     ------
     InputError
-        If the workbook does not ask for the lateral study, or the analysis refuses its
-        inputs (the file is named).
+        If the study does not ask for the lateral study, or the analysis refuses its
+        inputs (located where they came from: :meth:`Study.located`; an error of the
+        critical case's re-run with the sweep as its context).
     """
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the lateral study (Study sheet: "
-                         "'run lateral' is no)", file=study.path, sheet="Study")
-    with located(study.path):
+    inputs = study.require(ANALYSIS)
+    with study.located(ANALYSIS):
         result = lateral_study(inputs.bodies, inputs.rope_lengths, inputs.motions,
                                margin=inputs.margin, cable_ea=inputs.cable_ea,
                                damping=inputs.damping, ranges=inputs.ranges,
                                hook_load_factor=inputs.loads.hook.nz, solver=inputs.solver)
-        try:
+        with study.located(ANALYSIS, result):  # too stiff a case: at its rope length
             run = result.run_case()
-        except InputError as err:  # too stiff a case: at the cell of its rope length
-            from slingloads.io.lateral.reader import run_case_error
-
-            raise run_case_error(err, study, result) from None
         comparison = None
         if result.recommended_angle < np.pi / 2:
             comparison = hook_angle_comparison(inputs.loads, result.recommended_angle)

@@ -1,26 +1,65 @@
-"""Run the structural loads analysis of a study (:func:`compute`), with the cases the
-campaign's dynamics reached when the study asks for them."""
+"""Run the structural loads analysis of a study (:func:`run`), with the cases the campaign's
+dynamics reached when the study asks for them (:func:`handoff`)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from slingloads.errors import InputError
-from slingloads.io.common.workbook import located
+
+ANALYSIS = "loads"
+#: The context of an error of the campaign's hand-off to the loads (:meth:`Study.located`):
+#: it comes from the Study rows 'campaign ...'.
+HANDOFF = "handoff"
 
 
-def compute(study):
-    """Run the loads analysis read from a workbook.
-
-    With the campaign's result in ``study.results`` (``slingloads run`` with ``run campaign``
-    and ``campaign loads from dynamics``), the cases the dynamics reached are added
-    (:func:`slingloads.analyses.campaign.loads_from_dynamics`) and the hand-off is kept in
-    ``study.results["loads handoff"]`` for the report.
+def handoff(study, campaign):
+    """The campaign's hand-off to the loads: the study's load cases with those the dynamics
+    reached added (:func:`slingloads.analyses.campaign.loads_from_dynamics`), when the study
+    asks for them ('campaign loads from dynamics').
 
     Parameters
     ----------
-    study : WorkbookStudy
-        With ``study.loads`` (:class:`~slingloads.analyses.loads.LoadsStudy`).
+    study : Study
+        With ``study.inputs.loads``.
+    campaign : CampaignReport or None
+        The campaign's result (None: no campaign run).
+
+    Returns
+    -------
+    Handoff or None
+        None when the loads take no case from the dynamics.
+
+    Raises
+    ------
+    InputError
+        If the loads are to take the dynamics' cases but the campaign found no parachute
+        area stable in every condition and none was chosen.
+    """
+    if campaign is None or not campaign.inputs.loads_from_dynamics:
+        return None
+    loads = study.require(ANALYSIS)
+    with study.located(ANALYSIS, HANDOFF):
+        if campaign.result.envelope is None:
+            raise InputError("the loads are to take the dynamics' cases, but no parachute "
+                             "area of the campaign is stable in every condition and none was "
+                             "chosen ('campaign chosen area factor'); choose one or set "
+                             "'campaign loads from dynamics' to no", sheet="Study")
+        from slingloads.analyses.campaign import loads_from_dynamics
+
+        return loads_from_dynamics(loads, campaign.result.envelope,
+                                   campaign.inputs.hook_angle_source)
+
+
+def run(study):
+    """Run the loads analysis of a study: its load cases, or those of the campaign's hand-off
+    when there is one (``study.results.loads_handoff``, set by
+    :func:`slingloads.runs.study.run_analysis`).
+
+    Parameters
+    ----------
+    study : Study
+        With ``study.inputs.loads`` (:class:`~slingloads.analyses.loads.LoadsStudy`).
 
     Returns
     -------
@@ -29,33 +68,18 @@ def compute(study):
     Raises
     ------
     InputError
-        If the workbook does not ask for the loads analysis.
+        If the study does not ask for the loads analysis, or its loads are not finite.
     """
-    if study.loads is None:
-        raise InputError("the workbook does not ask for the loads analysis (Study sheet: "
-                         "'run loads' is no)", file=study.path, sheet="Study")
-    results = getattr(study, "results", {})
-    campaign = results.get("campaign")
-    if campaign is None or not campaign.inputs.loads_from_dynamics:
-        return _finite(study.loads.run(), study)
-    if campaign.result.envelope is None:
-        raise InputError("the loads are to take the dynamics' cases, but no parachute area of "
-                         "the campaign is stable in every condition and none was chosen "
-                         "('campaign chosen area factor'); choose one or set 'campaign loads "
-                         "from dynamics' to no", file=study.path, sheet="Study")
-    from slingloads.analyses.campaign import loads_from_dynamics
-
-    with located(study.path, "Study"):
-        handoff = loads_from_dynamics(study.loads, campaign.result.envelope,
-                                      campaign.inputs.hook_angle_source)
-    results["loads handoff"] = handoff
-    return _finite(handoff.study.run(), study)
+    loads = study.require(ANALYSIS)
+    given = study.results.loads_handoff
+    with study.located(ANALYSIS):
+        return _finite((loads if given is None else given.study).run())
 
 
-def _finite(result, study):
+def _finite(result):
     """``result``, refused if its loads are not finite numbers."""
     if not np.all(np.isfinite(result.loads)):
         raise InputError("the loads are not finite numbers (an input far out of scale?): check "
                          "the magnitudes and units of the MassItems, FuselageAero and Study "
-                         "values", file=study.path)
+                         "values")
     return result

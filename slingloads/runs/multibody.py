@@ -1,4 +1,4 @@
-"""Run the multibody model of a study: its inputs, its result and :func:`compute`."""
+"""Run the multibody model of a study: its inputs, its result and :func:`run`."""
 
 from __future__ import annotations
 
@@ -8,8 +8,6 @@ import numpy as np
 
 from slingloads.analyses.multibody import linearise, simulate, trim
 from slingloads.constants import KNOT
-from slingloads.errors import InputError
-from slingloads.io.common.workbook import located
 from slingloads.models.multibody.system import SlingSystem
 
 ANALYSIS = "multibody"
@@ -88,13 +86,13 @@ class MultibodyReport:
         return best
 
 
-def compute(study):
-    """Run the multibody analysis read from a workbook.
+def run(study):
+    """Run the multibody analysis of a study.
 
     Parameters
     ----------
-    study : WorkbookStudy
-        With ``study.inputs["multibody"]`` (:class:`MultibodyInputs`).
+    study : Study
+        With ``study.inputs.multibody`` (:class:`MultibodyInputs`).
 
     Returns
     -------
@@ -103,14 +101,11 @@ def compute(study):
     Raises
     ------
     InputError
-        If the workbook does not ask for the multibody model, or the analysis refuses its
-        inputs (the file is named).
+        If the study does not ask for the multibody model, or the analysis refuses its
+        inputs (located where they came from: :meth:`Study.located`).
     """
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the multibody model (Study sheet: "
-                         "'run multibody' is no)", file=study.path, sheet="Study")
-    with located(study.path):
+    inputs = study.require(ANALYSIS)
+    with study.located(ANALYSIS):
         point = trim(inputs.system)
         linear = linearise(point) if point.converged else None
         sim = simulate(inputs.system, inputs.manoeuvres, **inputs.settings)

@@ -20,6 +20,7 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
+from slingloads.errors import InputError
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -45,7 +46,7 @@ from slingloads.limits import (
     MAX_LIST_ITEMS,
     MAX_MAP_POINTS,
 )
-from slingloads.runs.campaign import CampaignInputs
+from slingloads.runs.campaign import SCHEDULER, CampaignInputs
 
 ANALYSIS = "campaign"
 _SPEC = {s.name: s for s in SHEETS}
@@ -142,8 +143,8 @@ def read_system(reader, params, study):
     if airframe.hardpoints.chute is None:
         raise reader.error("the campaign needs a Hardpoints row of kind 'chute' (the parachute "
                            "attachment)", sheet="Hardpoints", cell="B1")
-    fuselage = read_fuselage_aero(reader, params, study.points)
-    fin = read_fin_aero(reader, params, study.points)
+    fuselage = read_fuselage_aero(reader, params, study.source.points)
+    fin = read_fin_aero(reader, params, study.source.points)
     if fuselage is None and fin is None:
         raise reader.error("the campaign needs a FuselageAero or a FinAero sheet",
                            sheet="FuselageAero")
@@ -156,7 +157,7 @@ def read_system(reader, params, study):
         body = RigidBody.from_mass_items(airframe.mass_items)
     lengths = list_parameter(params, "campaign cable lengths")
     for length in lengths:  # each checked at the list's cell, in the list's unit
-        rule = parachute_reach_rule(reader, params, study.points, airframe.hardpoints,
+        rule = parachute_reach_rule(reader, params, study.source.points, airframe.hardpoints,
                                     chute.line_length, length,
                                     params.unit("campaign cable lengths"))
         if rule is not None:
@@ -198,7 +199,7 @@ def _rows(reader, params, study, system, masses):
         for column in ("area factor", "airspeed EAS", "cable length"):
             if not t[column][i] > 0:
                 raise t.error(column, i, f"{column} must be > 0")
-        rule = parachute_reach_rule(reader, params, study.points, study.airframe.hardpoints,
+        rule = parachute_reach_rule(reader, params, study.source.points, study.airframe.hardpoints,
                                     system.parachute.parachute.line_length,
                                     t["cable length"][i], t.units.get("cable length"))
         if rule is not None:
@@ -425,3 +426,19 @@ def _map(factors, rows, n_areas, n_speeds):
     v = np.linspace(speeds.min(), speeds.max(), n_speeds) if speeds.max() > speeds.min() else [
         speeds.min()]
     return MapSettings(tuple(a), tuple(v))
+
+
+def locate(err, study, context=None):
+    """``err``, raised while the campaign of ``study`` ran, put at its cell: an error
+    reaching the workbook's own scheduler (``context`` :data:`~slingloads.runs.campaign.
+    SCHEDULER`) at the 'campaign scheduler' cell, with the address as written; any other
+    error unchanged."""
+    if context != SCHEDULER:
+        return err
+    inputs = study.inputs.campaign
+    written = study.source.written.get("campaign scheduler", (inputs.scheduler, None))[0]
+    try:
+        with at_cell(study.path, STUDY_SHEET, inputs.scheduler_cell, written):
+            raise err
+    except InputError as located:
+        return located

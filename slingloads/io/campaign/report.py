@@ -30,10 +30,8 @@ import pandas as pd
 
 from slingloads import __version__
 from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
-from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
+from slingloads.io.common.excel import Section
+from slingloads.io.common.figures import plot_function, start_drawing
 from slingloads.io.common.ownership import PARQUET_KEY
 from slingloads.io.common.report import (
     check_units,
@@ -41,6 +39,7 @@ from slingloads.io.common.report import (
     explain_infinite,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 
 ANALYSIS = "campaign"
 _PNG_DPI = 90
@@ -395,8 +394,27 @@ def write_histories(result, path):
     return count
 
 
+def _jobs(report, units):
+    return {tag: job for tag, (_, job) in _figures(report, units).items()}
+
+
+def _titles(report):
+    return {tag: title for tag, (title, _) in _figures(report, "SI").items()}
+
+
+def _write_histories(report, path):
+    write_histories(report.result, path)
+
+
+#: The campaign report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="campaign", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_jobs,
+                    titles=_titles, files={"histories.parquet": _write_histories})
+
+
 def write(report, out_dir, stem, units, study, figures=None):
-    """Write the campaign report (module notes) atomically.
+    """Write the campaign report (module notes) atomically
+    (:func:`~slingloads.io.common.report_writer.write_report` of :data:`REPORT`).
 
     Parameters
     ----------
@@ -405,7 +423,7 @@ def write(report, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"``.
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -414,23 +432,4 @@ def write(report, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files or [study.path]
-    figs = _figures(report, units)
-    names = ([f"{stem}-campaign.xlsx", f"{stem}-campaign-histories.parquet"]
-             + [f"{stem}-campaign-{tag}.png" for tag in figs])
-    check_outputs(out_dir, names, inputs)
-    jobs = {tag: job for tag, (_, job) in figs.items()}
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS,
-                           files=[f"{stem}-campaign-histories.parquet",
-                                  *(f"{stem}-campaign-{tag}.png" for tag in pngs)])
-        sheets = _sheets(report, units, study.warnings)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-campaign.xlsx"), sheets,
-                           {figs[tag][0]: png for tag, png in pngs.items()}, info=info)
-            write_histories(report.result, out.path(f"{stem}-campaign-histories.parquet"))
-            for tag, png in pngs.items():
-                out.path(f"{stem}-campaign-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(REPORT, report, out_dir, stem, units, study, figures)

@@ -77,7 +77,7 @@ def read(reader, params, study):
     params.check("chute sizing linearisation range", half < np.pi / 2,
            "'chute sizing linearisation range' must be below 90 deg")
     # ---- aerodynamics and geometry (the airframe sheets)
-    refs = study.points
+    refs = study.source.points
     fuselage = read_fuselage_aero(reader, params, refs)
     fin = read_fin_aero(reader, params, refs)
     if fuselage is None and fin is None:
@@ -336,15 +336,21 @@ def _turbulence(reader, params, model, onset, t_end):
     return gust
 
 
+def locate(err, study, context=None):
+    """``err``, raised while the parachute sizing of ``study`` ran, put at its cell (a yaw
+    trim that cannot be found: :func:`trim_error`)."""
+    return trim_error(err, study)
+
+
 def trim_error(err, study):
     """The error to raise for ``err``, raised while the sizing computes: a yaw trim that
     cannot be found (``field = "trim"``: the yawing moment about the hub keeps one sign) is
     put at the hub's y cell, with the hub's position as written and what sets that moment;
     any other error is returned unchanged."""
-    hp_t = getattr(study, "tables", {}).get("Hardpoints")
+    hp_t = study.source.tables.get("Hardpoints")
     if err.field != "trim" or err.cell is not None or hp_t is None:
         return err
-    row = study.points["rows"]["hub"][0]
+    row = study.source.points["rows"]["hub"][0]
     shown = []
     for column in ("x", "y", "z"):
         value, unit = hp_t.shown(column, row)

@@ -29,25 +29,20 @@ from slingloads.analyses.chute_sizing import (
     wake_ratio_at,
 )
 from slingloads.constants import FOOT, POUND_FORCE
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
-from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
-    drawings,
     plot_function,
-    png_bytes,
     start_drawing,
-    task_result,
 )
 from slingloads.io.common.report import (
-    check_units,
     convert_columns,
     in_report_units,
     report_unit,
     sample_rows,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.common.units import unit_label
 
 ANALYSIS = "chute sizing"
@@ -57,6 +52,11 @@ PLOTS = ("linearisation", "static-moments", "wake", "sweep", "histories")
 OUTPUTS = ("{stem}-chute.xlsx", "{stem}-chute-histories.csv",
            *(f"{{stem}}-chute-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 100
+#: Title of each figure on the Plots sheet.
+FIGURE_TITLES = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
+                 "static-moments": "Static yawing moments at the neutral area",
+                 "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
+                 "histories": "Time histories for every gust shape (paper figure 7)"}
 #: Most rows of each table of the Histories sheet (the CSV file keeps every stored sample).
 HISTORY_ROWS = 65
 #: Sideslip interval of the curve tables (Linearisation, StaticMoments) when they are
@@ -398,9 +398,25 @@ def histories_csv(result):
     return csv_bytes(history_csv_frame(result))
 
 
+def _titles(result):
+    return FIGURE_TITLES
+
+
+def _histories_csv_if_swept(result):
+    """The bytes of ``<stem>-chute-histories.csv``, or None without a sweep."""
+    return histories_csv(result) if result.sweep is not None else None
+
+
+#: The sizing report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="chute", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
+                    titles=_titles, data={"histories.csv": _histories_csv_if_swept})
+
+
 def write(result, out_dir, stem, units, study, figures=None):
     """Write ``<stem>-chute.xlsx``, ``<stem>-chute-histories.csv`` and ``<stem>-chute-*.png``
-    atomically.
+    atomically (:func:`~slingloads.io.common.report_writer.write_report` of
+    :data:`REPORT`).
 
     Parameters
     ----------
@@ -409,7 +425,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"`` (lengths in in, areas in ft^2, speeds in kt, moments in lbf in).
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -418,29 +434,4 @@ def write(result, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files
-    names = ([f"{stem}-chute.xlsx", f"{stem}-chute-histories.csv"]
-             + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
-    check_outputs(out_dir, names, inputs)
-    titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
-              "static-moments": "Static yawing moments at the neutral area",
-              "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
-              "histories": "Time histories for every gust shape (paper figure 7)"}
-    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        sheets = _sheets(result, units, study.warnings)
-        files = ([f"{stem}-chute-histories.csv"] if result.sweep is not None else []) + [
-            f"{stem}-chute-{tag}.png" for tag in pngs]
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS, files=files)
-        csv = (task_result(figures, "histories.csv", histories_csv, result)  # (before the
-               if result.sweep is not None else None)  # figures are awaited: see lateral)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
-                           {titles[t]: png for t, png in pngs.items()}, info=info)
-            if csv is not None:
-                out.path(f"{stem}-chute-histories.csv").write_bytes(csv)
-            for tag, png in pngs.items():
-                out.path(f"{stem}-chute-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(REPORT, result, out_dir, stem, units, study, figures)

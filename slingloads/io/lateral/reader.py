@@ -6,7 +6,7 @@ It reads the Study parameters of :mod:`slingloads.io.lateral.schema`, the sheets
 ``LateralMotions``, ``LateralRopes``, and the optional ``LateralHistory`` (or CSV files named
 in ``LateralMotions``) and ``LateralBodies``; without ``LateralBodies`` the one body comes from
 the ``MassItems`` and the ``Hardpoints`` hub. For the link to the loads it keeps the loads
-study (``study.loads``, or one built from the same workbook when only the lateral study was
+study (``study.inputs.loads``, or one built from the same workbook when only the lateral study was
 asked for). Every value is SI after reading; every bad value raises
 :class:`~slingloads.errors.InputError` naming the file, sheet, cell, value and rule.
 """
@@ -113,12 +113,12 @@ def read(reader, params, study):
                             method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2))
     ropes = _ropes(reader)
     if hasattr(study, "tables"):  # to locate the errors found while computing
-        study.tables["LateralRopes"] = reader.table(_SPEC["LateralRopes"])
+        study.source.tables["LateralRopes"] = reader.table(_SPEC["LateralRopes"])
     bodies, source = _bodies(reader, study)
     histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
     motions, ids = _motions(reader, histories)
     _check_work(reader, params, len(motions), len(ropes), len(bodies), t_end, step, output)
-    loads = study.loads
+    loads = study.inputs.loads
     if loads is None:
         with located(reader.file):
             loads = loads_reader.read(reader, params, study)
@@ -143,8 +143,8 @@ def _damping(reader, params, study):
     with params.located({"eas": "lateral airspeed EAS",
                          "density_altitude": "lateral density altitude"}):
         condition = FlightCondition(speed, params("lateral density altitude"))
-    fuselage = read_fuselage_aero(reader, params, study.points)
-    fin = read_fin_aero(reader, params, study.points)
+    fuselage = read_fuselage_aero(reader, params, study.source.points)
+    fin = read_fin_aero(reader, params, study.source.points)
     if fuselage is None and fin is None:
         raise params.error("lateral damping source", "'aerodynamic tables' needs a "
                            "FuselageAero or a FinAero sheet", "aerodynamic tables")
@@ -206,6 +206,13 @@ def _ropes(reader):
     return tuple(float(x) for x in t["rope length"])
 
 
+def locate(err, study, context=None):
+    """``err``, raised while the lateral study of ``study`` ran, put at its cell: with the
+    sweep as ``context``, an error of the critical case's re-run (:func:`run_case_error`);
+    any other error unchanged."""
+    return err if context is None else run_case_error(err, study, context)
+
+
 def run_case_error(err, study, result):
     """The error to raise for ``err``, raised by the time-history re-run of the study's
     critical case (:meth:`~slingloads.analyses.lateral.LateralStudy.run_case`).
@@ -215,10 +222,10 @@ def run_case_error(err, study, result):
     length, as written, with the period of the case's fastest mode and the run length, and
     names the tolerance; any other error is returned unchanged.
     """
-    ropes = getattr(study, "tables", {}).get("LateralRopes")
+    ropes = study.source.tables.get("LateralRopes")
     if err.field != "rtol" or err.cell is not None or ropes is None:
         return err
-    inputs = study.inputs[ANALYSIS]
+    inputs = study.inputs.lateral
     k = result.critical_index
     pendulum, motion = result.pendulums[k], result.motions[k]
     row = [float(v) for v in inputs.rope_lengths].index(float(result.nominal_rope[k]))
@@ -227,8 +234,8 @@ def run_case_error(err, study, result):
     fastest = float(np.min(periods[periods > 0])) if np.any(periods > 0) else np.inf
     spread = f" x {factor:.4g} (rope length spread)" if factor != 1 else ""
     name = "lateral history rtol"
-    rtol = study.written.get(name, (inputs.solver.rtol, None))[0]
-    where = study.cells.get(name, "(default)")
+    rtol = study.source.written.get(name, (inputs.solver.rtol, None))[0]
+    where = study.source.cells.get(name, "(default)")
     return ropes.error("rope length", row, (
         f"too much work: the time-history re-run of the critical case (case {k + 1}: body "
         f"{pendulum.body.name!r}, motion {inputs.motion_ids[_motion_index(inputs, motion)]!r}, "
@@ -283,7 +290,7 @@ def _airframe_body(reader, study):
         if isinstance(err.value, float):  # how far above the hub the CG lies, along the mast
             rule += (f" (the CG lies {column_quantity(hardpoints, 'z', -err.value, 'length')}"
                      " above the hub along the mast)")
-        raise hardpoints.error("z", study.points["rows"]["hub"][0], rule) from None
+        raise hardpoints.error("z", study.source.points["rows"]["hub"][0], rule) from None
 
 
 def _histories(reader):

@@ -40,16 +40,11 @@ from slingloads.analyses.hook_angle import (
 )
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
-from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
-    drawings,
     plot_function,
-    png_bytes,
     start_drawing,
-    task_result,
 )
 from slingloads.io.common.report import (
     check_units,
@@ -61,6 +56,7 @@ from slingloads.io.common.report import (
     sample_rows,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.common.units import unit_label
 
 ANALYSIS = "lateral"
@@ -73,6 +69,12 @@ PLOTS = ("histories", "max-angle", "sensitivity", "shear")
 OUTPUTS = ("{stem}-lateral.xlsx", "{stem}-lateral-histories.csv",
            *(f"{{stem}}-lateral-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 100
+#: Title of each figure on the Plots sheet.
+FIGURE_TITLES = {"histories": "Critical case: time histories (30 deg line)",
+                 "max-angle": "Largest load angle against carrier acceleration",
+                 "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",
+                 "shear": "Y shear of the hook cases (LIMIT): 30 deg against the recommended "
+                          "angle"}
 #: Most rows of the Histories sheet (the CSV file keeps every sample).
 HISTORY_ROWS = 100
 
@@ -403,9 +405,20 @@ def histories_csv(result):
     return csv_bytes(csv_frame(result.critical_run.to_frame()))
 
 
+def _titles(result):
+    return FIGURE_TITLES
+
+
+#: The lateral report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="lateral", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
+                    titles=_titles, data={"histories.csv": histories_csv})
+
+
 def write(result, out_dir, stem, units, study, figures=None):
     """Write ``<stem>-lateral.xlsx``, ``<stem>-lateral-histories.csv`` and
-    ``<stem>-lateral-*.png`` atomically.
+    ``<stem>-lateral-*.png`` atomically (:func:`~slingloads.io.common.report_writer.
+    write_report` of :data:`REPORT`).
 
     Parameters
     ----------
@@ -414,7 +427,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"`` (lengths in in, forces in lbf, moments in lbf in, masses in lb).
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -423,29 +436,4 @@ def write(result, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files
-    names = ([f"{stem}-lateral.xlsx", f"{stem}-lateral-histories.csv"]
-             + [f"{stem}-lateral-{tag}.png" for tag in PLOTS])
-    check_outputs(out_dir, names, inputs)
-    titles = {"histories": "Critical case: time histories (30 deg line)",
-              "max-angle": "Largest load angle against carrier acceleration",
-              "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",
-              "shear": "Y shear of the hook cases (LIMIT): 30 deg against the recommended "
-                       "angle"}
-    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS,
-                           files=[f"{stem}-lateral-histories.csv",
-                                  *(f"{stem}-lateral-{tag}.png" for tag in pngs)])
-        sheets = _sheets(result, units, study.warnings)
-        csv = task_result(figures, "histories.csv", histories_csv, result)  # (before the
-        # figures are awaited: made here while the helper draws, unless it has made it)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-lateral.xlsx"), sheets,
-                           {titles[t]: png for t, png in pngs.items()}, info=info)
-            out.path(f"{stem}-lateral-histories.csv").write_bytes(csv)
-            for tag, png in pngs.items():
-                out.path(f"{stem}-lateral-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(REPORT, result, out_dir, stem, units, study, figures)

@@ -45,6 +45,8 @@ from slingloads.io.loads.schema import SHEETS
 from slingloads.limits import MAX_CASE_POINTS, MAX_LOAD_CASES, MAX_SFBM_ROWS
 from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attitude
 from slingloads.models.flight import FlightCondition
+from slingloads.runs.loads import HANDOFF
+from slingloads.runs.study import ReportOptions
 
 _SPEC = {s.name: s for s in SHEETS}
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
@@ -71,7 +73,7 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule; also when the cases asked for exceed the
         limits of :mod:`slingloads.limits` (checked before anything is computed).
     """
-    airframe, refs = study.airframe, study.points
+    airframe, refs = study.airframe, study.source.points
     parachute = envelope = None
     fuselage = read_fuselage_aero(reader, params, refs)
     fin = read_fin_aero(reader, params, refs)
@@ -295,11 +297,7 @@ def report_options(params, study):
 
     Returns
     -------
-    dict
-        ``{"hull stations": [station id, ...], "hull pairs": [(component, component), ...],
-        "hook angle justification": str, "previous envelope source": str,
-        "sfbm workbook": bool, "nastran": bool, "nastran settings": {...},
-        "nastran locations": {...}}``
+    ReportOptions
     """
     airframe = study.airframe
     ids = list(airframe.station_ids)
@@ -327,10 +325,11 @@ def report_options(params, study):
     if not pairs and params("hull pairs"):
         raise params.error("hull pairs", "no hull pair given (e.g. 'Vy-Mz, Vz-My', or leave "
                            "the cell empty for none)")
-    return {"hull stations": stations, "hull pairs": pairs,
-            "hook angle justification": str(params("hook angle justification") or "").strip(),
-            "previous envelope source": str(params("previous envelope source") or "").strip(),
-            "sfbm workbook": bool(params("SFBM workbook")), **_nastran_options(params, study)}
+    return ReportOptions(
+        hull_stations=stations, hull_pairs=pairs,
+        hook_angle_justification=str(params("hook angle justification") or "").strip(),
+        previous_envelope_source=str(params("previous envelope source") or "").strip(),
+        sfbm_workbook=bool(params("SFBM workbook")), **_nastran_options(params, study))
 
 
 _NASTRAN_IDS = {"first_grid_id": "nastran first grid id",
@@ -340,8 +339,8 @@ _NASTRAN_IDS = {"first_grid_id": "nastran first grid id",
 
 def _nastran_options(params, study):
     """The Study rows 'nastran ...', checked at their cells: ``nastran`` (write the file),
-    ``nastran settings`` (options of :func:`~slingloads.io.loads.nastran.prepare_nastran`)
-    and ``nastran locations`` (the cell of each option and of each listed case id, for the
+    ``nastran_settings`` (options of :func:`~slingloads.io.loads.nastran.prepare_nastran`)
+    and ``nastran_locations`` (the cell of each option and of each listed case id, for the
     errors found when the file is laid out)."""
     settings = {"inertia_relief": params.choice("nastran inertia relief", INERTIA_RELIEF),
                 "hook_at": params.choice("nastran hook load at", HOOK_POINTS),
@@ -362,10 +361,17 @@ def _nastran_options(params, study):
                        "value": params.raw(name), "unit": params.unit(name)}
                  for arg, name in names.items()}
     reader = params.reader
-    if study.loads is not None and reader.has_sheet("LoadCases"):
+    if study.inputs.loads is not None and reader.has_sheet("LoadCases"):
         t = reader.table(_SPEC["LoadCases"])
         locations.update({("case", str(t["id"][i])): {"sheet": t.sheet,
                                                       "cell": t.cell("id", i)}
                           for i in range(len(t))})
-    return {"nastran": bool(params("nastran bulk data")), "nastran settings": settings,
-            "nastran locations": locations}
+    return {"nastran": bool(params("nastran bulk data")), "nastran_settings": settings,
+            "nastran_locations": locations}
+
+
+def locate(err, study, context=None):
+    """``err``, raised while the loads of ``study`` ran: an error of the campaign's hand-off
+    (``context`` :data:`~slingloads.runs.loads.HANDOFF`) on the Study sheet (the 'campaign
+    ...' rows); any other error unchanged."""
+    return err.located(sheet=STUDY_SHEET) if context == HANDOFF else err

@@ -45,7 +45,7 @@ from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs, safe_file_part
-from slingloads.io.common.cover import info_from_digest, report_info
+from slingloads.io.common.cover import info_from_digest, input_digest, report_info
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
@@ -971,8 +971,7 @@ def dynamics_sections(result, comparison, units="SI"):
 def start_figures(result, units, study):
     """Start drawing the figures of the loads report of a workbook's study (worker processes
     draw them while the other analyses run); pass the result to :func:`write`."""
-    jobs, _, _ = figure_jobs(result, units, study.options.get("hull pairs", (("Vy", "Mz"),)),
-                             study.options.get("hull stations"))
+    jobs, _, _ = figure_jobs(result, units, study.report.hull_pairs, study.report.hull_stations)
     renderer = start_drawing(jobs, _PNG_DPI)
     for name, make in CSV_FILES.items():  # after the figures
         renderer.later(name, make, result)
@@ -994,29 +993,29 @@ CSV_FILES = {"sfbm.csv": sfbm_csv, "envelope.csv": envelope_csv}
 
 
 def write(result, out_dir, stem, units, study, figures=None, checks=None):
-    """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
-    run's outputs ``out_dir``, with the study's identification, hull options, warnings and
-    findings (the lateral study of the same run, when there is one, is the evidence on the
-    hook angle), and the ``checks`` against the other analyses of the run
-    (:mod:`slingloads.io.consistency`)."""
+    """Write the loads report of a study (:func:`write_loads_outputs`) into the run's outputs
+    ``out_dir``, with the study's identification, report options, warnings and findings
+    (the lateral study of the same run, when there is one, is the evidence on the hook
+    angle; the campaign's hand-off, when the loads took the dynamics' cases), and the
+    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`)."""
     info = report_info(study, title=TITLE, analysis=ANALYSIS, units=units,
                        conventions=CONVENTIONS)
-    findings = {"lateral": getattr(study, "results", {}).get("lateral"),
-                "hook angle justification": study.options.get("hook angle justification", ""),
-                "previous envelope source": study.options.get("previous envelope source", ""),
-                "warnings": list(study.warnings)}
+    options, results = study.report, study.results
+    findings = {"lateral": results.lateral,
+                "hook angle justification": options.hook_angle_justification,
+                "previous envelope source": options.previous_envelope_source,
+                "warnings": list(study.source.warnings)}
     nastran = None
-    if study.options.get("nastran"):
-        nastran = {**study.options["nastran settings"],
-                   "locations": study.options["nastran locations"]}
-    handoff = getattr(study, "results", {}).get("loads handoff")
+    if options.nastran:
+        nastran = {**options.nastran_settings, "locations": options.nastran_locations}
+    handoff = results.loads_handoff
     with located(study.path):
         return write_loads_outputs(result, out_dir, stem, units=units,
-                                   inputs_digest=study.digest(),
-                                   hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
-                                   hull_stations=study.options.get("hull stations"),
-                                   input_paths=study.input_files, info=info,
+                                   inputs_digest=input_digest(study),
+                                   hull_pairs=options.hull_pairs,
+                                   hull_stations=options.hull_stations,
+                                   input_paths=study.source.input_files, info=info,
                                    findings=findings,
-                                   sfbm_workbook=study.options.get("sfbm workbook", False),
+                                   sfbm_workbook=options.sfbm_workbook,
                                    figures=figures, nastran=nastran, checks=checks,
                                    dynamics=None if handoff is None else handoff.comparison)

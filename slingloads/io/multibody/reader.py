@@ -90,16 +90,10 @@ def read(reader, params, study):
                            warnings=warnings, manoeuvre_source=source, **choices)
 
 
-def load_workbook_system(path):
-    """The multibody inputs of the workbook at ``path`` (whatever its 'run multibody' says).
-
-    Returns
-    -------
-    MultibodyInputs
-    """
-    from slingloads.io.study import read_study
-
-    return read_study(path, only=[ANALYSIS]).inputs[ANALYSIS]
+def locate(err, study, context=None):
+    """``err``, raised while the multibody model of ``study`` ran: located by its field alone
+    (the schema's ``COMPUTE_FIELDS``), so returned unchanged."""
+    return err
 
 
 # --------------------------------------------------------------------------- settings
@@ -146,7 +140,7 @@ def read_system(reader, params, study):
     reader : WorkbookReader
     params : StudyParameters
     study : WorkbookStudy
-        With the airframe and its hardpoints by kind (``study.points``).
+        With the airframe and its hardpoints by kind (``study.source.points``).
 
     Returns
     -------
@@ -165,7 +159,7 @@ def read_system(reader, params, study):
     airspeed = params.positive("multibody airspeed EAS", allow_zero=True)
     altitude = params("multibody density altitude")
     body = _body(reader, study)
-    refs = study.points
+    refs = study.source.points
     fuselage = read_fuselage_aero(reader, params, refs)
     if fuselage is None:
         raise reader.error("the multibody model needs the FuselageAero sheet (the carried "

@@ -29,20 +29,14 @@ import numpy as np
 import pandas as pd
 
 from slingloads.constants import KNOT
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
-from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
-    drawings,
     plot_function,
-    png_bytes,
     start_drawing,
-    task_result,
 )
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
-    check_units,
     column_blocks,
     convert_columns,
     csv_frame,
@@ -52,6 +46,7 @@ from slingloads.io.common.report import (
     split_unit,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.common.units import unit_label
 from slingloads.io.multibody.figure_data import history_panels, view_points
 
@@ -62,6 +57,10 @@ PLOTS = ("histories", "eigenvalues", "views")
 OUTPUTS = ("{stem}-multibody.xlsx", "{stem}-multibody-histories.csv",
            *(f"{{stem}}-multibody-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 80
+#: Title of each figure on the Plots sheet.
+FIGURE_TITLES = {"histories": "Time histories: yaw, sideslip, cable swing, tension",
+                 "eigenvalues": "Eigenvalues about the trim",
+                 "views": "Side and top views at trim and at the largest excursion"}
 #: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
 HISTORY_INTERVAL = 2.0
 #: Quantity kind of the SI units that appear in the analysis' column headers.
@@ -245,9 +244,9 @@ def state_matrix_table(linear):
     return a.reset_index(names="d/dt of")
 
 
-def _warnings(result, study):
+def _warnings(result, warnings):
     """The warnings on the inputs of the study and of the multibody system, each once."""
-    return list(dict.fromkeys([*study.warnings, *result.inputs.warnings]))
+    return list(dict.fromkeys([*warnings, *result.inputs.warnings]))
 
 
 def _parts(title, tables, note=""):
@@ -329,9 +328,28 @@ def histories_csv(result):
     return csv_bytes(csv_frame(history_table(result, "SI")))
 
 
+def _titles(result):
+    return FIGURE_TITLES
+
+
+def _matrix_formats(result):
+    """The number format of the state matrix's columns (None without a linear model)."""
+    if result.linear is None:
+        return None
+    return {name: MATRIX_FORMAT for name in result.linear.a_frame().columns}
+
+
+#: The multibody report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="multibody", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
+                    titles=_titles, data={"histories.csv": histories_csv},
+                    warnings=_warnings, number_format=_matrix_formats)
+
+
 def write(result, out_dir, stem, units, study, figures=None):
     """Write ``<stem>-multibody.xlsx``, ``-multibody-histories.csv`` and the PNG plots
-    atomically.
+    atomically (:func:`~slingloads.io.common.report_writer.write_report` of
+    :data:`REPORT`).
 
     Parameters
     ----------
@@ -340,7 +358,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"``.
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -349,30 +367,4 @@ def write(result, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files or [study.path]
-    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
-    names = ([f"{stem}-multibody.xlsx", f"{stem}-multibody-histories.csv"]
-             + [f"{stem}-multibody-{tag}.png" for tag in jobs])
-    check_outputs(out_dir, names, inputs)
-    titles = {"histories": "Time histories: yaw, sideslip, cable swing, tension",
-              "eigenvalues": "Eigenvalues about the trim",
-              "views": "Side and top views at trim and at the largest excursion"}
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS,
-                           files=[f"{stem}-multibody-histories.csv",
-                                  *(f"{stem}-multibody-{tag}.png" for tag in pngs)])
-        sheets = _sheets(result, units, _warnings(result, study))
-        formats = ({name: MATRIX_FORMAT for name in result.linear.a_frame().columns}
-                   if result.linear is not None else None)
-        csv = task_result(figures, "histories.csv", histories_csv, result)  # (before the
-        # figures are awaited: made here while the helper draws, unless it has made it)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
-                           {titles[t]: png for t, png in pngs.items()}, info=info,
-                           number_format=formats)
-            out.path(f"{stem}-multibody-histories.csv").write_bytes(csv)
-            for tag, png in pngs.items():
-                out.path(f"{stem}-multibody-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(REPORT, result, out_dir, stem, units, study, figures)
