@@ -348,7 +348,7 @@ def example_loads():
     from slingloads.io.study import read_study
 
     example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
-    return read_study(example, only=["loads"]).loads
+    return read_study(example, only=["loads"]).inputs.loads
 
 
 def test_loads_take_the_dynamics_cases(local, example_loads):

@@ -121,7 +121,7 @@ def test_report_files_and_readback(tiny):
         assert name in sheets
     for tag in ("selection", "sensitivity-parachute-area", "stability-map", "no-parachute"):
         assert (out / f"tiny-campaign-{tag}.png").stat().st_size > 1000
-    api = run_campaign(read_study(path).inputs["campaign"].campaign, store=MemoryStore())
+    api = run_campaign(read_study(path).inputs.campaign.campaign, store=MemoryStore())
     report = _blocks(out / "tiny-campaign.xlsx", "Metrics")
     for column in ("yaw change [deg]", "beta peak [deg]", "yaw mode damping ratio [-]",
                    "swing angle trim [deg]", "tension / weight max [-]"):
@@ -158,7 +158,7 @@ def test_edited_workbook_reruns_only_what_changed(tiny, tmp_path):
     for edits, counts in (({"campaign area factors": "1.2, 1.4"}, (2, 1)),
                           ({"campaign cable EA": 6e6}, (0, 3))):
         path = workbook(tmp_path / "edited.xlsx", edits)
-        result = run_campaign(read_study(path).inputs["campaign"].campaign,
+        result = run_campaign(read_study(path).inputs.campaign.campaign,
                               store=RunCache(cache))
         assert (result.execution.cached, result.execution.computed) == counts
 
@@ -167,7 +167,7 @@ def test_disk_cache_resumes_after_an_interruption(tmp_path):
     """Interrupted after its first batch of one run, the on-disk cache holds that run (one
     Parquet file, no partial file); resumed, 1 run is found and 2 computed, and the results
     equal an uninterrupted run's."""
-    campaign = read_study(workbook(tmp_path / "tiny.xlsx")).inputs["campaign"].campaign
+    campaign = read_study(workbook(tmp_path / "tiny.xlsx")).inputs.campaign.campaign
     cache = RunCache(tmp_path / "cache")
 
     def interrupt(done, total):
@@ -194,7 +194,7 @@ def test_a_damaged_cache_file_is_run_again(tiny, tmp_path):
     victim.write_bytes(b"not a parquet file")
     store = RunCache(copy)
     assert store.get(victim.stem) is None
-    campaign = read_study(tiny[0]).inputs["campaign"].campaign
+    campaign = read_study(tiny[0]).inputs.campaign.campaign
     result = run_campaign(campaign, store=store)
     assert (result.execution.cached, result.execution.computed) == (2, 1)
     assert store.get(victim.stem) is not None

@@ -27,7 +27,7 @@ from slingloads.models.flight import FlightCondition
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
 from slingloads.models.yaw_dynamics import YawModel
-from slingloads.runs.chute_sizing import compute
+from slingloads.runs.chute_sizing import run as compute
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem
@@ -52,7 +52,7 @@ def run_dir(tmp_path_factory):
 
 def test_neutral_area_workbook_equals_api(study, result):
     """Same data, two paths: the workbook reader and the API (HC1 tables, hand inertia)."""
-    frame, points = study.airframe, study.points
+    frame, points = study.airframe, study.source.points
     ref = sample_reference("HC1")
     hc1 = sample_fuselage("HC1")
     fuselage = FuselageAero(hc1.table, ref.fuselage_area, ref.fuselage_length,

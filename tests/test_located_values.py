@@ -25,9 +25,9 @@ from hostile import set_parameter, small_dynamics_workbook, small_workbook, stud
 
 from slingloads.constants import INCH
 from slingloads.errors import InputError
-from slingloads.io.analyses import ANALYSES
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.io.study import read_study
+from slingloads.runs.study import run_analysis
 
 FILE = "values.xlsx"
 #: Float noise of a unit round trip (15 deg -> 14.999999999999998) or an SI conversion
@@ -68,8 +68,7 @@ def read(book):
 
 def compute(book, analysis):
     """Read ``book`` and compute ``analysis`` (an InputError propagates)."""
-    study = read(book)
-    {a.name: a for a in ANALYSES}[analysis].compute(study)
+    run_analysis(read(book), analysis)
 
 
 def check_message(err):
@@ -370,7 +369,7 @@ def test_a_model_error_located_at_a_parameter_echoes_it_as_written():
     study = read(book)
     from slingloads.limits import check_count
 
-    with pytest.raises(InputError) as info, study.located({"step": "lateral RK4 step"}):
+    with pytest.raises(InputError) as info, study.located("lateral"):
         check_count(10**9, 10, "RK4 steps per run", field="step")
     err = info.value
     assert err.cell == study_cell(book, "lateral RK4 step"), str(err)

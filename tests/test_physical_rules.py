@@ -98,9 +98,9 @@ def test_hook_load_factor_below_2_5_is_flagged(nz, warned):
     book = small_workbook()
     set_parameter(book, "hook load factor Nz", nz)
     study = read(book)
-    assert study.loads.hook.nz == nz
-    found = [w for w in study.warnings if "hook load factor Nz" in w]
-    assert bool(found) is warned, study.warnings
+    assert study.inputs.loads.hook.nz == nz
+    found = [w for w in study.source.warnings if "hook load factor Nz" in w]
+    assert bool(found) is warned, study.source.warnings
     if warned:
         assert f"Study {study_cell(book, 'hook load factor Nz')}" in found[0]
         assert "CS 29.865(a)" in found[0] and "CS 29.337 to 29.341" in found[0]
@@ -231,7 +231,7 @@ def test_wake_q_ratio_that_holds_is_accepted():
     set_parameter(book, "chute sizing wake source", "table")
     set_parameter(book, "chute sizing target q ratio", 0.9)
     book["ChuteWake"] = [["distance [m]", "q ratio"], [1.0, 0.5], [5.0, 0.95], [10.0, 0.95]]
-    assert read(book).inputs["chute sizing"].wake.line_length(0.9) == pytest.approx(
+    assert read(book).inputs.chute_sizing.wake.line_length(0.9) == pytest.approx(
         1.0 + 4.0 * 0.4 / 0.45)
 
 
@@ -278,7 +278,7 @@ def test_lateral_body_radius_of_gyration_below_0_1_m_is_refused(inertia):
 
 def test_lateral_body_of_a_light_twin_is_accepted():
     """2.9 t with 1,700 kg m^2 (k = 0.77 m) is read."""
-    body = read(_with_body(2900.0, 1700.0)).inputs["lateral"].bodies[0]
+    body = read(_with_body(2900.0, 1700.0)).inputs.lateral.bodies[0]
     assert body.radius_of_gyration == pytest.approx(np.sqrt(1700.0 / 2900.0))
 
 
@@ -408,7 +408,7 @@ def test_velocity_step_peak_acceleration_is_written_unbounded():
         row.append(None)
     book["LateralMotions"].append(["jump", "velocity step", None, None, None, None, 1.0])
     study = read(book)
-    result = lateral_run.compute(study)
+    result = lateral_run.run(study)
     runs = lateral_report.runs_table(result)
     for name in ("peak S'' [m/s^2]", "peak S'' [g]"):
         jump = runs[runs["motion id"] == "jump"][name]

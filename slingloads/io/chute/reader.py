@@ -53,7 +53,7 @@ def read(reader, params, study):
     reader : WorkbookReader
     params : slingloads.io.common.parameters.StudyParameters
         Study-sheet parameters (SI, with defaults).
-    study : WorkbookStudy
+    study : Study
         The airframe and the hardpoints by kind already read.
 
     Returns

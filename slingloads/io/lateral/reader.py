@@ -76,7 +76,7 @@ def read(reader, params, study):
     reader : WorkbookReader
     params : slingloads.io.common.parameters.StudyParameters
         Study-sheet parameters (SI, with defaults).
-    study : WorkbookStudy
+    study : Study
         The airframe (mass items, hub) and the loads study if it was built.
 
     Returns

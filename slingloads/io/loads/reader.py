@@ -60,7 +60,7 @@ def read(reader, params, study):
     reader : WorkbookReader
     params : StudyParameters
         Study-sheet parameters (SI, with defaults).
-    study : WorkbookStudy
+    study : Study
         The airframe and the hardpoints by kind already read.
 
     Returns

@@ -69,7 +69,7 @@ def read(reader, params, study):
     ----------
     reader : WorkbookReader
     params : slingloads.io.common.parameters.StudyParameters
-    study : WorkbookStudy
+    study : Study
         The airframe and the hardpoints by kind already read.
 
     Returns
@@ -139,7 +139,7 @@ def read_system(reader, params, study):
     ----------
     reader : WorkbookReader
     params : StudyParameters
-    study : WorkbookStudy
+    study : Study
         With the airframe and its hardpoints by kind (``study.source.points``).
 
     Returns
