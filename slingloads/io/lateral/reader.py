@@ -112,8 +112,8 @@ def read(reader, params, study):
                             step=step if step > 0 else None, output_interval=output,
                             method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2))
     ropes = _ropes(reader)
-    if hasattr(study, "tables"):  # to locate the errors found while computing
-        study.source.tables["LateralRopes"] = reader.table(_SPEC["LateralRopes"])
+    # to locate the errors found while computing
+    study.source.tables["LateralRopes"] = reader.table(_SPEC["LateralRopes"])
     bodies, source = _bodies(reader, study)
     histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
     motions, ids = _motions(reader, histories)
