@@ -105,8 +105,8 @@ def api_system(study):
     fuselage = FuselageAero(hc1.table, ref.fuselage_area, ref.fuselage_length,
                             points["aero_reference"])
     fin = Fin(sample_fin("HC1").table, ref.fin_area, points["fin_cp"], ref.fin_efficiency)
-    chute = Parachute(study.parameters["parachute area"], extended_cd_table(),
-                      line_length=study.parameters["parachute line length"])
+    chute = Parachute(study.source.parameters["parachute area"], extended_cd_table(),
+                      line_length=study.source.parameters["parachute line length"])
     return SlingSystem(RigidBody.from_mass_items(frame.mass_items), frame.hardpoints,
                        Cable(60 * FOOT, 5e6, 0.05), fuselage, (LiftingSurface.from_fin(fin),),
                        HingedParachute(chute, 3.0), airspeed=80 * KNOT)

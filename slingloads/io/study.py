@@ -29,6 +29,8 @@ class WorkbookSource(Source):
     ----------
     path, sha256, input_files, warnings, identification, run_date
         See :class:`~slingloads.runs.study.Source`.
+    parameters : dict
+        The Study parameters given in the workbook, by lower-case name (SI).
     points : dict
         Hardpoints by kind (``fin_cp``, ``aero_reference``...: position or None) [m], and
         ``rows``: the Hardpoints row of each kind.
@@ -44,6 +46,7 @@ class WorkbookSource(Source):
         their values as written.
     """
 
+    parameters: dict = field(default_factory=dict)
     points: dict = field(default_factory=dict)
     cells: dict = field(default_factory=dict)
     written: dict = field(default_factory=dict)
@@ -123,6 +126,7 @@ def _build(reader, path, only, sha256, on_read=None):
     airframe, refs = read_airframe(reader, params)
     source = WorkbookSource(
         path=str(path), sha256=sha256, points=refs,
+        parameters={k: v[0] for k, v in params.given.items()},
         cells={k: v[1] for k, v in params.given.items()},
         written={k: (v.raw, v.unit) for k, v in params.given.items()},
         tables={name: reader.table(AIRFRAME_SHEETS[name]) for name in ("MassItems", "Hardpoints")},
