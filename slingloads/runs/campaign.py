@@ -50,9 +50,14 @@ class CampaignReport:
         Where the run cache is.
     """
 
-    inputs: object
+    inputs: CampaignInputs
     result: object
     cache: str
+
+    def to_frame(self):
+        """Every run of the campaign, one row each: its factors, then its metrics (units in
+        the headers; :attr:`~slingloads.analyses.campaign.CampaignResult.metrics`)."""
+        return self.result.metrics
 
 
 def run(study):

@@ -92,7 +92,7 @@ class ChuteSizingReport:
         Every gust at the Study's 'parachute area', the one the loads use (None if it is 0).
     """
 
-    inputs: object
+    inputs: ChuteSizingInputs
     static: object
     line: object
     sweep: object
@@ -108,6 +108,11 @@ class ChuteSizingReport:
         frame = self.study_area_runs.to_frame()
         i = int(np.argmax(frame["peak beta [deg]"].to_numpy()))
         return float(np.radians(frame["peak beta [deg]"].iloc[i])), str(frame["gust"].iloc[i])
+
+    def to_frame(self):
+        """Every run of the area sweep, one row each (units in the headers); empty when
+        fuselage and fin are already stable (no sweep)."""
+        return self.sweep.to_frame() if self.sweep is not None else pd.DataFrame()
 
     def stability_by_area(self):
         """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""

@@ -82,7 +82,7 @@ class LateralReport:
         None when the recommended angle is 90 deg or more (no hook cone can be built).
     """
 
-    inputs: object
+    inputs: LateralInputs
     study: object
     critical_run: object
     modes: pd.DataFrame
@@ -92,6 +92,11 @@ class LateralReport:
     def recommended_angle(self):
         """[rad]"""
         return self.study.recommended_angle
+
+    def to_frame(self):
+        """Every case of the sweep, one row each: its definition and its metrics (SI, units
+        in the headers; :meth:`~slingloads.analyses.lateral.LateralStudy.to_frame`)."""
+        return self.study.to_frame()
 
     def motion_id(self, index):
         """LateralMotions id of case ``index`` (0-based)."""

@@ -64,11 +64,16 @@ class MultibodyReport:
         Airframe polylines for the views, airframe axes. [m]
     """
 
-    inputs: object
+    inputs: MultibodyInputs
     trim: object
     linear: object
     simulation: object
     outline: dict
+
+    def to_frame(self):
+        """Every manoeuvre, one row each: its verdict and metrics (units in the headers;
+        :meth:`~slingloads.analyses.multibody.Simulation.metrics_frame`)."""
+        return self.simulation.metrics_frame()
 
     def largest_excursion(self):
         """(run, sample index, departure [rad]) of the largest angular departure from its

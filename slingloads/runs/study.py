@@ -46,7 +46,8 @@ FEEDS = {"campaign": ("loads",)}
 def compute_order(names):
     """``names`` in the order to compute them: an analysis that feeds others (its result is
     their input, :data:`FEEDS`) before them, the rest in the order of :data:`ANALYSES`."""
-    names = [n for n in ANALYSES if n in set(names)]
+    names = set(names)
+    names = [n for n in ANALYSES if n in names]
     feeders = [n for n in names if set(FEEDS.get(n, ())) & set(names)]
     return feeders + [n for n in names if n not in feeders]
 
