@@ -418,19 +418,36 @@ def hook_direction_note(result):
             f"lateral directions only).")
 
 
-def towed_note(result):
-    """The towed-case verdict: how many trimmed cables lie outside the hook cone."""
+def towed_outside(result):
+    """The towed-flight cases whose trimmed cable lies outside the hook cone (ids)."""
     towed = result.towed_table()
     if towed.empty:
+        return []
+    return list(towed.loc[towed["inside hook cone"] != "yes", "case"])
+
+
+def _outside_text(outside):
+    """The finding on towed cables outside the hook cone ``outside`` (case ids)."""
+    return (f"OUTSIDE THE HOOK CONE: {', '.join(outside)}: the cone does not cover the cable "
+            "angle reached in towed flight; widen it or restrict the flight envelope.")
+
+
+def towed_note(result):
+    """The towed-case verdict: how many trimmed cables lie outside the hook cone."""
+    if result.towed_table().empty:
         return "No towed-flight equilibrium case (no aerodynamic point or parachute, or off)."
-    outside = towed[towed["inside hook cone"] != "yes"]
+    outside = towed_outside(result)
     rule = ("Cable angle from the vertical at Nz and at 1 g (the steady trail angle), judged "
             "at the larger against the cone's inclination at the cable's azimuth.")
-    if outside.empty:
+    if not outside:
         return f"{rule} Every trimmed cable lies inside the hook cone."
-    return (f"{rule} OUTSIDE THE HOOK CONE: {', '.join(outside['case'])}: the cone does not "
-            "cover the cable angle reached in towed flight; widen it or restrict the flight "
-            "envelope.")
+    return f"{rule} {_outside_text(outside)}"
+
+
+def closure_passes(result):
+    """Whether every case closes: its largest |residual| (force or moment) within
+    :data:`~slingloads.analyses.loads.CLOSURE_TOLERANCE` x the load scale."""
+    return float(np.abs(result.residual).max()) <= CLOSURE_TOLERANCE * result.residual_scale
 
 
 def closure_table(result):
@@ -439,7 +456,6 @@ def closure_table(result):
     residual = np.abs(result.residual)
     tol = CLOSURE_TOLERANCE * result.residual_scale
     worst = int(np.argmax(residual.max(axis=1)))
-    largest = float(residual.max())
     return pd.DataFrame([
         (f"tolerance: {CLOSURE_TOLERANCE:g} x load scale {result.residual_scale:,.0f} N m "
          "(largest force x max(1 m, airframe length))", tol, tol),
@@ -447,7 +463,7 @@ def closure_table(result):
          float(residual[:, :3].max()), float(residual[:, 3:].max())),
         (f"case with the largest residual: {result.case_ids[worst]}",
          float(residual[worst, :3].max()), float(residual[worst, 3:].max())),
-        ("result: " + ("PASS" if largest <= tol else "FAIL"), np.nan, np.nan),
+        ("result: " + ("PASS" if closure_passes(result) else "FAIL"), np.nan, np.nan),
     ], columns=["check", "force residual [N]", "moment residual [N m]"])
 
 
@@ -827,12 +843,11 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     verdict, evidence = hook_angle_finding(result, findings.get("lateral"),
                                            findings.get("hook angle justification", ""))
     closure = closure_table(result)
-    closure_line = (f"Free-free closure: {closure.iloc[-1]['check'][len('result: '):]} "
+    closure_line = (f"Free-free closure: {'PASS' if closure_passes(result) else 'FAIL'} "
                     f"(largest residual against {CLOSURE_TOLERANCE:g} x the load scale).")
-    towed = towed_note(result)
+    outside = towed_outside(result)
     notes = [verdict, "Evidence: " + evidence,
-             *(["FLAG: towed cables " + towed[towed.index("OUTSIDE"):]] if "OUTSIDE" in towed
-               else []),
+             *(["FLAG: towed cables " + _outside_text(outside)] if outside else []),
              *exceedance_findings(result, findings.get("previous envelope source", "")),
              closure_line]
     summary = [
