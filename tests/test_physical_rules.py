@@ -74,7 +74,7 @@ def test_airspeed_of_200_kt_is_accepted():
     """200 kt itself lies inside the cap."""
     book = small_workbook()
     set_parameter(book, "airspeed EAS", 200.0, "kt")
-    assert read(book).loads.flight.eas == pytest.approx(200.0 * 0.514444, rel=1e-5)
+    assert read(book).inputs.loads.flight.eas == pytest.approx(200.0 * 0.514444, rel=1e-5)
 
 
 # ---- hook load factor -------------------------------------------------------------------
@@ -197,8 +197,8 @@ def test_fuselage_coefficients_on_one_square_foot_are_accepted():
     for row in book["FuselageAero"][1:]:
         row[2:5] = [v * area for v in row[2:5]]
         row[5:8] = [v * area * length for v in row[5:8]]
-    reference = read(small_workbook()).loads.fuselage.loads([0.1], [0.2], 1000.0)
-    loads = read(book).loads.fuselage.loads([0.1], [0.2], 1000.0)
+    reference = read(small_workbook()).inputs.loads.fuselage.loads([0.1], [0.2], 1000.0)
+    loads = read(book).inputs.loads.fuselage.loads([0.1], [0.2], 1000.0)
     for got, want in zip(loads, reference, strict=True):
         np.testing.assert_allclose(got, want, rtol=1e-9)
 
@@ -248,7 +248,7 @@ def test_parachute_table_covers_alpha_zero(rows, ok):
     book = small_workbook()
     book["ParachuteCD"] = [["alpha [deg]", "CD"], *map(list, rows)]
     if ok:
-        assert read(book).loads.parachute is not None
+        assert read(book).inputs.loads.parachute is not None
     else:
         error(book, "ParachuteCD", "A2", "must cover alpha = 0 deg")
 
@@ -303,7 +303,7 @@ def test_values_on_hidden_rows_and_columns_are_flagged(tmp_path):
         wb["MassItems"].column_dimensions["G"].hidden = True
         wb["Study"].row_dimensions[30].hidden = True  # below the last parameter: no value
 
-    warnings = read_study(_saved(tmp_path, edit)).warnings
+    warnings = read_study(_saved(tmp_path, edit)).source.warnings
     assert "sheet 'FinAero': values were read from hidden rows 4-6, 8: a reviewer of the " \
            "workbook does not see them" in warnings, warnings
     assert any(w.startswith("sheet 'MassItems': values were read from hidden column G")
@@ -317,7 +317,7 @@ def test_hidden_sheet_is_flagged(tmp_path):
         wb["Stations"].sheet_state = "hidden"
         wb["Hardpoints"].sheet_state = "veryHidden"
 
-    warnings = read_study(_saved(tmp_path, edit)).warnings
+    warnings = read_study(_saved(tmp_path, edit)).source.warnings
     assert any(w.startswith("sheet 'Stations' is hidden in the workbook") for w in warnings)
     assert any(w.startswith("sheet 'Hardpoints' is very hidden") for w in warnings)
 
@@ -328,7 +328,7 @@ def test_nothing_hidden_gives_no_warning(tmp_path):
     def edit(wb):
         wb["Stations"].row_dimensions[40].hidden = True
 
-    assert read_study(_saved(tmp_path, edit)).warnings == []
+    assert read_study(_saved(tmp_path, edit)).source.warnings == []
 
 
 # ---- a requested analysis without its results ------------------------------------------

@@ -141,8 +141,8 @@ def _build(reader, path, only, sha256, on_read=None):
             study.report = analysis.modules().reader.report_options(params, study)
         if analysis.name in asked and on_read is not None:
             on_read(analysis.name, study)
-    source.input_files = tuple(reader.input_files)
-    source.warnings = (*reader.warnings, *hidden_warnings(reader, read_cells(reader, params)))
+    source.input_files = list(reader.input_files)
+    source.warnings = [*reader.warnings, *hidden_warnings(reader, read_cells(reader, params))]
     return study
 
 

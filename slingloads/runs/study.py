@@ -166,9 +166,9 @@ class Source:
         The file read ("" when built in code).
     sha256 : str
         Digest of that file, hex ("" when built in code).
-    input_files : tuple of pathlib.Path
+    input_files : list of pathlib.Path
         Every file read (the workbook and the CSV files it names): no output may replace one.
-    warnings : tuple of str
+    warnings : list of str
         Implausible but possible inputs, each naming where it is.
     identification : dict
         Free fields printed on the report covers: ``project``, ``document number``,
@@ -179,8 +179,8 @@ class Source:
 
     path: str = ""
     sha256: str = ""
-    input_files: tuple = ()
-    warnings: tuple = ()
+    input_files: list = field(default_factory=list)
+    warnings: list = field(default_factory=list)
     identification: dict = field(default_factory=dict)
     run_date: str = field(default_factory=_now)
 
