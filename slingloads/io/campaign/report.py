@@ -1,8 +1,8 @@
 """The campaign report: an Excel workbook, PNG plots and the histories as Parquet.
 
-:func:`compute` runs the campaign read by :mod:`slingloads.io.campaign.reader` on the executor
-the command line or the workbook asks for (a Dask scheduler, local worker processes), with the
-run cache of :mod:`slingloads.runs.cache`. :func:`write` publishes, all at once or not at
+The campaign is run by :func:`slingloads.runs.campaign.run` (on the executor the command line
+or the workbook asks for, with the run cache of :mod:`slingloads.runs.cache`); this module
+only writes its report. :func:`write` publishes, all at once or not at
 all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-campaign.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*

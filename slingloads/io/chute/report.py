@@ -1,9 +1,9 @@
 """The parachute-sizing report: an Excel workbook and PNG plots (paper sections 3.2-4.2).
 
-:func:`compute` runs the sizing on the inputs read by :mod:`slingloads.io.chute.reader`:
-linearisation of the fuselage and fin yawing moments, neutral static area with its breakdown,
-wake ratio and line length with the carrier-cable check, and the 1-DOF sweep of the parachute
-area over the gust shapes. :func:`write` publishes, all at once or not at all
+The sizing is run by :func:`slingloads.runs.chute_sizing.run` (linearisation of the fuselage
+and fin yawing moments, neutral static area with its breakdown, wake ratio and line length
+with the carrier-cable check, and the 1-DOF sweep of the parachute area over the gust
+shapes); this module only writes its report. :func:`write` publishes, all at once or not at all
 (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-chute.xlsx``, print-ready: sheets *Cover* (identification, input file and its

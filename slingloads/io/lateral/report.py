@@ -1,12 +1,8 @@
 """The lateral-step pendulum report: design angle, its effect on the hook loads, plots.
 
-:func:`compute` runs the study read by :mod:`slingloads.io.lateral.reader` (every motion x
-rope length x body in one vectorised RK4 sweep), re-runs the critical case with
-:func:`scipy.integrate.solve_ivp` for its time histories, computes the natural modes about the
-hanging equilibrium, and, the link to the loads, re-runs the CS-29.865 hook cases at the
-recommended angle and at the 30 deg of CS-29.865
-(:func:`slingloads.analyses.hook_angle.hook_angle_comparison`).
-:func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
+The study is run by :func:`slingloads.runs.lateral.run` (the sweep, the critical case re-run,
+the natural modes and the hook cases at the recommended angle); this module only writes its
+report. :func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-lateral.xlsx``, print-ready: sheets *Cover* (identification, input file and its
   SHA-256, version, sheets, conventions), *Summary* (largest load angle with nominal inputs

@@ -1,8 +1,8 @@
 """The multibody report: trim, linear modes, every manoeuvre's metrics and histories, plots.
 
-:func:`compute` trims the system read by :mod:`slingloads.io.multibody.reader` at its airspeed,
-linearises it about that trim and flies every manoeuvre (all runs integrated together,
-:func:`slingloads.analyses.multibody.simulate`). :func:`write` publishes, all at once or not at
+The model is run by :func:`slingloads.runs.multibody.run` (the trim at its airspeed, the
+linear model about it and every manoeuvre, all runs integrated together); this module only
+writes its report. :func:`write` publishes, all at once or not at
 all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-multibody.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*
