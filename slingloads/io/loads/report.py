@@ -70,6 +70,7 @@ from slingloads.io.common.report import (
     report_unit,
     warning_sections,
 )
+from slingloads.io.common.report_writer import protected_inputs
 from slingloads.io.common.units import unit_label
 from slingloads.io.common.workbook import located
 from slingloads.io.loads.nastran import prepare_nastran
@@ -1029,7 +1030,7 @@ def write(result, out_dir, stem, units, study, figures=None, checks=None):
                                    inputs_digest=input_digest(study),
                                    hull_pairs=options.hull_pairs,
                                    hull_stations=options.hull_stations,
-                                   input_paths=study.source.input_files, info=info,
+                                   input_paths=protected_inputs(study), info=info,
                                    findings=findings,
                                    sfbm_workbook=options.sfbm_workbook,
                                    figures=figures, nastran=nastran, checks=checks,
