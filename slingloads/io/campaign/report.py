@@ -389,8 +389,10 @@ def _figures(report, units):
     for tag, runs, factor, title in sweep_plots(r):
         figs[tag] = (f"Sensitivity, {title}", (plot_sweep, (r, runs, factor, title), {}))
     if r.stability is not None:
+        chosen = r.chosen_area_factor * r.neutral.area
         figs["stability-map"] = ("Stability map", (plot_stability_map,
-                                                   (r.stability, r.neutral.area, units), {}))
+                                                   (r.stability, r.neutral.area, units),
+                                                   {"chosen_area": chosen}))
     if r.no_parachute is not None:
         figs["no-parachute"] = ("Transport without parachute (paper figures 16-18)",
                                 (plot_no_parachute, (r,), {}))
