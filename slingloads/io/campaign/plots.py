@@ -145,7 +145,7 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
     points = stability.points
     altitudes = sorted(points["density altitude [m]"].unique())
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.4)), left=0.7, right=0.1, bottom=0.5,
-                      top=0.35, wspace=0.6, hspace=0.45)
+                      top=0.55, wspace=0.6, hspace=0.45)
     axes = fig.subplots(2, len(altitudes), squeeze=False)
     quantities = (("yaw mode damping ratio [-]", "yaw-mode damping ratio [-]", "viridis"),
                   ("largest real part [1/s]", "largest real part [1/s]", "coolwarm"))
@@ -194,8 +194,8 @@ def plot_no_parachute(result):
     study = result.campaign.no_parachute
     runs = npr.runs
     targets = sorted(runs["ramp target [m/s]"].unique())
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.0 * len(targets) + 0.9)), left=0.7,
-                      right=0.15, bottom=0.5, top=0.3, wspace=0.3, hspace=0.45)
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.0 * len(targets) + 1.1)), left=0.7,
+                      right=0.15, bottom=0.5, top=0.5, wspace=0.6, hspace=0.45)
     axes = fig.subplots(len(targets), 2, squeeze=False, sharex=True)
     for i, target in enumerate(targets):
         for name, t in npr.keys:
@@ -240,8 +240,8 @@ def plot_ramp_gust(runs, ramp_end, gust, title=""):
     ----------
     runs : sequence of (str, pandas.DataFrame)
         Label and time histories (campaign history columns).
-    ramp_end : float
-        Time the ramp ends. [s]
+    ramp_end : float or sequence of float
+        Time(s) the ramps end. [s]
     gust : (float, float)
         Start and end of the gust. [s]
     title : str
@@ -253,7 +253,8 @@ def plot_ramp_gust(runs, ramp_end, gust, title=""):
         axes[0].plot(h["time [s]"], h[YAW], lw=1.0, label=label)
         axes[1].plot(h["time [s]"], h[BETA], lw=1.0, label=label)
     for ax in axes:
-        ax.axvline(ramp_end, color="0.4", ls=":", lw=1.0)
+        for end in np.atleast_1d(ramp_end):
+            ax.axvline(end, color="0.4", ls=":", lw=1.0)
         ax.axvspan(gust[0], gust[1], color="orange", alpha=0.15, lw=0)
         ax.grid(True, alpha=0.4)
         _small(ax)
@@ -261,7 +262,7 @@ def plot_ramp_gust(runs, ramp_end, gust, title=""):
         wind = axes[0].twinx()
         h = runs[0][1]
         wind.plot(h["time [s]"], h["airspeed [m/s]"] / KNOT, color="0.6", lw=0.8, ls="--")
-        wind.set_ylabel("airspeed of the first run [kt]", fontsize=7, color="0.4")
+        wind.set_ylabel(f"airspeed, {runs[0][0]} [kt]", fontsize=7, color="0.4")
         wind.tick_params(labelsize=6, colors="0.4")
     axes[0].set(ylabel="yaw (heading) [deg]",
                 title=f"{title}\nramp ends dotted, gust shaded" if title else
