@@ -446,10 +446,10 @@ def study_boundary(figs, out):
 
     lo, hi = 3.0, 200.0
     mass_needed = np.nan
-    if boundary_with_mass(hi) > 1.4:
+    if not boundary_with_mass(hi) <= 1.4:      # NaN: not stable even at 2.5 x
         for _ in range(8):
             mid = np.sqrt(lo * hi)
-            if boundary_with_mass(mid) > 1.4:
+            if not boundary_with_mass(mid) <= 1.4:
                 hi = mid
             else:
                 lo = mid
@@ -459,6 +459,9 @@ def study_boundary(figs, out):
     fus_needed = ((loc.derivatives["fin"] + 1.4 * a0 * loc.per_area)
                   / -loc.derivatives["fuselage"])
     out["fuselage for 1.4"] = fus_needed
+    r_fin = loc.derivatives["fin"] / -loc.derivatives["fuselage"]
+    loc2 = neutral("HC2", 2.0)
+    r_hc2 = loc2.derivatives["fin"] / -loc2.derivatives["fuselage"]
 
     # figure: boundary against airspeed and the static prediction; sensitivity bars
     fig, ax = figure(height=3.4, cols=2)
@@ -527,8 +530,8 @@ def study_boundary(figs, out):
         + ", ".join(f"{r['static local neutral at trim alpha [x neutral]']:.3f}"
                     for _, r in base.iterrows()),
         NOT, fname,
-        f"The boundary is the static neutral point: the root that crosses zero is {kind} "
-        "(root locus: a weathervane divergence, not an oscillation), and the multibody "
+        f"The boundary is the static neutral point: the root that crosses zero is {kind}, "
+        "a weathervane departure, not an oscillation (root locus), and the multibody "
         "boundary follows the 1-DOF local-slope neutral area at the trimmed angle of attack "
         f"within {np.nanmax(np.abs(gap[:2])):.0%} at 40-80 KEAS (the only inter-axis coupling "
         "that moves it: the trimmed pitch changes the fuselage's Cn slope, the "
@@ -538,17 +541,26 @@ def study_boundary(figs, out):
         f"{qs:.3f} x against {b80:.3f} x), line length 5-20 m, cable 18-100 ft, free "
         f"carrier: within 0.02. Rotor-head drag at the hub ({hub:.3f} x): a force at the "
         "suspension point has no moment about it and leaves the attitude. Canopy mass: "
-        f"30 kg gives {heavy:.3f} x (a real oscillatory coupling of the heavy canopy "
-        "with the yaw); 1.4 x would need about "
-        + (f"{mass_needed:.0f} kg" if np.isfinite(mass_needed) else "more than 200 kg")
+        f"30 kg gives {heavy:.3f} x, again through a real root: its weight droops the line "
+        "(28 deg below the body axis against 10 deg at 3 kg) and pitches the helicopter nose "
+        "up, a static change, not a dynamic coupling; 1.4 x would need "
+        + (f"about {mass_needed:.0f} kg" if np.isfinite(mass_needed) else "more than 200 kg")
         + " of canopy and line, against the model's 3 kg default for a drogue of under "
-        "1 m^2. Line elasticity is not modelled (the paper's line is a rigid element too). "
+        "1 m^2 (an assumption of the model, no source). Line elasticity is not modelled "
+        "(the paper's line is a rigid element too). "
         "What does reach 1.4 x is static: the cut-down fin's effectiveness "
         f"{fin_needed:.2f} of the sample's (a fin sidewash dsigma/dbeta of "
         f"{1 - fin_needed:.2f}; 0.2 gives {side:.3f} x), or a fuselage Cn slope "
         f"{fus_needed:.2f} x the sample's. Fuselage and fin nearly cancel "
-        "(-12.6 and +9.1 kN m/rad at 80 KEAS), so the parachute supplies the small "
-        "difference and the neutral area moves by 3 % for each 1 % of fin effectiveness: "
+        f"({loc.derivatives['fuselage'] / 1e3:.1f} and +{loc.derivatives['fin'] / 1e3:.1f} "
+        "kN m/rad at 80 KEAS, local slopes: ratio r = fin / |fuselage| "
+        f"{r_fin:.2f}), so the parachute supplies the small difference and the neutral area "
+        f"moves by r / (1 - r) = {r_fin / (1 - r_fin):.1f} % for each 1 % of fin "
+        "effectiveness. The data feature is r: HC2 has "
+        f"{r_hc2:.2f}; a UH-60-class fuselage with its fin halved (FACTS s.3, derived: |Cn| "
+        "0.03 and fin |CY| 0.28 at 5 deg, 3.0 m^2 at 9 m) has 1.48, stable without any "
+        "parachute. The nearer r is to 1, the larger the share of any fin or fuselage "
+        "uncertainty in the area: "
         "the paper's '+40 %' is within the uncertainty of a fin 'reduced by about 50 %' "
         "in the multibody model relative to its 1-DOF model, if the two differed in the "
         "fin's (or the fuselage's) data or in the flow the fin sees at the trimmed "
@@ -817,7 +829,21 @@ def study_no_parachute(figs, out):
                 & (grid["fin area factor"] == 1.0)]
     bad100 = g100[g100["largest real part [1/s]"] > 1e-6]["airspeed [kt]"]
     out["np onset"] = onset_speed
-    omega_p = np.sqrt(9.80665 / (60 * FOOT + 1.0))
+    omega_p = np.sqrt(9.80665 / (60 * FOOT + 1.0))    # hub 1.0 m above the CG
+
+    def crossing(per_q, inertia, omega=omega_p):
+        """Airspeed [kt] at which the weathervane frequency sqrt(N_beta / I) meets the
+        pendulum's (sea level; N_beta = per_q x q)."""
+        return omega / np.sqrt(0.5 * 1.225 * per_q / inertia) / KNOT if per_q > 0 else np.nan
+
+    predicted = {fa: crossing(h1[1] + fa * h1[2], h1[3]) for fa in (1.0, 1.5, 2.0, 3.0)}
+    out["np predicted"] = predicted
+    # UH-60-class full tail from FACTS s.3-4 (derived): fuselage |Cn| 0.03 at 5 deg on
+    # S L = 5.5 x 15.43 m^3; fin |CY| 0.28 at 5 deg on 3.0 m^2, 9 m aft; Izz 50,437 kg m^2
+    uh60 = (-0.03 / np.radians(5.0) * 5.5 * 15.43 + 0.28 / np.radians(5.0) * 3.0 * 9.0)
+    uh60_speed = {c: crossing(uh60, 50437.0, np.sqrt(9.80665 / (c * FOOT + 1.72)))
+                  for c in (60.0, 100.0)}
+    out["np uh60"] = (uh60, uh60_speed)
     rows.append(Finding(
         "5.3", "s.5.3, figs 16-18; conclusion 6",
         "without parachute: both convergent at 20 kt, HC1 convergent and HC2 divergent at "
@@ -833,15 +859,27 @@ def study_no_parachute(figs, out):
         "What can change sign with airspeed is dynamic: the weathervane frequency grows with "
         "V (omega^2 = N_beta / I, N_beta ~ q) while the cable pendulum's stays at "
         f"sqrt(g / l) ({omega_p:.2f} rad/s at 60 ft); where they meet, yaw and lateral swing "
-        "coalesce into a growing oscillation (eigenvalues against airspeed). On HC1 at 60 "
+        "coalesce into a growing oscillation (eigenvalues against airspeed; the unstable "
+        "root's frequency is the pendulum's). The crossing speed omega_p / sqrt(rho N'_beta / "
+        "(2 I)) predicts, for HC1 at 60 ft with fin x1, x1.5, x2, x3: "
+        + ", ".join(f"{predicted[k]:.0f}" for k in (1.0, 1.5, 2.0, 3.0))
+        + " kt. On HC1 at 60 "
         "ft it stays just stable to 100 kt (fin x1); with fin x1.5, x2, x3 it opens at "
         + ", ".join(f"{onset_speed.get(k, np.nan):.0f}" for k in (1.5, 2.0, 3.0))
         + " kt, and on the 100 ft cable already with fin x1 at "
         + (f"{bad100.min():.0f}" if not bad100.empty else "-")
         + " kt. The paper's 20-30 kt limit needs that crossing near 25 kt: a stiffer "
-        "full-tail yaw (fin volume over fuselage instability) or a longer cable than the "
-        "samples'. The growth is slow (real parts about 0.01 1/s, doubling in about a "
-        "minute), not the paper's 'rapidly divergent'."))
+        "full-tail yaw for its inertia (fin volume over fuselage instability) or a longer "
+        "cable than the samples'. The data feature is N'_beta / I of the intact tail: "
+        f"the samples' {h1[0] / h1[3] * 1e3:.2f} (HC1) and {h2[0] / h2[3] * 1e3:.2f} (HC2) "
+        "x 1e-3 m^3/(rad kg m^2); a UH-60-class fuselage and fin (FACTS s.3-4: |Cn| 0.03 "
+        "and fin |CY| 0.28 at 5 deg, 3.0 m^2 at 9 m, Izz 50,437 kg m^2; derived) "
+        f"{uh60 / 50437.0 * 1e3:.2f}, whose crossing lies at {uh60_speed[60.0]:.0f} kt on "
+        f"60 ft and {uh60_speed[100.0]:.0f} kt on 100 ft: such published data contradict "
+        "a 20-30 kt limit on a 60 ft cable (about four times that stiffness-to-inertia "
+        "ratio would be needed, the crossing speed scaling as its inverse square root) and "
+        "come near it on longer cables. The growth is slow (real parts about 0.01 1/s, "
+        "doubling in about a minute), not the paper's 'rapidly divergent'."))
     rows.append(Finding(
         "5.2", "s.5.2, fig 15", "frontal wind ramp from 0 to 20-80 kt (low acceleration)",
         "ramp to 20, 40, 60, 80 kt", "ramps 0.5 m/s^2 to 20, 30, 40, 60, 80 kt; the ramp and "
@@ -910,7 +948,7 @@ def study_loads(figs, out):
         f"{by_speed} deg (trim alone {base['hub load from mast at trim [deg]'].iloc[-1]:.1f} "
         "deg at 100 KEAS)",
         PARTLY, name,
-        "Axial to within a few degrees at 40-60 KEAS; not at 80-100 KEAS, because the "
+        "Axial to within 7 deg at 40-60 KEAS; not at 80-100 KEAS, because the "
         "fuselage without tailplane trims nose down "
         f"({base['pitch [deg]'].iloc[-1]:.0f} deg at 100 KEAS) while the cable stays near "
         "the vertical (the hub lies above the CG on the mast axis, so the hanging vertical is "
