@@ -246,8 +246,8 @@ def plot_ramp_gust(runs, ramp_end, gust, title=""):
         Start and end of the gust. [s]
     title : str
     """
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.6)), left=0.7, right=0.7, bottom=0.5,
-                      top=0.45, hspace=0.12)
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.8)), left=0.7, right=0.7, bottom=0.5,
+                      top=0.75, hspace=0.12)
     axes = fig.subplots(2, 1, sharex=True)
     for label, h in runs:
         axes[0].plot(h["time [s]"], h[YAW], lw=1.0, label=label)
