@@ -228,7 +228,7 @@ def study_static(figs, out):
                          "fin dN/dbeta [N m/rad]": res.derivatives["fin"]})
     table = pd.DataFrame(rows)
     base = {n: neutral(n, 10.0) for n in ("HC1", "HC2")}
-    fig, ax = figure(height=3.0, cols=3)
+    fig, ax = figure(height=3.4, cols=3)
     for j, name in enumerate(("HC1", "HC2")):
         res = base[name]
         beta = np.degrees(res.beta)
@@ -238,8 +238,9 @@ def study_static(figs, out):
                 ax[0, j].plot(beta, res.moments[part] / 1e3, style, label=part)
         ax[0, j].axhline(0, color="0.5", lw=0.6)
         ax[0, j].set(xlabel="sideslip beta [deg]", ylabel="yawing moment N [kN m]",
-                     title=f"{name}: moments at the neutral area\n"
-                           f"({res.area:.3f} m^2, +-10 deg fit), 80 KEAS")
+                     title=f"{name} at its neutral area\n{res.area:.3f} m^2 "
+                           "(+-10 deg fit), 80 KEAS")
+        ax[0, j].title.set_fontsize(8)
         ax[0, j].grid(alpha=0.4)
         ax[0, j].legend(fontsize=6)
         sub = table[table["helicopter"] == name]
@@ -248,7 +249,8 @@ def study_static(figs, out):
     ax[0, 2].axvline(10, color="0.5", ls=":")
     ax[0, 2].set(xlabel="least-squares half-range [deg]",
                  ylabel="neutral area / +-10 deg one [-]",
-                 title="definition of the neutral area\n(+-2 deg: the local slope)")
+                 title="neutral area against the fit\n(+-2 deg: the local slope)")
+    ax[0, 2].title.set_fontsize(8)
     ax[0, 2].grid(alpha=0.4)
     ax[0, 2].legend(fontsize=7)
     for a in ax.flat:
@@ -338,7 +340,9 @@ def study_one_dof(figs, out):
             ax[0, j].plot(h.time, np.degrees(h.beta[k]), lw=1, label=label)
             ax[1, j].plot(h.time, np.degrees(h.psi[k]), lw=1, label=label)
         ax[0, j].set(ylabel="sideslip beta [deg]",
-                     title=f"{name}, 80 KIAS ISA SL, 30 ft/s 10 s gust at 30 s")
+                     title=f"paper figure 7: {name}, 80 KIAS ISA SL,\n"
+                           "30 ft/s 10 s lateral gust at 30 s (1-DOF)")
+        ax[0, j].title.set_fontsize(8)
         ax[1, j].set(ylabel="yaw psi [deg]", xlabel="time [s]")
         for a in ax[:, j]:
             a.grid(alpha=0.4)
