@@ -841,7 +841,10 @@ def study_no_parachute(figs, out):
         a.axhline(0, color="r", lw=0.8)
         a.axvspan(20, 30, color="orange", alpha=0.15, lw=0)
         a.set(xlabel="airspeed [kt]", ylabel="largest real part [1/s]",
-              title=f"{name} full tail, no parachute (paper's limit 20-30 kt shaded)")
+              title=f"{name} full tail, no parachute, "
+                    f"{sample_reference(name).mass:.0f} kg, ISA SL,\nfrozen carrier "
+                    "(the paper's limit 20-30 kt shaded)")
+        a.title.set_fontsize(8)
         a.legend(fontsize=6)
         a.grid(alpha=0.4)
         a.tick_params(labelsize=7)
@@ -985,9 +988,12 @@ def study_loads(figs, out):
                   label="campaign runs, max from hanging vertical")
     ax[0, 0].axhline(30, color="r", ls="--", lw=0.8, label="CS 29.865 30 deg")
     ax[0, 0].set(xlabel="airspeed [KEAS]", ylabel="hub load angle [deg]",
-                 title=f"HC1 at {chosen:.3g} x neutral: hub load direction")
+                 title=f"HC1 at {chosen:.3g} x neutral, 2900 kg, ISA SL, cable 60 ft,\n"
+                       "frozen carrier (runs: every condition): hub load direction")
     ax[0, 1].set(xlabel="airspeed [KEAS]", ylabel="trimmed pitch [deg]",
                  title="trimmed pitch (nose down < 0)")
+    for a in ax.flat:
+        a.title.set_fontsize(8)
     for a in ax.flat:
         a.legend(fontsize=6)
         a.grid(alpha=0.4)
