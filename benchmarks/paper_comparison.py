@@ -890,7 +890,8 @@ def study_no_parachute(figs, out):
 
     lim = out["np limits"]
     lim_text = "; ".join(f"{r['helicopter']}: largest convergent ramp "
-                         f"{r['largest convergent ramp [kt]']:.0f} kt"
+                         + (f"{r['largest convergent ramp [kt]']:.0f} kt"
+                            if np.isfinite(r["largest convergent ramp [kt]"]) else "none")
                          + (f", first failing {r['first non-convergent ramp [kt]']:.0f} kt "
                             f"({r['its verdict']})" if np.isfinite(
                                 r['first non-convergent ramp [kt]']) else
