@@ -531,6 +531,7 @@ def study_boundary(figs, out):
 
     gap = (base["multibody boundary [x neutral]"].to_numpy()
            / base["static local neutral at trim alpha [x neutral]"].to_numpy() - 1.0)
+    static100 = base["static local neutral at trim alpha [x neutral]"].iloc[-1]
     heavy = at80[at80["variant"].str.startswith("canopy mass")][
         "multibody boundary [x neutral]"].iloc[0]
     qs = at80[at80["variant"].str.startswith("quasi")]["multibody boundary [x neutral]"].iloc[0]
@@ -552,10 +553,14 @@ def study_boundary(figs, out):
         f"The boundary is the static neutral point: the root that crosses zero is {kind}, "
         "a weathervane departure, not an oscillation (root locus), and the multibody "
         "boundary follows the 1-DOF local-slope neutral area at the trimmed angle of attack "
-        f"within {np.nanmax(np.abs(gap[:2])):.0%} at 40-80 KEAS (the only inter-axis coupling "
-        "that moves it: the trimmed pitch changes the fuselage's Cn slope, the "
-        "(1 - 0.5 sin^2 alpha) of the generic table, which is why it falls to 1.0 x at "
-        "100 KEAS where the fuselage trims about 25 deg nose down). The candidate "
+        f"within {np.nanmax(np.abs(gap[:-1])):.0%} up to 80 KEAS. The inter-axis coupling "
+        "that moves it is the trimmed pitch: nose down, the fuselage's Cn slope weakens (the "
+        "(1 - 0.5 sin^2 alpha) of the generic table), which is why the boundary falls to "
+        "1.0 x at 100 KEAS where the fuselage trims about 25 deg nose down; there the 1-DOF "
+        f"model at the trimmed alpha ({static100:.2f} x) "
+        "no longer describes the pitched geometry (fin and attachment arms about the "
+        "vertical, the line along the flow), but the root that crosses is still real. The "
+        "candidate "
         "couplings at 80 KEAS (table below): hinge dynamics (quasi-static canopy "
         f"{qs:.3f} x against {b80:.3f} x), line length 5-20 m, cable 18-100 ft, free "
         f"carrier: within 0.02. Rotor-head drag at the hub ({hub:.3f} x): a force at the "
