@@ -507,24 +507,21 @@ def study_boundary(figs, out):
         a.tick_params(labelsize=7)
     fname = figs.save(fig, "boundary.png")
 
-    # root locus against area at 80 KEAS and 100 KEAS
-    loci = []
-    for v in (80.0, 100.0):
-        sysv = hc_system("HC1", a0, airspeed=v * KNOT)
-        for f in np.linspace(0.6, 2.0, 15):
-            _, lm = linear_point(with_area(sysv, f * a0))
-            if lm is None:
-                continue
-            lam = lm.eigenvalues[lm.eigenvalues.imag >= -1e-9]
-            lam = lam[np.argsort(-lam.real)][:5]
-            loci += [{"airspeed [KEAS]": v, "area factor [-]": f, "real [1/s]": z.real,
-                      "imag [rad/s]": z.imag} for z in lam]
-    loci = pd.DataFrame(loci)
-    fig = plot_root_locus(loci[loci["airspeed [KEAS]"] == 80.0],
+    # root locus against area at 80 KEAS and 100 KEAS (the stability map's own loci)
+    from slingloads.analyses.campaign import CampaignSetup, MapSettings, stability_map
+
+    grid = stability_map(
+        CampaignSetup(hc_system("HC1", a0)), a0,
+        MapSettings(tuple(np.round(np.linspace(0.6, 2.0, 15), 3)), (80 * KNOT, 100 * KNOT),
+                    (0.0,), refine=False),
+        {"run": "locus", "mass case": "maximum", "mass [kg]": 2900.0,
+         "cable length [m]": 60 * FOOT, "carrier": "frozen"})
+    loci = grid.loci.assign(**{"airspeed [KEAS]": grid.loci["airspeed EAS [m/s]"] / KNOT})
+    fig = plot_root_locus(loci[np.isclose(loci["airspeed [KEAS]"], 80.0)],
                           "HC1, 80 KEAS, ISA SL, 2900 kg, cable 60 ft, frozen carrier:\nthe five "
                           "least-damped roots, area 0.6-2.0 x neutral")
     locus = figs.save(fig, "root-locus.png")
-    crossing = loci[(loci["airspeed [KEAS]"] == 80.0) & (loci["real [1/s]"] > 1e-6)]
+    crossing = loci[np.isclose(loci["airspeed [KEAS]"], 80.0) & (loci["real [1/s]"] > 1e-6)]
     kind = ("real (aperiodic: a static divergence)" if not crossing.empty and
             (crossing["imag [rad/s]"].abs() < 1e-6).all() else "oscillatory")
     out["unstable kind"] = kind

@@ -119,7 +119,8 @@ def test_report_files_and_readback(tiny):
     for name in ("Summary", "Matrix", "Metrics", "Selection", "NeutralArea", "Sensitivity",
                  "StabilityMap", "NoParachute", "LoadsHandoff", "Plots"):
         assert name in sheets
-    for tag in ("selection", "sensitivity-parachute-area", "stability-map", "no-parachute"):
+    for tag in ("selection", "sensitivity-parachute-area", "stability-map", "root-locus",
+                "no-parachute"):
         assert (out / f"tiny-campaign-{tag}.png").stat().st_size > 1000
     api = run_campaign(read_study(path).inputs["campaign"].campaign, store=MemoryStore())
     report = _blocks(out / "tiny-campaign.xlsx", "Metrics")
