@@ -119,7 +119,8 @@ def test_report_files_and_readback(tiny):
     for name in ("Summary", "Matrix", "Metrics", "Selection", "NeutralArea", "Sensitivity",
                  "StabilityMap", "NoParachute", "LoadsHandoff", "Plots"):
         assert name in sheets
-    for tag in ("selection", "sensitivity-parachute-area", "stability-map", "no-parachute"):
+    for tag in ("selection", "sensitivity-parachute-area", "stability-map", "root-locus",
+                "no-parachute"):
         assert (out / f"tiny-campaign-{tag}.png").stat().st_size > 1000
     api = run_campaign(read_study(path).inputs.campaign.campaign, store=MemoryStore())
     report = _blocks(out / "tiny-campaign.xlsx", "Metrics")
@@ -228,7 +229,7 @@ def _bad(tmp_path, capsys, edits, fragments, args=(), extra=None, cell_of=None):
     ("campaign airspeeds EAS", "60, fast", "every value must be a number"),
     ("campaign manoeuvres", "free response, loop", "unknown manoeuvre; valid values are"),
     ("campaign carriers", "tethered", "unknown carrier; valid values are ['frozen', 'free']"),
-    ("campaign cable lengths", "18", "could reach the carrier"),
+    ("campaign cable lengths", "40", "could reach the carrier"),
     ("campaign no-parachute helicopters", "HC9", "unknown helicopter"),
     ("campaign minimum yaw damping", 1.5, "must be < 1 (allowed: in [0, 1))"),
     ("campaign loads margin", 0.8, "must be >= 1"),

@@ -205,31 +205,32 @@ def test_hub_below_the_cg_is_named_at_the_hub_z():
 
 def test_multibody_cable_too_short_in_feet():
     """A multibody cable the parachute could reach: the cable as written with its unit, the
-    reach in feet (before: 'value 10' without [ft])."""
+    reach in feet (before: 'value 40' without [ft]). 40 ft lies within the line's reach,
+    from the fin's 21 ft aft of the hub to 48.77 ft (line plus hub-to-attachment distance)."""
     book = us_dynamics_book()
-    set_parameter(book, "multibody cable length", 10, "ft")
+    set_parameter(book, "multibody cable length", 40, "ft")
     error(book, "Study", study_cell(book, "multibody cable length"),
-          "the parachute could reach the carrier", "reach 48.77 ft", "carrier cable (10 ft)",
-          "value 10 [ft]")
+          "the parachute could reach the carrier", "to 48.77 ft", "carrier cable (40 ft)",
+          "value 40 [ft]")
 
 
 def test_campaign_run_cable_too_short_in_feet():
-    """A CampaignRuns cable the parachute could reach: at its cell, 18 ft as written (before:
-    'value 5.486400000000001')."""
+    """A CampaignRuns cable the parachute could reach: at its cell, 40 ft as written (before:
+    'value 12.192')."""
     book = us_dynamics_book()
     set_parameter(book, "campaign matrix", "listed rows")
-    book["CampaignRuns"][2][4] = 18.0
+    book["CampaignRuns"][2][4] = 40.0
     error(book, "CampaignRuns", "E3", "the parachute could reach the carrier",
-          "carrier cable (18 ft)", "value 18.0 [ft]", absent=("5.486",))
+          "carrier cable (40 ft)", "value 40.0 [ft]", absent=("12.19",))
 
 
 def test_campaign_list_cable_too_short_in_feet():
     """The same for a value of the 'campaign cable lengths' list: the list as written, the
     offending length in feet."""
     book = us_dynamics_book()
-    set_parameter(book, "campaign cable lengths", "60, 18", "ft")
-    error(book, "Study", study_cell(book, "campaign cable lengths"), "carrier cable (18 ft)",
-          "value '60, 18' [ft]")
+    set_parameter(book, "campaign cable lengths", "60, 40", "ft")
+    error(book, "Study", study_cell(book, "campaign cable lengths"), "carrier cable (40 ft)",
+          "value '60, 40' [ft]")
 
 
 @pytest.mark.parametrize("row, column, value, cell, fragment", [
@@ -332,8 +333,8 @@ GENERIC = [
      ("value 10.0 [in]", " in above the hub along the mast")),
     ("chute forward of hub", _chute_forward_of_hub, "Hardpoints", "C5",
      ("value 100.0 [in]", "hub is at x = 122.05 in (C2)")),
-    ("multibody cable", _parameter("multibody cable length", 3, "m"), "Study", None,
-     ("[m]", "reach 14.87 m")),
+    ("multibody cable", _parameter("multibody cable length", 12, "m"), "Study", None,
+     ("[m]", "to 14.87 m")),
 ]
 
 

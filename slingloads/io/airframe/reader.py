@@ -29,6 +29,7 @@ from slingloads.models.aerodynamics import (
     fuselage_columns,
 )
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
+from slingloads.models.multibody.parachute_line import line_reach
 from slingloads.models.parachute import PARACHUTE_AXES, PARACHUTE_CD_MAX, Parachute
 
 _SPEC = {s.name: s for s in SHEETS}
@@ -545,9 +546,11 @@ def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
 
 def parachute_reach_rule(reader, params, refs, hardpoints, line, cable, unit):
     """The rule a carrier cable of ``cable`` [m] breaks when the parachute could reach the
-    carrier (its line plus the distance from the hub to its attachment not less than the
-    cable), in the cable's ``unit`` (as the user wrote it) and naming the cells the reach
-    comes from; None when the cable is long enough.
+    carrier (the cable's length within the distances from the hub that the line and canopy
+    reach, streaming aft of their attachment or hanging below it:
+    :func:`~slingloads.models.multibody.parachute_line.line_reach`), in the cable's ``unit``
+    (as the user wrote it) and naming the cells the reach comes from; None when the cable is
+    clear of them.
 
     Parameters
     ----------
@@ -563,15 +566,16 @@ def parachute_reach_rule(reader, params, refs, hardpoints, line, cable, unit):
     unit : str
         Unit of the cable length as written.
     """
-    arm = float(np.linalg.norm(hardpoints.chute - hardpoints.hub))
-    reach = line + arm
-    if reach < cable:
+    near, far = line_reach(hardpoints.hub, hardpoints.chute, line)
+    if not near <= cable <= far:
         return None
     hp_t = reader.table(_SPEC["Hardpoints"])
     rows = [refs["rows"]["hub"][0], refs["chute_row"]]
     cells = " and ".join(f"{hp_t.cell('x', r)}:{hp_t.cell('z', r)}" for r in rows)
     return (f"the parachute could reach the carrier: its line ('parachute line length' "
-            f"{params.quantity('parachute line length', line)}) plus the distance from the hub "
-            f"to its attachment ({quantity(arm, unit, 'length')}, Hardpoints {cells}) reach "
-            f"{quantity(reach, unit, 'length')} from the hub, not less than the carrier cable "
-            f"({quantity(cable, unit, 'length')}); lengthen the cable (or shorten the line)")
+            f"{params.quantity('parachute line length', line)}) from its attachment "
+            f"(Hardpoints {cells}), streaming aft or hanging, reaches from "
+            f"{quantity(near, unit, 'length')} to {quantity(far, unit, 'length')} from the "
+            f"hub, and the carrier cable ({quantity(cable, unit, 'length')}) lies in that "
+            f"range; lengthen the cable beyond {quantity(far, unit, 'length')} (or shorten "
+            f"the line)")

@@ -310,20 +310,44 @@ def sweep_plots(result):
     return out
 
 
+def _locus(result):
+    """(loci, title) of the stability map's least-damped roots at its highest airspeed and
+    first density altitude, or None without them."""
+    loci = getattr(result.stability, "loci", None)
+    if loci is None or loci.empty:
+        return None
+    speed = loci["airspeed EAS [m/s]"].max()
+    altitude = loci["density altitude [m]"].iloc[0]
+    sel = loci[np.isclose(loci["airspeed EAS [m/s]"], speed)
+               & np.isclose(loci["density altitude [m]"], altitude)]
+    c = result.stability.condition
+    title = (f"{speed / KNOT:.0f} KEAS, {altitude / FOOT:.0f} ft HD, mass {c['mass case']} "
+             f"{c['mass [kg]']:.0f} kg, cable {c['cable length [m]'] / FOOT:.0f} ft, carrier "
+             f"{c['carrier']}:\nleast-damped roots, area {sel['area factor [-]'].min():.3g}-"
+             f"{sel['area factor [-]'].max():.3g} x neutral")
+    return (sel, title)
+
+
 def _figures(report, units):
     """The figures to draw: ``{tag: (title, (plot function, args, kwargs))}``."""
-    (plot_envelope, plot_no_parachute, plot_selection, plot_stability_map,
+    (plot_envelope, plot_no_parachute, plot_root_locus, plot_selection, plot_stability_map,
      plot_sweep) = (  # matplotlib loads where they are drawn
         plot_function("slingloads.io.campaign.plots", name)
-        for name in ("plot_envelope", "plot_no_parachute", "plot_selection",
-                     "plot_stability_map", "plot_sweep"))
+        for name in ("plot_envelope", "plot_no_parachute", "plot_root_locus",
+                     "plot_selection", "plot_stability_map", "plot_sweep"))
     r = report.result
     figs = {"selection": ("Parachute selection", (plot_selection, (r, units), {}))}
     for tag, runs, factor, title in sweep_plots(r):
         figs[tag] = (f"Sensitivity, {title}", (plot_sweep, (r, runs, factor, title), {}))
     if r.stability is not None:
+        chosen = r.chosen_area_factor * r.neutral.area
         figs["stability-map"] = ("Stability map", (plot_stability_map,
-                                                   (r.stability, r.neutral.area, units), {}))
+                                                   (r.stability, r.neutral.area, units),
+                                                   {"chosen_area": chosen}))
+        locus = _locus(r)
+        if locus is not None:
+            figs["root-locus"] = ("Root locus against the parachute area",
+                                  (plot_root_locus, locus, {}))
     if r.no_parachute is not None:
         figs["no-parachute"] = ("Transport without parachute (paper figures 16-18)",
                                 (plot_no_parachute, (r,), {}))
