@@ -381,7 +381,7 @@ IO = Path(__file__).resolve().parents[1] / "slingloads" / "io"
 
 
 def _cell_locations(path):
-    """Calls of the bare function ``located`` (slingloads.io.common.workbook's) given a cell
+    """Calls of the bare function ``located`` (slingloads.io.common.table's) given a cell
     (a third positional argument or ``cell=``), as ``(line, source)``."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
     for node in ast.walk(tree):

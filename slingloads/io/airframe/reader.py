@@ -17,7 +17,7 @@ from slingloads.io.airframe.schema import HARDPOINT_KINDS, PLATE_FORCE_COEFFICIE
 from slingloads.io.common.atomic import safe_file_part
 from slingloads.io.common.locate import column_quantity, quantity, quantity_range
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import cell_name, check_unique, located
+from slingloads.io.common.table import cell_name, check_unique, located
 from slingloads.limits import MAX_AIRFRAME_SIZE
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import (

@@ -36,8 +36,9 @@ from slingloads.io.campaign.schema import (
 )
 from slingloads.io.common.locate import at_cell, at_row
 from slingloads.io.common.schema import STUDY_SHEET, TEXT
+from slingloads.io.common.table import cell_name, located
 from slingloads.io.common.units import si_factor
-from slingloads.io.common.workbook import cell_name, check_quantity, located, number_from_text
+from slingloads.io.common.values import check_quantity, number_from_text
 from slingloads.limits import (
     MAX_CAMPAIGN_RUN_STEPS,
     MAX_CAMPAIGN_RUNS,

@@ -27,7 +27,7 @@ from slingloads.io.chute.schema import (
 )
 from slingloads.io.common.locate import column_quantity
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import located
+from slingloads.io.common.table import located
 from slingloads.limits import (
     MAX_CHUTE_REFERENCE_RUNS,
     MAX_CHUTE_RUN_STEPS,

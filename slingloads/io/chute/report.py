@@ -56,8 +56,8 @@ from slingloads.io.common.report import (
     sample_rows,
     warning_sections,
 )
+from slingloads.io.common.table import located
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 
 ANALYSIS = "chute sizing"
 #: PNG files written, by tag: ``<stem>-chute-<tag>.png``.

@@ -9,7 +9,7 @@ from, and at a cell the message must echo that cell's value as written, with the
 header or unit cell, never the model's number. The context managers here do that:
 
 * :func:`at_cell`: at a cell whose value as written the caller gives;
-* :func:`at_row`: at a cell of a :class:`~slingloads.io.common.workbook.Table`, the column
+* :func:`at_row`: at a cell of a :class:`~slingloads.io.common.table.Table`, the column
   chosen by the error's ``field`` (a model argument) when it names one;
 * :meth:`slingloads.io.common.parameters.StudyParameters.at`: at a Study parameter's cell.
 
@@ -17,7 +17,7 @@ An error about a quantity derived from several cells (the reach of a parachute, 
 the mass items) is not a value of any one cell: the reader states it in the user's unit
 (:func:`quantity`) and names the cells it comes from, and puts the error at the cell to change.
 
-:func:`slingloads.io.common.workbook.located` puts an error in a file or sheet without a cell;
+:func:`slingloads.io.common.table.located` puts an error in a file or sheet without a cell;
 with a cell it keeps the error's own value, so readers use it with a cell only for errors
 whose value is the cell's text (a unit), and tests/test_located_errors.py checks that no
 reader uses it otherwise.

@@ -29,7 +29,7 @@ from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import at_cell, at_row, column_quantity
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.common.table import check_unique, located
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
     MIN_ROLL_GYRATION,

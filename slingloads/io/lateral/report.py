@@ -67,8 +67,8 @@ from slingloads.io.common.report import (
     sample_rows,
     warning_sections,
 )
+from slingloads.io.common.table import located
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 
 ANALYSIS = "lateral"
 #: The peak hook acceleration of a velocity step, as the Runs sheet writes it (its note says

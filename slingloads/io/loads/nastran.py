@@ -44,7 +44,7 @@ from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.locate import at_cell
 from slingloads.io.common.report import digest_frame
-from slingloads.io.common.workbook import located
+from slingloads.io.common.table import located
 
 #: Inertia-relief set-ups of the deck.
 INERTIA_RELIEF = ("accelerations", "inrel")

@@ -39,7 +39,7 @@ from slingloads.io.airframe.reader import (
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import at_row, column_quantity
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.common.table import check_unique, located
 from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
 from slingloads.io.loads.schema import SHEETS
 from slingloads.limits import MAX_CASE_POINTS, MAX_LOAD_CASES, MAX_SFBM_ROWS

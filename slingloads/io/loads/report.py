@@ -70,8 +70,8 @@ from slingloads.io.common.report import (
     report_unit,
     warning_sections,
 )
+from slingloads.io.common.table import located
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
 

@@ -30,7 +30,7 @@ from slingloads.io.airframe.reader import (
 )
 from slingloads.io.common.locate import at_row
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import located
+from slingloads.io.common.table import located
 from slingloads.io.multibody.schema import (
     CANOPY_TABLES,
     CARRIERS,

@@ -55,8 +55,8 @@ from slingloads.io.common.report import (
     split_unit,
     warning_sections,
 )
+from slingloads.io.common.table import located
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 from slingloads.io.multibody.figure_data import history_panels, view_points
 
 ANALYSIS = "multibody"
