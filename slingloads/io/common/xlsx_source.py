@@ -26,15 +26,25 @@ are left out. :class:`_MemorySource` yields the same from rows given in memory (
 from __future__ import annotations
 
 import contextlib
+import os
 import pyexpat
 import re
+import stat
 import warnings
+import zipfile
 from xml.etree.ElementTree import iterparse
 
 from openpyxl.utils import column_index_from_string
 from openpyxl.worksheet._reader import _cast_number
 
-from slingloads.limits import MAX_SHEET_ELEMENTS
+from slingloads.errors import InputError
+from slingloads.limits import (
+    MAX_PART_BYTES,
+    MAX_SHEET_ELEMENTS,
+    MAX_UNCOMPRESSED_BYTES,
+    MAX_WORKBOOK_BYTES,
+    MAX_ZIP_MEMBERS,
+)
 
 #: Excel's sheet size [rows, columns].
 EXCEL_ROWS, EXCEL_COLUMNS = 1_048_576, 16_384
@@ -371,3 +381,73 @@ def _why(err):
     if isinstance(err, OSError) and err.strerror:
         return err.strerror
     return f"{type(err).__name__}: {str(err)[:200]}"
+
+
+def check_file(path, file):
+    """Refuse a workbook ``path`` (named ``file`` in messages) that is not a readable regular
+    file with an ``.xlsx`` (or ``.xlsm``) suffix of at most
+    :data:`~slingloads.limits.MAX_WORKBOOK_BYTES`."""
+    try:
+        info = os.stat(path)
+    except (FileNotFoundError, NotADirectoryError):
+        raise InputError("input workbook not found", file, file=file) from None
+    except (OSError, ValueError) as err:
+        raise InputError(f"cannot open the input workbook ({_why(err)})", file,
+                         file=file) from None
+    if stat.S_ISDIR(info.st_mode):
+        raise InputError("the input is a folder, not an .xlsx workbook", file,
+                         file=file)
+    if not stat.S_ISREG(info.st_mode):
+        raise InputError("the input is not a regular file (a device, pipe or socket)",
+                         file, file=file)
+    if path.suffix.lower() not in (".xlsx", ".xlsm"):
+        raise InputError("input must be an Excel .xlsx workbook (save older .xls files "
+                         "as .xlsx)", path.suffix, file=file)
+    if info.st_size > MAX_WORKBOOK_BYTES:
+        raise InputError(f"workbook refused: {info.st_size:,} bytes, more than the "
+                         f"{MAX_WORKBOOK_BYTES:,} accepted", file=file)
+    try:
+        with open(path, "rb"):
+            pass
+    except OSError as err:
+        raise InputError(f"cannot read the input workbook ({_why(err)})", file,
+                         file=file) from None
+
+
+def check_container(path, file):
+    """Refuse a workbook whose ZIP container has too many parts, a part or a whole that
+    expands beyond its limit (zip bombs), or a worksheet declaring a document type or
+    entities (XML bombs); nothing is decompressed but the worksheets' prologs."""
+    try:
+        with zipfile.ZipFile(path) as archive:
+            infos = archive.infolist()
+            _check_sizes(infos, file)
+            for info in infos:  # every worksheet, read or not: no DTD, no entities
+                if _part_kind(info.filename) == "worksheet":
+                    with archive.open(info) as source:
+                        _check_prolog(source,
+                                      lambda rule, value: InputError(rule, value, file=file))
+    except InputError:
+        raise
+    except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, ValueError, EOFError,
+            NotImplementedError) as err:
+        raise InputError(f"not a workbook: the file is not an .xlsx (zip) container "
+                         f"({str(err)[:200]})", file=file) from None
+
+
+def _check_sizes(infos, file):
+    if len(infos) > MAX_ZIP_MEMBERS:
+        raise InputError(f"workbook refused: {len(infos):,} parts in its container, more "
+                         f"than the {MAX_ZIP_MEMBERS:,} accepted", file=file)
+    total = 0
+    for info in infos:
+        total += info.file_size
+        limit = MAX_PART_BYTES.get(_part_kind(info.filename))
+        if limit is not None and info.file_size > limit:
+            raise InputError(f"workbook refused: its part {info.filename[:100]!r} expands "
+                             f"to {info.file_size:,} bytes, more than the {limit:,} "
+                             "accepted (possible zip bomb)", file=file)
+    if total > MAX_UNCOMPRESSED_BYTES:
+        raise InputError(f"workbook refused: its content expands to {total:,} bytes, more "
+                         f"than the {MAX_UNCOMPRESSED_BYTES:,} accepted (possible zip "
+                         "bomb)", file=file)

@@ -28,6 +28,7 @@ from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import at_cell, at_row, column_quantity
+from slingloads.io.common.referenced import csv_columns
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.table import check_unique, located
 from slingloads.io.lateral.schema import (
@@ -357,8 +358,8 @@ def _histories(reader):
 
 def _csv_history(reader, text, t, i):
     where = (t.sheet, t.cell("history", i))
-    columns = reader.csv_columns(text, *where, {"t": "time", "S": "length"},
-                                 max_rows=MAX_HISTORY_SAMPLES)
+    columns = csv_columns(reader, text, *where, {"t": "time", "S": "length"},
+                          max_rows=MAX_HISTORY_SAMPLES)
     time, s = columns["t"], columns["S"]
     name = text.replace("\\", "/").rsplit("/", 1)[-1]
     if time.size < 2:
