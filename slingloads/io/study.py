@@ -3,18 +3,16 @@
 
 from __future__ import annotations
 
-import contextlib
 import hashlib
 from dataclasses import dataclass, field
 
-from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
 from slingloads.io.common.cover import IDENTIFICATION, now_stamp
 from slingloads.io.common.hidden import hidden_warnings, read_cells
+from slingloads.io.common.locate import StudyCells, located
 from slingloads.io.common.parameters import StudyParameters
-from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.models.airframe import Airframe
 
@@ -113,27 +111,13 @@ class WorkbookStudy:
         """The loads study, or None if the loads analysis was not read."""
         return self.inputs.get("loads")
 
-    @contextlib.contextmanager
     def located(self, fields=None):
         """Locate an :class:`InputError` raised while computing: in this workbook, at the
         Study cell of the parameter ``fields[error.field]`` when there is one, echoing that
-        parameter's value as written with its unit (not the model's value)."""
-        fields = fields or {}
-        try:
-            yield
-        except InputError as err:
-            name = fields.get(err.field)
-            if err.cell is None and err.sheet in (None, STUDY_SHEET) and name is not None:
-                key = name.lower()
-                cell = self.cells.get(key, "(default)")
-                if key in self.written:
-                    value, unit = self.written[key]
-                else:  # the parameter's default
-                    spec = all_parameters()[key]
-                    value, unit = spec.default, spec.unit
-                raise err.located(file=self.path, sheet=STUDY_SHEET, cell=cell, value=value,
-                                  unit=unit or None) from None
-            raise err.located(file=self.path) from None
+        parameter's value as written with its unit (not the model's value); see
+        :func:`slingloads.io.common.locate.located`."""
+        return located(StudyCells(self.path, self.cells, self.written, all_parameters(),
+                                  sheet=None), fields)
 
 
 def file_digest(path):

@@ -37,7 +37,7 @@ from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
-from slingloads.io.common.locate import at_cell
+from slingloads.io.common.locate import Place, located
 from slingloads.io.common.ownership import PARQUET_KEY
 from slingloads.io.common.report import (
     check_units,
@@ -155,7 +155,7 @@ def compute(study):
     total = campaign.size + (len(campaign.no_parachute.jobs()) if campaign.no_parachute else 0)
     store = RunCache(cache_dir)
     written = getattr(study, "written", {}).get("campaign scheduler", (scheduler, None))
-    where = (at_cell(study.path, "Study", inputs.scheduler_cell, written[0])
+    where = (located(Place(study.path, "Study", inputs.scheduler_cell, written[0]))
              if scheduler and not runtime.get("scheduler") else contextlib.nullcontext())
     with where:
         executor = make_executor(scheduler or None, workers, timeout, runs=total)

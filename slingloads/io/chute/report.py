@@ -48,6 +48,7 @@ from slingloads.io.common.figures import (
     start_drawing,
     task_result,
 )
+from slingloads.io.common.locate import located
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -56,7 +57,6 @@ from slingloads.io.common.report import (
     sample_rows,
     warning_sections,
 )
-from slingloads.io.common.table import located
 from slingloads.io.common.units import unit_label
 
 ANALYSIS = "chute sizing"

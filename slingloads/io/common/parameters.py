@@ -10,14 +10,13 @@ cell with the value as the user wrote it and its unit."""
 
 from __future__ import annotations
 
-import contextlib
 from typing import NamedTuple
 
 import numpy as np
 
-from slingloads.errors import InputError
+from slingloads.io.common.locate import Place, StudyCells, located, quantity
 from slingloads.io.common.schema import FLAG, INTEGER, STUDY_SHEET, TEXT
-from slingloads.io.common.table import cell_name, located
+from slingloads.io.common.table import cell_name
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.values import (
     _FORMULA_HINT,
@@ -40,7 +39,6 @@ class ParameterValue(NamedTuple):
     unit: str
 
 
-
 class StudyParameters:
     """Study-sheet parameters with defaults, in SI, and their cells.
 
@@ -58,6 +56,10 @@ class StudyParameters:
         self.reader = reader
         self.specs = specs
         self.given = read_parameters(reader, specs)
+        #: Where an error about a parameter is located: ``located(params, default="fin area")``
+        #: (:func:`slingloads.io.common.locate.located`).
+        self.places = StudyCells(reader.file, {k: v.cell for k, v in self.given.items()},
+                                 {k: (v.raw, v.unit) for k, v in self.given.items()}, specs)
 
     def __call__(self, name):
         key = name.lower()
@@ -121,41 +123,11 @@ class StudyParameters:
         self.check(name, ok, f"{name!r} must be {'>= 0' if allow_zero else '> 0'}")
         return float(value)
 
-    def at(self, name):
-        """Locate an :class:`InputError` a model raises inside (one naming no cell yet) at
-        the cell of parameter ``name``, with its value as typed and its unit in place of the
-        model's SI value (see :mod:`slingloads.io.common.locate`)."""
-        return self.located({}, name)
-
     def quantity(self, name, si_value, kind=None, digits=4):
         """An SI value in the unit of parameter ``name`` as the user wrote it (its default
         unit when the row is absent), for a message: ``"54.3 ft"``."""
-        from slingloads.io.common.locate import quantity
-
         return quantity(si_value, self.unit(name), kind or self.specs[name.lower()].kind,
                         digits)
-
-    @contextlib.contextmanager
-    def located(self, fields, default=None):
-        """Locate an :class:`InputError` a model raises on parameter values.
-
-        Parameters
-        ----------
-        fields : dict
-            Model argument (the error's ``field``) -> parameter name.
-        default : str, optional
-            Parameter whose cell takes an error naming no known field (else the sheet).
-        """
-        try:
-            yield
-        except InputError as err:
-            if err.cell is not None:
-                raise
-            name = fields.get(err.field, default)
-            if name is None:
-                raise err.located(file=self.reader.file, sheet=STUDY_SHEET) from None
-            raise err.located(file=self.reader.file, sheet=STUDY_SHEET, cell=self.where(name),
-                              value=self.raw(name), unit=self.unit(name)) from None
 
 
 def read_parameters(reader, known, sheet=STUDY_SHEET):
@@ -232,7 +204,7 @@ def _parameter_value(reader, spec, raw, unit_text, sheet, r):
                            None, sheet, cell_name(r, 3))
     factor = 1.0
     if spec.kind != INTEGER:
-        with located(reader.file, sheet, cell_name(r, 3)):
+        with located(Place(reader.file, sheet, cell_name(r, 3))):
             factor = si_factor(unit_text, spec.kind)
     return check_quantity(number, raw, spec.kind, factor, unit_text.strip(), spec.bounds,
                           spec.unit, spec.name, reader.error, sheet, where)

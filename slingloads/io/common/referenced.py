@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from slingloads.io.common.table import located
+from slingloads.io.common.locate import Place, located
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.values import _echo, number_from_text
 from slingloads.io.common.xlsx_source import _why
@@ -128,7 +128,7 @@ def csv_columns(reader, text, sheet, cell, columns, max_rows=MAX_CSV_ROWS):
         if not unit:
             raise reader.error(f"CSV {name}: column {head!r} needs a unit in brackets",
                                text, *where)
-        with located(reader.file, *where):
+        with located(Place(reader.file, *where)):
             factors[key] = si_factor(unit, kind)
     data = {key: [] for key in wanted}
     try:

@@ -2,14 +2,15 @@
 each.
 
 What this module guarantees: a :class:`Table` knows, for every value it holds, the cell it
-came from and the value and unit the user wrote there, so that any error about a value
-(:meth:`Table.error`) names that cell and echoes what is written in it, never an SI number
-the user did not type. :func:`check_unique` refuses a repeated id at its second cell.
+came from and the value and unit the user wrote there, so that any error about a value names
+that cell and echoes what is written in it, never an SI number the user did not type: the
+reader's own errors through :meth:`Table.error`, a model's through
+:func:`slingloads.io.common.locate.located`. :func:`check_unique` refuses a repeated id at its
+second cell.
 """
 
 from __future__ import annotations
 
-import contextlib
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -17,15 +18,6 @@ from openpyxl.utils import get_column_letter
 
 from slingloads.errors import InputError
 from slingloads.io.common.values import _FORMULA_HINT, _number_echo
-
-
-@contextlib.contextmanager
-def located(file=None, sheet=None, cell=None):
-    """Fill in the location of any :class:`InputError` raised inside the block."""
-    try:
-        yield
-    except InputError as err:
-        raise err.located(file=file, sheet=sheet, cell=cell) from None
 
 
 def cell_name(row, col):
@@ -102,27 +94,6 @@ class Table:
         """Column ``name``'s header as written (with its unit, when it has one)."""
         unit = self.units.get(name)
         return f"{name} [{unit}]" if unit else name
-
-    @contextlib.contextmanager
-    def located(self, fields=None, cell=None):
-        """Locate an :class:`InputError` a model raises on this table's values.
-
-        An error that names its ``field`` (a model argument) and ``index`` (a record) is put at
-        the cell of the column ``fields[field]`` (default: the column of that name) in that
-        record, with the value as written; any other error at ``cell`` (default: the sheet).
-        """
-        fields = fields or {}
-        try:
-            yield
-        except InputError as err:
-            column = fields.get(err.field, err.field)
-            if (err.cell is None and column in self.cells and err.index is not None
-                    and 0 <= err.index < len(self.cells[column])):
-                value, unit = self.shown(column, err.index)
-                raise err.located(file=self.file, sheet=self.sheet,
-                                  cell=self.cell(column, err.index), value=value,
-                                  unit=unit) from None
-            raise err.located(file=self.file, sheet=self.sheet, cell=cell) from None
 
 
 def check_unique(reader, table, column):

@@ -39,8 +39,9 @@ from pathlib import Path
 from openpyxl.utils import get_column_letter
 
 from slingloads.errors import InputError
+from slingloads.io.common.locate import Place, located, place_error
 from slingloads.io.common.schema import FLAG, INTEGER, NOTE_COLUMNS, TEXT
-from slingloads.io.common.table import Table, cell_name, located
+from slingloads.io.common.table import Table, cell_name
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.values import (
     _FORMULA_HINT,
@@ -212,7 +213,7 @@ class WorkbookReader:
                                          sheet=name, cell=cell_name(r, min(values)))
                 out.append((r, values))
         except InputError as err:
-            raise err.located(file=self.file, sheet=name) from None
+            raise place_error(err, Place(self.file, name)) from None
         except (OSError, zipfile.BadZipFile, EOFError, ValueError, KeyError,
                 SyntaxError) as err:
             # defusedxml refusals are ValueErrors, XML syntax errors SyntaxErrors; a corrupt
@@ -368,7 +369,7 @@ class WorkbookReader:
                     raise self.error(f"header needs a unit in brackets, e.g. "
                                      f"'{column.name} [{column.unit}]'", _echo(text),
                                      spec.name, where)
-                with located(self.file, spec.name, where):
+                with located(Place(self.file, spec.name, where)):
                     factor = si_factor(unit or "", column.kind)
             elif unit is not None and unit.strip() not in ("", "-"):
                 raise self.error(f"column {column.name!r} takes no unit", _echo(text),

@@ -27,10 +27,10 @@ from slingloads.analyses.lateral_damping import (
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
-from slingloads.io.common.locate import at_cell, at_row, column_quantity
+from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
 from slingloads.io.common.referenced import csv_columns
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.table import check_unique, located
+from slingloads.io.common.table import check_unique
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
     MIN_ROLL_GYRATION,
@@ -185,8 +185,8 @@ def _damping(reader, params, study):
     for name, value in (("lateral damping", lateral), ("lateral roll damping", roll)):
         params.check(name, value == 0, f"{name!r} is used only with 'lateral damping source' "
                      "= parameters; leave it 0 with 'aerodynamic tables'")
-    with params.located({"eas": "lateral airspeed EAS",
-                         "density_altitude": "lateral density altitude"}):
+    with located(params, {"eas": "lateral airspeed EAS",
+                          "density_altitude": "lateral density altitude"}):
         condition = FlightCondition(speed, params("lateral density altitude"))
     fuselage = read_fuselage_aero(reader, params, study.points)
     fin = read_fin_aero(reader, params, study.points)
@@ -194,7 +194,7 @@ def _damping(reader, params, study):
         raise params.error("lateral damping source", "'aerodynamic tables' needs a "
                            "FuselageAero or a FinAero sheet", "aerodynamic tables")
     hardpoints = study.airframe.hardpoints
-    with located(reader.file, "FuselageAero" if fuselage is not None else "FinAero"):
+    with located(Place(reader.file, "FuselageAero" if fuselage is not None else "FinAero")):
         return aerodynamic_damping(condition, hardpoints.hub, hardpoints.mast_axis,
                                    fuselage, fin)
 
@@ -274,7 +274,7 @@ def run_case_error(err, study, result):
     name = "lateral history rtol"
     rtol = study.written.get(name, (inputs.solver.rtol, None))[0]
     where = study.cells.get(name, "(default)")
-    return ropes.error("rope length", row, (
+    return place_error(err, find_place(err, ropes, {"rtol": "rope length"}, index=row), (
         f"too much work: the time-history re-run of the critical case (case {k + 1}: body "
         f"{pendulum.body.name!r}, motion {inputs.motion_ids[_motion_index(inputs, motion)]!r}, "
         f"this rope length{spread}) needs more than {err.value:,} solver evaluations (limits "
@@ -303,7 +303,7 @@ def _bodies(reader, study):
                           f"{MIN_ROLL_GYRATION:g} m of a solid cylinder 0.28 m across "
                           "(helicopters: about 1 m): check the inertia, the mass and their "
                           "units")
-        with at_row(t, "mass", i, fields):
+        with located(t, fields, default="mass", index=i):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))
     return tuple(bodies), "LateralBodies"
@@ -351,7 +351,7 @@ def _histories(reader):
                 raise t.error("t", idx[k], f"time-history samples must be at least "
                               f"{MIN_SAMPLE_INTERVAL:g} s apart (previous sample at "
                               f"{t.cell('t', idx[k - 1])})")
-        with at_row(t, "t", idx[0]):
+        with located(t, default="t", index=idx[0]):
             out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
     return out
 
@@ -380,7 +380,7 @@ def _csv_history(reader, text, t, i):
         raise reader.error(f"CSV {name}: a time history may last at most "
                            f"{MAX_MAGNITUDE_TIME_HISTORY:g} s; this one lasts "
                            f"{time[-1] - time[0]:.6g} s", text, *where)
-    with at_cell(reader.file, *where, text):
+    with located(Place(reader.file, *where, written=text)):
         return TimeHistory(time, s, name=f"CSV {name}")
 
 
@@ -439,7 +439,7 @@ def _motions(reader, histories):
                                    "'amplitude', not both nor neither", None, t.sheet,
                                    t.cell("type", i))
             law = STEP_LAWS[kind]
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 if has_acc:
                     motion = law.from_peak_acceleration(
                         need("acceleration", i, kind, nonzero), duration)
@@ -454,11 +454,11 @@ def _motions(reader, histories):
                 raise reader.error(f"a constant acceleration needs 'then' = one of "
                                    f"{list(THEN)}", then,
                                    t.sheet, t.cell("then", i) if t.has("then") else "A1")
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 motion = ConstantAcceleration(rate, duration, then)
         elif kind == "velocity step":
             unused(("acceleration", "duration", "amplitude", "then", "history"), i, kind)
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 motion = VelocityStep(need("delta V", i, kind, nonzero))
         else:
             unused(("acceleration", "duration", "amplitude", "then", "delta V"), i, kind)

@@ -61,6 +61,7 @@ from slingloads.io.common.figures import (
     start_drawing,
     task_result,
 )
+from slingloads.io.common.locate import Place, located
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -70,7 +71,6 @@ from slingloads.io.common.report import (
     report_unit,
     warning_sections,
 )
-from slingloads.io.common.table import located
 from slingloads.io.common.units import unit_label
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
@@ -1004,7 +1004,7 @@ def compute(study):
                          "from dynamics' to no", file=study.path, sheet="Study")
     from slingloads.analyses.campaign import loads_from_dynamics
 
-    with located(study.path, "Study"):
+    with located(Place(study.path, "Study")):
         handoff = loads_from_dynamics(study.loads, campaign.result.envelope,
                                       campaign.inputs.hook_angle_source)
     results["loads handoff"] = handoff

@@ -44,6 +44,7 @@ from slingloads.io.common.figures import (
     task_result,
 )
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
+from slingloads.io.common.locate import located
 from slingloads.io.common.report import (
     check_units,
     column_blocks,
@@ -55,7 +56,6 @@ from slingloads.io.common.report import (
     split_unit,
     warning_sections,
 )
-from slingloads.io.common.table import located
 from slingloads.io.common.units import unit_label
 from slingloads.io.multibody.figure_data import history_panels, view_points
 
