@@ -19,10 +19,10 @@ from slingloads.io.common.schema import FLAG, INTEGER, STUDY_SHEET, TEXT
 from slingloads.io.common.table import cell_name
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.values import (
-    _FORMULA_HINT,
-    _as_text,
-    _echo,
+    FORMULA_HINT,
+    as_text,
     check_quantity,
+    echo,
     parse_flag,
     parse_number,
     parse_text,
@@ -142,46 +142,46 @@ def read_parameters(reader, known, sheet=STUDY_SHEET):
     header = rows[0][1] if rows and rows[0][0] == 1 else {}
     for col, title in enumerate(("parameter", "value", "unit"), start=1):
         got = header.get(col)
-        text = _as_text(got).strip().lower() if got is not None else ""
+        text = as_text(got).strip().lower() if got is not None else ""
         if text != title:
             raise reader.error(f"the {sheet} sheet needs the header 'parameter | value | "
                                f"unit' in row 1; column {col} should be {title!r}",
-                               _echo(got), sheet, cell_name(1, col))
+                               echo(got), sheet, cell_name(1, col))
     out = {}
     for r, row in rows[1:]:
         stray = next((c for c in sorted(row) if c not in header), None)
         if stray is not None:
             raise reader.error("value in a column without a header (give the column a "
-                               "header, e.g. 'notes', or clear the cell)", _echo(row[stray]),
+                               "header, e.g. 'notes', or clear the cell)", echo(row[stray]),
                                sheet, cell_name(r, stray))
         name, raw, unit = row.get(1), row.get(2), row.get(3)
         if name is None:
             if raw is not None or unit is not None:
-                raise reader.error("value without a parameter name", _echo(
+                raise reader.error("value without a parameter name", echo(
                     raw if raw is not None else unit), sheet, cell_name(r, 1))
             continue
-        key = _as_text(name).strip().lower()
+        key = as_text(name).strip().lower()
         if key not in known:
             renamed = next((p for p in known.values()
                             if key in (f.lower() for f in p.former)), None)
             if renamed is not None:
                 raise reader.error(f"parameter renamed: use {renamed.name!r} ({renamed.help})",
-                                   _echo(name), sheet, cell_name(r, 1))
-            raise reader.error(_unknown_parameter(key, known), _echo(name), sheet,
+                                   echo(name), sheet, cell_name(r, 1))
+            raise reader.error(_unknown_parameter(key, known), echo(name), sheet,
                                cell_name(r, 1))
         if key in out:
-            raise reader.error("parameter appears twice", _echo(name), sheet,
+            raise reader.error("parameter appears twice", echo(name), sheet,
                                cell_name(r, 1))
         spec = known[key]
         where = cell_name(r, 2)
-        unit_text = "" if unit is None else _as_text(unit)
+        unit_text = "" if unit is None else as_text(unit)
         if raw is None:
             if spec.kind == TEXT:
                 out[key] = ParameterValue("", where, raw, unit_text)
                 continue
             raise reader.error(f"empty value for parameter {spec.name!r} (delete the row "
                                f"to use the default {spec.default!r} {spec.unit})"
-                               f"{_FORMULA_HINT}", None, sheet, where)
+                               f"{FORMULA_HINT}", None, sheet, where)
         value = _parameter_value(reader, spec, raw, unit_text, sheet, r)
         out[key] = ParameterValue(value, where, raw, unit_text.strip())
     return out
@@ -193,7 +193,7 @@ def _parameter_value(reader, spec, raw, unit_text, sheet, r):
     unit_free = spec.kind in (FLAG, INTEGER) or (spec.kind == TEXT and not spec.unit)
     if unit_free and unit_text.strip() not in ("", "-"):
         raise reader.error(f"parameter {spec.name!r} takes no unit (leave the unit cell "
-                           "empty)", _echo(unit_text), sheet, cell_name(r, 3))
+                           "empty)", echo(unit_text), sheet, cell_name(r, 3))
     if spec.kind == TEXT:
         return parse_text(raw, spec.name, MAX_TEXT_CHARS, reader.error, sheet, where)
     if spec.kind == FLAG:

@@ -22,8 +22,8 @@ import numpy as np
 
 from slingloads.io.common.locate import Place, located
 from slingloads.io.common.units import si_factor
-from slingloads.io.common.values import _echo, number_from_text
-from slingloads.io.common.xlsx_source import _why
+from slingloads.io.common.values import echo, number_from_text
+from slingloads.io.common.xlsx_source import reason_of
 from slingloads.limits import MAX_CSV_BYTES, MAX_CSV_ROWS, MAX_MAGNITUDE, MAX_PATH_CHARS
 
 
@@ -42,9 +42,9 @@ def referenced_file(reader, text, sheet, cell, *, suffixes=(".csv",),
     where = (sheet, cell)
     if len(text) > MAX_PATH_CHARS:
         raise reader.error(f"a file path must have at most {MAX_PATH_CHARS} characters",
-                           _echo(text), *where)
+                           echo(text), *where)
     if "\x00" in text:
-        raise reader.error("a file path must not contain a NUL character", _echo(text),
+        raise reader.error("a file path must not contain a NUL character", echo(text),
                            *where)
     path = Path(text)
     if not path.is_absolute():
@@ -57,7 +57,7 @@ def referenced_file(reader, text, sheet, cell, *, suffixes=(".csv",),
         raise reader.error("file not found (a relative path is taken from the workbook's "
                            "folder)", text, *where) from None
     except (OSError, ValueError) as err:
-        raise reader.error(f"cannot open the file ({_why(err)})", text, *where) from None
+        raise reader.error(f"cannot open the file ({reason_of(err)})", text, *where) from None
     if not stat.S_ISREG(info.st_mode):
         raise reader.error("not a regular file (a folder, device or pipe)", text, *where)
     if info.st_size > max_bytes:
@@ -97,7 +97,7 @@ def csv_columns(reader, text, sheet, cell, columns, max_rows=MAX_CSV_ROWS):
         with open(path, encoding="utf-8-sig", newline="") as handle:
             content = handle.read()
     except (OSError, UnicodeDecodeError) as err:
-        raise reader.error(f"cannot read the CSV file {name!r} ({_why(err)})", text,
+        raise reader.error(f"cannot read the CSV file {name!r} ({reason_of(err)})", text,
                            *where) from None
     try:
         rows = csv.reader(io.StringIO(content))
@@ -121,7 +121,7 @@ def csv_columns(reader, text, sheet, cell, columns, max_rows=MAX_CSV_ROWS):
     if missing:
         raise reader.error(f"CSV {name}: needs the columns "
                            f"{[f'{wanted[c][0]} [unit]' for c in wanted]}",
-                           _echo(", ".join(header)), *where)
+                           echo(", ".join(header)), *where)
     factors = {}
     for key, (_label, kind) in wanted.items():
         _, head, unit = index[key]
@@ -146,12 +146,12 @@ def csv_columns(reader, text, sheet, cell, columns, max_rows=MAX_CSV_ROWS):
                     value = math.nan
                 if not math.isfinite(value):
                     raise reader.error(f"CSV {name}: column {head!r}, data row {k} is not a "
-                                       "finite number", _echo(cell_text), *where)
+                                       "finite number", echo(cell_text), *where)
                 if abs(value * factors[key]) > MAX_MAGNITUDE[kind]:
                     raise reader.error(f"CSV {name}: column {head!r}, data row {k} is beyond "
                                        f"the largest accepted {kind} "
                                        f"{MAX_MAGNITUDE[kind] / factors[key]:.6g} {unit}",
-                                       _echo(cell_text), *where)
+                                       echo(cell_text), *where)
                 data[key].append(value * factors[key])
     except csv.Error as err:
         raise reader.error(f"CSV {name}: malformed ({err})", text, *where) from None

@@ -17,7 +17,7 @@ import numpy as np
 from openpyxl.utils import get_column_letter
 
 from slingloads.errors import InputError
-from slingloads.io.common.values import _FORMULA_HINT, _number_echo
+from slingloads.io.common.values import FORMULA_HINT, number_echo
 
 
 def cell_name(row, col):
@@ -68,7 +68,7 @@ class Table:
         raw = self.raw.get(name)
         value = raw[index] if raw is not None else self.values[name][index]
         if isinstance(self.values[name], np.ndarray):
-            value = _number_echo(value)
+            value = number_echo(value)
         return value, self.units.get(name) or None
 
     def error(self, name, index, rule):
@@ -88,7 +88,7 @@ class Table:
             empty = np.flatnonzero(np.isnan(values))
             if empty.size:
                 raise self.error(name, int(empty[0]), f"empty cell in column "
-                                 f"{self.header(name)!r}: {why}{_FORMULA_HINT}")
+                                 f"{self.header(name)!r}: {why}{FORMULA_HINT}")
 
     def header(self, name):
         """Column ``name``'s header as written (with its unit, when it has one)."""

@@ -11,10 +11,10 @@ What this module guarantees:
   an integer is a whole number;
 * a text is stripped, at most its length limit, with no control character and no character a
   reader of the report could not see (:func:`hidden_character`);
-* a column of plain numbers is checked and converted at once (:func:`_plain_quantities`),
+* a column of plain numbers is checked and converted at once (:func:`plain_quantities`),
   giving the very floats the cell-by-cell path gives, or None when any cell needs that path;
 * every refusal is raised through the caller's ``error(rule, value, sheet, cell, unit)``, so
-  that it names the cell and echoes the value as written (:func:`_echo`, :func:`_number_echo`).
+  that it names the cell and echoes the value as written (:func:`echo`, :func:`number_echo`).
 
 Units themselves are parsed by :mod:`slingloads.io.common.units`.
 """
@@ -33,7 +33,7 @@ from slingloads.io.common.units import si_factor
 from slingloads.io.common.xlsx_source import CellError
 from slingloads.limits import MAX_ID_CHARS, MAX_MAGNITUDE
 
-_FORMULA_HINT = (" (or a formula whose value was never computed: open and save the workbook "
+FORMULA_HINT = (" (or a formula whose value was never computed: open and save the workbook "
                  "in Excel or LibreOffice first)")
 #: Control characters a workbook cell cannot hold (tab, line feed and carriage return can).
 ILLEGAL_CHARACTERS_RE = re.compile(r"[\000-\010]|[\013-\014]|[\016-\037]")
@@ -41,13 +41,13 @@ _TRUE = {"yes", "y", "true", "1", "on", "x"}
 _FALSE = {"no", "n", "false", "0", "off", ""}
 
 
-def _as_column(values, kind):
+def as_column(values, kind):
     """The values of a column as a Table holds them: a list for text and flags, else an
     ndarray of floats."""
     return values if kind in (TEXT, FLAG) else np.asarray(values, dtype=float)
 
 
-def _plain_quantities(raw, column, factor):
+def plain_quantities(raw, column, factor):
     """SI values of a column of plain numbers, or None unless every cell passes every check.
 
     The column-at-once form of :func:`parse_number` and :func:`check_quantity`, giving the
@@ -96,14 +96,14 @@ def _plain_quantities(raw, column, factor):
     return values
 
 
-def _as_text(value):
+def as_text(value):
     """Text of a cell value (whole numbers without '.0')."""
     if isinstance(value, float) and value.is_integer():
         return str(int(value))
     return str(value)
 
 
-def _echo(value, n=200):
+def echo(value, n=200):
     """A value for a message: long texts cut to ``n`` characters."""
     if isinstance(value, str) and len(value) > n:
         return value[:n] + "..."
@@ -116,12 +116,12 @@ def parse_text(raw, what, max_chars, error, sheet, where):
     if isinstance(raw, CellError):
         raise error(f"{what!r}: the cell holds the spreadsheet error {str(raw)!r}", str(raw),
                     sheet, where)
-    text = _as_text(raw).strip()
+    text = as_text(raw).strip()
     if len(text) > max_chars:
-        raise error(f"{what!r} must have at most {max_chars} characters", _echo(text), sheet,
+        raise error(f"{what!r} must have at most {max_chars} characters", echo(text), sheet,
                     where)
     if ILLEGAL_CHARACTERS_RE.search(text):
-        raise error(f"{what!r} contains control characters", _echo(text), sheet, where)
+        raise error(f"{what!r} contains control characters", echo(text), sheet, where)
     hidden = hidden_character(text, name_like=max_chars <= MAX_ID_CHARS)
     if hidden is not None:
         k, char = hidden
@@ -129,7 +129,7 @@ def parse_text(raw, what, max_chars, error, sheet, where):
                 if max_chars <= MAX_ID_CHARS else "text holds no direction controls")
         name = unicodedata.name(char, None) or _CONTROL_NAMES.get(char, "a control")
         raise error(f"{what!r} contains the invisible character U+{ord(char):04X} ({name}) "
-                    f"at position {k + 1}: {rule}", _echo(text), sheet, where)
+                    f"at position {k + 1}: {rule}", echo(text), sheet, where)
     return text
 
 
@@ -196,11 +196,11 @@ def parse_number(raw, what, error, sheet, where):
         value = number_from_text(raw)
         if value is None:
             raise error(f"{what!r} must be a number (digits 0-9, e.g. 12.5 or 1.2e3)",
-                        _echo(raw), sheet, where)
+                        echo(raw), sheet, where)
     else:
-        raise error(f"{what!r} must be a number", _echo(str(raw)), sheet, where)
+        raise error(f"{what!r} must be a number", echo(str(raw)), sheet, where)
     if not math.isfinite(value):
-        raise error(f"{what!r} must be a finite number", _echo(raw), sheet, where)
+        raise error(f"{what!r} must be a finite number", echo(raw), sheet, where)
     return value
 
 
@@ -216,7 +216,7 @@ def check_quantity(number, raw, kind, factor, unit, bounds, spec_unit, what, err
     """
     value = number * factor
     shown = unit or None
-    echo = _number_echo(raw)
+    echo = number_echo(raw)
     if kind == INTEGER and not float(number).is_integer():
         raise error(f"{what} must be a whole number", echo, sheet, where)
     limit = MAX_MAGNITUDE.get(kind)
@@ -233,7 +233,7 @@ def check_quantity(number, raw, kind, factor, unit, bounds, spec_unit, what, err
     return int(number) if kind == INTEGER else value
 
 
-def _number_echo(raw):
+def number_echo(raw):
     """A numeric cell's value for a message: numbers as floats (``0.0``, ``-12.5``), text as
     written."""
     if isinstance(raw, (int, float)) and not isinstance(raw, bool):
@@ -241,7 +241,7 @@ def _number_echo(raw):
             return float(raw)
         except OverflowError:
             return raw
-    return _echo(raw)
+    return echo(raw)
 
 
 def parse_flag(raw, what, error, sheet, where, default):
@@ -255,9 +255,9 @@ def parse_flag(raw, what, error, sheet, where, default):
     if isinstance(raw, CellError):
         raise error(f"{what!r}: the cell holds the spreadsheet error {str(raw)!r}", str(raw),
                     sheet, where)
-    text = _as_text(raw).strip().lower()
+    text = as_text(raw).strip().lower()
     if text in _TRUE:
         return True
     if text in _FALSE and text != "":
         return False
-    raise error(f"{what!r} must be yes or no", _echo(raw), sheet, where)
+    raise error(f"{what!r} must be yes or no", echo(raw), sheet, where)

@@ -44,24 +44,24 @@ from slingloads.io.common.schema import FLAG, INTEGER, NOTE_COLUMNS, TEXT
 from slingloads.io.common.table import Table, cell_name
 from slingloads.io.common.units import si_factor
 from slingloads.io.common.values import (
-    _FORMULA_HINT,
-    _as_column,
-    _as_text,
-    _echo,
-    _plain_quantities,
+    FORMULA_HINT,
+    as_column,
+    as_text,
     check_quantity,
+    echo,
     parse_flag,
     parse_number,
     parse_text,
+    plain_quantities,
 )
 from slingloads.io.common.xlsx_source import (
     EXCEL_COLUMNS,
     EXCEL_ROWS,
-    _is_empty,
-    _MemorySource,
-    _XlsxSource,
+    MemorySource,
+    XlsxSource,
     check_container,
     check_file,
+    is_empty,
 )
 from slingloads.limits import (
     MAX_SHEET_CELLS,
@@ -93,7 +93,7 @@ class WorkbookReader:
         if _source is None:
             check_file(self.path, self.file)
             check_container(self.path, self.file)
-            _source = _XlsxSource(self.path, lambda rule, value: self.error(rule, value))
+            _source = XlsxSource(self.path, lambda rule, value: self.error(rule, value))
         self._source = _source
 
     @classmethod
@@ -103,7 +103,7 @@ class WorkbookReader:
         ``file`` names the workbook in messages; files the sheets refer to are looked for
         relative to its folder.
         """
-        return cls(file, _source=_MemorySource(sheets))
+        return cls(file, _source=MemorySource(sheets))
 
     def close(self):
         self._source.close()
@@ -278,7 +278,7 @@ class WorkbookReader:
             for col in row:
                 if col not in header:
                     raise self.error("value in a column without a header (give the column a "
-                                     "header, or clear the cell)", _echo(row[col]),
+                                     "header, or clear the cell)", echo(row[col]),
                                      spec.name, cell_name(r, col))
             for col, column, factor, unit in found.values():
                 value = row.get(col)
@@ -287,7 +287,7 @@ class WorkbookReader:
                     self._value(value, column, factor, unit, spec.name, where))
                 raw[column.name].append(value)
                 cells[column.name].append(where)
-        arrays = {name: _as_column(vals, found[name][1].kind) for name, vals in values.items()}
+        arrays = {name: as_column(vals, found[name][1].kind) for name, vals in values.items()}
         return arrays, raw, cells
 
     def _missing_column(self, spec, column, header, records, last):
@@ -312,7 +312,7 @@ class WorkbookReader:
 
         The fast path, giving exactly what :meth:`_records` gives for a table without a bad
         cell: a column of plain numbers (Python ``int`` and ``float``, nearly every numeric
-        column) is checked and converted at once (:func:`_plain_quantities`); any other
+        column) is checked and converted at once (:func:`plain_quantities`); any other
         column goes through :meth:`_value` cell by cell. It raises nothing: errors are left
         to the careful path, which finds them in the order of the sheet.
         """
@@ -326,9 +326,9 @@ class WorkbookReader:
             letter = get_column_letter(col)
             cells[name] = [letter + r for r in numbers]  # cell_name(r, col) of each
             try:
-                array = _plain_quantities(raw[name], column, factor)
+                array = plain_quantities(raw[name], column, factor)
                 if array is None:
-                    array = _as_column([self._value(v, column, factor, unit, spec.name, where)
+                    array = as_column([self._value(v, column, factor, unit, spec.name, where)
                                         for v, where in zip(raw[name], cells[name],
                                                             strict=True)], column.kind)
             except Exception:  # noqa: BLE001 - any error is raised again by the careful path
@@ -347,7 +347,7 @@ class WorkbookReader:
             text = header[col]
             where = cell_name(1, col)
             if not isinstance(text, str):
-                text = _as_text(text)
+                text = as_text(text)
             match = _HEADER.match(text)
             name = (match.group("name") if match else text).strip()
             unit = match.group("unit") if match and match.group("unit") is not None else None
@@ -359,20 +359,20 @@ class WorkbookReader:
             column = exact.get(name) or (candidates[0] if len(candidates) == 1 else None)
             if column is None:
                 raise self.error(f"unknown column; valid columns are "
-                                 f"{[c.header for c in spec.columns]}", _echo(text),
+                                 f"{[c.header for c in spec.columns]}", echo(text),
                                  spec.name, where)
             if column.name in found:
-                raise self.error("column appears twice", _echo(text), spec.name, where)
+                raise self.error("column appears twice", echo(text), spec.name, where)
             factor = 1.0
             if column.kind not in (TEXT, FLAG, INTEGER):
                 if unit is None and column.kind != "dimensionless":
                     raise self.error(f"header needs a unit in brackets, e.g. "
-                                     f"'{column.name} [{column.unit}]'", _echo(text),
+                                     f"'{column.name} [{column.unit}]'", echo(text),
                                      spec.name, where)
                 with located(Place(self.file, spec.name, where)):
                     factor = si_factor(unit or "", column.kind)
             elif unit is not None and unit.strip() not in ("", "-"):
-                raise self.error(f"column {column.name!r} takes no unit", _echo(text),
+                raise self.error(f"column {column.name!r} takes no unit", echo(text),
                                  spec.name, where)
             found[column.name] = (col, column, factor, (unit or "").strip())
         return found
@@ -380,18 +380,18 @@ class WorkbookReader:
     def _value(self, raw, column, factor, unit, sheet, where):
         header = f"{column.name} [{unit}]" if unit else column.header  # as written
         if column.kind == TEXT:
-            if _is_empty(raw):
+            if is_empty(raw):
                 if column.required:
                     raise self.error(f"empty cell in required column {header!r}"
-                                     f"{_FORMULA_HINT}", None, sheet, where)
+                                     f"{FORMULA_HINT}", None, sheet, where)
                 return column.default
             return parse_text(raw, header, column.char_limit, self.error, sheet, where)
         if column.kind == FLAG:
             return parse_flag(raw, header, self.error, sheet, where, column.default)
-        if _is_empty(raw):
+        if is_empty(raw):
             if column.required:
                 raise self.error(f"empty cell in required column {header!r}"
-                                 f"{_FORMULA_HINT}", None, sheet, where)
+                                 f"{FORMULA_HINT}", None, sheet, where)
             return column.default
         number = parse_number(raw, header, self.error, sheet, where)
         return check_quantity(number, raw, column.kind, factor, unit, column.bounds,

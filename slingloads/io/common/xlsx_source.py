@@ -7,7 +7,7 @@ What this module guarantees, whatever the file holds:
   an ``.xlsx`` suffix, its size on disk, the number of parts, the uncompressed size of each
   part and of the whole (:data:`slingloads.limits.MAX_UNCOMPRESSED_BYTES`: zip bombs);
 * no XML part is parsed that declares a document type or entities ("billion laughs",
-  external entities: :func:`_check_prolog`); the rest goes through ``defusedxml``;
+  external entities: :func:`check_prolog`); the rest goes through ``defusedxml``;
 * a sheet is streamed row by row in bounded memory: an element is cleared when it ends, the
   number of XML elements of a sheet is capped
   (:data:`~slingloads.limits.MAX_SHEET_ELEMENTS`), and a row cannot hold more cells than
@@ -20,7 +20,7 @@ What this module guarantees, whatever the file holds:
   :class:`~slingloads.io.common.workbook.WorkbookReader`, the sheet).
 
 A source yields, for each row, ``(row number, {column: value}, cells stored)``: empty cells
-are left out. :class:`_MemorySource` yields the same from rows given in memory (tests).
+are left out. :class:`MemorySource` yields the same from rows given in memory (tests).
 """
 
 from __future__ import annotations
@@ -71,7 +71,7 @@ def _why_unreadable(err):
     return text or "its content is not that of an .xlsx workbook"
 
 
-def _check_prolog(source, error):
+def check_prolog(source, error):
     """Refuse an XML part with a document type declaration (entity definitions: "billion
     laughs", external entities) before the fast C parser reads it. A DOCTYPE can only come
     before the first element, so expat reads the prolog alone and stops there."""
@@ -104,11 +104,11 @@ class CellError(str):
     """The value of a cell holding a spreadsheet error (``#DIV/0!``, ``#N/A``, ``#REF!``)."""
 
 
-def _is_empty(value):
+def is_empty(value):
     return value is None or (isinstance(value, str) and not value.strip())
 
 
-class _MemorySource:
+class MemorySource:
     """Sheets given as lists of rows (row 1 first), for tests and for building in memory."""
 
     def __init__(self, sheets):
@@ -117,10 +117,10 @@ class _MemorySource:
 
     def rows(self, name):
         """``(row number, {column: value}, cells stored)`` of each row, as
-        :meth:`_XlsxSource.rows`."""
+        :meth:`XlsxSource.rows`."""
         for r, row in enumerate(self.sheets[name], start=1):
             values = list(row)
-            yield r, {c: v for c, v in enumerate(values, start=1) if not _is_empty(v)}, len(values)
+            yield r, {c: v for c, v in enumerate(values, start=1) if not is_empty(v)}, len(values)
 
     def close(self):
         pass
@@ -141,7 +141,7 @@ def _no_dimension_scan():
         ReadOnlyWorksheet._get_size = original
 
 
-class _XlsxSource:
+class XlsxSource:
     """An .xlsx file streamed sheet by sheet with openpyxl's read-only machinery."""
 
     def __init__(self, path, error):
@@ -184,7 +184,7 @@ class _XlsxSource:
         # the limits as locals: this loop runs once per XML element of the sheet
         most, parts, widest = MAX_SHEET_ELEMENTS, _CELL_PARTS, 8 * EXCEL_COLUMNS
         with ws._get_source() as source:
-            _check_prolog(source, self.error)
+            check_prolog(source, self.error)
         with ws._get_source() as source:
             for _, element in iterparse(source):
                 count += 1
@@ -233,7 +233,7 @@ class _XlsxSource:
                 parser.col_counter = column
                 cell = self._cell(parser, c)
             column, value = cell
-            if value is None or (isinstance(value, str) and not value.strip()):  # _is_empty
+            if value is None or (isinstance(value, str) and not value.strip()):  # is_empty
                 continue
             values[column] = value
         return parser.row_counter, values, len(element)
@@ -361,7 +361,7 @@ def _simple_cell(c, previous, suffix, cut, styles, date_formats):
     return column, text.text or ""
 
 
-def _part_kind(name):
+def part_kind(name):
     """Kind of a workbook part for MAX_PART_BYTES: worksheets are streamed; shared strings,
     styles and the other XML parts are parsed whole; other parts (images) are not parsed."""
     base = name.rsplit("/", 1)[-1]
@@ -376,7 +376,7 @@ def _part_kind(name):
     return "binary"
 
 
-def _why(err):
+def reason_of(err):
     """Short reason of an OSError (or other) for a message."""
     if isinstance(err, OSError) and err.strerror:
         return err.strerror
@@ -392,7 +392,7 @@ def check_file(path, file):
     except (FileNotFoundError, NotADirectoryError):
         raise InputError("input workbook not found", file, file=file) from None
     except (OSError, ValueError) as err:
-        raise InputError(f"cannot open the input workbook ({_why(err)})", file,
+        raise InputError(f"cannot open the input workbook ({reason_of(err)})", file,
                          file=file) from None
     if stat.S_ISDIR(info.st_mode):
         raise InputError("the input is a folder, not an .xlsx workbook", file,
@@ -410,7 +410,7 @@ def check_file(path, file):
         with open(path, "rb"):
             pass
     except OSError as err:
-        raise InputError(f"cannot read the input workbook ({_why(err)})", file,
+        raise InputError(f"cannot read the input workbook ({reason_of(err)})", file,
                          file=file) from None
 
 
@@ -423,9 +423,9 @@ def check_container(path, file):
             infos = archive.infolist()
             _check_sizes(infos, file)
             for info in infos:  # every worksheet, read or not: no DTD, no entities
-                if _part_kind(info.filename) == "worksheet":
+                if part_kind(info.filename) == "worksheet":
                     with archive.open(info) as source:
-                        _check_prolog(source,
+                        check_prolog(source,
                                       lambda rule, value: InputError(rule, value, file=file))
     except InputError:
         raise
@@ -442,7 +442,7 @@ def _check_sizes(infos, file):
     total = 0
     for info in infos:
         total += info.file_size
-        limit = MAX_PART_BYTES.get(_part_kind(info.filename))
+        limit = MAX_PART_BYTES.get(part_kind(info.filename))
         if limit is not None and info.file_size > limit:
             raise InputError(f"workbook refused: its part {info.filename[:100]!r} expands "
                              f"to {info.file_size:,} bytes, more than the {limit:,} "
