@@ -315,20 +315,24 @@ def _airframe_body(reader, study):
     try:
         return airframe_body(study.airframe)
     except InputError as err:
-        if "inertia" in err.rule:
+        if err.field == "roll_inertia":
             items = reader.table(AIRFRAME_SHEETS["MassItems"])
             if items.has("Ixx"):
-                raise items.error("Ixx", 0, err.rule) from None
+                raise place_error(err, find_place(err, items, {"roll_inertia": "Ixx"},
+                                                  index=0)) from None
             cell = f"{get_column_letter(len(items.cells) + 1)}1"
-            raise InputError(f"{err.rule}: give the mass items their own inertias (no Ixx "
-                             "column)", file=reader.file, sheet="MassItems",
-                             cell=cell) from None
+            raise place_error(err, Place(reader.file, "MassItems", cell, None), (
+                f"{err.rule}: give the mass items their own inertias (no Ixx column)")) from None
+        if err.field != "cg_below_hub":
+            raise
         hardpoints = reader.table(AIRFRAME_SHEETS["Hardpoints"])
         rule = err.rule.removesuffix(" [m]")
         if isinstance(err.value, float):  # how far above the hub the CG lies, along the mast
             rule += (f" (the CG lies {column_quantity(hardpoints, 'z', -err.value, 'length')}"
                      " above the hub along the mast)")
-        raise hardpoints.error("z", study.points["rows"]["hub"][0], rule) from None
+        hub = study.points["rows"]["hub"][0]
+        raise place_error(err, find_place(err, hardpoints, {"cg_below_hub": "z"}, index=hub),
+                          rule) from None
 
 
 def _histories(reader):
