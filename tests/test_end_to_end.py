@@ -20,6 +20,7 @@ from hostile import publish_earlier
 from slingloads.cli import main
 from slingloads.io.analyses import all_parameters
 from slingloads.io.common.ownership import MANIFEST_NAME
+from slingloads.io.common.parameters import read_parameters
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.io.study import read_study
 
@@ -99,7 +100,7 @@ def test_template_is_a_valid_blank_workbook(tmp_path, capsys):
     for sheet in ("README", "Study", "MassItems", "Stations", "Hardpoints", "FuselageAero",
                   "AeroEnvelope", "PreviousEnvelope", "MultibodyManoeuvres", "HTailAero"):
         assert reader.has_sheet(sheet)
-    assert reader.parameters(all_parameters())["hook load factor nz"][0] == pytest.approx(2.5)
+    assert read_parameters(reader, all_parameters())["hook load factor nz"][0] == pytest.approx(2.5)
     assert main(["template", str(path)]) == 2  # exists: not replaced without --force
     assert main(["run", str(path), "--out", str(tmp_path / "r"), "--quiet"]) == 2
     assert "no data rows" in capsys.readouterr().err

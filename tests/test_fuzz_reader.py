@@ -21,7 +21,8 @@ from hypothesis import strategies as st
 from slingloads.cli import main
 from slingloads.errors import InputError
 from slingloads.io.analyses import all_parameters, all_sheets
-from slingloads.io.common.workbook import CellError, WorkbookReader
+from slingloads.io.common.workbook import WorkbookReader
+from slingloads.io.common.xlsx_source import CellError
 from slingloads.io.study import read_study
 
 BASE = small_workbook()

@@ -16,7 +16,7 @@ from hostile import located_error, read_book, save_xlsx, set_parameter, small_wo
 from slingloads.cli import main
 from slingloads.errors import InputError
 from slingloads.io.common.cover import input_digest
-from slingloads.io.common.workbook import CellError
+from slingloads.io.common.xlsx_source import CellError
 
 FILE = "located.xlsx"
 

@@ -381,24 +381,32 @@ IO = Path(__file__).resolve().parents[1] / "slingloads" / "io"
 
 
 def _cell_locations(path):
-    """Calls of the bare function ``located`` (slingloads.io.common.workbook's) given a cell
-    (a third positional argument or ``cell=``), as ``(line, source)``."""
+    """Places given a cell but no value as written (``Place(file, sheet, cell)``: a third
+    positional argument or ``cell=``, and no fourth nor ``written=``), as ``(line, source)``.
+    """
     tree = ast.parse(path.read_text(encoding="utf-8"))
     for node in ast.walk(tree):
         if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
-                and node.func.id == "located"
-                and (len(node.args) >= 3 or any(k.arg == "cell" for k in node.keywords))):
+                and node.func.id == "Place"
+                and (len(node.args) >= 3 or any(k.arg == "cell" for k in node.keywords))
+                and len(node.args) < 4 and not any(k.arg == "written" for k in node.keywords)):
             yield node.lineno, ast.get_source_segment(path.read_text(encoding="utf-8"), node)
 
 
+#: The readers of the cells' own text (a header's or a unit cell's unit), whose errors echo
+#: that text themselves.
+CELL_TEXT_READERS = ("workbook.py", "parameters.py", "referenced.py")
+
+
 @pytest.mark.parametrize("path", sorted(p for p in IO.rglob("*.py")
-                                        if p.name != "workbook.py"),
+                                        if p.name not in CELL_TEXT_READERS),
                          ids=lambda p: str(p.relative_to(IO)))
 def test_no_reader_puts_a_model_value_at_a_cell(path):
-    """``workbook.located(file, sheet, cell)`` keeps the model's own (SI) value: at a cell the
-    message would show a number that is not the cell's. The io layer locates a model's error
-    at a cell only through :mod:`slingloads.io.common.locate` (``at_cell``, ``at_row``),
-    ``StudyParameters.at`` / ``located`` or ``Table.located``, which echo the cell's value as
-    written."""
+    """A ``Place`` with a cell but no value as written keeps the error's own value: for a
+    model's (SI) error, the message would show at the cell a number that is not the cell's.
+    The io layer locates a model's error at a cell only through
+    :func:`slingloads.io.common.locate.located` given a table, the Study parameters or a
+    ``Place`` with the cell's value as written; only the readers of a cell's own text give a
+    cell without it."""
     found = list(_cell_locations(path))
     assert not found, f"{path.name}: {found}"

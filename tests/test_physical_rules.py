@@ -24,7 +24,8 @@ from openpyxl import load_workbook
 
 from slingloads.cli import EXIT_INCOMPLETE, main
 from slingloads.errors import InputError
-from slingloads.io.common.excel import INFINITE_TEXT, Highlight, write_workbook
+from slingloads.io.common.excel import Highlight, write_workbook
+from slingloads.io.common.excel_cells import INFINITE_TEXT
 from slingloads.io.common.report import explain_infinite
 from slingloads.io.lateral import report as lateral_report
 from slingloads.io.multibody.report import modes_table

@@ -12,8 +12,8 @@ from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
 from slingloads.io.common.cover import IDENTIFICATION, now_stamp
 from slingloads.io.common.hidden import hidden_warnings, read_cells
+from slingloads.io.common.locate import StudyCells, find_place, place_error
 from slingloads.io.common.parameters import StudyParameters
-from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.runs.study import Inputs, Source, Study
 
@@ -57,21 +57,12 @@ class WorkbookSource(Source):
         workbook: where its reader puts it (``locate`` of its reader, e.g. the lateral
         critical case's rope length), else at the Study cell of the parameter its ``field``
         comes from (its schema's ``COMPUTE_FIELDS``), echoing that parameter's value as
-        written with its unit (not the model's value); always naming the file."""
+        written with its unit (not the model's value); always naming the file
+        (:func:`slingloads.io.common.locate.find_place`)."""
         entry = _BY_NAME[analysis]
         err = entry.locate(err, study, context)
-        name = entry.compute_fields.get(err.field)
-        if err.cell is None and err.sheet in (None, STUDY_SHEET) and name is not None:
-            key = name.lower()
-            cell = self.cells.get(key, "(default)")
-            if key in self.written:
-                value, unit = self.written[key]
-            else:  # the parameter's default
-                spec = all_parameters()[key]
-                value, unit = spec.default, spec.unit
-            return err.located(file=self.path, sheet=STUDY_SHEET, cell=cell, value=value,
-                               unit=unit or None)
-        return err.located(file=self.path)
+        cells = StudyCells(self.path, self.cells, self.written, all_parameters(), sheet=None)
+        return place_error(err, find_place(err, cells, entry.compute_fields))
 
 
 def file_digest(path):

@@ -15,9 +15,9 @@ import numpy as np
 from slingloads.errors import InputError
 from slingloads.io.airframe.schema import HARDPOINT_KINDS, PLATE_FORCE_COEFFICIENT, SHEETS
 from slingloads.io.common.atomic import safe_file_part
-from slingloads.io.common.locate import column_quantity, quantity, quantity_range
+from slingloads.io.common.locate import Place, column_quantity, located, quantity, quantity_range
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import cell_name, check_unique, located
+from slingloads.io.common.table import cell_name, check_unique
 from slingloads.limits import MAX_AIRFRAME_SIZE
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import (
@@ -78,7 +78,7 @@ def read_airframe(reader, params):
     _mass_item_warnings(reader, items_t, items, axis)
     hp_t, points = _hardpoint_rows(reader, params, items_t, items, axis)
     aero_points, aero_weights = _aero_points(reader, params, items_t, items, axis)
-    with hp_t.located({"mast_weights": "weight"}):
+    with located(hp_t, {"mast_weights": "weight"}):
         hardpoints = Hardpoints(
             hub=points["hub"][0][1],
             mast_feet=np.array([p[1] for p in points["mast_foot"]]),
@@ -87,7 +87,7 @@ def read_airframe(reader, params):
             chute=points["chute"][0][1] if points["chute"] else None,
             mast_feet_ids=tuple(p[0] for p in points["mast_foot"]),
         )
-    with stations.located({"stations": "x"}):
+    with located(stations, {"stations": "x"}):
         airframe = Airframe(items, x, hardpoints, axis, tuple(stations["id"]), aero_points,
                             aero_weights, name=str(params("study name")))
     _check_stations_span(reader, stations, items_t, hp_t, airframe)
@@ -170,7 +170,7 @@ def _mass_items(reader):
     position = np.column_stack([items_t["x"], items_t["y"], items_t["z"]])
     _check_extent(items_t, position)
     fields = {"mass": "mass", "position": "x", "inertia": present[0] if present else "mass"}
-    with items_t.located(fields):
+    with located(items_t, fields):
         items = MassItems(tuple(items_t["id"]), masses, position, inertia,
                           tuple(items_t["description"]) if items_t.has("description") else ())
     if items.total_mass < MIN_TOTAL_MASS:
@@ -347,7 +347,7 @@ def read_fuselage_aero(reader, params, refs):
                      "(alpha, beta) point")
     _check_full_grid(t)
     _check_force_areas(reader, t, columns, force_axes, area, length, refs)
-    with t.located():
+    with located(t):
         table = Table2D.from_long(t["alpha"], t["beta"], {c: t[c] for c in columns})
         return FuselageAero(table, area, length, refs["aero_reference"], force_axes,
                             moment_axes)
@@ -473,10 +473,10 @@ def read_fin_aero(reader, params, refs):
     area = params.positive("fin area")
     eff = params("fin efficiency")
     axes = params.choice("fin axes", FIN_AXES)
-    with t.located():
+    with located(t):
         table = Table1D(t["beta"], {"CY": t["CY"]}, angle_name="beta", what="fin")
-    with params.located({"efficiency": "fin efficiency", "area": "fin area"},
-                        "fin efficiency"):
+    with located(params, {"efficiency": "fin efficiency", "area": "fin area"},
+                 default="fin efficiency"):
         return Fin(table, area, refs["fin_cp"], eff, axes)
 
 
@@ -505,7 +505,7 @@ def read_parachute_cd(reader, axes="wind"):
         if not 0 < value <= PARACHUTE_CD_MAX:
             raise t.error(column, i, f"parachute {column} must lie in (0, "
                           f"{PARACHUTE_CD_MAX:g}] (a flat plate normal to the flow has 1.17)")
-    with t.located():
+    with located(t):
         table = Table1D(t["alpha"], {column: t[column]}, angle_name="alpha",
                         what="parachute")
     if not t["alpha"].min() <= 0 <= t["alpha"].max():
@@ -537,9 +537,9 @@ def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
     axes = params.choice("parachute table axes", tuple(PARACHUTE_AXES))
     cd = read_parachute_cd(reader, axes)  # checked at its cells
     for name, arg in parameters.items():  # each with the default table: only its own error
-        with params.at(name):
+        with located(params, default=name):
             Parachute(area, None, axes=axes, **{arg: params(name)})
-    with located(reader.file, "ParachuteCD" if cd is not None else STUDY_SHEET):
+    with located(Place(reader.file, "ParachuteCD" if cd is not None else STUDY_SHEET)):
         return Parachute(area, cd, axes=axes,
                          **{arg: params(name) for name, arg in parameters.items()})
 

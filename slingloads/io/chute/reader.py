@@ -23,9 +23,8 @@ from slingloads.io.chute.schema import (
     SHEETS,
     WAKE_SOURCES,
 )
-from slingloads.io.common.locate import column_quantity
+from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import located
 from slingloads.limits import (
     MAX_CHUTE_REFERENCE_RUNS,
     MAX_CHUTE_RUN_STEPS,
@@ -67,9 +66,9 @@ def read(reader, params, study):
     """
     # ---- condition (IAS taken equal to EAS)
     ias = params.positive("chute sizing airspeed IAS")
-    with params.located({"eas": "chute sizing airspeed IAS",
-                         "density_altitude": "chute sizing density altitude",
-                         "alpha": "chute sizing alpha trim"}):
+    with located(params, {"eas": "chute sizing airspeed IAS",
+                          "density_altitude": "chute sizing density altitude",
+                          "alpha": "chute sizing alpha trim"}):
         condition = FlightCondition(eas=ias,
                                     density_altitude=params("chute sizing density altitude"),
                                     alpha=params("chute sizing alpha trim"))
@@ -113,8 +112,8 @@ def read(reader, params, study):
             raise params.error("chute sizing yaw inertia source", "the yaw inertia about the "
                                "hub computed from the mass items is 0 (every item on the hub's "
                                "vertical, without Izz): give it with the source 'parameter'")
-    with params.located({"airspeed": "chute sizing airspeed IAS",
-                         "alpha": "chute sizing alpha trim"}, "chute sizing alpha trim"):
+    with located(params, {"airspeed": "chute sizing airspeed IAS",
+                          "alpha": "chute sizing alpha trim"}, default="chute sizing alpha trim"):
         model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute)
     lo, hi = model.beta_range()
     params.check("chute sizing linearisation range", half <= min(-lo, hi),
@@ -142,11 +141,12 @@ def read(reader, params, study):
                 raise reader.error("the wake model needs 'chute sizing wake drag area' > 0 "
                                    "when there is no FuselageAero sheet", 0.0, STUDY_SHEET,
                                    params.where("chute sizing wake drag area"))
-            with params.at("chute sizing alpha trim"):  # the table's drag at the trim alpha
+            # the table's drag at the trim alpha
+            with located(params, default="chute sizing alpha trim"):
                 area = float(fuselage.drag_coefficient(condition.alpha, 0.0)) * fuselage.area
-        with params.at("chute sizing wake coefficient"):
+        with located(params, default="chute sizing wake coefficient"):
             wake = BluffBodyWake(area, k)
-        with params.at("chute sizing target q ratio"):
+        with located(params, default="chute sizing target q ratio"):
             wake.line_length(target)
     cable = params.positive("chute sizing carrier cable length", allow_zero=True)
     margin = params.positive("chute sizing cable margin", allow_zero=True)
@@ -263,7 +263,7 @@ def _wake_table(reader, params, target):
             f"{params.where('chute sizing target q ratio')}): its largest q ratio is this one, "
             f"at {column_quantity(t, 'distance', x[i], 'length')} "
             f"({t.cell('distance', i)}); extend the table downstream"))
-    with located(reader.file, t.sheet):
+    with located(Place(reader.file, t.sheet)):
         return TabulatedWake(x, r, source="ChuteWake sheet")
 
 
@@ -322,7 +322,7 @@ def _turbulence(reader, params, model, onset, t_end):
     params.check("chute sizing turbulence seed", float(seed) == int(seed) and seed >= 0,
                  "'chute sizing turbulence seed' must be a whole number >= 0")
     altitude = params("chute sizing turbulence altitude")
-    with params.at("chute sizing turbulence altitude"):
+    with located(params, default="chute sizing turbulence altitude"):
         gust = DrydenTurbulence.low_altitude(altitude, model.condition.tas, severity,
                                              onset=onset, duration=length, seed=int(seed))
     lo, hi = model.beta_range()
@@ -355,7 +355,7 @@ def trim_error(err, study):
     for column in ("x", "y", "z"):
         value, unit = hp_t.shown(column, row)
         shown.append(f"{column} {value}{' ' + unit if unit else ''}")
-    return hp_t.error("y", row, (
+    return place_error(err, find_place(err, hp_t, {"trim": "y"}, index=row), (
         f"{err.rule}; the moment is taken about the rotor hub's vertical (Hardpoints "
         f"{hp_t.cell('x', row)}:{hp_t.cell('z', row)}: {', '.join(shown)}): a hub off the "
         "airframe's plane of symmetry, or FuselageAero / FinAero tables that are not "

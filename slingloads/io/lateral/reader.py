@@ -25,9 +25,10 @@ from slingloads.analyses.lateral_damping import (
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
-from slingloads.io.common.locate import at_cell, at_row, column_quantity
+from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
+from slingloads.io.common.referenced import csv_columns
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.common.table import check_unique
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
     MIN_ROLL_GYRATION,
@@ -140,8 +141,8 @@ def _damping(reader, params, study):
     for name, value in (("lateral damping", lateral), ("lateral roll damping", roll)):
         params.check(name, value == 0, f"{name!r} is used only with 'lateral damping source' "
                      "= parameters; leave it 0 with 'aerodynamic tables'")
-    with params.located({"eas": "lateral airspeed EAS",
-                         "density_altitude": "lateral density altitude"}):
+    with located(params, {"eas": "lateral airspeed EAS",
+                          "density_altitude": "lateral density altitude"}):
         condition = FlightCondition(speed, params("lateral density altitude"))
     fuselage = read_fuselage_aero(reader, params, study.source.points)
     fin = read_fin_aero(reader, params, study.source.points)
@@ -149,7 +150,7 @@ def _damping(reader, params, study):
         raise params.error("lateral damping source", "'aerodynamic tables' needs a "
                            "FuselageAero or a FinAero sheet", "aerodynamic tables")
     hardpoints = study.airframe.hardpoints
-    with located(reader.file, "FuselageAero" if fuselage is not None else "FinAero"):
+    with located(Place(reader.file, "FuselageAero" if fuselage is not None else "FinAero")):
         return aerodynamic_damping(condition, hardpoints.hub, hardpoints.mast_axis,
                                    fuselage, fin)
 
@@ -236,7 +237,7 @@ def run_case_error(err, study, result):
     name = "lateral history rtol"
     rtol = study.source.written.get(name, (inputs.solver.rtol, None))[0]
     where = study.source.cells.get(name, "(default)")
-    return ropes.error("rope length", row, (
+    return place_error(err, find_place(err, ropes, {"rtol": "rope length"}, index=row), (
         f"too much work: the time-history re-run of the critical case (case {k + 1}: body "
         f"{pendulum.body.name!r}, motion {inputs.motion_ids[_motion_index(inputs, motion)]!r}, "
         f"this rope length{spread}) needs more than {err.value:,} solver evaluations (limits "
@@ -265,7 +266,7 @@ def _bodies(reader, study):
                           f"{MIN_ROLL_GYRATION:g} m of a solid cylinder 0.28 m across "
                           "(helicopters: about 1 m): check the inertia, the mass and their "
                           "units")
-        with at_row(t, "mass", i, fields):
+        with located(t, fields, default="mass", index=i):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))
     return tuple(bodies), "LateralBodies"
@@ -277,20 +278,24 @@ def _airframe_body(reader, study):
     try:
         return airframe_body(study.airframe)
     except InputError as err:
-        if "inertia" in err.rule:
+        if err.field == "roll_inertia":
             items = reader.table(AIRFRAME_SHEETS["MassItems"])
             if items.has("Ixx"):
-                raise items.error("Ixx", 0, err.rule) from None
+                raise place_error(err, find_place(err, items, {"roll_inertia": "Ixx"},
+                                                  index=0)) from None
             cell = f"{get_column_letter(len(items.cells) + 1)}1"
-            raise InputError(f"{err.rule}: give the mass items their own inertias (no Ixx "
-                             "column)", file=reader.file, sheet="MassItems",
-                             cell=cell) from None
+            raise place_error(err, Place(reader.file, "MassItems", cell, None), (
+                f"{err.rule}: give the mass items their own inertias (no Ixx column)")) from None
+        if err.field != "cg_below_hub":
+            raise
         hardpoints = reader.table(AIRFRAME_SHEETS["Hardpoints"])
         rule = err.rule.removesuffix(" [m]")
         if isinstance(err.value, float):  # how far above the hub the CG lies, along the mast
             rule += (f" (the CG lies {column_quantity(hardpoints, 'z', -err.value, 'length')}"
                      " above the hub along the mast)")
-        raise hardpoints.error("z", study.source.points["rows"]["hub"][0], rule) from None
+        hub = study.source.points["rows"]["hub"][0]
+        raise place_error(err, find_place(err, hardpoints, {"cg_below_hub": "z"}, index=hub),
+                          rule) from None
 
 
 def _histories(reader):
@@ -313,15 +318,15 @@ def _histories(reader):
                 raise t.error("t", idx[k], f"time-history samples must be at least "
                               f"{MIN_SAMPLE_INTERVAL:g} s apart (previous sample at "
                               f"{t.cell('t', idx[k - 1])})")
-        with at_row(t, "t", idx[0]):
+        with located(t, default="t", index=idx[0]):
             out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
     return out
 
 
 def _csv_history(reader, text, t, i):
     where = (t.sheet, t.cell("history", i))
-    columns = reader.csv_columns(text, *where, {"t": "time", "S": "length"},
-                                 max_rows=MAX_HISTORY_SAMPLES)
+    columns = csv_columns(reader, text, *where, {"t": "time", "S": "length"},
+                          max_rows=MAX_HISTORY_SAMPLES)
     time, s = columns["t"], columns["S"]
     name = text.replace("\\", "/").rsplit("/", 1)[-1]
     if time.size < 2:
@@ -342,7 +347,7 @@ def _csv_history(reader, text, t, i):
         raise reader.error(f"CSV {name}: a time history may last at most "
                            f"{MAX_MAGNITUDE_TIME_HISTORY:g} s; this one lasts "
                            f"{time[-1] - time[0]:.6g} s", text, *where)
-    with at_cell(reader.file, *where, text):
+    with located(Place(reader.file, *where, written=text)):
         return TimeHistory(time, s, name=f"CSV {name}")
 
 
@@ -401,7 +406,7 @@ def _motions(reader, histories):
                                    "'amplitude', not both nor neither", None, t.sheet,
                                    t.cell("type", i))
             law = STEP_LAWS[kind]
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 if has_acc:
                     motion = law.from_peak_acceleration(
                         need("acceleration", i, kind, nonzero), duration)
@@ -416,11 +421,11 @@ def _motions(reader, histories):
                 raise reader.error(f"a constant acceleration needs 'then' = one of "
                                    f"{list(THEN)}", then,
                                    t.sheet, t.cell("then", i) if t.has("then") else "A1")
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 motion = ConstantAcceleration(rate, duration, then)
         elif kind == "velocity step":
             unused(("acceleration", "duration", "amplitude", "then", "history"), i, kind)
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 motion = VelocityStep(need("delta V", i, kind, nonzero))
         else:
             unused(("acceleration", "duration", "amplitude", "then", "delta V"), i, kind)

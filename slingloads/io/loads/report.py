@@ -61,6 +61,7 @@ from slingloads.io.common.figures import (
     start_drawing,
     task_result,
 )
+from slingloads.io.common.locate import located
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -72,7 +73,6 @@ from slingloads.io.common.report import (
 )
 from slingloads.io.common.report_writer import protected_inputs
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
 

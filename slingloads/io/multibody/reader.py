@@ -28,9 +28,8 @@ from slingloads.io.airframe.reader import (
     read_fuselage_aero,
     read_parachute,
 )
-from slingloads.io.common.locate import at_row
+from slingloads.io.common.locate import Place, located
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import located
 from slingloads.io.multibody.schema import (
     CANOPY_TABLES,
     CARRIERS,
@@ -173,9 +172,9 @@ def read_system(reader, params, study):
     if parachute is not None:
         _check_reach(reader, params, refs, hardpoints, parachute, cable)
     carrier = _carrier(params, carrier_choice)
-    with params.at("multibody density altitude"):
+    with located(params, default="multibody density altitude"):
         isa_density(altitude)
-    with located(file, STUDY_SHEET):
+    with located(Place(file, STUDY_SHEET)):
         system = SlingSystem(body, hardpoints, cable, fuselage, surfaces, parachute, carrier,
                              airspeed, altitude, name=str(params("study name")))
     return system, {"configuration": configuration, "tail": tail_choice,
@@ -185,7 +184,7 @@ def read_system(reader, params, study):
 
 def _body(reader, study):
     """The carried helicopter's mass, CG and inertia tensor from MassItems."""
-    with located(reader.file, "MassItems"):
+    with located(Place(reader.file, "MassItems")):
         return RigidBody.from_mass_items(study.airframe.mass_items)
 
 
@@ -193,7 +192,7 @@ def _surfaces(reader, params, refs, tail_choice):
     """The fin (cut down, or intact with the full tail) and the horizontal tail."""
     fin = read_fin_aero(reader, params, refs)
     if fin is not None:
-        with params.at("fin axes"):
+        with located(params, default="fin axes"):
             LiftingSurface.from_fin(fin)  # a normal-force table: body axes
     if tail_choice == "cut-down fin":
         return (LiftingSurface.from_fin(fin),) if fin is not None else ()
@@ -210,10 +209,10 @@ def _surfaces(reader, params, refs, tail_choice):
                            sheet="Hardpoints", cell="B1")
     area = params.positive("multibody horizontal tail area")
     t = reader.table(_SPEC["HTailAero"])
-    with t.located():
+    with located(t):
         table = Table1D(t["alpha"], {"CN": t["CN"]}, angle_name="alpha",
                         what="horizontal tail")
-    with params.at("multibody horizontal tail area"):
+    with located(params, default="multibody horizontal tail area"):
         tail = LiftingSurface(table, area, refs["htail_cp"], "z", 1.0, "horizontal tail")
     return LiftingSurface.from_fin(fin, efficiency=1.0), tail
 
@@ -241,7 +240,7 @@ def _parachute(reader, params, hardpoints, model, canopy_table):
     if model == "quasi-static":
         return QuasiStaticParachute(chute)
     mass = params.positive("multibody canopy mass")
-    with params.at("multibody canopy mass"):
+    with located(params, default="multibody canopy mass"):
         return HingedParachute(chute, mass)
 
 
@@ -303,7 +302,7 @@ def read_manoeuvres(reader, params, system, t_end):
         kind = rows.choice("kind", i, MANOEUVRE_KINDS, required=True)
         builder = {"free response": _free_response, "gust": _gust,
                    "forward acceleration": _acceleration, "wind ramp": _wind_ramp}[kind]
-        with at_row(t, "kind", i):
+        with located(t, default="kind", index=i):
             out.append(builder(rows, i, name, system, t_end))
     return tuple(out), "MultibodyManoeuvres sheet"
 
