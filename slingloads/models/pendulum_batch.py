@@ -10,13 +10,13 @@ acceleration read from a table per distinct motion. Compiled with
 package's ``__pycache__`` after the first call). The module is self-contained, so numba's own
 check of this file's source keeps the cache valid.
 
-Parameter rows (``P``, one per run) hold, in order: mass [kg], roll inertia [kg m^2], CG below
-hub e [m], rope length [m], cable spring rate EA/l [N/m] (unused for the rigid rope), lateral
-damping [N s/m], roll damping [N m s/rad], gravity [m/s^2], damped point height [m].
+Parameter rows (``P``, one per run) are laid out by :data:`LAYOUT`
+(:mod:`slingloads.models.packed`).
 
 Drive tables (``drive``, shape (motions, nodes, 3, 2)): for the step starting at node i, the
 hook's (velocity [m/s], acceleration [m/s^2]) at its start (just after a jump there), middle
-and end (just before a jump there).
+and end (just before a jump there), as the RK4 step expects
+(:mod:`slingloads.models.runge_kutta`).
 """
 
 from __future__ import annotations
@@ -26,8 +26,27 @@ import math
 import numba
 import numpy as np
 
+from slingloads.models.packed import Field, Layout
+from slingloads.models.runge_kutta import rk4_stepper
+
+#: A row of ``P``: the parameters of one run (:meth:`LateralPendulum.arrays
+#: <slingloads.models.pendulum.LateralPendulum.arrays>`).
+LAYOUT = Layout((
+    Field("mass", "kg", "mass of the carried helicopter"),
+    Field("inertia", "kg m^2", "roll inertia about the CG"),
+    Field("e", "m", "CG below the hub"),
+    Field("length", "m", "rope length"),
+    Field("stiffness", "N/m", "cable spring rate EA/l (unused for the rigid rope)"),
+    Field("c_lat", "N s/m", "lateral damping"),
+    Field("c_roll", "N m s/rad", "roll damping"),
+    Field("g", "m/s^2", "acceleration of gravity"),
+    Field("h_d", "m", "height of the damped point above the CG"),
+))
 #: Order of the parameters in a row of ``P``.
-PARAMETERS = ("mass", "inertia", "e", "length", "stiffness", "c_lat", "c_roll", "g", "h_d")
+PARAMETERS = LAYOUT.names
+MASS, INERTIA, E, LENGTH = LAYOUT["mass"], LAYOUT["inertia"], LAYOUT["e"], LAYOUT["length"]
+STIFFNESS, C_LAT, C_ROLL = LAYOUT["stiffness"], LAYOUT["c_lat"], LAYOUT["c_roll"]
+G, H_D = LAYOUT["g"], LAYOUT["h_d"]
 #: Signals whose running peak is kept: |theta1 - theta2|, |theta1|, T/(m g), -T/(m g).
 N_SIGNALS = 4
 
@@ -38,8 +57,8 @@ _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True
 @_jit
 def rigid_rope(x, s_vel, s_acc, p, dx):
     """Rigid rope: write the state derivative into ``dx``; return the tension [N]."""
-    mass, inertia, e, length = p[0], p[1], p[2], p[3]
-    c_lat, c_roll, g, h_d = p[5], p[6], p[7], p[8]
+    mass, inertia, e, length = p[MASS], p[INERTIA], p[E], p[LENGTH]
+    c_lat, c_roll, g, h_d = p[C_LAT], p[C_ROLL], p[G], p[H_D]
     th1, th2, w1, w2 = x[0], x[1], x[2], x[3]
     s1, c1, s2, c2 = math.sin(th1), math.cos(th1), math.sin(th2), math.cos(th2)
     sd, cd = math.sin(th1 - th2), math.cos(th1 - th2)
@@ -62,8 +81,8 @@ def rigid_rope(x, s_vel, s_acc, p, dx):
 @_jit
 def elastic_cable(x, s_vel, s_acc, p, dx):
     """Elastic tension-only cable: write the state derivative into ``dx``; return T [N]."""
-    mass, inertia, e, length, stiffness = p[0], p[1], p[2], p[3], p[4]
-    c_lat, c_roll, g, h_d = p[5], p[6], p[7], p[8]
+    mass, inertia, e, length, stiffness = p[MASS], p[INERTIA], p[E], p[LENGTH], p[STIFFNESS]
+    c_lat, c_roll, g, h_d = p[C_LAT], p[C_ROLL], p[G], p[H_D]
     ry, rz, th2, vy, vz, w2 = x[0], x[1], x[2], x[3], x[4], x[5]
     s2, c2 = math.sin(th2), math.cos(th2)
     dist = math.sqrt(ry * ry + rz * rz)
@@ -79,10 +98,16 @@ def elastic_cable(x, s_vel, s_acc, p, dx):
 
 
 @_jit
-def _derivatives(rigid, x, s_vel, s_acc, p, dx):
+def _rhs(x, drive, i, stage, args, dx):
+    """The right-hand side of the RK4 step: ``args`` = (rigid, parameter row); returns the
+    tension [N]."""
+    rigid, p = args
     if rigid:
-        return rigid_rope(x, s_vel, s_acc, p, dx)
-    return elastic_cable(x, s_vel, s_acc, p, dx)
+        return rigid_rope(x, drive[i, stage, 0], drive[i, stage, 1], p, dx)
+    return elastic_cable(x, drive[i, stage, 0], drive[i, stage, 1], p, dx)
+
+
+_rk4_step = rk4_stepper(_rhs)
 
 
 @_jit
@@ -142,12 +167,13 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
         y0, y1, y2, yl = (np.empty(N_SIGNALS), np.empty(N_SIGNALS), np.empty(N_SIGNALS),
                           np.empty(N_SIGNALS))
         p = P[j]
+        args = (rigid, p)
         dr = drive[profile[j]]
-        weight = p[0] * p[7]
+        weight = p[MASS] * p[G]
         for m in range(n):
             x[m] = x0[j, m]
         bj, tj = best[j], t_best[j]
-        tension = _derivatives(rigid, x, dr[0, 0, 0], dr[0, 0, 1], p, k1)
+        tension = _rhs(x, dr, 0, 0, args, k1)
         ok1, alive = _signals(rigid, x, tension, weight, True, y1)
         for s in range(N_SIGNALS):
             bj[s] = -np.inf if (s < 2 and not ok1) else y1[s]
@@ -157,23 +183,13 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
         for i in range(n_steps):
             t, t_next = nodes[i], nodes[i + 1]
             h = t_next - t
-            for m in range(n):
-                tmp[m] = x[m] + 0.5 * h * k1[m]
-            _derivatives(rigid, tmp, dr[i, 1, 0], dr[i, 1, 1], p, k2)
-            for m in range(n):
-                tmp[m] = x[m] + 0.5 * h * k2[m]
-            _derivatives(rigid, tmp, dr[i, 1, 0], dr[i, 1, 1], p, k3)
-            for m in range(n):
-                tmp[m] = x[m] + h * k3[m]
-            _derivatives(rigid, tmp, dr[i, 2, 0], dr[i, 2, 1], p, k4)
-            for m in range(n):
-                x[m] = x[m] + (h / 6.0) * (k1[m] + 2.0 * k2[m] + 2.0 * k3[m] + k4[m])
+            _rk4_step(x, h, dr, i, args, k1, k2, k3, k4, tmp, x)
             if jumps[i + 1]:
                 # the tension jumps with S'': count its value just before, then go on after
-                tension = _derivatives(rigid, x, dr[i, 2, 0], dr[i, 2, 1], p, k1)
+                tension = _rhs(x, dr, i, 2, args, k1)
                 ok_left, alive = _signals(rigid, x, tension, weight, alive, yl)
                 _keep(bj, tj, yl, ok_left, t_next)
-            tension = _derivatives(rigid, x, dr[i + 1, 0, 0], dr[i + 1, 0, 1], p, k1)
+            tension = _rhs(x, dr, i + 1, 0, args, k1)
             ok2, alive = _signals(rigid, x, tension, weight, alive, y2)
             if (i > 0 and abs(h - h_prev) <= 1e-9 * h and not (jumps[i] or jumps[i + 1])
                     and ok0 and ok1 and ok2):

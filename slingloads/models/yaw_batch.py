@@ -20,13 +20,11 @@ kernel, exactly, from the segment's piece (``c0 + c1 (t - start) + sum a cos(ome
 steady piece (a constant) the relative wind is computed once per segment instead of at every
 stage.
 
-Model row (``M``): 1/2 rho [kg/m^3], yaw inertia [kg m^2], then flags and constants: has
-fuselage, has fin, fin at its local sideslip, has parachute, fin arm dx, dy [m], fin table
-limits lo, hi [rad], parachute CD [-], parachute arm dx, dy [m], fuselage table limits lo,
-hi [rad], true airspeed [m/s]. Tables: the fuselage's ``fus_x`` [rad], ``fus_n`` (N per
-unit q about the axis) [m^3] and the slopes of its segments ``fus_s`` [m^3/rad]; the fin's
-``fin_x`` [rad], ``fin_k`` (S eta CY) [m^2] and ``fin_s`` [m^2/rad]: a lookup is a search from
-the interval found last, one multiplication and one addition.
+Model row (``M``): laid out by :data:`LAYOUT` (:mod:`slingloads.models.packed`). Tables: the
+fuselage's ``fus_x`` [rad], ``fus_n`` (N per unit q about the axis) [m^3] and the slopes of its
+segments ``fus_s`` [m^3/rad]; the fin's ``fin_x`` [rad], ``fin_k`` (S eta CY) [m^2] and
+``fin_s`` [m^2/rad]: a lookup is a search from the interval found last, one multiplication and
+one addition.
 
 References
 ----------
@@ -44,14 +42,40 @@ import numba
 import numpy as np
 
 from slingloads.models import dormand_prince
+from slingloads.models.packed import Field, Layout
+from slingloads.models.runge_kutta import rk4_stepper
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
 _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
-(HALF_RHO, INERTIA, HAS_FUS, HAS_FIN, FIN_LOCAL, HAS_CHUTE, FIN_DX, FIN_DY, FIN_LO, FIN_HI,
- CHUTE_CD, CHUTE_DX, CHUTE_DY, FUS_LO, FUS_HI, TAS) = range(16)
+#: The model row ``M`` (:mod:`slingloads.models.packed`).
+LAYOUT = Layout((
+    Field("half_rho", "kg/m^3", "half the air density"),
+    Field("inertia", "kg m^2", "yaw inertia about the suspension axis"),
+    Field("has_fus", "-", "1: the fuselage is modelled"),
+    Field("has_fin", "-", "1: the fin is modelled"),
+    Field("fin_local", "-", "1: the fin at its local sideslip (yaw-rate damping)"),
+    Field("has_chute", "-", "1: the parachute is modelled"),
+    Field("fin_dx", "m", "fin arm from the suspension axis, x"),
+    Field("fin_dy", "m", "fin arm from the suspension axis, y"),
+    Field("fin_lo", "rad", "lower end of the fin table"),
+    Field("fin_hi", "rad", "upper end of the fin table"),
+    Field("chute_cd", "-", "parachute drag coefficient times wake ratio"),
+    Field("chute_dx", "m", "parachute arm from the suspension axis, x"),
+    Field("chute_dy", "m", "parachute arm from the suspension axis, y"),
+    Field("fus_lo", "rad", "lower end of the fuselage table"),
+    Field("fus_hi", "rad", "upper end of the fuselage table"),
+    Field("tas", "m/s", "true airspeed"),
+))
+HALF_RHO, INERTIA = LAYOUT["half_rho"], LAYOUT["inertia"]
+HAS_FUS, HAS_FIN, FIN_LOCAL = LAYOUT["has_fus"], LAYOUT["has_fin"], LAYOUT["fin_local"]
+HAS_CHUTE = LAYOUT["has_chute"]
+FIN_DX, FIN_DY, FIN_LO, FIN_HI = (LAYOUT["fin_dx"], LAYOUT["fin_dy"], LAYOUT["fin_lo"],
+                                  LAYOUT["fin_hi"])
+CHUTE_CD, CHUTE_DX, CHUTE_DY = LAYOUT["chute_cd"], LAYOUT["chute_dx"], LAYOUT["chute_dy"]
+FUS_LO, FUS_HI, TAS = LAYOUT["fus_lo"], LAYOUT["fus_hi"], LAYOUT["tas"]
 #: Length of a model row.
-N_MODEL = 16
+N_MODEL = len(LAYOUT)
 #: Chunks of runs of the adaptive kernel, each run j in chunk j mod CHUNKS.
 CHUNKS = 64
 #: Smallest adaptive step before a run that leaves a table is stopped. [s]
@@ -125,10 +149,28 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_
     return (n_fus + n_fin + n_chute) / M[INERTIA], not inside, lo_fus, lo_fin
 
 
+@_jit
+def _rhs(x, wind, i, stage, args, dx):
+    """The right-hand side of the RK4 step, state ``x`` = (psi [rad], r [rad/s]), the wind
+    ``wind[i, stage]`` = (gamma [rad], relative speed [m/s]); ``args`` = (area, M, tables...,
+    ``lo``: the table intervals found last, updated). Returns True outside a table."""
+    area, M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo = args
+    acc, outside, lo[0], lo[1] = yaw_acceleration(x[0], x[1], wind[i, stage, 0],
+                                                  wind[i, stage, 1], area, M, fus_x, fus_n,
+                                                  fus_s, fin_x, fin_k, fin_s, lo[0], lo[1])
+    dx[0] = x[1]
+    dx[1] = acc
+    return outside
+
+
+_rk4_step = rk4_stepper(_rhs)
+
+
 @_parallel_jit
 def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fus_s, fin_x,
               fin_k, fin_s, out_psi, out_rate, left, exit_step):
-    """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,).
+    """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,) by the
+    RK4 step of :mod:`slingloads.models.runge_kutta`.
 
     ``wind`` (gusts, steps, 3, 2): the wind angle gamma [rad] and relative speed [m/s] of each
     distinct gust at the start, middle and end of every step; ``index`` (runs,) each run's
@@ -141,47 +183,30 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fu
     runs = psi0.size
     n_steps = step.size
     for j in numba.prange(runs):
-        lf = 0
-        lk = 0
+        x = np.empty(2)
+        new = np.empty(2)
+        k1, k2, k3, k4, tmp = np.empty(2), np.empty(2), np.empty(2), np.empty(2), np.empty(2)
+        lo = np.zeros(2, dtype=np.int64)
         w = wind[index[j]]
-        area = areas[j]
-        psi, rate = psi0[j], rate0[j]
-        out_psi[j, 0], out_rate[j, 0] = psi, rate
+        args = (areas[j], M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo)
+        x[0], x[1] = psi0[j], rate0[j]
+        out_psi[j, 0], out_rate[j, 0] = x[0], x[1]
         gone = False
         k_out = 1
         for i in range(n_steps):
             if not gone:
-                dt = step[i]
-                half = 0.5 * dt
-                ga, va = w[i, 0, 0], w[i, 0, 1]
-                gb, vb = w[i, 1, 0], w[i, 1, 1]
-                gc, vc = w[i, 2, 0], w[i, 2, 1]
-                k1r, o1, lf, lk = yaw_acceleration(psi, rate, ga, va, area, M, fus_x, fus_n,
-                                                   fus_s, fin_x, fin_k, fin_s, lf, lk)
-                k1p = rate
-                k2r, o2, lf, lk = yaw_acceleration(psi + half * k1p, rate + half * k1r, gb, vb,
-                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
-                                                   fin_s, lf, lk)
-                k2p = rate + half * k1r
-                k3r, o3, lf, lk = yaw_acceleration(psi + half * k2p, rate + half * k2r, gb, vb,
-                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
-                                                   fin_s, lf, lk)
-                k3p = rate + half * k2r
-                k4r, o4, lf, lk = yaw_acceleration(psi + dt * k3p, rate + dt * k3r, gc, vc,
-                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
-                                                   fin_s, lf, lk)
-                k4p = rate + dt * k3r
+                o1 = _rhs(x, w, i, 0, args, k1)
+                o2, o3, o4 = _rk4_step(x, step[i], w, i, args, k1, k2, k3, k4, tmp, new)
                 if o1 or o2 or o3 or o4:
                     gone = True
                     left[j] = True
                     exit_step[j] = i
-                    rate = 0.0
+                    x[1] = 0.0
                 else:
-                    psi = psi + (dt / 6.0) * (k1p + 2 * k2p + 2 * k3p + k4p)
-                    rate = rate + (dt / 6.0) * (k1r + 2 * k2r + 2 * k3r + k4r)
+                    x[0], x[1] = new[0], new[1]
             if stored[i + 1]:
-                out_psi[j, k_out] = psi
-                out_rate[j, k_out] = rate
+                out_psi[j, k_out] = x[0]
+                out_rate[j, k_out] = x[1]
                 k_out += 1
 
 

@@ -50,7 +50,7 @@ from slingloads.models.dormand_prince import C as _C
 from slingloads.models.dormand_prince import E as _E
 from slingloads.models.dormand_prince import P as _P
 from slingloads.models.multibody._jit import jit, jit_alloc
-from slingloads.models.multibody.equations import N_INFO, N_STATES, PARAMETERS, evaluate
+from slingloads.models.multibody.equations import CARRIER_FREE, N_INFO, N_STATES, evaluate
 from slingloads.models.multibody.response import (
     N_HISTORY,
     N_MEASURES,
@@ -68,8 +68,6 @@ DRIVE_STEP = 0.01
 SMALLEST_STEP = 1e-6
 #: First trial step of a run. [s]
 FIRST_STEP = 0.01
-#: Parameter that tells a free carrier (> 0) from a frozen one.
-_CARRIER_FREE = PARAMETERS.index("carrier_free")
 
 # Dormand-Prince 5(4) (scipy's RK45), passed to the kernels as arguments
 
@@ -220,7 +218,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
                     # a segment whose channels are constant to the last bit: its drive once
                     # (the commanded velocity drives a free carrier only)
                     steady = True
-                    for c in range(9 if pj[_CARRIER_FREE] > 0.0 else 6):
+                    for c in range(9 if pj[CARRIER_FREE] > 0.0 else 6):
                         if vary[row, s, c] or bend[row, s, c] != 0.0:
                             steady = False
                     if steady:
