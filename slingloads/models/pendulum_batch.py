@@ -2,13 +2,13 @@
 
 The same equations as :func:`slingloads.models.pendulum.rigid_rope_derivatives` and
 :func:`~slingloads.models.pendulum.elastic_cable_derivatives`, written on scalars (operation
-for operation, so that the results agree to round-off), and the same step and peak logic as
-the vectorised numpy sweep of :func:`slingloads.analyses.lateral.sweep`: each run on its own
-(runs in parallel over the cores), every run on the shared time grid, the hook's velocity and
-acceleration read from a table per distinct motion. Compiled with
-`numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept in this
-package's ``__pycache__`` after the first call). The module is self-contained, so numba's own
-check of this file's source keeps the cache valid.
+for operation, so that the results agree to round-off), stepped by the RK4 step of
+:mod:`slingloads.models.runge_kutta` with the peak logic of
+:func:`slingloads.analyses.lateral.sweep`: each run on its own (runs in parallel over the
+cores), every run on the shared time grid, the hook's velocity and acceleration read from a
+table per distinct motion. Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``:
+the machine code is kept in this package's ``__pycache__`` after the first call; it is dropped
+when a source of the package changes, :mod:`slingloads.models.runge_kutta`).
 
 Parameter rows (``P``, one per run) are laid out by :data:`LAYOUT`
 (:mod:`slingloads.models.packed`).

@@ -3,12 +3,12 @@ adaptive Dormand-Prince 5(4).
 
 The same moments as :meth:`slingloads.models.yaw_dynamics.YawModel.moments` (fuselage table,
 fin at its local sideslip, Apollo legacy drogue), written on scalars operation for operation,
-and the same step logic as the numpy batch of
-:func:`slingloads.models.yaw_dynamics.integrate_rk4`: each run on its own (runs in parallel
+stepped by the RK4 step of :mod:`slingloads.models.runge_kutta`
+(:func:`slingloads.models.yaw_dynamics.integrate_rk4`): each run on its own (runs in parallel
 over the cores) on the shared time grid, the relative wind read from a table per distinct
-gust, a run that leaves a table frozen from the start of that step. Compiled with `numba <https://numba.pydata.org>`_
-(``cache=True``); the module is self-contained, so numba's own check of this file's source
-keeps the cache valid.
+gust, a run that leaves a table frozen from the start of that step. Compiled with
+`numba <https://numba.pydata.org>`_ (``cache=True``; the cache is dropped when a source of the
+package changes, :mod:`slingloads.models.runge_kutta`).
 
 The adaptive kernel :func:`dopri_batch` is the Dormand-Prince pair 5(4) of
 :func:`scipy.integrate.solve_ivp`'s ``RK45`` [1]_ (same error norm, step-size control and

@@ -37,10 +37,11 @@ dx_c^2``; the fin ``-q S_f eta CY_beta dx_f`` and ``-1/2 rho V S_f eta CY_beta d
 Airspeed: the condition is given as indicated airspeed, taken equal to equivalent airspeed
 (position and compressibility errors are neglected at 80 kt); q = 1/2 rho0 V_EAS^2.
 
-Two integrators share :meth:`YawModel.derivatives`: :func:`integrate_rk4`, fixed-step
-Runge-Kutta 4 on arrays of shape (runs,), vectorised over all runs at once (the sizing sweep),
-and :func:`integrate_reference`, one :func:`scipy.integrate.solve_ivp` call per run (the
-reference it is checked against).
+Three integrators of the same moments: :func:`integrate_rk4`, fixed-step Runge-Kutta 4, and
+:func:`integrate_dopri`, the adaptive Dormand-Prince 5(4) pair, both compiled over all runs at
+once (:mod:`slingloads.models.yaw_batch`, the sizing sweep); and
+:func:`integrate_reference`, one :func:`scipy.integrate.solve_ivp` call per run on
+:meth:`YawModel.derivatives` (the reference they are checked against).
 
 References
 ----------
@@ -382,13 +383,8 @@ def _check_runs(model, areas, gusts, psi0, rate0):
     return areas, gusts, psi0, rate0
 
 
-#: Batch integrators of :func:`integrate_rk4`: the compiled kernel and the numpy one it is
-#: tested against.
-KERNELS = ("compiled", "numpy")
-
-
-def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kernel="compiled"):
-    """Integrate many runs at once with fixed-step RK4, vectorised over runs.
+def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
+    """Integrate many runs with fixed-step RK4, compiled, the runs spread over the cores.
 
     Parameters
     ----------
@@ -399,32 +395,35 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kerne
     psi0, rate0 : array_like
         Initial yaw [rad] and yaw rate [rad/s] (trim: psi0 = -beta_trim).
     settings : SolverSettings, optional
-    kernel : {"compiled", "numpy"}
-        ``"compiled"`` (default) integrates a :class:`YawModel` one run at a time in compiled
-        code (:mod:`slingloads.models.yaw_batch`), the same scheme operation for operation;
-        ``"numpy"`` steps all runs together with numpy operations (any model with the
-        interface of :class:`YawModel`; other models always take this path). The two agree
-        to round-off.
 
     Returns
     -------
     Histories
 
+    Raises
+    ------
+    InputError
+        For a model that is not a :class:`YawModel`, or runs, gusts or settings out of
+        range.
+
     Notes
     -----
     The step grid is uniform with every gust breakpoint (jump or kink: onsets, ends, the end
     of a rise) inserted, so that no step straddles one; histories are stored on the uniform
-    output grid. Gust velocities are tabulated once per distinct gust (at the start, middle
+    output grid. Each run is integrated on its own by the RK4 step of
+    :mod:`slingloads.models.runge_kutta` (:func:`slingloads.models.yaw_batch.rk4_batch`).
+    Gust velocities are tabulated once per distinct gust (at the start, middle
     and end of each step, the end value taken just before the step end so that a jump on a
     step boundary is seen on the correct side); a turbulence realisation is a function of
     time, so every stage sees the same gust. Table lookups are ``np.interp`` on the tables'
     breakpoints; a run that leaves a table is flagged and frozen, never clamped silently.
     """
-    if kernel not in KERNELS:
-        raise InputError(f"yaw integrator {kernel=!r} is not a valid option; valid options are "
-                         f"{list(KERNELS)}", kernel)
+    from slingloads.models import yaw_batch
+
+    if not isinstance(model, YawModel):
+        raise InputError("the compiled yaw integrators run a YawModel",
+                         type(model).__name__)
     settings = yaw_solver_settings(settings)
-    n, every = settings.fixed_grid()
     areas, gusts, psi, rate = _check_runs(model, areas, gusts, psi0, rate0)
     runs = areas.size
     unique, index = _distinct(gusts)
@@ -439,19 +438,13 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kerne
         tables.append((gamma.T.copy(), v_rel.T.copy()))  # (steps, unique)
     out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
     left = np.zeros(runs, dtype=bool)
-    if kernel == "compiled" and isinstance(model, YawModel):
-        exit_step = np.zeros(runs, dtype=np.int64)
-        from slingloads.models import yaw_batch
-
-        # (steps, gusts, 3, 2) -> (gusts, steps, 3, 2)
-        wind = np.stack([np.stack(pair, axis=-1) for pair in tables], axis=-2)
-        wind = np.ascontiguousarray(wind.transpose(1, 0, 2, 3))
-        yaw_batch.rk4_batch(psi, rate, areas, index, wind, step, stored,
-                            *_compiled_model(model), out_psi, out_rate, left, exit_step)
-        exit_time = np.where(left, start[exit_step], np.nan)
-    else:
-        exit_time = _numpy_rk4(model, psi, rate, areas, index, tables, start, step, stored,
-                               out_psi, out_rate, left)
+    exit_step = np.zeros(runs, dtype=np.int64)
+    # (steps, gusts, 3, 2) -> (gusts, steps, 3, 2)
+    wind = np.stack([np.stack(pair, axis=-1) for pair in tables], axis=-2)
+    wind = np.ascontiguousarray(wind.transpose(1, 0, 2, 3))
+    yaw_batch.rk4_batch(psi, rate, areas, index, wind, step, stored, *_compiled_model(model),
+                        out_psi, out_rate, left, exit_step)
+    exit_time = np.where(left, start[exit_step], np.nan)
     gust_out = np.stack([g.velocity(times) for g in unique])
     gamma_out = model.relative_wind(gust_out)[0]
     beta = gamma_out[index] - out_psi
@@ -634,42 +627,6 @@ def _gust_pieces(gust, t_end):
     if isinstance(gust, FiniteGust):
         return [rest, (t0, amp, 0.0, 0.0, []), (t0 + gust.duration, 0.0, 0.0, 0.0, [])]
     return [rest, (t0, amp, 0.0, 0.0, [])]
-
-
-def _numpy_rk4(model, psi, rate, areas, index, tables, start, step, stored, out_psi,
-               out_rate, left):
-    """The RK4 steps of :func:`integrate_rk4` on arrays of shape (runs,); fills the outputs
-    and returns the exit times."""
-    (g0, w0), (gm, wm), (g1, w1) = tables
-    out_psi[:, 0], out_rate[:, 0] = psi, rate
-    exit_time = np.full(psi.size, np.nan)
-    deriv = model.derivatives
-    k_out = 1
-    for i in range(start.size):
-        dt = step[i]
-        half = 0.5 * dt
-        ga, va = g0[i, index], w0[i, index]
-        gb, vb = gm[i, index], wm[i, index]
-        gc, vc = g1[i, index], w1[i, index]
-        k1p, k1r, o1 = deriv(psi, rate, ga, va, areas)
-        k2p, k2r, o2 = deriv(psi + half * k1p, rate + half * k1r, gb, vb, areas)
-        k3p, k3r, o3 = deriv(psi + half * k2p, rate + half * k2r, gb, vb, areas)
-        k4p, k4r, o4 = deriv(psi + dt * k3p, rate + dt * k3r, gc, vc, areas)
-        new_psi = psi + (dt / 6.0) * (k1p + 2 * k2p + 2 * k3p + k4p)
-        new_rate = rate + (dt / 6.0) * (k1r + 2 * k2r + 2 * k3r + k4r)
-        bad = o1 | o2 | o3 | o4
-        if bad.any() or left.any():  # a run that left stays frozen
-            fresh = bad & ~left
-            exit_time[fresh] = start[i]
-            left |= bad
-            new_psi = np.where(left, psi, new_psi)
-            new_rate = np.where(left, 0.0, new_rate)
-        psi, rate = new_psi, new_rate
-        if stored[i + 1]:
-            out_psi[:, k_out] = psi
-            out_rate[:, k_out] = rate
-            k_out += 1
-    return exit_time
 
 
 def _time_nodes(settings, gusts):

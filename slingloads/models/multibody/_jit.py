@@ -8,7 +8,8 @@ the integration kernel allocates its work arrays once per block of runs.
 
 numba invalidates a cached function when its own source file changes, not when a function it
 calls from another module does. The kernels span several modules, so the cache files of this
-package are dropped whenever any of its sources changes (:func:`_drop_stale_cache`).
+package are dropped whenever any of its sources, or the packed layouts
+(:mod:`slingloads.models.packed`), changes (:func:`_drop_stale_cache`).
 """
 
 from __future__ import annotations
@@ -19,13 +20,14 @@ from pathlib import Path
 import numba
 
 _HERE = Path(__file__).resolve().parent
-_STAMP = "multibody-sources.sha256"
+_STAMP = "kernel-sources.sha256"
 
 
-def _drop_stale_cache(folder=_HERE):
-    """Delete the numba cache files of ``folder`` if its sources changed since they were made."""
+def _drop_stale_cache(folder=_HERE, also=(_HERE.parent / "packed.py",)):
+    """Delete the numba cache files of ``folder`` if its sources, or the files ``also`` that
+    its kernels depend on, changed since they were made."""
     digest = hashlib.sha256()
-    for path in sorted(folder.glob("*.py")):
+    for path in [*sorted(folder.glob("*.py")), *also]:
         digest.update(path.name.encode())
         digest.update(path.read_bytes())
     cache = folder / "__pycache__"
