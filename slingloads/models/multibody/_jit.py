@@ -8,8 +8,9 @@ the integration kernel allocates its work arrays once per block of runs.
 
 numba invalidates a cached function when its own source file changes, not when a function it
 calls from another module does. The kernels span several modules, so the cache files of this
-package are dropped whenever any of its sources, or the packed layouts
-(:mod:`slingloads.models.packed`), changes (:func:`_drop_stale_cache`).
+package are dropped whenever any of its sources, the packed layouts
+(:mod:`slingloads.models.packed`) or the Dormand-Prince pair
+(:mod:`slingloads.models.dormand_prince`) changes (:func:`_drop_stale_cache`).
 """
 
 from __future__ import annotations
@@ -23,7 +24,8 @@ _HERE = Path(__file__).resolve().parent
 _STAMP = "kernel-sources.sha256"
 
 
-def _drop_stale_cache(folder=_HERE, also=(_HERE.parent / "packed.py",)):
+def _drop_stale_cache(folder=_HERE, also=(_HERE.parent / "packed.py",
+                                          _HERE.parent / "dormand_prince.py")):
     """Delete the numba cache files of ``folder`` if its sources, or the files ``also`` that
     its kernels depend on, changed since they were made."""
     digest = hashlib.sha256()

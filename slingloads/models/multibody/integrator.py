@@ -45,10 +45,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from slingloads.models.dormand_prince import A as _A
 from slingloads.models.dormand_prince import C as _C
-from slingloads.models.dormand_prince import E as _E
-from slingloads.models.dormand_prince import P as _P
+from slingloads.models.dormand_prince import dense, error_norm, grow, shrink, stage
 from slingloads.models.multibody._jit import jit, jit_alloc
 from slingloads.models.multibody.equations import CARRIER_FREE, N_INFO, N_STATES, evaluate
 from slingloads.models.multibody.response import (
@@ -68,9 +66,6 @@ DRIVE_STEP = 0.01
 SMALLEST_STEP = 1e-6
 #: First trial step of a run. [s]
 FIRST_STEP = 0.01
-
-# Dormand-Prince 5(4) (scipy's RK45), passed to the kernels as arguments
-
 
 @jit
 def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
@@ -114,9 +109,9 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
 
 @jit_alloc
 def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, bend, nodes,
-               profile, interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
-               tail_g, tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time, time,
-               measured, measures):
+               profile, interval, fixed, rtol, atol, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g,
+               tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time, time, measured,
+               measures):
     """Integrate runs ``x0`` (runs, N) with parameters ``P`` (runs, NP), in place.
 
     Profile ``row = profile[j]`` of run j: ``n_seg[row]`` segments from ``seg_a`` to
@@ -125,7 +120,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
     that vary over a segment, ``bend`` (profiles, S, 9) the rounding term of the others
     (:func:`_drive_at`); ``nodes`` (profiles, n_out, 9) the drive at the samples
     ``time`` (n_out,), every ``interval``. ``fixed`` > 0: that step; else adaptive with
-    ``rtol``, ``atol``. ``C``, ``A``, ``E``, ``PD``: the Dormand-Prince tableau.
+    ``rtol``, ``atol``: the Dormand-Prince pair of :mod:`slingloads.models.dormand_prince`.
 
     ``out`` receives the states at the samples (NaN after a stop): (runs, n_out, N), or
     (1, n_out, N) to keep only those of the run in hand. With ``report``, the reported
@@ -188,18 +183,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
                     for m in range(n):
                         y[m] = x[m]
                 else:
-                    theta = (sample * interval - t) / h
-                    for i in range(7):
-                        weights[i] = PD[i, 0] + theta * (PD[i, 1] + theta * (
-                            PD[i, 2] + theta * PD[i, 3]))
-                    for m in range(n):
-                        acc[m] = 0.0
-                    for i in range(7):
-                        w = weights[i]
-                        for m in range(n):
-                            acc[m] += K[i, m] * w
-                    for m in range(n):
-                        y[m] = x[m] + h * theta * acc[m]
+                    dense(x, K, h, (sample * interval - t) / h, weights, acc, y)
                     qn = math.sqrt(y[9] * y[9] + y[10] * y[10] + y[11] * y[11]
                                    + y[12] * y[12])
                     for m in range(9, 13):
@@ -225,15 +209,8 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
                         _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend,
                                   steady_drive)
                 else:
-                    for m in range(n):
-                        acc[m] = 0.0
-                    for i in range(phase):
-                        a = A[phase, i]
-                        for m in range(n):
-                            acc[m] += a * K[i, m]
-                    for m in range(n):
-                        y[m] = x[m] + h * acc[m]
-                    when = t + C[phase] * h
+                    stage(x, h, K, phase, acc, y)
+                    when = t + _C[phase] * h
                 if steady:
                     for c in range(9):
                         d[c] = steady_drive[c]
@@ -288,31 +265,17 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
                     stage_flag = flag0
                     phase = 1
                     continue
-                grow = 1.0
                 if fixed <= 0.0:
-                    for m in range(n):
-                        acc[m] = 0.0
-                    for i in range(7):
-                        e = E[i]
-                        for m in range(n):
-                            acc[m] += e * K[i, m]
-                    err = 0.0
-                    for m in range(n):
-                        scale = atol + rtol * max(abs(x[m]), abs(x5[m]))
-                        err += (h * acc[m] / scale) ** 2
-                    err = math.sqrt(err / n)
+                    err = error_norm(x, x5, K, h, rtol, atol, acc)
                     if err > 1.0:
-                        h *= max(0.2, 0.9 * err ** -0.2)
+                        h *= shrink(err)
                         h_try = h
                         rejected = True
                         stage_flag = flag0
                         phase = 1
                         continue
-                    grow = 10.0 if err == 0.0 else min(10.0, 0.9 * err ** -0.2)
-                    if rejected:
-                        grow = min(1.0, grow)
+                    h_try = h * grow(err, rejected)
                     rejected = False
-                    h_try = h * grow
                 flag0 = f  # K[6] is the next step's first derivative
                 t_new = t + h
                 if sample < n_out and sample * interval <= t_new + 1e-9 * interval:
@@ -551,7 +514,7 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
         dopri_runs(x0[own], P[own], drives["a"], drives["b"], drives["h"], drives["n"],
                    drives["offset"], drives["segments"], drives["values"], drives["vary"],
                    drives["bend"], drives["nodes"], profile[own], float(interval), fixed,
-                   float(rtol), float(atol), _C, _A, _E, _P, *tables, report or measuring,
+                   float(rtol), float(atol), *tables, report or measuring,
                    states[own] if keep_states else np.empty((1, n_out, N_STATES)),
                    info[own] if report else np.empty((work, n_out * work, N_INFO)),
                    rates[own] if report else np.empty((work, n_out * work, N_STATES)),
@@ -591,7 +554,7 @@ def evaluate_many(states, P, drives, tables):
     dopri_runs(states, P, none, none, none + 1.0, np.ones((n, 1), dtype=np.int64),
                np.zeros((n, 1), dtype=np.int64), np.zeros(n, dtype=np.int64),
                np.zeros((n, 2, 9)), np.zeros((n, 1, 9), bool), np.zeros((n, 1, 9)), nodes,
-               np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, _C, _A, _E, _P, *tables,
+               np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, *tables,
                True, np.empty((n, 1, N_STATES)), info, rates, flags, np.empty(n),
                np.zeros(1), np.zeros((n, 9)), np.empty((0, N_MEASURES)))
     return rates[:, 0], info[:, 0], flags
