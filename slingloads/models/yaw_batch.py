@@ -12,13 +12,13 @@ package changes, :mod:`slingloads.models.runge_kutta`).
 
 The adaptive kernel :func:`dopri_batch` is the Dormand-Prince pair 5(4) of
 :func:`scipy.integrate.solve_ivp`'s ``RK45`` [1]_ (same error norm, step-size control and
-fourth-order dense output [2]_): each run is integrated segment by segment between its gust's
-breakpoints and the starts of its pieces (no step straddles a jump or a kink) with its own
-step, and sampled on the output times from the dense output. The gust is evaluated in the
-kernel, exactly, from the segment's piece (``c0 + c1 (t - start) + sum a cos(omega (t - ref)
-+ phase)``), so that at a segment's end it takes the value just before the breakpoint; on a
-steady piece (a constant) the relative wind is computed once per segment instead of at every
-stage.
+fourth-order dense output [2]_; :mod:`slingloads.models.dormand_prince`): each run is
+integrated segment by segment between its gust's breakpoints and the starts of its pieces (no
+step straddles a jump or a kink) with its own step, and sampled on the output times from the
+dense output. The gust is evaluated in the kernel, exactly, from the segment's piece (``c0 + c1
+(t - start) + sum a cos(omega (t - ref) + phase)``), so that at a segment's end it takes the
+value just before the breakpoint; on a steady piece (a constant) the relative wind is computed
+once per segment instead of at every stage.
 
 Model row (``M``): laid out by :data:`LAYOUT` (:mod:`slingloads.models.packed`). Tables: the
 fuselage's ``fus_x`` [rad], ``fus_n`` (N per unit q about the axis) [m^3] and the slopes of its
@@ -41,7 +41,8 @@ import math
 import numba
 import numpy as np
 
-from slingloads.models import dormand_prince
+from slingloads.models.dormand_prince import C as DP_C
+from slingloads.models.dormand_prince import dense, error_norm, grow, shrink, stage
 from slingloads.models.packed import Field, Layout
 from slingloads.models.runge_kutta import rk4_stepper
 
@@ -80,9 +81,6 @@ N_MODEL = len(LAYOUT)
 CHUNKS = 64
 #: Smallest adaptive step before a run that leaves a table is stopped. [s]
 SMALLEST_STEP = 1e-6
-
-# Dormand-Prince 5(4) (scipy's RK45), read as constants by the compiled kernels
-DP_C, DP_A, DP_E, DP_P = dormand_prince.C, dormand_prince.A, dormand_prince.E, dormand_prince.P
 
 
 @_jit
@@ -236,14 +234,18 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
     """Run ``j`` of :func:`dopri_batch` (same arguments)."""
     n_out = out_psi.shape[1]
     tas = M[TAS]
-    kp = np.empty(7)
-    kr = np.empty(7)
+    K = np.empty((7, 2))
+    x = np.empty(2)
+    y = np.empty(2)
+    acc = np.empty(2)
+    sampled = np.empty(2)
+    weights = np.empty(7)
     lf = 0
     lk = 0
     g = index[j]
     area = areas[j]
-    psi, rate = psi0[j], rate0[j]
-    out_psi[j, 0], out_rate[j, 0] = psi, rate
+    x[0], x[1] = psi0[j], rate0[j]
+    out_psi[j, 0], out_rate[j, 0] = x[0], x[1]
     sample = 1
     t = 0.0
     h = first_step
@@ -261,9 +263,9 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
         if not steady:
             gamma, v_rel = relative_wind(
                 gust_value(t, start, c0, c1, ref, first, count, harm), tas)
-        acc, o, lf, lk = yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n,
-                                          fus_s, fin_x, fin_k, fin_s, lf, lk)
-        kp[0], kr[0] = rate, acc
+        rate_dot, o, lf, lk = yaw_acceleration(x[0], x[1], gamma, v_rel, area, M, fus_x, fus_n,
+                                               fus_s, fin_x, fin_k, fin_s, lf, lk)
+        K[0, 0], K[0, 1] = x[1], rate_dot
         gone = o
         while not gone and t < b:
             if tried == max_steps or stop[0] != 0:  # over budget: the call is refused
@@ -278,20 +280,17 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
             # stages 2 to 7 (7: at the fifth-order solution, first same as last)
             outside = False
             for i in range(1, 7):
-                yp, yr = psi, rate
-                for m in range(i):
-                    yp += h * DP_A[i, m] * kp[m]
-                    yr += h * DP_A[i, m] * kr[m]
+                stage(x, h, K, i, acc, y)
                 if not steady:
                     when = b if (last and DP_C[i] == 1.0) else t + DP_C[i] * h
                     gamma, v_rel = relative_wind(
                         gust_value(when, start, c0, c1, ref, first, count, harm), tas)
-                acc, o, lf, lk = yaw_acceleration(yp, yr, gamma, v_rel, area, M, fus_x,
-                                                  fus_n, fus_s, fin_x, fin_k, fin_s, lf,
-                                                  lk)
-                kp[i], kr[i] = yr, acc
+                rate_dot, o, lf, lk = yaw_acceleration(y[0], y[1], gamma, v_rel, area, M,
+                                                       fus_x, fus_n, fus_s, fin_x, fin_k,
+                                                       fin_s, lf, lk)
+                K[i, 0], K[i, 1] = y[1], rate_dot
                 outside = outside or o
-            new_psi, new_rate = yp, yr  # the last stage's argument is the solution
+            # y, the last stage's argument, is the solution
             if outside:
                 if h < 2.0 * SMALLEST_STEP:
                     gone = True
@@ -299,57 +298,33 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
                 h *= 0.5
                 rejected = True
                 continue
-            ep = 0.0
-            er = 0.0
-            for i in range(7):
-                ep += DP_E[i] * kp[i]
-                er += DP_E[i] * kr[i]
-            sp = atol + rtol * max(abs(psi), abs(new_psi))
-            sr = atol + rtol * max(abs(rate), abs(new_rate))
-            err = math.sqrt(0.5 * ((h * ep / sp) ** 2 + (h * er / sr) ** 2))
+            err = error_norm(x, y, K, h, rtol, atol, acc)
             if err > 1.0:
-                h *= max(0.2, 0.9 * err ** -0.2)
+                h *= shrink(err)
                 rejected = True
                 continue
             t_new = b if last else t + h
-            # dense output at the samples in (t, t_new]: psi + h theta sum_k q_k theta^k
-            if sample < n_out and sample * interval <= t_new + 1e-9 * interval:
-                qp0 = qp1 = qp2 = qp3 = 0.0
-                qr0 = qr1 = qr2 = qr3 = 0.0
-                for i in range(7):
-                    qp0 += kp[i] * DP_P[i, 0]
-                    qp1 += kp[i] * DP_P[i, 1]
-                    qp2 += kp[i] * DP_P[i, 2]
-                    qp3 += kp[i] * DP_P[i, 3]
-                    qr0 += kr[i] * DP_P[i, 0]
-                    qr1 += kr[i] * DP_P[i, 1]
-                    qr2 += kr[i] * DP_P[i, 2]
-                    qr3 += kr[i] * DP_P[i, 3]
-                while sample < n_out and sample * interval <= t_new + 1e-9 * interval:
-                    theta = (sample * interval - t) / h
-                    out_psi[j, sample] = psi + h * theta * (
-                        qp0 + theta * (qp1 + theta * (qp2 + theta * qp3)))
-                    out_rate[j, sample] = rate + h * theta * (
-                        qr0 + theta * (qr1 + theta * (qr2 + theta * qr3)))
-                    sample += 1
+            # dense output at the samples in (t, t_new]
+            while sample < n_out and sample * interval <= t_new + 1e-9 * interval:
+                dense(x, K, h, (sample * interval - t) / h, weights, acc, sampled)
+                out_psi[j, sample] = sampled[0]
+                out_rate[j, sample] = sampled[1]
+                sample += 1
             accepted += 1
             t = t_new
-            psi, rate = new_psi, new_rate
-            kp[0], kr[0] = kp[6], kr[6]
-            grow = 10.0 if err == 0.0 else min(10.0, 0.9 * err ** -0.2)
-            if rejected:  # no growth right after a rejected step
-                grow = min(1.0, grow)
+            x[0], x[1] = y[0], y[1]
+            K[0, 0], K[0, 1] = K[6, 0], K[6, 1]
+            h *= grow(err, rejected)
             rejected = False
-            h *= grow
         if gone:
             break
     if gone:
         left[j] = True
         exit_time[j] = t
-        rate = 0.0
+        x[1] = 0.0
     while sample < n_out:
-        out_psi[j, sample] = psi
-        out_rate[j, sample] = rate
+        out_psi[j, sample] = x[0]
+        out_rate[j, sample] = x[1]
         sample += 1
     steps[j] = accepted
 
