@@ -118,6 +118,12 @@ def unit_inertia_responses(mass_items, station_points):
     alpha_z), so the internal loads of any case's inertia relief are ``acc @ U`` with these
     unit responses: the classic superposition of unit-load solutions.
 
+    Parameters
+    ----------
+    mass_items : MassItems
+    station_points : ndarray, shape (s, 3)
+        Cut points. [m]
+
     Returns
     -------
     ndarray, shape (6, s, 6)
@@ -134,6 +140,20 @@ def closure_residual(positions, forces, moments, reference):
     """Sum of all forces and of all moments about ``reference``, per case, shape (c, 6).
 
     This is the internal load aft of every load: zero for a free-free body in equilibrium.
+
+    Parameters
+    ----------
+    positions : ndarray, shape (p, 3)
+        Load points. [m]
+    forces, moments : ndarray, shape (c, p, 3)
+        Forces [N] and moments [N m].
+    reference : array_like, shape (3,)
+        Point the moments are taken about. [m]
+
+    Returns
+    -------
+    ndarray, shape (c, 6)
+        Force [N] and moment [N m] sums.
     """
     from slingloads.analyses.inertia_relief import moment_sum
 
@@ -245,7 +265,13 @@ def free_free_rows_numpy(basis, forces, moments, has_moments, order, arm, count,
     """:func:`slingloads.analyses.sfbm_kernel.free_free_rows` in numpy, all cases at once:
     the same arguments, the same operations in the same order (sums left to right, no fused
     or reordered products), so the same numbers to the last bit; temporaries of the
-    result's size, so for small studies only (:data:`NUMPY_CUTS`)."""
+    result's size, so for small studies only (:data:`NUMPY_CUTS`).
+
+    Parameters
+    ----------
+    basis, forces, moments, has_moments, order, arm, count, x, rigid, out, residual, linear, angular
+        As :func:`slingloads.analyses.sfbm_kernel.free_free_rows` (units there).
+    """
     f = forces[:, order, :]
     cum = np.zeros((len(f), len(order) + 1, 6))
     cum[:, 1:, :3] = f

@@ -77,11 +77,6 @@ def extended_cd_table(cd=CANOPY_CD, valid=PAPER_CD_RANGE, collapsed=COLLAPSED_CD
     as the airspeed builds. Like every canopy table here it carries no wake loss: the
     parachute's wake ratio does.
 
-    Returns
-    -------
-    Table1D
-        ``CD`` against alpha, -180 to 180 deg every 2 deg (and at +-``valid``).
-
     Parameters
     ----------
     cd : float
@@ -90,6 +85,11 @@ def extended_cd_table(cd=CANOPY_CD, valid=PAPER_CD_RANGE, collapsed=COLLAPSED_CD
         Half-width of the range of constant CD. [rad]
     collapsed : float
         CD broadside and in reverse flow. [-]
+
+    Returns
+    -------
+    Table1D
+        ``CD`` against alpha, -180 to 180 deg every 2 deg (and at +-``valid``).
     """
     grid = np.union1d(np.radians(np.arange(-180.0, 180.0 + 1e-9, 2.0)), [-valid, valid])
     a = np.abs(grid)
