@@ -19,7 +19,8 @@ The integrators of the multibody model (:mod:`slingloads.models.multibody.integr
 the yaw sweep (:mod:`slingloads.models.yaw_batch`) are built on them; what differs between
 them is what their models need around a step (the segments between the inputs' jumps, the
 samples, what a run that leaves its tables does). The tableau is read by the compiled
-functions as constants.
+functions as constants, and the functions are inlined into the integrators at numba's level
+(``inline="always"``: no call, no reference counting of the arrays handed on).
 """
 
 import math
@@ -27,7 +28,7 @@ import math
 import numba
 import numpy as np
 
-_jit = numba.njit(cache=True, fastmath=False, nogil=True, _nrt=False)
+_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 
 #: Nodes c_i of the seven stages (the seventh is the first of the next step). [-]
 C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])

@@ -51,6 +51,7 @@ G, H_D = LAYOUT["g"], LAYOUT["h_d"]
 N_SIGNALS = 4
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
+_inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
 
@@ -97,7 +98,7 @@ def elastic_cable(x, s_vel, s_acc, p, dx):
     return tension
 
 
-@_jit
+@_inline_jit
 def _rhs(x, drive, i, stage, args, dx):
     """The right-hand side of the RK4 step: ``args`` = (rigid, parameter row); returns the
     tension [N]."""

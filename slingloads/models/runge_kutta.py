@@ -1,9 +1,11 @@
 """The classical fixed-step Runge-Kutta scheme (RK4) of every compiled batch integrator.
 
 One step, written once, compiled for each model's right-hand side: :func:`rk4_stepper` takes a
-compiled right-hand side and returns the compiled step that calls it (numba inlines the
-right-hand side into the step as it would a global function, and caches the machine code of
-each pairing on disk). The step is the scheme of [1]_ (section II.1),
+compiled right-hand side and returns the compiled step that calls it. The step is inlined into
+the model's integration loop at numba's level (``inline="always"``), and so should the
+right-hand side be: a call between compiled functions that are not inlined passes every array
+by reference count, which cost the lateral sweep half its time again; the machine code of each
+pairing is cached on disk. The step is the scheme of [1]_ (section II.1),
 
 .. math::
 
@@ -47,7 +49,7 @@ from slingloads.models.numba_cache import drop_stale_cache
 # dropped whenever one of its sources changes.
 drop_stale_cache(Path(__file__).resolve().parent)
 
-_jit = numba.njit(cache=True, fastmath=False, nogil=True)
+_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 
 
 def rk4_stepper(rhs):

@@ -47,6 +47,7 @@ from slingloads.models.packed import Field, Layout
 from slingloads.models.runge_kutta import rk4_stepper
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
+_inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
 #: The model row ``M`` (:mod:`slingloads.models.packed`).
@@ -147,7 +148,7 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_
     return (n_fus + n_fin + n_chute) / M[INERTIA], not inside, lo_fus, lo_fin
 
 
-@_jit
+@_inline_jit
 def _rhs(x, wind, i, stage, args, dx):
     """The right-hand side of the RK4 step, state ``x`` = (psi [rad], r [rad/s]), the wind
     ``wind[i, stage]`` = (gamma [rad], relative speed [m/s]); ``args`` = (area, M, tables...,
