@@ -127,14 +127,37 @@ def error_norm(x, x_new, K, h, rtol, atol, acc):
 
 @_jit
 def shrink(err):
-    """Factor of the step after a step rejected with error norm ``err`` > 1. [-]"""
+    """Factor of the step after a step rejected with error norm ``err`` > 1.
+
+    Parameters
+    ----------
+    err : float
+        Error norm of the rejected step (:func:`error_norm`). [-]
+
+    Returns
+    -------
+    float
+        max(1/5, 0.9 err^(-1/5)). [-]
+    """
     return max(MIN_FACTOR, SAFETY * err ** -0.2)
 
 
 @_jit
 def grow(err, rejected):
-    """Factor of the next step after a step accepted with error norm ``err`` <= 1; at most 1
-    right after a rejection (``rejected``). [-]"""
+    """Factor of the next step after a step accepted with error norm ``err`` <= 1.
+
+    Parameters
+    ----------
+    err : float
+        Error norm of the accepted step (:func:`error_norm`). [-]
+    rejected : bool
+        The step had been rejected before (the factor is then at most 1).
+
+    Returns
+    -------
+    float
+        min(10, 0.9 err^(-1/5)), 10 for a zero error. [-]
+    """
     factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err ** -0.2)
     if rejected:
         factor = min(1.0, factor)

@@ -92,8 +92,23 @@ class SolverSettings:
             object.__setattr__(self, f.name, value)
 
     def with_defaults(self, **defaults):
-        """A copy whose ``None`` fields (``t_end``, ``step``, ``output_interval``) take
-        ``defaults``; fields already set are kept. Unknown names are refused."""
+        """A copy whose ``None`` fields take the analysis's defaults; fields already set are
+        kept.
+
+        Parameters
+        ----------
+        **defaults : float
+            ``t_end`` [s], ``step`` [s], ``output_interval`` [s].
+
+        Returns
+        -------
+        SolverSettings
+
+        Raises
+        ------
+        InputError
+            For a name other than those three.
+        """
         unknown = sorted(set(defaults) - set(_OPTIONAL))
         if unknown:
             raise InputError(f"only {list(_OPTIONAL)} take analysis defaults", unknown[0])
@@ -131,6 +146,12 @@ class SolverSettings:
         return int(round(steps)), int(round(ratio))
 
     def output_times(self):
-        """Stored sample times of a fixed grid, 0 to ``t_end``. [s]"""
+        """Stored sample times of a fixed grid, 0 to ``t_end``.
+
+        Returns
+        -------
+        ndarray
+            [s]
+        """
         n_steps, every = self.fixed_grid()
         return np.arange(n_steps // every + 1) * self.output_interval

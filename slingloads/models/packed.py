@@ -101,7 +101,17 @@ class Layout:
         return len(self.names)
 
     def slice(self, name):
-        """The elements of field ``name``, as a slice of the vector."""
+        """The elements of a field, as a slice of the vector.
+
+        Parameters
+        ----------
+        name : str
+            Field name.
+
+        Returns
+        -------
+        slice
+        """
         start = self[name]
         return slice(start, start + next(f.size for f in self.fields if f.name == name))
 

@@ -182,7 +182,13 @@ class YawModel:
         return 0.0 if self.parachute is None else self._chute[0]
 
     def beta_range(self):
-        """Sideslip range [rad] covered by every table in the model (fuselage and fin)."""
+        """Sideslip range covered by every table in the model (fuselage and fin).
+
+        Returns
+        -------
+        lo, hi : float
+            [rad]
+        """
         lo, hi = -np.pi, np.pi
         if self.fuselage is not None:
             lo, hi = max(lo, self._fus[2]), min(hi, self._fus[3])
@@ -191,7 +197,20 @@ class YawModel:
         return lo, hi
 
     def relative_wind(self, gust):
-        """Wind angle gamma [rad] and relative speed V_r [m/s] for lateral gust ``gust`` [m/s]."""
+        """Wind angle and relative speed for a lateral gust.
+
+        Parameters
+        ----------
+        gust : array_like
+            Lateral gust velocity. [m/s]
+
+        Returns
+        -------
+        gamma : ndarray
+            Wind angle atan2(v, V). [rad]
+        v_rel : ndarray
+            Relative speed sqrt(V^2 + v^2). [m/s]
+        """
         v = np.asarray(gust, dtype=float)
         return np.arctan2(v, self._tas), np.hypot(self._tas, v)
 
@@ -253,12 +272,49 @@ class YawModel:
         return n_fus, n_fin, n_chute, outside
 
     def derivatives(self, psi, rate, gamma, v_rel, area):
-        """State derivatives (dpsi/dt [rad/s], dr/dt [rad/s^2]) and the out-of-table flag."""
+        """State derivatives and the out-of-table flag.
+
+        Parameters
+        ----------
+        psi, rate : array_like
+            Yaw [rad] and yaw rate [rad/s].
+        gamma, v_rel : array_like
+            Wind angle [rad] and relative speed [m/s] (:meth:`relative_wind`).
+        area : array_like
+            Parachute flat-plate area. [m^2]
+
+        Returns
+        -------
+        dpsi : ndarray
+            [rad/s]
+        drate : ndarray
+            [rad/s^2]
+        outside : ndarray of bool
+            Where a table was read outside its range.
+        """
         n_fus, n_fin, n_chute, outside = self.moments(gamma - psi, rate, v_rel, area)
         return rate, (n_fus + n_fin + n_chute) / self.yaw_inertia, outside
 
     def static_moments(self, beta, area=0.0):
-        """Moments [N m] at rest (r = 0, no gust) against sideslip ``beta`` [rad]."""
+        """Moments at rest (r = 0, no gust) against sideslip.
+
+        Parameters
+        ----------
+        beta : array_like
+            Sideslip. [rad]
+        area : array_like
+            Parachute flat-plate area. [m^2]
+
+        Returns
+        -------
+        n_fus, n_fin, n_chute : ndarray
+            Fuselage, fin and parachute yawing moments, nose right positive. [N m]
+
+        Raises
+        ------
+        InputError
+            For a sideslip outside the tables (no extrapolation).
+        """
         beta = np.asarray(beta, dtype=float)
         n_fus, n_fin, n_chute, outside = self.moments(beta, 0.0, self.condition.tas, area)
         if np.any(outside):
@@ -270,15 +326,43 @@ class YawModel:
         return n_fus, n_fin, n_chute
 
     def trim_beta(self, area=0.0, search=TRIM_SEARCH):
-        """Sideslip [rad] of the static equilibrium nearest to beta = 0 (0 for symmetric tables).
+        """Sideslip of the static equilibrium nearest to beta = 0 (0 for symmetric tables).
 
-        Raises :class:`InputError` when no equilibrium lies within +-``search``.
+        Parameters
+        ----------
+        area : float
+            Parachute flat-plate area. [m^2]
+        search : float
+            Half-width of the sideslip interval searched. [rad]
+
+        Returns
+        -------
+        float
+            [rad]
+
+        Raises
+        ------
+        InputError
+            When no equilibrium lies within +-``search``.
         """
         return float(self.trim_betas([area], search)[0])
 
     def trim_betas(self, areas, search=TRIM_SEARCH):
-        """:meth:`trim_beta` of every parachute area of ``areas`` [m^2] at once (the moments
-        on one sideslip grid, the parachute's scaled by each area). [rad]"""
+        """:meth:`trim_beta` of several parachute areas at once (the moments on one
+        sideslip grid, the parachute's scaled by each area).
+
+        Parameters
+        ----------
+        areas : array_like, shape (n,)
+            Parachute flat-plate areas. [m^2]
+        search : float
+            Half-width of the sideslip interval searched. [rad]
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            [rad]
+        """
         areas = np.atleast_1d(np.asarray(areas, dtype=float))
         lo, hi = self.beta_range()
         grid = np.linspace(max(lo, -search), min(hi, search), 801)
@@ -334,9 +418,24 @@ class Histories:
 
 
 def yaw_solver_settings(settings=None):
-    """``settings`` (default :class:`SolverSettings`) with the yaw runs' defaults filled in
-    (:data:`YAW_SOLVER_DEFAULTS`) and its fixed grid checked: ``t_end`` and
-    ``output_interval`` must be whole multiples of ``step``."""
+    """``settings`` with the yaw runs' defaults filled in (:data:`YAW_SOLVER_DEFAULTS`) and
+    its fixed grid checked: ``t_end`` and ``output_interval`` must be whole multiples of
+    ``step``.
+
+    Parameters
+    ----------
+    settings : SolverSettings, optional
+        Default :class:`SolverSettings`.
+
+    Returns
+    -------
+    SolverSettings
+
+    Raises
+    ------
+    InputError
+        For something other than a SolverSettings, or a grid that does not fit.
+    """
     settings = SolverSettings() if settings is None else settings
     if not isinstance(settings, SolverSettings):
         raise InputError("solver settings must be a SolverSettings", type(settings).__name__)
@@ -658,6 +757,21 @@ def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None)
     times, integrated piecewise between the gust's breakpoints (so that no step straddles a
     jump). It is the reference for runs that stay inside their tables: a run found outside
     them at an output time is flagged (``left_table``) but not frozen.
+
+    Parameters
+    ----------
+    model : YawModel
+    areas : array_like, shape (runs,) or scalar
+        Parachute flat-plate areas. [m^2]
+    gusts : gust or sequence of gusts, one per run (:mod:`slingloads.models.gusts`)
+    psi0, rate0 : array_like
+        Initial yaw [rad] and yaw rate [rad/s].
+    settings : SolverSettings, optional
+        ``method``, ``rtol``, ``atol``, ``max_step``, ``t_end`` and ``output_interval``.
+
+    Returns
+    -------
+    Histories
     """
     from scipy.integrate import solve_ivp  # scipy loads where it is used
 
