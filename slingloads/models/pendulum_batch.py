@@ -57,7 +57,24 @@ _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True
 
 @_jit
 def rigid_rope(x, s_vel, s_acc, p, dx):
-    """Rigid rope: write the state derivative into ``dx``; return the tension [N]."""
+    """Rigid rope: the state derivative into ``dx`` and the rope tension.
+
+    Parameters
+    ----------
+    x : ndarray, shape (4,)
+        State: theta1, theta2 [rad], their rates [rad/s].
+    s_vel, s_acc : float
+        Hook's lateral velocity [m/s] and acceleration [m/s^2].
+    p : ndarray, shape (9,)
+        Parameter row (:data:`LAYOUT`).
+    dx : ndarray, shape (4,)
+        Receives the state derivative. [state units / s]
+
+    Returns
+    -------
+    float
+        Tension. [N]
+    """
     mass, inertia, e, length = p[MASS], p[INERTIA], p[E], p[LENGTH]
     c_lat, c_roll, g, h_d = p[C_LAT], p[C_ROLL], p[G], p[H_D]
     th1, th2, w1, w2 = x[0], x[1], x[2], x[3]
@@ -81,7 +98,24 @@ def rigid_rope(x, s_vel, s_acc, p, dx):
 
 @_jit
 def elastic_cable(x, s_vel, s_acc, p, dx):
-    """Elastic tension-only cable: write the state derivative into ``dx``; return T [N]."""
+    """Elastic tension-only cable: the state derivative into ``dx`` and the tension.
+
+    Parameters
+    ----------
+    x : ndarray, shape (6,)
+        State: hub y, z from the hook [m], theta2 [rad], their rates [m/s, rad/s].
+    s_vel, s_acc : float
+        Hook's lateral velocity [m/s] and acceleration [m/s^2].
+    p : ndarray, shape (9,)
+        Parameter row (:data:`LAYOUT`).
+    dx : ndarray, shape (6,)
+        Receives the state derivative. [state units / s]
+
+    Returns
+    -------
+    float
+        Tension. [N]
+    """
     mass, inertia, e, length, stiffness = p[MASS], p[INERTIA], p[E], p[LENGTH], p[STIFFNESS]
     c_lat, c_roll, g, h_d = p[C_LAT], p[C_ROLL], p[G], p[H_D]
     ry, rz, th2, vy, vz, w2 = x[0], x[1], x[2], x[3], x[4], x[5]

@@ -86,11 +86,29 @@ SMALLEST_STEP = 1e-6
 
 @_jit
 def interp(x, xp, fp, slope, lo):
-    """``numpy.interp`` for one value, and the interval used: linear between breakpoints
-    (``slope`` (n - 1,) the slopes of the segments), end values outside.
+    """``numpy.interp`` for one value, and the interval used: linear between breakpoints,
+    end values outside.
 
     The interval is searched from ``lo``, the one found last: successive evaluations of a run
     move little along a table.
+
+    Parameters
+    ----------
+    x : float
+        Where to interpolate (units of ``xp``).
+    xp, fp : ndarray, shape (n,)
+        Breakpoints (increasing) and values.
+    slope : ndarray, shape (n - 1,)
+        Slopes of the segments (units of ``fp`` per unit of ``xp``).
+    lo : int
+        Interval found last.
+
+    Returns
+    -------
+    value : float
+        Units of ``fp``.
+    lo : int
+        Interval used.
     """
     n = xp.size
     if x != x:
@@ -111,9 +129,32 @@ def interp(x, xp, fp, slope, lo):
 @_jit
 def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
                      fin_s, lo_fus, lo_fin):
-    """(psi'' [rad/s^2], outside a table, fuselage interval, fin interval) at yaw ``psi``
-    [rad], rate [rad/s], wind angle ``gamma`` [rad], relative speed ``v_rel`` [m/s] and
-    parachute ``area`` [m^2]; ``lo_fus``, ``lo_fin`` the table intervals found last."""
+    """Yaw acceleration of the model at one state.
+
+    Parameters
+    ----------
+    psi, rate : float
+        Yaw [rad] and yaw rate [rad/s].
+    gamma, v_rel : float
+        Wind angle [rad] and relative speed [m/s].
+    area : float
+        Parachute flat-plate area. [m^2]
+    M : ndarray, shape (N_MODEL,)
+        Model row (:data:`LAYOUT`).
+    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
+        Fuselage and fin tables and the slopes of their segments (module notes).
+    lo_fus, lo_fin : int
+        Table intervals found last.
+
+    Returns
+    -------
+    acceleration : float
+        psi''. [rad/s^2]
+    outside : bool
+        A table was read outside its range.
+    lo_fus, lo_fin : int
+        Table intervals used.
+    """
     half_rho = M[HALF_RHO]
     beta = gamma - psi
     q = half_rho * (v_rel * v_rel)
@@ -168,16 +209,32 @@ _rk4_step = rk4_stepper(_rhs)
 @_parallel_jit
 def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fus_s, fin_x,
               fin_k, fin_s, out_psi, out_rate, left, exit_step):
-    """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,) by the
-    RK4 step of :mod:`slingloads.models.runge_kutta`.
+    """Integrate runs by the RK4 step of :mod:`slingloads.models.runge_kutta`, in place.
 
-    ``wind`` (gusts, steps, 3, 2): the wind angle gamma [rad] and relative speed [m/s] of each
-    distinct gust at the start, middle and end of every step; ``index`` (runs,) each run's
-    gust. ``step`` (steps,) the step lengths [s], ``stored`` (steps + 1,) True at the output
-    nodes; ``out_psi``, ``out_rate`` (runs, outputs) receive the histories, ``left`` and
-    ``exit_step`` (runs,) whether and in which step a run left a table (its state is then
-    frozen at the start of that step, its rate set to zero). ``M`` and the tables as in
-    the module notes.
+    Parameters
+    ----------
+    psi0, rate0 : ndarray, shape (runs,)
+        Initial yaw [rad] and yaw rate [rad/s].
+    areas : ndarray, shape (runs,)
+        Parachute flat-plate areas. [m^2]
+    index : ndarray of int, shape (runs,)
+        Each run's distinct gust.
+    wind : ndarray, shape (gusts, steps, 3, 2)
+        Wind angle gamma [rad] and relative speed [m/s] of each distinct gust at the start,
+        middle and end of every step.
+    step : ndarray, shape (steps,)
+        Step lengths. [s]
+    stored : ndarray of bool, shape (steps + 1,)
+        True at the output nodes.
+    M : ndarray, shape (N_MODEL,)
+        Model row (:data:`LAYOUT`).
+    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
+        Fuselage and fin tables and the slopes of their segments (module notes).
+    out_psi, out_rate : ndarray, shape (runs, outputs)
+        Receive the histories. [rad], [rad/s]
+    left, exit_step : ndarray, shape (runs,)
+        Receive whether and in which step a run left a table (its state is then frozen at
+        the start of that step, its rate set to zero).
     """
     runs = psi0.size
     n_steps = step.size
@@ -211,9 +268,29 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fu
 
 @_jit
 def gust_value(t, start, c0, c1, ref, first, count, harm):
-    """Lateral gust [m/s] at time ``t`` [s] on one piece: ``c0 + c1 (t - start) + sum a
-    cos(omega (t - ref) + phase)`` over rows ``first`` to ``first + count`` of ``harm``
-    (terms, 3): amplitude [m/s], omega [rad/s], phase [rad]."""
+    """Lateral gust on one piece: ``c0 + c1 (t - start) + sum a cos(omega (t - ref) +
+    phase)``.
+
+    Parameters
+    ----------
+    t : float
+        Time. [s]
+    start : float
+        Start of the piece. [s]
+    c0, c1 : float
+        Constant [m/s] and slope [m/s^2] of the piece.
+    ref : float
+        Time origin of the harmonic terms. [s]
+    first, count : int
+        Rows of ``harm`` of the piece's harmonic terms.
+    harm : ndarray, shape (terms, 3)
+        Amplitude [m/s], omega [rad/s], phase [rad].
+
+    Returns
+    -------
+    float
+        Gust velocity. [m/s]
+    """
     v = c0 + c1 * (t - start)
     for k in range(first, first + count):
         v += harm[k, 0] * math.cos(harm[k, 1] * (t - ref) + harm[k, 2])
@@ -222,8 +299,22 @@ def gust_value(t, start, c0, c1, ref, first, count, harm):
 
 @_jit
 def relative_wind(v, tas):
-    """(wind angle gamma = atan2(v, V) [rad], relative speed sqrt(V^2 + v^2) [m/s]) of a lateral
-    gust ``v`` [m/s] at true airspeed ``tas`` [m/s]."""
+    """Wind angle and relative speed of a lateral gust.
+
+    Parameters
+    ----------
+    v : float
+        Lateral gust. [m/s]
+    tas : float
+        True airspeed. [m/s]
+
+    Returns
+    -------
+    gamma : float
+        atan2(v, V). [rad]
+    v_rel : float
+        sqrt(V^2 + v^2). [m/s]
+    """
     return math.atan2(v, tas), math.sqrt(tas * tas + v * v)
 
 
@@ -335,25 +426,60 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
                 h_count, harm, interval, rtol, atol, max_step, first_step, max_steps, stop, M,
                 fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left, exit_time,
                 steps):
-    """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,) by
-    the adaptive Dormand-Prince 5(4) pair.
+    """Integrate runs by the adaptive Dormand-Prince 5(4) pair, in place.
 
     Run j follows distinct gust ``g = index[j]``: ``n_seg[g]`` segments ending at
     ``seg_end[g]`` (the gust's breakpoints and the starts of its pieces, then the end time),
-    segment s on piece ``seg_piece[g, s]`` of the gust. A piece k starts at ``p_start[g, k]``
-    [s], ``p_coef[g, k]`` = c0 [m/s], c1 [m/s^2], ref [s], its harmonic terms are rows
-    ``h_off[g, k]`` to ``h_off[g, k] + h_count[g, k]`` of ``harm`` (:func:`gust_value`); on a
-    steady piece (c1 = 0, no terms) the relative wind is computed once for the segment. The
-    local error estimate is kept within ``atol + rtol max(|y|, |y_new|)`` (root mean square
-    over psi and r) and the step within ``max_step``; ``first_step`` is the first trial step.
-    ``out_psi``, ``out_rate`` (runs, outputs) receive the histories every ``interval`` from
-    t = 0 (dense output); ``left``, ``exit_time`` (runs,) whether and when a run left a
-    table: a stage outside a table halves the step, and below :data:`SMALLEST_STEP` the run
-    stops (its state frozen from then, its rate set to zero). ``steps`` (runs,) receives the
-    accepted steps of each run. A run that would try more than ``max_steps`` steps (accepted
-    or rejected) sets ``stop[0]`` (an int64 array of one element, 0 on entry), and every run
-    then stops at once with ``steps[j] = -1``: the call is to be refused, its histories are
-    not complete. ``M`` and the tables as in the module notes.
+    segment s on piece ``seg_piece[g, s]`` of the gust; on a steady piece (c1 = 0, no terms)
+    the relative wind is computed once for the segment. The local error estimate is kept within
+    ``atol + rtol max(|y|, |y_new|)`` (root mean square over psi and r) and the step within
+    ``max_step``. A stage outside a table halves the step, and below :data:`SMALLEST_STEP` the
+    run stops (its state frozen from then, its rate set to zero). A run that would try more than
+    ``max_steps`` steps (accepted or rejected) sets ``stop[0]``, and every run then stops at once
+    with ``steps[j] = -1``: the call is to be refused, its histories are not complete.
+
+    Parameters
+    ----------
+    psi0, rate0 : ndarray, shape (runs,)
+        Initial yaw [rad] and yaw rate [rad/s].
+    areas : ndarray, shape (runs,)
+        Parachute flat-plate areas. [m^2]
+    index : ndarray of int, shape (runs,)
+        Each run's distinct gust.
+    seg_end : ndarray, shape (gusts, segments)
+        Ends of the segments. [s]
+    seg_piece : ndarray of int, shape (gusts, segments)
+        Piece of each segment.
+    n_seg : ndarray of int, shape (gusts,)
+        Segments of each gust.
+    p_start : ndarray, shape (gusts, pieces)
+        Start of each piece. [s]
+    p_coef : ndarray, shape (gusts, pieces, 3)
+        c0 [m/s], c1 [m/s^2], ref [s] of each piece (:func:`gust_value`).
+    h_off, h_count : ndarray of int, shape (gusts, pieces)
+        First row and number of the piece's harmonic terms in ``harm``.
+    harm : ndarray, shape (terms, 3)
+        Amplitude [m/s], omega [rad/s], phase [rad] of the harmonic terms.
+    interval : float
+        Output interval, from t = 0 (dense output). [s]
+    rtol, atol : float
+        Tolerances. [-], [rad or rad/s]
+    max_step, first_step : float
+        Largest step and first trial step. [s]
+    max_steps : int
+        Steps a run may try.
+    stop : ndarray of int64, shape (1,)
+        0 on entry; set to 1 when a run runs over ``max_steps``.
+    M : ndarray, shape (N_MODEL,)
+        Model row (:data:`LAYOUT`).
+    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
+        Fuselage and fin tables and the slopes of their segments (module notes).
+    out_psi, out_rate : ndarray, shape (runs, outputs)
+        Receive the histories. [rad], [rad/s]
+    left, exit_time : ndarray, shape (runs,)
+        Receive whether and when [s] a run left a table.
+    steps : ndarray of int, shape (runs,)
+        Receive the accepted steps of each run.
     """
     # runs spread over the chunks (run j in chunk j mod CHUNKS): the chunks, shared out in
     # order among the threads, then carry like mixes of cheap and costly runs
