@@ -186,7 +186,34 @@ def _mat(P, k, x, y, z):
 def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v,
              dx, info, want):
     """State derivative ``dx`` of state ``x``; the quantities :data:`INFO` in ``info`` if
-    ``want``. Returns the flag of :data:`FLAGS` (0 when every table was inside its range)."""
+    ``want``.
+
+    Parameters
+    ----------
+    x : ndarray, shape (N_STATES,)
+        State (:data:`STATES`). [m, m/s, -, rad/s, rad]
+    P : ndarray, shape (N_PARAMETERS,)
+        Parameter vector (:data:`LAYOUT`).
+    drive : ndarray, shape (9,)
+        Wind [m/s], commanded carrier acceleration [m/s^2] and velocity [m/s], earth axes
+        (:data:`DRIVE`).
+    fus_a, fus_b, fus_c : ndarray
+        Fuselage table: alpha and beta breakpoints [rad], stacked coefficients [-].
+    fin_g, fin_v, tail_g, tail_v, cd_g, cd_v : ndarray
+        Fin, tail and parachute CD tables: breakpoints [rad], values [-]
+        (:meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`).
+    dx : ndarray, shape (N_STATES,)
+        Receives the state derivative. [state units / s]
+    info : ndarray, shape (N_INFO,)
+        Receives the reported quantities (:data:`INFO`, SI) when ``want``.
+    want : bool
+        Evaluate the reported quantities.
+
+    Returns
+    -------
+    int
+        The flag of :data:`FLAGS` (0 when every table was inside its range).
+    """
     flag = 0
     vc0, vc1, vc2 = x[0], x[1], x[2]
     p0, p1, p2 = x[3], x[4], x[5]

@@ -135,6 +135,50 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
 
     With no segment, only the first sample is evaluated (its flag returned): the equations at
     the states ``x0``.
+
+    Parameters
+    ----------
+    x0 : ndarray, shape (runs, N)
+        Initial states. [SI]
+    P : ndarray, shape (runs, NP)
+        Parameter vectors (:data:`~slingloads.models.multibody.equations.LAYOUT`).
+    seg_a, seg_b, seg_h : ndarray, shape (profiles, S)
+        Start, end and table step of each segment. [s]
+    seg_n, seg_off : ndarray of int, shape (profiles, S)
+        Intervals and first row of each segment's table.
+    n_seg : ndarray of int, shape (profiles,)
+        Segments of each profile.
+    vals : ndarray, shape (profiles, K, 9)
+        Drive tables (wind [m/s], commanded acceleration [m/s^2] and velocity [m/s]).
+    vary, bend : ndarray, shape (profiles, S, 9)
+        Channels that vary over a segment; the rounding term of the others.
+    nodes : ndarray, shape (profiles, n_out, 9)
+        The drive at the samples.
+    profile : ndarray of int, shape (runs,)
+        Drive profile of each run.
+    interval : float
+        Sampling interval. [s]
+    fixed : float
+        Fixed step, or 0 for the adaptive one. [s]
+    rtol, atol : float
+        Tolerances of the adaptive step. [-], [SI]
+    fus_a, fus_b, fus_c : ndarray
+        Fuselage table: alpha and beta breakpoints [rad], stacked coefficients [-].
+    fin_g, fin_v, tail_g, tail_v, cd_g, cd_v : ndarray
+        Fin, tail and parachute CD tables: breakpoints [rad], values [-]
+        (:meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`).
+    report : bool
+        Evaluate the reported quantities at the samples.
+    out, info, rates : ndarray
+        Receive the states, reported quantities and derivatives at the samples (see above).
+    flags, stop_time : ndarray, shape (runs,)
+        Receive the flag and the time [s] of a run that stopped.
+    time : ndarray, shape (n_out,)
+        Sample times. [s]
+    measured : ndarray, shape (runs, 9)
+        What the measures need (see above).
+    measures : ndarray, shape (runs, N_MEASURES) or (0, N_MEASURES)
+        Receive each run's measures.
     """
     runs = x0.shape[0]
     n = x0.shape[1]
@@ -374,7 +418,19 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
 
 
 def stack_drives(profiles):
-    """Padded arrays of several :func:`tabulate_drive` profiles, for :func:`dopri_runs`."""
+    """Padded arrays of several :func:`tabulate_drive` profiles, for :func:`dopri_runs`.
+
+    Parameters
+    ----------
+    profiles : sequence of dict
+        :func:`tabulate_drive` profiles.
+
+    Returns
+    -------
+    dict
+        The keys of :func:`tabulate_drive` stacked on a first axis of profiles (padded), and
+        ``segments``, the number of segments of each.
+    """
     count = len(profiles)
     segments = max(len(p["a"]) for p in profiles)
     rows = max(len(p["values"]) for p in profiles)
@@ -406,7 +462,12 @@ def _plain(values):
 
 
 def worker_count():
-    """Threads used for a batch: the processors this process may run on."""
+    """Threads used for a batch: the processors this process may run on.
+
+    Returns
+    -------
+    int
+    """
     try:
         return max(1, len(os.sched_getaffinity(0)))
     except AttributeError:  # not on Linux
@@ -416,7 +477,17 @@ def worker_count():
 def in_blocks(block, runs, workers=None):
     """Call ``block(start)`` for the blocks of :data:`BLOCK` runs from ``start``, on a pool of
     ``workers`` threads (default :func:`worker_count`; the compiled kernels release the
-    GIL)."""
+    GIL).
+
+    Parameters
+    ----------
+    block : callable
+        ``block(start)``, integrating runs ``start`` to ``start + BLOCK``.
+    runs : int
+        Number of runs.
+    workers : int, optional
+        Threads.
+    """
     starts = range(0, runs, BLOCK)
     workers = min(worker_count() if workers is None else int(workers), len(starts))
     if workers <= 1:
