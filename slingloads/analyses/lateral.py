@@ -376,8 +376,9 @@ def _right_hand_side(pendulum, motion):
 
     Why: the numpy equations on 0-d arrays and the motion's array kinematics cost about
     190 us a call, nearly all of a run's time (4,500 calls for the example's critical case);
-    this path takes a few us. Why it is exact: the compiled equations are the numpy ones
-    operation for operation, without fast-math, calling the same C library sin, cos and sqrt,
+    this path takes a few us. Why it is exact: the compiled equations are the numpy ones,
+    compiled from the same source (:func:`~slingloads.models.pendulum.rigid_rope_equations`)
+    without fast-math, calling the same C library sin, cos and sqrt,
     and ``kinematics_at`` is ``kinematics`` in floats likewise, so each derivative is the same
     double and solve_ivp takes the same steps (tested in ``tests/test_lateral_study.py``).
 

@@ -375,6 +375,38 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
         Rope tension T, negative where the rope would go slack. [N]
     """
     th1, th2, w1, w2 = x
+    *dx, tension = rigid_rope_equations(th1, th2, w1, w2, s_vel, s_acc, mass, inertia, e,
+                                        length, c_lat, c_roll, g, h_d)
+    return np.stack(dx), tension
+
+
+def rigid_rope_equations(th1, th2, w1, w2, s_vel, s_acc, mass, inertia, e, length, c_lat,
+                         c_roll, g, h_d):
+    """The equations of :func:`rigid_rope_derivatives`, written once for numpy and for the
+    compiled batch.
+
+    Elementwise operations only, so that the same function runs on arrays (numpy) and, compiled
+    by numba, on floats (:func:`slingloads.models.pendulum_batch.rigid_rope`): the two give the
+    same numbers to the last bit.
+
+    Parameters
+    ----------
+    th1, th2 : array_like or float
+        Rope and airframe angles. [rad]
+    w1, w2 : array_like or float
+        Their rates. [rad/s]
+    s_vel, s_acc, mass, inertia, e, length, c_lat, c_roll, g, h_d
+        As :func:`rigid_rope_derivatives`.
+
+    Returns
+    -------
+    w1, w2 : array_like or float
+        [rad/s]
+    a1, a2 : array_like or float
+        Angular accelerations. [rad/s^2]
+    tension : array_like or float
+        Rope tension, negative where the rope would go slack. [N]
+    """
     s1, c1, s2, c2 = np.sin(th1), np.cos(th1), np.sin(th2), np.cos(th2)
     sd, cd = np.sin(th1 - th2), np.cos(th1 - th2)
     k2 = inertia / mass
@@ -392,7 +424,7 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
     # tension from Newton along the rope, hub -> hook unit vector u = (-sin th1, cos th1)
     tension = mass * (-s1 * (s_acc + drag) + length * w1 * w1 - e * sd * a2 + e * cd * w2 * w2
                       + g * c1)
-    return np.stack([w1, w2, a1, a2]), tension
+    return w1, w2, a1, a2, tension
 
 
 def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness,
@@ -431,6 +463,37 @@ def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffne
         Cable tension, >= 0. [N]
     """
     ry, rz, th2, vy, vz, w2 = x
+    *dx, tension = elastic_cable_equations(ry, rz, th2, vy, vz, w2, s_vel, s_acc, mass,
+                                           inertia, e, length, stiffness, c_lat, c_roll, g,
+                                           h_d)
+    return np.stack(dx), tension
+
+
+def elastic_cable_equations(ry, rz, th2, vy, vz, w2, s_vel, s_acc, mass, inertia, e, length,
+                            stiffness, c_lat, c_roll, g, h_d):
+    """The equations of :func:`elastic_cable_derivatives`, written once for numpy and for
+    the compiled batch (elementwise operations only, as :func:`rigid_rope_equations`).
+
+    Parameters
+    ----------
+    ry, rz : array_like or float
+        Hub position from the hook. [m]
+    th2 : array_like or float
+        Airframe angle. [rad]
+    vy, vz, w2 : array_like or float
+        Their rates. [m/s, m/s, rad/s]
+    s_vel, s_acc, mass, inertia, e, length, stiffness, c_lat, c_roll, g, h_d
+        As :func:`elastic_cable_derivatives`.
+
+    Returns
+    -------
+    vy, vz, w2 : array_like or float
+        [m/s, m/s, rad/s]
+    ay, az, a2 : array_like or float
+        Accelerations. [m/s^2, m/s^2, rad/s^2]
+    tension : array_like or float
+        Cable tension, >= 0. [N]
+    """
     s2, c2 = np.sin(th2), np.cos(th2)
     dist = np.sqrt(ry * ry + rz * rz)
     tension = stiffness * np.maximum(dist - length, 0.0)
@@ -440,7 +503,7 @@ def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffne
     a2 = (-e * (fy * c2 + fz * s2) - c_roll * w2 + h_d * c2 * drag) / inertia
     ay = (fy - drag) / mass - s_acc - e * a2 * c2 + e * w2 * w2 * s2
     az = fz / mass - g - e * a2 * s2 - e * w2 * w2 * c2
-    return np.stack([vy, vz, w2, ay, az, a2]), tension
+    return vy, vz, w2, ay, az, a2, tension
 
 
 def rope_angle(x, rigid):

@@ -1,8 +1,10 @@
 """Compiled fixed-step RK4 of many lateral-pendulum runs, with their running peaks.
 
-The same equations as :func:`slingloads.models.pendulum.rigid_rope_derivatives` and
-:func:`~slingloads.models.pendulum.elastic_cable_derivatives`, written on scalars (operation
-for operation, so that the results agree to round-off), stepped by the RK4 step of
+The equations of :func:`slingloads.models.pendulum.rigid_rope_derivatives` and
+:func:`~slingloads.models.pendulum.elastic_cable_derivatives`, compiled from their one source
+(:func:`~slingloads.models.pendulum.rigid_rope_equations`,
+:func:`~slingloads.models.pendulum.elastic_cable_equations`, so that the results are the
+numpy ones to the last bit), stepped by the RK4 step of
 :mod:`slingloads.models.runge_kutta` with the peak logic of
 :func:`slingloads.analyses.lateral.sweep`: each run on its own (runs in parallel over the
 cores), every run on the shared time grid, the hook's velocity and acceleration read from a
@@ -27,6 +29,7 @@ import numba
 import numpy as np
 
 from slingloads.models.packed import Field, Layout
+from slingloads.models.pendulum import elastic_cable_equations, rigid_rope_equations
 from slingloads.models.runge_kutta import rk4_stepper
 
 #: A row of ``P``: the parameters of one run (:meth:`LateralPendulum.arrays
@@ -54,6 +57,10 @@ _jit = numba.njit(cache=True, fastmath=False, nogil=True)
 _inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
+# the equations, compiled from their one source in slingloads.models.pendulum
+_rigid_rope = _inline_jit(rigid_rope_equations)
+_elastic_cable = _inline_jit(elastic_cable_equations)
+
 
 @_jit
 def rigid_rope(x, s_vel, s_acc, p, dx):
@@ -75,25 +82,10 @@ def rigid_rope(x, s_vel, s_acc, p, dx):
     float
         Tension. [N]
     """
-    mass, inertia, e, length = p[MASS], p[INERTIA], p[E], p[LENGTH]
-    c_lat, c_roll, g, h_d = p[C_LAT], p[C_ROLL], p[G], p[H_D]
-    th1, th2, w1, w2 = x[0], x[1], x[2], x[3]
-    s1, c1, s2, c2 = math.sin(th1), math.cos(th1), math.sin(th2), math.cos(th2)
-    sd, cd = math.sin(th1 - th2), math.cos(th1 - th2)
-    k2 = inertia / mass
-    le = length * e
-    yp_dot = s_vel + length * c1 * w1 + (e - h_d) * c2 * w2
-    drag = c_lat * yp_dot / mass
-    f1 = -le * sd * w2 * w2 - g * length * s1 - length * c1 * (s_acc + drag)
-    f2 = (le * sd * w1 * w1 - g * e * s2 - e * c2 * s_acc - (e - h_d) * c2 * drag
-          - c_roll * w2 / mass)
-    m11, m12, m22 = length * length, le * cd, e * e + k2
-    det = m11 * m22 - m12 * m12
-    a1 = (m22 * f1 - m12 * f2) / det
-    a2 = (m11 * f2 - m12 * f1) / det
-    dx[0], dx[1], dx[2], dx[3] = w1, w2, a1, a2
-    return mass * (-s1 * (s_acc + drag) + length * w1 * w1 - e * sd * a2 + e * cd * w2 * w2
-                   + g * c1)
+    dx[0], dx[1], dx[2], dx[3], tension = _rigid_rope(
+        x[0], x[1], x[2], x[3], s_vel, s_acc, p[MASS], p[INERTIA], p[E], p[LENGTH], p[C_LAT],
+        p[C_ROLL], p[G], p[H_D])
+    return tension
 
 
 @_jit
@@ -116,19 +108,9 @@ def elastic_cable(x, s_vel, s_acc, p, dx):
     float
         Tension. [N]
     """
-    mass, inertia, e, length, stiffness = p[MASS], p[INERTIA], p[E], p[LENGTH], p[STIFFNESS]
-    c_lat, c_roll, g, h_d = p[C_LAT], p[C_ROLL], p[G], p[H_D]
-    ry, rz, th2, vy, vz, w2 = x[0], x[1], x[2], x[3], x[4], x[5]
-    s2, c2 = math.sin(th2), math.cos(th2)
-    dist = math.sqrt(ry * ry + rz * rz)
-    tension = stiffness * max(dist - length, 0.0)
-    fy = -tension * ry / dist
-    fz = -tension * rz / dist
-    drag = c_lat * (s_vel + vy + (e - h_d) * c2 * w2)
-    a2 = (-e * (fy * c2 + fz * s2) - c_roll * w2 + h_d * c2 * drag) / inertia
-    ay = (fy - drag) / mass - s_acc - e * a2 * c2 + e * w2 * w2 * s2
-    az = fz / mass - g - e * a2 * s2 - e * w2 * w2 * c2
-    dx[0], dx[1], dx[2], dx[3], dx[4], dx[5] = vy, vz, w2, ay, az, a2
+    dx[0], dx[1], dx[2], dx[3], dx[4], dx[5], tension = _elastic_cable(
+        x[0], x[1], x[2], x[3], x[4], x[5], s_vel, s_acc, p[MASS], p[INERTIA], p[E],
+        p[LENGTH], p[STIFFNESS], p[C_LAT], p[C_ROLL], p[G], p[H_D])
     return tension
 
 
