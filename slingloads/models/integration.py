@@ -2,12 +2,16 @@
 
 Each analysis has two integrators over the same right-hand side:
 
-* a **fixed-step classical Runge-Kutta (RK4)** integrator vectorised over runs, all runs of a
-  sweep at once (:func:`slingloads.analyses.lateral.sweep`,
+* a compiled batch integrator over all runs of a sweep at once: the **fixed-step classical
+  Runge-Kutta (RK4)** step of :mod:`slingloads.models.runge_kutta`
+  (:func:`slingloads.analyses.lateral.sweep`,
   :func:`slingloads.models.yaw_dynamics.integrate_rk4`): it uses ``t_end``, ``step`` and
-  ``output_interval``;
+  ``output_interval``; or the adaptive **Dormand-Prince 5(4)** pair of
+  :mod:`slingloads.models.dormand_prince` (:func:`slingloads.models.yaw_dynamics.integrate_dopri`,
+  and the multibody model's :mod:`slingloads.models.multibody.integrator`): it uses ``rtol``,
+  ``atol``, ``max_step``, ``t_end`` and ``output_interval``;
 * :func:`scipy.integrate.solve_ivp`, one run at a time (time histories of a chosen run, and
-  the reference the RK4 integrators are tested against): it uses ``method``, ``rtol``,
+  the reference the batch integrators are tested against): it uses ``method``, ``rtol``,
   ``atol``, ``max_step``, ``t_end`` and ``output_interval``.
 
 A field left at ``None`` takes the analysis's own default, chosen for what it integrates
