@@ -1,14 +1,14 @@
 """Compiled batch integrators of many runs of the 1-DOF yaw model: fixed-step RK4 and
 adaptive Dormand-Prince 5(4).
 
-The same moments as :meth:`slingloads.models.yaw_dynamics.YawModel.moments` (fuselage table,
-fin at its local sideslip, Apollo legacy drogue), written on scalars operation for operation,
-stepped by the RK4 step of :mod:`slingloads.models.runge_kutta`
-(:func:`slingloads.models.yaw_dynamics.integrate_rk4`): each run on its own (runs in parallel
-over the cores) on the shared time grid, the relative wind read from a table per distinct
-gust, a run that leaves a table frozen from the start of that step. Compiled with
-`numba <https://numba.pydata.org>`_ (``cache=True``; the cache is dropped when a source of the
-package changes, :mod:`slingloads.models.runge_kutta`).
+The moments of :meth:`slingloads.models.yaw_dynamics.YawModel.moments` (fuselage table, fin at
+its local sideslip, Apollo legacy drogue), compiled from their one source
+(:func:`slingloads.models.yaw_dynamics.make_yaw_moments`), stepped by the RK4 step of
+:mod:`slingloads.models.runge_kutta` (:func:`slingloads.models.yaw_dynamics.integrate_rk4`):
+each run on its own (runs in parallel over the cores) on the shared time grid, the relative
+wind read from a table per distinct gust, a run that leaves a table frozen from the start of
+that step. Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``; the cache is
+dropped when a source of the package changes, :mod:`slingloads.models.runge_kutta`).
 
 The adaptive kernel :func:`dopri_batch` is the Dormand-Prince pair 5(4) of
 :func:`scipy.integrate.solve_ivp`'s ``RK45`` [1]_ (same error norm, step-size control and
@@ -20,7 +20,7 @@ dense output. The gust is evaluated in the kernel, exactly, from the segment's p
 value just before the breakpoint; on a steady piece (a constant) the relative wind is computed
 once per segment instead of at every stage.
 
-Model row (``M``): laid out by :data:`LAYOUT` (:mod:`slingloads.models.packed`). Tables: the
+Model row (``M``): laid out by :data:`slingloads.models.yaw_dynamics.LAYOUT`. Tables: the
 fuselage's ``fus_x`` [rad], ``fus_n`` (N per unit q about the axis) [m^3] and the slopes of its
 segments ``fus_s`` [m^3/rad]; the fin's ``fin_x`` [rad], ``fin_k`` (S eta CY) [m^2] and
 ``fin_s`` [m^2/rad]: a lookup is a search from the interval found last, one multiplication and
@@ -43,41 +43,13 @@ import numpy as np
 
 from slingloads.models.dormand_prince import C as DP_C
 from slingloads.models.dormand_prince import dense, error_norm, grow, shrink, stage
-from slingloads.models.packed import Field, Layout
 from slingloads.models.runge_kutta import rk4_stepper
+from slingloads.models.yaw_dynamics import INERTIA, TAS, make_yaw_moments
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
 _inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
-#: The model row ``M`` (:mod:`slingloads.models.packed`).
-LAYOUT = Layout((
-    Field("half_rho", "kg/m^3", "half the air density"),
-    Field("inertia", "kg m^2", "yaw inertia about the suspension axis"),
-    Field("has_fus", "-", "1: the fuselage is modelled"),
-    Field("has_fin", "-", "1: the fin is modelled"),
-    Field("fin_local", "-", "1: the fin at its local sideslip (yaw-rate damping)"),
-    Field("has_chute", "-", "1: the parachute is modelled"),
-    Field("fin_dx", "m", "fin arm from the suspension axis, x"),
-    Field("fin_dy", "m", "fin arm from the suspension axis, y"),
-    Field("fin_lo", "rad", "lower end of the fin table"),
-    Field("fin_hi", "rad", "upper end of the fin table"),
-    Field("chute_cd", "-", "parachute drag coefficient times wake ratio"),
-    Field("chute_dx", "m", "parachute arm from the suspension axis, x"),
-    Field("chute_dy", "m", "parachute arm from the suspension axis, y"),
-    Field("fus_lo", "rad", "lower end of the fuselage table"),
-    Field("fus_hi", "rad", "upper end of the fuselage table"),
-    Field("tas", "m/s", "true airspeed"),
-))
-HALF_RHO, INERTIA = LAYOUT["half_rho"], LAYOUT["inertia"]
-HAS_FUS, HAS_FIN, FIN_LOCAL = LAYOUT["has_fus"], LAYOUT["has_fin"], LAYOUT["fin_local"]
-HAS_CHUTE = LAYOUT["has_chute"]
-FIN_DX, FIN_DY, FIN_LO, FIN_HI = (LAYOUT["fin_dx"], LAYOUT["fin_dy"], LAYOUT["fin_lo"],
-                                  LAYOUT["fin_hi"])
-CHUTE_CD, CHUTE_DX, CHUTE_DY = LAYOUT["chute_cd"], LAYOUT["chute_dx"], LAYOUT["chute_dy"]
-FUS_LO, FUS_HI, TAS = LAYOUT["fus_lo"], LAYOUT["fus_hi"], LAYOUT["tas"]
-#: Length of a model row.
-N_MODEL = len(LAYOUT)
 #: Chunks of runs of the adaptive kernel, each run j in chunk j mod CHUNKS.
 CHUNKS = 64
 #: Smallest adaptive step before a run that leaves a table is stopped. [s]
@@ -126,10 +98,23 @@ def interp(x, xp, fp, slope, lo):
     return slope[lo] * (x - xp[lo]) + fp[lo], lo
 
 
+@_inline_jit
+def _lookup(x, xp, fp, slope, lo, k):
+    """The lookup of the yaw moments (:func:`~slingloads.models.yaw_dynamics.make_yaw_moments`)
+    in compiled code: :func:`interp` from the interval ``lo[k]`` found last, updated."""
+    value, lo[k] = interp(x, xp, fp, slope, lo[k])
+    return value
+
+
+# the moments, compiled from their one source in slingloads.models.yaw_dynamics
+_moments = _inline_jit(make_yaw_moments(_lookup))
+
+
 @_jit
 def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
-                     fin_s, lo_fus, lo_fin):
-    """Yaw acceleration of the model at one state.
+                     fin_s, lo):
+    """Yaw acceleration of the model at one state
+    (:meth:`slingloads.models.yaw_dynamics.YawModel.moments` compiled).
 
     Parameters
     ----------
@@ -140,11 +125,11 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_
     area : float
         Parachute flat-plate area. [m^2]
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
-    lo_fus, lo_fin : int
-        Table intervals found last.
+    lo : ndarray of int64, shape (2,)
+        Fuselage and fin table intervals found last, updated.
 
     Returns
     -------
@@ -152,41 +137,10 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_
         psi''. [rad/s^2]
     outside : bool
         A table was read outside its range.
-    lo_fus, lo_fin : int
-        Table intervals used.
     """
-    half_rho = M[HALF_RHO]
-    beta = gamma - psi
-    q = half_rho * (v_rel * v_rel)
-    inside = True
-    n_fus = 0.0
-    n_fin = 0.0
-    n_chute = 0.0
-    if M[HAS_FUS] != 0.0:
-        cn, lo_fus = interp(beta, fus_x, fus_n, fus_s, lo_fus)
-        n_fus = q * cn
-        inside = inside and (beta >= M[FUS_LO]) and (beta <= M[FUS_HI])
-    ux0 = v_rel * math.cos(beta)
-    uy0 = -v_rel * math.sin(beta)
-    if M[HAS_FIN] != 0.0:
-        dx, dy = M[FIN_DX], M[FIN_DY]
-        if M[FIN_LOCAL] != 0.0:
-            ux = ux0 - rate * dy
-            uy = uy0 + rate * dx
-            beta_f = math.atan2(-uy, ux)
-            q_f = half_rho * (ux * ux + uy * uy)
-        else:
-            beta_f, q_f = beta, q
-        k, lo_fin = interp(beta_f, fin_x, fin_k, fin_s, lo_fin)
-        n_fin = (-dx * q_f) * k
-        inside = inside and (beta_f >= M[FIN_LO]) and (beta_f <= M[FIN_HI])
-    if M[HAS_CHUTE] != 0.0:
-        dx, dy = M[CHUTE_DX], M[CHUTE_DY]
-        ux = ux0 - rate * dy
-        uy = uy0 + rate * dx
-        scale = (half_rho * M[CHUTE_CD]) * area * math.sqrt(ux * ux + uy * uy)
-        n_chute = scale * (dy * ux - dx * uy)
-    return (n_fus + n_fin + n_chute) / M[INERTIA], not inside, lo_fus, lo_fin
+    n_fus, n_fin, n_chute, inside = _moments(gamma - psi, rate, v_rel, area, M, fus_x, fus_n,
+                                             fus_s, fin_x, fin_k, fin_s, lo)
+    return (n_fus + n_fin + n_chute) / M[INERTIA], not inside
 
 
 @_inline_jit
@@ -195,9 +149,8 @@ def _rhs(x, wind, i, stage, args, dx):
     ``wind[i, stage]`` = (gamma [rad], relative speed [m/s]); ``args`` = (area, M, tables...,
     ``lo``: the table intervals found last, updated). Returns True outside a table."""
     area, M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo = args
-    acc, outside, lo[0], lo[1] = yaw_acceleration(x[0], x[1], wind[i, stage, 0],
-                                                  wind[i, stage, 1], area, M, fus_x, fus_n,
-                                                  fus_s, fin_x, fin_k, fin_s, lo[0], lo[1])
+    acc, outside = yaw_acceleration(x[0], x[1], wind[i, stage, 0], wind[i, stage, 1], area, M,
+                                    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo)
     dx[0] = x[1]
     dx[1] = acc
     return outside
@@ -227,7 +180,7 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fu
     stored : ndarray of bool, shape (steps + 1,)
         True at the output nodes.
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
     out_psi, out_rate : ndarray, shape (runs, outputs)
@@ -332,8 +285,7 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
     acc = np.empty(2)
     sampled = np.empty(2)
     weights = np.empty(7)
-    lf = 0
-    lk = 0
+    lo = np.zeros(2, dtype=np.int64)
     g = index[j]
     area = areas[j]
     x[0], x[1] = psi0[j], rate0[j]
@@ -355,8 +307,8 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
         if not steady:
             gamma, v_rel = relative_wind(
                 gust_value(t, start, c0, c1, ref, first, count, harm), tas)
-        rate_dot, o, lf, lk = yaw_acceleration(x[0], x[1], gamma, v_rel, area, M, fus_x, fus_n,
-                                               fus_s, fin_x, fin_k, fin_s, lf, lk)
+        rate_dot, o = yaw_acceleration(x[0], x[1], gamma, v_rel, area, M, fus_x, fus_n, fus_s,
+                                       fin_x, fin_k, fin_s, lo)
         K[0, 0], K[0, 1] = x[1], rate_dot
         gone = o
         while not gone and t < b:
@@ -377,9 +329,8 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
                     when = b if (last and DP_C[i] == 1.0) else t + DP_C[i] * h
                     gamma, v_rel = relative_wind(
                         gust_value(when, start, c0, c1, ref, first, count, harm), tas)
-                rate_dot, o, lf, lk = yaw_acceleration(y[0], y[1], gamma, v_rel, area, M,
-                                                       fus_x, fus_n, fus_s, fin_x, fin_k,
-                                                       fin_s, lf, lk)
+                rate_dot, o = yaw_acceleration(y[0], y[1], gamma, v_rel, area, M, fus_x,
+                                               fus_n, fus_s, fin_x, fin_k, fin_s, lo)
                 K[i, 0], K[i, 1] = y[1], rate_dot
                 outside = outside or o
             # y, the last stage's argument, is the solution
@@ -471,7 +422,7 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     stop : ndarray of int64, shape (1,)
         0 on entry; set to 1 when a run runs over ``max_steps``.
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
     out_psi, out_rate : ndarray, shape (runs, outputs)

@@ -53,6 +53,7 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -76,12 +77,109 @@ from slingloads.models.gusts import (
     TabulatedGust,
 )
 from slingloads.models.integration import SolverSettings
+from slingloads.models.packed import Field, Layout
 from slingloads.models.parachute import Parachute
 
 #: Defaults of the yaw runs: 120 s at a 0.05 s RK4 step, stored every 0.1 s. [s]
 YAW_SOLVER_DEFAULTS = {"t_end": 120.0, "step": 0.05, "output_interval": 0.1}
 #: Half-width of the sideslip interval searched for the yaw trim. [rad]
 TRIM_SEARCH = np.radians(20.0)
+
+#: The model row ``M`` of :func:`make_yaw_moments` (:mod:`slingloads.models.packed`).
+LAYOUT = Layout((
+    Field("half_rho", "kg/m^3", "half the air density"),
+    Field("inertia", "kg m^2", "yaw inertia about the suspension axis"),
+    Field("has_fus", "-", "1: the fuselage is modelled"),
+    Field("has_fin", "-", "1: the fin is modelled"),
+    Field("fin_local", "-", "1: the fin at its local sideslip (yaw-rate damping)"),
+    Field("has_chute", "-", "1: the parachute is modelled"),
+    Field("fin_dx", "m", "fin arm from the suspension axis, x"),
+    Field("fin_dy", "m", "fin arm from the suspension axis, y"),
+    Field("fin_lo", "rad", "lower end of the fin table"),
+    Field("fin_hi", "rad", "upper end of the fin table"),
+    Field("chute_cd", "-", "parachute drag coefficient times wake ratio"),
+    Field("chute_dx", "m", "parachute arm from the suspension axis, x"),
+    Field("chute_dy", "m", "parachute arm from the suspension axis, y"),
+    Field("fus_lo", "rad", "lower end of the fuselage table"),
+    Field("fus_hi", "rad", "upper end of the fuselage table"),
+    Field("tas", "m/s", "true airspeed"),
+))
+HALF_RHO, INERTIA = LAYOUT["half_rho"], LAYOUT["inertia"]
+HAS_FUS, HAS_FIN, FIN_LOCAL = LAYOUT["has_fus"], LAYOUT["has_fin"], LAYOUT["fin_local"]
+HAS_CHUTE = LAYOUT["has_chute"]
+FIN_DX, FIN_DY, FIN_LO, FIN_HI = (LAYOUT["fin_dx"], LAYOUT["fin_dy"], LAYOUT["fin_lo"],
+                                  LAYOUT["fin_hi"])
+CHUTE_CD, CHUTE_DX, CHUTE_DY = LAYOUT["chute_cd"], LAYOUT["chute_dx"], LAYOUT["chute_dy"]
+FUS_LO, FUS_HI, TAS = LAYOUT["fus_lo"], LAYOUT["fus_hi"], LAYOUT["tas"]
+#: Length of a model row.
+N_MODEL = len(LAYOUT)
+
+
+def make_yaw_moments(lookup):
+    """The yawing moments of the model, written once for numpy and for the compiled batches.
+
+    The returned function uses elementwise operations only, so that it runs on arrays (numpy,
+    :meth:`YawModel.moments`) and, compiled by numba, on floats
+    (:func:`slingloads.models.yaw_batch.yaw_acceleration`); only the table lookup differs
+    (``numpy.interp``, or the compiled search from the interval found last: the same
+    numbers).
+
+    Parameters
+    ----------
+    lookup : callable
+        ``lookup(x, xp, fp, slope, lo, k)``: ``fp`` interpolated linearly on ``xp`` at ``x``
+        (end values outside), ``slope`` the slopes of the segments, ``lo[k]`` the interval
+        found last by lookup ``k`` (0 fuselage, 1 fin).
+
+    Returns
+    -------
+    callable
+        ``moments(beta, rate, v_rel, area, M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo)``
+        of the sideslip at the axis [rad], the yaw rate [rad/s], the relative airspeed
+        [m/s], the parachute area [m^2], the model row ``M`` (:data:`LAYOUT`) and the tables
+        (:meth:`YawModel.arrays`), returning the fuselage, fin and parachute moments [N m]
+        and whether every table was read inside its range.
+    """
+
+    def moments(beta, rate, v_rel, area, M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo):
+        half_rho = M[HALF_RHO]
+        q = half_rho * (v_rel * v_rel)
+        inside = True
+        n_fus = 0.0
+        n_fin = 0.0
+        n_chute = 0.0
+        if M[HAS_FUS] != 0.0:
+            n_fus = q * lookup(beta, fus_x, fus_n, fus_s, lo, 0)
+            inside = inside & (beta >= M[FUS_LO]) & (beta <= M[FUS_HI])  # False for NaN
+        ux0 = v_rel * np.cos(beta)
+        uy0 = -v_rel * np.sin(beta)
+        if M[HAS_FIN] != 0.0:
+            dx, dy = M[FIN_DX], M[FIN_DY]
+            beta_f, q_f = beta, q
+            if M[FIN_LOCAL] != 0.0:
+                ux = ux0 - rate * dy
+                uy = uy0 + rate * dx
+                beta_f = np.arctan2(-uy, ux)
+                q_f = half_rho * (ux * ux + uy * uy)
+            n_fin = (-dx * q_f) * lookup(beta_f, fin_x, fin_k, fin_s, lo, 1)
+            inside = inside & (beta_f >= M[FIN_LO]) & (beta_f <= M[FIN_HI])
+        if M[HAS_CHUTE] != 0.0:
+            dx, dy = M[CHUTE_DX], M[CHUTE_DY]
+            ux = ux0 - rate * dy
+            uy = uy0 + rate * dx
+            scale = (half_rho * M[CHUTE_CD]) * area * np.sqrt(ux * ux + uy * uy)
+            n_chute = scale * (dy * ux - dx * uy)
+        return n_fus, n_fin, n_chute, inside
+
+    return moments
+
+
+def _numpy_lookup(x, xp, fp, slope, lo, k):
+    """The lookup of :func:`make_yaw_moments` in numpy."""
+    return np.interp(x, xp, fp)
+
+
+_numpy_moments = make_yaw_moments(_numpy_lookup)
 
 
 @dataclass(frozen=True)
@@ -239,37 +337,52 @@ class YawModel:
         beta = np.asarray(beta, dtype=float)
         rate = np.asarray(rate, dtype=float)
         v_rel = np.asarray(v_rel, dtype=float)
-        half_rho = self._half_rho
-        q = half_rho * (v_rel * v_rel)
-        shape = np.broadcast_shapes(beta.shape, rate.shape, v_rel.shape)
-        inside = np.ones(shape, dtype=bool)
-        n_fus = n_fin = n_chute = np.zeros(shape)
-        if self.fuselage is not None:
-            grid, n_per_q, lo, hi = self._fus
-            n_fus = q * np.interp(beta, grid, n_per_q)
-            inside &= (beta >= lo) & (beta <= hi)  # False for NaN as well
-        if self.fin is not None or self.parachute is not None:
-            ux0, uy0 = v_rel * np.cos(beta), -v_rel * np.sin(beta)
-        if self.fin is not None:
-            grid, k, dx, dy, lo, hi = self._fin
-            if self.fin_rate_damping:
-                ux, uy = ux0 - rate * dy, uy0 + rate * dx
-                beta_f = np.arctan2(-uy, ux)
-                q_f = half_rho * (ux * ux + uy * uy)
-            else:
-                beta_f, q_f = beta, q
-            n_fin = (-dx * q_f) * np.interp(beta_f, grid, k)
-            inside &= (beta_f >= lo) & (beta_f <= hi)
-        if self.parachute is not None:
-            cd, dx, dy = self._chute
-            ux, uy = ux0 - rate * dy, uy0 + rate * dx
-            scale = (half_rho * cd) * np.asarray(area, dtype=float) * np.hypot(ux, uy)
-            n_chute = scale * (dy * ux - dx * uy)
-        elif np.any(np.asarray(area) != 0):
+        area = np.asarray(area, dtype=float)
+        if self.parachute is None and np.any(area != 0):
             raise InputError("a parachute area was given but the model has no parachute",
                              float(np.max(np.abs(area))))
-        outside = ~inside
-        return n_fus, n_fin, n_chute, outside
+        shape = np.broadcast_shapes(beta.shape, rate.shape, v_rel.shape)
+        n_fus, n_fin, n_chute, inside = _numpy_moments(beta, rate, v_rel, area, *self.arrays(),
+                                                       None)
+        zero = np.zeros(shape)
+        n_fus, n_fin = zero + n_fus, zero + n_fin
+        n_chute = n_chute if self.parachute is not None else zero
+        return n_fus, n_fin, n_chute, ~np.broadcast_to(inside, shape)
+
+    def arrays(self):
+        """The model row and tables of :func:`make_yaw_moments` and of the compiled batches
+        (:mod:`slingloads.models.yaw_batch`).
+
+        Returns
+        -------
+        tuple of ndarray
+            ``M`` (:data:`LAYOUT`), ``fus_x`` [rad], ``fus_n`` [m^3], ``fus_s`` [m^3/rad],
+            ``fin_x`` [rad], ``fin_k`` [m^2], ``fin_s`` [m^2/rad] (the tables with the slopes
+            of their segments).
+        """
+        return self._arrays
+
+    @cached_property
+    def _arrays(self):
+        row = np.zeros(N_MODEL)
+        row[HALF_RHO], row[INERTIA] = self._half_rho, self.yaw_inertia
+        row[TAS] = self._tas
+        none = np.zeros(2)
+        fus_x = fus_n = fin_x = fin_k = none
+        if self.fuselage is not None:
+            fus_x, fus_n, row[FUS_LO], row[FUS_HI] = self._fus
+            row[HAS_FUS] = 1.0
+        if self.fin is not None:
+            fin_x, fin_k, row[FIN_DX], row[FIN_DY], row[FIN_LO], row[FIN_HI] = self._fin
+            row[HAS_FIN], row[FIN_LOCAL] = 1.0, float(self.fin_rate_damping)
+        if self.parachute is not None:
+            row[CHUTE_CD], row[CHUTE_DX], row[CHUTE_DY] = self._chute
+            row[HAS_CHUTE] = 1.0
+        tables = []
+        for x, f in ((fus_x, fus_n), (fin_x, fin_k)):
+            slope = np.zeros(1) if x is none else np.diff(f) / np.diff(x)  # none: never read
+            tables += [np.ascontiguousarray(a, dtype=float) for a in (x, f, slope)]
+        return (row, *tables)
 
     def derivatives(self, psi, rate, gamma, v_rel, area):
         """State derivatives and the out-of-table flag.
@@ -541,41 +654,13 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     # (steps, gusts, 3, 2) -> (gusts, steps, 3, 2)
     wind = np.stack([np.stack(pair, axis=-1) for pair in tables], axis=-2)
     wind = np.ascontiguousarray(wind.transpose(1, 0, 2, 3))
-    yaw_batch.rk4_batch(psi, rate, areas, index, wind, step, stored, *_compiled_model(model),
+    yaw_batch.rk4_batch(psi, rate, areas, index, wind, step, stored, *model.arrays(),
                         out_psi, out_rate, left, exit_step)
     exit_time = np.where(left, start[exit_step], np.nan)
     gust_out = np.stack([g.velocity(times) for g in unique])
     gamma_out = model.relative_wind(gust_out)[0]
     beta = gamma_out[index] - out_psi
     return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
-
-
-def _compiled_model(model):
-    """The model row and tables of :mod:`slingloads.models.yaw_batch`: ``M``, ``fus_x``,
-    ``fus_n``, ``fus_s``, ``fin_x``, ``fin_k``, ``fin_s`` (the tables with the slopes of their
-    segments)."""
-    from slingloads.models import yaw_batch as yb
-
-    row = np.zeros(yb.N_MODEL)
-    row[yb.HALF_RHO], row[yb.INERTIA] = model._half_rho, model.yaw_inertia
-    row[yb.TAS] = model._tas
-    none = np.zeros(2)
-    fus_x = fus_n = fin_x = fin_k = none
-    if model.fuselage is not None:
-        fus_x, fus_n, row[yb.FUS_LO], row[yb.FUS_HI] = model._fus
-        row[yb.HAS_FUS] = 1.0
-    if model.fin is not None:
-        fin_x, fin_k, row[yb.FIN_DX], row[yb.FIN_DY], row[yb.FIN_LO], row[yb.FIN_HI] = \
-            model._fin
-        row[yb.HAS_FIN], row[yb.FIN_LOCAL] = 1.0, float(model.fin_rate_damping)
-    if model.parachute is not None:
-        row[yb.CHUTE_CD], row[yb.CHUTE_DX], row[yb.CHUTE_DY] = model._chute
-        row[yb.HAS_CHUTE] = 1.0
-    tables = []
-    for x, f in ((fus_x, fus_n), (fin_x, fin_k)):
-        slope = np.zeros(1) if x is none else np.diff(f) / np.diff(x)  # none: never read
-        tables += [np.ascontiguousarray(a, dtype=float) for a in (x, f, slope)]
-    return (row, *tables)
 
 
 #: First trial step of the adaptive runs (the step then grows tenfold a step at most). [s]
@@ -655,7 +740,7 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     yaw_batch.dopri_batch(psi, rate, areas, index.astype(np.int64), seg_end, seg_piece, n_seg,
                           p_start, p_coef, h_off, h_count, harm, float(settings.output_interval),
                           float(settings.rtol), float(settings.atol), float(settings.max_step),
-                          FIRST_STEP, budget, stop, *_compiled_model(model), out_psi, out_rate,
+                          FIRST_STEP, budget, stop, *model.arrays(), out_psi, out_rate,
                           left, exit_time, steps)
     if stop[0]:
         raise InputError(f"too much work: a yaw run needs more than {budget:,} adaptive steps "
