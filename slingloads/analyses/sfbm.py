@@ -22,20 +22,15 @@ from __future__ import annotations
 
 import numpy as np
 
+from slingloads.analyses.sfbm_layout import (
+    R_CG,
+    R_FORCE,
+    R_INV_INERTIA,
+    R_INV_MASS,
+    R_MOMENT,
+    RIGID,
+)
 from slingloads.errors import InputError
-from slingloads.models.packed import BODY, TENSOR, Field, Layout
-
-#: The rigid-body vector ``rigid`` of :func:`free_free_rows_numpy` and of the compiled kernel
-#: (:mod:`slingloads.models.packed`).
-RIGID = Layout((
-    Field("cg", "m", "CG relative to the axis point (0, y0, z0)", BODY),
-    Field("gravity_force", "N", "resultant force of gravity", BODY),
-    Field("gravity_moment", "N m", "moment of gravity about the CG", BODY),
-    Field("inv_mass", "1/kg", "1 / total mass"),
-    Field("inv_inertia", "1/(kg m^2)", "inverse inertia tensor about the CG", TENSOR),
-))
-R_CG, R_FORCE, R_MOMENT = RIGID["cg"], RIGID["gravity_force"], RIGID["gravity_moment"]
-R_INV_MASS, R_INV_INERTIA = RIGID["inv_mass"], RIGID["inv_inertia"]
 
 #: Names of the six internal-load components, in array order.
 COMPONENTS = ("Vx", "Vy", "Vz", "Mx", "My", "Mz")

@@ -9,8 +9,9 @@ row is written. No array of the result's size other than the result itself is ma
 memory beyond the result is a few rows, whatever the number of cases. Single-threaded.
 Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept
 in this package's ``__pycache__`` after the first call). The kernel reads the rigid-body
-vector by the offsets of :data:`slingloads.analyses.sfbm.RIGID`, so the cache is dropped when
-that module, or this one, changes (:mod:`slingloads.models.numba_cache`).
+vector by the offsets of :data:`slingloads.analyses.sfbm_layout.RIGID`, so the cache is
+dropped when that module, :mod:`slingloads.models.packed` or this one changes (every
+module of this folder is hashed) (:mod:`slingloads.models.numba_cache`).
 
 The numpy twin :func:`slingloads.analyses.sfbm.free_free_rows_numpy` stays in production,
 with a reason: for a small study (:data:`slingloads.analyses.sfbm.NUMPY_CUTS`) it spares the
@@ -27,7 +28,7 @@ from pathlib import Path
 import numba
 import numpy as np
 
-from slingloads.analyses.sfbm import R_CG, R_FORCE, R_INV_INERTIA, R_INV_MASS, R_MOMENT
+from slingloads.analyses.sfbm_layout import R_CG, R_FORCE, R_INV_INERTIA, R_INV_MASS, R_MOMENT
 from slingloads.models.numba_cache import drop_stale_cache
 
 _HERE = Path(__file__).resolve()
@@ -120,7 +121,7 @@ def free_free_rows(basis, forces, moments, has_moments, order, arm, count, x, ri
     x : ndarray, shape (s + 1,)
         x of each cut. [m]
     rigid : ndarray, shape (19,)
-        Laid out by :data:`slingloads.analyses.sfbm.RIGID`: CG relative to the axis point (3)
+        Laid out by :data:`slingloads.analyses.sfbm_layout.RIGID`: CG relative to the axis point (3)
         [m], resultant force (3) [N] and moment about the CG (3) [N m] of gravity,
         1 / total mass [1/kg], inverse inertia tensor about the CG row by row (9)
         [1/(kg m^2)].

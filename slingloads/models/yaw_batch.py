@@ -44,7 +44,7 @@ import numpy as np
 from slingloads.models.dormand_prince import C as DP_C
 from slingloads.models.dormand_prince import dense, error_norm, grow, shrink, stage
 from slingloads.models.runge_kutta import rk4_stepper
-from slingloads.models.yaw_dynamics import INERTIA, TAS, make_yaw_moments
+from slingloads.models.yaw_moments import INERTIA, TAS, make_yaw_moments
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
 _inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
