@@ -258,6 +258,19 @@ def test_unknown_mass_case_in_listed_rows(tmp_path, capsys):
          extra=extra)
 
 
+def test_mass_cases_differing_only_in_case_are_one_name(tmp_path, capsys):
+    """Rule (docs/inputs-and-outputs.md: ids are unique with case ignored): CampaignMasses
+    names "max" and "MAX" are the same mass case; the error is at the second one's cell."""
+    def extra(book):
+        masses = book.create_sheet("CampaignMasses")
+        masses.append(["mass case", "mass [kg]"])
+        masses.append(["max", 2900])
+        masses.append(["MAX", 2500])
+
+    _bad(tmp_path, capsys, {}, ["sheet 'CampaignMasses', cell A3", "duplicate mass case",
+                                "first at A2", "case ignored"], extra=extra)
+
+
 def test_unreachable_scheduler_is_a_clear_error_within_its_time_out(tmp_path, capsys):
     """A scheduler nobody answers (--scheduler-timeout 1 s): exit 2 within seconds, the
     address and the time-out in the message, nothing written or cached."""

@@ -20,6 +20,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import pandas as pd
 
+from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -209,10 +210,7 @@ def _masses(reader):
     for i in range(len(t)):
         with at_row(t, "mass", i):
             out.append(MassCase(t["mass case"][i], t["mass"][i]))
-    names = [m.name for m in out]
-    for i, n in enumerate(names):
-        if names.index(n) != i:
-            raise reader.error("mass case named twice", n, t.sheet, t.cell("mass case", i))
+    check_unique(t, "mass case")
     return tuple(out)
 
 

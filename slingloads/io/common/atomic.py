@@ -54,6 +54,7 @@ Examples
 
 from __future__ import annotations
 
+import errno
 import os
 import re
 import shutil
@@ -191,8 +192,13 @@ class AtomicOutputs:
             raise InputError("the output folder must not be empty", text)
         if "\x00" in text:
             raise InputError("the output folder must not contain a NUL character", text)
-        if os.path.islink(text) and not os.path.exists(text):
-            raise OutputError("the output folder is a broken symbolic link", self.out_dir)
+        if os.path.islink(text):
+            try:
+                os.stat(text)
+            except OSError as err:
+                what = ("a symbolic-link loop (the link leads back to itself)"
+                        if err.errno == errno.ELOOP else "a broken symbolic link")
+                raise OutputError(f"the output folder is {what}", self.out_dir) from None
         try:
             real = Path(os.path.realpath(text))
         except (OSError, ValueError) as err:

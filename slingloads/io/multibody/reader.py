@@ -22,6 +22,7 @@ from slingloads.analyses.multibody.manoeuvres import (
     Manoeuvre,
     paper_manoeuvres,
 )
+from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -331,14 +332,10 @@ def read_manoeuvres(reader, params, system, t_end):
         return tuple(paper_manoeuvres(system.density_altitude)), "the paper's list"
     t = reader.table(_SPEC["MultibodyManoeuvres"])
     rows = _Rows(reader, t)
-    seen = {}
+    check_unique(t, "name")
     out = []
     for i in range(len(t)):
         name = str(t["name"][i]).strip()
-        if name in seen:
-            raise reader.error(f"duplicate name (first at {t.cell('name', seen[name])})", name,
-                               t.sheet, t.cell("name", i))
-        seen[name] = i
         kind = rows.choice("kind", i, MANOEUVRE_KINDS, required=True)
         builder = {"free response": _free_response, "gust": _gust,
                    "forward acceleration": _acceleration, "wind ramp": _wind_ramp}[kind]
