@@ -390,7 +390,7 @@ class _FirstComputed:
 
 def _runtime(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
-    from slingloads.io.campaign.cache import check_outside, check_writable, default_cache_dir
+    from slingloads.io.campaign.cache import check_outside, default_cache_dir
     from slingloads.io.campaign.reader import address_rule
     from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
 
@@ -407,8 +407,8 @@ def _runtime(args, show):
         if rule is not None:
             raise InputError(f"--scheduler: {rule}", args.scheduler)
     cache = Path(args.cache) if args.cache else default_cache_dir()
-    check_outside(cache, args.out)
-    check_writable(cache)
+    check_outside(cache, args.out)  # a cache that cannot be used is a warning: the
+    # campaign then runs without it (slingloads.io.campaign.cache)
     runtime = {"scheduler": args.scheduler, "workers": args.workers, "cache": cache,
                "timeout": args.scheduler_timeout}
     if show:

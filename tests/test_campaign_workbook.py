@@ -135,14 +135,18 @@ def test_report_files_and_readback(tiny):
 
 
 def test_second_run_comes_from_the_cache(tiny, tmp_path):
-    """Run again on the same cache: all 3 runs are found, none computed, same numbers."""
+    """Run again on the same cache: all 3 runs are found, none computed, same numbers; the
+    Summary counts the matrix's 2 runs and the ramp's apart (the matrix's count never exceeds
+    its runs)."""
     path, out, cache = tiny
     again = tmp_path / "again"
     assert main(["campaign", str(path), "--out", str(again), "--cache", str(cache),
                  "--quiet"]) == 0
     frame = pd.read_excel(again / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
     rows = dict(zip(frame[0], frame[1], strict=False))
-    assert (rows["runs found in the cache"], rows["runs computed now"]) == (3, 0)
+    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 0)
+    assert (rows["runs without parachute found in the cache"],
+            rows["runs without parachute computed now"]) == (1, 0)
     pd.testing.assert_frame_equal(pd.read_excel(again / "tiny-campaign.xlsx", "Metrics"),
                                   pd.read_excel(out / "tiny-campaign.xlsx", "Metrics"))
 
@@ -314,7 +318,8 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
 def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsys,
                                                                 monkeypatch):
     """Ctrl-C during the second batch (the wind ramp; the first held the 2 matrix runs): exit
-    130, nothing written, the 2 runs cached; the same command again finds 2 and computes 1."""
+    130, nothing written, the 2 runs cached; the same command again finds the 2 matrix runs
+    and computes the ramp."""
     from slingloads.analyses.campaign import execution
 
     path = workbook(tmp_path / "tiny.xlsx")
@@ -337,7 +342,9 @@ def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsy
     assert main(args) == 0
     frame = pd.read_excel(out / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
     rows = dict(zip(frame[0], frame[1], strict=False))
-    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 1)
+    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 0)
+    assert (rows["runs without parachute found in the cache"],
+            rows["runs without parachute computed now"]) == (0, 1)
 
 
 def test_progress_bar_shows_runs_done_rate_and_time_left(tiny, tmp_path, capsys):
