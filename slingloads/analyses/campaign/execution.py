@@ -33,6 +33,7 @@ import os
 from dataclasses import dataclass
 
 from slingloads.errors import InputError
+from slingloads.limits import BATCH_MEMORY, WORKER_BASE_MEMORY
 
 from .worker import run_batch
 
@@ -124,6 +125,9 @@ def _cpu_count():
 class _Executor:
     """Common part of the executors: a context manager that closes them."""
 
+    #: What the executor changed from what was asked (fewer workers), for the report.
+    warnings = ()
+
     def __enter__(self):
         return self
 
@@ -142,6 +146,7 @@ class InProcess(_Executor):
 
     def __init__(self, threads=None):
         self.threads = threads
+        self.warnings = []
 
     def describe(self):
         return "this process"
@@ -166,6 +171,7 @@ class LocalProcesses(_Executor):
         self.workers = int(workers)
         self.threads = max(1, _cpu_count() // self.workers)
         self._pool = None
+        self.warnings = []
 
     def describe(self):
         return (f"{self.workers} local worker processes x {self.threads} kernel "
@@ -368,7 +374,82 @@ class DaskCluster(_Executor):
         _within(self.timeout, lambda: client.close(timeout=self.timeout))
 
 
-def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=None):
+def _available_memory():
+    """Memory this machine has available now (Linux ``MemAvailable``, else the free physical
+    pages), or None where it cannot be told. [bytes]"""
+    try:
+        with open("/proc/meminfo", encoding="ascii") as handle:
+            for line in handle:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    try:
+        return os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, AttributeError):
+        return None
+
+
+def worker_memory(settings=None):
+    """Estimated peak memory of one worker process running batches under ``settings``: the
+    loaded libraries and kernels (:data:`~slingloads.limits.WORKER_BASE_MEMORY`), one chunk of
+    drive tables (:data:`~slingloads.analyses.multibody.simulate.DRIVE_BUDGET`) and the
+    samples of a batch (at most :data:`~slingloads.limits.BATCH_MEMORY`, :func:`batch_limit`).
+    [bytes]"""
+    from slingloads.analyses.multibody.simulate import DRIVE_BUDGET
+
+    batch = BATCH_MEMORY
+    if settings is not None:
+        batch = min(BATCH_MEMORY, MAX_BATCH * _sample_bytes(settings))
+    return WORKER_BASE_MEMORY + DRIVE_BUDGET + batch
+
+
+def _sample_bytes(settings):
+    """Bytes of one run's samples under ``settings`` (states, drive, reported quantities,
+    histories, and the histories once more as the record handed back)."""
+    from slingloads.analyses.multibody.simulate import SAMPLE_BYTES
+
+    from .metrics import HISTORY_LABELS
+
+    return history_rows(settings) * (SAMPLE_BYTES + 8 * len(HISTORY_LABELS))
+
+
+def batch_limit(settings):
+    """The most runs of a batch whose samples fit :data:`~slingloads.limits.BATCH_MEMORY`
+    (at least 1, at most :data:`MAX_BATCH`)."""
+    return max(1, min(MAX_BATCH, BATCH_MEMORY // max(1, _sample_bytes(settings))))
+
+
+def local_workers(requested, settings=None, cores=None, available=None):
+    """Worker processes to start: ``requested``, capped by the cores and by the memory
+    available (:func:`worker_memory` each, with the memory this process keeps), and a
+    warning (None if none) when an explicit request is cut.
+
+    Returns
+    -------
+    workers : int
+    warning : str or None
+    """
+    cores = _cpu_count() if cores is None else int(cores)
+    available = _available_memory() if available is None else available
+    each = worker_memory(settings)
+    by_memory = (max(1, int((available - WORKER_BASE_MEMORY) // each))
+                 if available is not None else requested)
+    workers = max(1, min(int(requested), cores, by_memory))
+    if workers >= requested:
+        return workers, None
+    why = []
+    if requested > cores:
+        why.append(f"{cores} core{'s' if cores > 1 else ''}")
+    if requested > by_memory and available is not None:
+        why.append(f"{available / 2**20:,.0f} MB of memory available")
+    return workers, (f"{requested} local workers were asked for, {workers} started: each "
+                     f"needs about {each / 2**20:,.0f} MB (libraries, drive tables, a batch's "
+                     f"samples) and this machine has {' and '.join(why)}")
+
+
+def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=None,
+                  settings=None):
     """The executor a campaign asks for.
 
     Parameters
@@ -377,19 +458,28 @@ def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=
         Address of a Dask scheduler: the batches go there.
     workers : int, optional
         Local worker processes (default: one per core, or this process alone for fewer than
-        :data:`MAX_BATCH` runs, where starting processes would cost more than it saves).
+        :data:`MAX_BATCH` runs, where starting processes would cost more than it saves);
+        capped by the cores and the memory available (:func:`local_workers`: an explicit
+        larger request is cut, with a warning in the executor's ``warnings``).
     timeout : float
         Scheduler time-out. [s]
     runs : int, optional
         Runs to execute (for the default).
+    settings : dict, optional
+        The runs' settings (``t_end``, ``output_interval`` [s]), for the memory estimate.
     """
     if scheduler:
         return DaskCluster(scheduler, timeout)
+    explicit = workers is not None
     if workers is None:
         workers = 1 if runs is not None and runs < MAX_BATCH else _cpu_count()
     if isinstance(workers, bool) or int(workers) != workers or workers < 1:
         raise InputError("the number of workers must be a whole number >= 1", workers)
-    return InProcess() if int(workers) == 1 else LocalProcesses(int(workers))
+    workers, warning = local_workers(int(workers), settings)
+    executor = InProcess() if workers == 1 else LocalProcesses(workers)
+    if warning is not None and explicit:
+        executor.warnings.append(warning)
+    return executor
 
 
 @dataclass(frozen=True)
@@ -416,13 +506,15 @@ class ExecutionReport:
     parts: tuple = ()
 
 
-def batch_size(missing, workers):
+def batch_size(missing, workers, settings=None):
     """Runs per batch: about four batches per worker (for balance and progress), at least
-    :data:`MIN_BATCH` and at most :data:`MAX_BATCH`."""
+    :data:`MIN_BATCH` and at most :data:`MAX_BATCH`, and no more than fit the memory of a
+    batch (:func:`batch_limit` under ``settings``)."""
     if missing <= 0:
         return 1
     share = math.ceil(missing / (4 * max(1, workers)))
-    return max(1, min(MAX_BATCH, max(share, min(MIN_BATCH, missing))))
+    size = max(1, min(MAX_BATCH, max(share, min(MIN_BATCH, missing))))
+    return size if settings is None else min(size, batch_limit(settings))
 
 
 def execute(groups, store, executor, *, size=None, progress=None):
@@ -463,14 +555,15 @@ def execute(groups, store, executor, *, size=None, progress=None):
         missing.append((settings, todo))
         parts.append((count, count - len(todo), len(todo)))
     count = sum(len(todo) for _, todo in missing)
-    size = batch_size(count, executor.workers) if size is None else size
-    if isinstance(size, bool) or int(size) != size or size < 1:
+    if size is not None and (isinstance(size, bool) or int(size) != size or size < 1):
         raise InputError("the batch size must be a whole number >= 1", size)
-    size = int(size)
     batches = []
     for settings, todo in missing:
-        for i in range(0, len(todo), size):
-            batches.append((len(batches), settings, todo[i:i + size]))
+        # a batch's samples stay within BATCH_MEMORY whatever size is asked for
+        step = (batch_size(count, executor.workers, settings) if size is None
+                else min(int(size), batch_limit(settings)))
+        for i in range(0, len(todo), step):
+            batches.append((len(batches), settings, todo[i:i + step]))
     done = total - count
     if progress is not None:
         progress(done, total)

@@ -45,6 +45,7 @@ from slingloads.limits import (
     MAX_CAMPAIGN_SAMPLES,
     MAX_LIST_ITEMS,
     MAX_MAP_POINTS,
+    MEMORY_BUDGET,
 )
 
 ANALYSIS = "campaign"
@@ -417,6 +418,14 @@ def _check_work(params, runs, settings):
                  f"too much work: {runs:,} runs of {settings.t_end:g} s sampled at this "
                  f"interval store {samples:,} samples, more than the {MAX_CAMPAIGN_SAMPLES:,} "
                  "allowed (limits of slingloads)")
+    from slingloads.analyses.multibody.simulate import run_bytes
+
+    one = run_bytes(settings.t_end, settings.output_interval)
+    params.check("campaign output interval", one <= MEMORY_BUDGET,
+                 f"too much memory: one run of {settings.t_end:g} s sampled at this interval "
+                 f"needs about {one / 2**20:,.0f} MB, more than the "
+                 f"{MEMORY_BUDGET / 2**20:,.0f} MB budget of a computation (limits of "
+                 "slingloads; docs/inputs-and-outputs.md, Memory); use a longer interval")
 
 
 def _no_parachute(params, system, study_type, sample):

@@ -158,12 +158,15 @@ def compute(study):
     where = (at_cell(study.path, "Study", inputs.scheduler_cell, written[0])
              if scheduler and not runtime.get("scheduler") else contextlib.nullcontext())
     with where:
-        executor = make_executor(scheduler or None, workers, timeout, runs=total)
+        executor = make_executor(scheduler or None, workers, timeout, runs=total,
+                                 settings=campaign.settings.as_dict())
+    executor_warnings = list(executor.warnings)  # fewer workers than asked for
     result = run_campaign(campaign, executor=executor, store=store,
                           progress=runtime.get("progress"))
     report = CampaignReport(inputs, result, str(cache_dir))
     if hasattr(study, "warnings"):
-        study.warnings.extend(store.warnings)  # entries or a location the cache could not use
+        # workers not started, entries or a location the cache could not use
+        study.warnings.extend([*executor_warnings, *store.warnings])
     if hasattr(study, "results"):
         study.results[ANALYSIS] = report
     return report

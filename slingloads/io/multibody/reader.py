@@ -43,7 +43,7 @@ from slingloads.io.multibody.schema import (
     SHEETS,
     TAILS,
 )
-from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES
+from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES, MEMORY_BUDGET
 from slingloads.models.aero_tables import Table1D
 from slingloads.models.atmosphere import isa_density, true_airspeed
 from slingloads.models.gusts import GUST_KINDS, GUST_VELOCITY, make_gust
@@ -163,6 +163,14 @@ def check_work(params, runs, settings):
                  f"too much work: {runs} runs of {settings['t_end']:g} s sampled at this "
                  f"interval store {samples:,} samples, more than the "
                  f"{MAX_MULTIBODY_SAMPLES:,} allowed (limits of slingloads)")
+    from slingloads.analyses.multibody.simulate import DRIVE_BUDGET, SAMPLE_BYTES
+
+    need = DRIVE_BUDGET + samples * SAMPLE_BYTES
+    params.check("multibody output interval", need <= MEMORY_BUDGET,
+                 f"too much memory: {runs} runs of {settings['t_end']:g} s sampled at this "
+                 f"interval need about {need / 2**20:,.0f} MB, more than the "
+                 f"{MEMORY_BUDGET / 2**20:,.0f} MB budget of a computation (limits of "
+                 "slingloads; docs/inputs-and-outputs.md, Memory)")
     if settings["dt"] is not None:
         steps = runs * settings["t_end"] / settings["dt"]
         params.check("multibody time step", steps <= MAX_MULTIBODY_RUN_STEPS,
