@@ -32,7 +32,7 @@ import math
 import os
 from dataclasses import dataclass
 
-from slingloads.errors import InputError
+from slingloads.errors import InputError, OutputError
 from slingloads.limits import BATCH_MEMORY, WORKER_BASE_MEMORY
 
 from .worker import run_batch
@@ -180,13 +180,20 @@ class LocalProcesses(_Executor):
     def run(self, batches):
         import multiprocessing
         from concurrent.futures import ProcessPoolExecutor, as_completed
+        from concurrent.futures.process import BrokenProcessPool
 
         self._pool = ProcessPoolExecutor(self.workers,
                                          mp_context=multiprocessing.get_context("spawn"))
         futures = {self._pool.submit(run_batch, jobs, settings, self.threads): index
                    for index, settings, jobs in batches}
-        for future in as_completed(futures):
-            yield futures[future], future.result()
+        try:
+            for future in as_completed(futures):
+                yield futures[future], future.result()
+        except BrokenProcessPool:
+            raise OutputError("a local worker process ended abruptly (killed, or out of "
+                              "memory); the runs finished before are stored: run the same "
+                              "command again to resume (with fewer --workers if memory is "
+                              "short)") from None
 
     def close(self):
         if self._pool is not None:
@@ -355,9 +362,9 @@ class DaskCluster(_Executor):
                 except TimeoutError:
                     finished = set()
                 if not finished and not self._alive():
-                    raise InputError(f"the Dask scheduler stopped answering (no answer "
-                                     f"within {self.timeout:g} s); the finished runs are "
-                                     "stored: run again to resume", self.address)
+                    raise OutputError(f"the Dask scheduler stopped answering (no answer "
+                                      f"within {self.timeout:g} s); the finished runs are "
+                                      "stored: run again to resume", self.address)
                 for future in finished:
                     yield futures[future], future.result()
         finally:
