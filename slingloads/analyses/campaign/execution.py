@@ -347,7 +347,7 @@ class DaskCluster(_Executor):
         return True
 
     def run(self, batches):
-        from distributed import wait
+        from distributed.client import _wait
 
         futures = {}
         for index, settings, jobs in batches:
@@ -357,8 +357,10 @@ class DaskCluster(_Executor):
         try:
             while pending:
                 try:
-                    finished, pending = wait(pending, timeout=self.timeout,
-                                             return_when="FIRST_COMPLETED")
+                    finished, pending = self.client.sync(
+                        _wait, list(pending), timeout=self.timeout,
+                        return_when="FIRST_COMPLETED")
+                    pending = set(pending)
                 except TimeoutError:
                     finished = set()
                 if not finished and not self._alive():
