@@ -608,6 +608,13 @@ class _Batch:
         self.tables, self.settings = tables, settings
         self.samples = drive["nodes"].shape[1]
 
+    @property
+    def drive(self):
+        """The stacked drive tables of the batch (as the integration had them), tabulated
+        again on each access (module notes of the class)."""
+        tables = _DriveTables(self.t_end, self.interval)
+        return stack_drives([tables.get(*recipe)[1] for recipe in self.recipes])
+
     def states_of(self, j):
         """Sampled states of run ``j``."""
         if self.states is not None:
