@@ -368,11 +368,23 @@ class DaskCluster(_Executor):
                                       f"within {self.timeout:g} s); the finished runs are "
                                       "stored: run again to resume", self.address)
                 for future in finished:
-                    yield futures[future], future.result()
+                    yield futures[future], self._result(future)
         finally:
             if self.client is not None and self.client.status == "running":
                 for future in futures:
                     future.cancel()
+
+    def _result(self, future):
+        """A finished batch's records, fetched a time-out at a time while the scheduler
+        answers (a large batch may take longer to arrive; a silent scheduler stops it)."""
+        while True:
+            try:
+                return future.result(timeout=self.timeout)
+            except TimeoutError:
+                if not self._alive():
+                    raise OutputError(f"the Dask scheduler stopped answering (no answer "
+                                      f"within {self.timeout:g} s); the finished runs are "
+                                      "stored: run again to resume", self.address) from None
 
     def close(self):
         """Close the client, waiting at most the time-out (a dead scheduler is not waited

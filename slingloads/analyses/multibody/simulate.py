@@ -452,8 +452,9 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
 
 
 #: Bytes of drive tables tabulated at once (a chunk of runs; a run of 3,600 s takes about
-#: 26 MB, held twice while its chunk is stacked). [bytes]
-DRIVE_BUDGET = 64 * 2**20
+#: 26 MB, held twice while its chunk is stacked: two such runs per chunk, so that two cores
+#: integrate side by side). [bytes]
+DRIVE_BUDGET = 128 * 2**20
 #: Bytes a run keeps per stored sample: its states, the drive at the sample, and the reported
 #: quantities and histories evaluated from them when asked for. [bytes]
 SAMPLE_BYTES = 8 * (N_STATES + 9 + N_INFO + N_HISTORY)
