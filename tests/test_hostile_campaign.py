@@ -572,3 +572,39 @@ def test_a_killed_worker_process_leaves_the_cache_and_out_intact(dyn, tmp_path, 
     assert "worker process ended abruptly" in err
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
     assert not list(folder.rglob(".part-*"))
+
+
+def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identical(dyn,
+                                                                                  tmp_path):
+    """A local Dask scheduler (worker threads, loopback TCP) terminated after the second of
+    8 one-run batches: the campaign ends within the 1 s time-out with an environment error
+    (the runs finished before stored), and the resume, in this process on the same cache,
+    finds them and gives the metrics of an uninterrupted run."""
+    import contextlib
+
+    distributed = pytest.importorskip("distributed")
+    campaign = read_study(dyn).inputs["campaign"].campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    try:
+        executor = DaskCluster(cluster.scheduler_address, 1.0)
+
+        def progress(done, total):
+            if done == 2:
+                with contextlib.suppress(OSError):
+                    executor.client.sync(executor.client.scheduler.terminate)
+
+        start = time.monotonic()
+        with pytest.raises(OutputError, match="scheduler was lost|stopped answering"):
+            run_campaign(campaign, executor=executor, store=RunCache(tmp_path / "cache"),
+                         batch_size=1, progress=progress)
+        assert time.monotonic() - start < 5.0
+    finally:
+        with contextlib.suppress(TimeoutError, OSError):
+            cluster.close(timeout=2)
+    resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
+    assert resumed.execution.cached >= 2
+    assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)

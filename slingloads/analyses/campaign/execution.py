@@ -12,18 +12,28 @@ floating-point operations, whatever batch or process it falls in):
   all the machine's cores;
 * :class:`LocalProcesses`: ``workers`` processes of this machine (started with ``spawn``, each
   loading the compiled kernels from numba's on-disk cache), the cores shared out so that
-  workers x kernel threads does not exceed them;
+  workers x kernel threads does not exceed them; :func:`make_executor` caps the workers by
+  the cores and the memory available (:func:`local_workers`, :func:`worker_memory`), and a
+  worker that dies ends the campaign with an :class:`~slingloads.errors.OutputError` (the
+  finished runs stored);
 * :class:`DaskCluster`: the batches go to a ``dask.distributed`` scheduler; each batch's kernel
   runs on as many threads as the smallest worker has. The scheduler must answer within
   ``timeout`` seconds (default :data:`SCHEDULER_TIMEOUT`), or the campaign stops with an
-  :class:`~slingloads.errors.InputError` before anything is run or stored. The workers need
-  slingloads installed (the same version: the run keys include the code's digest).
+  :class:`~slingloads.errors.InputError` before anything is run or stored; every later
+  network step has the same deadline (:class:`DaskCluster`). The workers need slingloads
+  installed (the same version: the run keys include the code's digest).
+
+**Memory.** A batch holds at most :data:`~slingloads.limits.BATCH_MEMORY` of samples
+(:func:`batch_limit`); the drive tables are tabulated a chunk of runs at a time by the
+multibody model (``DRIVE_BUDGET``).
 
 **Store.** Anything with ``get(key)`` (a record or None), ``put(key, record)`` and
-``__contains__``; a record is ``(metrics, histories)``. :class:`MemoryStore` keeps them in
-memory; the Parquet run cache of the io layer (``slingloads.io.campaign.cache``) on disk. Each
-finished batch is stored as soon as it arrives, so an interruption loses at most the batches in
-flight.
+``__contains__``, and optionally ``expect(key, rows)`` (told each run's history rows before
+it is looked up, so that a store on disk can refuse an entry of another size unread:
+:func:`record_problem` is the contract); a record is ``(metrics, histories)``.
+:class:`MemoryStore` keeps them in memory; the Parquet run cache of the io layer
+(``slingloads.io.campaign.cache``) on disk. Each finished batch is stored as soon as it
+arrives, so an interruption loses at most the batches in flight.
 """
 
 from __future__ import annotations
@@ -347,6 +357,8 @@ class DaskCluster(_Executor):
         return True
 
     def run(self, batches):
+        from concurrent.futures import CancelledError
+
         from distributed.client import _wait
 
         futures = {}
@@ -369,6 +381,12 @@ class DaskCluster(_Executor):
                                       "stored: run again to resume", self.address)
                 for future in finished:
                     yield futures[future], self._result(future)
+        except OutputError:
+            raise
+        except (CancelledError, OSError) as err:  # the scheduler lost: futures cancelled
+            raise OutputError(f"the Dask scheduler was lost ({type(err).__name__}); the "
+                              "finished runs are stored: run again to resume",
+                              self.address) from None
         finally:
             if self.client is not None and self.client.status == "running":
                 for future in futures:
