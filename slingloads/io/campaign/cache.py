@@ -50,7 +50,7 @@ import numpy as np
 from slingloads.analyses.campaign import HISTORY_LABELS
 from slingloads.analyses.campaign.execution import record_problem
 from slingloads.errors import InputError, OutputError
-from slingloads.io.common.safeopen import NotRegularFile, open_regular
+from slingloads.io.common.safeopen import NotRegularFile, kind_of, open_regular
 from slingloads.limits import MAX_CAMPAIGN_SAMPLES
 
 #: Metadata key of the metrics in a cached file.
@@ -349,15 +349,16 @@ def location_problem(cache_dir):
                     return "no existing folder above it"
                 existing = existing.parent
         if not stat.S_ISDIR(info.st_mode):
-            return ("it is a file, not a folder" if existing == path
-                    else f"{existing} is a file, not a folder")
+            what = kind_of(info.st_mode).replace("a regular file", "a file")
+            return (f"it is {what}, not a folder" if existing == path
+                    else f"{existing} is {what}, not a folder")
         if existing == path:
             try:
                 runs = os.stat(path / "runs").st_mode
             except FileNotFoundError:
                 runs = None
             if runs is not None and not stat.S_ISDIR(runs):
-                return "its 'runs' is not a folder"
+                return f"its 'runs' is {kind_of(runs).replace('a regular file', 'a file')}"
             target = path / "runs" if runs is not None else path
         else:
             target = existing
