@@ -8,7 +8,7 @@ References, per family:
   bound, and the scheduler checks within ``--scheduler-timeout`` (plus the time to tear the
   attempt down), against fake servers on the loopback address (refusing, silent, speaking
   garbage) and a real local scheduler;
-- the cache: the documented rule (slingloads.io.campaign.cache) that an unusable entry counts
+- the cache: the documented rule (slingloads.runs.cache) that an unusable entry counts
   as missing: the run is computed again, equal to a run on an empty cache;
 - memory: hand counts of the bytes of the drive tables and samples (8 bytes a float), and
   Python's allocation tracer (numpy reports its arrays to ``tracemalloc``);
@@ -48,11 +48,11 @@ from slingloads.analyses.campaign.execution import (
 )
 from slingloads.cli import main
 from slingloads.errors import InputError, OutputError
-from slingloads.io.campaign import cache as cache_module
-from slingloads.io.campaign.cache import METRICS_KEY, RunCache
 from slingloads.io.common.atomic import AtomicOutputs
 from slingloads.io.common.ownership import MANIFEST_NAME
 from slingloads.io.study import read_study
+from slingloads.runs import cache as cache_module
+from slingloads.runs.cache import METRICS_KEY, RunCache
 
 KEY = "ab" + "0" * 62
 ROWS = 11
@@ -506,7 +506,7 @@ def test_interrupted_at_random_moments_the_resume_gives_identical_results(dyn, t
     cached run, the half-written file left as a killed process leaves it. Each resume
     finds the runs stored before, computes the others, leaves no temporary file, and its
     metrics and histories equal an uninterrupted run's on an empty store."""
-    campaign = read_study(dyn).inputs["campaign"].campaign
+    campaign = read_study(dyn).inputs.campaign.campaign
     fresh = run_campaign(campaign, store=MemoryStore())
     rng = random.Random(22)
     original_batch, original_write = execution.run_batch, RunCache._write
@@ -583,7 +583,7 @@ def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identica
     import contextlib
 
     distributed = pytest.importorskip("distributed")
-    campaign = read_study(dyn).inputs["campaign"].campaign
+    campaign = read_study(dyn).inputs.campaign.campaign
     fresh = run_campaign(campaign, store=MemoryStore())
     cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
                                        dashboard_address=None, protocol="tcp",

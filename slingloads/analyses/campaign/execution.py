@@ -31,8 +31,8 @@ multibody model (``DRIVE_BUDGET``).
 ``__contains__``, and optionally ``expect(key, rows)`` (told each run's history rows before
 it is looked up, so that a store on disk can refuse an entry of another size unread:
 :func:`record_problem` is the contract); a record is ``(metrics, histories)``.
-:class:`MemoryStore` keeps them in memory; the Parquet run cache of the io layer
-(``slingloads.io.campaign.cache``) on disk. Each finished batch is stored as soon as it
+:class:`MemoryStore` keeps them in memory; the Parquet run cache of the runs layer
+(``slingloads.runs.cache``) on disk. Each finished batch is stored as soon as it
 arrives, so an interruption loses at most the batches in flight.
 """
 

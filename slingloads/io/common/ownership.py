@@ -45,8 +45,8 @@ import re
 from pathlib import Path
 
 from slingloads.errors import InputError
-from slingloads.io.common.safeopen import open_regular
 from slingloads.limits import MAX_OUTPUT_ENTRIES
+from slingloads.safeopen import open_regular
 
 #: Custom document property of every report workbook (its value: ``slingloads <version>``).
 XLSX_PROPERTY = "slingloads report"

@@ -21,7 +21,7 @@ its metrics as JSON in the file's metadata.
   (run length / output interval + 1 rows of 26 floats) told by the campaign
   (:meth:`RunCache.expect`);
 * nothing is opened in a way that blocks (a named pipe in the cache is refused, not waited
-  on: :func:`slingloads.io.common.safeopen.open_regular`);
+  on: :func:`slingloads.safeopen.open_regular`);
 * a file is written under a temporary name ``.part-<host>-<process>-<random>.parquet`` and
   renamed into place, so a killed process never leaves a half-written record; the temporary
   files of processes that are gone are removed when the next campaign opens the cache;
@@ -50,8 +50,8 @@ import numpy as np
 from slingloads.analyses.campaign import HISTORY_LABELS
 from slingloads.analyses.campaign.execution import record_problem
 from slingloads.errors import InputError, OutputError
-from slingloads.io.common.safeopen import NotRegularFile, kind_of, open_regular
 from slingloads.limits import MAX_CAMPAIGN_SAMPLES
+from slingloads.safeopen import NotRegularFile, kind_of, open_regular
 
 #: Metadata key of the metrics in a cached file.
 METRICS_KEY = b"slingloads.metrics"

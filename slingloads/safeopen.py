@@ -10,7 +10,7 @@ already handle unreadable files handle these too.
 
 Used for the files slingloads reads from places it does not own: the output folder's
 manifest and marks (:mod:`slingloads.io.common.ownership`) and the run cache
-(:mod:`slingloads.io.campaign.cache`).
+(:mod:`slingloads.runs.cache`).
 """
 
 from __future__ import annotations
