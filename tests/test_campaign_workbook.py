@@ -19,8 +19,8 @@ import pytest
 
 from slingloads.analyses.campaign import HISTORY_LABELS, MemoryStore, run_campaign
 from slingloads.cli import main
-from slingloads.io.campaign.cache import RunCache
 from slingloads.io.study import read_study
+from slingloads.runs.cache import RunCache
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
@@ -119,9 +119,10 @@ def test_report_files_and_readback(tiny):
     for name in ("Summary", "Matrix", "Metrics", "Selection", "NeutralArea", "Sensitivity",
                  "StabilityMap", "NoParachute", "LoadsHandoff", "Plots"):
         assert name in sheets
-    for tag in ("selection", "sensitivity-parachute-area", "stability-map", "no-parachute"):
+    for tag in ("selection", "sensitivity-parachute-area", "stability-map", "root-locus",
+                "no-parachute"):
         assert (out / f"tiny-campaign-{tag}.png").stat().st_size > 1000
-    api = run_campaign(read_study(path).inputs["campaign"].campaign, store=MemoryStore())
+    api = run_campaign(read_study(path).inputs.campaign.campaign, store=MemoryStore())
     report = _blocks(out / "tiny-campaign.xlsx", "Metrics")
     for column in ("yaw change [deg]", "beta peak [deg]", "yaw mode damping ratio [-]",
                    "swing angle trim [deg]", "tension / weight max [-]"):
@@ -135,14 +136,18 @@ def test_report_files_and_readback(tiny):
 
 
 def test_second_run_comes_from_the_cache(tiny, tmp_path):
-    """Run again on the same cache: all 3 runs are found, none computed, same numbers."""
+    """Run again on the same cache: all 3 runs are found, none computed, same numbers; the
+    Summary counts the matrix's 2 runs and the ramp's apart (the matrix's count never exceeds
+    its runs)."""
     path, out, cache = tiny
     again = tmp_path / "again"
     assert main(["campaign", str(path), "--out", str(again), "--cache", str(cache),
                  "--quiet"]) == 0
     frame = pd.read_excel(again / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
     rows = dict(zip(frame[0], frame[1], strict=False))
-    assert (rows["runs found in the cache"], rows["runs computed now"]) == (3, 0)
+    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 0)
+    assert (rows["runs without parachute found in the cache"],
+            rows["runs without parachute computed now"]) == (1, 0)
     pd.testing.assert_frame_equal(pd.read_excel(again / "tiny-campaign.xlsx", "Metrics"),
                                   pd.read_excel(out / "tiny-campaign.xlsx", "Metrics"))
 
@@ -158,7 +163,7 @@ def test_edited_workbook_reruns_only_what_changed(tiny, tmp_path):
     for edits, counts in (({"campaign area factors": "1.2, 1.4"}, (2, 1)),
                           ({"campaign cable EA": 6e6}, (0, 3))):
         path = workbook(tmp_path / "edited.xlsx", edits)
-        result = run_campaign(read_study(path).inputs["campaign"].campaign,
+        result = run_campaign(read_study(path).inputs.campaign.campaign,
                               store=RunCache(cache))
         assert (result.execution.cached, result.execution.computed) == counts
 
@@ -167,7 +172,7 @@ def test_disk_cache_resumes_after_an_interruption(tmp_path):
     """Interrupted after its first batch of one run, the on-disk cache holds that run (one
     Parquet file, no partial file); resumed, 1 run is found and 2 computed, and the results
     equal an uninterrupted run's."""
-    campaign = read_study(workbook(tmp_path / "tiny.xlsx")).inputs["campaign"].campaign
+    campaign = read_study(workbook(tmp_path / "tiny.xlsx")).inputs.campaign.campaign
     cache = RunCache(tmp_path / "cache")
 
     def interrupt(done, total):
@@ -194,7 +199,7 @@ def test_a_damaged_cache_file_is_run_again(tiny, tmp_path):
     victim.write_bytes(b"not a parquet file")
     store = RunCache(copy)
     assert store.get(victim.stem) is None
-    campaign = read_study(tiny[0]).inputs["campaign"].campaign
+    campaign = read_study(tiny[0]).inputs.campaign.campaign
     result = run_campaign(campaign, store=store)
     assert (result.execution.cached, result.execution.computed) == (2, 1)
     assert store.get(victim.stem) is not None
@@ -228,7 +233,7 @@ def _bad(tmp_path, capsys, edits, fragments, args=(), extra=None, cell_of=None):
     ("campaign airspeeds EAS", "60, fast", "every value must be a number"),
     ("campaign manoeuvres", "free response, loop", "unknown manoeuvre; valid values are"),
     ("campaign carriers", "tethered", "unknown carrier; valid values are ['frozen', 'free']"),
-    ("campaign cable lengths", "18", "could reach the carrier"),
+    ("campaign cable lengths", "40", "could reach the carrier"),
     ("campaign no-parachute helicopters", "HC9", "unknown helicopter"),
     ("campaign minimum yaw damping", 1.5, "must be < 1 (allowed: in [0, 1))"),
     ("campaign loads margin", 0.8, "must be >= 1"),
@@ -256,6 +261,19 @@ def test_unknown_mass_case_in_listed_rows(tmp_path, capsys):
     _bad(tmp_path, capsys, {"campaign matrix": "listed rows"},
          ["sheet 'CampaignRuns', cell C3", "unknown mass case", "['maximum']", "heavy"],
          extra=extra)
+
+
+def test_mass_cases_differing_only_in_case_are_one_name(tmp_path, capsys):
+    """Rule (docs/inputs-and-outputs.md: ids are unique with case ignored): CampaignMasses
+    names "max" and "MAX" are the same mass case; the error is at the second one's cell."""
+    def extra(book):
+        masses = book.create_sheet("CampaignMasses")
+        masses.append(["mass case", "mass [kg]"])
+        masses.append(["max", 2900])
+        masses.append(["MAX", 2500])
+
+    _bad(tmp_path, capsys, {}, ["sheet 'CampaignMasses', cell A3", "duplicate mass case",
+                                "first at A2", "case ignored"], extra=extra)
 
 
 def test_unreachable_scheduler_is_a_clear_error_within_its_time_out(tmp_path, capsys):
@@ -301,7 +319,8 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
 def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsys,
                                                                 monkeypatch):
     """Ctrl-C during the second batch (the wind ramp; the first held the 2 matrix runs): exit
-    130, nothing written, the 2 runs cached; the same command again finds 2 and computes 1."""
+    130, nothing written, the 2 runs cached; the same command again finds the 2 matrix runs
+    and computes the ramp."""
     from slingloads.analyses.campaign import execution
 
     path = workbook(tmp_path / "tiny.xlsx")
@@ -324,7 +343,9 @@ def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsy
     assert main(args) == 0
     frame = pd.read_excel(out / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
     rows = dict(zip(frame[0], frame[1], strict=False))
-    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 1)
+    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 0)
+    assert (rows["runs without parachute found in the cache"],
+            rows["runs without parachute computed now"]) == (0, 1)
 
 
 def test_progress_bar_shows_runs_done_rate_and_time_left(tiny, tmp_path, capsys):

@@ -98,8 +98,9 @@ def test_a_finding_is_reported_not_refused():
     and the loads keep the hand-entered cases. Checked on stand-in results; the whole run is
     exercised by the example with 'campaign area factors' 0.5 (exit 3)."""
     from slingloads.cli import EXIT_INCOMPLETE
-    from slingloads.io.campaign.report import shortfalls as campaign_shortfalls
-    from slingloads.io.chute.report import shortfalls as chute_shortfalls
+    from slingloads.runs.campaign import shortfalls as campaign_shortfalls
+    from slingloads.runs.chute_sizing import shortfalls as chute_shortfalls
+    from slingloads.runs.study import Results
 
     none = decide(STATIC, None, selection(math.nan), METRICS, STABLE)
     report = SimpleNamespace(
@@ -111,4 +112,7 @@ def test_a_finding_is_reported_not_refused():
     assert "hand-entered cases only" in lines[1] and "parachute decision" in lines[2]
     sized = SimpleNamespace(sweep=object(), recommended_area=math.nan, decision=None)
     assert "no swept area is stable" in chute_shortfalls(sized)[0]
+    # the study's findings (what the command line prints before exit 3): each once
+    found = Results(chute_sizing=sized, campaign=report).shortfalls()
+    assert len(found) == 4 and found[0] == chute_shortfalls(sized)[0]
     assert EXIT_INCOMPLETE == 3

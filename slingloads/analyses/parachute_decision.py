@@ -91,7 +91,13 @@ class ParachuteDecision:
         return bool(np.isfinite(self.chosen_area))
 
     def study_area_verdict(self):
-        """Whether the Study's parachute is at least the chosen one, in words."""
+        """Whether the Study's parachute is at least the chosen one, in words.
+
+        Returns
+        -------
+        str
+            With the Study's area over the chosen one [-].
+        """
         if not np.isfinite(self.study_area) or self.study_area <= 0:
             return "no Study parachute"
         if not self.found:
@@ -102,7 +108,13 @@ class ParachuteDecision:
                 "not shown adequate")
 
     def to_frame(self):
-        """The decision as one table (item, value, unit, note), the same in every report."""
+        """The decision as one table, the same in every report.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Columns item, value, unit (areas in m^2), note.
+        """
         one = ("; ".join(f"{g}: {v}" for g, v in self.one_dof_verdicts.items())
                if self.one_dof_verdicts else ("not run" if not self.one_dof_ran else "-"))
         rows = [
@@ -129,8 +141,19 @@ class ParachuteDecision:
 
 
 def one_dof_proposal(sweep):
-    """(smallest stable area [m^2] or NaN, governing text) of a 1-DOF sweep
-    (:class:`~slingloads.analyses.chute_sizing.SweepResult`)."""
+    """The 1-DOF model's proposal.
+
+    Parameters
+    ----------
+    sweep : SweepResult
+        The 1-DOF sweep (:class:`~slingloads.analyses.chute_sizing.SweepResult`).
+
+    Returns
+    -------
+    tuple of (float, str)
+        The smallest swept area stable under every gust (NaN: none) [m^2], and what governs
+        it (the gusts failing at the next smaller area).
+    """
     table = sweep.by_area()
     area = sweep.smallest_stable_area
     runs = sweep.to_frame()
@@ -146,8 +169,22 @@ def one_dof_proposal(sweep):
 
 
 def multibody_verdict_at(metrics, area, stable):
-    """Verdict over the campaign's runs at ``area`` [m^2]: ``metrics`` the campaign's metrics,
-    ``stable`` their boolean stable flags (selection's rule)."""
+    """Verdict over the campaign's runs at one parachute area.
+
+    Parameters
+    ----------
+    metrics : pandas.DataFrame or None
+        The campaign's metrics (columns ``area [m^2]``, ``response verdict``).
+    area : float
+        The area. [m^2]
+    stable : ndarray of bool
+        Each run's stable flag (the selection's rule).
+
+    Returns
+    -------
+    str
+        "stable in all N runs", how many are not and the worst response, or "not run".
+    """
     if metrics is None or not np.isfinite(area):
         return "not run"
     at = np.isclose(metrics["area [m^2]"].to_numpy(float), area, rtol=1e-6)

@@ -72,7 +72,17 @@ PERIOD_TOLERANCE = 0.25
 
 
 def worst(verdicts):
-    """The worst of several verdicts (order of :data:`VERDICTS`)."""
+    """The worst of several verdicts (order of :data:`VERDICTS`).
+
+    Parameters
+    ----------
+    verdicts : iterable of str
+        Verdicts of :data:`VERDICTS` (an unknown label counts as worse than all).
+
+    Returns
+    -------
+    str
+    """
     rank = {v: k for k, v in enumerate(VERDICTS)}
     return max(verdicts, key=lambda v: rank.get(v, len(VERDICTS)))
 
@@ -112,7 +122,18 @@ class EnvelopeTest:
             raise InputError("envelope test: decay < 1 < growth", (self.decay, self.growth))
 
     def rule(self, what="the signal"):
-        """The rule in words, with its numbers."""
+        """The rule in words, with its numbers.
+
+        Parameters
+        ----------
+        what : str
+            The signal tested, as the sentence names it.
+
+        Returns
+        -------
+        str
+            The rule, its factors [-], band and offset [deg] and least window [s].
+        """
         return (f"envelope test on {what} over the time after the input ends (after its onset "
                 f"for a sustained input), in two halves: divergent if the second half's half "
                 f"peak-to-peak amplitude is > {self.growth:g} x the first's and > "
@@ -144,7 +165,20 @@ class Envelope:
     offset: np.ndarray
 
     def reason(self, j, what="sideslip"):
-        """Why run ``j`` got its envelope verdict, with its numbers."""
+        """Why run ``j`` got its envelope verdict, with its numbers.
+
+        Parameters
+        ----------
+        j : int
+            Index of the run.
+        what : str
+            The signal tested, as the sentence names it.
+
+        Returns
+        -------
+        str
+            Its amplitudes over the two halves and its offset from trim, in [deg].
+        """
         d = math.degrees
         v = str(self.verdict[j])
         a1, a2, off = d(self.first[j]), d(self.second[j]), d(self.offset[j])
@@ -157,13 +191,29 @@ class Envelope:
 
 
 def envelope(time, y, start, reference, sustained, test=None):
-    """Envelope verdict of responses ``y`` (runs, n) over ``time`` (n,) from ``start`` (runs,)
-    to the end, about their trim values ``reference`` (runs,); ``sustained`` (runs,) bool
-    marks a sustained input. NaN samples (after a stop) are ignored. Module notes.
+    """Envelope verdict of a batch of responses (module notes). NaN samples (after a stop)
+    are ignored.
+
+    Parameters
+    ----------
+    time : array_like, shape (n,)
+        Sample times. [s]
+    y : array_like, shape (runs, n)
+        The responses (the sideslip, a yaw angle...). [rad]
+    start : float or array_like, shape (runs,)
+        When each run's observed window starts (the input's end, or its onset for a
+        sustained input). [s]
+    reference : float or array_like, shape (runs,)
+        Each run's trim value. [rad]
+    sustained : bool or array_like, shape (runs,)
+        Whether the run's input is sustained (a continuous gust).
+    test : EnvelopeTest, optional
+        The factors, band, offset and least window (default :class:`EnvelopeTest`).
 
     Returns
     -------
     Envelope
+        Verdict, half amplitudes over the two halves [rad] and offset from trim [rad].
     """
     test = EnvelopeTest() if test is None else test
     time = np.asarray(time, float)
@@ -203,9 +253,27 @@ def envelope(time, y, start, reference, sustained, test=None):
 
 
 def settling_time(time, y, onset, reference, band):
-    """Time from ``onset`` [s] (runs,) until ``|y - reference|`` stays within ``band``
-    [rad] (runs,): NaN when the last sample is outside it (or NaN), 0 when no sample after
-    the onset ever left it. ``y`` (runs, n) over ``time`` (n,). [s]"""
+    """Time from the input's onset until ``|y - reference|`` stays within ``band``.
+
+    Parameters
+    ----------
+    time : array_like, shape (n,)
+        Sample times. [s]
+    y : array_like, shape (runs, n)
+        The responses. [rad]
+    onset : float or array_like, shape (runs,)
+        The input's onset. [s]
+    reference : float or array_like, shape (runs,)
+        Trim values. [rad]
+    band : float or array_like, shape (runs,)
+        Half width of the band about the trim. [rad]
+
+    Returns
+    -------
+    ndarray, shape (runs,)
+        The settling time: NaN when the last sample is outside the band (or NaN), 0 when no
+        sample after the onset ever left it. [s]
+    """
     time = np.asarray(time, float)
     y = np.atleast_2d(np.asarray(y, float))
     runs = y.shape[0]
@@ -227,7 +295,25 @@ def settling_time(time, y, onset, reference, band):
 def damping_check(measured, period, mode_zeta, mode_period, mode_name):
     """Whether a damping ratio measured on a response agrees with the linear mode it was
     measured on (:data:`DAMPING_TOLERANCE`, periods within :data:`PERIOD_TOLERANCE`), in
-    words."""
+    words.
+
+    Parameters
+    ----------
+    measured : float
+        Damping ratio from the response's logarithmic decrement (NaN: not measured). [-]
+    period : float
+        Period measured on the response. [s]
+    mode_zeta : float
+        Damping ratio of the linear mode. [-]
+    mode_period : float
+        Period of the linear mode (NaN for a real root). [s]
+    mode_name : str
+        Name of the mode ("" when there is none).
+
+    Returns
+    -------
+    str
+    """
     if not (math.isfinite(measured) and math.isfinite(period)):
         return "not measured (fewer than three peaks after the input)"
     if not mode_name:
@@ -244,10 +330,26 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name):
 
 
 def nearest_mode(period, modes, zeta=float("nan")):
-    """The mode of ``modes`` (a :meth:`LinearModel.modes_frame`) a response of ``period``
-    [s] and damping ratio ``zeta`` [-] was measured on: among the modes whose period lies
-    within :data:`PERIOD_TOLERANCE` of it, the one of nearest damping ratio; else the mode of
-    nearest period. (name, damping ratio [-], period [s]), or ("", NaN, NaN)."""
+    """The mode a response was measured on: among the modes whose period lies within
+    :data:`PERIOD_TOLERANCE` of the response's, the one of nearest damping ratio; else the
+    mode of nearest period.
+
+    Parameters
+    ----------
+    period : float
+        Period measured on the response. [s]
+    modes : pandas.DataFrame or None
+        A :meth:`LinearModel.modes_frame` (columns ``mode``, ``period [s]``,
+        ``damping ratio [-]``).
+    zeta : float, optional
+        Damping ratio measured on the response. [-]
+
+    Returns
+    -------
+    tuple of (str, float, float)
+        Name, damping ratio [-] and period [s] of the mode; ("", NaN, NaN) when there is
+        none.
+    """
     if modes is None or len(modes) == 0 or not math.isfinite(period):
         return "", float("nan"), float("nan")
     periods = np.asarray(modes["period [s]"], float)

@@ -390,7 +390,8 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
             by_length.setdefault(ramp["t_end"], (ramp, []))[1].append((key, system, m))
         groups += list(by_length.values())
     if executor is None:
-        executor = make_executor(runs=len(jobs) + len(chute_jobs))
+        executor = make_executor(runs=len(jobs) + len(chute_jobs),
+                                 settings=campaign.settings.as_dict())
     with executor:
         report = execute(groups, store, executor, size=batch_size, progress=progress)
     run_keys = dict(zip(ids, (j[0] for j in jobs), strict=True))

@@ -1,9 +1,9 @@
 """The parachute-sizing report: an Excel workbook and PNG plots (paper sections 3.2-4.2).
 
-:func:`compute` runs the sizing on the inputs read by :mod:`slingloads.io.chute.reader`:
-linearisation of the fuselage and fin yawing moments, neutral static area with its breakdown,
-wake ratio and line length with the carrier-cable check, and the 1-DOF sweep of the parachute
-area over the gust shapes. :func:`write` publishes, all at once or not at all
+The sizing is run by :func:`slingloads.runs.chute_sizing.run` (linearisation of the fuselage
+and fin yawing moments, neutral static area with its breakdown, wake ratio and line length
+with the carrier-cable check, and the 1-DOF sweep of the parachute area over the gust
+shapes); this module only writes its report. :func:`write` publishes, all at once or not at all
 (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-chute.xlsx``, print-ready: sheets *Cover* (identification, input file and its
@@ -22,42 +22,31 @@ Lengths, areas, speeds and moments are in the report unit system (``--units``).
 
 from __future__ import annotations
 
-import contextlib
-from dataclasses import dataclass
+import dataclasses
+import functools
 
 import numpy as np
 import pandas as pd
 
 from slingloads.analyses.chute_sizing import (
-    line_length,
-    neutral_area,
-    run_yaw,
-    sizing_sweep,
     wake_ratio_at,
 )
 from slingloads.constants import FOOT, POUND_FORCE
-from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
-from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
-    drawings,
     plot_function,
-    png_bytes,
     start_drawing,
-    task_result,
 )
 from slingloads.io.common.report import (
-    check_units,
     convert_columns,
     in_report_units,
     report_unit,
     sample_rows,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 
 ANALYSIS = "chute sizing"
 #: PNG files written, by tag: ``<stem>-chute-<tag>.png``.
@@ -66,6 +55,11 @@ PLOTS = ("linearisation", "static-moments", "wake", "sweep", "histories")
 OUTPUTS = ("{stem}-chute.xlsx", "{stem}-chute-histories.csv",
            *(f"{{stem}}-chute-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 100
+#: Title of each figure on the Plots sheet.
+FIGURE_TITLES = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
+                 "static-moments": "Static yawing moments at the neutral area",
+                 "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
+                 "histories": "Time histories for every gust shape (paper figure 7)"}
 #: Most rows of each table of the Histories sheet (the CSV file keeps every stored sample).
 HISTORY_ROWS = 65
 #: Sideslip interval of the curve tables (Linearisation, StaticMoments) when they are
@@ -88,172 +82,12 @@ CONVENTIONS = (
 )
 
 
-@dataclass(frozen=True)
-class ChuteSizingReport:
-    """Results of the parachute sizing of one workbook.
-
-    Attributes
-    ----------
-    inputs : ChuteSizingInputs
-    static : NeutralAreaResult
-    line : LineLengthResult
-    sweep : SweepResult or None
-        None when fuselage and fin are already statically stable (no positive neutral area).
-    recommended_area : float
-        The smallest swept area at which every gust run meets the criterion (NaN when none
-        does; 0 when already stable). [m^2]
-    study_area_runs : YawRuns or None
-        Every gust at the Study's 'parachute area', the one the loads use (None if it is 0).
-    decision : ParachuteDecision or None
-        The parachute decision (:mod:`slingloads.analyses.parachute_decision`), with the
-        campaign's selection when the campaign ran in the same study.
-    axes_angle : float
-        Angle between the axis the yawing moments are taken about (airframe z through the
-        hub) and the axis of the yaw inertia (the hub-CG line, the hanging vertical); NaN
-        without mass items. [rad]
-    """
-
-    inputs: object
-    static: object
-    line: object
-    sweep: object
-    recommended_area: float
-    study_area_runs: object = None
-    decision: object = None
-    axes_angle: float = float("nan")
-
-    @property
-    def study_area_peak_sideslip(self):
-        """Largest |sideslip| of the gusts at the Study's 'parachute area', and the gust
-        that gives it (NaN, "" without that area). [rad], str"""
-        if self.study_area_runs is None:
-            return float("nan"), ""
-        frame = self.study_area_runs.to_frame()
-        i = int(np.argmax(frame["peak beta [deg]"].to_numpy()))
-        return float(np.radians(frame["peak beta [deg]"].iloc[i])), str(frame["gust"].iloc[i])
-
-    def stability_by_area(self):
-        """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""
-        if self.sweep is None:
-            return pd.DataFrame()
-        return self.sweep.by_area()
-
-    @property
-    def smallest_stable_area(self):
-        """Smallest swept area at which every gust run is stable (NaN if none). [m^2]"""
-        return self.sweep.smallest_stable_area if self.sweep is not None else float("nan")
-
-    def history_runs(self):
-        """Indices of the runs at the smallest, recommended and largest swept areas."""
-        if self.sweep is None:
-            return []
-        ratio = self.sweep.runs.areas / self.static.area
-        f = self.inputs.factors
-        chosen = []
-        recommended = (self.recommended_area / self.static.area
-                       if np.isfinite(self.recommended_area) else self.inputs.recommended_factor)
-        for target in (f.min(), recommended, f.max()):
-            nearest = ratio[np.argmin(np.abs(ratio - target))]
-            chosen += list(np.nonzero(np.isclose(ratio, nearest))[0])
-        return sorted(set(chosen))
-
-
 #: How the paper found the parachute area (the Summary's note on the sizing).
 PAPER_NOTE = ("As the paper found it: its 1-DOF model (section 4.2) confirmed the neutral "
               "static area; the complete multibody model (4.5) found it insufficient, the "
               "shortfall coming from the inter-axis coupling of helicopter and parachute (the "
               "carrier's coupling was negligible). This sizing reproduces 4.1-4.2 only; the "
               "factor 1.4 is the paper's optimum for its own aircraft, not this one's.")
-
-
-def compute(study):
-    """Run the parachute sizing read from a workbook.
-
-    Parameters
-    ----------
-    study : WorkbookStudy
-        With ``study.inputs["chute sizing"]`` (:class:`ChuteSizingInputs`).
-
-    Returns
-    -------
-    ChuteSizingReport
-
-    Raises
-    ------
-    InputError
-        If the workbook does not ask for the sizing, or the analysis refuses its inputs (the
-        file is named).
-    """
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the parachute sizing (Study sheet: "
-                         "'run chute sizing' is no)", file=study.path, sheet="Study")
-    with located(study.path), _trim_located(study):
-        static = neutral_area(inputs.model, inputs.fit_range)
-        line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
-        sweep = None
-        if not static.already_stable:
-            sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
-                                 inputs.fit_range, metrics=inputs.metrics, static=static,
-                                 integrator=inputs.integrator)
-        at_study = None
-        if inputs.study_area > 0:
-            at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
-                               inputs.fit_range, inputs.metrics, inputs.integrator)
-    recommended = sweep.smallest_stable_area if sweep is not None else 0.0
-    decision = None
-    if sweep is not None:
-        decision = _decision(study, inputs, static, sweep)
-    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
-                             decision, _axes_angle(study))
-
-
-def _axes_angle(study):
-    """Angle between airframe z and the hub-CG line (NaN without mass items). [rad]"""
-    airframe = getattr(study, "airframe", None)
-    items = getattr(airframe, "mass_items", None)
-    if items is None:
-        return float("nan")
-    k = np.asarray(airframe.hardpoints.hub, float) - np.asarray(items.cg, float)
-    norm = np.linalg.norm(k)
-    return float(np.arccos(np.clip(k[2] / norm, -1.0, 1.0))) if norm > 0 else float("nan")
-
-
-def shortfalls(result):
-    """The sizing's findings that leave a result asked for without a value, one line each
-    (``slingloads`` then exits 3 with the reports written): no swept area stable under every
-    gust, no area meeting every criterion of the parachute decision."""
-    out = []
-    if result.sweep is not None and not np.isfinite(result.recommended_area):
-        out.append("chute sizing: no swept area is stable under every gust (sheet Sweep): no "
-                   "area recommended")
-    if result.decision is not None and not result.decision.found:
-        out.append(f"parachute decision: {result.decision.reason}")
-    return out
-
-
-def _decision(study, inputs, static, sweep):
-    """The parachute decision: the sizing's, with the campaign's selection when the campaign
-    was computed in the same study (it is computed first); left in
-    ``study.results["parachute decision"]`` for every report that mentions the parachute."""
-    from slingloads.analyses.campaign.campaign import campaign_decision
-    from slingloads.analyses.parachute_decision import decide
-
-    def one_dof(area):
-        return run_yaw(inputs.model, area, inputs.gusts, inputs.settings, inputs.fit_range,
-                       inputs.metrics, inputs.integrator).to_frame()
-
-    results = getattr(study, "results", None)
-    campaign = results.get("campaign") if results is not None else None
-    if campaign is not None:
-        r = campaign.result
-        decision = campaign_decision(r.campaign, r.metrics, r.selection, sweep, static,
-                                     one_dof, inputs.study_area)
-    else:
-        decision = decide(static, sweep, one_dof=one_dof, study_area=inputs.study_area)
-    if results is not None:
-        results["parachute decision"] = decision
-    return decision
 
 
 def decision_table(decision, units="SI"):
@@ -268,16 +102,14 @@ def decision_table(decision, units="SI"):
     return frame
 
 
-@contextlib.contextmanager
-def _trim_located(study):
-    """Locate a yaw trim that cannot be found at the hub's cells (see
-    :func:`slingloads.io.chute.reader.trim_error`)."""
-    try:
-        yield
-    except InputError as err:
-        from slingloads.io.chute.reader import trim_error
-
-        raise trim_error(err, study) from None
+def with_decision(kind, study):
+    """``kind`` (a :class:`ReportKind` whose ``sheets`` takes ``decision=``) showing the
+    study's parachute decision (``study.results.parachute_decision``), the one every report
+    that mentions the parachute carries; ``kind`` itself when there is none."""
+    decision = study.results.parachute_decision
+    if decision is None:
+        return kind
+    return dataclasses.replace(kind, sheets=functools.partial(kind.sheets, decision=decision))
 
 
 # ------------------------------------------------------------------------------- tables
@@ -615,9 +447,25 @@ def histories_csv(result):
     return csv_bytes(history_csv_frame(result))
 
 
+def _titles(result):
+    return FIGURE_TITLES
+
+
+def _histories_csv_if_swept(result):
+    """The bytes of ``<stem>-chute-histories.csv``, or None without a sweep."""
+    return histories_csv(result) if result.sweep is not None else None
+
+
+#: The sizing report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="chute", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
+                    titles=_titles, data={"histories.csv": _histories_csv_if_swept})
+
+
 def write(result, out_dir, stem, units, study, figures=None):
     """Write ``<stem>-chute.xlsx``, ``<stem>-chute-histories.csv`` and ``<stem>-chute-*.png``
-    atomically.
+    atomically (:func:`~slingloads.io.common.report_writer.write_report` of
+    :data:`REPORT`).
 
     Parameters
     ----------
@@ -626,7 +474,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"`` (lengths in in, areas in ft^2, speeds in kt, moments in lbf in).
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -635,30 +483,5 @@ def write(result, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files
-    names = ([f"{stem}-chute.xlsx", f"{stem}-chute-histories.csv"]
-             + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
-    check_outputs(out_dir, names, inputs)
-    titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
-              "static-moments": "Static yawing moments at the neutral area",
-              "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
-              "histories": "Time histories for every gust shape (paper figure 7)"}
-    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        sheets = _sheets(result, units, study.warnings,
-                         getattr(study, "results", {}).get("parachute decision"))
-        files = ([f"{stem}-chute-histories.csv"] if result.sweep is not None else []) + [
-            f"{stem}-chute-{tag}.png" for tag in pngs]
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS, files=files)
-        csv = (task_result(figures, "histories.csv", histories_csv, result)  # (before the
-               if result.sweep is not None else None)  # figures are awaited: see lateral)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
-                           {titles[t]: png for t, png in pngs.items()}, info=info)
-            if csv is not None:
-                out.path(f"{stem}-chute-histories.csv").write_bytes(csv)
-            for tag, png in pngs.items():
-                out.path(f"{stem}-chute-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(with_decision(REPORT, study), result, out_dir, stem, units, study,
+                        figures)

@@ -12,7 +12,7 @@ naming the file, sheet, cell, the value as written and the rule broken.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
@@ -22,15 +22,15 @@ from slingloads.analyses.multibody.manoeuvres import (
     Manoeuvre,
     paper_manoeuvres,
 )
+from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
     read_fuselage_aero,
     read_parachute,
 )
-from slingloads.io.common.locate import at_row
+from slingloads.io.common.locate import Place, located
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import located
 from slingloads.io.multibody.schema import (
     CANOPY_TABLES,
     CARRIERS,
@@ -42,7 +42,7 @@ from slingloads.io.multibody.schema import (
     SHEETS,
     TAILS,
 )
-from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES
+from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES, MEMORY_BUDGET
 from slingloads.models.aero_tables import Table1D
 from slingloads.models.atmosphere import isa_density, true_airspeed
 from slingloads.models.gusts import GUST_KINDS, GUST_VELOCITY, make_gust
@@ -54,45 +54,12 @@ from slingloads.models.multibody.parachute_line import HingedParachute, QuasiSta
 from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.multibody.system import SlingSystem
 from slingloads.models.parachute import extended_cd_table
+from slingloads.runs.multibody import MultibodyInputs
 
 ANALYSIS = "multibody"
 _SPEC = {s.name: s for s in SHEETS}
 #: Defaults of the MultibodyManoeuvres columns (SI).
 ONSET, DURATION, ACCELERATION, RAMP_RATE = 5.0, 10.0, 1.0, 0.5
-
-
-@dataclass(frozen=True)
-class MultibodyInputs:
-    """Everything the multibody analysis needs, in SI.
-
-    Attributes
-    ----------
-    system : SlingSystem
-    manoeuvres : tuple of Manoeuvre
-    settings : dict
-        Keywords of :func:`~slingloads.analyses.multibody.simulate`: ``t_end``, ``dt`` (None:
-        adaptive), ``output_interval`` [s], ``rtol`` [-], ``atol`` [SI].
-    configuration, tail, carrier, parachute_model, canopy_table : str
-        The Study's choices, as spelt in :mod:`slingloads.io.multibody.schema`.
-    margin : float
-        Required excess of the cable over the parachute line. [-]
-    warnings : tuple of str
-        Rules broken that do not prevent the runs (shown in the report).
-    manoeuvre_source : str
-        "MultibodyManoeuvres sheet" or "the paper's list".
-    """
-
-    system: SlingSystem
-    manoeuvres: tuple
-    settings: dict
-    configuration: str
-    tail: str
-    carrier: str
-    parachute_model: str
-    canopy_table: str
-    margin: float
-    warnings: tuple
-    manoeuvre_source: str
 
 
 def read(reader, params, study):
@@ -102,7 +69,7 @@ def read(reader, params, study):
     ----------
     reader : WorkbookReader
     params : slingloads.io.common.parameters.StudyParameters
-    study : WorkbookStudy
+    study : Study
         The airframe and the hardpoints by kind already read.
 
     Returns
@@ -123,16 +90,10 @@ def read(reader, params, study):
                            warnings=warnings, manoeuvre_source=source, **choices)
 
 
-def load_workbook_system(path):
-    """The multibody inputs of the workbook at ``path`` (whatever its 'run multibody' says).
-
-    Returns
-    -------
-    MultibodyInputs
-    """
-    from slingloads.io.study import read_study
-
-    return read_study(path, only=[ANALYSIS]).inputs[ANALYSIS]
+def locate(err, study, context=None):
+    """``err``, raised while the multibody model of ``study`` ran: located by its field alone
+    (the schema's ``COMPUTE_FIELDS``), so returned unchanged."""
+    return err
 
 
 # --------------------------------------------------------------------------- settings
@@ -162,6 +123,14 @@ def check_work(params, runs, settings):
                  f"too much work: {runs} runs of {settings['t_end']:g} s sampled at this "
                  f"interval store {samples:,} samples, more than the "
                  f"{MAX_MULTIBODY_SAMPLES:,} allowed (limits of slingloads)")
+    from slingloads.analyses.multibody.simulate import DRIVE_BUDGET, SAMPLE_BYTES
+
+    need = DRIVE_BUDGET + samples * SAMPLE_BYTES
+    params.check("multibody output interval", need <= MEMORY_BUDGET,
+                 f"too much memory: {runs} runs of {settings['t_end']:g} s sampled at this "
+                 f"interval need about {need / 2**20:,.0f} MB, more than the "
+                 f"{MEMORY_BUDGET / 2**20:,.0f} MB budget of a computation (limits of "
+                 "slingloads; docs/inputs-and-outputs.md, Memory)")
     if settings["dt"] is not None:
         steps = runs * settings["t_end"] / settings["dt"]
         params.check("multibody time step", steps <= MAX_MULTIBODY_RUN_STEPS,
@@ -178,8 +147,8 @@ def read_system(reader, params, study):
     ----------
     reader : WorkbookReader
     params : StudyParameters
-    study : WorkbookStudy
-        With the airframe and its hardpoints by kind (``study.points``).
+    study : Study
+        With the airframe and its hardpoints by kind (``study.source.points``).
 
     Returns
     -------
@@ -198,7 +167,7 @@ def read_system(reader, params, study):
     airspeed = params.positive("multibody airspeed EAS", allow_zero=True)
     altitude = params("multibody density altitude")
     body = _body(reader, study)
-    refs = study.points
+    refs = study.source.points
     fuselage = read_fuselage_aero(reader, params, refs)
     if fuselage is None:
         raise reader.error("the multibody model needs the FuselageAero sheet (the carried "
@@ -212,9 +181,9 @@ def read_system(reader, params, study):
     if parachute is not None:
         _check_reach(reader, params, refs, hardpoints, parachute, cable)
     carrier = _carrier(params, carrier_choice)
-    with params.at("multibody density altitude"):
+    with located(params, default="multibody density altitude"):
         isa_density(altitude)
-    with located(file, STUDY_SHEET):
+    with located(Place(file, STUDY_SHEET)):
         system = SlingSystem(body, hardpoints, cable, fuselage, surfaces, parachute, carrier,
                              airspeed, altitude, name=str(params("study name")))
     return system, {"configuration": configuration, "tail": tail_choice,
@@ -224,7 +193,7 @@ def read_system(reader, params, study):
 
 def _body(reader, study):
     """The carried helicopter's mass, CG and inertia tensor from MassItems."""
-    with located(reader.file, "MassItems"):
+    with located(Place(reader.file, "MassItems")):
         return RigidBody.from_mass_items(study.airframe.mass_items)
 
 
@@ -232,7 +201,7 @@ def _surfaces(reader, params, refs, tail_choice):
     """The fin (cut down, or intact with the full tail) and the horizontal tail."""
     fin = read_fin_aero(reader, params, refs)
     if fin is not None:
-        with params.at("fin axes"):
+        with located(params, default="fin axes"):
             LiftingSurface.from_fin(fin)  # a normal-force table: body axes
     if tail_choice == "cut-down fin":
         return (LiftingSurface.from_fin(fin),) if fin is not None else ()
@@ -249,10 +218,10 @@ def _surfaces(reader, params, refs, tail_choice):
                            sheet="Hardpoints", cell="B1")
     area = params.positive("multibody horizontal tail area")
     t = reader.table(_SPEC["HTailAero"])
-    with t.located():
+    with located(t):
         table = Table1D(t["alpha"], {"CN": t["CN"]}, angle_name="alpha",
                         what="horizontal tail")
-    with params.at("multibody horizontal tail area"):
+    with located(params, default="multibody horizontal tail area"):
         tail = LiftingSurface(table, area, refs["htail_cp"], "z", 1.0, "horizontal tail")
     return LiftingSurface.from_fin(fin, efficiency=1.0), tail
 
@@ -280,7 +249,7 @@ def _parachute(reader, params, hardpoints, model, canopy_table):
     if model == "quasi-static":
         return QuasiStaticParachute(chute)
     mass = params.positive("multibody canopy mass")
-    with params.at("multibody canopy mass"):
+    with located(params, default="multibody canopy mass"):
         return HingedParachute(chute, mass)
 
 
@@ -331,18 +300,14 @@ def read_manoeuvres(reader, params, system, t_end):
         return tuple(paper_manoeuvres(system.density_altitude)), "the paper's list"
     t = reader.table(_SPEC["MultibodyManoeuvres"])
     rows = _Rows(reader, t)
-    seen = {}
+    check_unique(t, "name")
     out = []
     for i in range(len(t)):
         name = str(t["name"][i]).strip()
-        if name in seen:
-            raise reader.error(f"duplicate name (first at {t.cell('name', seen[name])})", name,
-                               t.sheet, t.cell("name", i))
-        seen[name] = i
         kind = rows.choice("kind", i, MANOEUVRE_KINDS, required=True)
         builder = {"free response": _free_response, "gust": _gust,
                    "forward acceleration": _acceleration, "wind ramp": _wind_ramp}[kind]
-        with at_row(t, "kind", i):
+        with located(t, default="kind", index=i):
             out.append(builder(rows, i, name, system, t_end))
     return tuple(out), "MultibodyManoeuvres sheet"
 

@@ -1,0 +1,256 @@
+"""Run the parachute sizing of a study: its inputs, its result and :func:`run`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from slingloads.analyses.chute_sizing import (
+    MetricSettings,
+    line_length,
+    neutral_area,
+    run_yaw,
+    sizing_sweep,
+)
+from slingloads.models.integration import SolverSettings
+from slingloads.models.yaw_dynamics import YawModel
+
+ANALYSIS = "chute sizing"
+
+
+@dataclass(frozen=True)
+class ChuteSizingInputs:
+    """Everything the parachute sizing needs, in SI.
+
+    Attributes
+    ----------
+    model : YawModel
+        Fuselage, fin, hardpoints, yaw inertia about the suspension axis, condition, and a
+        parachute template (its CD and wake ratio; the area is swept).
+    fit_range : tuple of float
+        Sideslip range of the linearisation. [rad]
+    wake : TabulatedWake or BluffBodyWake
+    target : float
+        Dynamic-pressure ratio the canopy must see. [-]
+    cable_length : float or None
+        Carrier cable; None skips the check. [m]
+    margin : float
+        Required excess of the cable over the line. [-]
+    gusts : tuple
+        Gust shapes of the sweep.
+    settings : SolverSettings
+    metrics : MetricSettings
+        With the sideslip limit past which no run is called stable.
+    factors : ndarray
+        Swept areas over the neutral area. [-]
+    recommended_factor : float
+        Recommended area over the neutral area. [-]
+    integrator : str
+        ``"dopri5"``, ``"rk4"`` or ``"solve_ivp"`` (see
+        :func:`slingloads.analyses.chute_sizing.run_yaw`).
+    inertia_source : str
+        ``"mass items"`` or ``"parameter"``.
+    study_area : float
+        The Study's 'parachute area' (used by the loads; 0 if none). [m^2]
+    study_line : float
+        The Study's 'parachute line length'. [m]
+    """
+
+    model: YawModel
+    fit_range: tuple
+    wake: object
+    target: float
+    cable_length: float | None
+    margin: float
+    gusts: tuple
+    settings: SolverSettings
+    metrics: MetricSettings
+    factors: np.ndarray
+    recommended_factor: float
+    integrator: str
+    inertia_source: str
+    study_area: float
+    study_line: float
+
+
+@dataclass(frozen=True)
+class ChuteSizingReport:
+    """Results of the parachute sizing of one workbook.
+
+    Attributes
+    ----------
+    inputs : ChuteSizingInputs
+    static : NeutralAreaResult
+    line : LineLengthResult
+    sweep : SweepResult or None
+        None when fuselage and fin are already statically stable (no positive neutral area).
+    recommended_area : float
+        The smallest swept area at which every gust run meets the criterion (NaN when none
+        does; 0 when already stable). [m^2]
+    study_area_runs : YawRuns or None
+        Every gust at the Study's 'parachute area', the one the loads use (None if it is 0).
+    decision : ParachuteDecision or None
+        The parachute decision (:mod:`slingloads.analyses.parachute_decision`), with the
+        campaign's selection when the campaign ran in the same study.
+    axes_angle : float
+        Angle between the axis the yawing moments are taken about (airframe z through the
+        hub) and the axis of the yaw inertia (the hub-CG line, the hanging vertical); NaN
+        without mass items. [rad]
+    """
+
+    inputs: ChuteSizingInputs
+    static: object
+    line: object
+    sweep: object
+    recommended_area: float
+    study_area_runs: object = None
+    decision: object = None
+    axes_angle: float = float("nan")
+
+    @property
+    def study_area_peak_sideslip(self):
+        """Largest |sideslip| of the gusts at the Study's 'parachute area', and the gust
+        that gives it (NaN, "" without that area). [rad], str"""
+        if self.study_area_runs is None:
+            return float("nan"), ""
+        frame = self.study_area_runs.to_frame()
+        i = int(np.argmax(frame["peak beta [deg]"].to_numpy()))
+        return float(np.radians(frame["peak beta [deg]"].iloc[i])), str(frame["gust"].iloc[i])
+
+    def to_frame(self):
+        """Every run of the area sweep, one row each (units in the headers); empty when
+        fuselage and fin are already stable (no sweep)."""
+        return self.sweep.to_frame() if self.sweep is not None else pd.DataFrame()
+
+    def stability_by_area(self):
+        """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""
+        if self.sweep is None:
+            return pd.DataFrame()
+        return self.sweep.by_area()
+
+    @property
+    def smallest_stable_area(self):
+        """Smallest swept area at which every gust run is stable (NaN if none). [m^2]"""
+        return self.sweep.smallest_stable_area if self.sweep is not None else float("nan")
+
+    def history_runs(self):
+        """Indices of the runs at the smallest, recommended and largest swept areas."""
+        if self.sweep is None:
+            return []
+        ratio = self.sweep.runs.areas / self.static.area
+        f = self.inputs.factors
+        chosen = []
+        recommended = (self.recommended_area / self.static.area
+                       if np.isfinite(self.recommended_area) else self.inputs.recommended_factor)
+        for target in (f.min(), recommended, f.max()):
+            nearest = ratio[np.argmin(np.abs(ratio - target))]
+            chosen += list(np.nonzero(np.isclose(ratio, nearest))[0])
+        return sorted(set(chosen))
+
+
+def run(study):
+    """Run the parachute sizing of a study.
+
+    Parameters
+    ----------
+    study : Study
+        With ``study.inputs.chute_sizing`` (:class:`ChuteSizingInputs`).
+
+    Returns
+    -------
+    ChuteSizingReport
+
+    Raises
+    ------
+    InputError
+        If the study does not ask for the sizing, or the analysis refuses its inputs
+        (located where they came from: :meth:`Study.located`; a yaw trim that cannot be found
+        has ``field = "trim"``).
+    """
+    inputs = study.require(ANALYSIS)
+    with study.located(ANALYSIS):
+        static = neutral_area(inputs.model, inputs.fit_range)
+        line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
+        sweep = None
+        if not static.already_stable:
+            sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
+                                 inputs.fit_range, metrics=inputs.metrics, static=static,
+                                 integrator=inputs.integrator)
+        at_study = None
+        if inputs.study_area > 0:
+            at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
+                               inputs.fit_range, inputs.metrics, inputs.integrator)
+        recommended = sweep.smallest_stable_area if sweep is not None else 0.0
+        decision = _decision(study, inputs, static, sweep) if sweep is not None else None
+    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
+                             decision, axes_angle(study.airframe))
+
+
+def axes_angle(airframe):
+    """Angle between the axis the yawing moments are taken about (airframe z through the
+    hub) and the axis of the yaw inertia (the hub-CG line).
+
+    Parameters
+    ----------
+    airframe : Airframe or None
+        Its hub hardpoint and mass items' centre of gravity. [m]
+
+    Returns
+    -------
+    float
+        The angle; NaN without mass items or with the CG at the hub. [rad]
+    """
+    items = getattr(airframe, "mass_items", None)
+    if items is None:
+        return float("nan")
+    k = np.asarray(airframe.hardpoints.hub, float) - np.asarray(items.cg, float)
+    norm = np.linalg.norm(k)
+    return float(np.arccos(np.clip(k[2] / norm, -1.0, 1.0))) if norm > 0 else float("nan")
+
+
+def shortfalls(result):
+    """The sizing's findings that leave a result asked for without a value, one line each
+    (``slingloads`` then exits 3 with the reports written): no swept area stable under every
+    gust, no area meeting every criterion of the parachute decision.
+
+    Parameters
+    ----------
+    result : ChuteSizingReport
+
+    Returns
+    -------
+    list of str
+    """
+    out = []
+    if result.sweep is not None and not np.isfinite(result.recommended_area):
+        out.append("chute sizing: no swept area is stable under every gust (sheet Sweep): no "
+                   "area recommended")
+    if result.decision is not None and not result.decision.found:
+        out.append(f"parachute decision: {result.decision.reason}")
+    return out
+
+
+def _decision(study, inputs, static, sweep):
+    """The parachute decision: the sizing's, with the campaign's selection when the campaign
+    was computed in the same study (it is computed first, :data:`slingloads.runs.study.
+    FEEDS`); kept in ``study.results.parachute_decision`` for every report that mentions the
+    parachute."""
+    from slingloads.analyses.campaign.campaign import campaign_decision
+    from slingloads.analyses.parachute_decision import decide
+
+    def one_dof(area):
+        return run_yaw(inputs.model, area, inputs.gusts, inputs.settings, inputs.fit_range,
+                       inputs.metrics, inputs.integrator).to_frame()
+
+    campaign = study.results.campaign
+    if campaign is not None:
+        r = campaign.result
+        decision = campaign_decision(r.campaign, r.metrics, r.selection, sweep, static,
+                                     one_dof, inputs.study_area)
+    else:
+        decision = decide(static, sweep, one_dof=one_dof, study_area=inputs.study_area)
+    study.results.parachute_decision = decision
+    return decision
+
