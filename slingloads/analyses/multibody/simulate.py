@@ -352,8 +352,12 @@ class Simulation:
         return pd.concat(frames, ignore_index=True)
 
 
+#: What :func:`simulate` does with a run whose start has no trim.
+NO_TRIM_ACTIONS = ("raise", "report")
+
+
 def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
-             rtol=RTOL, atol=ATOL):
+             rtol=RTOL, atol=ATOL, no_trim="raise"):
     """Fly ``system`` through ``manoeuvres`` (all integrated together).
 
     Parameters
@@ -366,23 +370,39 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
     rtol, atol : float
         Tolerances of the adaptive step: local error below atol + rtol |x| (root mean square
         over the states, SI units). [-], [SI]
+    no_trim : {"raise", "report"}
+        A run whose start has no trim (every run starts from one: the carrier's steady
+        velocity and the cable's pull are the trim's, also with a ``start_state``): raise
+        :class:`~slingloads.errors.InputError` with the reason (default), or return it
+        unflown, its verdict ``no trim`` and the reason in ``stopped`` (the workbook's
+        reports list such runs).
 
     Returns
     -------
     Simulation
+
+    Raises
+    ------
+    InputError
+        For bad settings, and for a run without trim when ``no_trim="raise"``.
     """
+    if no_trim not in NO_TRIM_ACTIONS:
+        raise InputError(f"no_trim must be one of {list(NO_TRIM_ACTIONS)}", no_trim)
     if isinstance(manoeuvres, Manoeuvre):
         manoeuvres = [manoeuvres]
     names = [m.name for m in manoeuvres]
     if len(set(names)) != len(names):
         dup = next(n for n in names if names.count(n) > 1)
         raise InputError("manoeuvre names must be unique", dup)
-    return simulate_runs([(system, m) for m in manoeuvres], t_end=t_end, dt=dt,
-                         output_interval=output_interval, rtol=rtol, atol=atol)
+    sim = simulate_runs([(system, m) for m in manoeuvres], t_end=t_end, dt=dt,
+                        output_interval=output_interval, rtol=rtol, atol=atol,
+                        untrimmed=no_trim == "raise")
+    return sim
 
 
 def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL, rtol=RTOL,
-                  atol=ATOL, check_step=True, workers=None, keep_histories=True):
+                  atol=ATOL, check_step=True, workers=None, keep_histories=True,
+                  untrimmed=False):
     """Integrate runs given as (system, manoeuvre) pairs, together (module notes).
 
     Parameters
@@ -403,6 +423,10 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         (each run's measures, computed as soon as it is integrated): a run's states and
         histories are then integrated again when asked for (the same to the last bit, about
         a millisecond a run), and a large batch needs no memory for histories.
+    untrimmed : bool
+        Raise :class:`~slingloads.errors.InputError` for a run whose start has no trim
+        (True), or return it unflown with the reason (False: a campaign maps where trims
+        exist).
 
     Returns
     -------
@@ -421,6 +445,16 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         requests.setdefault(key, (system, speed, manoeuvre.wind.steady))
         keys.append(key)
     trims = dict(zip(requests, trim_many(list(requests.values())), strict=True))
+    if untrimmed:
+        for (system, manoeuvre), key in zip(pairs, keys, strict=True):
+            point = trims[key]
+            if not point.converged:
+                start = "in hover" if manoeuvre.from_hover else (
+                    f"at {point.airspeed:.4g} m/s EAS")
+                raise InputError(
+                    f"run {manoeuvre.name!r} of {system.name!r} cannot start: no trim "
+                    f"{start}: {point.message} (every run starts from a trim, also with a "
+                    "start_state; no_trim='report' returns such runs unflown)")
     linear = {}
     if check_step and dt is not None:
         for point in trims.values():

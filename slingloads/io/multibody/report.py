@@ -159,7 +159,8 @@ def compute(study):
     with located(study.path):
         point = trim(inputs.system)
         linear = linearise(point) if point.converged else None
-        sim = simulate(inputs.system, inputs.manoeuvres, **inputs.settings)
+        sim = simulate(inputs.system, inputs.manoeuvres, no_trim="report",
+                       **inputs.settings)
     return MultibodyReport(inputs, point, linear, sim, airframe_outline(study.airframe))
 
 
@@ -241,7 +242,7 @@ def system_table(result, units="SI"):
         _row("Ixz about the CG", inertia[0, 2], "inertia", units, "tensor sign"),
         _row("cable length", s.cable.length, "length", units, "unstretched, hook to hub"),
         _row("cable EA", s.cable.ea, "force", units),
-        _row("cable damping ratio", s.cable.damping_ratio, "-", units),
+        _row("cable damping ratio", s.cable.damping_ratio_for(s.hung_mass), "-", units),
         _row("static stretch W L / EA", s.cable.static_stretch(s.weight), "length", units),
     ]
     if s.parachute is not None:
