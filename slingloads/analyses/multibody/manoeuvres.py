@@ -50,15 +50,19 @@ class Manoeuvre:
         Default: steady flight at the system airspeed.
     wind : Wind
     disturbance : dict
-        Initial offsets from trim, keys of :data:`DISTURBANCES` (yaw, pitch, roll [rad] added
-        to the trim attitude; yaw_rate [rad/s]; longitudinal, lateral, vertical [m] CG
-        displacement in earth axes; theta, psi [rad] of the parachute line).
+        Initial offsets added to the trim's state, or to ``start_state`` when given: keys of
+        :data:`DISTURBANCES` (yaw, pitch, roll [rad] added to the attitude's angles; yaw_rate
+        [rad/s] added to the body rates; longitudinal, lateral, vertical [m] CG displacement
+        in earth axes; theta, psi [rad] of the parachute line;
+        :func:`~slingloads.analyses.multibody.simulate.disturbed`).
     from_hover : bool, optional
         Start trimmed in hover rather than at the system airspeed (default: the trajectory's
         choice, True for a forward acceleration, and True for a wind ramp).
     start_state : array_like, shape (20,), optional
-        A full state of the equations to start from instead of trim plus disturbance (e.g.
-        :meth:`~slingloads.analyses.multibody.LinearModel.mode_state`).
+        A full state of the equations to start from instead of the trim's (built by name with
+        :func:`~slingloads.analyses.multibody.start.start_state`, or e.g.
+        :meth:`~slingloads.analyses.multibody.LinearModel.mode_state`). The run still needs
+        its trim: the carrier's steady velocity and cable pull are the trim's.
     """
 
     name: str

@@ -97,20 +97,37 @@ def _check_settings(t_end, dt, output_interval, rtol, atol):
     return int(round(samples)) + 1
 
 
-def _disturbed(trim_point, disturbance):
-    """Trim state with a manoeuvre's initial disturbance applied."""
-    x = trim_point.state.copy()
+def disturbed(state, disturbance, chute_kind="none"):
+    """A state with a manoeuvre's initial disturbance added to it (nothing is overwritten).
+
+    Parameters
+    ----------
+    state : array_like, shape (20,)
+        The trim's state, or a start state (:func:`~.start.start_state`).
+    disturbance : dict
+        Keys of :data:`~.manoeuvres.DISTURBANCES`: yaw, pitch, roll [rad] added to the
+        attitude's angles; yaw_rate [rad/s] added to the body rates, about the earth vertical
+        (nose right positive); longitudinal, lateral, vertical [m] added to the CG position
+        (earth X, Y, Z); theta, psi [rad] added to the line angles of a hinged canopy.
+    chute_kind : str
+        The system's parachute kind (``"hinged"``: the line angles apply).
+
+    Returns
+    -------
+    numpy.ndarray, shape (20,)
+    """
+    x = np.array(state, dtype=float)
     d = disturbance
     if any(k in d for k in ("yaw", "pitch", "roll")):
         yaw, pitch, roll = euler_angles(x[9:13])
         x[9:13] = quaternion_from_euler(yaw + d.get("yaw", 0.0), pitch + d.get("pitch", 0.0),
                                         roll + d.get("roll", 0.0))
     if "yaw_rate" in d:
-        x[13:16] = rotation_matrix(x[9:13]).T @ np.array([0.0, 0.0, -d["yaw_rate"]])
+        x[13:16] += rotation_matrix(x[9:13]).T @ np.array([0.0, 0.0, -d["yaw_rate"]])
     x[3] += d.get("longitudinal", 0.0)
     x[4] += d.get("lateral", 0.0)
     x[5] += d.get("vertical", 0.0)
-    if trim_point.system.chute_kind == "hinged":
+    if chute_kind == "hinged":
         x[16] += d.get("theta", 0.0)
         x[17] += d.get("psi", 0.0)
     return x
@@ -537,8 +554,9 @@ def _integrate_group(prepared, members, results, drives, time, settings):
     seen = {}
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        x0[j] = (_disturbed(tr, manoeuvre.disturbance) if manoeuvre.start_state is None
-                 else manoeuvre.start_state)
+        x0[j] = disturbed(tr.state if manoeuvre.start_state is None
+                          else manoeuvre.start_state, manoeuvre.disturbance,
+                          system.chute_kind)
         pull = tr.info[_INFO["d_X"]:_INFO["d_Z"] + 1]
         pull = tr.quantity("tension") * pull / np.linalg.norm(pull)
         params[j] = system.parameters(pull=pull, locks=system.locks)
