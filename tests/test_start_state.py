@@ -107,3 +107,26 @@ def test_disturbances_add_to_the_state():
     np.testing.assert_allclose(out[13:16], x[13:16] + extra, rtol=0, atol=1e-15)
     assert out[4] == x[4] + 0.3
     assert np.array_equal(out[9:13], x[9:13])
+
+
+def test_right_handed_conversion_is_the_same_rotation():
+    """docs/conventions.md section 8: R = Rz(-yaw) Ry(pitch) Rx(-roll) equals the textbook
+    right-handed product Rz(rz) Ry(ry) Rx(rx) of the converted angles; the inverse returns
+    the angles."""
+    from slingloads.models.attitude import from_right_handed, to_right_handed
+    from slingloads.models.multibody.rigid_body import quaternion_from_euler
+
+    def rx(a):
+        return np.array([[1, 0, 0], [0, np.cos(a), -np.sin(a)], [0, np.sin(a), np.cos(a)]])
+
+    def ry(a):
+        return np.array([[np.cos(a), 0, np.sin(a)], [0, 1, 0], [-np.sin(a), 0, np.cos(a)]])
+
+    def rz(a):
+        return np.array([[np.cos(a), -np.sin(a), 0], [np.sin(a), np.cos(a), 0], [0, 0, 1]])
+
+    angles = (0.4, -0.25, 0.15)
+    a, b, c = to_right_handed(*angles)
+    np.testing.assert_allclose(rz(c) @ ry(b) @ rx(a),
+                               rotation_matrix(quaternion_from_euler(*angles)), atol=1e-15)
+    np.testing.assert_allclose(from_right_handed(a, b, c), angles, atol=0)
