@@ -130,3 +130,15 @@ def test_right_handed_conversion_is_the_same_rotation():
     np.testing.assert_allclose(rz(c) @ ry(b) @ rx(a),
                                rotation_matrix(quaternion_from_euler(*angles)), atol=1e-15)
     np.testing.assert_allclose(from_right_handed(a, b, c), angles, atol=0)
+
+
+def test_warm_up_compiles_the_loads_kernel():
+    """slingloads compile (slingloads.warmup) reaches the kernels a run calls: after the
+    loads warm-up numba records a compiled signature of the free-free kernel (numba's own
+    record is the reference)."""
+    from slingloads.analyses import sfbm_kernel
+    from slingloads.warmup import STEPS, _timed
+
+    assert set(STEPS) == {"loads", "lateral", "chute sizing", "multibody"}
+    seconds = _timed(["loads"])["loads"]
+    assert seconds >= 0 and sfbm_kernel.free_free_rows.signatures
