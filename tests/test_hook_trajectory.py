@@ -6,6 +6,8 @@ the same law); the frozen carrier's integrated velocity, which must equal the co
 velocity's closed form; the lateral pendulum under the same motion given two ways.
 """
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -141,3 +143,40 @@ def test_manoeuvre_checks_the_trajectory_protocol():
         Manoeuvre("x", trajectory=_NoShape())
     with pytest.raises(InputError, match="needs a method command"):
         Manoeuvre("x", trajectory=object())
+
+
+def test_workbook_manoeuvre_reads_a_trajectory_file(tmp_path):
+    """MultibodyManoeuvres kind 'hook trajectory' with a CSV 'file' (relative to the
+    workbook): the run flies that trajectory (its velocity at 4 s is the closed form
+    (0, 1.5, -3) m/s of the pull above); a file whose breakpoints pass the end of the run is
+    refused at its cell."""
+    import openpyxl
+
+    from slingloads.io.multibody.reader import load_workbook_system
+
+    example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+    book = openpyxl.load_workbook(example)
+    ws = book["FuselageAero"]
+    keep = [r for r in ws.iter_rows(min_row=2, values_only=True)
+            if r[0] is not None and r[0] % 20 == 0 and r[1] % 20 == 0]
+    ws.delete_rows(2, ws.max_row)
+    for r in keep:
+        ws.append(r)
+    ws = book["MultibodyManoeuvres"]
+    heads = [c.value for c in ws[1]]
+    column = heads.index(None) + 1 if None in heads else len(heads) + 1
+    ws.cell(1, column, "file")
+    ws.delete_rows(2, ws.max_row)
+    ws.cell(2, 1, "pull")
+    ws.cell(2, 2, "hook trajectory")
+    ws.cell(2, column, "pull.csv")
+    (tmp_path / "pull.csv").write_text("time_s,ax_mps2,ay_mps2,az_mps2\n0,0,0,0\n1,0,0.5,-1\n"
+                                       "3,0,0.5,-1\n4,0,0,0\n")
+    book.save(tmp_path / "traj.xlsx")
+    inputs = load_workbook_system(tmp_path / "traj.xlsx")
+    (run,) = inputs.manoeuvres
+    _, v, _ = run.trajectory.kinematics(np.array([4.0]))
+    np.testing.assert_allclose(v[0], [0.0, 1.5, -3.0], atol=1e-12)
+    (tmp_path / "pull.csv").write_text("time_s,vx_mps,vy_mps,vz_mps\n0,0,0,0\n9999,1,0,0\n")
+    with pytest.raises(InputError, match=r"before the end of the run"):
+        load_workbook_system(tmp_path / "traj.xlsx")
