@@ -34,12 +34,8 @@ EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twi
 
 ANALYSES_ONLY = (
     "import sys\n"
-    "from slingloads.io.analyses import ANALYSES\n"
     "from slingloads.io.study import read_study\n"
-    "study = read_study(sys.argv[1])\n"
-    "for analysis in ANALYSES:\n"
-    "    if study.run.get(analysis.name):\n"
-    "        analysis.compute(study)\n"
+    "read_study(sys.argv[1]).run()\n"
 )
 
 

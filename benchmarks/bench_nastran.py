@@ -89,7 +89,7 @@ def main():
     parser.add_argument("--full", action="store_true",
                         help="also time pyNastran objects on the 10,000 cases")
     args = parser.parse_args()
-    study = read_study(EXAMPLE, only=["loads"]).loads
+    study = read_study(EXAMPLE, only=["loads"]).inputs.loads
     with tempfile.TemporaryDirectory() as folder:
         example, t_run = timed(study.run)
         print(f"example: {len(example.cases)} cases, loads run {t_run:.2f} s")

@@ -6,7 +6,9 @@ force and bending moment), the lateral-step pendulum and the drogue-parachute si
 The names below are importable from the package root (loaded on first use)::
 
     import slingloads as sl
-    study = sl.read_study("loadcases/example-light-twin.xlsx")
+    results = sl.run("loadcases/example-light-twin.xlsx")    # read, run every analysis asked
+    results.loads.envelope()                                   # typed results, DataFrames
+    sl.write_reports(results, "reports")                       # every report, all at once
 """
 
 from importlib import import_module
@@ -15,7 +17,11 @@ __version__ = "0.1.0"
 
 _EXPORTS = {
     "read_study": "slingloads.io.study",
-    "WorkbookStudy": "slingloads.io.study",
+    "run": "slingloads.io.study:run_workbook",
+    "write_reports": "slingloads.io.reports",
+    "Study": "slingloads.runs.study",
+    "Results": "slingloads.runs.study",
+    "WorkbookSource": "slingloads.io.study",
     "write_input_workbook": "slingloads.io.template",
     "write_loads_outputs": "slingloads.io.loads.report",
     "hook_angle_comparison": "slingloads.analyses.hook_angle",
@@ -42,5 +48,6 @@ __all__ = ["__version__", *_EXPORTS]
 
 def __getattr__(name):
     if name in _EXPORTS:
-        return getattr(import_module(_EXPORTS[name]), name)
+        module, _, attribute = _EXPORTS[name].partition(":")
+        return getattr(import_module(module), attribute or name)
     raise AttributeError(f"module 'slingloads' has no attribute {name!r}")

@@ -23,7 +23,6 @@ from pathlib import Path
 from slingloads import __version__
 from slingloads.errors import ClosureError, InputError, OutputError
 from slingloads.io.analyses import ANALYSES as REGISTRY
-from slingloads.io.analyses import compute_order
 
 EXIT_BAD_INPUT = 2
 EXIT_ENVIRONMENT = 1
@@ -33,14 +32,11 @@ EXIT_INCOMPLETE = 3
 #: Exit code after Ctrl-C (128 + SIGINT, the shells' convention).
 EXIT_INTERRUPTED = 130
 
-#: Analyses the ``run`` command may perform, in order (from the registry
-#: :mod:`slingloads.io.analyses`): name -> (subcommand, compute(study) -> result,
-#: write(result, out_dir, stem, units, study, figures=None)), out_dir being the shared
-#: AtomicOutputs of the run and figures the drawings started after the analysis was computed.
-#: Every analysis is computed (and every input checked) before anything is written, and the
-#: files of all the analyses are published together at the end (or none of them). The
+#: Analyses the ``run`` command may perform (the registry :mod:`slingloads.io.analyses`),
+#: by name. They are run by :mod:`slingloads.runs` (in its order, with its hand-offs), every
+#: one computed (and every input checked) before anything is written, and the files of all
+#: of them published together at the end, or none (:mod:`slingloads.io.reports`). The
 #: analyses' modules are imported on first use (keeps ``slingloads --help`` fast).
-ANALYSES = {a.name: (a.subcommand, a.compute, a.write) for a in REGISTRY}
 _BY_NAME = {a.name: a for a in REGISTRY}
 
 
@@ -112,7 +108,7 @@ def _campaign_options(p):
 def _compile():
     from time import perf_counter
 
-    from slingloads.warmup import compile_kernels
+    from slingloads.runs.warmup import compile_kernels
 
     start = perf_counter()
     times = compile_kernels()
@@ -229,31 +225,21 @@ def _template(args):
     return 0
 
 
+def _only(args):
+    """The analyses a single-analysis command runs (None for ``run``: the workbook's)."""
+    if args.command == "run":
+        return None
+    return [a.name for a in REGISTRY if a.subcommand == args.command]
+
+
 def _selected(args, study):
     if args.command == "run":
-        wanted = [n for n in ANALYSES if study.run.get(n)]
-        if not wanted:
+        if not study.asked:
             runs = ", ".join(a.run_parameter for a in REGISTRY)
             raise InputError(f"the workbook asks for no analysis (Study sheet: {runs} are "
                              "all no)", file=study.path, sheet="Study")
-        return wanted
-    return [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
-
-
-def _outputs(args, study, names):
-    """The run's output set, checked before anything is computed: the output folder can be
-    written, no input would be replaced, no name is too long."""
-    from slingloads.io.common.atomic import AtomicOutputs
-
-    stem = Path(args.workbook).stem
-    chosen = [a for a in REGISTRY if a.name in names]
-    # `run` publishes the whole report of the input: it replaces the earlier files of every
-    # analysis; a single-analysis command replaces those of its analysis only
-    replaced = REGISTRY if args.command == "run" else chosen
-    patterns = [p for a in replaced for p in a.output_patterns(stem)]
-    outputs = AtomicOutputs(args.out, inputs=study.input_files, replaces=patterns)
-    outputs.check([n for a in chosen for n in a.output_names(stem)])
-    return outputs, stem
+        return list(study.asked)
+    return _only(args)
 
 
 def _ask_nastran(study, names):
@@ -262,7 +248,7 @@ def _ask_nastran(study, names):
         raise InputError("--nastran writes the load cases as Nastran bulk data, but the "
                          "workbook does not run the loads analysis (Study sheet: 'run loads')",
                          file=study.path, sheet="Study")
-    study.options["nastran"] = True
+    study.report.nastran = True
 
 
 def _analyse(args):
@@ -281,60 +267,60 @@ def _analyse(args):
 
 
 def _run_analyses(args):
-    from slingloads.io.consistency import consistency_checks
+    from slingloads.io.reports import prepare_outputs, publish_reports
     from slingloads.io.study import read_study
+    from slingloads.runs.study import run_analysis, run_study
 
     show = not args.quiet
     with _progress(show) as bar:
-        only = None
-        if args.command != "run":
-            only = [n for n, (cmd, _, _) in ANALYSES.items() if cmd == args.command]
-        first = _FirstComputed(args, only)
-        study = read_study(args.workbook, only=only, on_read=first)
+        first = _FirstComputed(args, _only(args))
+        study = read_study(args.workbook, only=_only(args), on_read=first)
         gc.freeze()  # the libraries and the study live to the end of the run: see _analyse
         names = _selected(args, study)
         if getattr(args, "nastran", False):
             _ask_nastran(study, names)
         if "campaign" in names:
-            study.runtime.update(_runtime(args, show))
-        outputs, stem = _outputs(args, study, names)
+            study.options = _run_options(args, show)
+        # `run` publishes the whole report of the input: it replaces the earlier files of
+        # every analysis; a single-analysis command replaces those of its analysis only
+        stem = Path(args.workbook).stem
+        outputs = prepare_outputs(study, args.out, names, stem,
+                                  replace_all=args.command == "run")
         bar.total = 2 + 2 * len(names)
         bar.update(1)
-        results, figures = {}, {}
+        figures = {}
         with ExitStack() as drawing:
-            for name in compute_order(names):
+            def computing(name):
                 bar.set_description(f"computing {name}")
+
+            def run(study, name):
                 if name == first.name:  # computed while the workbook was read
-                    results[name], figures[name] = first.outcome()
-                else:
-                    results[name] = ANALYSES[name][1](study)
-                study.results.setdefault(name, results[name])
+                    result, figures[name] = first.outcome()
+                    return result
+                return run_analysis(study, name)
+
+            def computed(name, result):
                 # its figures are drawn (by the helper process) while the next ones compute
                 if name != first.name:
-                    figures[name] = _BY_NAME[name].start_figures(results[name], args.units,
-                                                                 study)
+                    figures[name] = _BY_NAME[name].start_figures(result, args.units, study)
                 if figures[name] is not None:
                     drawing.enter_context(figures[name])
                 bar.update(1)
-            checks = consistency_checks(results)
+
+            results = run_study(study, names, before=computing, after=computed, run=run)
             gc.freeze()
             # one set of outputs for every analysis: all published together, or none
-            with outputs:
-                for name in names:
-                    bar.set_description(f"writing {name}")
-                    extra = {"checks": checks[name]} if name in checks else {}
-                    if figures[name] is not None:
-                        extra["figures"] = figures[name]
-                    ANALYSES[name][2](results[name], outputs, stem, args.units, study, **extra)
-                    bar.update(1)
-        written = outputs.written
+            written = publish_reports(
+                results, outputs, stem, args.units, names, figures,
+                before=lambda name: bar.set_description(f"writing {name}"),
+                after=lambda name: bar.update(1))
         bar.update(1)
         bar.set_description("done")
     for path in written:
         print(f"wrote {path}")
-    for text in study.warnings:
+    for text in study.source.warnings:
         print(f"slingloads: warning: {text}", file=sys.stderr)
-    shortfalls = [text for name in names for text in _BY_NAME[name].shortfalls(results[name])]
+    shortfalls = results.shortfalls()
     for text in shortfalls:
         print(f"slingloads: incomplete: {text}", file=sys.stderr)
     if shortfalls:
@@ -388,13 +374,14 @@ class _FirstComputed:
     def __call__(self, name, study):
         if self.name is not None:
             return
-        wanted = self.only if self.only is not None else [n for n in ANALYSES
-                                                          if study.run.get(n)]
+        from slingloads.runs.study import compute_order, run_analysis
+
+        wanted = self.only if self.only is not None else list(study.asked)
         if not wanted or "campaign" in wanted or compute_order(wanted)[0] != name:
             return
         self.name = name
         try:
-            result = ANALYSES[name][1](study)
+            result = run_analysis(study, name)
             figures = _BY_NAME[name].start_figures(result, self.args.units, study)
         except Exception as err:  # noqa: BLE001 - raised at its turn by outcome()
             self._outcome = err
@@ -408,11 +395,12 @@ class _FirstComputed:
         return self._outcome
 
 
-def _runtime(args, show):
+def _run_options(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
-    from slingloads.io.campaign.cache import check_outside, check_writable, default_cache_dir
     from slingloads.io.campaign.reader import address_rule
     from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
+    from slingloads.runs.cache import check_outside, check_writable, default_cache_dir
+    from slingloads.runs.study import RunOptions
 
     if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
         raise InputError(f"--workers must be in [1, {MAX_WORKERS}] (limits of slingloads)",
@@ -429,11 +417,8 @@ def _runtime(args, show):
     cache = Path(args.cache) if args.cache else default_cache_dir()
     check_outside(cache, args.out)
     check_writable(cache)
-    runtime = {"scheduler": args.scheduler, "workers": args.workers, "cache": cache,
-               "timeout": args.scheduler_timeout}
-    if show:
-        runtime["progress"] = _RunsBar()
-    return runtime
+    return RunOptions(scheduler=args.scheduler, workers=args.workers, cache=cache,
+                      timeout=args.scheduler_timeout, progress=_RunsBar() if show else None)
 
 
 class _RunsBar:

@@ -30,8 +30,9 @@ class InputError(SlingloadsError, ValueError):
     unit : str, optional
         Unit in which ``value`` is given (the user's unit for a value read from a workbook).
     field : str, optional
-        Name of the model argument that holds the value (``"mass"``, ``"angle"``), so that a
-        reader can locate an error a model raised at the cell the value came from.
+        Name of the model argument that holds the value (``"mass"``, ``"angle"``), so that the
+        io layer can locate an error a model raised at the cell the value came from
+        (:func:`slingloads.io.common.locate.located`).
     index : int, optional
         Index of the record (row) of ``field`` that holds the value.
     """
@@ -47,24 +48,6 @@ class InputError(SlingloadsError, ValueError):
         self.field = field
         self.index = index
         super().__init__(self._message())
-
-    def located(self, *, file=None, sheet=None, cell=None, value=None, unit=None):
-        """Return a copy of this error with its location filled in where still unknown.
-
-        ``value`` and ``unit`` (the value as the user wrote it) replace the error's own only
-        when the cell is filled in here, that is when the value is known to come from it.
-        """
-        replace = cell is not None and self.cell is None and value is not None
-        return type(self)(
-            self.rule,
-            value if replace else self.value,
-            file=self.file or file,
-            sheet=self.sheet or sheet,
-            cell=self.cell or cell,
-            unit=unit if replace else self.unit,
-            field=self.field,
-            index=self.index,
-        )
 
     @property
     def location(self):

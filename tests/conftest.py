@@ -1,5 +1,5 @@
 """Shared test set-up: the campaign's run cache goes to a temporary folder, never to the user's
-cache folder (``$SLINGLOADS_CACHE`` is read by ``slingloads.io.campaign.cache``)."""
+cache folder (``$SLINGLOADS_CACHE`` is read by ``slingloads.runs.cache``)."""
 
 import pytest
 

@@ -31,7 +31,7 @@ def _script():
 
 @pytest.fixture(scope="module")
 def base():
-    return sl.read_study(EXAMPLE, only=["loads"]).loads
+    return sl.read_study(EXAMPLE, only=["loads"]).inputs.loads
 
 
 def test_script_is_ten_lines():

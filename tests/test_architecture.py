@@ -1,8 +1,11 @@
 """Layering: the physical models and the analyses never import the input/output layer, the
 unit library nor the file and plotting libraries (the reference is the architecture stated in
-README.md: slingloads/models and slingloads/analyses are SI-only physics with no file access);
-inside the io layer the shared machinery (io/common) and the airframe sheets (io/airframe)
-know no particular analysis, and no io modules import each other in a circle."""
+README.md, "Layout": ``models`` < ``analyses`` < ``runs`` < ``io`` < ``cli``, each importing
+only those before it); inside the io layer the shared machinery (io/common) and the airframe
+sheets (io/airframe) know no particular analysis; and no modules of the package import each
+other in a circle. Every import is seen: at top level, inside functions and under
+``TYPE_CHECKING``, by parsing each module; the only import by name is the package root's
+lazy export table, which is read as imports too."""
 
 from __future__ import annotations
 
@@ -11,16 +14,21 @@ from pathlib import Path
 
 import pytest
 
-from slingloads.io.analyses import ANALYSES
-
 PACKAGE = Path(__file__).resolve().parents[1] / "slingloads"
-FORBIDDEN = ("slingloads.io", "slingloads.cli", "openpyxl", "matplotlib", "pint")
+FORBIDDEN = ("slingloads.io", "slingloads.cli", "slingloads.runs", "openpyxl", "matplotlib",
+             "pint")
 PHYSICS = sorted((PACKAGE / "models").rglob("*.py")) + sorted((PACKAGE / "analyses").rglob("*.py"))
 SHARED_IO = sorted((PACKAGE / "io" / "common").rglob("*.py")) + sorted(
     (PACKAGE / "io" / "airframe").rglob("*.py"))
+#: Each analysis's io folder.
+ANALYSIS_IO = tuple(f"slingloads.io.{p.name}" for p in sorted((PACKAGE / "io").iterdir())
+                    if p.is_dir() and p.name not in ("common", "airframe", "__pycache__"))
 #: What the shared io must not import: each analysis's folder, the registry and what follows it.
-ABOVE_SHARED_IO = (*(f"slingloads.io.{a.folder}" for a in ANALYSES), "slingloads.io.analyses",
-                   "slingloads.io.study", "slingloads.io.template")
+ABOVE_SHARED_IO = (*ANALYSIS_IO, "slingloads.io.analyses", "slingloads.io.study",
+                   "slingloads.io.template", "slingloads.io.reports")
+#: The layers, lowest first: a module imports only from its own layer and those before it.
+#: ``base``: the package's shared modules (errors, constants, limits, checks), below all.
+LAYERS = ("base", "models", "analyses", "runs", "io", "cli")
 
 
 #: The only imports of io from the physics: a result's ``to_<format>`` method hands the result
@@ -39,13 +47,24 @@ def imported_modules(path, skip=()):
     for node in ast.walk(tree):
         if id(node) in skipped:
             continue
-        if isinstance(node, ast.Import):
+        if isinstance(node, ast.Assign) and _is_export_table(node):
+            yield from (v.value.partition(":")[0] for v in node.value.values)
+        elif (isinstance(node, ast.Call) and getattr(node.func, "id", None) == "plot_function"
+              and node.args and isinstance(node.args[0], ast.Constant)):
+            yield node.args[0].value  # a plot drawn by a helper process, imported there
+        elif isinstance(node, ast.Import):
             yield from (alias.name for alias in node.names)
         elif isinstance(node, ast.ImportFrom) and node.module:
             yield node.module
             for alias in node.names:
                 if _module_path(f"{node.module}.{alias.name}") is not None:
                     yield f"{node.module}.{alias.name}"
+
+
+def _is_export_table(node):
+    """The package root's ``_EXPORTS = {name: "module[:attribute]"}``: imports by name."""
+    return (any(isinstance(t, ast.Name) and t.id == "_EXPORTS" for t in node.targets)
+            and isinstance(node.value, ast.Dict))
 
 
 def _module_name(path):
@@ -96,13 +115,31 @@ def test_shared_io_knows_no_analysis(path):
     assert not bad, f"{path.relative_to(PACKAGE)} imports {bad}"
 
 
-def _io_graph():
+MODULES = sorted(PACKAGE.rglob("*.py"))
+
+
+def _graph():
+    """Module -> the modules of the package it imports (every import, see the module
+    notes)."""
     graph = {}
-    for path in sorted((PACKAGE / "io").rglob("*.py")):
+    for path in MODULES:
         targets = {_module_name(_module_path(m)) for m in imported_modules(path)
-                   if m.startswith("slingloads.io") and _module_path(m) is not None}
-        graph[_module_name(path)] = targets - {_module_name(path)}
+                   if _module_path(m) is not None}
+        graph[_module_name(path)] = targets - {_module_name(path), ROOT}
     return graph
+
+
+#: The package root: every module may import it for ``__version__`` (its other names are
+#: exports loaded on first use, so importing it loads no layer).
+ROOT = "slingloads"
+
+
+def _layer(name):
+    """The layer of module ``name`` (:data:`LAYERS`); None for the package root."""
+    parts = name.split(".")
+    if len(parts) == 1:
+        return None
+    return parts[1] if parts[1] in LAYERS else "base"
 
 
 def _cycle(graph):
@@ -131,13 +168,65 @@ def _cycle(graph):
     return None
 
 
-def test_io_has_no_import_cycle():
-    """The modules of slingloads.io import each other without a circle (function-level
-    imports included)."""
-    graph = _io_graph()
-    assert "slingloads.io.study" in graph and graph["slingloads.io.lateral.reader"]
+def test_no_import_cycle():
+    """The modules of the package import each other without a circle (function-level and
+    TYPE_CHECKING imports included), so none depends on the order in which they load."""
+    graph = _graph()
+    assert graph["slingloads.io.study"] and graph["slingloads.io.lateral.reader"]
+    assert "slingloads.io.loads.report" in graph["slingloads.io.analyses"]
     cycle = _cycle(graph)
     assert cycle is None, " -> ".join(cycle)
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_layers(path):
+    """Each module imports only from its own layer and the layers below it
+    (``models`` < ``analyses`` < ``runs`` < ``io`` < ``cli``; the shared modules below all;
+    the package root, whose exports are loaded on first use, above all), except the listed
+    ``to_<format>`` delegations of the physics."""
+    name = _module_name(path)
+    layer = _layer(name)
+    if layer is None:
+        return
+    file = str(path.relative_to(PACKAGE))
+    skip = [f for (f_file, f) in DELEGATIONS if f_file == file]
+    rank = LAYERS.index(layer)
+    targets = {_module_name(_module_path(m)) for m in imported_modules(path, skip=skip)
+               if _module_path(m) is not None} - {ROOT}
+    above = sorted(m for m in targets if LAYERS.index(_layer(m)) > rank)
+    assert not above, f"{file} ({layer}) imports {above} from a layer above it"
+
+
+def test_the_layer_check_sees_function_level_imports():
+    """The walk sees an import inside a function and under TYPE_CHECKING, and the root's
+    export table: what hides an import from a check made at import time."""
+    found = set(imported_modules(PACKAGE / "cli.py"))
+    assert "slingloads.io.study" in found  # imported inside _run_analyses
+    assert "slingloads.runs.campaign" in set(imported_modules(PACKAGE / "runs" / "study.py"))
+    assert "slingloads.io.study" in set(imported_modules(PACKAGE / "__init__.py"))
+
+
+#: The modules that import by name: the root's export table, and the helper process's
+#: loaders of the plots named in ``plot_function("module", name)`` calls (which the walk reads
+#: as imports of the caller) and of the modules it warms up.
+LOADERS = ("__init__.py", "io/common/figures.py", "io/common/helper.py")
+
+
+def test_no_import_by_name():
+    """No module imports another by a string (``import_module``, ``__import__``) except the
+    :data:`LOADERS`, whose names the walk reads: the graph above is complete."""
+    calls = []
+    for path in MODULES:
+        if str(path.relative_to(PACKAGE)) in LOADERS:
+            continue
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Call):
+                func = node.func
+                called = getattr(func, "id", None) or getattr(func, "attr", None)
+                if called in ("import_module", "__import__"):
+                    calls.append(f"{path.relative_to(PACKAGE)}:{node.lineno}")
+    assert not calls, calls
 
 
 def test_the_cycle_check_finds_a_circle():

@@ -19,8 +19,8 @@ import pytest
 
 from slingloads.analyses.campaign import HISTORY_LABELS, MemoryStore, run_campaign
 from slingloads.cli import main
-from slingloads.io.campaign.cache import RunCache
 from slingloads.io.study import read_study
+from slingloads.runs.cache import RunCache
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
@@ -119,9 +119,10 @@ def test_report_files_and_readback(tiny):
     for name in ("Summary", "Matrix", "Metrics", "Selection", "NeutralArea", "Sensitivity",
                  "StabilityMap", "NoParachute", "LoadsHandoff", "Plots"):
         assert name in sheets
-    for tag in ("selection", "sensitivity-parachute-area", "stability-map", "no-parachute"):
+    for tag in ("selection", "sensitivity-parachute-area", "stability-map", "root-locus",
+                "no-parachute"):
         assert (out / f"tiny-campaign-{tag}.png").stat().st_size > 1000
-    api = run_campaign(read_study(path).inputs["campaign"].campaign, store=MemoryStore())
+    api = run_campaign(read_study(path).inputs.campaign.campaign, store=MemoryStore())
     report = _blocks(out / "tiny-campaign.xlsx", "Metrics")
     for column in ("yaw change [deg]", "beta peak [deg]", "yaw mode damping ratio [-]",
                    "swing angle trim [deg]", "tension / weight max [-]"):
@@ -158,7 +159,7 @@ def test_edited_workbook_reruns_only_what_changed(tiny, tmp_path):
     for edits, counts in (({"campaign area factors": "1.2, 1.4"}, (2, 1)),
                           ({"campaign cable EA": 6e6}, (0, 3))):
         path = workbook(tmp_path / "edited.xlsx", edits)
-        result = run_campaign(read_study(path).inputs["campaign"].campaign,
+        result = run_campaign(read_study(path).inputs.campaign.campaign,
                               store=RunCache(cache))
         assert (result.execution.cached, result.execution.computed) == counts
 
@@ -167,7 +168,7 @@ def test_disk_cache_resumes_after_an_interruption(tmp_path):
     """Interrupted after its first batch of one run, the on-disk cache holds that run (one
     Parquet file, no partial file); resumed, 1 run is found and 2 computed, and the results
     equal an uninterrupted run's."""
-    campaign = read_study(workbook(tmp_path / "tiny.xlsx")).inputs["campaign"].campaign
+    campaign = read_study(workbook(tmp_path / "tiny.xlsx")).inputs.campaign.campaign
     cache = RunCache(tmp_path / "cache")
 
     def interrupt(done, total):
@@ -194,7 +195,7 @@ def test_a_damaged_cache_file_is_run_again(tiny, tmp_path):
     victim.write_bytes(b"not a parquet file")
     store = RunCache(copy)
     assert store.get(victim.stem) is None
-    campaign = read_study(tiny[0]).inputs["campaign"].campaign
+    campaign = read_study(tiny[0]).inputs.campaign.campaign
     result = run_campaign(campaign, store=store)
     assert (result.execution.cached, result.execution.computed) == (2, 1)
     assert store.get(victim.stem) is not None
@@ -228,7 +229,7 @@ def _bad(tmp_path, capsys, edits, fragments, args=(), extra=None, cell_of=None):
     ("campaign airspeeds EAS", "60, fast", "every value must be a number"),
     ("campaign manoeuvres", "free response, loop", "unknown manoeuvre; valid values are"),
     ("campaign carriers", "tethered", "unknown carrier; valid values are ['frozen', 'free']"),
-    ("campaign cable lengths", "18", "could reach the carrier"),
+    ("campaign cable lengths", "40", "could reach the carrier"),
     ("campaign no-parachute helicopters", "HC9", "unknown helicopter"),
     ("campaign minimum yaw damping", 1.5, "must be < 1 (allowed: in [0, 1))"),
     ("campaign loads margin", 0.8, "must be >= 1"),

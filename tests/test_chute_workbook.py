@@ -20,13 +20,14 @@ import pytest
 from slingloads.analyses.chute_sizing import neutral_area
 from slingloads.cli import main
 from slingloads.constants import FOOT, KNOT
-from slingloads.io.chute.report import PLOTS, compute
+from slingloads.io.chute.report import PLOTS
 from slingloads.io.study import read_study
 from slingloads.models.aerodynamics import Fin, FuselageAero
 from slingloads.models.flight import FlightCondition
 from slingloads.models.parachute import Parachute
 from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sample_reference
 from slingloads.models.yaw_dynamics import YawModel
+from slingloads.runs.chute_sizing import run as compute
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem
@@ -51,7 +52,7 @@ def run_dir(tmp_path_factory):
 
 def test_neutral_area_workbook_equals_api(study, result):
     """Same data, two paths: the workbook reader and the API (HC1 tables, hand inertia)."""
-    frame, points = study.airframe, study.points
+    frame, points = study.airframe, study.source.points
     ref = sample_reference("HC1")
     hc1 = sample_fuselage("HC1")
     fuselage = FuselageAero(hc1.table, ref.fuselage_area, ref.fuselage_length,

@@ -14,18 +14,16 @@ import pytest
 
 from slingloads.analyses.loads import AeroEnvelope
 from slingloads.cli import main
-from slingloads.io.chute.report import compute as compute_chute
 from slingloads.io.consistency import consistency_checks
-from slingloads.io.loads.report import compute as compute_loads
 from slingloads.io.study import read_study
+from slingloads.runs.study import Results
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
 
 @pytest.fixture(scope="module")
 def results():
-    study = read_study(EXAMPLE, only=["loads", "chute sizing"])
-    return {"loads": compute_loads(study), "chute sizing": compute_chute(study)}
+    return read_study(EXAMPLE, only=["loads", "chute sizing"]).run()
 
 
 def test_peak_sideslip_outside_the_envelope_is_a_warning(results):
@@ -33,7 +31,7 @@ def test_peak_sideslip_outside_the_envelope_is_a_warning(results):
     sideslip to about 17.7 deg, outside the loads' AeroEnvelope beta of +-15 deg: WARNING,
     the value being the largest peak |beta| of the gust runs at that area."""
     row = consistency_checks(results)["loads"].iloc[0]
-    runs = results["chute sizing"].study_area_runs.to_frame()
+    runs = results.chute_sizing.study_area_runs.to_frame()
     assert row["value"] == pytest.approx(runs["peak beta [deg]"].max(), rel=1e-12)
     assert row["value"] > 15.0 and row["limit"] == pytest.approx(15.0)
     assert row["status"] == "WARNING" and "finite gust" in row["note"]
@@ -42,13 +40,13 @@ def test_peak_sideslip_outside_the_envelope_is_a_warning(results):
 def test_peak_sideslip_inside_a_wider_envelope_passes(results):
     """The same sizing against an envelope of +-20 deg of sideslip: the check passes; and with
     only one of the two analyses there is no check at all."""
-    loads = results["loads"]
+    loads = results.loads
     wide = AeroEnvelope.corners_and_centre(np.radians([-10.0, 10.0]), np.radians([-20.0, 20.0]))
     wider = replace(loads, study=replace(loads.study, envelope=wide))
-    row = consistency_checks({"loads": wider,
-                              "chute sizing": results["chute sizing"]})["loads"].iloc[0]
+    row = consistency_checks(Results(loads=wider,
+                                     chute_sizing=results.chute_sizing))["loads"].iloc[0]
     assert row["status"] == "ok" and row["limit"] == pytest.approx(20.0)
-    assert consistency_checks({"loads": loads}) == {}
+    assert consistency_checks(Results(loads=loads)) == {}
 
 
 def test_run_report_carries_the_warning(tmp_path):

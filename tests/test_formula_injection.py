@@ -140,7 +140,7 @@ def test_libreoffice_evaluates_nothing(hostile_reports, tmp_path):
 def test_header_footer_text_has_no_control_codes():
     """In a printed header or footer '&' starts a control code (&P, &[Path]): text from an
     input has it doubled, so 'R&D' prints as written."""
-    from slingloads.io.common.excel import header_footer_text
+    from slingloads.io.common.excel_print import header_footer_text
 
     assert header_footer_text("R&D &P &[Path]") == "R&&D &&P &&[Path]"
     assert header_footer_text("a\x01b") == "ab"

@@ -28,7 +28,7 @@ from slingloads.analyses.lateral import ParameterRanges, lateral_study
 from slingloads.cli import main
 from slingloads.constants import FOOT, G0, POUND_FORCE
 from slingloads.io.common.ownership import MANIFEST_NAME
-from slingloads.io.lateral.report import PLOTS, compute
+from slingloads.io.lateral.report import PLOTS
 from slingloads.io.study import read_study
 from slingloads.models.carrier_motion import (
     ConstantAcceleration,
@@ -39,6 +39,7 @@ from slingloads.models.carrier_motion import (
 )
 from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
+from slingloads.runs.lateral import run as compute
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem
@@ -412,7 +413,7 @@ def test_step_laws_by_type_name_and_the_former_name(tmp_path):
     ws["B3"] = "Smooth Step"
     path = tmp_path / "laws.xlsx"
     book.save(path)
-    motions = read_study(path, only=["lateral"]).inputs["lateral"].motions
+    motions = read_study(path, only=["lateral"]).inputs.lateral.motions
     duration = float(ws["D2"].value)
     assert isinstance(motions[0], CycloidalStep)
     assert motions[0].amplitude == pytest.approx(0.1 * G0 * duration**2 / (2 * np.pi),
@@ -452,7 +453,7 @@ def test_fin_damping_from_the_workbook_by_hand(tmp_path):
     path = tmp_path / "forward.xlsx"
     book.save(path)
     study = read_study(path, only=["lateral"])
-    damping = study.inputs["lateral"].damping
+    damping = study.inputs.lateral.damping
     fin = pd.read_excel(EXAMPLE, sheet_name="FinAero")
     beta = fin.iloc[:, 0].to_numpy()
     inside = np.abs(beta) <= 10.0 + 1e-9
@@ -460,6 +461,6 @@ def test_fin_damping_from_the_workbook_by_hand(tmp_path):
     parts = {name: (c, d) for name, c, d in damping.parts}
     assert parts["fin"][0] == pytest.approx(0.5 * 1.225 * 60 * 0.514444 * 0.9 * 0.5 * -slope,
                                             rel=1e-4)
-    hub, cp = study.airframe.hardpoints.hub, study.points["fin_cp"]
+    hub, cp = study.airframe.hardpoints.hub, study.source.points["fin_cp"]
     assert parts["fin"][1] == pytest.approx(hub[2] - cp[2], rel=1e-9)
     assert damping.lateral > parts["fin"][0] > 0 and damping.roll > 0

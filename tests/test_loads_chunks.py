@@ -20,7 +20,7 @@ EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twi
 def test_chunked_run_equals_one_chunk(monkeypatch):
     """The example's cases in chunks of 7 against one chunk:
     internal loads, residuals, accelerations and the cable columns agree to round-off."""
-    study = read_study(EXAMPLE, only=["loads"]).loads
+    study = read_study(EXAMPLE, only=["loads"]).inputs.loads
     monkeypatch.setattr(loads_module, "RUN_CHUNK", 10**9)
     whole = study.run()
     monkeypatch.setattr(loads_module, "RUN_CHUNK", 7)

@@ -45,7 +45,7 @@ def set_row(book, name, value, unit=None):
 
 
 def loads_of(path):
-    return read_study(path, only=["loads"]).loads
+    return read_study(path, only=["loads"]).inputs.loads
 
 
 def expect_error(path, *fragments):

@@ -15,7 +15,8 @@ from hostile import located_error, read_book, save_xlsx, set_parameter, small_wo
 
 from slingloads.cli import main
 from slingloads.errors import InputError
-from slingloads.io.common.workbook import CellError
+from slingloads.io.common.cover import input_digest
+from slingloads.io.common.xlsx_source import CellError
 
 FILE = "located.xlsx"
 
@@ -229,8 +230,8 @@ def test_cut_station_far_outside_is_refused_and_near_outside_flagged():
     book = small_workbook()
     book["Stations"][4][1] = 8.5
     study = read(book)
-    assert any("S4 (B5)" in w and "zero" in w for w in study.warnings)
-    assert any(k.startswith("warning") for k in study.digest())
+    assert any("S4 (B5)" in w and "zero" in w for w in study.source.warnings)
+    assert any(k.startswith("warning") for k in input_digest(study))
 
 
 def test_station_ids_that_collide_in_file_names():

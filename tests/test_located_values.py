@@ -25,9 +25,9 @@ from hostile import set_parameter, small_dynamics_workbook, small_workbook, stud
 
 from slingloads.constants import INCH
 from slingloads.errors import InputError
-from slingloads.io.analyses import ANALYSES
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.io.study import read_study
+from slingloads.runs.study import run_analysis
 
 FILE = "values.xlsx"
 #: Float noise of a unit round trip (15 deg -> 14.999999999999998) or an SI conversion
@@ -68,8 +68,7 @@ def read(book):
 
 def compute(book, analysis):
     """Read ``book`` and compute ``analysis`` (an InputError propagates)."""
-    study = read(book)
-    {a.name: a for a in ANALYSES}[analysis].compute(study)
+    run_analysis(read(book), analysis)
 
 
 def check_message(err):
@@ -206,31 +205,32 @@ def test_hub_below_the_cg_is_named_at_the_hub_z():
 
 def test_multibody_cable_too_short_in_feet():
     """A multibody cable the parachute could reach: the cable as written with its unit, the
-    reach in feet (before: 'value 10' without [ft])."""
+    reach in feet (before: 'value 40' without [ft]). 40 ft lies within the line's reach,
+    from the fin's 21 ft aft of the hub to 48.77 ft (line plus hub-to-attachment distance)."""
     book = us_dynamics_book()
-    set_parameter(book, "multibody cable length", 10, "ft")
+    set_parameter(book, "multibody cable length", 40, "ft")
     error(book, "Study", study_cell(book, "multibody cable length"),
-          "the parachute could reach the carrier", "reach 48.77 ft", "carrier cable (10 ft)",
-          "value 10 [ft]")
+          "the parachute could reach the carrier", "to 48.77 ft", "carrier cable (40 ft)",
+          "value 40 [ft]")
 
 
 def test_campaign_run_cable_too_short_in_feet():
-    """A CampaignRuns cable the parachute could reach: at its cell, 18 ft as written (before:
-    'value 5.486400000000001')."""
+    """A CampaignRuns cable the parachute could reach: at its cell, 40 ft as written (before:
+    'value 12.192')."""
     book = us_dynamics_book()
     set_parameter(book, "campaign matrix", "listed rows")
-    book["CampaignRuns"][2][4] = 18.0
+    book["CampaignRuns"][2][4] = 40.0
     error(book, "CampaignRuns", "E3", "the parachute could reach the carrier",
-          "carrier cable (18 ft)", "value 18.0 [ft]", absent=("5.486",))
+          "carrier cable (40 ft)", "value 40.0 [ft]", absent=("12.19",))
 
 
 def test_campaign_list_cable_too_short_in_feet():
     """The same for a value of the 'campaign cable lengths' list: the list as written, the
     offending length in feet."""
     book = us_dynamics_book()
-    set_parameter(book, "campaign cable lengths", "60, 18", "ft")
-    error(book, "Study", study_cell(book, "campaign cable lengths"), "carrier cable (18 ft)",
-          "value '60, 18' [ft]")
+    set_parameter(book, "campaign cable lengths", "60, 40", "ft")
+    error(book, "Study", study_cell(book, "campaign cable lengths"), "carrier cable (40 ft)",
+          "value '60, 40' [ft]")
 
 
 @pytest.mark.parametrize("row, column, value, cell, fragment", [
@@ -333,8 +333,8 @@ GENERIC = [
      ("value 10.0 [in]", " in above the hub along the mast")),
     ("chute forward of hub", _chute_forward_of_hub, "Hardpoints", "C5",
      ("value 100.0 [in]", "hub is at x = 122.05 in (C2)")),
-    ("multibody cable", _parameter("multibody cable length", 3, "m"), "Study", None,
-     ("[m]", "reach 14.87 m")),
+    ("multibody cable", _parameter("multibody cable length", 12, "m"), "Study", None,
+     ("[m]", "to 14.87 m")),
 ]
 
 
@@ -370,7 +370,7 @@ def test_a_model_error_located_at_a_parameter_echoes_it_as_written():
     study = read(book)
     from slingloads.limits import check_count
 
-    with pytest.raises(InputError) as info, study.located({"step": "lateral RK4 step"}):
+    with pytest.raises(InputError) as info, study.located("lateral"):
         check_count(10**9, 10, "RK4 steps per run", field="step")
     err = info.value
     assert err.cell == study_cell(book, "lateral RK4 step"), str(err)
@@ -381,24 +381,32 @@ IO = Path(__file__).resolve().parents[1] / "slingloads" / "io"
 
 
 def _cell_locations(path):
-    """Calls of the bare function ``located`` (slingloads.io.common.workbook's) given a cell
-    (a third positional argument or ``cell=``), as ``(line, source)``."""
+    """Places given a cell but no value as written (``Place(file, sheet, cell)``: a third
+    positional argument or ``cell=``, and no fourth nor ``written=``), as ``(line, source)``.
+    """
     tree = ast.parse(path.read_text(encoding="utf-8"))
     for node in ast.walk(tree):
         if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
-                and node.func.id == "located"
-                and (len(node.args) >= 3 or any(k.arg == "cell" for k in node.keywords))):
+                and node.func.id == "Place"
+                and (len(node.args) >= 3 or any(k.arg == "cell" for k in node.keywords))
+                and len(node.args) < 4 and not any(k.arg == "written" for k in node.keywords)):
             yield node.lineno, ast.get_source_segment(path.read_text(encoding="utf-8"), node)
 
 
+#: The readers of the cells' own text (a header's or a unit cell's unit), whose errors echo
+#: that text themselves.
+CELL_TEXT_READERS = ("workbook.py", "parameters.py", "referenced.py")
+
+
 @pytest.mark.parametrize("path", sorted(p for p in IO.rglob("*.py")
-                                        if p.name != "workbook.py"),
+                                        if p.name not in CELL_TEXT_READERS),
                          ids=lambda p: str(p.relative_to(IO)))
 def test_no_reader_puts_a_model_value_at_a_cell(path):
-    """``workbook.located(file, sheet, cell)`` keeps the model's own (SI) value: at a cell the
-    message would show a number that is not the cell's. The io layer locates a model's error
-    at a cell only through :mod:`slingloads.io.common.locate` (``at_cell``, ``at_row``),
-    ``StudyParameters.at`` / ``located`` or ``Table.located``, which echo the cell's value as
-    written."""
+    """A ``Place`` with a cell but no value as written keeps the error's own value: for a
+    model's (SI) error, the message would show at the cell a number that is not the cell's.
+    The io layer locates a model's error at a cell only through
+    :func:`slingloads.io.common.locate.located` given a table, the Study parameters or a
+    ``Place`` with the cell's value as written; only the readers of a cell's own text give a
+    cell without it."""
     found = list(_cell_locations(path))
     assert not found, f"{path.name}: {found}"

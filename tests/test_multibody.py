@@ -329,6 +329,28 @@ def test_trim_without_solution_is_reported_not_a_number():
         linearise(tr)
 
 
+def test_line_reach_against_sampled_directions_and_the_paper_18_ft_cable():
+    """The reach of a line streaming aft or hanging (directions e_x >= 0) against a brute-force
+    sampling of its points over that half ball; the paper's 18 ft cable (5.49 m, hook nearer
+    the hub than the fin attachment 6.4 m aft) is accepted, with the 20 % rule a warning."""
+    from slingloads.models.multibody.parachute_line import line_reach
+
+    rng = np.random.default_rng(3)
+    e = rng.normal(size=(200_000, 3))
+    e /= np.linalg.norm(e, axis=1)[:, None]
+    e[:, 0] = np.abs(e[:, 0])
+    s = rng.uniform(0.0, 1.0, size=(e.shape[0], 1)) ** (1 / 3)
+    for chute, line in (((6.4, 0.0, 0.6), 10.1), ((6.4, 0.0, 0.6), 0.3),
+                        ((-1.0, 0.5, 0.2), 0.6), ((2.0, 1.0, -3.0), 1.5)):
+        d = np.linalg.norm(np.asarray(chute) + line * s * e, axis=1)
+        near, far = line_reach((0.0, 0.0, 0.0), chute, line)
+        assert near == pytest.approx(d.min(), abs=0.02 * line)
+        assert far == pytest.approx(d.max(), abs=0.02 * line)
+        assert d.min() >= near - 1e-9 and d.max() <= far + 1e-9
+    short = hc1_system().with_(cable=Cable(18 * 0.3048, EA))
+    assert short.warnings() and "too short" in short.warnings()[0]
+
+
 def test_parachute_that_could_reach_the_carrier_is_refused_and_short_cable_warned():
     """Paper s.4.3: the carrier cable at least 20 % longer than the parachute line (a warning);
     a line that reaches the hook is an error naming both lengths."""

@@ -30,9 +30,7 @@ from slingloads.analyses.multibody import (
 )
 from slingloads.cli import main
 from slingloads.constants import FOOT, KNOT
-from slingloads.io.multibody.reader import load_workbook_system
-from slingloads.io.multibody.report import compute
-from slingloads.io.study import read_study
+from slingloads.io.study import load_workbook_system, read_study
 from slingloads.models.multibody import (
     Cable,
     FreeCarrier,
@@ -48,6 +46,7 @@ from slingloads.models.sample_aircraft import (
     sample_htail,
     sample_reference,
 )
+from slingloads.runs.multibody import run as compute
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem
@@ -98,7 +97,7 @@ def _row(book, name):
 
 def api_system(study):
     """The example's system built with the Python API from the same data."""
-    frame, points = study.airframe, study.points
+    frame, points = study.airframe, study.source.points
     ref = sample_reference("HC1")
     hc1 = sample_fuselage("HC1")
     from slingloads.models.aerodynamics import Fin, FuselageAero
@@ -106,8 +105,8 @@ def api_system(study):
     fuselage = FuselageAero(hc1.table, ref.fuselage_area, ref.fuselage_length,
                             points["aero_reference"])
     fin = Fin(sample_fin("HC1").table, ref.fin_area, points["fin_cp"], ref.fin_efficiency)
-    chute = Parachute(study.parameters["parachute area"], extended_cd_table(),
-                      line_length=study.parameters["parachute line length"])
+    chute = Parachute(study.source.parameters["parachute area"], extended_cd_table(),
+                      line_length=study.source.parameters["parachute line length"])
     return SlingSystem(RigidBody.from_mass_items(frame.mass_items), frame.hardpoints,
                        Cable(60 * FOOT, 5e6, 0.05), fuselage, (LiftingSurface.from_fin(fin),),
                        HingedParachute(chute, 3.0), airspeed=80 * KNOT)
@@ -116,7 +115,7 @@ def api_system(study):
 def test_workbook_system_equals_api(study):
     """Same data, two paths: the parameter vector and the tables of the compiled equations
     are equal (60 ft = 18.288 m, 80 kt = 41.1556 m/s)."""
-    system = study.inputs["multibody"].system
+    system = study.inputs.multibody.system
     api = api_system(study)
     assert system.cable.length == pytest.approx(18.288, rel=1e-15)
     assert system.airspeed == pytest.approx(80 * 1852 / 3600, rel=1e-15)
@@ -128,7 +127,7 @@ def test_workbook_system_equals_api(study):
 def test_manoeuvres_from_the_sheet_equal_the_builders(study):
     """The example's four rows equal the API builders with the same numbers (30 ft/s =
     9.144 m/s; 60 kt and 40 kt; 2 deg of yaw seed on the runs from hover)."""
-    runs = {m.name: m for m in study.inputs["multibody"].manoeuvres}
+    runs = {m.name: m for m in study.inputs.multibody.manoeuvres}
     assert list(runs) == ["free response 10 deg yaw", "lateral gust +30 ft/s 10 s",
                           "accelerate to 60 KIAS", "head-wind ramp to 40 kt"]
     free = free_response({"yaw": np.radians(10.0)})
@@ -177,7 +176,7 @@ def test_report_reads_back(run_dir, study, result):
     expected = linearise(point).modes_frame()
     np.testing.assert_allclose(modes["natural frequency [rad/s]"].astype(float),
                                expected["natural frequency [rad/s]"], rtol=1e-6)
-    sim = simulate(api, study.inputs["multibody"].manoeuvres)
+    sim = simulate(api, study.inputs.multibody.manoeuvres)
     metrics = _table(workbook, "Metrics", "metric").set_index("metric")
     runs = list(sim.metrics_frame()["run"])
     assert list(metrics.loc["verdict", runs]) == list(sim.metrics_frame()["verdict"])

@@ -62,7 +62,7 @@ def factor(kind, units):
 def example():
     """The example's loads, with own inertias given to its mass items (the example has
     none) and three listed cases whose ids need shortening for a Nastran label."""
-    study = read_study(EXAMPLE, only=["loads"]).loads
+    study = read_study(EXAMPLE, only=["loads"]).inputs.loads
     items = study.airframe.mass_items
     rng = np.random.default_rng(3)
     root = rng.normal(0.0, 1.0, (len(items.mass), 3, 3))
@@ -560,7 +560,7 @@ def test_study_rows_write_the_deck_with_the_report(tmp_path):
     assert rows and rows[0][1:3] == (100_010, "LC0001")
     rotation, shift = project_axes("-x, y, -z", (120 * 0.0254, 0, 0), "US")
     hub = deck.xyz[5001 + 26]
-    study = read_study(EXAMPLE, only=["loads"]).loads
+    study = read_study(EXAMPLE, only=["loads"]).inputs.loads
     assert_allclose(hub, shift + rotation @ study.airframe.hardpoints.hub / 0.0254, rtol=1e-10)
     weight = deck.mass.sum() * G0 / 0.0254
     for s in deck.subcases[::9]:

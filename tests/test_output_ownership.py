@@ -24,7 +24,6 @@ from openpyxl import load_workbook
 
 from slingloads.cli import main
 from slingloads.errors import InputError
-from slingloads.io.analyses import ANALYSES
 from slingloads.io.common import excel, figures
 from slingloads.io.common.atomic import TEMP_PREFIX, atomic_outputs
 from slingloads.io.common.ownership import (
@@ -244,7 +243,7 @@ def test_the_python_writers_refuse_a_user_file(workbook, tmp_path):
     refuse the same way before writing anything (InputError naming the file); a Nastran
     file they wrote themselves (its first line is the mark) is replaced."""
     study = read_study(workbook)
-    result = ANALYSES[0].compute(study)
+    result = study.run(["loads"]).loads
     out = tmp_path / "api"
     out.mkdir()
     (out / "demo-sfbm.csv").write_text("my table\n")

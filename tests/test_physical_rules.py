@@ -24,13 +24,15 @@ from openpyxl import load_workbook
 
 from slingloads.cli import EXIT_INCOMPLETE, main
 from slingloads.errors import InputError
-from slingloads.io.common.excel import INFINITE_TEXT, Highlight, write_workbook
+from slingloads.io.common.excel import Highlight, write_workbook
+from slingloads.io.common.excel_cells import INFINITE_TEXT
 from slingloads.io.common.report import explain_infinite
 from slingloads.io.lateral import report as lateral_report
 from slingloads.io.multibody.report import modes_table
 from slingloads.io.study import read_study
 from slingloads.models.airframe import MassItems
 from slingloads.models.wake import TabulatedWake
+from slingloads.runs import lateral as lateral_run
 
 FILE = "physical.xlsx"
 
@@ -73,7 +75,7 @@ def test_airspeed_of_200_kt_is_accepted():
     """200 kt itself lies inside the cap."""
     book = small_workbook()
     set_parameter(book, "airspeed EAS", 200.0, "kt")
-    assert read(book).loads.flight.eas == pytest.approx(200.0 * 0.514444, rel=1e-5)
+    assert read(book).inputs.loads.flight.eas == pytest.approx(200.0 * 0.514444, rel=1e-5)
 
 
 # ---- hook load factor -------------------------------------------------------------------
@@ -97,9 +99,9 @@ def test_hook_load_factor_below_2_5_is_flagged(nz, warned):
     book = small_workbook()
     set_parameter(book, "hook load factor Nz", nz)
     study = read(book)
-    assert study.loads.hook.nz == nz
-    found = [w for w in study.warnings if "hook load factor Nz" in w]
-    assert bool(found) is warned, study.warnings
+    assert study.inputs.loads.hook.nz == nz
+    found = [w for w in study.source.warnings if "hook load factor Nz" in w]
+    assert bool(found) is warned, study.source.warnings
     if warned:
         assert f"Study {study_cell(book, 'hook load factor Nz')}" in found[0]
         assert "CS 29.865(a)" in found[0] and "CS 29.337 to 29.341" in found[0]
@@ -196,8 +198,8 @@ def test_fuselage_coefficients_on_one_square_foot_are_accepted():
     for row in book["FuselageAero"][1:]:
         row[2:5] = [v * area for v in row[2:5]]
         row[5:8] = [v * area * length for v in row[5:8]]
-    reference = read(small_workbook()).loads.fuselage.loads([0.1], [0.2], 1000.0)
-    loads = read(book).loads.fuselage.loads([0.1], [0.2], 1000.0)
+    reference = read(small_workbook()).inputs.loads.fuselage.loads([0.1], [0.2], 1000.0)
+    loads = read(book).inputs.loads.fuselage.loads([0.1], [0.2], 1000.0)
     for got, want in zip(loads, reference, strict=True):
         np.testing.assert_allclose(got, want, rtol=1e-9)
 
@@ -230,7 +232,7 @@ def test_wake_q_ratio_that_holds_is_accepted():
     set_parameter(book, "chute sizing wake source", "table")
     set_parameter(book, "chute sizing target q ratio", 0.9)
     book["ChuteWake"] = [["distance [m]", "q ratio"], [1.0, 0.5], [5.0, 0.95], [10.0, 0.95]]
-    assert read(book).inputs["chute sizing"].wake.line_length(0.9) == pytest.approx(
+    assert read(book).inputs.chute_sizing.wake.line_length(0.9) == pytest.approx(
         1.0 + 4.0 * 0.4 / 0.45)
 
 
@@ -247,7 +249,7 @@ def test_parachute_table_covers_alpha_zero(rows, ok):
     book = small_workbook()
     book["ParachuteCD"] = [["alpha [deg]", "CD"], *map(list, rows)]
     if ok:
-        assert read(book).loads.parachute is not None
+        assert read(book).inputs.loads.parachute is not None
     else:
         error(book, "ParachuteCD", "A2", "must cover alpha = 0 deg")
 
@@ -277,7 +279,7 @@ def test_lateral_body_radius_of_gyration_below_0_1_m_is_refused(inertia):
 
 def test_lateral_body_of_a_light_twin_is_accepted():
     """2.9 t with 1,700 kg m^2 (k = 0.77 m) is read."""
-    body = read(_with_body(2900.0, 1700.0)).inputs["lateral"].bodies[0]
+    body = read(_with_body(2900.0, 1700.0)).inputs.lateral.bodies[0]
     assert body.radius_of_gyration == pytest.approx(np.sqrt(1700.0 / 2900.0))
 
 
@@ -302,7 +304,7 @@ def test_values_on_hidden_rows_and_columns_are_flagged(tmp_path):
         wb["MassItems"].column_dimensions["G"].hidden = True
         wb["Study"].row_dimensions[30].hidden = True  # below the last parameter: no value
 
-    warnings = read_study(_saved(tmp_path, edit)).warnings
+    warnings = read_study(_saved(tmp_path, edit)).source.warnings
     assert "sheet 'FinAero': values were read from hidden rows 4-6, 8: a reviewer of the " \
            "workbook does not see them" in warnings, warnings
     assert any(w.startswith("sheet 'MassItems': values were read from hidden column G")
@@ -316,7 +318,7 @@ def test_hidden_sheet_is_flagged(tmp_path):
         wb["Stations"].sheet_state = "hidden"
         wb["Hardpoints"].sheet_state = "veryHidden"
 
-    warnings = read_study(_saved(tmp_path, edit)).warnings
+    warnings = read_study(_saved(tmp_path, edit)).source.warnings
     assert any(w.startswith("sheet 'Stations' is hidden in the workbook") for w in warnings)
     assert any(w.startswith("sheet 'Hardpoints' is very hidden") for w in warnings)
 
@@ -327,7 +329,7 @@ def test_nothing_hidden_gives_no_warning(tmp_path):
     def edit(wb):
         wb["Stations"].row_dimensions[40].hidden = True
 
-    assert read_study(_saved(tmp_path, edit)).warnings == []
+    assert read_study(_saved(tmp_path, edit)).source.warnings == []
 
 
 # ---- a requested analysis without its results ------------------------------------------
@@ -407,7 +409,7 @@ def test_velocity_step_peak_acceleration_is_written_unbounded():
         row.append(None)
     book["LateralMotions"].append(["jump", "velocity step", None, None, None, None, 1.0])
     study = read(book)
-    result = lateral_report.compute(study)
+    result = lateral_run.run(study)
     runs = lateral_report.runs_table(result)
     for name in ("peak S'' [m/s^2]", "peak S'' [g]"):
         jump = runs[runs["motion id"] == "jump"][name]

@@ -133,11 +133,11 @@ def test_right_handed_conversion_is_the_same_rotation():
 
 
 def test_warm_up_compiles_the_loads_kernel():
-    """slingloads compile (slingloads.warmup) reaches the kernels a run calls: after the
+    """slingloads compile (slingloads.runs.warmup) reaches the kernels a run calls: after the
     loads warm-up numba records a compiled signature of the free-free kernel (numba's own
     record is the reference)."""
     from slingloads.analyses import sfbm_kernel
-    from slingloads.warmup import STEPS, _timed
+    from slingloads.runs.warmup import STEPS, _timed
 
     assert set(STEPS) == {"loads", "lateral", "chute sizing", "multibody"}
     seconds = _timed(["loads"])["loads"]

@@ -1,6 +1,7 @@
 """The workbook reader's shortcuts give exactly what its careful path gives.
 
-Two shortcuts make reading a large table fast (slingloads/io/common/workbook.py):
+Two shortcuts make reading a large table fast (slingloads/io/common/xlsx_source.py and
+workbook.py):
 
 * ``_simple_cell`` reads a plain number or an inline string without openpyxl's
   ``parse_cell``. The reference is ``parse_cell`` itself (openpyxl's read-only reader): for
@@ -31,7 +32,8 @@ from openpyxl.worksheet._reader import WorkSheetParser
 from slingloads.errors import InputError
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.common.schema import FLAG, INTEGER, TEXT, Bounds, Column, TableSheet
-from slingloads.io.common.workbook import CellError, WorkbookReader, _simple_cell
+from slingloads.io.common.workbook import WorkbookReader
+from slingloads.io.common.xlsx_source import CellError, _simple_cell
 
 SETTINGS = settings(max_examples=600, derandomize=True, deadline=None, database=None,
                     suppress_health_check=list(HealthCheck))
@@ -345,9 +347,9 @@ def _every_row(path):
 
 def _without_the_cell_shortcut():
     """Every cell read by openpyxl's parse_cell (the reference)."""
-    from slingloads.io.common import workbook
+    from slingloads.io.common import xlsx_source
 
-    return mock.patch.object(workbook, "_simple_cell", return_value=None)
+    return mock.patch.object(xlsx_source, "_simple_cell", return_value=None)
 
 
 def test_the_example_workbook_reads_alike_without_the_cell_shortcut():

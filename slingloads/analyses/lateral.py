@@ -723,13 +723,14 @@ def airframe_body(airframe, name="airframe (MassItems)"):
     along_mast = float(d @ mast / np.linalg.norm(mast))
     if not along_mast > 0:
         raise InputError("the CG of the mass items lies above the rotor hub along the mast; "
-                         "the lateral pendulum needs it below [m]", along_mast)
+                         "the lateral pendulum needs it below [m]", along_mast,
+                         field="cg_below_hub")
     e = float(np.linalg.norm(d))
     axis = hanging_roll_axis(airframe)
     inertia = float(axis @ items.inertia_about_cg @ axis)
     if not inertia > 0:
         raise InputError("the mass items' roll inertia about the CG must be > 0 [kg m^2]",
-                         inertia)
+                         inertia, field="roll_inertia")
     return SlungBody(items.total_mass, inertia, e, name)
 
 

@@ -25,8 +25,8 @@ def consistency_checks(results):
 
     Parameters
     ----------
-    results : dict
-        Analysis name ("loads", "lateral", "chute sizing") -> its computed result.
+    results : Results
+        The run's results (:class:`~slingloads.runs.study.Results`).
 
     Returns
     -------
@@ -35,7 +35,7 @@ def consistency_checks(results):
         analyses with at least one check are present.
     """
     out = {}
-    loads, chute = results.get("loads"), results.get("chute sizing")
+    loads, chute = results.loads, results.chute_sizing
     if loads is not None and chute is not None:
         row = sideslip_check(loads, chute)
         if row is not None:

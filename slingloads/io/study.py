@@ -1,62 +1,39 @@
-"""Read an input workbook: the airframe, then each analysis it asks for (see
-:mod:`slingloads.io.analyses`)."""
+"""Read an input workbook into a :class:`~slingloads.runs.study.Study`: the airframe, then
+each analysis it asks for (see :mod:`slingloads.io.analyses`); :func:`run_workbook` reads
+and runs it."""
 
 from __future__ import annotations
 
-import contextlib
 import hashlib
 from dataclasses import dataclass, field
 
-from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
 from slingloads.io.common.cover import IDENTIFICATION, now_stamp
 from slingloads.io.common.hidden import hidden_warnings, read_cells
+from slingloads.io.common.locate import StudyCells, find_place, place_error
 from slingloads.io.common.parameters import StudyParameters
-from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.workbook import WorkbookReader
-from slingloads.models.airframe import Airframe
+from slingloads.runs.study import Inputs, Source, Study
 
 AIRFRAME_SHEETS = {s.name: s for s in SHEETS}
+_BY_NAME = {a.name: a for a in ANALYSES}
 
 
 @dataclass
-class WorkbookStudy:
-    """Everything read from one input workbook.
+class WorkbookSource(Source):
+    """Where a study read from a workbook comes from, and where each of its values is.
 
     Attributes
     ----------
-    name : str
-    path : str
-    sha256 : str
-        Digest of the input file, printed on the reports.
-    run : dict
-        Which analyses the workbook asks for, by name (:data:`slingloads.io.analyses.ANALYSES`).
-    airframe : Airframe
+    path, sha256, input_files, warnings, identification, run_date
+        See :class:`~slingloads.runs.study.Source`.
     parameters : dict
         The Study parameters given in the workbook, by lower-case name (SI).
-    options : dict
-        Report options (hull stations and pairs).
-    inputs : dict
-        Inputs of each analysis read, by analysis name (``inputs["loads"]``: the
-        :class:`~slingloads.analyses.loads.LoadsStudy`).
     points : dict
-        Hardpoints by kind (``fin_cp``, ``aero_reference``...: position or None). [m]
-    identification : dict
-        The free fields printed on the report covers (``project``, ``document number``,
-        ``author``, ``checker``), by name; empty strings when not given.
-    run_date : str
-        When the workbook was read (the run date printed on the reports).
-    results : dict
-        Results of the analyses computed in this run, by analysis name (filled by the
-        command line before the reports are written, so that a report can quote another's
-        result: the loads report quotes the lateral study's recommended hook angle).
-    input_files : list of pathlib.Path
-        The workbook and every file it refers to that was read (CSV time histories): no
-        output may replace one.
-    warnings : list of str
-        Implausible but possible inputs, each naming its cells; shown on the reports' Summary.
+        Hardpoints by kind (``fin_cp``, ``aero_reference``...: position or None) [m], and
+        ``rows``: the Hardpoints row of each kind.
     cells : dict
         Cell of each Study parameter given, by lower-case name (to locate errors found while
         computing).
@@ -67,73 +44,25 @@ class WorkbookStudy:
         Tables read from the sheets, by sheet name (at least MassItems and Hardpoints), so
         that an error found while computing can be located at the cells of its inputs, with
         their values as written.
-    runtime : dict
-        How to execute (set by the command line): ``scheduler``, ``workers``, ``cache``,
-        ``timeout``, ``progress`` of the campaign.
-    results : dict
-        Results of the analyses computed so far, by name (the loads read the campaign's).
     """
 
-    name: str
-    path: str
-    sha256: str
-    run: dict
-    airframe: Airframe
-    parameters: dict
-    options: dict = field(default_factory=dict)
-    inputs: dict = field(default_factory=dict)
+    parameters: dict = field(default_factory=dict)
     points: dict = field(default_factory=dict)
-    input_files: list = field(default_factory=list)
-    warnings: list = field(default_factory=list)
     cells: dict = field(default_factory=dict)
     written: dict = field(default_factory=dict)
     tables: dict = field(default_factory=dict)
-    identification: dict = field(default_factory=dict)
-    run_date: str = field(default_factory=now_stamp)
-    runtime: dict = field(default_factory=dict)
-    results: dict = field(default_factory=dict)
 
-    def digest(self):
-        """What a report is computed from: input file, SHA-256, study, analyses, version, and
-        the warnings on the inputs."""
-        from pathlib import Path
-
-        from slingloads import __version__
-
-        out = {"input workbook": Path(self.path).name, "SHA-256": self.sha256,
-               "study": self.name,
-               "analyses": ", ".join(k for k, v in self.run.items() if v),
-               "slingloads version": __version__}
-        for k, text in enumerate(self.warnings, start=1):
-            out[f"warning {k}"] = text
-        return out
-
-    @property
-    def loads(self):
-        """The loads study, or None if the loads analysis was not read."""
-        return self.inputs.get("loads")
-
-    @contextlib.contextmanager
-    def located(self, fields=None):
-        """Locate an :class:`InputError` raised while computing: in this workbook, at the
-        Study cell of the parameter ``fields[error.field]`` when there is one, echoing that
-        parameter's value as written with its unit (not the model's value)."""
-        fields = fields or {}
-        try:
-            yield
-        except InputError as err:
-            name = fields.get(err.field)
-            if err.cell is None and err.sheet in (None, STUDY_SHEET) and name is not None:
-                key = name.lower()
-                cell = self.cells.get(key, "(default)")
-                if key in self.written:
-                    value, unit = self.written[key]
-                else:  # the parameter's default
-                    spec = all_parameters()[key]
-                    value, unit = spec.default, spec.unit
-                raise err.located(file=self.path, sheet=STUDY_SHEET, cell=cell, value=value,
-                                  unit=unit or None) from None
-            raise err.located(file=self.path) from None
+    def locate(self, study, analysis, err, context=None):
+        """Put ``err``, raised while analysis ``analysis`` of ``study`` ran, in this
+        workbook: where its reader puts it (``locate`` of its reader, e.g. the lateral
+        critical case's rope length), else at the Study cell of the parameter its ``field``
+        comes from (its schema's ``COMPUTE_FIELDS``), echoing that parameter's value as
+        written with its unit (not the model's value); always naming the file
+        (:func:`slingloads.io.common.locate.find_place`)."""
+        entry = _BY_NAME[analysis]
+        err = entry.locate(err, study, context)
+        cells = StudyCells(self.path, self.cells, self.written, all_parameters(), sheet=None)
+        return place_error(err, find_place(err, cells, entry.compute_fields))
 
 
 def file_digest(path):
@@ -164,7 +93,8 @@ def read_study(path, only=None, *, reader=None, on_read=None):
 
     Returns
     -------
-    WorkbookStudy
+    Study
+        Its :attr:`~slingloads.runs.study.Study.source` is the :class:`WorkbookSource`.
 
     Raises
     ------
@@ -181,25 +111,82 @@ def read_study(path, only=None, *, reader=None, on_read=None):
 
 def _build(reader, path, only, sha256, on_read=None):
     params = StudyParameters(reader, all_parameters())
-    run = {a.name: params(a.run_parameter) for a in ANALYSES}
+    asked = [a.name for a in ANALYSES if params(a.run_parameter)]
     if only is not None:
-        run = {name: name in set(only) for name in run}
+        asked = [a.name for a in ANALYSES if a.name in set(only)]
     airframe, refs = read_airframe(reader, params)
-    study = WorkbookStudy(name=str(params("study name")), path=str(path), sha256=sha256,
-                          run=run, airframe=airframe,
-                          parameters={k: v[0] for k, v in params.given.items()}, points=refs,
-                          cells={k: v[1] for k, v in params.given.items()},
-                          written={k: (v.raw, v.unit) for k, v in params.given.items()},
-                          tables={name: reader.table(AIRFRAME_SHEETS[name])
-                                  for name in ("MassItems", "Hardpoints")},
-                          identification={k: str(params(k) or "").strip()
-                                          for k in IDENTIFICATION})
+    source = WorkbookSource(
+        path=str(path), sha256=sha256, points=refs,
+        parameters={k: v[0] for k, v in params.given.items()},
+        cells={k: v[1] for k, v in params.given.items()},
+        written={k: (v.raw, v.unit) for k, v in params.given.items()},
+        tables={name: reader.table(AIRFRAME_SHEETS[name]) for name in ("MassItems", "Hardpoints")},
+        identification={k: str(params(k) or "").strip() for k in IDENTIFICATION},
+        run_date=now_stamp())
+    study = Study(name=str(params("study name")), airframe=airframe, asked=tuple(asked),
+                  source=source)
     for analysis in ANALYSES:
-        if run[analysis.name]:
-            study.inputs[analysis.name] = analysis.read(reader, params, study)
-        study.options.update(analysis.report_options(params, study))
-        if run[analysis.name] and on_read is not None:
+        if analysis.name in asked:
+            _set_inputs(study.inputs, analysis.name, analysis.read(reader, params, study))
+        if analysis.options:
+            study.report = analysis.modules().reader.report_options(params, study)
+        if analysis.name in asked and on_read is not None:
             on_read(analysis.name, study)
-    study.input_files = reader.input_files
-    study.warnings = [*reader.warnings, *hidden_warnings(reader, read_cells(reader, params))]
+    source.input_files = list(reader.input_files)
+    source.warnings = [*reader.warnings, *hidden_warnings(reader, read_cells(reader, params))]
     return study
+
+
+def _set_inputs(inputs: Inputs, name, value):
+    """Keep ``value`` as the inputs of analysis ``name``."""
+    if name == "loads":
+        inputs.loads = value
+    elif name == "lateral":
+        inputs.lateral = value
+    elif name == "chute sizing":
+        inputs.chute_sizing = value
+    elif name == "multibody":
+        inputs.multibody = value
+    else:
+        inputs.campaign = value
+
+
+def run_workbook(path, only=None):
+    """Read the workbook at ``path`` and run every analysis it asks for (or ``only`` these).
+
+    Parameters
+    ----------
+    path : str or Path
+    only : iterable of str, optional
+        Run these analyses (``"loads"``, ``"lateral"``, ``"chute sizing"``, ``"multibody"``,
+        ``"campaign"``) whatever the workbook's ``run ...`` rows say.
+
+    Returns
+    -------
+    Results
+        Typed results (:class:`~slingloads.runs.study.Results`), with the study read as
+        ``.study``.
+
+    Raises
+    ------
+    InputError
+        With the file, sheet, cell, value and rule, for any bad input.
+
+    Examples
+    --------
+    >>> import slingloads as sl
+    >>> results = sl.run("loadcases/example-light-twin.xlsx", only=["loads"])
+    >>> results.loads.envelope().shape[1] > 0
+    True
+    """
+    return read_study(path, only).run()
+
+
+def load_workbook_system(path):
+    """The multibody inputs of the workbook at ``path`` (whatever its 'run multibody' says).
+
+    Returns
+    -------
+    MultibodyInputs
+    """
+    return read_study(path, only=["multibody"]).inputs.multibody

@@ -21,7 +21,7 @@ floating-point operations, whatever batch or process it falls in):
 
 **Store.** Anything with ``get(key)`` (a record or None), ``put(key, record)`` and
 ``__contains__``; a record is ``(metrics, histories)``. :class:`MemoryStore` keeps them in
-memory; the Parquet run cache of the io layer (``slingloads.io.campaign.cache``) on disk. Each
+memory; the Parquet run cache of the runs layer (``slingloads.runs.cache``) on disk. Each
 finished batch is stored as soon as it arrives, so an interruption loses at most the batches in
 flight.
 """

@@ -66,15 +66,22 @@ class MapSettings:
                                tuple(float(h) for h in self.density_altitudes))
 
 
+#: Least-damped eigenvalues kept per grid point for the root locus (upper half-plane).
+LOCUS_ROOTS = 5
+
+
 def _point(system):
     point = trim(system)
     model = linearise(point) if point.converged else None
     out = linear_metrics(point, model)
+    roots = np.array([], complex)
     if model is not None:
         lam = model.eigenvalues[np.argmax(model.eigenvalues.real)]
         out["least stable eigenvalue damping ratio [-]"] = (
             float(-lam.real / abs(lam)) if abs(lam) > 0 else np.nan)
-    return out
+        upper = model.eigenvalues[model.eigenvalues.imag >= -1e-9]
+        roots = upper[np.argsort(-upper.real, kind="stable")][:LOCUS_ROOTS]
+    return out, roots
 
 
 def _is_stable(system):
@@ -91,6 +98,10 @@ class StabilityMap:
     points : pandas.DataFrame
         One row per grid point: area factor, area, airspeed, density altitude and the linear
         metrics.
+    loci : pandas.DataFrame
+        The :data:`LOCUS_ROOTS` least-damped eigenvalues of every grid point (upper
+        half-plane, largest real part first): area factor, airspeed, density altitude, real
+        part [1/s], imaginary part [rad/s] (a root locus against the area).
     minimum : pandas.DataFrame
         One row per (density altitude, airspeed): minimum stable area factor on the grid and
         refined, and the area.
@@ -101,6 +112,7 @@ class StabilityMap:
     points: pd.DataFrame
     minimum: pd.DataFrame
     condition: dict
+    loci: pd.DataFrame | None = None
 
     def grid(self, value="largest real part [1/s]", density_altitude=None):
         """One quantity as a table: rows area factor, columns airspeed [m/s]."""
@@ -128,7 +140,7 @@ def stability_map(setup, neutral_area, settings, row):
     -------
     StabilityMap
     """
-    rows = []
+    rows, roots = [], []
     systems = {}
     for h in settings.density_altitudes:
         for v in settings.airspeeds:
@@ -137,9 +149,12 @@ def stability_map(setup, neutral_area, settings, row):
                      "airspeed EAS [m/s]": v, "density altitude [m]": h}
                 system = setup.system_for(r)
                 systems[(h, v, f)] = system
+                metrics, lam = _point(system)
                 rows.append({"area factor [-]": f, "area [m^2]": f * neutral_area,
-                             "airspeed EAS [m/s]": v, "density altitude [m]": h,
-                             **_point(system)})
+                             "airspeed EAS [m/s]": v, "density altitude [m]": h, **metrics})
+                roots += [{"area factor [-]": f, "airspeed EAS [m/s]": v,
+                           "density altitude [m]": h, "real [1/s]": z.real,
+                           "imag [rad/s]": z.imag} for z in lam]
     points = pd.DataFrame(rows)
     stable = ((points["trim converged"].astype(bool)) & (points["linear verdict"] == "stable"))
     points["stable"] = stable
@@ -165,7 +180,9 @@ def stability_map(setup, neutral_area, settings, row):
                             "minimum stable area [m^2]": refined * neutral_area,
                             "note": note})
     condition = {k: row[k] for k in ("mass case", "mass [kg]", "cable length [m]", "carrier")}
-    return StabilityMap(points, pd.DataFrame(minimum), condition)
+    loci = pd.DataFrame(roots, columns=["area factor [-]", "airspeed EAS [m/s]",
+                                        "density altitude [m]", "real [1/s]", "imag [rad/s]"])
+    return StabilityMap(points, pd.DataFrame(minimum), condition, loci)
 
 
 def _bisect(setup, row, neutral_area, speed, altitude, low, high, tolerance=TOLERANCE):

@@ -15,9 +15,9 @@ import numpy as np
 from slingloads.errors import InputError
 from slingloads.io.airframe.schema import HARDPOINT_KINDS, PLATE_FORCE_COEFFICIENT, SHEETS
 from slingloads.io.common.atomic import safe_file_part
-from slingloads.io.common.locate import column_quantity, quantity, quantity_range
+from slingloads.io.common.locate import Place, column_quantity, located, quantity, quantity_range
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import cell_name, check_unique, located
+from slingloads.io.common.table import cell_name, check_unique
 from slingloads.limits import MAX_AIRFRAME_SIZE
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import (
@@ -29,6 +29,7 @@ from slingloads.models.aerodynamics import (
     fuselage_columns,
 )
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
+from slingloads.models.multibody.parachute_line import line_reach
 from slingloads.models.parachute import PARACHUTE_AXES, PARACHUTE_CD_MAX, Parachute
 
 _SPEC = {s.name: s for s in SHEETS}
@@ -77,7 +78,7 @@ def read_airframe(reader, params):
     _mass_item_warnings(reader, items_t, items, axis)
     hp_t, points = _hardpoint_rows(reader, params, items_t, items, axis)
     aero_points, aero_weights = _aero_points(reader, params, items_t, items, axis)
-    with hp_t.located({"mast_weights": "weight"}):
+    with located(hp_t, {"mast_weights": "weight"}):
         hardpoints = Hardpoints(
             hub=points["hub"][0][1],
             mast_feet=np.array([p[1] for p in points["mast_foot"]]),
@@ -86,7 +87,7 @@ def read_airframe(reader, params):
             chute=points["chute"][0][1] if points["chute"] else None,
             mast_feet_ids=tuple(p[0] for p in points["mast_foot"]),
         )
-    with stations.located({"stations": "x"}):
+    with located(stations, {"stations": "x"}):
         airframe = Airframe(items, x, hardpoints, axis, tuple(stations["id"]), aero_points,
                             aero_weights, name=str(params("study name")))
     _check_stations_span(reader, stations, items_t, hp_t, airframe)
@@ -169,7 +170,7 @@ def _mass_items(reader):
     position = np.column_stack([items_t["x"], items_t["y"], items_t["z"]])
     _check_extent(items_t, position)
     fields = {"mass": "mass", "position": "x", "inertia": present[0] if present else "mass"}
-    with items_t.located(fields):
+    with located(items_t, fields):
         items = MassItems(tuple(items_t["id"]), masses, position, inertia,
                           tuple(items_t["description"]) if items_t.has("description") else ())
     if items.total_mass < MIN_TOTAL_MASS:
@@ -346,7 +347,7 @@ def read_fuselage_aero(reader, params, refs):
                      "(alpha, beta) point")
     _check_full_grid(t)
     _check_force_areas(reader, t, columns, force_axes, area, length, refs)
-    with t.located():
+    with located(t):
         table = Table2D.from_long(t["alpha"], t["beta"], {c: t[c] for c in columns})
         return FuselageAero(table, area, length, refs["aero_reference"], force_axes,
                             moment_axes)
@@ -484,10 +485,10 @@ def read_fin_aero(reader, params, refs):
     area = params.positive("fin area")
     eff = params("fin efficiency")
     axes = params.choice("fin axes", FIN_AXES)
-    with t.located():
+    with located(t):
         table = Table1D(t["beta"], {"CY": t["CY"]}, angle_name="beta", what="fin")
-    with params.located({"efficiency": "fin efficiency", "area": "fin area"},
-                        "fin efficiency"):
+    with located(params, {"efficiency": "fin efficiency", "area": "fin area"},
+                 default="fin efficiency"):
         return Fin(table, area, refs["fin_cp"], eff, axes)
 
 
@@ -516,7 +517,7 @@ def read_parachute_cd(reader, axes="wind"):
         if not 0 < value <= PARACHUTE_CD_MAX:
             raise t.error(column, i, f"parachute {column} must lie in (0, "
                           f"{PARACHUTE_CD_MAX:g}] (a flat plate normal to the flow has 1.17)")
-    with t.located():
+    with located(t):
         table = Table1D(t["alpha"], {column: t[column]}, angle_name="alpha",
                         what="parachute")
     if not t["alpha"].min() <= 0 <= t["alpha"].max():
@@ -548,18 +549,20 @@ def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
     axes = params.choice("parachute table axes", tuple(PARACHUTE_AXES))
     cd = read_parachute_cd(reader, axes)  # checked at its cells
     for name, arg in parameters.items():  # each with the default table: only its own error
-        with params.at(name):
+        with located(params, default=name):
             Parachute(area, None, axes=axes, **{arg: params(name)})
-    with located(reader.file, "ParachuteCD" if cd is not None else STUDY_SHEET):
+    with located(Place(reader.file, "ParachuteCD" if cd is not None else STUDY_SHEET)):
         return Parachute(area, cd, axes=axes,
                          **{arg: params(name) for name, arg in parameters.items()})
 
 
 def parachute_reach_rule(reader, params, refs, hardpoints, line, cable, unit):
     """The rule a carrier cable of ``cable`` [m] breaks when the parachute could reach the
-    carrier (its line plus the distance from the hub to its attachment not less than the
-    cable), in the cable's ``unit`` (as the user wrote it) and naming the cells the reach
-    comes from; None when the cable is long enough.
+    carrier (the cable's length within the distances from the hub that the line and canopy
+    reach, streaming aft of their attachment or hanging below it:
+    :func:`~slingloads.models.multibody.parachute_line.line_reach`), in the cable's ``unit``
+    (as the user wrote it) and naming the cells the reach comes from; None when the cable is
+    clear of them.
 
     Parameters
     ----------
@@ -575,15 +578,16 @@ def parachute_reach_rule(reader, params, refs, hardpoints, line, cable, unit):
     unit : str
         Unit of the cable length as written.
     """
-    arm = float(np.linalg.norm(hardpoints.chute - hardpoints.hub))
-    reach = line + arm
-    if reach < cable:
+    near, far = line_reach(hardpoints.hub, hardpoints.chute, line)
+    if not near <= cable <= far:
         return None
     hp_t = reader.table(_SPEC["Hardpoints"])
     rows = [refs["rows"]["hub"][0], refs["chute_row"]]
     cells = " and ".join(f"{hp_t.cell('x', r)}:{hp_t.cell('z', r)}" for r in rows)
     return (f"the parachute could reach the carrier: its line ('parachute line length' "
-            f"{params.quantity('parachute line length', line)}) plus the distance from the hub "
-            f"to its attachment ({quantity(arm, unit, 'length')}, Hardpoints {cells}) reach "
-            f"{quantity(reach, unit, 'length')} from the hub, not less than the carrier cable "
-            f"({quantity(cable, unit, 'length')}); lengthen the cable (or shorten the line)")
+            f"{params.quantity('parachute line length', line)}) from its attachment "
+            f"(Hardpoints {cells}), streaming aft or hanging, reaches from "
+            f"{quantity(near, unit, 'length')} to {quantity(far, unit, 'length')} from the "
+            f"hub, and the carrier cable ({quantity(cable, unit, 'length')}) lies in that "
+            f"range; lengthen the cable beyond {quantity(far, unit, 'length')} (or shorten "
+            f"the line)")

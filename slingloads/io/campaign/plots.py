@@ -31,6 +31,32 @@ def _small(ax):
     ax.title.set_fontsize(9)
 
 
+def _condition(row, skip=(), neutral_area=None):
+    """The base condition of a run as a line of text: area, airspeed, mass, density altitude,
+    cable and carrier (those of ``skip``, the factors a figure varies, left out)."""
+    parts = []
+    if "area factor [-]" not in skip and "area factor [-]" in row:
+        area = row.get("area [m^2]", np.nan)
+        parts.append(f"area {row['area factor [-]']:.3g} x neutral"
+                     + (f" ({area:.3g} m^2)" if np.isfinite(area) else ""))
+    if "airspeed EAS [m/s]" not in skip and "airspeed EAS [m/s]" in row:
+        parts.append(f"{row['airspeed EAS [m/s]'] / KNOT:.0f} KEAS")
+    if "mass case" not in skip and "mass [kg]" in row:
+        parts.append(f"mass {row.get('mass case', '')} {row['mass [kg]']:.0f} kg".replace(
+            "  ", " "))
+    if "density altitude [m]" not in skip and "density altitude [m]" in row:
+        parts.append(f"{row['density altitude [m]'] / FOOT:.0f} ft HD")
+    if "cable length [m]" not in skip and "cable length [m]" in row:
+        parts.append(f"cable {row['cable length [m]'] / FOOT:.0f} ft")
+    if "carrier" not in skip and "carrier" in row:
+        parts.append(f"carrier {row['carrier']}")
+    return ", ".join(parts)
+
+
+def _values(frame, column, scale=1.0, fmt="{:.0f}"):
+    return "/".join(fmt.format(v * scale) for v in sorted(frame[column].unique()))
+
+
 def _area(units):
     if units not in ("SI", "US"):
         raise InputError("unknown unit system; valid are ['SI', 'US']", units)
@@ -55,6 +81,12 @@ def plot_selection(result, units="SI"):
     axes[1].set(ylabel="damping ratio [-]", title="least yaw-mode damping")
     axes[2].plot(f, by["largest trimmed swing angle [deg]"], "o-")
     axes[2].set(ylabel="swing angle [deg]", title="drag proxy: largest\ntrimmed swing angle")
+    m = result.metrics
+    fig.suptitle(f"over {_values(m, 'airspeed EAS [m/s]', 1 / KNOT)} KEAS, masses "
+                 f"{_values(m, 'mass [kg]')} kg, {_values(m, 'density altitude [m]', 1 / FOOT)}"
+                 f" ft HD, cables {_values(m, 'cable length [m]', 1 / FOOT)} ft, carrier "
+                 f"{'/'.join(dict.fromkeys(m['carrier']))}; neutral area "
+                 f"{result.neutral.area:.3g} m^2", fontsize=7, y=0.995)
     for ax in axes:
         ax.set_xlabel("area / neutral area [-]")
         ax.grid(True, alpha=0.4)
@@ -78,7 +110,9 @@ def plot_sweep(result, runs, factor, title):
         label = _label(frame.loc[run], factor)
         axes[0].plot(h["time [s]"], h[YAW], lw=1.1, label=label)
         axes[1].plot(h["time [s]"], h[BETA], lw=1.1, label=label)
-    axes[0].set(ylabel="yaw (heading) [deg]", title=title)
+    base = frame.loc[runs[0]] if runs else {}
+    axes[0].set(ylabel="yaw (heading) [deg]",
+                title=f"{title}\n{_condition(base, skip=(factor,))}" if runs else title)
     axes[1].set(ylabel="sideslip beta [deg]", xlabel="time [s]")
     for ax in axes:
         ax.grid(True, alpha=0.4)
@@ -102,14 +136,16 @@ def _label(row, factor):
     return f"carrier {value}"
 
 
-def plot_stability_map(stability, neutral_area, units="SI"):
+def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
     """Yaw-mode damping ratio and largest real part over area x airspeed (one column per
-    density altitude), with the minimum stable area per speed."""
+    density altitude), with the minimum stable area per speed, the neutral static area
+    (1.0 x) and the chosen area [m^2] (when given); the map's mass, cable and carrier in the
+    title."""
     scale, unit = _area(units)
     points = stability.points
     altitudes = sorted(points["density altitude [m]"].unique())
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.4)), left=0.7, right=0.1, bottom=0.5,
-                      top=0.35, wspace=0.6, hspace=0.45)
+                      top=0.55, wspace=0.6, hspace=0.45)
     axes = fig.subplots(2, len(altitudes), squeeze=False)
     quantities = (("yaw mode damping ratio [-]", "yaw-mode damping ratio [-]", "viridis"),
                   ("largest real part [1/s]", "largest real part [1/s]", "coolwarm"))
@@ -134,21 +170,32 @@ def plot_stability_map(stability, neutral_area, units="SI"):
             ax.plot(minimum["airspeed EAS [m/s]"] / KNOT,
                     minimum["minimum stable area [m^2]"] * scale, "k.-",
                     label="minimum stable area")
+            ax.axhline(neutral_area * scale, color="k", ls=":", lw=1.0,
+                       label="1.0 x neutral static area")
+            if chosen_area is not None and np.isfinite(chosen_area):
+                ax.axhline(chosen_area * scale, color="m", ls="--", lw=1.0,
+                           label=f"chosen {chosen_area / neutral_area:.3g} x neutral")
             ax.set(xlabel="airspeed [KEAS]", ylabel=f"parachute area [{unit}]",
                    title=f"{h / FOOT:.0f} ft density altitude")
             _small(ax)
             _legend(ax, fontsize=6, loc="upper right")
+    c = stability.condition
+    fig.suptitle(f"mass {c['mass case']} {c['mass [kg]']:.0f} kg, cable "
+                 f"{c['cable length [m]'] / FOOT:.0f} ft, carrier {c['carrier']}; neutral "
+                 f"area {neutral_area * scale:.3g} {unit}", fontsize=8, y=0.995)
     return fig
 
 
 def plot_no_parachute(result):
     """Yaw and sideslip under the frontal wind ramps, each helicopter, without parachute
-    (paper figures 16-18): one row per ramp target."""
+    (paper figures 16-18): one row per ramp target, the head wind (the ramp) on the right
+    axis of the yaw panel and the ramp's end marked."""
     npr = result.no_parachute
+    study = result.campaign.no_parachute
     runs = npr.runs
     targets = sorted(runs["ramp target [m/s]"].unique())
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.0 * len(targets) + 0.9)), left=0.7,
-                      right=0.15, bottom=0.5, top=0.3, wspace=0.3, hspace=0.45)
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.0 * len(targets) + 1.1)), left=0.7,
+                      right=0.15, bottom=0.5, top=0.5, wspace=0.6, hspace=0.45)
     axes = fig.subplots(len(targets), 2, squeeze=False, sharex=True)
     for i, target in enumerate(targets):
         for name, t in npr.keys:
@@ -159,7 +206,17 @@ def plot_no_parachute(result):
                            & (runs["ramp target [m/s]"] == t)]["verdict"].iloc[0]
             axes[i, 0].plot(h["time [s]"], h[YAW], label=f"{name} ({verdict})")
             axes[i, 1].plot(h["time [s]"], h[BETA], label=name)
-        axes[i, 0].set(ylabel="yaw [deg]", title=f"wind ramp to {target / KNOT:.0f} kt")
+        end = study.onset + target / study.rate
+        for ax in axes[i]:
+            ax.axvline(end, color="0.4", ls=":", lw=1.0)
+        wind = axes[i, 0].twinx()
+        time = np.linspace(0.0, study.run_length, 200)
+        wind.plot(time, np.clip((time - study.onset) * study.rate, 0.0, target) / KNOT,
+                  color="0.6", lw=0.8, ls="--")
+        wind.set_ylabel("head wind [kt]", fontsize=7, color="0.4")
+        wind.tick_params(labelsize=6, colors="0.4")
+        axes[i, 0].set(ylabel="yaw [deg]", title=f"wind ramp to {target / KNOT:.0f} kt "
+                       f"(ends at {end:.0f} s, dotted)")
         axes[i, 1].set(ylabel="beta [deg]", title=f"wind ramp to {target / KNOT:.0f} kt")
         _legend(axes[i, 0], fontsize=6)
         for ax in axes[i]:
@@ -168,6 +225,83 @@ def plot_no_parachute(result):
         ax.set_xlabel("time [s]")
     for ax in axes.flat:
         _small(ax)
+    system = next(iter(study.systems.values()))
+    fig.suptitle(f"full tail, no parachute; cable {system.cable.length / FOOT:.0f} ft, "
+                 f"{system.density_altitude / FOOT:.0f} ft HD, hovering carrier; ramp "
+                 f"{study.rate:g} m/s^2 from {study.onset:g} s", fontsize=8, y=0.999)
+    return fig
+
+
+def plot_ramp_gust(runs, ramp_end, gust, title=""):
+    """Yaw and sideslip of wind-ramp runs with a lateral gust after the ramp, so that a
+    stable helicopter shows its damping.
+
+    Parameters
+    ----------
+    runs : sequence of (str, pandas.DataFrame)
+        Label and time histories (campaign history columns).
+    ramp_end : float or sequence of float
+        Time(s) the ramps end. [s]
+    gust : (float, float)
+        Start and end of the gust. [s]
+    title : str
+    """
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.8)), left=0.7, right=0.7, bottom=0.5,
+                      top=0.75, hspace=0.12)
+    axes = fig.subplots(2, 1, sharex=True)
+    for label, h in runs:
+        axes[0].plot(h["time [s]"], h[YAW], lw=1.0, label=label)
+        axes[1].plot(h["time [s]"], h[BETA], lw=1.0, label=label)
+    for ax in axes:
+        for end in np.atleast_1d(ramp_end):
+            ax.axvline(end, color="0.4", ls=":", lw=1.0)
+        ax.axvspan(gust[0], gust[1], color="orange", alpha=0.15, lw=0)
+        ax.grid(True, alpha=0.4)
+        _small(ax)
+    if runs:
+        wind = axes[0].twinx()
+        h = runs[0][1]
+        wind.plot(h["time [s]"], h["airspeed [m/s]"] / KNOT, color="0.6", lw=0.8, ls="--")
+        wind.set_ylabel(f"airspeed, {runs[0][0]} [kt]", fontsize=7, color="0.4")
+        wind.tick_params(labelsize=6, colors="0.4")
+    axes[0].set(ylabel="yaw (heading) [deg]",
+                title=f"{title}\nramp ends dotted, gust shaded" if title else
+                "ramp ends dotted, gust shaded")
+    axes[1].set(ylabel="sideslip beta [deg]", xlabel="time [s]")
+    _legend(axes[0], fontsize=6, ncols=2)
+    return fig
+
+
+def plot_root_locus(loci, title=""):
+    """Root locus of the least-damped eigenvalues against the parachute area: complex plane,
+    colour the area factor; oscillatory roots (a complex pair, upper half shown) as circles,
+    real (aperiodic) roots as crosses.
+
+    Parameters
+    ----------
+    loci : pandas.DataFrame
+        Columns "area factor [-]", "real [1/s]", "imag [rad/s]" (one row per root).
+    title : str
+    """
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.2)), left=0.8, right=0.2, bottom=0.55,
+                      top=0.45)
+    ax = fig.subplots()
+    f = loci["area factor [-]"].to_numpy(float)
+    re, im = loci["real [1/s]"].to_numpy(float), loci["imag [rad/s]"].to_numpy(float)
+    osc = np.abs(im) > 1e-6
+    norm = (np.nanmin(f), np.nanmax(f))
+    ax.scatter(re[osc], np.abs(im[osc]), c=f[osc], cmap="viridis", vmin=norm[0],
+               vmax=norm[1], marker="o", s=14, label="oscillatory (upper root of the pair)")
+    sc = ax.scatter(re[~osc], im[~osc], c=f[~osc], cmap="viridis", vmin=norm[0],
+                    vmax=norm[1], marker="x", s=22, label="real (aperiodic)")
+    bar = fig.colorbar(sc, ax=ax)
+    bar.set_label("area / neutral area [-]", fontsize=7)
+    bar.ax.tick_params(labelsize=7)
+    ax.axvline(0.0, color="r", lw=0.8)
+    ax.set(xlabel="real part [1/s]", ylabel="imaginary part [rad/s]", title=title)
+    ax.grid(True, alpha=0.4)
+    _small(ax)
+    _legend(ax, fontsize=6)
     return fig
 
 

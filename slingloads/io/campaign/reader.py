@@ -15,7 +15,7 @@ Study rows; the matrix from the list rows, the ``CampaignMasses`` sheet, or the
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 import pandas as pd
@@ -34,10 +34,11 @@ from slingloads.io.campaign.schema import (
     SAMPLE_HELICOPTERS,
     SHEETS,
 )
-from slingloads.io.common.locate import at_cell, at_row
+from slingloads.io.common.locate import Place, located, place_error
 from slingloads.io.common.schema import STUDY_SHEET, TEXT
+from slingloads.io.common.table import cell_name
 from slingloads.io.common.units import si_factor
-from slingloads.io.common.workbook import cell_name, check_quantity, located, number_from_text
+from slingloads.io.common.values import check_quantity, number_from_text
 from slingloads.limits import (
     MAX_CAMPAIGN_RUN_STEPS,
     MAX_CAMPAIGN_RUNS,
@@ -45,38 +46,10 @@ from slingloads.limits import (
     MAX_LIST_ITEMS,
     MAX_MAP_POINTS,
 )
+from slingloads.runs.campaign import SCHEDULER, CampaignInputs
 
 ANALYSIS = "campaign"
 _SPEC = {s.name: s for s in SHEETS}
-
-
-@dataclass(frozen=True, eq=False)
-class CampaignInputs:
-    """Everything the campaign of a workbook needs.
-
-    Attributes
-    ----------
-    campaign : Campaign
-    scheduler : str
-        Dask scheduler address ('' for local execution).
-    workers : int or None
-        Local worker processes (None: automatic).
-    timeout : float
-        Scheduler time-out. [s]
-    loads_from_dynamics : bool
-    hook_angle_source : str
-        'CS-29.865' or 'dynamics'.
-    scheduler_cell : str
-        Cell of 'campaign scheduler' on the Study sheet (errors reaching it are put there).
-    """
-
-    campaign: object
-    scheduler: str
-    workers: int | None
-    timeout: float
-    loads_from_dynamics: bool
-    hook_angle_source: str
-    scheduler_cell: str = "(default)"
 
 
 #: A Dask scheduler address: ``[protocol://]host[:port]``.
@@ -137,7 +110,7 @@ def list_parameter(params, name):
         if kind != "dimensionless" and not unit.strip():
             raise params.reader.error(f"{name!r} needs a unit in its unit column, e.g. "
                                       f"{spec.unit!r}", None, STUDY_SHEET, where)
-    with at_cell(params.reader.file, STUDY_SHEET, where, unit):  # the unit cell
+    with located(Place(params.reader.file, STUDY_SHEET, where, unit)):  # the unit cell
         factor = si_factor(unit, kind)
     values = []
     for item in items:
@@ -170,31 +143,31 @@ def read_system(reader, params, study):
     if airframe.hardpoints.chute is None:
         raise reader.error("the campaign needs a Hardpoints row of kind 'chute' (the parachute "
                            "attachment)", sheet="Hardpoints", cell="B1")
-    fuselage = read_fuselage_aero(reader, params, study.points)
-    fin = read_fin_aero(reader, params, study.points)
+    fuselage = read_fuselage_aero(reader, params, study.source.points)
+    fin = read_fin_aero(reader, params, study.source.points)
     if fuselage is None and fin is None:
         raise reader.error("the campaign needs a FuselageAero or a FinAero sheet",
                            sheet="FuselageAero")
     chute = read_parachute(reader, params, 1.0)
     if not reader.has_sheet("ParachuteCD"):
         chute = replace(chute, cd=extended_cd_table())
-    with params.at("campaign canopy mass"):
+    with located(params, default="campaign canopy mass"):
         holder = HingedParachute(chute, params("campaign canopy mass"))
-    with located(file, "MassItems"):
+    with located(Place(file, "MassItems")):
         body = RigidBody.from_mass_items(airframe.mass_items)
     lengths = list_parameter(params, "campaign cable lengths")
     for length in lengths:  # each checked at the list's cell, in the list's unit
-        rule = parachute_reach_rule(reader, params, study.points, airframe.hardpoints,
+        rule = parachute_reach_rule(reader, params, study.source.points, airframe.hardpoints,
                                     chute.line_length, length,
                                     params.unit("campaign cable lengths"))
         if rule is not None:
             raise params.error("campaign cable lengths", rule)
     length = lengths[0]
-    with params.at("campaign cable EA"):
+    with located(params, default="campaign cable EA"):
         cable = Cable(length if length > 0 else 1.0, params("campaign cable EA"),
                       params("campaign cable damping ratio"))
     surfaces = () if fin is None else (LiftingSurface.from_fin(fin),)
-    with params.at("campaign cable lengths"):
+    with located(params, default="campaign cable lengths"):
         return SlingSystem(body, airframe.hardpoints, cable, fuselage, surfaces, holder,
                            name=str(params("study name")))
 
@@ -207,7 +180,7 @@ def _masses(reader):
     t = reader.table(_SPEC["CampaignMasses"])
     out = []
     for i in range(len(t)):
-        with at_row(t, "mass", i):
+        with located(t, default="mass", index=i):
             out.append(MassCase(t["mass case"][i], t["mass"][i]))
     names = [m.name for m in out]
     for i, n in enumerate(names):
@@ -226,7 +199,7 @@ def _rows(reader, params, study, system, masses):
         for column in ("area factor", "airspeed EAS", "cable length"):
             if not t[column][i] > 0:
                 raise t.error(column, i, f"{column} must be > 0")
-        rule = parachute_reach_rule(reader, params, study.points, study.airframe.hardpoints,
+        rule = parachute_reach_rule(reader, params, study.source.points, study.airframe.hardpoints,
                                     system.parachute.parachute.line_length,
                                     t["cable length"][i], t.units.get("cable length"))
         if rule is not None:
@@ -271,10 +244,9 @@ def read(reader, params, study):
 
     file = reader.file
 
-    at = params.at
 
     system = read_system(reader, params, study)
-    with at("campaign carrier mass"):
+    with located(params, default="campaign carrier mass"):
         carrier = FreeCarrier(params("campaign carrier mass"),
                               params("campaign carrier drag area"))
     setup = CampaignSetup(system, carrier)
@@ -289,7 +261,7 @@ def read(reader, params, study):
         values = list_parameter(params, name)
         if field == "carriers":
             values = [v.lower() for v in values]
-        with at(name):
+        with located(params, default=name):
             Factors(**{field: tuple(values)})  # each list checked at its own cell
         lists[field] = tuple(values)
     factors = Factors(masses=masses, **lists)
@@ -297,7 +269,7 @@ def read(reader, params, study):
     no_chute_runs = _no_parachute_runs(params)
     if kind == "full factorial":
         _check_matrix_size(params, factors, len(masses), no_chute_runs)
-    with at("campaign cable lengths"):
+    with located(params, default="campaign cable lengths"):
         for length in factors.cable_lengths:
             system.with_(cable=replace(system.cable, length=length))
     rows, sheet = None, STUDY_SHEET
@@ -309,15 +281,16 @@ def read(reader, params, study):
         sheet = table.sheet
         lengths = rows["cable length [m]"].to_numpy()
         for length in np.unique(lengths):  # each at the first row that gives it
-            with at_row(table, "cable length", int(np.flatnonzero(lengths == length)[0])):
+            first = int(np.flatnonzero(lengths == length)[0])
+            with located(table, default="cable length", index=first):
                 system.with_(cable=replace(system.cable, length=float(length)))
-    with at("campaign run length"):
+    with located(params, default="campaign run length"):
         step = params("campaign time step")
         params.check("campaign time step", step >= 0, "'campaign time step' must be >= 0 "
                      "(0: adaptive)")
         settings = RunSettings(params("campaign run length"), step if step > 0 else None,
                                params("campaign output interval"))
-    with at("campaign minimum yaw damping"):
+    with located(params, default="campaign minimum yaw damping"):
         criteria = SelectionCriteria(params("campaign minimum yaw damping"),
                                      params("campaign maximum yaw half time"))
     runs = (len(rows) if rows is not None else factors.size) + no_chute_runs
@@ -341,7 +314,7 @@ def read(reader, params, study):
                  "'campaign loads margin' must be >= 1")
     no_chute = _no_parachute(params, system, NoParachuteStudy, sample_full_tail_system)
     _check_needs_parachute(params, system, rows, factors)
-    with located(file, sheet):
+    with located(Place(file, sheet)):
         campaign = Campaign(setup, factors, rows, settings, criteria, margin,
                             _map(factors, rows, n_areas, n_speeds), no_chute,
                             chosen or None, name=str(params("study name")),
@@ -369,7 +342,7 @@ def _check_needs_parachute(params, system, rows, factors):
     from slingloads.analyses.campaign import neutral_area_of
 
     speeds = rows["airspeed EAS [m/s]"] if rows is not None else factors.airspeeds
-    with params.at("fin area"):
+    with located(params, default="fin area"):
         neutral = neutral_area_of(system, float(np.max(np.asarray(speeds, float))))
     if neutral.already_stable:
         raise params.error("fin area", "fuselage and fin are already statically stable in yaw "
@@ -432,7 +405,7 @@ def _no_parachute(params, system, study_type, sample):
             raise params.error(name, f"unknown helicopter; valid are {list(SAMPLE_HELICOPTERS)} "
                                "or 'none'", h)
     ramps = list_parameter(params, "campaign no-parachute ramps")
-    with params.at("campaign no-parachute ramps"):
+    with located(params, default="campaign no-parachute ramps"):
         return study_type({h: sample(h, system.cable.length, system.cable.ea)
                            for h in dict.fromkeys(helicopters)}, ramps)
 
@@ -453,3 +426,15 @@ def _map(factors, rows, n_areas, n_speeds):
     v = np.linspace(speeds.min(), speeds.max(), n_speeds) if speeds.max() > speeds.min() else [
         speeds.min()]
     return MapSettings(tuple(a), tuple(v))
+
+
+def locate(err, study, context=None):
+    """``err``, raised while the campaign of ``study`` ran, put at its cell: an error
+    reaching the workbook's own scheduler (``context`` :data:`~slingloads.runs.campaign.
+    SCHEDULER`) at the 'campaign scheduler' cell, with the address as written; any other
+    error unchanged."""
+    if context != SCHEDULER:
+        return err
+    inputs = study.inputs.campaign
+    written = study.source.written.get("campaign scheduler", (inputs.scheduler, None))[0]
+    return place_error(err, Place(study.path, STUDY_SHEET, inputs.scheduler_cell, written))

@@ -1,8 +1,8 @@
 """The campaign report: an Excel workbook, PNG plots and the histories as Parquet.
 
-:func:`compute` runs the campaign read by :mod:`slingloads.io.campaign.reader` on the executor
-the command line or the workbook asks for (a Dask scheduler, local worker processes), with the
-run cache of :mod:`slingloads.io.campaign.cache`. :func:`write` publishes, all at once or not at
+The campaign is run by :func:`slingloads.runs.campaign.run` (on the executor the command line
+or the workbook asks for, with the run cache of :mod:`slingloads.runs.cache`); this module
+only writes its report. :func:`write` publishes, all at once or not at
 all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-campaign.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*
@@ -23,21 +23,15 @@ kt, ft, lb, ft^2, lbf); the Parquet file is SI.
 
 from __future__ import annotations
 
-import contextlib
 import re
-from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
 from slingloads import __version__
 from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
-from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
-from slingloads.io.common.excel import Section, write_workbook
-from slingloads.io.common.figures import drawings, plot_function, png_bytes, start_drawing
-from slingloads.io.common.locate import at_cell
+from slingloads.io.common.excel import Section
+from slingloads.io.common.figures import plot_function, start_drawing
 from slingloads.io.common.ownership import PARQUET_KEY
 from slingloads.io.common.report import (
     check_units,
@@ -45,6 +39,7 @@ from slingloads.io.common.report import (
     explain_infinite,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 
 ANALYSIS = "campaign"
 _PNG_DPI = 90
@@ -75,23 +70,6 @@ _US = {"m/s": (1.0 / KNOT, "kt"), "m": (1.0 / FOOT, "ft"), "kg": (1.0 / POUND, "
 _HEADER = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
 
 
-@dataclass(frozen=True, eq=False)
-class CampaignReport:
-    """The campaign of one workbook and its results.
-
-    Attributes
-    ----------
-    inputs : CampaignInputs
-    result : CampaignResult
-    cache : str
-        Where the run cache is.
-    """
-
-    inputs: object
-    result: object
-    cache: str
-
-
 #: How the campaign's tables write the metrics that have no finite value.
 _INFINITE = {"yaw mode period [s]": "none (aperiodic)",
              "yaw mode time to half amplitude [s]": "none (not damped)",
@@ -120,51 +98,6 @@ def in_units(frame, units):
             out[column] = pd.to_numeric(out[column], errors="coerce") * factor
             renames[column] = f"{match.group('name')} [{unit}]"
     return out.rename(columns=renames)
-
-
-def compute(study):
-    """Run the campaign read from a workbook (module notes).
-
-    The execution options come from ``study.runtime`` (the command line: ``scheduler``,
-    ``workers``, ``cache``, ``timeout``, ``progress``), else from the workbook. The result is
-    also left in ``study.results["campaign"]`` for the loads that follow.
-
-    Returns
-    -------
-    CampaignReport
-
-    Raises
-    ------
-    InputError
-        If the workbook does not ask for the campaign, the scheduler cannot be reached, or a
-        run refuses its inputs.
-    """
-    from slingloads.analyses.campaign import make_executor, run_campaign
-    from slingloads.io.campaign.cache import RunCache, default_cache_dir
-
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the campaign (Study sheet: 'run "
-                         "campaign' is no)", file=study.path, sheet="Study")
-    runtime = getattr(study, "runtime", {}) or {}
-    cache_dir = runtime.get("cache") or default_cache_dir()
-    scheduler = runtime.get("scheduler") or inputs.scheduler
-    workers = runtime.get("workers") or inputs.workers
-    timeout = runtime.get("timeout") or inputs.timeout
-    campaign = inputs.campaign
-    total = campaign.size + (len(campaign.no_parachute.jobs()) if campaign.no_parachute else 0)
-    store = RunCache(cache_dir)
-    written = getattr(study, "written", {}).get("campaign scheduler", (scheduler, None))
-    where = (at_cell(study.path, "Study", inputs.scheduler_cell, written[0])
-             if scheduler and not runtime.get("scheduler") else contextlib.nullcontext())
-    with where:
-        executor = make_executor(scheduler or None, workers, timeout, runs=total)
-    result = run_campaign(campaign, executor=executor, store=store,
-                          progress=runtime.get("progress"))
-    report = CampaignReport(inputs, result, str(cache_dir))
-    if hasattr(study, "results"):
-        study.results[ANALYSIS] = report
-    return report
 
 
 # ------------------------------------------------------------------------------- tables
@@ -377,20 +310,44 @@ def sweep_plots(result):
     return out
 
 
+def _locus(result):
+    """(loci, title) of the stability map's least-damped roots at its highest airspeed and
+    first density altitude, or None without them."""
+    loci = getattr(result.stability, "loci", None)
+    if loci is None or loci.empty:
+        return None
+    speed = loci["airspeed EAS [m/s]"].max()
+    altitude = loci["density altitude [m]"].iloc[0]
+    sel = loci[np.isclose(loci["airspeed EAS [m/s]"], speed)
+               & np.isclose(loci["density altitude [m]"], altitude)]
+    c = result.stability.condition
+    title = (f"{speed / KNOT:.0f} KEAS, {altitude / FOOT:.0f} ft HD, mass {c['mass case']} "
+             f"{c['mass [kg]']:.0f} kg, cable {c['cable length [m]'] / FOOT:.0f} ft, carrier "
+             f"{c['carrier']}:\nleast-damped roots, area {sel['area factor [-]'].min():.3g}-"
+             f"{sel['area factor [-]'].max():.3g} x neutral")
+    return (sel, title)
+
+
 def _figures(report, units):
     """The figures to draw: ``{tag: (title, (plot function, args, kwargs))}``."""
-    (plot_envelope, plot_no_parachute, plot_selection, plot_stability_map,
+    (plot_envelope, plot_no_parachute, plot_root_locus, plot_selection, plot_stability_map,
      plot_sweep) = (  # matplotlib loads where they are drawn
         plot_function("slingloads.io.campaign.plots", name)
-        for name in ("plot_envelope", "plot_no_parachute", "plot_selection",
-                     "plot_stability_map", "plot_sweep"))
+        for name in ("plot_envelope", "plot_no_parachute", "plot_root_locus",
+                     "plot_selection", "plot_stability_map", "plot_sweep"))
     r = report.result
     figs = {"selection": ("Parachute selection", (plot_selection, (r, units), {}))}
     for tag, runs, factor, title in sweep_plots(r):
         figs[tag] = (f"Sensitivity, {title}", (plot_sweep, (r, runs, factor, title), {}))
     if r.stability is not None:
+        chosen = r.chosen_area_factor * r.neutral.area
         figs["stability-map"] = ("Stability map", (plot_stability_map,
-                                                   (r.stability, r.neutral.area, units), {}))
+                                                   (r.stability, r.neutral.area, units),
+                                                   {"chosen_area": chosen}))
+        locus = _locus(r)
+        if locus is not None:
+            figs["root-locus"] = ("Root locus against the parachute area",
+                                  (plot_root_locus, locus, {}))
     if r.no_parachute is not None:
         figs["no-parachute"] = ("Transport without parachute (paper figures 16-18)",
                                 (plot_no_parachute, (r,), {}))
@@ -461,8 +418,27 @@ def write_histories(result, path):
     return count
 
 
+def _jobs(report, units):
+    return {tag: job for tag, (_, job) in _figures(report, units).items()}
+
+
+def _titles(report):
+    return {tag: title for tag, (title, _) in _figures(report, "SI").items()}
+
+
+def _write_histories(report, path):
+    write_histories(report.result, path)
+
+
+#: The campaign report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="campaign", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_jobs,
+                    titles=_titles, files={"histories.parquet": _write_histories})
+
+
 def write(report, out_dir, stem, units, study, figures=None):
-    """Write the campaign report (module notes) atomically.
+    """Write the campaign report (module notes) atomically
+    (:func:`~slingloads.io.common.report_writer.write_report` of :data:`REPORT`).
 
     Parameters
     ----------
@@ -471,7 +447,7 @@ def write(report, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"``.
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -480,23 +456,4 @@ def write(report, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files or [study.path]
-    figs = _figures(report, units)
-    names = ([f"{stem}-campaign.xlsx", f"{stem}-campaign-histories.parquet"]
-             + [f"{stem}-campaign-{tag}.png" for tag in figs])
-    check_outputs(out_dir, names, inputs)
-    jobs = {tag: job for tag, (_, job) in figs.items()}
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS,
-                           files=[f"{stem}-campaign-histories.parquet",
-                                  *(f"{stem}-campaign-{tag}.png" for tag in pngs)])
-        sheets = _sheets(report, units, study.warnings)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-campaign.xlsx"), sheets,
-                           {figs[tag][0]: png for tag, png in pngs.items()}, info=info)
-            write_histories(report.result, out.path(f"{stem}-campaign-histories.parquet"))
-            for tag, png in pngs.items():
-                out.path(f"{stem}-campaign-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(REPORT, report, out_dir, stem, units, study, figures)

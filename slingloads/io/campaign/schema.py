@@ -186,3 +186,6 @@ SHEETS = (
 )
 
 SECTION = Section("campaign", parameters=PARAMETERS, sheets=SHEETS)
+
+#: The Study parameter behind each setting the analysis may refuse while computing (none).
+COMPUTE_FIELDS = {}

@@ -11,8 +11,6 @@ sheet, and the airframe's aerodynamic sheets (``FuselageAero``, ``FinAero``,
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from slingloads.analyses.chute_sizing import MetricSettings
@@ -25,9 +23,8 @@ from slingloads.io.chute.schema import (
     SHEETS,
     WAKE_SOURCES,
 )
-from slingloads.io.common.locate import column_quantity
+from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import located
 from slingloads.limits import (
     MAX_CHUTE_REFERENCE_RUNS,
     MAX_CHUTE_RUN_STEPS,
@@ -41,64 +38,10 @@ from slingloads.models.gusts import GUST_SHAPES, DrydenTurbulence, make_gust
 from slingloads.models.integration import SOLVE_IVP_METHODS, SolverSettings
 from slingloads.models.wake import BluffBodyWake, TabulatedWake
 from slingloads.models.yaw_dynamics import YawModel
+from slingloads.runs.chute_sizing import ChuteSizingInputs
 
 ANALYSIS = "chute sizing"
 HARDPOINT_SHEETS = {s.name: s for s in _AIRFRAME_SHEETS}
-
-
-@dataclass(frozen=True)
-class ChuteSizingInputs:
-    """Everything the parachute sizing needs, in SI.
-
-    Attributes
-    ----------
-    model : YawModel
-        Fuselage, fin, hardpoints, yaw inertia about the suspension axis, condition, and a
-        parachute template (its CD and wake ratio; the area is swept).
-    fit_range : tuple of float
-        Sideslip range of the linearisation. [rad]
-    wake : TabulatedWake or BluffBodyWake
-    target : float
-        Dynamic-pressure ratio the canopy must see. [-]
-    cable_length : float or None
-        Carrier cable; None skips the check. [m]
-    margin : float
-        Required excess of the cable over the line. [-]
-    gusts : tuple
-        Gust shapes of the sweep.
-    settings : SolverSettings
-    metrics : MetricSettings
-        With the sideslip limit past which no run is called stable.
-    factors : ndarray
-        Swept areas over the neutral area. [-]
-    recommended_factor : float
-        Recommended area over the neutral area. [-]
-    integrator : str
-        ``"dopri5"``, ``"rk4"`` or ``"solve_ivp"`` (see
-        :func:`slingloads.analyses.chute_sizing.run_yaw`).
-    inertia_source : str
-        ``"mass items"`` or ``"parameter"``.
-    study_area : float
-        The Study's 'parachute area' (used by the loads; 0 if none). [m^2]
-    study_line : float
-        The Study's 'parachute line length'. [m]
-    """
-
-    model: YawModel
-    fit_range: tuple
-    wake: object
-    target: float
-    cable_length: float | None
-    margin: float
-    gusts: tuple
-    settings: SolverSettings
-    metrics: MetricSettings
-    factors: np.ndarray
-    recommended_factor: float
-    integrator: str
-    inertia_source: str
-    study_area: float
-    study_line: float
 
 
 def read(reader, params, study):
@@ -109,7 +52,7 @@ def read(reader, params, study):
     reader : WorkbookReader
     params : slingloads.io.common.parameters.StudyParameters
         Study-sheet parameters (SI, with defaults).
-    study : WorkbookStudy
+    study : Study
         The airframe and the hardpoints by kind already read.
 
     Returns
@@ -123,9 +66,9 @@ def read(reader, params, study):
     """
     # ---- condition (IAS taken equal to EAS)
     ias = params.positive("chute sizing airspeed IAS")
-    with params.located({"eas": "chute sizing airspeed IAS",
-                         "density_altitude": "chute sizing density altitude",
-                         "alpha": "chute sizing alpha trim"}):
+    with located(params, {"eas": "chute sizing airspeed IAS",
+                          "density_altitude": "chute sizing density altitude",
+                          "alpha": "chute sizing alpha trim"}):
         condition = FlightCondition(eas=ias,
                                     density_altitude=params("chute sizing density altitude"),
                                     alpha=params("chute sizing alpha trim"))
@@ -133,7 +76,7 @@ def read(reader, params, study):
     params.check("chute sizing linearisation range", half < np.pi / 2,
            "'chute sizing linearisation range' must be below 90 deg")
     # ---- aerodynamics and geometry (the airframe sheets)
-    refs = study.points
+    refs = study.source.points
     fuselage = read_fuselage_aero(reader, params, refs)
     fin = read_fin_aero(reader, params, refs)
     if fuselage is None and fin is None:
@@ -169,8 +112,8 @@ def read(reader, params, study):
             raise params.error("chute sizing yaw inertia source", "the yaw inertia about the "
                                "hub computed from the mass items is 0 (every item on the hub's "
                                "vertical, without Izz): give it with the source 'parameter'")
-    with params.located({"airspeed": "chute sizing airspeed IAS",
-                         "alpha": "chute sizing alpha trim"}, "chute sizing alpha trim"):
+    with located(params, {"airspeed": "chute sizing airspeed IAS",
+                          "alpha": "chute sizing alpha trim"}, default="chute sizing alpha trim"):
         model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute)
     lo, hi = model.beta_range()
     params.check("chute sizing linearisation range", half <= min(-lo, hi),
@@ -198,11 +141,12 @@ def read(reader, params, study):
                 raise reader.error("the wake model needs 'chute sizing wake drag area' > 0 "
                                    "when there is no FuselageAero sheet", 0.0, STUDY_SHEET,
                                    params.where("chute sizing wake drag area"))
-            with params.at("chute sizing alpha trim"):  # the table's drag at the trim alpha
+            # the table's drag at the trim alpha
+            with located(params, default="chute sizing alpha trim"):
                 area = float(fuselage.drag_coefficient(condition.alpha, 0.0)) * fuselage.area
-        with params.at("chute sizing wake coefficient"):
+        with located(params, default="chute sizing wake coefficient"):
             wake = BluffBodyWake(area, k)
-        with params.at("chute sizing target q ratio"):
+        with located(params, default="chute sizing target q ratio"):
             wake.line_length(target)
     cable = params.positive("chute sizing carrier cable length", allow_zero=True)
     margin = params.positive("chute sizing cable margin", allow_zero=True)
@@ -319,7 +263,7 @@ def _wake_table(reader, params, target):
             f"{params.where('chute sizing target q ratio')}): its largest q ratio is this one, "
             f"at {column_quantity(t, 'distance', x[i], 'length')} "
             f"({t.cell('distance', i)}); extend the table downstream"))
-    with located(reader.file, t.sheet):
+    with located(Place(reader.file, t.sheet)):
         return TabulatedWake(x, r, source="ChuteWake sheet")
 
 
@@ -378,7 +322,7 @@ def _turbulence(reader, params, model, onset, t_end):
     params.check("chute sizing turbulence seed", float(seed) == int(seed) and seed >= 0,
                  "'chute sizing turbulence seed' must be a whole number >= 0")
     altitude = params("chute sizing turbulence altitude")
-    with params.at("chute sizing turbulence altitude"):
+    with located(params, default="chute sizing turbulence altitude"):
         gust = DrydenTurbulence.low_altitude(altitude, model.condition.tas, severity,
                                              onset=onset, duration=length, seed=int(seed))
     lo, hi = model.beta_range()
@@ -392,20 +336,26 @@ def _turbulence(reader, params, model, onset, t_end):
     return gust
 
 
+def locate(err, study, context=None):
+    """``err``, raised while the parachute sizing of ``study`` ran, put at its cell (a yaw
+    trim that cannot be found: :func:`trim_error`)."""
+    return trim_error(err, study)
+
+
 def trim_error(err, study):
     """The error to raise for ``err``, raised while the sizing computes: a yaw trim that
     cannot be found (``field = "trim"``: the yawing moment about the hub keeps one sign) is
     put at the hub's y cell, with the hub's position as written and what sets that moment;
     any other error is returned unchanged."""
-    hp_t = getattr(study, "tables", {}).get("Hardpoints")
+    hp_t = study.source.tables.get("Hardpoints")
     if err.field != "trim" or err.cell is not None or hp_t is None:
         return err
-    row = study.points["rows"]["hub"][0]
+    row = study.source.points["rows"]["hub"][0]
     shown = []
     for column in ("x", "y", "z"):
         value, unit = hp_t.shown(column, row)
         shown.append(f"{column} {value}{' ' + unit if unit else ''}")
-    return hp_t.error("y", row, (
+    return place_error(err, find_place(err, hp_t, {"trim": "y"}, index=row), (
         f"{err.rule}; the moment is taken about the rotor hub's vertical (Hardpoints "
         f"{hp_t.cell('x', row)}:{hp_t.cell('z', row)}: {', '.join(shown)}): a hub off the "
         "airframe's plane of symmetry, or FuselageAero / FinAero tables that are not "

@@ -1,9 +1,9 @@
 """The parachute-sizing report: an Excel workbook and PNG plots (paper sections 3.2-4.2).
 
-:func:`compute` runs the sizing on the inputs read by :mod:`slingloads.io.chute.reader`:
-linearisation of the fuselage and fin yawing moments, neutral static area with its breakdown,
-wake ratio and line length with the carrier-cable check, and the 1-DOF sweep of the parachute
-area over the gust shapes. :func:`write` publishes, all at once or not at all
+The sizing is run by :func:`slingloads.runs.chute_sizing.run` (linearisation of the fuselage
+and fin yawing moments, neutral static area with its breakdown, wake ratio and line length
+with the carrier-cable check, and the 1-DOF sweep of the parachute area over the gust
+shapes); this module only writes its report. :func:`write` publishes, all at once or not at all
 (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-chute.xlsx``, print-ready: sheets *Cover* (identification, input file and its
@@ -22,42 +22,28 @@ Lengths, areas, speeds and moments are in the report unit system (``--units``).
 
 from __future__ import annotations
 
-import contextlib
-from dataclasses import dataclass
-
 import numpy as np
 import pandas as pd
 
 from slingloads.analyses.chute_sizing import (
-    line_length,
-    neutral_area,
-    run_yaw,
-    sizing_sweep,
     wake_ratio_at,
 )
 from slingloads.constants import FOOT, POUND_FORCE
-from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
-from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
-    drawings,
     plot_function,
-    png_bytes,
     start_drawing,
-    task_result,
 )
 from slingloads.io.common.report import (
-    check_units,
     convert_columns,
     in_report_units,
     report_unit,
     sample_rows,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 
 ANALYSIS = "chute sizing"
 #: PNG files written, by tag: ``<stem>-chute-<tag>.png``.
@@ -66,6 +52,11 @@ PLOTS = ("linearisation", "static-moments", "wake", "sweep", "histories")
 OUTPUTS = ("{stem}-chute.xlsx", "{stem}-chute-histories.csv",
            *(f"{{stem}}-chute-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 100
+#: Title of each figure on the Plots sheet.
+FIGURE_TITLES = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
+                 "static-moments": "Static yawing moments at the neutral area",
+                 "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
+                 "histories": "Time histories for every gust shape (paper figure 7)"}
 #: Most rows of each table of the Histories sheet (the CSV file keeps every stored sample).
 HISTORY_ROWS = 65
 #: Sideslip interval of the curve tables (Linearisation, StaticMoments) when they are
@@ -88,129 +79,12 @@ CONVENTIONS = (
 )
 
 
-@dataclass(frozen=True)
-class ChuteSizingReport:
-    """Results of the parachute sizing of one workbook.
-
-    Attributes
-    ----------
-    inputs : ChuteSizingInputs
-    static : NeutralAreaResult
-    line : LineLengthResult
-    sweep : SweepResult or None
-        None when fuselage and fin are already statically stable (no positive neutral area).
-    recommended_area : float
-        ``recommended_factor`` x neutral area (0 when already stable). [m^2]
-    study_area_runs : YawRuns or None
-        Every gust at the Study's 'parachute area', the one the loads use (None if it is 0).
-    """
-
-    inputs: object
-    static: object
-    line: object
-    sweep: object
-    recommended_area: float
-    study_area_runs: object = None
-
-    @property
-    def study_area_peak_sideslip(self):
-        """Largest |sideslip| of the gusts at the Study's 'parachute area', and the gust
-        that gives it (NaN, "" without that area). [rad], str"""
-        if self.study_area_runs is None:
-            return float("nan"), ""
-        frame = self.study_area_runs.to_frame()
-        i = int(np.argmax(frame["peak beta [deg]"].to_numpy()))
-        return float(np.radians(frame["peak beta [deg]"].iloc[i])), str(frame["gust"].iloc[i])
-
-    def stability_by_area(self):
-        """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""
-        if self.sweep is None:
-            return pd.DataFrame()
-        frame = self.sweep.to_frame()
-        grouped = frame.groupby("area [m^2]", sort=True)
-        return pd.DataFrame({
-            "area / neutral area [-]": grouped["area / neutral area [-]"].first(),
-            "all gusts stable": grouped["verdict"].agg(lambda v: bool((v == "stable").all())),
-            "worst peak beta [deg]": grouped["peak beta [deg]"].max(),
-            "worst peak psi [deg]": grouped["peak psi [deg]"].max(),
-        }).reset_index()
-
-    @property
-    def smallest_stable_area(self):
-        """Smallest swept area at which every gust run is stable (NaN if none). [m^2]"""
-        table = self.stability_by_area()
-        ok = table[table["all gusts stable"]] if len(table) else table
-        return float(ok["area [m^2]"].min()) if len(ok) else float("nan")
-
-    def history_runs(self):
-        """Indices of the runs at the smallest, recommended and largest swept areas."""
-        if self.sweep is None:
-            return []
-        ratio = self.sweep.runs.areas / self.static.area
-        f = self.inputs.factors
-        chosen = []
-        for target in (f.min(), self.inputs.recommended_factor, f.max()):
-            nearest = ratio[np.argmin(np.abs(ratio - target))]
-            chosen += list(np.nonzero(np.isclose(ratio, nearest))[0])
-        return sorted(set(chosen))
-
-
 #: How the paper found the parachute area (the Summary's note on the sizing).
 PAPER_NOTE = ("As the paper found it: its 1-DOF model (section 4.2) confirmed the neutral "
               "static area; the complete multibody model (4.5) found it insufficient, the "
               "shortfall coming from the inter-axis coupling of helicopter and parachute (the "
               "carrier's coupling was negligible). This sizing reproduces 4.1-4.2 only; the "
               "factor 1.4 is the paper's optimum for its own aircraft, not this one's.")
-
-
-def compute(study):
-    """Run the parachute sizing read from a workbook.
-
-    Parameters
-    ----------
-    study : WorkbookStudy
-        With ``study.inputs["chute sizing"]`` (:class:`ChuteSizingInputs`).
-
-    Returns
-    -------
-    ChuteSizingReport
-
-    Raises
-    ------
-    InputError
-        If the workbook does not ask for the sizing, or the analysis refuses its inputs (the
-        file is named).
-    """
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the parachute sizing (Study sheet: "
-                         "'run chute sizing' is no)", file=study.path, sheet="Study")
-    with located(study.path), _trim_located(study):
-        static = neutral_area(inputs.model, inputs.fit_range)
-        line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
-        sweep = None
-        if not static.already_stable:
-            sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
-                                 inputs.fit_range, metrics=inputs.metrics, static=static,
-                                 integrator=inputs.integrator)
-        at_study = None
-        if inputs.study_area > 0:
-            at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
-                               inputs.fit_range, inputs.metrics, inputs.integrator)
-    recommended = inputs.recommended_factor * static.area if sweep is not None else 0.0
-    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study)
-
-
-@contextlib.contextmanager
-def _trim_located(study):
-    """Locate a yaw trim that cannot be found at the hub's cells (see
-    :func:`slingloads.io.chute.reader.trim_error`)."""
-    try:
-        yield
-    except InputError as err:
-        from slingloads.io.chute.reader import trim_error
-
-        raise trim_error(err, study) from None
 
 
 # ------------------------------------------------------------------------------- tables
@@ -524,9 +398,25 @@ def histories_csv(result):
     return csv_bytes(history_csv_frame(result))
 
 
+def _titles(result):
+    return FIGURE_TITLES
+
+
+def _histories_csv_if_swept(result):
+    """The bytes of ``<stem>-chute-histories.csv``, or None without a sweep."""
+    return histories_csv(result) if result.sweep is not None else None
+
+
+#: The sizing report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="chute", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
+                    titles=_titles, data={"histories.csv": _histories_csv_if_swept})
+
+
 def write(result, out_dir, stem, units, study, figures=None):
     """Write ``<stem>-chute.xlsx``, ``<stem>-chute-histories.csv`` and ``<stem>-chute-*.png``
-    atomically.
+    atomically (:func:`~slingloads.io.common.report_writer.write_report` of
+    :data:`REPORT`).
 
     Parameters
     ----------
@@ -535,7 +425,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"`` (lengths in in, areas in ft^2, speeds in kt, moments in lbf in).
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -544,29 +434,4 @@ def write(result, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files
-    names = ([f"{stem}-chute.xlsx", f"{stem}-chute-histories.csv"]
-             + [f"{stem}-chute-{tag}.png" for tag in PLOTS])
-    check_outputs(out_dir, names, inputs)
-    titles = {"linearisation": "Yawing-moment linearisation (paper figures 4-5)",
-              "static-moments": "Static yawing moments at the neutral area",
-              "wake": "Wake ratio and line length", "sweep": "Sweep metrics against area",
-              "histories": "Time histories for every gust shape (paper figure 7)"}
-    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        sheets = _sheets(result, units, study.warnings)
-        files = ([f"{stem}-chute-histories.csv"] if result.sweep is not None else []) + [
-            f"{stem}-chute-{tag}.png" for tag in pngs]
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS, files=files)
-        csv = (task_result(figures, "histories.csv", histories_csv, result)  # (before the
-               if result.sweep is not None else None)  # figures are awaited: see lateral)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-chute.xlsx"), sheets,
-                           {titles[t]: png for t, png in pngs.items()}, info=info)
-            if csv is not None:
-                out.path(f"{stem}-chute-histories.csv").write_bytes(csv)
-            for tag, png in pngs.items():
-                out.path(f"{stem}-chute-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(REPORT, result, out_dir, stem, units, study, figures)

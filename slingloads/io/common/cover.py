@@ -144,13 +144,13 @@ class ReportInfo:
 
 
 def report_info(study, *, title, analysis, units, conventions=(), files=()):
-    """The :class:`ReportInfo` of a report of a workbook's study.
+    """The :class:`ReportInfo` of a report of a study.
 
     Parameters
     ----------
-    study : WorkbookStudy
-        Gives the study name, the input file, its SHA-256, the run date and the free fields
-        project, document number, author and checker.
+    study : Study
+        Gives the study name and, from its source, the input file, its SHA-256, the run date
+        and the free fields project, document number, author and checker.
     title, analysis : str
     units : str
         ``"SI"`` or ``"US"``.
@@ -160,15 +160,28 @@ def report_info(study, *, title, analysis, units, conventions=(), files=()):
     -------
     ReportInfo
     """
-    ident = getattr(study, "identification", {}) or {}
+    source = study.source
+    ident = source.identification
     return ReportInfo(
         title=title, analysis=analysis, study=study.name,
-        input_name=Path(study.path).name, input_sha256=study.sha256,
-        input_modified=file_modified(study.path), units=unit_system_text(units),
-        run_date=getattr(study, "run_date", None) or now_stamp(),
+        input_name=Path(source.path).name, input_sha256=source.sha256,
+        input_modified=file_modified(source.path), units=unit_system_text(units),
+        run_date=source.run_date or now_stamp(),
         project=ident.get("project", ""), document=ident.get("document number", ""),
         author=ident.get("author", ""), checker=ident.get("checker", ""),
         conventions=tuple(conventions), files=tuple(files))
+
+
+def input_digest(study):
+    """What a report is computed from: input file, SHA-256, study, analyses, version, and
+    the warnings on the inputs (``{item: entry}``)."""
+    source = study.source
+    out = {"input workbook": Path(source.path).name, "SHA-256": source.sha256,
+           "study": study.name, "analyses": ", ".join(study.asked),
+           "slingloads version": slingloads.__version__}
+    for k, text in enumerate(source.warnings, start=1):
+        out[f"warning {k}"] = text
+    return out
 
 
 def info_from_digest(digest, *, title, analysis, study, units, conventions=(), files=()):

@@ -1,16 +1,42 @@
-"""The Study sheet's parameters as the readers use them: SI values with defaults, their cells,
-and the checks every reader makes (range, choice), each failure located at its cell with the
-value as the user wrote it and its unit."""
+"""The Study sheet: its parameters read, and used by the readers as SI values with defaults
+and cells.
+
+What this module guarantees: every row of the Study sheet names a known parameter once
+(a renamed one is refused with its new name, an unknown one with the closest valid names),
+with its value checked as its kind requires (:mod:`slingloads.io.common.values`) in the
+unit written in its unit cell; :class:`StudyParameters` gives each value in SI, or its default,
+with the cell it came from, and every check a reader makes on it (range, choice) fails at that
+cell with the value as the user wrote it and its unit."""
 
 from __future__ import annotations
 
-import contextlib
+from typing import NamedTuple
 
 import numpy as np
 
-from slingloads.errors import InputError
+from slingloads.io.common.locate import Place, StudyCells, located, quantity
 from slingloads.io.common.schema import FLAG, INTEGER, STUDY_SHEET, TEXT
+from slingloads.io.common.table import cell_name
 from slingloads.io.common.units import si_factor
+from slingloads.io.common.values import (
+    FORMULA_HINT,
+    as_text,
+    check_quantity,
+    echo,
+    parse_flag,
+    parse_number,
+    parse_text,
+)
+from slingloads.limits import MAX_STUDY_ROWS, MAX_TEXT_CHARS
+
+
+class ParameterValue(NamedTuple):
+    """A Study-sheet parameter as read: SI value, cell, value as written, unit as written."""
+
+    value: object
+    cell: str
+    raw: object
+    unit: str
 
 
 class StudyParameters:
@@ -29,7 +55,11 @@ class StudyParameters:
     def __init__(self, reader, specs):
         self.reader = reader
         self.specs = specs
-        self.given = reader.parameters(specs)
+        self.given = read_parameters(reader, specs)
+        #: Where an error about a parameter is located: ``located(params, default="fin area")``
+        #: (:func:`slingloads.io.common.locate.located`).
+        self.places = StudyCells(reader.file, {k: v.cell for k, v in self.given.items()},
+                                 {k: (v.raw, v.unit) for k, v in self.given.items()}, specs)
 
     def __call__(self, name):
         key = name.lower()
@@ -93,38 +123,100 @@ class StudyParameters:
         self.check(name, ok, f"{name!r} must be {'>= 0' if allow_zero else '> 0'}")
         return float(value)
 
-    def at(self, name):
-        """Locate an :class:`InputError` a model raises inside (one naming no cell yet) at
-        the cell of parameter ``name``, with its value as typed and its unit in place of the
-        model's SI value (see :mod:`slingloads.io.common.locate`)."""
-        return self.located({}, name)
-
     def quantity(self, name, si_value, kind=None, digits=4):
         """An SI value in the unit of parameter ``name`` as the user wrote it (its default
         unit when the row is absent), for a message: ``"54.3 ft"``."""
-        from slingloads.io.common.locate import quantity
-
         return quantity(si_value, self.unit(name), kind or self.specs[name.lower()].kind,
                         digits)
 
-    @contextlib.contextmanager
-    def located(self, fields, default=None):
-        """Locate an :class:`InputError` a model raises on parameter values.
 
-        Parameters
-        ----------
-        fields : dict
-            Model argument (the error's ``field``) -> parameter name.
-        default : str, optional
-            Parameter whose cell takes an error naming no known field (else the sheet).
-        """
-        try:
-            yield
-        except InputError as err:
-            if err.cell is not None:
-                raise
-            name = fields.get(err.field, default)
-            if name is None:
-                raise err.located(file=self.reader.file, sheet=STUDY_SHEET) from None
-            raise err.located(file=self.reader.file, sheet=STUDY_SHEET, cell=self.where(name),
-                              value=self.raw(name), unit=self.unit(name)) from None
+def read_parameters(reader, known, sheet=STUDY_SHEET):
+    """Read the ``Study`` sheet of ``reader`` (a
+    :class:`~slingloads.io.common.workbook.WorkbookReader`): ``{name: ParameterValue}`` for
+    every row present.
+
+    ``known`` gives every valid :class:`~slingloads.io.common.schema.Parameter` by
+    lower-case name (:func:`slingloads.io.analyses.all_parameters`).
+    """
+    rows = reader.rows(sheet, MAX_STUDY_ROWS)
+    header = rows[0][1] if rows and rows[0][0] == 1 else {}
+    for col, title in enumerate(("parameter", "value", "unit"), start=1):
+        got = header.get(col)
+        text = as_text(got).strip().lower() if got is not None else ""
+        if text != title:
+            raise reader.error(f"the {sheet} sheet needs the header 'parameter | value | "
+                               f"unit' in row 1; column {col} should be {title!r}",
+                               echo(got), sheet, cell_name(1, col))
+    out = {}
+    for r, row in rows[1:]:
+        stray = next((c for c in sorted(row) if c not in header), None)
+        if stray is not None:
+            raise reader.error("value in a column without a header (give the column a "
+                               "header, e.g. 'notes', or clear the cell)", echo(row[stray]),
+                               sheet, cell_name(r, stray))
+        name, raw, unit = row.get(1), row.get(2), row.get(3)
+        if name is None:
+            if raw is not None or unit is not None:
+                raise reader.error("value without a parameter name", echo(
+                    raw if raw is not None else unit), sheet, cell_name(r, 1))
+            continue
+        key = as_text(name).strip().lower()
+        if key not in known:
+            renamed = next((p for p in known.values()
+                            if key in (f.lower() for f in p.former)), None)
+            if renamed is not None:
+                raise reader.error(f"parameter renamed: use {renamed.name!r} ({renamed.help})",
+                                   echo(name), sheet, cell_name(r, 1))
+            raise reader.error(_unknown_parameter(key, known), echo(name), sheet,
+                               cell_name(r, 1))
+        if key in out:
+            raise reader.error("parameter appears twice", echo(name), sheet,
+                               cell_name(r, 1))
+        spec = known[key]
+        where = cell_name(r, 2)
+        unit_text = "" if unit is None else as_text(unit)
+        if raw is None:
+            if spec.kind == TEXT:
+                out[key] = ParameterValue("", where, raw, unit_text)
+                continue
+            raise reader.error(f"empty value for parameter {spec.name!r} (delete the row "
+                               f"to use the default {spec.default!r} {spec.unit})"
+                               f"{FORMULA_HINT}", None, sheet, where)
+        value = _parameter_value(reader, spec, raw, unit_text, sheet, r)
+        out[key] = ParameterValue(value, where, raw, unit_text.strip())
+    return out
+
+
+def _parameter_value(reader, spec, raw, unit_text, sheet, r):
+    where = cell_name(r, 2)
+    # a text parameter with a unit is a list of numbers in that unit (read by its analysis)
+    unit_free = spec.kind in (FLAG, INTEGER) or (spec.kind == TEXT and not spec.unit)
+    if unit_free and unit_text.strip() not in ("", "-"):
+        raise reader.error(f"parameter {spec.name!r} takes no unit (leave the unit cell "
+                           "empty)", echo(unit_text), sheet, cell_name(r, 3))
+    if spec.kind == TEXT:
+        return parse_text(raw, spec.name, MAX_TEXT_CHARS, reader.error, sheet, where)
+    if spec.kind == FLAG:
+        return parse_flag(raw, spec.name, reader.error, sheet, where, None)
+    number = parse_number(raw, spec.name, reader.error, sheet, where)
+    if spec.kind != "dimensionless" and spec.kind != INTEGER and not unit_text.strip():
+        raise reader.error(f"parameter {spec.name!r} needs a unit, e.g. {spec.unit!r}",
+                           None, sheet, cell_name(r, 3))
+    factor = 1.0
+    if spec.kind != INTEGER:
+        with located(Place(reader.file, sheet, cell_name(r, 3))):
+            factor = si_factor(unit_text, spec.kind)
+    return check_quantity(number, raw, spec.kind, factor, unit_text.strip(), spec.bounds,
+                          spec.unit, spec.name, reader.error, sheet, where)
+
+
+def _unknown_parameter(key, known):
+    """The rule broken by an unknown Study parameter: the closest valid names, or where the
+    whole list is (there are too many to quote)."""
+    import difflib
+
+    close = difflib.get_close_matches(key, list(known), n=3, cutoff=0.6)
+    hint = f"did you mean {' or '.join(repr(known[c].name) for c in close)}? " if close else ""
+    return (f"unknown parameter; {hint}the valid parameters are on the Study sheet of "
+            f"'slingloads template' and in docs/ ({len(known)} in all)")
+

@@ -116,8 +116,8 @@ def digest_frame(inputs_digest):
     Parameters
     ----------
     inputs_digest : dict or pandas.DataFrame or None
-        ``{item: entry}`` (e.g. :meth:`WorkbookStudy.digest
-        <slingloads.io.study.WorkbookStudy.digest>`), or a ready table.
+        ``{item: entry}`` (e.g. :func:`slingloads.io.common.cover.input_digest`), or a ready
+        table.
 
     Returns
     -------
@@ -141,7 +141,7 @@ def warning_sections(warnings):
     Parameters
     ----------
     warnings : sequence of str
-        :attr:`WorkbookStudy.warnings <slingloads.io.study.WorkbookStudy.warnings>`.
+        :attr:`Source.warnings <slingloads.runs.study.Source.warnings>`.
 
     Returns
     -------

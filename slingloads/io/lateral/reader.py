@@ -6,14 +6,12 @@ It reads the Study parameters of :mod:`slingloads.io.lateral.schema`, the sheets
 ``LateralMotions``, ``LateralRopes``, and the optional ``LateralHistory`` (or CSV files named
 in ``LateralMotions``) and ``LateralBodies``; without ``LateralBodies`` the one body comes from
 the ``MassItems`` and the ``Hardpoints`` hub. For the link to the loads it keeps the loads
-study (``study.loads``, or one built from the same workbook when only the lateral study was
+study (``study.inputs.loads``, or one built from the same workbook when only the lateral study was
 asked for). Every value is SI after reading; every bad value raises
 :class:`~slingloads.errors.InputError` naming the file, sheet, cell, value and rule.
 """
 
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 from openpyxl.utils import get_column_letter
@@ -27,9 +25,10 @@ from slingloads.analyses.lateral_damping import (
 from slingloads.errors import InputError
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
-from slingloads.io.common.locate import at_cell, at_row, column_quantity
+from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
+from slingloads.io.common.referenced import csv_columns
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.common.table import check_unique
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
     MIN_ROLL_GYRATION,
@@ -59,6 +58,7 @@ from slingloads.models.carrier_motion import (
 from slingloads.models.flight import FlightCondition
 from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
+from slingloads.runs.lateral import LateralInputs
 
 ANALYSIS = "lateral"
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
@@ -69,49 +69,6 @@ STEP_LAWS = {"quintic step": QuinticStep, "cycloidal step": CycloidalStep}
 _SPEC = {s.name: s for s in SHEETS}
 
 
-@dataclass(frozen=True)
-class LateralInputs:
-    """Everything the lateral study needs, in SI.
-
-    Attributes
-    ----------
-    bodies : tuple of SlungBody
-    body_source : str
-        ``"LateralBodies"`` or ``"MassItems"``.
-    rope_lengths : tuple of float
-        [m]
-    motions : tuple
-        Carrier motions (:mod:`slingloads.models.carrier_motion`).
-    motion_ids : tuple of str
-        The LateralMotions ids, one per motion.
-    margin : float
-        Design-angle margin, >= 1. [-]
-    cable_ea : float or None
-        None: rigid rope. [N]
-    damping : LateralDamping
-        From the parameters or derived from the aerodynamic tables.
-    ranges : ParameterRanges
-        Uncertainty of roll inertia, CG below hub and rope length.
-    solver : SolverSettings
-        Run length ``t_end`` and RK4 ``step`` of the sweep (None: automatic), and the
-        solve_ivp settings of the critical case's time-history re-run.
-    loads : LoadsStudy or None
-        The loads study of the workbook (for the hook cases at the recommended angle).
-    """
-
-    bodies: tuple
-    body_source: str
-    rope_lengths: tuple
-    motions: tuple
-    motion_ids: tuple
-    margin: float
-    cable_ea: float | None
-    damping: LateralDamping
-    ranges: ParameterRanges
-    solver: SolverSettings
-    loads: object
-
-
 def read(reader, params, study):
     """Build :class:`LateralInputs` from the workbook.
 
@@ -120,7 +77,7 @@ def read(reader, params, study):
     reader : WorkbookReader
     params : slingloads.io.common.parameters.StudyParameters
         Study-sheet parameters (SI, with defaults).
-    study : WorkbookStudy
+    study : Study
         The airframe (mass items, hub) and the loads study if it was built.
 
     Returns
@@ -156,13 +113,13 @@ def read(reader, params, study):
                             step=step if step > 0 else None, output_interval=output,
                             method=method, rtol=rtol, atol=min(1e-10, rtol * 1e-2))
     ropes = _ropes(reader)
-    if hasattr(study, "tables"):  # to locate the errors found while computing
-        study.tables["LateralRopes"] = reader.table(_SPEC["LateralRopes"])
+    # to locate the errors found while computing
+    study.source.tables["LateralRopes"] = reader.table(_SPEC["LateralRopes"])
     bodies, source = _bodies(reader, study)
     histories = _histories(reader) if reader.has_sheet("LateralHistory") else {}
     motions, ids = _motions(reader, histories)
     _check_work(reader, params, len(motions), len(ropes), len(bodies), t_end, step, output)
-    loads = study.loads
+    loads = study.inputs.loads
     if loads is None:
         with located(reader.file):
             loads = loads_reader.read(reader, params, study)
@@ -184,16 +141,16 @@ def _damping(reader, params, study):
     for name, value in (("lateral damping", lateral), ("lateral roll damping", roll)):
         params.check(name, value == 0, f"{name!r} is used only with 'lateral damping source' "
                      "= parameters; leave it 0 with 'aerodynamic tables'")
-    with params.located({"eas": "lateral airspeed EAS",
-                         "density_altitude": "lateral density altitude"}):
+    with located(params, {"eas": "lateral airspeed EAS",
+                          "density_altitude": "lateral density altitude"}):
         condition = FlightCondition(speed, params("lateral density altitude"))
-    fuselage = read_fuselage_aero(reader, params, study.points)
-    fin = read_fin_aero(reader, params, study.points)
+    fuselage = read_fuselage_aero(reader, params, study.source.points)
+    fin = read_fin_aero(reader, params, study.source.points)
     if fuselage is None and fin is None:
         raise params.error("lateral damping source", "'aerodynamic tables' needs a "
                            "FuselageAero or a FinAero sheet", "aerodynamic tables")
     hardpoints = study.airframe.hardpoints
-    with located(reader.file, "FuselageAero" if fuselage is not None else "FinAero"):
+    with located(Place(reader.file, "FuselageAero" if fuselage is not None else "FinAero")):
         return aerodynamic_damping(condition, hardpoints.hub, hardpoints.mast_axis,
                                    fuselage, fin)
 
@@ -250,6 +207,13 @@ def _ropes(reader):
     return tuple(float(x) for x in t["rope length"])
 
 
+def locate(err, study, context=None):
+    """``err``, raised while the lateral study of ``study`` ran, put at its cell: with the
+    sweep as ``context``, an error of the critical case's re-run (:func:`run_case_error`);
+    any other error unchanged."""
+    return err if context is None else run_case_error(err, study, context)
+
+
 def run_case_error(err, study, result):
     """The error to raise for ``err``, raised by the time-history re-run of the study's
     critical case (:meth:`~slingloads.analyses.lateral.LateralStudy.run_case`).
@@ -259,10 +223,10 @@ def run_case_error(err, study, result):
     length, as written, with the period of the case's fastest mode and the run length, and
     names the tolerance; any other error is returned unchanged.
     """
-    ropes = getattr(study, "tables", {}).get("LateralRopes")
+    ropes = study.source.tables.get("LateralRopes")
     if err.field != "rtol" or err.cell is not None or ropes is None:
         return err
-    inputs = study.inputs[ANALYSIS]
+    inputs = study.inputs.lateral
     k = result.critical_index
     pendulum, motion = result.pendulums[k], result.motions[k]
     row = [float(v) for v in inputs.rope_lengths].index(float(result.nominal_rope[k]))
@@ -271,9 +235,9 @@ def run_case_error(err, study, result):
     fastest = float(np.min(periods[periods > 0])) if np.any(periods > 0) else np.inf
     spread = f" x {factor:.4g} (rope length spread)" if factor != 1 else ""
     name = "lateral history rtol"
-    rtol = study.written.get(name, (inputs.solver.rtol, None))[0]
-    where = study.cells.get(name, "(default)")
-    return ropes.error("rope length", row, (
+    rtol = study.source.written.get(name, (inputs.solver.rtol, None))[0]
+    where = study.source.cells.get(name, "(default)")
+    return place_error(err, find_place(err, ropes, {"rtol": "rope length"}, index=row), (
         f"too much work: the time-history re-run of the critical case (case {k + 1}: body "
         f"{pendulum.body.name!r}, motion {inputs.motion_ids[_motion_index(inputs, motion)]!r}, "
         f"this rope length{spread}) needs more than {err.value:,} solver evaluations (limits "
@@ -302,7 +266,7 @@ def _bodies(reader, study):
                           f"{MIN_ROLL_GYRATION:g} m of a solid cylinder 0.28 m across "
                           "(helicopters: about 1 m): check the inertia, the mass and their "
                           "units")
-        with at_row(t, "mass", i, fields):
+        with located(t, fields, default="mass", index=i):
             bodies.append(SlungBody(t["mass"][i], t["roll inertia"][i], t["CG below hub"][i],
                                     name))
     return tuple(bodies), "LateralBodies"
@@ -314,20 +278,24 @@ def _airframe_body(reader, study):
     try:
         return airframe_body(study.airframe)
     except InputError as err:
-        if "inertia" in err.rule:
+        if err.field == "roll_inertia":
             items = reader.table(AIRFRAME_SHEETS["MassItems"])
             if items.has("Ixx"):
-                raise items.error("Ixx", 0, err.rule) from None
+                raise place_error(err, find_place(err, items, {"roll_inertia": "Ixx"},
+                                                  index=0)) from None
             cell = f"{get_column_letter(len(items.cells) + 1)}1"
-            raise InputError(f"{err.rule}: give the mass items their own inertias (no Ixx "
-                             "column)", file=reader.file, sheet="MassItems",
-                             cell=cell) from None
+            raise place_error(err, Place(reader.file, "MassItems", cell, None), (
+                f"{err.rule}: give the mass items their own inertias (no Ixx column)")) from None
+        if err.field != "cg_below_hub":
+            raise
         hardpoints = reader.table(AIRFRAME_SHEETS["Hardpoints"])
         rule = err.rule.removesuffix(" [m]")
         if isinstance(err.value, float):  # how far above the hub the CG lies, along the mast
             rule += (f" (the CG lies {column_quantity(hardpoints, 'z', -err.value, 'length')}"
                      " above the hub along the mast)")
-        raise hardpoints.error("z", study.points["rows"]["hub"][0], rule) from None
+        hub = study.source.points["rows"]["hub"][0]
+        raise place_error(err, find_place(err, hardpoints, {"cg_below_hub": "z"}, index=hub),
+                          rule) from None
 
 
 def _histories(reader):
@@ -350,15 +318,15 @@ def _histories(reader):
                 raise t.error("t", idx[k], f"time-history samples must be at least "
                               f"{MIN_SAMPLE_INTERVAL:g} s apart (previous sample at "
                               f"{t.cell('t', idx[k - 1])})")
-        with at_row(t, "t", idx[0]):
+        with located(t, default="t", index=idx[0]):
             out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
     return out
 
 
 def _csv_history(reader, text, t, i):
     where = (t.sheet, t.cell("history", i))
-    columns = reader.csv_columns(text, *where, {"t": "time", "S": "length"},
-                                 max_rows=MAX_HISTORY_SAMPLES)
+    columns = csv_columns(reader, text, *where, {"t": "time", "S": "length"},
+                          max_rows=MAX_HISTORY_SAMPLES)
     time, s = columns["t"], columns["S"]
     name = text.replace("\\", "/").rsplit("/", 1)[-1]
     if time.size < 2:
@@ -379,7 +347,7 @@ def _csv_history(reader, text, t, i):
         raise reader.error(f"CSV {name}: a time history may last at most "
                            f"{MAX_MAGNITUDE_TIME_HISTORY:g} s; this one lasts "
                            f"{time[-1] - time[0]:.6g} s", text, *where)
-    with at_cell(reader.file, *where, text):
+    with located(Place(reader.file, *where, written=text)):
         return TimeHistory(time, s, name=f"CSV {name}")
 
 
@@ -438,7 +406,7 @@ def _motions(reader, histories):
                                    "'amplitude', not both nor neither", None, t.sheet,
                                    t.cell("type", i))
             law = STEP_LAWS[kind]
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 if has_acc:
                     motion = law.from_peak_acceleration(
                         need("acceleration", i, kind, nonzero), duration)
@@ -453,11 +421,11 @@ def _motions(reader, histories):
                 raise reader.error(f"a constant acceleration needs 'then' = one of "
                                    f"{list(THEN)}", then,
                                    t.sheet, t.cell("then", i) if t.has("then") else "A1")
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 motion = ConstantAcceleration(rate, duration, then)
         elif kind == "velocity step":
             unused(("acceleration", "duration", "amplitude", "then", "history"), i, kind)
-            with at_row(t, "type", i):
+            with located(t, default="type", index=i):
                 motion = VelocityStep(need("delta V", i, kind, nonzero))
         else:
             unused(("acceleration", "duration", "amplitude", "then", "delta V"), i, kind)

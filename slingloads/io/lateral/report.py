@@ -1,12 +1,8 @@
 """The lateral-step pendulum report: design angle, its effect on the hook loads, plots.
 
-:func:`compute` runs the study read by :mod:`slingloads.io.lateral.reader` (every motion x
-rope length x body in one vectorised RK4 sweep), re-runs the critical case with
-:func:`scipy.integrate.solve_ivp` for its time histories, computes the natural modes about the
-hanging equilibrium, and, the link to the loads, re-runs the CS-29.865 hook cases at the
-recommended angle and at the 30 deg of CS-29.865
-(:func:`slingloads.analyses.hook_angle.hook_angle_comparison`).
-:func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
+The study is run by :func:`slingloads.runs.lateral.run` (the sweep, the critical case re-run,
+the natural modes and the hook cases at the recommended angle); this module only writes its
+report. :func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-lateral.xlsx``, print-ready: sheets *Cover* (identification, input file and its
   SHA-256, version, sheets, conventions), *Summary* (largest load angle with nominal inputs
@@ -31,31 +27,20 @@ Lengths, forces, moments, masses, speeds and accelerations are in the report uni
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 import pandas as pd
 
 from slingloads.analyses.hook_angle import (
     COMPARISON_ORDER,
     SI_LABELS,
-    HookAngleComparison,
-    hook_angle_comparison,
 )
-from slingloads.analyses.lateral import lateral_study
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
-from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
-from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
-    drawings,
     plot_function,
-    png_bytes,
     start_drawing,
-    task_result,
 )
 from slingloads.io.common.report import (
     check_units,
@@ -67,8 +52,8 @@ from slingloads.io.common.report import (
     sample_rows,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 
 ANALYSIS = "lateral"
 #: The peak hook acceleration of a velocity step, as the Runs sheet writes it (its note says
@@ -80,6 +65,12 @@ PLOTS = ("histories", "max-angle", "sensitivity", "shear")
 OUTPUTS = ("{stem}-lateral.xlsx", "{stem}-lateral-histories.csv",
            *(f"{{stem}}-lateral-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 100
+#: Title of each figure on the Plots sheet.
+FIGURE_TITLES = {"histories": "Critical case: time histories (30 deg line)",
+                 "max-angle": "Largest load angle against carrier acceleration",
+                 "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",
+                 "shear": "Y shear of the hook cases (LIMIT): 30 deg against the recommended "
+                          "angle"}
 #: Most rows of the Histories sheet (the CSV file keeps every sample).
 HISTORY_ROWS = 100
 
@@ -97,97 +88,6 @@ CONVENTIONS = (
     "Carrier motion S: lateral hook displacement, + right. Loads on the LoadsAtAngle sheet are "
     "LIMIT loads (hook cases alone: Nz x weight on the cone, with inertia relief).",
 )
-
-
-@dataclass(frozen=True, eq=False)
-class LateralReport:
-    """Results of the lateral study of one workbook.
-
-    Attributes
-    ----------
-    inputs : LateralInputs
-    study : LateralStudy
-    critical_run : LateralRun
-        The critical case re-run with solve_ivp (time histories).
-    modes : pandas.DataFrame
-        Natural modes of every body x rope length (SI).
-    comparison : HookAngleComparison or None
-        None when the recommended angle is 90 deg or more (no hook cone can be built).
-    """
-
-    inputs: object
-    study: object
-    critical_run: object
-    modes: pd.DataFrame
-    comparison: HookAngleComparison | None
-
-    @property
-    def recommended_angle(self):
-        """[rad]"""
-        return self.study.recommended_angle
-
-    def motion_id(self, index):
-        """LateralMotions id of case ``index`` (0-based)."""
-        n = len(self.inputs.motions)
-        return self.inputs.motion_ids[index % n]
-
-
-def compute(study):
-    """Run the lateral study read from a workbook.
-
-    Parameters
-    ----------
-    study : WorkbookStudy
-        With ``study.inputs["lateral"]``
-        (:class:`~slingloads.io.lateral.reader.LateralInputs`).
-
-    Returns
-    -------
-    LateralReport
-
-    Raises
-    ------
-    InputError
-        If the workbook does not ask for the lateral study, or the analysis refuses its
-        inputs (the file is named).
-    """
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the lateral study (Study sheet: "
-                         "'run lateral' is no)", file=study.path, sheet="Study")
-    with located(study.path):
-        result = lateral_study(inputs.bodies, inputs.rope_lengths, inputs.motions,
-                               margin=inputs.margin, cable_ea=inputs.cable_ea,
-                               damping=inputs.damping, ranges=inputs.ranges,
-                               hook_load_factor=inputs.loads.hook.nz, solver=inputs.solver)
-        try:
-            run = result.run_case()
-        except InputError as err:  # too stiff a case: at the cell of its rope length
-            from slingloads.io.lateral.reader import run_case_error
-
-            raise run_case_error(err, study, result) from None
-        comparison = None
-        if result.recommended_angle < np.pi / 2:
-            comparison = hook_angle_comparison(inputs.loads, result.recommended_angle)
-    return LateralReport(inputs, result, run, _modes(result), comparison)
-
-
-def _modes(result):
-    """Natural modes of the nominal pendulums (every body x rope length)."""
-    frames, seen = [], set()
-    for p, nominal in zip(result.pendulums, result.nominal, strict=True):
-        key = id(p)
-        if not nominal:
-            continue
-        if key in seen:
-            continue
-        seen.add(key)
-        frame = p.linear_modes().to_frame()
-        frame.insert(0, "body", p.body.name)
-        frame.insert(1, "rope length [m]", p.rope_length)
-        frame.insert(2, "rope length [ft]", p.rope_length / FOOT)
-        frames.append(frame)
-    return pd.concat(frames, ignore_index=True)
 
 
 # ------------------------------------------------------------------------------- tables
@@ -501,9 +401,20 @@ def histories_csv(result):
     return csv_bytes(csv_frame(result.critical_run.to_frame()))
 
 
+def _titles(result):
+    return FIGURE_TITLES
+
+
+#: The lateral report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="lateral", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
+                    titles=_titles, data={"histories.csv": histories_csv})
+
+
 def write(result, out_dir, stem, units, study, figures=None):
     """Write ``<stem>-lateral.xlsx``, ``<stem>-lateral-histories.csv`` and
-    ``<stem>-lateral-*.png`` atomically.
+    ``<stem>-lateral-*.png`` atomically (:func:`~slingloads.io.common.report_writer.
+    write_report` of :data:`REPORT`).
 
     Parameters
     ----------
@@ -512,7 +423,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"`` (lengths in in, forces in lbf, moments in lbf in, masses in lb).
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -521,29 +432,4 @@ def write(result, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files
-    names = ([f"{stem}-lateral.xlsx", f"{stem}-lateral-histories.csv"]
-             + [f"{stem}-lateral-{tag}.png" for tag in PLOTS])
-    check_outputs(out_dir, names, inputs)
-    titles = {"histories": "Critical case: time histories (30 deg line)",
-              "max-angle": "Largest load angle against carrier acceleration",
-              "sensitivity": "Sensitivity to roll inertia, CG below hub and rope length",
-              "shear": "Y shear of the hook cases (LIMIT): 30 deg against the recommended "
-                       "angle"}
-    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS,
-                           files=[f"{stem}-lateral-histories.csv",
-                                  *(f"{stem}-lateral-{tag}.png" for tag in pngs)])
-        sheets = _sheets(result, units, study.warnings)
-        csv = task_result(figures, "histories.csv", histories_csv, result)  # (before the
-        # figures are awaited: made here while the helper draws, unless it has made it)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-lateral.xlsx"), sheets,
-                           {titles[t]: png for t, png in pngs.items()}, info=info)
-            out.path(f"{stem}-lateral-histories.csv").write_bytes(csv)
-            for tag, png in pngs.items():
-                out.path(f"{stem}-lateral-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(REPORT, result, out_dir, stem, units, study, figures)

@@ -42,9 +42,8 @@ from slingloads.analyses.fe_loads import HOOK_POINTS, ModelAxes, PointLoadCases
 from slingloads.constants import G0, INCH, POUND_FORCE
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.locate import at_cell
+from slingloads.io.common.locate import Place, located
 from slingloads.io.common.report import digest_frame
-from slingloads.io.common.workbook import located
 
 #: Inertia-relief set-ups of the deck.
 INERTIA_RELIEF = ("accelerations", "inrel")
@@ -267,9 +266,9 @@ class _Locator:
         value as written (when the locations give it) in place of the model's."""
         where = self.locations.get(key) or {}
         if where.get("cell") is not None:
-            return at_cell(None, where.get("sheet"), where["cell"], where.get("value"),
-                           where.get("unit"))
-        return located(**self.get(key))
+            return located(Place(None, where.get("sheet"), where["cell"], where.get("value"),
+                                 where.get("unit")))
+        return located(Place(**self.get(key)))
 
 
 def _choice(value, valid, key, where):

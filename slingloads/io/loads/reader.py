@@ -37,14 +37,16 @@ from slingloads.io.airframe.reader import (
     read_parachute,
 )
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
-from slingloads.io.common.locate import at_row, column_quantity
+from slingloads.io.common.locate import Place, column_quantity, located, place_error
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import check_unique, located
+from slingloads.io.common.table import check_unique
 from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
 from slingloads.io.loads.schema import SHEETS
 from slingloads.limits import MAX_CASE_POINTS, MAX_LOAD_CASES, MAX_SFBM_ROWS
 from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attitude
 from slingloads.models.flight import FlightCondition
+from slingloads.runs.loads import HANDOFF
+from slingloads.runs.study import ReportOptions
 
 _SPEC = {s.name: s for s in SHEETS}
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
@@ -58,7 +60,7 @@ def read(reader, params, study):
     reader : WorkbookReader
     params : StudyParameters
         Study-sheet parameters (SI, with defaults).
-    study : WorkbookStudy
+    study : Study
         The airframe and the hardpoints by kind already read.
 
     Returns
@@ -71,7 +73,7 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule; also when the cases asked for exceed the
         limits of :mod:`slingloads.limits` (checked before anything is computed).
     """
-    airframe, refs = study.airframe, study.points
+    airframe, refs = study.airframe, study.source.points
     parachute = envelope = None
     fuselage = read_fuselage_aero(reader, params, refs)
     fin = read_fin_aero(reader, params, refs)
@@ -95,7 +97,7 @@ def read(reader, params, study):
                            "(FuselageAero or FinAero) and the loads need the envelope's angle-"
                            "of-attack / sideslip points", sheet="AeroEnvelope")
     hook = _hook_options(reader, params)
-    with params.located({"eas": "airspeed EAS", "density_altitude": "density altitude"}):
+    with located(params, {"eas": "airspeed EAS", "density_altitude": "density altitude"}):
         flight = FlightCondition(params("airspeed EAS"), params("density altitude"))
     attitude = _attitude(reader, params, airframe, refs)
     line = params.choice("parachute line direction", CHUTE_LINE_DIRECTIONS)
@@ -103,7 +105,7 @@ def read(reader, params, study):
     listed = _listed_cases(reader, params, hook, envelope, parachute, generate)
     _check_case_count(reader, params, hook, airframe, envelope, parachute, generate, listed)
     previous = _previous(reader) if reader.has_sheet("PreviousEnvelope") else None
-    with located(reader.file, "LoadCases" if listed else STUDY_SHEET):
+    with located(Place(reader.file, "LoadCases" if listed else STUDY_SHEET)):
         return LoadsStudy(airframe, flight, hook, envelope, fuselage, fin, parachute,
                           chute_line=line, attitude=attitude, generate=generate,
                           listed=listed, previous_envelope=previous,
@@ -122,9 +124,9 @@ def _hook_options(reader, params):
         kwargs["lateral_angle"] = None  # 0: the same as 'hook angle from vertical'
     kwargs["cone"] = params.choice("hook cone shape", CONE_SHAPES)
     for arg, name in names.items():
-        with params.at(name):
+        with located(params, default=name):
             HookLoadOptions(**{arg: kwargs[arg]})
-    with params.at("hook azimuths"):
+    with located(params, default="hook azimuths"):
         return HookLoadOptions(**kwargs)
 
 
@@ -154,12 +156,12 @@ def _attitude(reader, params, airframe, refs):
                          f"leave it 0 with {source!r}")
         if source == "hanging":
             _check_hanging(reader, params, airframe, refs)
-        with params.at("attitude"):
+        with located(params, default="attitude"):
             return resolve_attitude(source, airframe)
     for name, value in angles.items():
-        with params.at(name):
+        with located(params, default=name):
             Attitude(**{name.split()[1]: value})
-    with params.at("attitude"):
+    with located(params, default="attitude"):
         attitude = Attitude(angles["attitude pitch"], angles["attitude roll"])
         horizontal_basis(attitude.vertical)
     return attitude
@@ -193,7 +195,7 @@ def _listed_cases(reader, params, hook, envelope, parachute, generate):
         return ()
     t = reader.table(_SPEC["LoadCases"])
     check_unique(reader, t, "id")
-    with params.located({}, "hook azimuths"):
+    with located(params, default="hook azimuths"):
         directions = list(hook_directions(hook)["hook"])
     valid_hooks = [*directions, TOWED, NO_HOOK]
     valid_aero = [*(envelope.ids if envelope is not None else ()), NO_AERO]
@@ -260,10 +262,10 @@ def _check_envelope_in_tables(reader, t, fuselage, fin):
     """Each envelope point must lie inside the aerodynamic tables (no extrapolation)."""
     for i in range(len(t)):
         if fuselage is not None:  # the angle outside the table names its cell
-            with at_row(t, "alpha", i, {"alpha": "alpha", "beta": "beta"}):
+            with located(t, {"alpha": "alpha", "beta": "beta"}, default="alpha", index=i):
                 fuselage.airframe_coefficients(t["alpha"][i], t["beta"][i])
         if fin is not None:
-            with at_row(t, "beta", i):
+            with located(t, default="beta", index=i):
                 fin.force(t["beta"][i], 0.0)
 
 
@@ -295,11 +297,7 @@ def report_options(params, study):
 
     Returns
     -------
-    dict
-        ``{"hull stations": [station id, ...], "hull pairs": [(component, component), ...],
-        "hook angle justification": str, "previous envelope source": str,
-        "sfbm workbook": bool, "nastran": bool, "nastran settings": {...},
-        "nastran locations": {...}}``
+    ReportOptions
     """
     airframe = study.airframe
     ids = list(airframe.station_ids)
@@ -327,10 +325,11 @@ def report_options(params, study):
     if not pairs and params("hull pairs"):
         raise params.error("hull pairs", "no hull pair given (e.g. 'Vy-Mz, Vz-My', or leave "
                            "the cell empty for none)")
-    return {"hull stations": stations, "hull pairs": pairs,
-            "hook angle justification": str(params("hook angle justification") or "").strip(),
-            "previous envelope source": str(params("previous envelope source") or "").strip(),
-            "sfbm workbook": bool(params("SFBM workbook")), **_nastran_options(params, study)}
+    return ReportOptions(
+        hull_stations=stations, hull_pairs=pairs,
+        hook_angle_justification=str(params("hook angle justification") or "").strip(),
+        previous_envelope_source=str(params("previous envelope source") or "").strip(),
+        sfbm_workbook=bool(params("SFBM workbook")), **_nastran_options(params, study))
 
 
 _NASTRAN_IDS = {"first_grid_id": "nastran first grid id",
@@ -340,14 +339,14 @@ _NASTRAN_IDS = {"first_grid_id": "nastran first grid id",
 
 def _nastran_options(params, study):
     """The Study rows 'nastran ...', checked at their cells: ``nastran`` (write the file),
-    ``nastran settings`` (options of :func:`~slingloads.io.loads.nastran.prepare_nastran`)
-    and ``nastran locations`` (the cell of each option and of each listed case id, for the
+    ``nastran_settings`` (options of :func:`~slingloads.io.loads.nastran.prepare_nastran`)
+    and ``nastran_locations`` (the cell of each option and of each listed case id, for the
     errors found when the file is laid out)."""
     settings = {"inertia_relief": params.choice("nastran inertia relief", INERTIA_RELIEF),
                 "hook_at": params.choice("nastran hook load at", HOOK_POINTS),
                 "axes": str(params("nastran model axes") or "").strip(),
                 "offset": tuple(float(params(f"nastran offset {a}")) for a in "xyz")}
-    with params.at("nastran model axes"):
+    with located(params, default="nastran model axes"):
         ModelAxes(settings["axes"])
     for arg, name in _NASTRAN_IDS.items():
         value = params(name)
@@ -362,10 +361,17 @@ def _nastran_options(params, study):
                        "value": params.raw(name), "unit": params.unit(name)}
                  for arg, name in names.items()}
     reader = params.reader
-    if study.loads is not None and reader.has_sheet("LoadCases"):
+    if study.inputs.loads is not None and reader.has_sheet("LoadCases"):
         t = reader.table(_SPEC["LoadCases"])
         locations.update({("case", str(t["id"][i])): {"sheet": t.sheet,
                                                       "cell": t.cell("id", i)}
                           for i in range(len(t))})
-    return {"nastran": bool(params("nastran bulk data")), "nastran settings": settings,
-            "nastran locations": locations}
+    return {"nastran": bool(params("nastran bulk data")), "nastran_settings": settings,
+            "nastran_locations": locations}
+
+
+def locate(err, study, context=None):
+    """``err``, raised while the loads of ``study`` ran: an error of the campaign's hand-off
+    (``context`` :data:`~slingloads.runs.loads.HANDOFF`) on the Study sheet (the 'campaign
+    ...' rows); any other error unchanged."""
+    return place_error(err, Place(study.path, STUDY_SHEET)) if context == HANDOFF else err

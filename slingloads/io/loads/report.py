@@ -45,7 +45,7 @@ from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS, LOAD_COLUMNS
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs, safe_file_part
-from slingloads.io.common.cover import info_from_digest, report_info
+from slingloads.io.common.cover import info_from_digest, input_digest, report_info
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
@@ -61,6 +61,7 @@ from slingloads.io.common.figures import (
     start_drawing,
     task_result,
 )
+from slingloads.io.common.locate import located
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -70,8 +71,8 @@ from slingloads.io.common.report import (
     report_unit,
     warning_sections,
 )
+from slingloads.io.common.report_writer import protected_inputs
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
 
@@ -428,19 +429,36 @@ def hook_direction_note(result):
             f"lateral directions only).")
 
 
-def towed_note(result):
-    """The towed-case verdict: how many trimmed cables lie outside the hook cone."""
+def towed_outside(result):
+    """The towed-flight cases whose trimmed cable lies outside the hook cone (ids)."""
     towed = result.towed_table()
     if towed.empty:
+        return []
+    return list(towed.loc[towed["inside hook cone"] != "yes", "case"])
+
+
+def _outside_text(outside):
+    """The finding on towed cables outside the hook cone ``outside`` (case ids)."""
+    return (f"OUTSIDE THE HOOK CONE: {', '.join(outside)}: the cone does not cover the cable "
+            "angle reached in towed flight; widen it or restrict the flight envelope.")
+
+
+def towed_note(result):
+    """The towed-case verdict: how many trimmed cables lie outside the hook cone."""
+    if result.towed_table().empty:
         return "No towed-flight equilibrium case (no aerodynamic point or parachute, or off)."
-    outside = towed[towed["inside hook cone"] != "yes"]
+    outside = towed_outside(result)
     rule = ("Cable angle from the vertical at Nz and at 1 g (the steady trail angle), judged "
             "at the larger against the cone's inclination at the cable's azimuth.")
-    if outside.empty:
+    if not outside:
         return f"{rule} Every trimmed cable lies inside the hook cone."
-    return (f"{rule} OUTSIDE THE HOOK CONE: {', '.join(outside['case'])}: the cone does not "
-            "cover the cable angle reached in towed flight; widen it or restrict the flight "
-            "envelope.")
+    return f"{rule} {_outside_text(outside)}"
+
+
+def closure_passes(result):
+    """Whether every case closes: its largest |residual| (force or moment) within
+    :data:`~slingloads.analyses.loads.CLOSURE_TOLERANCE` x the load scale."""
+    return float(np.abs(result.residual).max()) <= CLOSURE_TOLERANCE * result.residual_scale
 
 
 def closure_table(result):
@@ -449,7 +467,6 @@ def closure_table(result):
     residual = np.abs(result.residual)
     tol = CLOSURE_TOLERANCE * result.residual_scale
     worst = int(np.argmax(residual.max(axis=1)))
-    largest = float(residual.max())
     return pd.DataFrame([
         (f"tolerance: {CLOSURE_TOLERANCE:g} x load scale {result.residual_scale:,.0f} N m "
          "(largest force x max(1 m, airframe length))", tol, tol),
@@ -457,7 +474,7 @@ def closure_table(result):
          float(residual[:, :3].max()), float(residual[:, 3:].max())),
         (f"case with the largest residual: {result.case_ids[worst]}",
          float(residual[worst, :3].max()), float(residual[worst, 3:].max())),
-        ("result: " + ("PASS" if largest <= tol else "FAIL"), np.nan, np.nan),
+        ("result: " + ("PASS" if closure_passes(result) else "FAIL"), np.nan, np.nan),
     ], columns=["check", "force residual [N]", "moment residual [N m]"])
 
 
@@ -829,12 +846,11 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     verdict, evidence = hook_angle_finding(result, findings.get("lateral"),
                                            findings.get("hook angle justification", ""))
     closure = closure_table(result)
-    closure_line = (f"Free-free closure: {closure.iloc[-1]['check'][len('result: '):]} "
+    closure_line = (f"Free-free closure: {'PASS' if closure_passes(result) else 'FAIL'} "
                     f"(largest residual against {CLOSURE_TOLERANCE:g} x the load scale).")
-    towed = towed_note(result)
+    outside = towed_outside(result)
     notes = [verdict, "Evidence: " + evidence,
-             *(["FLAG: towed cables " + towed[towed.index("OUTSIDE"):]] if "OUTSIDE" in towed
-               else []),
+             *(["FLAG: towed cables " + _outside_text(outside)] if outside else []),
              *exceedance_findings(result, findings.get("previous envelope source", "")),
              closure_line]
     summary = [
@@ -970,63 +986,10 @@ def dynamics_sections(result, comparison, units="SI"):
     return sections
 
 
-def compute(study):
-    """Run the loads analysis read from a workbook.
-
-    With the campaign's result in ``study.results`` (``slingloads run`` with ``run campaign``
-    and ``campaign loads from dynamics``), the cases the dynamics reached are added
-    (:func:`slingloads.analyses.campaign.loads_from_dynamics`) and the hand-off is kept in
-    ``study.results["loads handoff"]`` for the report.
-
-    Parameters
-    ----------
-    study : WorkbookStudy
-        With ``study.loads`` (:class:`~slingloads.analyses.loads.LoadsStudy`).
-
-    Returns
-    -------
-    LoadsResult
-
-    Raises
-    ------
-    InputError
-        If the workbook does not ask for the loads analysis.
-    """
-    if study.loads is None:
-        raise InputError("the workbook does not ask for the loads analysis (Study sheet: "
-                         "'run loads' is no)", file=study.path, sheet="Study")
-    results = getattr(study, "results", {})
-    campaign = results.get("campaign")
-    if campaign is None or not campaign.inputs.loads_from_dynamics:
-        return _finite(study.loads.run(), study)
-    if campaign.result.envelope is None:
-        raise InputError("the loads are to take the dynamics' cases, but no parachute area of "
-                         "the campaign is stable in every condition and none was chosen "
-                         "('campaign chosen area factor'); choose one or set 'campaign loads "
-                         "from dynamics' to no", file=study.path, sheet="Study")
-    from slingloads.analyses.campaign import loads_from_dynamics
-
-    with located(study.path, "Study"):
-        handoff = loads_from_dynamics(study.loads, campaign.result.envelope,
-                                      campaign.inputs.hook_angle_source)
-    results["loads handoff"] = handoff
-    return _finite(handoff.study.run(), study)
-
-
-def _finite(result, study):
-    """``result``, refused if its loads are not finite numbers."""
-    if not np.all(np.isfinite(result.loads)):
-        raise InputError("the loads are not finite numbers (an input far out of scale?): check "
-                         "the magnitudes and units of the MassItems, FuselageAero and Study "
-                         "values", file=study.path)
-    return result
-
-
 def start_figures(result, units, study):
     """Start drawing the figures of the loads report of a workbook's study (worker processes
     draw them while the other analyses run); pass the result to :func:`write`."""
-    jobs, _, _ = figure_jobs(result, units, study.options.get("hull pairs", (("Vy", "Mz"),)),
-                             study.options.get("hull stations"))
+    jobs, _, _ = figure_jobs(result, units, study.report.hull_pairs, study.report.hull_stations)
     renderer = start_drawing(jobs, _PNG_DPI)
     for name, make in CSV_FILES.items():  # after the figures
         renderer.later(name, make, result)
@@ -1048,29 +1011,29 @@ CSV_FILES = {"sfbm.csv": sfbm_csv, "envelope.csv": envelope_csv}
 
 
 def write(result, out_dir, stem, units, study, figures=None, checks=None):
-    """Write the loads report of a workbook's study (:func:`write_loads_outputs`) into the
-    run's outputs ``out_dir``, with the study's identification, hull options, warnings and
-    findings (the lateral study of the same run, when there is one, is the evidence on the
-    hook angle), and the ``checks`` against the other analyses of the run
-    (:mod:`slingloads.io.consistency`)."""
+    """Write the loads report of a study (:func:`write_loads_outputs`) into the run's outputs
+    ``out_dir``, with the study's identification, report options, warnings and findings
+    (the lateral study of the same run, when there is one, is the evidence on the hook
+    angle; the campaign's hand-off, when the loads took the dynamics' cases), and the
+    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`)."""
     info = report_info(study, title=TITLE, analysis=ANALYSIS, units=units,
                        conventions=CONVENTIONS)
-    findings = {"lateral": getattr(study, "results", {}).get("lateral"),
-                "hook angle justification": study.options.get("hook angle justification", ""),
-                "previous envelope source": study.options.get("previous envelope source", ""),
-                "warnings": list(study.warnings)}
+    options, results = study.report, study.results
+    findings = {"lateral": results.lateral,
+                "hook angle justification": options.hook_angle_justification,
+                "previous envelope source": options.previous_envelope_source,
+                "warnings": list(study.source.warnings)}
     nastran = None
-    if study.options.get("nastran"):
-        nastran = {**study.options["nastran settings"],
-                   "locations": study.options["nastran locations"]}
-    handoff = getattr(study, "results", {}).get("loads handoff")
+    if options.nastran:
+        nastran = {**options.nastran_settings, "locations": options.nastran_locations}
+    handoff = results.loads_handoff
     with located(study.path):
         return write_loads_outputs(result, out_dir, stem, units=units,
-                                   inputs_digest=study.digest(),
-                                   hull_pairs=study.options.get("hull pairs", (("Vy", "Mz"),)),
-                                   hull_stations=study.options.get("hull stations"),
-                                   input_paths=study.input_files, info=info,
+                                   inputs_digest=input_digest(study),
+                                   hull_pairs=options.hull_pairs,
+                                   hull_stations=options.hull_stations,
+                                   input_paths=protected_inputs(study), info=info,
                                    findings=findings,
-                                   sfbm_workbook=study.options.get("sfbm workbook", False),
+                                   sfbm_workbook=options.sfbm_workbook,
                                    figures=figures, nastran=nastran, checks=checks,
                                    dynamics=None if handoff is None else handoff.comparison)

@@ -195,3 +195,6 @@ SHEETS = (
 )
 
 SECTION = Section("loads", parameters=PARAMETERS, sheets=SHEETS)
+
+#: The Study parameter behind each setting the analysis may refuse while computing (none).
+COMPUTE_FIELDS = {}

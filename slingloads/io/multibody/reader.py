@@ -12,7 +12,7 @@ naming the file, sheet, cell, the value as written and the rule broken.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
@@ -28,9 +28,9 @@ from slingloads.io.airframe.reader import (
     read_fuselage_aero,
     read_parachute,
 )
-from slingloads.io.common.locate import at_row
+from slingloads.io.common.locate import Place, located
+from slingloads.io.common.referenced import referenced_file
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.workbook import located
 from slingloads.io.multibody.schema import (
     CANOPY_TABLES,
     CARRIERS,
@@ -55,45 +55,12 @@ from slingloads.models.multibody.parachute_line import HingedParachute, QuasiSta
 from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.multibody.system import SlingSystem
 from slingloads.models.parachute import extended_cd_table
+from slingloads.runs.multibody import MultibodyInputs
 
 ANALYSIS = "multibody"
 _SPEC = {s.name: s for s in SHEETS}
 #: Defaults of the MultibodyManoeuvres columns (SI).
 ONSET, DURATION, ACCELERATION, RAMP_RATE = 5.0, 10.0, 1.0, 0.5
-
-
-@dataclass(frozen=True)
-class MultibodyInputs:
-    """Everything the multibody analysis needs, in SI.
-
-    Attributes
-    ----------
-    system : SlingSystem
-    manoeuvres : tuple of Manoeuvre
-    settings : dict
-        Keywords of :func:`~slingloads.analyses.multibody.simulate`: ``t_end``, ``dt`` (None:
-        adaptive), ``output_interval`` [s], ``rtol`` [-], ``atol`` [SI].
-    configuration, tail, carrier, parachute_model, canopy_table : str
-        The Study's choices, as spelt in :mod:`slingloads.io.multibody.schema`.
-    margin : float
-        Required excess of the cable over the parachute line. [-]
-    warnings : tuple of str
-        Rules broken that do not prevent the runs (shown in the report).
-    manoeuvre_source : str
-        "MultibodyManoeuvres sheet" or "the paper's list".
-    """
-
-    system: SlingSystem
-    manoeuvres: tuple
-    settings: dict
-    configuration: str
-    tail: str
-    carrier: str
-    parachute_model: str
-    canopy_table: str
-    margin: float
-    warnings: tuple
-    manoeuvre_source: str
 
 
 def read(reader, params, study):
@@ -103,7 +70,7 @@ def read(reader, params, study):
     ----------
     reader : WorkbookReader
     params : slingloads.io.common.parameters.StudyParameters
-    study : WorkbookStudy
+    study : Study
         The airframe and the hardpoints by kind already read.
 
     Returns
@@ -124,16 +91,10 @@ def read(reader, params, study):
                            warnings=warnings, manoeuvre_source=source, **choices)
 
 
-def load_workbook_system(path):
-    """The multibody inputs of the workbook at ``path`` (whatever its 'run multibody' says).
-
-    Returns
-    -------
-    MultibodyInputs
-    """
-    from slingloads.io.study import read_study
-
-    return read_study(path, only=[ANALYSIS]).inputs[ANALYSIS]
+def locate(err, study, context=None):
+    """``err``, raised while the multibody model of ``study`` ran: located by its field alone
+    (the schema's ``COMPUTE_FIELDS``), so returned unchanged."""
+    return err
 
 
 # --------------------------------------------------------------------------- settings
@@ -179,8 +140,8 @@ def read_system(reader, params, study):
     ----------
     reader : WorkbookReader
     params : StudyParameters
-    study : WorkbookStudy
-        With the airframe and its hardpoints by kind (``study.points``).
+    study : Study
+        With the airframe and its hardpoints by kind (``study.source.points``).
 
     Returns
     -------
@@ -199,7 +160,7 @@ def read_system(reader, params, study):
     airspeed = params.positive("multibody airspeed EAS", allow_zero=True)
     altitude = params("multibody density altitude")
     body = _body(reader, study)
-    refs = study.points
+    refs = study.source.points
     fuselage = read_fuselage_aero(reader, params, refs)
     if fuselage is None:
         raise reader.error("the multibody model needs the FuselageAero sheet (the carried "
@@ -213,9 +174,9 @@ def read_system(reader, params, study):
     if parachute is not None:
         _check_reach(reader, params, refs, hardpoints, parachute, cable)
     carrier = _carrier(params, carrier_choice)
-    with params.at("multibody density altitude"):
+    with located(params, default="multibody density altitude"):
         isa_density(altitude)
-    with located(file, STUDY_SHEET):
+    with located(Place(file, STUDY_SHEET)):
         system = SlingSystem(body, hardpoints, cable, fuselage, surfaces, parachute, carrier,
                              airspeed, altitude, name=str(params("study name")))
     return system, {"configuration": configuration, "tail": tail_choice,
@@ -225,7 +186,7 @@ def read_system(reader, params, study):
 
 def _body(reader, study):
     """The carried helicopter's mass, CG and inertia tensor from MassItems."""
-    with located(reader.file, "MassItems"):
+    with located(Place(reader.file, "MassItems")):
         return RigidBody.from_mass_items(study.airframe.mass_items)
 
 
@@ -233,7 +194,7 @@ def _surfaces(reader, params, refs, tail_choice):
     """The fin (cut down, or intact with the full tail) and the horizontal tail."""
     fin = read_fin_aero(reader, params, refs)
     if fin is not None:
-        with params.at("fin axes"):
+        with located(params, default="fin axes"):
             LiftingSurface.from_fin(fin)  # a normal-force table: body axes
     if tail_choice == "cut-down fin":
         return (LiftingSurface.from_fin(fin),) if fin is not None else ()
@@ -250,10 +211,10 @@ def _surfaces(reader, params, refs, tail_choice):
                            sheet="Hardpoints", cell="B1")
     area = params.positive("multibody horizontal tail area")
     t = reader.table(_SPEC["HTailAero"])
-    with t.located():
+    with located(t):
         table = Table1D(t["alpha"], {"CN": t["CN"]}, angle_name="alpha",
                         what="horizontal tail")
-    with params.at("multibody horizontal tail area"):
+    with located(params, default="multibody horizontal tail area"):
         tail = LiftingSurface(table, area, refs["htail_cp"], "z", 1.0, "horizontal tail")
     return LiftingSurface.from_fin(fin, efficiency=1.0), tail
 
@@ -281,7 +242,7 @@ def _parachute(reader, params, hardpoints, model, canopy_table):
     if model == "quasi-static":
         return QuasiStaticParachute(chute)
     mass = params.positive("multibody canopy mass")
-    with params.at("multibody canopy mass"):
+    with located(params, default="multibody canopy mass"):
         return HingedParachute(chute, mass)
 
 
@@ -344,7 +305,7 @@ def read_manoeuvres(reader, params, system, t_end):
         builder = {"free response": _free_response, "gust": _gust,
                    "forward acceleration": _acceleration, "wind ramp": _wind_ramp,
                    "hook trajectory": _hook_trajectory}[kind]
-        with at_row(t, "kind", i):
+        with located(t, default="kind", index=i):
             out.append(builder(rows, i, name, system, t_end))
     return tuple(out), "MultibodyManoeuvres sheet"
 
@@ -448,7 +409,7 @@ def _hook_trajectory(rows, i, name, system, t_end):
                                     "ax_mps2, ay_mps2, az_mps2, or vx_mps..., or x_m...)")
     t = rows.t
     text = str(t["file"][i]).strip()
-    path = rows.reader.referenced_file(text, t.sheet, t.cell("file", i))
+    path = referenced_file(rows.reader, text, t.sheet, t.cell("file", i))
     trajectory = read_trajectory_csv(path)
     late = [b for b in trajectory.breakpoints if b >= t_end]
     if late:

@@ -1,8 +1,8 @@
 """The multibody report: trim, linear modes, every manoeuvre's metrics and histories, plots.
 
-:func:`compute` trims the system read by :mod:`slingloads.io.multibody.reader` at its airspeed,
-linearises it about that trim and flies every manoeuvre (all runs integrated together,
-:func:`slingloads.analyses.multibody.simulate`). :func:`write` publishes, all at once or not at
+The model is run by :func:`slingloads.runs.multibody.run` (the trim at its airspeed, the
+linear model about it and every manoeuvre, all runs integrated together); this module only
+writes its report. :func:`write` publishes, all at once or not at
 all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-multibody.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*
@@ -24,28 +24,19 @@ SI); angles in degrees.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.multibody import linearise, simulate, trim
 from slingloads.constants import KNOT
-from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs
-from slingloads.io.common.cover import report_info
 from slingloads.io.common.csvout import csv_bytes
-from slingloads.io.common.excel import Section, write_workbook
+from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
-    drawings,
     plot_function,
-    png_bytes,
     start_drawing,
-    task_result,
 )
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
-    check_units,
     column_blocks,
     convert_columns,
     csv_frame,
@@ -55,8 +46,8 @@ from slingloads.io.common.report import (
     split_unit,
     warning_sections,
 )
+from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.common.units import unit_label
-from slingloads.io.common.workbook import located
 from slingloads.io.multibody.figure_data import history_panels, view_points
 
 ANALYSIS = "multibody"
@@ -66,6 +57,10 @@ PLOTS = ("histories", "eigenvalues", "views")
 OUTPUTS = ("{stem}-multibody.xlsx", "{stem}-multibody-histories.csv",
            *(f"{{stem}}-multibody-{tag}.png" for tag in PLOTS))
 _PNG_DPI = 80
+#: Title of each figure on the Plots sheet.
+FIGURE_TITLES = {"histories": "Time histories: yaw, sideslip, cable swing, tension",
+                 "eigenvalues": "Eigenvalues about the trim",
+                 "views": "Side and top views at trim and at the largest excursion"}
 #: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
 HISTORY_INTERVAL = 2.0
 #: Quantity kind of the SI units that appear in the analysis' column headers.
@@ -93,108 +88,6 @@ CONVENTIONS = (
     "matrix is SI (m, m/s, rad, rad/s). Definitions of the states and metrics: "
     "docs/multibody.md.",
 )
-
-
-@dataclass(frozen=True, eq=False)
-class MultibodyReport:
-    """Results of the multibody analysis of one workbook.
-
-    Attributes
-    ----------
-    inputs : MultibodyInputs
-    trim : Trim
-        Steady towed flight at the system airspeed (or why there is none).
-    linear : LinearModel or None
-        Linear model about that trim (None without trim).
-    simulation : Simulation
-        Every manoeuvre.
-    outline : dict
-        Airframe polylines for the views, airframe axes. [m]
-    """
-
-    inputs: object
-    trim: object
-    linear: object
-    simulation: object
-    outline: dict
-
-    def largest_excursion(self):
-        """(run, sample index, departure [rad]) of the largest angular departure from its
-        start (yaw, lateral or longitudinal cable swing) over all runs; None without runs."""
-        best = None
-        for run in self.simulation.runs:
-            h = run.histories()
-            depart = np.zeros(run.time.size)
-            for key in ("yaw", "swing lateral", "swing longitudinal"):
-                values = h[key] - h[key][0]
-                depart = np.fmax(depart, np.abs(np.where(np.isfinite(values), values, 0.0)))
-            k = int(np.argmax(depart))
-            if best is None or depart[k] > best[2]:
-                best = (run, k, float(depart[k]))
-        return best
-
-
-def compute(study):
-    """Run the multibody analysis read from a workbook.
-
-    Parameters
-    ----------
-    study : WorkbookStudy
-        With ``study.inputs["multibody"]`` (:class:`MultibodyInputs`).
-
-    Returns
-    -------
-    MultibodyReport
-
-    Raises
-    ------
-    InputError
-        If the workbook does not ask for the multibody model, or the analysis refuses its
-        inputs (the file is named).
-    """
-    inputs = study.inputs.get(ANALYSIS)
-    if inputs is None:
-        raise InputError("the workbook does not ask for the multibody model (Study sheet: "
-                         "'run multibody' is no)", file=study.path, sheet="Study")
-    with located(study.path):
-        point = trim(inputs.system)
-        linear = linearise(point) if point.converged else None
-        sim = simulate(inputs.system, inputs.manoeuvres, no_trim="report",
-                       **inputs.settings)
-    return MultibodyReport(inputs, point, linear, sim, airframe_outline(study.airframe))
-
-
-def shortfalls(result):
-    """What the multibody model was asked for and could not compute, one line each: no trim
-    at the system airspeed (then no linear model, no eigenvalue figure, no stability
-    verdict), and the runs that could not start because their own trim failed. A run that
-    stops because it left a table is a result (its verdict says so), not a shortfall."""
-    out = []
-    airspeed = result.inputs.system.airspeed / KNOT
-    if not result.trim.converged:
-        out.append(f"multibody: no trim at {airspeed:.4g} kt EAS ({result.trim.message}): no "
-                   "linear modes, no eigenvalue figure and no stability verdict")
-    runs = result.simulation.runs
-    failed = [run.name for run in runs if not run.trim.converged]
-    if failed:
-        shown = ", ".join(repr(name) for name in failed[:5])
-        more = f" and {len(failed) - 5} more" if len(failed) > 5 else ""
-        out.append(f"multibody: {len(failed)} of {len(runs)} runs not flown for want of a "
-                   f"trim: {shown}{more}")
-    return out
-
-
-def airframe_outline(airframe):
-    """Polylines of the airframe for the views: fuselage (foremost mass item, CG, aftmost
-    mass item) and mast (CG to hub), airframe axes. [m]"""
-    items = airframe.mass_items
-    x = items.position[:, 0]
-    nose, tail = items.position[int(np.argmin(x))], items.position[int(np.argmax(x))]
-    cg = items.cg
-    nose = np.array([nose[0], cg[1], nose[2]])
-    tail = np.array([tail[0], cg[1], tail[2]])
-    return {"fuselage": np.vstack([nose, cg, tail]),
-            "mast": np.vstack([cg, airframe.hardpoints.hub])}
 
 
 # ------------------------------------------------------------------------------- tables
@@ -351,9 +244,9 @@ def state_matrix_table(linear):
     return a.reset_index(names="d/dt of")
 
 
-def _warnings(result, study):
+def _warnings(result, warnings):
     """The warnings on the inputs of the study and of the multibody system, each once."""
-    return list(dict.fromkeys([*study.warnings, *result.inputs.warnings]))
+    return list(dict.fromkeys([*warnings, *result.inputs.warnings]))
 
 
 def _parts(title, tables, note=""):
@@ -435,9 +328,28 @@ def histories_csv(result):
     return csv_bytes(csv_frame(history_table(result, "SI")))
 
 
+def _titles(result):
+    return FIGURE_TITLES
+
+
+def _matrix_formats(result):
+    """The number format of the state matrix's columns (None without a linear model)."""
+    if result.linear is None:
+        return None
+    return {name: MATRIX_FORMAT for name in result.linear.a_frame().columns}
+
+
+#: The multibody report (:func:`~slingloads.io.common.report_writer.write_report`).
+REPORT = ReportKind(tag="multibody", title=TITLE, description=DESCRIPTION,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
+                    titles=_titles, data={"histories.csv": histories_csv},
+                    warnings=_warnings, number_format=_matrix_formats)
+
+
 def write(result, out_dir, stem, units, study, figures=None):
     """Write ``<stem>-multibody.xlsx``, ``-multibody-histories.csv`` and the PNG plots
-    atomically.
+    atomically (:func:`~slingloads.io.common.report_writer.write_report` of
+    :data:`REPORT`).
 
     Parameters
     ----------
@@ -446,7 +358,7 @@ def write(result, out_dir, stem, units, study, figures=None):
     stem : str
     units : str
         ``"SI"`` or ``"US"``.
-    study : WorkbookStudy
+    study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
@@ -455,30 +367,4 @@ def write(result, out_dir, stem, units, study, figures=None):
     -------
     list of pathlib.Path
     """
-    check_units(units)
-    inputs = study.input_files or [study.path]
-    jobs = _figures(result, units) if figures is None else figures.pngs  # (not made twice)
-    names = ([f"{stem}-multibody.xlsx", f"{stem}-multibody-histories.csv"]
-             + [f"{stem}-multibody-{tag}.png" for tag in jobs])
-    check_outputs(out_dir, names, inputs)
-    titles = {"histories": "Time histories: yaw, sideslip, cable swing, tension",
-              "eigenvalues": "Eigenvalues about the trim",
-              "views": "Side and top views at trim and at the largest excursion"}
-    with drawings(jobs, figures, _PNG_DPI) as pngs:
-        info = report_info(study, title=TITLE, analysis=DESCRIPTION, units=units,
-                           conventions=CONVENTIONS,
-                           files=[f"{stem}-multibody-histories.csv",
-                                  *(f"{stem}-multibody-{tag}.png" for tag in pngs)])
-        sheets = _sheets(result, units, _warnings(result, study))
-        formats = ({name: MATRIX_FORMAT for name in result.linear.a_frame().columns}
-                   if result.linear is not None else None)
-        csv = task_result(figures, "histories.csv", histories_csv, result)  # (before the
-        # figures are awaited: made here while the helper draws, unless it has made it)
-        with atomic_outputs(out_dir, inputs=inputs) as out:
-            write_workbook(out.path(f"{stem}-multibody.xlsx"), sheets,
-                           {titles[t]: png for t, png in pngs.items()}, info=info,
-                           number_format=formats)
-            out.path(f"{stem}-multibody-histories.csv").write_bytes(csv)
-            for tag, png in pngs.items():
-                out.path(f"{stem}-multibody-{tag}.png").write_bytes(png_bytes(png))
-    return out.written
+    return write_report(REPORT, result, out_dir, stem, units, study, figures)

@@ -94,10 +94,11 @@ PARAMETERS = (
               "the paper's +-8 deg table without it): a run whose canopy meets the flow at a "
               "larger angle stops there.", _S),
     Parameter("multibody cable length", "length", "ft", 60.0,
-              "Unstretched carrier cable, hook to hub, > 0 (paper: 18, 60, 100 ft). It must be "
-              "longer than the parachute line plus the hub-to-attachment distance (else the "
-              "canopy could reach the carrier: an error), and should be at least (1 + margin) "
-              "x the line (else a warning in the report).", _S, CABLE_LENGTH),
+              "Unstretched carrier cable, hook to hub, > 0 (paper: 18, 60, 100 ft). It must lie "
+              "outside the distances from the hub that the parachute line and canopy reach, "
+              "streaming aft of the attachment or hanging below it (else the canopy could "
+              "reach the carrier: an error), and should be at least (1 + margin) x the line "
+              "(else a warning in the report).", _S, CABLE_LENGTH),
     Parameter("multibody cable EA", "force", "N", 5.0e6,
               "Axial stiffness EA of the cable, > 0.", _S, CABLE_EA),
     Parameter("multibody cable damping ratio", "dimensionless", "", 0.05,

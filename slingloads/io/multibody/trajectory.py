@@ -28,6 +28,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads.errors import InputError
+from slingloads.io.common.locate import located
 from slingloads.models.hook_trajectory import HookTrajectory
 
 #: The column sets a trajectory file may give, and the constructor each goes to.
@@ -79,7 +80,5 @@ def read_trajectory_csv(path, *, from_hover=False):
     time = frame["time_s"].to_numpy(float)
     values = frame[list(names)].to_numpy(float)
     build = getattr(HookTrajectory, COLUMN_SETS[names])
-    try:
+    with located(str(path)):
         return build(time, values, from_hover=from_hover, name=f"CSV file {path.name}")
-    except InputError as error:
-        raise error.located(file=str(path)) from None

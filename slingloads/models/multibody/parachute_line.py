@@ -110,6 +110,45 @@ class QuasiStaticParachute:
         return self.parachute.line_length
 
 
+def line_reach(hub, chute, line_length):
+    """Nearest and farthest distance from the hub that the parachute line and canopy reach.
+
+    The line is judged as it flies: in forward flight the drag streams it aft of its
+    attachment, in hover it hangs below it; it never points forward of the attachment (that
+    would need a forward force on the canopy). Its points c + s e (c the attachment from the
+    hub, 0 <= s <= L, e in airframe axes with e_x >= 0, x aft) fill the aft half of the ball
+    of radius L about the attachment. With the attachment aft of the hub (c_x > 0) the
+    farthest is ``|c| + L`` and the nearest ``sqrt(c_x^2 + max(0, |c_yz| - L)^2)`` (the line
+    square to the body axis); ahead of it, ``sqrt(c_x^2 + (|c_yz| + L)^2)`` and
+    ``max(0, |c| - L)``. A carrier
+    hook (at the cable length from the hub) outside [nearest, farthest] cannot meet the line
+    or the canopy; the sphere rule used before (``|c| + L`` against the cable, as if the line
+    could point anywhere, forward included) refused the short cables the paper flies.
+
+    Parameters
+    ----------
+    hub, chute : array_like, shape (3,)
+        Hub (cable attachment) and parachute attachment, airframe axes. [m]
+    line_length : float
+        [m]
+
+    Returns
+    -------
+    (float, float)
+        Nearest and farthest distance from the hub. [m]
+    """
+    c = np.asarray(chute, float).reshape(3) - np.asarray(hub, float).reshape(3)
+    line = float(line_length)
+    size, side = float(np.linalg.norm(c)), float(np.hypot(c[1], c[2]))
+    if c[0] <= 0.0:
+        near = max(0.0, size - line)
+        far = float(np.hypot(c[0], side + line))
+    else:
+        near = float(np.hypot(c[0], max(0.0, side - line)))
+        far = size + line
+    return near, far
+
+
 @jit
 def line_direction(theta, psi):
     """Unit line direction e and its partial derivatives e_theta, e_psi (body axes)."""

@@ -3,9 +3,10 @@
 :class:`SlingSystem` gathers the physical parts (each validated by its own class), turns them
 into the parameter vector and tables of the compiled equations
 (:mod:`slingloads.models.multibody.equations`) and checks the geometry rules between parts
-(carrier cable at least 20 % longer than the parachute line; the canopy must not be able to
-reach the carrier). Positions are given in airframe axes (``docs/conventions.md``) and passed
-to the equations relative to the CG.
+(carrier cable at least 20 % longer than the parachute line; the line and canopy, streaming
+aft or hanging, must not be able to reach the carrier's hook:
+:func:`~slingloads.models.multibody.parachute_line.line_reach`). Positions are given in
+airframe axes (``docs/conventions.md``) and passed to the equations relative to the CG.
 """
 
 from __future__ import annotations
@@ -34,7 +35,11 @@ from slingloads.models.multibody.equations import (
 )
 from slingloads.models.multibody.local_flow import LiftingSurface
 from slingloads.models.multibody.lookup import table_arrays
-from slingloads.models.multibody.parachute_line import HingedParachute, QuasiStaticParachute
+from slingloads.models.multibody.parachute_line import (
+    HingedParachute,
+    QuasiStaticParachute,
+    line_reach,
+)
 from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.wake import CABLE_MARGIN, check_cable_length
 
@@ -143,13 +148,14 @@ class SlingSystem:
 
     def _check_parachute_reach(self):
         line = self.parachute.line_length
-        reach = line + float(np.linalg.norm(self.hardpoints.chute - self.hardpoints.hub))
-        if reach >= self.cable.length:
+        near, far = line_reach(self.hardpoints.hub, self.hardpoints.chute, line)
+        if near <= self.cable.length <= far:
             raise InputError(
-                f"the parachute could reach the carrier: its line ({line:.4g} m) plus the "
-                f"distance from the hub to its attachment reaches {reach:.4g} m from the hub, "
-                f"not less than the carrier cable ({self.cable.length:.4g} m); lengthen the "
-                f"cable", self.cable.length)
+                f"the parachute could reach the carrier: its line ({line:.4g} m), streaming "
+                f"aft of its attachment or hanging below it, reaches from {near:.4g} m to "
+                f"{far:.4g} m from the hub, and the carrier cable ({self.cable.length:.4g} m) "
+                f"lies in that range; lengthen the cable beyond {far:.4g} m (or shorten the "
+                f"line)", self.cable.length)
 
     @property
     def locks(self):

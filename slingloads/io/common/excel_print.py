@@ -1,0 +1,161 @@
+"""Print setup of a report sheet: A4, orientation, fit to the page width, page header and
+footer.
+
+What this module guarantees: every sheet prints on A4 in the orientation its width asks for
+(:func:`orientation_for`), fitted to the page width (never a column cut from its row labels),
+with its header rows repeated on every page, a page header naming the report, the sheet and
+the input file, and a footer with the run date, the version and ``page x of y``; a text from
+an input is never read as a header or footer control code (:func:`header_footer_text`,
+:func:`_escape`), and a header or footer stays within Excel's
+:data:`EXCEL_MAX_HEADER_CHARS`.
+
+References
+----------
+.. [1] Microsoft, "Excel specifications and limits": 255 characters in a page header or
+   footer.
+.. [2] ECMA-376 Part 1, 18.3.1.63 ``pageSetup`` (paperSize 9 = A4; ``fitToWidth`` and
+   ``fitToHeight`` default to 1) and 18.3.1.46 ``headerFooter`` codes (``&P`` page, ``&N``
+   pages, ``&&`` an ampersand, ``&8`` an 8-point font).
+"""
+
+from __future__ import annotations
+
+import re
+
+#: Characters (UTF-16 code units) in a page header or footer, codes included [1]_.
+EXCEL_MAX_HEADER_CHARS = 255
+#: A4 paper, ECMA-376 ``paperSize`` code [2]_.
+PAPER_A4 = 9
+#: Page margins: left, right, top, bottom, header, footer. [in]
+MARGINS = (0.5, 0.5, 0.75, 0.75, 0.3, 0.3)
+#: Printable width and height of an A4 page inside :data:`MARGINS`, at 96 px per inch. [px]
+PRINTABLE = {"portrait": (round((8.27 - 1.0) * 96), round((11.69 - 1.5) * 96)),
+             "landscape": (round((11.69 - 1.0) * 96), round((8.27 - 1.5) * 96))}
+#: A literal ``&`` (doubled) before what XlsxWriter's ``set_header`` reads as an image code.
+_IMAGE_CODE = re.compile(r"&&(?=G|\[Picture\])")
+
+
+def _escape(text, limit=80):
+    """Header/footer text: at most ``limit`` characters, made safe
+    (:func:`header_footer_text`)."""
+    text = str(text)
+    if len(text) > limit:
+        text = text[:limit - 3] + "..."
+    return header_footer_text(text)
+
+
+def orientation_for(pixels, height=0.0):
+    """The orientation of a sheet ``pixels`` wide and ``height`` high [px].
+
+    Portrait when the sheet fits the portrait width (8 % shrink allowed); portrait also for a
+    long sheet (more than a landscape page) that a fit-to-width shrink of at most 32 % puts on
+    a portrait page, since that prints it on fewer pages; else landscape.
+    """
+    width, _ = PRINTABLE["portrait"]
+    land_width, land_height = PRINTABLE["landscape"]
+    if pixels <= 1.08 * width:
+        return "portrait"
+    if pixels <= width / 0.68 and height * min(1.0, land_width / pixels) > 1.2 * land_height:
+        return "portrait"
+    return "landscape"
+
+
+def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info=None):
+    """Page setup of one sheet: A4, orientation from its width, fitted to the page width,
+    header rows repeated, page header and footer.
+
+    Parameters
+    ----------
+    ws : xlsxwriter.worksheet.Worksheet
+    pixels : float
+        Width of the sheet's used columns. [px]
+    height : float
+        Estimated height of its rows (long sheets print portrait when they can). [px]
+    title_rows : int, optional
+        Rows 1..title_rows are printed at the top of every page.
+    sheet_title : str
+        Centre of the page header.
+    info : ReportInfo, optional
+        Report title and input file (page header), run date, version and document number
+        (footer).
+
+    Returns
+    -------
+    str
+        The orientation chosen.
+    """
+    orientation = orientation_for(pixels, height)
+    ws.set_paper(PAPER_A4)
+    _orient(ws, orientation)
+    ws.fit_to_pages(1, 0)  # 1 page wide, as many high as needed
+    left, right, top, bottom, header, footer = MARGINS
+    ws.set_margins(left=left, right=right, top=top, bottom=bottom)
+    if title_rows:
+        ws.repeat_rows(0, int(title_rows) - 1)
+    title = info.title if info is not None else "slingloads report"
+    narrow = orientation == "portrait"
+    right = " | ".join(t for t in ((info.document, info.input_name) if info is not None
+                                   else ()) if t)
+    ws.set_header(_header_footer([(title, 45 if narrow else 60),
+                                  (sheet_title or ws.name, 45 if narrow else 70),
+                                  (right, 45)]), {"margin": header})
+    ws.set_footer(_header_footer([(f"run {info.run_date}" if info is not None else "", 40),
+                                  None, (info.software if info is not None else "slingloads",
+                                         45)]), {"margin": footer})
+    return orientation
+
+
+def _orient(ws, orientation):
+    """Print ``ws`` in ``orientation`` (``"portrait"`` or ``"landscape"``)."""
+    if orientation == "portrait":
+        ws.set_portrait()
+    else:
+        ws.set_landscape()
+
+
+def _header_footer(parts):
+    """A page header or footer: left, centre and right parts in 8 pt, ``&L&8 left&C&8
+    centre&R&8 right`` [2]_.
+
+    Parameters
+    ----------
+    parts : sequence of 3 (str, int) or None
+        ``(text, most characters)`` of each part, the text made safe by :func:`_escape`;
+        None for the page number, ``page &P of &N``.
+
+    Returns
+    -------
+    str
+        At most :data:`EXCEL_MAX_HEADER_CHARS` UTF-16 units: the longest part is shortened
+        while it is longer (only a text full of ``&``, each written ``&&``, comes near).
+    """
+    limits = [None if p is None else p[1] for p in parts]
+    while True:
+        texts = ["page &P of &N" if p is None else _escape(p[0], limit)
+                 for p, limit in zip(parts, limits, strict=True)]
+        text = "".join(f"&{key}&8 {part}" for key, part in zip("LCR", texts, strict=True))
+        # XlsxWriter reads &G and &[Picture] as image codes, even after a literal &&: an
+        # 8 pt size code between (the part's size already) keeps them text
+        text = _IMAGE_CODE.sub("&&&8", text)
+        shorter = [k for k, limit in enumerate(limits) if limit is not None and limit > 10]
+        if _utf16_units(text) <= EXCEL_MAX_HEADER_CHARS or not shorter:
+            return text
+        k = max(shorter, key=lambda k: _utf16_units(texts[k]))
+        limits[k] = max(10, min(limits[k], len(str(parts[k][0]))) - 5)
+
+
+def _utf16_units(text):
+    """Length of ``text`` as Excel counts it: UTF-16 code units."""
+    return len(text.encode("utf-16-le")) // 2
+
+
+def header_footer_text(text):
+    """Text from an input made safe for a printed header or footer: there ``&`` starts a
+    control code (``&P`` page number, ``&"font"``, ``&[Path]``...), so it is doubled, and
+    control characters are dropped.
+
+    >>> header_footer_text("R&D study &P")
+    'R&&D study &&P'
+    """
+    text = "".join(c for c in str(text) if c >= " " or c == "\n")
+    return text.replace("&", "&&")

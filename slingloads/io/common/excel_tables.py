@@ -1,0 +1,546 @@
+"""Table sheets of a report workbook: DataFrames and titled sections written print-ready.
+
+What this module guarantees: a table's numbers are written at an engineering precision (an
+Excel number format per unit, read from the column header or from the row's ``unit`` column,
+:mod:`slingloads.io.common.formats`); columns are as wide as their contents (text wrapped
+beyond :data:`~slingloads.io.common.excel_cells.MAX_TEXT_WIDTH` characters), header cells
+bold and wrapped, notes wrapped to the table width; panes frozen below the header (and right
+of an id column); a table longer than a sheet is split over ``NAME_1``, ``NAME_2``... with its
+header repeated, never truncated; on a sheet of several sections a long table continues under
+its header row on every printed page; ratio cells above a threshold are filled red
+(:class:`Highlight`, conditional formatting), never the repeated headers.
+"""
+
+from __future__ import annotations
+
+import numbers
+import re
+import textwrap
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+from xlsxwriter.utility import xl_col_to_name
+
+from slingloads.errors import InputError
+from slingloads.io.common.excel_cells import (
+    _CENTER,
+    _DIGIT_PIXELS,
+    _HEADER_ALIGN,
+    _HEADER_BORDER,
+    _HEADER_CENTER,
+    _HEADER_FILL,
+    _HEADER_FONT,
+    _HEADER_RIGHT,
+    _ID_WIDTH,
+    _LEFT,
+    _RIGHT,
+    _TITLE_STYLE,
+    _TOP,
+    _WRAP,
+    _WRAP_GENERAL,
+    EXCEL_MAX_COLUMNS,
+    EXCEL_MAX_ROWS,
+    MAX_NUMBER_WIDTH,
+    MAX_TEXT_WIDTH,
+    ROW_PIXELS,
+    _plain,
+    _px,
+    _SheetWriter,
+    _style,
+    check_sheet_name,
+    split_sheet_names,
+    wrapped_lines,
+)
+from slingloads.io.common.excel_print import PRINTABLE, print_setup
+from slingloads.io.common.formats import header_unit, unit_format, value_format
+
+
+@dataclass
+class Section:
+    """A titled block of a sheet: a table, a note, or both.
+
+    Parameters
+    ----------
+    title : str
+        Written in bold above the block; empty for none.
+    table : pandas.DataFrame, optional
+        Written with a bold header row.
+    note : str
+        Written under the title (before the table), wrapped to the width of the sheet.
+    """
+
+    title: str = ""
+    table: pd.DataFrame | None = None
+    note: str = ""
+
+
+@dataclass
+class Highlight:
+    """Red fill on the cells of some columns above a threshold (conditional formatting).
+
+    Parameters
+    ----------
+    columns : sequence of str
+        Header names of the columns to watch.
+    threshold : float
+        Cells with a number greater than this, or with a text (a ratio without a finite
+        value, written as what it means: ``"unbounded (previous 0)"``), are filled red.
+    """
+
+    columns: Sequence[str] = field(default_factory=tuple)
+    threshold: float = 1.0
+
+
+# ----------------------------------------------------------------------------- column plan
+@dataclass
+class _Columns:
+    """Widths [characters] and wrapped columns of one sheet."""
+
+    widths: dict
+    wrapped: set
+
+    @property
+    def pixels(self):
+        return sum(_px(w) for w in self.widths.values())
+
+
+def _number_formats(columns, number_format):
+    """The format of each column: the report's override, else from the header's unit."""
+    out = []
+    for c in columns:
+        fmt = None
+        if isinstance(number_format, Mapping):
+            fmt = number_format.get(c)
+        elif callable(number_format):
+            fmt = number_format(str(c))
+        out.append(fmt if fmt is not None else unit_format(header_unit(c)))
+    return out
+
+
+def _is_text(series):
+    """A column of strings (pandas ``str`` or ``object`` dtype)."""
+    return series.dtype == object or pd.api.types.is_string_dtype(series.dtype)
+
+
+def _explained_numbers(series, header):
+    """A column of numbers in which some values are written as what they mean (the texts of
+    :func:`~slingloads.io.common.report.explain_infinite`): its header carries a unit and
+    every value is a number, a text or empty. It is laid out as a column of numbers (right
+    aligned, as wide as its numbers and its texts)."""
+    if series.dtype != object or header_unit(header) is None:
+        return False
+    kinds = {type(v) for v in series if v is not None and not (isinstance(v, float) and v != v)}
+    return str in kinds and all(k is str or (issubclass(k, numbers.Real) and k is not bool)
+                                for k in kinds)
+
+
+def _row_unit_columns(frame, formats):
+    """Columns whose format comes from the row's ``unit`` column: numeric columns with no
+    unit in their header, in a table that has a ``unit`` column."""
+    if "unit" not in frame.columns:
+        return []
+    out = []
+    for j, column in enumerate(frame.columns):
+        if column == "unit" or formats[j] is not None or header_unit(column) is not None:
+            continue
+        series = frame.iloc[:, j]
+        if pd.api.types.is_bool_dtype(series.dtype):
+            continue
+        if pd.api.types.is_numeric_dtype(series.dtype) or (
+                series.dtype == object
+                and series.map(lambda v: isinstance(v, (float, np.floating))).any()):
+            out.append(j)
+    return out
+
+
+def _text_width(series):
+    """Characters of the longest line of text in ``series`` as written."""
+    widest = 0
+    for value in series:
+        shown = _plain(value)
+        if shown is not None:
+            widest = max(widest, max(len(line) for line in str(shown).split("\n")))
+    return widest
+
+
+def _number_width(series, number_format):
+    values = pd.to_numeric(series, errors="coerce").to_numpy(float)
+    values = values[np.isfinite(values)]
+    if not values.size:
+        return 3
+    big = float(np.max(np.abs(values)))
+    if number_format is None:
+        return min(len(f"{-big:.6g}"), MAX_NUMBER_WIDTH)
+    if "E" in number_format:
+        return 9
+    decimals = len(number_format.split(".")[1]) if "." in number_format else 0
+    sep = "," if "#,##" in number_format else ""
+    return len(f"{-big:{sep}.{decimals}f}")
+
+
+def _column_plan(tables, notes=(), formats_of=None):
+    """Widths of the columns of every table of a sheet, and which columns wrap."""
+    widths, wrapped = {}, set()
+    for frame in tables:
+        formats = formats_of(frame) if formats_of else [None] * frame.shape[1]
+        for j, col in enumerate(frame.columns):
+            series = frame.iloc[:, j]
+            explained = _explained_numbers(series, col)
+            if pd.api.types.is_bool_dtype(series.dtype):
+                data = 3
+            elif pd.api.types.is_numeric_dtype(series.dtype):
+                data = _number_width(series, formats[j])
+            elif explained:
+                data = max(_number_width(series, formats[j]),
+                           _text_width(v for v in series if isinstance(v, str)))
+            else:
+                data = _text_width(series)
+            words = max((len(w) for w in str(col).split()), default=0)
+            text = not (pd.api.types.is_numeric_dtype(series.dtype) or explained
+                        or pd.api.types.is_bool_dtype(series.dtype))
+            width = max(data + text, int(1.1 * words) + 1, min(len(str(col)), 10), 4) + 2
+            if width > MAX_TEXT_WIDTH:
+                wrapped.add(j)
+                width = MAX_TEXT_WIDTH
+            widths[j] = max(widths.get(j, 0), min(width, MAX_TEXT_WIDTH))
+    if not widths and notes:
+        widths[0] = MAX_TEXT_WIDTH * 2
+    return _Columns(widths, wrapped)
+
+
+def _set_widths(ws, columns):
+    """Set the column widths of the plan [characters], stored as they are.
+
+    A width stored as ``w`` characters shows 7 ``w`` px wide (Excel's rule for Calibri 11);
+    XlsxWriter stores ``pixels / 7``, whereas its ``set_column(w)`` would add the 5 px of
+    cell padding (``w + 5/7`` stored).
+    """
+    for j, width in columns.widths.items():
+        ws.set_column_pixels(j, j, _DIGIT_PIXELS * width)
+
+
+def _note_lines(text, columns):
+    """A note split into lines that fit the sheet's width (about 1 character per 7 px)."""
+    chars = max(60, min(int(columns.pixels / 7.5), 160))
+    lines = []
+    for paragraph in str(text).splitlines():
+        lines.extend(textwrap.wrap(paragraph, chars) or [""])
+    return lines
+
+
+def _freeze(frame, header_row):
+    """Freeze panes below ``header_row``, right of the first column when it holds text ids."""
+    first = frame.iloc[:, 0] if frame.shape[1] > 1 else None
+    ids = (first is not None and len(first) > 0 and _is_text(first)
+           and first.map(lambda v: isinstance(v, str)).all())
+    return f"{'B' if ids else 'A'}{header_row + 1}"
+
+
+# ----------------------------------------------------------------------------- tables
+def _highlight(writer, frame, first_row, last_row, highlight):
+    """Add a red-fill conditional format on the highlighted columns of rows first..last
+    (1-based)."""
+    if highlight is None or last_row < first_row:
+        return
+    for name in highlight.columns:
+        if name not in frame.columns:
+            continue
+        j = list(frame.columns).index(name)
+        top = f"{xl_col_to_name(j)}{first_row}"
+        writer.ws.conditional_format(first_row - 1, j, last_row - 1, j, {
+            "type": "formula", "format": writer.wb.red(),
+            "criteria": f'=OR(AND(ISNUMBER({top}),{top}>{highlight.threshold!r}),'
+                        f'ISTEXT({top}))'})
+
+
+def _check_highlight(frames, highlight, sheet):
+    if highlight is None:
+        return
+    columns = {c for f in frames for c in f.columns}
+    for name in highlight.columns:
+        if name not in columns:
+            raise InputError(f"column to highlight is not in the table; columns are "
+                             f"{sorted(map(str, columns))}", name, sheet=sheet)
+
+
+def _alignments(frame, columns):
+    """Cell and header alignment of each column: numbers right, short ids centred, long
+    text wrapped, everything at the top of its row."""
+    cells, heads = [], []
+    for j in range(frame.shape[1]):
+        series = frame.iloc[:, j]
+        values = list(series) if _is_text(series) else None
+        texts = values is not None and all(isinstance(v, str) or v is None for v in values)
+        if j in columns.wrapped:
+            cells.append(_WRAP if texts else _WRAP_GENERAL)  # numbers stay right-aligned
+            heads.append(_HEADER_ALIGN)
+        elif pd.api.types.is_bool_dtype(series.dtype) or (
+                texts and values
+                and max(len(v) if isinstance(v, str) else 0 for v in values) <= _ID_WIDTH):
+            cells.append(_CENTER)
+            heads.append(_HEADER_CENTER)
+        elif (pd.api.types.is_numeric_dtype(series.dtype)
+              or _explained_numbers(series, frame.columns[j])):
+            cells.append(_RIGHT)  # numbers, and the text of an infinite one
+            heads.append(_HEADER_RIGHT)
+        elif texts:
+            cells.append(_LEFT)  # text: a little room from the number on its left
+            heads.append(_HEADER_ALIGN)
+        else:
+            cells.append(_TOP)  # mixed numbers and text: Excel's own alignment
+            heads.append(_HEADER_ALIGN)
+    return cells, heads
+
+
+def _write_table(writer, frame, formats, columns, highlight, paginate=None):
+    """Header and rows of ``frame`` at the writer's current row.
+
+    ``paginate``, when given, is called with the printed height [px] of each data row before
+    it is written, and returns True when it has put a page break above it: the header row
+    is then written again at the top of the new page (a table of a sheet of several
+    sections continues under its own column headers, which the sheet's repeated title rows
+    cannot give)."""
+    names = [str(c) for c in frame.columns]
+    if len(names) > EXCEL_MAX_COLUMNS:
+        raise InputError(f"a table has more than Excel's {EXCEL_MAX_COLUMNS} columns",
+                         len(names), sheet=writer.ws.name)
+    cells, heads = _alignments(frame, columns)
+    header_styles = [_style(_HEADER_FONT, None, h, _HEADER_FILL, _HEADER_BORDER)
+                     for h in heads]
+    writer.append(names, header_styles)
+    first = writer.row + 1
+    segments = []  # (first, last) rows of the data between repeated headers (1-based)
+    per_row = _row_unit_columns(frame, formats)
+    unit_at = names.index("unit") if per_row else None
+    ratio = [header_unit(c) == "-" for c in names]
+    wrapping = [j for j, a in enumerate(cells) if ("text_wrap", True) in a]
+    cell_format = writer.wb.cell_format
+    texts = [cell_format(_style(None, None, a)) for a in cells]  # text: no number format
+    looks = [{} for _ in cells]  # per column: number format -> cell format
+    for row in frame.itertuples(index=False, name=None):
+        values = [_plain(v) for v in row]
+        fmts, small = formats, ratio
+        if per_row:
+            unit = row[unit_at]
+            fmts, small = list(formats), list(ratio)
+            for j in per_row:
+                fmts[j] = unit_format(unit)
+                small[j] = unit == "-"
+        out = list(texts)
+        for j, shown in enumerate(values):
+            if isinstance(shown, (int, float)):
+                fmt = fmts[j]
+                if fmt is not None:
+                    fmt = value_format(shown, fmt, small[j])
+                made = looks[j].get(fmt)
+                if made is None:
+                    made = looks[j][fmt] = cell_format(_style(None, fmt, cells[j]))
+                out[j] = made
+        lines = writer.lines(values, wrapping)
+        if paginate is not None and paginate(ROW_PIXELS * lines):
+            segments.append((first, writer.row))
+            writer.append(names, header_styles)
+            first = writer.row + 1
+        writer.write(values, out, lines)
+    segments.append((first, writer.row))
+    for start, stop in segments:
+        _highlight(writer, frame, start, stop, highlight)
+
+
+def frame_title(frame, default=""):
+    """The title a DataFrame sheet carries (``frame.attrs["title"]``), or ``default``."""
+    return str(frame.attrs.get("title", default)) if hasattr(frame, "attrs") else default
+
+
+def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
+                       max_rows=EXCEL_MAX_ROWS, info=None):
+    """Write a DataFrame to one sheet, or to ``NAME_1``, ``NAME_2``... when too long.
+
+    The header is row 1; it is frozen and repeated on every printed page. The page header
+    shows ``frame.attrs["title"]`` when the frame has one.
+
+    Parameters
+    ----------
+    wb : _Workbook
+        The workbook being written.
+    name : str
+        Sheet name (base name when split).
+    frame : pandas.DataFrame
+        Table in report units, headers carrying units (``"Vy [lbf]"``).
+    number_format : mapping or callable, optional
+        Excel number format per column header overriding the format of its unit
+        (``{"residual [N]": "0.00E+00"}``), or a function of the header returning a format or
+        None.
+    highlight : Highlight, optional
+        Columns whose cells above a threshold are filled red.
+    max_rows : int
+        Rows per sheet including the header; Excel's limit by default (a test uses less).
+    info : ReportInfo, optional
+        Page header and footer.
+
+    Returns
+    -------
+    list of str
+        The sheet names written, in order.
+    """
+    _check_highlight([frame], highlight, name)
+    formats = _number_formats(frame.columns, number_format)
+    columns = _column_plan([frame], formats_of=lambda f: formats)
+    title = frame_title(frame, name)
+    names = []
+    for sheet_name, start, stop in split_sheet_names(name, len(frame), max_rows):
+        ws = wb.add_worksheet(sheet_name)
+        ws.freeze_panes(_freeze(frame, 1))
+        _set_widths(ws, columns)
+        print_setup(ws, pixels=columns.pixels, height=ROW_PIXELS * (stop - start + 1),
+                    title_rows=1, sheet_title=title, info=info)
+        _write_table(_SheetWriter(wb, ws, columns.widths), frame.iloc[start:stop], formats,
+                     columns, highlight)
+        names.append(sheet_name)
+    return names
+
+
+def _table_pixels(frame, columns):
+    """Estimated printed height of a table with its header row. [px]"""
+    header = max(wrapped_lines(c, columns.widths.get(j, 10), bold=True)
+                 for j, c in enumerate(map(str, frame.columns))) if frame.shape[1] else 1
+    lines = len(frame)
+    for j in columns.wrapped:
+        if j < frame.shape[1]:
+            extra = frame.iloc[:, j].map(
+                lambda v, w=columns.widths[j]: wrapped_lines(v, w) - 1 if isinstance(v, str)
+                else 0)
+            lines += int(extra.sum())
+    return ROW_PIXELS * (header + lines)
+
+
+def _page_pixels(orientation, pixels):
+    """Printable height of a page in sheet pixels, after the fit-to-width shrink. [px]"""
+    width, height = PRINTABLE[orientation]
+    return height / min(1.0, width / max(pixels, 1.0))
+
+
+def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None,
+                         info=None):
+    """Write titled blocks (notes and tables) one under another on one sheet.
+
+    A sheet whose only table is its last block is a table sheet: the rows down to the
+    table's header are frozen and repeated on every printed page. Otherwise the first row
+    (the sheet's title) is frozen and repeated, and a block that would straddle a page
+    break but fits on one page starts on a new page.
+
+    Parameters
+    ----------
+    wb : _Workbook
+        The workbook being written.
+    name : str
+        Sheet name.
+    sections : sequence of Section
+    number_format, highlight
+        As in :func:`write_table_sheets`, applied to every table of the sheet.
+    info : ReportInfo, optional
+        Page header and footer.
+
+    Returns
+    -------
+    list of str
+        ``[name]``.
+    """
+    ws = wb.add_worksheet(check_sheet_name(name))
+    tables = [s.table for s in sections if s.table is not None]
+    _check_highlight(tables, highlight, name)
+    columns = _column_plan(tables, [s.note for s in sections],
+                           formats_of=lambda f: _number_formats(f.columns, number_format))
+    _set_widths(ws, columns)
+    blocks = [(s.title, _note_lines(s.note, columns) if s.note else [], s.table)
+              for s in sections]
+    one_table = len(tables) == 1 and sections[-1].table is not None
+    if one_table:
+        header_row = sum(bool(t) + len(n) + (k > 0) for k, (t, n, _) in enumerate(blocks)) + 1
+        ws.freeze_panes(_freeze(tables[0], header_row))
+        title_rows = header_row
+    else:  # the first row is the sheet's title when the first block has no table
+        heading = bool(blocks) and bool(blocks[0][0]) and blocks[0][2] is None
+        if heading:
+            ws.freeze_panes("A2")
+        title_rows = 1 if heading else None
+    sheet_title = next((s.title for s in sections if s.title), name)
+    needs = [ROW_PIXELS * (bool(title) + len(lines) + (k > 0))
+             + (_table_pixels(table, columns) if table is not None else 0)
+             for k, (title, lines, table) in enumerate(blocks)]
+    orientation = print_setup(ws, pixels=columns.pixels, height=sum(needs),
+                              title_rows=title_rows, sheet_title=sheet_title, info=info)
+    page = _page_pixels(orientation, columns.pixels) * 0.95
+    repeated = ROW_PIXELS * (title_rows or 0)
+    writer = _SheetWriter(wb, ws, columns.widths)
+    top = 0  # pixels written when the current page began
+
+    def capacity(start):
+        return page - (repeated if start else 0)
+
+    def paginate(need):
+        """Break the page above a data row that would not fit on the current one (a sheet
+        of several sections: its tables continue under their headers)."""
+        nonlocal top
+        while writer.pixels - top > capacity(top):
+            top += capacity(top)
+        if writer.pixels - top + need <= capacity(top) or writer.pixels == top:
+            return False
+        writer.page_break()
+        top = writer.pixels
+        return True
+
+    for k, ((title, lines, table), need) in enumerate(zip(blocks, needs, strict=True)):
+        while writer.pixels - top > capacity(top):
+            top += capacity(top)
+        fits = writer.pixels - top + need <= capacity(top)
+        if not one_table and k and not fits and need <= capacity(1):
+            writer.page_break()
+            top = writer.pixels
+        if k:
+            writer.blank()
+        if title:
+            writer.append([title], _TITLE_STYLE)
+        for line in lines:
+            writer.append([line])
+        if table is not None:
+            formats = _number_formats(table.columns, number_format)
+            _write_table(writer, table, formats, columns, highlight,
+                         paginate=None if one_table else paginate)
+    writer.close()
+    return [name]
+
+
+def format_by_header(rules: Sequence[tuple[str, str]],
+                     default: str | None = None) -> Callable[[str], str | None]:
+    """Number format chosen by the first regular expression that matches a column header.
+
+    Parameters
+    ----------
+    rules : sequence of (str, str)
+        ``(pattern, excel number format)`` pairs, tried in order with :func:`re.search`.
+    default : str, optional
+        Format when no pattern matches (None: the format of the header's unit).
+
+    Returns
+    -------
+    callable
+        header -> number format or None.
+
+    Examples
+    --------
+    >>> fmt = format_by_header([(r"residual", "0.00E+00")])
+    >>> fmt("closure force residual [N]"), fmt("case")
+    ('0.00E+00', None)
+    """
+    compiled = [(re.compile(p), f) for p, f in rules]
+
+    def pick(header):
+        for pattern, fmt in compiled:
+            if pattern.search(header):
+                return fmt
+        return default
+
+    return pick

@@ -1,0 +1,165 @@
+"""The reference paper's findings that this library reproduces on the GENERIC sample aircraft
+(``docs/paper-comparison.md``, written by ``benchmarks/paper_comparison.py``), kept from
+regressing on a tiny matrix of linear analyses and a few short runs.
+
+Each test names the paper's finding it checks against (section and figure of
+``sling-load-parachute-paper.txt``) and, where the finding is not reproduced, the explanation
+the comparison gives (which must stay true for the comparison to stay right).
+"""
+
+import numpy as np
+import pytest
+
+from slingloads.analyses.chute_sizing import neutral_area, run_yaw
+from slingloads.analyses.multibody import Manoeuvre, linearise, simulate_runs, trim
+from slingloads.constants import FOOT, G0, KNOT
+from slingloads.models.aerodynamics import Fin
+from slingloads.models.carrier_motion import QuinticStep
+from slingloads.models.flight import FlightCondition
+from slingloads.models.gusts import make_gust
+from slingloads.models.integration import SolverSettings
+from slingloads.models.multibody import (
+    Cable,
+    FreeCarrier,
+    HingedParachute,
+    LateralHookMotion,
+    SlingSystem,
+)
+from slingloads.models.parachute import Parachute, extended_cd_table
+from slingloads.models.sample_aircraft import (
+    sample_body,
+    sample_fin,
+    sample_fuselage,
+    sample_hardpoints,
+    sample_reference,
+    sample_surfaces,
+)
+from slingloads.models.yaw_dynamics import YawModel
+
+LOCAL = (np.radians(-2.0), np.radians(2.0))
+FIT = (np.radians(-10.0), np.radians(10.0))
+
+
+def yaw_model(name="HC1", alpha=0.0):
+    fin = sample_fin(name)
+    return YawModel(sample_fuselage(name),
+                    Fin(fin.table, fin.area, fin.centre_of_pressure, fin.efficiency),
+                    sample_hardpoints(name), sample_reference(name).yaw_inertia,
+                    FlightCondition(80 * KNOT, 0.0, alpha=alpha), Parachute(1.0))
+
+
+def towed(area, airspeed=80 * KNOT, cable=60 * FOOT, **kw):
+    return SlingSystem(sample_body("HC1"), sample_hardpoints("HC1"), Cable(cable, 5e6),
+                       sample_fuselage("HC1"), sample_surfaces("HC1"),
+                       HingedParachute(Parachute(area, extended_cd_table(), line_length=10.1)),
+                       airspeed=airspeed, **kw)
+
+
+def stable(system):
+    point = trim(system)
+    return point.converged and linearise(point).verdict() == "stable"
+
+
+def boundary(make, low=0.9, high=1.6, tol=0.01):
+    assert stable(make(high)) and not stable(make(low))
+    while high - low > tol:
+        mid = 0.5 * (low + high)
+        low, high = (low, mid) if stable(make(mid)) else (mid, high)
+    return high
+
+
+@pytest.fixture(scope="module")
+def areas():
+    model = yaw_model()
+    return neutral_area(model, FIT).area, neutral_area(model, LOCAL).area
+
+
+def test_fuselage_unstable_fin_stabilising_and_the_neutral_area(areas):
+    """Paper s.4.1, figures 4-5: the fuselage alone is directionally unstable, the cut-down
+    fin stabilising, and the moment balance gives a positive parachute area; the local
+    slope's area lies above the +-10 deg fit's (the sample's Cn is steepest at beta = 0)."""
+    res = neutral_area(yaw_model(), FIT)
+    assert res.derivatives["fuselage"] < 0 < res.derivatives["fin"]
+    fitted, local = areas
+    assert fitted == pytest.approx(0.490, abs=0.002)
+    assert 1.10 < local / fitted < 1.15
+
+
+def test_one_dof_neutral_area_holds_the_gust_at_the_local_slope(areas):
+    """Paper s.4.2, figure 7: at 80 KIAS the 1-DOF model at the neutral area rides out the
+    30 ft/s gust. Reproduced with the neutral area at the local slope plus 5 %: the yaw comes
+    back on heading; at the +-10 deg fit's area the local stiffness is negative and the yaw
+    settles several degrees off (a static departure: linear theory, negative stiffness)."""
+    fitted, local = areas
+    gust = make_gust("finite", 30 * FOOT, 30.0, 10.0)
+    runs = run_yaw(yaw_model(), [fitted, 1.05 * local], [gust, gust],
+                   settings=SolverSettings(t_end=120.0, step=0.05, output_interval=0.1),
+                   fit_range=(np.radians(-15.0), np.radians(15.0)))
+    final = np.degrees(runs.histories.psi[:, -1])
+    assert abs(final[0]) > 3.0
+    assert abs(final[1]) < 1.0
+
+
+def test_multibody_boundary_is_the_static_neutral_point_whatever_the_carrier_and_cable(areas):
+    """Paper s.4.5, figures 10 and 13 (cable, carrier: negligible) and the comparison's
+    reason why the paper's +40 % is not reproduced: the smallest stable area of the towed
+    system at 80 KEAS lies within 5 % of the 1-DOF local-slope neutral area at the trimmed
+    angle of attack, and the cable (18 or 100 ft) and a free carrier move it by less than
+    the bisection's 0.01."""
+    fitted, _ = areas
+    base = boundary(lambda f: towed(f * fitted))
+    alpha = trim(towed(base * fitted)).quantity("alpha")
+    static = neutral_area(yaw_model(alpha=alpha), LOCAL).area / fitted
+    assert base == pytest.approx(static, rel=0.05)
+    assert base < 1.3
+    for kw in ({"cable": 18 * FOOT}, {"cable": 100 * FOOT},
+               {"carrier": FreeCarrier(15000.0, 4.0)}):
+        assert boundary(lambda f, kw=kw: towed(f * fitted, **kw)) == pytest.approx(
+            base, abs=0.011)
+
+
+def test_larger_parachute_is_draggier(areas):
+    """Paper s.4.5 and conclusion 5: a larger parachute area gives a larger trimmed swing
+    angle (the drag proxy) at 100 KEAS."""
+    fitted, _ = areas
+    swing = [trim(towed(f * fitted, airspeed=100 * KNOT)).swing_angle for f in (1.0, 1.4, 1.8)]
+    assert np.all(np.diff(swing) > 0)
+
+
+def test_lateral_hook_step_keeps_the_mast_load_below_30_deg():
+    """Paper s.6, figure 23 and conclusion 7: after a sudden lateral motion of the carrier
+    in hover the hub load stays well inside CS 29.865's 30 deg cone (0.5 g peak in 2 s,
+    60 ft cable, no parachute)."""
+    from slingloads.analyses.campaign import sample_full_tail_system
+
+    step = QuinticStep.from_peak_acceleration(0.5 * G0, 2.0)
+    sim = simulate_runs([(sample_full_tail_system("HC1"),
+                          Manoeuvre("lateral step", trajectory=LateralHookMotion(step)))],
+                        t_end=20.0)
+    h = sim.runs[0].to_frame()
+    peak = np.nanmax(np.abs(h["hub load from mast [deg]"]))
+    assert 1.0 < peak < 15.0
+
+
+def test_without_parachute_airspeed_matters_only_through_yaw_and_pendulum_coalescence():
+    """Paper s.5.3, figures 16-18 (a speed limit without parachute), and the comparison's
+    reason: both sides of the static yaw balance scale with q, so a speed limit can only come
+    from a dynamic coupling. HC1's full tail with twice its fin area (a stiffer yaw) is stable
+    at 30 kt and 80 kt and unstable at 50 kt, in an oscillation at the cable pendulum's
+    frequency sqrt(g / (l + e)) (FACTS s.5, k -> 0) within 10 %."""
+    from dataclasses import replace
+
+    from slingloads.analyses.campaign import sample_full_tail_system
+
+    base = sample_full_tail_system("HC1")
+    fin, tail = base.surfaces
+    stiff = base.with_(surfaces=(replace(fin, area=2.0 * fin.area), tail))
+    lam = {}
+    for v in (30.0, 50.0, 80.0):
+        point = trim(stiff.with_(airspeed=v * KNOT))
+        ev = linearise(point).eigenvalues
+        lam[v] = ev[np.argmax(ev.real)]
+    assert lam[30.0].real < 0 and lam[80.0].real < 0 < lam[50.0].real
+    hang = float(np.linalg.norm(sample_hardpoints("HC1").hub))   # hub above the CG
+    pendulum = np.sqrt(G0 / (60 * FOOT + hang))
+    assert abs(lam[50.0].imag) == pytest.approx(pendulum, rel=0.10)
