@@ -152,7 +152,7 @@ def test_workbook_manoeuvre_reads_a_trajectory_file(tmp_path):
     refused at its cell."""
     import openpyxl
 
-    from slingloads.io.multibody.reader import load_workbook_system
+    from slingloads.io.study import load_workbook_system
 
     example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
     book = openpyxl.load_workbook(example)

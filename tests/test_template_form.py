@@ -56,7 +56,7 @@ def test_template_filled_runs_first_time(tmp_path):
     with fuselage and fin tables in the template's own columns (CX and CZ left empty under
     the default wind frame) and every other sheet left empty: the workbook reads and runs."""
     study = read_study(_fill(tmp_path / "small.xlsx"), only=["loads"])
-    loads = study.loads
+    loads = study.inputs.loads
     assert loads.airframe.mass_items.total_mass == pytest.approx(2200.0, rel=1e-12)
     result = loads.run()
     vertical = result.case_ids[list(result.cases["hook"]).index("VERTICAL")]
@@ -70,7 +70,7 @@ def test_template_without_aero_runs_and_an_empty_sheet_is_absent(tmp_path):
     """Without any aerodynamic data the same form runs (the empty FuselageAero, FinAero and
     AeroEnvelope sheets count as deleted), and a cross-sheet rule still names its cell."""
     study = read_study(_fill(tmp_path / "bare.xlsx", aero=False), only=["loads"])
-    assert study.loads.fuselage is None and study.loads.envelope is None
+    assert study.inputs.loads.fuselage is None and study.inputs.loads.envelope is None
     with pytest.raises(InputError, match=r"cell B\d+: a parachute area is given but the "
                                          r"Hardpoints sheet has no row of kind 'chute'"):
         read_study(_fill(tmp_path / "chute.xlsx", aero=False,
