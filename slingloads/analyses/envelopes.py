@@ -12,7 +12,22 @@ from slingloads.errors import InputError
 
 
 def component_index(name):
-    """Array index of an internal-load component name (``"Vy"`` -> 1)."""
+    """Array index of an internal-load component name (``"Vy"`` -> 1).
+
+    Parameters
+    ----------
+    name : str
+        One of :data:`~slingloads.analyses.sfbm.COMPONENTS`.
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    InputError
+        For an unknown component.
+    """
     try:
         return COMPONENTS.index(name)
     except ValueError:
@@ -76,7 +91,18 @@ def bound_values(frame):
 
 
 def envelope_arrays(loads):
-    """Per-station maximum and minimum, shapes (s, 6) each. [N, N m]"""
+    """Per-station maximum and minimum of every component over the cases.
+
+    Parameters
+    ----------
+    loads : ndarray, shape (c, s, 6)
+        Internal loads. [N, N m]
+
+    Returns
+    -------
+    maximum, minimum : ndarray, shape (s, 6)
+        [N, N m]
+    """
     return loads.max(axis=0), loads.min(axis=0)
 
 

@@ -73,7 +73,24 @@ class Attitude:
 
     @classmethod
     def from_vertical(cls, vertical, source="given"):
-        """The attitude whose earth vertical is ``vertical`` (airframe axes, any length > 0)."""
+        """The attitude whose earth vertical is a given vector.
+
+        Parameters
+        ----------
+        vertical : array_like, shape (3,)
+            Earth's upward vertical in airframe axes, any length > 0, z component > 0. [-]
+        source : str
+            How the attitude was found (kept in :attr:`source`).
+
+        Returns
+        -------
+        Attitude
+
+        Raises
+        ------
+        InputError
+            For a zero vector or one that points to the airframe's lower side.
+        """
         k = np.asarray(vertical, float).reshape(3)
         norm = np.linalg.norm(k)
         if not np.isfinite(norm) or norm == 0:
@@ -87,7 +104,18 @@ class Attitude:
 
     @classmethod
     def hanging(cls, mass_items, hub):
-        """The attitude in which the CG of ``mass_items`` lies under ``hub`` [m].
+        """The attitude in which the CG of ``mass_items`` lies under the hub.
+
+        Parameters
+        ----------
+        mass_items : MassItems
+            Mass model; its CG is used. [m]
+        hub : array_like, shape (3,)
+            Rotor hub (cable attachment), airframe axes. [m]
+
+        Returns
+        -------
+        Attitude
 
         Raises
         ------
@@ -106,11 +134,27 @@ class Attitude:
 
     @classmethod
     def mast_vertical(cls, mast_axis):
-        """The attitude in which the mast axis is the earth vertical."""
+        """The attitude in which the mast axis is the earth vertical.
+
+        Parameters
+        ----------
+        mast_axis : array_like, shape (3,)
+            Mast axis in airframe axes, pointing up. [-]
+
+        Returns
+        -------
+        Attitude
+        """
         return cls.from_vertical(mast_axis, "mast vertical")
 
     def describe(self):
-        """Readable text: "pitch -9.17 deg (nose down), roll 0 deg (hanging: CG under the hub)"."""
+        """Readable text, e.g. "pitch -9.17 deg (nose down), roll 0 deg (hanging: CG under
+        the hub)".
+
+        Returns
+        -------
+        str
+        """
         pitch, roll = (float(np.round(np.degrees(a), 2)) + 0.0 for a in (self.pitch, self.roll))
         nose = "nose up" if pitch > 0 else "nose down" if pitch < 0 else "level"
         side = ("right side down" if roll > 0 else "left side down" if roll < 0 else "level")
@@ -119,7 +163,14 @@ class Attitude:
         return f"pitch {pitch:+.2f} deg ({nose}), roll {roll:+.2f} deg ({side}); {how}"
 
     def to_frame(self):
-        """The attitude and its earth vertical as a one-row DataFrame (angles in degrees)."""
+        """The attitude and its earth vertical as a one-row DataFrame.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Columns ``attitude source``, ``pitch [deg]``, ``roll [deg]`` and the vertical's
+            components ``vertical x [-]``, ``vertical y [-]``, ``vertical z [-]``.
+        """
         k = self.vertical
         return pd.DataFrame([{"attitude source": self.source,
                               "pitch [deg]": float(np.degrees(self.pitch)),
@@ -134,8 +185,18 @@ def resolve_attitude(attitude, airframe):
     Parameters
     ----------
     attitude : str or Attitude
+        ``"hanging"`` (CG under the hub), ``"mast vertical"``, or an attitude, returned as is.
     airframe : Airframe
-        Mass items and hardpoints (hub, mast axis).
+        Mass items and hardpoints (hub, mast axis). [m]
+
+    Returns
+    -------
+    Attitude
+
+    Raises
+    ------
+    InputError
+        For any other value.
     """
     if isinstance(attitude, Attitude):
         return attitude
