@@ -86,7 +86,19 @@ def envelope_table(loads, case_ids, stations, station_ids):
 
 def bound_values(frame):
     """The ``value_N`` / ``value_Nm`` pair of an envelope table as one SI column (each row's
-    component says which unit). [N] or [N m]"""
+    component says which unit).
+
+    Parameters
+    ----------
+    frame : DataFrame
+        With columns ``value_N`` (shears, NaN for moments) and ``value_Nm`` (moments, NaN
+        for shears), as :meth:`~slingloads.analyses.loads.LoadsResult.envelope` gives.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        The bound of each row. [N] or [N m]
+    """
     return frame["value_N"].fillna(frame["value_Nm"]).to_numpy(float)
 
 

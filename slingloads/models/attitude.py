@@ -232,6 +232,17 @@ def to_right_handed(yaw, pitch, roll):
 
 
 def from_right_handed(rx, ry, rz):
-    """Aerospace (yaw, pitch, roll) [rad] of right-handed angles about +x, +y, +z [rad]: the
-    inverse of :func:`to_right_handed`."""
+    """Aerospace (yaw, pitch, roll) of right-handed angles about +x, +y, +z: the inverse of
+    :func:`to_right_handed`.
+
+    Parameters
+    ----------
+    rx, ry, rz : float or array_like
+        [rad]
+
+    Returns
+    -------
+    yaw, pitch, roll : float or ndarray
+        [rad]
+    """
     return -np.asarray(rz, float), np.asarray(ry, float), -np.asarray(rx, float)

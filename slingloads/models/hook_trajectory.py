@@ -136,11 +136,28 @@ class PiecewiseAcceleration(_Motion):
         return float(np.max(np.abs(self.acceleration)))
 
     def describe(self):
+        """A one-line description for the run tables.
+
+        Returns
+        -------
+        str
+        """
         return (f"{self.name} ({self.time.size} breakpoints over "
                 f"{self.time[0]:.4g}-{self.time[-1]:.4g} s)")
 
     def kinematics(self, t):
-        """S [m], S' [m/s], S'' [m/s^2] at times ``t`` [s] (exact integrals)."""
+        """Displacement, velocity and acceleration at times ``t`` (exact integrals).
+
+        Parameters
+        ----------
+        t : float or array_like
+            [s]
+
+        Returns
+        -------
+        s, v, a : ndarray
+            S [m], S' [m/s] and S'' [m/s^2], each of the shape of ``t``.
+        """
         t = np.asarray(t, dtype=float)
         knots, a, slope, v, s = (np.asarray(p) for p in self._pieces)
         i = np.clip(np.searchsorted(knots, t, side="right") - 1, 0, knots.size - 2)
@@ -156,7 +173,18 @@ class PiecewiseAcceleration(_Motion):
                 np.where(before | after, 0.0, acc))
 
     def kinematics_at(self, t):
-        """:meth:`kinematics` at one time, in floats."""
+        """:meth:`kinematics` at one time, in floats.
+
+        Parameters
+        ----------
+        t : float
+            [s]
+
+        Returns
+        -------
+        s, v, a : float
+            S [m], S' [m/s], S'' [m/s^2].
+        """
         knots, a, slope, v, s = self._pieces
         t = float(t)
         if t < knots[0]:
@@ -230,15 +258,47 @@ class HookTrajectory:
     @classmethod
     def along(cls, motion, direction="Y", *, from_hover=False, name=None):
         """One motion of :mod:`slingloads.models.carrier_motion` (or a
-        :class:`PiecewiseAcceleration`) along ``direction``."""
+        :class:`PiecewiseAcceleration`) along ``direction``.
+
+        Parameters
+        ----------
+        motion : object
+            A one-dimensional motion with ``kinematics(t)`` and ``describe()``.
+        direction : str or array_like, shape (3,)
+            ``"X"``, ``"-X"``, ``"Y"``... or a vector (normalised), earth axes.
+        from_hover : bool
+            The run starts trimmed in hover.
+        name : str, optional
+            Default: the motion's description and the direction.
+
+        Returns
+        -------
+        HookTrajectory
+        """
         return cls(((motion, direction),), from_hover,
                    name or f"{motion.describe()} along {direction}")
 
     @classmethod
     def from_acceleration(cls, time, acceleration, interpolation="linear", *,
                           from_hover=False, name="acceleration history"):
-        """Acceleration samples (n, 3) [m/s^2] at breakpoints ``time`` (n,) [s], joined as
-        :class:`PiecewiseAcceleration` joins them."""
+        """Acceleration samples at breakpoints, joined as :class:`PiecewiseAcceleration` joins
+        them.
+
+        Parameters
+        ----------
+        time : array_like, shape (n,)
+            Breakpoints, strictly increasing, >= 0. [s]
+        acceleration : array_like, shape (n, 3)
+            X, Y, Z acceleration at each breakpoint, earth axes. [m/s^2]
+        interpolation : {"linear", "previous"}
+        from_hover : bool
+            The run starts trimmed in hover.
+        name : str
+
+        Returns
+        -------
+        HookTrajectory
+        """
         t = _times(time, "hook trajectory")
         a = _samples(acceleration, t, "acceleration", "m/s^2")
         parts = tuple((PiecewiseAcceleration(t, a[:, k], interpolation, name), axis)
@@ -248,9 +308,24 @@ class HookTrajectory:
 
     @classmethod
     def from_velocity(cls, time, velocity, *, from_hover=False, name="velocity history"):
-        """Velocity samples (n, 3) [m/s] relative to the steady flight, linear between the
-        breakpoints ``time`` [s]: the acceleration is held over each interval. The first
-        sample must be 0 (the hook's speed cannot jump) and the hook keeps the last."""
+        """Velocity samples relative to the steady flight, linear between the breakpoints:
+        the acceleration is held over each interval. The first sample must be 0 (the hook's
+        speed cannot jump) and the hook keeps the last.
+
+        Parameters
+        ----------
+        time : array_like, shape (n,)
+            Breakpoints, strictly increasing, >= 0. [s]
+        velocity : array_like, shape (n, 3)
+            X, Y, Z velocity at each breakpoint, earth axes. [m/s]
+        from_hover : bool
+            The run starts trimmed in hover.
+        name : str
+
+        Returns
+        -------
+        HookTrajectory
+        """
         t = _times(time, "hook trajectory")
         v = _samples(velocity, t, "velocity", "m/s")
         if np.any(v[0] != 0):
@@ -265,7 +340,22 @@ class HookTrajectory:
         """Displacement samples (n, 3) [m] at times ``time`` [s] relative to the first, each
         axis a cubic spline that leaves the first sample at rest (zero slope: the hook's
         speed cannot jump) and ends without acceleration (the hook then keeps its speed):
-        ``scipy.interpolate.CubicSpline(bc_type=((1, 0), (2, 0)))``."""
+        ``scipy.interpolate.CubicSpline(bc_type=((1, 0), (2, 0)))``.
+
+        Parameters
+        ----------
+        time : array_like, shape (n,)
+            Sample times, strictly increasing, >= 0. [s]
+        displacement : array_like, shape (n, 3)
+            X, Y, Z displacement at each time, earth axes. [m]
+        from_hover : bool
+            The run starts trimmed in hover.
+        name : str
+
+        Returns
+        -------
+        HookTrajectory
+        """
         t = _times(time, "hook trajectory")
         s = _samples(displacement, t, "displacement", "m")
         parts = tuple((_SplineMotion(t, s[:, k] - s[0, k], name), axis)
@@ -279,7 +369,23 @@ class HookTrajectory:
         """From hover to ``target`` [m/s] along the flight path (-X): the acceleration rises
         linearly to ``acceleration`` [m/s^2] in ``jerk_time`` [s] from ``onset`` [s], holds
         and falls in ``jerk_time`` (a triangle of lower peak when the target is too small
-        for a plateau)."""
+        for a plateau).
+
+        Parameters
+        ----------
+        target : float
+            Final speed along the flight path. [m/s]
+        acceleration : float
+            Plateau acceleration. [m/s^2]
+        onset : float
+            Start of the manoeuvre. [s]
+        jerk_time : float
+            Rise and fall time of the acceleration. [s]
+
+        Returns
+        -------
+        HookTrajectory
+        """
         hold = target / acceleration - jerk_time
         peak, hold = (target / jerk_time, 0.0) if hold < 0 else (acceleration, hold)
         t = onset + np.array([0.0, jerk_time, jerk_time + hold, 2 * jerk_time + hold])
@@ -292,7 +398,17 @@ class HookTrajectory:
 
     @classmethod
     def lateral(cls, motion):
-        """A lateral hook motion of :mod:`slingloads.models.carrier_motion` along +Y."""
+        """A lateral hook motion of :mod:`slingloads.models.carrier_motion` along +Y.
+
+        Parameters
+        ----------
+        motion : object
+            A one-dimensional motion with ``kinematics(t)`` and ``describe()``.
+
+        Returns
+        -------
+        HookTrajectory
+        """
         return cls(((motion, "Y"),), False, f"lateral hook motion: {motion.describe()}")
 
     # ------------------------------------------------------------------ the protocol
@@ -305,8 +421,18 @@ class HookTrajectory:
         return tuple(sorted(times))
 
     def kinematics(self, t):
-        """Displacement [m], velocity [m/s] and acceleration [m/s^2] relative to the steady
-        flight at times ``t`` (n,) [s]: three arrays of shape (n, 3), earth axes."""
+        """Displacement, velocity and acceleration relative to the steady flight.
+
+        Parameters
+        ----------
+        t : array_like, shape (n,)
+            [s]
+
+        Returns
+        -------
+        s, v, a : ndarray, shape (n, 3)
+            Displacement [m], velocity [m/s] and acceleration [m/s^2], earth axes.
+        """
         t = np.asarray(t, dtype=float).reshape(-1)
         out = np.zeros((3, t.size, 3))
         for motion, e in self.components:
@@ -316,18 +442,42 @@ class HookTrajectory:
         return out[0], out[1], out[2]
 
     def command(self, t, v0):
-        """Commanded acceleration [m/s^2] and velocity [m/s] (n, 3) at times ``t`` (n,) [s],
-        for the steady velocity ``v0`` (3,) [m/s]."""
+        """Commanded acceleration and velocity of the hook.
+
+        Parameters
+        ----------
+        t : array_like, shape (n,)
+            [s]
+        v0 : array_like, shape (3,)
+            The steady velocity, earth axes. [m/s]
+
+        Returns
+        -------
+        a, v : ndarray, shape (n, 3)
+            Acceleration [m/s^2] and velocity [m/s], earth axes.
+        """
         _, v, a = self.kinematics(t)
         return a, v + np.asarray(v0, float)
 
     def describe(self):
+        """The trajectory's name, for the run tables.
+
+        Returns
+        -------
+        str
+        """
         return self.name
 
     def lateral_motion(self):
         """The hook's motion along +Y as a one-dimensional carrier motion (S, S', S'') for
         the lateral-pendulum study (:mod:`slingloads.analyses.lateral`); the other axes are
-        not part of that model."""
+        not part of that model.
+
+        Returns
+        -------
+        object
+            A one-dimensional motion with ``kinematics(t)`` -> S [m], S' [m/s], S'' [m/s^2].
+        """
         return _Projected(self, _direction("Y"))
 
 
