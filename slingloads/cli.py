@@ -399,7 +399,7 @@ def _run_options(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
     from slingloads.io.campaign.reader import address_rule
     from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
-    from slingloads.runs.cache import check_outside, check_writable, default_cache_dir
+    from slingloads.runs.cache import check_outside, default_cache_dir
     from slingloads.runs.study import RunOptions
 
     if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
@@ -415,8 +415,8 @@ def _run_options(args, show):
         if rule is not None:
             raise InputError(f"--scheduler: {rule}", args.scheduler)
     cache = Path(args.cache) if args.cache else default_cache_dir()
-    check_outside(cache, args.out)
-    check_writable(cache)
+    check_outside(cache, args.out)  # a cache that cannot be used is a warning: the
+    # campaign then runs without it (slingloads.runs.cache)
     return RunOptions(scheduler=args.scheduler, workers=args.workers, cache=cache,
                       timeout=args.scheduler_timeout, progress=_RunsBar() if show else None)
 

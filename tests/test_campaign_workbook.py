@@ -136,14 +136,18 @@ def test_report_files_and_readback(tiny):
 
 
 def test_second_run_comes_from_the_cache(tiny, tmp_path):
-    """Run again on the same cache: all 3 runs are found, none computed, same numbers."""
+    """Run again on the same cache: all 3 runs are found, none computed, same numbers; the
+    Summary counts the matrix's 2 runs and the ramp's apart (the matrix's count never exceeds
+    its runs)."""
     path, out, cache = tiny
     again = tmp_path / "again"
     assert main(["campaign", str(path), "--out", str(again), "--cache", str(cache),
                  "--quiet"]) == 0
     frame = pd.read_excel(again / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
     rows = dict(zip(frame[0], frame[1], strict=False))
-    assert (rows["runs found in the cache"], rows["runs computed now"]) == (3, 0)
+    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 0)
+    assert (rows["runs without parachute found in the cache"],
+            rows["runs without parachute computed now"]) == (1, 0)
     pd.testing.assert_frame_equal(pd.read_excel(again / "tiny-campaign.xlsx", "Metrics"),
                                   pd.read_excel(out / "tiny-campaign.xlsx", "Metrics"))
 
@@ -259,6 +263,19 @@ def test_unknown_mass_case_in_listed_rows(tmp_path, capsys):
          extra=extra)
 
 
+def test_mass_cases_differing_only_in_case_are_one_name(tmp_path, capsys):
+    """Rule (docs/inputs-and-outputs.md: ids are unique with case ignored): CampaignMasses
+    names "max" and "MAX" are the same mass case; the error is at the second one's cell."""
+    def extra(book):
+        masses = book.create_sheet("CampaignMasses")
+        masses.append(["mass case", "mass [kg]"])
+        masses.append(["max", 2900])
+        masses.append(["MAX", 2500])
+
+    _bad(tmp_path, capsys, {}, ["sheet 'CampaignMasses', cell A3", "duplicate mass case",
+                                "first at A2", "case ignored"], extra=extra)
+
+
 def test_unreachable_scheduler_is_a_clear_error_within_its_time_out(tmp_path, capsys):
     """A scheduler nobody answers (--scheduler-timeout 1 s): exit 2 within seconds, the
     address and the time-out in the message, nothing written or cached."""
@@ -302,7 +319,8 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
 def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsys,
                                                                 monkeypatch):
     """Ctrl-C during the second batch (the wind ramp; the first held the 2 matrix runs): exit
-    130, nothing written, the 2 runs cached; the same command again finds 2 and computes 1."""
+    130, nothing written, the 2 runs cached; the same command again finds the 2 matrix runs
+    and computes the ramp."""
     from slingloads.analyses.campaign import execution
 
     path = workbook(tmp_path / "tiny.xlsx")
@@ -325,7 +343,9 @@ def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsy
     assert main(args) == 0
     frame = pd.read_excel(out / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
     rows = dict(zip(frame[0], frame[1], strict=False))
-    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 1)
+    assert (rows["runs found in the cache"], rows["runs computed now"]) == (2, 0)
+    assert (rows["runs without parachute found in the cache"],
+            rows["runs without parachute computed now"]) == (0, 1)
 
 
 def test_progress_bar_shows_runs_done_rate_and_time_left(tiny, tmp_path, capsys):

@@ -383,9 +383,11 @@ def test_negative_ramp_rate(small, tmp_path, capsys):
          "rate must be > 0 m/s^2", "-0.5")
 
 
-def test_duplicate_run_name(small, tmp_path, capsys):
-    """Rule: run names unique (A3 repeats A2)."""
-    _bad(small, tmp_path, capsys, {(MANOEUVRES, "A3"): "free response 10 deg yaw"},
+@pytest.mark.parametrize("name", ["free response 10 deg yaw", "FREE RESPONSE 10 DEG YAW"])
+def test_duplicate_run_name(small, tmp_path, capsys, name):
+    """Rule: run names unique, case ignored (docs/inputs-and-outputs.md: ids are unique with
+    case ignored): A3 repeats A2, as written or in capitals."""
+    _bad(small, tmp_path, capsys, {(MANOEUVRES, "A3"): name},
          MANOEUVRES, "A3", "duplicate name", "first at A2")
 
 

@@ -32,6 +32,7 @@ from slingloads.limits import MAX_MULTIBODY_RUN_STEPS
 from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
 from slingloads.models.multibody.integrator import (
     ATOL,
+    DRIVE_STEP,
     RTOL,
     evaluate_many,
     integrate,
@@ -489,12 +490,55 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
             groups.setdefault(system.table_key(), []).append(k)
         else:
             results[k] = RunResult(system, prepared[k][1], tr, time, 0, 0.0)
-    drives = _DriveTables(t_end, output_interval)
     settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers,
                 "keep_states": bool(keep_histories)}
     for members in groups.values():
-        _integrate_group(prepared, members, results, drives, time, settings)
+        # the drive tables of a few runs at a time (DRIVE_BUDGET): each chunk's are freed
+        # before the next is tabulated, whatever the number of runs
+        for chunk in _chunks(members, [drive_bytes(t_end, prepared[k][1].breakpoints)
+                                       for k in members], DRIVE_BUDGET):
+            _integrate_group(prepared, chunk, results, _DriveTables(t_end, output_interval),
+                             time, settings)
     return Simulation(results, linear, dt, float(rtol), float(atol))
+
+
+#: Bytes of drive tables tabulated at once (a chunk of runs; a run of 3,600 s takes about
+#: 26 MB, held twice while its chunk is stacked: two such runs per chunk, so that two cores
+#: integrate side by side). [bytes]
+DRIVE_BUDGET = 128 * 2**20
+#: Bytes a run keeps per stored sample: its states, the drive at the sample, and the reported
+#: quantities and histories evaluated from them when asked for. [bytes]
+SAMPLE_BYTES = 8 * (N_STATES + 9 + N_INFO + N_HISTORY)
+
+
+def drive_bytes(t_end, breakpoints=()):
+    """Bytes of the drive tables of one run of ``t_end`` [s] (sampled every DRIVE_STEP, and
+    at both ends of each segment between ``breakpoints``), counted twice: the run's table and
+    its copy in the chunk's stacked array."""
+    segments = 1 + len(tuple(breakpoints))
+    rows = float(t_end) / DRIVE_STEP + 2 * segments + 1
+    return int(2 * rows * 9 * 8)
+
+
+def run_bytes(t_end, output_interval, breakpoints=()):
+    """Memory one run needs while it is integrated and kept: its drive tables
+    (:func:`drive_bytes`) and its samples (:data:`SAMPLE_BYTES` each). [bytes]"""
+    samples = int(round(float(t_end) / float(output_interval))) + 1
+    return drive_bytes(t_end, breakpoints) + samples * SAMPLE_BYTES
+
+
+def _chunks(members, sizes, budget):
+    """``members`` cut in order into chunks whose ``sizes`` add up to at most ``budget`` (at
+    least one member each)."""
+    chunk, used = [], 0
+    for member, size in zip(members, sizes, strict=True):
+        if chunk and used + size > budget:
+            yield chunk
+            chunk, used = [], 0
+        chunk.append(member)
+        used += size
+    if chunk:
+        yield chunk
 
 
 def _check_step(point, dt, linear):
@@ -565,12 +609,15 @@ def _integrate_group(prepared, members, results, drives, time, settings):
             seen[key] = len(profiles)
             profiles.append(table)
         index[j] = seen[key]
+    recipes = [None] * len(profiles)
+    for j, k in enumerate(members):
+        recipes[index[j]] = (prepared[k][1], prepared[k][2].state[0:3])
     drive = stack_drives(profiles)
     measured = np.array([_measured(system, manoeuvre) for system, manoeuvre, _ in
                          (prepared[k] for k in members)])
     done = integrate(x0, params, drive, index, drives.interval, time.size, system0.tables(),
                      measured=measured, **settings)
-    batch = _Batch(done, x0, params, drive, index, drives.interval, system0.tables(),
+    batch = _Batch(done, x0, params, drive, index, drives, recipes, system0.tables(),
                    settings)
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
@@ -602,13 +649,24 @@ class _Batch:
     are integrated again (alone: each run is integrated on its own whatever its batch, so
     they are the same to the last bit), and its reported quantities are evaluated on
     request (the same compiled equations at the same states and drive as during the
-    integration)."""
+    integration). Of the drive only the samples are kept: the tables (the larger part, a
+    row every DRIVE_STEP) are tabulated again, the same to the last bit, for a run
+    integrated again."""
 
-    def __init__(self, done, x0, params, drive, profile, interval, tables, settings):
+    def __init__(self, done, x0, params, drive, profile, drives, recipes, tables, settings):
         self.states, self.measures = done.states, done.measures
-        self.x0, self.params, self.drive, self.profile = x0, params, drive, profile
-        self.interval, self.tables, self.settings = interval, tables, settings
+        self.x0, self.params, self.profile = x0, params, profile
+        self.nodes = drive["nodes"]
+        self.t_end, self.interval, self.recipes = drives.t_end, drives.interval, recipes
+        self.tables, self.settings = tables, settings
         self.samples = drive["nodes"].shape[1]
+
+    @property
+    def drive(self):
+        """The stacked drive tables of the batch (as the integration had them), tabulated
+        again on each access (module notes of the class)."""
+        tables = _DriveTables(self.t_end, self.interval)
+        return stack_drives([tables.get(*recipe)[1] for recipe in self.recipes])
 
     def states_of(self, j):
         """Sampled states of run ``j``."""
@@ -616,8 +674,10 @@ class _Batch:
             return self.states[j]
         one = slice(j, j + 1)
         settings = {**self.settings, "keep_states": True, "workers": 1}
-        return integrate(self.x0[one], self.params[one], self.drive, self.profile[one],
-                         self.interval, self.samples, self.tables, **settings).states[0]
+        _, table = _DriveTables(self.t_end, self.interval).get(*self.recipes[self.profile[j]])
+        return integrate(self.x0[one], self.params[one], stack_drives([table]),
+                         np.zeros(1, dtype=np.int64), self.interval, self.samples,
+                         self.tables, **settings).states[0]
 
     def info(self, j, states):
         """Reported quantities of run ``j`` at its samples ``states`` (NaN where it had
@@ -625,7 +685,7 @@ class _Batch:
         reached = np.isfinite(states[:, 0])
         info = np.full((states.shape[0], N_INFO), np.nan)
         if reached.any():
-            nodes = self.drive["nodes"][self.profile[j]]
+            nodes = self.nodes[self.profile[j]]
             _, info[reached], _ = evaluate_many(states[reached], self.params[j],
                                                 nodes[reached], self.tables)
         return info

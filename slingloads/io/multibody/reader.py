@@ -22,6 +22,7 @@ from slingloads.analyses.multibody.manoeuvres import (
     Manoeuvre,
     paper_manoeuvres,
 )
+from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -43,7 +44,7 @@ from slingloads.io.multibody.schema import (
     TAILS,
 )
 from slingloads.io.multibody.trajectory import read_trajectory_csv
-from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES
+from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES, MEMORY_BUDGET
 from slingloads.models.aero_tables import Table1D
 from slingloads.models.atmosphere import isa_density, true_airspeed
 from slingloads.models.gusts import GUST_KINDS, GUST_VELOCITY, make_gust
@@ -124,6 +125,14 @@ def check_work(params, runs, settings):
                  f"too much work: {runs} runs of {settings['t_end']:g} s sampled at this "
                  f"interval store {samples:,} samples, more than the "
                  f"{MAX_MULTIBODY_SAMPLES:,} allowed (limits of slingloads)")
+    from slingloads.analyses.multibody.simulate import DRIVE_BUDGET, SAMPLE_BYTES
+
+    need = DRIVE_BUDGET + samples * SAMPLE_BYTES
+    params.check("multibody output interval", need <= MEMORY_BUDGET,
+                 f"too much memory: {runs} runs of {settings['t_end']:g} s sampled at this "
+                 f"interval need about {need / 2**20:,.0f} MB, more than the "
+                 f"{MEMORY_BUDGET / 2**20:,.0f} MB budget of a computation (limits of "
+                 "slingloads; docs/inputs-and-outputs.md, Memory)")
     if settings["dt"] is not None:
         steps = runs * settings["t_end"] / settings["dt"]
         params.check("multibody time step", steps <= MAX_MULTIBODY_RUN_STEPS,
@@ -293,14 +302,10 @@ def read_manoeuvres(reader, params, system, t_end):
         return tuple(paper_manoeuvres(system.density_altitude)), "the paper's list"
     t = reader.table(_SPEC["MultibodyManoeuvres"])
     rows = _Rows(reader, t)
-    seen = {}
+    check_unique(t, "name")
     out = []
     for i in range(len(t)):
         name = str(t["name"][i]).strip()
-        if name in seen:
-            raise reader.error(f"duplicate name (first at {t.cell('name', seen[name])})", name,
-                               t.sheet, t.cell("name", i))
-        seen[name] = i
         kind = rows.choice("kind", i, MANOEUVRE_KINDS, required=True)
         builder = {"free response": _free_response, "gust": _gust,
                    "forward acceleration": _acceleration, "wind ramp": _wind_ramp,
