@@ -181,7 +181,8 @@ def hook_angle_comparison(loads_study, angle, reference_angle=REGULATORY_ANGLE):
     """
     hooks = replace(loads_study, envelope=None, fuselage=None, fin=None, parachute=None,
                     listed=(), generate=True, previous_envelope=None)
-    studies = [hooks.with_hook(angle=float(reference_angle), lateral_angle=lateral)
+    studies = [replace(hooks, hook=replace(hooks.hook, angle=float(reference_angle),
+                                           lateral_angle=lateral))
                for lateral in (None, float(angle))]
     runs = [s.run() for s in studies]
     ref, at = (np.abs(r.loads).max(axis=0) for r in runs)

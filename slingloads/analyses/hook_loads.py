@@ -57,10 +57,14 @@ _LATERAL_TOLERANCE = 1e-9
 
 
 def _angle(value, what):
+    """``value`` [rad] as a float in [0, pi/2), else an error that says the unit."""
     angle = float(value)
     if not np.isfinite(angle) or not (0 <= angle < np.pi / 2):
-        raise InputError(f"{what} must lie in [0, 90) deg",
-                         float(np.degrees(angle)) if np.isfinite(angle) else angle)
+        degrees = f" = {np.degrees(angle):.6g} deg" if np.isfinite(angle) else ""
+        raise InputError(f"{what} must lie in [0, 90) deg, that is [0, pi/2) rad (a "
+                         "HookLoadOptions angle is in radians, numpy.radians(20) for 20 deg; "
+                         f"LoadsStudy.with_hook takes degrees); given {angle:.6g} rad"
+                         f"{degrees}", angle, unit="rad")
     return angle
 
 

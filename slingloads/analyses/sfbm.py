@@ -36,6 +36,8 @@ from slingloads.errors import InputError
 COMPONENTS = ("Vx", "Vy", "Vz", "Mx", "My", "Mz")
 #: Kind of each component (for units).
 COMPONENT_KINDS = ("force",) * 3 + ("moment",) * 3
+#: DataFrame column of each component (name and SI unit, as in the CSV files).
+LOAD_COLUMNS = ("Vx_N", "Vy_N", "Vz_N", "Mx_Nm", "My_Nm", "Mz_Nm")
 
 
 def internal_loads(positions, forces, moments, station_points):

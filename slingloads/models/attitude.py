@@ -206,3 +206,43 @@ def resolve_attitude(attitude, airframe):
         return Attitude.mast_vertical(airframe.hardpoints.mast_axis)
     raise InputError(f"attitude must be an Attitude or one of {list(ATTITUDE_SOURCES)}",
                      attitude)
+
+
+def to_right_handed(yaw, pitch, roll):
+    """Right-handed rotation angles about +x, +y, +z (x aft, y right, z up) of the aerospace
+    Euler angles used by slingloads (``docs/conventions.md``, section 8).
+
+    The attitude R = Rz(-yaw) Ry(pitch) Rx(-roll) (body to earth, yaw nose right, pitch nose
+    up, roll right side down) is Rz(rz) Ry(ry) Rx(rx) with right-handed angles
+    ``(rx, ry, rz) = (-roll, pitch, -yaw)``: in these axes nose right and right side down
+    are negative rotations about +z and +x, nose up a positive one about +y. The lateral
+    pendulum's airframe angle theta2 is such an ``rx``.
+
+    Parameters
+    ----------
+    yaw, pitch, roll : float or array_like
+        [rad]
+
+    Returns
+    -------
+    rx, ry, rz : float or ndarray
+        [rad]
+    """
+    return -np.asarray(roll, float), np.asarray(pitch, float), -np.asarray(yaw, float)
+
+
+def from_right_handed(rx, ry, rz):
+    """Aerospace (yaw, pitch, roll) of right-handed angles about +x, +y, +z: the inverse of
+    :func:`to_right_handed`.
+
+    Parameters
+    ----------
+    rx, ry, rz : float or array_like
+        [rad]
+
+    Returns
+    -------
+    yaw, pitch, roll : float or ndarray
+        [rad]
+    """
+    return -np.asarray(rz, float), np.asarray(ry, float), -np.asarray(rx, float)

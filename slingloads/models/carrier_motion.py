@@ -681,10 +681,10 @@ class MotionBatch:
         by_kind = {}
         histories = {}
         for i, motion in enumerate(motions):
-            if isinstance(motion, TimeHistory):
-                histories.setdefault(id(motion), (motion, []))[1].append(i)
-            elif type(motion) in MOTION_TYPES.values():
+            if type(motion) in MOTION_TYPES.values() and not isinstance(motion, TimeHistory):
                 by_kind.setdefault(type(motion), []).append(i)
+            elif callable(getattr(motion, "kinematics", None)):  # histories, piecewise...
+                histories.setdefault(id(motion), (motion, []))[1].append(i)
             else:
                 raise InputError("unknown carrier motion object; valid types are "
                                  f"{sorted(MOTION_TYPES)}", type(motion).__name__)

@@ -13,9 +13,11 @@ from .manoeuvres import (
     paper_manoeuvres,
     wind_ramp,
 )
-from .simulate import RunResult, Simulation, simulate, simulate_runs
+from .simulate import RunResult, Simulation, disturbed, simulate, simulate_runs
+from .start import start_state, state_table
 from .trim import LinearModel, Trim, linearise, trim
 
 __all__ = ["DISTURBANCES", "LinearModel", "Manoeuvre", "RunResult", "Simulation", "Trim",
-           "forward_acceleration", "free_response", "gust_response", "linearise",
-           "paper_manoeuvres", "simulate", "simulate_runs", "trim", "wind_ramp"]
+           "disturbed", "forward_acceleration", "free_response", "gust_response", "linearise",
+           "paper_manoeuvres", "simulate", "simulate_runs", "start_state", "state_table",
+           "trim", "wind_ramp"]

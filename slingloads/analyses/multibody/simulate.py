@@ -103,20 +103,37 @@ def _check_settings(t_end, dt, output_interval, rtol, atol):
     return int(round(samples)) + 1
 
 
-def _disturbed(trim_point, disturbance):
-    """Trim state with a manoeuvre's initial disturbance applied."""
-    x = trim_point.state.copy()
+def disturbed(state, disturbance, chute_kind="none"):
+    """A state with a manoeuvre's initial disturbance added to it (nothing is overwritten).
+
+    Parameters
+    ----------
+    state : array_like, shape (20,)
+        The trim's state, or a start state (:func:`~.start.start_state`).
+    disturbance : dict
+        Keys of :data:`~.manoeuvres.DISTURBANCES`: yaw, pitch, roll [rad] added to the
+        attitude's angles; yaw_rate [rad/s] added to the body rates, about the earth vertical
+        (nose right positive); longitudinal, lateral, vertical [m] added to the CG position
+        (earth X, Y, Z); theta, psi [rad] added to the line angles of a hinged canopy.
+    chute_kind : str
+        The system's parachute kind (``"hinged"``: the line angles apply).
+
+    Returns
+    -------
+    numpy.ndarray, shape (20,)
+    """
+    x = np.array(state, dtype=float)
     d = disturbance
     if any(k in d for k in ("yaw", "pitch", "roll")):
         yaw, pitch, roll = euler_angles(x[9:13])
         x[9:13] = quaternion_from_euler(yaw + d.get("yaw", 0.0), pitch + d.get("pitch", 0.0),
                                         roll + d.get("roll", 0.0))
     if "yaw_rate" in d:
-        x[13:16] = rotation_matrix(x[9:13]).T @ np.array([0.0, 0.0, -d["yaw_rate"]])
+        x[13:16] += rotation_matrix(x[9:13]).T @ np.array([0.0, 0.0, -d["yaw_rate"]])
     x[3] += d.get("longitudinal", 0.0)
     x[4] += d.get("lateral", 0.0)
     x[5] += d.get("vertical", 0.0)
-    if trim_point.system.chute_kind == "hinged":
+    if chute_kind == "hinged":
         x[16] += d.get("theta", 0.0)
         x[17] += d.get("psi", 0.0)
     return x
@@ -413,8 +430,12 @@ class Simulation:
         return pd.concat(frames, ignore_index=True)
 
 
+#: What :func:`simulate` does with a run whose start has no trim.
+NO_TRIM_ACTIONS = ("raise", "report")
+
+
 def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
-             rtol=RTOL, atol=ATOL):
+             rtol=RTOL, atol=ATOL, no_trim="raise"):
     """Fly ``system`` through ``manoeuvres`` (all integrated together).
 
     Parameters
@@ -427,23 +448,39 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
     rtol, atol : float
         Tolerances of the adaptive step: local error below atol + rtol |x| (root mean square
         over the states, SI units). [-], [SI]
+    no_trim : {"raise", "report"}
+        A run whose start has no trim (every run starts from one: the carrier's steady
+        velocity and the cable's pull are the trim's, also with a ``start_state``): raise
+        :class:`~slingloads.errors.InputError` with the reason (default), or return it
+        unflown, its verdict ``no trim`` and the reason in ``stopped`` (the workbook's
+        reports list such runs).
 
     Returns
     -------
     Simulation
+
+    Raises
+    ------
+    InputError
+        For bad settings, and for a run without trim when ``no_trim="raise"``.
     """
+    if no_trim not in NO_TRIM_ACTIONS:
+        raise InputError(f"no_trim must be one of {list(NO_TRIM_ACTIONS)}", no_trim)
     if isinstance(manoeuvres, Manoeuvre):
         manoeuvres = [manoeuvres]
     names = [m.name for m in manoeuvres]
     if len(set(names)) != len(names):
         dup = next(n for n in names if names.count(n) > 1)
         raise InputError("manoeuvre names must be unique", dup)
-    return simulate_runs([(system, m) for m in manoeuvres], t_end=t_end, dt=dt,
-                         output_interval=output_interval, rtol=rtol, atol=atol)
+    sim = simulate_runs([(system, m) for m in manoeuvres], t_end=t_end, dt=dt,
+                        output_interval=output_interval, rtol=rtol, atol=atol,
+                        untrimmed=no_trim == "raise")
+    return sim
 
 
 def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL, rtol=RTOL,
-                  atol=ATOL, check_step=True, workers=None, keep_histories=True):
+                  atol=ATOL, check_step=True, workers=None, keep_histories=True,
+                  untrimmed=False):
     """Integrate runs given as (system, manoeuvre) pairs, together (module notes).
 
     Parameters
@@ -464,6 +501,10 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         (each run's measures, computed as soon as it is integrated): a run's states and
         histories are then integrated again when asked for (the same to the last bit, about
         a millisecond a run), and a large batch needs no memory for histories.
+    untrimmed : bool
+        Raise :class:`~slingloads.errors.InputError` for a run whose start has no trim
+        (True), or return it unflown with the reason (False: a campaign maps where trims
+        exist).
 
     Returns
     -------
@@ -482,6 +523,16 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         requests.setdefault(key, (system, speed, manoeuvre.wind.steady))
         keys.append(key)
     trims = dict(zip(requests, trim_many(list(requests.values())), strict=True))
+    if untrimmed:
+        for (system, manoeuvre), key in zip(pairs, keys, strict=True):
+            point = trims[key]
+            if not point.converged:
+                start = "in hover" if manoeuvre.from_hover else (
+                    f"at {point.airspeed:.4g} m/s EAS")
+                raise InputError(
+                    f"run {manoeuvre.name!r} of {system.name!r} cannot start: no trim "
+                    f"{start}: {point.message} (every run starts from a trim, also with a "
+                    "start_state; no_trim='report' returns such runs unflown)")
     linear = {}
     if check_step and dt is not None:
         for point in trims.values():
@@ -607,8 +658,9 @@ def _integrate_group(prepared, members, results, drives, time, settings):
     seen = {}
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        x0[j] = (_disturbed(tr, manoeuvre.disturbance) if manoeuvre.start_state is None
-                 else manoeuvre.start_state)
+        x0[j] = disturbed(tr.state if manoeuvre.start_state is None
+                          else manoeuvre.start_state, manoeuvre.disturbance,
+                          system.chute_kind)
         pull = tr.info[_INFO["d_X"]:_INFO["d_Z"] + 1]
         pull = tr.quantity("tension") * pull / np.linalg.norm(pull)
         params[j] = system.parameters(pull=pull, locks=system.locks)

@@ -30,6 +30,7 @@ from slingloads.io.airframe.reader import (
     read_parachute,
 )
 from slingloads.io.common.locate import Place, located
+from slingloads.io.common.referenced import referenced_file
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.multibody.schema import (
     CANOPY_TABLES,
@@ -42,6 +43,7 @@ from slingloads.io.multibody.schema import (
     SHEETS,
     TAILS,
 )
+from slingloads.io.multibody.trajectory import read_trajectory_csv
 from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES, MEMORY_BUDGET
 from slingloads.models.aero_tables import Table1D
 from slingloads.models.atmosphere import isa_density, true_airspeed
@@ -306,7 +308,8 @@ def read_manoeuvres(reader, params, system, t_end):
         name = str(t["name"][i]).strip()
         kind = rows.choice("kind", i, MANOEUVRE_KINDS, required=True)
         builder = {"free response": _free_response, "gust": _gust,
-                   "forward acceleration": _acceleration, "wind ramp": _wind_ramp}[kind]
+                   "forward acceleration": _acceleration, "wind ramp": _wind_ramp,
+                   "hook trajectory": _hook_trajectory}[kind]
         with located(t, default="kind", index=i):
             out.append(builder(rows, i, name, system, t_end))
     return tuple(out), "MultibodyManoeuvres sheet"
@@ -399,6 +402,25 @@ def _acceleration(rows, i, name, system, t_end):
     tas = float(true_airspeed(target, system.density_altitude))
     return Manoeuvre(name, trajectory=ForwardAcceleration(tas, rate, onset),
                      disturbance=rows.disturbance(i, HOVER_SEED))
+
+
+def _hook_trajectory(rows, i, name, system, t_end):
+    """A run along a hook trajectory read from the CSV file of column ``file``, from the
+    trim at the system airspeed."""
+    rows.unused(("shape", "direction", "amplitude", "onset", "duration", "target", "rate"), i,
+                "hook trajectory")
+    if not rows.given("file", i):
+        raise rows.error("file", i, "a hook trajectory needs its CSV 'file' (time_s and "
+                                    "ax_mps2, ay_mps2, az_mps2, or vx_mps..., or x_m...)")
+    t = rows.t
+    text = str(t["file"][i]).strip()
+    path = referenced_file(rows.reader, text, t.sheet, t.cell("file", i))
+    trajectory = read_trajectory_csv(path)
+    late = [b for b in trajectory.breakpoints if b >= t_end]
+    if late:
+        raise rows.error("file", i, f"the trajectory's breakpoints must lie before the end "
+                                    f"of the run ({t_end:g} s); {late[0]:g} s does not")
+    return Manoeuvre(name, trajectory=trajectory, disturbance=rows.disturbance(i, {}))
 
 
 def _wind_ramp(rows, i, name, system, t_end):

@@ -118,8 +118,10 @@ class LiftingSurface:
         if not isinstance(fin, Fin):
             raise InputError("from_fin needs a Fin", type(fin).__name__)
         if fin.axes != "body":
-            raise InputError("a lifting surface takes a normal-force table: give the fin's CY "
-                             "in body axes (along +y)", fin.axes)
+            raise InputError("the multibody model (and its campaign) flies the fin as a "
+                             "lifting surface whose CY is its normal force, along +y: it needs "
+                             "the fin's CY in body axes ('fin axes' = body); a table in wind "
+                             "axes serves the loads and the parachute sizing only", fin.axes)
         eta = fin.efficiency if efficiency is None else efficiency
         return cls(fin.table, fin.area, fin.centre_of_pressure, "y", eta, "fin")
 
