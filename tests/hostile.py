@@ -199,3 +199,94 @@ def study_cell(book, name):
         if row[0] == name:
             return f"B{r}"
     raise KeyError(name)
+
+
+# ---- commands stopped at a known moment (kill and Ctrl-C tests) ------------------------------
+#: Seconds a test waits for a moment of a command before it fails: a guard against a hang,
+#: generous enough for the busiest machine (no test depends on how long a run takes).
+DEADLINE = 600.0
+
+
+def command(name, workbook, out, env=None, **options):
+    """Start ``slingloads NAME WORKBOOK --out OUT --quiet`` as a process (stderr piped)."""
+    import os
+    import subprocess
+    import sys
+
+    return subprocess.Popen([sys.executable, "-m", "slingloads.cli", name, str(workbook),
+                             "--out", str(out), "--quiet"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            env={**os.environ, **(env or {})}, **options)
+
+
+def wait_until(condition, proc=None, what="the moment"):
+    """Poll ``condition()`` until it holds; fail if ``proc`` ends first (with its stderr) or
+    after :data:`DEADLINE`."""
+    import time
+
+    deadline = time.monotonic() + DEADLINE
+    while not condition():
+        if proc is not None and proc.poll() is not None:
+            err = proc.stderr.read() if proc.stderr else ""
+            raise AssertionError(f"the command ended ({proc.returncode}) before {what}: {err}")
+        if time.monotonic() > deadline:
+            raise AssertionError(f"{what} did not come within {DEADLINE:.0f} s")
+        time.sleep(0.005)
+
+
+def _status(pid, field):
+    try:
+        with open(f"/proc/{pid}/status") as status:
+            for line in status:
+                if line.startswith(field + ":"):
+                    return line.split()[1]
+    except OSError:
+        return None
+    return None
+
+
+def _children(pid):
+    try:
+        with open(f"/proc/{pid}/task/{pid}/children") as children:
+            return [int(c) for c in children.read().split()]
+    except OSError:
+        return []
+
+
+def helper_ready(pid):
+    """True once process ``pid`` has a child that ignores SIGINT: the run's helper, which a
+    run forks before it reads the workbook, is up and leaves Ctrl-C to its parent, and the
+    parent is inside its own handling of Ctrl-C (Linux: ``/proc``)."""
+    import signal
+
+    bit = 1 << (signal.SIGINT - 1)
+    return any(int(_status(c, "SigIgn") or "0", 16) & bit for c in _children(pid))
+
+
+def wait_for_publishing_step(proc, steps, number):
+    """Wait until the run ``proc``, started with ``STEP_VARIABLE=steps``, waits in the pause
+    ``number`` between its publishing steps, letting it go on from the pauses before (see
+    ``slingloads.io.common.atomic.STEP_VARIABLE``); the run then waits there."""
+    for step in range(1, int(number) + 1):
+        marker = Path(steps) / str(step)
+        wait_until(marker.exists, proc, f"publishing step {step}")
+        if step < int(number):
+            marker.unlink()
+
+
+def processes_left(pgid):
+    """The live processes (not zombies) of process group ``pgid``."""
+    import os
+
+    left = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as stat:
+                fields = stat.read().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[2]) == pgid and fields[0] not in ("Z", "X"):
+            left.append(int(entry))
+    return left
