@@ -330,13 +330,16 @@ def test_a_cable_too_short_for_the_parachute_is_refused():
 
 def test_unreachable_scheduler_fails_within_its_time_out():
     """A scheduler address nobody listens on: an InputError naming the address and the
-    time-out within a few seconds, and nothing run into the store."""
+    time-out given, and nothing run into the store (not a hang: the guard is generous, the
+    time taken depends on the machine)."""
     import time
 
-    start = time.perf_counter()
+    from hostile import DEADLINE
+
+    start = time.monotonic()
     with pytest.raises(InputError, match=r"could not reach the Dask scheduler within 1 s"):
         DaskCluster("tcp://127.0.0.1:9", timeout=1.0)
-    assert time.perf_counter() - start < 15
+    assert time.monotonic() - start < DEADLINE
 
 
 # ------------------------------------------------------------ loads from the dynamics

@@ -16,6 +16,7 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from hostile import DEADLINE
 
 from slingloads.analyses.campaign import HISTORY_LABELS, MemoryStore, run_campaign
 from slingloads.cli import main
@@ -259,12 +260,13 @@ def test_unknown_mass_case_in_listed_rows(tmp_path, capsys):
 
 
 def test_unreachable_scheduler_is_a_clear_error_within_its_time_out(tmp_path, capsys):
-    """A scheduler nobody answers (--scheduler-timeout 1 s): exit 2 within seconds, the
-    address and the time-out in the message, nothing written or cached."""
+    """A scheduler nobody answers (--scheduler-timeout 1 s): exit 2 (not a hang: the guard
+    is generous, the time taken depends on the machine), the address and the time-out in the
+    message, nothing written or cached."""
     elapsed = _bad(tmp_path, capsys, {}, ["could not reach the Dask scheduler within 1 s",
                                           "tcp://127.0.0.1:9"],
                    args=["--scheduler", "tcp://127.0.0.1:9", "--scheduler-timeout", "1"])
-    assert elapsed < 20
+    assert elapsed < DEADLINE
 
 
 def test_cache_inside_the_output_folder_is_refused(tmp_path, capsys):
