@@ -1,7 +1,9 @@
-"""A small valid input workbook built in memory, and helpers to break it (hostile tests).
+"""Test inputs and their helpers: the example workbook's path, a small valid input workbook
+built in memory and helpers to break it (hostile tests), and commands stopped at a known moment
+(kill and Ctrl-C tests).
 
-The workbook asks for all three analyses with tiny tables, so that reading it takes a few
-milliseconds and computing it about a second: the fuzzing and the kill tests start from it.
+The small workbook asks for all three analyses with tiny tables, so that reading it takes a
+few milliseconds and computing it about a second: the fuzzing and the kill tests start from it.
 """
 
 from __future__ import annotations
@@ -10,6 +12,9 @@ import copy
 from pathlib import Path
 
 from openpyxl import Workbook
+
+#: The example workbook of the repository.
+EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
 
 def small_workbook():
@@ -190,6 +195,48 @@ def located_error(book, file, sheet, cell, *fragments):
     assert (err.file, err.sheet, err.cell) == (file, sheet, cell), str(err)
     for fragment in fragments:
         assert fragment in str(err), str(err)
+    return err
+
+
+def study_row(book, name):
+    """The row of Study parameter ``name`` in an openpyxl workbook."""
+    for row in book["Study"].iter_rows(min_row=2):
+        if row[0].value == name:
+            return row[0].row
+    raise KeyError(name)
+
+
+def refused_copy(tmp_path, capsys, command, edits, sheet, cell, *fragments, base=EXAMPLE):
+    """Apply ``edits`` to a copy of the workbook ``base`` and run ``slingloads COMMAND`` on it:
+    exit code 2, the message naming the file, ``sheet`` and ``cell`` (on the Study sheet a
+    parameter's name stands for its value cell) and holding every fragment, no traceback,
+    nothing written. ``edits`` is ``{(sheet, cell or Study parameter name): value}`` or a
+    function editing the openpyxl workbook. Returns the message."""
+    import openpyxl
+
+    from slingloads.cli import main
+
+    book = openpyxl.load_workbook(base)
+    if callable(edits):
+        edits(book)
+    else:
+        for (name, where), value in edits.items():
+            if name == "Study" and where[0].islower():
+                where = f"B{study_row(book, where)}"
+            book[name][where] = value
+    path = Path(tmp_path) / "bad.xlsx"
+    book.save(path)
+    out = Path(tmp_path) / "out"
+    capsys.readouterr()
+    assert main([command, str(path), "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    if sheet == "Study" and cell[0].islower():  # a parameter's name
+        cell = f"B{study_row(book, cell)}"
+    assert "bad.xlsx" in err and f"sheet '{sheet}'" in err and f"cell {cell}" in err, err
+    for fragment in fragments:
+        assert fragment in err, err
+    assert "nothing was written" in err and "Traceback" not in err
+    assert not out.exists()
     return err
 
 

@@ -16,6 +16,7 @@ Runs are short (30 s) and matrices tiny: the whole file costs well under a minut
 import numpy as np
 import pandas as pd
 import pytest
+from hostile import EXAMPLE
 from numpy.testing import assert_allclose, assert_array_equal
 
 from slingloads.analyses.campaign import (
@@ -346,12 +347,9 @@ def test_unreachable_scheduler_fails_within_its_time_out():
 @pytest.fixture(scope="module")
 def example_loads():
     """The example workbook's hand-entered loads study (GENERIC light twin, HC1 tables)."""
-    from pathlib import Path
-
     from slingloads.io.study import read_study
 
-    example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
-    return read_study(example, only=["loads"]).loads
+    return read_study(EXAMPLE, only=["loads"]).loads
 
 
 def test_loads_take_the_dynamics_cases(local, example_loads):

@@ -10,20 +10,17 @@ sheet and cell in the message, and that nothing is written (no output folder, no
 from __future__ import annotations
 
 import time
-from pathlib import Path
 
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from hostile import DEADLINE
+from hostile import DEADLINE, EXAMPLE, study_row
 
 from slingloads.analyses.campaign import HISTORY_LABELS, MemoryStore, run_campaign
 from slingloads.cli import main
 from slingloads.io.campaign.cache import RunCache
 from slingloads.io.study import read_study
-
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
 #: A tiny campaign: 2 areas, 1 condition, 1 manoeuvre, 30 s runs; HC1 under one 20 kt ramp.
 TINY = {"run loads": "no", "run lateral": "no", "run chute sizing": "no",
@@ -35,13 +32,6 @@ TINY = {"run loads": "no", "run lateral": "no", "run chute sizing": "no",
         "campaign no-parachute helicopters": "HC1", "campaign no-parachute ramps": "20"}
 
 
-def _row(book, name):
-    for row in book["Study"].iter_rows(min_row=2):
-        if row[0].value == name:
-            return row[0].row
-    raise KeyError(name)
-
-
 @pytest.fixture(scope="module", autouse=True)
 def base(tmp_path_factory):
     """The example with the tiny campaign, its FuselageAero table thinned to alpha every 10 deg
@@ -49,7 +39,7 @@ def base(tmp_path_factory):
     API on the same tables) and the lateral study's sheets removed."""
     book = openpyxl.load_workbook(EXAMPLE)
     for name, value in TINY.items():
-        book["Study"][f"B{_row(book, name)}"] = value
+        book["Study"][f"B{study_row(book, name)}"] = value
     rows = list(book["FuselageAero"].iter_rows(values_only=True))
     keep = [rows[0]] + [r for r in rows[1:] if r[0] % 10 == 0 and r[1] % 4 == 0]
     index = book.sheetnames.index("FuselageAero")
@@ -72,7 +62,7 @@ def workbook(path, edits=None, extra=None):
     """The tiny base workbook with ``edits`` {Study parameter: value} and ``extra(book)``."""
     book = openpyxl.load_workbook(BASE[0])
     for name, value in (edits or {}).items():
-        book["Study"][f"B{_row(book, name)}"] = value
+        book["Study"][f"B{study_row(book, name)}"] = value
     if extra is not None:
         extra(book)
     book.save(path)
@@ -216,7 +206,7 @@ def _bad(tmp_path, capsys, edits, fragments, args=(), extra=None, cell_of=None):
         assert fragment in err, err
     if cell_of is not None:
         book = openpyxl.load_workbook(path)
-        assert f"sheet 'Study', cell B{_row(book, cell_of)}" in err, err
+        assert f"sheet 'Study', cell B{study_row(book, cell_of)}" in err, err
     assert "nothing was written" in err
     assert not out.exists() and not list(cache.rglob("*.parquet"))
     return elapsed
