@@ -100,19 +100,42 @@ def _xlsx_origin(folder, old_sha, new_sha):
     return out
 
 
-#: Where each run of the two kill sequences (run side by side, on two output folders) is
-#: killed, with the publishing it uses, and which set it leaves: "helper", once the run's
-#: helper is up (the workbook is read); "staging", once its staging folder exists (it writes
-#: the new set); publishing step n, in the pause that begins it: with the atomic exchange 1
-#: before the lock, 2 after the carry-over, 3 after the exchange; with the two renames also
-#: 3 between the renames (the output folder is missing: the next run's recovery puts the
-#: complete new set in place) and 4 after them.
+#: Where each process of the two kill sequences (run side by side, on two output folders) is
+#: killed, with the publishing it uses, and which set it leaves: "helper", once a run's helper
+#: is up (the workbook is read); "staging", once its staging folder exists (it writes the new
+#: set); publishing step n, in the pause that begins it: with the atomic exchange 1 before the
+#: lock, 2 after the carry-over, 3 after the exchange; with the two renames also 3 between the
+#: renames (the output folder is missing: the next run's recovery puts the complete new set in
+#: place) and 4 after them. "run": a real `slingloads run`; "publish": a process publishing
+#: a finished set through the same publishing, as a run does (_PUBLISH), which reaches the
+#: publishing steps in a fraction of a run's time.
 KILLS = (
-    [("helper", "exchange", "previous"), ("step 1", "exchange", "previous"),
-     ("step 2", "exchange", "previous"), ("step 3", "exchange", "new")],
-    [("staging", "rename", "previous"), ("step 3", "rename", "new"),
-     ("step 4", "rename", "new")],
+    [("run", "helper", "exchange", "previous"), ("publish", "step 1", "exchange", "previous"),
+     ("publish", "step 2", "exchange", "previous"), ("run", "step 3", "exchange", "new"),
+     ("publish", "step 4", "rename", "new")],
+    [("run", "staging", "rename", "previous"), ("run", "step 3", "rename", "new")],
 )
+
+#: A process publishing the files of folder argv[1] into folder argv[2] as a run publishes its
+#: set (the run's patterns of the files it replaces, argv[3:]), without reading or computing.
+_PUBLISH = """
+import re, sys
+from pathlib import Path
+from slingloads.io.common.atomic import atomic_outputs
+source, out = Path(sys.argv[1]), Path(sys.argv[2])
+with atomic_outputs(out, replaces=[re.compile(p) for p in sys.argv[3:]]) as outputs:
+    for path in sorted(source.iterdir()):
+        outputs.path(path.name).write_bytes(path.read_bytes())
+"""
+
+
+def _publish(source, out, env=None):
+    from slingloads.io.analyses import ANALYSES
+
+    patterns = [p.pattern for a in ANALYSES for p in a.output_patterns(STEM)]
+    return subprocess.Popen([sys.executable, "-c", _PUBLISH, str(source), str(out), *patterns],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            env={**os.environ, **(env or {})})
 
 
 def _kill_at(proc, moment, parent, before, steps):
@@ -132,13 +155,14 @@ def _kill_at(proc, moment, parent, before, steps):
 
 
 def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
-    """Kill a real `slingloads run` (SIGKILL, no clean-up) at 7 moments, in two sequences run
-    side by side on two output folders: while it reads, while it writes, and in each step of
-    the publishing, with the atomic exchange and with the two-rename fallback (each moment
-    awaited, not guessed: the run announces its publishing steps). Each time the output
+    """Kill a real `slingloads run` (SIGKILL, no clean-up) while it reads, while it writes,
+    and after the exchange of its publishing (atomic exchange, and between the two renames of
+    the fallback), and a process publishing a finished set in the other steps of the
+    publishing: 7 kills, in two sequences run side by side on two output folders, each moment
+    awaited, not guessed (the process announces its publishing steps). Each time the output
     folder holds exactly the previous set or the new one (never a mix; the user's file kept;
     each workbook from the same input as the rest), the one the moment implies; after the
-    next run no staging folder is left."""
+    next publishing no staging folder is left."""
     from concurrent.futures import ThreadPoolExecutor
 
     old_input, new_input = inputs
@@ -153,6 +177,13 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
     assert [p.wait() for p in procs] == [0, 0]
     reference = {"old": _fingerprint(out), "new": _fingerprint(other)}
     assert set(reference["old"]) != set(reference["new"])  # the hull plot's name changes
+    sets = {}  # the two sets as files, for the publishing processes
+    for label, folder in (("old", out), ("new", other)):
+        sets[label] = tmp_path / "sets" / label
+        sets[label].mkdir(parents=True)
+        for path in folder.iterdir():
+            if path.name not in (MANIFEST_NAME, "notes.txt"):
+                (sets[label] / path.name).write_bytes(path.read_bytes())
 
     def state(folder, mode):
         if mode == "rename" and not folder.exists():
@@ -169,13 +200,14 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
 
     def sequence(folder, kills):
         current, outcomes = ("old" if folder == out else "new"), []
-        for number, (moment, mode, expected) in enumerate(kills):
+        for number, (process, moment, mode, expected) in enumerate(kills):
             target = "old" if current == "new" else "new"
             steps = folder.parent / f"steps-{number}"
             steps.mkdir()
             before = set(os.listdir(folder.parent))  # folders a killed run left
-            proc = _run(sources[target], folder,
-                        {SWAP_VARIABLE: mode, STEP_VARIABLE: str(steps), PROCESSES_VARIABLE: "1"})
+            env = {SWAP_VARIABLE: mode, STEP_VARIABLE: str(steps), PROCESSES_VARIABLE: "1"}
+            proc = (_run(sources[target], folder, env) if process == "run"
+                    else _publish(sets[target], folder, env))
             _kill_at(proc, moment, folder.parent, before, steps)
             got = state(folder, mode)
             assert got == {"previous": current, "new": target}[expected], (moment, mode)
@@ -188,7 +220,7 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
     assert sum(len(outcomes) for outcomes, _ in results) == 7
     finals = [(folder, "old" if current == "new" else "new")
               for folder, (_, current) in zip((out, other), results, strict=True)]
-    procs = [_run(sources[target], folder) for folder, target in finals]
+    procs = [_publish(sets[target], folder) for folder, target in finals]
     for proc in procs:
         assert proc.wait() == 0, proc.stderr.read()
     for folder, target in finals:
