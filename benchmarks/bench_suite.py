@@ -49,6 +49,7 @@ def main(argv=None):
     slowest = [i for i, line in enumerate(lines) if "slowest" in line and "durations" in line]
     if slowest:
         print("\n".join(lines[slowest[0]:slowest[0] + args.durations + 1]))
+    print("\n".join(line for line in lines if line.startswith(("FAILED", "ERROR"))))
     print(lines[-1] if lines else done.stderr[-2000:])
     print(f"load average after (1, 5, 15 min): {_load()}")
     verdict = "within" if wall <= TARGET else "over"
