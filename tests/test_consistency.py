@@ -13,7 +13,6 @@ import pytest
 from hostile import EXAMPLE
 
 from slingloads.analyses.loads import AeroEnvelope
-from slingloads.cli import main
 from slingloads.io.consistency import consistency_checks
 from slingloads.io.study import read_study
 from slingloads.runs.study import Results
