@@ -10,19 +10,17 @@ sheet and cell in the message, and that nothing is written (no output folder, no
 from __future__ import annotations
 
 import time
-from pathlib import Path
 
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from hostile import DEADLINE, EXAMPLE, study_row
 
 from slingloads.analyses.campaign import HISTORY_LABELS, MemoryStore, run_campaign
 from slingloads.cli import main
 from slingloads.io.study import read_study
 from slingloads.runs.cache import RunCache
-
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
 #: A tiny campaign: 2 areas, 1 condition, 1 manoeuvre, 30 s runs; HC1 under one 20 kt ramp.
 TINY = {"run loads": "no", "run lateral": "no", "run chute sizing": "no",
@@ -34,13 +32,6 @@ TINY = {"run loads": "no", "run lateral": "no", "run chute sizing": "no",
         "campaign no-parachute helicopters": "HC1", "campaign no-parachute ramps": "20"}
 
 
-def _row(book, name):
-    for row in book["Study"].iter_rows(min_row=2):
-        if row[0].value == name:
-            return row[0].row
-    raise KeyError(name)
-
-
 @pytest.fixture(scope="module", autouse=True)
 def base(tmp_path_factory):
     """The example with the tiny campaign, its FuselageAero table thinned to alpha every 10 deg
@@ -48,7 +39,7 @@ def base(tmp_path_factory):
     API on the same tables) and the lateral study's sheets removed."""
     book = openpyxl.load_workbook(EXAMPLE)
     for name, value in TINY.items():
-        book["Study"][f"B{_row(book, name)}"] = value
+        book["Study"][f"B{study_row(book, name)}"] = value
     rows = list(book["FuselageAero"].iter_rows(values_only=True))
     keep = [rows[0]] + [r for r in rows[1:] if r[0] % 10 == 0 and r[1] % 4 == 0]
     index = book.sheetnames.index("FuselageAero")
@@ -71,7 +62,7 @@ def workbook(path, edits=None, extra=None):
     """The tiny base workbook with ``edits`` {Study parameter: value} and ``extra(book)``."""
     book = openpyxl.load_workbook(BASE[0])
     for name, value in (edits or {}).items():
-        book["Study"][f"B{_row(book, name)}"] = value
+        book["Study"][f"B{study_row(book, name)}"] = value
     if extra is not None:
         extra(book)
     book.save(path)
@@ -220,7 +211,7 @@ def _bad(tmp_path, capsys, edits, fragments, args=(), extra=None, cell_of=None):
         assert fragment in err, err
     if cell_of is not None:
         book = openpyxl.load_workbook(path)
-        assert f"sheet 'Study', cell B{_row(book, cell_of)}" in err, err
+        assert f"sheet 'Study', cell B{study_row(book, cell_of)}" in err, err
     assert "nothing was written" in err
     assert not out.exists() and not list(cache.rglob("*.parquet"))
     return elapsed
@@ -277,12 +268,13 @@ def test_mass_cases_differing_only_in_case_are_one_name(tmp_path, capsys):
 
 
 def test_unreachable_scheduler_is_a_clear_error_within_its_time_out(tmp_path, capsys):
-    """A scheduler nobody answers (--scheduler-timeout 1 s): exit 2 within seconds, the
-    address and the time-out in the message, nothing written or cached."""
+    """A scheduler nobody answers (--scheduler-timeout 1 s): exit 2 (not a hang: the guard
+    is generous, the time taken depends on the machine), the address and the time-out in the
+    message, nothing written or cached."""
     elapsed = _bad(tmp_path, capsys, {}, ["could not reach the Dask scheduler within 1 s",
                                           "tcp://127.0.0.1:9"],
                    args=["--scheduler", "tcp://127.0.0.1:9", "--scheduler-timeout", "1"])
-    assert elapsed < 20
+    assert elapsed < DEADLINE
 
 
 def test_cache_inside_the_output_folder_is_refused(tmp_path, capsys):

@@ -9,13 +9,12 @@ inputs converted by hand to SI with the exact definitions 1 in = 0.0254 m and
 from __future__ import annotations
 
 import shutil
-from pathlib import Path
 
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from hostile import publish_earlier
+from hostile import EXAMPLE, publish_earlier
 
 from slingloads.analyses.envelopes import bound_values
 from slingloads.cli import main
@@ -25,19 +24,15 @@ from slingloads.io.common.parameters import read_parameters
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.io.study import read_study
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
+
+@pytest.fixture
+def run_dir(example_loads_report):
+    return example_loads_report
 
 
-@pytest.fixture(scope="module")
-def run_dir(tmp_path_factory):
-    out = tmp_path_factory.mktemp("reports")
-    assert main(["loads", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
-    return out
-
-
-@pytest.fixture(scope="module")
-def api_result():
-    return read_study(EXAMPLE).inputs.loads.run()
+@pytest.fixture
+def api_result(example_study):
+    return example_study.inputs.loads.run()
 
 
 def test_csv_and_workbook_read_back(run_dir, api_result):

@@ -1,7 +1,7 @@
 """Multibody analyses of the towed system (paper sections 4.3-5.3): trim, linear modes,
 manoeuvres and their metrics, built on :mod:`slingloads.models.multibody`.
 
->>> from slingloads.analyses.multibody import trim, linearise, simulate  # doctest: +SKIP
+>>> from slingloads.analyses.multibody import trim, linearise, simulate
 """
 
 from .manoeuvres import (

@@ -81,6 +81,7 @@ from slingloads.io.common.ownership import (
 )
 from slingloads.io.common.swap import (  # noqa: F401 - re-exported
     PAUSE_VARIABLE,
+    STEP_VARIABLE,
     SWAP_VARIABLE,
     TEMP_PREFIX,
     _exchange,

@@ -20,6 +20,7 @@ import shutil
 import sys
 import time
 from contextlib import contextmanager
+from pathlib import Path
 
 try:  # POSIX advisory locks; elsewhere runs are not serialised
     import fcntl
@@ -34,6 +35,12 @@ PAUSE_VARIABLE = "SLINGLOADS_PUBLISH_PAUSE"
 #: Environment variable (testing aid): ``rename`` forces the two-rename publishing used where
 #: no atomic exchange exists.
 SWAP_VARIABLE = "SLINGLOADS_PUBLISH_SWAP"
+#: Environment variable (testing aid): a folder in which the run announces each pause between
+#: its publishing steps by an empty file named by its number (``1``, ``2``, ...) and waits
+#: there until the file is removed, so that a test can stop a run in a given step without
+#: guessing when it comes (at most 10 minutes a step: never a hang).
+STEP_VARIABLE = "SLINGLOADS_PUBLISH_STEPS"
+_STEPS = []
 _NAME_MAX = 255
 
 
@@ -68,7 +75,16 @@ def _name_max(folder):
 
 
 def _pause():
-    """Pause between publishing steps when asked (testing aid: see PAUSE_VARIABLE)."""
+    """Pause between publishing steps when asked (testing aid: see PAUSE_VARIABLE and
+    STEP_VARIABLE)."""
+    folder = os.environ.get(STEP_VARIABLE)
+    if folder:
+        _STEPS.append(None)
+        marker = Path(folder, str(len(_STEPS)))
+        marker.touch()
+        deadline = time.monotonic() + 600
+        while marker.exists() and time.monotonic() < deadline:
+            time.sleep(0.005)
     text = os.environ.get(PAUSE_VARIABLE)
     if text:
         try:
