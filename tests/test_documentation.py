@@ -9,6 +9,7 @@ from pathlib import Path
 
 import matplotlib
 import pytest
+from hostile import EXAMPLE
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -78,8 +79,13 @@ def test_docstring_examples_run(name, tmp_path, monkeypatch):
     an example marked to be skipped counts as not run."""
     import doctest
     import importlib
+    import shutil
 
-    monkeypatch.chdir(tmp_path)  # files an example writes land in a temp folder
+    # files an example writes land in a temp folder, which holds the example workbook at the
+    # path the examples name (relative to the repository, as a user runs them)
+    (tmp_path / "loadcases").mkdir()
+    shutil.copy(EXAMPLE, tmp_path / "loadcases" / EXAMPLE.name)
+    monkeypatch.chdir(tmp_path)
     module = importlib.import_module(name)
     finder = doctest.DocTestFinder(exclude_empty=True)
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)

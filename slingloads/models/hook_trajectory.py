@@ -81,7 +81,8 @@ class PiecewiseAcceleration(_Motion):
     Examples
     --------
     >>> m = PiecewiseAcceleration([0.0, 1.0, 3.0, 4.0], [0.0, 2.0, 2.0, 0.0])
-    >>> [float(v) for v in m.kinematics(4.0)]
+    >>> # displacement [m], velocity [m/s], acceleration [m/s^2] at 4 s
+    >>> [round(float(v), 9) for v in m.kinematics(4.0)]
     [12.0, 6.0, 0.0]
     """
 
