@@ -1,0 +1,71 @@
+"""Every table of the example's reports reads right in a program: a *table sheet* (the print
+setup repeats its row 1) holds a header in row 1 and data below it, nothing else, so that
+``pandas.read_excel`` and Excel's filter read it as data; no sheet repeats a header row in its
+cells. The reference is the file format's own reading (openpyxl, pandas), not the writer."""
+
+from __future__ import annotations
+
+import openpyxl
+import pandas as pd
+import pytest
+
+
+def _workbooks(folder):
+    books = sorted(folder.glob("*.xlsx"))
+    assert len(books) >= 4  # loads, lateral, chute sizing, multibody
+    return books
+
+
+def _is_table_sheet(ws):
+    return ws.print_title_rows in ("1:1", "$1:$1")
+
+
+def test_every_table_sheet_reads_as_data(example_reports):
+    """pandas reads each table sheet with named columns only (no "Unnamed"), no row equal to
+    the header, and each column either numbers (and blanks) or texts, never a header text
+    among numbers."""
+    _, folder = example_reports
+    for book in _workbooks(folder):
+        wb = openpyxl.load_workbook(book, read_only=False)
+        tables = [ws.title for ws in wb.worksheets if _is_table_sheet(ws)]
+        assert tables, book.name
+        for name in tables:
+            frame = pd.read_excel(book, sheet_name=name)
+            where = f"{book.name}:{name}"
+            assert len(frame), where
+            assert not [c for c in frame.columns if str(c).startswith("Unnamed")], where
+            header = pd.Series([str(c) for c in frame.columns], index=frame.columns)
+            assert not frame.astype(str).eq(header).any(axis=1).any(), where
+            for column in frame.columns:
+                values = frame[column].dropna()
+                numbers = values.map(lambda v: isinstance(v, (int, float))).sum()
+                if numbers:  # a column of numbers may hold a few explained values, not a header
+                    assert str(column) not in set(values.astype(str)), (where, column)
+
+
+def test_no_sheet_repeats_a_header_row_in_its_cells(example_reports):
+    """A header row appears once in its table (page tops repeat it through the print setup
+    only): no two equal bold rows of several cells in one block of rows (blocks are
+    separated by an empty row)."""
+    _, folder = example_reports
+    for book in _workbooks(folder):
+        wb = openpyxl.load_workbook(book)
+        for ws in wb.worksheets:
+            seen = set()
+            for row in ws.iter_rows():
+                cells = [c for c in row if c.value is not None]
+                if not cells:
+                    seen = set()
+                if len(cells) < 3 or not all(c.font and c.font.b for c in cells):
+                    continue
+                key = tuple(c.value for c in cells)
+                assert key not in seen, (book.name, ws.title, key)
+                seen.add(key)
+
+
+@pytest.mark.parametrize("sheet", ["LoadCases"])
+def test_loadcases_is_a_table_sheet(example_reports, sheet):
+    """The load cases list is one table sheet (the reference: the print setup of the file)."""
+    _, folder = example_reports
+    book = next(folder.glob("*-loads.xlsx"))
+    assert _is_table_sheet(openpyxl.load_workbook(book)[sheet])
