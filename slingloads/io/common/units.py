@@ -30,6 +30,8 @@ SI_UNITS = {
     "inertia": "kg*m^2",
     "angle": "rad",
     "speed": "m/s",
+    "airspeed": "m/s",
+    "altitude": "m",
     "acceleration": "m/s^2",
     "area": "m^2",
     "density": "kg/m^3",
@@ -45,13 +47,15 @@ SI_UNITS = {
 REPORT_UNITS = {
     "SI": {
         "length": "m", "mass": "kg", "force": "N", "moment": "N*m", "inertia": "kg*m^2",
-        "angle": "deg", "speed": "m/s", "acceleration": "m/s^2", "area": "m^2",
+        "angle": "deg", "speed": "m/s", "airspeed": "kt", "altitude": "m",
+        "acceleration": "m/s^2", "area": "m^2",
         "density": "kg/m^3", "time": "s", "frequency": "rad/s", "stiffness": "N/m",
         "linear damping": "N*s/m", "rotational damping": "N*m*s/rad", "dimensionless": "",
     },
     "US": {
         "length": "in", "mass": "lb", "force": "lbf", "moment": "lbf*in",
-        "inertia": "slug*ft^2", "angle": "deg", "speed": "kt", "acceleration": "ft/s^2",
+        "inertia": "lb*in^2", "angle": "deg", "speed": "ft/s", "airspeed": "kt",
+        "altitude": "ft", "acceleration": "ft/s^2",
         "area": "ft^2", "density": "slug/ft^3", "time": "s", "frequency": "rad/s",
         "stiffness": "lbf/in", "linear damping": "lbf*s/ft",
         "rotational damping": "lbf*ft*s/rad", "dimensionless": "",
@@ -61,6 +65,7 @@ REPORT_UNITS = {
 #: How report headers spell each unit (pint strings are not pretty).
 UNIT_LABELS = {
     "N*m": "N m", "kg*m^2": "kg m^2", "lbf*in": "lbf in", "slug*ft^2": "slug ft^2",
+    "lb*in^2": "lb in^2",
     "m/s^2": "m/s^2", "ft/s^2": "ft/s^2", "slug/ft^3": "slug/ft^3", "": "-",
     "N*s/m": "N s/m", "N*m*s/rad": "N m s/rad", "lbf*s/ft": "lbf s/ft",
     "lbf*ft*s/rad": "lbf ft s/rad",
@@ -93,6 +98,9 @@ EXACT_FACTORS = {
     # the parachute sizing plots' moment units
     ("moment", "kN*m"): 1000.0, ("moment", "kilolbf*ft"): 1000.0 * POUND_FORCE * FOOT,
     ("inertia", "slug*ft^2"): _SLUG * FOOT**2, ("inertia", "slug ft^2"): _SLUG * FOOT**2,
+    ("inertia", "lb*in^2"): POUND * INCH**2, ("inertia", "lb in^2"): POUND * INCH**2,
+    ("airspeed", "m/s"): 1.0, ("airspeed", "kt"): KNOT, ("altitude", "m"): 1.0,
+    ("altitude", "ft"): FOOT,
     ("angle", "deg"): math.pi / 180.0, ("speed", "kt"): KNOT, ("speed", "ft/s"): FOOT,
     ("frequency", "1/s"): 1.0, ("frequency", "deg/s"): math.pi / 180.0,
     ("acceleration", "ft/s^2"): FOOT, ("acceleration", "g0"): G0,

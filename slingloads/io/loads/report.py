@@ -69,6 +69,7 @@ from slingloads.io.common.report import (
     in_report_units,
     labelled,
     report_unit,
+    report_value,
     warning_sections,
 )
 from slingloads.io.common.report_writer import protected_inputs
@@ -350,8 +351,6 @@ def study_table(result, units="SI"):
     def conv(value, kind):
         return float(in_report_units(value, kind, units))
 
-    alt_unit = "ft" if units == "US" else "m"
-    altitude = study.flight.density_altitude / (0.3048 if units == "US" else 1.0)
     cg = items.cg
     c, s = len(result.case_ids), len(result.stations)
     rows = [
@@ -361,8 +360,10 @@ def study_table(result, units="SI"):
         ("CG x", conv(cg[0], "length"), _unit("length", units)),
         ("CG y", conv(cg[1], "length"), _unit("length", units)),
         ("CG z", conv(cg[2], "length"), _unit("length", units)),
-        ("equivalent airspeed", conv(study.flight.eas, "speed"), _unit("speed", units)),
-        ("density altitude", float(altitude), alt_unit),
+        ("equivalent airspeed KEAS", conv(study.flight.eas, "airspeed"),
+         _unit("airspeed", units)),
+        ("density altitude", report_value(study.flight.density_altitude, "altitude", units),
+         _unit("altitude", units)),
         ("air density", conv(study.flight.density, "density"), _unit("density", units)),
         ("attitude (earth vertical in airframe axes)", result.attitude.describe(), ""),
         ("attitude pitch", float(np.degrees(result.attitude.pitch)), "deg"),
