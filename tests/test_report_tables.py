@@ -5,6 +5,8 @@ cells. The reference is the file format's own reading (openpyxl, pandas), not th
 
 from __future__ import annotations
 
+import re
+
 import openpyxl
 import pandas as pd
 import pytest
@@ -69,3 +71,43 @@ def test_loadcases_is_a_table_sheet(example_reports, sheet):
     _, folder = example_reports
     book = next(folder.glob("*-loads.xlsx"))
     assert _is_table_sheet(openpyxl.load_workbook(book)[sheet])
+
+
+# ----------------------------------------------------------------------------- units
+#: A number followed by an SI unit, as a sentence quotes it (the US system has none of them).
+SI_QUOTED = re.compile(r"(?<![\w.^/])-?\d+(?:\.\d+)? ?"
+                       r"(?:m/s\^2|m/s|m\^2|kg m\^2|kg/m\^3|N m|kg|m|N)(?![\w^/])")
+
+
+def _cells(book):
+    wb = openpyxl.load_workbook(book)
+    for ws in wb.worksheets:
+        for row in ws.iter_rows():
+            yield ws.title, row
+
+
+def test_units_per_quantity_are_kept(example_reports):
+    """The unit of each quantity, read back from the cells: airspeeds in kt in both systems
+    (rows and headers naming an airspeed), inertias in the moments' family in US units
+    (lb in^2 beside lbf in, never slug ft^2), no SI quantity quoted in a US sentence, counts
+    and altitudes written without decimals, and "1 body" (not "1 bodies")."""
+    units, folder = example_reports
+    for book in _workbooks(folder):
+        for sheet, row in _cells(book):
+            values = [c.value for c in row]
+            texts = [v for v in values if isinstance(v, str)]
+            where = (book.name, sheet, values[:4])
+            assert not any(re.search(r"\b1 bodies\b", t) for t in texts), where
+            if units == "US":
+                assert not any(SI_QUOTED.search(t) for t in texts), where
+                assert not any("slug ft^2" in t for t in texts), where
+            for t in texts:
+                if "airspeed" in t and "[" in t:  # a header
+                    assert t.endswith("[kt]"), where
+            item = values[0] if values and isinstance(values[0], str) else ""
+            if len(values) >= 3 and isinstance(values[1], (int, float)) and texts:
+                unit = values[2]
+                if "airspeed" in item:
+                    assert unit == "kt", where
+                if item.startswith(("density altitude", "cases ", "load cases", "cut stations")):
+                    assert "." not in row[1].number_format, (where, row[1].number_format)

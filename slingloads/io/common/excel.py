@@ -218,6 +218,7 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
     with tempfile.TemporaryDirectory(prefix="slingloads-xlsx-",
                                      ignore_cleanup_errors=True) as tmp:
         wb = _Workbook(path, stream=_table_cells(sheets) > IN_MEMORY_CELLS, tmpdir=tmp)
+        wb.units = "US" if info is not None and info.units.startswith("US") else "SI"
         wb.set_properties({"author": creator, **({"title": info.title} if info else {})})
         mark_report(wb)
         written = []

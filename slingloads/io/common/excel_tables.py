@@ -55,6 +55,7 @@ from slingloads.io.common.excel_cells import (
 )
 from slingloads.io.common.excel_print import PRINTABLE, orientation_for, print_setup
 from slingloads.io.common.formats import header_unit, unit_format, value_format
+from slingloads.io.common.units import report_text
 
 
 @dataclass
@@ -382,7 +383,7 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     title = frame_title(frame, name)
     names = []
     parts = split_sheet_names(name, len(frame), max_rows)
-    lines = _note_lines(note, columns) if note else []
+    lines = _note_lines(report_text(note, wb.units), columns) if note else []
     for k, (sheet_name, start, stop) in enumerate(parts):
         ws = wb.add_worksheet(sheet_name)
         ws.freeze_panes(_freeze(frame, 1))
@@ -537,7 +538,8 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     columns = _column_plan(tables, [s.note for s in sections],
                            formats_of=lambda f: _number_formats(f.columns, number_format))
     _set_widths(ws, columns)
-    blocks = [(s.title, _note_lines(s.note, columns) if s.note else [], s.table)
+    blocks = [(s.title, _note_lines(report_text(s.note, wb.units), columns) if s.note else [],
+               s.table)
               for s in sections]
     one_table = len(tables) == 1 and sections[-1].table is not None
     if one_table:

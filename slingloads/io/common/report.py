@@ -100,6 +100,8 @@ def convert_columns(frame, spec, units):
     out = frame.copy()
     renames = {}
     for column, (name, kind) in spec.items():
+        if kind == "speed" and "airspeed" in name:  # an airspeed: in kt in both systems
+            kind = "airspeed"
         if column not in out.columns:
             raise InputError(f"column to convert is missing; columns are {list(out.columns)}",
                              column)

@@ -111,6 +111,43 @@ EXACT_FACTORS = {
 }
 
 
+#: SI units a sentence of a report may quote after a number, longest spelling first, and
+#: their quantity kind.
+_TEXT_UNITS = {"kg m^2": "inertia", "kg/m^3": "density", "m/s^2": "acceleration",
+               "m/s": "speed", "m^2": "area", "kN m": None, "N m": "moment", "kN": None,
+               "kg": "mass", "m": "length", "N": "force"}
+_QUOTED = re.compile(r"(?<![\w.^/])(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) ?("
+                     + "|".join(re.escape(u) for u in _TEXT_UNITS) + r")(?![\w^/])")
+
+
+def _quoted_number(value):
+    """A converted number in a sentence: 4 significant digits, whole above 1,000."""
+    return f"{value:,.0f}" if abs(value) >= 1000 else f"{value:.4g}"
+
+
+def report_text(text, units):
+    """A sentence of a report with its quoted SI quantities (``"step 9.14 m/s"``) in the
+    report unit system (``"step 30 ft/s"`` in US units); unchanged in SI.
+
+    Examples
+    --------
+    >>> report_text("quintic step 0.04246 m in 0.5 s (peak 0.9807 m/s^2)", "US")
+    'quintic step 1.672 in in 0.5 s (peak 3.218 ft/s^2)'
+    """
+    if units != "US" or not isinstance(text, str) or not any(c.isdigit() for c in text):
+        return text
+
+    def convert(match):
+        kind = _TEXT_UNITS[match.group(2)]
+        if kind is None:
+            return match.group(0)
+        unit = REPORT_UNITS["US"][kind]
+        value = float(match.group(1)) * si_factor(match.group(2).replace(" ", "*"), kind)
+        return f"{_quoted_number(value / si_factor(unit, kind))} {unit_label(unit)}"
+
+    return _QUOTED.sub(convert, text)
+
+
 @lru_cache(maxsize=1)
 def _registry():
     """pint's unit registry, built on first use (it parses pint's definitions file)."""
