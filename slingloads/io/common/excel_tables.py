@@ -70,11 +70,16 @@ class Section:
         Written with a bold header row.
     note : str
         Written under the title (before the table), wrapped to the width of the sheet.
+    sheet : str
+        The name of a sheet of its own for this section's table (a table sheet,
+        :func:`sheet_blocks`); empty: on the sheet of its list, unless it is longer than a
+        page among other tables.
     """
 
     title: str = ""
     table: pd.DataFrame | None = None
     note: str = ""
+    sheet: str = ""
 
 
 @dataclass
@@ -420,11 +425,16 @@ def _is_long(table, number_format):
     return height > page
 
 
+#: Words left out of a sheet name made from a title.
+_FILLER = frozenset({"a", "an", "and", "at", "by", "for", "in", "of", "on", "the", "to"})
+
+
 def _sheet_name_for(base, title, taken):
     """A sheet name for a table of sheet ``base`` taken out to a sheet of its own: the base
     and the first words of the table's title (``Runs-ResultsOfEveryCase``)."""
     head = re.split(r"[:,;(=]", title)[0]
-    words = [w[:1].upper() + w[1:] for w in re.findall(r"[A-Za-z0-9]+", head)] or ["Table"]
+    words = [w[:1].upper() + w[1:] for w in re.findall(r"[A-Za-z0-9]+", head)
+             if w.lower() not in _FILLER] or ["Table"]
     out = f"{base}-"
     for w in words:
         if len(out) + len(w) > 31:
@@ -442,8 +452,9 @@ def _sheet_name_for(base, title, taken):
 def sheet_blocks(name, sections, number_format=None, taken=()):
     """The sheets a list of sections is printed on, as (sheet name, content).
 
-    A section whose table is taller than a page, on a sheet of several tables, goes to a
-    sheet of its own named after the base sheet and the table's title (its header is then
+    A section naming a ``sheet`` goes to that sheet; one whose table is taller than a page,
+    on a sheet of several tables, goes to a sheet of its own named after the base sheet and
+    the table's title (its header is then
     repeated by the print setup on every page, never written into the data); when no table
     is left on the base sheet, the first such table keeps the base name and the notes. A
     sheet holding one table is a *table sheet*: a DataFrame whose ``attrs`` carry its
@@ -457,12 +468,16 @@ def sheet_blocks(name, sections, number_format=None, taken=()):
     sections = list(sections)
     tables = [s for s in sections if s.table is not None]
     taken = {t.lower() for t in taken} | {name.lower()}
-    long = ([s for s in tables if _is_long(s.table, number_format)]
-            if len(tables) > 1 else [])
+    long = [s for s in tables if s.sheet or (len(tables) > 1
+                                             and _is_long(s.table, number_format))]
     rest = [s for s in sections if all(s is not x for x in long)]
-    if long and not any(s.table is not None for s in rest):
+    if long and not any(s.table is not None for s in rest) and not long[0].sheet:
         rest.append(long.pop(0))
-    out = [(name, rest)] + [(_sheet_name_for(name, s.title, taken), [s]) for s in long]
+    out = [(name, rest)] if rest else []
+    for s in long:
+        own = s.sheet or _sheet_name_for(name, s.title, taken)
+        taken.add(check_sheet_name(own).lower())
+        out.append((own, [s]))
     return [(n, secs if (frame := _as_table_sheet(secs)) is None else frame)
             for n, secs in out]
 
