@@ -111,3 +111,33 @@ def test_units_per_quantity_are_kept(example_reports):
                     assert unit == "kt", where
                 if item.startswith(("density altitude", "cases ", "load cases", "cut stations")):
                     assert "." not in row[1].number_format, (where, row[1].number_format)
+
+
+# ----------------------------------------------------------------------------- LoadCases
+def test_loadcases_say_where_each_case_comes_from(example_reports, example_results):
+    """Every case of the LoadCases sheet has its source and a description, and the source
+    follows from the case's own columns and the inputs: hand-listed for the ids of the
+    LoadCases input sheet, towed equilibrium for hook TOW, a CS-29.865 direction for the
+    hook directions of the Summary (VERTICAL, AZnnn); the two printed tables (definition,
+    load factors) hold the same cases; each prints at 70 % of full size or more (fit to the
+    width of an A4 page: 7.7 pt from Calibri 11)."""
+    from slingloads.io.common.excel_print import PRINTABLE
+
+    _, folder = example_reports
+    book = next(folder.glob("*-loads.xlsx"))
+    cases = pd.read_excel(book, sheet_name="LoadCases")
+    factors = pd.read_excel(book, sheet_name="LoadFactors")
+    assert list(cases["case"]) == list(factors["case"])
+    assert cases["description"].notna().all() and (cases["description"].str.len() > 10).all()
+    listed = {c.id for c in example_results.loads.study.listed}
+    for case, hook, source in zip(cases["case"], cases["hook"], cases["source"], strict=True):
+        expected = ("hand-listed" if case in listed else "towed equilibrium" if hook == "TOW"
+                    else "CS-29.865 direction")
+        assert source == expected or source == "dynamics", (case, hook, source)
+    assert {"towed equilibrium", "CS-29.865 direction"} <= set(cases["source"])
+    wb = openpyxl.load_workbook(book)
+    for name in ("LoadCases", "LoadFactors"):
+        ws = wb[name]
+        pixels = sum(7 * (d.width or 8.43) for d in ws.column_dimensions.values())
+        width, _ = PRINTABLE[ws.page_setup.orientation or "portrait"]
+        assert width / pixels >= 0.7, (name, pixels)
