@@ -432,6 +432,9 @@ _FILLER = frozenset({"a", "an", "and", "at", "by", "for", "in", "of", "on", "the
 def _sheet_name_for(base, title, taken):
     """A sheet name for a table of sheet ``base`` taken out to a sheet of its own: the base
     and the first words of the table's title (``Runs-ResultsOfEveryCase``)."""
+    part = re.search(r"\bpart (\d+) of \d+", title)
+    if part:  # a block of a table split for print: "Histories part 2"
+        return _unique(f"{base} part {part.group(1)}", taken)
     head = re.split(r"[:,;(=]", title)[0]
     words = [w[:1].upper() + w[1:] for w in re.findall(r"[A-Za-z0-9]+", head)
              if w.lower() not in _FILLER] or ["Table"]
@@ -440,10 +443,15 @@ def _sheet_name_for(base, title, taken):
         if len(out) + len(w) > 31:
             break
         out += w
-    out = out.rstrip("-") if out.endswith("-") else out
-    candidate, k = out, 2
+    return _unique(out.rstrip("-"), taken)
+
+
+def _unique(name, taken):
+    """``name`` (at most 31 characters), or with a number when taken (case ignored)."""
+    name = candidate = name[:31]
+    k = 2
     while candidate.lower() in taken:
-        candidate = f"{out[:28]}{k}"
+        candidate = f"{name[:28]}{k}"
         k += 1
     taken.add(candidate.lower())
     return candidate
@@ -488,10 +496,13 @@ def _as_table_sheet(sections):
     if len(tables) != 1:
         return None
     own = tables[0]
-    title = own.title or next((s.title for s in sections if s.title), "")
-    text = []
+    full = own.title or next((s.title for s in sections if s.title), "")
+    # the page header holds the title without its bracketed remarks (so that a "part k of
+    # n" at its end shows); the text box under the table gives it whole
+    title = re.sub(r"\s*\([^()]*\)", "", full)
+    text = [full] if title != full else []
     for s in sections:
-        if s.title and s.title != title:
+        if s.title and s.title != full:
             text.append(s.title)
         if s.note:
             text.append(s.note)
@@ -566,7 +577,10 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
         if bool(blocks) and bool(blocks[0][0]) and blocks[0][2] is None:
             ws.freeze_panes("A2")
         title_rows = None
-    sheet_title = next((s.title for s in sections if s.title), name)
+    # the page header names the content, never the raw sheet name: a title, else the note's
+    # first line
+    sheet_title = next((s.title for s in sections if s.title),
+                       next((s.note.splitlines()[0] for s in sections if s.note), name))
     needs = [ROW_PIXELS * (bool(title) + len(lines) + (k > 0))
              + (_table_pixels(table, columns) if table is not None else 0)
              for k, (title, lines, table) in enumerate(blocks)]
