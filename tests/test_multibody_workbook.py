@@ -269,8 +269,7 @@ def test_short_cable_is_a_warning_in_the_report(small, tmp_path):
     path = tmp_path / "short.xlsx"
     book.save(path)
     assert main(["simulate", str(path), "--out", str(tmp_path), "--quiet"]) == 0
-    summary = pd.read_excel(tmp_path / "short-multibody.xlsx", sheet_name="Summary",
-                            header=None)
+    summary = _summary(tmp_path / "short-multibody.xlsx")
     texts = summary[1].astype(str)
     warning = texts[texts.str.contains("too short")]
     assert len(warning) == 1 and "48.000 m" in warning.iloc[0]
