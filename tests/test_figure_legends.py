@@ -97,3 +97,10 @@ def test_panel_titles_are_unique(example_results, units):
             same.append((tag, titles))
         plt.close(figure)
     assert not same, same
+
+
+def test_mode_names_are_unique(example_results):
+    """The multibody modes of the example carry one name each (two parachute modes are
+    numbered), so that the report and the eigenvalue plot name each mode once."""
+    names = list(example_results.multibody.linear.modes_frame()["mode"])
+    assert len(names) == len(set(names)), names
