@@ -497,9 +497,10 @@ def _as_table_sheet(sections):
         return None
     own = tables[0]
     full = own.title or next((s.title for s in sections if s.title), "")
-    # the page header holds the title without its bracketed remarks (so that a "part k of
-    # n" at its end shows); the text box under the table gives it whole
-    title = re.sub(r"\s*\([^()]*\)", "", full)
+    # the page header holds the title without its long bracketed remarks (so that a "part k
+    # of n" at its end shows; a short mark such as "(LIMIT)" stays); the text box under the
+    # table gives it whole
+    title = re.sub(r"\s*\([^()]{13,}\)", "", full)
     text = [full] if title != full else []
     for s in sections:
         if s.title and s.title != full:

@@ -974,8 +974,8 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     counts = cases["source"].value_counts()
     origin = ", ".join(f"{counts[s]} {s}" for s in CASE_SOURCES if s in counts)
     cases_sheet = [Section(
-        f"Load cases ({len(cases)}: {origin}): hook direction x aerodynamic point x "
-        "parachute, cable angles, description", cases),
+        f"Load cases of the LIMIT loads ({len(cases)}: {origin}): hook direction x "
+        "aerodynamic point x parachute, cable angles, description", cases),
         Section(f"Load factors of the load cases ({len(cases)}), angular accelerations and "
                 "closure residuals (LIMIT)", factors, sheet="LoadFactors")]
     return {
