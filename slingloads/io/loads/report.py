@@ -950,7 +950,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
                  "stations. Where the previous envelope comes from: "
                  + ("Summary, findings." if source else "not stated (Study sheet 'previous "
                     "envelope source')."))]
-        detail = [Section("Exceedance over the previous design envelope, LIMIT loads, every "
+        detail = [Section("LIMIT loads over the previous design envelope: exceedance at every "
                           "station and component", comparison_report_table(result, units))]
     else:
         exceedance = detail = "no previous envelope given"
@@ -974,10 +974,10 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     counts = cases["source"].value_counts()
     origin = ", ".join(f"{counts[s]} {s}" for s in CASE_SOURCES if s in counts)
     cases_sheet = [Section(
-        f"Load cases of the LIMIT loads ({len(cases)}: {origin}): hook direction x "
+        f"LIMIT load cases ({len(cases)}: {origin}): hook direction x "
         "aerodynamic point x parachute, cable angles, description", cases),
-        Section(f"Load factors of the load cases ({len(cases)}), angular accelerations and "
-                "closure residuals (LIMIT)", factors, sheet="LoadFactors")]
+        Section(f"LIMIT load factors of the load cases ({len(cases)}), angular accelerations "
+                "and closure residuals", factors, sheet="LoadFactors")]
     return {
         "Summary": summary,
         "Inputs": inputs,
