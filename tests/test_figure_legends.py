@@ -27,7 +27,8 @@ def _jobs(results):
 
 
 def _hidden(ax, box):
-    """Points of the plotted lines and markers of ``ax`` inside ``box`` (display px)."""
+    """Points of the plotted lines (as drawn: clipped to the axes) and markers of ``ax``
+    inside ``box`` (display px)."""
     count = 0
     for line in ax.get_lines():
         if not line.get_visible():
@@ -37,6 +38,10 @@ def _hidden(ax, box):
         if len(xy) > 1:  # 50 samples along every segment: a line crossing the box counts
             t = np.linspace(0.0, 1.0, 50)[:, None, None]
             xy = (xy[:-1] * (1 - t) + xy[1:] * t).reshape(-1, 2)
+        if line.get_clip_on():  # drawn only inside the axes
+            a = ax.bbox
+            xy = xy[(xy[:, 0] >= a.x0) & (xy[:, 0] <= a.x1) & (xy[:, 1] >= a.y0)
+                    & (xy[:, 1] <= a.y1)]
         inside = ((xy[:, 0] > box.x0) & (xy[:, 0] < box.x1)
                   & (xy[:, 1] > box.y0) & (xy[:, 1] < box.y1))
         count += int(inside.sum())
@@ -71,11 +76,12 @@ def test_no_legend_hides_data(example_results):
             figure.canvas.draw()
             renderer = figure.canvas.get_renderer()
             for k, ax in enumerate(figure.axes):
-                legend = ax.get_legend()
-                if legend is not None:
-                    n = _hidden(ax, legend.get_window_extent(renderer))
-                    if n:
-                        hidden.append((tag, k, ax.get_title(), n))
+                # its own legend, and any legend of the figure (one may lie over any panel)
+                for legend in [ax.get_legend(), *figure.legends]:
+                    if legend is not None:
+                        n = _hidden(ax, legend.get_window_extent(renderer))
+                        if n:
+                            hidden.append((tag, k, ax.get_title(), n))
         plt.close(figure)
     assert not hidden, hidden
 

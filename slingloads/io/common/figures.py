@@ -333,8 +333,12 @@ def legend_hides_data(ax, legend, renderer):
     vertex) or marker of ``ax``, in display coordinates (matplotlib's own extents)."""
     import numpy as np
     from matplotlib.path import Path
+    from matplotlib.transforms import Bbox
 
-    box = legend.get_window_extent(renderer)
+    # the part of the legend over the axes: lines are drawn clipped to them
+    box = Bbox.intersection(legend.get_window_extent(renderer), ax.bbox)
+    if box is None:
+        return False
     for line in ax.get_lines():
         if not line.get_visible():
             continue
@@ -358,9 +362,10 @@ def legend_hides_data(ax, legend, renderer):
 
 def place_legends(figure):
     """Put every legend of ``figure`` where it hides no data: its own place when clear,
-    else the first clear place of :data:`LEGEND_PLACES`, else outside the axes, on the
-    right. Returns True when a legend went outside (the figure is then saved with a tight
-    bounding box, so that it shows)."""
+    else the first clear place of :data:`LEGEND_PLACES`, else under the whole figure, below
+    its axes' column (outside every panel, so that it covers no neighbour either). Returns
+    True when a legend went outside (the figure is then saved with a tight bounding box, so
+    that it shows)."""
     axes = [ax for ax in figure.axes if ax.get_legend() is not None]
     if not axes:
         return False
@@ -380,8 +385,13 @@ def place_legends(figure):
             if not legend_hides_data(ax, legend, renderer):
                 break
         else:
-            legend.set_bbox_to_anchor((1.02, 1.0), transform=ax.transAxes)
-            legend.set_loc("upper left")
+            handles, labels = legend.legend_handles, [t.get_text() for t in legend.texts]
+            size = legend.texts[0].get_fontsize() if legend.texts else None
+            legend.remove()
+            box = ax.get_position()
+            figure.legend(handles, labels, loc="upper center", fontsize=size,
+                          bbox_to_anchor=(0.5 * (box.x0 + box.x1), 0.0),
+                          ncols=min(len(labels), 3))
             outside = True
     return outside
 
