@@ -173,8 +173,6 @@ def main(argv=None):
     parser.add_argument("--atol", type=float, default=1e-8, help="baseline DOP853 atol")
     parser.add_argument("--repeat", type=int, default=3,
                         help="timed calls of each method, the median kept (default 3)")
-    parser.add_argument("--numpy", action="store_true",
-                        help="also time the numpy batch integrator (kernel='numpy')")
     args = parser.parse_args(argv)
 
     cable_ea = None if args.rigid else args.cable_ea
@@ -192,9 +190,6 @@ def main(argv=None):
                                       args.repeat)
     print(f"  compiled RK4 sweep (step {h:.4g} s, parallel over runs), median of "
           f"{args.repeat}: {fast}")
-    if args.numpy:
-        _, slow_numpy = timed(sweep, pendulums, motions, solver=solver, kernel="numpy")
-        print(f"  numpy batch RK4 sweep (kernel='numpy'): {slow_numpy}")
 
     chosen = np.arange(n) if args.full else sample(n, args.sample)
     sub_p, sub_m = [pendulums[i] for i in chosen], [motions[i] for i in chosen]

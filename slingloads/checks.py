@@ -33,3 +33,17 @@ def non_negative(value, rule):
     if number < 0:
         raise InputError(rule, number)
     return number
+
+
+def frozen(values, dtype=float):
+    """A read-only copy of ``values`` as a numpy array.
+
+    The arrays of the model objects are frozen so that a change goes through the object's
+    constructor (``dataclasses.replace`` or a ``with_...`` helper), which checks it:
+    ``items.mass[0] = -5`` raises ``ValueError: assignment destination is read-only``.
+    """
+    import numpy as np
+
+    out = np.array(values, dtype=dtype)
+    out.flags.writeable = False
+    return out

@@ -1,4 +1,4 @@
-"""Command line: ``slingloads template | run | loads | lateral | chute | campaign``.
+"""Command line: ``slingloads template | compile | run | loads | lateral | chute | campaign``.
 
 Exit codes: 0 success; 2 bad input (a workbook or argument that breaks a stated rule: the
 message names the file, sheet, cell, value and rule); 1 a failure of the environment (an
@@ -60,6 +60,12 @@ def _parser():
                    "exists, unless --force)")
     t.add_argument("--force", action="store_true", help="replace an existing file")
     _debug_option(t)
+    c = sub.add_parser("compile", help="compile and cache the numerical kernels once, ahead "
+                       "of the first run (a fresh installation otherwise compiles them during "
+                       "its first run)",
+                       description="Compile and cache the numerical kernels of every analysis "
+                                   "(numba), so that the first run starts at full speed.")
+    _debug_option(c)
     runs = ", ".join(a.run_parameter for a in REGISTRY)
     commands = {"run": f"run every analysis the workbook asks for (Study sheet: {runs})",
                 **{a.subcommand: a.summary for a in REGISTRY}}
@@ -99,6 +105,18 @@ def _campaign_options(p):
                    help="time the scheduler has to answer (default: the workbook's, 10 s)")
 
 
+def _compile():
+    from time import perf_counter
+
+    from slingloads.runs.warmup import compile_kernels
+
+    start = perf_counter()
+    times = compile_kernels()
+    parts = ", ".join(f"{name} {seconds:.1f} s" for name, seconds in times.items())
+    print(f"compiled and cached the kernels in {perf_counter() - start:.1f} s ({parts})")
+    return 0
+
+
 def _debug_option(parser):
     parser.add_argument("--debug", action="store_true", default=argparse.SUPPRESS,
                         help="show the Python traceback of an unexpected error")
@@ -113,6 +131,8 @@ def main(argv=None):
     try:
         if args.command == "template":
             return _template(args)
+        if args.command == "compile":
+            return _compile()
         return _analyse(args)
     except (InputError, ClosureError) as err:
         return _fail(err, EXIT_BAD_INPUT)
@@ -379,7 +399,7 @@ def _run_options(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
     from slingloads.io.campaign.reader import address_rule
     from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
-    from slingloads.runs.cache import check_outside, check_writable, default_cache_dir
+    from slingloads.runs.cache import check_outside, default_cache_dir
     from slingloads.runs.study import RunOptions
 
     if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
@@ -395,8 +415,8 @@ def _run_options(args, show):
         if rule is not None:
             raise InputError(f"--scheduler: {rule}", args.scheduler)
     cache = Path(args.cache) if args.cache else default_cache_dir()
-    check_outside(cache, args.out)
-    check_writable(cache)
+    check_outside(cache, args.out)  # a cache that cannot be used is a warning: the
+    # campaign then runs without it (slingloads.runs.cache)
     return RunOptions(scheduler=args.scheduler, workers=args.workers, cache=cache,
                       timeout=args.scheduler_timeout, progress=_RunsBar() if show else None)
 

@@ -167,8 +167,18 @@ MAX_CAMPAIGN_SAMPLES = 3_000_000
 #: Points of a campaign's stability map: density altitudes x airspeeds x area factors (a trim
 #: and an eigenanalysis each, about 20 ms).
 MAX_MAP_POINTS = 2_000
-#: Local worker processes of a campaign (each holds the compiled kernel, about 150 MB).
+#: Local worker processes of a campaign that may be asked for (each holds the compiled
+#: kernel; the processes started are also capped by the cores and the memory available).
 MAX_WORKERS = 64
+#: Memory budget of the arrays of one computation: a batch of runs' samples, or all the runs
+#: of the multibody model, or one campaign run. With the loaded libraries (about 300 MB) a
+#: command stays under 1 GB (docs/inputs-and-outputs.md, "Memory"). [bytes]
+MEMORY_BUDGET = 512 * 2**20
+#: Samples of the runs of one campaign batch (the batch is cut to fit). [bytes]
+BATCH_MEMORY = 128 * 2**20
+#: A worker process with the libraries and compiled kernels loaded (measured about
+#: 290 MB). [bytes]
+WORKER_BASE_MEMORY = 300 * 2**20
 #: Longest time the campaign waits for a scheduler. [s]
 MAX_SCHEDULER_TIMEOUT = 600.0
 

@@ -1,7 +1,38 @@
-"""Shared test set-up: the campaign's run cache goes to a temporary folder, never to the user's
-cache folder (``$SLINGLOADS_CACHE`` is read by ``slingloads.runs.cache``)."""
+"""Shared test set-up.
+
+* The campaign's run cache goes to a temporary folder, never to the user's cache folder
+  (``$SLINGLOADS_CACHE`` is read by ``slingloads.runs.cache``).
+* Parallel workers (pytest-xdist, ``-n`` in pyproject.toml) each compile numba's kernels into
+  a cache folder of their own: numba writes each cache file atomically, but two processes
+  compiling two signatures of one function at once may each rewrite the function's index with
+  its own entry only (``numba.core.caching.IndexDataCacheFile.save``), so workers never share
+  one. The folders are kept in pytest's cache folder between runs (compiled once).
+* LibreOffice, when present, with one user profile for the session.
+* The example workbook, its study read once for the session, its results (every analysis)
+  computed once, its reports made once for the session (``slingloads loads`` and
+  ``slingloads run``; the US reports written from those results), and the check of a broken
+  copy of a workbook (exit code 2, the message located at the cell, nothing written).
+"""
+
+import copy
+import os
+import tempfile
+from pathlib import Path
 
 import pytest
+from hostile import EXAMPLE, refused_copy
+
+
+def pytest_configure(config):
+    worker = getattr(config, "workerinput", {}).get("workerid")
+    if worker is None or "NUMBA_CACHE_DIR" in os.environ:
+        return  # one process: the package's own cache (as a user's runs)
+    if getattr(config, "cache", None) is not None:
+        folder = config.cache.mkdir(f"numba-{worker}")
+    else:
+        folder = Path(tempfile.gettempdir()) / f"slingloads-numba-{worker}"
+    os.environ["NUMBA_CACHE_DIR"] = str(folder)  # before numba is imported: read at import;
+    # the commands the tests start inherit it
 
 
 @pytest.fixture(autouse=True, scope="session")
@@ -13,21 +44,99 @@ def _campaign_cache(tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
-def example_results():
-    """The example workbook's study, every analysis run once for the whole session."""
-    from pathlib import Path
+def example_path():
+    """The example workbook (loadcases/example-light-twin.xlsx)."""
+    return EXAMPLE
 
-    import slingloads as sl
 
-    root = Path(__file__).resolve().parents[1]
-    return sl.read_study(root / "loadcases" / "example-light-twin.xlsx").run()
+@pytest.fixture(scope="session")
+def _example_study():
+    from slingloads.io.study import read_study
+
+    return read_study(EXAMPLE)
+
+
+@pytest.fixture
+def example_study(_example_study):
+    """The example's study (every analysis it asks for), read once for the session; each
+    test gets its own copy (an analysis may add its results to the study)."""
+    return copy.deepcopy(_example_study)
+
+
+def _report(tmp_path_factory, command):
+    from slingloads.cli import main
+
+    out = tmp_path_factory.mktemp(f"example-{command}")
+    assert main([command, str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+    return out
+
+
+@pytest.fixture(scope="session")
+def example_loads_report(tmp_path_factory):
+    """The folder of ``slingloads loads`` on the example, made once for the session (to be
+    read, not changed)."""
+    return _report(tmp_path_factory, "loads")
+
+
+@pytest.fixture(scope="session")
+def example_run_report(tmp_path_factory):
+    """The folder of ``slingloads run`` on the example (every analysis it asks for), made
+    once for the session (to be read, not changed)."""
+    return _report(tmp_path_factory, "run")
+
+
+@pytest.fixture(scope="session")
+def example_results(_example_study):
+    """The example's study with every analysis it asks for run once for the session (its own
+    copy of the study; the results are to be read, not changed)."""
+    return copy.deepcopy(_example_study).run()
 
 
 @pytest.fixture(scope="session", params=["SI", "US"])
 def example_reports(request, example_results, tmp_path_factory):
-    """(units, folder) of the example's reports written in SI and in US units."""
+    """(units, folder) of the example's reports in SI and in US units: the SI ones are the
+    session's ``slingloads run`` folder, the US ones written from ``example_results``."""
+    if request.param == "SI":
+        return "SI", request.getfixturevalue("example_run_report")
     import slingloads as sl
 
     out = tmp_path_factory.mktemp(f"example-{request.param}")
     sl.write_reports(example_results, out, request.param)
     return request.param, out
+
+
+@pytest.fixture(scope="session")
+def libreoffice(tmp_path_factory):
+    """``convert(paths, to, outdir)``: LibreOffice headless converts the files to the format
+    ``to`` (``pdf``, ``xlsx``, a ``csv:...`` filter) in one call, with one user profile for
+    the session (made by the first call, reused after); the tests that use it are skipped
+    where LibreOffice is absent."""
+    import shutil
+    import subprocess
+
+    from hostile import DEADLINE
+
+    soffice = shutil.which("soffice")
+    if soffice is None:
+        pytest.skip("LibreOffice (soffice) not found")
+    profile = tmp_path_factory.mktemp("libreoffice-profile")
+
+    def convert(paths, to, outdir):
+        done = subprocess.run(
+            [soffice, f"-env:UserInstallation={profile.as_uri()}", "--headless",
+             "--convert-to", to, "--outdir", str(outdir), *map(str, paths)],
+            capture_output=True, text=True, timeout=DEADLINE)
+        assert done.returncode == 0, done.stderr
+        return Path(outdir)
+
+    return convert
+
+
+@pytest.fixture
+def bad_workbook(tmp_path, capsys):
+    """``check(command, edits, sheet, cell, *fragments, base=EXAMPLE)``: a broken copy of a
+    workbook refused by ``slingloads COMMAND`` at its cell, nothing written
+    (:func:`hostile.refused_copy`). Returns the message."""
+    from functools import partial
+
+    return partial(refused_copy, tmp_path, capsys)

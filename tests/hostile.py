@@ -1,7 +1,9 @@
-"""A small valid input workbook built in memory, and helpers to break it (hostile tests).
+"""Test inputs and their helpers: the example workbook's path, a small valid input workbook
+built in memory and helpers to break it (hostile tests), and commands stopped at a known moment
+(kill and Ctrl-C tests).
 
-The workbook asks for all three analyses with tiny tables, so that reading it takes a few
-milliseconds and computing it about a second: the fuzzing and the kill tests start from it.
+The small workbook asks for all three analyses with tiny tables, so that reading it takes a
+few milliseconds and computing it about a second: the fuzzing and the kill tests start from it.
 """
 
 from __future__ import annotations
@@ -10,6 +12,9 @@ import copy
 from pathlib import Path
 
 from openpyxl import Workbook
+
+#: The example workbook of the repository.
+EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
 
 def small_workbook():
@@ -193,9 +198,142 @@ def located_error(book, file, sheet, cell, *fragments):
     return err
 
 
+def study_row(book, name):
+    """The row of Study parameter ``name`` in an openpyxl workbook."""
+    for row in book["Study"].iter_rows(min_row=2):
+        if row[0].value == name:
+            return row[0].row
+    raise KeyError(name)
+
+
+def refused_copy(tmp_path, capsys, command, edits, sheet, cell, *fragments, base=EXAMPLE):
+    """Apply ``edits`` to a copy of the workbook ``base`` and run ``slingloads COMMAND`` on it:
+    exit code 2, the message naming the file, ``sheet`` and ``cell`` (on the Study sheet a
+    parameter's name stands for its value cell) and holding every fragment, no traceback,
+    nothing written. ``edits`` is ``{(sheet, cell or Study parameter name): value}`` or a
+    function editing the openpyxl workbook. Returns the message."""
+    import openpyxl
+
+    from slingloads.cli import main
+
+    book = openpyxl.load_workbook(base)
+    if callable(edits):
+        edits(book)
+    else:
+        for (name, where), value in edits.items():
+            if name == "Study" and where[0].islower():
+                where = f"B{study_row(book, where)}"
+            book[name][where] = value
+    path = Path(tmp_path) / "bad.xlsx"
+    book.save(path)
+    out = Path(tmp_path) / "out"
+    capsys.readouterr()
+    assert main([command, str(path), "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    if sheet == "Study" and cell[0].islower():  # a parameter's name
+        cell = f"B{study_row(book, cell)}"
+    assert "bad.xlsx" in err and f"sheet '{sheet}'" in err and f"cell {cell}" in err, err
+    for fragment in fragments:
+        assert fragment in err, err
+    assert "nothing was written" in err and "Traceback" not in err
+    assert not out.exists()
+    return err
+
+
 def study_cell(book, name):
     """The value cell (``B<row>``) of Study parameter ``name`` in ``book``."""
     for r, row in enumerate(book["Study"], start=1):
         if row[0] == name:
             return f"B{r}"
     raise KeyError(name)
+
+
+# ---- commands stopped at a known moment (kill and Ctrl-C tests) ------------------------------
+#: Seconds a test waits for a moment of a command before it fails: a guard against a hang,
+#: generous enough for the busiest machine (no test depends on how long a run takes).
+DEADLINE = 600.0
+
+
+def command(name, workbook, out, env=None, **options):
+    """Start ``slingloads NAME WORKBOOK --out OUT --quiet`` as a process (stderr piped)."""
+    import os
+    import subprocess
+    import sys
+
+    return subprocess.Popen([sys.executable, "-m", "slingloads.cli", name, str(workbook),
+                             "--out", str(out), "--quiet"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            env={**os.environ, **(env or {})}, **options)
+
+
+def wait_until(condition, proc=None, what="the moment"):
+    """Poll ``condition()`` until it holds; fail if ``proc`` ends first (with its stderr) or
+    after :data:`DEADLINE`."""
+    import time
+
+    deadline = time.monotonic() + DEADLINE
+    while not condition():
+        if proc is not None and proc.poll() is not None:
+            err = proc.stderr.read() if proc.stderr else ""
+            raise AssertionError(f"the command ended ({proc.returncode}) before {what}: {err}")
+        if time.monotonic() > deadline:
+            raise AssertionError(f"{what} did not come within {DEADLINE:.0f} s")
+        time.sleep(0.005)
+
+
+def _status(pid, field):
+    try:
+        with open(f"/proc/{pid}/status") as status:
+            for line in status:
+                if line.startswith(field + ":"):
+                    return line.split()[1]
+    except OSError:
+        return None
+    return None
+
+
+def _children(pid):
+    try:
+        with open(f"/proc/{pid}/task/{pid}/children") as children:
+            return [int(c) for c in children.read().split()]
+    except OSError:
+        return []
+
+
+def helper_ready(pid):
+    """True once process ``pid`` has a child that ignores SIGINT: the run's helper, which a
+    run forks before it reads the workbook, is up and leaves Ctrl-C to its parent, and the
+    parent is inside its own handling of Ctrl-C (Linux: ``/proc``)."""
+    import signal
+
+    bit = 1 << (signal.SIGINT - 1)
+    return any(int(_status(c, "SigIgn") or "0", 16) & bit for c in _children(pid))
+
+
+def wait_for_publishing_step(proc, steps, number):
+    """Wait until the run ``proc``, started with ``STEP_VARIABLE=steps``, waits in the pause
+    ``number`` between its publishing steps, letting it go on from the pauses before (see
+    ``slingloads.io.common.atomic.STEP_VARIABLE``); the run then waits there."""
+    for step in range(1, int(number) + 1):
+        marker = Path(steps) / str(step)
+        wait_until(marker.exists, proc, f"publishing step {step}")
+        if step < int(number):
+            marker.unlink()
+
+
+def processes_left(pgid):
+    """The live processes (not zombies) of process group ``pgid``."""
+    import os
+
+    left = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as stat:
+                fields = stat.read().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[2]) == pgid and fields[0] not in ("Z", "X"):
+            left.append(int(entry))
+    return left

@@ -16,6 +16,7 @@ Runs are short (30 s) and matrices tiny: the whole file costs well under a minut
 import numpy as np
 import pandas as pd
 import pytest
+from hostile import EXAMPLE
 from numpy.testing import assert_allclose, assert_array_equal
 
 from slingloads.analyses.campaign import (
@@ -341,25 +342,25 @@ def test_a_cable_the_parachute_could_reach_is_refused():
 
 def test_unreachable_scheduler_fails_within_its_time_out():
     """A scheduler address nobody listens on: an InputError naming the address and the
-    time-out within a few seconds, and nothing run into the store."""
+    time-out given, and nothing run into the store (not a hang: the guard is generous, the
+    time taken depends on the machine)."""
     import time
 
-    start = time.perf_counter()
+    from hostile import DEADLINE
+
+    start = time.monotonic()
     with pytest.raises(InputError, match=r"could not reach the Dask scheduler within 1 s"):
         DaskCluster("tcp://127.0.0.1:9", timeout=1.0)
-    assert time.perf_counter() - start < 15
+    assert time.monotonic() - start < DEADLINE
 
 
 # ------------------------------------------------------------ loads from the dynamics
 @pytest.fixture(scope="module")
 def example_loads():
     """The example workbook's hand-entered loads study (GENERIC light twin, HC1 tables)."""
-    from pathlib import Path
-
     from slingloads.io.study import read_study
 
-    example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
-    return read_study(example, only=["loads"]).inputs.loads
+    return read_study(EXAMPLE, only=["loads"]).inputs.loads
 
 
 def test_loads_take_the_dynamics_cases(local, example_loads):

@@ -10,12 +10,11 @@ and cell in the message, and that nothing is written.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from hostile import EXAMPLE, refused_copy, study_row
 
 from slingloads.analyses.chute_sizing import neutral_area
 from slingloads.cli import main
@@ -29,7 +28,6 @@ from slingloads.models.sample_aircraft import sample_fin, sample_fuselage, sampl
 from slingloads.models.yaw_dynamics import YawModel
 from slingloads.runs.chute_sizing import run as compute
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem
 
 
@@ -124,34 +122,8 @@ def test_us_report(tmp_path, result):
 
 
 # ---------------------------------------------------------------------------- bad input
-def _row(book, name):
-    for row in book["Study"].iter_rows(min_row=2):
-        if row[0].value == name:
-            return row[0].row
-    raise KeyError(name)
-
-
 def _bad(tmp_path, capsys, edits, sheet, cell, *fragments):
-    """Apply ``edits`` {(sheet, cell or Study parameter name): value} to a copy; expect exit 2
-    located at ``cell`` of ``sheet`` (a parameter's value cell on the Study sheet)."""
-    book = openpyxl.load_workbook(EXAMPLE)
-    for (name, where), value in edits.items():
-        if name == "Study":
-            where = f"B{_row(book, where)}"
-        book[name][where] = value
-    path = tmp_path / "bad.xlsx"
-    book.save(path)
-    out = tmp_path / "out"
-    capsys.readouterr()
-    assert main(["chute", str(path), "--out", str(out), "--quiet"]) == 2
-    err = capsys.readouterr().err
-    if sheet == "Study":
-        cell = f"B{_row(book, cell)}"
-    assert f"sheet '{sheet}'" in err and f"cell {cell}" in err, err
-    for fragment in fragments:
-        assert fragment in err, err
-    assert "nothing was written" in err
-    assert not out.exists()
+    return refused_copy(tmp_path, capsys, "chute", edits, sheet, cell, *fragments)
 
 
 @pytest.mark.parametrize("speed", [0, -80])
@@ -254,7 +226,7 @@ def test_gust_outside_the_tables(tmp_path, capsys):
     for r in keep:
         ws.append(r)
     name = "chute sizing gust amplitude"
-    row = _row(book, name)
+    row = study_row(book, name)
     ws_study = book["Study"]
     ws_study[f"B{row}"] = 100
     ws_study[f"C{row}"] = "ft/s"
@@ -318,7 +290,7 @@ def test_adaptive_integrator_ignores_the_time_step(tmp_path, result):
     result equals the example's (the integration never reads it): same neutral area and
     the same peak sideslip of every run to round-off."""
     book = openpyxl.load_workbook(EXAMPLE)
-    book["Study"][f"B{_row(book, 'chute sizing time step')}"] = 0.03
+    book["Study"][f"B{study_row(book, 'chute sizing time step')}"] = 0.03
     path = tmp_path / "odd-step.xlsx"
     book.save(path)
     odd = compute(read_study(path, only=["chute sizing"]))

@@ -6,19 +6,16 @@ are taken over) applied to the numbers of both analyses, and the report that sho
 """
 
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import pytest
+from hostile import EXAMPLE
 
 from slingloads.analyses.loads import AeroEnvelope
-from slingloads.cli import main
 from slingloads.io.consistency import consistency_checks
 from slingloads.io.study import read_study
 from slingloads.runs.study import Results
-
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
 
 @pytest.fixture(scope="module")
@@ -49,16 +46,14 @@ def test_peak_sideslip_inside_a_wider_envelope_passes(results):
     assert consistency_checks(Results(loads=loads)) == {}
 
 
-def test_run_report_carries_the_warning(tmp_path):
+def test_run_report_carries_the_warning(example_run_report, example_loads_report):
     """`slingloads run` with the loads and the sizing: the loads Summary shows the check and
     the warning; `slingloads loads` alone has no such section."""
-    assert main(["run", str(EXAMPLE), "--out", str(tmp_path / "run"), "--quiet"]) == 0
-    summary = pd.read_excel(tmp_path / "run" / "example-light-twin-loads.xlsx",
+    summary = pd.read_excel(example_run_report / "example-light-twin-loads.xlsx",
                             sheet_name="Summary", header=None)
     text = " ".join(map(str, summary[0]))
     assert "Consistency with the other analyses of this run" in text
     assert "WARNING: the parachute sizing's finite gust" in text
-    assert main(["loads", str(EXAMPLE), "--out", str(tmp_path / "alone"), "--quiet"]) == 0
-    alone = pd.read_excel(tmp_path / "alone" / "example-light-twin-loads.xlsx",
+    alone = pd.read_excel(example_loads_report / "example-light-twin-loads.xlsx",
                           sheet_name="Summary", header=None)
     assert "Consistency" not in " ".join(map(str, alone[0]))

@@ -10,6 +10,7 @@ from pathlib import Path
 import matplotlib
 import pandas as pd
 import pytest
+from hostile import EXAMPLE
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -170,3 +171,51 @@ def test_readme_outputs_name_the_condition_of_the_lateral_shear_plot(example_rep
     readme = _text("README.md")
     assert re.search(r"`-shear\.png` only when", readme)
     assert not list(folder.glob("*-lateral-shear.png"))
+
+
+def _modules_with_examples():
+    """The modules of slingloads whose source holds a ``>>>`` example, by dotted name."""
+    package = ROOT / "slingloads"
+    names = []
+    for path in sorted(package.rglob("*.py")):
+        if ">>>" in path.read_text(encoding="utf-8"):
+            parts = path.relative_to(ROOT).with_suffix("").parts
+            names.append(".".join(parts[:-1] if parts[-1] == "__init__" else parts))
+    return names
+
+
+MODULES_WITH_EXAMPLES = _modules_with_examples()
+
+
+def test_the_docstring_examples_are_found():
+    """The search below finds the modules that show examples (at least the ones known to:
+    a search that found none would make the doctest test pass without running anything)."""
+    assert {"slingloads.models.flight", "slingloads.io.common.atomic"} <= set(
+        MODULES_WITH_EXAMPLES)
+
+
+@pytest.mark.parametrize("name", MODULES_WITH_EXAMPLES)
+def test_docstring_examples_run(name, tmp_path, monkeypatch):
+    """Every ``>>>`` example in the module's docstrings gives the output written under it
+    (the reference is the documentation itself, run by the standard library's doctest);
+    an example marked to be skipped counts as not run."""
+    import doctest
+    import importlib
+    import shutil
+
+    # files an example writes land in a temp folder, which holds the example workbook at the
+    # path the examples name (relative to the repository, as a user runs them)
+    (tmp_path / "loadcases").mkdir()
+    shutil.copy(EXAMPLE, tmp_path / "loadcases" / EXAMPLE.name)
+    monkeypatch.chdir(tmp_path)
+    module = importlib.import_module(name)
+    finder = doctest.DocTestFinder(exclude_empty=True)
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+    examples = skipped = 0
+    report = []
+    for test in finder.find(module, name):
+        examples += len(test.examples)
+        skipped += sum(bool(e.options.get(doctest.SKIP)) for e in test.examples)
+        runner.run(test, out=report.append)
+    assert examples and not skipped, f"{name}: {examples} examples, {skipped} skipped"
+    assert runner.failures == 0, "".join(report)

@@ -9,7 +9,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from slingloads.analyses.envelopes import compare_with_previous, convex_hull, envelope_table
-from slingloads.analyses.sfbm import COMPONENTS
+from slingloads.analyses.sfbm import COMPONENTS, LOAD_COLUMNS
 from slingloads.errors import InputError
 
 CASES = ["LC1", "LC2", "LC3", "LC4"]
@@ -43,14 +43,16 @@ def test_envelope_table_max_min_and_critical_case():
             rows = table[(table["station"] == sid) & (table["component"] == name)]
             top = rows[rows["bound"] == "max"].iloc[0]
             low = rows[rows["bound"] == "min"].iloc[0]
-            assert top["value"] == loads[:, s, k].max()
-            assert low["value"] == loads[:, s, k].min()
+            column = "value_Nm" if name.startswith("M") else "value_N"
+            assert top[column] == loads[:, s, k].max()
+            assert low[column] == loads[:, s, k].min()
             assert top["case"] == CASES[int(np.argmax(loads[:, s, k]))]
             assert low["case"] == CASES[int(np.argmin(loads[:, s, k]))]
-            assert top["x [m]"] == STATIONS[s]
+            assert top["x_m"] == STATIONS[s]
     my = table[(table["station"] == "FS1") & (table["component"] == "My")].set_index("bound")
-    assert (my.loc["max", "value"], my.loc["max", "case"]) == (35.0, "LC2")
-    assert (my.loc["min", "value"], my.loc["min", "case"]) == (-45.0, "LC4")
+    assert (my.loc["max", "value_Nm"], my.loc["max", "case"]) == (35.0, "LC2")
+    assert (my.loc["min", "value_Nm"], my.loc["min", "case"]) == (-45.0, "LC4")
+    assert np.isnan(my.loc["max", "value_N"])
 
 
 def test_envelope_correlated_loads_are_the_critical_case_row():
@@ -60,13 +62,14 @@ def test_envelope_correlated_loads_are_the_critical_case_row():
     table = envelope_table(loads, CASES, STATIONS, STATION_IDS)
     row = table[(table["station"] == "FS1") & (table["component"] == "My")
                 & (table["bound"] == "max")].iloc[0]
-    assert_allclose(row[list(COMPONENTS)].to_numpy(float), [-2.0, 8.0, -9.0, 1.5, 35.0, -11.0],
-                    atol=0)
+    assert_allclose(row[list(LOAD_COLUMNS)].to_numpy(float),
+                    [-2.0, 8.0, -9.0, 1.5, 35.0, -11.0], atol=0)
     for _, r in table.iterrows():
         s = STATION_IDS.index(r["station"])
         c = CASES.index(r["case"])
-        assert_allclose(r[list(COMPONENTS)].to_numpy(float), loads[c, s], atol=0)
-        assert r[r["component"]] == r["value"]
+        assert_allclose(r[list(LOAD_COLUMNS)].to_numpy(float), loads[c, s], atol=0)
+        k = COMPONENTS.index(r["component"])
+        assert r[LOAD_COLUMNS[k]] == r["value_Nm" if k >= 3 else "value_N"]
 
 
 def counter_clockwise_area(xy):
@@ -98,8 +101,8 @@ def test_convex_hull_of_square_with_interior_points():
     hull = convex_hull(loads, ids, 0, ("Vy", "Mz"))
     assert sorted(hull["case"]) == ["C1", "C2", "C3", "C4"]
     for _, row in hull.iterrows():
-        assert (row["Vy"], row["Mz"]) == corners[row["case"]]
-    area = counter_clockwise_area(hull[["Vy", "Mz"]].to_numpy(float))
+        assert (row["Vy_N"], row["Mz_Nm"]) == corners[row["case"]]
+    area = counter_clockwise_area(hull[["Vy_N", "Mz_Nm"]].to_numpy(float))
     assert area == pytest.approx(4000.0 * 1e5, rel=1e-12)
 
 
@@ -111,7 +114,7 @@ def test_convex_hull_of_collinear_cloud_returns_the_two_extremes():
     loads = cloud(np.column_stack([vy, 3 * vy + 10]))
     hull = convex_hull(loads, ids, 0, ("Vy", "Mz"))
     assert sorted(hull["case"]) == ["B", "D"]
-    got = dict(zip(hull["case"], hull["Vy"], strict=True))
+    got = dict(zip(hull["case"], hull["Vy_N"], strict=True))
     assert got == {"B": 7.0, "D": -4.0}
 
 
@@ -123,7 +126,7 @@ def test_convex_hull_of_vertical_line_and_single_point():
     assert sorted(hull["case"]) == ["b", "c"]
     same = cloud([[3.0, 4.0], [3.0, 4.0]])
     hull = convex_hull(same, ["p", "q"], 0, ("Vy", "Mz"))
-    assert len(hull) == 1 and (hull["Vy"].iloc[0], hull["Mz"].iloc[0]) == (3.0, 4.0)
+    assert len(hull) == 1 and (hull["Vy_N"].iloc[0], hull["Mz_Nm"].iloc[0]) == (3.0, 4.0)
 
 
 def test_convex_hull_rejects_unknown_component():
@@ -208,6 +211,6 @@ def test_convex_hull_matches_qhull(shape):
     hull = convex_hull(cloud(pts), ids, 0, ("Vy", "Mz"))
     qhull = ConvexHull(pts)
     assert sorted(hull["case"]) == sorted(ids[k] for k in qhull.vertices)
-    xy = hull[["Vy", "Mz"]].to_numpy(float)
+    xy = hull[["Vy_N", "Mz_Nm"]].to_numpy(float)
     assert counter_clockwise_area(xy) == pytest.approx(qhull.volume, rel=1e-12)
     assert xy[0, 0] == pts[:, 0].min()

@@ -18,11 +18,28 @@ import time
 from pathlib import Path
 
 import pytest
-from hostile import save_xlsx, small_workbook
+from hostile import (
+    DEADLINE,
+    command,
+    helper_ready,
+    processes_left,
+    save_xlsx,
+    set_parameter,
+    small_workbook,
+    wait_for_publishing_step,
+    wait_until,
+)
 
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import PAUSE_VARIABLE, TEMP_PREFIX
-from slingloads.io.common.helper import Helper, RemoteTraceback, gather, in_background, running
+from slingloads.io.common.atomic import STEP_VARIABLE, TEMP_PREFIX
+from slingloads.io.common.helper import (
+    PROCESSES_VARIABLE,
+    Helper,
+    RemoteTraceback,
+    gather,
+    in_background,
+    running,
+)
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"),
                                 reason="helper processes are forked on Linux only")
@@ -34,7 +51,7 @@ def _refuse(mass):
 
 def _wait_for(path, pid):
     """Wait (in a helper) until ``path`` exists; the process id."""
-    deadline = time.monotonic() + 30
+    deadline = time.monotonic() + DEADLINE
     while not os.path.exists(path) and time.monotonic() < deadline:
         time.sleep(0.01)
     return os.getpid()
@@ -49,7 +66,7 @@ def _die_in_a_helper(parent):
 
 def _settle(*calls):
     """Wait until a helper has run ``calls`` (asking for a result first would run it here)."""
-    deadline = time.monotonic() + 30
+    deadline = time.monotonic() + DEADLINE
     while not all(c.done() for c in calls) and time.monotonic() < deadline:
         time.sleep(0.01)
     return calls
@@ -109,7 +126,7 @@ def test_calls_no_helper_started_are_run_here(tmp_path):
     go = tmp_path / "go"
     with Helper(1) as helper:
         busy = helper.submit(_wait_for, str(go), 0)
-        deadline = time.monotonic() + 30
+        deadline = time.monotonic() + DEADLINE
         while busy.state == "pending" and time.monotonic() < deadline:  # until it starts
             time.sleep(0.01)
         second = helper.submit(os.getpid)
@@ -142,45 +159,40 @@ def test_a_helper_dies_with_its_parent():
             "print(helper.submit(os.getpid).result(), flush=True)\n"
             "os.kill(os.getpid(), signal.SIGKILL)\n")
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          timeout=60)
+                          timeout=DEADLINE)
     assert proc.returncode == -signal.SIGKILL
     helper = int(proc.stdout.split()[0])
-    deadline = time.monotonic() + 10
-    while not _gone(helper) and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert _gone(helper)
-
-
-def _group_left(pgid):
-    found = subprocess.run(["pgrep", "-g", str(pgid)], capture_output=True, text=True)
-    return [int(p) for p in found.stdout.split() if not _gone(int(p))]
+    wait_until(lambda: _gone(helper), None, "the end of the helper")
 
 
 @pytest.mark.parametrize("moment", ["reading", "publishing"])
 def test_ctrl_c_exits_130_writes_nothing_and_leaves_no_process(tmp_path, moment):
     """Ctrl-C (SIGINT to the command's process group, as a terminal sends it) while the
-    workbook is read, and while the complete new set waits to be published: exit code 130,
-    the message, no traceback, the output folder as it was (absent), no staging folder and
-    no process of the run left."""
-    workbook = save_xlsx(small_workbook(), tmp_path / "study.xlsx")
+    workbook is read (once the run's helper is up: the run forks it first, then reads), and
+    while the complete new set waits to be published (the run announces the pause): exit code
+    130, the message, no traceback, the output folder as it was (absent), no staging folder
+    and no process of the run left."""
+    book = small_workbook()
+    for name in ("run lateral", "run chute sizing"):  # the loads alone: a quicker run
+        set_parameter(book, name, "no")
+    workbook = save_xlsx(book, tmp_path / "study.xlsx")
     out = tmp_path / "reports"
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "slingloads.cli", "run", str(workbook), "--out", str(out),
-         "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-        start_new_session=True, env={**os.environ, PAUSE_VARIABLE: "2"})
-    if moment == "reading":
-        time.sleep(0.5)
-    else:  # every file staged: the run pauses before publishing
-        deadline = time.monotonic() + 120
-        while not any(p.name.startswith(TEMP_PREFIX) and len(os.listdir(p)) >= 10
-                      for p in tmp_path.iterdir()):
-            assert proc.poll() is None and time.monotonic() < deadline
-            time.sleep(0.01)
-    os.killpg(proc.pid, signal.SIGINT)
-    stderr = proc.communicate(timeout=60)[1]
+    steps = tmp_path / "steps"
+    steps.mkdir()
+    proc = command("run", workbook, out, {STEP_VARIABLE: str(steps), PROCESSES_VARIABLE: "1"},
+                   text=True, start_new_session=True)
+    try:
+        if moment == "reading":
+            wait_until(lambda: helper_ready(proc.pid), proc, "the helper")
+        else:  # every file staged: the run waits before publishing
+            wait_for_publishing_step(proc, steps, 1)
+        os.killpg(proc.pid, signal.SIGINT)
+        stderr = proc.communicate(timeout=DEADLINE)[1]
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
     assert proc.returncode == 130, stderr
     assert "interrupted; nothing was written" in stderr and "Traceback" not in stderr
     assert not out.exists()
     assert not [p.name for p in tmp_path.iterdir() if p.name.startswith(TEMP_PREFIX)]
-    time.sleep(0.2)
-    assert _group_left(proc.pid) == []
+    wait_until(lambda: processes_left(proc.pid) == [], None, "the end of the run's processes")

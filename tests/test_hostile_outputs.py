@@ -15,22 +15,31 @@ import json
 import os
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
-from hostile import publish_earlier, save_xlsx, set_parameter, small_workbook
+from hostile import (
+    helper_ready,
+    publish_earlier,
+    save_xlsx,
+    set_parameter,
+    small_workbook,
+    wait_for_publishing_step,
+    wait_until,
+)
 from openpyxl import load_workbook
 
 from slingloads.cli import main
 from slingloads.io.common import atomic
 from slingloads.io.common.atomic import (
     PAUSE_VARIABLE,
+    STEP_VARIABLE,
     SWAP_VARIABLE,
     TEMP_PREFIX,
     AtomicOutputs,
     atomic_outputs,
 )
+from slingloads.io.common.helper import PROCESSES_VARIABLE
 from slingloads.io.common.ownership import MANIFEST_NAME, file_entry
 
 STEM = "study"
@@ -91,26 +100,69 @@ def _xlsx_origin(folder, old_sha, new_sha):
     return out
 
 
-#: Kill moments of the two kill sequences (run side by side): ("time", fraction of a run's
-#: duration) spread over reading, computing, writing and publishing; ("publish", seconds after
-#: the staging folder holds the whole new set, publishing mode): in the pauses of 0.3 s
-#: between the publishing steps (before the lock, after the carry-over, between the renames
-#: of the fallback, after the exchange).
+#: Where each process of the two kill sequences (run side by side, on two output folders) is
+#: killed, with the publishing it uses, and which set it leaves: "helper", once a run's helper
+#: is up (the workbook is read); "staging", once its staging folder exists (it writes the new
+#: set); publishing step n, in the pause that begins it: with the atomic exchange 1 before the
+#: lock, 2 after the carry-over, 3 after the exchange; with the two renames also 3 between the
+#: renames (the output folder is missing: the next run's recovery puts the complete new set in
+#: place) and 4 after them. "run": a real `slingloads run`; "publish": a process publishing
+#: a finished set through the same publishing, as a run does (_PUBLISH), which reaches the
+#: publishing steps in a fraction of a run's time.
 KILLS = (
-    [("time", 0.2), ("publish", 0.0, "exchange"), ("time", 0.6), ("publish", 0.45, "exchange"),
-     ("time", 0.9), ("publish", 0.5, "rename"), ("time", 1.15), ("publish", 0.8, "exchange")],
-    [("time", 0.4), ("publish", 0.15, "rename"), ("time", 0.8), ("publish", 0.3, "exchange"),
-     ("time", 1.0), ("publish", 0.65, "rename"), ("time", 1.3), ("publish", 0.8, "rename")],
+    [("run", "helper", "exchange", "previous"), ("publish", "step 1", "exchange", "previous"),
+     ("publish", "step 2", "exchange", "previous"), ("run", "step 3", "exchange", "new"),
+     ("publish", "step 4", "rename", "new")],
+    [("run", "staging", "rename", "previous"), ("run", "step 3", "rename", "new")],
 )
+
+#: A process publishing the files of folder argv[1] into folder argv[2] as a run publishes its
+#: set (the run's patterns of the files it replaces, argv[3:]), without reading or computing.
+_PUBLISH = """
+import re, sys
+from pathlib import Path
+from slingloads.io.common.atomic import atomic_outputs
+source, out = Path(sys.argv[1]), Path(sys.argv[2])
+with atomic_outputs(out, replaces=[re.compile(p) for p in sys.argv[3:]]) as outputs:
+    for path in sorted(source.iterdir()):
+        outputs.path(path.name).write_bytes(path.read_bytes())
+"""
+
+
+def _publish(source, out, env=None):
+    from slingloads.io.analyses import ANALYSES
+
+    patterns = [p.pattern for a in ANALYSES for p in a.output_patterns(STEM)]
+    return subprocess.Popen([sys.executable, "-c", _PUBLISH, str(source), str(out), *patterns],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            env={**os.environ, **(env or {})})
+
+
+def _kill_at(proc, moment, parent, before, steps):
+    """Kill ``proc`` (SIGKILL) at ``moment`` (see KILLS); ``before``: the names in the output
+    folder's parent when it started, ``steps``: its STEP_VARIABLE folder."""
+    try:
+        if moment == "helper":
+            wait_until(lambda: helper_ready(proc.pid), proc, "the helper")
+        elif moment == "staging":
+            wait_until(lambda: any(p.name.startswith(TEMP_PREFIX) and p.name not in before
+                                   for p in parent.iterdir()), proc, "the staging folder")
+        else:
+            wait_for_publishing_step(proc, steps, moment.split()[1])
+    finally:
+        proc.kill()
+        proc.wait()
 
 
 def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
-    """Kill a real `slingloads run` (SIGKILL, no clean-up) at 16 moments, in two sequences run
-    side by side on two output folders: spread over the run (reading, computing, writing) and,
-    with a pause between the publishing steps, in each step of the publishing, with the atomic
-    exchange and with the two-rename fallback. Each time the output folder holds exactly the
-    previous set or the new one (never a mix; the user's file kept; each workbook from the
-    same input as the rest); after the next run no staging folder is left."""
+    """Kill a real `slingloads run` (SIGKILL, no clean-up) while it reads, while it writes,
+    and after the exchange of its publishing (atomic exchange, and between the two renames of
+    the fallback), and a process publishing a finished set in the other steps of the
+    publishing: 7 kills, in two sequences run side by side on two output folders, each moment
+    awaited, not guessed (the process announces its publishing steps). Each time the output
+    folder holds exactly the previous set or the new one (never a mix; the user's file kept;
+    each workbook from the same input as the rest), the one the moment implies; after the
+    next publishing no staging folder is left."""
     from concurrent.futures import ThreadPoolExecutor
 
     old_input, new_input = inputs
@@ -120,13 +172,18 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
     for folder in (out, other):
         folder.mkdir(parents=True)
         (folder / "notes.txt").write_text("the user's own file")
-    start = time.monotonic()
     # the two sets, each published once in full: the old one in a, the new one in b
     procs = [_run(sources["old"], out), _run(sources["new"], other)]
     assert [p.wait() for p in procs] == [0, 0]
-    duration = time.monotonic() - start
     reference = {"old": _fingerprint(out), "new": _fingerprint(other)}
     assert set(reference["old"]) != set(reference["new"])  # the hull plot's name changes
+    sets = {}  # the two sets as files, for the publishing processes
+    for label, folder in (("old", out), ("new", other)):
+        sets[label] = tmp_path / "sets" / label
+        sets[label].mkdir(parents=True)
+        for path in folder.iterdir():
+            if path.name not in (MANIFEST_NAME, "notes.txt"):
+                (sets[label] / path.name).write_bytes(path.read_bytes())
 
     def state(folder, mode):
         if mode == "rename" and not folder.exists():
@@ -143,43 +200,27 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
 
     def sequence(folder, kills):
         current, outcomes = ("old" if folder == out else "new"), []
-        for kill in kills:
+        for number, (process, moment, mode, expected) in enumerate(kills):
             target = "old" if current == "new" else "new"
-            mode = kill[2] if kill[0] == "publish" else "exchange"
+            steps = folder.parent / f"steps-{number}"
+            steps.mkdir()
             before = set(os.listdir(folder.parent))  # folders a killed run left
-            proc = _run(sources[target], folder,
-                        {PAUSE_VARIABLE: "0.3" if kill[0] == "publish" else "0.1",
-                         SWAP_VARIABLE: mode})
-            if kill[0] == "time":
-                time.sleep(kill[1] * duration)
-            else:
-                deadline = time.monotonic() + 120
-                files = len(reference[target]) - 2  # the new set: no user file, manifest
-                while not any(p.name.startswith(TEMP_PREFIX) and p.name not in before
-                              and len(os.listdir(p)) >= files
-                              for p in folder.parent.iterdir()):
-                    if proc.poll() is not None or time.monotonic() > deadline:
-                        break
-                    time.sleep(0.01)
-                time.sleep(kill[1])
-            proc.kill()
-            proc.wait()
+            env = {SWAP_VARIABLE: mode, STEP_VARIABLE: str(steps), PROCESSES_VARIABLE: "1"}
+            proc = (_run(sources[target], folder, env) if process == "run"
+                    else _publish(sets[target], folder, env))
+            _kill_at(proc, moment, folder.parent, before, steps)
             got = state(folder, mode)
-            assert got in (current, target)
+            assert got == {"previous": current, "new": target}[expected], (moment, mode)
             outcomes.append(got)
             current = got
         return outcomes, current
 
     with ThreadPoolExecutor(2) as pool:
         results = list(pool.map(sequence, (out, other), KILLS))
-    seen = [label for outcomes, _ in results for label in outcomes]
-    assert len(seen) == 16
-    changed = sum(a != b for start, (outcomes, _) in zip(("old", "new"), results, strict=True)
-                  for a, b in zip([start, *outcomes], outcomes, strict=False))
-    assert 0 < changed < len(seen), seen  # some kills came too early, some too late
+    assert sum(len(outcomes) for outcomes, _ in results) == 7
     finals = [(folder, "old" if current == "new" else "new")
               for folder, (_, current) in zip((out, other), results, strict=True)]
-    procs = [_run(sources[target], folder) for folder, target in finals]
+    procs = [_publish(sets[target], folder) for folder, target in finals]
     for proc in procs:
         assert proc.wait() == 0, proc.stderr.read()
     for folder, target in finals:

@@ -15,12 +15,12 @@ the message, and that nothing is written.
 from __future__ import annotations
 
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from hostile import EXAMPLE, refused_copy
 
 from slingloads.analyses.hook_angle import hook_angle_comparison
 from slingloads.analyses.hook_loads import HookLoadOptions
@@ -41,7 +41,6 @@ from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 from slingloads.runs.lateral import run as compute
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem
 
 
@@ -258,20 +257,7 @@ def test_zero_lateral_angle_keeps_the_other_directions(study, result):
 
 # ---------------------------------------------------------------------------- bad input
 def _bad(tmp_path, capsys, edit, sheet, cell, *fragments):
-    """Apply ``edit(book)`` to a copy of the example; expect exit 2 located at ``cell``."""
-    book = openpyxl.load_workbook(EXAMPLE)
-    edit(book)
-    path = tmp_path / "bad.xlsx"
-    book.save(path)
-    out = tmp_path / "out"
-    capsys.readouterr()
-    assert main(["lateral", str(path), "--out", str(out), "--quiet"]) == 2
-    err = capsys.readouterr().err
-    assert f"sheet '{sheet}'" in err and f"cell {cell}" in err, err
-    for fragment in fragments:
-        assert fragment in err, err
-    assert "nothing was written" in err
-    assert not out.exists()
+    return refused_copy(tmp_path, capsys, "lateral", edit, sheet, cell, *fragments)
 
 
 def _bodies(mass=2900.0, inertia=900.0, cg=1.07):

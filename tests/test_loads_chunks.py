@@ -6,15 +6,13 @@ internal loads built together, the former path); the cases are independent, so c
 change nothing but round-off.
 """
 
-from pathlib import Path
 
 import numpy as np
+from hostile import EXAMPLE
 from numpy.testing import assert_allclose
 
 from slingloads.analyses import loads as loads_module
 from slingloads.io.study import read_study
-
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
 
 def test_chunked_run_equals_one_chunk(monkeypatch):

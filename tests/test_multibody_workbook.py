@@ -11,12 +11,11 @@ written and the rule in the message, and that nothing is written.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from hostile import EXAMPLE, refused_copy, study_row
 
 from slingloads.analyses.multibody import (
     forward_acceleration,
@@ -48,7 +47,6 @@ from slingloads.models.sample_aircraft import (
 )
 from slingloads.runs.multibody import run as compute
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 STEM = EXAMPLE.stem
 MANOEUVRES = "MultibodyManoeuvres"
 
@@ -82,17 +80,10 @@ def small(tmp_path_factory):
     for r in keep:
         ws.append(r)
     for name in ("run loads", "run lateral", "run chute sizing"):
-        book["Study"][f"B{_row(book, name)}"] = "no"
+        book["Study"][f"B{study_row(book, name)}"] = "no"
     path = tmp_path_factory.mktemp("small") / "small.xlsx"
     book.save(path)
     return path
-
-
-def _row(book, name):
-    for row in book["Study"].iter_rows(min_row=2):
-        if row[0].value == name:
-            return row[0].row
-    raise KeyError(name)
 
 
 def api_system(study):
@@ -199,7 +190,7 @@ def test_report_reads_back(run_dir, study, result):
 def test_us_report_converts_lengths(small, tmp_path):
     """--units US: the cable length in in (60 ft = 720 in exactly), tension in lbf."""
     book = openpyxl.load_workbook(small)
-    book["Study"][f"B{_row(book, 'multibody simulation time')}"] = 20
+    book["Study"][f"B{study_row(book, 'multibody simulation time')}"] = 20
     path = tmp_path / "us.xlsx"
     book.save(path)
     assert main(["simulate", str(path), "--out", str(tmp_path), "--units", "US",
@@ -233,7 +224,7 @@ def test_full_tail_without_parachute_and_free_carrier(small, tmp_path):
                         ("multibody carrier mass", 12000), ("multibody carrier drag area", 3),
                         ("multibody carrier speed gain", 0.4),
                         ("multibody horizontal tail area", 1.2)):
-        study[f"B{_row(book, name)}"] = value
+        study[f"B{study_row(book, name)}"] = value
     tail = sample_htail("HC1")
     ws = book.create_sheet("HTailAero")
     ws.append(["alpha [deg]", "CN"])
@@ -259,11 +250,11 @@ def test_short_cable_is_a_warning_in_the_report(small, tmp_path):
     47 m cable passes the reach rule and fails the 20 % rule."""
     book = openpyxl.load_workbook(small)
     study = book["Study"]
-    study[f"B{_row(book, 'parachute line length')}"] = 40
-    study[f"C{_row(book, 'parachute line length')}"] = "m"
-    study[f"B{_row(book, 'multibody cable length')}"] = 47
-    study[f"C{_row(book, 'multibody cable length')}"] = "m"
-    study[f"B{_row(book, 'multibody simulation time')}"] = 2
+    study[f"B{study_row(book, 'parachute line length')}"] = 40
+    study[f"C{study_row(book, 'parachute line length')}"] = "m"
+    study[f"B{study_row(book, 'multibody cable length')}"] = 47
+    study[f"C{study_row(book, 'multibody cable length')}"] = "m"
+    study[f"B{study_row(book, 'multibody simulation time')}"] = 2
     ws = book[MANOEUVRES]
     ws.delete_rows(3, ws.max_row)
     path = tmp_path / "short.xlsx"
@@ -278,27 +269,8 @@ def test_short_cable_is_a_warning_in_the_report(small, tmp_path):
 
 # ---------------------------------------------------------------------------- bad input
 def _bad(small, tmp_path, capsys, edits, sheet, cell, *fragments):
-    """Apply ``edits`` {(sheet, cell or Study parameter name): value} to the small workbook;
-    expect exit 2 located at ``cell`` of ``sheet`` (a parameter's value cell on the Study
-    sheet), the fragments in the message, and nothing written."""
-    book = openpyxl.load_workbook(small)
-    for (name, where), value in edits.items():
-        if name == "Study":
-            where = f"B{_row(book, where)}"
-        book[name][where] = value
-    path = tmp_path / "bad.xlsx"
-    book.save(path)
-    out = tmp_path / "out"
-    capsys.readouterr()
-    assert main(["simulate", str(path), "--out", str(out), "--quiet"]) == 2
-    err = capsys.readouterr().err
-    if sheet == "Study":
-        cell = f"B{_row(book, cell)}"
-    assert "bad.xlsx" in err and f"sheet '{sheet}'" in err and f"cell {cell}" in err, err
-    for fragment in fragments:
-        assert fragment in err, err
-    assert "nothing was written" in err
-    assert not out.exists()
+    return refused_copy(tmp_path, capsys, "simulate", edits, sheet, cell, *fragments,
+                        base=small)
 
 
 @pytest.mark.parametrize("length", [0, -60])
@@ -390,9 +362,11 @@ def test_negative_ramp_rate(small, tmp_path, capsys):
          "rate must be > 0 m/s^2", "-0.5")
 
 
-def test_duplicate_run_name(small, tmp_path, capsys):
-    """Rule: run names unique (A3 repeats A2)."""
-    _bad(small, tmp_path, capsys, {(MANOEUVRES, "A3"): "free response 10 deg yaw"},
+@pytest.mark.parametrize("name", ["free response 10 deg yaw", "FREE RESPONSE 10 DEG YAW"])
+def test_duplicate_run_name(small, tmp_path, capsys, name):
+    """Rule: run names unique, case ignored (docs/inputs-and-outputs.md: ids are unique with
+    case ignored): A3 repeats A2, as written or in capitals."""
+    _bad(small, tmp_path, capsys, {(MANOEUVRES, "A3"): name},
          MANOEUVRES, "A3", "duplicate name", "first at A2")
 
 

@@ -22,12 +22,12 @@ from __future__ import annotations
 
 import re
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 import openpyxl
 import pint
 import pytest
+from hostile import EXAMPLE
 from numpy.testing import assert_allclose
 from pyNastran.bdf.bdf import read_bdf
 from test_sfbm_beam import beam_study
@@ -41,7 +41,6 @@ from slingloads.io.loads.nastran import case_labels, prepare_nastran, write_nast
 from slingloads.io.study import read_study
 from slingloads.models.airframe import MassItems
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 TOLERANCE = 1e-9
 _UREG = pint.UnitRegistry()
 #: File units of each kind per unit system, from pint.

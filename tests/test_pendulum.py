@@ -20,6 +20,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from numpy.testing import assert_allclose
+from rk4_references import sweep_numpy
 
 from slingloads.analyses.lateral import simulate, sweep
 from slingloads.constants import FOOT, G0
@@ -316,9 +317,9 @@ def test_load_angle_is_an_angle_between_directions():
 
 
 def test_compiled_sweep_equals_the_numpy_sweep():
-    """The compiled batch (default ``kernel="compiled"``) against its reference, the
-    vectorised numpy RK4 batch (``kernel="numpy"``, the scheme the closed-form tests of this
-    file verify): the same scheme on the same grid, so every metric agrees to round-off on
+    """The compiled batch against its reference, the vectorised numpy RK4 batch of
+    ``rk4_references.sweep_numpy`` (the scheme written out in numpy): the same scheme on
+    the same grid, so every metric agrees to round-off on
     rigid and elastic runs, with damping, a velocity step, constant-acceleration jumps (the
     tension counted on both sides) and a cable going slack."""
     damped = replace(LateralPendulum(UH60, 30 * FOOT), lateral_damping=800.0,
@@ -331,7 +332,7 @@ def test_compiled_sweep_equals_the_numpy_sweep():
                ConstantAcceleration(1.5 * G0, 1.0, "stop")]
     solver = SolverSettings(t_end=12.0)
     fast, h_fast = sweep(pendulums, motions, solver=solver)
-    ref, h_ref = sweep(pendulums, motions, solver=solver, kernel="numpy")
+    ref, h_ref = sweep_numpy(pendulums, motions, solver=solver)
     assert h_fast == h_ref
     assert ref.slack.any()  # the hard stop slackens the short elastic cable
     for name in ("max_load_angle", "t_max_load_angle", "max_rope_angle", "t_max_rope_angle",

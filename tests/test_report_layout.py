@@ -12,12 +12,12 @@ Cl the rolling moment); 1 in = 0.0254 m, 1 ft = 0.3048 m exactly.
 from __future__ import annotations
 
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from hostile import EXAMPLE
 from matplotlib.figure import Figure
 
 from slingloads.analyses.hook_loads import HookLoadOptions
@@ -35,8 +35,6 @@ from slingloads.io.loads.report import (
 from slingloads.io.study import read_study
 from slingloads.io.template import write_input_workbook
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
-
-EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
 
 def _beam_study(**changes):

@@ -25,6 +25,7 @@ from xml.etree.ElementTree import fromstring
 
 import numpy as np
 import pytest
+from hostile import EXAMPLE
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from openpyxl.worksheet._reader import WorkSheetParser
@@ -264,10 +265,7 @@ def test_columns_at_once_give_what_the_cells_give(sheets):
 @pytest.fixture(scope="module")
 def fuselage_rows():
     """The example's FuselageAero table as rows (3,078 rows x 8 columns)."""
-    from pathlib import Path
-
-    example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
-    with WorkbookReader(example) as reader:
+    with WorkbookReader(EXAMPLE) as reader:
         rows = reader.rows("FuselageAero", 10**6)
     width = max(max(row) for _, row in rows)
     return [[row.get(c) for c in range(1, width + 1)] for _, row in rows]
@@ -355,12 +353,9 @@ def _without_the_cell_shortcut():
 def test_the_example_workbook_reads_alike_without_the_cell_shortcut():
     """Every sheet of the example workbook, read with the cell shortcut and with openpyxl's
     parse_cell alone (the reference): the same rows, columns and values (types, bits)."""
-    from pathlib import Path
-
-    example = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
-    fast = _every_row(example)
+    fast = _every_row(EXAMPLE)
     with _without_the_cell_shortcut():
-        reference = _every_row(example)
+        reference = _every_row(EXAMPLE)
     assert fast == reference
     assert sum(len(rows) for rows in fast.values()) > 3000
 

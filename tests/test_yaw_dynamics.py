@@ -11,6 +11,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
+from rk4_references import yaw_rk4_numpy
 
 from slingloads.analyses.chute_sizing import LinearYaw, MetricSettings, neutral_area, run_yaw
 from slingloads.constants import KNOT
@@ -72,21 +73,24 @@ def linear_model(cn_beta=-0.4, cy_fin=-3.0, span=SPAN, fin=True, chute=True):
 
 
 def test_linear_free_response_matches_closed_form():
-    """Free response of the linearised model (RK4 integrator) against the closed form."""
+    """Free response of the linearised model (the RK4 scheme, as the numpy reference of the
+    compiled batch steps it; ``test_compiled_rk4_equals_the_numpy_rk4`` shows the compiled
+    batch gives the same to round-off) against the closed form."""
     lin = LinearYaw(INERTIA, K, C, {}, V)
     s = SolverSettings(t_end=30.0, step=0.01, output_interval=0.1)
-    h = integrate_rk4(lin, 0.0, StepGust(0.0), psi0=0.02, settings=s)
+    h = yaw_rk4_numpy(lin, 0.0, StepGust(0.0), psi0=0.02, settings=s)
     _, shape = oscillator(h.time)
     assert_allclose(h.psi[0], 0.02 * shape, atol=1e-9)
 
 
 def test_linear_step_and_finite_gust_match_closed_form():
     """Step gust: psi -> gamma0 = atan(v/V) as a step response from the onset; finite gust: the
-    superposition of a step at the onset and a negative step at its end."""
+    superposition of a step at the onset and a negative step at its end (the RK4 scheme of the
+    numpy reference, as above)."""
     lin = LinearYaw(INERTIA, K, C, {}, V)
     s = SolverSettings(t_end=60.0, step=0.02, output_interval=0.1)
     gusts = [StepGust(3.0, 10.0), FiniteGust(3.0, 10.0, 10.0)]
-    h = integrate_rk4(lin, [0.0, 0.0], gusts, settings=s)
+    h = yaw_rk4_numpy(lin, [0.0, 0.0], gusts, settings=s)
     g0 = np.arctan2(3.0, V)
     t = h.time
     step_on = np.where(t >= 10, oscillator(np.maximum(t - 10, 0))[0], 0.0)
@@ -308,8 +312,8 @@ def test_bad_dynamic_input():
 
 @pytest.mark.parametrize("fin_rate_damping", [True, False])
 def test_compiled_rk4_equals_the_numpy_rk4(fin_rate_damping):
-    """The compiled batch (default ``kernel="compiled"``) against its reference, the numpy
-    RK4 batch (``kernel="numpy"``, the scheme the closed-form tests above verify): the same
+    """The compiled batch against its reference, the numpy RK4 batch of
+    ``rk4_references.yaw_rk4_numpy`` (the scheme written out in numpy): the same
     scheme on the same grid (gust breakpoints off the step grid included), so the histories
     agree to round-off: HC2 with the four gust shapes at 1.5x its neutral area, and the
     exactly linear tables of ``linear_model`` (+-60 deg) with and without a parachute,
@@ -325,7 +329,7 @@ def test_compiled_rk4_equals_the_numpy_rk4(fin_rate_damping):
                                (linear, np.repeat([0.0, 2.0], len(gusts)), 0.3)):
         runs = gusts * (np.size(areas) // len(gusts) or 1)
         fast = integrate_rk4(model, areas, runs, psi0=psi0, settings=s)
-        slow = integrate_rk4(model, areas, runs, psi0=psi0, settings=s, kernel="numpy")
+        slow = yaw_rk4_numpy(model, areas, runs, psi0=psi0, settings=s)
         assert_allclose(fast.psi, slow.psi, rtol=0, atol=1e-12)
         assert_allclose(fast.rate, slow.rate, rtol=0, atol=1e-12)
         np.testing.assert_array_equal(fast.left_table, slow.left_table)

@@ -7,12 +7,27 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.sfbm import COMPONENTS
+from slingloads.analyses.sfbm import COMPONENTS, LOAD_COLUMNS
 from slingloads.errors import InputError
 
 
 def component_index(name):
-    """Array index of an internal-load component name (``"Vy"`` -> 1)."""
+    """Array index of an internal-load component name (``"Vy"`` -> 1).
+
+    Parameters
+    ----------
+    name : str
+        One of :data:`~slingloads.analyses.sfbm.COMPONENTS`.
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    InputError
+        For an unknown component.
+    """
     try:
         return COMPONENTS.index(name)
     except ValueError:
@@ -35,25 +50,30 @@ def envelope_table(loads, case_ids, stations, station_ids):
     Returns
     -------
     pandas.DataFrame
-        One row per station, component and bound (``max``/``min``): ``value``, the critical
-        ``case`` and the six correlated loads of that case at that station (SI).
+        One row per station, component and bound (``max``/``min``), with the columns of the
+        envelope CSV file: ``station, x_m, component, bound, case``, the bound's value in
+        ``value_N`` (a shear) or ``value_Nm`` (a moment; the other is NaN), and the six
+        correlated loads of the critical case at that station ``Vx_N ... Mz_Nm`` (SI).
     """
     case_ids = np.asarray(case_ids, dtype=object)
     c, s, k = loads.shape
+    moment = np.tile(np.array([name.startswith("M") for name in COMPONENTS]), s)
     frames = []
     for bound, pick in (("max", np.argmax), ("min", np.argmin)):
         idx = pick(loads, axis=0)  # (s, 6)
         stn = np.broadcast_to(np.arange(s)[:, None], idx.shape)
         correlated = loads[idx, stn, :]  # (s, 6, 6)
+        value = loads[idx, stn, np.arange(k)[None, :]].ravel()
         frame = pd.DataFrame({
             "station": np.repeat(np.asarray(station_ids, dtype=object), k),
-            "x [m]": np.repeat(stations, k),
+            "x_m": np.repeat(stations, k),
             "component": np.tile(COMPONENTS, s),
             "bound": bound,
-            "value": loads[idx, stn, np.arange(k)[None, :]].ravel(),
             "case": case_ids[idx.ravel()],
+            "value_N": np.where(moment, np.nan, value),
+            "value_Nm": np.where(moment, value, np.nan),
         })
-        for j, name in enumerate(COMPONENTS):
+        for j, name in enumerate(LOAD_COLUMNS):
             frame[name] = correlated[:, :, j].ravel()
         frames.append(frame)
     out = pd.concat(frames, ignore_index=True)
@@ -64,8 +84,37 @@ def envelope_table(loads, case_ids, stations, station_ids):
     return out.drop(columns=["_s", "_c"]).reset_index(drop=True)
 
 
+def bound_values(frame):
+    """The ``value_N`` / ``value_Nm`` pair of an envelope table as one SI column (each row's
+    component says which unit).
+
+    Parameters
+    ----------
+    frame : DataFrame
+        With columns ``value_N`` (shears, NaN for moments) and ``value_Nm`` (moments, NaN
+        for shears), as :meth:`~slingloads.analyses.loads.LoadsResult.envelope` gives.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        The bound of each row. [N] or [N m]
+    """
+    return frame["value_N"].fillna(frame["value_Nm"]).to_numpy(float)
+
+
 def envelope_arrays(loads):
-    """Per-station maximum and minimum, shapes (s, 6) each. [N, N m]"""
+    """Per-station maximum and minimum of every component over the cases.
+
+    Parameters
+    ----------
+    loads : ndarray, shape (c, s, 6)
+        Internal loads. [N, N m]
+
+    Returns
+    -------
+    maximum, minimum : ndarray, shape (s, 6)
+        [N, N m]
+    """
     return loads.max(axis=0), loads.min(axis=0)
 
 
@@ -84,7 +133,8 @@ def convex_hull(loads, case_ids, station_index, pair):
     -------
     pandas.DataFrame
         Hull vertices in counter-clockwise order from the case of smallest first component
-        (then smallest second): ``case`` and the two components. Cases on an edge of the
+        (then smallest second): ``case`` and the two components, named as in the CSV files
+        (``Vy_N``, ``Mz_Nm``; SI). Cases on an edge of the
         hull between two vertices are not vertices. Degenerate clouds (all cases on a line
         or a point) return the extreme cases along the line (or the one point).
     """
@@ -95,8 +145,8 @@ def convex_hull(loads, case_ids, station_index, pair):
     scale[scale == 0] = 1.0
     _, first = np.unique(np.round(pts / scale, 12), axis=0, return_index=True)
     vertices = first[hull_vertices(pts[first] / scale)]
-    return pd.DataFrame({"case": case_ids[vertices], pair[0]: pts[vertices, 0],
-                         pair[1]: pts[vertices, 1]})
+    return pd.DataFrame({"case": case_ids[vertices], LOAD_COLUMNS[i]: pts[vertices, 0],
+                         LOAD_COLUMNS[j]: pts[vertices, 1]})
 
 
 #: Least distance from a hull edge, relative to the cloud's size, at which a point counts as

@@ -95,19 +95,57 @@ class ModelAxes:
         return bool(np.array_equal(self.rotation, np.eye(3)) and not self.offset.any())
 
     def points(self, positions):
-        """Positions in model axes, ``offset + R r``, shape (..., 3). [m]"""
+        """Positions in model axes, ``offset + R r``.
+
+        Parameters
+        ----------
+        positions : array_like, shape (..., 3)
+            Project axes. [m]
+
+        Returns
+        -------
+        ndarray, shape (..., 3)
+            [m]
+        """
         return self.offset + np.asarray(positions, float) @ self.rotation.T
 
     def vectors(self, vectors):
-        """Vectors (forces, moments, accelerations) in model axes, ``R v``."""
+        """Vectors (forces, moments, accelerations) in model axes, ``R v``.
+
+        Parameters
+        ----------
+        vectors : array_like, shape (..., 3)
+            Project axes, any unit.
+
+        Returns
+        -------
+        ndarray, shape (..., 3)
+            The same unit.
+        """
         return np.asarray(vectors, float) @ self.rotation.T
 
     def tensors(self, tensors):
-        """Second-order tensors (inertias) in model axes, ``R I R^T``, shape (..., 3, 3)."""
+        """Second-order tensors (inertias) in model axes, ``R I R^T``.
+
+        Parameters
+        ----------
+        tensors : array_like, shape (..., 3, 3)
+            Project axes, e.g. [kg m^2].
+
+        Returns
+        -------
+        ndarray, shape (..., 3, 3)
+            The same unit.
+        """
         return self.rotation @ np.asarray(tensors, float) @ self.rotation.T
 
     def describe(self):
-        """The map in words: each model axis as a combination of project axes."""
+        """The map in words: each model axis as a combination of project axes.
+
+        Returns
+        -------
+        str
+        """
         return "; ".join(f"model {name} = {_combination(row)}"
                          for name, row in zip("XYZ", self.rotation, strict=True))
 
@@ -117,6 +155,16 @@ def axis_map_from_text(text):
 
     Separators may be commas, semicolons or spaces; case is ignored. The result is checked
     as a rotation by :class:`ModelAxes`, not here.
+
+    Parameters
+    ----------
+    text : str
+        Three signed axis letters.
+
+    Returns
+    -------
+    ndarray, shape (3, 3)
+        Rows: the model's X, Y, Z in project axes. [-]
 
     Raises
     ------
@@ -139,7 +187,13 @@ def axis_map_from_text(text):
 
 
 def check_rotation(matrix):
-    """Raise :class:`InputError` unless ``matrix`` is a proper rotation (R R^T = I, det +1)."""
+    """Raise :class:`InputError` unless ``matrix`` is a proper rotation (R R^T = I, det +1).
+
+    Parameters
+    ----------
+    matrix : array_like, shape (3, 3)
+        Candidate rotation. [-]
+    """
     m = np.asarray(matrix, dtype=float)
     if m.shape != (3, 3) or not np.all(np.isfinite(m)):
         raise InputError("the axis map must be a 3 x 3 matrix of finite numbers",
@@ -230,6 +284,11 @@ class PointLoadCases:
             rotor hub, for a model whose mast carries it to the deck). Both have the same
             resultant force and moment.
 
+        Returns
+        -------
+        PointLoadCases
+            In project axes.
+
         Raises
         ------
         InputError
@@ -266,10 +325,26 @@ class PointLoadCases:
             cg=items.cg, hook_at=hook_at)
 
     def in_model_axes(self, axes):
-        """These loads in the model's axes (:class:`ModelAxes`, or its arguments as a dict).
+        """These loads in the model's axes.
 
         Only from project axes: mapping twice would compose the maps silently, so it is
         refused.
+
+        Parameters
+        ----------
+        axes : ModelAxes or dict
+            The map, or the arguments of :class:`ModelAxes`.
+
+        Returns
+        -------
+        PointLoadCases
+            Positions [m], forces [N], moments [N m], inertias [kg m^2] and accelerations
+            [m/s^2, rad/s^2] in model axes.
+
+        Raises
+        ------
+        InputError
+            If these loads are already in model axes.
         """
         if not isinstance(axes, ModelAxes):
             axes = ModelAxes(**axes)

@@ -63,7 +63,12 @@ class HookAngleComparison:
     cone: str = "lateral directions"
 
     def reduced_note(self):
-        """Which directions were taken at the compared angle, and which kept the reference."""
+        """Which directions were taken at the compared angle, and which kept the reference.
+
+        Returns
+        -------
+        str
+        """
         ref, at = np.degrees(self.reference_angle), np.degrees(self.angle)
         if not self.reduced:
             return (f"No hook direction is lateral: every direction kept {ref:.4g} deg (the "
@@ -87,13 +92,24 @@ class HookAngleComparison:
         return np.where(ok, 100.0 * (1.0 - out), np.where(self.at_angle > tiny, -np.inf, 0.0))
 
     def labels(self):
-        """The two cones as column-label fragments: ``("at 30 deg", "lateral at 21.3 deg")``."""
+        """The two cones as column-label fragments: ``("at 30 deg", "lateral at 21.3 deg")``.
+
+        Returns
+        -------
+        tuple of str
+        """
         return (f"at {np.degrees(self.reference_angle):.4g} deg",
                 f"lateral at {np.degrees(self.angle):.4g} deg")
 
     def station_frame(self):
         """Per station: each component's envelope at both angles and the reduction, Y shear
-        first (SI, unit-labelled columns: ``x [m]``, ``max |Vy| at 30 deg [N]``...)."""
+        first (SI, unit-labelled columns: ``x [m]``, ``max |Vy| at 30 deg [N]``...).
+
+        Returns
+        -------
+        pandas.DataFrame
+            A row per station.
+        """
         ref, at = self.labels()
         frame = {"station": list(self.station_ids), "x [m]": self.stations}
         red = self.reduction
@@ -108,7 +124,13 @@ class HookAngleComparison:
     def summary_frame(self):
         """Per component: the largest envelope value along the airframe at both angles, where
         it occurs, and the reduction, Y shear first (SI; the ``unit`` column gives each
-        row's unit)."""
+        row's unit).
+
+        Returns
+        -------
+        pandas.DataFrame
+            A row per component.
+        """
         ref, at = self.labels()
         rows = []
         for name in COMPARISON_ORDER:
@@ -159,7 +181,8 @@ def hook_angle_comparison(loads_study, angle, reference_angle=REGULATORY_ANGLE):
     """
     hooks = replace(loads_study, envelope=None, fuselage=None, fin=None, parachute=None,
                     listed=(), generate=True, previous_envelope=None)
-    studies = [hooks.with_hook(angle=float(reference_angle), lateral_angle=lateral)
+    studies = [replace(hooks, hook=replace(hooks.hook, angle=float(reference_angle),
+                                           lateral_angle=lateral))
                for lateral in (None, float(angle))]
     runs = [s.run() for s in studies]
     ref, at = (np.abs(r.loads).max(axis=0) for r in runs)

@@ -57,10 +57,14 @@ _LATERAL_TOLERANCE = 1e-9
 
 
 def _angle(value, what):
+    """``value`` [rad] as a float in [0, pi/2), else an error that says the unit."""
     angle = float(value)
     if not np.isfinite(angle) or not (0 <= angle < np.pi / 2):
-        raise InputError(f"{what} must lie in [0, 90) deg",
-                         float(np.degrees(angle)) if np.isfinite(angle) else angle)
+        degrees = f" = {np.degrees(angle):.6g} deg" if np.isfinite(angle) else ""
+        raise InputError(f"{what} must lie in [0, 90) deg, that is [0, pi/2) rad (a "
+                         "HookLoadOptions angle is in radians, numpy.radians(20) for 20 deg; "
+                         f"LoadsStudy.with_hook takes degrees); given {angle:.6g} rad"
+                         f"{degrees}", angle, unit="rad")
     return angle
 
 
@@ -125,7 +129,18 @@ class HookLoadOptions:
         return self.angle if self.lateral_angle is None else self.lateral_angle
 
     def inclination(self, azimuth):
-        """Inclination of the cone from the vertical at ``azimuth`` [rad] (array). [rad]"""
+        """Inclination of the cone from the vertical at an azimuth.
+
+        Parameters
+        ----------
+        azimuth : array_like
+            Azimuth from aft (0) towards right (90 deg). [rad]
+
+        Returns
+        -------
+        ndarray
+            [rad]
+        """
         psi = np.asarray(azimuth, float)
         a, b = self.angle, self.lateral
         if a == b:
@@ -138,13 +153,35 @@ class HookLoadOptions:
         return np.arctan(np.divide(num, den, out=np.zeros_like(den), where=den > 0))
 
     def azimuths(self):
-        """Azimuths of the off-vertical directions, evenly spread from 0. [rad]"""
+        """Azimuths of the off-vertical directions, evenly spread from 0.
+
+        Returns
+        -------
+        ndarray, shape (n_azimuth,)
+            [rad]
+        """
         return 2 * np.pi * np.arange(self.n_azimuth) / max(self.n_azimuth, 1)
 
 
 def horizontal_basis(vertical=(0.0, 0.0, 1.0)):
     """Orthonormal (a0, a90, k): k the upward vertical, a0 the horizontal projection of +x
-    (azimuth 0, aft), a90 = k x a0 (azimuth 90 deg, right), all in airframe axes."""
+    (azimuth 0, aft), a90 = k x a0 (azimuth 90 deg, right), all in airframe axes.
+
+    Parameters
+    ----------
+    vertical : array_like, shape (3,)
+        Earth's upward vertical in airframe axes (default +z: the mast vertical). [-]
+
+    Returns
+    -------
+    a0, a90, k : ndarray, shape (3,)
+        [-]
+
+    Raises
+    ------
+    InputError
+        If the vertical is parallel to the fuselage x axis.
+    """
     k = np.asarray(vertical, float).reshape(3)
     k = k / np.linalg.norm(k)
     x = np.array([1.0, 0.0, 0.0])
@@ -221,7 +258,19 @@ def cable_geometry(force, vertical=(0.0, 0.0, 1.0)):
 
 
 def describe_direction(azimuth_deg, inclination_deg):
-    """Readable text for a hook direction ("30 deg from the vertical at azimuth 45 deg...")."""
+    """Readable text for a hook direction ("30 deg from the vertical at azimuth 45 deg...").
+
+    Parameters
+    ----------
+    azimuth_deg : float
+        Azimuth from aft towards right. [deg]
+    inclination_deg : float
+        Angle from the vertical. [deg]
+
+    Returns
+    -------
+    str
+    """
     if inclination_deg == 0:
         return "along the vertical"
     names = ["aft", "aft-right", "right", "forward-right", "forward", "forward-left", "left",

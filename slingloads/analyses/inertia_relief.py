@@ -86,17 +86,40 @@ def rigid_body_acceleration(mass_items, positions, forces, moments, add_gravity=
 
 
 def inverse_inertia(mass_items):
-    """(Pseudo-)inverse of the inertia tensor about the CG, shape (3, 3). [1/(kg m^2)]
+    """(Pseudo-)inverse of the inertia tensor about the CG.
 
     The pseudo-inverse: a line of point masses has no inertia about its own axis; a moment
     about that axis then stays unbalanced and the closure check reports it.
+
+    Parameters
+    ----------
+    mass_items : MassItems
+
+    Returns
+    -------
+    ndarray, shape (3, 3)
+        [1/(kg m^2)]
     """
     return np.linalg.pinv(mass_items.inertia_about_cg, hermitian=True)
 
 
 def gravity_resultants(mass_items, vertical=(0.0, 0.0, 1.0)):
-    """Resultant force [N] and moment about the CG [N m] of the weights, each shape (3,)
-    (the moment is zero but for round-off: the weights act through the CG)."""
+    """Resultant force and moment about the CG of the weights (the moment is zero but
+    for round-off: the weights act through the CG).
+
+    Parameters
+    ----------
+    mass_items : MassItems
+    vertical : array_like, shape (3,)
+        Earth's upward vertical in airframe axes (default +z: the mast vertical). [-]
+
+    Returns
+    -------
+    force : ndarray, shape (3,)
+        [N]
+    moment : ndarray, shape (3,)
+        About the CG. [N m]
+    """
     weight = gravity_forces(mass_items, vertical)
     return weight.sum(axis=0), np.cross(mass_items.position - mass_items.cg, weight).sum(axis=0)
 
@@ -118,6 +141,11 @@ def moment_sum(positions, forces):
         Lever arms. [m]
     forces : ndarray, shape (c, p, 3)
         [N]
+
+    Returns
+    -------
+    ndarray, shape (c, 3)
+        [N m]
     """
     rx, ry, rz = np.asarray(positions, float).T
     fx, fy, fz = forces[..., 0], forces[..., 1], forces[..., 2]
@@ -126,6 +154,12 @@ def moment_sum(positions, forces):
 
 def inertia_loads(mass_items, acceleration):
     """Inertia forces and moments at every mass item.
+
+    Parameters
+    ----------
+    mass_items : MassItems
+    acceleration : RigidBodyAcceleration
+        Linear [m/s^2] and angular [rad/s^2] accelerations of each case, shape (c, 3).
 
     Returns
     -------
@@ -149,13 +183,28 @@ def gravity_forces(mass_items, vertical=(0.0, 0.0, 1.0)):
     mass_items : MassItems
     vertical : array_like, shape (3,)
         Earth's upward vertical in airframe axes (default +z: the mast vertical). [-]
+
+    Returns
+    -------
+    ndarray, shape (n, 3)
+        [N]
     """
     return -G0 * mass_items.mass[:, None] * _unit(vertical)[None, :]
 
 
 def gravity_field(vertical=(0.0, 0.0, 1.0)):
-    """Acceleration of gravity, shape (3,): g0 along the earth's downward vertical, airframe
-    axes. [m/s^2]"""
+    """Acceleration of gravity: g0 along the earth's downward vertical, airframe axes.
+
+    Parameters
+    ----------
+    vertical : array_like, shape (3,)
+        Earth's upward vertical in airframe axes (default +z: the mast vertical). [-]
+
+    Returns
+    -------
+    ndarray, shape (3,)
+        [m/s^2]
+    """
     return -G0 * _unit(vertical)
 
 

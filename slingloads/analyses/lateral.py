@@ -14,10 +14,10 @@ Two integrators:
   :class:`~slingloads.models.integration.SolverSettings`: ``method``, ``rtol``, ``atol``,
   ``max_step``, ``t_end``, ``output_interval``), integrated piecewise between the motion's
   breakpoints; gives time histories.
-* :func:`sweep`: many runs at once, a fixed-step classical Runge-Kutta (RK4) scheme whose
-  state is an array of shape (states, runs), so that each step is a handful of numpy
-  operations for all runs; gives the per-run metrics. Its step is chosen from the fastest
-  natural mode unless given (``SolverSettings.step``).
+* :func:`sweep`: many runs at once, the fixed-step classical Runge-Kutta (RK4) step of
+  :mod:`slingloads.models.runge_kutta` in compiled code, the runs spread over the cores;
+  gives the per-run metrics. Its step is chosen from the fastest natural mode unless given
+  (``SolverSettings.step``).
 
 References
 ----------
@@ -50,7 +50,6 @@ from slingloads.models.carrier_motion import (
     MOTION_ALIASES,
     ConstantAcceleration,
     CycloidalStep,
-    MotionBatch,
     QuinticStep,
     TimeHistory,
 )
@@ -59,10 +58,8 @@ from slingloads.models.pendulum import (
     LateralPendulum,
     SlungBody,
     airframe_angle,
-    elastic_cable_derivatives,
     hub_load_airframe_axes,
     load_angle,
-    rigid_rope_derivatives,
     rope_angle,
 )
 
@@ -379,8 +376,9 @@ def _right_hand_side(pendulum, motion):
 
     Why: the numpy equations on 0-d arrays and the motion's array kinematics cost about
     190 us a call, nearly all of a run's time (4,500 calls for the example's critical case);
-    this path takes a few us. Why it is exact: the compiled equations are the numpy ones
-    operation for operation, without fast-math, calling the same C library sin, cos and sqrt,
+    this path takes a few us. Why it is exact: the compiled equations are the numpy ones,
+    compiled from the same source (:func:`~slingloads.models.pendulum.rigid_rope_equations`)
+    without fast-math, calling the same C library sin, cos and sqrt,
     and ``kinematics_at`` is ``kinematics`` in floats likewise, so each derivative is the same
     double and solve_ivp takes the same steps (tested in ``tests/test_lateral_study.py``).
 
@@ -426,27 +424,21 @@ def _stack_parameters(pendulums):
     return {k: np.array([r[k] for r in rows]) for k in rows[0]}
 
 
-#: Batch integrators of :func:`sweep`: the compiled kernel and the numpy one it is tested
-#: against.
-KERNELS = ("compiled", "numpy")
 #: Largest drive table of one compiled batch (motions x nodes x 6 values). [bytes]
 _DRIVE_BYTES = 64e6
 
 
-def sweep(pendulums, motions, *, solver=None, kernel="compiled"):
+def sweep(pendulums, motions, *, solver=None):
     """Per-run metrics of many runs, integrated together by vectorised RK4.
 
     Run i is ``pendulums[i]`` under ``motions[i]``. All runs share one time grid: uniform,
     with the breakpoints of every motion (where S'' jumps) inserted, so that no step
-    straddles a jump (RK4 across a jump would be only first-order accurate). The state is an
-    array of shape (states, runs) and one RK4 step is a few numpy operations over all runs
-    (rigid-rope and elastic-cable runs form two such groups). Peaks between grid points are
+    straddles a jump (RK4 across a jump would be only first-order accurate). The runs are
+    integrated one at a time in compiled code, in parallel over the cores
+    (:mod:`slingloads.models.pendulum_batch`, the RK4 step of
+    :mod:`slingloads.models.runge_kutta`), with the hook's motion tabulated once per distinct
+    motion; rigid-rope and elastic-cable runs form two groups. Peaks between grid points are
     refined by a parabola through the three samples around them.
-
-    The default ``kernel="compiled"`` runs the same scheme, operation for operation, one run
-    at a time in compiled code (:mod:`slingloads.models.pendulum_batch`), with the hook's
-    motion tabulated once per distinct motion; ``kernel="numpy"`` keeps the vectorised numpy
-    loop (the two agree to round-off).
 
     Parameters
     ----------
@@ -459,9 +451,6 @@ def sweep(pendulums, motions, *, solver=None, kernel="compiled"):
         the peak load angle and tension within about 1e-4 of a tight solve_ivp solution. [s]
         The grid has a whole number of steps, so the step used may be slightly shorter.
 
-    kernel : {"compiled", "numpy"}
-        Batch integrator (see above).
-
     Returns
     -------
     metrics : RunMetrics
@@ -469,9 +458,6 @@ def sweep(pendulums, motions, *, solver=None, kernel="compiled"):
     step : float
         The step used. [s]
     """
-    if kernel not in KERNELS:
-        raise InputError(f"sweep {kernel=!r} is not a valid option; valid options are "
-                         f"{list(KERNELS)}", kernel)
     pendulums, motions = list(pendulums), list(motions)
     if len(pendulums) != len(motions) or not pendulums:
         raise InputError("a sweep needs one motion per pendulum, and at least one run",
@@ -494,8 +480,7 @@ def sweep(pendulums, motions, *, solver=None, kernel="compiled"):
         if idx.size == 0:
             continue
         group = [pendulums[i] for i in idx]
-        integrate = _compiled_group if kernel == "compiled" else _rk4_group
-        metrics = integrate(group, [motions[i] for i in idx], nodes, jumps, flag)
+        metrics = _compiled_group(group, [motions[i] for i in idx], nodes, jumps, flag)
         for name in out:
             out[name][idx] = getattr(metrics, name)
     return RunMetrics(**out), h
@@ -549,8 +534,9 @@ def _drive_table(motions, nodes, jumps):
 
 
 def _compiled_group(pendulums, motions, nodes, jumps, rigid):
-    """:func:`_rk4_group` in compiled code, in batches of distinct motions whose drive table
-    stays within ``_DRIVE_BYTES``."""
+    """Per-run metrics of runs sharing one cable model, by
+    :func:`slingloads.models.pendulum_batch.rk4_peaks`, in batches of distinct motions whose
+    drive table stays within ``_DRIVE_BYTES``."""
     from slingloads.models import pendulum_batch
 
     params = _stack_parameters(pendulums)
@@ -572,75 +558,6 @@ def _compiled_group(pendulums, motions, nodes, jumps, rigid):
         best[idx], t_best[idx] = b, tb
     best = np.where(np.isfinite(best), best, np.nan).T
     t_best = t_best.T
-    best[0] = np.minimum(best[0], np.pi)  # a parabola through the wrap at pi must not pass it
-    return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3])
-
-
-def _rk4_group(pendulums, motions, nodes, jumps, rigid):
-    """Vectorised RK4 over runs sharing one cable model; running parabola-refined peaks."""
-    params = _stack_parameters(pendulums)
-    weight = params["mass"] * params["g"]
-    batch = MotionBatch(motions)
-    derivatives = rigid_rope_derivatives if rigid else elastic_cable_derivatives
-    x = np.stack([p.initial_state(v) for p, v in zip(pendulums, batch.velocity_jump,
-                                                     strict=True)], axis=1)
-
-    def f(kin, x):
-        return derivatives(x, kin[1], kin[2], **params)
-
-    alive = np.ones(len(pendulums), bool)  # rigid rope: valid until the tension first goes < 0
-
-    def signals(x, tension):
-        th1 = x[0] if rigid else np.arctan2(x[0], -x[1])
-        th2 = x[1] if rigid else x[2]
-        ratio = tension / weight
-        taut = ratio > 0
-        if rigid:
-            alive[:] = alive & taut
-            taut = alive.copy()
-        return np.stack([np.abs(load_angle(th1, th2)), np.abs(th1), ratio, -ratio]), taut
-
-    kin = batch.kinematics(0.0)
-    k1, tension = f(kin, x)
-    y1, ok1 = signals(x, tension)
-    counts = np.array([True, True, False, False])[:, None]  # angles count only when taut
-    best = np.where(counts & ~ok1, -np.inf, y1)
-    t_best = np.zeros_like(y1)
-    y0 = ok0 = h_prev = None
-    for i in range(nodes.size - 1):
-        t, t_next = nodes[i], nodes[i + 1]
-        h = t_next - t
-        kin_half = batch.kinematics(t + 0.5 * h)
-        k2, _ = f(kin_half, x + 0.5 * h * k1)
-        k3, _ = f(kin_half, x + 0.5 * h * k2)
-        # at a breakpoint, this step ends with S'' just before the jump
-        kin = batch.kinematics(np.nextafter(t_next, -np.inf) if jumps[i + 1] else t_next)
-        k4, _ = f(kin, x + h * k3)
-        x = x + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-        if jumps[i + 1]:
-            # the tension jumps with S'': count its value just before, then go on after
-            _, tension_left = f(kin, x)
-            y_left, ok_left = signals(x, tension_left)
-            better = (y_left > best) & (~counts | ok_left)
-            best = np.where(better, y_left, best)
-            t_best = np.where(better, t_next, t_best)
-            kin = batch.kinematics(t_next)
-        k1, tension = f(kin, x)
-        y2, ok2 = signals(x, tension)
-        if (y0 is not None and abs(h - h_prev) <= 1e-9 * h
-                and not (jumps[i] or jumps[i + 1])):
-            # parabola through the equally spaced samples at t - h, t, t + h, none of them
-            # across a jump of S'' (the sample at a breakpoint is taken just after it)
-            peak = (y1 >= y0) & (y1 >= y2) & ok0 & ok1 & ok2  # no parabola through a kink
-            value, offset = _refine(y0, y1, y2)
-            better = peak & (value > best)
-            best = np.where(better, value, best)
-            t_best = np.where(better, t + offset * h, t_best)
-        better = (y2 > best) & (~counts | ok2)
-        best = np.where(better, y2, best)
-        t_best = np.where(better, t_next, t_best)
-        y0, y1, ok0, ok1, h_prev = y1, y2, ok1, ok2, h
-    best = np.where(np.isfinite(best), best, np.nan)
     best[0] = np.minimum(best[0], np.pi)  # a parabola through the wrap at pi must not pass it
     return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3])
 

@@ -97,12 +97,30 @@ class LateralDamping:
         return self.lateral == 0 and self.roll == 0
 
     def height_above_cg(self, cg_below_hub):
-        """Height h of the damped point above a CG that lies ``cg_below_hub`` [m] below the
-        hub (what :class:`~slingloads.models.pendulum.LateralPendulum` takes). [m]"""
+        """Height h of the damped point above a CG (what
+        :class:`~slingloads.models.pendulum.LateralPendulum` takes).
+
+        Parameters
+        ----------
+        cg_below_hub : float
+            Distance of the CG below the hub. [m]
+
+        Returns
+        -------
+        float
+            Height of the damped point above the CG (0 when the dampers give none). [m]
+        """
         return 0.0 if self.below_hub is None else float(cg_below_hub) - self.below_hub
 
     def to_frame(self):
-        """The dampers and their sum, unit-labelled columns."""
+        """The dampers and their sum, unit-labelled columns.
+
+        Returns
+        -------
+        pandas.DataFrame
+            A row per damper and a ``total`` row: lateral damping [N s/m], below hub [m], roll
+            damping [N m s/rad], source.
+        """
         rows = [{"component": name, "lateral damping [N s/m]": c, "below hub [m]": d,
                  "roll damping [N m s/rad]": np.nan} for name, c, d in self.parts]
         rows.append({"component": "total", "lateral damping [N s/m]": self.lateral,

@@ -31,7 +31,12 @@ from functools import cached_property
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.envelopes import compare_with_previous, convex_hull, envelope_table
+from slingloads.analyses.envelopes import (
+    compare_with_previous,
+    component_index,
+    convex_hull,
+    envelope_table,
+)
 from slingloads.analyses.hook_loads import (
     LEGACY_HOOK_IDS,
     NO_HOOK,
@@ -44,6 +49,7 @@ from slingloads.analyses.hook_loads import (
 )
 from slingloads.analyses.inertia_relief import gravity_forces
 from slingloads.analyses.sfbm import COMPONENTS, free_free_internal_loads
+from slingloads.checks import frozen
 from slingloads.errors import ClosureError, InputError
 from slingloads.models.aerodynamics import airflow_direction
 from slingloads.models.airframe import Airframe
@@ -85,8 +91,10 @@ class AeroEnvelope:
             raise InputError("the aerodynamic envelope needs at least one point, each with "
                              "an id, alpha and beta")
         object.__setattr__(self, "ids", ids)
-        object.__setattr__(self, "alpha", alpha)
-        object.__setattr__(self, "beta", beta)
+        if not (np.all(np.isfinite(alpha)) and np.all(np.isfinite(beta))):
+            raise InputError("aerodynamic envelope angles must be finite [rad]")
+        object.__setattr__(self, "alpha", frozen(alpha))
+        object.__setattr__(self, "beta", frozen(beta))
 
     @classmethod
     def corners_and_centre(cls, alpha_range, beta_range):
@@ -177,8 +185,8 @@ class DynamicsCases:
             raise InputError("dynamics parachute line load must be >= 0 [N]", force)
         object.__setattr__(self, "aero_ids", tuple(str(i) for i in self.aero_ids))
         object.__setattr__(self, "line_ids", ids)
-        object.__setattr__(self, "line_theta", theta)
-        object.__setattr__(self, "line_psi", psi)
+        object.__setattr__(self, "line_theta", frozen(theta))
+        object.__setattr__(self, "line_psi", frozen(psi))
         object.__setattr__(self, "line_force", force)
 
     def directions(self):
@@ -277,9 +285,62 @@ class LoadsStudy:
         if d.line_ids and self.parachute is None:
             raise InputError("dynamics parachute line cases need the parachute")
 
-    def with_hook(self, **changes):
-        """A copy of the study with hook options changed (``lateral_angle=``, ``nz=``...)."""
+    def with_hook(self, *, nz=None, angle_deg=None, lateral_angle_deg=None, n_azimuth=None,
+                  include_vertical=None, cone=None, towed=None):
+        """A copy of the study with hook-load options changed, angles in degrees as in the
+        workbook; what is not given stays as it is (:class:`HookLoadOptions`).
+
+        Parameters
+        ----------
+        nz : float, optional
+            Hook load factor. [-]
+        angle_deg : float, optional
+            Inclination of the cone from the vertical, in [0, 90). [deg]
+        lateral_angle_deg : float, optional
+            Inclination of the lateral directions, in [0, 90). [deg]
+        n_azimuth : int, optional
+        include_vertical, towed : bool, optional
+        cone : {"lateral directions", "elliptical"}, optional
+
+        Examples
+        --------
+        ``study.with_hook(nz=2.0, lateral_angle_deg=20)``
+        """
+        changes = {"nz": nz, "n_azimuth": n_azimuth, "include_vertical": include_vertical,
+                   "cone": cone, "towed": towed}
+        changes = {k: v for k, v in changes.items() if v is not None}
+        for name, value in (("angle", angle_deg), ("lateral_angle", lateral_angle_deg)):
+            if value is not None:
+                degrees = float(value)
+                if not (np.isfinite(degrees) and 0 <= degrees < 90):
+                    raise InputError(f"hook {name.replace('_', ' ')} must lie in [0, 90) deg",
+                                     degrees, unit="deg")
+                changes[name] = np.radians(degrees)
         return replace(self, hook=replace(self.hook, **changes))
+
+    def with_mass_item(self, item_id, *, mass=None, position=None, inertia=None,
+                       description=None):
+        """A copy of the study with one mass item changed: ``mass`` [kg], ``position``
+        (x, y, z) [m], ``inertia`` (3 x 3 about its own CG) [kg m^2], ``description``
+        (:meth:`MassItems.with_item <slingloads.models.airframe.MassItems.with_item>`)."""
+        return replace(self, airframe=self.airframe.with_mass_item(
+            item_id, mass=mass, position=position, inertia=inertia, description=description))
+
+    def with_station(self, station, x=None, *, station_id=None):
+        """A copy of the study with one cut station (id or index) moved to ``x`` [m] or
+        renamed (:meth:`Airframe.with_station
+        <slingloads.models.airframe.Airframe.with_station>`)."""
+        return replace(self, airframe=self.airframe.with_station(station, x,
+                                                                 station_id=station_id))
+
+    def with_hardpoints(self, *, hub=None, mast_feet=None, mast_weights=None, mast_axis=None,
+                        chute=None, mast_feet_ids=None):
+        """A copy of the study with hardpoints changed: ``hub``, ``mast_feet``, ``chute``
+        [m], ``mast_weights``, ``mast_axis`` [-] (:meth:`Airframe.with_hardpoints
+        <slingloads.models.airframe.Airframe.with_hardpoints>`)."""
+        return replace(self, airframe=self.airframe.with_hardpoints(
+            hub=hub, mast_feet=mast_feet, mast_weights=mast_weights, mast_axis=mast_axis,
+            chute=chute, mast_feet_ids=mast_feet_ids))
 
     @property
     def attitude_used(self):
@@ -671,25 +732,75 @@ class LoadsResult:
             frame[name] = flat[:, j]
         return frame
 
-    def envelope(self, ultimate=False):
-        """Envelope with critical case and correlated loads (see :func:`envelope_table`)."""
+    def envelope(self, station=None, component=None, bound=None, ultimate=False):
+        """Envelope with the critical case and the correlated loads.
+
+        Parameters
+        ----------
+        station : str or int or sequence of them, optional
+            Station id(s) or index(es) to keep (default: every station).
+        component : str or sequence of str, optional
+            Component(s) to keep, ``"Vx"`` ... ``"Mz"`` (default: all six).
+        bound : {"max", "min"}, optional
+            Keep only the maxima or the minima (default: both).
+        ultimate : bool
+            Ultimate (factor x limit) instead of limit loads.
+
+        Returns
+        -------
+        pandas.DataFrame
+            ``station, x_m, component, bound, case, value_N, value_Nm, Vx_N ... Mz_Nm``: the
+            bound of the component in ``value_N`` (shears) or ``value_Nm`` (moments), the
+            critical ``case`` and the six loads of that case at that station, SI (the columns
+            of :meth:`to_frame` and of the envelope CSV file; :func:`envelope_table`).
+
+        Raises
+        ------
+        InputError
+            For an unknown station, component or bound (the valid ones are listed).
+        """
         loads = self.ultimate if ultimate else self.loads
-        return envelope_table(loads, self.case_ids, self.stations, self.station_ids)
+        frame = envelope_table(loads, self.case_ids, self.stations, self.station_ids)
+        keep = np.ones(len(frame), bool)
+        if station is not None:
+            many = [station] if isinstance(station, (str, int, np.integer)) else station
+            ids = [self.station_ids[self._station_index(s)] for s in many]
+            keep &= frame["station"].isin(ids).to_numpy()
+        if component is not None:
+            many = [component] if isinstance(component, str) else list(component)
+            for name in many:
+                component_index(name)
+            keep &= frame["component"].isin(many).to_numpy()
+        if bound is not None:
+            if bound not in ("max", "min"):
+                raise InputError("envelope bound must be 'max' or 'min'", bound)
+            keep &= (frame["bound"] == bound).to_numpy()
+        return frame[keep].reset_index(drop=True)
 
     def governing_cases(self):
-        """For each component: the case and station of the largest |load| over the airframe."""
+        """For each component: the case and station of the largest |load| over the airframe.
+
+        Returns
+        -------
+        pandas.DataFrame
+            ``component, case, station, x_m, value_N, value_Nm, description`` (the load in
+            ``value_N`` for a shear, ``value_Nm`` for a moment; SI).
+        """
         rows = []
         for j, name in enumerate(COMPONENTS):
             flat = np.abs(self.loads[:, :, j])
             ci, si = np.unravel_index(int(np.argmax(flat)), flat.shape)
+            value = float(self.loads[ci, si, j])
             rows.append({"component": name, "case": self.case_ids[ci],
-                         "station": self.station_ids[si], "x [m]": self.stations[si],
-                         "value": self.loads[ci, si, j],
+                         "station": self.station_ids[si], "x_m": self.stations[si],
+                         "value_N": value if j < 3 else np.nan,
+                         "value_Nm": value if j >= 3 else np.nan,
                          "description": self.cases["description"].iloc[ci]})
         return pd.DataFrame(rows)
 
     def hull(self, station, pair=("Vy", "Mz")):
-        """Convex hull of two components at a station (id or index)."""
+        """Convex hull of two components at a station (id or index): ``case`` and the two
+        components' columns (``Vy_N``, ``Mz_Nm``; SI; :func:`convex_hull`)."""
         index = self._station_index(station)
         return convex_hull(self.loads, self.case_ids, index, pair)
 
@@ -731,12 +842,4 @@ class LoadsResult:
         return write_nastran(self, path, **options)
 
     def _station_index(self, station):
-        if isinstance(station, (int, np.integer)):
-            if not 0 <= station < len(self.stations):
-                raise InputError("station index out of range", int(station))
-            return int(station)
-        try:
-            return self.station_ids.index(str(station))
-        except ValueError:
-            raise InputError(f"unknown station; valid ids are {list(self.station_ids)}",
-                             station) from None
+        return self.study.airframe.station_index(station)

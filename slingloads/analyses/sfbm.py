@@ -22,12 +22,22 @@ from __future__ import annotations
 
 import numpy as np
 
+from slingloads.analyses.sfbm_layout import (
+    R_CG,
+    R_FORCE,
+    R_INV_INERTIA,
+    R_INV_MASS,
+    R_MOMENT,
+    RIGID,
+)
 from slingloads.errors import InputError
 
 #: Names of the six internal-load components, in array order.
 COMPONENTS = ("Vx", "Vy", "Vz", "Mx", "My", "Mz")
 #: Kind of each component (for units).
 COMPONENT_KINDS = ("force",) * 3 + ("moment",) * 3
+#: DataFrame column of each component (name and SI unit, as in the CSV files).
+LOAD_COLUMNS = ("Vx_N", "Vy_N", "Vz_N", "Mx_Nm", "My_Nm", "Mz_Nm")
 
 
 def internal_loads(positions, forces, moments, station_points):
@@ -105,6 +115,12 @@ def unit_inertia_responses(mass_items, station_points):
     alpha_z), so the internal loads of any case's inertia relief are ``acc @ U`` with these
     unit responses: the classic superposition of unit-load solutions.
 
+    Parameters
+    ----------
+    mass_items : MassItems
+    station_points : ndarray, shape (s, 3)
+        Cut points. [m]
+
     Returns
     -------
     ndarray, shape (6, s, 6)
@@ -121,6 +137,20 @@ def closure_residual(positions, forces, moments, reference):
     """Sum of all forces and of all moments about ``reference``, per case, shape (c, 6).
 
     This is the internal load aft of every load: zero for a free-free body in equilibrium.
+
+    Parameters
+    ----------
+    positions : ndarray, shape (p, 3)
+        Load points. [m]
+    forces, moments : ndarray, shape (c, p, 3)
+        Forces [N] and moments [N m].
+    reference : array_like, shape (3,)
+        Point the moments are taken about. [m]
+
+    Returns
+    -------
+    ndarray, shape (c, 6)
+        Force [N] and moment [N m] sums.
     """
     from slingloads.analyses.inertia_relief import moment_sum
 
@@ -194,8 +224,12 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
     axis_point = np.array([0.0, cuts[0, 1], cuts[0, 2]])
     order = np.argsort(positions[:, 0], kind="stable")
     count = np.searchsorted(positions[order, 0], cuts[:, 0], side="right")
-    rigid = np.concatenate([mass_items.cg - axis_point, *gravity_resultants(mass_items, vertical),
-                            [1.0 / mass_items.total_mass], inverse_inertia(mass_items).ravel()])
+    rigid = np.empty(len(RIGID))
+    rigid[RIGID.slice("cg")] = mass_items.cg - axis_point
+    rigid[RIGID.slice("gravity_force")], rigid[RIGID.slice("gravity_moment")] = \
+        gravity_resultants(mass_items, vertical)
+    rigid[R_INV_MASS] = 1.0 / mass_items.total_mass
+    rigid[RIGID.slice("inv_inertia")] = inverse_inertia(mass_items).ravel()
     has_moments = moments is not None
     moments = np.asarray(moments, float) if has_moments else np.empty((0, 0, 3))
     # the kernel does not check its indices
@@ -228,7 +262,13 @@ def free_free_rows_numpy(basis, forces, moments, has_moments, order, arm, count,
     """:func:`slingloads.analyses.sfbm_kernel.free_free_rows` in numpy, all cases at once:
     the same arguments, the same operations in the same order (sums left to right, no fused
     or reordered products), so the same numbers to the last bit; temporaries of the
-    result's size, so for small studies only (:data:`NUMPY_CUTS`)."""
+    result's size, so for small studies only (:data:`NUMPY_CUTS`).
+
+    Parameters
+    ----------
+    basis, forces, moments, has_moments, order, arm, count, x, rigid, out, residual, linear, angular
+        As :func:`slingloads.analyses.sfbm_kernel.free_free_rows` (units there).
+    """
     f = forces[:, order, :]
     cum = np.zeros((len(f), len(order) + 1, 6))
     cum[:, 1:, :3] = f
@@ -254,13 +294,14 @@ def free_free_rows_numpy(basis, forces, moments, has_moments, order, arm, count,
 def _accelerations_numpy(totals, rigid, linear, angular):
     """The kernel's inertia relief from the applied loads' totals (c, 6), for all cases."""
     fx, fy, fz = totals[:, 0], totals[:, 1], totals[:, 2]
-    dx, dy, dz = rigid[0], rigid[1], rigid[2]
-    mx = totals[:, 3] - (dy * fz - dz * fy) + rigid[6]
-    my = totals[:, 4] - (dz * fx - dx * fz) + rigid[7]
-    mz = totals[:, 5] - (dx * fy - dy * fx) + rigid[8]
+    dx, dy, dz = rigid[R_CG], rigid[R_CG + 1], rigid[R_CG + 2]
+    mx = totals[:, 3] - (dy * fz - dz * fy) + rigid[R_MOMENT]
+    my = totals[:, 4] - (dz * fx - dx * fz) + rigid[R_MOMENT + 1]
+    mz = totals[:, 5] - (dx * fy - dy * fx) + rigid[R_MOMENT + 2]
     for k in range(3):
-        linear[:, k] = (totals[:, k] + rigid[3 + k]) * rigid[9]
-        angular[:, k] = rigid[10 + 3 * k] * mx + rigid[11 + 3 * k] * my + rigid[12 + 3 * k] * mz
+        linear[:, k] = (totals[:, k] + rigid[R_FORCE + k]) * rigid[R_INV_MASS]
+        row = R_INV_INERTIA + 3 * k
+        angular[:, k] = rigid[row] * mx + rigid[row + 1] * my + rigid[row + 2] * mz
 
 
 def _result_array(out, shape):

@@ -8,14 +8,31 @@ x (a few dozen), read at each cut, and combined with the seven basis responses a
 row is written. No array of the result's size other than the result itself is made, so the
 memory beyond the result is a few rows, whatever the number of cases. Single-threaded.
 Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept
-in this package's ``__pycache__`` after the first call); the module is self-contained, so
-numba's own check of this file's source keeps the cache valid.
+in this package's ``__pycache__`` after the first call). The kernel reads the rigid-body
+vector by the offsets of :data:`slingloads.analyses.sfbm_layout.RIGID`, so the cache is
+dropped when that module, :mod:`slingloads.models.packed` or this one changes (every
+module of this folder is hashed) (:mod:`slingloads.models.numba_cache`).
+
+The numpy twin :func:`slingloads.analyses.sfbm.free_free_rows_numpy` stays in production,
+with a reason: for a small study (:data:`slingloads.analyses.sfbm.NUMPY_CUTS`) it spares the
+kernel's start-up in a fresh process (about 0.7 s, numba's import and the loading of the
+machine code: most of such a study's time). It makes the same operations in the same order,
+and the tests check the two agree to the last bit
+(``tests/test_closure_superposition.py``).
 """
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numba
 import numpy as np
+
+from slingloads.analyses.sfbm_layout import R_CG, R_FORCE, R_INV_INERTIA, R_INV_MASS, R_MOMENT
+from slingloads.models.numba_cache import drop_stale_cache
+
+_HERE = Path(__file__).resolve()
+drop_stale_cache(_HERE.parent, also=(_HERE.parents[1] / "models" / "packed.py",))
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
 
@@ -68,18 +85,18 @@ def _accelerations(cum, p, rigid, case, linear, angular):
     """Inertia relief of one case from its applied loads' totals ``cum[p]``: the
     accelerations that balance them and gravity (``rigid``: see :func:`free_free_rows`)."""
     fx, fy, fz = cum[p, 0], cum[p, 1], cum[p, 2]
-    dx, dy, dz = rigid[0], rigid[1], rigid[2]
+    dx, dy, dz = rigid[R_CG], rigid[R_CG + 1], rigid[R_CG + 2]
     # moment about the CG = moment about the axis point - (cg - axis point) x force
-    mx = cum[p, 3] - (dy * fz - dz * fy) + rigid[6]
-    my = cum[p, 4] - (dz * fx - dx * fz) + rigid[7]
-    mz = cum[p, 5] - (dx * fy - dy * fx) + rigid[8]
-    inv_mass = rigid[9]
-    linear[case, 0] = (fx + rigid[3]) * inv_mass
-    linear[case, 1] = (fy + rigid[4]) * inv_mass
-    linear[case, 2] = (fz + rigid[5]) * inv_mass
+    mx = cum[p, 3] - (dy * fz - dz * fy) + rigid[R_MOMENT]
+    my = cum[p, 4] - (dz * fx - dx * fz) + rigid[R_MOMENT + 1]
+    mz = cum[p, 5] - (dx * fy - dy * fx) + rigid[R_MOMENT + 2]
+    inv_mass = rigid[R_INV_MASS]
+    linear[case, 0] = (fx + rigid[R_FORCE]) * inv_mass
+    linear[case, 1] = (fy + rigid[R_FORCE + 1]) * inv_mass
+    linear[case, 2] = (fz + rigid[R_FORCE + 2]) * inv_mass
     for k in range(3):
-        angular[case, k] = (rigid[10 + 3 * k] * mx + rigid[11 + 3 * k] * my
-                            + rigid[12 + 3 * k] * mz)
+        row = R_INV_INERTIA + 3 * k
+        angular[case, k] = rigid[row] * mx + rigid[row + 1] * my + rigid[row + 2] * mz
 
 
 @_jit
@@ -104,9 +121,10 @@ def free_free_rows(basis, forces, moments, has_moments, order, arm, count, x, ri
     x : ndarray, shape (s + 1,)
         x of each cut. [m]
     rigid : ndarray, shape (19,)
-        CG relative to the axis point (3) [m], resultant force (3) [N] and moment about the
-        CG (3) [N m] of gravity, 1 / total mass [1/kg], inverse inertia tensor about the CG
-        row by row (9) [1/(kg m^2)].
+        Laid out by :data:`slingloads.analyses.sfbm_layout.RIGID`: CG relative to the axis point (3)
+        [m], resultant force (3) [N] and moment about the CG (3) [N m] of gravity,
+        1 / total mass [1/kg], inverse inertia tensor about the CG row by row (9)
+        [1/(kg m^2)].
     out : ndarray, shape (c, 6 s), C-contiguous
         Internal loads, written. [N, N m]
     residual : ndarray, shape (c, 6)

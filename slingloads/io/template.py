@@ -31,6 +31,33 @@ INTRO = (
 )
 
 
+#: What one sheet or row asks of the others, stated on the README sheet (each is checked
+#: when the workbook is read, with the cell to fix named).
+REQUIREMENTS = (
+    ("empty sheets", "A sheet left with its header row only counts as deleted: optional "
+     "sheets need not be removed."),
+    ("FuselageAero", "needs a Hardpoints row of kind 'aero_reference' and the Study's "
+     "'fuselage reference area' and 'fuselage reference length' > 0; its columns are those of "
+     "'fuselage force axes' (wind: CD, CY, CL; body: CX, CY, CZ) and 'fuselage moment axes' "
+     "(Cl, Cm, Cn); the other frame's columns may stay empty."),
+    ("FinAero", "needs a Hardpoints row of kind 'fin_cp' and 'fin area' > 0; the multibody "
+     "model and the campaign need 'fin axes' = body (its CY is the fin's normal force)."),
+    ("AeroEnvelope", "required by the loads ('run loads' = yes) when FuselageAero or FinAero "
+     "has data: the (alpha, beta) points at which their loads are taken, inside the tables."),
+    ("parachute", "'parachute area' > 0 needs a Hardpoints row of kind 'chute'; ParachuteCD "
+     "is optional (default: the extended drag table)."),
+    ("LoadCases", "its hook and aero ids must be generated directions (VERTICAL, AZ000...), "
+     "TOW, NONE or AeroEnvelope ids; chute = yes needs a parachute."),
+    ("lateral study", "'run lateral' = yes needs LateralMotions, LateralRopes and "
+     "LateralBodies; a motion of type time_history needs its samples in LateralHistory."),
+    ("multibody", "'run multibody' = yes needs FuselageAero; 'multibody tail' = full tail "
+     "needs FinAero, HTailAero and a Hardpoints row of kind 'htail_cp'; with parachute a "
+     "Hardpoints row of kind 'chute'."),
+    ("chute sizing and campaign", "need FuselageAero or FinAero and a Hardpoints row of kind "
+     "'chute'."),
+)
+
+
 def _text(cell, value):
     """Store ``value`` as plain text, never as a formula."""
     cell.value = value
@@ -90,6 +117,14 @@ def _readme(ws, notes):
     for line in notes:
         _text(ws.cell(row, 1), line)
         ws.merge_cells(start_row=row, start_column=1, end_row=row, end_column=3)
+        row += 1
+    row += 1
+    _text(ws.cell(row, 1), "Sheets that go together")
+    ws.cell(row, 1).font = _BOLD
+    row += 1
+    for what, rule in REQUIREMENTS:
+        _text(ws.cell(row, 1), what)
+        _text(ws.cell(row, 3), rule)
         row += 1
     row += 1
     for col, title in enumerate(("sheet", "column", "meaning"), start=1):

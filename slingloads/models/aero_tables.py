@@ -103,14 +103,32 @@ class Table1D:
         return np.interp(a, self.angle, self.coefficients[name])
 
     def slope(self, name, lo, hi):
-        """Least-squares slope and intercept of coefficient ``name`` over [lo, hi] [rad].
+        """Least-squares slope and intercept of a coefficient over an angle range.
 
-        Returns ``(slope [1/rad], intercept [-])`` fitted to the breakpoints inside the range.
+        Parameters
+        ----------
+        name : str
+            Coefficient, a key of ``coefficients``.
+        lo, hi : float
+            Angle range of the fit; the breakpoints inside it are fitted. [rad]
+
+        Returns
+        -------
+        slope : float
+            [1/rad]
+        intercept : float
+            [-]
         """
         return linear_fit(self.angle, self.coefficients[name], lo, hi, self.what)
 
     def to_frame(self):
-        """The table as a DataFrame, angle in degrees."""
+        """The table as a DataFrame, angle in degrees.
+
+        Returns
+        -------
+        pandas.DataFrame
+            A column ``<angle> [deg]`` and one column per coefficient [-].
+        """
         frame = pd.DataFrame(self.coefficients)
         frame.insert(0, f"{self.angle_name} [deg]", np.degrees(self.angle))
         return frame
@@ -161,13 +179,40 @@ class Table2D:
         return bilinear(self.alpha, self.beta, self.coefficients[name], a, b)
 
     def beta_slice(self, name, alpha):
-        """Coefficient ``name`` at the sideslip breakpoints, at angle of attack ``alpha``."""
+        """A coefficient at the sideslip breakpoints, at one angle of attack.
+
+        Parameters
+        ----------
+        name : str
+            Coefficient, a key of ``coefficients``.
+        alpha : float
+            Angle of attack, inside the table. [rad]
+
+        Returns
+        -------
+        ndarray, shape (len(beta),)
+            The coefficient at each sideslip breakpoint. [-]
+        """
         return self(name, np.full(self.beta.shape, alpha), self.beta)
 
     def slope(self, name, alpha, lo, hi):
-        """Least-squares slope against sideslip over [lo, hi] [rad] at ``alpha`` [rad].
+        """Least-squares slope against sideslip over a range, at one angle of attack.
 
-        Returns ``(slope [1/rad], intercept [-])``.
+        Parameters
+        ----------
+        name : str
+            Coefficient, a key of ``coefficients``.
+        alpha : float
+            Angle of attack. [rad]
+        lo, hi : float
+            Sideslip range of the fit; the breakpoints inside it are fitted. [rad]
+
+        Returns
+        -------
+        slope : float
+            [1/rad]
+        intercept : float
+            [-]
         """
         return linear_fit(self.beta, self.beta_slice(name, alpha), lo, hi, self.what)
 
@@ -175,7 +220,23 @@ class Table2D:
     def from_long(cls, alpha, beta, coefficients, what="fuselage"):
         """Build from long-format columns (one row per grid point, any order).
 
-        Raises :class:`InputError` if the rows do not form a complete grid or repeat a point.
+        Parameters
+        ----------
+        alpha, beta : array_like, shape (n,)
+            Angle of attack and sideslip of each row. [rad]
+        coefficients : dict of str to array_like, shape (n,)
+            Coefficient columns. [-]
+        what : str
+            What the table is, for error messages.
+
+        Returns
+        -------
+        Table2D
+
+        Raises
+        ------
+        InputError
+            If the rows do not form a complete grid or repeat a point.
         """
         alpha = np.asarray(alpha, dtype=float)
         beta = np.asarray(beta, dtype=float)
@@ -201,7 +262,14 @@ class Table2D:
         return cls(a_grid, b_grid, shaped, what=what)
 
     def to_frame(self):
-        """The table in long format, angles in degrees."""
+        """The table in long format, angles in degrees.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Columns ``alpha [deg]``, ``beta [deg]`` and one per coefficient [-], a row per grid
+            point.
+        """
         a, b = np.meshgrid(self.alpha, self.beta, indexing="ij")
         frame = pd.DataFrame({"alpha [deg]": np.degrees(a.ravel()),
                               "beta [deg]": np.degrees(b.ravel())})

@@ -68,7 +68,18 @@ _FORCE_SIGNS = {"wind": (-1.0, 1.0, -1.0), "stability": (-1.0, 1.0, -1.0),
 
 
 def fuselage_columns(force_axes="wind"):
-    """Columns a fuselage table needs with forces in ``force_axes``: e.g. CD, CY, CL, Cl, Cm, Cn."""
+    """Columns a fuselage table needs with forces in ``force_axes``.
+
+    Parameters
+    ----------
+    force_axes : {"wind", "stability", "body"}
+        Axes of the table's force coefficients.
+
+    Returns
+    -------
+    tuple of str
+        Force then moment coefficient names, e.g. CD, CY, CL, Cl, Cm, Cn.
+    """
     _check_choice(force_axes, FORCE_AXES, "force axes")
     return FORCE_AXES[force_axes] + MOMENT_COLUMNS
 
@@ -128,7 +139,22 @@ def force_to_airframe(coefficients, alpha, beta, axes="wind"):
 
 
 def force_from_airframe(coefficients, alpha, beta, axes="wind"):
-    """Inverse of :func:`force_to_airframe` (the frames are orthonormal). [-]"""
+    """Inverse of :func:`force_to_airframe` (the frames are orthonormal).
+
+    Parameters
+    ----------
+    coefficients : array_like, shape (..., 3)
+        Force over q S along airframe x, y, z. [-]
+    alpha, beta : array_like
+        Angle of attack and sideslip. [rad]
+    axes : {"wind", "stability", "body"}
+        The declared frame.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        (CD, CY, CL) for ``wind`` and ``stability``, (CX, CY, CZ) for ``body``. [-]
+    """
     _check_choice(axes, FORCE_AXES, "force axes")
     c = np.einsum("...ij,...j->...i", frame_axes(axes, alpha, beta),
                   np.asarray(coefficients, float))
@@ -137,6 +163,15 @@ def force_from_airframe(coefficients, alpha, beta, axes="wind"):
 
 def moment_to_airframe(coefficients, alpha, beta, axes="body"):
     """Moment coefficients (Cl, Cm, Cn) about a declared frame's axes as airframe-axes ones.
+
+    Parameters
+    ----------
+    coefficients : array_like, shape (..., 3)
+        (Cl, Cm, Cn) about the declared frame's axes. [-]
+    alpha, beta : array_like
+        Angle of attack and sideslip. [rad]
+    axes : {"body", "stability", "wind"}
+        The declared frame.
 
     Returns
     -------
@@ -148,7 +183,22 @@ def moment_to_airframe(coefficients, alpha, beta, axes="body"):
 
 
 def moment_from_airframe(coefficients, alpha, beta, axes="body"):
-    """Inverse of :func:`moment_to_airframe`. [-]"""
+    """Inverse of :func:`moment_to_airframe`.
+
+    Parameters
+    ----------
+    coefficients : array_like, shape (..., 3)
+        Moment over q S L about airframe x, y, z. [-]
+    alpha, beta : array_like
+        Angle of attack and sideslip. [rad]
+    axes : {"body", "stability", "wind"}
+        The declared frame.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        (Cl, Cm, Cn) about the declared frame's axes. [-]
+    """
     return np.einsum("...ij,...j->...i", frame_axes(axes, alpha, beta),
                      np.asarray(coefficients, float))
 
@@ -170,7 +220,18 @@ def airflow_direction(alpha, beta):
 
 
 def lift_direction(alpha):
-    """Unit vector of lift (normal to the airflow in the x-z plane, upwards), ``-z_S``. [-]"""
+    """Unit vector of lift (normal to the airflow in the x-z plane, upwards), ``-z_S``.
+
+    Parameters
+    ----------
+    alpha : array_like
+        Angle of attack. [rad]
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        Airframe axes. [-]
+    """
     return -frame_axes("stability", alpha, 0.0)[..., 2, :]
 
 
@@ -227,21 +288,54 @@ class FuselageAero:
         return fuselage_columns(self.force_axes)
 
     def coefficients(self, alpha, beta):
-        """The table's own coefficients at ``alpha``, ``beta`` [rad] (declared axes), stacked
-        on the last axis in the order of :attr:`columns`."""
+        """The table's own coefficients (declared axes), stacked on the last axis in the
+        order of :attr:`columns`.
+
+        Parameters
+        ----------
+        alpha, beta : array_like
+            Angle of attack and sideslip. [rad]
+
+        Returns
+        -------
+        ndarray, shape (..., 6)
+            [-]
+        """
         return np.stack([self.table(c, alpha, beta) for c in self.columns], axis=-1)
 
     def airframe_coefficients(self, alpha, beta):
-        """Airframe-axes coefficients ``CFx, CFy, CFz, CMx, CMy, CMz`` at ``alpha``, ``beta``
-        [rad], shape (..., 6): the table interpolated in its declared frames, converted at
-        these angles; an error outside the table (no extrapolation)."""
+        """Airframe-axes coefficients ``CFx, CFy, CFz, CMx, CMy, CMz``: the table
+        interpolated in its declared frames, converted at these angles; an error outside the table
+        (no extrapolation).
+
+        Parameters
+        ----------
+        alpha, beta : array_like
+            Angle of attack and sideslip. [rad]
+
+        Returns
+        -------
+        ndarray, shape (..., 6)
+            Forces over q S, moments over q S L about :attr:`moment_reference`. [-]
+        """
         own = self.coefficients(alpha, beta)
         force = force_to_airframe(own[..., :3], alpha, beta, self.force_axes)
         moment = moment_to_airframe(own[..., 3:], alpha, beta, self.moment_axes)
         return np.concatenate([force, moment], axis=-1)
 
     def drag_coefficient(self, alpha, beta):
-        """Force coefficient along the airflow (the wind-axes CD), whatever the table's axes."""
+        """Force coefficient along the airflow (the wind-axes CD), whatever the table's axes.
+
+        Parameters
+        ----------
+        alpha, beta : array_like
+            Angle of attack and sideslip. [rad]
+
+        Returns
+        -------
+        ndarray
+            CD. [-]
+        """
         c = self.airframe_coefficients(alpha, beta)[..., :3]
         return np.einsum("...i,...i->...", c, airflow_direction(alpha, beta))
 
@@ -308,8 +402,19 @@ class Fin:
                            np.asarray(self.centre_of_pressure, float).reshape(3))
 
     def force_coefficients(self, beta):
-        """Airframe-axes force coefficients (CFx, CFy, CFz) on the intact fin area at
-        sideslip ``beta`` [rad], shape (..., 3): CY interpolated, then converted. [-]"""
+        """Airframe-axes force coefficients (CFx, CFy, CFz) on the intact fin area: CY
+        interpolated, then converted.
+
+        Parameters
+        ----------
+        beta : array_like
+            Sideslip. [rad]
+
+        Returns
+        -------
+        ndarray, shape (..., 3)
+            [-]
+        """
         cy = self.table("CY", beta)
         zero = np.zeros_like(cy)
         return force_to_airframe(np.stack([zero, cy, zero], axis=-1), 0.0, beta, self.axes)
@@ -322,10 +427,36 @@ class Fin:
         return beta, self.force_coefficients(beta)[:, 1]
 
     def side_force(self, beta, q):
-        """Fin force along +y [N] at sideslip ``beta`` [rad], dynamic pressure ``q`` [Pa]."""
+        """Fin force along +y.
+
+        Parameters
+        ----------
+        beta : array_like
+            Sideslip. [rad]
+        q : array_like
+            Dynamic pressure. [Pa]
+
+        Returns
+        -------
+        ndarray
+            [N]
+        """
         return self.force(beta, q)[..., 1]
 
     def force(self, beta, q):
-        """Fin force vector in airframe axes, shape (n, 3). [N]"""
+        """Fin force vector in airframe axes.
+
+        Parameters
+        ----------
+        beta : array_like
+            Sideslip. [rad]
+        q : array_like
+            Dynamic pressure. [Pa]
+
+        Returns
+        -------
+        ndarray, shape (..., 3)
+            [N]
+        """
         scale = np.asarray(q, float)[..., None] * self.area * self.efficiency
         return scale * self.force_coefficients(beta)

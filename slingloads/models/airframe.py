@@ -6,11 +6,12 @@ butt line (BL), z up along the water line (WL); origin at the airframe's datum. 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
 
+from slingloads.checks import frozen
 from slingloads.constants import G0
 from slingloads.errors import InputError
 
@@ -120,11 +121,84 @@ class MassItems:
                 field="inertia", index=i)
         _check_triangle(ids, inertia, eig)
         desc = tuple(self.description) or ("",) * n
+        if len(desc) != n:
+            raise InputError(f"mass items need one description each ({n}), or none",
+                             len(desc))
         object.__setattr__(self, "ids", ids)
-        object.__setattr__(self, "mass", mass)
-        object.__setattr__(self, "position", pos)
-        object.__setattr__(self, "inertia", inertia)
-        object.__setattr__(self, "description", desc)
+        object.__setattr__(self, "mass", frozen(mass))
+        object.__setattr__(self, "position", frozen(pos))
+        object.__setattr__(self, "inertia", frozen(inertia))
+        object.__setattr__(self, "description", tuple(str(d) for d in desc))
+
+    def index(self, item_id):
+        """Position of the item ``item_id`` in the arrays.
+
+        Raises
+        ------
+        InputError
+            If no item has that id (the valid ids are listed).
+        """
+        try:
+            return self.ids.index(str(item_id))
+        except ValueError:
+            raise InputError(f"unknown mass item; valid ids are {list(self.ids)}",
+                             item_id) from None
+
+    def with_item(self, item_id, *, mass=None, position=None, inertia=None,
+                  description=None):
+        """A copy with one item changed; what is not given stays as it is.
+
+        Parameters
+        ----------
+        item_id : str
+            Id of an existing item.
+        mass : float, optional
+            New mass, > 0. [kg]
+        position : array_like, shape (3,), optional
+            New CG (x aft, y right, z up). [m]
+        inertia : array_like, shape (3, 3), optional
+            New own inertia tensor about the item's CG. [kg m^2]
+        description : str, optional
+
+        Returns
+        -------
+        MassItems
+            Checked as any new set of items is.
+
+        Examples
+        --------
+        >>> items = MassItems(["A", "B"], [10.0, 20.0], [[0, 0, 0], [1, 0, 0]])
+        >>> items.with_item("B", mass=25.0).mass.tolist()
+        [10.0, 25.0]
+        """
+        i = self.index(item_id)
+        masses, positions = self.mass.copy(), self.position.copy()
+        inertias, texts = self.inertia.copy(), list(self.description)
+        if mass is not None:
+            masses[i] = mass
+        if position is not None:
+            positions[i] = np.asarray(position, float).reshape(3)
+        if inertia is not None:
+            inertias[i] = np.asarray(inertia, float).reshape(3, 3)
+        if description is not None:
+            texts[i] = str(description)
+        return MassItems(self.ids, masses, positions, inertias, tuple(texts))
+
+    def with_added(self, item_id, mass, position, inertia=None, description=""):
+        """A copy with one more item (arguments as in :meth:`with_item`, [kg], [m],
+        [kg m^2]); the id must be new."""
+        own = np.zeros((3, 3)) if inertia is None else np.asarray(inertia, float)
+        return MassItems((*self.ids, str(item_id)), np.r_[self.mass, float(mass)],
+                         np.vstack([self.position, np.asarray(position, float).reshape(1, 3)]),
+                         np.concatenate([self.inertia, own.reshape(1, 3, 3)]),
+                         (*self.description, str(description)))
+
+    def without(self, item_id):
+        """A copy without the item ``item_id``."""
+        keep = np.arange(len(self.ids)) != self.index(item_id)
+        return MassItems(tuple(np.asarray(self.ids, dtype=object)[keep]), self.mass[keep],
+                         self.position[keep], self.inertia[keep],
+                         tuple(np.asarray(self.description, dtype=object)[keep]))
 
     @property
     def total_mass(self):
@@ -189,6 +263,9 @@ class Hardpoints:
     def __post_init__(self):
         hub = np.asarray(self.hub, dtype=float).reshape(3)
         feet = np.asarray(self.mast_feet, dtype=float).reshape(-1, 3)
+        if not (np.all(np.isfinite(hub)) and np.all(np.isfinite(feet))):
+            raise InputError("hub and mast attachment points must be finite [m]",
+                             [hub.tolist(), feet.tolist()])
         weights = (np.ones(len(feet)) if self.mast_weights is None
                    else np.asarray(self.mast_weights, dtype=float))
         if len(feet) == 0:
@@ -202,11 +279,11 @@ class Hardpoints:
             raise InputError("mast axis must be a non-zero vector", axis.tolist())
         chute = None if self.chute is None else np.asarray(self.chute, dtype=float).reshape(3)
         ids = tuple(self.mast_feet_ids) or tuple(f"mast foot {i + 1}" for i in range(len(feet)))
-        object.__setattr__(self, "hub", hub)
-        object.__setattr__(self, "mast_feet", feet)
-        object.__setattr__(self, "mast_weights", weights)
-        object.__setattr__(self, "mast_axis", axis / norm)
-        object.__setattr__(self, "chute", chute)
+        object.__setattr__(self, "hub", frozen(hub))
+        object.__setattr__(self, "mast_feet", frozen(feet))
+        object.__setattr__(self, "mast_weights", frozen(weights))
+        object.__setattr__(self, "mast_axis", frozen(axis / norm))
+        object.__setattr__(self, "chute", None if chute is None else frozen(chute))
         object.__setattr__(self, "mast_feet_ids", _ids(ids, "mast attachment"))
 
 
@@ -278,7 +355,7 @@ class Airframe:
         ids = tuple(self.station_ids) or tuple(f"FS{v:.3f}" for v in x)
         if len(ids) != x.size:
             raise InputError("one id per cut station is needed")
-        object.__setattr__(self, "stations", x)
+        object.__setattr__(self, "stations", frozen(x))
         object.__setattr__(self, "station_ids", _ids(ids, "cut station"))
         object.__setattr__(self, "reference_axis",
                            tuple(float(v) for v in np.asarray(self.reference_axis).reshape(2)))
@@ -295,8 +372,8 @@ class Airframe:
         if w.shape != pts.shape or np.any(~np.isfinite(w) | (w <= 0)):
             raise InputError("aerodynamic share weights must be > 0, one per point",
                              w.tolist())
-        object.__setattr__(self, "aero_points", pts)
-        object.__setattr__(self, "aero_weights", w)
+        object.__setattr__(self, "aero_points", frozen(pts))
+        object.__setattr__(self, "aero_weights", frozen(w))
         self._check_inside()
 
     @property
@@ -310,6 +387,73 @@ class Airframe:
         """Length of the mass distribution along x. [m]"""
         lo, hi = self.extent
         return hi - lo
+
+    def with_mass_item(self, item_id, *, mass=None, position=None, inertia=None,
+                       description=None):
+        """A copy with one mass item changed (:meth:`MassItems.with_item`: ``mass`` [kg],
+        ``position`` [m], ``inertia`` [kg m^2], ``description``); the aerodynamic points
+        stay where they are."""
+        items = self.mass_items.with_item(item_id, mass=mass, position=position,
+                                          inertia=inertia, description=description)
+        return replace(self, mass_items=items)
+
+    def station_index(self, station):
+        """Position of a cut station given by id or index.
+
+        Raises
+        ------
+        InputError
+            If there is no such station (the valid ids are listed).
+        """
+        if isinstance(station, (int, np.integer)) and not isinstance(station, bool):
+            if not 0 <= station < len(self.stations):
+                raise InputError(f"station index out of range [0, {len(self.stations)})",
+                                 int(station))
+            return int(station)
+        try:
+            return self.station_ids.index(str(station))
+        except ValueError:
+            raise InputError(f"unknown cut station; valid ids are {list(self.station_ids)}",
+                             station) from None
+
+    def with_station(self, station, x=None, *, station_id=None):
+        """A copy with one cut station moved or renamed (the stations stay sorted by x).
+
+        Parameters
+        ----------
+        station : str or int
+            Id or index of the station.
+        x : float, optional
+            Its new x. [m]
+        station_id : str, optional
+            Its new id.
+        """
+        i = self.station_index(station)
+        x_all, ids = self.stations.copy(), list(self.station_ids)
+        if x is not None:
+            x_all[i] = x
+        if station_id is not None:
+            ids[i] = str(station_id)
+        return replace(self, stations=x_all, station_ids=tuple(ids))
+
+    def with_stations(self, stations, station_ids=()):
+        """A copy with new cut stations [m] (ids default to ``FS<x in m>``)."""
+        return replace(self, stations=stations, station_ids=tuple(station_ids))
+
+    def with_hardpoints(self, *, hub=None, mast_feet=None, mast_weights=None, mast_axis=None,
+                        chute=None, mast_feet_ids=None):
+        """A copy with hardpoints changed (:class:`Hardpoints`: ``hub``, ``mast_feet``,
+        ``chute`` [m]; ``mast_weights``, ``mast_axis`` [-]; ``mast_feet_ids``); what is not
+        given stays as it is. New mast feet drop the former weights and ids unless given."""
+        hp = self.hardpoints
+        changes = {k: v for k, v in (("hub", hub), ("mast_feet", mast_feet),
+                                     ("mast_weights", mast_weights), ("mast_axis", mast_axis),
+                                     ("chute", chute), ("mast_feet_ids", mast_feet_ids))
+                   if v is not None}
+        if mast_feet is not None and len(np.reshape(mast_feet, (-1, 3))) != len(hp.mast_feet):
+            changes.setdefault("mast_weights", None)
+            changes.setdefault("mast_feet_ids", ())
+        return replace(self, hardpoints=replace(hp, **changes))
 
     def _check_inside(self):
         hp = self.hardpoints

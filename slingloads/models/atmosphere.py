@@ -36,28 +36,81 @@ def _check_altitude(altitude):
 
 
 def isa_temperature(altitude):
-    """ISA temperature at geopotential ``altitude`` [m]. Returns [K]."""
+    """ISA temperature at a geopotential altitude.
+
+    Parameters
+    ----------
+    altitude : numeric
+        Geopotential altitude, -610 m to 11000 m. [m]
+
+    Returns
+    -------
+    numeric
+        Temperature. [K]
+
+    Raises
+    ------
+    InputError
+        For an altitude outside the troposphere model.
+    """
     return T0 - LAPSE * _check_altitude(altitude)
 
 
 def isa_pressure(altitude):
-    """ISA pressure at geopotential ``altitude`` [m]. Returns [Pa]."""
+    """ISA pressure at a geopotential altitude.
+
+    Parameters
+    ----------
+    altitude : numeric
+        Geopotential altitude, -610 m to 11000 m. [m]
+
+    Returns
+    -------
+    numeric
+        Static pressure. [Pa]
+    """
     return P0 * (isa_temperature(altitude) / T0) ** _EXPONENT
 
 
 def isa_density(altitude):
-    """ISA density at geopotential ``altitude`` [m]. Returns [kg/m^3].
+    """ISA density at a geopotential altitude.
 
     With the ISA temperature, the density altitude equals the pressure altitude, so this
     is also the density at a *density altitude* of ``altitude``:
 
     .. math:: \\rho = \\rho_0 (1 - L H / T_0)^{g_0/(R L) - 1}
+
+    Parameters
+    ----------
+    altitude : numeric
+        Geopotential (or density) altitude, -610 m to 11000 m. [m]
+
+    Returns
+    -------
+    numeric
+        Air density. [kg/m^3]
     """
     return isa_pressure(altitude) / (R_AIR * isa_temperature(altitude))
 
 
 def density_altitude(density):
-    """Density altitude [m] of air of ``density`` [kg/m^3] (inverse of :func:`isa_density`)."""
+    """Density altitude of air of a given density (inverse of :func:`isa_density`).
+
+    Parameters
+    ----------
+    density : numeric
+        Air density, > 0. [kg/m^3]
+
+    Returns
+    -------
+    numeric
+        Density altitude. [m]
+
+    Raises
+    ------
+    InputError
+        For a density that is not > 0.
+    """
     rho = np.asarray(density, dtype=float)
     if np.any(~np.isfinite(rho) | (rho <= 0)):
         raise InputError("density must be > 0", rho.tolist())
@@ -65,11 +118,35 @@ def density_altitude(density):
 
 
 def dynamic_pressure_eas(eas):
-    """Dynamic pressure [Pa] at equivalent airspeed ``eas`` [m/s]: q = 1/2 rho0 V_EAS^2."""
+    """Dynamic pressure at an equivalent airspeed: q = 1/2 rho0 V_EAS^2.
+
+    Parameters
+    ----------
+    eas : numeric
+        Equivalent airspeed. [m/s]
+
+    Returns
+    -------
+    numeric
+        Dynamic pressure. [Pa]
+    """
     v = np.asarray(eas, dtype=float)
     return 0.5 * RHO0 * v**2
 
 
 def true_airspeed(eas, altitude):
-    """True airspeed [m/s] from equivalent airspeed ``eas`` [m/s] at density ``altitude`` [m]."""
+    """True airspeed from equivalent airspeed at a density altitude.
+
+    Parameters
+    ----------
+    eas : numeric
+        Equivalent airspeed. [m/s]
+    altitude : numeric
+        Density altitude. [m]
+
+    Returns
+    -------
+    numeric
+        True airspeed, V_EAS sqrt(rho0 / rho). [m/s]
+    """
     return np.asarray(eas, dtype=float) * np.sqrt(RHO0 / isa_density(altitude))

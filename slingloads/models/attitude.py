@@ -73,7 +73,24 @@ class Attitude:
 
     @classmethod
     def from_vertical(cls, vertical, source="given"):
-        """The attitude whose earth vertical is ``vertical`` (airframe axes, any length > 0)."""
+        """The attitude whose earth vertical is a given vector.
+
+        Parameters
+        ----------
+        vertical : array_like, shape (3,)
+            Earth's upward vertical in airframe axes, any length > 0, z component > 0. [-]
+        source : str
+            How the attitude was found (kept in :attr:`source`).
+
+        Returns
+        -------
+        Attitude
+
+        Raises
+        ------
+        InputError
+            For a zero vector or one that points to the airframe's lower side.
+        """
         k = np.asarray(vertical, float).reshape(3)
         norm = np.linalg.norm(k)
         if not np.isfinite(norm) or norm == 0:
@@ -87,7 +104,18 @@ class Attitude:
 
     @classmethod
     def hanging(cls, mass_items, hub):
-        """The attitude in which the CG of ``mass_items`` lies under ``hub`` [m].
+        """The attitude in which the CG of ``mass_items`` lies under the hub.
+
+        Parameters
+        ----------
+        mass_items : MassItems
+            Mass model; its CG is used. [m]
+        hub : array_like, shape (3,)
+            Rotor hub (cable attachment), airframe axes. [m]
+
+        Returns
+        -------
+        Attitude
 
         Raises
         ------
@@ -106,12 +134,27 @@ class Attitude:
 
     @classmethod
     def mast_vertical(cls, mast_axis):
-        """The attitude in which the mast axis is the earth vertical."""
+        """The attitude in which the mast axis is the earth vertical.
+
+        Parameters
+        ----------
+        mast_axis : array_like, shape (3,)
+            Mast axis in airframe axes, pointing up. [-]
+
+        Returns
+        -------
+        Attitude
+        """
         return cls.from_vertical(mast_axis, "mast vertical")
 
     def describe(self):
-        """Readable text at the reports' precision of an angle (0.1 deg): "pitch -9.2 deg
-        (nose down), roll +0.0 deg (level); hanging: CG under the hub"."""
+        """Readable text at the reports' precision of an angle (0.1 deg), e.g. "pitch -9.2 deg
+        (nose down), roll +0.0 deg (level); hanging: CG under the hub".
+
+        Returns
+        -------
+        str
+        """
         pitch, roll = (float(np.round(np.degrees(a), 1)) + 0.0 for a in (self.pitch, self.roll))
         nose = "nose up" if pitch > 0 else "nose down" if pitch < 0 else "level"
         side = ("right side down" if roll > 0 else "left side down" if roll < 0 else "level")
@@ -120,7 +163,14 @@ class Attitude:
         return f"pitch {pitch:+.1f} deg ({nose}), roll {roll:+.1f} deg ({side}); {how}"
 
     def to_frame(self):
-        """The attitude and its earth vertical as a one-row DataFrame (angles in degrees)."""
+        """The attitude and its earth vertical as a one-row DataFrame.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Columns ``attitude source``, ``pitch [deg]``, ``roll [deg]`` and the vertical's
+            components ``vertical x [-]``, ``vertical y [-]``, ``vertical z [-]``.
+        """
         k = self.vertical
         return pd.DataFrame([{"attitude source": self.source,
                               "pitch [deg]": float(np.degrees(self.pitch)),
@@ -135,8 +185,18 @@ def resolve_attitude(attitude, airframe):
     Parameters
     ----------
     attitude : str or Attitude
+        ``"hanging"`` (CG under the hub), ``"mast vertical"``, or an attitude, returned as is.
     airframe : Airframe
-        Mass items and hardpoints (hub, mast axis).
+        Mass items and hardpoints (hub, mast axis). [m]
+
+    Returns
+    -------
+    Attitude
+
+    Raises
+    ------
+    InputError
+        For any other value.
     """
     if isinstance(attitude, Attitude):
         return attitude
@@ -146,3 +206,43 @@ def resolve_attitude(attitude, airframe):
         return Attitude.mast_vertical(airframe.hardpoints.mast_axis)
     raise InputError(f"attitude must be an Attitude or one of {list(ATTITUDE_SOURCES)}",
                      attitude)
+
+
+def to_right_handed(yaw, pitch, roll):
+    """Right-handed rotation angles about +x, +y, +z (x aft, y right, z up) of the aerospace
+    Euler angles used by slingloads (``docs/conventions.md``, section 8).
+
+    The attitude R = Rz(-yaw) Ry(pitch) Rx(-roll) (body to earth, yaw nose right, pitch nose
+    up, roll right side down) is Rz(rz) Ry(ry) Rx(rx) with right-handed angles
+    ``(rx, ry, rz) = (-roll, pitch, -yaw)``: in these axes nose right and right side down
+    are negative rotations about +z and +x, nose up a positive one about +y. The lateral
+    pendulum's airframe angle theta2 is such an ``rx``.
+
+    Parameters
+    ----------
+    yaw, pitch, roll : float or array_like
+        [rad]
+
+    Returns
+    -------
+    rx, ry, rz : float or ndarray
+        [rad]
+    """
+    return -np.asarray(roll, float), np.asarray(pitch, float), -np.asarray(yaw, float)
+
+
+def from_right_handed(rx, ry, rz):
+    """Aerospace (yaw, pitch, roll) of right-handed angles about +x, +y, +z: the inverse of
+    :func:`to_right_handed`.
+
+    Parameters
+    ----------
+    rx, ry, rz : float or array_like
+        [rad]
+
+    Returns
+    -------
+    yaw, pitch, roll : float or ndarray
+        [rad]
+    """
+    return -np.asarray(rz, float), np.asarray(ry, float), -np.asarray(rx, float)

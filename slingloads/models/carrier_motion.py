@@ -285,7 +285,12 @@ class ConstantAcceleration(_Motion):
     velocity_jump = 0.0
 
     def describe(self):
-        """One-line description for tables."""
+        """One-line description for tables.
+
+        Returns
+        -------
+        str
+        """
         return (f"constant acceleration {self.rate:.4g} m/s^2 for "
                 f"{self.duration:.4g} s, then {self.then}")
 
@@ -306,8 +311,23 @@ class ConstantAcceleration(_Motion):
         return s, v, acc
 
     def kinematics_at(self, t):
-        """S [m], S' [m/s], S'' [m/s^2] at one time ``t`` [s]: :meth:`_kinematics` in floats,
-        operation for operation (``min(max(x, lo), hi)`` is np.clip's value)."""
+        """S, S', S'' at one time, as floats: :meth:`_kinematics` operation for operation
+        (``min(max(x, lo), hi)`` is np.clip's value).
+
+        Parameters
+        ----------
+        t : float
+            Time. [s]
+
+        Returns
+        -------
+        s : float
+            Hook displacement. [m]
+        v : float
+            Hook velocity. [m/s]
+        a : float
+            Hook acceleration. [m/s^2]
+        """
         t, a, T = float(t), self.rate, self.duration
         stop = float(self.then == "stop")
         t1 = min(max(t, 0.0), T)
@@ -350,7 +370,12 @@ class VelocityStep(_Motion):
     breakpoints = (0.0,)
 
     def describe(self):
-        """One-line description for tables."""
+        """One-line description for tables.
+
+        Returns
+        -------
+        str
+        """
         return f"velocity step {self.delta_v:.4g} m/s"
 
     def _params(self):
@@ -364,18 +389,55 @@ class VelocityStep(_Motion):
         return s, v, np.zeros_like(s)
 
     def kinematics_at(self, t):
-        """S [m], S' [m/s], S'' [m/s^2] at one time ``t`` [s]: :meth:`_kinematics` in floats."""
+        """S, S', S'' at one time, as floats: :meth:`_kinematics` in floats.
+
+        Parameters
+        ----------
+        t : float
+            Time. [s]
+
+        Returns
+        -------
+        s : float
+            Hook displacement. [m]
+        v : float
+            Hook velocity. [m/s]
+        a : float
+            Hook acceleration. [m/s^2]
+        """
         t, delta_v = float(t), self.delta_v
         if t > 0:
             return delta_v * t, delta_v + 0.0 * t, 0.0
         return 0.0, 0.0, 0.0
 
     def velocity(self, t):
-        """S'(t) (dV for t > 0). [m/s]"""
+        """S'(t) (dV for t > 0).
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            [m/s]
+        """
         return self.kinematics(t)[1]
 
     def acceleration(self, t):
-        """S''(t) for t > 0 (zero; the impulse at t = 0 is :attr:`velocity_jump`). [m/s^2]"""
+        """S''(t) for t > 0 (zero; the impulse at t = 0 is :attr:`velocity_jump`).
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            [m/s^2]
+        """
         return self.kinematics(t)[2]
 
 
@@ -467,11 +529,31 @@ class TimeHistory(_Motion):
         return float(np.min(np.diff(self.time)))
 
     def describe(self):
-        """One-line description for tables."""
+        """One-line description for tables.
+
+        Returns
+        -------
+        str
+        """
         return f"{self.name} ({self.time.size} samples over {self.end_time:.4g} s)"
 
     def kinematics(self, t):
-        """Displacement [m], velocity [m/s] and acceleration [m/s^2] at times ``t`` [s]."""
+        """Displacement, velocity and acceleration at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        s : ndarray
+            Hook displacement. [m]
+        v : ndarray
+            Hook velocity. [m/s]
+        a : ndarray
+            Hook acceleration. [m/s^2]
+        """
         t = np.asarray(t, dtype=float)
         t_end = self.time[-1]
         inside = np.clip(t, 0.0, t_end)
@@ -488,6 +570,16 @@ class TimeHistory(_Motion):
         :class:`~slingloads.models.cubic_spline.PiecewiseCubic`): the interval with
         ``x[i] <= t < x[i + 1]`` (the last one closed), then the sum of ``c[k] s**(m - k)``,
         ``s = t - x[i]``, from the constant term up, the powers by repeated products.
+
+        Parameters
+        ----------
+        t : float
+            Time. [s]
+
+        Returns
+        -------
+        s, v, a : float
+            Displacement [m], velocity [m/s], acceleration [m/s^2].
         """
         t = float(t)
         if t < 0:
@@ -539,6 +631,11 @@ def make_motion(kind, **parameters):
     **parameters
         The parameters of that motion class, in SI.
 
+    Returns
+    -------
+    carrier motion
+        An instance of the motion class named.
+
     Raises
     ------
     InputError
@@ -584,10 +681,10 @@ class MotionBatch:
         by_kind = {}
         histories = {}
         for i, motion in enumerate(motions):
-            if isinstance(motion, TimeHistory):
-                histories.setdefault(id(motion), (motion, []))[1].append(i)
-            elif type(motion) in MOTION_TYPES.values():
+            if type(motion) in MOTION_TYPES.values() and not isinstance(motion, TimeHistory):
                 by_kind.setdefault(type(motion), []).append(i)
+            elif callable(getattr(motion, "kinematics", None)):  # histories, piecewise...
+                histories.setdefault(id(motion), (motion, []))[1].append(i)
             else:
                 raise InputError("unknown carrier motion object; valid types are "
                                  f"{sorted(MOTION_TYPES)}", type(motion).__name__)
@@ -600,7 +697,18 @@ class MotionBatch:
         self.velocity_jump = np.array([m.velocity_jump for m in motions], dtype=float)
 
     def kinematics(self, t):
-        """S, S', S'' of every run at one time ``t`` [s]; three arrays of shape (runs,)."""
+        """S, S', S'' of every run at one time.
+
+        Parameters
+        ----------
+        t : float
+            Time. [s]
+
+        Returns
+        -------
+        ndarray, shape (3, runs)
+            Displacement [m], velocity [m/s] and acceleration [m/s^2] of each run.
+        """
         out = np.empty((3, self.size))
         for idx, function, arrays in self._groups:
             s, v, a = function(np.float64(t), **arrays)

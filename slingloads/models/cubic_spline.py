@@ -47,7 +47,18 @@ class PiecewiseCubic:
         return value
 
     def derivative(self, nu=1):
-        """The ``nu``-th derivative, a :class:`PiecewiseCubic` of lower order."""
+        """The ``nu``-th derivative, a :class:`PiecewiseCubic` of lower order.
+
+        Parameters
+        ----------
+        nu : int
+            Order of the derivative, >= 1.
+
+        Returns
+        -------
+        PiecewiseCubic
+            In the units of the values per unit of x to the ``nu``.
+        """
         k = self.c.shape[0]
         if nu >= k:
             return PiecewiseCubic(np.zeros((1, self.c.shape[1])), self.x)

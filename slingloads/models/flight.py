@@ -105,7 +105,7 @@ class FlightCondition:
     @property
     def tas(self):
         """True airspeed V_EAS sqrt(rho0 / rho). [m/s]"""
-        return self.eas / np.sqrt(self.density_ratio)
+        return float(self.eas / np.sqrt(self.density_ratio))
 
     @property
     def dynamic_pressure(self):

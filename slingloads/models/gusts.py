@@ -116,7 +116,18 @@ class StepGust:
         return f"step {self.amplitude:.3g} m/s"
 
     def velocity(self, t):
-        """Lateral gust velocity [m/s] at times ``t`` [s] (array_like)."""
+        """Lateral gust velocity at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            Gust velocity, positive from the right (air moving right to left). [m/s]
+        """
         t = np.asarray(t, dtype=float)
         return np.where(t >= self.onset, self.amplitude, 0.0)
 
@@ -156,6 +167,18 @@ class FiniteGust(StepGust):
         return f"finite {self.amplitude:.3g} m/s, {self.duration:.3g} s"
 
     def velocity(self, t):
+        """Lateral gust velocity at times ``t`` (the amplitude from the onset for ``duration``).
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            Gust velocity, positive from the right (air moving right to left). [m/s]
+        """
         t = np.asarray(t, dtype=float)
         inside = (t >= self.onset) & (t < self.onset + self.duration)
         return np.where(inside, self.amplitude, 0.0)
@@ -172,6 +195,18 @@ class OneMinusCosineGust(FiniteGust):
         return f"1-cosine {self.amplitude:.3g} m/s, {self.duration:.3g} s"
 
     def velocity(self, t):
+        """Lateral gust velocity at times ``t`` (a 1-cosine pulse from the onset).
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            Gust velocity, positive from the right (air moving right to left). [m/s]
+        """
         t = np.asarray(t, dtype=float)
         tau = (t - self.onset) / self.duration
         inside = (tau >= 0) & (tau < 1)
@@ -227,6 +262,18 @@ class SustainedGust(StepGust):
         return (f"continuous {self.amplitude:.3g} m/s held, rise {self.rise_time:.3g} s")
 
     def velocity(self, t):
+        """Lateral gust velocity at times ``t`` (a half-cosine rise, then held).
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            Gust velocity, positive from the right (air moving right to left). [m/s]
+        """
         t = np.asarray(t, dtype=float)
         if self.rise_time == 0:
             return np.where(t >= self.onset, self.amplitude, 0.0)
@@ -270,6 +317,18 @@ class HarmonicGust(StepGust):
         return f"harmonic {self.amplitude:.3g} m/s, period {self.period:.3g} s"
 
     def velocity(self, t):
+        """Lateral gust velocity at times ``t`` (a sine from the onset).
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            Gust velocity, positive from the right (air moving right to left). [m/s]
+        """
         t = np.asarray(t, dtype=float)
         phase = 2 * np.pi * (t - self.onset) / self.period
         return np.where(t >= self.onset, self.amplitude * np.sin(phase), 0.0)
@@ -309,9 +368,21 @@ def dryden_lateral_spectrum(omega, intensity, scale_length, tas):
 
 
 def dryden_variance_fraction(x):
-    """Share of the Dryden lateral variance below the reduced frequency x = L_v omega / V:
+    """Share of the Dryden lateral variance below a reduced frequency.
+
     :math:`F(x) = (2\\arctan x - x/(1 + x^2))/\\pi` (the spectrum integrated in closed form;
-    F(0) = 0, F(inf) = 1). [-]"""
+    F(0) = 0, F(inf) = 1).
+
+    Parameters
+    ----------
+    x : array_like
+        Reduced frequency L_v omega / V, >= 0. [-]
+
+    Returns
+    -------
+    ndarray
+        F(x). [-]
+    """
     x = np.asarray(x, dtype=float)
     return (2.0 * np.arctan(x) - x / (1.0 + x * x)) / np.pi
 
@@ -438,9 +509,24 @@ class DrydenTurbulence:
 
     @classmethod
     def low_altitude(cls, altitude, tas, severity="moderate", **options):
-        """The realisation at ``altitude`` [m] above ground (10 to 1000 ft) and true airspeed
-        ``tas`` [m/s], with the MIL-F-8785C intensity and scale length
-        (:func:`low_altitude_turbulence`); ``options`` as the class."""
+        """The realisation with the MIL-F-8785C low-altitude intensity and scale length
+        (:func:`low_altitude_turbulence`).
+
+        Parameters
+        ----------
+        altitude : float
+            Height above ground, 10 to 1000 ft. [m]
+        tas : float
+            True airspeed. [m/s]
+        severity : str
+            As :func:`low_altitude_turbulence`.
+        **options
+            The other fields of the class (onset, duration, seed, band, ...).
+
+        Returns
+        -------
+        DrydenTurbulence
+        """
         intensity, length = low_altitude_turbulence(altitude, severity)
         return cls(intensity, length, tas, **options)
 
@@ -472,7 +558,18 @@ class DrydenTurbulence:
                 f"{self.duration:.3g} s, seed {self.seed}")
 
     def spectrum(self, omega):
-        """The target one-sided spectrum (:func:`dryden_lateral_spectrum`). [m^2/s^2/(rad/s)]"""
+        """The target one-sided spectrum (:func:`dryden_lateral_spectrum`).
+
+        Parameters
+        ----------
+        omega : array_like
+            Time frequency. [rad/s]
+
+        Returns
+        -------
+        ndarray
+            Power spectral density. [m^2/s^2/(rad/s)]
+        """
         return dryden_lateral_spectrum(omega, self.intensity, self.scale_length, self.tas)
 
     def _sum(self, t, chunk=4096):
@@ -484,6 +581,19 @@ class DrydenTurbulence:
         return out
 
     def velocity(self, t):
+        """Lateral gust velocity at times ``t`` (the sum of the realisation's cosines
+        between its onset and end, zero outside).
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            Gust velocity, positive from the right (air moving right to left). [m/s]
+        """
         t = np.asarray(t, dtype=float)
         inside = (t >= self.onset) & (t < self.end)
         out = np.zeros(t.shape)
@@ -544,6 +654,24 @@ class TabulatedGust:
         return f"tabulated, peak {self.peak:.3g} m/s"
 
     def velocity(self, t):
+        """Lateral gust velocity at times ``t``: the table, linear between its points, zero
+        before its first time.
+
+        Parameters
+        ----------
+        t : array_like
+            Times, not after the table's last time. [s]
+
+        Returns
+        -------
+        ndarray
+            Gust velocity. [m/s]
+
+        Raises
+        ------
+        InputError
+            For a time after the end of the table (no extrapolation).
+        """
         t = np.asarray(t, dtype=float)
         if np.any(t > self.time[-1] * (1 + 1e-12) + 1e-12):
             bad = float(np.max(t))
@@ -579,6 +707,16 @@ def make_gust(kind, amplitude=GUST_VELOCITY, onset=GUST_ONSET, duration=GUST_DUR
     period : float
         Period of the harmonic gust. [s]
 
+    Returns
+    -------
+    StepGust
+        The gust (a subclass of StepGust for every shape).
+
+    Raises
+    ------
+    InputError
+        For an unknown shape.
+
     Examples
     --------
     >>> g = make_gust("finite", duration=10.0)
@@ -604,6 +742,21 @@ STANDARD_SHAPES = ("step", "finite", "1-cosine", "continuous")
 
 def standard_gusts(amplitude=GUST_VELOCITY, onset=GUST_ONSET, duration=GUST_DURATION):
     """The four CS 29.341 shapes at the same amplitude: step, finite, 1-cosine, and the
-    sustained crosswind (continuous, rising over half of ``duration``)."""
+    sustained crosswind (continuous, rising over half of ``duration``).
+
+    Parameters
+    ----------
+    amplitude : float
+        Gust velocity. [m/s]
+    onset : float
+        Start of every gust. [s]
+    duration : float
+        Duration of the finite and 1-cosine gusts; twice the crosswind's rise. [s]
+
+    Returns
+    -------
+    tuple of gust
+        StepGust, FiniteGust, OneMinusCosineGust, SustainedGust.
+    """
     return tuple(make_gust(k, amplitude, onset, duration, rise_time=0.5 * duration)
                  for k in STANDARD_SHAPES)

@@ -2,12 +2,16 @@
 
 Each analysis has two integrators over the same right-hand side:
 
-* a **fixed-step classical Runge-Kutta (RK4)** integrator vectorised over runs, all runs of a
-  sweep at once (:func:`slingloads.analyses.lateral.sweep`,
+* a compiled batch integrator over all runs of a sweep at once: the **fixed-step classical
+  Runge-Kutta (RK4)** step of :mod:`slingloads.models.runge_kutta`
+  (:func:`slingloads.analyses.lateral.sweep`,
   :func:`slingloads.models.yaw_dynamics.integrate_rk4`): it uses ``t_end``, ``step`` and
-  ``output_interval``;
+  ``output_interval``; or the adaptive **Dormand-Prince 5(4)** pair of
+  :mod:`slingloads.models.dormand_prince` (:func:`slingloads.models.yaw_dynamics.integrate_dopri`,
+  and the multibody model's :mod:`slingloads.models.multibody.integrator`): it uses ``rtol``,
+  ``atol``, ``max_step``, ``t_end`` and ``output_interval``;
 * :func:`scipy.integrate.solve_ivp`, one run at a time (time histories of a chosen run, and
-  the reference the RK4 integrators are tested against): it uses ``method``, ``rtol``,
+  the reference the batch integrators are tested against): it uses ``method``, ``rtol``,
   ``atol``, ``max_step``, ``t_end`` and ``output_interval``.
 
 A field left at ``None`` takes the analysis's own default, chosen for what it integrates
@@ -92,8 +96,23 @@ class SolverSettings:
             object.__setattr__(self, f.name, value)
 
     def with_defaults(self, **defaults):
-        """A copy whose ``None`` fields (``t_end``, ``step``, ``output_interval``) take
-        ``defaults``; fields already set are kept. Unknown names are refused."""
+        """A copy whose ``None`` fields take the analysis's defaults; fields already set are
+        kept.
+
+        Parameters
+        ----------
+        **defaults : float
+            ``t_end`` [s], ``step`` [s], ``output_interval`` [s].
+
+        Returns
+        -------
+        SolverSettings
+
+        Raises
+        ------
+        InputError
+            For a name other than those three.
+        """
         unknown = sorted(set(defaults) - set(_OPTIONAL))
         if unknown:
             raise InputError(f"only {list(_OPTIONAL)} take analysis defaults", unknown[0])
@@ -131,6 +150,12 @@ class SolverSettings:
         return int(round(steps)), int(round(ratio))
 
     def output_times(self):
-        """Stored sample times of a fixed grid, 0 to ``t_end``. [s]"""
+        """Stored sample times of a fixed grid, 0 to ``t_end``.
+
+        Returns
+        -------
+        ndarray
+            [s]
+        """
         n_steps, every = self.fixed_grid()
         return np.arange(n_steps // every + 1) * self.output_interval

@@ -51,6 +51,11 @@ def canopy_cd_table():
     """Default canopy drag table: free-stream CD = 1.0 for alpha in [-8, 8] deg, wind axes.
 
     Times the default wake ratio 0.95 it gives the paper's effective 0.95 (section 3.3).
+
+    Returns
+    -------
+    Table1D
+        Column ``CD`` [-] against alpha [rad].
     """
     return Table1D(np.array([-PAPER_CD_RANGE, PAPER_CD_RANGE]),
                    {"CD": np.array([CANOPY_CD, CANOPY_CD])}, angle_name="alpha",
@@ -71,6 +76,15 @@ def extended_cd_table(cd=CANOPY_CD, valid=PAPER_CD_RANGE, collapsed=COLLAPSED_CD
     be flown from hover, where it hangs below its attachment and meets the flow at up to 90 deg
     as the airspeed builds. Like every canopy table here it carries no wake loss: the
     parachute's wake ratio does.
+
+    Parameters
+    ----------
+    cd : float
+        Free-stream CD over the valid range. [-]
+    valid : float
+        Half-width of the range of constant CD. [rad]
+    collapsed : float
+        CD broadside and in reverse flow. [-]
 
     Returns
     -------
@@ -164,16 +178,48 @@ class Parachute:
         return PARACHUTE_AXES[self.axes]
 
     def coefficient(self, alpha=0.0):
-        """Free-stream force coefficient CD (wind axes) or CT (canopy axes) at ``alpha``
-        [rad]; no wake ratio. [-]"""
+        """Free-stream force coefficient CD (wind axes) or CT (canopy axes); no wake ratio.
+
+        Parameters
+        ----------
+        alpha : array_like
+            Canopy angle of attack. [rad]
+
+        Returns
+        -------
+        ndarray
+            [-]
+        """
         return self.cd(self.column, alpha)
 
     def effective_coefficient(self, alpha=0.0):
-        """Coefficient times the wake ratio: the one factor the drag uses. [-]"""
+        """Coefficient times the wake ratio: the one factor the drag uses.
+
+        Parameters
+        ----------
+        alpha : array_like
+            Canopy angle of attack. [rad]
+
+        Returns
+        -------
+        ndarray
+            [-]
+        """
         return self.wake_ratio * self.coefficient(alpha)
 
     def drag_area(self, alpha=0.0):
-        """Effective drag area eta_wake * CD(alpha) * A [m^2] (no opening factor)."""
+        """Effective drag area eta_wake CD(alpha) A (no opening factor).
+
+        Parameters
+        ----------
+        alpha : array_like
+            Canopy angle of attack. [rad]
+
+        Returns
+        -------
+        ndarray
+            [m^2]
+        """
         return self.effective_coefficient(alpha) * self.area
 
     def drag(self, q, alpha=0.0, opening=False):
@@ -187,6 +233,11 @@ class Parachute:
             Canopy angle of attack. [rad]
         opening : bool
             Multiply by the opening-load factor.
+
+        Returns
+        -------
+        ndarray
+            Drag. [N]
         """
         factor = self.opening_factor if opening else 1.0
         return factor * np.asarray(q, float) * self.drag_area(alpha)
@@ -200,5 +251,10 @@ class Parachute:
             Direction of the relative wind at the canopy (downstream). [-]
         canopy_axis : ndarray, shape (n, 3)
             Direction of the line from the attachment to the canopy. [-]
+
+        Returns
+        -------
+        ndarray, shape (n, 3)
+            Unit vector, airframe axes. [-]
         """
         return np.asarray(wind if self.axes == "wind" else canopy_axis, float)

@@ -169,7 +169,14 @@ class LateralPendulum:
         return RIGID_STATES if self.rigid else ELASTIC_STATES
 
     def arrays(self):
-        """Parameters as a dict of floats in the argument order of the derivative functions."""
+        """Parameters as a dict of floats in the argument order of the derivative functions.
+
+        Returns
+        -------
+        dict of str to float
+            mass [kg], inertia [kg m^2], e [m], length [m], stiffness [N/m], c_lat [N s/m],
+            c_roll [N m s/rad], g [m/s^2], h_d [m].
+        """
         return {
             "mass": self.body.mass, "inertia": self.body.roll_inertia,
             "e": self.body.cg_below_hub, "length": self.rope_length,
@@ -200,7 +207,23 @@ class LateralPendulum:
         return np.array([0.0, -self.hanging_length, 0.0, -velocity_jump, 0.0, 0.0])
 
     def derivatives(self, x, s_vel, s_acc):
-        """State derivative and cable tension; see :func:`rigid_rope_derivatives`."""
+        """State derivative and cable tension; see :func:`rigid_rope_derivatives` and
+        :func:`elastic_cable_derivatives`.
+
+        Parameters
+        ----------
+        x : array_like, shape (states, ...)
+            State. [m, rad, m/s, rad/s]
+        s_vel, s_acc : array_like
+            Hook's lateral velocity [m/s] and acceleration [m/s^2].
+
+        Returns
+        -------
+        dx : ndarray, shape (states, ...)
+            [state units / s]
+        tension : ndarray
+            [N]
+        """
         function = rigid_rope_derivatives if self.rigid else elastic_cable_derivatives
         return function(x, s_vel, s_acc, **self.arrays())
 
@@ -210,13 +233,24 @@ class LateralPendulum:
         .. math:: M = m \\begin{bmatrix} l^2 & l e \\\\ l e & e^2 + k^2 \\end{bmatrix}
 
         with l the hanging (stretched) length for the elastic cable.
+
+        Returns
+        -------
+        ndarray, shape (2, 2)
+            [kg m^2]
         """
         m, e, length = self.body.mass, self.body.cg_below_hub, self.hanging_length
         k2 = self.body.roll_inertia / m
         return m * np.array([[length**2, length * e], [length * e, e * e + k2]])
 
     def stiffness_matrix(self):
-        """Linearised stiffness matrix in (theta1, theta2): diag(m g l, m g e). [N m]"""
+        """Linearised stiffness matrix in (theta1, theta2): diag(m g l, m g e).
+
+        Returns
+        -------
+        ndarray, shape (2, 2)
+            [N m]
+        """
         w, e, length = self.weight, self.body.cg_below_hub, self.hanging_length
         return np.diag([w * length, w * e])
 
@@ -280,7 +314,13 @@ class LinearModes:
                                                                   self.omega, 1.0), np.inf)
 
     def to_frame(self):
-        """Modes as a DataFrame with unit-labelled columns."""
+        """Modes as a DataFrame with unit-labelled columns.
+
+        Returns
+        -------
+        pandas.DataFrame
+            A row per mode: omega [rad/s], f [Hz], period [s], mode shapes [-].
+        """
         return pd.DataFrame({
             "mode": np.arange(1, self.omega.size + 1), "kind": list(self.kinds),
             "omega [rad/s]": self.omega, "f [Hz]": self.frequency, "period [s]": self.period,
@@ -335,6 +375,38 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
         Rope tension T, negative where the rope would go slack. [N]
     """
     th1, th2, w1, w2 = x
+    *dx, tension = rigid_rope_equations(th1, th2, w1, w2, s_vel, s_acc, mass, inertia, e,
+                                        length, c_lat, c_roll, g, h_d)
+    return np.stack(dx), tension
+
+
+def rigid_rope_equations(th1, th2, w1, w2, s_vel, s_acc, mass, inertia, e, length, c_lat,
+                         c_roll, g, h_d):
+    """The equations of :func:`rigid_rope_derivatives`, written once for numpy and for the
+    compiled batch.
+
+    Elementwise operations only, so that the same function runs on arrays (numpy) and, compiled
+    by numba, on floats (:func:`slingloads.models.pendulum_batch.rigid_rope`): the two give the
+    same numbers to the last bit.
+
+    Parameters
+    ----------
+    th1, th2 : array_like or float
+        Rope and airframe angles. [rad]
+    w1, w2 : array_like or float
+        Their rates. [rad/s]
+    s_vel, s_acc, mass, inertia, e, length, c_lat, c_roll, g, h_d
+        As :func:`rigid_rope_derivatives`.
+
+    Returns
+    -------
+    w1, w2 : array_like or float
+        [rad/s]
+    a1, a2 : array_like or float
+        Angular accelerations. [rad/s^2]
+    tension : array_like or float
+        Rope tension, negative where the rope would go slack. [N]
+    """
     s1, c1, s2, c2 = np.sin(th1), np.cos(th1), np.sin(th2), np.cos(th2)
     sd, cd = np.sin(th1 - th2), np.cos(th1 - th2)
     k2 = inertia / mass
@@ -352,7 +424,7 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
     # tension from Newton along the rope, hub -> hook unit vector u = (-sin th1, cos th1)
     tension = mass * (-s1 * (s_acc + drag) + length * w1 * w1 - e * sd * a2 + e * cd * w2 * w2
                       + g * c1)
-    return np.stack([w1, w2, a1, a2]), tension
+    return w1, w2, a1, a2, tension
 
 
 def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness,
@@ -391,6 +463,37 @@ def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffne
         Cable tension, >= 0. [N]
     """
     ry, rz, th2, vy, vz, w2 = x
+    *dx, tension = elastic_cable_equations(ry, rz, th2, vy, vz, w2, s_vel, s_acc, mass,
+                                           inertia, e, length, stiffness, c_lat, c_roll, g,
+                                           h_d)
+    return np.stack(dx), tension
+
+
+def elastic_cable_equations(ry, rz, th2, vy, vz, w2, s_vel, s_acc, mass, inertia, e, length,
+                            stiffness, c_lat, c_roll, g, h_d):
+    """The equations of :func:`elastic_cable_derivatives`, written once for numpy and for
+    the compiled batch (elementwise operations only, as :func:`rigid_rope_equations`).
+
+    Parameters
+    ----------
+    ry, rz : array_like or float
+        Hub position from the hook. [m]
+    th2 : array_like or float
+        Airframe angle. [rad]
+    vy, vz, w2 : array_like or float
+        Their rates. [m/s, m/s, rad/s]
+    s_vel, s_acc, mass, inertia, e, length, stiffness, c_lat, c_roll, g, h_d
+        As :func:`elastic_cable_derivatives`.
+
+    Returns
+    -------
+    vy, vz, w2 : array_like or float
+        [m/s, m/s, rad/s]
+    ay, az, a2 : array_like or float
+        Accelerations. [m/s^2, m/s^2, rad/s^2]
+    tension : array_like or float
+        Cable tension, >= 0. [N]
+    """
     s2, c2 = np.sin(th2), np.cos(th2)
     dist = np.sqrt(ry * ry + rz * rz)
     tension = stiffness * np.maximum(dist - length, 0.0)
@@ -400,26 +503,64 @@ def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffne
     a2 = (-e * (fy * c2 + fz * s2) - c_roll * w2 + h_d * c2 * drag) / inertia
     ay = (fy - drag) / mass - s_acc - e * a2 * c2 + e * w2 * w2 * s2
     az = fz / mass - g - e * a2 * s2 - e * w2 * w2 * c2
-    return np.stack([vy, vz, w2, ay, az, a2]), tension
+    return vy, vz, w2, ay, az, a2, tension
 
 
 def rope_angle(x, rigid):
-    """theta1 from a state array (first axis = states). [rad]"""
+    """theta1, the rope's angle from the vertical, from a state array.
+
+    Parameters
+    ----------
+    x : array_like
+        State array, first axis the states (rigid rope: theta1, theta2, rates; elastic
+        cable: y, z, theta2, rates). [m, rad, m/s, rad/s]
+    rigid : bool
+        Rigid rope (else elastic cable).
+
+    Returns
+    -------
+    ndarray
+        [rad]
+    """
     x = np.asarray(x)
     return x[0] if rigid else np.arctan2(x[0], -x[1])
 
 
 def airframe_angle(x, rigid):
-    """theta2 from a state array (first axis = states). [rad]"""
+    """theta2, the airframe's roll angle, from a state array.
+
+    Parameters
+    ----------
+    x : array_like
+        State array, first axis the states (rigid rope: theta1, theta2, rates; elastic
+        cable: y, z, theta2, rates). [m, rad, m/s, rad/s]
+    rigid : bool
+        Rigid rope (else elastic cable).
+
+    Returns
+    -------
+    ndarray
+        [rad]
+    """
     x = np.asarray(x)
     return x[1] if rigid else x[2]
 
 
 def load_angle(theta1, theta2):
-    """theta1 - theta2 wrapped to [-pi, pi): the angle of the cable force from the mast. [rad]
+    """theta1 - theta2 wrapped to [-pi, pi): the angle of the cable force from the mast.
 
     The airframe angle theta2 is continuous (it counts whole turns if the airframe tumbles on
     a slack cable); the angle between two directions is taken modulo a turn.
+
+    Parameters
+    ----------
+    theta1, theta2 : array_like
+        Rope and airframe angles. [rad]
+
+    Returns
+    -------
+    ndarray
+        [rad]
     """
     return np.mod(np.asarray(theta1) - np.asarray(theta2) + np.pi, 2.0 * np.pi) - np.pi
 

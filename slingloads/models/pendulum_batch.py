@@ -1,22 +1,24 @@
 """Compiled fixed-step RK4 of many lateral-pendulum runs, with their running peaks.
 
-The same equations as :func:`slingloads.models.pendulum.rigid_rope_derivatives` and
-:func:`~slingloads.models.pendulum.elastic_cable_derivatives`, written on scalars (operation
-for operation, so that the results agree to round-off), and the same step and peak logic as
-the vectorised numpy sweep of :func:`slingloads.analyses.lateral.sweep`: each run on its own
-(runs in parallel over the cores), every run on the shared time grid, the hook's velocity and
-acceleration read from a table per distinct motion. Compiled with
-`numba <https://numba.pydata.org>`_ (``cache=True``: the machine code is kept in this
-package's ``__pycache__`` after the first call). The module is self-contained, so numba's own
-check of this file's source keeps the cache valid.
+The equations of :func:`slingloads.models.pendulum.rigid_rope_derivatives` and
+:func:`~slingloads.models.pendulum.elastic_cable_derivatives`, compiled from their one source
+(:func:`~slingloads.models.pendulum.rigid_rope_equations`,
+:func:`~slingloads.models.pendulum.elastic_cable_equations`, so that the results are the
+numpy ones to the last bit), stepped by the RK4 step of
+:mod:`slingloads.models.runge_kutta` with the peak logic of
+:func:`slingloads.analyses.lateral.sweep`: each run on its own (runs in parallel over the
+cores), every run on the shared time grid, the hook's velocity and acceleration read from a
+table per distinct motion. Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``:
+the machine code is kept in this package's ``__pycache__`` after the first call; it is dropped
+when a source of the package changes, :mod:`slingloads.models.runge_kutta`).
 
-Parameter rows (``P``, one per run) hold, in order: mass [kg], roll inertia [kg m^2], CG below
-hub e [m], rope length [m], cable spring rate EA/l [N/m] (unused for the rigid rope), lateral
-damping [N s/m], roll damping [N m s/rad], gravity [m/s^2], damped point height [m].
+Parameter rows (``P``, one per run) are laid out by :data:`LAYOUT`
+(:mod:`slingloads.models.packed`).
 
 Drive tables (``drive``, shape (motions, nodes, 3, 2)): for the step starting at node i, the
 hook's (velocity [m/s], acceleration [m/s^2]) at its start (just after a jump there), middle
-and end (just before a jump there).
+and end (just before a jump there), as the RK4 step expects
+(:mod:`slingloads.models.runge_kutta`).
 """
 
 from __future__ import annotations
@@ -26,63 +28,103 @@ import math
 import numba
 import numpy as np
 
+from slingloads.models.packed import Field, Layout
+from slingloads.models.pendulum import elastic_cable_equations, rigid_rope_equations
+from slingloads.models.runge_kutta import rk4_stepper
+
+#: A row of ``P``: the parameters of one run (:meth:`LateralPendulum.arrays
+#: <slingloads.models.pendulum.LateralPendulum.arrays>`).
+LAYOUT = Layout((
+    Field("mass", "kg", "mass of the carried helicopter"),
+    Field("inertia", "kg m^2", "roll inertia about the CG"),
+    Field("e", "m", "CG below the hub"),
+    Field("length", "m", "rope length"),
+    Field("stiffness", "N/m", "cable spring rate EA/l (unused for the rigid rope)"),
+    Field("c_lat", "N s/m", "lateral damping"),
+    Field("c_roll", "N m s/rad", "roll damping"),
+    Field("g", "m/s^2", "acceleration of gravity"),
+    Field("h_d", "m", "height of the damped point above the CG"),
+))
 #: Order of the parameters in a row of ``P``.
-PARAMETERS = ("mass", "inertia", "e", "length", "stiffness", "c_lat", "c_roll", "g", "h_d")
+PARAMETERS = LAYOUT.names
+MASS, INERTIA, E, LENGTH = LAYOUT["mass"], LAYOUT["inertia"], LAYOUT["e"], LAYOUT["length"]
+STIFFNESS, C_LAT, C_ROLL = LAYOUT["stiffness"], LAYOUT["c_lat"], LAYOUT["c_roll"]
+G, H_D = LAYOUT["g"], LAYOUT["h_d"]
 #: Signals whose running peak is kept: |theta1 - theta2|, |theta1|, T/(m g), -T/(m g).
 N_SIGNALS = 4
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
+_inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
+
+# the equations, compiled from their one source in slingloads.models.pendulum
+_rigid_rope = _inline_jit(rigid_rope_equations)
+_elastic_cable = _inline_jit(elastic_cable_equations)
 
 
 @_jit
 def rigid_rope(x, s_vel, s_acc, p, dx):
-    """Rigid rope: write the state derivative into ``dx``; return the tension [N]."""
-    mass, inertia, e, length = p[0], p[1], p[2], p[3]
-    c_lat, c_roll, g, h_d = p[5], p[6], p[7], p[8]
-    th1, th2, w1, w2 = x[0], x[1], x[2], x[3]
-    s1, c1, s2, c2 = math.sin(th1), math.cos(th1), math.sin(th2), math.cos(th2)
-    sd, cd = math.sin(th1 - th2), math.cos(th1 - th2)
-    k2 = inertia / mass
-    le = length * e
-    yp_dot = s_vel + length * c1 * w1 + (e - h_d) * c2 * w2
-    drag = c_lat * yp_dot / mass
-    f1 = -le * sd * w2 * w2 - g * length * s1 - length * c1 * (s_acc + drag)
-    f2 = (le * sd * w1 * w1 - g * e * s2 - e * c2 * s_acc - (e - h_d) * c2 * drag
-          - c_roll * w2 / mass)
-    m11, m12, m22 = length * length, le * cd, e * e + k2
-    det = m11 * m22 - m12 * m12
-    a1 = (m22 * f1 - m12 * f2) / det
-    a2 = (m11 * f2 - m12 * f1) / det
-    dx[0], dx[1], dx[2], dx[3] = w1, w2, a1, a2
-    return mass * (-s1 * (s_acc + drag) + length * w1 * w1 - e * sd * a2 + e * cd * w2 * w2
-                   + g * c1)
+    """Rigid rope: the state derivative into ``dx`` and the rope tension.
 
+    Parameters
+    ----------
+    x : ndarray, shape (4,)
+        State: theta1, theta2 [rad], their rates [rad/s].
+    s_vel, s_acc : float
+        Hook's lateral velocity [m/s] and acceleration [m/s^2].
+    p : ndarray, shape (9,)
+        Parameter row (:data:`LAYOUT`).
+    dx : ndarray, shape (4,)
+        Receives the state derivative. [state units / s]
 
-@_jit
-def elastic_cable(x, s_vel, s_acc, p, dx):
-    """Elastic tension-only cable: write the state derivative into ``dx``; return T [N]."""
-    mass, inertia, e, length, stiffness = p[0], p[1], p[2], p[3], p[4]
-    c_lat, c_roll, g, h_d = p[5], p[6], p[7], p[8]
-    ry, rz, th2, vy, vz, w2 = x[0], x[1], x[2], x[3], x[4], x[5]
-    s2, c2 = math.sin(th2), math.cos(th2)
-    dist = math.sqrt(ry * ry + rz * rz)
-    tension = stiffness * max(dist - length, 0.0)
-    fy = -tension * ry / dist
-    fz = -tension * rz / dist
-    drag = c_lat * (s_vel + vy + (e - h_d) * c2 * w2)
-    a2 = (-e * (fy * c2 + fz * s2) - c_roll * w2 + h_d * c2 * drag) / inertia
-    ay = (fy - drag) / mass - s_acc - e * a2 * c2 + e * w2 * w2 * s2
-    az = fz / mass - g - e * a2 * s2 - e * w2 * w2 * c2
-    dx[0], dx[1], dx[2], dx[3], dx[4], dx[5] = vy, vz, w2, ay, az, a2
+    Returns
+    -------
+    float
+        Tension. [N]
+    """
+    dx[0], dx[1], dx[2], dx[3], tension = _rigid_rope(
+        x[0], x[1], x[2], x[3], s_vel, s_acc, p[MASS], p[INERTIA], p[E], p[LENGTH], p[C_LAT],
+        p[C_ROLL], p[G], p[H_D])
     return tension
 
 
 @_jit
-def _derivatives(rigid, x, s_vel, s_acc, p, dx):
+def elastic_cable(x, s_vel, s_acc, p, dx):
+    """Elastic tension-only cable: the state derivative into ``dx`` and the tension.
+
+    Parameters
+    ----------
+    x : ndarray, shape (6,)
+        State: hub y, z from the hook [m], theta2 [rad], their rates [m/s, rad/s].
+    s_vel, s_acc : float
+        Hook's lateral velocity [m/s] and acceleration [m/s^2].
+    p : ndarray, shape (9,)
+        Parameter row (:data:`LAYOUT`).
+    dx : ndarray, shape (6,)
+        Receives the state derivative. [state units / s]
+
+    Returns
+    -------
+    float
+        Tension. [N]
+    """
+    dx[0], dx[1], dx[2], dx[3], dx[4], dx[5], tension = _elastic_cable(
+        x[0], x[1], x[2], x[3], x[4], x[5], s_vel, s_acc, p[MASS], p[INERTIA], p[E],
+        p[LENGTH], p[STIFFNESS], p[C_LAT], p[C_ROLL], p[G], p[H_D])
+    return tension
+
+
+@_inline_jit
+def _rhs(x, drive, i, stage, args, dx):
+    """The right-hand side of the RK4 step: ``args`` = (rigid, parameter row); returns the
+    tension [N]."""
+    rigid, p = args
     if rigid:
-        return rigid_rope(x, s_vel, s_acc, p, dx)
-    return elastic_cable(x, s_vel, s_acc, p, dx)
+        return rigid_rope(x, drive[i, stage, 0], drive[i, stage, 1], p, dx)
+    return elastic_cable(x, drive[i, stage, 0], drive[i, stage, 1], p, dx)
+
+
+_rk4_step = rk4_stepper(_rhs)
 
 
 @_jit
@@ -142,12 +184,13 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
         y0, y1, y2, yl = (np.empty(N_SIGNALS), np.empty(N_SIGNALS), np.empty(N_SIGNALS),
                           np.empty(N_SIGNALS))
         p = P[j]
+        args = (rigid, p)
         dr = drive[profile[j]]
-        weight = p[0] * p[7]
+        weight = p[MASS] * p[G]
         for m in range(n):
             x[m] = x0[j, m]
         bj, tj = best[j], t_best[j]
-        tension = _derivatives(rigid, x, dr[0, 0, 0], dr[0, 0, 1], p, k1)
+        tension = _rhs(x, dr, 0, 0, args, k1)
         ok1, alive = _signals(rigid, x, tension, weight, True, y1)
         for s in range(N_SIGNALS):
             bj[s] = -np.inf if (s < 2 and not ok1) else y1[s]
@@ -157,23 +200,13 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
         for i in range(n_steps):
             t, t_next = nodes[i], nodes[i + 1]
             h = t_next - t
-            for m in range(n):
-                tmp[m] = x[m] + 0.5 * h * k1[m]
-            _derivatives(rigid, tmp, dr[i, 1, 0], dr[i, 1, 1], p, k2)
-            for m in range(n):
-                tmp[m] = x[m] + 0.5 * h * k2[m]
-            _derivatives(rigid, tmp, dr[i, 1, 0], dr[i, 1, 1], p, k3)
-            for m in range(n):
-                tmp[m] = x[m] + h * k3[m]
-            _derivatives(rigid, tmp, dr[i, 2, 0], dr[i, 2, 1], p, k4)
-            for m in range(n):
-                x[m] = x[m] + (h / 6.0) * (k1[m] + 2.0 * k2[m] + 2.0 * k3[m] + k4[m])
+            _rk4_step(x, h, dr, i, args, k1, k2, k3, k4, tmp, x)
             if jumps[i + 1]:
                 # the tension jumps with S'': count its value just before, then go on after
-                tension = _derivatives(rigid, x, dr[i, 2, 0], dr[i, 2, 1], p, k1)
+                tension = _rhs(x, dr, i, 2, args, k1)
                 ok_left, alive = _signals(rigid, x, tension, weight, alive, yl)
                 _keep(bj, tj, yl, ok_left, t_next)
-            tension = _derivatives(rigid, x, dr[i + 1, 0, 0], dr[i + 1, 0, 1], p, k1)
+            tension = _rhs(x, dr, i + 1, 0, args, k1)
             ok2, alive = _signals(rigid, x, tension, weight, alive, y2)
             if (i > 0 and abs(h - h_prev) <= 1e-9 * h and not (jumps[i] or jumps[i + 1])
                     and ok0 and ok1 and ok2):

@@ -103,7 +103,23 @@ SAMPLES = {
 
 
 def sample_reference(name="HC1"):
-    """Reference quantities of sample aircraft ``name`` ("HC1" or "HC2")."""
+    """Reference quantities of a sample aircraft.
+
+    Parameters
+    ----------
+    name : {"HC1", "HC2"}
+        Sample aircraft (case ignored).
+
+    Returns
+    -------
+    SampleReference
+        Mass [kg], inertias [kg m^2], areas [m^2], positions [m] and the other fields in SI.
+
+    Raises
+    ------
+    InputError
+        For an unknown name.
+    """
     key = str(name).upper()
     if key not in SAMPLES:
         raise InputError(f"unknown sample aircraft; valid names are {sorted(SAMPLES)}", name)
@@ -167,6 +183,11 @@ def sample_body(name="HC1"):
     """Mass properties of a sample aircraft: mass, CG at the origin, principal inertias
     (roll, pitch, yaw) about the CG, no product of inertia.
 
+    Parameters
+    ----------
+    name : {"HC1", "HC2"}
+        Sample aircraft (case ignored).
+
     Returns
     -------
     RigidBody
@@ -179,7 +200,19 @@ def sample_body(name="HC1"):
 
 
 def sample_hardpoints(name="HC1"):
-    """Hardpoints of a sample aircraft: hub, four mast feet 0.4 m below it, fin attachment."""
+    """Hardpoints of a sample aircraft: hub, four mast feet 0.4 m below it, fin
+    attachment.
+
+    Parameters
+    ----------
+    name : {"HC1", "HC2"}
+        Sample aircraft (case ignored).
+
+    Returns
+    -------
+    Hardpoints
+        Airframe axes. [m]
+    """
     ref = sample_reference(name)
     hub = np.array(ref.hub)
     feet = hub + np.array([[-0.4, -0.4, -0.4], [-0.4, 0.4, -0.4],
@@ -191,6 +224,11 @@ def sample_htail(name="HC1"):
     """Horizontal tail of a sample aircraft (full-tail configuration of the transport without
     parachute, paper section 5): normal-force coefficient CN against its local angle of attack,
     -180..180 deg, on ``htail_area``.
+
+    Parameters
+    ----------
+    name : {"HC1", "HC2"}
+        Sample aircraft (case ignored).
 
     Returns
     -------

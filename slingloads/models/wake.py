@@ -124,7 +124,17 @@ class TabulatedWake:
         return np.interp(x, self.distance, self.ratio)
 
     def line_length(self, target=TARGET_RATIO):
-        """Shortest distance [m] at which the ratio reaches ``target`` (linear between points).
+        """Shortest distance at which the ratio reaches ``target`` (linear between points).
+
+        Parameters
+        ----------
+        target : float
+            Dynamic-pressure ratio q_wake / q to reach, in (0, 1]. [-]
+
+        Returns
+        -------
+        float
+            Distance behind the body. [m]
 
         Raises
         ------
@@ -194,12 +204,34 @@ class BluffBodyWake:
         object.__setattr__(self, "min_distance", xmin)
 
     def centreline_defect(self, distance):
-        """Centreline velocity defect u_d / U [-] at ``distance`` [m]."""
+        """Centreline velocity defect of the wake.
+
+        Parameters
+        ----------
+        distance : numeric
+            Distance behind the body, at least ``min_distance``. [m]
+
+        Returns
+        -------
+        numeric
+            u_d / U. [-]
+        """
         x = self._check(distance)
         return self.coefficient * self.drag_area ** (1 / 3) / (x - self.virtual_origin) ** (2 / 3)
 
     def half_width(self, distance):
-        """Wake half-width b (radius of half defect) [m] at ``distance`` [m]."""
+        """Wake half-width b (radius of half defect).
+
+        Parameters
+        ----------
+        distance : numeric
+            Distance behind the body, at least ``min_distance``. [m]
+
+        Returns
+        -------
+        numeric
+            Half-width. [m]
+        """
         x = self._check(distance)
         return (np.sqrt(np.log(2.0) / (2 * np.pi * self.coefficient))
                 * (self.drag_area * (x - self.virtual_origin)) ** (1 / 3))
@@ -216,7 +248,18 @@ class BluffBodyWake:
         return 1.0 - 2.0 * mean_u + mean_u2
 
     def line_length(self, target=TARGET_RATIO):
-        """Shortest distance [m] at which the ratio reaches ``target`` (it rises with x)."""
+        """Shortest distance at which the ratio reaches ``target`` (it rises with x).
+
+        Parameters
+        ----------
+        target : float
+            Dynamic-pressure ratio q_wake / q to reach, in (0, 1]. [-]
+
+        Returns
+        -------
+        float
+            Distance behind the body, at least ``min_distance``. [m]
+        """
         target = _check_target(target)
         if self(self.min_distance) >= target:
             return float(self.min_distance)

@@ -1,32 +1,30 @@
 """Compiled batch integrators of many runs of the 1-DOF yaw model: fixed-step RK4 and
 adaptive Dormand-Prince 5(4).
 
-The same moments as :meth:`slingloads.models.yaw_dynamics.YawModel.moments` (fuselage table,
-fin at its local sideslip, Apollo legacy drogue), written on scalars operation for operation,
-and the same step logic as the numpy batch of
-:func:`slingloads.models.yaw_dynamics.integrate_rk4`: each run on its own (runs in parallel
-over the cores) on the shared time grid, the relative wind read from a table per distinct
-gust, a run that leaves a table frozen from the start of that step. Compiled with `numba <https://numba.pydata.org>`_
-(``cache=True``); the module is self-contained, so numba's own check of this file's source
-keeps the cache valid.
+The moments of :meth:`slingloads.models.yaw_dynamics.YawModel.moments` (fuselage table, fin at
+its local sideslip, Apollo legacy drogue), compiled from their one source
+(:func:`slingloads.models.yaw_dynamics.make_yaw_moments`), stepped by the RK4 step of
+:mod:`slingloads.models.runge_kutta` (:func:`slingloads.models.yaw_dynamics.integrate_rk4`):
+each run on its own (runs in parallel over the cores) on the shared time grid, the relative
+wind read from a table per distinct gust, a run that leaves a table frozen from the start of
+that step. Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``; the cache is
+dropped when a source of the package changes, :mod:`slingloads.models.runge_kutta`).
 
 The adaptive kernel :func:`dopri_batch` is the Dormand-Prince pair 5(4) of
 :func:`scipy.integrate.solve_ivp`'s ``RK45`` [1]_ (same error norm, step-size control and
-fourth-order dense output [2]_): each run is integrated segment by segment between its gust's
-breakpoints and the starts of its pieces (no step straddles a jump or a kink) with its own
-step, and sampled on the output times from the dense output. The gust is evaluated in the
-kernel, exactly, from the segment's piece (``c0 + c1 (t - start) + sum a cos(omega (t - ref)
-+ phase)``), so that at a segment's end it takes the value just before the breakpoint; on a
-steady piece (a constant) the relative wind is computed once per segment instead of at every
-stage.
+fourth-order dense output [2]_; :mod:`slingloads.models.dormand_prince`): each run is
+integrated segment by segment between its gust's breakpoints and the starts of its pieces (no
+step straddles a jump or a kink) with its own step, and sampled on the output times from the
+dense output. The gust is evaluated in the kernel, exactly, from the segment's piece (``c0 + c1
+(t - start) + sum a cos(omega (t - ref) + phase)``), so that at a segment's end it takes the
+value just before the breakpoint; on a steady piece (a constant) the relative wind is computed
+once per segment instead of at every stage.
 
-Model row (``M``): 1/2 rho [kg/m^3], yaw inertia [kg m^2], then flags and constants: has
-fuselage, has fin, fin at its local sideslip, has parachute, fin arm dx, dy [m], fin table
-limits lo, hi [rad], parachute CD [-], parachute arm dx, dy [m], fuselage table limits lo,
-hi [rad], true airspeed [m/s]. Tables: the fuselage's ``fus_x`` [rad], ``fus_n`` (N per
-unit q about the axis) [m^3] and the slopes of its segments ``fus_s`` [m^3/rad]; the fin's
-``fin_x`` [rad], ``fin_k`` (S eta CY) [m^2] and ``fin_s`` [m^2/rad]: a lookup is a search from
-the interval found last, one multiplication and one addition.
+Model row (``M``): laid out by :data:`slingloads.models.yaw_dynamics.LAYOUT`. Tables: the
+fuselage's ``fus_x`` [rad], ``fus_n`` (N per unit q about the axis) [m^3] and the slopes of its
+segments ``fus_s`` [m^3/rad]; the fin's ``fin_x`` [rad], ``fin_k`` (S eta CY) [m^2] and
+``fin_s`` [m^2/rad]: a lookup is a search from the interval found last, one multiplication and
+one addition.
 
 References
 ----------
@@ -43,31 +41,46 @@ import math
 import numba
 import numpy as np
 
-from slingloads.models import dormand_prince
+from slingloads.models.dormand_prince import C as DP_C
+from slingloads.models.dormand_prince import dense, error_norm, grow, shrink, stage
+from slingloads.models.runge_kutta import rk4_stepper
+from slingloads.models.yaw_moments import INERTIA, TAS, make_yaw_moments
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
+_inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True)
 
-(HALF_RHO, INERTIA, HAS_FUS, HAS_FIN, FIN_LOCAL, HAS_CHUTE, FIN_DX, FIN_DY, FIN_LO, FIN_HI,
- CHUTE_CD, CHUTE_DX, CHUTE_DY, FUS_LO, FUS_HI, TAS) = range(16)
-#: Length of a model row.
-N_MODEL = 16
 #: Chunks of runs of the adaptive kernel, each run j in chunk j mod CHUNKS.
 CHUNKS = 64
 #: Smallest adaptive step before a run that leaves a table is stopped. [s]
 SMALLEST_STEP = 1e-6
 
-# Dormand-Prince 5(4) (scipy's RK45), read as constants by the compiled kernels
-DP_C, DP_A, DP_E, DP_P = dormand_prince.C, dormand_prince.A, dormand_prince.E, dormand_prince.P
-
 
 @_jit
 def interp(x, xp, fp, slope, lo):
-    """``numpy.interp`` for one value, and the interval used: linear between breakpoints
-    (``slope`` (n - 1,) the slopes of the segments), end values outside.
+    """``numpy.interp`` for one value, and the interval used: linear between breakpoints,
+    end values outside.
 
     The interval is searched from ``lo``, the one found last: successive evaluations of a run
     move little along a table.
+
+    Parameters
+    ----------
+    x : float
+        Where to interpolate (units of ``xp``).
+    xp, fp : ndarray, shape (n,)
+        Breakpoints (increasing) and values.
+    slope : ndarray, shape (n - 1,)
+        Slopes of the segments (units of ``fp`` per unit of ``xp``).
+    lo : int
+        Interval found last.
+
+    Returns
+    -------
+    value : float
+        Units of ``fp``.
+    lo : int
+        Interval used.
     """
     n = xp.size
     if x != x:
@@ -85,111 +98,152 @@ def interp(x, xp, fp, slope, lo):
     return slope[lo] * (x - xp[lo]) + fp[lo], lo
 
 
+@_inline_jit
+def _lookup(x, xp, fp, slope, lo, k):
+    """The lookup of the yaw moments (:func:`~slingloads.models.yaw_dynamics.make_yaw_moments`)
+    in compiled code: :func:`interp` from the interval ``lo[k]`` found last, updated."""
+    value, lo[k] = interp(x, xp, fp, slope, lo[k])
+    return value
+
+
+# the moments, compiled from their one source in slingloads.models.yaw_dynamics
+_moments = _inline_jit(make_yaw_moments(_lookup))
+
+
 @_jit
 def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
-                     fin_s, lo_fus, lo_fin):
-    """(psi'' [rad/s^2], outside a table, fuselage interval, fin interval) at yaw ``psi``
-    [rad], rate [rad/s], wind angle ``gamma`` [rad], relative speed ``v_rel`` [m/s] and
-    parachute ``area`` [m^2]; ``lo_fus``, ``lo_fin`` the table intervals found last."""
-    half_rho = M[HALF_RHO]
-    beta = gamma - psi
-    q = half_rho * (v_rel * v_rel)
-    inside = True
-    n_fus = 0.0
-    n_fin = 0.0
-    n_chute = 0.0
-    if M[HAS_FUS] != 0.0:
-        cn, lo_fus = interp(beta, fus_x, fus_n, fus_s, lo_fus)
-        n_fus = q * cn
-        inside = inside and (beta >= M[FUS_LO]) and (beta <= M[FUS_HI])
-    ux0 = v_rel * math.cos(beta)
-    uy0 = -v_rel * math.sin(beta)
-    if M[HAS_FIN] != 0.0:
-        dx, dy = M[FIN_DX], M[FIN_DY]
-        if M[FIN_LOCAL] != 0.0:
-            ux = ux0 - rate * dy
-            uy = uy0 + rate * dx
-            beta_f = math.atan2(-uy, ux)
-            q_f = half_rho * (ux * ux + uy * uy)
-        else:
-            beta_f, q_f = beta, q
-        k, lo_fin = interp(beta_f, fin_x, fin_k, fin_s, lo_fin)
-        n_fin = (-dx * q_f) * k
-        inside = inside and (beta_f >= M[FIN_LO]) and (beta_f <= M[FIN_HI])
-    if M[HAS_CHUTE] != 0.0:
-        dx, dy = M[CHUTE_DX], M[CHUTE_DY]
-        ux = ux0 - rate * dy
-        uy = uy0 + rate * dx
-        scale = (half_rho * M[CHUTE_CD]) * area * math.sqrt(ux * ux + uy * uy)
-        n_chute = scale * (dy * ux - dx * uy)
-    return (n_fus + n_fin + n_chute) / M[INERTIA], not inside, lo_fus, lo_fin
+                     fin_s, lo):
+    """Yaw acceleration of the model at one state
+    (:meth:`slingloads.models.yaw_dynamics.YawModel.moments` compiled).
+
+    Parameters
+    ----------
+    psi, rate : float
+        Yaw [rad] and yaw rate [rad/s].
+    gamma, v_rel : float
+        Wind angle [rad] and relative speed [m/s].
+    area : float
+        Parachute flat-plate area. [m^2]
+    M : ndarray, shape (N_MODEL,)
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
+        Fuselage and fin tables and the slopes of their segments (module notes).
+    lo : ndarray of int64, shape (2,)
+        Fuselage and fin table intervals found last, updated.
+
+    Returns
+    -------
+    acceleration : float
+        psi''. [rad/s^2]
+    outside : bool
+        A table was read outside its range.
+    """
+    n_fus, n_fin, n_chute, inside = _moments(gamma - psi, rate, v_rel, area, M, fus_x, fus_n,
+                                             fus_s, fin_x, fin_k, fin_s, lo)
+    return (n_fus + n_fin + n_chute) / M[INERTIA], not inside
+
+
+@_inline_jit
+def _rhs(x, wind, i, stage, args, dx):
+    """The right-hand side of the RK4 step, state ``x`` = (psi [rad], r [rad/s]), the wind
+    ``wind[i, stage]`` = (gamma [rad], relative speed [m/s]); ``args`` = (area, M, tables...,
+    ``lo``: the table intervals found last, updated). Returns True outside a table."""
+    area, M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo = args
+    acc, outside = yaw_acceleration(x[0], x[1], wind[i, stage, 0], wind[i, stage, 1], area, M,
+                                    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo)
+    dx[0] = x[1]
+    dx[1] = acc
+    return outside
+
+
+_rk4_step = rk4_stepper(_rhs)
 
 
 @_parallel_jit
 def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fus_s, fin_x,
               fin_k, fin_s, out_psi, out_rate, left, exit_step):
-    """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,).
+    """Integrate runs by the RK4 step of :mod:`slingloads.models.runge_kutta`, in place.
 
-    ``wind`` (gusts, steps, 3, 2): the wind angle gamma [rad] and relative speed [m/s] of each
-    distinct gust at the start, middle and end of every step; ``index`` (runs,) each run's
-    gust. ``step`` (steps,) the step lengths [s], ``stored`` (steps + 1,) True at the output
-    nodes; ``out_psi``, ``out_rate`` (runs, outputs) receive the histories, ``left`` and
-    ``exit_step`` (runs,) whether and in which step a run left a table (its state is then
-    frozen at the start of that step, its rate set to zero). ``M`` and the tables as in
-    the module notes.
+    Parameters
+    ----------
+    psi0, rate0 : ndarray, shape (runs,)
+        Initial yaw [rad] and yaw rate [rad/s].
+    areas : ndarray, shape (runs,)
+        Parachute flat-plate areas. [m^2]
+    index : ndarray of int, shape (runs,)
+        Each run's distinct gust.
+    wind : ndarray, shape (gusts, steps, 3, 2)
+        Wind angle gamma [rad] and relative speed [m/s] of each distinct gust at the start,
+        middle and end of every step.
+    step : ndarray, shape (steps,)
+        Step lengths. [s]
+    stored : ndarray of bool, shape (steps + 1,)
+        True at the output nodes.
+    M : ndarray, shape (N_MODEL,)
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
+        Fuselage and fin tables and the slopes of their segments (module notes).
+    out_psi, out_rate : ndarray, shape (runs, outputs)
+        Receive the histories. [rad], [rad/s]
+    left, exit_step : ndarray, shape (runs,)
+        Receive whether and in which step a run left a table (its state is then frozen at
+        the start of that step, its rate set to zero).
     """
     runs = psi0.size
     n_steps = step.size
     for j in numba.prange(runs):
-        lf = 0
-        lk = 0
+        x = np.empty(2)
+        new = np.empty(2)
+        k1, k2, k3, k4, tmp = np.empty(2), np.empty(2), np.empty(2), np.empty(2), np.empty(2)
+        lo = np.zeros(2, dtype=np.int64)
         w = wind[index[j]]
-        area = areas[j]
-        psi, rate = psi0[j], rate0[j]
-        out_psi[j, 0], out_rate[j, 0] = psi, rate
+        args = (areas[j], M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo)
+        x[0], x[1] = psi0[j], rate0[j]
+        out_psi[j, 0], out_rate[j, 0] = x[0], x[1]
         gone = False
         k_out = 1
         for i in range(n_steps):
             if not gone:
-                dt = step[i]
-                half = 0.5 * dt
-                ga, va = w[i, 0, 0], w[i, 0, 1]
-                gb, vb = w[i, 1, 0], w[i, 1, 1]
-                gc, vc = w[i, 2, 0], w[i, 2, 1]
-                k1r, o1, lf, lk = yaw_acceleration(psi, rate, ga, va, area, M, fus_x, fus_n,
-                                                   fus_s, fin_x, fin_k, fin_s, lf, lk)
-                k1p = rate
-                k2r, o2, lf, lk = yaw_acceleration(psi + half * k1p, rate + half * k1r, gb, vb,
-                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
-                                                   fin_s, lf, lk)
-                k2p = rate + half * k1r
-                k3r, o3, lf, lk = yaw_acceleration(psi + half * k2p, rate + half * k2r, gb, vb,
-                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
-                                                   fin_s, lf, lk)
-                k3p = rate + half * k2r
-                k4r, o4, lf, lk = yaw_acceleration(psi + dt * k3p, rate + dt * k3r, gc, vc,
-                                                   area, M, fus_x, fus_n, fus_s, fin_x, fin_k,
-                                                   fin_s, lf, lk)
-                k4p = rate + dt * k3r
+                o1 = _rhs(x, w, i, 0, args, k1)
+                o2, o3, o4 = _rk4_step(x, step[i], w, i, args, k1, k2, k3, k4, tmp, new)
                 if o1 or o2 or o3 or o4:
                     gone = True
                     left[j] = True
                     exit_step[j] = i
-                    rate = 0.0
+                    x[1] = 0.0
                 else:
-                    psi = psi + (dt / 6.0) * (k1p + 2 * k2p + 2 * k3p + k4p)
-                    rate = rate + (dt / 6.0) * (k1r + 2 * k2r + 2 * k3r + k4r)
+                    x[0], x[1] = new[0], new[1]
             if stored[i + 1]:
-                out_psi[j, k_out] = psi
-                out_rate[j, k_out] = rate
+                out_psi[j, k_out] = x[0]
+                out_rate[j, k_out] = x[1]
                 k_out += 1
 
 
 @_jit
 def gust_value(t, start, c0, c1, ref, first, count, harm):
-    """Lateral gust [m/s] at time ``t`` [s] on one piece: ``c0 + c1 (t - start) + sum a
-    cos(omega (t - ref) + phase)`` over rows ``first`` to ``first + count`` of ``harm``
-    (terms, 3): amplitude [m/s], omega [rad/s], phase [rad]."""
+    """Lateral gust on one piece: ``c0 + c1 (t - start) + sum a cos(omega (t - ref) +
+    phase)``.
+
+    Parameters
+    ----------
+    t : float
+        Time. [s]
+    start : float
+        Start of the piece. [s]
+    c0, c1 : float
+        Constant [m/s] and slope [m/s^2] of the piece.
+    ref : float
+        Time origin of the harmonic terms. [s]
+    first, count : int
+        Rows of ``harm`` of the piece's harmonic terms.
+    harm : ndarray, shape (terms, 3)
+        Amplitude [m/s], omega [rad/s], phase [rad].
+
+    Returns
+    -------
+    float
+        Gust velocity. [m/s]
+    """
     v = c0 + c1 * (t - start)
     for k in range(first, first + count):
         v += harm[k, 0] * math.cos(harm[k, 1] * (t - ref) + harm[k, 2])
@@ -198,8 +252,22 @@ def gust_value(t, start, c0, c1, ref, first, count, harm):
 
 @_jit
 def relative_wind(v, tas):
-    """(wind angle gamma = atan2(v, V) [rad], relative speed sqrt(V^2 + v^2) [m/s]) of a lateral
-    gust ``v`` [m/s] at true airspeed ``tas`` [m/s]."""
+    """Wind angle and relative speed of a lateral gust.
+
+    Parameters
+    ----------
+    v : float
+        Lateral gust. [m/s]
+    tas : float
+        True airspeed. [m/s]
+
+    Returns
+    -------
+    gamma : float
+        atan2(v, V). [rad]
+    v_rel : float
+        sqrt(V^2 + v^2). [m/s]
+    """
     return math.atan2(v, tas), math.sqrt(tas * tas + v * v)
 
 
@@ -211,14 +279,17 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
     """Run ``j`` of :func:`dopri_batch` (same arguments)."""
     n_out = out_psi.shape[1]
     tas = M[TAS]
-    kp = np.empty(7)
-    kr = np.empty(7)
-    lf = 0
-    lk = 0
+    K = np.empty((7, 2))
+    x = np.empty(2)
+    y = np.empty(2)
+    acc = np.empty(2)
+    sampled = np.empty(2)
+    weights = np.empty(7)
+    lo = np.zeros(2, dtype=np.int64)
     g = index[j]
     area = areas[j]
-    psi, rate = psi0[j], rate0[j]
-    out_psi[j, 0], out_rate[j, 0] = psi, rate
+    x[0], x[1] = psi0[j], rate0[j]
+    out_psi[j, 0], out_rate[j, 0] = x[0], x[1]
     sample = 1
     t = 0.0
     h = first_step
@@ -236,9 +307,9 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
         if not steady:
             gamma, v_rel = relative_wind(
                 gust_value(t, start, c0, c1, ref, first, count, harm), tas)
-        acc, o, lf, lk = yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n,
-                                          fus_s, fin_x, fin_k, fin_s, lf, lk)
-        kp[0], kr[0] = rate, acc
+        rate_dot, o = yaw_acceleration(x[0], x[1], gamma, v_rel, area, M, fus_x, fus_n, fus_s,
+                                       fin_x, fin_k, fin_s, lo)
+        K[0, 0], K[0, 1] = x[1], rate_dot
         gone = o
         while not gone and t < b:
             if tried == max_steps or stop[0] != 0:  # over budget: the call is refused
@@ -253,20 +324,16 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
             # stages 2 to 7 (7: at the fifth-order solution, first same as last)
             outside = False
             for i in range(1, 7):
-                yp, yr = psi, rate
-                for m in range(i):
-                    yp += h * DP_A[i, m] * kp[m]
-                    yr += h * DP_A[i, m] * kr[m]
+                stage(x, h, K, i, acc, y)
                 if not steady:
                     when = b if (last and DP_C[i] == 1.0) else t + DP_C[i] * h
                     gamma, v_rel = relative_wind(
                         gust_value(when, start, c0, c1, ref, first, count, harm), tas)
-                acc, o, lf, lk = yaw_acceleration(yp, yr, gamma, v_rel, area, M, fus_x,
-                                                  fus_n, fus_s, fin_x, fin_k, fin_s, lf,
-                                                  lk)
-                kp[i], kr[i] = yr, acc
+                rate_dot, o = yaw_acceleration(y[0], y[1], gamma, v_rel, area, M, fus_x,
+                                               fus_n, fus_s, fin_x, fin_k, fin_s, lo)
+                K[i, 0], K[i, 1] = y[1], rate_dot
                 outside = outside or o
-            new_psi, new_rate = yp, yr  # the last stage's argument is the solution
+            # y, the last stage's argument, is the solution
             if outside:
                 if h < 2.0 * SMALLEST_STEP:
                     gone = True
@@ -274,57 +341,33 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
                 h *= 0.5
                 rejected = True
                 continue
-            ep = 0.0
-            er = 0.0
-            for i in range(7):
-                ep += DP_E[i] * kp[i]
-                er += DP_E[i] * kr[i]
-            sp = atol + rtol * max(abs(psi), abs(new_psi))
-            sr = atol + rtol * max(abs(rate), abs(new_rate))
-            err = math.sqrt(0.5 * ((h * ep / sp) ** 2 + (h * er / sr) ** 2))
+            err = error_norm(x, y, K, h, rtol, atol, acc)
             if err > 1.0:
-                h *= max(0.2, 0.9 * err ** -0.2)
+                h *= shrink(err)
                 rejected = True
                 continue
             t_new = b if last else t + h
-            # dense output at the samples in (t, t_new]: psi + h theta sum_k q_k theta^k
-            if sample < n_out and sample * interval <= t_new + 1e-9 * interval:
-                qp0 = qp1 = qp2 = qp3 = 0.0
-                qr0 = qr1 = qr2 = qr3 = 0.0
-                for i in range(7):
-                    qp0 += kp[i] * DP_P[i, 0]
-                    qp1 += kp[i] * DP_P[i, 1]
-                    qp2 += kp[i] * DP_P[i, 2]
-                    qp3 += kp[i] * DP_P[i, 3]
-                    qr0 += kr[i] * DP_P[i, 0]
-                    qr1 += kr[i] * DP_P[i, 1]
-                    qr2 += kr[i] * DP_P[i, 2]
-                    qr3 += kr[i] * DP_P[i, 3]
-                while sample < n_out and sample * interval <= t_new + 1e-9 * interval:
-                    theta = (sample * interval - t) / h
-                    out_psi[j, sample] = psi + h * theta * (
-                        qp0 + theta * (qp1 + theta * (qp2 + theta * qp3)))
-                    out_rate[j, sample] = rate + h * theta * (
-                        qr0 + theta * (qr1 + theta * (qr2 + theta * qr3)))
-                    sample += 1
+            # dense output at the samples in (t, t_new]
+            while sample < n_out and sample * interval <= t_new + 1e-9 * interval:
+                dense(x, K, h, (sample * interval - t) / h, weights, acc, sampled)
+                out_psi[j, sample] = sampled[0]
+                out_rate[j, sample] = sampled[1]
+                sample += 1
             accepted += 1
             t = t_new
-            psi, rate = new_psi, new_rate
-            kp[0], kr[0] = kp[6], kr[6]
-            grow = 10.0 if err == 0.0 else min(10.0, 0.9 * err ** -0.2)
-            if rejected:  # no growth right after a rejected step
-                grow = min(1.0, grow)
+            x[0], x[1] = y[0], y[1]
+            K[0, 0], K[0, 1] = K[6, 0], K[6, 1]
+            h *= grow(err, rejected)
             rejected = False
-            h *= grow
         if gone:
             break
     if gone:
         left[j] = True
         exit_time[j] = t
-        rate = 0.0
+        x[1] = 0.0
     while sample < n_out:
-        out_psi[j, sample] = psi
-        out_rate[j, sample] = rate
+        out_psi[j, sample] = x[0]
+        out_rate[j, sample] = x[1]
         sample += 1
     steps[j] = accepted
 
@@ -334,25 +377,60 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
                 h_count, harm, interval, rtol, atol, max_step, first_step, max_steps, stop, M,
                 fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, out_psi, out_rate, left, exit_time,
                 steps):
-    """Integrate runs from ``psi0``, ``rate0`` (runs,) with parachute ``areas`` (runs,) by
-    the adaptive Dormand-Prince 5(4) pair.
+    """Integrate runs by the adaptive Dormand-Prince 5(4) pair, in place.
 
     Run j follows distinct gust ``g = index[j]``: ``n_seg[g]`` segments ending at
     ``seg_end[g]`` (the gust's breakpoints and the starts of its pieces, then the end time),
-    segment s on piece ``seg_piece[g, s]`` of the gust. A piece k starts at ``p_start[g, k]``
-    [s], ``p_coef[g, k]`` = c0 [m/s], c1 [m/s^2], ref [s], its harmonic terms are rows
-    ``h_off[g, k]`` to ``h_off[g, k] + h_count[g, k]`` of ``harm`` (:func:`gust_value`); on a
-    steady piece (c1 = 0, no terms) the relative wind is computed once for the segment. The
-    local error estimate is kept within ``atol + rtol max(|y|, |y_new|)`` (root mean square
-    over psi and r) and the step within ``max_step``; ``first_step`` is the first trial step.
-    ``out_psi``, ``out_rate`` (runs, outputs) receive the histories every ``interval`` from
-    t = 0 (dense output); ``left``, ``exit_time`` (runs,) whether and when a run left a
-    table: a stage outside a table halves the step, and below :data:`SMALLEST_STEP` the run
-    stops (its state frozen from then, its rate set to zero). ``steps`` (runs,) receives the
-    accepted steps of each run. A run that would try more than ``max_steps`` steps (accepted
-    or rejected) sets ``stop[0]`` (an int64 array of one element, 0 on entry), and every run
-    then stops at once with ``steps[j] = -1``: the call is to be refused, its histories are
-    not complete. ``M`` and the tables as in the module notes.
+    segment s on piece ``seg_piece[g, s]`` of the gust; on a steady piece (c1 = 0, no terms)
+    the relative wind is computed once for the segment. The local error estimate is kept within
+    ``atol + rtol max(|y|, |y_new|)`` (root mean square over psi and r) and the step within
+    ``max_step``. A stage outside a table halves the step, and below :data:`SMALLEST_STEP` the
+    run stops (its state frozen from then, its rate set to zero). A run that would try more than
+    ``max_steps`` steps (accepted or rejected) sets ``stop[0]``, and every run then stops at once
+    with ``steps[j] = -1``: the call is to be refused, its histories are not complete.
+
+    Parameters
+    ----------
+    psi0, rate0 : ndarray, shape (runs,)
+        Initial yaw [rad] and yaw rate [rad/s].
+    areas : ndarray, shape (runs,)
+        Parachute flat-plate areas. [m^2]
+    index : ndarray of int, shape (runs,)
+        Each run's distinct gust.
+    seg_end : ndarray, shape (gusts, segments)
+        Ends of the segments. [s]
+    seg_piece : ndarray of int, shape (gusts, segments)
+        Piece of each segment.
+    n_seg : ndarray of int, shape (gusts,)
+        Segments of each gust.
+    p_start : ndarray, shape (gusts, pieces)
+        Start of each piece. [s]
+    p_coef : ndarray, shape (gusts, pieces, 3)
+        c0 [m/s], c1 [m/s^2], ref [s] of each piece (:func:`gust_value`).
+    h_off, h_count : ndarray of int, shape (gusts, pieces)
+        First row and number of the piece's harmonic terms in ``harm``.
+    harm : ndarray, shape (terms, 3)
+        Amplitude [m/s], omega [rad/s], phase [rad] of the harmonic terms.
+    interval : float
+        Output interval, from t = 0 (dense output). [s]
+    rtol, atol : float
+        Tolerances. [-], [rad or rad/s]
+    max_step, first_step : float
+        Largest step and first trial step. [s]
+    max_steps : int
+        Steps a run may try.
+    stop : ndarray of int64, shape (1,)
+        0 on entry; set to 1 when a run runs over ``max_steps``.
+    M : ndarray, shape (N_MODEL,)
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
+        Fuselage and fin tables and the slopes of their segments (module notes).
+    out_psi, out_rate : ndarray, shape (runs, outputs)
+        Receive the histories. [rad], [rad/s]
+    left, exit_time : ndarray, shape (runs,)
+        Receive whether and when [s] a run left a table.
+    steps : ndarray of int, shape (runs,)
+        Receive the accepted steps of each run.
     """
     # runs spread over the chunks (run j in chunk j mod CHUNKS): the chunks, shared out in
     # order among the threads, then carry like mixes of cheap and costly runs

@@ -37,10 +37,11 @@ dx_c^2``; the fin ``-q S_f eta CY_beta dx_f`` and ``-1/2 rho V S_f eta CY_beta d
 Airspeed: the condition is given as indicated airspeed, taken equal to equivalent airspeed
 (position and compressibility errors are neglected at 80 kt); q = 1/2 rho0 V_EAS^2.
 
-Two integrators share :meth:`YawModel.derivatives`: :func:`integrate_rk4`, fixed-step
-Runge-Kutta 4 on arrays of shape (runs,), vectorised over all runs at once (the sizing sweep),
-and :func:`integrate_reference`, one :func:`scipy.integrate.solve_ivp` call per run (the
-reference it is checked against).
+Three integrators of the same moments: :func:`integrate_rk4`, fixed-step Runge-Kutta 4, and
+:func:`integrate_dopri`, the adaptive Dormand-Prince 5(4) pair, both compiled over all runs at
+once (:mod:`slingloads.models.yaw_batch`, the sizing sweep); and
+:func:`integrate_reference`, one :func:`scipy.integrate.solve_ivp` call per run on
+:meth:`YawModel.derivatives` (the reference they are checked against).
 
 References
 ----------
@@ -52,6 +53,7 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -76,12 +78,33 @@ from slingloads.models.gusts import (
 )
 from slingloads.models.integration import SolverSettings
 from slingloads.models.parachute import Parachute
+from slingloads.models.yaw_moments import (  # noqa: F401 (the model row, re-exported)
+    CHUTE_CD,
+    CHUTE_DX,
+    CHUTE_DY,
+    FIN_DX,
+    FIN_DY,
+    FIN_HI,
+    FIN_LO,
+    FIN_LOCAL,
+    FUS_HI,
+    FUS_LO,
+    HALF_RHO,
+    HAS_CHUTE,
+    HAS_FIN,
+    HAS_FUS,
+    INERTIA,
+    LAYOUT,
+    N_MODEL,
+    TAS,
+    _numpy_moments,
+    make_yaw_moments,
+)
 
 #: Defaults of the yaw runs: 120 s at a 0.05 s RK4 step, stored every 0.1 s. [s]
 YAW_SOLVER_DEFAULTS = {"t_end": 120.0, "step": 0.05, "output_interval": 0.1}
 #: Half-width of the sideslip interval searched for the yaw trim. [rad]
 TRIM_SEARCH = np.radians(20.0)
-
 
 @dataclass(frozen=True)
 class YawModel:
@@ -181,7 +204,13 @@ class YawModel:
         return 0.0 if self.parachute is None else self._chute[0]
 
     def beta_range(self):
-        """Sideslip range [rad] covered by every table in the model (fuselage and fin)."""
+        """Sideslip range covered by every table in the model (fuselage and fin).
+
+        Returns
+        -------
+        lo, hi : float
+            [rad]
+        """
         lo, hi = -np.pi, np.pi
         if self.fuselage is not None:
             lo, hi = max(lo, self._fus[2]), min(hi, self._fus[3])
@@ -190,7 +219,20 @@ class YawModel:
         return lo, hi
 
     def relative_wind(self, gust):
-        """Wind angle gamma [rad] and relative speed V_r [m/s] for lateral gust ``gust`` [m/s]."""
+        """Wind angle and relative speed for a lateral gust.
+
+        Parameters
+        ----------
+        gust : array_like
+            Lateral gust velocity. [m/s]
+
+        Returns
+        -------
+        gamma : ndarray
+            Wind angle atan2(v, V). [rad]
+        v_rel : ndarray
+            Relative speed sqrt(V^2 + v^2). [m/s]
+        """
         v = np.asarray(gust, dtype=float)
         return np.arctan2(v, self._tas), np.hypot(self._tas, v)
 
@@ -219,45 +261,97 @@ class YawModel:
         beta = np.asarray(beta, dtype=float)
         rate = np.asarray(rate, dtype=float)
         v_rel = np.asarray(v_rel, dtype=float)
-        half_rho = self._half_rho
-        q = half_rho * (v_rel * v_rel)
-        shape = np.broadcast_shapes(beta.shape, rate.shape, v_rel.shape)
-        inside = np.ones(shape, dtype=bool)
-        n_fus = n_fin = n_chute = np.zeros(shape)
-        if self.fuselage is not None:
-            grid, n_per_q, lo, hi = self._fus
-            n_fus = q * np.interp(beta, grid, n_per_q)
-            inside &= (beta >= lo) & (beta <= hi)  # False for NaN as well
-        if self.fin is not None or self.parachute is not None:
-            ux0, uy0 = v_rel * np.cos(beta), -v_rel * np.sin(beta)
-        if self.fin is not None:
-            grid, k, dx, dy, lo, hi = self._fin
-            if self.fin_rate_damping:
-                ux, uy = ux0 - rate * dy, uy0 + rate * dx
-                beta_f = np.arctan2(-uy, ux)
-                q_f = half_rho * (ux * ux + uy * uy)
-            else:
-                beta_f, q_f = beta, q
-            n_fin = (-dx * q_f) * np.interp(beta_f, grid, k)
-            inside &= (beta_f >= lo) & (beta_f <= hi)
-        if self.parachute is not None:
-            cd, dx, dy = self._chute
-            ux, uy = ux0 - rate * dy, uy0 + rate * dx
-            scale = (half_rho * cd) * np.asarray(area, dtype=float) * np.hypot(ux, uy)
-            n_chute = scale * (dy * ux - dx * uy)
-        elif np.any(np.asarray(area) != 0):
+        area = np.asarray(area, dtype=float)
+        if self.parachute is None and np.any(area != 0):
             raise InputError("a parachute area was given but the model has no parachute",
                              float(np.max(np.abs(area))))
-        outside = ~inside
-        return n_fus, n_fin, n_chute, outside
+        shape = np.broadcast_shapes(beta.shape, rate.shape, v_rel.shape)
+        n_fus, n_fin, n_chute, inside = _numpy_moments(beta, rate, v_rel, area, *self.arrays(),
+                                                       None)
+        zero = np.zeros(shape)
+        n_fus, n_fin = zero + n_fus, zero + n_fin
+        n_chute = n_chute if self.parachute is not None else zero
+        return n_fus, n_fin, n_chute, ~np.broadcast_to(inside, shape)
+
+    def arrays(self):
+        """The model row and tables of :func:`make_yaw_moments` and of the compiled batches
+        (:mod:`slingloads.models.yaw_batch`).
+
+        Returns
+        -------
+        tuple of ndarray
+            ``M`` (:data:`LAYOUT`), ``fus_x`` [rad], ``fus_n`` [m^3], ``fus_s`` [m^3/rad],
+            ``fin_x`` [rad], ``fin_k`` [m^2], ``fin_s`` [m^2/rad] (the tables with the slopes
+            of their segments).
+        """
+        return self._arrays
+
+    @cached_property
+    def _arrays(self):
+        row = np.zeros(N_MODEL)
+        row[HALF_RHO], row[INERTIA] = self._half_rho, self.yaw_inertia
+        row[TAS] = self._tas
+        none = np.zeros(2)
+        fus_x = fus_n = fin_x = fin_k = none
+        if self.fuselage is not None:
+            fus_x, fus_n, row[FUS_LO], row[FUS_HI] = self._fus
+            row[HAS_FUS] = 1.0
+        if self.fin is not None:
+            fin_x, fin_k, row[FIN_DX], row[FIN_DY], row[FIN_LO], row[FIN_HI] = self._fin
+            row[HAS_FIN], row[FIN_LOCAL] = 1.0, float(self.fin_rate_damping)
+        if self.parachute is not None:
+            row[CHUTE_CD], row[CHUTE_DX], row[CHUTE_DY] = self._chute
+            row[HAS_CHUTE] = 1.0
+        tables = []
+        for x, f in ((fus_x, fus_n), (fin_x, fin_k)):
+            slope = np.zeros(1) if x is none else np.diff(f) / np.diff(x)  # none: never read
+            tables += [np.ascontiguousarray(a, dtype=float) for a in (x, f, slope)]
+        return (row, *tables)
 
     def derivatives(self, psi, rate, gamma, v_rel, area):
-        """State derivatives (dpsi/dt [rad/s], dr/dt [rad/s^2]) and the out-of-table flag."""
+        """State derivatives and the out-of-table flag.
+
+        Parameters
+        ----------
+        psi, rate : array_like
+            Yaw [rad] and yaw rate [rad/s].
+        gamma, v_rel : array_like
+            Wind angle [rad] and relative speed [m/s] (:meth:`relative_wind`).
+        area : array_like
+            Parachute flat-plate area. [m^2]
+
+        Returns
+        -------
+        dpsi : ndarray
+            [rad/s]
+        drate : ndarray
+            [rad/s^2]
+        outside : ndarray of bool
+            Where a table was read outside its range.
+        """
         n_fus, n_fin, n_chute, outside = self.moments(gamma - psi, rate, v_rel, area)
         return rate, (n_fus + n_fin + n_chute) / self.yaw_inertia, outside
 
     def static_moments(self, beta, area=0.0):
-        """Moments [N m] at rest (r = 0, no gust) against sideslip ``beta`` [rad]."""
+        """Moments at rest (r = 0, no gust) against sideslip.
+
+        Parameters
+        ----------
+        beta : array_like
+            Sideslip. [rad]
+        area : array_like
+            Parachute flat-plate area. [m^2]
+
+        Returns
+        -------
+        n_fus, n_fin, n_chute : ndarray
+            Fuselage, fin and parachute yawing moments, nose right positive. [N m]
+
+        Raises
+        ------
+        InputError
+            For a sideslip outside the tables (no extrapolation).
+        """
         beta = np.asarray(beta, dtype=float)
         n_fus, n_fin, n_chute, outside = self.moments(beta, 0.0, self.condition.tas, area)
         if np.any(outside):
@@ -269,15 +363,43 @@ class YawModel:
         return n_fus, n_fin, n_chute
 
     def trim_beta(self, area=0.0, search=TRIM_SEARCH):
-        """Sideslip [rad] of the static equilibrium nearest to beta = 0 (0 for symmetric tables).
+        """Sideslip of the static equilibrium nearest to beta = 0 (0 for symmetric tables).
 
-        Raises :class:`InputError` when no equilibrium lies within +-``search``.
+        Parameters
+        ----------
+        area : float
+            Parachute flat-plate area. [m^2]
+        search : float
+            Half-width of the sideslip interval searched. [rad]
+
+        Returns
+        -------
+        float
+            [rad]
+
+        Raises
+        ------
+        InputError
+            When no equilibrium lies within +-``search``.
         """
         return float(self.trim_betas([area], search)[0])
 
     def trim_betas(self, areas, search=TRIM_SEARCH):
-        """:meth:`trim_beta` of every parachute area of ``areas`` [m^2] at once (the moments
-        on one sideslip grid, the parachute's scaled by each area). [rad]"""
+        """:meth:`trim_beta` of several parachute areas at once (the moments on one
+        sideslip grid, the parachute's scaled by each area).
+
+        Parameters
+        ----------
+        areas : array_like, shape (n,)
+            Parachute flat-plate areas. [m^2]
+        search : float
+            Half-width of the sideslip interval searched. [rad]
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            [rad]
+        """
         areas = np.atleast_1d(np.asarray(areas, dtype=float))
         lo, hi = self.beta_range()
         grid = np.linspace(max(lo, -search), min(hi, search), 801)
@@ -333,9 +455,24 @@ class Histories:
 
 
 def yaw_solver_settings(settings=None):
-    """``settings`` (default :class:`SolverSettings`) with the yaw runs' defaults filled in
-    (:data:`YAW_SOLVER_DEFAULTS`) and its fixed grid checked: ``t_end`` and
-    ``output_interval`` must be whole multiples of ``step``."""
+    """``settings`` with the yaw runs' defaults filled in (:data:`YAW_SOLVER_DEFAULTS`) and
+    its fixed grid checked: ``t_end`` and ``output_interval`` must be whole multiples of
+    ``step``.
+
+    Parameters
+    ----------
+    settings : SolverSettings, optional
+        Default :class:`SolverSettings`.
+
+    Returns
+    -------
+    SolverSettings
+
+    Raises
+    ------
+    InputError
+        For something other than a SolverSettings, or a grid that does not fit.
+    """
     settings = SolverSettings() if settings is None else settings
     if not isinstance(settings, SolverSettings):
         raise InputError("solver settings must be a SolverSettings", type(settings).__name__)
@@ -382,13 +519,8 @@ def _check_runs(model, areas, gusts, psi0, rate0):
     return areas, gusts, psi0, rate0
 
 
-#: Batch integrators of :func:`integrate_rk4`: the compiled kernel and the numpy one it is
-#: tested against.
-KERNELS = ("compiled", "numpy")
-
-
-def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kernel="compiled"):
-    """Integrate many runs at once with fixed-step RK4, vectorised over runs.
+def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
+    """Integrate many runs with fixed-step RK4, compiled, the runs spread over the cores.
 
     Parameters
     ----------
@@ -399,32 +531,35 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kerne
     psi0, rate0 : array_like
         Initial yaw [rad] and yaw rate [rad/s] (trim: psi0 = -beta_trim).
     settings : SolverSettings, optional
-    kernel : {"compiled", "numpy"}
-        ``"compiled"`` (default) integrates a :class:`YawModel` one run at a time in compiled
-        code (:mod:`slingloads.models.yaw_batch`), the same scheme operation for operation;
-        ``"numpy"`` steps all runs together with numpy operations (any model with the
-        interface of :class:`YawModel`; other models always take this path). The two agree
-        to round-off.
 
     Returns
     -------
     Histories
 
+    Raises
+    ------
+    InputError
+        For a model that is not a :class:`YawModel`, or runs, gusts or settings out of
+        range.
+
     Notes
     -----
     The step grid is uniform with every gust breakpoint (jump or kink: onsets, ends, the end
     of a rise) inserted, so that no step straddles one; histories are stored on the uniform
-    output grid. Gust velocities are tabulated once per distinct gust (at the start, middle
+    output grid. Each run is integrated on its own by the RK4 step of
+    :mod:`slingloads.models.runge_kutta` (:func:`slingloads.models.yaw_batch.rk4_batch`).
+    Gust velocities are tabulated once per distinct gust (at the start, middle
     and end of each step, the end value taken just before the step end so that a jump on a
     step boundary is seen on the correct side); a turbulence realisation is a function of
     time, so every stage sees the same gust. Table lookups are ``np.interp`` on the tables'
     breakpoints; a run that leaves a table is flagged and frozen, never clamped silently.
     """
-    if kernel not in KERNELS:
-        raise InputError(f"yaw integrator {kernel=!r} is not a valid option; valid options are "
-                         f"{list(KERNELS)}", kernel)
+    from slingloads.models import yaw_batch
+
+    if not isinstance(model, YawModel):
+        raise InputError("the compiled yaw integrators run a YawModel",
+                         type(model).__name__)
     settings = yaw_solver_settings(settings)
-    n, every = settings.fixed_grid()
     areas, gusts, psi, rate = _check_runs(model, areas, gusts, psi0, rate0)
     runs = areas.size
     unique, index = _distinct(gusts)
@@ -439,51 +574,17 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None, kerne
         tables.append((gamma.T.copy(), v_rel.T.copy()))  # (steps, unique)
     out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
     left = np.zeros(runs, dtype=bool)
-    if kernel == "compiled" and isinstance(model, YawModel):
-        exit_step = np.zeros(runs, dtype=np.int64)
-        from slingloads.models import yaw_batch
-
-        # (steps, gusts, 3, 2) -> (gusts, steps, 3, 2)
-        wind = np.stack([np.stack(pair, axis=-1) for pair in tables], axis=-2)
-        wind = np.ascontiguousarray(wind.transpose(1, 0, 2, 3))
-        yaw_batch.rk4_batch(psi, rate, areas, index, wind, step, stored,
-                            *_compiled_model(model), out_psi, out_rate, left, exit_step)
-        exit_time = np.where(left, start[exit_step], np.nan)
-    else:
-        exit_time = _numpy_rk4(model, psi, rate, areas, index, tables, start, step, stored,
-                               out_psi, out_rate, left)
+    exit_step = np.zeros(runs, dtype=np.int64)
+    # (steps, gusts, 3, 2) -> (gusts, steps, 3, 2)
+    wind = np.stack([np.stack(pair, axis=-1) for pair in tables], axis=-2)
+    wind = np.ascontiguousarray(wind.transpose(1, 0, 2, 3))
+    yaw_batch.rk4_batch(psi, rate, areas, index, wind, step, stored, *model.arrays(),
+                        out_psi, out_rate, left, exit_step)
+    exit_time = np.where(left, start[exit_step], np.nan)
     gust_out = np.stack([g.velocity(times) for g in unique])
     gamma_out = model.relative_wind(gust_out)[0]
     beta = gamma_out[index] - out_psi
     return Histories(times, out_psi, out_rate, beta, gust_out[index], left, exit_time)
-
-
-def _compiled_model(model):
-    """The model row and tables of :mod:`slingloads.models.yaw_batch`: ``M``, ``fus_x``,
-    ``fus_n``, ``fus_s``, ``fin_x``, ``fin_k``, ``fin_s`` (the tables with the slopes of their
-    segments)."""
-    from slingloads.models import yaw_batch as yb
-
-    row = np.zeros(yb.N_MODEL)
-    row[yb.HALF_RHO], row[yb.INERTIA] = model._half_rho, model.yaw_inertia
-    row[yb.TAS] = model._tas
-    none = np.zeros(2)
-    fus_x = fus_n = fin_x = fin_k = none
-    if model.fuselage is not None:
-        fus_x, fus_n, row[yb.FUS_LO], row[yb.FUS_HI] = model._fus
-        row[yb.HAS_FUS] = 1.0
-    if model.fin is not None:
-        fin_x, fin_k, row[yb.FIN_DX], row[yb.FIN_DY], row[yb.FIN_LO], row[yb.FIN_HI] = \
-            model._fin
-        row[yb.HAS_FIN], row[yb.FIN_LOCAL] = 1.0, float(model.fin_rate_damping)
-    if model.parachute is not None:
-        row[yb.CHUTE_CD], row[yb.CHUTE_DX], row[yb.CHUTE_DY] = model._chute
-        row[yb.HAS_CHUTE] = 1.0
-    tables = []
-    for x, f in ((fus_x, fus_n), (fin_x, fin_k)):
-        slope = np.zeros(1) if x is none else np.diff(f) / np.diff(x)  # none: never read
-        tables += [np.ascontiguousarray(a, dtype=float) for a in (x, f, slope)]
-    return (row, *tables)
 
 
 #: First trial step of the adaptive runs (the step then grows tenfold a step at most). [s]
@@ -563,7 +664,7 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     yaw_batch.dopri_batch(psi, rate, areas, index.astype(np.int64), seg_end, seg_piece, n_seg,
                           p_start, p_coef, h_off, h_count, harm, float(settings.output_interval),
                           float(settings.rtol), float(settings.atol), float(settings.max_step),
-                          FIRST_STEP, budget, stop, *_compiled_model(model), out_psi, out_rate,
+                          FIRST_STEP, budget, stop, *model.arrays(), out_psi, out_rate,
                           left, exit_time, steps)
     if stop[0]:
         raise InputError(f"too much work: a yaw run needs more than {budget:,} adaptive steps "
@@ -636,42 +737,6 @@ def _gust_pieces(gust, t_end):
     return [rest, (t0, amp, 0.0, 0.0, [])]
 
 
-def _numpy_rk4(model, psi, rate, areas, index, tables, start, step, stored, out_psi,
-               out_rate, left):
-    """The RK4 steps of :func:`integrate_rk4` on arrays of shape (runs,); fills the outputs
-    and returns the exit times."""
-    (g0, w0), (gm, wm), (g1, w1) = tables
-    out_psi[:, 0], out_rate[:, 0] = psi, rate
-    exit_time = np.full(psi.size, np.nan)
-    deriv = model.derivatives
-    k_out = 1
-    for i in range(start.size):
-        dt = step[i]
-        half = 0.5 * dt
-        ga, va = g0[i, index], w0[i, index]
-        gb, vb = gm[i, index], wm[i, index]
-        gc, vc = g1[i, index], w1[i, index]
-        k1p, k1r, o1 = deriv(psi, rate, ga, va, areas)
-        k2p, k2r, o2 = deriv(psi + half * k1p, rate + half * k1r, gb, vb, areas)
-        k3p, k3r, o3 = deriv(psi + half * k2p, rate + half * k2r, gb, vb, areas)
-        k4p, k4r, o4 = deriv(psi + dt * k3p, rate + dt * k3r, gc, vc, areas)
-        new_psi = psi + (dt / 6.0) * (k1p + 2 * k2p + 2 * k3p + k4p)
-        new_rate = rate + (dt / 6.0) * (k1r + 2 * k2r + 2 * k3r + k4r)
-        bad = o1 | o2 | o3 | o4
-        if bad.any() or left.any():  # a run that left stays frozen
-            fresh = bad & ~left
-            exit_time[fresh] = start[i]
-            left |= bad
-            new_psi = np.where(left, psi, new_psi)
-            new_rate = np.where(left, 0.0, new_rate)
-        psi, rate = new_psi, new_rate
-        if stored[i + 1]:
-            out_psi[:, k_out] = psi
-            out_rate[:, k_out] = rate
-            k_out += 1
-    return exit_time
-
-
 def _time_nodes(settings, gusts):
     """The uniform RK4 grid with every gust breakpoint (jump or kink) inserted, so that no
     step straddles one; and a flag per node: True at the stored (uniform output) times.
@@ -701,6 +766,21 @@ def integrate_reference(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None)
     times, integrated piecewise between the gust's breakpoints (so that no step straddles a
     jump). It is the reference for runs that stay inside their tables: a run found outside
     them at an output time is flagged (``left_table``) but not frozen.
+
+    Parameters
+    ----------
+    model : YawModel
+    areas : array_like, shape (runs,) or scalar
+        Parachute flat-plate areas. [m^2]
+    gusts : gust or sequence of gusts, one per run (:mod:`slingloads.models.gusts`)
+    psi0, rate0 : array_like
+        Initial yaw [rad] and yaw rate [rad/s].
+    settings : SolverSettings, optional
+        ``method``, ``rtol``, ``atol``, ``max_step``, ``t_end`` and ``output_interval``.
+
+    Returns
+    -------
+    Histories
     """
     from scipy.integrate import solve_ivp  # scipy loads where it is used
 

@@ -67,7 +67,9 @@ def run(study):
     The execution options come from ``study.options`` (:class:`~slingloads.runs.study.
     RunOptions`: the command line's ``--scheduler``, ``--workers``, ``--cache``,
     ``--scheduler-timeout`` and progress bar), else from the campaign's inputs (its Study
-    rows), else the defaults (local processes; the user's cache folder).
+    rows), else the defaults (local processes; the user's cache folder). What the run could
+    not use (workers not started, cache entries or a cache location) is added to
+    ``study.source.warnings``.
 
     Returns
     -------
@@ -95,7 +97,11 @@ def run(study):
         # the study's own scheduler (not the command line's): errors at its Study cell
         with study.located(ANALYSIS, SCHEDULER if scheduler and not options.scheduler
                            else None):
-            executor = make_executor(scheduler or None, workers, timeout, runs=total)
+            executor = make_executor(scheduler or None, workers, timeout, runs=total,
+                                     settings=campaign.settings.as_dict())
+        executor_warnings = list(executor.warnings)  # fewer workers than asked for
         result = run_campaign(campaign, executor=executor, store=store,
                               progress=options.progress)
+    # workers not started, entries or a location the cache could not use
+    study.source.warnings.extend([*executor_warnings, *store.warnings])
     return CampaignReport(inputs, result, str(cache_dir))

@@ -113,7 +113,8 @@ def run(study):
     with study.located(ANALYSIS):
         point = trim(inputs.system)
         linear = linearise(point) if point.converged else None
-        sim = simulate(inputs.system, inputs.manoeuvres, **inputs.settings)
+        sim = simulate(inputs.system, inputs.manoeuvres, no_trim="report",
+                       **inputs.settings)
     return MultibodyReport(inputs, point, linear, sim, airframe_outline(study.airframe))
 
 

@@ -3,7 +3,7 @@
 transport without parachute and the dynamics handed to the structural loads; runs executed in
 batches on local processes or a Dask cluster, with a store of finished runs.
 
->>> from slingloads.analyses.campaign import Campaign, CampaignSetup, run_campaign  # doctest: +SKIP
+>>> from slingloads.analyses.campaign import Campaign, CampaignSetup, run_campaign
 
 Method: ``docs/campaign.md``.
 """

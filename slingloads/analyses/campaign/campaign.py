@@ -381,7 +381,8 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
                       for name, target, system, m in campaign.no_parachute.jobs()]
         groups.append((ramp, [(k, s, m) for _, _, k, s, m in chute_jobs]))
     if executor is None:
-        executor = make_executor(runs=len(jobs) + len(chute_jobs))
+        executor = make_executor(runs=len(jobs) + len(chute_jobs),
+                                 settings=campaign.settings.as_dict())
     with executor:
         report = execute(groups, store, executor, size=batch_size, progress=progress)
     run_keys = dict(zip(ids, (j[0] for j in jobs), strict=True))

@@ -12,38 +12,50 @@ floating-point operations, whatever batch or process it falls in):
   all the machine's cores;
 * :class:`LocalProcesses`: ``workers`` processes of this machine (started with ``spawn``, each
   loading the compiled kernels from numba's on-disk cache), the cores shared out so that
-  workers x kernel threads does not exceed them;
+  workers x kernel threads does not exceed them; :func:`make_executor` caps the workers by
+  the cores and the memory available (:mod:`.memory`), and a
+  worker that dies ends the campaign with an :class:`~slingloads.errors.OutputError` (the
+  finished runs stored);
 * :class:`DaskCluster`: the batches go to a ``dask.distributed`` scheduler; each batch's kernel
   runs on as many threads as the smallest worker has. The scheduler must answer within
   ``timeout`` seconds (default :data:`SCHEDULER_TIMEOUT`), or the campaign stops with an
-  :class:`~slingloads.errors.InputError` before anything is run or stored. The workers need
-  slingloads installed (the same version: the run keys include the code's digest).
+  :class:`~slingloads.errors.InputError` before anything is run or stored; every later
+  network step has the same deadline (:class:`DaskCluster`). The workers need slingloads
+  installed (the same version: the run keys include the code's digest).
+
+**Memory.** A batch holds at most :data:`~slingloads.limits.BATCH_MEMORY` of samples
+(:func:`.memory.batch_limit`); the drive tables are tabulated a chunk of runs at a time by the
+multibody model (``DRIVE_BUDGET``).
 
 **Store.** Anything with ``get(key)`` (a record or None), ``put(key, record)`` and
-``__contains__``; a record is ``(metrics, histories)``. :class:`MemoryStore` keeps them in
-memory; the Parquet run cache of the runs layer (``slingloads.runs.cache``) on disk. Each
-finished batch is stored as soon as it arrives, so an interruption loses at most the batches in
-flight.
+``__contains__``, and optionally ``expect(key, rows)`` (told each run's history rows before
+it is looked up, so that a store on disk can refuse an entry of another size unread:
+:func:`record_problem` is the contract); a record is ``(metrics, histories)``.
+:class:`MemoryStore` keeps them in memory; the Parquet run cache of the runs layer
+(``slingloads.runs.cache``) on disk. Each finished batch is stored as soon as it
+arrives, so an interruption loses at most the batches in flight.
 """
 
 from __future__ import annotations
 
 import math
-import os
 from dataclasses import dataclass
 
-from slingloads.errors import InputError
+from slingloads.errors import InputError, OutputError
 
+from .memory import (  # noqa: F401 - re-exported
+    MAX_BATCH,
+    MIN_BATCH,
+    _cpu_count,
+    batch_limit,
+    history_rows,
+    local_workers,
+    worker_memory,
+)
 from .worker import run_batch
 
 #: Seconds the scheduler of a Dask cluster has to answer before the campaign gives up.
 SCHEDULER_TIMEOUT = 10.0
-#: Largest batch sent to a worker (runs).
-MAX_BATCH = 100
-#: Smallest batch worth a call (unless fewer runs are left). [runs]
-MIN_BATCH = 20
-
-
 class MemoryStore:
     """Finished runs kept in memory.
 
@@ -71,12 +83,51 @@ class MemoryStore:
         self._records[key] = (metrics, histories if self.keep_histories else None)
 
 
-def _cpu_count():
-    return max(1, os.cpu_count() or 1)
+#: Metrics every record holds (whatever the run's outcome).
+REQUIRED_METRICS = ("trim converged", "trim message", "linear verdict", "response verdict")
+
+
+def record_problem(record, rows=None):
+    """What makes ``record`` unusable as a finished run, in words, or None.
+
+    A record is ``(metrics, histories)``: ``metrics`` a dict of texts to numbers, texts,
+    booleans or None holding at least :data:`REQUIRED_METRICS`; ``histories`` a float array
+    of ``rows`` (if given) x ``len(HISTORY_LABELS)``. A store (the disk cache) checks what
+    it reads with this, so that a damaged or foreign entry counts as missing.
+    """
+    import numpy as np
+
+    from .metrics import HISTORY_LABELS
+
+    try:
+        metrics, histories = record
+    except (TypeError, ValueError):
+        return "not a (metrics, histories) pair"
+    if not isinstance(metrics, dict):
+        return f"the metrics are a {type(metrics).__name__}, not a mapping"
+    for name, value in metrics.items():
+        if not isinstance(name, str):
+            return f"a metric name is a {type(name).__name__}"
+        if value is not None and not isinstance(value, (str, bool, int, float)):
+            return f"metric {name[:60]!r} is a {type(value).__name__}"
+    absent = [m for m in REQUIRED_METRICS if m not in metrics]
+    if absent:
+        return f"metrics {absent} are missing"
+    if histories is None:
+        return None
+    if not isinstance(histories, np.ndarray) or histories.dtype != np.float64:
+        return "the histories are not an array of floats"
+    expected = (rows if rows is not None else histories.shape[0], len(HISTORY_LABELS))
+    if histories.shape != expected:
+        return f"the histories have shape {histories.shape}, not {expected}"
+    return None
 
 
 class _Executor:
     """Common part of the executors: a context manager that closes them."""
+
+    #: What the executor changed from what was asked (fewer workers), for the report.
+    warnings = ()
 
     def __enter__(self):
         return self
@@ -96,6 +147,7 @@ class InProcess(_Executor):
 
     def __init__(self, threads=None):
         self.threads = threads
+        self.warnings = []
 
     def describe(self):
         return "this process"
@@ -120,6 +172,7 @@ class LocalProcesses(_Executor):
         self.workers = int(workers)
         self.threads = max(1, _cpu_count() // self.workers)
         self._pool = None
+        self.warnings = []
 
     def describe(self):
         return (f"{self.workers} local worker processes x {self.threads} kernel "
@@ -128,13 +181,20 @@ class LocalProcesses(_Executor):
     def run(self, batches):
         import multiprocessing
         from concurrent.futures import ProcessPoolExecutor, as_completed
+        from concurrent.futures.process import BrokenProcessPool
 
         self._pool = ProcessPoolExecutor(self.workers,
                                          mp_context=multiprocessing.get_context("spawn"))
         futures = {self._pool.submit(run_batch, jobs, settings, self.threads): index
                    for index, settings, jobs in batches}
-        for future in as_completed(futures):
-            yield futures[future], future.result()
+        try:
+            for future in as_completed(futures):
+                yield futures[future], future.result()
+        except BrokenProcessPool:
+            raise OutputError("a local worker process ended abruptly (killed, or out of "
+                              "memory); the runs finished before are stored: run the same "
+                              "command again to resume (with fewer --workers if memory is "
+                              "short)") from None
 
     def close(self):
         if self._pool is not None:
@@ -142,8 +202,77 @@ class LocalProcesses(_Executor):
             self._pool = None
 
 
+def _within(seconds, call, *args):
+    """``call(*args)`` in a helper thread, given up after ``seconds``: (done, value or
+    error). A call that overruns keeps its (daemon) thread, which no one waits for."""
+    import threading
+
+    box = {}
+
+    def target():
+        try:
+            box["value"] = call(*args)
+        except BaseException as err:  # noqa: BLE001 - handed back to the caller
+            box["error"] = err
+
+    thread = threading.Thread(target=target, daemon=True, name="slingloads-deadline")
+    thread.start()
+    thread.join(seconds)
+    if thread.is_alive():
+        return False, None
+    if "error" in box:
+        return True, box["error"]
+    return True, box.get("value")
+
+
+async def _identity(address, timeout):
+    """Connect to ``address``, exchange the comm handshake and ask the scheduler who it is,
+    all within ``timeout`` seconds; the reply, or an exception."""
+    import asyncio
+
+    from distributed.comm import connect
+
+    async def ask():
+        comm = await connect(address, timeout=timeout)
+        try:
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    return await asyncio.wait_for(ask(), timeout)
+
+
+def _probe(address, timeout):
+    """What is wrong with the scheduler at ``address``, in words, or None: it must answer the
+    ``identity`` request as a Dask scheduler within ``timeout`` seconds (connection, handshake
+    and reply; a silent server is given up at the deadline, a garbage-speaking one at once)."""
+    import asyncio
+
+    done, value = _within(timeout + 0.2, lambda: asyncio.run(_identity(address, timeout)))
+    if not done or isinstance(value, (TimeoutError, asyncio.TimeoutError)):
+        return f"no answer within {timeout:g} s"
+    if isinstance(value, OSError):
+        return f"could not connect ({type(value).__name__}: {value})"
+    if isinstance(value, BaseException):
+        if isinstance(value, (KeyboardInterrupt, SystemExit)):
+            raise value
+        return ("the server at this address does not answer as a Dask scheduler "
+                f"({type(value).__name__})")
+    if not isinstance(value, dict) or value.get("type") != "Scheduler":
+        return ("the server at this address does not answer as a Dask scheduler (no "
+                "scheduler identity)")
+    return None
+
+
 class DaskCluster(_Executor):
     """The batches on a ``dask.distributed`` cluster (module notes).
+
+    Every network step has a deadline of ``timeout`` seconds: the scheduler must answer a
+    first request (connection, handshake, identity) within it, then let the client connect
+    and show a worker within it; while the batches run, a scheduler that stays silent
+    for ``timeout`` seconds (no batch back, no answer to a liveness request) stops the
+    campaign; closing the client waits at most ``timeout`` seconds.
 
     Parameters
     ----------
@@ -155,60 +284,128 @@ class DaskCluster(_Executor):
     Raises
     ------
     InputError
-        When the scheduler cannot be reached within ``timeout``, or has no worker.
+        When the scheduler cannot be reached or does not answer as one within ``timeout``,
+        or has no worker.
     """
 
     def __init__(self, address, timeout=SCHEDULER_TIMEOUT):
-        from distributed import Client
+        import time
 
         self.address = str(address)
         timeout = float(timeout)
         if not math.isfinite(timeout) or timeout <= 0:
             raise InputError("the scheduler time-out must be > 0 [s]", timeout)
         self.timeout = timeout
-        try:
-            self.client = Client(self.address, timeout=timeout, set_as_default=False)
-        except (OSError, TimeoutError, ValueError, TypeError) as err:
+        self.client = None
+        start = time.monotonic()
+        problem = _probe(self.address, timeout)
+        if problem is not None and problem.startswith("the server"):
+            raise InputError(f"{problem}; nothing was run", self.address)
+        if problem is not None:
             raise InputError(f"could not reach the Dask scheduler within {timeout:g} s "
-                             f"({type(err).__name__}: {err}); nothing was run",
-                             self.address) from None
-        except (MemoryError, EOFError, RuntimeError) as err:
-            # a server that is not a Dask scheduler: its first bytes read as an absurd frame
-            # length (the client then asks for exabytes) or as a broken message
-            raise InputError("the server at this address does not answer as a Dask scheduler "
-                             f"({type(err).__name__}); nothing was run", self.address) from None
+                             f"({problem}); nothing was run", self.address)
+        left = max(0.5, timeout - (time.monotonic() - start))
+        done, value = _within(left + 0.2, self._connect, left)
+        if not done or isinstance(value, BaseException):
+            self.close()
+            if isinstance(value, (KeyboardInterrupt, SystemExit)):
+                raise value
+            why = "no answer" if not done else type(value).__name__
+            raise InputError(f"could not reach the Dask scheduler within {timeout:g} s "
+                             f"({why}); nothing was run", self.address)
+        left = max(0.5, timeout - (time.monotonic() - start))
         try:
-            self.client.wait_for_workers(1, timeout=timeout)
+            self.client.wait_for_workers(1, timeout=left)
+            threads = self.client.sync(self.client.scheduler.ncores, callback_timeout=left)
         except (OSError, TimeoutError) as err:
-            self.client.close()
+            self.close()
             raise InputError(f"the Dask scheduler has no worker after {timeout:g} s "
                              f"({type(err).__name__}); nothing was run", self.address) from None
-        threads = self.client.nthreads()
+        if not threads:
+            self.close()
+            raise InputError(f"the Dask scheduler has no worker after {timeout:g} s; nothing "
+                             "was run", self.address)
         self.workers = max(1, sum(threads.values()))
         self.threads = max(1, min(threads.values()))
+
+    def _connect(self, timeout):
+        from distributed import Client
+
+        self.client = Client(self.address, timeout=timeout, set_as_default=False)
+        return self.client
 
     def describe(self):
         return f"Dask cluster at {self.address} ({self.workers} worker threads)"
 
+    def _alive(self):
+        """True if the scheduler answers a liveness request within the time-out."""
+        if self.client is None or self.client.status != "running":
+            return False
+        try:
+            self.client.sync(self.client.scheduler.identity, callback_timeout=self.timeout)
+        except Exception:  # noqa: BLE001 - any failure is a scheduler gone silent
+            return False
+        return True
+
     def run(self, batches):
-        from distributed import as_completed
+        from concurrent.futures import CancelledError
+
+        from distributed.client import _wait
 
         futures = {}
         for index, settings, jobs in batches:
             future = self.client.submit(run_batch, jobs, settings, self.threads, pure=False)
             futures[future] = index
+        pending = set(futures)
         try:
-            for future in as_completed(futures, loop=self.client.loop):
-                yield futures[future], future.result()
+            while pending:
+                try:
+                    finished, pending = self.client.sync(
+                        _wait, list(pending), timeout=self.timeout,
+                        return_when="FIRST_COMPLETED")
+                    pending = set(pending)
+                except TimeoutError:
+                    finished = set()
+                if not finished and not self._alive():
+                    raise OutputError(f"the Dask scheduler stopped answering (no answer "
+                                      f"within {self.timeout:g} s); the finished runs are "
+                                      "stored: run again to resume", self.address)
+                for future in finished:
+                    yield futures[future], self._result(future)
+        except OutputError:
+            raise
+        except (CancelledError, OSError) as err:  # the scheduler lost: futures cancelled
+            raise OutputError(f"the Dask scheduler was lost ({type(err).__name__}); the "
+                              "finished runs are stored: run again to resume",
+                              self.address) from None
         finally:
-            for future in futures:
-                future.cancel()
+            if self.client is not None and self.client.status == "running":
+                for future in futures:
+                    future.cancel()
+
+    def _result(self, future):
+        """A finished batch's records, fetched a time-out at a time while the scheduler
+        answers (a large batch may take longer to arrive; a silent scheduler stops it)."""
+        while True:
+            try:
+                return future.result(timeout=self.timeout)
+            except TimeoutError:
+                if not self._alive():
+                    raise OutputError(f"the Dask scheduler stopped answering (no answer "
+                                      f"within {self.timeout:g} s); the finished runs are "
+                                      "stored: run again to resume", self.address) from None
 
     def close(self):
-        self.client.close()
+        """Close the client, waiting at most the time-out (a dead scheduler is not waited
+        for longer)."""
+        client, self.client = self.client, None
+        if client is None:
+            return
+        _within(self.timeout, lambda: client.close(timeout=self.timeout))
 
 
-def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=None):
+def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=None,
+                  settings=None):
     """The executor a campaign asks for.
 
     Parameters
@@ -217,19 +414,28 @@ def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=
         Address of a Dask scheduler: the batches go there.
     workers : int, optional
         Local worker processes (default: one per core, or this process alone for fewer than
-        :data:`MAX_BATCH` runs, where starting processes would cost more than it saves).
+        :data:`MAX_BATCH` runs, where starting processes would cost more than it saves);
+        capped by the cores and the memory available (:func:`local_workers`: an explicit
+        larger request is cut, with a warning in the executor's ``warnings``).
     timeout : float
         Scheduler time-out. [s]
     runs : int, optional
         Runs to execute (for the default).
+    settings : dict, optional
+        The runs' settings (``t_end``, ``output_interval`` [s]), for the memory estimate.
     """
     if scheduler:
         return DaskCluster(scheduler, timeout)
+    explicit = workers is not None
     if workers is None:
         workers = 1 if runs is not None and runs < MAX_BATCH else _cpu_count()
     if isinstance(workers, bool) or int(workers) != workers or workers < 1:
         raise InputError("the number of workers must be a whole number >= 1", workers)
-    return InProcess() if int(workers) == 1 else LocalProcesses(int(workers))
+    workers, warning = local_workers(int(workers), settings)
+    executor = InProcess() if workers == 1 else LocalProcesses(workers)
+    if warning is not None and explicit:
+        executor.warnings.append(warning)
+    return executor
 
 
 @dataclass(frozen=True)
@@ -239,9 +445,13 @@ class ExecutionReport:
     Attributes
     ----------
     total, cached, computed : int
-        Runs in the campaign, found in the store, and run now.
+        Runs in the campaign, found in the store, and run now (every group).
     batches : int
     executor : str
+    parts : tuple of (int, int, int)
+        (total, cached, computed) of each group of runs, in the order given (a campaign: the
+        matrix, then the runs without parachute), each run counted in the first group that
+        holds it.
     """
 
     total: int
@@ -249,15 +459,18 @@ class ExecutionReport:
     computed: int
     batches: int
     executor: str
+    parts: tuple = ()
 
 
-def batch_size(missing, workers):
+def batch_size(missing, workers, settings=None):
     """Runs per batch: about four batches per worker (for balance and progress), at least
-    :data:`MIN_BATCH` and at most :data:`MAX_BATCH`."""
+    :data:`MIN_BATCH` and at most :data:`MAX_BATCH`, and no more than fit the memory of a
+    batch (:func:`batch_limit` under ``settings``)."""
     if missing <= 0:
         return 1
     share = math.ceil(missing / (4 * max(1, workers)))
-    return max(1, min(MAX_BATCH, max(share, min(MIN_BATCH, missing))))
+    size = max(1, min(MAX_BATCH, max(share, min(MIN_BATCH, missing))))
+    return size if settings is None else min(size, batch_limit(settings))
 
 
 def execute(groups, store, executor, *, size=None, progress=None):
@@ -281,26 +494,32 @@ def execute(groups, store, executor, *, size=None, progress=None):
     -------
     ExecutionReport
     """
-    seen, missing, total = set(), [], 0
+    seen, missing, total, parts = set(), [], 0, []
+    expect = getattr(store, "expect", None)  # a store that checks the size of what it reads
     for settings, jobs in groups:
-        todo = []
+        todo, count = [], 0
         for job in jobs:
             if job[0] in seen:
                 continue
             seen.add(job[0])
             total += 1
+            count += 1
+            if expect is not None:
+                expect(job[0], history_rows(settings))
             if job[0] not in store:
                 todo.append(job)
         missing.append((settings, todo))
+        parts.append((count, count - len(todo), len(todo)))
     count = sum(len(todo) for _, todo in missing)
-    size = batch_size(count, executor.workers) if size is None else size
-    if isinstance(size, bool) or int(size) != size or size < 1:
+    if size is not None and (isinstance(size, bool) or int(size) != size or size < 1):
         raise InputError("the batch size must be a whole number >= 1", size)
-    size = int(size)
     batches = []
     for settings, todo in missing:
-        for i in range(0, len(todo), size):
-            batches.append((len(batches), settings, todo[i:i + size]))
+        # a batch's samples stay within BATCH_MEMORY whatever size is asked for
+        step = (batch_size(count, executor.workers, settings) if size is None
+                else min(int(size), batch_limit(settings)))
+        for i in range(0, len(todo), step):
+            batches.append((len(batches), settings, todo[i:i + step]))
     done = total - count
     if progress is not None:
         progress(done, total)
@@ -310,4 +529,5 @@ def execute(groups, store, executor, *, size=None, progress=None):
         done += len(records)
         if progress is not None:
             progress(done, total)
-    return ExecutionReport(total, total - count, count, len(batches), executor.describe())
+    return ExecutionReport(total, total - count, count, len(batches), executor.describe(),
+                           tuple(parts))

@@ -29,6 +29,7 @@ import pandas as pd
 
 from slingloads.constants import FOOT, KNOT
 from slingloads.errors import InputError
+from slingloads.ids import first_duplicate
 from slingloads.models.atmosphere import isa_density, true_airspeed
 from slingloads.models.gusts import GUST_VELOCITY, make_gust
 from slingloads.models.multibody.carrier import ForwardAcceleration
@@ -215,9 +216,10 @@ class Factors:
             if not isinstance(m, MassCase):
                 raise InputError("mass cases must be MassCase objects", type(m).__name__)
         names = [m.name for m in masses]
-        if len(set(names)) != len(names):
-            raise InputError("mass case named twice", next(n for n in names
-                                                           if names.count(n) > 1))
+        twice = first_duplicate(names)
+        if twice is not None:
+            raise InputError("mass case named twice (names are compared with case ignored)",
+                             names[twice[1]])
         object.__setattr__(self, "masses", masses)
 
     @property

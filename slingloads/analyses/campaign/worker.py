@@ -18,6 +18,10 @@ import threading
 
 #: One compiled kernel at a time per process.
 _KERNEL_LOCK = threading.Lock()
+#: Environment variable (testing aid): ``N`` makes a worker process that is not the main one
+#: end at once (``os._exit``, as a killed process does) when it starts its N-th batch.
+KILL_VARIABLE = "SLINGLOADS_TEST_KILL_BATCH"
+_BATCHES = []
 
 
 def _set_threads(threads):
@@ -52,6 +56,7 @@ def run_batch(jobs, settings, threads=None):
 
     from .metrics import linear_metrics, response_metrics
 
+    _die_if_asked()
     with _KERNEL_LOCK:
         _set_threads(threads)
         sim = simulate_runs([(system, manoeuvre) for _, system, manoeuvre in jobs],
@@ -68,3 +73,16 @@ def run_batch(jobs, settings, threads=None):
         metrics, histories = response_metrics(run)
         out.append((key, {**conditions[id(system)], **metrics}, histories))
     return out
+
+
+def _die_if_asked():
+    """End this worker process at once when :data:`KILL_VARIABLE` says so (testing aid)."""
+    import multiprocessing
+    import os
+
+    text = os.environ.get(KILL_VARIABLE)
+    if not text or multiprocessing.parent_process() is None:
+        return
+    _BATCHES.append(1)
+    if text.isdigit() and len(_BATCHES) == int(text):
+        os._exit(70)

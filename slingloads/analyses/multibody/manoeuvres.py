@@ -39,6 +39,46 @@ DEFAULT_DISTURBANCE = {"yaw": np.radians(10.0)}
 HOVER_SEED = {"yaw": np.radians(2.0)}
 
 
+def check_trajectory(trajectory):
+    """Check that ``trajectory`` offers what a run asks of it (the protocol of
+    :mod:`slingloads.models.hook_trajectory`): ``command(t, v0)`` returning the acceleration
+    and velocity as finite arrays of shape (n, 3), ``breakpoints`` (finite times >= 0 [s])
+    and ``describe()``; build one with
+    :class:`~slingloads.models.hook_trajectory.HookTrajectory`.
+
+    Raises
+    ------
+    InputError
+        Naming what is missing or wrong.
+    """
+    name = type(trajectory).__name__
+    hint = " (build it with slingloads.models.hook_trajectory.HookTrajectory)"
+    for attribute in ("command", "describe"):
+        if not callable(getattr(trajectory, attribute, None)):
+            raise InputError(f"a manoeuvre's trajectory needs a method {attribute}(){hint}",
+                             name)
+    try:
+        times = [float(b) for b in trajectory.breakpoints]
+    except (AttributeError, TypeError, ValueError):
+        raise InputError(f"a manoeuvre's trajectory needs breakpoints, a sequence of times "
+                         f"[s]{hint}", name) from None
+    if not all(np.isfinite(times)) or any(b < 0 for b in times):
+        raise InputError("a trajectory's breakpoints must be finite times >= 0 [s]", times)
+    probe = np.array([0.0, *times, max(times, default=0.0) + 1.0])
+    out = trajectory.command(probe, np.zeros(3))
+    try:
+        acc, vel = (np.asarray(v, dtype=float) for v in out)
+    except (TypeError, ValueError):
+        raise InputError(f"a trajectory's command(t, v0) must return (acceleration, "
+                         f"velocity){hint}", name) from None
+    if acc.shape != (probe.size, 3) or vel.shape != (probe.size, 3):
+        raise InputError("a trajectory's command(t, v0) must return two arrays of shape "
+                         "(len(t), 3) [m/s^2, m/s]", [list(acc.shape), list(vel.shape)])
+    if not (np.all(np.isfinite(acc)) and np.all(np.isfinite(vel))):
+        raise InputError("a trajectory's commanded acceleration and velocity must be finite",
+                         name)
+
+
 @dataclass(frozen=True)
 class Manoeuvre:
     """One manoeuvre (module notes).
@@ -47,18 +87,24 @@ class Manoeuvre:
     ----------
     name : str
     trajectory : carrier trajectory
-        Default: steady flight at the system airspeed.
+        Default: steady flight at the system airspeed; any 3-D hook motion is a
+        :class:`~slingloads.models.hook_trajectory.HookTrajectory` (checked by
+        :func:`check_trajectory`).
     wind : Wind
     disturbance : dict
-        Initial offsets from trim, keys of :data:`DISTURBANCES` (yaw, pitch, roll [rad] added
-        to the trim attitude; yaw_rate [rad/s]; longitudinal, lateral, vertical [m] CG
-        displacement in earth axes; theta, psi [rad] of the parachute line).
+        Initial offsets added to the trim's state, or to ``start_state`` when given: keys of
+        :data:`DISTURBANCES` (yaw, pitch, roll [rad] added to the attitude's angles; yaw_rate
+        [rad/s] added to the body rates; longitudinal, lateral, vertical [m] CG displacement
+        in earth axes; theta, psi [rad] of the parachute line;
+        :func:`~slingloads.analyses.multibody.simulate.disturbed`).
     from_hover : bool, optional
         Start trimmed in hover rather than at the system airspeed (default: the trajectory's
         choice, True for a forward acceleration, and True for a wind ramp).
     start_state : array_like, shape (20,), optional
-        A full state of the equations to start from instead of trim plus disturbance (e.g.
-        :meth:`~slingloads.analyses.multibody.LinearModel.mode_state`).
+        A full state of the equations to start from instead of the trim's (built by name with
+        :func:`~slingloads.analyses.multibody.start.start_state`, or e.g.
+        :meth:`~slingloads.analyses.multibody.LinearModel.mode_state`). The run still needs
+        its trim: the carrier's steady velocity and cable pull are the trim's.
     """
 
     name: str
@@ -82,9 +128,7 @@ class Manoeuvre:
             if not np.isfinite(float(value)):
                 raise InputError(f"disturbance {key} must be a finite number "
                                  f"[{DISTURBANCES[key]}]", value)
-        if not hasattr(self.trajectory, "command"):
-            raise InputError("a manoeuvre's trajectory needs command(t, v0)",
-                             type(self.trajectory).__name__)
+        check_trajectory(self.trajectory)
         if not isinstance(self.wind, Wind):
             raise InputError("a manoeuvre's wind must be a Wind", type(self.wind).__name__)
         if self.from_hover is None:

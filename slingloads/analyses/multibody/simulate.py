@@ -32,6 +32,7 @@ from slingloads.limits import MAX_MULTIBODY_RUN_STEPS
 from slingloads.models.multibody.equations import INFO, N_INFO, N_STATES
 from slingloads.models.multibody.integrator import (
     ATOL,
+    DRIVE_STEP,
     RTOL,
     evaluate_many,
     integrate,
@@ -97,20 +98,37 @@ def _check_settings(t_end, dt, output_interval, rtol, atol):
     return int(round(samples)) + 1
 
 
-def _disturbed(trim_point, disturbance):
-    """Trim state with a manoeuvre's initial disturbance applied."""
-    x = trim_point.state.copy()
+def disturbed(state, disturbance, chute_kind="none"):
+    """A state with a manoeuvre's initial disturbance added to it (nothing is overwritten).
+
+    Parameters
+    ----------
+    state : array_like, shape (20,)
+        The trim's state, or a start state (:func:`~.start.start_state`).
+    disturbance : dict
+        Keys of :data:`~.manoeuvres.DISTURBANCES`: yaw, pitch, roll [rad] added to the
+        attitude's angles; yaw_rate [rad/s] added to the body rates, about the earth vertical
+        (nose right positive); longitudinal, lateral, vertical [m] added to the CG position
+        (earth X, Y, Z); theta, psi [rad] added to the line angles of a hinged canopy.
+    chute_kind : str
+        The system's parachute kind (``"hinged"``: the line angles apply).
+
+    Returns
+    -------
+    numpy.ndarray, shape (20,)
+    """
+    x = np.array(state, dtype=float)
     d = disturbance
     if any(k in d for k in ("yaw", "pitch", "roll")):
         yaw, pitch, roll = euler_angles(x[9:13])
         x[9:13] = quaternion_from_euler(yaw + d.get("yaw", 0.0), pitch + d.get("pitch", 0.0),
                                         roll + d.get("roll", 0.0))
     if "yaw_rate" in d:
-        x[13:16] = rotation_matrix(x[9:13]).T @ np.array([0.0, 0.0, -d["yaw_rate"]])
+        x[13:16] += rotation_matrix(x[9:13]).T @ np.array([0.0, 0.0, -d["yaw_rate"]])
     x[3] += d.get("longitudinal", 0.0)
     x[4] += d.get("lateral", 0.0)
     x[5] += d.get("vertical", 0.0)
-    if trim_point.system.chute_kind == "hinged":
+    if chute_kind == "hinged":
         x[16] += d.get("theta", 0.0)
         x[17] += d.get("psi", 0.0)
     return x
@@ -352,8 +370,12 @@ class Simulation:
         return pd.concat(frames, ignore_index=True)
 
 
+#: What :func:`simulate` does with a run whose start has no trim.
+NO_TRIM_ACTIONS = ("raise", "report")
+
+
 def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
-             rtol=RTOL, atol=ATOL):
+             rtol=RTOL, atol=ATOL, no_trim="raise"):
     """Fly ``system`` through ``manoeuvres`` (all integrated together).
 
     Parameters
@@ -366,23 +388,39 @@ def simulate(system, manoeuvres, *, t_end=T_END, dt=DT, output_interval=OUTPUT_I
     rtol, atol : float
         Tolerances of the adaptive step: local error below atol + rtol |x| (root mean square
         over the states, SI units). [-], [SI]
+    no_trim : {"raise", "report"}
+        A run whose start has no trim (every run starts from one: the carrier's steady
+        velocity and the cable's pull are the trim's, also with a ``start_state``): raise
+        :class:`~slingloads.errors.InputError` with the reason (default), or return it
+        unflown, its verdict ``no trim`` and the reason in ``stopped`` (the workbook's
+        reports list such runs).
 
     Returns
     -------
     Simulation
+
+    Raises
+    ------
+    InputError
+        For bad settings, and for a run without trim when ``no_trim="raise"``.
     """
+    if no_trim not in NO_TRIM_ACTIONS:
+        raise InputError(f"no_trim must be one of {list(NO_TRIM_ACTIONS)}", no_trim)
     if isinstance(manoeuvres, Manoeuvre):
         manoeuvres = [manoeuvres]
     names = [m.name for m in manoeuvres]
     if len(set(names)) != len(names):
         dup = next(n for n in names if names.count(n) > 1)
         raise InputError("manoeuvre names must be unique", dup)
-    return simulate_runs([(system, m) for m in manoeuvres], t_end=t_end, dt=dt,
-                         output_interval=output_interval, rtol=rtol, atol=atol)
+    sim = simulate_runs([(system, m) for m in manoeuvres], t_end=t_end, dt=dt,
+                        output_interval=output_interval, rtol=rtol, atol=atol,
+                        untrimmed=no_trim == "raise")
+    return sim
 
 
 def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL, rtol=RTOL,
-                  atol=ATOL, check_step=True, workers=None, keep_histories=True):
+                  atol=ATOL, check_step=True, workers=None, keep_histories=True,
+                  untrimmed=False):
     """Integrate runs given as (system, manoeuvre) pairs, together (module notes).
 
     Parameters
@@ -403,6 +441,10 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         (each run's measures, computed as soon as it is integrated): a run's states and
         histories are then integrated again when asked for (the same to the last bit, about
         a millisecond a run), and a large batch needs no memory for histories.
+    untrimmed : bool
+        Raise :class:`~slingloads.errors.InputError` for a run whose start has no trim
+        (True), or return it unflown with the reason (False: a campaign maps where trims
+        exist).
 
     Returns
     -------
@@ -421,6 +463,16 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         requests.setdefault(key, (system, speed, manoeuvre.wind.steady))
         keys.append(key)
     trims = dict(zip(requests, trim_many(list(requests.values())), strict=True))
+    if untrimmed:
+        for (system, manoeuvre), key in zip(pairs, keys, strict=True):
+            point = trims[key]
+            if not point.converged:
+                start = "in hover" if manoeuvre.from_hover else (
+                    f"at {point.airspeed:.4g} m/s EAS")
+                raise InputError(
+                    f"run {manoeuvre.name!r} of {system.name!r} cannot start: no trim "
+                    f"{start}: {point.message} (every run starts from a trim, also with a "
+                    "start_state; no_trim='report' returns such runs unflown)")
     linear = {}
     if check_step and dt is not None:
         for point in trims.values():
@@ -438,12 +490,55 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
             groups.setdefault(system.table_key(), []).append(k)
         else:
             results[k] = RunResult(system, prepared[k][1], tr, time, 0, 0.0)
-    drives = _DriveTables(t_end, output_interval)
     settings = {"step": dt, "rtol": float(rtol), "atol": float(atol), "workers": workers,
                 "keep_states": bool(keep_histories)}
     for members in groups.values():
-        _integrate_group(prepared, members, results, drives, time, settings)
+        # the drive tables of a few runs at a time (DRIVE_BUDGET): each chunk's are freed
+        # before the next is tabulated, whatever the number of runs
+        for chunk in _chunks(members, [drive_bytes(t_end, prepared[k][1].breakpoints)
+                                       for k in members], DRIVE_BUDGET):
+            _integrate_group(prepared, chunk, results, _DriveTables(t_end, output_interval),
+                             time, settings)
     return Simulation(results, linear, dt, float(rtol), float(atol))
+
+
+#: Bytes of drive tables tabulated at once (a chunk of runs; a run of 3,600 s takes about
+#: 26 MB, held twice while its chunk is stacked: two such runs per chunk, so that two cores
+#: integrate side by side). [bytes]
+DRIVE_BUDGET = 128 * 2**20
+#: Bytes a run keeps per stored sample: its states, the drive at the sample, and the reported
+#: quantities and histories evaluated from them when asked for. [bytes]
+SAMPLE_BYTES = 8 * (N_STATES + 9 + N_INFO + N_HISTORY)
+
+
+def drive_bytes(t_end, breakpoints=()):
+    """Bytes of the drive tables of one run of ``t_end`` [s] (sampled every DRIVE_STEP, and
+    at both ends of each segment between ``breakpoints``), counted twice: the run's table and
+    its copy in the chunk's stacked array."""
+    segments = 1 + len(tuple(breakpoints))
+    rows = float(t_end) / DRIVE_STEP + 2 * segments + 1
+    return int(2 * rows * 9 * 8)
+
+
+def run_bytes(t_end, output_interval, breakpoints=()):
+    """Memory one run needs while it is integrated and kept: its drive tables
+    (:func:`drive_bytes`) and its samples (:data:`SAMPLE_BYTES` each). [bytes]"""
+    samples = int(round(float(t_end) / float(output_interval))) + 1
+    return drive_bytes(t_end, breakpoints) + samples * SAMPLE_BYTES
+
+
+def _chunks(members, sizes, budget):
+    """``members`` cut in order into chunks whose ``sizes`` add up to at most ``budget`` (at
+    least one member each)."""
+    chunk, used = [], 0
+    for member, size in zip(members, sizes, strict=True):
+        if chunk and used + size > budget:
+            yield chunk
+            chunk, used = [], 0
+        chunk.append(member)
+        used += size
+    if chunk:
+        yield chunk
 
 
 def _check_step(point, dt, linear):
@@ -503,8 +598,9 @@ def _integrate_group(prepared, members, results, drives, time, settings):
     seen = {}
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
-        x0[j] = (_disturbed(tr, manoeuvre.disturbance) if manoeuvre.start_state is None
-                 else manoeuvre.start_state)
+        x0[j] = disturbed(tr.state if manoeuvre.start_state is None
+                          else manoeuvre.start_state, manoeuvre.disturbance,
+                          system.chute_kind)
         pull = tr.info[_INFO["d_X"]:_INFO["d_Z"] + 1]
         pull = tr.quantity("tension") * pull / np.linalg.norm(pull)
         params[j] = system.parameters(pull=pull, locks=system.locks)
@@ -513,12 +609,15 @@ def _integrate_group(prepared, members, results, drives, time, settings):
             seen[key] = len(profiles)
             profiles.append(table)
         index[j] = seen[key]
+    recipes = [None] * len(profiles)
+    for j, k in enumerate(members):
+        recipes[index[j]] = (prepared[k][1], prepared[k][2].state[0:3])
     drive = stack_drives(profiles)
     measured = np.array([_measured(system, manoeuvre) for system, manoeuvre, _ in
                          (prepared[k] for k in members)])
     done = integrate(x0, params, drive, index, drives.interval, time.size, system0.tables(),
                      measured=measured, **settings)
-    batch = _Batch(done, x0, params, drive, index, drives.interval, system0.tables(),
+    batch = _Batch(done, x0, params, drive, index, drives, recipes, system0.tables(),
                    settings)
     for j, k in enumerate(members):
         system, manoeuvre, tr = prepared[k]
@@ -550,13 +649,24 @@ class _Batch:
     are integrated again (alone: each run is integrated on its own whatever its batch, so
     they are the same to the last bit), and its reported quantities are evaluated on
     request (the same compiled equations at the same states and drive as during the
-    integration)."""
+    integration). Of the drive only the samples are kept: the tables (the larger part, a
+    row every DRIVE_STEP) are tabulated again, the same to the last bit, for a run
+    integrated again."""
 
-    def __init__(self, done, x0, params, drive, profile, interval, tables, settings):
+    def __init__(self, done, x0, params, drive, profile, drives, recipes, tables, settings):
         self.states, self.measures = done.states, done.measures
-        self.x0, self.params, self.drive, self.profile = x0, params, drive, profile
-        self.interval, self.tables, self.settings = interval, tables, settings
+        self.x0, self.params, self.profile = x0, params, profile
+        self.nodes = drive["nodes"]
+        self.t_end, self.interval, self.recipes = drives.t_end, drives.interval, recipes
+        self.tables, self.settings = tables, settings
         self.samples = drive["nodes"].shape[1]
+
+    @property
+    def drive(self):
+        """The stacked drive tables of the batch (as the integration had them), tabulated
+        again on each access (module notes of the class)."""
+        tables = _DriveTables(self.t_end, self.interval)
+        return stack_drives([tables.get(*recipe)[1] for recipe in self.recipes])
 
     def states_of(self, j):
         """Sampled states of run ``j``."""
@@ -564,8 +674,10 @@ class _Batch:
             return self.states[j]
         one = slice(j, j + 1)
         settings = {**self.settings, "keep_states": True, "workers": 1}
-        return integrate(self.x0[one], self.params[one], self.drive, self.profile[one],
-                         self.interval, self.samples, self.tables, **settings).states[0]
+        _, table = _DriveTables(self.t_end, self.interval).get(*self.recipes[self.profile[j]])
+        return integrate(self.x0[one], self.params[one], stack_drives([table]),
+                         np.zeros(1, dtype=np.int64), self.interval, self.samples,
+                         self.tables, **settings).states[0]
 
     def info(self, j, states):
         """Reported quantities of run ``j`` at its samples ``states`` (NaN where it had
@@ -573,7 +685,7 @@ class _Batch:
         reached = np.isfinite(states[:, 0])
         info = np.full((states.shape[0], N_INFO), np.nan)
         if reached.any():
-            nodes = self.drive["nodes"][self.profile[j]]
+            nodes = self.nodes[self.profile[j]]
             _, info[reached], _ = evaluate_many(states[reached], self.params[j],
                                                 nodes[reached], self.tables)
         return info

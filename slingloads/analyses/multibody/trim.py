@@ -173,12 +173,6 @@ def _initial_state(system, tas, wind):
 PITCH_SCAN = np.arange(-40.0, 20.5, 2.0)
 
 
-def _rotation_y(pitch):
-    """Body-to-earth rotation of a pitch alone (nose up +: body x turns towards -Z)."""
-    c, s = math.cos(pitch), math.sin(pitch)
-    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
-
-
 def _drag_estimate(system, tas):
     """Rough drag [N] of fuselage and parachute, to start the trim at a sensible swing."""
     return 0.5 * system.density * tas**2 * system.drag_area
@@ -192,6 +186,44 @@ def _quaternion(yaw, pitch, roll):
     cx, sx = math.cos(-0.5 * roll), math.sin(-0.5 * roll)
     return (cz * cy * cx + sz * sy * sx, cz * cy * sx - sz * sy * cx,
             cz * sy * cx + sz * cy * sx, sz * cy * cx - cz * sy * sx)
+
+
+def hanging_attitude(hub, up, yaw=0.0):
+    """Pitch and roll [rad] at which the body hangs on its cable: the vector from the CG to
+    the hub along ``up``, the direction from the hub towards the hook (earth axes), at the
+    given yaw [rad] (module conventions, R = Rz(-yaw) Ry(pitch) Rx(-roll)).
+
+    A body hung at one point and pulled only at its CG (weight and a drag there) is in
+    equilibrium with the CG on the cable's line; this is the trim's starting attitude.
+
+    Parameters
+    ----------
+    hub : array_like, shape (3,)
+        Hub relative to the CG, body axes. [m]
+    up : array_like, shape (3,)
+        Direction from the hub to the hook, earth axes (any length). [-]
+    yaw : float
+        [rad]
+
+    Returns
+    -------
+    pitch, roll : float
+        [rad]
+    """
+    u = np.asarray(hub, float) / np.linalg.norm(hub)
+    c, s = math.cos(yaw), math.sin(yaw)
+    t = np.asarray(up, float) / np.linalg.norm(up)
+    t = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]) @ t  # Rz(-yaw)^T t
+    # Rx(a) u = (ux, uy cos a - uz sin a, uy sin a + uz cos a): its y part must be t_y
+    r = math.hypot(u[1], u[2])
+    beta = math.atan2(u[2], u[1])
+    a = math.acos(np.clip(t[1] / r, -1.0, 1.0)) - beta if r > 0 else 0.0
+    a = (a + math.pi) % (2 * math.pi) - math.pi
+    v = (u[0], u[1] * math.cos(a) - u[2] * math.sin(a), u[1] * math.sin(a) + u[2] * math.cos(a))
+    # Ry(pitch) turns the x-z part of v, measured from z towards x, by +pitch
+    pitch = math.atan2(t[0], t[2]) - math.atan2(v[0], v[2])
+    pitch = (pitch + math.pi) % (2 * math.pi) - math.pi
+    return pitch, -a
 
 
 class _TrimProblem:
@@ -222,9 +254,15 @@ class _TrimProblem:
         hub = sys_at.hardpoints.hub - sys_at.body.cg
         swing = np.arctan2(_drag_estimate(sys_at, tas), w)
         span = sys_at.cable.length + sys_at.cable.static_stretch(w / np.cos(swing))
-        guess = [span * np.sin(swing) - hub[0], -hub[1], -span * np.cos(swing) - hub[2]]
+        cable = span * np.array([np.sin(swing), 0.0, -np.cos(swing)])  # hook to hub
+        pitch, roll = hanging_attitude(hub, -cable, self.yaw_guess)
+        self.hub = hub
+        self.cable = (sys_at.cable.length, w / sys_at.cable.stiffness)  # L0, stretch at 1 g
+        # the hub's place under the hook and the tension (the cable's stretch follows from
+        # it, however stiff the cable) and the hanging attitude: CG on the cable's line
+        guess = [cable[0], cable[1], 1.0 / np.cos(swing)]
         guess += [] if self.hover else [yaw_guess]
-        guess += [swing, 0.0]
+        guess += [pitch, roll]
         if self.hinged:
             guess += [self.x0[16], 0.0]
         self.guess = np.array(guess)
@@ -240,17 +278,13 @@ class _TrimProblem:
         scaled residuals are least, the CG placed so that the hub stays where the guess put
         it (span and swing kept) and a hinged line trailing at the same angle to the flight
         path as in the first guess."""
-        k = 4
+        k = 3 if self.hover else 4
         pitches = np.radians(PITCH_SCAN)
         u = np.tile(self.guess, (pitches.size, 1))
-        hub = self.system.hardpoints.hub - self.system.body.cg
-        level = self.guess[0:3] + hub  # hook to hub
-        for i, pitch in enumerate(pitches):
+        for i, pitch in enumerate(pitches):  # (the hub stays where the guess put it)
             u[i, k] = pitch
-            turned = _rotation_y(pitch) @ hub
-            u[i, 0:3] = level - turned
             if self.hinged:
-                u[i, k + 2] = self.guess[k + 2] + pitch
+                u[i, k + 2] = self.guess[k + 2] + pitch - self.guess[k]
         states = self.states(u)
         rates, _, _ = evaluate_many(states, self.params, self.drive, self.tables)
         norms = np.linalg.norm(self.scaled(rates), axis=1)
@@ -266,10 +300,10 @@ class _TrimProblem:
         """Full states (m, 20) of unknowns ``u`` (m, n)."""
         u = np.atleast_2d(u)
         x = np.tile(self.x0, (u.shape[0], 1))
-        x[:, 3:6] = u[:, 0:3]
         k = 3 if self.hover else 4
         x[:, 9:13] = quaternion_from_euler(self.yaw_guess if self.hover else u[:, 3],
                                            u[:, k], u[:, k + 1])
+        x[:, 3:6] = _cg_from_hub(u, x[:, 9:13], self.hub[None, :], *self.cable)
         if self.hinged:
             x[:, 16:18] = u[:, k + 2:k + 4]
         return x
@@ -277,9 +311,9 @@ class _TrimProblem:
     def state(self, u):
         """The full state of one set of unknowns (floats: called in the solver's loop)."""
         x = self.x0.copy()
-        x[3:6] = u[0:3]
         k = 3 if self.hover else 4
         x[9:13] = _quaternion(self.yaw_guess if self.hover else u[3], u[k], u[k + 1])
+        x[3:6] = _cg_from_hub(u[None, :], x[None, 9:13], self.hub[None, :], *self.cable)[0]
         if self.hinged:
             x[16:18] = u[k + 2:k + 4]
         return x
@@ -307,6 +341,19 @@ class _TrimProblem:
         return Trim(self.system, self.eas, x, self.drive, converged, message, res, info)
 
 
+def _cg_from_hub(u, quaternion, hub, length, stretch):
+    """CG relative to the hook (m, 3) [m] of trim unknowns ``u`` (m, n): the hub at (u0, u1)
+    [m] from the hook, horizontally, on a cable stretched by the tension ratio u2 [-] times
+    ``stretch`` (the stretch at 1 g, W L0 / EA [m]) beyond ``length`` [m], below the hook;
+    the CG at -R hub from it (``hub`` (m, 3) from the CG, body axes [m]). NaN where the
+    cable cannot reach that far out."""
+    span = length + u[:, 2] * stretch
+    with np.errstate(invalid="ignore"):
+        down = np.sqrt(span**2 - u[:, 0] ** 2 - u[:, 1] ** 2)
+    d = np.column_stack([u[:, 0], u[:, 1], -down])
+    return d - np.einsum("mij,mj->mi", rotation_matrix(quaternion), hub)
+
+
 def _solve_one(problem):
     """Powell's hybrid method (MINPACK hybrj) on one trim, Jacobian by central differences."""
     dx, info = np.zeros(N_STATES), np.zeros(N_INFO)
@@ -327,10 +374,11 @@ def _solve_one(problem):
     solution = root(residual, problem.guess, jac=jacobian, method="hybr",
                     options={"xtol": 1e-13})
     found = problem.result(solution.x, solution.message)
-    if found.converged or problem.hover:
+    if found.converged:
         return found
-    # an unstable fuselage pitches far nose down at speed: start again from the pitch that
-    # best balances the equations along the hang (module notes)
+    # an unstable fuselage pitches far nose down at speed (and an unusual hang may defeat
+    # the first guess in hover too): start again from the pitch that best balances the
+    # equations along the hang (module notes)
     again = root(residual, problem.pitch_scan_guess(), jac=jacobian, method="hybr",
                  options={"xtol": 1e-13})
     second = problem.result(again.x, again.message)
@@ -400,13 +448,16 @@ def _newton(problems):
     scales = np.array([p.scale[p.rows] for p in problems])
 
     starts = np.array([p.x0 for p in problems])
+    hubs = np.array([p.hub for p in problems])
+    cables = np.array([p.cable for p in problems])
     k = 3 if first.hover else 4
 
     def states(values, owners):
         out = starts[owners].copy()
-        out[:, 3:6] = values[:, 0:3]
         out[:, 9:13] = quaternion_from_euler(0.0 if first.hover else values[:, 3],
                                              values[:, k], values[:, k + 1])
+        out[:, 3:6] = _cg_from_hub(values, out[:, 9:13], hubs[owners], cables[owners, 0],
+                                   cables[owners, 1])
         if first.hinged:
             out[:, 16:18] = values[:, k + 2:k + 4]
         return out

@@ -399,16 +399,28 @@ def _check_force_areas(reader, t, columns, force_axes, area, length, refs):
 
 
 def _columns_match(reader, table, needed, optional, why):
-    """Each column of ``needed`` present, none of ``optional`` outside it (the frame's)."""
+    """Each column of ``needed`` present, none of ``optional`` outside it (the frame's) with
+    a value in it: a column the template lists for another frame and left empty is
+    ignored."""
     for name in needed:
         if not table.has(name):
             raise reader.error(f"missing column {name!r}: {why}, whose columns are "
                                f"{list(needed)}", sheet=table.sheet, cell="A1")
     for name in optional:
-        if table.has(name) and name not in needed:
+        if table.has(name) and name not in needed and not _left_empty(table, name):
             raise reader.error(f"column {name!r} does not belong to the declared frame: {why}, "
                                f"whose columns are {list(needed)}", name, table.sheet,
                                table.cell(name, 0).rstrip("0123456789") + "1")
+
+
+def _left_empty(table, name):
+    """True when every cell of number column ``name`` is empty (no value, no formula)."""
+    values = table.values.get(name)
+    if not isinstance(values, np.ndarray) or not np.all(np.isnan(values)):
+        return False
+    raw = table.raw.get(name)
+    return raw is None or all(v is None or (isinstance(v, str) and not v.strip())
+                              for v in raw)
 
 
 def _check_full_grid(t):

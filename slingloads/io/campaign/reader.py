@@ -20,6 +20,7 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
+from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -45,6 +46,7 @@ from slingloads.limits import (
     MAX_CAMPAIGN_SAMPLES,
     MAX_LIST_ITEMS,
     MAX_MAP_POINTS,
+    MEMORY_BUDGET,
 )
 from slingloads.runs.campaign import SCHEDULER, CampaignInputs
 
@@ -182,10 +184,7 @@ def _masses(reader):
     for i in range(len(t)):
         with located(t, default="mass", index=i):
             out.append(MassCase(t["mass case"][i], t["mass"][i]))
-    names = [m.name for m in out]
-    for i, n in enumerate(names):
-        if names.index(n) != i:
-            raise reader.error("mass case named twice", n, t.sheet, t.cell("mass case", i))
+    check_unique(t, "mass case")
     return tuple(out)
 
 
@@ -392,6 +391,14 @@ def _check_work(params, runs, settings):
                  f"too much work: {runs:,} runs of {settings.t_end:g} s sampled at this "
                  f"interval store {samples:,} samples, more than the {MAX_CAMPAIGN_SAMPLES:,} "
                  "allowed (limits of slingloads)")
+    from slingloads.analyses.multibody.simulate import run_bytes
+
+    one = run_bytes(settings.t_end, settings.output_interval)
+    params.check("campaign output interval", one <= MEMORY_BUDGET,
+                 f"too much memory: one run of {settings.t_end:g} s sampled at this interval "
+                 f"needs about {one / 2**20:,.0f} MB, more than the "
+                 f"{MEMORY_BUDGET / 2**20:,.0f} MB budget of a computation (limits of "
+                 "slingloads; docs/inputs-and-outputs.md, Memory); use a longer interval")
 
 
 def _no_parachute(params, system, study_type, sample):

@@ -155,10 +155,21 @@ def definition_table(report, units):
          c.criteria.max_half_time, "s", ""),
         ("loads margin on the dynamics' extremes", c.margin, "-", ""),
         ("executor", ex.executor, "", ""),
-        ("runs found in the cache", ex.cached, "-", f"cache: {report.cache}"),
-        ("runs computed now", ex.computed, "-", f"in {ex.batches} batches"),
+        *_cache_rows(ex, report.cache),
     ]
     return _items(rows)
+
+
+def _cache_rows(ex, cache):
+    """Runs found in the cache and computed now: the matrix's, then those without parachute
+    (each group counted on its own, so the matrix's rows never exceed its runs)."""
+    parts = ex.parts or ((ex.total, ex.cached, ex.computed),)
+    rows = [("runs found in the cache", parts[0][1], "-", f"cache: {cache}"),
+            ("runs computed now", parts[0][2], "-", f"in {ex.batches} batches")]
+    if len(parts) > 1:
+        rows += [("runs without parachute found in the cache", parts[1][1], "-", ""),
+                 ("runs without parachute computed now", parts[1][2], "-", "")]
+    return rows
 
 
 def selection_table(report, units):

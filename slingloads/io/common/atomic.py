@@ -28,6 +28,11 @@ refers to) is compared with the outputs by resolved path, by file identity (hard
 links) and by case-folded name (case-insensitive file systems), before anything is computed
 (:meth:`AtomicOutputs.check`) and again for each file.
 
+This module is the publisher; the checks of the output folder are in
+:mod:`slingloads.io.common.outguard`, the file names in
+:mod:`slingloads.io.common.outnames`, the locks, the folder exchange and the recovery
+in :mod:`slingloads.io.common.swap` (their names are also importable from here).
+
 Nor does a set replace (or remove as an earlier file of its report) a file that slingloads did
 not write: each file of ``DIR`` that it would replace must carry slingloads' mark or be listed,
 unchanged, in the folder's manifest (:mod:`slingloads.io.common.ownership`), checked with
@@ -46,205 +51,50 @@ Examples
 ['a.txt']
 """
 
+
 from __future__ import annotations
 
-import ctypes
 import errno
-import hashlib
 import os
-import platform
 import re
 import shutil
 import stat
-import sys
 import tempfile
-import time
 from contextlib import contextmanager
 from pathlib import Path
 
 from slingloads.errors import InputError, OutputError
+from slingloads.io.common.outguard import (  # noqa: F401 - re-exported
+    EARLIER_FILE,
+    SAME_NAME,
+    _os_error,
+    _same_file,
+    check_not_input,
+    check_outputs,
+    check_replaceable,
+)
+from slingloads.io.common.outnames import output_pattern, safe_file_part  # noqa: F401
 from slingloads.io.common.ownership import (
     MANIFEST_NAME,
     file_entry,
-    foreign_reason,
     manifest_bytes,
-    read_manifest,
-    refusal,
+)
+from slingloads.io.common.swap import (  # noqa: F401 - re-exported
+    PAUSE_VARIABLE,
+    STEP_VARIABLE,
+    SWAP_VARIABLE,
+    TEMP_PREFIX,
+    _exchange,
+    _is_current_folder,
+    _lock_folder,
+    _locked,
+    _name_max,
+    _pause,
+    _recover,
+    _stage_prefix,
+    _writable,
 )
 from slingloads.limits import MAX_OUTPUT_ENTRIES
-
-try:  # POSIX advisory locks; elsewhere runs are not serialised
-    import fcntl
-except ImportError:  # pragma: no cover - Windows
-    fcntl = None
-
-#: Prefix of the staging and old folders (hidden on POSIX), beside the output folder.
-TEMP_PREFIX = ".slingloads-"
-#: Environment variable (testing aid): seconds to pause between the publishing steps, so that
-#: a test can kill a run at each of them.
-PAUSE_VARIABLE = "SLINGLOADS_PUBLISH_PAUSE"
-#: Environment variable (testing aid): ``rename`` forces the two-rename publishing used where
-#: no atomic exchange exists.
-SWAP_VARIABLE = "SLINGLOADS_PUBLISH_SWAP"
-#: Characters kept in file-name parts made from ids.
-_UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
-_NAME_MAX = 255
-
-
-def safe_file_part(text, max_chars=80):
-    """A file-name-safe version of an id (a station id in a plot's file name).
-
-    Letters, digits, ``.``, ``_`` and ``-`` are kept, any run of other characters becomes
-    ``_``; an id longer than ``max_chars`` is cut and ends with 8 hexadecimal digits of its
-    hash, so that it stays distinct. Readers refuse ids that give the same part
-    (case-insensitively), so that no file of a report replaces another.
-
-    >>> safe_file_part("FS 2300/left"), safe_file_part("$$")
-    ('FS_2300_left', 'id')
-    """
-    part = _UNSAFE.sub("_", str(text)).strip("._-") or "id"
-    if len(part) > max_chars:
-        digest = hashlib.sha256(str(text).encode("utf-8", "surrogatepass")).hexdigest()[:8]
-        part = f"{part[:max_chars - 9]}-{digest}"
-    return part
-
-
-def output_pattern(template, stem):
-    """A compiled regular expression of the output names of ``template`` for ``stem``.
-
-    ``template`` is a file name with ``{stem}`` and optionally ``*`` standing for a part made
-    by :func:`safe_file_part` (``"{stem}-hull_*.png"``).
-    """
-    head, _, tail = template.partition("{stem}")
-    pieces = [re.escape(p) for p in tail.split("*")]
-    return re.compile(re.escape(head) + re.escape(stem) + "[A-Za-z0-9._-]+".join(pieces)
-                      + r"\Z")
-
-
-def _same_file(a, b):
-    """True if paths ``a`` and ``b`` name the same file: same resolved path, same file
-    (hard or symbolic link), or same case-folded name in the same folder."""
-    a, b = Path(a), Path(b)
-    try:
-        if a.resolve() == b.resolve():
-            return True
-    except (OSError, RuntimeError, ValueError):
-        pass
-    try:
-        if os.path.samefile(a, b):
-            return True
-    except (OSError, ValueError):  # one of them does not exist
-        pass
-    try:
-        return (a.name.casefold() == b.name.casefold()
-                and os.path.samefile(a.parent, b.parent))
-    except (OSError, ValueError):
-        return False
-
-
-def check_not_input(path, inputs):
-    """Refuse an output path that is one of the input files.
-
-    Parameters
-    ----------
-    path : path-like
-        Output path about to be written.
-    inputs : iterable of path-like
-        Input files that must never be overwritten.
-
-    Raises
-    ------
-    InputError
-        If ``path`` is (or links to, or differs only in case from) one of ``inputs``; the
-        error names the input file.
-    """
-    for source in inputs:
-        if _same_file(path, source):
-            raise InputError("refusing to write an output onto an input file (an input is "
-                             "never overwritten); choose another output directory or stem",
-                             str(path), file=str(source))
-
-
-#: Why a run would replace a file of the output folder: it has an output's name.
-SAME_NAME = "an output of this run has its name"
-#: Why a run would remove a file of the output folder: an earlier-report pattern
-#: (``replaces``) names it.
-EARLIER_FILE = "this run would remove it as an earlier file of the same report"
-
-
-def check_outputs(out_dir, names, inputs):
-    """Check the files ``names`` of ``out_dir`` before the slow work: none is an input
-    (:func:`check_not_input`) and none would replace a file of ``out_dir`` that slingloads did
-    not write (:func:`check_replaceable`). A report checks its whole set this way, rather
-    than stopping at the one file that is refused when it comes to write it.
-
-    Raises
-    ------
-    InputError
-        Naming the input, or the file that is not slingloads' own.
-    """
-    for name in names:
-        check_not_input(Path(out_dir) / name, inputs)
-    folded = {str(n).casefold() for n in names}
-    check_replaceable(out_dir, lambda name: SAME_NAME if name.casefold() in folded else None)
-
-
-def check_replaceable(out_dir, clash_of):
-    """Refuse to replace or remove a file of ``out_dir`` that is not slingloads' own.
-
-    Parameters
-    ----------
-    out_dir : path-like
-        Output folder (nothing to check if it does not exist yet).
-    clash_of : callable
-        ``clash_of(file name)``: what the run would do to that file of the folder (a clause
-        of the message, :data:`SAME_NAME` or :data:`EARLIER_FILE`), or None if it keeps it.
-
-    Returns
-    -------
-    dict
-        The folder's manifest entries (:func:`~slingloads.io.common.ownership.read_manifest`).
-
-    Raises
-    ------
-    InputError
-        Naming the first such file, why it is not slingloads' own, and what to do; or if the
-        folder's manifest is not one slingloads wrote.
-    """
-    folder = Path(os.path.realpath(os.fspath(out_dir)))
-    try:
-        entries = sorted(os.scandir(folder), key=lambda e: e.name)
-    except OSError:  # no folder yet (or one that cannot be listed: refused elsewhere)
-        return {}
-    manifest = read_manifest(folder)
-    for entry in entries:
-        clash = None if entry.name == MANIFEST_NAME else clash_of(entry.name)
-        if clash is None:
-            continue
-        if entry.is_file(follow_symlinks=False):
-            why = foreign_reason(entry.path, manifest)
-        else:
-            why = "it is a symbolic link or a special file, which slingloads never writes"
-        if why is not None:
-            raise refusal(Path(out_dir) / entry.name, why, clash)
-    return manifest
-
-
-def _os_error(err, what, path):
-    """An OutputError from an OSError, with advice for the usual causes."""
-    advice = {
-        errno.EACCES: "permission denied: choose a folder you may write to",
-        errno.EPERM: "operation not permitted: choose a folder you may write to",
-        errno.EROFS: "the file system is read-only: choose another folder",
-        errno.ENOSPC: "no space left on the device: free some space or choose another folder",
-        errno.EDQUOT: "disk quota exceeded: free some space or choose another folder",
-        errno.ENAMETOOLONG: "a file or folder name is too long for the file system: use a "
-                            "shorter input name or output folder",
-        errno.ENOTDIR: "a part of the path is a file, not a folder",
-        errno.ELOOP: "too many levels of symbolic links",
-        errno.EEXIST: "a file is in the way",
-    }.get(err.errno, err.strerror or str(err))
-    return OutputError(f"{what}: {advice}", path)
 
 
 class AtomicOutputs:
@@ -343,8 +193,13 @@ class AtomicOutputs:
             raise InputError("the output folder must not be empty", text)
         if "\x00" in text:
             raise InputError("the output folder must not contain a NUL character", text)
-        if os.path.islink(text) and not os.path.exists(text):
-            raise OutputError("the output folder is a broken symbolic link", self.out_dir)
+        if os.path.islink(text):
+            try:
+                os.stat(text)
+            except OSError as err:
+                what = ("a symbolic-link loop (the link leads back to itself)"
+                        if err.errno == errno.ELOOP else "a broken symbolic link")
+                raise OutputError(f"the output folder is {what}", self.out_dir) from None
         try:
             real = Path(os.path.realpath(text))
         except (OSError, ValueError) as err:
@@ -696,202 +551,3 @@ def new_file_mode():
     mask = os.umask(0)
     os.umask(mask)
     return 0o666 & ~mask
-
-
-# ---- machinery -----------------------------------------------------------------------------
-def _stage_prefix(real, kind):
-    """``.slingloads-<12 hex digits of the folder's name>.<kind>.``: short whatever the name."""
-    tag = hashlib.sha256(os.fsencode(real.name)).hexdigest()[:12]
-    return f"{TEMP_PREFIX}{tag}.{kind}."
-
-
-def _is_current_folder(real):
-    try:
-        return os.path.samefile(real, os.getcwd())
-    except (OSError, ValueError):  # no current folder, or the output folder is not there yet
-        return False
-
-
-def _writable(folder):
-    """True if files may be created in ``folder``: permitted to this user, and not marked
-    read-only by its mode (which is respected even by an administrator)."""
-    try:
-        mode = os.stat(folder).st_mode
-    except OSError:
-        return False
-    return os.access(folder, os.W_OK | os.X_OK) and bool(mode & 0o222)
-
-
-def _name_max(folder):
-    try:
-        return int(os.pathconf(folder, "PC_NAME_MAX"))
-    except (OSError, ValueError, AttributeError):
-        return _NAME_MAX
-
-
-def _pause():
-    """Pause between publishing steps when asked (testing aid: see PAUSE_VARIABLE)."""
-    text = os.environ.get(PAUSE_VARIABLE)
-    if text:
-        try:
-            seconds = float(text)
-        except ValueError:
-            return
-        if 0 < seconds < 60:
-            time.sleep(seconds)
-
-
-def _flock(folder, blocking):
-    """Open ``folder`` and take an exclusive lock on it: ``(descriptor, locked)``, the
-    descriptor None where folders cannot be opened or locks do not exist."""
-    if fcntl is None:
-        return None, False
-    try:
-        fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
-    except OSError:
-        return None, False
-    try:
-        fcntl.flock(fd, fcntl.LOCK_EX if blocking else fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except OSError:
-        return fd, False
-    return fd, True
-
-
-@contextmanager
-def _locked(folder):
-    """Hold an exclusive lock on ``folder`` (serialises the runs publishing beside it; where
-    the folder cannot be locked, publishing goes on unserialised)."""
-    fd, _ = _flock(folder, blocking=True)
-    try:
-        yield
-    finally:
-        if fd is not None:
-            os.close(fd)
-
-
-def _lock_folder(folder):
-    """Open and lock a staging folder for the life of this run; the descriptor, or None."""
-    return _flock(folder, blocking=False)[0]
-
-
-def _owner_alive(folder):
-    """True if a live run holds the lock of a staging folder."""
-    fd, locked = _flock(folder, blocking=False)
-    if fd is not None:
-        os.close(fd)
-    return fd is not None and not locked
-
-
-def _recover(parent, real):
-    """Repair what killed runs left beside the output folder ``real`` (under the lock).
-
-    A ``.ready`` folder (a complete new set) or an ``.old`` folder (the previous set) found
-    while the output folder is missing means a run died between the two renames of the
-    fallback publishing: the new set is put in place (or else the old one back). Every other
-    folder of dead runs is removed.
-    """
-    prefix = _stage_prefix(real, "")[:-1]
-    try:
-        leftovers = sorted(e.name for e in os.scandir(parent)
-                           if e.name.startswith(prefix) and e.is_dir(follow_symlinks=False))
-    except OSError:
-        return
-    dead = [parent / n for n in leftovers if not _owner_alive(parent / n)]
-    for kind in ("ready", "old"):
-        if os.path.lexists(real):
-            break
-        for path in dead:
-            if path.name.startswith(f"{prefix}{kind}."):
-                try:
-                    os.rename(path, real)
-                    dead.remove(path)
-                except OSError:
-                    continue
-                break
-    for path in dead:
-        shutil.rmtree(path, ignore_errors=True)
-
-
-def _exchange(a, b):
-    """Exchange two folders atomically, or by two renames where that is not possible."""
-    if os.environ.get(SWAP_VARIABLE, "").lower() != "rename" and _atomic_exchange(a, b):
-        return
-    ready = a.with_name(a.name.replace(".new.", ".ready.", 1))
-    old = a.with_name(a.name.replace(".new.", ".old.", 1))
-    os.rename(a, ready)  # the complete new set, marked ready
-    try:
-        os.rename(b, old)
-    except BaseException:
-        os.rename(ready, a)  # back under the staging name, which the caller removes
-        raise
-    try:
-        _pause()
-        os.rename(ready, b)
-    except BaseException:
-        if not os.path.lexists(b):
-            os.rename(old, b)  # put the previous set back
-        os.rename(ready, a)
-        raise
-    os.rename(old, a)  # the old set under the staging name, removed by the caller
-
-
-def _atomic_exchange(a, b):
-    """``renameat2(RENAME_EXCHANGE)`` (Linux) or ``renamex_np(RENAME_SWAP)`` (macOS).
-
-    Returns False where neither is available (the caller then renames twice); raises
-    OSError on a real failure.
-    """
-    call = _exchange_call()
-    if call is None:
-        return False
-    result = call(os.fsencode(str(a)), os.fsencode(str(b)))
-    if result == 0:
-        return True
-    code = ctypes.get_errno()
-    if code in (errno.ENOSYS, errno.EINVAL, errno.ENOTSUP, errno.EOPNOTSUPP, errno.EPERM):
-        return False  # not supported by this kernel or file system
-    raise OSError(code, os.strerror(code), str(b))
-
-
-_EXCHANGE = []
-
-
-def _exchange_call():
-    """The platform's atomic exchange of two paths, as ``call(a, b) -> 0 or -1``, or None."""
-    if _EXCHANGE:
-        return _EXCHANGE[0]
-    call = None
-    try:
-        libc = ctypes.CDLL(None, use_errno=True)
-    except OSError:  # pragma: no cover
-        libc = None
-    if libc is not None and sys.platform.startswith("linux"):
-        at_fdcwd, rename_exchange = -100, 2
-        function = getattr(libc, "renameat2", None)
-        if function is not None:
-            function.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p,
-                                 ctypes.c_uint]
-            function.restype = ctypes.c_int
-
-            def call(a, b):
-                return function(at_fdcwd, a, at_fdcwd, b, rename_exchange)
-        else:
-            number = {"x86_64": 316, "aarch64": 276}.get(platform.machine())
-            syscall = getattr(libc, "syscall", None)
-            if number is not None and syscall is not None:
-                syscall.restype = ctypes.c_long
-
-                def call(a, b):
-                    return syscall(ctypes.c_long(number), ctypes.c_int(at_fdcwd),
-                                   ctypes.c_char_p(a), ctypes.c_int(at_fdcwd),
-                                   ctypes.c_char_p(b), ctypes.c_uint(rename_exchange))
-    elif libc is not None and sys.platform == "darwin":  # pragma: no cover
-        function = getattr(libc, "renamex_np", None)
-        if function is not None:
-            function.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_uint]
-            function.restype = ctypes.c_int
-
-            def call(a, b):
-                return function(a, b, 2)  # RENAME_SWAP
-    _EXCHANGE.append(call)
-    return call

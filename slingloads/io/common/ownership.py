@@ -46,6 +46,7 @@ from pathlib import Path
 
 from slingloads.errors import InputError
 from slingloads.limits import MAX_OUTPUT_ENTRIES
+from slingloads.safeopen import open_regular
 
 #: Custom document property of every report workbook (its value: ``slingloads <version>``).
 XLSX_PROPERTY = "slingloads report"
@@ -82,7 +83,7 @@ def carries_mark(path):
     if reader is None:
         return False
     try:
-        with open(path, "rb") as stream:
+        with open_regular(path) as stream:
             return reader(stream)
     except Exception:  # noqa: BLE001 - a file that cannot be read as its kind has no mark
         return False
@@ -147,7 +148,7 @@ def file_entry(path):
     """The manifest entry of a file: ``{"bytes": size, "sha256": hex digest}``."""
     digest = hashlib.sha256()
     size = 0
-    with open(path, "rb") as stream:
+    with open_regular(path) as stream:
         for block in iter(lambda: stream.read(1 << 20), b""):
             digest.update(block)
             size += len(block)
@@ -166,7 +167,7 @@ def read_manifest(folder):
     """
     path = Path(folder) / MANIFEST_NAME
     try:
-        with open(path, "rb") as stream:
+        with open_regular(path, _MANIFEST_BYTES + 1) as stream:
             raw = stream.read(_MANIFEST_BYTES + 1)
     except FileNotFoundError:
         return {}

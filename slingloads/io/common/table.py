@@ -97,16 +97,8 @@ class Table:
 
 
 def check_unique(reader, table, column):
-    """Raise an InputError at the second occurrence of a value repeated in ``column``; texts
-    are compared with case ignored (``NOSE`` and ``nose`` would be told apart by the program
-    but not by a reader of the report)."""
-    seen = {}
-    for i, value in enumerate(table[column]):
-        key = value.casefold() if isinstance(value, str) else value
-        if key in seen:
-            first = seen[key]
-            same = "" if table[column][first] == value else (
-                f" {table[column][first]!r}: ids are compared with case ignored")
-            raise table.error(column, i, f"duplicate {column} (first at "
-                                         f"{table.cell(column, first)}{same})")
-        seen[key] = i
+    """Raise an InputError at the second occurrence of a value repeated in ``column``, case
+    ignored: the one rule of ids, :func:`slingloads.ids.check_unique`."""
+    from slingloads.ids import check_unique as unique
+
+    unique(table, column)

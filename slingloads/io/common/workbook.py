@@ -89,6 +89,7 @@ class WorkbookReader:
         #: Implausible but possible inputs, shown on the reports' Summary.
         self.warnings = []
         self._tables = {}
+        self._filled = {}
         self._cells_read = {}
         if _source is None:
             check_file(self.path, self.file)
@@ -137,7 +138,19 @@ class WorkbookReader:
         return self._source.sheetnames
 
     def has_sheet(self, name):
-        return self._sheet(name) is not None
+        """True when the workbook has sheet ``name`` with something below its header row: a
+        sheet left as the template wrote it (headers only) counts as deleted, so that an
+        optional sheet need not be removed before a run."""
+        actual = self._sheet(name)
+        if actual is None:
+            return False
+        if actual not in self._filled:
+            try:
+                self._filled[actual] = any(r > 1 and values
+                                           for r, values, _ in self._source.rows(actual))
+            except Exception:  # noqa: BLE001 - a corrupt sheet: reading it says how
+                self._filled[actual] = True
+        return self._filled[actual]
 
     def _sheet(self, name):
         """The workbook's name of sheet ``name``: the one sheet whose name matches it with

@@ -197,8 +197,8 @@ def draw_hull(ax, points, case_ids, hull, pair, units="SI"):
     px = in_report_units(pts[:, 0], kinds[0], units)
     py = in_report_units(pts[:, 1], kinds[1], units)
     ax.scatter(px, py, s=10, color=_CASE_COLOUR, zorder=2, label=f"load cases ({len(px)})")
-    hx = in_report_units(hull[pair[0]].to_numpy(float), kinds[0], units)
-    hy = in_report_units(hull[pair[1]].to_numpy(float), kinds[1], units)
+    hx = in_report_units(hull.iloc[:, 1].to_numpy(float), kinds[0], units)
+    hy = in_report_units(hull.iloc[:, 2].to_numpy(float), kinds[1], units)
     ax.fill(hx, hy, color=_MAX_COLOUR, alpha=0.08, lw=0)
     ax.plot(np.append(hx, hx[:1]), np.append(hy, hy[:1]), color=_MAX_COLOUR, lw=1.8,
             marker="o", ms=5, zorder=3, label="convex hull")

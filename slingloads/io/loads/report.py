@@ -41,10 +41,10 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.envelopes import component_index
+from slingloads.analyses.envelopes import bound_values, component_index
 from slingloads.analyses.hook_loads import TOWED
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
-from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
+from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS, LOAD_COLUMNS
 from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs, safe_file_part
 from slingloads.io.common.cover import info_from_digest, input_digest, report_info
@@ -168,7 +168,8 @@ def convert_by_component(frame, columns, units, component="component"):
 
 
 def _loads_spec(names=COMPONENTS):
-    return {n: (n, COMPONENT_KINDS[component_index(n)]) for n in names}
+    return {LOAD_COLUMNS[component_index(n)]: (n, COMPONENT_KINDS[component_index(n)])
+            for n in names}
 
 
 def _unit(kind, units):
@@ -195,9 +196,18 @@ def sfbm_table(result, units="SI", ultimate=False):
 def envelope_report_table(result, units="SI", ultimate=False):
     """Envelope with the critical case and correlated loads, in report units, with a
     ``unit`` column for the row's ``value``."""
-    frame = convert_by_component(result.envelope(ultimate=ultimate), ["value"], units)
-    spec = {"x [m]": ("x", "length"), **_loads_spec()}
+    frame = _one_value(result.envelope(ultimate=ultimate))
+    frame = convert_by_component(frame, ["value"], units)
+    spec = {"x_m": ("x", "length"), **_loads_spec()}
     return convert_columns(frame, spec, units)
+
+
+def _one_value(frame):
+    """An API table's ``value_N`` / ``value_Nm`` pair as one ``value`` column in their place
+    (the report gives each row's unit beside it)."""
+    out = frame.drop(columns=["value_Nm"]).rename(columns={"value_N": "value"})
+    out["value"] = bound_values(frame)
+    return out
 
 
 def envelope_wide_table(result, components, units="SI", ultimate=False):
@@ -354,11 +364,11 @@ def hull_report_table(result, pair, stations, units="SI"):
         hull = result.hull(station, pair)
         index = _station_index(result, station)
         hull.insert(0, "vertex", np.arange(1, len(hull) + 1))
-        hull.insert(0, "x [m]", result.stations[index])
+        hull.insert(0, "x_m", result.stations[index])
         hull.insert(0, "station", result.station_ids[index])
         frames.append(hull)
     frame = pd.concat(frames, ignore_index=True)
-    return convert_columns(frame, {"x [m]": ("x", "length"), **_loads_spec(pair)}, units)
+    return convert_columns(frame, {"x_m": ("x", "length"), **_loads_spec(pair)}, units)
 
 
 def _station_index(result, station):
@@ -505,8 +515,8 @@ def governing_report_table(result, units="SI"):
     cases = result.cases.set_index("case")
     for column in ("hook", "aero", "chute"):
         frame[column] = cases.loc[frame["case"], column].to_numpy()
-    frame = convert_by_component(frame, ["value"], units)
-    return convert_columns(frame, {"x [m]": ("x", "length")}, units)
+    frame = convert_by_component(_one_value(frame), ["value"], units)
+    return convert_columns(frame, {"x_m": ("x", "length")}, units)
 
 
 def inputs_tables(result, units="SI"):
@@ -835,17 +845,9 @@ def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input
 
 
 def envelope_csv_frame(result):
-    """The LIMIT envelope as written to the CSV file (SI, ``name_unit`` headers)."""
-    env = result.envelope()
-    moment = env["component"].str.startswith("M").to_numpy()
-    frame = pd.DataFrame({
-        "station": env["station"], "x_m": env["x [m]"], "component": env["component"],
-        "bound": env["bound"], "case": env["case"],
-        "value_N": np.where(moment, np.nan, env["value"].to_numpy(float)),
-        "value_Nm": np.where(moment, env["value"].to_numpy(float), np.nan)})
-    for name, column in zip(COMPONENTS, SFBM_CSV_COLUMNS[3:], strict=True):
-        frame[column] = env[name].to_numpy(float)
-    return frame[list(ENVELOPE_CSV_COLUMNS)]
+    """The LIMIT envelope as written to the CSV file: :meth:`LoadsResult.envelope` itself
+    (SI, ``name_unit`` headers)."""
+    return result.envelope()[list(ENVELOPE_CSV_COLUMNS)]
 
 
 def sheets_columns(sheets, name):

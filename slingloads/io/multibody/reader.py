@@ -22,6 +22,7 @@ from slingloads.analyses.multibody.manoeuvres import (
     Manoeuvre,
     paper_manoeuvres,
 )
+from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -29,6 +30,7 @@ from slingloads.io.airframe.reader import (
     read_parachute,
 )
 from slingloads.io.common.locate import Place, located
+from slingloads.io.common.referenced import referenced_file
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.multibody.schema import (
     CANOPY_TABLES,
@@ -41,7 +43,8 @@ from slingloads.io.multibody.schema import (
     SHEETS,
     TAILS,
 )
-from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES
+from slingloads.io.multibody.trajectory import read_trajectory_csv
+from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES, MEMORY_BUDGET
 from slingloads.models.aero_tables import Table1D
 from slingloads.models.atmosphere import isa_density, true_airspeed
 from slingloads.models.gusts import GUST_KINDS, GUST_VELOCITY, make_gust
@@ -122,6 +125,14 @@ def check_work(params, runs, settings):
                  f"too much work: {runs} runs of {settings['t_end']:g} s sampled at this "
                  f"interval store {samples:,} samples, more than the "
                  f"{MAX_MULTIBODY_SAMPLES:,} allowed (limits of slingloads)")
+    from slingloads.analyses.multibody.simulate import DRIVE_BUDGET, SAMPLE_BYTES
+
+    need = DRIVE_BUDGET + samples * SAMPLE_BYTES
+    params.check("multibody output interval", need <= MEMORY_BUDGET,
+                 f"too much memory: {runs} runs of {settings['t_end']:g} s sampled at this "
+                 f"interval need about {need / 2**20:,.0f} MB, more than the "
+                 f"{MEMORY_BUDGET / 2**20:,.0f} MB budget of a computation (limits of "
+                 "slingloads; docs/inputs-and-outputs.md, Memory)")
     if settings["dt"] is not None:
         steps = runs * settings["t_end"] / settings["dt"]
         params.check("multibody time step", steps <= MAX_MULTIBODY_RUN_STEPS,
@@ -291,17 +302,14 @@ def read_manoeuvres(reader, params, system, t_end):
         return tuple(paper_manoeuvres(system.density_altitude)), "the paper's list"
     t = reader.table(_SPEC["MultibodyManoeuvres"])
     rows = _Rows(reader, t)
-    seen = {}
+    check_unique(t, "name")
     out = []
     for i in range(len(t)):
         name = str(t["name"][i]).strip()
-        if name in seen:
-            raise reader.error(f"duplicate name (first at {t.cell('name', seen[name])})", name,
-                               t.sheet, t.cell("name", i))
-        seen[name] = i
         kind = rows.choice("kind", i, MANOEUVRE_KINDS, required=True)
         builder = {"free response": _free_response, "gust": _gust,
-                   "forward acceleration": _acceleration, "wind ramp": _wind_ramp}[kind]
+                   "forward acceleration": _acceleration, "wind ramp": _wind_ramp,
+                   "hook trajectory": _hook_trajectory}[kind]
         with located(t, default="kind", index=i):
             out.append(builder(rows, i, name, system, t_end))
     return tuple(out), "MultibodyManoeuvres sheet"
@@ -394,6 +402,25 @@ def _acceleration(rows, i, name, system, t_end):
     tas = float(true_airspeed(target, system.density_altitude))
     return Manoeuvre(name, trajectory=ForwardAcceleration(tas, rate, onset),
                      disturbance=rows.disturbance(i, HOVER_SEED))
+
+
+def _hook_trajectory(rows, i, name, system, t_end):
+    """A run along a hook trajectory read from the CSV file of column ``file``, from the
+    trim at the system airspeed."""
+    rows.unused(("shape", "direction", "amplitude", "onset", "duration", "target", "rate"), i,
+                "hook trajectory")
+    if not rows.given("file", i):
+        raise rows.error("file", i, "a hook trajectory needs its CSV 'file' (time_s and "
+                                    "ax_mps2, ay_mps2, az_mps2, or vx_mps..., or x_m...)")
+    t = rows.t
+    text = str(t["file"][i]).strip()
+    path = referenced_file(rows.reader, text, t.sheet, t.cell("file", i))
+    trajectory = read_trajectory_csv(path)
+    late = [b for b in trajectory.breakpoints if b >= t_end]
+    if late:
+        raise rows.error("file", i, f"the trajectory's breakpoints must lie before the end "
+                                    f"of the run ({t_end:g} s); {late[0]:g} s does not")
+    return Manoeuvre(name, trajectory=trajectory, disturbance=rows.disturbance(i, {}))
 
 
 def _wind_ramp(rows, i, name, system, t_end):

@@ -135,7 +135,7 @@ def system_table(result, units="SI"):
         _row("Ixz about the CG", inertia[0, 2], "inertia", units, "tensor sign"),
         _row("cable length", s.cable.length, "length", units, "unstretched, hook to hub"),
         _row("cable EA", s.cable.ea, "force", units),
-        _row("cable damping ratio", s.cable.damping_ratio, "-", units),
+        _row("cable damping ratio", s.cable.damping_ratio_for(s.hung_mass), "-", units),
         _row("static stretch W L / EA", s.cable.static_stretch(s.weight), "length", units),
     ]
     if s.parachute is not None:

@@ -43,7 +43,8 @@ CANOPY_TABLES = ("extended", "sheet")
 #: Valid values of 'multibody carrier'.
 CARRIERS = ("frozen", "free")
 #: Manoeuvre kinds of the MultibodyManoeuvres sheet.
-MANOEUVRE_KINDS = ("free response", "gust", "forward acceleration", "wind ramp")
+MANOEUVRE_KINDS = ("free response", "gust", "forward acceleration", "wind ramp",
+                   "hook trajectory")
 #: Gust directions of the MultibodyManoeuvres sheet.
 DIRECTIONS = ("lateral", "longitudinal", "vertical")
 #: Initial-disturbance columns of the MultibodyManoeuvres sheet, by disturbance name.
@@ -182,6 +183,12 @@ SHEETS = (
         Column("vertical offset", "length", "ft", False, None,
                "Initial CG displacement up (earth axes). Typical: 0 to 1 ft.",
                bounds=OFFSET),
+        Column("file", TEXT, required=False, default="",
+               help="Hook trajectory only: a CSV file (path from the workbook's folder) with "
+                    "time_s and ax_mps2, ay_mps2, az_mps2 (acceleration) or vx_mps, vy_mps, "
+                    "vz_mps (velocity) or x_m, y_m, z_m (displacement) of the hook relative to "
+                    "its steady flight, earth axes (X aft, Y right, Z up), one row per "
+                    "breakpoint (slingloads.io.multibody.trajectory)."),
         Column("description", TEXT, required=False, default="", help="Free text."),
     ), help="Optional: the runs of the multibody model, each from its trim plus its stated "
        "initial disturbance (empty disturbance columns: 10 deg of yaw for a free response, a "

@@ -11,6 +11,7 @@ built on it (trim, linearisation, manoeuvres, metrics) are in
 :mod:`slingloads.analyses.multibody`.
 """
 
+from slingloads.models.hook_trajectory import HookTrajectory, PiecewiseAcceleration
 from slingloads.models.multibody.cable import Cable
 from slingloads.models.multibody.carrier import (
     ForwardAcceleration,
@@ -26,5 +27,6 @@ from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.multibody.system import SlingSystem
 
 __all__ = ["Cable", "ForwardAcceleration", "FreeCarrier", "FrozenCarrier", "HingedParachute",
-           "LateralHookMotion", "LiftingSurface", "QuasiStaticParachute", "RigidBody",
-           "SlingSystem", "SteadyFlight", "Wind", "WindRamp"]
+           "HookTrajectory", "LateralHookMotion", "LiftingSurface", "PiecewiseAcceleration",
+           "QuasiStaticParachute", "RigidBody", "SlingSystem", "SteadyFlight", "Wind",
+           "WindRamp"]

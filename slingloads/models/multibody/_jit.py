@@ -8,40 +8,23 @@ the integration kernel allocates its work arrays once per block of runs.
 
 numba invalidates a cached function when its own source file changes, not when a function it
 calls from another module does. The kernels span several modules, so the cache files of this
-package are dropped whenever any of its sources changes (:func:`_drop_stale_cache`).
+package are dropped whenever any of its sources, the packed layouts
+(:mod:`slingloads.models.packed`) or the Dormand-Prince pair
+(:mod:`slingloads.models.dormand_prince`) changes
+(:func:`slingloads.models.numba_cache.drop_stale_cache`).
 """
 
 from __future__ import annotations
 
-import hashlib
 from pathlib import Path
 
 import numba
 
+from slingloads.models.numba_cache import drop_stale_cache
+
 _HERE = Path(__file__).resolve().parent
-_STAMP = "multibody-sources.sha256"
 
-
-def _drop_stale_cache(folder=_HERE):
-    """Delete the numba cache files of ``folder`` if its sources changed since they were made."""
-    digest = hashlib.sha256()
-    for path in sorted(folder.glob("*.py")):
-        digest.update(path.name.encode())
-        digest.update(path.read_bytes())
-    cache = folder / "__pycache__"
-    stamp = cache / _STAMP
-    try:
-        if stamp.exists() and stamp.read_text() == digest.hexdigest():
-            return
-        cache.mkdir(exist_ok=True)
-        for old in list(cache.glob("*.nbi")) + list(cache.glob("*.nbc")):
-            old.unlink()
-        stamp.write_text(digest.hexdigest())
-    except OSError:  # a read-only installation: numba then compiles in memory
-        pass
-
-
-_drop_stale_cache()
+drop_stale_cache(_HERE, also=(_HERE.parent / "packed.py", _HERE.parent / "dormand_prince.py"))
 
 #: Compile a scalar kernel that allocates nothing (cached on disk, releases the GIL so that
 #: several threads run it at once). numba's reference counting of arrays is off for it

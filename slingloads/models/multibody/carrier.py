@@ -23,9 +23,12 @@ Y right, Z up. The carrier is a point (its hook); only its velocity matters to t
   positive).
 
 Trajectories (commanded velocity relative to the steady flight at the system airspeed):
-:class:`SteadyFlight`, :class:`ForwardAcceleration` (from hover to a target speed with a
-jerk-limited acceleration), :class:`LateralHookMotion` (a lateral hook motion of
-:mod:`slingloads.models.carrier_motion`, e.g. for the lateral-plane checks).
+:class:`SteadyFlight`, and any :class:`~slingloads.models.hook_trajectory.HookTrajectory`
+(any 3-D hook motion: piecewise acceleration, velocity or displacement histories, motions
+along a direction), of which :class:`ForwardAcceleration` (from hover to a target speed with
+a jerk-limited acceleration) and :class:`LateralHookMotion` (a lateral hook motion of
+:mod:`slingloads.models.carrier_motion`, e.g. for the lateral-plane checks) are named
+cases: each flies its ``trajectory``.
 """
 
 from __future__ import annotations
@@ -36,6 +39,7 @@ import numpy as np
 
 from slingloads.checks import non_negative, positive
 from slingloads.errors import InputError
+from slingloads.models.hook_trajectory import HookTrajectory
 
 #: Default gain of the free carrier's speed hold (time constant 2 s). [1/s]
 SPEED_GAIN = 0.5
@@ -136,19 +140,14 @@ class ForwardAcceleration(_Trajectory):
             self.jerk_time, "forward-acceleration jerk time must be > 0 [s]"))
 
     @property
-    def _shape(self):
-        """(peak acceleration [m/s^2], hold time [s])."""
-        a, tj = self.acceleration, self.jerk_time
-        hold = self.target / a - tj
-        if hold < 0:
-            return self.target / tj, 0.0
-        return a, hold
+    def trajectory(self):
+        """The :class:`~slingloads.models.hook_trajectory.HookTrajectory` it flies."""
+        return HookTrajectory.forward_acceleration(self.target, self.acceleration,
+                                                   self.onset, self.jerk_time)
 
     @property
     def breakpoints(self):
-        _, hold = self._shape
-        t0, tj = self.onset, self.jerk_time
-        return (t0, t0 + tj, t0 + tj + hold, t0 + 2 * tj + hold)
+        return self.trajectory.breakpoints
 
     @property
     def end_time(self):
@@ -157,26 +156,11 @@ class ForwardAcceleration(_Trajectory):
 
     def forward(self, t):
         """Forward acceleration [m/s^2] and speed [m/s] at times ``t`` [s]."""
-        t = np.asarray(t, float)
-        a, hold = self._shape
-        tj = self.jerk_time
-        tau = t - self.onset
-        t1, t2, t3 = tj, tj + hold, 2 * tj + hold
-        acc = np.select([tau < 0, tau < t1, tau < t2, tau < t3],
-                        [0.0, a * tau / tj, a, a * (t3 - tau) / tj], 0.0)
-        v1 = 0.5 * a * tj
-        v2 = v1 + a * hold
-        speed = np.select(
-            [tau < 0, tau < t1, tau < t2, tau < t3],
-            [0.0, 0.5 * a * tau**2 / tj, v1 + a * (tau - t1),
-             v2 + a * (tau - t2) - 0.5 * a * (tau - t2) ** 2 / tj], self.target)
-        return acc, speed
+        _, v, a = self.trajectory.kinematics(np.asarray(t, float).reshape(-1))
+        return -a[:, 0], -v[:, 0]
 
     def command(self, t, v0):
-        acc, speed = self.forward(np.asarray(t, float).reshape(-1))
-        zeros = np.zeros_like(acc)
-        return (np.column_stack([-acc, zeros, zeros]),
-                np.column_stack([-speed, zeros, zeros]) + np.asarray(v0, float))
+        return self.trajectory.command(t, v0)
 
     def describe(self):
         return (f"forward acceleration to {self.target:.4g} m/s at "
@@ -207,15 +191,16 @@ class LateralHookMotion(_Trajectory):
                              self.motion.velocity_jump)
 
     @property
+    def trajectory(self):
+        """The :class:`~slingloads.models.hook_trajectory.HookTrajectory` it flies."""
+        return HookTrajectory.lateral(self.motion)
+
+    @property
     def breakpoints(self):
-        return tuple(getattr(self.motion, "breakpoints", ()))
+        return self.trajectory.breakpoints
 
     def command(self, t, v0):
-        t = np.asarray(t, float).reshape(-1)
-        _, vel, acc = self.motion.kinematics(t)
-        zeros = np.zeros_like(t)
-        return (np.column_stack([zeros, acc, zeros]),
-                np.column_stack([zeros, vel, zeros]) + np.asarray(v0, float))
+        return self.trajectory.command(t, v0)
 
     def describe(self):
         return f"lateral hook motion: {self.motion.describe()}"

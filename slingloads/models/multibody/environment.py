@@ -33,7 +33,23 @@ GUST_DIRECTIONS = {"lateral": (0.0, -1.0, 0.0), "longitudinal": (1.0, 0.0, 0.0),
 
 
 def gust_direction(direction):
-    """Unit vector of a named or given gust direction."""
+    """Unit vector of a named or given gust direction.
+
+    Parameters
+    ----------
+    direction : str or array_like, shape (3,)
+        One of :data:`GUST_DIRECTIONS`, or a vector in earth axes (non-zero).
+
+    Returns
+    -------
+    ndarray, shape (3,)
+        Earth axes. [-]
+
+    Raises
+    ------
+    InputError
+        For an unknown name or a zero vector.
+    """
     if isinstance(direction, str):
         if direction not in GUST_DIRECTIONS:
             raise InputError(f"{direction=!r} is not a valid gust direction; valid directions "
@@ -82,7 +98,18 @@ class WindRamp:
         return (self.onset, self.end_time)
 
     def speed(self, t):
-        """Head-wind speed [m/s] at ``t`` [s]."""
+        """Head-wind speed of the ramp.
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray
+            [m/s]
+        """
         t = np.asarray(t, float)
         return np.clip((t - self.onset) * self.rate, 0.0, self.target)
 
@@ -124,7 +151,18 @@ class Wind:
         return points + (self.ramp.breakpoints if self.ramp is not None else ())
 
     def velocity(self, t):
-        """Wind velocity, shape (n, 3), earth axes, at times ``t`` [s]. [m/s]"""
+        """Wind velocity at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like
+            Times. [s]
+
+        Returns
+        -------
+        ndarray, shape (n, 3)
+            Earth axes. [m/s]
+        """
         t = np.asarray(t, float).reshape(-1)
         w = np.tile(np.asarray(self.steady), (t.size, 1))
         if self.gust is not None:
@@ -134,6 +172,12 @@ class Wind:
         return w
 
     def describe(self):
+        """The wind in words ("still air" when there is none).
+
+        Returns
+        -------
+        str
+        """
         parts = []
         if any(self.steady):
             parts.append(f"steady wind {np.round(self.steady, 3).tolist()} m/s")

@@ -54,22 +54,92 @@ from slingloads.models.multibody.rigid_body import (
     to_body,
     to_earth,
 )
+from slingloads.models.packed import BODY, EARTH, TENSOR, Field, Layout
 
 STATES = ("Vc_X", "Vc_Y", "Vc_Z", "p_X", "p_Y", "p_Z", "v_X", "v_Y", "v_Z",
           "q0", "q1", "q2", "q3", "p", "q", "r", "theta", "psi", "theta_dot", "psi_dot")
 N_STATES = len(STATES)
 
-PARAMETERS = (
-    "mass", "Iinv_xx", "Iinv_xy", "Iinv_xz", "Iinv_yx", "Iinv_yy", "Iinv_yz", "Iinv_zx",
-    "Iinv_zy", "Iinv_zz", "I_xx", "I_xy", "I_xz", "I_yx", "I_yy", "I_yz", "I_zx", "I_zy", "I_zz",
-    "hub_x", "hub_y", "hub_z", "ref_x", "ref_y", "ref_z", "fuselage_area", "fuselage_length",
-    "fin_x", "fin_y", "fin_z", "fin_area_eff", "tail_x", "tail_y", "tail_z", "tail_area_eff",
-    "chute_x", "chute_y", "chute_z", "chute_mode", "chute_drag_area", "chute_mass",
-    "chute_line", "cable_length", "cable_stiffness", "cable_damping", "carrier_free",
-    "carrier_mass", "carrier_drag_area", "carrier_gain", "pull_X", "pull_Y", "pull_Z", "density",
-    "gravity", "v_cut", "lock_translation", "lock_tilt", "lock_yaw", "mast_x", "mast_y",
-    "mast_z", "fuselage_force_frame", "fuselage_moment_frame")
-N_PARAMETERS = len(PARAMETERS)
+#: The parameter vector of a run, one table (:mod:`slingloads.models.packed`): positions are
+#: from the CG in body axes; the packer (:class:`~slingloads.models.multibody.system.SlingSystem`)
+#: and :func:`evaluate` address it by the offsets below.
+LAYOUT = Layout((
+    Field("mass", "kg", "mass of the carried helicopter (HC)"),
+    Field("Iinv", "1/(kg m^2)", "inverse of the HC inertia tensor about the CG", TENSOR),
+    Field("I", "kg m^2", "HC inertia tensor about the CG", TENSOR),
+    Field("hub", "m", "cable attachment (rotor hub)", BODY),
+    Field("ref", "m", "moment reference point of the fuselage tables", BODY),
+    Field("fuselage_area", "m^2", "reference area of the fuselage tables (0: no fuselage)"),
+    Field("fuselage_length", "m", "reference length of the fuselage tables"),
+    Field("fin", "m", "fin centre of pressure", BODY),
+    Field("fin_area_eff", "m^2", "fin area times efficiency (0: no fin)"),
+    Field("tail", "m", "horizontal tail centre of pressure", BODY),
+    Field("tail_area_eff", "m^2", "tail area times efficiency (0: no tail)"),
+    Field("chute", "m", "parachute attachment", BODY),
+    Field("chute_mode", "-", "parachute model: CHUTE_NONE, CHUTE_HINGED, CHUTE_QUASI_STATIC"),
+    Field("chute_drag_area", "m^2", "parachute drag area (hinged: wake ratio x area, its CD "
+          "from the table)"),
+    Field("chute_mass", "kg", "canopy mass (hinged parachute)"),
+    Field("chute_line", "m", "parachute line length"),
+    Field("cable_length", "m", "unstretched carrier cable length"),
+    Field("cable_stiffness", "N/m", "cable spring rate EA/l"),
+    Field("cable_damping", "N s/m", "cable damping"),
+    Field("carrier_free", "-", "> 0: the carrier's velocity is a state driven by a speed "
+          "loop; else it follows the commanded acceleration"),
+    Field("carrier_mass", "kg", "carrier mass (free carrier)"),
+    Field("carrier_drag_area", "m^2", "carrier drag area (free carrier)"),
+    Field("carrier_gain", "1/s", "carrier speed-loop gain (free carrier)"),
+    Field("pull", "N", "trim pull of the cable on the carrier (free carrier feed-forward)",
+          EARTH),
+    Field("density", "kg/m^3", "air density"),
+    Field("gravity", "m/s^2", "acceleration of gravity"),
+    Field("v_cut", "m/s", "airspeed below which aerodynamic loads are neglected"),
+    Field("lock_translation", "-", "> 0: no CG acceleration (verification runs)"),
+    Field("lock_tilt", "-", "> 0: no roll or pitch acceleration (verification runs)"),
+    Field("lock_yaw", "-", "> 0: no yaw acceleration (verification runs)"),
+    Field("mast", "-", "unit vector of the rotor mast", BODY),
+    Field("fuselage_force_frame", "-", "axes of the fuselage force coefficients "
+          "(FRAME_CODES)"),
+    Field("fuselage_moment_frame", "-", "axes of the fuselage moment coefficients "
+          "(FRAME_CODES)"),
+))
+#: Names of the parameter vector's elements, in order.
+PARAMETERS = LAYOUT.names
+N_PARAMETERS = len(LAYOUT)
+# offsets of the fields (compile-time constants of the kernels)
+MASS = LAYOUT["mass"]
+IINV = LAYOUT["Iinv"]
+INERTIA = LAYOUT["I"]
+HUB = LAYOUT["hub"]
+REF = LAYOUT["ref"]
+FUSELAGE_AREA = LAYOUT["fuselage_area"]
+FUSELAGE_LENGTH = LAYOUT["fuselage_length"]
+FIN = LAYOUT["fin"]
+FIN_AREA_EFF = LAYOUT["fin_area_eff"]
+TAIL = LAYOUT["tail"]
+TAIL_AREA_EFF = LAYOUT["tail_area_eff"]
+CHUTE = LAYOUT["chute"]
+CHUTE_MODE = LAYOUT["chute_mode"]
+CHUTE_DRAG_AREA = LAYOUT["chute_drag_area"]
+CHUTE_MASS = LAYOUT["chute_mass"]
+CHUTE_LINE = LAYOUT["chute_line"]
+CABLE_LENGTH = LAYOUT["cable_length"]
+CABLE_STIFFNESS = LAYOUT["cable_stiffness"]
+CABLE_DAMPING = LAYOUT["cable_damping"]
+CARRIER_FREE = LAYOUT["carrier_free"]
+CARRIER_MASS = LAYOUT["carrier_mass"]
+CARRIER_DRAG_AREA = LAYOUT["carrier_drag_area"]
+CARRIER_GAIN = LAYOUT["carrier_gain"]
+PULL = LAYOUT["pull"]
+DENSITY = LAYOUT["density"]
+GRAVITY = LAYOUT["gravity"]
+V_CUT = LAYOUT["v_cut"]
+LOCK_TRANSLATION = LAYOUT["lock_translation"]
+LOCK_TILT = LAYOUT["lock_tilt"]
+LOCK_YAW = LAYOUT["lock_yaw"]
+MAST = LAYOUT["mast"]
+FUSELAGE_FORCE_FRAME = LAYOUT["fuselage_force_frame"]
+FUSELAGE_MOMENT_FRAME = LAYOUT["fuselage_moment_frame"]
 DRIVE = ("wind_X", "wind_Y", "wind_Z", "accel_X", "accel_Y", "accel_Z", "cmd_X", "cmd_Y",
          "cmd_Z")
 
@@ -106,7 +176,7 @@ def _solve3(c1, c2, c3, b):
 
 @jit
 def _mat(P, k, x, y, z):
-    """3 x 3 matrix stored row-major from P[k] times (x, y, z)."""
+    """3 x 3 matrix stored row-major from ``P[k]`` on, times (x, y, z)."""
     return (P[k] * x + P[k + 1] * y + P[k + 2] * z,
             P[k + 3] * x + P[k + 4] * y + P[k + 5] * z,
             P[k + 6] * x + P[k + 7] * y + P[k + 8] * z)
@@ -116,7 +186,34 @@ def _mat(P, k, x, y, z):
 def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v,
              dx, info, want):
     """State derivative ``dx`` of state ``x``; the quantities :data:`INFO` in ``info`` if
-    ``want``. Returns the flag of :data:`FLAGS` (0 when every table was inside its range)."""
+    ``want``.
+
+    Parameters
+    ----------
+    x : ndarray, shape (N_STATES,)
+        State (:data:`STATES`). [m, m/s, -, rad/s, rad]
+    P : ndarray, shape (N_PARAMETERS,)
+        Parameter vector (:data:`LAYOUT`).
+    drive : ndarray, shape (9,)
+        Wind [m/s], commanded carrier acceleration [m/s^2] and velocity [m/s], earth axes
+        (:data:`DRIVE`).
+    fus_a, fus_b, fus_c : ndarray
+        Fuselage table: alpha and beta breakpoints [rad], stacked coefficients [-].
+    fin_g, fin_v, tail_g, tail_v, cd_g, cd_v : ndarray
+        Fin, tail and parachute CD tables: breakpoints [rad], values [-]
+        (:meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`).
+    dx : ndarray, shape (N_STATES,)
+        Receives the state derivative. [state units / s]
+    info : ndarray, shape (N_INFO,)
+        Receives the reported quantities (:data:`INFO`, SI) when ``want``.
+    want : bool
+        Evaluate the reported quantities.
+
+    Returns
+    -------
+    int
+        The flag of :data:`FLAGS` (0 when every table was inside its range).
+    """
     flag = 0
     vc0, vc1, vc2 = x[0], x[1], x[2]
     p0, p1, p2 = x[3], x[4], x[5]
@@ -125,10 +222,10 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     q0, q1, q2, q3 = x[9] / qn, x[10] / qn, x[11] / qn, x[12] / qn
     wp, wq, wr = x[13], x[14], x[15]
     R = dcm(q0, q1, q2, q3)
-    mass = P[0]
-    half_rho = 0.5 * P[52]
-    grav = P[53]
-    v_cut = P[54]
+    mass = P[MASS]
+    half_rho = 0.5 * P[DENSITY]
+    grav = P[GRAVITY]
+    v_cut = P[V_CUT]
 
     # air velocity relative to the CG, body axes
     ub = to_body(R, drive[0] - v0, drive[1] - v1, drive[2] - v2)
@@ -138,13 +235,13 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     # fuselage at its reference point
     alpha, beta, speed_ref = 0.0, 0.0, 0.0
     ffx, ffy, ffz, fmx, fmy, fmz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    if P[25] > 0.0:
-        rx, ry, rz = P[22], P[23], P[24]
+    if P[FUSELAGE_AREA] > 0.0:
+        rx, ry, rz = P[REF], P[REF + 1], P[REF + 2]
         u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, rx, ry, rz)
         speed_ref = math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
         ffx, ffy, ffz, gx, gy, gz, alpha, beta, ok_a, ok_b = fuselage_loads(
-            u[0], u[1], u[2], half_rho, P[25], P[26], fus_a, fus_b, fus_c, v_cut,
-            int(P[N_PARAMETERS - 2]), int(P[N_PARAMETERS - 1]))
+            u[0], u[1], u[2], half_rho, P[FUSELAGE_AREA], P[FUSELAGE_LENGTH], fus_a, fus_b,
+            fus_c, v_cut, int(P[FUSELAGE_FORCE_FRAME]), int(P[FUSELAGE_MOMENT_FRAME]))
         if not ok_a:
             flag |= 1
         if not ok_b:
@@ -160,11 +257,11 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
 
     # fin: normal force along body y from its local flow
     fin_force, fin_angle = 0.0, 0.0
-    if P[30] > 0.0:
-        rx, ry, rz = P[27], P[28], P[29]
+    if P[FIN_AREA_EFF] > 0.0:
+        rx, ry, rz = P[FIN], P[FIN + 1], P[FIN + 2]
         u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, rx, ry, rz)
-        fin_force, fin_angle, ok = surface_force(u[0], u[1], u[2], 1, -1.0, half_rho, P[30],
-                                                 fin_g, fin_v, v_cut)
+        fin_force, fin_angle, ok = surface_force(u[0], u[1], u[2], 1, -1.0, half_rho,
+                                                 P[FIN_AREA_EFF], fin_g, fin_v, v_cut)
         if not ok:
             flag |= 2
         fy += fin_force
@@ -173,11 +270,11 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
 
     # horizontal tail: normal force along body z
     tail_force, tail_angle = 0.0, 0.0
-    if P[34] > 0.0:
-        rx, ry, rz = P[31], P[32], P[33]
+    if P[TAIL_AREA_EFF] > 0.0:
+        rx, ry, rz = P[TAIL], P[TAIL + 1], P[TAIL + 2]
         u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, rx, ry, rz)
-        tail_force, tail_angle, ok = surface_force(u[0], u[1], u[2], 2, 1.0, half_rho, P[34],
-                                                   tail_g, tail_v, v_cut)
+        tail_force, tail_angle, ok = surface_force(u[0], u[1], u[2], 2, 1.0, half_rho,
+                                                   P[TAIL_AREA_EFF], tail_g, tail_v, v_cut)
         if not ok:
             flag |= 4
         fz += tail_force
@@ -191,7 +288,7 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     fz += gb[2]
 
     # cable, hook to hub
-    hx, hy, hz = P[19], P[20], P[21]
+    hx, hy, hz = P[HUB], P[HUB + 1], P[HUB + 2]
     he = to_earth(R, hx, hy, hz)
     d0, d1, d2 = p0 + he[0], p1 + he[1], p2 + he[2]
     wh = cross(wp, wq, wr, hx, hy, hz)
@@ -199,7 +296,7 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     dd0, dd1, dd2 = v0 - vc0 + whe[0], v1 - vc1 + whe[1], v2 - vc2 + whe[2]
     span = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
     rate = (d0 * dd0 + d1 * dd1 + d2 * dd2) / span
-    tension = cable_tension(span, rate, P[42], P[43], P[44])
+    tension = cable_tension(span, rate, P[CABLE_LENGTH], P[CABLE_STIFFNESS], P[CABLE_DAMPING])
     cb = to_body(R, -tension * d0 / span, -tension * d1 / span, -tension * d2 / span)
     fx += cb[0]
     fy += cb[1]
@@ -210,15 +307,15 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     mz += t[2]
 
     # gyroscopic moment
-    iw = _mat(P, 10, wp, wq, wr)
+    iw = _mat(P, INERTIA, wp, wq, wr)
     t = cross(wp, wq, wr, iw[0], iw[1], iw[2])
     mx -= t[0]
     my -= t[1]
     mz -= t[2]
 
     # parachute
-    ax, ay, az = P[35], P[36], P[37]
-    mode = P[38]
+    ax, ay, az = P[CHUTE], P[CHUTE + 1], P[CHUTE + 2]
+    mode = P[CHUTE_MODE]
     line_tension, chute_alpha, chute_drag = 0.0, 0.0, 0.0
     lx, ly, lz = 1.0, 0.0, 0.0
     thdd, psdd = 0.0, 0.0
@@ -226,7 +323,7 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
         u = flow_at(ub[0], ub[1], ub[2], wp, wq, wr, ax, ay, az)
         speed = math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
         if speed >= v_cut:
-            k = half_rho * P[39] * speed
+            k = half_rho * P[CHUTE_DRAG_AREA] * speed
             dbx, dby, dbz = k * u[0], k * u[1], k * u[2]
             fx += dbx
             fy += dby
@@ -239,11 +336,11 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
             line_tension = chute_drag
             lx, ly, lz = u[0] / speed, u[1] / speed, u[2] / speed
     a0x, a0y, a0z = fx / mass, fy / mass, fz / mass
-    w0 = _mat(P, 1, mx, my, mz)
+    w0 = _mat(P, IINV, mx, my, mz)
     abx, aby, abz = a0x, a0y, a0z
     wdx, wdy, wdz = w0[0], w0[1], w0[2]
     if mode == CHUTE_HINGED:
-        mp, lp = P[40], P[41]
+        mp, lp = P[CHUTE_MASS], P[CHUTE_LINE]
         th, ps, thd, psd = x[16], x[17], x[18], x[19]
         e, et, ep = line_direction(th, ps)
         if abs(math.cos(ps)) < _HINGE_COS:
@@ -263,7 +360,7 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
             cd, ok = interp1(cd_g, cd_v, chute_alpha)
             if not ok:
                 flag |= 8
-            k = half_rho * P[39] * cd * speed
+            k = half_rho * P[CHUTE_DRAG_AREA] * cd * speed
             dbx, dby, dbz = k * up[0], k * up[1], k * up[2]
             chute_drag = k * speed
         gp = to_body(R, 0.0, 0.0, -mp * grav)
@@ -275,7 +372,7 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
         g0z = dbz + gp[2] - mp * (wws[2] + 2.0 * lp * wed[2] + lp * e2[2])
         a1x, a1y, a1z = e[0] / mass, e[1] / mass, e[2] / mass
         axe = cross(ax, ay, az, e[0], e[1], e[2])
-        w1 = _mat(P, 1, axe[0], axe[1], axe[2])
+        w1 = _mat(P, IINV, axe[0], axe[1], axe[2])
         w1s = cross(w1[0], w1[1], w1[2], s[0], s[1], s[2])
         w0s = cross(w0[0], w0[1], w0[2], s[0], s[1], s[2])
         c1 = (mp * lp * et[0], mp * lp * et[1], mp * lp * et[2])
@@ -291,20 +388,20 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
                          w0[2] + line_tension * w1[2])
 
     # restrictions used by the verification tests
-    if P[55] > 0.0:
+    if P[LOCK_TRANSLATION] > 0.0:
         abx, aby, abz = 0.0, 0.0, 0.0
-    if P[56] > 0.0:
+    if P[LOCK_TILT] > 0.0:
         wdx, wdy = 0.0, 0.0
-    if P[57] > 0.0:
+    if P[LOCK_YAW] > 0.0:
         wdz = 0.0
 
     # carrier
     pull0, pull1, pull2 = tension * d0 / span, tension * d1 / span, tension * d2 / span
-    if P[45] > 0.0:
-        mc, kv = P[46], P[48]
-        dx[0] = drive[3] + kv * (drive[6] - vc0) + (pull0 - P[49]) / mc
-        dx[1] = drive[4] + kv * (drive[7] - vc1) + (pull1 - P[50]) / mc
-        dx[2] = drive[5] + kv * (drive[8] - vc2) + (pull2 - P[51]) / mc
+    if P[CARRIER_FREE] > 0.0:
+        mc, kv = P[CARRIER_MASS], P[CARRIER_GAIN]
+        dx[0] = drive[3] + kv * (drive[6] - vc0) + (pull0 - P[PULL]) / mc
+        dx[1] = drive[4] + kv * (drive[7] - vc1) + (pull1 - P[PULL + 1]) / mc
+        dx[2] = drive[5] + kv * (drive[8] - vc2) + (pull2 - P[PULL + 2]) / mc
     else:
         dx[0], dx[1], dx[2] = drive[3], drive[4], drive[5]
     dx[3], dx[4], dx[5] = v0 - vc0, v1 - vc1, v2 - vc2
@@ -327,13 +424,14 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
         info[11], info[12] = fin_angle, tail_angle
         info[13], info[14] = line_tension, chute_alpha
         info[15], info[16], info[17] = lx, ly, lz
-        if P[45] > 0.0:
-            mc, kv = P[46], P[48]
+        if P[CARRIER_FREE] > 0.0:
+            mc, kv = P[CARRIER_MASS], P[CARRIER_GAIN]
             uc0, uc1, uc2 = drive[0] - vc0, drive[1] - vc1, drive[2] - vc2
-            kd = half_rho * P[47] * math.sqrt(uc0 * uc0 + uc1 * uc1 + uc2 * uc2)
-            info[18] = mc * (drive[3] + kv * (drive[6] - vc0)) - kd * uc0 - P[49]
-            info[19] = mc * (drive[4] + kv * (drive[7] - vc1)) - kd * uc1 - P[50]
-            info[20] = mc * (drive[5] + kv * (drive[8] - vc2)) - kd * uc2 - P[51] + mc * grav
+            kd = (half_rho * P[CARRIER_DRAG_AREA]
+                  * math.sqrt(uc0 * uc0 + uc1 * uc1 + uc2 * uc2))
+            info[18] = mc * (drive[3] + kv * (drive[6] - vc0)) - kd * uc0 - P[PULL]
+            info[19] = mc * (drive[4] + kv * (drive[7] - vc1)) - kd * uc1 - P[PULL + 1]
+            info[20] = mc * (drive[5] + kv * (drive[8] - vc2)) - kd * uc2 - P[PULL + 2] + mc * grav
         else:
             info[18], info[19], info[20] = np.nan, np.nan, np.nan
         info[21], info[22], info[23] = ffx, ffy, ffz

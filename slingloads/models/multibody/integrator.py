@@ -45,12 +45,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from slingloads.models.dormand_prince import A as _A
 from slingloads.models.dormand_prince import C as _C
-from slingloads.models.dormand_prince import E as _E
-from slingloads.models.dormand_prince import P as _P
+from slingloads.models.dormand_prince import dense, error_norm, grow, shrink, stage
 from slingloads.models.multibody._jit import jit, jit_alloc
-from slingloads.models.multibody.equations import N_INFO, N_STATES, PARAMETERS, evaluate
+from slingloads.models.multibody.equations import CARRIER_FREE, N_INFO, N_STATES, evaluate
 from slingloads.models.multibody.response import (
     N_HISTORY,
     N_MEASURES,
@@ -68,11 +66,6 @@ DRIVE_STEP = 0.01
 SMALLEST_STEP = 1e-6
 #: First trial step of a run. [s]
 FIRST_STEP = 0.01
-#: Parameter that tells a free carrier (> 0) from a frozen one.
-_CARRIER_FREE = PARAMETERS.index("carrier_free")
-
-# Dormand-Prince 5(4) (scipy's RK45), passed to the kernels as arguments
-
 
 @jit
 def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
@@ -116,9 +109,9 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
 
 @jit_alloc
 def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, bend, nodes,
-               profile, interval, fixed, rtol, atol, C, A, E, PD, fus_a, fus_b, fus_c, fin_g, fin_v,
-               tail_g, tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time, time,
-               measured, measures):
+               profile, interval, fixed, rtol, atol, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g,
+               tail_v, cd_g, cd_v, report, out, info, rates, flags, stop_time, time, measured,
+               measures):
     """Integrate runs ``x0`` (runs, N) with parameters ``P`` (runs, NP), in place.
 
     Profile ``row = profile[j]`` of run j: ``n_seg[row]`` segments from ``seg_a`` to
@@ -127,7 +120,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
     that vary over a segment, ``bend`` (profiles, S, 9) the rounding term of the others
     (:func:`_drive_at`); ``nodes`` (profiles, n_out, 9) the drive at the samples
     ``time`` (n_out,), every ``interval``. ``fixed`` > 0: that step; else adaptive with
-    ``rtol``, ``atol``. ``C``, ``A``, ``E``, ``PD``: the Dormand-Prince tableau.
+    ``rtol``, ``atol``: the Dormand-Prince pair of :mod:`slingloads.models.dormand_prince`.
 
     ``out`` receives the states at the samples (NaN after a stop): (runs, n_out, N), or
     (1, n_out, N) to keep only those of the run in hand. With ``report``, the reported
@@ -142,6 +135,50 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
 
     With no segment, only the first sample is evaluated (its flag returned): the equations at
     the states ``x0``.
+
+    Parameters
+    ----------
+    x0 : ndarray, shape (runs, N)
+        Initial states. [SI]
+    P : ndarray, shape (runs, NP)
+        Parameter vectors (:data:`~slingloads.models.multibody.equations.LAYOUT`).
+    seg_a, seg_b, seg_h : ndarray, shape (profiles, S)
+        Start, end and table step of each segment. [s]
+    seg_n, seg_off : ndarray of int, shape (profiles, S)
+        Intervals and first row of each segment's table.
+    n_seg : ndarray of int, shape (profiles,)
+        Segments of each profile.
+    vals : ndarray, shape (profiles, K, 9)
+        Drive tables (wind [m/s], commanded acceleration [m/s^2] and velocity [m/s]).
+    vary, bend : ndarray, shape (profiles, S, 9)
+        Channels that vary over a segment; the rounding term of the others.
+    nodes : ndarray, shape (profiles, n_out, 9)
+        The drive at the samples.
+    profile : ndarray of int, shape (runs,)
+        Drive profile of each run.
+    interval : float
+        Sampling interval. [s]
+    fixed : float
+        Fixed step, or 0 for the adaptive one. [s]
+    rtol, atol : float
+        Tolerances of the adaptive step. [-], [SI]
+    fus_a, fus_b, fus_c : ndarray
+        Fuselage table: alpha and beta breakpoints [rad], stacked coefficients [-].
+    fin_g, fin_v, tail_g, tail_v, cd_g, cd_v : ndarray
+        Fin, tail and parachute CD tables: breakpoints [rad], values [-]
+        (:meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`).
+    report : bool
+        Evaluate the reported quantities at the samples.
+    out, info, rates : ndarray
+        Receive the states, reported quantities and derivatives at the samples (see above).
+    flags, stop_time : ndarray, shape (runs,)
+        Receive the flag and the time [s] of a run that stopped.
+    time : ndarray, shape (n_out,)
+        Sample times. [s]
+    measured : ndarray, shape (runs, 9)
+        What the measures need (see above).
+    measures : ndarray, shape (runs, N_MEASURES) or (0, N_MEASURES)
+        Receive each run's measures.
     """
     runs = x0.shape[0]
     n = x0.shape[1]
@@ -190,18 +227,7 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
                     for m in range(n):
                         y[m] = x[m]
                 else:
-                    theta = (sample * interval - t) / h
-                    for i in range(7):
-                        weights[i] = PD[i, 0] + theta * (PD[i, 1] + theta * (
-                            PD[i, 2] + theta * PD[i, 3]))
-                    for m in range(n):
-                        acc[m] = 0.0
-                    for i in range(7):
-                        w = weights[i]
-                        for m in range(n):
-                            acc[m] += K[i, m] * w
-                    for m in range(n):
-                        y[m] = x[m] + h * theta * acc[m]
+                    dense(x, K, h, (sample * interval - t) / h, weights, acc, y)
                     qn = math.sqrt(y[9] * y[9] + y[10] * y[10] + y[11] * y[11]
                                    + y[12] * y[12])
                     for m in range(9, 13):
@@ -220,22 +246,15 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
                     # a segment whose channels are constant to the last bit: its drive once
                     # (the commanded velocity drives a free carrier only)
                     steady = True
-                    for c in range(9 if pj[_CARRIER_FREE] > 0.0 else 6):
+                    for c in range(9 if pj[CARRIER_FREE] > 0.0 else 6):
                         if vary[row, s, c] or bend[row, s, c] != 0.0:
                             steady = False
                     if steady:
                         _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend,
                                   steady_drive)
                 else:
-                    for m in range(n):
-                        acc[m] = 0.0
-                    for i in range(phase):
-                        a = A[phase, i]
-                        for m in range(n):
-                            acc[m] += a * K[i, m]
-                    for m in range(n):
-                        y[m] = x[m] + h * acc[m]
-                    when = t + C[phase] * h
+                    stage(x, h, K, phase, acc, y)
+                    when = t + _C[phase] * h
                 if steady:
                     for c in range(9):
                         d[c] = steady_drive[c]
@@ -290,31 +309,17 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
                     stage_flag = flag0
                     phase = 1
                     continue
-                grow = 1.0
                 if fixed <= 0.0:
-                    for m in range(n):
-                        acc[m] = 0.0
-                    for i in range(7):
-                        e = E[i]
-                        for m in range(n):
-                            acc[m] += e * K[i, m]
-                    err = 0.0
-                    for m in range(n):
-                        scale = atol + rtol * max(abs(x[m]), abs(x5[m]))
-                        err += (h * acc[m] / scale) ** 2
-                    err = math.sqrt(err / n)
+                    err = error_norm(x, x5, K, h, rtol, atol, acc)
                     if err > 1.0:
-                        h *= max(0.2, 0.9 * err ** -0.2)
+                        h *= shrink(err)
                         h_try = h
                         rejected = True
                         stage_flag = flag0
                         phase = 1
                         continue
-                    grow = 10.0 if err == 0.0 else min(10.0, 0.9 * err ** -0.2)
-                    if rejected:
-                        grow = min(1.0, grow)
+                    h_try = h * grow(err, rejected)
                     rejected = False
-                    h_try = h * grow
                 flag0 = f  # K[6] is the next step's first derivative
                 t_new = t + h
                 if sample < n_out and sample * interval <= t_new + 1e-9 * interval:
@@ -413,7 +418,19 @@ def tabulate_drive(drive, breakpoints, t_end, interval, step=DRIVE_STEP):
 
 
 def stack_drives(profiles):
-    """Padded arrays of several :func:`tabulate_drive` profiles, for :func:`dopri_runs`."""
+    """Padded arrays of several :func:`tabulate_drive` profiles, for :func:`dopri_runs`.
+
+    Parameters
+    ----------
+    profiles : sequence of dict
+        :func:`tabulate_drive` profiles.
+
+    Returns
+    -------
+    dict
+        The keys of :func:`tabulate_drive` stacked on a first axis of profiles (padded), and
+        ``segments``, the number of segments of each.
+    """
     count = len(profiles)
     segments = max(len(p["a"]) for p in profiles)
     rows = max(len(p["values"]) for p in profiles)
@@ -445,7 +462,12 @@ def _plain(values):
 
 
 def worker_count():
-    """Threads used for a batch: the processors this process may run on."""
+    """Threads used for a batch: the processors this process may run on.
+
+    Returns
+    -------
+    int
+    """
     try:
         return max(1, len(os.sched_getaffinity(0)))
     except AttributeError:  # not on Linux
@@ -455,7 +477,17 @@ def worker_count():
 def in_blocks(block, runs, workers=None):
     """Call ``block(start)`` for the blocks of :data:`BLOCK` runs from ``start``, on a pool of
     ``workers`` threads (default :func:`worker_count`; the compiled kernels release the
-    GIL)."""
+    GIL).
+
+    Parameters
+    ----------
+    block : callable
+        ``block(start)``, integrating runs ``start`` to ``start + BLOCK``.
+    runs : int
+        Number of runs.
+    workers : int, optional
+        Threads.
+    """
     starts = range(0, runs, BLOCK)
     workers = min(worker_count() if workers is None else int(workers), len(starts))
     if workers <= 1:
@@ -553,7 +585,7 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
         dopri_runs(x0[own], P[own], drives["a"], drives["b"], drives["h"], drives["n"],
                    drives["offset"], drives["segments"], drives["values"], drives["vary"],
                    drives["bend"], drives["nodes"], profile[own], float(interval), fixed,
-                   float(rtol), float(atol), _C, _A, _E, _P, *tables, report or measuring,
+                   float(rtol), float(atol), *tables, report or measuring,
                    states[own] if keep_states else np.empty((1, n_out, N_STATES)),
                    info[own] if report else np.empty((work, n_out * work, N_INFO)),
                    rates[own] if report else np.empty((work, n_out * work, N_STATES)),
@@ -593,7 +625,7 @@ def evaluate_many(states, P, drives, tables):
     dopri_runs(states, P, none, none, none + 1.0, np.ones((n, 1), dtype=np.int64),
                np.zeros((n, 1), dtype=np.int64), np.zeros(n, dtype=np.int64),
                np.zeros((n, 2, 9)), np.zeros((n, 1, 9), bool), np.zeros((n, 1, 9)), nodes,
-               np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, _C, _A, _E, _P, *tables,
+               np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, *tables,
                True, np.empty((n, 1, N_STATES)), info, rates, flags, np.empty(n),
                np.zeros(1), np.zeros((n, 9)), np.empty((0, N_MEASURES)))
     return rates[:, 0], info[:, 0], flags

@@ -97,27 +97,75 @@ class LiftingSurface:
 
     @classmethod
     def from_fin(cls, fin, efficiency=None):
-        """The fin of the 1-DOF analyses (:class:`~slingloads.models.aerodynamics.Fin`)."""
+        """The fin of the 1-DOF analyses (:class:`~slingloads.models.aerodynamics.Fin`).
+
+        Parameters
+        ----------
+        fin : Fin
+            With its CY table in body axes.
+        efficiency : float, optional
+            Efficiency replacing the fin's, in (0, 1]. [-]
+
+        Returns
+        -------
+        LiftingSurface
+
+        Raises
+        ------
+        InputError
+            For something other than a Fin, or a table not in body axes.
+        """
         if not isinstance(fin, Fin):
             raise InputError("from_fin needs a Fin", type(fin).__name__)
         if fin.axes != "body":
-            raise InputError("a lifting surface takes a normal-force table: give the fin's CY "
-                             "in body axes (along +y)", fin.axes)
+            raise InputError("the multibody model (and its campaign) flies the fin as a "
+                             "lifting surface whose CY is its normal force, along +y: it needs "
+                             "the fin's CY in body axes ('fin axes' = body); a table in wind "
+                             "axes serves the loads and the parachute sizing only", fin.axes)
         eta = fin.efficiency if efficiency is None else efficiency
         return cls(fin.table, fin.area, fin.centre_of_pressure, "y", eta, "fin")
 
 
 @jit
 def flow_at(u0, u1, u2, p, q, r, x, y, z):
-    """Air velocity relative to the point (x, y, z) of the body: u_cg - omega x r (body axes)."""
+    """Air velocity relative to a point of the body: u_cg - omega x r (body axes).
+
+    Parameters
+    ----------
+    u0, u1, u2 : float
+        Air velocity relative to the CG. [m/s]
+    p, q, r : float
+        Body rates. [rad/s]
+    x, y, z : float
+        The point, from the CG. [m]
+
+    Returns
+    -------
+    tuple of float
+        [m/s]
+    """
     return u0 - (q * z - r * y), u1 - (r * x - p * z), u2 - (p * y - q * x)
 
 
 @jit
 def frame_axis(frame, i, ca, sa, cb, sb):
-    """Axis ``i`` (0 x, 1 y, 2 z) of a flight-mechanics frame (``FRAME_CODES``: 0 body,
-    1 stability, 2 wind) in airframe axes, from the cosines and sines of alpha and beta
-    (docs/conventions.md section 3)."""
+    """Axis ``i`` of a flight-mechanics frame in airframe axes (docs/conventions.md
+    section 3).
+
+    Parameters
+    ----------
+    frame : int
+        ``FRAME_CODES``: 0 body, 1 stability, 2 wind.
+    i : int
+        0 x, 1 y, 2 z.
+    ca, sa, cb, sb : float
+        cos and sin of alpha and beta. [-]
+
+    Returns
+    -------
+    tuple of float
+        Unit vector, airframe axes. [-]
+    """
     if frame == 0:
         if i == 0:
             return -1.0, 0.0, 0.0
@@ -137,8 +185,25 @@ def frame_axis(frame, i, ca, sa, cb, sb):
 
 @jit
 def to_airframe(frame, force, c0, c1, c2, ca, sa, cb, sb):
-    """Coefficients (c0, c1, c2) along a frame's axes as airframe-axes ones; ``force`` makes
-    drag and lift of the wind and stability frames point along -x and -z of the frame."""
+    """Coefficients along a frame's axes as airframe-axes ones; ``force`` makes drag and
+    lift of the wind and stability frames point along -x and -z of the frame.
+
+    Parameters
+    ----------
+    frame : int
+        ``FRAME_CODES``: 0 body, 1 stability, 2 wind.
+    force : bool
+        Force coefficients (else moment coefficients).
+    c0, c1, c2 : float
+        Coefficients along the frame's axes. [-]
+    ca, sa, cb, sb : float
+        cos and sin of alpha and beta. [-]
+
+    Returns
+    -------
+    tuple of float
+        Airframe-axes coefficients. [-]
+    """
     s = -1.0 if (force and frame != 0) else 1.0
     x0, y0, z0 = frame_axis(frame, 0, ca, sa, cb, sb)
     x1, y1, z1 = frame_axis(frame, 1, ca, sa, cb, sb)

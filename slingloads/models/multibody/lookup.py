@@ -19,8 +19,25 @@ EDGE = 1e-9
 
 @jit
 def cell(grid, x):
-    """Index i with grid[i] <= x <= grid[i + 1], the weight of grid[i + 1], and inside (for
-    several lookups at the same point, :func:`bilinear`)."""
+    """The grid interval holding ``x`` and the weight of its upper end (for several
+    lookups at the same point, :func:`bilinear`).
+
+    Parameters
+    ----------
+    grid : ndarray, shape (n,)
+        Increasing breakpoints.
+    x : float
+        Where to look (units of ``grid``).
+
+    Returns
+    -------
+    i : int
+        grid[i] <= x <= grid[i + 1].
+    weight : float
+        Weight of grid[i + 1]. [-]
+    inside : bool
+        x lies in the grid (within :data:`EDGE` of its span); False for NaN.
+    """
     n = grid.shape[0]
     lo, hi = grid[0], grid[n - 1]
     tol = EDGE * (hi - lo)
@@ -47,15 +64,47 @@ def cell(grid, x):
 
 @jit
 def interp1(grid, values, x):
-    """Linear interpolation of ``values`` on ``grid`` at ``x``; returns (value, inside)."""
+    """Linear interpolation of ``values`` on ``grid`` at ``x``.
+
+    Parameters
+    ----------
+    grid : ndarray, shape (n,)
+        Increasing breakpoints.
+    values : ndarray, shape (n,)
+        Values at the breakpoints.
+    x : float
+        Where to interpolate (units of ``grid``).
+
+    Returns
+    -------
+    value : float
+        Units of ``values``.
+    inside : bool
+        x lies in the grid.
+    """
     i, w, inside = cell(grid, x)
     return values[i] + w * (values[i + 1] - values[i]), inside
 
 
 @jit
 def bilinear(values, k, i, j, wa, wb):
-    """Bilinear interpolation of ``values[k]`` (shape (n, na, nb)) in the cell (i, j) with
-    weights (wa, wb) of :func:`cell`."""
+    """Bilinear interpolation of ``values[k]`` in the cell (i, j) with weights (wa, wb) of
+    :func:`cell`.
+
+    Parameters
+    ----------
+    values : ndarray, shape (n, na, nb)
+        Stacked tables.
+    k, i, j : int
+        Table and cell.
+    wa, wb : float
+        Weights of :func:`cell` along the two axes. [-]
+
+    Returns
+    -------
+    float
+        Units of ``values``.
+    """
     v00 = values[k, i, j]
     v01 = values[k, i, j + 1]
     v10 = values[k, i + 1, j]

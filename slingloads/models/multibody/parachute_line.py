@@ -151,7 +151,18 @@ def line_reach(hub, chute, line_length):
 
 @jit
 def line_direction(theta, psi):
-    """Unit line direction e and its partial derivatives e_theta, e_psi (body axes)."""
+    """Unit line direction e and its partial derivatives e_theta, e_psi (body axes).
+
+    Parameters
+    ----------
+    theta, psi : float
+        Hinge angles. [rad]
+
+    Returns
+    -------
+    e, e_theta, e_psi : tuple of float
+        [-], [1/rad], [1/rad]
+    """
     ct, st, cp, sp = math.cos(theta), math.sin(theta), math.cos(psi), math.sin(psi)
     e = (ct * cp, sp, st * cp)
     e_t = (-st * cp, 0.0, ct * cp)
@@ -162,7 +173,20 @@ def line_direction(theta, psi):
 @jit
 def line_curvature(theta, psi, theta_dot, psi_dot):
     """Velocity-squared part of the line's second derivative (body axes):
-    e_tt th'^2 + 2 e_tp th' ps' + e_pp ps'^2."""
+    e_tt th'^2 + 2 e_tp th' ps' + e_pp ps'^2.
+
+    Parameters
+    ----------
+    theta, psi : float
+        Hinge angles. [rad]
+    theta_dot, psi_dot : float
+        Their rates. [rad/s]
+
+    Returns
+    -------
+    tuple of float
+        [1/s^2]
+    """
     ct, st, cp, sp = math.cos(theta), math.sin(theta), math.cos(psi), math.sin(psi)
     a, b = theta_dot * theta_dot, 2.0 * theta_dot * psi_dot
     c = psi_dot * psi_dot
@@ -171,7 +195,18 @@ def line_curvature(theta, psi, theta_dot, psi_dot):
 
 
 def line_angles(direction):
-    """(theta, psi) [rad] of unit line directions (..., 3) in body axes (inverse of e)."""
+    """Hinge angles of unit line directions in body axes (inverse of e).
+
+    Parameters
+    ----------
+    direction : array_like, shape (..., 3)
+        Unit line directions, body axes. [-]
+
+    Returns
+    -------
+    theta, psi : ndarray
+        [rad]
+    """
     d = np.asarray(direction, float)
     psi = np.arcsin(np.clip(d[..., 1], -1.0, 1.0))
     theta = np.arctan2(d[..., 2], d[..., 0])

@@ -62,7 +62,17 @@ MEASURES = tuple(f"{name} {what}" for name, _ in PEAKS for what in ("peak", "at"
 N_MEASURES = len(MEASURES)
 
 def scratch(samples):
-    """Work space of :func:`measure` for runs of ``samples`` samples."""
+    """Work space of :func:`measure` for runs of ``samples`` samples.
+
+    Parameters
+    ----------
+    samples : int
+        Samples of a run.
+
+    Returns
+    -------
+    ndarray, shape (4, samples)
+    """
     return np.empty((4, int(samples)))
 
 
@@ -157,10 +167,28 @@ def derive(time, states, info, weight, mast, chute, out):
 
 @jit
 def damping_from_peaks(time, y, start, buf):
-    """Period [s] and damping ratio [-] from the successive positive peaks of ``y`` after
-    ``start`` (log decrement, each peak refined by a parabola through it and its
-    neighbours), or NaN when there are fewer than three peaks above 2 % of the largest.
-    ``buf``: :func:`scratch`."""
+    """Period and damping ratio from the successive positive peaks of ``y`` after
+    ``start`` (log decrement, each peak refined by a parabola through it and its neighbours),
+    or NaN when there are fewer than three peaks above 2 % of the largest.
+
+    Parameters
+    ----------
+    time : ndarray, shape (n,)
+        Sample times. [s]
+    y : ndarray, shape (n,)
+        Signal (any unit).
+    start : float
+        Peaks from this time on. [s]
+    buf : ndarray, shape (4, n)
+        Work space (:func:`scratch`).
+
+    Returns
+    -------
+    period : float
+        [s]
+    damping_ratio : float
+        [-]
+    """
     m = 0
     for k in range(time.shape[0]):
         if time[k] >= start and math.isfinite(y[k]):

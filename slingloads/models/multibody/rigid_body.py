@@ -31,13 +31,35 @@ from slingloads.models.multibody._jit import jit
 # ----------------------------------------------------------------------- compiled helpers
 @jit
 def cross(a0, a1, a2, b0, b1, b2):
-    """a x b for vectors given by their components."""
+    """a x b for vectors given by their components.
+
+    Parameters
+    ----------
+    a0, a1, a2, b0, b1, b2 : float
+        Components of a and b (any units).
+
+    Returns
+    -------
+    tuple of float
+        The three components of a x b (unit of a times unit of b).
+    """
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
 @jit
 def dcm(q0, q1, q2, q3):
-    """Rotation matrix R(q) (body to earth), row-major as a 9-tuple."""
+    """Rotation matrix R(q) (body to earth), row-major as a 9-tuple.
+
+    Parameters
+    ----------
+    q0, q1, q2, q3 : float
+        Unit quaternion. [-]
+
+    Returns
+    -------
+    tuple of float
+        R row by row. [-]
+    """
     return (q0 * q0 + q1 * q1 - q2 * q2 - q3 * q3, 2.0 * (q1 * q2 - q0 * q3),
             2.0 * (q1 * q3 + q0 * q2),
             2.0 * (q1 * q2 + q0 * q3), q0 * q0 - q1 * q1 + q2 * q2 - q3 * q3,
@@ -48,30 +70,77 @@ def dcm(q0, q1, q2, q3):
 
 @jit
 def to_earth(r, b0, b1, b2):
-    """R b: body components to earth components."""
+    """R b: body components to earth components.
+
+    Parameters
+    ----------
+    r : tuple of float
+        R row by row (:func:`dcm`). [-]
+    b0, b1, b2 : float
+        Body components (any unit).
+
+    Returns
+    -------
+    tuple of float
+        Earth components (same unit).
+    """
     return (r[0] * b0 + r[1] * b1 + r[2] * b2, r[3] * b0 + r[4] * b1 + r[5] * b2,
             r[6] * b0 + r[7] * b1 + r[8] * b2)
 
 
 @jit
 def to_body(r, e0, e1, e2):
-    """R^T e: earth components to body components."""
+    """R^T e: earth components to body components.
+
+    Parameters
+    ----------
+    r : tuple of float
+        R row by row (:func:`dcm`). [-]
+    e0, e1, e2 : float
+        Earth components (any unit).
+
+    Returns
+    -------
+    tuple of float
+        Body components (same unit).
+    """
     return (r[0] * e0 + r[3] * e1 + r[6] * e2, r[1] * e0 + r[4] * e1 + r[7] * e2,
             r[2] * e0 + r[5] * e1 + r[8] * e2)
 
 
 @jit
 def quaternion_rate(q0, q1, q2, q3, p, q, r):
-    """dq/dt = 1/2 q (x) (0, omega), omega = (p, q, r) in body axes. [1/s]"""
+    """dq/dt = 1/2 q (x) (0, omega), omega = (p, q, r) in body axes.
+
+    Parameters
+    ----------
+    q0, q1, q2, q3 : float
+        Unit quaternion. [-]
+    p, q, r : float
+        Body rates. [rad/s]
+
+    Returns
+    -------
+    tuple of float
+        dq/dt. [1/s]
+    """
     return (0.5 * (-q1 * p - q2 * q - q3 * r), 0.5 * (q0 * p + q2 * r - q3 * q),
             0.5 * (q0 * q - q1 * r + q3 * p), 0.5 * (q0 * r + q1 * q - q2 * p))
 
 
 # ----------------------------------------------------------------------- numpy helpers
 def quaternion_from_euler(yaw, pitch, roll):
-    """Unit quaternion of R = Rz(-yaw) Ry(pitch) Rx(-roll) (module conventions), [rad].
+    """Unit quaternion of R = Rz(-yaw) Ry(pitch) Rx(-roll) (module conventions).
 
-    Broadcasts; returns shape (..., 4).
+    Parameters
+    ----------
+    yaw, pitch, roll : array_like
+        Euler angles (broadcast). [rad]
+
+    Returns
+    -------
+    ndarray, shape (..., 4)
+        [-]
     """
     yaw, pitch, roll = np.broadcast_arrays(*(np.asarray(a, float) for a in (yaw, pitch, roll)))
     cz, sz = np.cos(-yaw / 2), np.sin(-yaw / 2)
@@ -82,7 +151,18 @@ def quaternion_from_euler(yaw, pitch, roll):
 
 
 def rotation_matrix(quaternion):
-    """R(q) for quaternions of shape (..., 4); returns shape (..., 3, 3)."""
+    """R(q), body to earth.
+
+    Parameters
+    ----------
+    quaternion : array_like, shape (..., 4)
+        Unit quaternion (body to earth). [-]
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        [-]
+    """
     q = np.asarray(quaternion, float)
     q0, q1, q2, q3 = np.moveaxis(q, -1, 0)
     r = np.stack([q0 * q0 + q1 * q1 - q2 * q2 - q3 * q3, 2 * (q1 * q2 - q0 * q3),
@@ -94,7 +174,18 @@ def rotation_matrix(quaternion):
 
 
 def euler_angles(quaternion):
-    """(yaw, pitch, roll) [rad] of quaternions (..., 4), module conventions."""
+    """(yaw, pitch, roll) of quaternions, module conventions.
+
+    Parameters
+    ----------
+    quaternion : array_like, shape (..., 4)
+        Unit quaternion (body to earth). [-]
+
+    Returns
+    -------
+    yaw, pitch, roll : ndarray
+        [rad]
+    """
     r = rotation_matrix(quaternion)
     yaw = np.arctan2(-r[..., 1, 0], r[..., 0, 0])
     pitch = -np.arcsin(np.clip(r[..., 2, 0], -1.0, 1.0))
@@ -103,7 +194,18 @@ def euler_angles(quaternion):
 
 
 def quaternion_product(a, b):
-    """a (x) b for quaternions of shape (..., 4) (broadcasting)."""
+    """a (x) b for quaternions (broadcasting).
+
+    Parameters
+    ----------
+    a, b : array_like, shape (..., 4)
+        Quaternions. [-]
+
+    Returns
+    -------
+    ndarray, shape (..., 4)
+        [-]
+    """
     a0, a1, a2, a3 = np.moveaxis(np.asarray(a, float), -1, 0)
     b0, b1, b2, b3 = np.moveaxis(np.asarray(b, float), -1, 0)
     return np.stack([a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3,
@@ -113,13 +215,37 @@ def quaternion_product(a, b):
 
 
 def conjugate(quaternion):
-    """Conjugate (inverse of a unit quaternion), shape (..., 4)."""
+    """Conjugate (inverse of a unit quaternion).
+
+    Parameters
+    ----------
+    quaternion : array_like, shape (..., 4)
+        Unit quaternion (body to earth). [-]
+
+    Returns
+    -------
+    ndarray, shape (..., 4)
+        [-]
+    """
     return np.asarray(quaternion, float) * np.array([1.0, -1.0, -1.0, -1.0])
 
 
 def small_rotation(quaternion, rotation):
-    """q (x) dq for rotation vectors ``rotation`` (..., 3) [rad] in body axes (exact map;
-    broadcasts over the rotations)."""
+    """q (x) dq for rotation vectors in body axes (exact map; broadcasts over the
+    rotations).
+
+    Parameters
+    ----------
+    quaternion : array_like, shape (..., 4)
+        Unit quaternion (body to earth). [-]
+    rotation : array_like, shape (..., 3)
+        Rotation vectors, body axes. [rad]
+
+    Returns
+    -------
+    ndarray, shape (..., 4)
+        [-]
+    """
     phi = np.asarray(rotation, float)
     angle = np.linalg.norm(phi, axis=-1, keepdims=True)
     half = 0.5 * angle
@@ -170,7 +296,19 @@ class RigidBody:
     @classmethod
     def from_mass_items(cls, items, name="HC"):
         """Mass, CG and inertia tensor about the CG of :class:`MassItems` (own inertias plus
-        parallel-axis terms)."""
+        parallel-axis terms).
+
+        Parameters
+        ----------
+        items : MassItems
+            Mass [kg], positions [m] and own inertias [kg m^2] of the items.
+        name : str
+            Name of the body.
+
+        Returns
+        -------
+        RigidBody
+        """
         return cls(items.total_mass, items.cg, items.inertia_about_cg, name)
 
     @property
@@ -179,7 +317,13 @@ class RigidBody:
         return self.mass * G0
 
     def to_frame(self):
-        """Mass properties as a one-row DataFrame."""
+        """Mass properties as a one-row DataFrame.
+
+        Returns
+        -------
+        pandas.DataFrame
+            mass [kg], CG [m], inertia tensor about the CG [kg m^2].
+        """
         i = self.inertia
         return pd.DataFrame([{
             "body": self.name, "mass [kg]": self.mass, "x_cg [m]": self.cg[0],

@@ -1,0 +1,610 @@
+"""Hostile input on the campaign's surfaces: the run cache, the scheduler, the output folder,
+the memory a run needs, and a campaign killed at random moments.
+
+References, per family:
+
+- no hang: a named pipe where slingloads reads a file would block a plain ``open`` forever
+  (POSIX: opening a FIFO for reading waits for a writer); each check must end within a
+  bound, and the scheduler checks within ``--scheduler-timeout`` (plus the time to tear the
+  attempt down), against fake servers on the loopback address (refusing, silent, speaking
+  garbage) and a real local scheduler;
+- the cache: the documented rule (slingloads.runs.cache) that an unusable entry counts
+  as missing: the run is computed again, equal to a run on an empty cache;
+- memory: hand counts of the bytes of the drive tables and samples (8 bytes a float), and
+  Python's allocation tracer (numpy reports its arrays to ``tracemalloc``);
+- fault injection: the results of an interrupted then resumed campaign equal those of an
+  uninterrupted one (each run is integrated on its own: the same numbers whatever batch it
+  falls in), and the output folder holds the previous complete report until the new one is
+  published.
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+import random
+import socket
+import threading
+import time
+import tracemalloc
+
+import numpy as np
+import pandas as pd
+import pytest
+from hostile import save_xlsx, set_parameter, small_dynamics_workbook
+
+from slingloads.analyses.campaign import (
+    HISTORY_LABELS,
+    MemoryStore,
+    execution,
+    run_campaign,
+    worker,
+)
+from slingloads.analyses.campaign.execution import (
+    REQUIRED_METRICS,
+    DaskCluster,
+    batch_limit,
+    local_workers,
+)
+from slingloads.cli import main
+from slingloads.errors import InputError, OutputError
+from slingloads.io.common.atomic import AtomicOutputs
+from slingloads.io.common.ownership import MANIFEST_NAME
+from slingloads.io.study import read_study
+from slingloads.runs import cache as cache_module
+from slingloads.runs.cache import METRICS_KEY, RunCache
+
+KEY = "ab" + "0" * 62
+ROWS = 11
+
+
+def _within(seconds, call):
+    """``call()`` in a daemon thread: (finished in time, value or exception)."""
+    box = {}
+
+    def target():
+        try:
+            box["value"] = call()
+        except BaseException as err:  # noqa: BLE001
+            box["value"] = err
+
+    thread = threading.Thread(target=target, daemon=True)
+    thread.start()
+    thread.join(seconds)
+    return not thread.is_alive(), box.get("value")
+
+
+def _record(rows=ROWS, seed=0):
+    rng = np.random.default_rng(seed)
+    metrics = {m: "x" for m in REQUIRED_METRICS}
+    metrics.update({"yaw change [deg]": float(rng.normal()), "trim converged": True})
+    return metrics, rng.normal(size=(rows, len(HISTORY_LABELS)))
+
+
+# ---- family 1: no hang ----------------------------------------------------------------------
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
+def test_a_named_pipe_as_the_manifest_is_refused_not_waited_on(tmp_path):
+    """A FIFO named like the manifest in --out: the check of the folder ends at once with
+    the refusal of a manifest slingloads did not write (a plain open would block)."""
+    out = tmp_path / "out"
+    out.mkdir()
+    os.mkfifo(out / MANIFEST_NAME)
+    finished, value = _within(10, lambda: AtomicOutputs(out).check(["r.xlsx"]))
+    assert finished, "the check of the output folder blocked on a named pipe"
+    assert isinstance(value, InputError) and "not one" in str(value)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
+def test_a_named_pipe_in_the_cache_counts_as_missing(tmp_path):
+    """A FIFO at a run's place in the cache: not opened (O_NONBLOCK, fstat), counted as
+    missing, with a warning naming it and what it is."""
+    store = RunCache(tmp_path / "cache")
+    path = store._path(KEY)
+    path.parent.mkdir(parents=True)
+    os.mkfifo(path)
+    store.expect(KEY, ROWS)
+    finished, value = _within(10, lambda: KEY in store)
+    assert finished and value is False
+    assert str(path) in store.warnings[0] and "named pipe" in store.warnings[0]
+
+
+def test_output_folder_that_is_a_symbolic_link_loop_is_named_so(tmp_path, capsys):
+    """--out a link to itself (ELOOP): the message says loop, not broken link."""
+    loop = tmp_path / "loop"
+    loop.symlink_to(loop)
+    with pytest.raises(OutputError, match="symbolic-link loop"):
+        AtomicOutputs(loop).check()
+
+
+def _server(kind):
+    """A fake scheduler on 127.0.0.1: 'dead' (nothing listens), 'silent' (accepts, never
+    answers) or 'garbage' (accepts and sends bytes that are no Dask message)."""
+    listener = socket.socket()
+    listener.bind(("127.0.0.1", 0))
+    listener.listen(8)
+    port = listener.getsockname()[1]
+    if kind == "dead":
+        listener.close()
+        return port, lambda: None
+    held = []
+
+    def serve():
+        while True:
+            try:
+                conn, _ = listener.accept()
+            except OSError:
+                return
+            held.append(conn)
+            if kind == "garbage":
+                try:
+                    conn.sendall(b"HTTP/1.1 400 Bad Request\r\n\r\n" + bytes(range(256)) * 16)
+                except OSError:
+                    pass
+
+    threading.Thread(target=serve, daemon=True).start()
+
+    def stop():
+        listener.close()
+        for conn in held:
+            conn.close()
+    return port, stop
+
+
+@pytest.mark.parametrize("kind, fragment", [
+    ("dead", "could not reach the Dask scheduler within 1 s"),
+    ("silent", "could not reach the Dask scheduler within 1 s"),
+    ("garbage", "does not answer as a Dask scheduler"),
+])
+def test_a_dead_silent_or_garbage_scheduler_is_refused_within_its_time_out(kind, fragment):
+    """--scheduler-timeout 1 s: the executor is refused within the time-out plus 1.5 s of
+    tearing down (clean-up included), naming the address; a server that accepts and never
+    answers used to hang past 90 s."""
+    pytest.importorskip("distributed")
+    port, stop = _server(kind)
+    try:
+        start = time.monotonic()
+        finished, value = _within(8, lambda: DaskCluster(f"tcp://127.0.0.1:{port}", 1.0))
+        elapsed = time.monotonic() - start
+    finally:
+        stop()
+    assert finished and isinstance(value, InputError), value
+    assert fragment in str(value) and str(port) in str(value)
+    assert elapsed < 2.5, elapsed
+
+
+def test_a_real_scheduler_is_accepted_and_a_stopped_one_is_noticed_in_time():
+    """A local scheduler (threads, loopback TCP) passes the identity check; once it is
+    stopped, the liveness request fails and closing the client takes no longer than the
+    time-out."""
+    distributed = pytest.importorskip("distributed")
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    executor = DaskCluster(cluster.scheduler_address, 1.0)
+    assert executor.workers == 1 and executor._alive()
+    cluster.close()
+    start = time.monotonic()
+    assert not executor._alive()
+    executor.close()
+    assert time.monotonic() - start < 3.0
+
+
+# ---- family 2: the cache is a cache ----------------------------------------------------------
+def _write_parquet(path, columns=HISTORY_LABELS, rows=ROWS, metrics=b"{}", dtype=float):
+    """A Parquet file of ``rows`` zeros per column, written 100,000 rows at a time."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    def table(n):
+        arrays = [pa.array(np.zeros(n, dtype=dtype)) for _ in columns]
+        out = pa.Table.from_arrays(arrays, names=list(columns))
+        return out if metrics is None else out.replace_schema_metadata({METRICS_KEY: metrics})
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    piece = table(min(rows, 100_000))
+    with pq.ParquetWriter(path, piece.schema) as writer:
+        for start in range(0, rows, 100_000):
+            writer.write_table(piece if rows - start >= 100_000 else table(rows - start))
+
+
+def _damage(kind, path, rng, good):
+    """Put an entry of ``kind`` at ``path`` (``good``: the bytes of a valid entry)."""
+    import json
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    valid_metrics = json.dumps({m: "x" for m in REQUIRED_METRICS}).encode()
+    if kind == "random bytes":
+        path.write_bytes(rng.bytes(int(rng.integers(0, 4000))))
+    elif kind == "truncated":
+        path.write_bytes(good[:int(rng.integers(0, len(good)))])
+    elif kind == "bit flip":
+        data = bytearray(good)
+        for at in rng.integers(0, len(data), 8):
+            data[at] ^= 0xFF
+        path.write_bytes(bytes(data))
+    elif kind == "metrics not JSON":
+        _write_parquet(path, metrics=b"{not json")
+    elif kind == "metrics a JSON list":
+        _write_parquet(path, metrics=b"[1, 2, 3]")
+    elif kind == "metrics incomplete":
+        _write_parquet(path, metrics=b'{"yaw change [deg]": 1.0}')
+    elif kind == "no metrics":
+        _write_parquet(path, metrics=None)
+    elif kind == "a column missing":
+        _write_parquet(path, columns=HISTORY_LABELS[:-1], metrics=valid_metrics)
+    elif kind == "integer columns":
+        _write_parquet(path, metrics=valid_metrics, dtype=np.int64)
+    elif kind == "other run length":
+        _write_parquet(path, rows=ROWS + 1, metrics=valid_metrics)
+    elif kind == "8 million rows":  # 1 MB on disk, 1.7 GB once read
+        _write_parquet(path, rows=8_000_000, metrics=valid_metrics)
+    elif kind == "a folder":
+        path.mkdir()
+    elif kind == "a symbolic link":
+        target = path.parent / "elsewhere.parquet"
+        target.write_bytes(good)
+        path.symlink_to(target)
+    else:  # pragma: no cover
+        raise AssertionError(kind)
+
+
+KINDS = ("random bytes", "truncated", "bit flip", "metrics not JSON", "metrics a JSON list",
+         "metrics incomplete", "no metrics", "a column missing", "integer columns",
+         "other run length", "a folder", "a symbolic link")
+
+
+def test_fuzzed_cache_entries_count_as_missing_and_are_replaced(tmp_path):
+    """Seeded fuzz: 60 entries of random bytes, truncated or bit-flipped valid files, and
+    valid Parquet files with wrong contents. Each counts as missing (``in`` is False, ``get``
+    None) with one warning naming the file, never an exception; a run stored over it reads
+    back equal to what was stored (the documented rule: an unusable entry is computed
+    again)."""
+    rng = np.random.default_rng(2026)
+    good_store = RunCache(tmp_path / "good")
+    good_store.expect(KEY, ROWS)
+    record = _record()
+    good_store.put(KEY, record)
+    good = good_store._path(KEY).read_bytes()
+    for trial in range(60):
+        kind = KINDS[trial % len(KINDS)]
+        folder = tmp_path / f"c{trial}"
+        store = RunCache(folder)
+        path = store._path(KEY)
+        _damage(kind, path, rng, good)
+        store.expect(KEY, ROWS)
+        if kind == "bit flip" and KEY in store:  # a flip in padding may leave it valid
+            assert store.get(KEY) is not None
+            continue
+        assert KEY not in store, kind
+        assert store.get(KEY) is None, kind
+        assert len(store.warnings) == 1 and str(path) in store.warnings[0], (kind,
+                                                                             store.warnings)
+        if kind == "a folder":
+            path.rmdir()  # a folder in the way is a cache location problem (next test)
+        store.put(KEY, record)
+        again = RunCache(folder)
+        again.expect(KEY, ROWS)
+        metrics, histories = again.get(KEY)
+        assert metrics == record[0] and np.array_equal(histories, record[1]), kind
+
+
+def test_an_oversized_entry_is_refused_before_it_is_read(tmp_path):
+    """A 0.9 MB file declaring 8 million rows (1.7 GB of floats once read): for a run of 11
+    rows it is refused by its size (more than 11 rows of 26 floats can take); for a run of
+    36,001 rows (3,600 s every 0.1 s, whose file may take 8 MB) by the row count its footer
+    declares, with less than 5 MB allocated by numpy and Python (tracemalloc), where reading
+    it whole took 5.7 GB."""
+    path = RunCache(tmp_path / "cache")._path(KEY)
+    _damage("8 million rows", path, None, b"")
+    assert path.stat().st_size < 2_000_000
+    for rows, fragment in ((ROWS, "bytes, more than the"), (36_001, "8,000,000 rows")):
+        store = RunCache(tmp_path / "cache")
+        store.expect(KEY, rows)
+        tracemalloc.start()
+        try:
+            assert KEY not in store
+            _, peak = tracemalloc.get_traced_memory()
+        finally:
+            tracemalloc.stop()
+        assert peak < 5 * 2**20, peak
+        assert fragment in store.warnings[0], store.warnings
+
+
+def test_interrupted_writes_are_removed_by_the_next_run(tmp_path):
+    """A writer killed mid-write leaves ``.part-<host>-<pid>-*.parquet``: the next cache
+    opened on the folder removes those of dead processes (and of older versions without a
+    process id), and keeps a live writer's."""
+    store = RunCache(tmp_path / "cache")
+    store.put(KEY, _record())
+    shard = store._path(KEY).parent
+    host = cache_module._host_tag()
+    dead = 2**22 + 12345  # above the usual pid_max: no such process
+    while cache_module._alive(dead):  # pragma: no cover
+        dead += 1
+    left = [shard / f".part-{host}-{dead}-0a0b.parquet", shard / ".part-k2j4h5.parquet"]
+    live = shard / f".part-{host}-{os.getpid()}-0c0d.parquet"
+    for path in (*left, live):
+        path.write_bytes(b"PAR1 half")
+    RunCache(tmp_path / "cache")
+    assert not any(p.exists() for p in left) and live.exists()
+    assert store._path(KEY).exists()
+
+
+@pytest.mark.parametrize("layout", ["file", "runs is a file", "read-only"])
+def test_an_unusable_cache_location_falls_back_to_memory(tmp_path, layout):
+    """A cache that is a file, whose ``runs`` is a file, or that is read-only: the store
+    keeps the runs in memory (put then get gives them back), with one warning naming the
+    folder; nothing raises."""
+    folder = tmp_path / "cache"
+    if layout == "file":
+        folder.write_text("x")
+    else:
+        folder.mkdir()
+        if layout == "runs is a file":
+            (folder / "runs").write_text("x")
+        else:
+            folder.chmod(0o500)
+    try:
+        store = RunCache(folder)
+        if layout == "read-only" and os.access(folder, os.W_OK):  # pragma: no cover - root
+            pytest.skip("permissions do not bind this user")
+        record = _record()
+        store.put(KEY, record)
+        assert KEY in store and store.get(KEY)[1] is record[1]
+        assert len(store.warnings) == 1 and str(folder) in store.warnings[0]
+        assert "runs without it" in store.warnings[0]
+    finally:
+        folder.chmod(0o700) if folder.is_dir() else None
+
+
+def test_a_write_that_fails_mid_campaign_falls_back_to_memory(tmp_path):
+    """A shard folder that turns out to be a file when the first run is stored (the cache
+    looked usable when opened): the run is kept in memory, one warning, no exception."""
+    store = RunCache(tmp_path / "cache")
+    shard = store._path(KEY).parent
+    shard.parent.mkdir(parents=True)
+    shard.write_text("in the way")
+    store.put(KEY, _record())
+    assert KEY in store and not store.usable and "cannot be used" in store.warnings[0]
+
+
+# ---- the command line: fall back, count, warn ---------------------------------------------
+@pytest.fixture(scope="module")
+def dyn(tmp_path_factory):
+    """The small campaign (8 runs of 5 s, no multibody report)."""
+    book = small_dynamics_workbook()
+    set_parameter(book, "run multibody", "no")
+    return save_xlsx(book, tmp_path_factory.mktemp("dyn") / "dyn.xlsx")
+
+
+def _summary(out):
+    frame = pd.read_excel(out / "dyn-campaign.xlsx", sheet_name="Summary", header=None)
+    return dict(zip(frame[0], frame[1], strict=False))
+
+
+def test_campaign_with_a_file_as_cache_runs_without_it(dyn, tmp_path, capsys):
+    """--cache naming a file: the campaign runs (exit 0), a warning names the file, the
+    report is written and says 0 runs found and every run of the matrix computed."""
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    out = tmp_path / "out"
+    assert main(["campaign", str(dyn), "--out", str(out), "--cache", str(afile),
+                 "--quiet"]) == 0
+    err = capsys.readouterr().err
+    assert f"the run cache {afile} cannot be used" in err
+    rows = _summary(out)
+    assert rows["runs found in the cache"] == 0
+    assert rows["runs computed now"] == rows["runs in the matrix"] == 8
+    assert afile.read_text() == "x"
+
+
+# ---- family 3: memory bounded by what the limits count --------------------------------------
+def test_memory_estimates_by_hand():
+    """A run of 3,600 s sampled every 1 s: drive tables every 0.01 s (360,000 + 2 x 1 + 1
+    rows of 9 floats, twice: the table and its stacked copy) and 3,601 samples of 85 floats
+    (20 states, 9 drive values, 30 reported quantities, 26 histories)."""
+    from slingloads.analyses.multibody.simulate import SAMPLE_BYTES, drive_bytes, run_bytes
+
+    assert drive_bytes(3600.0) == 2 * 360_003 * 9 * 8
+    assert SAMPLE_BYTES == 85 * 8
+    assert run_bytes(3600.0, 1.0) == 2 * 360_003 * 72 + 3601 * 680
+    # a batch of runs of 3,600 s sampled every 0.1 s: 36,001 x (680 + 208) bytes a run,
+    # so 4 fit in 128 MB
+    assert batch_limit({"t_end": 3600.0, "output_interval": 0.1}) == 4
+
+
+def test_workers_are_capped_by_cores_and_memory_with_a_warning():
+    """16 workers asked for on 2 cores: 2 started, the warning gives the request, the cores
+    and the estimate; with 1 GB available only 1 fits beside this process (each about
+    300 + 128 + 128 MB); a request within both is left alone, silently."""
+    workers, warning = local_workers(16, {"t_end": 60.0, "output_interval": 0.1}, cores=2,
+                                     available=64 * 2**30)
+    assert workers == 2 and "16 local workers were asked for, 2 started" in warning
+    assert "2 cores" in warning and "MB" in warning
+    workers, warning = local_workers(2, None, cores=8, available=2**30)
+    assert workers == 1 and "memory available" in warning
+    assert local_workers(2, None, cores=8, available=64 * 2**30) == (2, None)
+
+
+def test_drive_tables_are_tabulated_a_chunk_at_a_time(monkeypatch):
+    """16 runs of 3,600 s (each its own gust, so 16 distinct drive tables of 26 MB: 0.8 GB
+    and their stacked copy at once before): integrated in chunks whose tables and copies stay
+    within DRIVE_BUDGET; the peak traced allocation stays below DRIVE_BUDGET + 16 MB. The
+    integration itself is replaced by a recorder (its own memory is the samples')."""
+    from test_multibody_response import hc1_system
+
+    sim = importlib.import_module("slingloads.analyses.multibody.simulate")
+    from slingloads.analyses.multibody.manoeuvres import gust_response
+
+    system = hc1_system()
+    pairs = [(system, gust_response("finite", onset=1.0 + 0.1 * k)) for k in range(16)]
+    chunks = []
+
+    def recorder(prepared, members, results, drives, time_, settings):
+        profiles = [drives.get(prepared[k][1], prepared[k][2].state[0:3])[1] for k in members]
+        sim.stack_drives(profiles)
+        chunks.append(len(members))
+        for k in members:
+            results[k] = None
+
+    monkeypatch.setattr(sim, "_integrate_group", recorder)
+    monkeypatch.setattr(sim, "Simulation", lambda *a: a)
+    tracemalloc.start()
+    try:
+        sim.simulate_runs(pairs, t_end=3600.0, output_interval=10.0)
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert sum(chunks) == 16 and max(chunks) < 16
+    assert peak < sim.DRIVE_BUDGET + 16 * 2**20, peak / 2**20
+
+
+def test_chunked_integration_is_bit_for_bit(monkeypatch):
+    """Runs integrated one chunk each (DRIVE_BUDGET of 1 byte) give the same histories, to
+    the last bit, as all in one chunk: each run is integrated on its own."""
+    from test_multibody_response import hc1_system
+
+    sim = importlib.import_module("slingloads.analyses.multibody.simulate")
+    from slingloads.analyses.multibody.manoeuvres import gust_response
+
+    pairs = [(hc1_system(), gust_response("step", onset=1.0)),
+             (hc1_system(), gust_response("finite", onset=2.0))]
+    together = sim.simulate_runs(pairs, t_end=6.0)
+    monkeypatch.setattr(sim, "DRIVE_BUDGET", 1)
+    apart = sim.simulate_runs(pairs, t_end=6.0)
+    for a, b in zip(together.runs, apart.runs, strict=True):
+        assert a.to_frame().equals(b.to_frame())
+
+
+def test_one_campaign_run_over_the_memory_budget_is_refused_at_its_cell(dyn, tmp_path,
+                                                                         capsys):
+    """A run of 3,600 s sampled every 0.005 s: 720,001 samples of 680 bytes and 52 MB of
+    drive tables, about 519 MB > the 512 MB budget: refused at 'campaign output interval'
+    before any run, exit 2, nothing written."""
+    book = small_dynamics_workbook()
+    set_parameter(book, "run multibody", "no")
+    set_parameter(book, "campaign run length", 3600.0, "s")
+    set_parameter(book, "campaign time step", 0.0, "s")
+    set_parameter(book, "campaign output interval", 0.005, "s")
+    set_parameter(book, "campaign density altitudes", "0", "ft")
+    set_parameter(book, "campaign area factors", "1.0", None)
+    path = save_xlsx(book, tmp_path / "big.xlsx")
+    row = next(i for i, r in enumerate(book["Study"], 1) if r[0] == "campaign output interval")
+    out = tmp_path / "out"
+    assert main(["campaign", str(path), "--out", str(out), "--cache",
+                 str(tmp_path / "cache"), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert f"cell B{row}" in err and "too much memory" in err and "512 MB" in err
+    assert not out.exists()
+
+
+# ---- family 5: fault injection --------------------------------------------------------------
+def test_interrupted_at_random_moments_the_resume_gives_identical_results(dyn, tmp_path,
+                                                                          monkeypatch):
+    """Three seeded random interruptions of the 8-run campaign on the disk cache (one run
+    per batch): between batches (Ctrl-C), inside a batch, or in the middle of writing a
+    cached run, the half-written file left as a killed process leaves it. Each resume
+    finds the runs stored before, computes the others, leaves no temporary file, and its
+    metrics and histories equal an uninterrupted run's on an empty store."""
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    rng = random.Random(22)
+    original_batch, original_write = execution.run_batch, RunCache._write
+    for trial in range(3):
+        folder = tmp_path / f"cache{trial}"
+        moment = rng.choice(["between batches", "in a batch", "writing"])
+        at = rng.randint(1, 3)
+        calls = []
+
+        def batch(jobs, settings, threads=None, moment=moment, at=at, calls=calls):
+            calls.append(1)
+            if moment == "in a batch" and len(calls) == at + 1:
+                raise KeyboardInterrupt
+            return original_batch(jobs, settings, threads)
+
+        def write(self, key, record, moment=moment, at=at):
+            if moment == "writing" and self.written == at:
+                part = self._path(key).parent / (
+                    f".part-{cache_module._host_tag()}-{2**22 + 4321}-dead.parquet")
+                part.parent.mkdir(parents=True, exist_ok=True)
+                part.write_bytes(b"PAR1 half a file")  # what a killed writer leaves
+                raise KeyboardInterrupt
+            return original_write(self, key, record)
+
+        def progress(done, total, moment=moment, at=at):
+            if moment == "between batches" and done == at:
+                raise KeyboardInterrupt
+
+        monkeypatch.setattr(execution, "run_batch", batch)
+        monkeypatch.setattr(RunCache, "_write", write)
+        with pytest.raises(KeyboardInterrupt):
+            run_campaign(campaign, store=RunCache(folder), batch_size=1, progress=progress)
+        monkeypatch.setattr(execution, "run_batch", original_batch)
+        monkeypatch.setattr(RunCache, "_write", original_write)
+        stored = len(list(folder.rglob("*.parquet"))) - len(list(folder.rglob(".part-*")))
+        resumed = run_campaign(campaign, store=RunCache(folder), batch_size=1)
+        total = resumed.execution.total
+        assert (resumed.execution.cached, resumed.execution.computed) == (stored, total - stored)
+        assert not list(folder.rglob(".part-*")), moment
+        pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+        for run in fresh.metrics["run"]:
+            pd.testing.assert_frame_equal(resumed.history(run), fresh.history(run))
+
+
+def test_a_killed_worker_process_leaves_the_cache_and_out_intact(dyn, tmp_path, capsys):
+    """A local worker process killed (it exits at once in its first batch, as a killed
+    process does): the campaign ends with a clear error (exit 1, no traceback), nothing is
+    published (the earlier report in --out stays, byte for byte) and no temporary file is
+    left in the cache (the resume itself: the test above)."""
+    from hostile import publish_earlier
+
+    out, folder = tmp_path / "out", tmp_path / "cache"
+    publish_earlier(out, {"dyn-campaign.xlsx": b"an earlier report"})
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    os.environ[worker.KILL_VARIABLE] = "1"
+    try:
+        code = main(["campaign", str(dyn), "--out", str(out), "--cache", str(folder),
+                     "--quiet", "--workers", "2"])
+    finally:
+        del os.environ[worker.KILL_VARIABLE]
+    err = capsys.readouterr().err
+    assert code == 1 and "Traceback" not in err and "nothing was written" in err, err
+    assert "worker process ended abruptly" in err
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert not list(folder.rglob(".part-*"))
+
+
+def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identical(dyn,
+                                                                                  tmp_path):
+    """A local Dask scheduler (worker threads, loopback TCP) terminated after the second of
+    8 one-run batches: the campaign ends within the 1 s time-out with an environment error
+    (the runs finished before stored), and the resume, in this process on the same cache,
+    finds them and gives the metrics of an uninterrupted run."""
+    import contextlib
+
+    distributed = pytest.importorskip("distributed")
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    try:
+        executor = DaskCluster(cluster.scheduler_address, 1.0)
+
+        def progress(done, total):
+            if done == 2:
+                with contextlib.suppress(OSError):
+                    executor.client.sync(executor.client.scheduler.terminate)
+
+        start = time.monotonic()
+        with pytest.raises(OutputError, match="scheduler was lost|stopped answering"):
+            run_campaign(campaign, executor=executor, store=RunCache(tmp_path / "cache"),
+                         batch_size=1, progress=progress)
+        assert time.monotonic() - start < 5.0
+    finally:
+        with contextlib.suppress(TimeoutError, OSError):
+            cluster.close(timeout=2)
+    resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
+    assert resumed.execution.cached >= 2
+    assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
