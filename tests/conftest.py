@@ -8,9 +8,10 @@
   its own entry only (``numba.core.caching.IndexDataCacheFile.save``), so workers never share
   one. The folders are kept in pytest's cache folder between runs (compiled once).
 * LibreOffice, when present, with one user profile for the session.
-* The example workbook, its study read once for the session, its reports made once for the
-  session (``slingloads loads`` and ``slingloads run``), and the check of a broken copy of a
-  workbook (exit code 2, the message located at the cell, nothing written).
+* The example workbook, its study read once for the session, its results (every analysis)
+  computed once, its reports made once for the session (``slingloads loads`` and
+  ``slingloads run``; the US reports written from those results), and the check of a broken
+  copy of a workbook (exit code 2, the message located at the cell, nothing written).
 """
 
 import copy
@@ -82,6 +83,26 @@ def example_run_report(tmp_path_factory):
     """The folder of ``slingloads run`` on the example (every analysis it asks for), made
     once for the session (to be read, not changed)."""
     return _report(tmp_path_factory, "run")
+
+
+@pytest.fixture(scope="session")
+def example_results(_example_study):
+    """The example's study with every analysis it asks for run once for the session (its own
+    copy of the study; the results are to be read, not changed)."""
+    return copy.deepcopy(_example_study).run()
+
+
+@pytest.fixture(scope="session", params=["SI", "US"])
+def example_reports(request, example_results, tmp_path_factory):
+    """(units, folder) of the example's reports in SI and in US units: the SI ones are the
+    session's ``slingloads run`` folder, the US ones written from ``example_results``."""
+    if request.param == "SI":
+        return "SI", request.getfixturevalue("example_run_report")
+    import slingloads as sl
+
+    out = tmp_path_factory.mktemp(f"example-{request.param}")
+    sl.write_reports(example_results, out, request.param)
+    return request.param, out
 
 
 @pytest.fixture(scope="session")

@@ -299,7 +299,9 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
     raw = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="LoadCases", header=None)
     head = int(np.nonzero(raw.isin(["source"]).any(axis=1).to_numpy())[0][0])
     cases = raw.iloc[head + 1:].set_axis(list(raw.iloc[head]), axis=1)  # under its title
-    assert set(cases["source"]) == {"hand", "dynamics"}
+    assert "dynamics" in set(cases["source"])
+    assert set(cases["source"]) <= {"CS-29.865 direction", "towed equilibrium", "dynamics",
+                                    "hand-listed"}
     assert cases.loc[cases["source"] == "dynamics", "aero"].str.startswith("DYN-").any()
     dynamics = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="Dynamics", header=None)
     rows = dynamics.set_index(0)

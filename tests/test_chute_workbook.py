@@ -95,11 +95,8 @@ def test_report_reads_back(run_dir, result):
     line = summary[summary[0] == "parachute line length (from the wake)"].iloc[0]
     assert float(line[1]) == pytest.approx(result.line.line_length, rel=1e-12)
     assert summary[summary[0] == "carrier cable check"].iloc[0][1] == "ok"
-    sweep = pd.read_excel(run_dir / f"{STEM}-chute.xlsx", sheet_name="Sweep", header=None)
-    head = int(np.nonzero(sweep[0].to_numpy() == "Every run")[0][0]) + 1
-    runs = sweep.iloc[head + 1:].copy()
-    runs = runs[runs[0] != sweep.iloc[head, 0]]  # the header repeated on each printed page
-    runs.columns = sweep.iloc[head]
+    # every run: a table sheet of its own (header in row 1, never repeated in the data)
+    runs = pd.read_excel(run_dir / f"{STEM}-chute.xlsx", sheet_name="Sweep-EveryRun")
     api = result.sweep.to_frame()
     assert len(runs) == len(api) == 30                # 6 areas x 5 gust shapes
     np.testing.assert_allclose(runs["peak beta [deg]"].astype(float), api["peak beta [deg]"],

@@ -8,6 +8,7 @@ import re
 from pathlib import Path
 
 import matplotlib
+import pandas as pd
 import pytest
 from hostile import EXAMPLE
 
@@ -49,6 +50,127 @@ def test_every_limit_is_documented():
     assert names
     missing = [n for n in names if f"`{n}`" not in page]
     assert not missing, missing
+
+
+# --------------------------------------------------------------- figures quoted from the example
+def _text(name):
+    """A page of the documentation with its line breaks as spaces."""
+    return " ".join((ROOT / name).read_text(encoding="utf-8").split())
+
+
+def _quoted(pattern, page):
+    found = re.search(pattern, _text(page))
+    assert found, f"{page} no longer quotes /{pattern}/: update the test with the page"
+    return found.groups()
+
+
+def _agrees(quoted, value):
+    """The quoted figure is the value rounded to the digits quoted (half a unit of the last
+    digit either way)."""
+    text = quoted.replace(",", "").replace(" ", "")
+    decimals = len(text.split(".")[1]) if "." in text else 0
+    return abs(float(text) - value) <= 0.5 * 10.0**-decimals + 1e-12
+
+
+def test_nastran_page_quotes_the_example_deck(example_results, tmp_path):
+    """docs/nastran.md's card count and file size of the example deck, re-derived by writing
+    the deck and counting the lines that open a card after BEGIN BULK (a card's name starts
+    its first field)."""
+    from slingloads.io.loads.nastran import write_nastran
+
+    cases, items, points, cards, size = _quoted(
+        r"\((\d+) cases, (\d+) mass items, (\d+) load points\) the file has ([\d,]+) cards "
+        r"\(([\d.]+) MB\)", "docs/nastran.md")
+    loads = example_results.loads
+    path = tmp_path / "x.bdf"
+    write_nastran(loads, path)
+    lines = path.read_text().splitlines()
+    bulk = lines[next(k for k, line in enumerate(lines) if line.startswith("BEGIN BULK")) + 1:]
+    opened = [line for line in bulk if line[:1].isalpha() and not line.startswith("ENDDATA")]
+    grids = sum(line.startswith("GRID") for line in opened)
+    assert int(cases) == len(loads.case_ids)
+    assert int(items) == sum(line.startswith("CONM2") for line in opened)
+    assert int(points) == grids - int(items)
+    assert int(cards.replace(",", "")) == len(opened)
+    assert _agrees(size, path.stat().st_size / 1e6)
+
+
+def test_loads_method_page_quotes_the_example(example_results):
+    """docs/loads-method.md's hanging pitch, towed cable angles and mast-vertical against
+    hanging Vz of the vertical case, re-derived from the example (the mast-vertical study is
+    the example's with the Study's attitude changed, run again)."""
+    import dataclasses
+
+    import numpy as np
+
+    loads = example_results.loads
+    (pitch,) = _quoted(r"\*\*pitch (-?\d+\.\d+) deg", "docs/loads-method.md")
+    assert _agrees(pitch, np.degrees(loads.attitude.pitch))
+    at_nz, at_1g = _quoted(r"at most (\d+\.\d+) deg at Nz 2\.5 and (\d+\.\d+) deg at 1 g",
+                           "docs/loads-method.md")
+    towed = loads.towed_table()
+    assert _agrees(at_nz, towed["cable angle from vertical [deg]"].max())
+    assert _agrees(at_1g, towed["cable angle at 1 g [deg]"].max())
+    low, high = _quoted(r"Vz forward of the hub is (\d+) to (\d+) % higher", "docs/loads-method.md")
+    mast = dataclasses.replace(loads.study, attitude="mast vertical").run().to_frame()
+    hanging = loads.to_frame()
+    triplets = re.findall(r"(FS\d{4}) ([\d ]+?) -> ([\d ]+?) N", _text("docs/loads-method.md"))
+    assert len(triplets) == 3
+    rises = []
+    for station, before, after in triplets:
+        pick = {"case": "LC0001", "station": station}
+        was = mast.loc[(mast[list(pick)] == pd.Series(pick)).all(axis=1), "Vz_N"].item()
+        now = hanging.loc[(hanging[list(pick)] == pd.Series(pick)).all(axis=1), "Vz_N"].item()
+        assert _agrees(before, was) and _agrees(after, now), station
+        rises.append(100 * (now / was - 1))
+    assert int(low) <= min(rises) and max(rises) <= int(high) + 1
+
+
+def test_readme_quotes_the_example(example_results):
+    """The README's figures of the parachute sizing and of the multibody trim and modes,
+    re-derived from the example's results."""
+    sizing, multibody = example_results.chute_sizing, example_results.multibody
+    neutral, recommended, line = _quoted(
+        r"neutral area (\d+\.\d+) m\^2, recommended (\d+\.\d+) m\^2 .*? line (\d+\.\d+) m",
+        "README.md")
+    assert _agrees(neutral, sizing.static.area)
+    assert _agrees(recommended, sizing.recommended_area)
+    assert _agrees(line, sizing.line.line_length)
+    trim = multibody.trim.to_frame().iloc[0]
+    pitch, swing, tension = _quoted(r"trimmed pitch (-?\d+\.\d+) deg, swing (\d+\.\d+) deg, "
+                                    r"tension (\d+\.\d+) W", "README.md")
+    assert _agrees(pitch, trim["pitch [deg]"]) and _agrees(swing, trim["swing from vertical [deg]"])
+    assert _agrees(tension, trim["tension / weight [-]"])
+    modes = multibody.linear.modes_frame().set_index("mode")
+    zeta, half, rate, roll_zeta = _quoted(
+        r"damping ratio (\d+\.\d+), half amplitude in (\d+\.\d+) s; the least damped mode is "
+        r"the hung body's roll, (\d+\.\d+) rad/s, damping ratio (\d+\.\d+)", "README.md")
+    assert _agrees(zeta, modes.loc["yaw / lateral swing", "damping ratio [-]"])
+    assert _agrees(half, modes.loc["yaw / lateral swing", "time to half or double [s]"])
+    assert _agrees(rate, modes.loc["roll", "natural frequency [rad/s]"])
+    assert _agrees(roll_zeta, modes.loc["roll", "damping ratio [-]"])
+
+
+def test_reports_page_gives_the_plot_units():
+    """docs/reports.md names the units of the SFBM plots as the plots label them."""
+    from slingloads.io.loads.plots import component_label
+
+    row = next(line for line in (ROOT / "docs/reports.md").read_text().splitlines()
+               if line.startswith("| force, moment on"))
+    for units in ("SI", "US"):
+        for component in ("Vy", "Mz"):
+            unit = re.search(r"\[(.*)\]", component_label(component, units)).group(1)
+            assert unit in row, (units, component, row)
+    assert "kN" not in row.split("(the SFBM plots")[1]
+
+
+def test_readme_outputs_name_the_condition_of_the_lateral_shear_plot(example_reports):
+    """The README names the condition under which the optional `-shear.png` appears, and the
+    example, which does not meet it, does not write it."""
+    _, folder = example_reports
+    readme = _text("README.md")
+    assert re.search(r"`-shear\.png` only when", readme)
+    assert not list(folder.glob("*-lateral-shear.png"))
 
 
 def _modules_with_examples():

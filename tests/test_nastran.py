@@ -544,7 +544,8 @@ def with_rows(tmp_path, rows, edit=None, name="nastran.xlsx"):
 def test_study_rows_write_the_deck_with_the_report(tmp_path):
     """'nastran bulk data = yes' with --units US, a model axis map and offset on the Study
     sheet: the run publishes <stem>-loads.bdf with the report, whose Nastran sheet links each
-    subcase to its case id; the file balances (1e-9) in the mapped axes."""
+    subcase to its case id (the subcase table, longer than a page, on a sheet of its own);
+    the file balances (1e-9) in the mapped axes."""
     path, _ = with_rows(tmp_path, [("nastran bulk data", "yes", None),
                                    ("nastran model axes", "-x, y, -z", None),
                                    ("nastran offset x", 120.0, "in"),
@@ -554,7 +555,8 @@ def test_study_rows_write_the_deck_with_the_report(tmp_path):
     bdf = out / "nastran-loads.bdf"
     deck = Deck(bdf)
     assert min(deck.model.nodes) == 5001
-    sheet = openpyxl.load_workbook(out / "nastran-loads.xlsx", read_only=True)["Nastran"]
+    sheet = openpyxl.load_workbook(out / "nastran-loads.xlsx",
+                                   read_only=True)["Nastran-Subcases"]
     rows = [r for r in sheet.iter_rows(values_only=True) if r and r[0] == 1]
     assert rows and rows[0][1:3] == (100_010, "LC0001")
     rotation, shift = project_axes("-x, y, -z", (120 * 0.0254, 0, 0), "US")

@@ -88,7 +88,7 @@ def test_small_ratio_cell_is_scientific(tmp_path):
         {"item": ["relative difference", "factor"], "value": [3e-6, 1.5],
          "unit": ["-", "-"]}))]})
     ws = openpyxl.load_workbook(path)["S"]
-    assert ws["B3"].number_format == "0.00E+00" and ws["B4"].number_format == "0.000"
+    assert ws["B2"].number_format == "0.00E+00" and ws["B3"].number_format == "0.000"
 
 
 def test_csv_names():

@@ -148,19 +148,19 @@ class Attitude:
         return cls.from_vertical(mast_axis, "mast vertical")
 
     def describe(self):
-        """Readable text, e.g. "pitch -9.17 deg (nose down), roll 0 deg (hanging: CG under
-        the hub)".
+        """Readable text at the reports' precision of an angle (0.1 deg), e.g. "pitch -9.2 deg
+        (nose down), roll +0.0 deg (level); hanging: CG under the hub".
 
         Returns
         -------
         str
         """
-        pitch, roll = (float(np.round(np.degrees(a), 2)) + 0.0 for a in (self.pitch, self.roll))
+        pitch, roll = (float(np.round(np.degrees(a), 1)) + 0.0 for a in (self.pitch, self.roll))
         nose = "nose up" if pitch > 0 else "nose down" if pitch < 0 else "level"
         side = ("right side down" if roll > 0 else "left side down" if roll < 0 else "level")
         how = {"hanging": "hanging: CG under the hub",
                "mast vertical": "mast along the earth vertical"}.get(self.source, self.source)
-        return f"pitch {pitch:+.2f} deg ({nose}), roll {roll:+.2f} deg ({side}); {how}"
+        return f"pitch {pitch:+.1f} deg ({nose}), roll {roll:+.1f} deg ({side}); {how}"
 
     def to_frame(self):
         """The attitude and its earth vertical as a one-row DataFrame.

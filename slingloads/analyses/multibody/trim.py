@@ -640,8 +640,10 @@ class LinearModel:
         return name
 
     def modes_frame(self):
-        """One row per mode (complex pairs once): eigenvalue, frequency, damping, name, the
-        share of each motion in its kinetic energy and the angular amplitudes of the groups."""
+        """One row per mode (complex pairs once): eigenvalue, frequency, damping, name (unique:
+        ``parachute 1``, ``parachute 2`` from the lowest frequency when two modes share one),
+        the share of each motion in its kinetic energy and the angular amplitudes of the
+        groups."""
         lam = self.eigenvalues
         keep = lam.imag >= -1e-12
         shares = self.shares()
@@ -664,9 +666,19 @@ class LinearModel:
             for j, motion in enumerate(MOTIONS):
                 row[f"{motion} energy share [-]"] = shares[k][j]
             rows.append(row)
-        frame = pd.DataFrame(rows)
-        return frame.sort_values("natural frequency [rad/s]", kind="stable").reset_index(
-            drop=True)
+        frame = pd.DataFrame(rows).sort_values("natural frequency [rad/s]", kind="stable")
+        frame = frame.reset_index(drop=True)
+        # names are unique: modes of one name are numbered from the lowest frequency
+        counts = frame["mode"].value_counts()
+        seen = {}
+        names = []
+        for name in frame["mode"]:
+            if counts[name] > 1:
+                seen[name] = seen.get(name, 0) + 1
+                name = f"{name} {seen[name]}"
+            names.append(name)
+        frame["mode"] = names
+        return frame
 
     def to_frame(self):
         """The modes (see :meth:`modes_frame`)."""

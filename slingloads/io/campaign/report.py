@@ -106,7 +106,7 @@ def _items(rows):
 
 
 def _speed(v, units):
-    return (v / KNOT, "kt") if units == "US" else (v, "m/s")
+    return v / KNOT, "kt"  # an airspeed: in knots in both unit systems
 
 
 def _length(v, units, ft=True):

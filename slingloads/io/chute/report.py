@@ -40,8 +40,8 @@ from slingloads.io.common.figures import (
 )
 from slingloads.io.common.report import (
     convert_columns,
-    in_report_units,
     report_unit,
+    report_value,
     sample_rows,
     warning_sections,
 )
@@ -119,7 +119,7 @@ def _value(value, kind, units):
         return value, kind or ""
     if kind == "pressure":
         return (value, "Pa") if units == "SI" else (value / (POUND_FORCE / FOOT**2), "psf")
-    return float(in_report_units(value, kind, units)), unit_label(report_unit(kind, units))
+    return report_value(value, kind, units), unit_label(report_unit(kind, units))
 
 
 def _items(rows, units):
@@ -128,7 +128,7 @@ def _items(rows, units):
     for item, value, kind, note in rows:
         shown, unit = _value(value, kind, units) if isinstance(value, float) else (value, "")
         out.append({"item": item, "value": shown, "unit": unit, "note": note})
-    return pd.DataFrame(out)
+    return pd.DataFrame(out, dtype=object)  # a count stays an int (written "15")
 
 
 def summary_tables(result, units="SI"):
@@ -137,9 +137,9 @@ def summary_tables(result, units="SI"):
     m = inp.model
     c = m.condition
     condition = _items([
-        ("airspeed IAS (= EAS)", c.ias, "speed", ""),
-        ("true airspeed", c.tas, "speed", ""),
-        ("density altitude", c.density_altitude, "length", "ISA"),
+        ("equivalent airspeed KEAS", c.ias, "airspeed", "= KIAS (no position error)"),
+        ("true airspeed KTAS", c.tas, "airspeed", ""),
+        ("density altitude", c.density_altitude, "altitude", "ISA"),
         ("air density", c.density, "density", ""),
         ("dynamic pressure q", c.dynamic_pressure, "pressure", "1/2 rho0 V_EAS^2"),
         ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),

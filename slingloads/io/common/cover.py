@@ -197,9 +197,10 @@ def info_from_digest(digest, *, title, analysis, study, units, conventions=(), f
 
 
 def unit_system_text(units):
-    """``"SI (m, kg, N, N m)"`` or ``"US (in, lb, lbf, lbf in, kt)"``."""
-    return {"SI": "SI (m, kg, N, N m, m/s; angles in deg)",
-            "US": "US customary (in, lb, lbf, lbf in, kt; angles in deg)"}.get(units, units)
+    """``"SI (m, kg, N, N m, ...)"`` or ``"US customary (in, lb, lbf, lbf in, ...)"``."""
+    return {"SI": "SI (m, kg, N, N m, kg m^2, m/s; airspeeds in kt, angles in deg)",
+            "US": "US customary (in, lb, lbf, lbf in, lb in^2, ft/s; airspeeds in kt, "
+                  "altitudes in ft, angles in deg)"}.get(units, units)
 
 
 def cover_sections(info, sheets):

@@ -83,11 +83,13 @@ from slingloads.io.common.excel_print import print_setup
 from slingloads.io.common.excel_tables import (
     Highlight,
     Section,
+    _check_highlight,
     _Columns,
     _note_lines,
     _set_widths,
     format_by_header,
     frame_title,
+    sheet_blocks,
     write_sections_sheet,
     write_table_sheets,
 )
@@ -105,7 +107,7 @@ IN_MEMORY_CELLS = 250_000
 SheetContent = pd.DataFrame | Sequence[Section] | str
 
 
-def _sheet_plan(sheets, images, images_sheet, max_rows):
+def _sheet_plan(sheets, images, images_sheet, max_rows, number_format=None):
     """(sheet name, title) of every sheet to write, in order, before anything is written."""
     plan = []
     for name, content in sheets.items():
@@ -116,7 +118,13 @@ def _sheet_plan(sheets, images, images_sheet, max_rows):
         elif isinstance(content, str):
             plan.append((name, content.splitlines()[0] if content else name))
         else:
-            plan.append((name, next((s.title for s in content if s.title), name)))
+            for n, part in sheet_blocks(name, content, number_format,
+                                        taken=[x for x, _ in plan]):
+                if isinstance(part, pd.DataFrame):
+                    plan += [(m, frame_title(part, n))
+                             for m, _, _ in split_sheet_names(n, len(part), max_rows)]
+                else:
+                    plan.append((n, next((s.title for s in part if s.title), n)))
     if images:
         plan.append((images_sheet, "; ".join(images)))
     seen = set()
@@ -125,6 +133,17 @@ def _sheet_plan(sheets, images, images_sheet, max_rows):
             raise InputError("sheet names must be unique (Excel ignores case)", n)
         seen.add(n.lower())
     return plan
+
+
+def _highlight_for(highlight, content):
+    """The highlight of a sheet restricted to the columns of one of its parts."""
+    if highlight is None:
+        return None
+    frames = ([content] if isinstance(content, pd.DataFrame)
+              else [s.table for s in content if s.table is not None])
+    present = {c for f in frames for c in f.columns}
+    kept = [c for c in highlight.columns if c in present]
+    return Highlight(kept, highlight.threshold) if kept else None
 
 
 def _table_cells(sheets):
@@ -186,7 +205,7 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
         more than 32,767 characters), or more than 16,384 columns.
     """
     highlight = highlight or {}
-    plan = _sheet_plan(sheets, images, images_sheet, max_rows)
+    plan = _sheet_plan(sheets, images, images_sheet, max_rows, number_format)
     if not plan:
         raise InputError("a workbook needs at least one sheet")
     if info is not None:
@@ -199,6 +218,7 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
     with tempfile.TemporaryDirectory(prefix="slingloads-xlsx-",
                                      ignore_cleanup_errors=True) as tmp:
         wb = _Workbook(path, stream=_table_cells(sheets) > IN_MEMORY_CELLS, tmpdir=tmp)
+        wb.units = "US" if info is not None and info.units.startswith("US") else "SI"
         wb.set_properties({"author": creator, **({"title": info.title} if info else {})})
         mark_report(wb)
         written = []
@@ -212,9 +232,18 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
             elif isinstance(content, str):
                 written += write_sections_sheet(wb, name, [Section(note=content)], info=info)
             else:
-                written += write_sections_sheet(wb, name, list(content),
-                                                number_format=number_format, highlight=mark,
-                                                info=info)
+                _check_highlight([s.table for s in content if s.table is not None],
+                                 highlight.get(name), name)
+                for n, part in sheet_blocks(name, content, number_format, taken=written):
+                    mark = _highlight_for(highlight.get(name), part)
+                    if isinstance(part, pd.DataFrame):
+                        written += write_table_sheets(
+                            wb, n, part, number_format=number_format, highlight=mark,
+                            max_rows=max_rows, info=info, note=part.attrs.get("note", ""))
+                    else:
+                        written += write_sections_sheet(wb, n, part,
+                                                        number_format=number_format,
+                                                        highlight=mark, info=info)
         if images:
             written += write_images_sheet(wb, images_sheet, images, info=info,
                                           title=images_title)

@@ -32,6 +32,7 @@ from xlsxwriter.exceptions import FileCreateError
 from xlsxwriter.utility import xl_rowcol_to_cell
 
 from slingloads.errors import InputError
+from slingloads.io.common.units import report_text
 
 #: Rows in one Excel worksheet (header included) [1]_.
 EXCEL_MAX_ROWS = 1_048_576
@@ -194,6 +195,9 @@ class _Workbook(xlsxwriter.Workbook):
         mode = "constant_memory" if stream else "in_memory"
         super().__init__(str(path), {mode: True, "use_zip64": True, "tmpdir": tmpdir})
         self._cell_formats = {}
+        #: The report's unit system: the SI quantities quoted in its sentences are written
+        #: in it (:func:`~slingloads.io.common.units.report_text`).
+        self.units = "SI"
         self._red = None
 
     def cell_format(self, style):
@@ -275,7 +279,9 @@ class _SheetWriter:
         return {"sheet": self.ws.name, "cell": xl_rowcol_to_cell(self.row, column)}
 
     def _text(self, column, value, cell_format):
-        """Write the string ``value`` as text (never a formula)."""
+        """Write the string ``value`` as text (never a formula), its quoted SI quantities in
+        the report's units."""
+        value = report_text(value, self.wb.units)
         if _ILLEGAL_CHARACTERS.search(value):
             raise InputError("text contains a control character that Excel cannot store",
                              value, **self._where(column))

@@ -53,8 +53,9 @@ from slingloads.io.common.excel_cells import (
     split_sheet_names,
     wrapped_lines,
 )
-from slingloads.io.common.excel_print import PRINTABLE, print_setup
+from slingloads.io.common.excel_print import PRINTABLE, orientation_for, print_setup
 from slingloads.io.common.formats import header_unit, unit_format, value_format
+from slingloads.io.common.units import report_text
 
 
 @dataclass
@@ -69,11 +70,16 @@ class Section:
         Written with a bold header row.
     note : str
         Written under the title (before the table), wrapped to the width of the sheet.
+    sheet : str
+        The name of a sheet of its own for this section's table (a table sheet,
+        :func:`sheet_blocks`); empty: on the sheet of its list, unless it is longer than a
+        page among other tables.
     """
 
     title: str = ""
     table: pd.DataFrame | None = None
     note: str = ""
+    sheet: str = ""
 
 
 @dataclass
@@ -294,14 +300,9 @@ def _alignments(frame, columns):
     return cells, heads
 
 
-def _write_table(writer, frame, formats, columns, highlight, paginate=None):
-    """Header and rows of ``frame`` at the writer's current row.
-
-    ``paginate``, when given, is called with the printed height [px] of each data row before
-    it is written, and returns True when it has put a page break above it: the header row
-    is then written again at the top of the new page (a table of a sheet of several
-    sections continues under its own column headers, which the sheet's repeated title rows
-    cannot give)."""
+def _write_table(writer, frame, formats, columns, highlight):
+    """Header and rows of ``frame`` at the writer's current row (the header once: a page
+    repeats it through the print setup, never through a row written into the data)."""
     names = [str(c) for c in frame.columns]
     if len(names) > EXCEL_MAX_COLUMNS:
         raise InputError(f"a table has more than Excel's {EXCEL_MAX_COLUMNS} columns",
@@ -311,7 +312,6 @@ def _write_table(writer, frame, formats, columns, highlight, paginate=None):
                      for h in heads]
     writer.append(names, header_styles)
     first = writer.row + 1
-    segments = []  # (first, last) rows of the data between repeated headers (1-based)
     per_row = _row_unit_columns(frame, formats)
     unit_at = names.index("unit") if per_row else None
     ratio = [header_unit(c) == "-" for c in names]
@@ -338,15 +338,8 @@ def _write_table(writer, frame, formats, columns, highlight, paginate=None):
                 if made is None:
                     made = looks[j][fmt] = cell_format(_style(None, fmt, cells[j]))
                 out[j] = made
-        lines = writer.lines(values, wrapping)
-        if paginate is not None and paginate(ROW_PIXELS * lines):
-            segments.append((first, writer.row))
-            writer.append(names, header_styles)
-            first = writer.row + 1
-        writer.write(values, out, lines)
-    segments.append((first, writer.row))
-    for start, stop in segments:
-        _highlight(writer, frame, start, stop, highlight)
+        writer.write(values, out, writer.lines(values, wrapping))
+    _highlight(writer, frame, first, writer.row, highlight)
 
 
 def frame_title(frame, default=""):
@@ -355,7 +348,7 @@ def frame_title(frame, default=""):
 
 
 def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
-                       max_rows=EXCEL_MAX_ROWS, info=None):
+                       max_rows=EXCEL_MAX_ROWS, info=None, note=""):
     """Write a DataFrame to one sheet, or to ``NAME_1``, ``NAME_2``... when too long.
 
     The header is row 1; it is frozen and repeated on every printed page. The page header
@@ -379,6 +372,10 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
         Rows per sheet including the header; Excel's limit by default (a test uses less).
     info : ReportInfo, optional
         Page header and footer.
+    note : str
+        Printed in a text box under the table (last sheet), outside the cells: the sheet
+        holds the header in row 1 and the data below it, nothing else, so that a program
+        (``pandas.read_excel``, Excel's filter) reads it as data.
 
     Returns
     -------
@@ -390,16 +387,129 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     columns = _column_plan([frame], formats_of=lambda f: formats)
     title = frame_title(frame, name)
     names = []
-    for sheet_name, start, stop in split_sheet_names(name, len(frame), max_rows):
+    parts = split_sheet_names(name, len(frame), max_rows)
+    lines = _note_lines(report_text(note, wb.units), columns) if note else []
+    for k, (sheet_name, start, stop) in enumerate(parts):
         ws = wb.add_worksheet(sheet_name)
         ws.freeze_panes(_freeze(frame, 1))
         _set_widths(ws, columns)
-        print_setup(ws, pixels=columns.pixels, height=ROW_PIXELS * (stop - start + 1),
-                    title_rows=1, sheet_title=title, info=info)
+        boxed = lines if k == len(parts) - 1 else []
+        print_setup(ws, pixels=columns.pixels,
+                    height=ROW_PIXELS * (stop - start + 1 + len(boxed) + bool(boxed)),
+                    title_rows=1, sheet_title=title if len(parts) == 1
+                    else f"{title}, part {k + 1} of {len(parts)}", info=info)
         _write_table(_SheetWriter(wb, ws, columns.widths), frame.iloc[start:stop], formats,
                      columns, highlight)
+        if boxed:
+            _note_box(ws, stop - start + 2, boxed, columns, frame.shape[1])
         names.append(sheet_name)
     return names
+
+
+def _note_box(ws, row, lines, columns, n_columns):
+    """The note of a table sheet in a text box from ``row`` (0-based) down, inside the
+    printed area; the cells stay the table's alone."""
+    ws.insert_textbox(row, 0, "\n".join(lines), {
+        "width": max(columns.pixels, 300), "height": ROW_PIXELS * (len(lines) + 1),
+        "font": {"size": 10}, "line": {"none": True}, "fill": {"none": True},
+        "object_position": 3})
+    ws.print_area(0, 0, row + len(lines) + 1, max(n_columns - 1, 0))
+
+
+def _is_long(table, number_format):
+    """A table taller than a printed page with its title."""
+    formats = _number_formats(table.columns, number_format)
+    own = _column_plan([table], formats_of=lambda f: formats)
+    height = _table_pixels(table, own) + 2 * ROW_PIXELS
+    page = _page_pixels(orientation_for(own.pixels, height), own.pixels) * 0.95
+    return height > page
+
+
+#: Words left out of a sheet name made from a title.
+_FILLER = frozenset({"a", "an", "and", "at", "by", "for", "in", "of", "on", "the", "to"})
+
+
+def _sheet_name_for(base, title, taken):
+    """A sheet name for a table of sheet ``base`` taken out to a sheet of its own: the base
+    and the first words of the table's title (``Runs-ResultsOfEveryCase``)."""
+    part = re.search(r"\bpart (\d+) of \d+", title)
+    if part:  # a block of a table split for print: "Histories part 2"
+        return _unique(f"{base} part {part.group(1)}", taken)
+    head = re.split(r"[:,;(=]", title)[0]
+    words = [w[:1].upper() + w[1:] for w in re.findall(r"[A-Za-z0-9]+", head)
+             if w.lower() not in _FILLER] or ["Table"]
+    out = f"{base}-"
+    for w in words:
+        if len(out) + len(w) > 31:
+            break
+        out += w
+    return _unique(out.rstrip("-"), taken)
+
+
+def _unique(name, taken):
+    """``name`` (at most 31 characters), or with a number when taken (case ignored)."""
+    name = candidate = name[:31]
+    k = 2
+    while candidate.lower() in taken:
+        candidate = f"{name[:28]}{k}"
+        k += 1
+    taken.add(candidate.lower())
+    return candidate
+
+
+def sheet_blocks(name, sections, number_format=None, taken=()):
+    """The sheets a list of sections is printed on, as (sheet name, content).
+
+    A section naming a ``sheet`` goes to that sheet; one whose table is taller than a page,
+    on a sheet of several tables, goes to a sheet of its own named after the base sheet and
+    the table's title (its header is then
+    repeated by the print setup on every page, never written into the data); when no table
+    is left on the base sheet, the first such table keeps the base name and the notes. A
+    sheet holding one table is a *table sheet*: a DataFrame whose ``attrs`` carry its
+    ``title`` and ``note`` (:func:`write_table_sheets`); any other is a list of sections
+    (:func:`write_sections_sheet`), whose tables each fit on one page.
+
+    Returns
+    -------
+    list of (str, DataFrame or list of Section)
+    """
+    sections = list(sections)
+    tables = [s for s in sections if s.table is not None]
+    taken = {t.lower() for t in taken} | {name.lower()}
+    long = [s for s in tables if s.sheet or (len(tables) > 1
+                                             and _is_long(s.table, number_format))]
+    rest = [s for s in sections if all(s is not x for x in long)]
+    if long and not any(s.table is not None for s in rest) and not long[0].sheet:
+        rest.append(long.pop(0))
+    out = [(name, rest)] if rest else []
+    for s in long:
+        own = s.sheet or _sheet_name_for(name, s.title, taken)
+        taken.add(check_sheet_name(own).lower())
+        out.append((own, [s]))
+    return [(n, secs if (frame := _as_table_sheet(secs)) is None else frame)
+            for n, secs in out]
+
+
+def _as_table_sheet(sections):
+    """The one table of ``sections`` with its title and note in ``attrs``, or None."""
+    tables = [s for s in sections if s.table is not None]
+    if len(tables) != 1:
+        return None
+    own = tables[0]
+    full = own.title or next((s.title for s in sections if s.title), "")
+    # the page header holds the title without its long bracketed remarks (so that a "part k
+    # of n" at its end shows; a short mark such as "(LIMIT)" stays); the text box under the
+    # table gives it whole
+    title = re.sub(r"\s*\([^()]{13,}\)", "", full)
+    text = [full] if title != full else []
+    for s in sections:
+        if s.title and s.title != full:
+            text.append(s.title)
+        if s.note:
+            text.append(s.note)
+    frame = own.table.copy(deep=False)
+    frame.attrs = {**own.table.attrs, "title": title, "note": "\n".join(text)}
+    return frame
 
 
 def _table_pixels(frame, columns):
@@ -426,10 +536,11 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
                          info=None):
     """Write titled blocks (notes and tables) one under another on one sheet.
 
-    A sheet whose only table is its last block is a table sheet: the rows down to the
-    table's header are frozen and repeated on every printed page. Otherwise the first row
-    (the sheet's title) is frozen and repeated, and a block that would straddle a page
-    break but fits on one page starts on a new page.
+    A sheet whose only table is its last block has the rows down to the table's header
+    frozen and repeated on every printed page (a report writes such a sheet as a table
+    sheet, :func:`sheet_blocks`). Otherwise the first row (the sheet's title) is frozen, no
+    row is repeated, and a block that would straddle a page break but fits on one page
+    starts on a new page; each table keeps its own alignment (numbers under their header).
 
     Parameters
     ----------
@@ -454,19 +565,23 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     columns = _column_plan(tables, [s.note for s in sections],
                            formats_of=lambda f: _number_formats(f.columns, number_format))
     _set_widths(ws, columns)
-    blocks = [(s.title, _note_lines(s.note, columns) if s.note else [], s.table)
+    blocks = [(s.title, _note_lines(report_text(s.note, wb.units), columns) if s.note else [],
+               s.table)
               for s in sections]
     one_table = len(tables) == 1 and sections[-1].table is not None
     if one_table:
         header_row = sum(bool(t) + len(n) + (k > 0) for k, (t, n, _) in enumerate(blocks)) + 1
         ws.freeze_panes(_freeze(tables[0], header_row))
         title_rows = header_row
-    else:  # the first row is the sheet's title when the first block has no table
-        heading = bool(blocks) and bool(blocks[0][0]) and blocks[0][2] is None
-        if heading:
+    else:  # the first row is the sheet's title when the first block has no table; the
+        # page header names it, and no row is repeated: only a table sheet repeats its header
+        if bool(blocks) and bool(blocks[0][0]) and blocks[0][2] is None:
             ws.freeze_panes("A2")
-        title_rows = 1 if heading else None
-    sheet_title = next((s.title for s in sections if s.title), name)
+        title_rows = None
+    # the page header names the content, never the raw sheet name: a title, else the note's
+    # first line
+    sheet_title = next((s.title for s in sections if s.title),
+                       next((s.note.splitlines()[0] for s in sections if s.note), name))
     needs = [ROW_PIXELS * (bool(title) + len(lines) + (k > 0))
              + (_table_pixels(table, columns) if table is not None else 0)
              for k, (title, lines, table) in enumerate(blocks)]
@@ -479,18 +594,6 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
 
     def capacity(start):
         return page - (repeated if start else 0)
-
-    def paginate(need):
-        """Break the page above a data row that would not fit on the current one (a sheet
-        of several sections: its tables continue under their headers)."""
-        nonlocal top
-        while writer.pixels - top > capacity(top):
-            top += capacity(top)
-        if writer.pixels - top + need <= capacity(top) or writer.pixels == top:
-            return False
-        writer.page_break()
-        top = writer.pixels
-        return True
 
     for k, ((title, lines, table), need) in enumerate(zip(blocks, needs, strict=True)):
         while writer.pixels - top > capacity(top):
@@ -507,8 +610,10 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
             writer.append([line])
         if table is not None:
             formats = _number_formats(table.columns, number_format)
-            _write_table(writer, table, formats, columns, highlight,
-                         paginate=None if one_table else paginate)
+            own = _column_plan([table], formats_of=lambda f, x=formats: x)
+            # the sheet's widths, this table's own alignment: a number sits under its header
+            _write_table(writer, table, formats, _Columns(columns.widths, own.wrapped),
+                         highlight)
     writer.close()
     return [name]
 

@@ -311,13 +311,89 @@ def figure_png(figure, dpi=100):
 
 
 def _png(figure, dpi):
-    """PNG bytes of a matplotlib Figure as it is, with slingloads' mark (the text chunk
+    """PNG bytes of a matplotlib Figure, its legends off the data
+    (:func:`place_legends`), with slingloads' mark (the text chunk
     ``Software`` = :data:`~slingloads.io.common.ownership.PNG_SOFTWARE`, a fixed text in
     place of matplotlib's version: the bytes stay reproducible)."""
+    outside = place_legends(figure)
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": PNG_SOFTWARE},
-                   pil_kwargs={"compress_level": 1})  # fast; files about 30 % larger
+                   pil_kwargs={"compress_level": 1},  # fast; files about 30 % larger
+                   **({"bbox_inches": "tight", "pad_inches": 0.1} if outside else {}))
     return buffer.getvalue()
+
+
+#: Where a legend may go inside its axes, tried in this order before it goes outside.
+LEGEND_PLACES = ("upper right", "upper left", "lower right", "lower left", "center right",
+                 "center left", "upper center", "lower center")
+
+
+def legend_hides_data(ax, legend, renderer):
+    """Whether ``legend``'s box covers any plotted line (a segment crossing it, not only a
+    vertex) or marker of ``ax``, in display coordinates (matplotlib's own extents)."""
+    import numpy as np
+    from matplotlib.path import Path
+    from matplotlib.transforms import Bbox
+
+    # the part of the legend over the axes: lines are drawn clipped to them
+    box = Bbox.intersection(legend.get_window_extent(renderer), ax.bbox)
+    if box is None:
+        return False
+    for line in ax.get_lines():
+        if not line.get_visible():
+            continue
+        xy = line.get_transform().transform(line.get_xydata())
+        xy = xy[np.isfinite(xy).all(axis=1)]
+        if len(xy) == 1 and box.contains(*xy[0]):
+            return True
+        if len(xy) > 1 and (Path(xy).intersects_bbox(box, filled=False)
+                            or box.count_contains(xy)):
+            return True
+    for collection in ax.collections:
+        if not collection.get_visible():
+            continue
+        offsets = collection.get_offsets()
+        if len(offsets):
+            points = collection.get_offset_transform().transform(offsets)
+            if box.count_contains(points[np.isfinite(points).all(axis=1)]):
+                return True
+    return False
+
+
+def place_legends(figure):
+    """Put every legend of ``figure`` where it hides no data: its own place when clear,
+    else the first clear place of :data:`LEGEND_PLACES`, else under the whole figure, below
+    its axes' column (outside every panel, so that it covers no neighbour either). Returns
+    True when a legend went outside (the figure is then saved with a tight bounding box, so
+    that it shows)."""
+    axes = [ax for ax in figure.axes if ax.get_legend() is not None]
+    if not axes:
+        return False
+    if not hasattr(figure.canvas, "get_renderer"):  # a Figure() made without pyplot
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        FigureCanvasAgg(figure)
+    renderer = figure.canvas.get_renderer()
+    figure.draw_without_rendering()
+    outside = False
+    for ax in axes:
+        legend = ax.get_legend()
+        if not legend_hides_data(ax, legend, renderer):
+            continue
+        for place in LEGEND_PLACES:
+            legend.set_loc(place)
+            if not legend_hides_data(ax, legend, renderer):
+                break
+        else:
+            handles, labels = legend.legend_handles, [t.get_text() for t in legend.texts]
+            size = legend.texts[0].get_fontsize() if legend.texts else None
+            legend.remove()
+            box = ax.get_position()
+            figure.legend(handles, labels, loc="upper center", fontsize=size,
+                          bbox_to_anchor=(0.5 * (box.x0 + box.x1), 0.0),
+                          ncols=min(len(labels), 3))
+            outside = True
+    return outside
 
 
 def _plain_text(figure):

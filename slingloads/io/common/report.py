@@ -50,6 +50,28 @@ def in_report_units(values, kind, units):
     return from_si(values, report_unit(kind, units), kind)
 
 
+#: Quantities written to the whole unit, as integers (an altitude: 0 m, 24000 ft).
+WHOLE_UNIT_KINDS = frozenset({"altitude"})
+
+
+def report_value(value, kind, units):
+    """One SI value in report units: a float, or an int for a quantity of
+    :data:`WHOLE_UNIT_KINDS` (so that it is written without decimals).
+
+    Examples
+    --------
+    >>> report_value(7315.2, "altitude", "US"), report_value(0.0, "altitude", "SI")
+    (24000, 0)
+    """
+    shown = float(in_report_units(value, kind, units))
+    return int(round(shown)) if kind in WHOLE_UNIT_KINDS else shown
+
+
+def plural(count, one, many):
+    """``"1 body"``, ``"3 bodies"``: a count with its noun in the right number."""
+    return f"{count} {one if count == 1 else many}"
+
+
 def labelled(name, kind, units):
     """Header or axis label with the report unit: ``labelled("Vy", "force", "US")`` is
     ``"Vy [lbf]"``."""
@@ -78,6 +100,8 @@ def convert_columns(frame, spec, units):
     out = frame.copy()
     renames = {}
     for column, (name, kind) in spec.items():
+        if kind == "speed" and "airspeed" in name:  # an airspeed: in kt in both systems
+            kind = "airspeed"
         if column not in out.columns:
             raise InputError(f"column to convert is missing; columns are {list(out.columns)}",
                              column)

@@ -30,6 +30,8 @@ SI_UNITS = {
     "inertia": "kg*m^2",
     "angle": "rad",
     "speed": "m/s",
+    "airspeed": "m/s",
+    "altitude": "m",
     "acceleration": "m/s^2",
     "area": "m^2",
     "density": "kg/m^3",
@@ -45,13 +47,15 @@ SI_UNITS = {
 REPORT_UNITS = {
     "SI": {
         "length": "m", "mass": "kg", "force": "N", "moment": "N*m", "inertia": "kg*m^2",
-        "angle": "deg", "speed": "m/s", "acceleration": "m/s^2", "area": "m^2",
+        "angle": "deg", "speed": "m/s", "airspeed": "kt", "altitude": "m",
+        "acceleration": "m/s^2", "area": "m^2",
         "density": "kg/m^3", "time": "s", "frequency": "rad/s", "stiffness": "N/m",
         "linear damping": "N*s/m", "rotational damping": "N*m*s/rad", "dimensionless": "",
     },
     "US": {
         "length": "in", "mass": "lb", "force": "lbf", "moment": "lbf*in",
-        "inertia": "slug*ft^2", "angle": "deg", "speed": "kt", "acceleration": "ft/s^2",
+        "inertia": "lb*in^2", "angle": "deg", "speed": "ft/s", "airspeed": "kt",
+        "altitude": "ft", "acceleration": "ft/s^2",
         "area": "ft^2", "density": "slug/ft^3", "time": "s", "frequency": "rad/s",
         "stiffness": "lbf/in", "linear damping": "lbf*s/ft",
         "rotational damping": "lbf*ft*s/rad", "dimensionless": "",
@@ -61,6 +65,7 @@ REPORT_UNITS = {
 #: How report headers spell each unit (pint strings are not pretty).
 UNIT_LABELS = {
     "N*m": "N m", "kg*m^2": "kg m^2", "lbf*in": "lbf in", "slug*ft^2": "slug ft^2",
+    "lb*in^2": "lb in^2",
     "m/s^2": "m/s^2", "ft/s^2": "ft/s^2", "slug/ft^3": "slug/ft^3", "": "-",
     "N*s/m": "N s/m", "N*m*s/rad": "N m s/rad", "lbf*s/ft": "lbf s/ft",
     "lbf*ft*s/rad": "lbf ft s/rad",
@@ -93,6 +98,9 @@ EXACT_FACTORS = {
     # the parachute sizing plots' moment units
     ("moment", "kN*m"): 1000.0, ("moment", "kilolbf*ft"): 1000.0 * POUND_FORCE * FOOT,
     ("inertia", "slug*ft^2"): _SLUG * FOOT**2, ("inertia", "slug ft^2"): _SLUG * FOOT**2,
+    ("inertia", "lb*in^2"): POUND * INCH**2, ("inertia", "lb in^2"): POUND * INCH**2,
+    ("airspeed", "m/s"): 1.0, ("airspeed", "kt"): KNOT, ("altitude", "m"): 1.0,
+    ("altitude", "ft"): FOOT,
     ("angle", "deg"): math.pi / 180.0, ("speed", "kt"): KNOT, ("speed", "ft/s"): FOOT,
     ("frequency", "1/s"): 1.0, ("frequency", "deg/s"): math.pi / 180.0,
     ("acceleration", "ft/s^2"): FOOT, ("acceleration", "g0"): G0,
@@ -101,6 +109,43 @@ EXACT_FACTORS = {
     ("linear damping", "lbf*s/ft"): POUND_FORCE / FOOT,
     ("rotational damping", "lbf*ft*s/rad"): POUND_FORCE * FOOT,
 }
+
+
+#: SI units a sentence of a report may quote after a number, longest spelling first, and
+#: their quantity kind.
+_TEXT_UNITS = {"kg m^2": "inertia", "kg/m^3": "density", "m/s^2": "acceleration",
+               "m/s": "speed", "m^2": "area", "kN m": None, "N m": "moment", "kN": None,
+               "kg": "mass", "m": "length", "N": "force"}
+_QUOTED = re.compile(r"(?<![\w.^/])(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) ?("
+                     + "|".join(re.escape(u) for u in _TEXT_UNITS) + r")(?![\w^/])")
+
+
+def _quoted_number(value):
+    """A converted number in a sentence: 4 significant digits, whole above 1,000."""
+    return f"{value:,.0f}" if abs(value) >= 1000 else f"{value:.4g}"
+
+
+def report_text(text, units):
+    """A sentence of a report with its quoted SI quantities (``"step 9.14 m/s"``) in the
+    report unit system (``"step 30 ft/s"`` in US units); unchanged in SI.
+
+    Examples
+    --------
+    >>> report_text("quintic step 0.04246 m in 0.5 s (peak 0.9807 m/s^2)", "US")
+    'quintic step 1.672 in in 0.5 s (peak 3.218 ft/s^2)'
+    """
+    if units != "US" or not isinstance(text, str) or not any(c.isdigit() for c in text):
+        return text
+
+    def convert(match):
+        kind = _TEXT_UNITS[match.group(2)]
+        if kind is None:
+            return match.group(0)
+        unit = REPORT_UNITS["US"][kind]
+        value = float(match.group(1)) * si_factor(match.group(2).replace(" ", "*"), kind)
+        return f"{_quoted_number(value / si_factor(unit, kind))} {unit_label(unit)}"
+
+    return _QUOTED.sub(convert, text)
 
 
 @lru_cache(maxsize=1)

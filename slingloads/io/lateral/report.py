@@ -49,7 +49,9 @@ from slingloads.io.common.report import (
     csv_frame,
     explain_infinite,
     in_report_units,
+    plural,
     report_unit,
+    report_value,
     sample_rows,
     warning_sections,
 )
@@ -98,10 +100,10 @@ def _items(rows, units):
     for item, value, kind, note in rows:
         unit = kind or ""
         if kind not in (None, "deg", "-", "s", "%") and isinstance(value, float):
-            value = float(in_report_units(value, kind, units))
+            value = report_value(value, kind, units)
             unit = unit_label(report_unit(kind, units))
         out.append({"item": item, "value": value, "unit": unit, "note": note})
-    return pd.DataFrame(out)
+    return pd.DataFrame(out, dtype=object)  # a count stays an int (written "15")
 
 
 def verdict(result):
@@ -132,7 +134,8 @@ def summary_tables(result, units="SI"):
     angle = _items([
         ("cases run", len(st.pendulums), "-",
          f"{len(inp.motions)} motions x {len(inp.rope_lengths)} rope lengths x "
-         f"{len(inp.bodies)} bodies x {variants} combinations of the stated ranges"),
+         f"{plural(len(inp.bodies), 'body', 'bodies')} x {variants} combinations of the "
+         f"stated ranges"),
         ("largest load angle |theta1 - theta2|, nominal inputs",
          float(np.degrees(st.nominal_max_load_angle)), "deg",
          "roll inertia, CG below hub and rope lengths as given"),

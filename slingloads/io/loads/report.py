@@ -34,6 +34,7 @@ component; the conversions shared by every report are in :mod:`slingloads.io.com
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from dataclasses import replace
 
@@ -41,6 +42,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.envelopes import bound_values, component_index
+from slingloads.analyses.hook_loads import TOWED
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS, LOAD_COLUMNS
 from slingloads.errors import InputError
@@ -69,6 +71,7 @@ from slingloads.io.common.report import (
     in_report_units,
     labelled,
     report_unit,
+    report_value,
     warning_sections,
 )
 from slingloads.io.common.report_writer import protected_inputs
@@ -241,18 +244,45 @@ def envelope_wide_table(result, components, units="SI", ultimate=False):
     return pd.DataFrame(frame)
 
 
-def case_report_table(result, units="SI"):
-    """Load-case table in report units (closure residuals converted); the description is
-    kept for the cases listed by hand (generated cases are described by their columns)."""
-    frame = result.case_table()
+#: Where a load case comes from (the LoadCases column ``source``).
+CASE_SOURCES = ("CS-29.865 direction", "towed equilibrium", "dynamics", "hand-listed")
+#: The columns of the second LoadCases table (what each case applies); the first defines it.
+_CASE_FACTORS = re.compile(r"^(n vertical|nx|ny|nz|alpha_dot_|closure )")
+
+
+def case_sources(result, frame):
+    """Where each case of ``frame`` (:meth:`case_table`) comes from, one of
+    :data:`CASE_SOURCES`: listed on the LoadCases sheet by hand; at an aerodynamic point or
+    on a parachute line of the dynamics; generated in a towed-flight equilibrium; or
+    generated along a CS-29.865 hook direction."""
     listed = {c.id for c in result.study.listed}
-    frame["description"] = [d if c in listed else "" for c, d in
-                            zip(frame["case"], frame["description"], strict=True)]
-    frame = frame[[c for c in frame.columns if c != "description"] + ["description"]]
+    return ["hand-listed" if case in listed else "dynamics" if source == "dynamics"
+            else "towed equilibrium" if hook == TOWED else "CS-29.865 direction"
+            for case, source, hook in zip(frame["case"], frame["source"], frame["hook"],
+                                          strict=True)]
+
+
+def case_report_table(result, units="SI"):
+    """Load-case table in report units (closure residuals converted): each case with where
+    it comes from (column ``source``, :func:`case_sources`) and its description."""
+    frame = result.case_table()
+    frame["source"] = case_sources(result, frame)
+    first = ["case", "source"]
+    frame = frame[first + [c for c in frame.columns if c not in first + ["description"]]
+                  + ["description"]]
     return convert_columns(frame, {
         "closure force residual [N]": ("closure force residual", "force"),
         "closure moment residual [N m]": ("closure moment residual", "moment"),
     }, units)
+
+
+def case_report_tables(result, units="SI"):
+    """The load-case table as two printed tables: (definition, load factors), both keyed by
+    ``case``; the first ends with the description."""
+    frame = case_report_table(result, units)
+    factors = [c for c in frame.columns if _CASE_FACTORS.match(str(c))]
+    return (frame[[c for c in frame.columns if c not in factors]],
+            frame[["case", "source", *factors]])
 
 
 def previous_station_status(result):
@@ -360,8 +390,6 @@ def study_table(result, units="SI"):
     def conv(value, kind):
         return float(in_report_units(value, kind, units))
 
-    alt_unit = "ft" if units == "US" else "m"
-    altitude = study.flight.density_altitude / (0.3048 if units == "US" else 1.0)
     cg = items.cg
     c, s = len(result.case_ids), len(result.stations)
     rows = [
@@ -371,8 +399,10 @@ def study_table(result, units="SI"):
         ("CG x", conv(cg[0], "length"), _unit("length", units)),
         ("CG y", conv(cg[1], "length"), _unit("length", units)),
         ("CG z", conv(cg[2], "length"), _unit("length", units)),
-        ("equivalent airspeed", conv(study.flight.eas, "speed"), _unit("speed", units)),
-        ("density altitude", float(altitude), alt_unit),
+        ("equivalent airspeed KEAS", conv(study.flight.eas, "airspeed"),
+         _unit("airspeed", units)),
+        ("density altitude", report_value(study.flight.density_altitude, "altitude", units),
+         _unit("altitude", units)),
         ("air density", conv(study.flight.density, "density"), _unit("density", units)),
         ("attitude (earth vertical in airframe axes)", result.attitude.describe(), ""),
         ("attitude pitch", float(np.degrees(result.attitude.pitch)), "deg"),
@@ -922,7 +952,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
                  "stations. Where the previous envelope comes from: "
                  + ("Summary, findings." if source else "not stated (Study sheet 'previous "
                     "envelope source')."))]
-        detail = [Section("Exceedance over the previous design envelope, LIMIT loads, every "
+        detail = [Section("LIMIT loads over the previous design envelope: exceedance at every "
                           "station and component", comparison_report_table(result, units))]
     else:
         exceedance = detail = "no previous envelope given"
@@ -942,10 +972,14 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
              + [Section(f"{a}-{b} convex hull vertices, LIMIT loads",
                         hull_report_table(result, (a, b), stations, units))
                 for a, b in hull_pairs]) if hull_pairs else "no hull pair requested"
-    cases = case_report_table(result, units)
+    cases, factors = case_report_tables(result, units)
+    counts = cases["source"].value_counts()
+    origin = ", ".join(f"{counts[s]} {s}" for s in CASE_SOURCES if s in counts)
     cases_sheet = [Section(
-        f"Load cases ({len(cases)}): hook direction x aerodynamic point x parachute, load "
-        "factors, angular accelerations and closure residuals (LIMIT)", cases)]
+        f"LIMIT load cases ({len(cases)}: {origin}): hook direction x "
+        "aerodynamic point x parachute, cable angles, description", cases),
+        Section(f"LIMIT load factors of the load cases ({len(cases)}), angular accelerations "
+                "and closure residuals", factors, sheet="LoadFactors")]
     return {
         "Summary": summary,
         "Inputs": inputs,

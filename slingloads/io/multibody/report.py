@@ -41,8 +41,8 @@ from slingloads.io.common.report import (
     convert_columns,
     csv_frame,
     explain_infinite,
-    in_report_units,
     report_unit,
+    report_value,
     split_unit,
     warning_sections,
 )
@@ -107,7 +107,7 @@ def _row(item, value, kind, units, note=""):
         return {"item": item, "value": value, "unit": "", "note": note}
     if kind in ("deg", "-", "s", "1/s", "kt"):
         return {"item": item, "value": value, "unit": kind, "note": note}
-    return {"item": item, "value": float(in_report_units(value, kind, units)),
+    return {"item": item, "value": report_value(value, kind, units),
             "unit": unit_label(report_unit(kind, units)), "note": note}
 
 
@@ -122,9 +122,9 @@ def system_table(result, units="SI"):
         _row("carrier", inp.carrier, None, units,
              "hook on the commanded trajectory" if inp.carrier == "frozen"
              else "point mass with drag, speed hold"),
-        _row("airspeed EAS", s.airspeed / KNOT, "kt", units,
-             f"{s.airspeed:.4g} m/s; true airspeed {s.true_airspeed:.4g} m/s"),
-        _row("density altitude", s.density_altitude, "length", units, "ISA"),
+        _row("equivalent airspeed KEAS", s.airspeed / KNOT, "kt", units,
+             f"true airspeed {s.true_airspeed / KNOT:.4g} KTAS"),
+        _row("density altitude", s.density_altitude, "altitude", units, "ISA"),
         _row("air density", s.density, "density", units),
         _row("HC mass", s.body.mass, "mass", units, "from MassItems"),
         _row("HC CG x", s.body.cg[0], "length", units, "airframe axes"),
@@ -170,7 +170,11 @@ def system_table(result, units="SI"):
 
 def trim_table(result, units="SI"):
     """The trim at the system airspeed as ``item | value | unit`` rows (report units)."""
-    row = in_units(result.trim.to_frame(), units).iloc[0]
+    frame = result.trim.to_frame()
+    if "airspeed EAS [m/s]" in frame.columns:  # an airspeed: in knots in both unit systems
+        frame["airspeed EAS [m/s]"] = frame["airspeed EAS [m/s]"] / KNOT
+        frame = frame.rename(columns={"airspeed EAS [m/s]": "equivalent airspeed KEAS [kt]"})
+    row = in_units(frame, units).iloc[0]
     names = [split_unit(column) for column in row.index]
     return pd.DataFrame({"item": [name for name, _ in names], "value": list(row.to_numpy()),
                          "unit": [unit for _, unit in names]})

@@ -1,0 +1,112 @@
+"""No legend of a report figure hides data: each figure of the example's reports is drawn as
+the report draws it, and every legend's box (matplotlib's window extent) is checked against
+every plotted line (its segments sampled finely, in display coordinates) and marker. The
+reference is matplotlib's own geometry, sampled here independently of the writer's check."""
+
+from __future__ import annotations
+
+import matplotlib
+import numpy as np
+import pytest
+
+matplotlib.use("Agg")
+
+
+def _jobs(results):
+    from slingloads.io.chute.report import _figures as chute
+    from slingloads.io.lateral.report import _figures as lateral
+    from slingloads.io.loads.report import figure_jobs
+    from slingloads.io.multibody.report import _figures as multibody
+
+    jobs = {}
+    jobs.update({f"loads {k}": v for k, v in figure_jobs(results.loads, "SI")[0].items()})
+    jobs.update({f"lateral {k}": v for k, v in lateral(results.lateral, "SI").items()})
+    jobs.update({f"chute {k}": v for k, v in chute(results.chute_sizing, "SI").items()})
+    jobs.update({f"multibody {k}": v for k, v in multibody(results.multibody, "SI").items()})
+    return jobs
+
+
+def _hidden(ax, box):
+    """Points of the plotted lines (as drawn: clipped to the axes) and markers of ``ax``
+    inside ``box`` (display px)."""
+    count = 0
+    for line in ax.get_lines():
+        if not line.get_visible():
+            continue
+        xy = line.get_transform().transform(line.get_xydata())
+        xy = xy[np.isfinite(xy).all(axis=1)]
+        if len(xy) > 1:  # 50 samples along every segment: a line crossing the box counts
+            t = np.linspace(0.0, 1.0, 50)[:, None, None]
+            xy = (xy[:-1] * (1 - t) + xy[1:] * t).reshape(-1, 2)
+        if line.get_clip_on():  # drawn only inside the axes
+            a = ax.bbox
+            xy = xy[(xy[:, 0] >= a.x0) & (xy[:, 0] <= a.x1) & (xy[:, 1] >= a.y0)
+                    & (xy[:, 1] <= a.y1)]
+        inside = ((xy[:, 0] > box.x0) & (xy[:, 0] < box.x1)
+                  & (xy[:, 1] > box.y0) & (xy[:, 1] < box.y1))
+        count += int(inside.sum())
+    for collection in ax.collections:
+        offsets = collection.get_offsets()
+        if collection.get_visible() and len(offsets):
+            xy = collection.get_offset_transform().transform(offsets)
+            count += int(((xy[:, 0] > box.x0) & (xy[:, 0] < box.x1)
+                          & (xy[:, 1] > box.y0) & (xy[:, 1] < box.y1)).sum())
+    return count
+
+
+def test_no_legend_hides_data(example_results):
+    """Every legend of every figure of the example's loads, lateral, parachute sizing and
+    multibody reports lies where no plotted line or marker is."""
+    from matplotlib import pyplot as plt
+    from matplotlib import rc_context
+
+    from slingloads.io.common.figures import place_legends, report_style
+
+    jobs = _jobs(example_results)
+    assert len(jobs) >= 10
+    hidden = []
+    for tag, (func, args, kwargs) in jobs.items():
+        with rc_context(report_style()):
+            figure = func(*args, **kwargs)
+            place_legends(figure)  # as the report does before it saves the figure
+            if not hasattr(figure.canvas, "get_renderer"):  # a Figure() made without pyplot
+                from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+                FigureCanvasAgg(figure)
+            figure.canvas.draw()
+            renderer = figure.canvas.get_renderer()
+            for k, ax in enumerate(figure.axes):
+                # its own legend, and any legend of the figure (one may lie over any panel)
+                for legend in [ax.get_legend(), *figure.legends]:
+                    if legend is not None:
+                        n = _hidden(ax, legend.get_window_extent(renderer))
+                        if n:
+                            hidden.append((tag, k, ax.get_title(), n))
+        plt.close(figure)
+    assert not hidden, hidden
+
+
+@pytest.mark.parametrize("units", ["SI"])
+def test_panel_titles_are_unique(example_results, units):
+    """No two panels of one figure carry the same title (each says what it shows)."""
+    from matplotlib import pyplot as plt
+    from matplotlib import rc_context
+
+    from slingloads.io.common.figures import report_style
+
+    same = []
+    for tag, (func, args, kwargs) in _jobs(example_results).items():
+        with rc_context(report_style()):
+            figure = func(*args, **kwargs)
+        titles = [ax.get_title() for ax in figure.axes if ax.get_title()]
+        if len(titles) != len(set(titles)):
+            same.append((tag, titles))
+        plt.close(figure)
+    assert not same, same
+
+
+def test_mode_names_are_unique(example_results):
+    """The multibody modes of the example carry one name each (two parachute modes are
+    numbered), so that the report and the eigenvalue plot name each mode once."""
+    names = list(example_results.multibody.linear.modes_frame()["mode"])
+    assert len(names) == len(set(names)), names

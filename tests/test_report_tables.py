@@ -1,0 +1,143 @@
+"""Every table of the example's reports reads right in a program: a *table sheet* (the print
+setup repeats its row 1) holds a header in row 1 and data below it, nothing else, so that
+``pandas.read_excel`` and Excel's filter read it as data; no sheet repeats a header row in its
+cells. The reference is the file format's own reading (openpyxl, pandas), not the writer."""
+
+from __future__ import annotations
+
+import re
+
+import openpyxl
+import pandas as pd
+import pytest
+
+
+def _workbooks(folder):
+    books = sorted(folder.glob("*.xlsx"))
+    assert len(books) >= 4  # loads, lateral, chute sizing, multibody
+    return books
+
+
+def _is_table_sheet(ws):
+    return ws.print_title_rows in ("1:1", "$1:$1")
+
+
+def test_every_table_sheet_reads_as_data(example_reports):
+    """pandas reads each table sheet with named columns only (no "Unnamed"), no row equal to
+    the header, and each column either numbers (and blanks) or texts, never a header text
+    among numbers."""
+    _, folder = example_reports
+    for book in _workbooks(folder):
+        wb = openpyxl.load_workbook(book, read_only=False)
+        tables = [ws.title for ws in wb.worksheets if _is_table_sheet(ws)]
+        assert tables, book.name
+        for name in tables:
+            frame = pd.read_excel(book, sheet_name=name)
+            where = f"{book.name}:{name}"
+            assert len(frame), where
+            assert not [c for c in frame.columns if str(c).startswith("Unnamed")], where
+            header = pd.Series([str(c) for c in frame.columns], index=frame.columns)
+            assert not frame.astype(str).eq(header).any(axis=1).any(), where
+            for column in frame.columns:
+                values = frame[column].dropna()
+                numbers = values.map(lambda v: isinstance(v, (int, float))).sum()
+                if numbers:  # a column of numbers may hold a few explained values, not a header
+                    assert str(column) not in set(values.astype(str)), (where, column)
+
+
+def test_no_sheet_repeats_a_header_row_in_its_cells(example_reports):
+    """A header row appears once in its table (page tops repeat it through the print setup
+    only): no two equal bold rows of several cells in one block of rows (blocks are
+    separated by an empty row)."""
+    _, folder = example_reports
+    for book in _workbooks(folder):
+        wb = openpyxl.load_workbook(book)
+        for ws in wb.worksheets:
+            seen = set()
+            for row in ws.iter_rows():
+                cells = [c for c in row if c.value is not None]
+                if not cells:
+                    seen = set()
+                if len(cells) < 3 or not all(c.font and c.font.b for c in cells):
+                    continue
+                key = tuple(c.value for c in cells)
+                assert key not in seen, (book.name, ws.title, key)
+                seen.add(key)
+
+
+@pytest.mark.parametrize("sheet", ["LoadCases"])
+def test_loadcases_is_a_table_sheet(example_reports, sheet):
+    """The load cases list is one table sheet (the reference: the print setup of the file)."""
+    _, folder = example_reports
+    book = next(folder.glob("*-loads.xlsx"))
+    assert _is_table_sheet(openpyxl.load_workbook(book)[sheet])
+
+
+# ----------------------------------------------------------------------------- units
+#: A number followed by an SI unit, as a sentence quotes it (the US system has none of them).
+SI_QUOTED = re.compile(r"(?<![\w.^/])-?\d+(?:\.\d+)? ?"
+                       r"(?:m/s\^2|m/s|m\^2|kg m\^2|kg/m\^3|N m|kg|m|N)(?![\w^/])")
+
+
+def _cells(book):
+    wb = openpyxl.load_workbook(book)
+    for ws in wb.worksheets:
+        for row in ws.iter_rows():
+            yield ws.title, row
+
+
+def test_units_per_quantity_are_kept(example_reports):
+    """The unit of each quantity, read back from the cells: airspeeds in kt in both systems
+    (rows and headers naming an airspeed), inertias in the moments' family in US units
+    (lb in^2 beside lbf in, never slug ft^2), no SI quantity quoted in a US sentence, counts
+    and altitudes written without decimals, and "1 body" (not "1 bodies")."""
+    units, folder = example_reports
+    for book in _workbooks(folder):
+        for sheet, row in _cells(book):
+            values = [c.value for c in row]
+            texts = [v for v in values if isinstance(v, str)]
+            where = (book.name, sheet, values[:4])
+            assert not any(re.search(r"\b1 bodies\b", t) for t in texts), where
+            if units == "US":
+                assert not any(SI_QUOTED.search(t) for t in texts), where
+                assert not any("slug ft^2" in t for t in texts), where
+            for t in texts:
+                if "airspeed" in t and "[" in t:  # a header
+                    assert t.endswith("[kt]"), where
+            item = values[0] if values and isinstance(values[0], str) else ""
+            if len(values) >= 3 and isinstance(values[1], (int, float)) and texts:
+                unit = values[2]
+                if "airspeed" in item:
+                    assert unit == "kt", where
+                if item.startswith(("density altitude", "cases ", "load cases", "cut stations")):
+                    assert "." not in row[1].number_format, (where, row[1].number_format)
+
+
+# ----------------------------------------------------------------------------- LoadCases
+def test_loadcases_say_where_each_case_comes_from(example_reports, example_results):
+    """Every case of the LoadCases sheet has its source and a description, and the source
+    follows from the case's own columns and the inputs: hand-listed for the ids of the
+    LoadCases input sheet, towed equilibrium for hook TOW, a CS-29.865 direction for the
+    hook directions of the Summary (VERTICAL, AZnnn); the two printed tables (definition,
+    load factors) hold the same cases; each prints at 70 % of full size or more (fit to the
+    width of an A4 page: 7.7 pt from Calibri 11)."""
+    from slingloads.io.common.excel_print import PRINTABLE
+
+    _, folder = example_reports
+    book = next(folder.glob("*-loads.xlsx"))
+    cases = pd.read_excel(book, sheet_name="LoadCases")
+    factors = pd.read_excel(book, sheet_name="LoadFactors")
+    assert list(cases["case"]) == list(factors["case"])
+    assert cases["description"].notna().all() and (cases["description"].str.len() > 10).all()
+    listed = {c.id for c in example_results.loads.study.listed}
+    for case, hook, source in zip(cases["case"], cases["hook"], cases["source"], strict=True):
+        expected = ("hand-listed" if case in listed else "towed equilibrium" if hook == "TOW"
+                    else "CS-29.865 direction")
+        assert source == expected or source == "dynamics", (case, hook, source)
+    assert {"towed equilibrium", "CS-29.865 direction"} <= set(cases["source"])
+    wb = openpyxl.load_workbook(book)
+    for name in ("LoadCases", "LoadFactors"):
+        ws = wb[name]
+        pixels = sum(7 * (d.width or 8.43) for d in ws.column_dimensions.values())
+        width, _ = PRINTABLE[ws.page_setup.orientation or "portrait"]
+        assert width / pixels >= 0.7, (name, pixels)
