@@ -131,8 +131,8 @@ def test_readme_quotes_the_example(example_results):
     re-derived from the example's results."""
     sizing, multibody = example_results.chute_sizing, example_results.multibody
     neutral, recommended, line = _quoted(
-        r"neutral area (\d+\.\d+) m\^2, recommended (\d+\.\d+) m\^2 .*? line (\d+\.\d+) m",
-        "README.md")
+        r"neutral area (\d+\.\d+) m\^2 on the local slopes.*?recommended (\d+\.\d+) m\^2.*?"
+        r"line\s+(\d+\.\d+) m", "README.md")
     assert _agrees(neutral, sizing.static.area)
     assert _agrees(recommended, sizing.recommended_area)
     assert _agrees(line, sizing.line.line_length)
@@ -166,11 +166,29 @@ def test_reports_page_gives_the_plot_units():
 
 def test_readme_outputs_name_the_condition_of_the_lateral_shear_plot(example_reports):
     """The README names the condition under which the optional `-shear.png` appears, and the
-    example, which does not meet it, does not write it."""
+    example, which meets it (loads in the same run, recommended angle below 90 deg), writes
+    it."""
     _, folder = example_reports
     readme = _text("README.md")
     assert re.search(r"`-shear\.png` only when", readme)
-    assert not list(folder.glob("*-lateral-shear.png"))
+    assert list(folder.glob("*-lateral-shear.png"))
+
+
+def test_readme_quotes_the_lateral_example(example_results):
+    """The README's figures of the lateral study (cases, largest load angles, recommended
+    angle, tension factor), re-derived from the example's lateral result."""
+    lateral = example_results.lateral.study
+    cases, nominal, ranges, rec, tension = _quoted(
+        r"(\d+) cases, largest load angle\s+(\d+\.\d) deg with nominal inputs and "
+        r"(\d+\.\d) deg over.*?recommended design angle [\d.]+ x [\d.]+ = (\d+\.\d) deg.*?"
+        r"tension T/\(m g\) (\d+\.\d+)", "README.md")
+    import numpy as np
+
+    assert int(cases) == len(lateral.pendulums)
+    assert _agrees(nominal, np.degrees(lateral.nominal_max_load_angle))
+    assert _agrees(ranges, np.degrees(lateral.max_load_angle))
+    assert _agrees(rec, np.degrees(lateral.recommended_angle))
+    assert _agrees(tension, lateral.max_tension_ratio)
 
 
 def _modules_with_examples():

@@ -164,13 +164,11 @@ def test_report_reads_back(run_dir, result):
     """`slingloads lateral` writes the workbook and PNGs; the numbers read back: the design
     angle, every run, the sensitivity table and the tension against Nz."""
     path = run_dir / f"{STEM}-lateral.xlsx"
-    for tag in PLOTS:
-        if tag != "shear":  # no hook cone beyond 90 deg: the example's envelope
-            assert (run_dir / f"{STEM}-lateral-{tag}.png").stat().st_size > 1000
+    for tag in PLOTS:  # the example's recommended angle is below 90 deg: the shear plot too
+        assert (run_dir / f"{STEM}-lateral-{tag}.png").stat().st_size > 1000
     sheets = pd.ExcelFile(path).sheet_names
-    assert sheets == ["Cover", "Summary", "Runs", "Runs-DefinitionEveryCase",
-                      "Runs-ResultsEveryCase", "Sensitivity", "Modes", "Histories",
-                      "LoadsAtAngle", "Plots"]
+    assert {"Cover", "Summary", "Runs", "Sensitivity", "Modes", "Histories", "LoadsAtAngle",
+            "Plots"} <= set(sheets)
     angle = _sheet(path, "Summary", "Design angle")
     rec = angle[angle["item"] == "recommended design angle"].iloc[0]
     assert float(rec["value"]) == pytest.approx(np.degrees(result.recommended_angle),
@@ -179,7 +177,9 @@ def test_report_reads_back(run_dir, result):
                 "largest load angle |theta1 - theta2| over the stated ranges"].iloc[0]
     assert float(big["value"]) == pytest.approx(np.degrees(result.study.max_load_angle),
                                                 rel=1e-12)
-    runs = pd.read_excel(path, sheet_name="Runs-ResultsEveryCase")  # a table sheet
+    # a table of more than a page has a sheet of its own, else it is a section of Runs
+    runs = (pd.read_excel(path, sheet_name="Runs-ResultsEveryCase")
+            if "Runs-ResultsEveryCase" in sheets else _sheet(path, "Runs", "Results of every case"))
     cases = result.study.case_frame()
     assert len(runs) == 21                                  # 7 motions x 3 ropes x 1 body
     nominal = result.study.metrics.max_load_angle[result.study.nominal]

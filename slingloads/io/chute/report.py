@@ -40,6 +40,7 @@ from slingloads.io.common.figures import (
 )
 from slingloads.io.common.report import (
     convert_columns,
+    in_report_units,
     report_unit,
     report_value,
     sample_rows,

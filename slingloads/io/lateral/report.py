@@ -112,10 +112,13 @@ def verdict(result):
     if result.study.regulatory_angle_not_conservative or not np.isfinite(rec):
         return result.study.verdict()
     if result.study.exceeds_regulatory_angle:
-        return (f"The recommended angle {rec:.1f} deg EXCEEDS the {reg:.0f} deg of CS-29.865: "
-                f"the motions swept can put the hook load further from the mast than the "
-                f"regulation's minimum, so the hook cases must be run at {rec:.1f} deg at "
-                f"least (no reduction is possible).{result.study.caveats()}")
+        peak = np.degrees(result.study.max_load_angle)
+        side = "above" if peak > reg else "below"
+        return (f"The recommended angle {rec:.1f} deg (margin {result.study.margin:g} x the "
+                f"largest load angle {peak:.1f} deg of the motions swept, itself {side} "
+                f"{reg:.0f} deg) EXCEEDS the {reg:.0f} deg of CS-29.865: no reduction below "
+                f"{reg:.0f} deg is justified, and the hook cases are run at {rec:.1f} deg "
+                f"(conservative).{result.study.caveats()}")
     return (f"The recommended angle {rec:.1f} deg is below the {reg:.0f} deg of CS-29.865. "
             f"CS 29.865(a) allows the smaller angle only if it is shown that it cannot be "
             f"exceeded in service: that holds only if the motions, rope lengths and masses "
