@@ -11,7 +11,7 @@ plot of the same quantities, and, where it is not reproduced, the linear analysi
 sensitivity runs that show which input or modelling term decides it.
 
 The sample aircraft are not tuned to any finding: every sensitivity below changes one term
-on a copy and says so. About 2 minutes on 2 cores by default (a reduced campaign matrix:
+on a copy and says so. About 3-4 minutes on 2 cores by default (a reduced campaign matrix:
 two mass cases, two altitudes, two manoeuvres); ``--full`` flies the paper's whole matrix
 (3 masses, 3 altitudes, free response and +-30 ft/s gusts: 3,888 runs).
 
@@ -53,6 +53,17 @@ MASSES = (("maximum", 2900.0), ("medium", 2600.0), ("minimum", 2300.0))
 HUB_DRAG = 0.51
 #: UH-60-class pitching-moment slope at small angles (MScSim UH-60 data, SAMPLE_DATA.md). [1/rad]
 CM_ALPHA_UH60 = 0.46
+#: Length of the campaign's runs. [s] The paper flies 60 s, but the envelope test
+#: (:mod:`slingloads.analyses.verdicts`) compares the two halves of the window after the
+#: input (the 10 s gust ends at 15 s) and takes the second half's mean as the centre: at
+#: 40 KEAS the parachuted yaw mode has a period up to ~51 s and a time to half amplitude up to
+#: ~13 s, so a 60 s run leaves halves of 22 s, shorter than one period, and a still-swinging
+#: response (12 deg half amplitude) reads as a "static departure" 1-3 deg off trim. 150 s
+#: gives halves of 67 s (more than one period, about five times to half amplitude); the
+#: script checks this against the slowest yaw mode of the stable runs and prints it.
+CAMPAIGN_T_END = 150.0
+#: End of the campaign's gusts (onset 5 s + 10 s), the start of the observed window. [s]
+GUST_END = 15.0
 
 REPRODUCED, PARTLY, NOT, NOT_RUN = "reproduced", "partly", "not reproduced", "not run"
 
@@ -605,6 +616,7 @@ def study_campaign(figs, out, workers):
         Factors,
         MassCase,
         NoParachuteStudy,
+        RunSettings,
         base_condition,
         make_executor,
         run_campaign,
@@ -632,7 +644,7 @@ def study_campaign(figs, out, workers):
                       carriers=("frozen", "free"), manoeuvres=manoeuvres)
     base = hc_system("HC1", 1.0, cable=60 * FOOT)
     campaign = Campaign(
-        CampaignSetup(base), factors,
+        CampaignSetup(base), factors, settings=RunSettings(t_end=CAMPAIGN_T_END),
         stability=MapSettings(area_factors=tuple(np.round(np.linspace(0.6, 2.0, 8), 3)),
                               airspeeds=tuple(v * KNOT for v in SPEEDS),
                               density_altitudes=(0.0,)),
@@ -647,13 +659,32 @@ def study_campaign(figs, out, workers):
     m = result.metrics
     sel = result.selection
     chosen = result.chosen_area_factor
+    out["campaign neutral"] = result.neutral
+    # the window check of the envelope test: each half after the gust against the slowest
+    # yaw mode of the runs whose eigenvalues are stable
+    ok = m["linear verdict"] == "stable"
+    half = 0.5 * (CAMPAIGN_T_END - GUST_END)
+    out["window"] = {
+        "half window [s]": half,
+        "slowest yaw-mode period [s]": float(np.nanmax(
+            m.loc[ok, "yaw mode period [s]"].replace(np.inf, np.nan))),
+        "longest yaw-mode time to half amplitude [s]": float(np.nanmax(
+            m.loc[ok, "yaw mode time to half amplitude [s]"].replace(np.inf, np.nan)))}
+    out["campaign verdicts"] = (m.groupby(["area factor [-]", "response verdict"]).size()
+                                .unstack(fill_value=0).reset_index())
+    found = bool(np.isfinite(chosen))
+    # without a chosen area (no area stable in every condition) the factor sweeps and the
+    # negligible-factor table are taken at the largest area flown, and said so
+    at_factor = chosen if found else float(m["area factor [-]"].max())
+    out["campaign area found"] = found
     rows = []
     figs_out = {"selection": figs.save(plot_selection(result), "campaign-selection.png")}
-    figs_out["map"] = figs.save(plot_stability_map(result.stability, result.neutral.area,
-                                                   chosen_area=chosen * result.neutral.area),
-                                "campaign-stability-map.png")
+    figs_out["map"] = figs.save(plot_stability_map(
+        result.stability, result.neutral.area,
+        chosen_area=chosen * result.neutral.area if found else None),
+        "campaign-stability-map.png")
     figs_out["no parachute"] = figs.save(plot_no_parachute(result), "no-parachute-ramps.png")
-    basec = base_condition(m, chosen)
+    basec = base_condition(m, at_factor)
     sweeps = {}
     for factor, manoeuvre, tag, fig_no in (
             ("area factor [-]", "free response", "area", "9"),
@@ -680,18 +711,26 @@ def study_campaign(figs, out, workers):
         f"{sel.recommended:.3g} x; largest trimmed swing {swing[0]:.1f} deg at "
         f"{by['area factor [-]'].iloc[0]:.1f} x to {swing[-1]:.1f} deg at "
         f"{by['area factor [-]'].iloc[-1]:.1f} x",
-        PARTLY if np.all(np.diff(swing) > 0) else NOT, figs_out["selection"],
-        "Swing angle (drag) rises with the area as in the paper. The area chosen differs from "
-        "1.4 x because the boundary is the static neutral point (s.4.5 above): the choice "
-        "follows the damping criterion, an engineering input, not the stability boundary."))
+        PARTLY if found and np.all(np.diff(swing) > 0) else NOT, figs_out["selection"],
+        ("Swing angle (drag) rises with the area as in the paper. The area chosen differs "
+         "from 1.4 x because the boundary is the static neutral point (s.4.5 above): the "
+         "choice follows the damping criterion, an engineering input, not the stability "
+         "boundary." if found else
+         "No area of the matrix is stable in every condition (verdicts per area in the "
+         "evidence tables), so the campaign chooses none; the tables below are taken at "
+         f"the largest area flown, {at_factor:.3g} x.")
+        + f" Area factors multiply the campaign's neutral area {result.neutral.area:.3f} m^2 "
+        f"(the library's default basis, the larger of the local-slope "
+        f"{result.neutral.area_local:.3f} and +-10 deg fit {result.neutral.area_fit:.3f} m^2: "
+        f"{result.neutral.basis})."))
     if "area" in sweeps:
         rows[-1].figure += f", {sweeps['area']}"
 
     # figure 10 exactly: cables 18, 60, 100 ft under a continuous 30 ft/s gust from 20 s
-    fig10 = figure_10(figs, chosen * result.neutral.area, out)
+    fig10 = figure_10(figs, at_factor * result.neutral.area, out)
 
     # negligible factors at the chosen area
-    at = m[np.isclose(m["area factor [-]"], chosen)]
+    at = m[np.isclose(m["area factor [-]"], at_factor)]
     neg = []
     for factor, label, fig_no in (("cable length [m]", "cable length", "10"),
                                   ("density altitude [m]", "altitude", "11"),
@@ -717,7 +756,8 @@ def study_campaign(figs, out, workers):
             f"neg-{r['factor']}", f"s.4.5, fig {r['paper figure']}; conclusion 4",
             f"{r['factor']}: negligible effect once the FPA is adequate",
             "negligible",
-            f"at {chosen:.3g} x: {r['factor']} {r['values']}: stable share {r['stable share']};"
+            f"at {at_factor:.3g} x: {r['factor']} {r['values']}: stable share "
+            f"{r['stable share']};"
             f" worst yaw change {r['worst yaw change [deg]']} deg",
             REPRODUCED if all(float(x) == 1.0 for x in r["stable share"].split(", "))
             else PARTLY, sweeps.get(tag[r["factor"]], "")
@@ -970,8 +1010,11 @@ def study_no_parachute(figs, out):
 def study_loads(figs, out):
     """Section 6 and conclusion 7: loads at the mast mostly axial; sensitivity to the
     fuselage pitching moment (the trimmed attitude decides the angle from the mast)."""
-    a0 = out["neutral"]["HC1"]
+    # the campaign's area factors multiply its own neutral area (the library's default basis)
+    a0 = out["campaign neutral"].area
     chosen = out["campaign"].chosen_area_factor
+    if not np.isfinite(chosen):
+        chosen = float(out["campaign"].metrics["area factor [-]"].max())
     rows_t = []
     for label, fus in (("sample Cm (Cm_alpha 0.6 /rad)", None),
                        (f"Cm slope x{CM_ALPHA_UH60 / 0.6:.2f} (UH-60 {CM_ALPHA_UH60} /rad)",
@@ -1152,6 +1195,8 @@ def summary(findings):
 def markdown(findings, out, seconds):
     matrix = ("the paper's whole matrix" if out["full"]
               else "reduced matrix; --full for the whole")
+    cn, win = out["campaign neutral"], out["window"]
+    chosen = out["campaign"].chosen_area_factor
     lines = [
         "# The paper's findings reproduced",
         "",
@@ -1165,11 +1210,19 @@ def markdown(findings, out, seconds):
         "",
         f"Base condition unless stated: HC1, 2900 kg, ISA sea level, cable 60 ft (EA 5 MN), "
         f"frozen carrier, hinged canopy 3 kg on a {LINE} m line, canopy CD 1.0 x wake ratio "
-        f"0.95, neutral area {out['neutral']['HC1']:.3f} m^2 (+-10 deg least squares, the "
-        "library's default). Campaign: "
+        f"0.95. Two neutral-area bases are used and each factor names its own: the 1-DOF "
+        f"and boundary studies (s.4.1-4.5) multiply the +-10 deg least-squares neutral "
+        f"area {out['neutral']['HC1']:.3f} m^2 ('x neutral (+-10 deg)'); the campaign "
+        f"(s.4.4-4.5 matrix, figs 9-13, loads) multiplies the library's default, the "
+        f"larger of the local-slope and fit areas: {cn.area:.3f} m^2 ({cn.basis}; local "
+        f"slope {cn.area_local:.3f}, fit {cn.area_fit:.3f} m^2). Campaign: "
         f"{out['campaign runs']} runs ({matrix}): "
-        "areas 1.0-2.0 x, 40-100 KEAS, cables 18, 60 and 100 ft, carrier frozen and free. "
-        f"Run time {seconds:.0f} s.",
+        "areas 1.0-2.0 x, 40-100 KEAS, cables 18, 60 and 100 ft, carrier frozen and free, "
+        f"each run {CAMPAIGN_T_END:.0f} s (the paper's 60 s is too short for the envelope "
+        f"test at 40 KEAS: evidence tables). Chosen area: "
+        + (f"{chosen:.3g} x = {chosen * cn.area:.3f} m^2." if np.isfinite(chosen) else
+           "**none** (no area of the matrix is stable in every condition).")
+        + f" Run time {seconds:.0f} s.",
         "",
         "Verdicts (this script's classification): **reproduced** when the project's value "
         "agrees with the paper's statement; **partly** when it agrees in part or under a "
@@ -1204,6 +1257,17 @@ def markdown(findings, out, seconds):
               md_table(out["boundary"], ".4g"), "",
               f"To need 1.4 x at 80 KEAS, the cut-down fin's effectiveness must fall to "
               f"{out['fin for 1.4']:.2f} of the sample's.", "",
+              "### Campaign run verdicts per area factor", "",
+              f"Runs of {CAMPAIGN_T_END:.0f} s; the envelope test compares the two halves "
+              f"of the window after the gust, {win['half window [s]']:.1f} s each, against "
+              f"the slowest yaw mode of the runs with stable eigenvalues: period "
+              f"{win['slowest yaw-mode period [s]']:.1f} s, time to half amplitude "
+              f"{win['longest yaw-mode time to half amplitude [s]']:.1f} s "
+              + ("(each half longer than one period)." if win["half window [s]"]
+                 > win["slowest yaw-mode period [s]"] else
+                 "(**a half is shorter than one period: the verdicts of the slowest runs "
+                 "are not resolved**)."), "",
+              md_table(out["campaign verdicts"]), "",
               "### Negligible factors at the chosen area (figs 10-13)", "",
               md_table(out["negligible"]), "",
               "### Figure 10: cables under a continuous 30 ft/s gust from 20 s, 100 KEAS", "",
