@@ -597,9 +597,9 @@ def study_boundary(figs, out):
         "in the multibody model relative to its 1-DOF model, if the two differed in the "
         "fin's (or the fuselage's) data or in the flow the fin sees at the trimmed "
         "attitude. No source in the project gives the fuselage sidewash at a bladeless "
-        "helicopter's fin or Cn_beta against alpha; the paper's CFD (s.3.2) would. The "
-        "campaign's damping criterion is what asks for more than the boundary: see "
-        "4.5-sel.")
+        "helicopter's fin or Cn_beta against alpha; the paper's CFD (s.3.2) would. How the "
+        "campaign's choice (its area steps, its damping criterion) stands against this "
+        "boundary: see 4.5-sel.")
     rows.append(found)
     rows.append(Finding(
         "roots", "s.4.5 (beyond the paper)",
@@ -712,10 +712,19 @@ def study_campaign(figs, out, workers):
         f"{by['area factor [-]'].iloc[0]:.1f} x to {swing[-1]:.1f} deg at "
         f"{by['area factor [-]'].iloc[-1]:.1f} x",
         PARTLY if found and np.all(np.diff(swing) > 0) else NOT, figs_out["selection"],
-        ("Swing angle (drag) rises with the area as in the paper. The area chosen differs "
-         "from 1.4 x because the boundary is the static neutral point (s.4.5 above): the "
-         "choice follows the damping criterion, an engineering input, not the stability "
-         "boundary." if found else
+        ("Swing angle (drag) rises with the area as in the paper. The chosen "
+         f"{chosen:.3g} x of the campaign's neutral area is "
+         f"{chosen * result.neutral.area / result.neutral.area_fit:.2f} x the +-10 deg fit "
+         "area; the matrix's area steps are 0.2 x, and the smaller factors fail where the "
+         "area is below the static boundary (s.4.5 above: the static neutral point at the "
+         "trimmed alpha), at "
+         + ", ".join(f"{v / KNOT:.0f}" for v in sorted(m.loc[
+             (m["area factor [-]"] < chosen) & ~m["stable"], "airspeed EAS [m/s]"].unique()))
+         + " KEAS; "
+         + ("the damping criterion adds nothing there." if np.isclose(
+             sel.recommended, sel.smallest_stable) else
+            "the damping criterion (an engineering input) asks for more than the "
+            "stability boundary.") if found else
          "No area of the matrix is stable in every condition (verdicts per area in the "
          "evidence tables), so the campaign chooses none; the tables below are taken at "
          f"the largest area flown, {at_factor:.3g} x.")
@@ -793,7 +802,7 @@ def study_campaign(figs, out, workers):
          "free response and the +30 ft/s gust; --full flies the whole matrix.")
         + (" The runs that left the domain trimmed on the sample's tables but left the "
            "fuselage table's alpha range within seconds, at an area factor whose neighbours "
-           "fly the same condition inside it: a trim on another branch, reported as "
+           "fly the same condition inside it: apparently a trim on another branch, reported as "
            "'outside domain', never as a result." if left.any() else "")))
 
     # the 1.0 x neutral check of the campaign (1-DOF beside multibody)
