@@ -715,9 +715,8 @@ def study_campaign(figs, out, workers):
         ("Swing angle (drag) rises with the area as in the paper. The chosen "
          f"{chosen:.3g} x of the campaign's neutral area is "
          f"{chosen * result.neutral.area / result.neutral.area_fit:.2f} x the +-10 deg fit "
-         "area; the matrix's area steps are 0.2 x, and the smaller factors fail where the "
-         "area is below the static boundary (s.4.5 above: the static neutral point at the "
-         "trimmed alpha), at "
+         "area; the matrix's area steps are 0.2 x, and the smaller factors fail (verdicts "
+         "per area in the evidence tables; the boundary in s.4.5 above) at "
          + ", ".join(f"{v / KNOT:.0f}" for v in sorted(m.loc[
              (m["area factor [-]"] < chosen) & ~m["stable"], "airspeed EAS [m/s]"].unique()))
          + " KEAS; "
