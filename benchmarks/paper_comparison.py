@@ -11,7 +11,7 @@ plot of the same quantities, and, where it is not reproduced, the linear analysi
 sensitivity runs that show which input or modelling term decides it.
 
 The sample aircraft are not tuned to any finding: every sensitivity below changes one term
-on a copy and says so. About 2 minutes on 2 cores by default (a reduced campaign matrix:
+on a copy and says so. About 3-4 minutes on 2 cores by default (a reduced campaign matrix:
 two mass cases, two altitudes, two manoeuvres); ``--full`` flies the paper's whole matrix
 (3 masses, 3 altitudes, free response and +-30 ft/s gusts: 3,888 runs).
 
@@ -53,6 +53,17 @@ MASSES = (("maximum", 2900.0), ("medium", 2600.0), ("minimum", 2300.0))
 HUB_DRAG = 0.51
 #: UH-60-class pitching-moment slope at small angles (MScSim UH-60 data, SAMPLE_DATA.md). [1/rad]
 CM_ALPHA_UH60 = 0.46
+#: Length of the campaign's runs. [s] The paper flies 60 s, but the envelope test
+#: (:mod:`slingloads.analyses.verdicts`) compares the two halves of the window after the
+#: input (the 10 s gust ends at 15 s) and takes the second half's mean as the centre: at
+#: 40 KEAS the parachuted yaw mode has a period up to ~51 s and a time to half amplitude up to
+#: ~13 s, so a 60 s run leaves halves of 22 s, shorter than one period, and a still-swinging
+#: response (12 deg half amplitude) reads as a "static departure" 1-3 deg off trim. 150 s
+#: gives halves of 67 s (more than one period, about five times to half amplitude); the
+#: script checks this against the slowest yaw mode of the stable runs and prints it.
+CAMPAIGN_T_END = 150.0
+#: End of the campaign's gusts (onset 5 s + 10 s), the start of the observed window. [s]
+GUST_END = 15.0
 
 REPRODUCED, PARTLY, NOT, NOT_RUN = "reproduced", "partly", "not reproduced", "not run"
 
@@ -586,9 +597,9 @@ def study_boundary(figs, out):
         "in the multibody model relative to its 1-DOF model, if the two differed in the "
         "fin's (or the fuselage's) data or in the flow the fin sees at the trimmed "
         "attitude. No source in the project gives the fuselage sidewash at a bladeless "
-        "helicopter's fin or Cn_beta against alpha; the paper's CFD (s.3.2) would. The "
-        "campaign's damping criterion is what asks for more than the boundary: see "
-        "4.5-sel.")
+        "helicopter's fin or Cn_beta against alpha; the paper's CFD (s.3.2) would. How the "
+        "campaign's choice (its area steps, its damping criterion) stands against this "
+        "boundary: see 4.5-sel.")
     rows.append(found)
     rows.append(Finding(
         "roots", "s.4.5 (beyond the paper)",
@@ -605,6 +616,7 @@ def study_campaign(figs, out, workers):
         Factors,
         MassCase,
         NoParachuteStudy,
+        RunSettings,
         base_condition,
         make_executor,
         run_campaign,
@@ -632,7 +644,7 @@ def study_campaign(figs, out, workers):
                       carriers=("frozen", "free"), manoeuvres=manoeuvres)
     base = hc_system("HC1", 1.0, cable=60 * FOOT)
     campaign = Campaign(
-        CampaignSetup(base), factors,
+        CampaignSetup(base), factors, settings=RunSettings(t_end=CAMPAIGN_T_END),
         stability=MapSettings(area_factors=tuple(np.round(np.linspace(0.6, 2.0, 8), 3)),
                               airspeeds=tuple(v * KNOT for v in SPEEDS),
                               density_altitudes=(0.0,)),
@@ -647,13 +659,32 @@ def study_campaign(figs, out, workers):
     m = result.metrics
     sel = result.selection
     chosen = result.chosen_area_factor
+    out["campaign neutral"] = result.neutral
+    # the window check of the envelope test: each half after the gust against the slowest
+    # yaw mode of the runs whose eigenvalues are stable
+    ok = m["linear verdict"] == "stable"
+    half = 0.5 * (CAMPAIGN_T_END - GUST_END)
+    slow = (m[ok].replace(np.inf, np.nan).groupby("area factor [-]")
+            [["yaw mode period [s]", "yaw mode time to half amplitude [s]"]].max()
+            .rename(columns=lambda c: "slowest " + c.replace(" [s]", "") + " (stable) [s]"))
+    verdicts = m.groupby(["area factor [-]", "response verdict"]).size().unstack(fill_value=0)
+    table = verdicts.join(slow)
+    table["half window longer than that period"] = half > table[slow.columns[0]]
+    out["window"] = {"half window [s]": half}
+    out["campaign verdicts"] = table.reset_index()
+    found = bool(np.isfinite(chosen))
+    # without a chosen area (no area stable in every condition) the factor sweeps and the
+    # negligible-factor table are taken at the largest area flown, and said so
+    at_factor = chosen if found else float(m["area factor [-]"].max())
+    out["campaign area found"] = found
     rows = []
     figs_out = {"selection": figs.save(plot_selection(result), "campaign-selection.png")}
-    figs_out["map"] = figs.save(plot_stability_map(result.stability, result.neutral.area,
-                                                   chosen_area=chosen * result.neutral.area),
-                                "campaign-stability-map.png")
+    figs_out["map"] = figs.save(plot_stability_map(
+        result.stability, result.neutral.area,
+        chosen_area=chosen * result.neutral.area if found else None),
+        "campaign-stability-map.png")
     figs_out["no parachute"] = figs.save(plot_no_parachute(result), "no-parachute-ramps.png")
-    basec = base_condition(m, chosen)
+    basec = base_condition(m, at_factor)
     sweeps = {}
     for factor, manoeuvre, tag, fig_no in (
             ("area factor [-]", "free response", "area", "9"),
@@ -680,18 +711,34 @@ def study_campaign(figs, out, workers):
         f"{sel.recommended:.3g} x; largest trimmed swing {swing[0]:.1f} deg at "
         f"{by['area factor [-]'].iloc[0]:.1f} x to {swing[-1]:.1f} deg at "
         f"{by['area factor [-]'].iloc[-1]:.1f} x",
-        PARTLY if np.all(np.diff(swing) > 0) else NOT, figs_out["selection"],
-        "Swing angle (drag) rises with the area as in the paper. The area chosen differs from "
-        "1.4 x because the boundary is the static neutral point (s.4.5 above): the choice "
-        "follows the damping criterion, an engineering input, not the stability boundary."))
+        PARTLY if found and np.all(np.diff(swing) > 0) else NOT, figs_out["selection"],
+        ("Swing angle (drag) rises with the area as in the paper. The chosen "
+         f"{chosen:.3g} x of the campaign's neutral area is "
+         f"{chosen * result.neutral.area / result.neutral.area_fit:.2f} x the +-10 deg fit "
+         "area; the matrix's area steps are 0.2 x, and the smaller factors fail (verdicts "
+         "per area in the evidence tables; the boundary in s.4.5 above) at "
+         + ", ".join(f"{v / KNOT:.0f}" for v in sorted(m.loc[
+             (m["area factor [-]"] < chosen) & ~m["stable"], "airspeed EAS [m/s]"].unique()))
+         + " KEAS; "
+         + ("the damping criterion adds nothing there." if np.isclose(
+             sel.recommended, sel.smallest_stable) else
+            "the damping criterion (an engineering input) asks for more than the "
+            "stability boundary.") if found else
+         "No area of the matrix is stable in every condition (verdicts per area in the "
+         "evidence tables), so the campaign chooses none; the tables below are taken at "
+         f"the largest area flown, {at_factor:.3g} x.")
+        + f" Area factors multiply the campaign's neutral area {result.neutral.area:.3f} m^2 "
+        f"(the library's default basis, the larger of the local-slope "
+        f"{result.neutral.area_local:.3f} and +-10 deg fit {result.neutral.area_fit:.3f} m^2: "
+        f"{result.neutral.basis})."))
     if "area" in sweeps:
         rows[-1].figure += f", {sweeps['area']}"
 
     # figure 10 exactly: cables 18, 60, 100 ft under a continuous 30 ft/s gust from 20 s
-    fig10 = figure_10(figs, chosen * result.neutral.area, out)
+    fig10 = figure_10(figs, at_factor * result.neutral.area, out)
 
     # negligible factors at the chosen area
-    at = m[np.isclose(m["area factor [-]"], chosen)]
+    at = m[np.isclose(m["area factor [-]"], at_factor)]
     neg = []
     for factor, label, fig_no in (("cable length [m]", "cable length", "10"),
                                   ("density altitude [m]", "altitude", "11"),
@@ -717,7 +764,8 @@ def study_campaign(figs, out, workers):
             f"neg-{r['factor']}", f"s.4.5, fig {r['paper figure']}; conclusion 4",
             f"{r['factor']}: negligible effect once the FPA is adequate",
             "negligible",
-            f"at {chosen:.3g} x: {r['factor']} {r['values']}: stable share {r['stable share']};"
+            f"at {at_factor:.3g} x: {r['factor']} {r['values']}: stable share "
+            f"{r['stable share']};"
             f" worst yaw change {r['worst yaw change [deg]']} deg",
             REPRODUCED if all(float(x) == 1.0 for x in r["stable share"].split(", "))
             else PARTLY, sweeps.get(tag[r["factor"]], "")
@@ -725,20 +773,36 @@ def study_campaign(figs, out, workers):
     out["all stable at chosen"] = all_stable
 
     # the paper's matrix flies, 18 ft included; the line stays aft of its attachment
-    th = (np.nanmin(m["line theta min [deg]"]), np.nanmax(m["line theta max [deg]"]))
-    ps = np.nanmax(np.abs(m[["line psi min [deg]", "line psi max [deg]"]].to_numpy()))
+    # the line angles of the runs that stayed in the model's domain (a run that left a table
+    # is no result after it left)
+    left = m["response verdict"] == "outside domain"
+    inside = m[~left]
+    th = (np.nanmin(inside["line theta min [deg]"]), np.nanmax(inside["line theta max [deg]"]))
+    ps = np.nanmax(np.abs(inside[["line psi min [deg]", "line psi max [deg]"]].to_numpy()))
     trimmed = int(m["trim converged"].astype(bool).sum())
+    if left.any():
+        g = m[left].groupby(["area factor [-]", "airspeed EAS [m/s]", "mass case"])
+        left_text = (f"; {int(left.sum())} runs left the model's domain: " + "; ".join(
+            f"{n} at {a:g} x, {v / KNOT:.0f} KEAS, mass {c} "
+            f"({m.loc[left, 'verdict reason'][g.groups[(a, v, c)]].iloc[0]})"
+            for (a, v, c), n in g.size().items()) + " (their line angles excluded)")
+    else:
+        left_text = ""
     rows.append(Finding(
         "4.4", "s.4.4 (matrix)",
         "the matrix: FPA 1-2 x, up to 100 KEAS, three weights, ISA SL / 5,000 / 10,000 ft, "
         "cables 18, 60, 100 ft, carrier free and frozen",
         "all flown", f"{len(m)} runs, {trimmed} trimmed, 18 ft included; the parachute "
         f"line stayed aft of its attachment in every run (theta {th[0]:.0f} to {th[1]:.0f} "
-        f"deg, |psi| <= {ps:.0f} deg), the condition of the reach rule",
+        f"deg, |psi| <= {ps:.0f} deg), the condition of the reach rule{left_text}",
         REPRODUCED if trimmed == len(m) and max(abs(th[0]), abs(th[1])) < 90 and ps < 90
-        else PARTLY, "",
-        "" if out["full"] else "The default run flies two of the three mass cases and the "
-        "free response and the +30 ft/s gust; --full flies the whole matrix."))
+        and not left.any() else PARTLY, "",
+        ("" if out["full"] else "The default run flies two of the three mass cases and the "
+         "free response and the +30 ft/s gust; --full flies the whole matrix.")
+        + (" The runs that left the domain trimmed on the sample's tables but left the "
+           "fuselage table's alpha range within seconds, at an area factor whose neighbours "
+           "fly the same condition inside it: apparently a trim on another branch, reported as "
+           "'outside domain', never as a result." if left.any() else "")))
 
     # the 1.0 x neutral check of the campaign (1-DOF beside multibody)
     nc = result.neutral_check
@@ -934,7 +998,8 @@ def study_no_parachute(figs, out):
         "Both sides of the static yaw balance grow with q, so its sign cannot change with "
         f"airspeed: HC2's full tail is statically unstable at every speed (net "
         f"{h2[0]:+.1f} q N m/rad: fuselage {h2[1]:+.1f} q, fin {h2[2]:+.1f} q; it needs "
-        "about 1.10 x its fin area), so it departs from the lowest ramp; HC1's is stable. "
+        "about 1.10 x its fin area), so it does not converge from the lowest ramp on "
+        "(its verdict in the table); HC1's is stable. "
         "What can change sign with airspeed is dynamic: the weathervane frequency grows with "
         "V (omega^2 = N_beta / I, N_beta ~ q) while the cable pendulum's stays at "
         f"sqrt(g / l) ({omega_p:.2f} rad/s at 60 ft); where they meet, yaw and lateral swing "
@@ -970,8 +1035,11 @@ def study_no_parachute(figs, out):
 def study_loads(figs, out):
     """Section 6 and conclusion 7: loads at the mast mostly axial; sensitivity to the
     fuselage pitching moment (the trimmed attitude decides the angle from the mast)."""
-    a0 = out["neutral"]["HC1"]
+    # the campaign's area factors multiply its own neutral area (the library's default basis)
+    a0 = out["campaign neutral"].area
     chosen = out["campaign"].chosen_area_factor
+    if not np.isfinite(chosen):
+        chosen = float(out["campaign"].metrics["area factor [-]"].max())
     rows_t = []
     for label, fus in (("sample Cm (Cm_alpha 0.6 /rad)", None),
                        (f"Cm slope x{CM_ALPHA_UH60 / 0.6:.2f} (UH-60 {CM_ALPHA_UH60} /rad)",
@@ -1152,6 +1220,8 @@ def summary(findings):
 def markdown(findings, out, seconds):
     matrix = ("the paper's whole matrix" if out["full"]
               else "reduced matrix; --full for the whole")
+    cn, win = out["campaign neutral"], out["window"]
+    chosen = out["campaign"].chosen_area_factor
     lines = [
         "# The paper's findings reproduced",
         "",
@@ -1165,11 +1235,19 @@ def markdown(findings, out, seconds):
         "",
         f"Base condition unless stated: HC1, 2900 kg, ISA sea level, cable 60 ft (EA 5 MN), "
         f"frozen carrier, hinged canopy 3 kg on a {LINE} m line, canopy CD 1.0 x wake ratio "
-        f"0.95, neutral area {out['neutral']['HC1']:.3f} m^2 (+-10 deg least squares, the "
-        "library's default). Campaign: "
+        f"0.95. Two neutral-area bases are used and each factor names its own: the 1-DOF "
+        f"and boundary studies (s.4.1-4.5) multiply the +-10 deg least-squares neutral "
+        f"area {out['neutral']['HC1']:.3f} m^2 ('x neutral (+-10 deg)'); the campaign "
+        f"(s.4.4-4.5 matrix, figs 9-13, loads) multiplies the library's default, the "
+        f"larger of the local-slope and fit areas: {cn.area:.3f} m^2 ({cn.basis}; local "
+        f"slope {cn.area_local:.3f}, fit {cn.area_fit:.3f} m^2). Campaign: "
         f"{out['campaign runs']} runs ({matrix}): "
-        "areas 1.0-2.0 x, 40-100 KEAS, cables 18, 60 and 100 ft, carrier frozen and free. "
-        f"Run time {seconds:.0f} s.",
+        "areas 1.0-2.0 x, 40-100 KEAS, cables 18, 60 and 100 ft, carrier frozen and free, "
+        f"each run {CAMPAIGN_T_END:.0f} s (the paper's 60 s is too short for the envelope "
+        f"test at 40 KEAS: evidence tables). Chosen area: "
+        + (f"{chosen:.3g} x = {chosen * cn.area:.3f} m^2." if np.isfinite(chosen) else
+           "**none** (no area of the matrix is stable in every condition).")
+        + f" Run time {seconds:.0f} s.",
         "",
         "Verdicts (this script's classification): **reproduced** when the project's value "
         "agrees with the paper's statement; **partly** when it agrees in part or under a "
@@ -1204,6 +1282,14 @@ def markdown(findings, out, seconds):
               md_table(out["boundary"], ".4g"), "",
               f"To need 1.4 x at 80 KEAS, the cut-down fin's effectiveness must fall to "
               f"{out['fin for 1.4']:.2f} of the sample's.", "",
+              "### Campaign run verdicts per area factor", "",
+              f"Runs of {CAMPAIGN_T_END:.0f} s; the envelope test compares the two halves "
+              f"of the window after the gust, {win['half window [s]']:.1f} s each. Beside "
+              "the run verdicts, the slowest yaw mode (period, time to half amplitude) of "
+              "the runs whose eigenvalues are stable: where a half is shorter than that "
+              "period, the slowest runs' verdicts are not resolved (near the boundary the "
+              "yaw root is nearly real and its period very long).", "",
+              md_table(out["campaign verdicts"]), "",
               "### Negligible factors at the chosen area (figs 10-13)", "",
               md_table(out["negligible"]), "",
               "### Figure 10: cables under a continuous 30 ft/s gust from 20 s, 100 KEAS", "",
