@@ -94,3 +94,21 @@ def test_an_analysis_not_asked_for_is_refused():
         run_analysis(study, "lateral")
     assert info.value.file == str(EXAMPLE) and info.value.sheet == "Study"
     assert Results().computed() == ()
+
+
+def test_analysis_names_map_to_their_fields():
+    """Each analysis named in the workbook ('chute sizing') is kept in the field of its typed
+    inputs and results (``chute_sizing``), the dataclass's own attribute; an unknown name is
+    refused with the valid names rather than ignored."""
+    from slingloads.runs.study import Inputs
+
+    for name in ANALYSES:
+        results, inputs = Results(), Inputs()
+        results.set(name, name)
+        inputs.set(name, name)
+        assert getattr(results, name.replace(" ", "_")) == name == results.of(name)
+        assert getattr(inputs, name.replace(" ", "_")) == name == inputs.of(name)
+    with pytest.raises(InputError, match="valid names are"):
+        Results().set("chute", 1)
+    with pytest.raises(InputError, match="valid names are"):
+        Inputs().of("Loads")

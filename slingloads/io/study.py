@@ -15,7 +15,7 @@ from slingloads.io.common.hidden import hidden_warnings, read_cells
 from slingloads.io.common.locate import StudyCells, find_place, place_error
 from slingloads.io.common.parameters import StudyParameters
 from slingloads.io.common.workbook import WorkbookReader
-from slingloads.runs.study import Inputs, Source, Study
+from slingloads.runs.study import Source, Study
 
 AIRFRAME_SHEETS = {s.name: s for s in SHEETS}
 _BY_NAME = {a.name: a for a in ANALYSES}
@@ -127,7 +127,7 @@ def _build(reader, path, only, sha256, on_read=None):
                   source=source)
     for analysis in ANALYSES:
         if analysis.name in asked:
-            _set_inputs(study.inputs, analysis.name, analysis.read(reader, params, study))
+            study.inputs.set(analysis.name, analysis.read(reader, params, study))
         if analysis.options:
             study.report = analysis.modules().reader.report_options(params, study)
         if analysis.name in asked and on_read is not None:
@@ -135,20 +135,6 @@ def _build(reader, path, only, sha256, on_read=None):
     source.input_files = list(reader.input_files)
     source.warnings = [*reader.warnings, *hidden_warnings(reader, read_cells(reader, params))]
     return study
-
-
-def _set_inputs(inputs: Inputs, name, value):
-    """Keep ``value`` as the inputs of analysis ``name``."""
-    if name == "loads":
-        inputs.loads = value
-    elif name == "lateral":
-        inputs.lateral = value
-    elif name == "chute sizing":
-        inputs.chute_sizing = value
-    elif name == "multibody":
-        inputs.multibody = value
-    else:
-        inputs.campaign = value
 
 
 def run_workbook(path, only=None):

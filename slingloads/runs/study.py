@@ -36,6 +36,15 @@ if TYPE_CHECKING:  # the analyses' modules load when they run (keeps a loads run
 
 #: Every analysis, in the order they are read and reported.
 ANALYSES = ("loads", "lateral", "chute sizing", "multibody", "campaign")
+#: The field of :class:`Inputs` and :class:`Results` that holds each analysis.
+FIELD = {name: name.replace(" ", "_") for name in ANALYSES}
+
+
+def _field(name):
+    """The field of analysis ``name``, refused with the valid names if unknown."""
+    if name not in FIELD:
+        raise InputError(f"unknown analysis; valid names are {list(ANALYSES)}", name)
+    return FIELD[name]
 #: What each analysis is called in messages.
 TITLES = {"loads": "loads analysis", "lateral": "lateral study",
           "chute sizing": "parachute sizing", "multibody": "multibody model",
@@ -82,9 +91,11 @@ class Inputs:
 
     def of(self, name):
         """The inputs of analysis ``name`` (None if not given)."""
-        return {"loads": self.loads, "lateral": self.lateral,
-                "chute sizing": self.chute_sizing, "multibody": self.multibody,
-                "campaign": self.campaign}[name]
+        return getattr(self, _field(name))
+
+    def set(self, name, value):
+        """Keep ``value`` as the inputs of analysis ``name``."""
+        setattr(self, _field(name), value)
 
     def given(self):
         """The analyses whose inputs are given, in the order of :data:`ANALYSES`."""
@@ -233,24 +244,11 @@ class Results:
 
     def of(self, name):
         """The result of analysis ``name`` (None if not run)."""
-        return {"loads": self.loads, "lateral": self.lateral,
-                "chute sizing": self.chute_sizing, "multibody": self.multibody,
-                "campaign": self.campaign}[name]
+        return getattr(self, _field(name))
 
     def set(self, name, result):
         """Keep ``result`` as that of analysis ``name``."""
-        if name == "loads":
-            self.loads = result
-        elif name == "lateral":
-            self.lateral = result
-        elif name == "chute sizing":
-            self.chute_sizing = result
-        elif name == "multibody":
-            self.multibody = result
-        elif name == "campaign":
-            self.campaign = result
-        else:
-            raise InputError(f"unknown analysis; valid names are {list(ANALYSES)}", name)
+        setattr(self, _field(name), result)
 
     def computed(self):
         """The analyses with a result, in the order of :data:`ANALYSES`."""
