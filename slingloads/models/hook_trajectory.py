@@ -37,6 +37,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.carrier_motion import _Motion
 
@@ -395,7 +396,7 @@ class HookTrajectory:
         else:
             a = [0.0, peak, peak, 0.0]
         return cls(((PiecewiseAcceleration(t, a), "-X"),), True,
-                   f"forward acceleration to {target:.4g} m/s at {acceleration:.3g} m/s^2")
+                   f"forward acceleration to {target / KNOT:.4g} kt at {acceleration:.3g} m/s^2")
 
     @classmethod
     def lateral(cls, motion):

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.checks import finite, non_negative, positive
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 
 #: Named gust directions (unit vectors in earth axes, for a positive gust velocity).
@@ -186,6 +187,6 @@ class Wind:
             where = self.direction if isinstance(self.direction, str) else "given direction"
             parts.append(f"{where} gust {label}")
         if self.ramp is not None:
-            parts.append(f"head-wind ramp to {self.ramp.target:.4g} m/s at "
+            parts.append(f"head-wind ramp to {self.ramp.target / KNOT:.4g} kt at "
                          f"{self.ramp.rate:.3g} m/s^2")
         return ", ".join(parts) or "still air"
