@@ -83,6 +83,121 @@ def plain(value):
     return value
 
 
+#: At most this many errors of one input are gathered and reported together; reading stops at
+#: the next one (the message says so).
+MAX_REPORTED_ERRORS = 25
+
+
+class InputErrors(InputError):
+    """Several input errors of one input, reported together.
+
+    Its location, rule and value are those of the first error (in reading order: the Study
+    sheet, then the airframe sheets, then each analysis's sheets, row by row and cell by cell),
+    so that code reading ``err.cell`` sees the first error; ``str(err)`` lists every one.
+
+    Parameters
+    ----------
+    errors : list of InputError
+        At least two, in reading order.
+    complete : bool, optional
+        False when reading stopped at :data:`MAX_REPORTED_ERRORS` or when some sheets could not
+        be checked because an earlier error prevents it (``note`` says which).
+    note : str, optional
+        What was not checked, and why.
+    """
+
+    def __init__(self, errors, *, complete=True, note=""):
+        self.errors = list(errors)
+        self.complete = complete
+        self.note = note
+        first = self.errors[0]
+        super().__init__(first.rule, first.value, file=first.file, sheet=first.sheet,
+                         cell=first.cell, unit=first.unit, field=first.field,
+                         index=first.index)
+
+    def _message(self):
+        n = len(self.errors)
+        head = (f"{n} errors in the input" if self.complete
+                else f"{n} errors in the input (reading stopped there)")
+        lines = [f"{head}:"]
+        lines += [f"  {i}. {err}" for i, err in enumerate(self.errors, start=1)]
+        if self.note:
+            lines.append(f"  {self.note}")
+        return "\n".join(lines)
+
+
+class ErrorCollector:
+    """Gathers the input errors of independent steps of a reading, to report them at once.
+
+    A step whose result others need stops the reading when it fails (:meth:`stop`); a step
+    that others do not need is attempted (:meth:`call`) and the reading goes on. At most
+    ``limit`` errors are gathered: the next one stops the reading.
+
+    Parameters
+    ----------
+    limit : int, optional
+        Default :data:`MAX_REPORTED_ERRORS`.
+    """
+
+    def __init__(self, limit=MAX_REPORTED_ERRORS):
+        self.errors = []
+        self.limit = limit
+        self._seen = set()
+
+    def __bool__(self):
+        return bool(self.errors)
+
+    def add(self, err):
+        """Gather ``err`` (an :class:`InputError`, or an :class:`InputErrors` whose errors are
+        gathered one by one); an error already gathered (same message) is not repeated.
+
+        Raises
+        ------
+        InputErrors
+            When the gathered errors pass ``limit``.
+        """
+        for one in getattr(err, "errors", None) or [err]:
+            text = str(one)
+            if text in self._seen:
+                continue
+            self._seen.add(text)
+            self.errors.append(one)
+            if len(self.errors) > self.limit:
+                raise InputErrors(self.errors[:self.limit], complete=False)
+
+    def call(self, step, *args, **kwargs):
+        """``step(*args, **kwargs)``, or None after gathering the :class:`InputError` it
+        raised."""
+        try:
+            return step(*args, **kwargs)
+        except InputError as err:
+            self.add(err)
+            return None
+
+    def error(self, note=""):
+        """The gathered errors as one exception: the error itself when there is one (and no
+        ``note``), else an :class:`InputErrors`; None when there is none."""
+        if not self.errors:
+            return None
+        if len(self.errors) == 1 and not note:
+            return self.errors[0]
+        if len(self.errors) == 1:
+            return _with_note(self.errors[0], note)
+        return InputErrors(self.errors, complete=not note, note=note)
+
+    def raise_if_any(self, note=""):
+        """Raise :meth:`error` if any error was gathered."""
+        err = self.error(note)
+        if err is not None:
+            raise err
+
+
+def _with_note(err, note):
+    """``err`` with ``note`` added to its message (one error, some sheets not checked)."""
+    err.args = (f"{err} ({note})",)
+    return err
+
+
 class UnitError(InputError):
     """A unit that is unknown, or of the wrong kind for the quantity it is attached to."""
 

@@ -30,7 +30,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from openpyxl.worksheet._reader import WorkSheetParser
 
-from slingloads.errors import InputError
+from slingloads.errors import ErrorCollector, InputError
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.common.schema import FLAG, INTEGER, TEXT, Bounds, Column, TableSheet
 from slingloads.io.common.workbook import WorkbookReader
@@ -322,7 +322,7 @@ def test_a_bad_cell_anywhere_is_found_by_the_fast_path():
         edited[r][c] = value
         reader = WorkbookReader.from_rows({"Numbers": edited})
         header = dict(enumerate(edited[0], start=1))
-        found = reader._columns(spec, header)
+        found, _ = reader._columns(spec, header, ErrorCollector())
         records = [(k, dict(enumerate(row, start=1))) for k, row in enumerate(edited, 1)][1:]
         assert reader._columns_at_once(spec, header, found, records) is None
         with pytest.raises(InputError) as info:

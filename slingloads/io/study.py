@@ -7,6 +7,7 @@ from __future__ import annotations
 import hashlib
 from dataclasses import dataclass, field
 
+from slingloads.errors import ErrorCollector
 from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
@@ -110,11 +111,26 @@ def read_study(path, only=None, *, reader=None, on_read=None):
 
 
 def _build(reader, path, only, sha256, on_read=None):
-    params = StudyParameters(reader, all_parameters())
-    asked = [a.name for a in ANALYSES if params(a.run_parameter)]
+    # Independent steps are attempted one after another and their errors reported together
+    # (up to MAX_REPORTED_ERRORS): the Study sheet row by row, each table sheet cell by cell,
+    # the airframe, then each analysis. A step others need stops the reading when it fails.
+    errors = ErrorCollector()
+    params = errors.call(StudyParameters, reader, all_parameters())
+    for sheet in AIRFRAME_SHEETS.values():  # every cell of the required sheets, at once
+        if sheet.required:
+            errors.call(reader.table, sheet)
+    if params is None:
+        errors.raise_if_any(note="the other sheets are checked once the Study sheet reads")
+    asked = [a.name for a in ANALYSES if errors.call(params, a.run_parameter)]
     if only is not None:
         asked = [a.name for a in ANALYSES if a.name in set(only)]
-    airframe, refs = read_airframe(reader, params)
+    errors.raise_if_any(note="the sheets of the airframe and the analyses are checked once "
+                             "these read")
+    read = errors.call(read_airframe, reader, params)
+    if read is None:
+        errors.raise_if_any(note=f"the sheets of {', '.join(asked) or 'the analyses'} are "
+                                 "checked once the airframe reads")
+    airframe, refs = read
     source = WorkbookSource(
         path=str(path), sha256=sha256, points=refs,
         parameters={k: v[0] for k, v in params.given.items()},
@@ -127,11 +143,16 @@ def _build(reader, path, only, sha256, on_read=None):
                   source=source)
     for analysis in ANALYSES:
         if analysis.name in asked:
-            study.inputs.set(analysis.name, analysis.read(reader, params, study))
+            inputs = errors.call(analysis.read, reader, params, study)
+            if inputs is not None:
+                study.inputs.set(analysis.name, inputs)
         if analysis.options:
-            study.report = analysis.modules().reader.report_options(params, study)
-        if analysis.name in asked and on_read is not None:
+            options = errors.call(analysis.modules().reader.report_options, params, study)
+            if options is not None:
+                study.report = options
+        if analysis.name in asked and on_read is not None and not errors:
             on_read(analysis.name, study)
+    errors.raise_if_any()
     source.input_files = list(reader.input_files)
     source.warnings = [*reader.warnings, *hidden_warnings(reader, read_cells(reader, params))]
     return study

@@ -38,7 +38,7 @@ import contextlib
 import os
 from dataclasses import dataclass
 
-from slingloads.errors import InputError
+from slingloads.errors import InputError, InputErrors
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.io.common.table import Table
 from slingloads.io.common.units import SI_UNITS, si_factor, unit_label
@@ -101,7 +101,11 @@ class StudyCells:
 
 def place_error(err, place, rule=None):
     """``err`` located at ``place`` (see the module's rules), its rule replaced by ``rule``
-    when given (an error the io layer explains further)."""
+    when given (an error the io layer explains further); each error of an
+    :class:`~slingloads.errors.InputErrors` is located in turn."""
+    if isinstance(err, InputErrors):
+        return InputErrors([place_error(e, place, rule) for e in err.errors],
+                           complete=err.complete, note=err.note)
     file, sheet = err.file or place.file, err.sheet or place.sheet
     cell, value, unit = err.cell, err.value, err.unit
     if cell is None and place.cell is not None and err.sheet in (None, place.sheet):

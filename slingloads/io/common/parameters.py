@@ -14,6 +14,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from slingloads.errors import ErrorCollector
 from slingloads.io.common.locate import Place, StudyCells, located, quantity
 from slingloads.io.common.schema import FLAG, INTEGER, STUDY_SHEET, TEXT
 from slingloads.io.common.table import cell_name
@@ -148,43 +149,50 @@ def read_parameters(reader, known, sheet=STUDY_SHEET):
                                f"unit' in row 1; column {col} should be {title!r}",
                                echo(got), sheet, cell_name(1, col))
     out = {}
+    errors = ErrorCollector()  # every bad row at once
     for r, row in rows[1:]:
-        stray = next((c for c in sorted(row) if c not in header), None)
-        if stray is not None:
-            raise reader.error("value in a column without a header (give the column a "
-                               "header, e.g. 'notes', or clear the cell)", echo(row[stray]),
-                               sheet, cell_name(r, stray))
-        name, raw, unit = row.get(1), row.get(2), row.get(3)
-        if name is None:
-            if raw is not None or unit is not None:
-                raise reader.error("value without a parameter name", echo(
-                    raw if raw is not None else unit), sheet, cell_name(r, 1))
-            continue
-        key = as_text(name).strip().lower()
-        if key not in known:
-            renamed = next((p for p in known.values()
-                            if key in (f.lower() for f in p.former)), None)
-            if renamed is not None:
-                raise reader.error(f"parameter renamed: use {renamed.name!r} ({renamed.help})",
-                                   echo(name), sheet, cell_name(r, 1))
-            raise reader.error(_unknown_parameter(key, known), echo(name), sheet,
-                               cell_name(r, 1))
-        if key in out:
-            raise reader.error("parameter appears twice", echo(name), sheet,
-                               cell_name(r, 1))
-        spec = known[key]
-        where = cell_name(r, 2)
-        unit_text = "" if unit is None else as_text(unit)
-        if raw is None:
-            if spec.kind == TEXT:
-                out[key] = ParameterValue("", where, raw, unit_text)
-                continue
-            raise reader.error(f"empty value for parameter {spec.name!r} (delete the row "
-                               f"to use the default {spec.default!r} {spec.unit})"
-                               f"{FORMULA_HINT}", None, sheet, where)
-        value = _parameter_value(reader, spec, raw, unit_text, sheet, r)
-        out[key] = ParameterValue(value, where, raw, unit_text.strip())
+        errors.call(_read_row, reader, known, sheet, header, out, r, row)
+    errors.raise_if_any()
     return out
+
+
+def _read_row(reader, known, sheet, header, out, r, row):
+    """Add row ``r`` of the Study sheet to ``out``, or raise its error."""
+    stray = next((c for c in sorted(row) if c not in header), None)
+    if stray is not None:
+        raise reader.error("value in a column without a header (give the column a "
+                           "header, e.g. 'notes', or clear the cell)", echo(row[stray]),
+                           sheet, cell_name(r, stray))
+    name, raw, unit = row.get(1), row.get(2), row.get(3)
+    if name is None:
+        if raw is not None or unit is not None:
+            raise reader.error("value without a parameter name", echo(
+                raw if raw is not None else unit), sheet, cell_name(r, 1))
+        return
+    key = as_text(name).strip().lower()
+    if key not in known:
+        renamed = next((p for p in known.values()
+                        if key in (f.lower() for f in p.former)), None)
+        if renamed is not None:
+            raise reader.error(f"parameter renamed: use {renamed.name!r} ({renamed.help})",
+                               echo(name), sheet, cell_name(r, 1))
+        raise reader.error(_unknown_parameter(key, known), echo(name), sheet,
+                           cell_name(r, 1))
+    if key in out:
+        raise reader.error("parameter appears twice", echo(name), sheet,
+                           cell_name(r, 1))
+    spec = known[key]
+    where = cell_name(r, 2)
+    unit_text = "" if unit is None else as_text(unit)
+    if raw is None:
+        if spec.kind == TEXT:
+            out[key] = ParameterValue("", where, raw, unit_text)
+            return
+        raise reader.error(f"empty value for parameter {spec.name!r} (delete the row "
+                           f"to use the default {spec.default!r} {spec.unit})"
+                           f"{FORMULA_HINT}", None, sheet, where)
+    value = _parameter_value(reader, spec, raw, unit_text, sheet, r)
+    out[key] = ParameterValue(value, where, raw, unit_text.strip())
 
 
 def _parameter_value(reader, spec, raw, unit_text, sheet, r):

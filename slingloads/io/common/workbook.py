@@ -38,7 +38,7 @@ from pathlib import Path
 
 from openpyxl.utils import get_column_letter
 
-from slingloads.errors import InputError
+from slingloads.errors import ErrorCollector, InputError
 from slingloads.io.common.locate import Place, located, place_error
 from slingloads.io.common.schema import FLAG, INTEGER, NOTE_COLUMNS, TEXT
 from slingloads.io.common.table import Table, cell_name
@@ -246,12 +246,14 @@ class WorkbookReader:
         if not rows or rows[0][0] != 1:
             raise self.error("sheet has no header row (row 1)", sheet=spec.name, cell="A1")
         header = rows[0][1]
-        found = self._columns(spec, header)
+        errors = ErrorCollector()  # every bad header, then every bad cell, at once
+        found, named = self._columns(spec, header, errors)
         last = max(header)
         records = rows[1:]
         for column in spec.columns:
-            if column.required and column.name not in found:
-                raise self._missing_column(spec, column, header, records, last)
+            if column.required and column.name not in named:
+                errors.add(self._missing_column(spec, column, header, records, last))
+        errors.raise_if_any()
         columns = self._columns_at_once(spec, header, found, records)
         if columns is None:  # some cell breaks a rule: the careful path names the first one
             columns = self._records(spec, header, found, records)
@@ -287,19 +289,21 @@ class WorkbookReader:
         values = {c.name: [] for c in spec.columns if c.name in found}
         raw = {name: [] for name in values}
         cells = {name: [] for name in values}
+        errors = ErrorCollector()  # every bad cell of the table, in the order of the sheet
         for r, row in records:
             for col in row:
                 if col not in header:
-                    raise self.error("value in a column without a header (give the column a "
-                                     "header, or clear the cell)", echo(row[col]),
-                                     spec.name, cell_name(r, col))
+                    errors.add(self.error("value in a column without a header (give the "
+                                          "column a header, or clear the cell)",
+                                          echo(row[col]), spec.name, cell_name(r, col)))
             for col, column, factor, unit in found.values():
                 value = row.get(col)
                 where = cell_name(r, col)
-                values[column.name].append(
-                    self._value(value, column, factor, unit, spec.name, where))
+                values[column.name].append(errors.call(
+                    self._value, value, column, factor, unit, spec.name, where))
                 raw[column.name].append(value)
                 cells[column.name].append(where)
+        errors.raise_if_any()
         arrays = {name: as_column(vals, found[name][1].kind) for name, vals in values.items()}
         return arrays, raw, cells
 
@@ -349,46 +353,53 @@ class WorkbookReader:
             values[name] = array
         return values, raw, cells
 
-    def _columns(self, spec, header):
-        """``{column name: (column number, Column, SI factor, unit as written)}``."""
+    def _columns(self, spec, header, errors):
+        """``{column name: (column number, Column, SI factor, unit as written)}`` of the
+        columns read, and the names of every column a header names (read or in error); the
+        error of each bad header is added to ``errors`` (an :class:`ErrorCollector`)."""
         exact = {c.name: c for c in spec.columns}
         folded = {}
         for c in spec.columns:
             folded.setdefault(c.name.lower(), []).append(c)
-        found = {}
+        found, named = {}, set()
         for col in sorted(header):
-            text = header[col]
-            where = cell_name(1, col)
-            if not isinstance(text, str):
-                text = as_text(text)
-            match = _HEADER.match(text)
-            name = (match.group("name") if match else text).strip()
-            unit = match.group("unit") if match and match.group("unit") is not None else None
-            if name.lower() in NOTE_COLUMNS:
-                header[col] = None  # a note column: its cells are free text
-                continue
-            # exact names first (CL and Cl differ), else a unique case-insensitive match
-            candidates = folded.get(name.lower(), [])
-            column = exact.get(name) or (candidates[0] if len(candidates) == 1 else None)
-            if column is None:
-                raise self.error(f"unknown column; valid columns are "
-                                 f"{[c.header for c in spec.columns]}", echo(text),
+            errors.call(self._column, spec, header, col, exact, folded, found, named)
+        return found, named
+
+    def _column(self, spec, header, col, exact, folded, found, named):
+        """Add header ``col`` to ``found`` (and its name to ``named``), or raise its error."""
+        text = header[col]
+        where = cell_name(1, col)
+        if not isinstance(text, str):
+            text = as_text(text)
+        match = _HEADER.match(text)
+        name = (match.group("name") if match else text).strip()
+        unit = match.group("unit") if match and match.group("unit") is not None else None
+        if name.lower() in NOTE_COLUMNS:
+            header[col] = None  # a note column: its cells are free text
+            return
+        # exact names first (CL and Cl differ), else a unique case-insensitive match
+        candidates = folded.get(name.lower(), [])
+        column = exact.get(name) or (candidates[0] if len(candidates) == 1 else None)
+        if column is None:
+            raise self.error(f"unknown column; valid columns are "
+                             f"{[c.header for c in spec.columns]}", echo(text),
+                             spec.name, where)
+        named.add(column.name)
+        if column.name in found:
+            raise self.error("column appears twice", echo(text), spec.name, where)
+        factor = 1.0
+        if column.kind not in (TEXT, FLAG, INTEGER):
+            if unit is None and column.kind != "dimensionless":
+                raise self.error(f"header needs a unit in brackets, e.g. "
+                                 f"'{column.name} [{column.unit}]'", echo(text),
                                  spec.name, where)
-            if column.name in found:
-                raise self.error("column appears twice", echo(text), spec.name, where)
-            factor = 1.0
-            if column.kind not in (TEXT, FLAG, INTEGER):
-                if unit is None and column.kind != "dimensionless":
-                    raise self.error(f"header needs a unit in brackets, e.g. "
-                                     f"'{column.name} [{column.unit}]'", echo(text),
-                                     spec.name, where)
-                with located(Place(self.file, spec.name, where)):
-                    factor = si_factor(unit or "", column.kind)
-            elif unit is not None and unit.strip() not in ("", "-"):
-                raise self.error(f"column {column.name!r} takes no unit", echo(text),
-                                 spec.name, where)
-            found[column.name] = (col, column, factor, (unit or "").strip())
-        return found
+            with located(Place(self.file, spec.name, where)):
+                factor = si_factor(unit or "", column.kind)
+        elif unit is not None and unit.strip() not in ("", "-"):
+            raise self.error(f"column {column.name!r} takes no unit", echo(text),
+                             spec.name, where)
+        found[column.name] = (col, column, factor, (unit or "").strip())
 
     def _value(self, raw, column, factor, unit, sheet, where):
         header = f"{column.name} [{unit}]" if unit else column.header  # as written

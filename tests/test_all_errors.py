@@ -1,0 +1,94 @@
+"""A workbook with several mistakes is refused once, with every mistake named at its cell.
+
+The reference is the rule stated in docs/inputs-and-outputs.md, section 4 ("Every mistake at
+once"): independent steps (the Study sheet row by row, each table cell by cell, the airframe,
+each analysis) are all checked and their errors reported together, in reading order, up to
+:data:`slingloads.errors.MAX_REPORTED_ERRORS`; a step others need stops the reading and the
+message says what was not checked. Each test breaks known cells of a valid copy of the example
+and checks that exactly those cells are named.
+"""
+
+from __future__ import annotations
+
+import openpyxl
+import pytest
+from hostile import EXAMPLE
+
+from slingloads.cli import main
+from slingloads.errors import MAX_REPORTED_ERRORS, InputError, InputErrors
+from slingloads.io.study import read_study
+
+
+def _copy(tmp_path, edits, name="many.xlsx"):
+    book = openpyxl.load_workbook(EXAMPLE)
+    for sheet, cell, value in edits:
+        book[sheet][cell] = value
+    path = tmp_path / name
+    book.save(path)
+    return path
+
+
+def test_errors_in_three_analyses_are_named_together(tmp_path, capsys):
+    """Bad cells on the loads', the lateral study's and the multibody model's sheets: one
+    refusal naming the three cells in reading order; exit 2; nothing written."""
+    path = _copy(tmp_path, [("AeroEnvelope", "B3", "fast"), ("LateralMotions", "C2", "x"),
+                            ("MultibodyManoeuvres", "B3", "nope")])
+    with pytest.raises(InputErrors) as info:
+        read_study(path)
+    cells = [(e.sheet, e.cell) for e in info.value.errors]
+    assert cells == [("AeroEnvelope", "B3"), ("LateralMotions", "C2"),
+                     ("MultibodyManoeuvres", "B3")]
+    assert (info.value.sheet, info.value.cell) == ("AeroEnvelope", "B3")  # the first one
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "3 errors in the input" in err
+    for text in ("'fast'", "value 'x'", "'nope'", "nothing was written"):
+        assert text in err
+    assert not out.exists()
+
+
+def test_every_bad_cell_of_the_airframe_sheets(tmp_path):
+    """Two bad cells of MassItems and one of Stations, besides a bad Study row: the four are
+    named; the analyses' sheets are not checked, and the message says so."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    book["MassItems"]["C2"] = "heavy"
+    book["MassItems"]["D3"] = None
+    book["Stations"]["B3"] = "x"
+    book["Study"].append(["parachute aera", 1, "m^2"])
+    path = tmp_path / "airframe.xlsx"
+    book.save(path)
+    with pytest.raises(InputErrors) as info:
+        read_study(path)
+    got = [(e.sheet, e.cell) for e in info.value.errors]
+    row = book["Study"].max_row
+    assert got == [("Study", f"A{row}"), ("MassItems", "C2"), ("MassItems", "D3"),
+                   ("Stations", "B3")]
+    assert not info.value.complete
+    assert "checked once the Study sheet reads" in str(info.value)
+
+
+def test_one_error_is_reported_as_before(tmp_path):
+    """A single bad cell gives a plain located InputError, not a list of one."""
+    path = _copy(tmp_path, [("LateralMotions", "C2", "x")])
+    with pytest.raises(InputError) as info:
+        read_study(path)
+    assert not isinstance(info.value, InputErrors)
+    assert (info.value.sheet, info.value.cell) == ("LateralMotions", "C2")
+
+
+def test_reading_stops_at_the_limit(tmp_path):
+    """More bad cells than the limit: exactly MAX_REPORTED_ERRORS are named, the first ones in
+    the order of the sheet, and the message says reading stopped (bounded work and text)."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    ws = book["MassItems"]
+    bad = [f"{col}{r}" for r in range(2, ws.max_row + 1) for col in "CDEF"]  # mass, x, y, z
+    assert len(bad) > MAX_REPORTED_ERRORS + 5, "the example has enough mass items"
+    for cell in bad:
+        ws[cell] = "x"
+    path = tmp_path / "limit.xlsx"
+    book.save(path)
+    with pytest.raises(InputErrors) as info:
+        read_study(path)
+    assert [e.cell for e in info.value.errors] == bad[:MAX_REPORTED_ERRORS]
+    assert "reading stopped" in str(info.value)
