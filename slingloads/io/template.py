@@ -7,6 +7,7 @@ from openpyxl import Workbook
 from openpyxl.comments import Comment
 from openpyxl.styles import Alignment, Font, PatternFill
 
+from slingloads.errors import MAX_REPORTED_ERRORS
 from slingloads.io.analyses import sections
 from slingloads.io.common.atomic import atomic_file
 from slingloads.io.common.schema import FLAG, INTEGER, STUDY_SHEET, TEXT
@@ -27,7 +28,8 @@ INTRO = (
     f"{MAX_MAGNITUDE['length']:g} m, {MAX_MAGNITUDE['mass']:g} kg, "
     f"{MAX_MAGNITUDE['force']:g} N); a sheet may store at most {MAX_SHEET_CELLS:,} cells "
     f"(formatted empty ones included) and the Study sheet {MAX_STUDY_ROWS:,} rows; a value in "
-    "a column without a header is an error."
+    "a column without a header is an error. A workbook's mistakes are reported together, "
+    f"each at its cell (at most {MAX_REPORTED_ERRORS} at once)."
 )
 
 
