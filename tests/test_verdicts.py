@@ -44,6 +44,48 @@ def test_envelope_names_the_closed_form_responses():
     assert "static departure" in env.reason(1)
 
 
+def test_a_window_shorter_than_the_slowest_mode_is_inconclusive():
+    """A lightly damped 80 s-period swing, x = 10 deg exp(-0.005 t) sin(w t), seen for a third
+    of its period (26.7 s): the first half spans the phases [0, pi/3] (half range
+    sin(pi/3) / 2 = 0.43 x 10 deg), the second [pi/3, 2pi/3] about the crest (half range
+    (1 - sin(pi/3)) / 2 = 0.07 x 10 deg, centred near 8.6 deg), so the envelope alone reads a
+    decay onto an 8.6 deg offset: a static departure. Told the mode's period, the test says
+    inconclusive, with the window in periods; over 400 s (5 periods) the same swing is
+    convergent. A growth stays divergent however short the window (the conservative side),
+    and a response settled about its trim stays convergent."""
+    w = 2 * np.pi / 80.0
+    t = np.arange(0.0, 400.0 + 1e-9, 0.05)
+    swing = A10 * np.exp(-0.005 * t) * np.sin(w * t)
+    short = t <= 80.0 / 3
+    blind = vd.envelope(t[short], swing[short], 0.0, 0.0, False)
+    assert blind.verdict[0] == "static departure"
+    # mean of sin over [pi/3, 2pi/3]: 3 / pi, times the decay exp(-0.005 x 20 s) mid-half
+    assert np.degrees(blind.offset[0]) == pytest.approx(10 * 3 / np.pi * np.exp(-0.1), abs=0.05)
+    told = vd.envelope(t[short], swing[short], 0.0, 0.0, False, period=80.0)
+    assert told.verdict[0] == "inconclusive"
+    assert "0.33 periods of the slowest relevant mode (80 s)" in told.reason(0)
+    assert vd.envelope(t, swing, 0.0, 0.0, False, period=80.0).verdict[0] == "convergent"
+    grows = A10 * np.exp(0.05 * t[short]) * np.sin(2 * np.pi / 4.0 * t[short])
+    settled = 0.1 * A10 * np.exp(-0.5 * t[short]) * np.cos(2 * np.pi / 4.0 * t[short])
+    env = vd.envelope(t[short], np.vstack([grows, settled]), 5.0, 0.0, False, period=80.0)
+    assert list(env.verdict) == ["divergent", "convergent"]
+
+
+def test_slowest_period_takes_the_modes_of_the_group():
+    """Of three modes (yaw 14.6 s, lateral swing 8.6 s with a small yaw part, an aperiodic
+    one), the slowest in which yaw takes part (amplitude at least half the largest) is the
+    14.6 s mode; for the lateral group the 8.6 s mode; none without modes."""
+    import pandas as pd
+    modes = pd.DataFrame({"period [s]": [14.6, 8.6, np.inf],
+                          "yaw amplitude [-]": [1.0, 0.1, 1.0],
+                          "lateral amplitude [-]": [0.3, 1.0, 0.0],
+                          "longitudinal amplitude [-]": [0.0, 0.0, 0.0],
+                          "parachute amplitude [-]": [0.0, 0.0, 0.0]})
+    assert vd.slowest_period(modes, "yaw") == 14.6
+    assert vd.slowest_period(modes, "lateral") == 8.6
+    assert math.isnan(vd.slowest_period(None))
+
+
 def test_settling_time_of_an_exponential_decay():
     """y = A exp(-sigma t) leaves a band b for the last time at t = ln(A / b) / sigma; a
     signal that never leaves the band settles at 0; one that ends outside never settles."""

@@ -658,7 +658,10 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     outside = hist.left_table | np.isfinite(over_at) | np.isfinite(unlinear_at)
     sustained = ~np.isfinite(free)
     test = metric.envelope_test
-    env = vd.envelope(t, hist.beta, np.where(sustained, onset, free), trim, sustained, test)
+    period_lin = np.where(np.isfinite(omega) & (zeta_lin < 1),
+                          2 * np.pi / (omega * np.sqrt(np.abs(1 - zeta_lin**2))), np.nan)
+    env = vd.envelope(t, hist.beta, np.where(sustained, onset, free), trim, sustained, test,
+                      period_lin)
     response = env.verdict
     verdict = np.where(outside, vd.OUTSIDE_DOMAIN,
                        np.where((response == vd.CONVERGENT) & ~lin_stable, vd.INCONCLUSIVE,
@@ -666,8 +669,6 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
     excursion = np.nanmax(np.abs(hist.beta - trim[:, None]), axis=1)
     band = metric.settle_fraction * excursion
     settling = np.where(np.isin(verdict, vd.ACCEPTED) & ~sustained, settling, np.nan)
-    period_lin = np.where(np.isfinite(omega) & (zeta_lin < 1),
-                          2 * np.pi / (omega * np.sqrt(np.abs(1 - zeta_lin**2))), np.nan)
     checks = [vd.damping_check(zl, pl if np.isfinite(zl) else np.nan, z, pl, "yaw (1-DOF)")
               for zl, z, pl in zip(zeta_log.tolist(), zeta_lin.tolist(), period_lin.tolist(),
                                    strict=True)]

@@ -27,8 +27,11 @@ the same rule, applied to its sampled response:
     and the least-damped relevant mode of the linear model is stable (checked by the caller,
     which otherwise says ``inconclusive`` with the reason).
 ``inconclusive``
-    Less than :attr:`EnvelopeTest.min_window` seconds observed after the input, or a
-    response that decays while the linear model says the mode grows.
+    Less than :attr:`EnvelopeTest.min_window` seconds observed after the input; or less than
+    :attr:`EnvelopeTest.min_periods` periods of the slowest relevant mode of the linear model
+    (given by the caller) for a run that neither grows nor has settled about its trim: in a
+    window shorter than its period a slowly decaying swing looks like a settled offset or a
+    steady oscillation; or a response that decays while the linear model says the mode grows.
 
 No label overrides another: the rules are tried in the order above and the first that holds
 is the verdict. A design value (area, angle, speed) is only ever taken from runs whose
@@ -104,6 +107,9 @@ class EnvelopeTest:
         departure, > 0. [rad]
     min_window : float
         Least observed time after the input for a verdict, > 0. [s]
+    min_periods : float
+        Least observed time, in periods of the slowest relevant mode (when the caller gives
+        it), for any verdict but divergent or convergent within the band, > 0. [-]
     """
 
     growth: float = 1.1
@@ -111,9 +117,10 @@ class EnvelopeTest:
     band: float = math.radians(1.0)
     offset: float = math.radians(1.0)
     min_window: float = 10.0
+    min_periods: float = 2.0
 
     def __post_init__(self):
-        for name in ("growth", "decay", "band", "offset", "min_window"):
+        for name in ("growth", "decay", "band", "offset", "min_window", "min_periods"):
             value = float(getattr(self, name))
             if not math.isfinite(value) or value <= 0:
                 raise InputError(f"envelope test {name} must be > 0", value)
@@ -143,7 +150,8 @@ class EnvelopeTest:
                 f"{math.degrees(self.offset):.3g} deg from its trim is a static departure, "
                 f"else convergent (if its linear mode is stable); otherwise limit cycle "
                 f"(bounded under a sustained input); inconclusive with less than "
-                f"{self.min_window:g} s observed")
+                f"{self.min_window:g} s observed, or, unless divergent or settled about its "
+                f"trim, less than {self.min_periods:g} periods of the slowest relevant mode")
 
 
 @dataclass(frozen=True)
@@ -157,12 +165,18 @@ class Envelope:
         Half peak-to-peak amplitude over the first and the second half of the window. [rad]
     offset : ndarray
         Mean over the second half minus the trim. [rad]
+    window : ndarray
+        Time observed after the input. [s]
+    period : ndarray
+        Period of the slowest relevant mode, NaN when not given. [s]
     """
 
     verdict: np.ndarray
     first: np.ndarray
     second: np.ndarray
     offset: np.ndarray
+    window: np.ndarray
+    period: np.ndarray
 
     def reason(self, j, what="sideslip"):
         """Why run ``j`` got its envelope verdict, with its numbers.
@@ -183,14 +197,20 @@ class Envelope:
         v = str(self.verdict[j])
         a1, a2, off = d(self.first[j]), d(self.second[j]), d(self.offset[j])
         if v == INCONCLUSIVE:
-            return "too little time observed after the input"
+            w, period = float(self.window[j]), float(self.period[j])
+            if np.isfinite(a1) and np.isfinite(a2) and np.isfinite(period):
+                return (f"{w:.3g} s observed after the input, {w / period:.2g} periods of "
+                        f"the slowest relevant mode ({period:.3g} s), and the {what} neither grows "
+                        f"nor has settled about its trim ({a1:.3g} -> {a2:.3g} deg over the "
+                        f"two halves, centred {off:+.3g} deg from trim): run longer")
+            return f"too little time observed after the input ({w:.3g} s)"
         amp = f"{what} amplitude {a1:.3g} -> {a2:.3g} deg over the two halves"
         if v == STATIC_DEPARTURE:
             return f"{amp}; settles {off:+.3g} deg from trim (static departure)"
         return f"{amp}; centred {off:+.3g} deg from trim"
 
 
-def envelope(time, y, start, reference, sustained, test=None):
+def envelope(time, y, start, reference, sustained, test=None, period=None):
     """Envelope verdict of a batch of responses (module notes). NaN samples (after a stop)
     are ignored.
 
@@ -209,6 +229,9 @@ def envelope(time, y, start, reference, sustained, test=None):
         Whether the run's input is sustained (a continuous gust).
     test : EnvelopeTest, optional
         The factors, band, offset and least window (default :class:`EnvelopeTest`).
+    period : float or array_like, shape (runs,), optional
+        Period of the slowest relevant mode of each run's linear model (NaN or None: not
+        known, no check). [s]
 
     Returns
     -------
@@ -242,14 +265,20 @@ def envelope(time, y, start, reference, sustained, test=None):
     a1, _ = half_range(one)
     a2, centre = half_range(two)
     offset = centre - reference
-    short = ~((last - start) >= test.min_window) | ~np.isfinite(a1) | ~np.isfinite(a2)
+    window = last - start
+    period = np.broadcast_to(np.asarray(np.nan if period is None else period, float),
+                             (runs,))
+    short = ~(window >= test.min_window) | ~np.isfinite(a1) | ~np.isfinite(a2)
     grows = (a2 > test.growth * a1) & (a2 > test.band)
     settles = (a2 <= test.band) | (a2 < test.decay * a1)
     off = np.abs(offset) > test.offset
+    slow = np.isfinite(period) & (window < test.min_periods * period)
+    centred = (a2 <= test.band) & ~off
     verdict = np.select(
-        [short, grows, settles & off, settles, sustained],
-        [INCONCLUSIVE, DIVERGENT, STATIC_DEPARTURE, CONVERGENT, BOUNDED], default=LIMIT_CYCLE)
-    return Envelope(verdict.astype(object), a1, a2, offset)
+        [short, grows, slow & ~centred, settles & off, settles, sustained],
+        [INCONCLUSIVE, DIVERGENT, INCONCLUSIVE, STATIC_DEPARTURE, CONVERGENT, BOUNDED],
+        default=LIMIT_CYCLE)
+    return Envelope(verdict.astype(object), a1, a2, offset, window, period)
 
 
 def settling_time(time, y, onset, reference, band):
@@ -329,6 +358,31 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name):
             f"{DAMPING_TOLERANCE:g}: amplitude-dependent (nonlinear) or several modes")
 
 
+def slowest_period(modes, group="yaw"):
+    """Period of the slowest oscillatory mode of a linear model in which ``group`` takes part
+    (its angular amplitude at least half the largest group's in that mode).
+
+    Parameters
+    ----------
+    modes : pandas.DataFrame or None
+        One row per mode with ``period [s]`` and ``<group> amplitude [-]`` columns (the
+        multibody model's ``modes_frame()``).
+    group : str
+        ``"yaw"``, ``"lateral"``, ``"longitudinal"`` or ``"parachute"``.
+
+    Returns
+    -------
+    float
+        [s]; NaN without modes or without such an oscillatory mode.
+    """
+    if modes is None or len(modes) == 0:
+        return float("nan")
+    amp = modes[[c for c in modes.columns if c.endswith(" amplitude [-]")]]
+    takes_part = modes[f"{group} amplitude [-]"] >= 0.5 * amp.max(axis=1)
+    period = modes["period [s]"].where(takes_part & np.isfinite(modes["period [s]"]))
+    return float(period.max()) if period.notna().any() else float("nan")
+
+
 def nearest_mode(period, modes, zeta=float("nan")):
     """The mode a response was measured on: among the modes whose period lies within
     :data:`PERIOD_TOLERANCE` of the response's, the one of nearest damping ratio; else the
@@ -372,4 +426,4 @@ __all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT"
            "EIGENVALUE_TOLERANCE",
            "INCONCLUSIVE", "LIMIT_CYCLE", "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE",
            "STATIC_DEPARTURE", "VERDICTS", "Envelope", "EnvelopeTest", "damping_check",
-           "envelope", "nearest_mode", "settling_time", "worst"]
+           "envelope", "nearest_mode", "settling_time", "slowest_period", "worst"]

@@ -350,8 +350,12 @@ class RunResult:
         h = self.histories()
         trim_beta = self.trim.quantity("beta")
         signals = np.vstack([h["beta"], h["swing lateral"], h["swing longitudinal"]])
+        linear = self.linear_at_condition
+        modes = linear.modes_frame() if linear is not None else None
+        periods = [vd.slowest_period(modes, group)
+                   for group in ("yaw", "lateral", "longitudinal")]
         env = vd.envelope(self.time, signals, window, [trim_beta, np.nan, np.nan], sustained,
-                          ENVELOPE)
+                          ENVELOPE, periods)
         verdict, reason = str(env.verdict[0]), env.reason(0, "sideslip")
         # the swing pendulum modes are lightly damped whatever the parachute: a swing counts
         # only when its envelope grows (the sideslip decides the rest), and is named
@@ -363,7 +367,6 @@ class RunResult:
                 reason += (f"; {what} not decaying ({math.degrees(env.first[k]):.3g} -> "
                            f"{math.degrees(env.second[k]):.3g} deg: a lightly damped pendulum "
                            "mode)")
-        linear = self.linear_at_condition
         if verdict == vd.CONVERGENT and linear is not None and not linear.stable:
             verdict = vd.INCONCLUSIVE
             reason += (f"; the response decays but the trim's linear model is not stable "
