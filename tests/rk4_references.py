@@ -132,12 +132,13 @@ def _rk4_group(pendulums, motions, nodes, jumps, rigid):
         if rigid:
             alive[:] = alive & taut
             taut = alive.copy()
-        return np.stack([np.abs(load_angle(th1, th2)), np.abs(th1), ratio, -ratio]), taut
+        side = np.maximum(ratio, 0.0) * np.abs(np.sin(th1))
+        return np.stack([np.abs(load_angle(th1, th2)), np.abs(th1), ratio, -ratio, side]), taut
 
     kin = batch.kinematics(0.0)
     k1, tension = f(kin, x)
     y1, ok1 = signals(x, tension)
-    counts = np.array([True, True, False, False])[:, None]  # angles count only when taut
+    counts = np.array([True, True, False, False, False])[:, None]  # angles count only when taut
     best = np.where(counts & ~ok1, -np.inf, y1)
     t_best = np.zeros_like(y1)
     y0 = ok0 = h_prev = None
@@ -176,4 +177,5 @@ def _rk4_group(pendulums, motions, nodes, jumps, rigid):
         y0, y1, ok0, ok1, h_prev = y1, y2, ok1, ok2, h
     best = np.where(np.isfinite(best), best, np.nan)
     best[0] = np.minimum(best[0], np.pi)  # a parabola through the wrap at pi must not pass it
-    return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3])
+    return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3],
+                      best[4], t_best[4])

@@ -50,8 +50,9 @@ PARAMETERS = LAYOUT.names
 MASS, INERTIA, E, LENGTH = LAYOUT["mass"], LAYOUT["inertia"], LAYOUT["e"], LAYOUT["length"]
 STIFFNESS, C_LAT, C_ROLL = LAYOUT["stiffness"], LAYOUT["c_lat"], LAYOUT["c_roll"]
 G, H_D = LAYOUT["g"], LAYOUT["h_d"]
-#: Signals whose running peak is kept: |theta1 - theta2|, |theta1|, T/(m g), -T/(m g).
-N_SIGNALS = 4
+#: Signals whose running peak is kept: |theta1 - theta2|, |theta1|, T/(m g), -T/(m g), and
+#: the cable's lateral force on the hook over the load's weight, max(T, 0) |sin theta1| / (m g).
+N_SIGNALS = 5
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
 _inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
@@ -144,6 +145,7 @@ def _signals(rigid, x, tension, weight, alive, y):
     y[1] = abs(th1)
     y[2] = ratio
     y[3] = -ratio
+    y[4] = max(ratio, 0.0) * abs(math.sin(th1))
     return taut, alive
 
 
@@ -172,7 +174,7 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
         The time grid. [s]
     jumps : ndarray of bool, shape (nodes,)
         Where S'' may jump.
-    best, t_best : ndarray, shape (runs, 4)
+    best, t_best : ndarray, shape (runs, N_SIGNALS)
         Receive the peaks (-inf where none counted) and their times [s].
     """
     runs, n = x0.shape

@@ -166,7 +166,8 @@ def summary_tables(result, units="SI"):
          if st.limits is not None else "not checked"),
         ("cases whose lateral cable force passes 10 % of the carrier's weight",
          int(np.count_nonzero(st.carrier_force_ratio > CARRIER_FORCE_LIMIT)), "-",
-         f"largest T sin(theta1) / (m_carrier g) bound {np.nanmax(st.carrier_force_ratio):.3g}"
+         f"largest T sin(theta1) / (m_carrier g) over the runs "
+         f"{np.nanmax(st.carrier_force_ratio):.3g}"
          "; above 0.1 the frozen-carrier path is not assured (flagged, sheet Runs)"
          if st.limits is not None and np.isfinite(st.limits.carrier_mass) else "not checked"),
         ("cases outside the model's domain", st.outside_domain, "-",
