@@ -336,7 +336,8 @@ def test_compiled_sweep_equals_the_numpy_sweep():
     assert h_fast == h_ref
     assert ref.slack.any()  # the hard stop slackens the short elastic cable
     for name in ("max_load_angle", "t_max_load_angle", "max_rope_angle", "t_max_rope_angle",
-                 "max_tension_ratio", "t_max_tension_ratio", "min_tension_ratio"):
+                 "max_tension_ratio", "t_max_tension_ratio", "min_tension_ratio",
+                 "max_side_force_ratio", "t_max_side_force_ratio"):
         assert_allclose(getattr(fast, name), getattr(ref, name), rtol=1e-12, atol=1e-12,
                         err_msg=name)
 
