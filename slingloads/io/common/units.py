@@ -133,8 +133,8 @@ def report_text(text, units):
 
     Examples
     --------
-    >>> report_text("quintic step 0.04246 m in 0.5 s (peak 0.9807 m/s^2)", "US")
-    'quintic step 1.672 in in 0.5 s (peak 3.218 ft/s^2)'
+    >>> report_text("quintic step 0.04246 m over 0.5 s (peak 0.9807 m/s^2)", "US")
+    'quintic step 1.672 in over 0.5 s (peak 3.218 ft/s^2)'
     >>> report_text("load scale 443,995 N m; peak jerk <= 1.94 m/s^3", "US")
     'load scale 3,929,687 lbf in; peak jerk <= 6.365 ft/s^3'
     """
