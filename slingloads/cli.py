@@ -100,8 +100,10 @@ def _campaign_options(p):
                    help="local worker processes (default: the workbook's 'campaign workers', "
                         "else one per core, or this process for a small campaign)")
     g.add_argument("--cache", metavar="DIR", default=None,
-                   help="run cache folder, outside --out (default: $SLINGLOADS_CACHE, else "
-                        "the user cache folder, ~/.cache/slingloads/campaign)")
+                   help="run cache folder, outside --out, which is replaced as a whole "
+                        "(default: $SLINGLOADS_CACHE, else the user cache folder, "
+                        "~/.cache/slingloads/campaign; runs are keyed by input, and the "
+                        "Summary counts only this matrix's)")
     g.add_argument("--scheduler-timeout", metavar="SECONDS", type=float, default=None,
                    help="time the scheduler has to answer (default: the workbook's, 10 s)")
 

@@ -143,6 +143,22 @@ def test_second_run_comes_from_the_cache(tiny, tmp_path):
                                   pd.read_excel(out / "tiny-campaign.xlsx", "Metrics"))
 
 
+def test_summary_states_where_the_cache_is_and_what_it_counts(tiny):
+    """The Summary names the run cache folder (here the one chosen by --cache), says why it
+    lies outside the output folder and that its counts are this matrix's runs only (the
+    rule of slingloads.runs.cache); the default folder is named as the default."""
+    from slingloads.runs.cache import default_cache_dir, where_stated
+
+    _, out, cache = tiny
+    frame = pd.read_excel(out / "tiny-campaign.xlsx", sheet_name="Summary", header=None)
+    row = frame[frame[0] == "run cache folder"].iloc[0]
+    assert row[1] == str(cache)
+    assert row[3] == "chosen (--cache)"
+    notes = " ".join(frame[0].dropna().astype(str))
+    assert "outside the output folder" in notes and "this matrix's only" in notes
+    assert where_stated(default_cache_dir())[0] == "the default, the user cache folder"
+
+
 def test_edited_workbook_reruns_only_what_changed(tiny, tmp_path):
     """Area factors 1.2, 1.6 -> 1.2, 1.4: the 1.2 run and the ramp are found (2), the 1.4
     run is computed (1). A new cable EA changes every run of the matrix and the ramp (the

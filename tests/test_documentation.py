@@ -145,8 +145,8 @@ def test_readme_quotes_the_example(example_results):
     zeta, half, rate, roll_zeta = _quoted(
         r"damping ratio (\d+\.\d+), half amplitude in (\d+\.\d+) s; the least damped mode is "
         r"the hung body's roll, (\d+\.\d+) rad/s, damping ratio (\d+\.\d+)", "README.md")
-    assert _agrees(zeta, modes.loc["yaw / lateral swing", "damping ratio [-]"])
-    assert _agrees(half, modes.loc["yaw / lateral swing", "time to half or double [s]"])
+    assert _agrees(zeta, modes.loc["yaw / lateral swing 1", "damping ratio [-]"])
+    assert _agrees(half, modes.loc["yaw / lateral swing 1", "time to half or double [s]"])
     assert _agrees(rate, modes.loc["roll", "natural frequency [rad/s]"])
     assert _agrees(roll_zeta, modes.loc["roll", "damping ratio [-]"])
 

@@ -69,3 +69,17 @@ def test_engineering_spellings(unit, kind, expected):
 def test_negative_exponents_keep_their_sign():
     """A hyphen is a product only between two unit names: kg m s^-2 is a newton."""
     assert si_factor("kg*m*s^-2", "force") == pytest.approx(1.0, rel=1e-15)
+
+
+def test_sentences_convert_whole_numbers_and_jerks():
+    """A quoted SI quantity in a US sentence is converted whole: 443,995 N m (thousands
+    separator) = 443,995 / (4.4482216152605 x 0.0254) = 3,929,687 lbf in, where the last
+    group alone used to be converted ("443,8,806 lbf in"); a jerk of 1.94 m/s^3 =
+    1.94 / 0.3048 = 6.365 ft/s^3 (was left in SI); SI reports are unchanged."""
+    from slingloads.io.common.units import report_text
+
+    text = "tolerance 1e-08 x load scale 443,995 N m; peak jerk <= 1.94 m/s^3"
+    assert report_text(text, "US") == ("tolerance 1e-08 x load scale 3,929,687 lbf in; "
+                                       "peak jerk <= 6.365 ft/s^3")
+    assert report_text(text, "SI") == text
+    assert report_text("cable 1,234.5 m", "US") == f"cable {1234.5 / 0.0254:,.0f} in"

@@ -131,7 +131,7 @@ class _DisplacementStep(_Motion):
 
     def describe(self):
         """One-line description for tables."""
-        return (f"{self.law} step {self.amplitude:.4g} m in {self.duration:.4g} s "
+        return (f"{self.law} step {self.amplitude:.4g} m over {self.duration:.4g} s "
                 f"(peak {self.peak_acceleration:.4g} m/s^2)")
 
     def _params(self):

@@ -30,7 +30,10 @@ its metrics as JSON in the file's metadata.
   cache (the runs kept in memory for this report), with a warning naming the folder.
 
 The cache lives **outside** the output folder: the reports are published by replacing that
-folder as a whole. Default location: ``$SLINGLOADS_CACHE``, else ``$XDG_CACHE_HOME/slingloads``,
+folder as a whole, so a cache inside it would be lost at every run. It is shared by the
+studies that use it, each run filed under its key, and a report counts only its own matrix's
+runs; the campaign Summary states where it is and why (:func:`where_stated`). Default
+location: ``$SLINGLOADS_CACHE``, else ``$XDG_CACHE_HOME/slingloads``,
 else ``~/.cache/slingloads`` (``%LOCALAPPDATA%\\slingloads`` on Windows), each with a
 ``campaign`` sub-folder; ``--cache DIR`` chooses another. Deleting the folder is always safe.
 """
@@ -76,6 +79,38 @@ def default_cache_dir():
         return Path(os.environ["LOCALAPPDATA"]) / "slingloads" / "campaign"
     base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
     return Path(base) / "slingloads" / "campaign"
+
+
+def where_stated(cache_dir):
+    """Where the run cache is and why, in the words of a report: ``(choice, why)``, the
+    default folder or the one chosen, then that it lies outside the output folder and is
+    keyed by input (so a report counts only its own matrix's runs).
+
+    Parameters
+    ----------
+    cache_dir : path-like
+        The cache folder of the campaign.
+
+    Returns
+    -------
+    tuple of str
+
+    Examples
+    --------
+    >>> where_stated("/data/runs")[0]
+    'chosen (--cache)'
+    """
+    try:
+        default = Path(cache_dir).resolve() == default_cache_dir().resolve()
+    except (OSError, RuntimeError):
+        default = False
+    choice = "the default, the user cache folder" if default else "chosen (--cache)"
+    why = ("The run cache lies outside the output folder, which is replaced as a whole when "
+           "the reports are published. It is shared by every study that uses it, each run "
+           "filed under the SHA-256 of its inputs and of the code: the runs counted here are "
+           "this matrix's only. Deleting it is safe (the runs are computed again); "
+           "$SLINGLOADS_CACHE or --cache DIR moves it.")
+    return choice, why
 
 
 def _plain(value):

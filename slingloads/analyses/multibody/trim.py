@@ -518,6 +518,10 @@ def _newton(problems):
 #: Motions the modes are named after, and the kinetic energy each is measured by.
 MOTIONS = ("longitudinal swing", "lateral swing", "cable stretch", "roll", "pitch", "yaw",
            "parachute", "carrier")
+#: Order of the angular groups in a two-group mode name (indices of
+#: :meth:`LinearModel.angles`: 0 longitudinal, 1 lateral, 2 yaw): yaw first, as the
+#: parachute is sized on the yaw modes.
+NAME_ORDER = (2, 1, 0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -612,8 +616,10 @@ class LinearModel:
         """Name of mode k: cable stretch, carrier or parachute by kinetic energy (> 50 %),
         otherwise the group of largest angular amplitude among longitudinal, lateral and yaw
         (swing when the cable angle is at least 30 % of the airframe angle, else pitch or roll),
-        with the second group if >= 25 % of it. (The line's hinge angles are measured in body
-        axes and follow every airframe rotation, so they do not name a mode.)"""
+        with the second group if >= 25 % of it, the two always in the order of
+        :data:`NAME_ORDER` (yaw, lateral, longitudinal), so that a mode has one name whichever
+        of its groups leads. (The line's hinge angles are measured in body axes and follow
+        every airframe rotation, so they do not name a mode.)"""
         if shares[k][MOTIONS.index("cable stretch")] > 0.5:
             return "cable stretch"
         if shares[k][MOTIONS.index("carrier")] > 0.5:
@@ -634,10 +640,10 @@ class LinearModel:
             return ("yaw", "parachute")[group - 2]
 
         order = np.argsort(angles[k][:3])[::-1]
-        name = label(order[0])
-        if angles[k][order[1]] >= 0.25:
-            name = f"{name} / {label(order[1])}"
-        return name
+        groups = [order[0]] + ([order[1]] if angles[k][order[1]] >= 0.25 else [])
+        # one name per motion pair, whichever leads: the groups in the fixed order of
+        # NAME_ORDER ("yaw / lateral swing", never "lateral swing / yaw")
+        return " / ".join(label(g) for g in sorted(groups, key=NAME_ORDER.index))
 
     def modes_frame(self):
         """One row per mode (complex pairs once): eigenvalue, frequency, damping, name (unique:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from slingloads.analyses.verdicts import CONVERGENT, DIVERGENT, STATIC_DEPARTURE
 from slingloads.constants import FOOT, KNOT
 from slingloads.errors import InputError
 from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
@@ -136,6 +137,15 @@ def _label(row, factor):
     return f"carrier {value}"
 
 
+#: Colour-scale labels: the quantity, its unit and what its sign or range means, in the
+#: verdict words of :mod:`slingloads.analyses.verdicts`.
+DAMPING_SCALE = (f"yaw-mode damping ratio [-]\n> 0 {CONVERGENT}, < 0 {DIVERGENT}\n"
+                 f"(-1: a real root, {STATIC_DEPARTURE})")
+REAL_PART_SCALE = (f"largest real part of the eigenvalues [1/s]\n< 0 {CONVERGENT}, "
+                   f"> 0 {DIVERGENT}")
+AREA_FACTOR_SCALE = "parachute area / neutral static area [-]"
+
+
 def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
     """Yaw-mode damping ratio and largest real part over area x airspeed (one column per
     density altitude), with the minimum stable area per speed, the neutral static area
@@ -147,8 +157,8 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.4)), left=0.7, right=0.1, bottom=0.5,
                       top=0.55, wspace=0.6, hspace=0.45)
     axes = fig.subplots(2, len(altitudes), squeeze=False)
-    quantities = (("yaw mode damping ratio [-]", "yaw-mode damping ratio [-]", "viridis"),
-                  ("largest real part [1/s]", "largest real part [1/s]", "coolwarm"))
+    quantities = (("yaw mode damping ratio [-]", DAMPING_SCALE, "viridis"),
+                  ("largest real part [1/s]", REAL_PART_SCALE, "coolwarm"))
     for j, h in enumerate(altitudes):
         for i, (column, label, cmap) in enumerate(quantities):
             ax = axes[i, j]
@@ -175,8 +185,10 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
             if chosen_area is not None and np.isfinite(chosen_area):
                 ax.axhline(chosen_area * scale, color="m", ls="--", lw=1.0,
                            label=f"chosen {chosen_area / neutral_area:.3g} x neutral")
+            what = ("yaw-mode damping ratio" if column.startswith("yaw")
+                    else "largest real part")
             ax.set(xlabel="airspeed [KEAS]", ylabel=f"parachute area [{unit}]",
-                   title=f"{h / FOOT:.0f} ft density altitude")
+                   title=f"{what}, {h / FOOT:.0f} ft density altitude")
             _small(ax)
             _legend(ax, fontsize=6, loc="upper right")
     c = stability.condition
@@ -295,7 +307,7 @@ def plot_root_locus(loci, title=""):
     sc = ax.scatter(re[~osc], im[~osc], c=f[~osc], cmap="viridis", vmin=norm[0],
                     vmax=norm[1], marker="x", s=22, label="real (aperiodic)")
     bar = fig.colorbar(sc, ax=ax)
-    bar.set_label("area / neutral area [-]", fontsize=7)
+    bar.set_label(AREA_FACTOR_SCALE, fontsize=7)
     bar.ax.tick_params(labelsize=7)
     ax.axvline(0.0, color="r", lw=0.8)
     ax.set(xlabel="real part [1/s]", ylabel="imaginary part [rad/s]", title=title)

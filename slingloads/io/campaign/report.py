@@ -40,6 +40,7 @@ from slingloads.io.common.report import (
     warning_sections,
 )
 from slingloads.io.common.report_writer import ReportKind, write_report
+from slingloads.runs.cache import where_stated
 
 ANALYSIS = "campaign"
 _PNG_DPI = 90
@@ -164,7 +165,8 @@ def _cache_rows(ex, cache):
     """Runs found in the cache and computed now: the matrix's, then those without parachute
     (each group counted on its own, so the matrix's rows never exceed its runs)."""
     parts = ex.parts or ((ex.total, ex.cached, ex.computed),)
-    rows = [("runs found in the cache", parts[0][1], "-", f"cache: {cache}"),
+    rows = [("run cache folder", str(cache), "", where_stated(cache)[0]),
+            ("runs found in the cache", parts[0][1], "-", "of this matrix"),
             ("runs computed now", parts[0][2], "-", f"in {ex.batches} batches")]
     if len(parts) > 1:
         rows += [("runs without parachute found in the cache", parts[1][1], "-", ""),
@@ -257,7 +259,8 @@ def _sheets(report, units, warnings=(), decision=None):
                                "parachute (docs/parachute-sizing.md).")]
                  if decision is not None else []),
                Section("Parachute selection", selection_table(report, units)),
-               Section("Campaign", definition_table(report, units))]
+               Section("Campaign", definition_table(report, units),
+                       note=where_stated(report.cache)[1])]
     limits = no_parachute_table(report, units)
     if limits is not None:
         summary.append(Section("Transport without parachute: largest convergent ramp",

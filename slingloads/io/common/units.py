@@ -113,10 +113,12 @@ EXACT_FACTORS = {
 
 #: SI units a sentence of a report may quote after a number, longest spelling first, and
 #: their quantity kind.
-_TEXT_UNITS = {"kg m^2": "inertia", "kg/m^3": "density", "m/s^2": "acceleration",
-               "m/s": "speed", "m^2": "area", "kN m": None, "N m": "moment", "kN": None,
-               "kg": "mass", "m": "length", "N": "force"}
-_QUOTED = re.compile(r"(?<![\w.^/])(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) ?("
+_TEXT_UNITS = {"kg m^2": "inertia", "kg/m^3": "density", "m/s^3": "jerk",
+               "m/s^2": "acceleration", "m/s": "speed", "m^2": "area", "kN m": None,
+               "N m": "moment", "kN": None, "kg": "mass", "m": "length", "N": "force"}
+#: A quoted number: with thousands separators (``443,995``) or without, whole, as the
+#: sentence wrote it (never its last group alone).
+_QUOTED = re.compile(r"(?<![\w.^/,])(-?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[+-]?\d+)?) ?("
                      + "|".join(re.escape(u) for u in _TEXT_UNITS) + r")(?![\w^/])")
 
 
@@ -131,8 +133,10 @@ def report_text(text, units):
 
     Examples
     --------
-    >>> report_text("quintic step 0.04246 m in 0.5 s (peak 0.9807 m/s^2)", "US")
-    'quintic step 1.672 in in 0.5 s (peak 3.218 ft/s^2)'
+    >>> report_text("quintic step 0.04246 m over 0.5 s (peak 0.9807 m/s^2)", "US")
+    'quintic step 1.672 in over 0.5 s (peak 3.218 ft/s^2)'
+    >>> report_text("load scale 443,995 N m; peak jerk <= 1.94 m/s^3", "US")
+    'load scale 3,929,687 lbf in; peak jerk <= 6.365 ft/s^3'
     """
     if units != "US" or not isinstance(text, str) or not any(c.isdigit() for c in text):
         return text
@@ -141,8 +145,11 @@ def report_text(text, units):
         kind = _TEXT_UNITS[match.group(2)]
         if kind is None:
             return match.group(0)
+        number = float(match.group(1).replace(",", ""))
+        if kind == "jerk":  # a rate of acceleration, in the acceleration's family
+            return f"{_quoted_number(number / FOOT)} ft/s^3"
         unit = REPORT_UNITS["US"][kind]
-        value = float(match.group(1)) * si_factor(match.group(2).replace(" ", "*"), kind)
+        value = number * si_factor(match.group(2).replace(" ", "*"), kind)
         return f"{_quoted_number(value / si_factor(unit, kind))} {unit_label(unit)}"
 
     return _QUOTED.sub(convert, text)
