@@ -602,11 +602,12 @@ def hook_angle_finding(result, lateral=None, justification=""):
     if lateral is not None:
         st = lateral.study
         rec, peak = float(np.degrees(st.recommended_angle)), float(np.degrees(st.max_load_angle))
+        said = (f"recommended design angle {rec:.1f} deg for the lateral directions"
+                if np.isfinite(rec) else "no design angle (see its verdict)")
         evidence = (f"Lateral-step pendulum study of this run: largest load angle from the "
                     f"mast {peak:.1f} deg over {len(st.pendulums)} cases (carrier motions x "
                     f"rope lengths x bodies x stated ranges), margin {st.margin:g}, "
-                    f"recommended design angle {rec:.1f} deg for the lateral directions; see "
-                    f"the lateral report.")
+                    f"{said}; see the lateral report.")
     else:
         rec = peak = None
         evidence = ("No lateral-step pendulum study in this run: nothing here shows that a "
@@ -719,7 +720,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Identification of the report (cover, page headers and footers). Default: from
         ``inputs_digest``.
     findings : dict, optional
-        ``{"lateral": lateral result or None, "hook angle justification": str,
+        ``{"lateral": lateral result or None, "hook angle handoff": HookAngleHandoff or None,
+        "hook angle justification": str,
         "previous envelope source": str}`` for the Summary's findings.
     sfbm_workbook : bool
         Also write ``<stem>-sfbm.xlsx``, every case at every station in report units (the
@@ -879,7 +881,9 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     closure_line = (f"Free-free closure: {'PASS' if closure_passes(result) else 'FAIL'} "
                     f"(largest residual against {CLOSURE_TOLERANCE:g} x the load scale).")
     outside = towed_outside(result)
-    notes = [verdict, "Evidence: " + evidence,
+    hook_handoff = findings.get("hook angle handoff")
+    notes = [verdict, *([hook_handoff.describe()] if hook_handoff is not None else []),
+             "Evidence: " + evidence,
              *(["FLAG: towed cables " + _outside_text(outside)] if outside else []),
              *exceedance_findings(result, findings.get("previous envelope source", "")),
              closure_line]
@@ -895,6 +899,9 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         summary.append(Section(  # the notes above the table, which stays narrow for print
             "Consistency with the other analyses of this run",
             checks.drop(columns=["note"], errors="ignore"), note="\n".join(lines)))
+    if hook_handoff is not None:
+        summary.append(Section("Lateral hook angle: the lateral study's hand-off to the loads",
+                               hook_handoff.to_frame()))
     summary += [
         Section("Study settings", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
@@ -1054,6 +1061,7 @@ def write(result, out_dir, stem, units, study, figures=None, checks=None):
                        conventions=CONVENTIONS)
     options, results = study.report, study.results
     findings = {"lateral": results.lateral,
+                "hook angle handoff": results.loads_hook_angle,
                 "hook angle justification": options.hook_angle_justification,
                 "previous envelope source": options.previous_envelope_source,
                 "warnings": list(study.source.warnings)}
