@@ -454,7 +454,7 @@ REPORT = ReportKind(tag="campaign", title=TITLE, description=DESCRIPTION,
                     titles=_titles, files={"histories.parquet": _write_histories})
 
 
-def write(report, out_dir, stem, units, study, figures=None):
+def write(report, out_dir, stem, units, study, figures=None, findings=None):
     """Write the campaign report (module notes) atomically
     (:func:`~slingloads.io.common.report_writer.write_report` of :data:`REPORT`).
 
@@ -469,6 +469,9 @@ def write(report, out_dir, stem, units, study, figures=None):
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
+    findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
+        default: those of ``study.results``.
 
     Returns
     -------
@@ -477,4 +480,4 @@ def write(report, out_dir, stem, units, study, figures=None):
     from slingloads.io.chute.report import with_decision
 
     return write_report(with_decision(REPORT, study), report, out_dir, stem, units, study,
-                        figures)
+                        figures, findings=findings)

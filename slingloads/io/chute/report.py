@@ -463,7 +463,7 @@ REPORT = ReportKind(tag="chute", title=TITLE, description=DESCRIPTION,
                     titles=_titles, data={"histories.csv": _histories_csv_if_swept})
 
 
-def write(result, out_dir, stem, units, study, figures=None):
+def write(result, out_dir, stem, units, study, figures=None, findings=None):
     """Write ``<stem>-chute.xlsx``, ``<stem>-chute-histories.csv`` and ``<stem>-chute-*.png``
     atomically (:func:`~slingloads.io.common.report_writer.write_report` of
     :data:`REPORT`).
@@ -479,10 +479,13 @@ def write(result, out_dir, stem, units, study, figures=None):
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
+    findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
+        default: those of ``study.results``.
 
     Returns
     -------
     list of pathlib.Path
     """
     return write_report(with_decision(REPORT, study), result, out_dir, stem, units, study,
-                        figures)
+                        figures, findings=findings)

@@ -63,6 +63,7 @@ from slingloads.io.common.figures import (
     start_drawing,
     task_result,
 )
+from slingloads.io.common.findings import with_findings
 from slingloads.io.common.locate import located
 from slingloads.io.common.report import (
     check_units,
@@ -74,7 +75,7 @@ from slingloads.io.common.report import (
     report_value,
     warning_sections,
 )
-from slingloads.io.common.report_writer import protected_inputs
+from slingloads.io.common.report_writer import protected_inputs, study_findings_of
 from slingloads.io.common.units import unit_label
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
@@ -689,7 +690,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
                         input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
                         info=None, findings=None, sfbm_workbook=False, figures=None,
-                        nastran=None, checks=None, dynamics=None):
+                        nastran=None, checks=None, dynamics=None, study_findings=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -739,6 +740,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         The campaign's hand-off comparison (:class:`~slingloads.analyses.campaign.Handoff`
         ``.comparison``): written on a *Dynamics* sheet with the largest loads of the
         hand-entered cases against those of the cases from the dynamics.
+    study_findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`), written on the Findings sheet.
 
     Returns
     -------
@@ -772,7 +775,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     with drawings(jobs, figures) as pngs:  # drawn while the tables are built and written
         return _publish(result, out_dir, stem, units, hull_pairs, stations, findings,
                         input_paths, info, max_rows, sfbm_workbook, pngs, titles, deck,
-                        checks, dynamics, figures)
+                        checks, dynamics, figures, study_findings)
 
 
 def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None):
@@ -811,7 +814,7 @@ def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_sta
 
 def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input_paths,
              info, max_rows, sfbm_workbook, pngs, titles, deck=None, checks=None,
-             dynamics=None, figures=None):
+             dynamics=None, figures=None, study_findings=None):
     """Build the tables and publish every file of the loads report (the PNGs are awaited
     when the Plots sheet is written; the CSV files are those the renderer ``figures`` made,
     when it was started with them: :func:`start_figures`)."""
@@ -824,6 +827,7 @@ def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input
                  "ExceedanceDetail": Highlight(["exceedance ratio [-]"], 1.0)}
     if dynamics is not None:
         sheets["Dynamics"] = dynamics_sections(result, dynamics, units)
+    sheets = with_findings(sheets, study_findings, units)
     # the CSV files first: made here unless the helper has made them (it makes them only
     # when no figure waits), while the helper goes on with the figures
     csv_files = {name: task_result(figures, name, make, result)
@@ -1051,16 +1055,17 @@ def envelope_csv(result):
 CSV_FILES = {"sfbm.csv": sfbm_csv, "envelope.csv": envelope_csv}
 
 
-def write(result, out_dir, stem, units, study, figures=None, checks=None):
+def write(result, out_dir, stem, units, study, figures=None, checks=None, findings=None):
     """Write the loads report of a study (:func:`write_loads_outputs`) into the run's outputs
     ``out_dir``, with the study's identification, report options, warnings and findings
     (the lateral study of the same run, when there is one, is the evidence on the hook
     angle; the campaign's hand-off, when the loads took the dynamics' cases), and the
-    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`)."""
+    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`), and
+    the run's ``findings`` on the Findings sheet (default: those of ``study.results``)."""
     info = report_info(study, title=TITLE, analysis=ANALYSIS, units=units,
                        conventions=CONVENTIONS)
     options, results = study.report, study.results
-    findings = {"lateral": results.lateral,
+    summary = {"lateral": results.lateral,
                 "hook angle handoff": results.loads_hook_angle,
                 "hook angle justification": options.hook_angle_justification,
                 "previous envelope source": options.previous_envelope_source,
@@ -1075,7 +1080,9 @@ def write(result, out_dir, stem, units, study, figures=None, checks=None):
                                    hull_pairs=options.hull_pairs,
                                    hull_stations=options.hull_stations,
                                    input_paths=protected_inputs(study), info=info,
-                                   findings=findings,
+                                   findings=summary,
                                    sfbm_workbook=options.sfbm_workbook,
                                    figures=figures, nastran=nastran, checks=checks,
-                                   dynamics=None if handoff is None else handoff.comparison)
+                                   dynamics=None if handoff is None else handoff.comparison,
+                                   study_findings=(study_findings_of(study) if findings is None
+                                                   else findings))

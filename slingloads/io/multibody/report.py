@@ -350,7 +350,7 @@ REPORT = ReportKind(tag="multibody", title=TITLE, description=DESCRIPTION,
                     warnings=_warnings, number_format=_matrix_formats)
 
 
-def write(result, out_dir, stem, units, study, figures=None):
+def write(result, out_dir, stem, units, study, figures=None, findings=None):
     """Write ``<stem>-multibody.xlsx``, ``-multibody-histories.csv`` and the PNG plots
     atomically (:func:`~slingloads.io.common.report_writer.write_report` of
     :data:`REPORT`).
@@ -366,9 +366,13 @@ def write(result, out_dir, stem, units, study, figures=None):
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
+    findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
+        default: those of ``study.results``.
 
     Returns
     -------
     list of pathlib.Path
     """
-    return write_report(REPORT, result, out_dir, stem, units, study, figures)
+    return write_report(REPORT, result, out_dir, stem, units, study, figures,
+                        findings=findings)
