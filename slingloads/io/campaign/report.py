@@ -244,7 +244,7 @@ def _parts(title, frame, keys):
 
 
 def _sheets(report, units, warnings=(), decision=None):
-    from slingloads.io.chute.report import decision_table
+    from slingloads.io.common.decision import decision_section
 
     r = report.result
     decision = r.decision if decision is None else decision
@@ -252,10 +252,7 @@ def _sheets(report, units, warnings=(), decision=None):
                        note="Parachute selection first; every run: sheets Matrix and "
                             "Metrics."),
                *warning_sections(warnings),
-               *([Section("Parachute decision", decision_table(decision, units),
-                          note="One decision, the same in every report that mentions the "
-                               "parachute (docs/parachute-sizing.md).")]
-                 if decision is not None else []),
+               *decision_section(decision, units),
                Section("Parachute selection", selection_table(report, units)),
                Section("Campaign", definition_table(report, units))]
     limits = no_parachute_table(report, units)
@@ -477,7 +474,7 @@ def write(report, out_dir, stem, units, study, figures=None, findings=None):
     -------
     list of pathlib.Path
     """
-    from slingloads.io.chute.report import with_decision
+    from slingloads.io.common.decision import with_decision
 
     return write_report(with_decision(REPORT, study), report, out_dir, stem, units, study,
                         figures, findings=findings)

@@ -22,9 +22,6 @@ Lengths, areas, speeds and moments are in the report unit system (``--units``).
 
 from __future__ import annotations
 
-import dataclasses
-import functools
-
 import numpy as np
 import pandas as pd
 
@@ -33,6 +30,7 @@ from slingloads.analyses.chute_sizing import (
 )
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.io.common.csvout import csv_bytes
+from slingloads.io.common.decision import decision_section, with_decision
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
     plot_function,
@@ -40,7 +38,6 @@ from slingloads.io.common.figures import (
 )
 from slingloads.io.common.report import (
     convert_columns,
-    in_report_units,
     report_unit,
     report_value,
     sample_rows,
@@ -89,28 +86,6 @@ PAPER_NOTE = ("As the paper found it: its 1-DOF model (section 4.2) confirmed th
               "shortfall coming from the inter-axis coupling of helicopter and parachute (the "
               "carrier's coupling was negligible). This sizing reproduces 4.1-4.2 only; the "
               "factor 1.4 is the paper's optimum for its own aircraft, not this one's.")
-
-
-def decision_table(decision, units="SI"):
-    """The parachute decision's table in report units (areas converted), the same in every
-    report that carries it."""
-    frame = decision.to_frame()
-    areas = frame["unit"] == "m^2"
-    unit = unit_label(report_unit("area", units))
-    frame.loc[areas, "value"] = [float(in_report_units(float(v), "area", units))
-                                 for v in frame.loc[areas, "value"]]
-    frame.loc[areas, "unit"] = unit
-    return frame
-
-
-def with_decision(kind, study):
-    """``kind`` (a :class:`ReportKind` whose ``sheets`` takes ``decision=``) showing the
-    study's parachute decision (``study.results.parachute_decision``), the one every report
-    that mentions the parachute carries; ``kind`` itself when there is none."""
-    decision = study.results.parachute_decision
-    if decision is None:
-        return kind
-    return dataclasses.replace(kind, sheets=functools.partial(kind.sheets, decision=decision))
 
 
 # ------------------------------------------------------------------------------- tables
@@ -365,10 +340,7 @@ def _sheets(result, units, warnings=(), decision=None):
     summary = [Section("Summary of the parachute sizing", note=_summary_note(result, units)),
                *warning_sections(warnings),
                Section("Condition", tables["condition"]),
-               *([Section("Parachute decision", decision_table(decision, units),
-                          note="One decision, the same in every report that mentions the "
-                               "parachute (docs/parachute-sizing.md).")]
-                 if decision is not None else []),
+               *decision_section(decision, units),
                Section("Parachute area", tables["sizing"], note=PAPER_NOTE),
                Section("Yaw stiffness breakdown at the neutral area", tables["breakdown"]),
                Section("Parachute line and carrier cable", tables["line"])]

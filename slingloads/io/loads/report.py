@@ -49,6 +49,7 @@ from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs, safe_file_part
 from slingloads.io.common.cover import info_from_digest, input_digest, report_info
 from slingloads.io.common.csvout import csv_bytes
+from slingloads.io.common.decision import decision_section
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
@@ -722,7 +723,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         ``inputs_digest``.
     findings : dict, optional
         ``{"lateral": lateral result or None, "hook angle handoff": HookAngleHandoff or None,
-        "hook angle justification": str,
+        "parachute decision": ParachuteDecision or None, "hook angle justification": str,
         "previous envelope source": str}`` for the Summary's findings.
     sfbm_workbook : bool
         Also write ``<stem>-sfbm.xlsx``, every case at every station in report units (the
@@ -906,6 +907,8 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     if hook_handoff is not None:
         summary.append(Section("Lateral hook angle: the lateral study's hand-off to the loads",
                                hook_handoff.to_frame()))
+    if study.parachute is not None:  # the loads' parachute: the study's one decision on it
+        summary += decision_section(findings.get("parachute decision"), units)
     summary += [
         Section("Study settings", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
@@ -1067,6 +1070,7 @@ def write(result, out_dir, stem, units, study, figures=None, checks=None, findin
     options, results = study.report, study.results
     summary = {"lateral": results.lateral,
                 "hook angle handoff": results.loads_hook_angle,
+                "parachute decision": results.parachute_decision,
                 "hook angle justification": options.hook_angle_justification,
                 "previous envelope source": options.previous_envelope_source,
                 "warnings": list(study.source.warnings)}
