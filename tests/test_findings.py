@@ -72,10 +72,12 @@ def _section(frame, title):
 
 
 def _findings(path):
+    """The Findings table of a report, by question."""
     frame = _sheet(path, "Findings")
-    head = list(frame.iloc[0].dropna())  # the table's header is the sheet's first row
-    table = frame.iloc[1:, :len(head)].set_axis(head, axis=1).reset_index(drop=True)
-    return table.set_index("question")
+    i = int(np.nonzero((frame[0].astype(str) == "question").to_numpy())[0][0])
+    head = list(frame.iloc[i].dropna())
+    table = frame.iloc[i + 1:, :len(head)].set_axis(head, axis=1)
+    return table[table["question"].notna()].set_index("question")
 
 
 def _items(path, sheet="Summary"):

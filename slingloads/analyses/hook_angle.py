@@ -255,7 +255,12 @@ class HookAngleHandoff:
         ], columns=["item", "value", "unit", "note"])
 
     def describe(self):
-        """One sentence: the angle used, both angles and which governs, and why."""
+        """One sentence: the angle used, both angles and which governs, and why.
+
+        Returns
+        -------
+        str
+        """
         used, own = np.degrees(self.used), np.degrees(self.loads_angle)
         rec = np.degrees(self.recommended)
         rec_text = f"{rec:.1f} deg" if np.isfinite(rec) else "none"

@@ -17,7 +17,8 @@ from slingloads.io.common.units import unit_label
 SHEET = "Findings"
 NOTE = ("The questions this run answers, one answer each, the same table in every report of "
         "the run: the value with its unit, what the verdict compares it with (reference, same "
-        "unit) and where it comes from. 'not run': no analysis of this run answers it.")
+        "unit) and where it comes from. 'not run': no analysis of this run answers it. Loads "
+        "here (Nz, exceedance ratios) are LIMIT loads.")
 
 
 def findings_table(findings, units="SI"):
@@ -43,10 +44,10 @@ def findings_table(findings, units="SI"):
 
 
 def findings_sheet(findings, units="SI"):
-    """The Findings sheet's content (one section)."""
-    return [Section("Findings of this run: one answer per question", findings_table(findings,
-                                                                                    units),
-                    note=NOTE)]
+    """The Findings sheet's content: one table (its title in the page header, the note under
+    it)."""
+    return [Section("Findings of this run, one answer per question (LIMIT)",
+                    findings_table(findings, units), note=NOTE)]
 
 
 def with_findings(sheets, findings, units="SI"):
