@@ -141,6 +141,11 @@ def _check_run(folder, units):
         assert s >= c * (1 - 1e-9)
     else:
         assert math.isnan(c) and "not shown adequate" in study["answer"]
+    chute = _text(reports["chute"])  # the sizing's headline states the decision's answer
+    if math.isnan(c):
+        assert "Chosen area (parachute decision): NONE" in chute
+    else:
+        assert f"every report): {c:.3g} {area_unit}, decided by the" in chute
     if chosen["answer"].startswith("NONE"):
         assert math.isnan(c)
     else:

@@ -310,21 +310,35 @@ def curve_rows(frame, column="beta [deg]"):
                          f"{len(frame)} rows); the plot shows every point.")
 
 
-def _summary_note(result, units):
-    """The sizing's outcome in two sentences."""
+def _decision_sentence(decision, units):
+    """The study's chosen area in one sentence (the parachute decision's answer), '' when
+    there is no decision."""
+    if decision is None:
+        return ""
+    if not decision.found:
+        return f" Chosen area (parachute decision): NONE, {decision.reason}."
+    area, unit = _value(decision.chosen_area, "area", units)
+    return (f" Chosen area (parachute decision, the same in every report): {area:.3g} {unit}, "
+            f"decided by the {decision.deciding_model}.")
+
+
+def _summary_note(result, units, decision=None):
+    """The sizing's outcome in two sentences, and the decision's chosen area."""
     static = result.static
     if static.already_stable:
         return "Fuselage and fin are already statically stable in yaw: no parachute needed."
     area, unit = _value(static.area, "area", units)
     rec, _ = _value(result.recommended_area, "area", units)
     line, lunit = _value(result.line.line_length, "length", units)
+    said = _decision_sentence(decision, units)
     if not np.isfinite(result.recommended_area):
         return (f"Neutral static area {area:.3g} {unit}; NO swept area is stable under every "
                 f"gust (1-DOF): no area recommended; parachute line {line:.4g} {lunit} from "
-                "the wake.")
-    return (f"Neutral static area {area:.3g} {unit}; recommended area {rec:.3g} {unit} "
+                "the wake." + said)
+    return (f"Neutral static area {area:.3g} {unit}; 1-DOF recommended area {rec:.3g} {unit} "
             f"({result.recommended_area / static.area:.3g} x neutral, the smallest swept area "
-            f"stable under every gust); parachute line {line:.4g} {lunit} from the wake.")
+            f"stable under every gust); parachute line {line:.4g} {lunit} from the wake."
+            + said)
 
 
 def _sheets(result, units, warnings=(), decision=None):
@@ -337,7 +351,8 @@ def _sheets(result, units, warnings=(), decision=None):
                            units)
     curves, curves_note = curve_rows(lin.curves_frame())
     moments, moments_note = curve_rows(convert_columns(static, moment_spec, units))
-    summary = [Section("Summary of the parachute sizing", note=_summary_note(result, units)),
+    summary = [Section("Summary of the parachute sizing",
+                       note=_summary_note(result, units, decision)),
                *warning_sections(warnings),
                Section("Condition", tables["condition"]),
                *decision_section(decision, units),
