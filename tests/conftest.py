@@ -10,7 +10,8 @@
 * LibreOffice, when present, with one user profile for the session.
 * The example workbook, its study read once for the session, its results (every analysis)
   computed once, its reports made once for the session (``slingloads loads`` and
-  ``slingloads run``; the US reports written from those results), and the check of a broken
+  ``slingloads run``, also with the campaign on; the US reports written from those
+  results), and the check of a broken
   copy of a workbook (exit code 2, the message located at the cell, nothing written).
 """
 
@@ -83,6 +84,27 @@ def example_run_report(tmp_path_factory):
     """The folder of ``slingloads run`` on the example (every analysis it asks for), made
     once for the session (to be read, not changed)."""
     return _report(tmp_path_factory, "run")
+
+
+@pytest.fixture(scope="session")
+def example_campaign_run_report(tmp_path_factory):
+    """The folder of ``slingloads run`` on a copy of the example with 'run campaign' = yes
+    (every analysis, the campaign first), made once for the session with the session's run
+    cache (which the other campaign runs of the example share): to be read, not changed."""
+    import openpyxl
+
+    from slingloads.cli import main
+
+    root = tmp_path_factory.mktemp("example-campaign-run")
+    book = openpyxl.load_workbook(EXAMPLE)
+    for row in book["Study"].iter_rows(min_row=2):
+        if str(row[0].value).strip().lower() == "run campaign":
+            row[1].value = "yes"
+    path = root / EXAMPLE.name
+    book.save(path)
+    out = root / "out"
+    assert main(["run", str(path), "--out", str(out), "--quiet"]) == 0
+    return out
 
 
 @pytest.fixture(scope="session")

@@ -156,7 +156,7 @@ def test_run_publishes_all_analyses_or_none(tmp_path, monkeypatch, capsys):
 
     from slingloads.io.chute import report
 
-    def failing_writer(result, out_dir, stem, units, study, figures=None):
+    def failing_writer(result, out_dir, stem, units, study, figures=None, findings=None):
         raise RuntimeError("disk full")
 
     monkeypatch.setattr(report, "write", failing_writer)

@@ -46,10 +46,18 @@ def test_one_call_runs_what_the_workbook_asks_for(results):
 
 
 def test_results_are_those_of_each_analysis_alone(results):
-    """Running the study is running each analysis on its inputs: the loads equal those of
-    the LoadsStudy read from the same workbook run on its own (docs/api.md), to round-off."""
-    alone = sl.read_study(EXAMPLE, only=["loads"]).inputs.loads.run()
+    """Running the study is running each analysis on its inputs, with the one hand-off the
+    example has (the lateral study's recommended angle, 33.2 deg, above the Study's 30 deg,
+    on the lateral hook directions): the loads equal those of the LoadsStudy read from the
+    same workbook with that lateral angle, run on its own (docs/api.md), to round-off."""
+    from dataclasses import replace
+
+    loads = sl.read_study(EXAMPLE, only=["loads"]).inputs.loads
+    angle = results.lateral.recommended_angle
+    assert angle > loads.hook.lateral
+    alone = replace(loads, hook=replace(loads.hook, lateral_angle=angle)).run()
     np.testing.assert_allclose(results.loads.loads, alone.loads, rtol=1e-12, atol=1e-9)
+    assert results.loads_hook_angle.used == angle
 
 
 def test_typed_results_become_frames(results):
@@ -76,13 +84,15 @@ def test_write_reports_matches_the_command_line(tmp_path):
 
 
 def test_order_puts_the_campaign_before_the_loads_it_feeds():
-    """The campaign hands its dynamics' cases to the loads: it runs first whenever both run;
-    otherwise the analyses run in the registry order (README, "Campaign")."""
+    """The campaign hands its dynamics' cases to the loads, the lateral study its design
+    angle: each runs first whenever the loads run too; otherwise the analyses run in the
+    registry order (README, "Campaign")."""
     assert compute_order(["loads", "campaign"]) == ["campaign", "loads"]
+    assert compute_order(["loads", "lateral"]) == ["lateral", "loads"]
     assert compute_order(["multibody", "campaign", "lateral"]) == ["lateral", "multibody",
                                                                    "campaign"]
-    assert compute_order(reversed(ANALYSES)) == ["campaign", "loads", "lateral", "chute sizing",
-                                                  "multibody"]
+    assert compute_order(reversed(ANALYSES)) == ["lateral", "campaign", "loads",
+                                                  "chute sizing", "multibody"]
 
 
 def test_an_analysis_not_asked_for_is_refused():

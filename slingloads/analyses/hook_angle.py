@@ -192,3 +192,116 @@ def hook_angle_comparison(loads_study, angle, reference_angle=REGULATORY_ANGLE):
                                ref, at, tuple(runs[0].cases["hook"]),
                                tuple(table.loc[table["reduced"], "hook"]),
                                studies[1].hook.cone)
+
+
+#: Who sets the loads' lateral hook angle (:class:`HookAngleHandoff` ``governs``).
+GOVERNS_LATERAL = "lateral study"
+GOVERNS_STUDY = "Study"
+
+
+@dataclass(frozen=True, eq=False)
+class HookAngleHandoff:
+    """The lateral study's recommended design angle handed to the loads: the lateral hook
+    cases take the larger of the loads' own lateral angle and the recommended one, never
+    less than the loads' own.
+
+    Attributes
+    ----------
+    study : LoadsStudy
+        The loads study with that lateral angle.
+    loads_angle : float
+        The lateral angle the loads had before (the Study's, or the campaign's hand-off's when
+        it raised it). [rad]
+    recommended : float
+        The lateral study's recommended design angle; NaN when it gives none (no case
+        inside its domain, or 90 deg or more with the margin). [rad]
+    used : float
+        ``max(loads_angle, recommended)``; ``loads_angle`` when ``recommended`` is NaN.
+        [rad]
+    governs : str
+        :data:`GOVERNS_LATERAL` when the recommended angle is larger, else
+        ``loads_source``.
+    reason : str
+        Why, in words.
+    loads_source : str
+        Where ``loads_angle`` comes from (``"Study"``, or the campaign's hand-off).
+    """
+
+    study: object
+    loads_angle: float
+    recommended: float
+    used: float
+    governs: str
+    reason: str
+    loads_source: str = GOVERNS_STUDY
+
+    def to_frame(self):
+        """The three angles and which one governs, one row each (deg).
+
+        Returns
+        -------
+        pandas.DataFrame
+            Columns item, value, unit, note.
+        """
+        rec = np.degrees(self.recommended)
+        return pd.DataFrame([
+            ("lateral hook angle of the loads' own inputs", float(np.degrees(self.loads_angle)),
+             "deg", f"from the {self.loads_source}"),
+            ("lateral study's recommended design angle", float(rec), "deg",
+             "margin x largest load angle inside the lateral model's domain"
+             if np.isfinite(rec) else "none: " + self.reason),
+            ("lateral hook angle used by the loads", float(np.degrees(self.used)), "deg",
+             f"governed by the {self.governs}"),
+        ], columns=["item", "value", "unit", "note"])
+
+    def describe(self):
+        """One sentence: the angle used, both angles and which governs, and why.
+
+        Returns
+        -------
+        str
+        """
+        used, own = np.degrees(self.used), np.degrees(self.loads_angle)
+        rec = np.degrees(self.recommended)
+        rec_text = f"{rec:.1f} deg" if np.isfinite(rec) else "none"
+        return (f"Lateral hook cases at {used:.1f} deg = max({self.loads_source} {own:.1f} deg, "
+                f"lateral study's recommended {rec_text}): the {self.governs} governs; "
+                f"{self.reason}.")
+
+
+def lateral_hook_handoff(loads_study, recommended, why_none="", loads_source=GOVERNS_STUDY):
+    """The loads study with its lateral hook directions at the lateral study's recommended
+    design angle where that is larger (CS 29.865: the maximum angle achievable in service;
+    the conservative value wins, the loads' own angle is never lowered).
+
+    Parameters
+    ----------
+    loads_study : LoadsStudy
+    recommended : float
+        The lateral study's recommended design angle; NaN when it gives none. [rad]
+    why_none : str
+        Why it gives none (quoted when ``recommended`` is NaN).
+    loads_source : str
+        Where the loads' own lateral angle comes from (printed).
+
+    Returns
+    -------
+    HookAngleHandoff
+    """
+    hook = loads_study.hook
+    own = float(hook.lateral)
+    rec = float(recommended)
+    if not np.isfinite(rec):
+        reason = ("the lateral study gives no design angle"
+                  + (f" ({why_none.rstrip('.')})" if why_none else "")
+                  + f": the {loads_source}'s angle is kept")
+        return HookAngleHandoff(loads_study, own, np.nan, own, loads_source, reason,
+                                loads_source)
+    if rec > own:
+        new = replace(loads_study, hook=replace(hook, lateral_angle=rec))
+        reason = (f"its recommended angle exceeds the loads' {np.degrees(own):.1f} deg, so the "
+                  "larger (conservative) angle is used")
+        return HookAngleHandoff(new, own, rec, rec, GOVERNS_LATERAL, reason, loads_source)
+    reason = ("the loads' angle already covers the lateral study's recommended angle and is "
+              "never lowered to it")
+    return HookAngleHandoff(loads_study, own, rec, own, loads_source, reason, loads_source)

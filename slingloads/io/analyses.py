@@ -150,14 +150,16 @@ class Analysis:
         """The fixed names among its report files (for the checks made before computing)."""
         return [t.format(stem=stem) for t in self.modules().report.OUTPUTS if "*" not in t]
 
-    def write(self, result, out_dir, stem, units, study, figures=None, checks=None):
+    def write(self, result, out_dir, stem, units, study, figures=None, checks=None,
+              findings=None):
         """Write its report into the run's outputs ``out_dir`` (with the figures started by
         :meth:`start_figures`, if any); ``checks``, a DataFrame of checks against the other
         analyses of the run (:mod:`slingloads.io.consistency`), is passed to the reports that
-        show them."""
+        show them; ``findings``, the run's findings (:mod:`slingloads.runs.findings`), to
+        every report (its Findings sheet)."""
         extra = {} if checks is None else {"checks": checks}
         return self.modules().report.write(result, out_dir, stem, units, study,
-                                           figures=figures, **extra)
+                                           figures=figures, findings=findings, **extra)
 
 
 #: Every analysis, in the order they are read, run and written.

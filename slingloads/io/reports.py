@@ -13,6 +13,7 @@ from pathlib import Path
 from slingloads.io.analyses import ANALYSES
 from slingloads.io.common.atomic import AtomicOutputs
 from slingloads.io.consistency import consistency_checks
+from slingloads.runs.findings import study_findings
 
 _BY_NAME = {a.name: a for a in ANALYSES}
 
@@ -77,12 +78,14 @@ def publish_reports(results, outputs, stem, units="SI", names=None, figures=None
     names = results.computed() if names is None else list(names)
     figures = figures or {}
     checks = consistency_checks(results)
+    findings = study_findings(results)  # once: the same Findings sheet in every report
     with outputs:
         for name in names:
             if before is not None:
                 before(name)
             _BY_NAME[name].write(results.of(name), outputs, stem, units, study,
-                                 figures=figures.get(name), checks=checks.get(name))
+                                 figures=figures.get(name), checks=checks.get(name),
+                                 findings=findings)
             if after is not None:
                 after(name)
     return outputs.written

@@ -1,5 +1,6 @@
 """Run the structural loads analysis of a study (:func:`run`), with the cases the campaign's
-dynamics reached when the study asks for them (:func:`handoff`)."""
+dynamics reached when the study asks for them (:func:`handoff`) and the lateral hook cases at
+the lateral study's recommended design angle when that is larger (:func:`hook_angle_handoff`)."""
 
 from __future__ import annotations
 
@@ -51,10 +52,52 @@ def handoff(study, campaign):
                                    campaign.inputs.hook_angle_source)
 
 
+def hook_angle_handoff(study, lateral):
+    """The lateral study's hand-off to the loads: the loads' lateral hook cases at
+    max(the loads' own lateral angle, the lateral study's recommended design angle)
+    (:func:`slingloads.analyses.hook_angle.lateral_hook_handoff`). The loads' own angle is the
+    Study's, or the campaign hand-off's (``study.results.loads_handoff``) when there is one.
+
+    Parameters
+    ----------
+    study : Study
+        With ``study.inputs.loads``.
+    lateral : LateralReport or None
+        The lateral study's result (None: not run).
+
+    Returns
+    -------
+    HookAngleHandoff or None
+        None when the lateral study did not run.
+    """
+    if lateral is None:
+        return None
+    loads = study.require(ANALYSIS)
+    given = study.results.loads_handoff
+    base = loads if given is None else given.study
+    from slingloads.analyses.hook_angle import lateral_hook_handoff
+
+    why = "" if np.isfinite(lateral.recommended_angle) else lateral.study.verdict()
+    source = "Study" if given is None else "campaign hand-off"
+    return lateral_hook_handoff(base, lateral.recommended_angle, why, source)
+
+
+def loads_study(study):
+    """The loads study that :func:`run` runs: the lateral hook-angle hand-off's when there is
+    one, else the campaign hand-off's, else the study's own."""
+    results = study.results
+    if results.loads_hook_angle is not None:
+        return results.loads_hook_angle.study
+    if results.loads_handoff is not None:
+        return results.loads_handoff.study
+    return study.require(ANALYSIS)
+
+
 def run(study):
-    """Run the loads analysis of a study: its load cases, or those of the campaign's hand-off
-    when there is one (``study.results.loads_handoff``, set by
-    :func:`slingloads.runs.study.run_analysis`).
+    """Run the loads analysis of a study: its load cases, with the hand-offs of the campaign
+    (``study.results.loads_handoff``) and of the lateral study
+    (``study.results.loads_hook_angle``) when there are (set by
+    :func:`slingloads.runs.study.run_analysis`; :func:`loads_study`).
 
     Parameters
     ----------
@@ -70,10 +113,9 @@ def run(study):
     InputError
         If the study does not ask for the loads analysis, or its loads are not finite.
     """
-    loads = study.require(ANALYSIS)
-    given = study.results.loads_handoff
+    study.require(ANALYSIS)
     with study.located(ANALYSIS):
-        return _finite((loads if given is None else given.study).run())
+        return _finite(loads_study(study).run())
 
 
 def _finite(result):

@@ -26,6 +26,7 @@ from slingloads.errors import InputError
 
 if TYPE_CHECKING:  # the analyses' modules load when they run (keeps a loads run light)
     from slingloads.analyses.campaign import Handoff
+    from slingloads.analyses.hook_angle import HookAngleHandoff
     from slingloads.analyses.loads import LoadsResult, LoadsStudy
     from slingloads.analyses.parachute_decision import ParachuteDecision
     from slingloads.models.airframe import Airframe
@@ -49,9 +50,10 @@ def _field(name):
 TITLES = {"loads": "loads analysis", "lateral": "lateral study",
           "chute sizing": "parachute sizing", "multibody": "multibody model",
           "campaign": "campaign"}
-#: The analyses whose result is another's input: name -> the analyses it feeds (the
-#: campaign's dynamics to the loads; its selection to the parachute decision the sizing makes).
-FEEDS = {"campaign": ("loads", "chute sizing")}
+#: The analyses whose result is another's input: name -> the analyses it feeds (the lateral
+#: study's recommended design angle to the loads' lateral hook cases; the campaign's dynamics
+#: to the loads; its selection to the parachute decision the sizing makes).
+FEEDS = {"lateral": ("loads",), "campaign": ("loads", "chute sizing")}
 #: How a finding of the parachute decision starts (:meth:`Results.shortfalls`).
 DECISION_FINDING = "parachute decision:"
 
@@ -216,6 +218,9 @@ class Results:
         Every load case at every station (LIMIT loads, SI).
     loads_handoff : Handoff or None
         The cases the campaign's dynamics handed to the loads (when asked for).
+    loads_hook_angle : HookAngleHandoff or None
+        The lateral study's recommended design angle handed to the loads' lateral hook cases
+        (when both run): the larger of it and the loads' own angle.
     lateral : LateralReport or None
         The lateral sweep, its critical case re-run, modes and the hook cases at its angle.
     chute_sizing : ChuteSizingReport or None
@@ -234,6 +239,7 @@ class Results:
 
     loads: LoadsResult | None = None
     loads_handoff: Handoff | None = None
+    loads_hook_angle: HookAngleHandoff | None = None
     lateral: LateralReport | None = None
     chute_sizing: ChuteSizingReport | None = None
     multibody: MultibodyReport | None = None
@@ -373,8 +379,9 @@ def run_one(study, name):
 
 def run_analysis(study, name):
     """Run analysis ``name`` of ``study`` with what the analyses before it handed over (the
-    campaign's dynamics to the loads, when the study asks for it), and keep its result in
-    ``study.results``.
+    campaign's dynamics to the loads, when the study asks for it; the lateral study's
+    recommended design angle to the loads' lateral hook cases, when it ran), and keep its
+    result in ``study.results``.
 
     Returns
     -------
@@ -382,9 +389,10 @@ def run_analysis(study, name):
         Its result (:class:`Results` lists the types).
     """
     if name == "loads":
-        from slingloads.runs.loads import handoff
+        from slingloads.runs.loads import handoff, hook_angle_handoff
 
         study.results.loads_handoff = handoff(study, study.results.campaign)
+        study.results.loads_hook_angle = hook_angle_handoff(study, study.results.lateral)
     result = run_one(study, name)
     study.results.set(name, result)
     return result

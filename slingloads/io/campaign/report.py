@@ -246,7 +246,7 @@ def _parts(title, frame, keys):
 
 
 def _sheets(report, units, warnings=(), decision=None):
-    from slingloads.io.chute.report import decision_table
+    from slingloads.io.common.decision import decision_section
 
     r = report.result
     decision = r.decision if decision is None else decision
@@ -254,10 +254,7 @@ def _sheets(report, units, warnings=(), decision=None):
                        note="Parachute selection first; every run: sheets Matrix and "
                             "Metrics."),
                *warning_sections(warnings),
-               *([Section("Parachute decision", decision_table(decision, units),
-                          note="One decision, the same in every report that mentions the "
-                               "parachute (docs/parachute-sizing.md).")]
-                 if decision is not None else []),
+               *decision_section(decision, units),
                Section("Parachute selection", selection_table(report, units)),
                Section("Campaign", definition_table(report, units),
                        note=where_stated(report.cache)[1])]
@@ -457,7 +454,7 @@ REPORT = ReportKind(tag="campaign", title=TITLE, description=DESCRIPTION,
                     titles=_titles, files={"histories.parquet": _write_histories})
 
 
-def write(report, out_dir, stem, units, study, figures=None):
+def write(report, out_dir, stem, units, study, figures=None, findings=None):
     """Write the campaign report (module notes) atomically
     (:func:`~slingloads.io.common.report_writer.write_report` of :data:`REPORT`).
 
@@ -472,12 +469,15 @@ def write(report, out_dir, stem, units, study, figures=None):
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
+    findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
+        default: those of ``study.results``.
 
     Returns
     -------
     list of pathlib.Path
     """
-    from slingloads.io.chute.report import with_decision
+    from slingloads.io.common.decision import with_decision
 
     return write_report(with_decision(REPORT, study), report, out_dir, stem, units, study,
-                        figures)
+                        figures, findings=findings)

@@ -22,9 +22,6 @@ Lengths, areas, speeds and moments are in the report unit system (``--units``).
 
 from __future__ import annotations
 
-import dataclasses
-import functools
-
 import numpy as np
 import pandas as pd
 
@@ -33,6 +30,7 @@ from slingloads.analyses.chute_sizing import (
 )
 from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.io.common.csvout import csv_bytes
+from slingloads.io.common.decision import decision_section, with_decision
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import (
     plot_function,
@@ -40,7 +38,6 @@ from slingloads.io.common.figures import (
 )
 from slingloads.io.common.report import (
     convert_columns,
-    in_report_units,
     report_unit,
     report_value,
     sample_rows,
@@ -89,28 +86,6 @@ PAPER_NOTE = ("As the paper found it: its 1-DOF model (section 4.2) confirmed th
               "shortfall coming from the inter-axis coupling of helicopter and parachute (the "
               "carrier's coupling was negligible). This sizing reproduces 4.1-4.2 only; the "
               "factor 1.4 is the paper's optimum for its own aircraft, not this one's.")
-
-
-def decision_table(decision, units="SI"):
-    """The parachute decision's table in report units (areas converted), the same in every
-    report that carries it."""
-    frame = decision.to_frame()
-    areas = frame["unit"] == "m^2"
-    unit = unit_label(report_unit("area", units))
-    frame.loc[areas, "value"] = [float(in_report_units(float(v), "area", units))
-                                 for v in frame.loc[areas, "value"]]
-    frame.loc[areas, "unit"] = unit
-    return frame
-
-
-def with_decision(kind, study):
-    """``kind`` (a :class:`ReportKind` whose ``sheets`` takes ``decision=``) showing the
-    study's parachute decision (``study.results.parachute_decision``), the one every report
-    that mentions the parachute carries; ``kind`` itself when there is none."""
-    decision = study.results.parachute_decision
-    if decision is None:
-        return kind
-    return dataclasses.replace(kind, sheets=functools.partial(kind.sheets, decision=decision))
 
 
 # ------------------------------------------------------------------------------- tables
@@ -335,21 +310,35 @@ def curve_rows(frame, column="beta [deg]"):
                          f"{len(frame)} rows); the plot shows every point.")
 
 
-def _summary_note(result, units):
-    """The sizing's outcome in two sentences."""
+def _decision_sentence(decision, units):
+    """The study's chosen area in one sentence (the parachute decision's answer), '' when
+    there is no decision."""
+    if decision is None:
+        return ""
+    if not decision.found:
+        return f" Chosen area (parachute decision): NONE, {decision.reason}."
+    area, unit = _value(decision.chosen_area, "area", units)
+    return (f" Chosen area (parachute decision, the same in every report): {area:.3g} {unit}, "
+            f"decided by the {decision.deciding_model}.")
+
+
+def _summary_note(result, units, decision=None):
+    """The sizing's outcome in two sentences, and the decision's chosen area."""
     static = result.static
     if static.already_stable:
         return "Fuselage and fin are already statically stable in yaw: no parachute needed."
     area, unit = _value(static.area, "area", units)
     rec, _ = _value(result.recommended_area, "area", units)
     line, lunit = _value(result.line.line_length, "length", units)
+    said = _decision_sentence(decision, units)
     if not np.isfinite(result.recommended_area):
         return (f"Neutral static area {area:.3g} {unit}; NO swept area is stable under every "
                 f"gust (1-DOF): no area recommended; parachute line {line:.4g} {lunit} from "
-                "the wake.")
-    return (f"Neutral static area {area:.3g} {unit}; recommended area {rec:.3g} {unit} "
+                "the wake." + said)
+    return (f"Neutral static area {area:.3g} {unit}; 1-DOF recommended area {rec:.3g} {unit} "
             f"({result.recommended_area / static.area:.3g} x neutral, the smallest swept area "
-            f"stable under every gust); parachute line {line:.4g} {lunit} from the wake.")
+            f"stable under every gust); parachute line {line:.4g} {lunit} from the wake."
+            + said)
 
 
 def _sheets(result, units, warnings=(), decision=None):
@@ -362,13 +351,11 @@ def _sheets(result, units, warnings=(), decision=None):
                            units)
     curves, curves_note = curve_rows(lin.curves_frame())
     moments, moments_note = curve_rows(convert_columns(static, moment_spec, units))
-    summary = [Section("Summary of the parachute sizing", note=_summary_note(result, units)),
+    summary = [Section("Summary of the parachute sizing",
+                       note=_summary_note(result, units, decision)),
                *warning_sections(warnings),
                Section("Condition", tables["condition"]),
-               *([Section("Parachute decision", decision_table(decision, units),
-                          note="One decision, the same in every report that mentions the "
-                               "parachute (docs/parachute-sizing.md).")]
-                 if decision is not None else []),
+               *decision_section(decision, units),
                Section("Parachute area", tables["sizing"], note=PAPER_NOTE),
                Section("Yaw stiffness breakdown at the neutral area", tables["breakdown"]),
                Section("Parachute line and carrier cable", tables["line"])]
@@ -463,7 +450,7 @@ REPORT = ReportKind(tag="chute", title=TITLE, description=DESCRIPTION,
                     titles=_titles, data={"histories.csv": _histories_csv_if_swept})
 
 
-def write(result, out_dir, stem, units, study, figures=None):
+def write(result, out_dir, stem, units, study, figures=None, findings=None):
     """Write ``<stem>-chute.xlsx``, ``<stem>-chute-histories.csv`` and ``<stem>-chute-*.png``
     atomically (:func:`~slingloads.io.common.report_writer.write_report` of
     :data:`REPORT`).
@@ -479,10 +466,13 @@ def write(result, out_dir, stem, units, study, figures=None):
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
+    findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
+        default: those of ``study.results``.
 
     Returns
     -------
     list of pathlib.Path
     """
     return write_report(with_decision(REPORT, study), result, out_dir, stem, units, study,
-                        figures)
+                        figures, findings=findings)

@@ -19,6 +19,7 @@ from slingloads.io.common.atomic import atomic_outputs, check_outputs
 from slingloads.io.common.cover import report_info
 from slingloads.io.common.excel import write_workbook
 from slingloads.io.common.figures import drawings, png_bytes, task_result
+from slingloads.io.common.findings import with_findings
 from slingloads.io.common.report import check_units
 
 
@@ -85,7 +86,15 @@ def protected_inputs(study):
     return list(source.input_files) or ([source.path] if source.path else [])
 
 
-def write_report(kind, result, out_dir, stem, units, study, figures=None):
+def study_findings_of(study):
+    """The findings of ``study``'s results (:func:`slingloads.runs.findings.study_findings`),
+    for a report written alone (``slingloads run`` builds them once and passes them on)."""
+    from slingloads.runs.findings import study_findings
+
+    return study_findings(study.results)
+
+
+def write_report(kind, result, out_dir, stem, units, study, figures=None, findings=None):
     """Write the report of ``result`` atomically: ``<stem>-<tag>.xlsx``, its data files and
     its PNG figures.
 
@@ -103,6 +112,9 @@ def write_report(kind, result, out_dir, stem, units, study, figures=None):
     figures : FigureRenderer, optional
         Already drawing the figures (the report module's ``start_figures``); default: drawn
         now.
+    findings : Findings, optional
+        The run's findings, written on the Findings sheet (default: those of
+        ``study.results``).
 
     Returns
     -------
@@ -127,7 +139,9 @@ def write_report(kind, result, out_dir, stem, units, study, figures=None):
                            conventions=kind.conventions,
                            files=[*(f"{stem}-{tag}-{name}" for name in (*data, *kind.files)),
                                   *(f"{stem}-{tag}-{t}.png" for t in pngs)])
-        sheets = kind.sheets(result, units, kind.warnings(result, study.source.warnings))
+        sheets = with_findings(
+            kind.sheets(result, units, kind.warnings(result, study.source.warnings)),
+            study_findings_of(study) if findings is None else findings, units)
         with atomic_outputs(out_dir, inputs=inputs) as out:
             write_workbook(out.path(f"{stem}-{tag}.xlsx"), sheets,
                            {titles[t]: png for t, png in pngs.items()}, info=info,

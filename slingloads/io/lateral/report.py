@@ -432,7 +432,7 @@ REPORT = ReportKind(tag="lateral", title=TITLE, description=DESCRIPTION,
                     titles=_titles, data={"histories.csv": histories_csv})
 
 
-def write(result, out_dir, stem, units, study, figures=None):
+def write(result, out_dir, stem, units, study, figures=None, findings=None):
     """Write ``<stem>-lateral.xlsx``, ``<stem>-lateral-histories.csv`` and
     ``<stem>-lateral-*.png`` atomically (:func:`~slingloads.io.common.report_writer.
     write_report` of :data:`REPORT`).
@@ -448,9 +448,13 @@ def write(result, out_dir, stem, units, study, figures=None):
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
+    findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
+        default: those of ``study.results``.
 
     Returns
     -------
     list of pathlib.Path
     """
-    return write_report(REPORT, result, out_dir, stem, units, study, figures)
+    return write_report(REPORT, result, out_dir, stem, units, study, figures,
+                        findings=findings)

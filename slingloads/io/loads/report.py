@@ -49,6 +49,7 @@ from slingloads.errors import InputError
 from slingloads.io.common.atomic import atomic_outputs, check_outputs, safe_file_part
 from slingloads.io.common.cover import info_from_digest, input_digest, report_info
 from slingloads.io.common.csvout import csv_bytes
+from slingloads.io.common.decision import decision_section
 from slingloads.io.common.excel import (
     EXCEL_MAX_ROWS,
     Highlight,
@@ -63,6 +64,7 @@ from slingloads.io.common.figures import (
     start_drawing,
     task_result,
 )
+from slingloads.io.common.findings import with_findings
 from slingloads.io.common.locate import located
 from slingloads.io.common.report import (
     check_units,
@@ -74,7 +76,7 @@ from slingloads.io.common.report import (
     report_value,
     warning_sections,
 )
-from slingloads.io.common.report_writer import protected_inputs
+from slingloads.io.common.report_writer import protected_inputs, study_findings_of
 from slingloads.io.common.units import unit_label
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
@@ -602,11 +604,12 @@ def hook_angle_finding(result, lateral=None, justification=""):
     if lateral is not None:
         st = lateral.study
         rec, peak = float(np.degrees(st.recommended_angle)), float(np.degrees(st.max_load_angle))
+        said = (f"recommended design angle {rec:.1f} deg for the lateral directions"
+                if np.isfinite(rec) else "no design angle (see its verdict)")
         evidence = (f"Lateral-step pendulum study of this run: largest load angle from the "
                     f"mast {peak:.1f} deg over {len(st.pendulums)} cases (carrier motions x "
                     f"rope lengths x bodies x stated ranges), margin {st.margin:g}, "
-                    f"recommended design angle {rec:.1f} deg for the lateral directions; see "
-                    f"the lateral report.")
+                    f"{said}; see the lateral report.")
     else:
         rec = peak = None
         evidence = ("No lateral-step pendulum study in this run: nothing here shows that a "
@@ -688,7 +691,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
                         hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
                         input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
                         info=None, findings=None, sfbm_workbook=False, figures=None,
-                        nastran=None, checks=None, dynamics=None):
+                        nastran=None, checks=None, dynamics=None, study_findings=None):
     """Write the loads report (workbook, CSV tables, PNG plots) atomically.
 
     Parameters
@@ -719,7 +722,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Identification of the report (cover, page headers and footers). Default: from
         ``inputs_digest``.
     findings : dict, optional
-        ``{"lateral": lateral result or None, "hook angle justification": str,
+        ``{"lateral": lateral result or None, "hook angle handoff": HookAngleHandoff or None,
+        "parachute decision": ParachuteDecision or None, "hook angle justification": str,
         "previous envelope source": str}`` for the Summary's findings.
     sfbm_workbook : bool
         Also write ``<stem>-sfbm.xlsx``, every case at every station in report units (the
@@ -737,6 +741,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         The campaign's hand-off comparison (:class:`~slingloads.analyses.campaign.Handoff`
         ``.comparison``): written on a *Dynamics* sheet with the largest loads of the
         hand-entered cases against those of the cases from the dynamics.
+    study_findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`), written on the Findings sheet.
 
     Returns
     -------
@@ -770,7 +776,7 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
     with drawings(jobs, figures) as pngs:  # drawn while the tables are built and written
         return _publish(result, out_dir, stem, units, hull_pairs, stations, findings,
                         input_paths, info, max_rows, sfbm_workbook, pngs, titles, deck,
-                        checks, dynamics, figures)
+                        checks, dynamics, figures, study_findings)
 
 
 def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None):
@@ -809,7 +815,7 @@ def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_sta
 
 def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input_paths,
              info, max_rows, sfbm_workbook, pngs, titles, deck=None, checks=None,
-             dynamics=None, figures=None):
+             dynamics=None, figures=None, study_findings=None):
     """Build the tables and publish every file of the loads report (the PNGs are awaited
     when the Plots sheet is written; the CSV files are those the renderer ``figures`` made,
     when it was started with them: :func:`start_figures`)."""
@@ -822,6 +828,7 @@ def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input
                  "ExceedanceDetail": Highlight(["exceedance ratio [-]"], 1.0)}
     if dynamics is not None:
         sheets["Dynamics"] = dynamics_sections(result, dynamics, units)
+    sheets = with_findings(sheets, study_findings, units)
     # the CSV files first: made here unless the helper has made them (it makes them only
     # when no figure waits), while the helper goes on with the figures
     csv_files = {name: task_result(figures, name, make, result)
@@ -879,7 +886,9 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     closure_line = (f"Free-free closure: {'PASS' if closure_passes(result) else 'FAIL'} "
                     f"(largest residual against {CLOSURE_TOLERANCE:g} x the load scale).")
     outside = towed_outside(result)
-    notes = [verdict, "Evidence: " + evidence,
+    hook_handoff = findings.get("hook angle handoff")
+    notes = [verdict, *([hook_handoff.describe()] if hook_handoff is not None else []),
+             "Evidence: " + evidence,
              *(["FLAG: towed cables " + _outside_text(outside)] if outside else []),
              *exceedance_findings(result, findings.get("previous envelope source", "")),
              closure_line]
@@ -895,6 +904,11 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         summary.append(Section(  # the notes above the table, which stays narrow for print
             "Consistency with the other analyses of this run",
             checks.drop(columns=["note"], errors="ignore"), note="\n".join(lines)))
+    if hook_handoff is not None:
+        summary.append(Section("Lateral hook angle: the lateral study's hand-off to the loads",
+                               hook_handoff.to_frame()))
+    if study.parachute is not None:  # the loads' parachute: the study's one decision on it
+        summary += decision_section(findings.get("parachute decision"), units)
     summary += [
         Section("Study settings", study_table(result, units)),
         Section("Attitude (earth vertical in airframe axes)", attitude_table(result),
@@ -1044,16 +1058,19 @@ def envelope_csv(result):
 CSV_FILES = {"sfbm.csv": sfbm_csv, "envelope.csv": envelope_csv}
 
 
-def write(result, out_dir, stem, units, study, figures=None, checks=None):
+def write(result, out_dir, stem, units, study, figures=None, checks=None, findings=None):
     """Write the loads report of a study (:func:`write_loads_outputs`) into the run's outputs
     ``out_dir``, with the study's identification, report options, warnings and findings
     (the lateral study of the same run, when there is one, is the evidence on the hook
     angle; the campaign's hand-off, when the loads took the dynamics' cases), and the
-    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`)."""
+    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`), and
+    the run's ``findings`` on the Findings sheet (default: those of ``study.results``)."""
     info = report_info(study, title=TITLE, analysis=ANALYSIS, units=units,
                        conventions=CONVENTIONS)
     options, results = study.report, study.results
-    findings = {"lateral": results.lateral,
+    summary = {"lateral": results.lateral,
+                "hook angle handoff": results.loads_hook_angle,
+                "parachute decision": results.parachute_decision,
                 "hook angle justification": options.hook_angle_justification,
                 "previous envelope source": options.previous_envelope_source,
                 "warnings": list(study.source.warnings)}
@@ -1067,7 +1084,9 @@ def write(result, out_dir, stem, units, study, figures=None, checks=None):
                                    hull_pairs=options.hull_pairs,
                                    hull_stations=options.hull_stations,
                                    input_paths=protected_inputs(study), info=info,
-                                   findings=findings,
+                                   findings=summary,
                                    sfbm_workbook=options.sfbm_workbook,
                                    figures=figures, nastran=nastran, checks=checks,
-                                   dynamics=None if handoff is None else handoff.comparison)
+                                   dynamics=None if handoff is None else handoff.comparison,
+                                   study_findings=(study_findings_of(study) if findings is None
+                                                   else findings))

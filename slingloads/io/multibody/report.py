@@ -196,15 +196,27 @@ def modes_table(linear):
     return explain_infinite(frame, ["time to half or double [s]"], "none (neutral)")
 
 
-def stability_text(result):
-    """The stability verdict of the linear model, with its rule."""
+def stability_text(result, decision=None):
+    """The stability verdict of the linear model, with its rule and the question it answers
+    (linear stability at the trim), deferring to the parachute decision for the parachute's
+    adequacy."""
+    airspeed = result.inputs.system.airspeed / KNOT
     if result.linear is None:
         return f"no trim at the system airspeed: {result.trim.message}"
     lam = result.linear.eigenvalues
     worst = lam[np.argmax(lam.real)]
-    return (f"{result.linear.verdict()} (largest real part {worst.real:.4g} 1/s; rule: stable "
+    chute = ("with the Study parachute" if getattr(result.inputs.system, "parachute", None)
+             is not None else "without parachute")
+    text = (f"Linear stability at the trim ({airspeed:.4g} KEAS, {chute}): "
+            f"{result.linear.verdict()} (largest real part {worst.real:.4g} 1/s; rule: stable "
             f"when every real part is below -1e-6 1/s, neutral when some lie within +-1e-6, "
-            f"unstable otherwise)")
+            f"unstable otherwise). This answers whether small motions about this one trim "
+            f"decay; it does not size the parachute.")
+    if decision is not None:
+        text += (" Whether the parachute is adequate (every gust shape of the 1-DOF model, "
+                 "the campaign's conditions) is the parachute decision's answer, table below: "
+                 f"Study parachute {decision.study_area_verdict()}.")
+    return text
 
 
 def history_table(result, units="SI", interval=None):
@@ -261,10 +273,13 @@ def _parts(title, tables, note=""):
                                                  table) for k, table in enumerate(tables))]
 
 
-def _sheets(result, units, warnings=()):
+def _sheets(result, units, warnings=(), decision=None):
+    from slingloads.io.common.decision import decision_section
+
     airspeed = result.inputs.system.airspeed / KNOT
-    summary = [Section("Summary of the multibody model", note=stability_text(result)),
+    summary = [Section("Summary of the multibody model", note=stability_text(result, decision)),
                *warning_sections(warnings),
+               *decision_section(decision, units),
                Section("Runs (every metric: sheet Metrics)", runs_table(result)),
                Section(f"Trim at {airspeed:.4g} KEAS", trim_table(result, units)),
                Section("System as flown", system_table(result, units))]
@@ -350,7 +365,7 @@ REPORT = ReportKind(tag="multibody", title=TITLE, description=DESCRIPTION,
                     warnings=_warnings, number_format=_matrix_formats)
 
 
-def write(result, out_dir, stem, units, study, figures=None):
+def write(result, out_dir, stem, units, study, figures=None, findings=None):
     """Write ``<stem>-multibody.xlsx``, ``-multibody-histories.csv`` and the PNG plots
     atomically (:func:`~slingloads.io.common.report_writer.write_report` of
     :data:`REPORT`).
@@ -366,9 +381,15 @@ def write(result, out_dir, stem, units, study, figures=None):
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
         Already drawing the figures (:func:`start_figures`); default: drawn now.
+    findings : Findings, optional
+        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
+        default: those of ``study.results``.
 
     Returns
     -------
     list of pathlib.Path
     """
-    return write_report(REPORT, result, out_dir, stem, units, study, figures)
+    from slingloads.io.common.decision import with_decision
+
+    return write_report(with_decision(REPORT, study), result, out_dir, stem, units, study,
+                        figures, findings=findings)

@@ -1,0 +1,242 @@
+"""One answer per question across the reports of one ``slingloads run``.
+
+Two workbooks: the light-twin example with the campaign on (SI reports), and the second
+example, loadcases/example-us-twin.xlsx (a GENERIC 4.9 t twin in US units, hub forward of the
+CG, short runs; its campaign finds no stable area, exit 3, so the "no answer" path is checked
+too), written in US units. The reports are read back from the written xlsx files (pandas /
+openpyxl), never from the Python objects.
+
+Reference: the rule itself, applied to the written numbers: (1) the Findings sheet is the
+same, cell by cell, in every report of a run; (2) every other statement of the same quantity
+(the parachute decision table, the loads' hook angle, the lateral study's recommended angle
+and cable tension, the campaign's speed limits, the multibody stability verdict) equals the
+Findings answer; (3) no verdict contradicts the number printed beside it ("stable" with a
+real part above -1e-6 1/s, "adequate" with an area below the chosen one, a tension "<= Nz"
+above Nz, a hook angle of 90 deg or more or below the Study's...).
+"""
+
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from slingloads.cli import main
+
+US_TWIN = Path(__file__).resolve().parents[1] / "loadcases" / "example-us-twin.xlsx"
+REPORTS = ("loads", "lateral", "chute", "multibody", "campaign")
+
+
+@pytest.fixture(scope="module")
+def us_twin_reports(tmp_path_factory):
+    """``slingloads run --units US`` on the second example (exit 3: its campaign finds no
+    parachute area stable in every condition, a finding; every report is written)."""
+    out = tmp_path_factory.mktemp("us-twin") / "out"
+    assert main(["run", str(US_TWIN), "--out", str(out), "--units", "US", "--quiet"]) == 3
+    return out
+
+
+def _reports(folder):
+    """{report: path} of the workbooks of one run."""
+    out = {}
+    for name in REPORTS:
+        found = list(folder.glob(f"*-{name}.xlsx"))
+        if found:
+            out[name] = found[0]
+    return out
+
+
+def _sheet(path, name):
+    return pd.read_excel(path, sheet_name=name, header=None)
+
+
+def _section(frame, title):
+    """The table under the title ``title`` of a sheet read with header=None (header: the
+    first row after the title whose first cell is 'item'), or None."""
+    first = frame[0].astype(str)
+    hits = np.nonzero((first == title).to_numpy())[0]
+    if not len(hits):
+        return None
+    i = int(hits[0]) + 1
+    while first.iloc[i] != "item":
+        i += 1
+    head = [c for c in frame.iloc[i] if isinstance(c, str)]
+    rows = []
+    for j in range(i + 1, len(frame)):
+        if pd.isna(frame.iloc[j, 0]):
+            break
+        rows.append(list(frame.iloc[j, :len(head)]))
+    return pd.DataFrame(rows, columns=head)
+
+
+def _findings(path):
+    """The Findings table of a report, by question."""
+    frame = _sheet(path, "Findings")
+    i = int(np.nonzero((frame[0].astype(str) == "question").to_numpy())[0][0])
+    head = list(frame.iloc[i].dropna())
+    table = frame.iloc[i + 1:, :len(head)].set_axis(head, axis=1)
+    return table[table["question"].notna()].set_index("question")
+
+
+def _items(path, sheet="Summary"):
+    """{item: value} of every item/value row of a sheet (the first occurrence of each)."""
+    frame = _sheet(path, sheet)
+    out = {}
+    for row in frame.itertuples(index=False):
+        if isinstance(row[0], str) and len(row) > 1 and row[0] not in out:
+            out[row[0]] = row[1]
+    return out
+
+
+def _text(path, sheet="Summary"):
+    return " ".join(str(v) for v in _sheet(path, sheet)[0].dropna())
+
+
+def _num(value):
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def _same(a, b):
+    return (math.isnan(a) and math.isnan(b)) or a == pytest.approx(b, rel=1e-9, abs=1e-12)
+
+
+def _check_run(folder, units):
+    """Every consistency rule on the reports of one run (module notes)."""
+    reports = _reports(folder)
+    assert set(reports) == set(REPORTS), reports
+    # (1) one Findings table, identical in every report
+    tables = {name: _sheet(path, "Findings") for name, path in reports.items()}
+    first = tables["loads"]
+    for name, table in tables.items():
+        pd.testing.assert_frame_equal(table, first, check_exact=True, obj=name)
+    f = _findings(reports["loads"])
+    area_unit = "m^2" if units == "SI" else "ft^2"
+
+    # (2) the parachute decision: one table, the same in every report that prints it, and
+    # the Findings' chosen and Study areas are its values
+    decisions = {name: _section(_sheet(path, "Summary"), "Parachute decision")
+                 for name, path in reports.items()}
+    decisions = {k: v for k, v in decisions.items() if v is not None}
+    assert {"chute", "campaign", "multibody", "loads"} <= set(decisions)
+    base = decisions["chute"].set_index("item")
+    for name, table in decisions.items():
+        pd.testing.assert_frame_equal(table, decisions["chute"], obj=name)
+    chosen = f.loc["parachute area (chosen)"]
+    assert chosen["unit"] == area_unit == base.loc["chosen area", "unit"]
+    assert _same(_num(chosen["value"]), _num(base.loc["chosen area", "value"]))
+    study = f.loc["parachute area of the loads (Study 'parachute area')"]
+    row = base.loc["Study 'parachute area' (loads)"]
+    assert _same(_num(study["value"]), _num(row["value"])) and study["answer"] == row["note"]
+
+    # (3) verdicts against the numbers beside them: the Study's parachute
+    s, c = _num(study["value"]), _num(chosen["value"])
+    if "SMALLER" in study["answer"]:
+        assert s < c
+    elif "at least the chosen area" in study["answer"]:
+        assert s >= c * (1 - 1e-9)
+    else:
+        assert math.isnan(c) and "not shown adequate" in study["answer"]
+    chute = _text(reports["chute"])  # the sizing's headline states the decision's answer
+    if math.isnan(c):
+        assert "Chosen area (parachute decision): NONE" in chute
+    else:
+        assert f"every report): {c:.3g} {area_unit}, decided by the" in chute
+    if chosen["answer"].startswith("NONE"):
+        assert math.isnan(c)
+    else:
+        factor = float(re.match(r"([\d.]+) x the neutral area", chosen["answer"]).group(1))
+        assert factor == pytest.approx(c / _num(chosen["reference"]), rel=5e-3)
+
+    # the hook angle: the loads' lateral directions at the Findings' angle, never below the
+    # Study's, at least the lateral study's recommendation, below 90 deg
+    hook = f.loc["hook design angle, lateral directions (from the vertical)"]
+    angle = _num(hook["value"])
+    loads = _items(reports["loads"])
+    lateral = _items(reports["lateral"])
+    assert _same(angle, _num(loads["hook cone angle of the lateral directions"]))
+    assert _same(angle, _num(loads["lateral hook angle used by the loads"]))
+    recommended = _num(lateral["recommended design angle"])
+    assert _same(recommended, _num(loads["lateral study's recommended design angle"]))
+    assert angle < 90.0 and angle >= _num(hook["reference"]) - 1e-9
+    assert angle >= recommended - 1e-9 or math.isnan(recommended)
+    assert hook["answer"].startswith(f"{angle:.1f} deg")
+    governs = "lateral study" if recommended > _num(hook["reference"]) else "Study"
+    assert f"governed by the {governs}" in hook["answer"]
+    assert "rerun the loads" not in _text(reports["loads"])
+
+    # the cable tension against Nz
+    tension = f.loc["peak cable tension T/(m g) against Nz"]
+    t, nz = _num(tension["value"]), _num(tension["reference"])
+    assert _same(nz, _num(loads["hook load factor Nz (limit)"]))
+    assert _num(lateral["largest cable tension factor T/(m g)"]) <= t * (1 + 1e-9)
+    assert ("<= Nz" in tension["answer"]) == (t <= nz)
+    assert ("EXCEEDS" in tension["answer"]) == (t > nz)
+
+    # the speed limits without parachute: the campaign Summary's, word for word
+    campaign = _sheet(reports["campaign"], "Summary")
+    i = int(np.nonzero((campaign[0].astype(str) == "helicopter").to_numpy())[0][0])
+    head = list(campaign.iloc[i].dropna())
+    limits = campaign.iloc[i + 1:, :len(head)].set_axis(head, axis=1)
+    limits = limits[limits["helicopter"].notna()].iloc[:len(
+        [q for q in f.index if q.startswith("speed limit")])]
+    for row in limits.itertuples(index=False):
+        mine = f.loc[f"speed limit without parachute, {row.helicopter}"]
+        assert mine["answer"].startswith(row._1)  # 'speed limit' column
+        value = _num(mine["value"])
+        if row._1.startswith(">="):
+            assert value == pytest.approx(float(re.findall(r"[\d.]+", row._1)[0]))
+        elif row._1.startswith("none"):
+            assert math.isnan(value)
+
+    # the multibody verdict: the same word in its Summary and the Findings, and the real
+    # part beside it agrees with the word (rule: stable below -1e-6 1/s)
+    linear = f.loc["linear stability of the towed system at its trim (multibody)"]
+    word = linear["answer"].split()[0]
+    multibody = _text(reports["multibody"])
+    assert "Linear stability at the trim (" in multibody
+    assert re.search(rf"\): {word} \(largest real part", multibody)
+    largest = _num(linear["value"])
+    assert {"stable": largest < -1e-6, "unstable": largest > 1e-6,
+            "neutral": abs(largest) <= 1e-6}[word]
+    assert "parachute decision" in multibody
+
+    # the loads' exceedances
+    over = f.loc["loads exceedances over the previous envelope"]
+    if "EXCEED" in over["answer"]:
+        assert _num(over["value"]) > 1.0
+    elif over["answer"].startswith("none"):
+        assert _num(over["value"]) <= 1.0
+
+
+def test_example_with_campaign_reports_agree(example_campaign_run_report):
+    """The light-twin example with its campaign (SI): every rule of the module holds; and the
+    hand-off raised the loads' lateral hook cases to the lateral study's 33.2 deg."""
+    _check_run(example_campaign_run_report, "SI")
+    f = _findings(_reports(example_campaign_run_report)["loads"])
+    assert _num(f.loc["hook design angle, lateral directions (from the vertical)",
+                      "value"]) == pytest.approx(33.236, abs=1e-3)
+
+
+def test_us_twin_reports_agree(us_twin_reports):
+    """The second example (US units, hub forward of the CG): every rule of the module holds,
+    the areas in ft^2; no area is chosen and the Findings say so."""
+    _check_run(us_twin_reports, "US")
+    f = _findings(_reports(us_twin_reports)["loads"])
+    assert f.loc["parachute area (chosen)", "answer"].startswith("NONE")
+
+
+def test_findings_of_a_single_analysis_say_not_run(example_loads_report):
+    """`slingloads loads` alone: the Findings rows of the analyses not run say 'not run'
+    (hook angle: the Study's, the only one there is)."""
+    f = _findings(next(example_loads_report.glob("*-loads.xlsx")))
+    assert f.loc["speed limit without parachute", "answer"] == "not run"
+    assert f.loc["parachute area (chosen)", "answer"] == "not run"
+    assert f.loc["linear stability of the towed system at its trim (multibody)",
+                 "answer"] == "not run"
+    assert "the Study's (no lateral study run)" in f.loc[
+        "hook design angle, lateral directions (from the vertical)", "answer"]
