@@ -70,7 +70,7 @@ def example():
     inertia = trace * np.eye(3) - second  # a body's tensor: the triangle inequality holds
     items = MassItems(items.ids, items.mass, items.position, inertia, items.description)
     listed = (ListedCase("vérification-1", "AZ090", "NONE", False, "accented id"),
-              ListedCase("L" * 60, "TOW", "A+B+", True, "a sixty-character id"),
+              ListedCase("L" * 60, "TOW", "TRIM", True, "a sixty-character id"),
               ListedCase("cost $5", "VERTICAL", "CENTRE", True, "an id with a dollar"))
     study = replace(study, airframe=replace(study.airframe, mass_items=items), listed=listed)
     return study.run()
