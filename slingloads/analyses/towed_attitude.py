@@ -10,8 +10,10 @@ the analyses call for it:
 
 * the loads' towed-flight cases (hook id ``TOW``) take the trimmed attitude (earth vertical,
   angle of attack and sideslip) at the loads' airspeed, with and without parachute;
-* the one-degree yaw sizing takes the trimmed angle of attack at its airspeed, and yaws about
-  the trimmed suspension axis (the line from the hub to the hook: :attr:`TowedAttitude.axis`);
+* the one-degree yaw sizing takes the trimmed angle of attack at its airspeed (its suspension
+  axis, the line from the hub to the hook, is :attr:`TowedAttitude.axis`, which
+  :class:`~slingloads.models.yaw_dynamics.YawModel` can take as ``axis``; the sizing does not
+  yet yaw about it);
 * the multibody analysis reports the same trim at its airspeed.
 
 When the study has no multibody system, :func:`towed_system` assembles one from the loads'

@@ -14,7 +14,6 @@ from slingloads.analyses.chute_sizing import (
     run_yaw,
     sizing_sweep,
 )
-from slingloads.models.airframe import hanging_yaw_inertia
 from slingloads.models.integration import SolverSettings
 from slingloads.models.yaw_dynamics import YawModel
 
@@ -95,9 +94,10 @@ class ChuteSizingReport:
     decision : ParachuteDecision or None
         The parachute decision (:mod:`slingloads.analyses.parachute_decision`), with the
         campaign's selection when the campaign ran in the same study.
-    towed : TowedAttitude or None
-        The towed trim at the sizing's airspeed whose angle of attack and suspension axis
-        (moments and inertia about it) the sizing flies; None without a towed system.
+    axes_angle : float
+        Angle between the axis the yawing moments are taken about (airframe z through the
+        hub) and the axis of the yaw inertia (the hub-CG line, the hanging vertical); NaN
+        without mass items. [rad]
     """
 
     inputs: ChuteSizingInputs
@@ -107,6 +107,7 @@ class ChuteSizingReport:
     recommended_area: float
     study_area_runs: object = None
     decision: object = None
+    axes_angle: float = float("nan")
     towed: object = None
 
     @property
@@ -180,14 +181,7 @@ def run(study):
         towed = towed_attitude(system, inputs.model.condition.eas)
         if towed.converged:  # the attitude the loads' towed cases and the multibody fly
             model = inputs.model
-            inertia = model.yaw_inertia
-            if inputs.inertia_source == "mass items":  # about the trimmed suspension axis
-                items = study.airframe.mass_items
-                inertia = hanging_yaw_inertia(items.inertia_about_cg, items.cg,
-                                              model.hardpoints.hub, towed.axis,
-                                              items.total_mass)
-            model = replace(model, condition=replace(model.condition, alpha=towed.alpha),
-                            axis=towed.axis, yaw_inertia=inertia)
+            model = replace(model, condition=replace(model.condition, alpha=towed.alpha))
             inputs = replace(inputs, model=model)
     with study.located(ANALYSIS):
         static = neutral_area(inputs.model, inputs.fit_range)
@@ -204,7 +198,7 @@ def run(study):
         recommended = sweep.smallest_stable_area if sweep is not None else 0.0
         decision = _decision(study, inputs, static, sweep) if sweep is not None else None
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
-                             decision, towed)
+                             decision, axes_angle(study.airframe), towed)
 
 
 def _towed_system(study):
@@ -220,6 +214,28 @@ def _towed_system(study):
 
     return towed_system(loads.airframe, loads.fuselage, loads.fin, loads.parachute,
                         loads.flight.eas, loads.flight.density_altitude)[0]
+
+
+def axes_angle(airframe):
+    """Angle between the axis the yawing moments are taken about (airframe z through the
+    hub) and the axis of the yaw inertia (the hub-CG line).
+
+    Parameters
+    ----------
+    airframe : Airframe or None
+        Its hub hardpoint and mass items' centre of gravity. [m]
+
+    Returns
+    -------
+    float
+        The angle; NaN without mass items or with the CG at the hub. [rad]
+    """
+    items = getattr(airframe, "mass_items", None)
+    if items is None:
+        return float("nan")
+    k = np.asarray(airframe.hardpoints.hub, float) - np.asarray(items.cg, float)
+    norm = np.linalg.norm(k)
+    return float(np.arccos(np.clip(k[2] / norm, -1.0, 1.0))) if norm > 0 else float("nan")
 
 
 def shortfalls(result):

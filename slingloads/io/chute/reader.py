@@ -32,7 +32,7 @@ from slingloads.limits import (
     MAX_CHUTE_SAMPLES,
     MAX_CHUTE_STEPS,
 )
-from slingloads.models.airframe import hanging_vertical, yaw_inertia_about_hub
+from slingloads.models.airframe import yaw_inertia_about_hub
 from slingloads.models.flight import FlightCondition
 from slingloads.models.gusts import GUST_SHAPES, DrydenTurbulence, make_gust
 from slingloads.models.integration import SOLVE_IVP_METHODS, SolverSettings
@@ -114,9 +114,7 @@ def read(reader, params, study):
                                "vertical, without Izz): give it with the source 'parameter'")
     with located(params, {"airspeed": "chute sizing airspeed IAS",
                           "alpha": "chute sizing alpha trim"}, default="chute sizing alpha trim"):
-        # moments about the line the inertia is about: the hub-CG line of the body at rest
-        model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute,
-                         axis=hanging_vertical(study.airframe))
+        model = YawModel(fuselage, fin, hardpoints, inertia, condition, parachute)
     lo, hi = model.beta_range()
     params.check("chute sizing linearisation range", half <= min(-lo, hi),
            f"the linearisation range must lie inside the tables' sideslip range "

@@ -137,7 +137,6 @@ def summary_tables(result, units="SI"):
     inp, static, line = result.inputs, result.static, result.line
     m = inp.model
     c = m.condition
-    trimmed = result.towed is not None and result.towed.converged
     condition = _items([
         ("equivalent airspeed KEAS", c.ias, "airspeed", "= KIAS (no position error)"),
         ("true airspeed KTAS", c.tas, "airspeed", ""),
@@ -151,15 +150,12 @@ def summary_tables(result, units="SI"):
           if result.towed is not None and result.towed.converged else
           "Study 'chute sizing alpha trim' (no towed trim: "
           + (result.towed.message if result.towed is not None else "no towed system") + ")")),
-        ("yaw axis from airframe z", float(np.degrees(m.axis_tilt)), "deg",
-         "moments and inertia about one axis, the suspension axis through the hub: "
-         + ("the line from the hook through the hub at the towed trim"
-            if trimmed else "the hub-CG line of the body hung at rest")
-         + f" (airframe axes ({m.axis[0]:+.4f}, {m.axis[1]:+.4f}, {m.axis[2]:+.4f}))"),
-        ("yaw inertia about the suspension axis", m.yaw_inertia, "inertia",
-         f"source: {inp.inertia_source}"
-         + (" (with the parallel-axis term of the CG off the axis)"
-            if inp.inertia_source == "mass items" and trimmed else "")),
+        ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
+         f"source: {inp.inertia_source}"),
+        ("moment axis against inertia axis", float(np.degrees(result.axes_angle)), "deg",
+         "yawing moments about airframe z through the hub, yaw inertia about the hub-CG "
+         "line (hanging vertical): not yet one axis; the sizing is exact only when this is "
+         "small" if np.isfinite(result.axes_angle) else "inertia given as a parameter"),
         ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg",
          "fit over +- this; a run leaving it is outside the domain"),
         ("sideslip limit", float(np.degrees(inp.metrics.sideslip_limit)), "deg",
