@@ -135,6 +135,11 @@ class TowedAttitude:
     def attitude(self):
         """The trimmed :class:`~slingloads.models.attitude.Attitude` (pitch and roll).
 
+        Returns
+        -------
+        Attitude
+            From the trimmed earth vertical, source :data:`TRIMMED`.
+
         Raises
         ------
         InputError
@@ -168,7 +173,13 @@ class TowedAttitude:
         return "; ".join(out)
 
     def to_frame(self):
-        """The trimmed attitude as a one-row DataFrame (angles in degrees)."""
+        """The trimmed attitude as a one-row DataFrame (angles in degrees).
+
+        Returns
+        -------
+        pandas.DataFrame
+            Airspeed [m/s], parachute, converged, message, pitch, roll, yaw, alpha, beta [deg].
+        """
         return pd.DataFrame([{
             "airspeed EAS [m/s]": self.airspeed, "parachute": self.parachute,
             "converged": self.converged, "message": self.message,
