@@ -166,29 +166,65 @@ def towing_study(**hook):
                       envelope=env, fuselage=drag_only_fuselage(), parachute=Parachute(1.0))
 
 
-def test_towed_case_x_shear_by_hand():
-    """Fuselage drag Fa = q S 0.2 = 1621.000 * 2 * 0.2 = 648.40 N shared over nine points,
-    parachute drag D = q 0.95 A = 1539.95 N at x = 9. In the towed case the hub reacts both
-    (hook x force -(Fa + D)), there is no fore-and-aft acceleration, and the pitch acceleration
-    gives no x inertia (every mass at z = z_cg = 0), so V_x = -(applied x forces forward):
-    at x = 3.5 (points 1, 2, 3 forward): -3/9 Fa = -216.13 N, the fuselage's own share only;
-    on the tail boom at x = 6.5 (points 1..6 and the hub forward): -(6/9 Fa - Fa - D) =
-    D + 3/9 Fa = 1756.08 N. The vertical hook case instead reacts the drag by an aft
-    acceleration (Fa + D)/m, which adds m_fwd (Fa + D)/m: at x = 3.5, 400 kg forward of 1000 kg,
-    -216.13 + 0.4 * 2188.35 = 659.21 N; at x = 6.5, 1756.08 - 0.4 * 2188.35 = 880.74 N."""
+def trimmed_pitch_by_hand(fa, d, w):
+    """Pitch of the towing airframe at which the moments about the hub balance, by hand.
+
+    Body to earth R = Ry(theta) = [[c, 0, s], [0, 1, 0], [-s, 0, c]]; from the hub (5, 0, 1):
+    the CG and the fuselage reference at r = (0, 0, -1), the parachute at (4, 0, -1). In body
+    axes the weight is R^T (0, 0, -W) = (W s, 0, -W c), the fuselage drag (Fa, 0, 0), the
+    parachute drag along the earth's aft flow R^T (D, 0, 0) = (D c, 0, D s). Pitching moments
+    (M_y = r_z F_x - r_x F_z): -W s, -Fa, -D c - 4 D s; their sum is zero where
+    (W + 4 D) sin(theta) + D cos(theta) = -Fa, i.e.
+    theta = asin(-Fa / hypot(W + 4 D, D)) - atan2(D, W + 4 D)."""
+    a, b = w + 4.0 * d, d
+    return np.arcsin(-fa / np.hypot(a, b)) - np.arctan2(b, a)
+
+
+def test_towed_trim_against_a_hand_moment_balance():
+    """The towed case with parachute flies at the pitch of the hand moment balance
+    (:func:`trimmed_pitch_by_hand`: Fa = q S 0.2 = 648.40 N, D = q 0.95 A = 1539.95 N,
+    W = 9806.65 N: theta = -7.826 deg). Without parachute the table has no yawing moment at
+    all: the yaw is indeterminate, so there is no trim, no towed case, and a finding says so.
+    The loads' own applied loads at that attitude (gravity along its vertical, fuselage,
+    parachute; another code than the multibody trim) have no moment about the hub, and the
+    trimmed case has no horizontal acceleration."""
+    study = towing_study()
+    fa, d, w = Q * 2.0 * 0.2, Q * 0.95, 1000.0 * G0
+    assert fa == pytest.approx(648.40, abs=0.01) and d == pytest.approx(1539.95, abs=0.01)
+    trims = study.towed_trims
+    assert np.degrees(trimmed_pitch_by_hand(fa, d, w)) == pytest.approx(-7.826, abs=1e-3)
+    assert trims[True].pitch == pytest.approx(trimmed_pitch_by_hand(fa, d, w), abs=1e-8)
+    assert not trims[False].converged
+    assert any("without parachute" in line and "no trim" in line
+               for line in study.run().towed_findings())
+    assert trims[True].roll == pytest.approx(0.0, abs=1e-10)
+    cases = study.case_matrix()
+    tow = (cases["hook"] == "TOW").to_numpy()
+    positions, forces, moments = study.applied_loads(cases[tow])
+    n, feet = len(study.airframe.mass_items.mass), 4
+    others = np.r_[0:n, n + feet:positions.shape[0]]
+    r = positions[others] - study.airframe.hardpoints.hub
+    about_hub = (np.cross(r[None], forces[:, others]) + moments[:, others]).sum(axis=1)
+    assert_allclose(about_hub, 0.0, atol=1e-7 * w)
+    result = study.run()
+    k = study.case_verticals(cases)[tow]
+    a = result.linear_acceleration[tow]
+    assert_allclose(a - np.einsum("ij,ij->i", a, k)[:, None] * k, 0.0, atol=1e-12 * G0)
+
+
+def test_vertical_case_x_shear_by_hand():
+    """Fuselage drag Fa = q S 0.2 = 648.40 N shared over nine points, parachute drag
+    D = q 0.95 A = 1539.95 N at x = 9. The vertical hook case reacts the drag by an aft
+    acceleration (Fa + D)/m, which adds m_fwd (Fa + D)/m to V_x = -(applied x forces forward):
+    at x = 3.5 (points 1, 2, 3 forward; 400 kg forward of 1000 kg), -3/9 Fa + 0.4 (Fa + D) =
+    659.21 N; at x = 6.5 (the hub forward too), D + 3/9 Fa - 0.4 (Fa + D) = 880.74 N."""
     study = towing_study()
     result = study.run()
     cases = result.cases
     fa, d = Q * 2.0 * 0.2, Q * 0.95
-    assert fa == pytest.approx(648.40, abs=0.01) and d == pytest.approx(1539.95, abs=0.01)
     x = result.stations
     at = {v: int(np.argmin(np.abs(x - v))) for v in (3.5, 6.5)}
-    tow = int(np.flatnonzero((cases["hook"] == "TOW") & cases["chute"])[0])
     vert = int(np.flatnonzero((cases["hook"] == "VERTICAL") & cases["chute"])[0])
-    assert_allclose(result.linear_acceleration[tow, :2], 0.0, atol=1e-12)
-    assert result.loads[tow, at[3.5], 0] == pytest.approx(-3 / 9 * fa, rel=1e-9)
-    assert result.loads[tow, at[6.5], 0] == pytest.approx(d + 3 / 9 * fa, rel=1e-9)
-    assert result.loads[tow, at[6.5], 0] == pytest.approx(1756.08, abs=0.01)
     assert result.loads[vert, at[3.5], 0] == pytest.approx(-3 / 9 * fa + 0.4 * (fa + d),
                                                            rel=1e-9)
     assert result.loads[vert, at[6.5], 0] == pytest.approx(d + 3 / 9 * fa - 0.4 * (fa + d),
@@ -197,21 +233,25 @@ def test_towed_case_x_shear_by_hand():
 
 
 def test_towed_cable_angle_and_cone_flag_by_hand():
-    """Trimmed cable: vertical component Nz W = 2.5 * 1000 * 9.80665 = 24516.63 N, horizontal
-    Fa + D = 2188.35 N forward: angle atan(2188.35 / 24516.63) = 5.101 deg at azimuth 180 deg
-    (towards forward); at 1 g atan(2188.35 / 9806.65) = 12.580 deg. Inside a 30 deg cone; with
-    a 10 deg cone the 1 g angle lies OUTSIDE and is flagged."""
+    """Trimmed cable at the trimmed pitch theta (:func:`trimmed_pitch_by_hand`): vertical
+    component Nz W = 2.5 * 1000 * 9.80665 = 24516.63 N, horizontal the earth-horizontal part
+    of the drags, H = D + Fa cos(theta) (the fuselage's body-axis drag tilted by theta),
+    forward: angle atan(H / (Nz W)) at azimuth 180 deg (towards forward); at 1 g
+    atan(H / W). Inside a 30 deg cone; with a 10 deg cone the 1 g angle lies OUTSIDE and is
+    flagged."""
     table = towing_study().run().towed_table()
     on = table[table["chute"]].iloc[0]
-    assert on["cable angle from vertical [deg]"] == pytest.approx(5.101, abs=1e-3)
-    assert on["cable angle at 1 g [deg]"] == pytest.approx(12.580, abs=1e-3)
+    fa, d, w = Q * 2.0 * 0.2, Q * 0.95, 1000.0 * G0
+    h = d + fa * np.cos(trimmed_pitch_by_hand(fa, d, w))
+    assert on["cable angle from vertical [deg]"] == pytest.approx(
+        np.degrees(np.arctan(h / (2.5 * w))), abs=1e-6)
+    assert on["cable angle at 1 g [deg]"] == pytest.approx(np.degrees(np.arctan(h / w)),
+                                                           abs=1e-6)
     assert on["cable azimuth [deg]"] == pytest.approx(180.0, abs=1e-9)
     assert on["inside hook cone"] == "yes"
     narrow = towing_study(angle=np.radians(10.0)).run().towed_table()
     assert narrow.loc[narrow["chute"], "inside hook cone"].iloc[0] == "OUTSIDE"
-    off = narrow[~narrow["chute"]].iloc[0]  # fuselage drag alone: atan(648.40 / 9806.65)
-    assert off["cable angle at 1 g [deg]"] == pytest.approx(3.783, abs=1e-3)
-    assert off["inside hook cone"] == "yes"
+    assert not (~narrow["chute"]).any()  # no trim without parachute (yaw indeterminate)
 
 
 def hc1_towing_study(attitude):
@@ -240,21 +280,22 @@ def test_towed_cases_have_no_horizontal_resultant(attitude):
     cases = study.case_matrix()
     positions, forces, _ = study.applied_loads(cases)
     result = study.run()
-    k = study.vertical
     tow = (cases["hook"] == "TOW").to_numpy()
-    assert tow.sum() == 8  # 4 points x parachute on/off
+    assert tow.sum() == 2  # the trim with and without parachute
+    k = study.case_verticals(cases)[tow]
     n, feet = len(study.airframe.mass_items.mass), 4
     hook = forces[:, n:n + feet].sum(axis=1)
     external = forces[:, n + feet:].sum(axis=1)
     weight = study.airframe.mass_items.weight
     m = study.airframe.mass_items.total_mass
     a = result.linear_acceleration[tow]
-    horizontal = a - np.outer(a @ k, k)
-    assert_allclose(horizontal, 0.0, atol=1e-12 * G0)
-    assert_allclose(m * a @ k, 1.5 * weight + external[tow] @ k, rtol=1e-12)
-    assert_allclose(hook[tow] @ k, 2.5 * weight, rtol=1e-12)
+    along = np.einsum("ij,ij->i", a, k)
+    assert_allclose(a - along[:, None] * k, 0.0, atol=1e-12 * G0)
+    assert_allclose(m * along, 1.5 * weight + np.einsum("ij,ij->i", external[tow], k),
+                    rtol=1e-12)
+    assert_allclose(np.einsum("ij,ij->i", hook[tow], k), 2.5 * weight, rtol=1e-12)
     assert np.abs(result.residual).max() < 1e-8 * result.residual_scale
-    angle, _ = cable_geometry(hook[tow], k)
+    angle = np.array([cable_geometry(hook[tow][j:j + 1], k[j])[0][0] for j in range(2)])
     assert_allclose(np.degrees(angle), result.cases.loc[tow, "cable angle from vertical [deg]"],
                     rtol=1e-12)
 

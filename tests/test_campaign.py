@@ -406,8 +406,11 @@ def test_loads_take_the_dynamics_cases(local, example_loads):
     expected = line_load * np.array([np.cos(t1) * np.cos(p0), np.sin(p0),
                                      np.sin(t1) * np.cos(p0)])
     assert_allclose(forces[0, -1], expected, rtol=1e-9)
-    hooks = len(study.hook_table()) + 1  # the cone, the vertical and the towed case
+    # the cone and the vertical at each dynamics point; the towed cases fly the trim (aero
+    # TRIM), not a dynamics point
+    hooks = len(study.hook_table())
     assert (cases["source"] == "dynamics").sum() == hooks * 5 * (2 + 5)
+    assert not cases.loc[cases["hook"] == "TOW", "source"].eq("dynamics").any()
 
 
 def test_loads_hook_cone_from_the_dynamics_and_table_limits(example_loads):

@@ -131,10 +131,13 @@ def test_body_axes_sheet_gives_the_same_loads(tmp_path):
         ws.cell(1, names.index("CD") + 1).value = "CX"
         ws.cell(1, names.index("CL") + 1).value = "CZ"
         set_row(b, "fuselage force axes", "body")
-    body_loads = loads_of(edited(tmp_path, edit)).run().loads
-    reference = loads_of(edited(tmp_path, on_breakpoints, "wind.xlsx")).run().loads
-    np.testing.assert_allclose(body_loads, reference, rtol=0,
-                               atol=1e-9 * np.abs(reference).max())
+    body = loads_of(edited(tmp_path, edit)).run()
+    reference = loads_of(edited(tmp_path, on_breakpoints, "wind.xlsx")).run()
+    # the envelope points lie on the breakpoints, where the two tables agree; the towed
+    # case's trimmed attitude lies between them, where each table interpolates its own axes
+    hand = (reference.cases["hook"] != "TOW").to_numpy()
+    np.testing.assert_allclose(body.loads[hand], reference.loads[hand], rtol=0,
+                               atol=1e-9 * np.abs(reference.loads).max())
 
 
 def with_parachute_table(column):
@@ -154,8 +157,13 @@ def test_parachute_canopy_axes_table(tmp_path, example_loads):
     relative wind gives the default loads: the canopy axis lies along the wind."""
     study = loads_of(edited(tmp_path, with_parachute_table("CT")))
     assert study.parachute.axes == "canopy"
-    np.testing.assert_allclose(study.run().loads, example_loads.run().loads, rtol=1e-12,
+    result, reference = study.run(), example_loads.run()
+    # the trim flies wind-axes canopies only: compare the cases that are not towed
+    mine = (result.cases["hook"] != "TOW").to_numpy()
+    hand = (reference.cases["hook"] != "TOW").to_numpy()
+    np.testing.assert_allclose(result.loads[mine], reference.loads[hand], rtol=1e-12,
                                atol=1e-9)
+    assert any("left out of the trim" in line for line in result.towed_findings())
 
 
 @pytest.mark.parametrize(("row", "value", "fragments"), [
@@ -231,7 +239,7 @@ def test_report_states_attitude_and_towed_cables(example_loads_report, example_l
         np.degrees(result.attitude.pitch), rel=1e-12)
     note, towed = summary_block(path, "Towed-flight equilibrium cases")
     api = result.towed_table()
-    assert list(towed["case"]) == list(api["case"]) and len(api) == 10
+    assert list(towed["case"]) == list(api["case"]) and len(api) == 1  # no trim without chute
     np.testing.assert_allclose(towed["cable angle from vertical [deg]"].astype(float),
                                api["cable angle from vertical [deg]"], rtol=1e-12)
     assert set(towed["inside hook cone"]) == {"yes"}

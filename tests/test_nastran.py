@@ -37,7 +37,7 @@ from slingloads.analyses.loads import ListedCase
 from slingloads.cli import main
 from slingloads.constants import G0
 from slingloads.errors import InputError
-from slingloads.io.loads.nastran import case_labels, prepare_nastran, write_nastran
+from slingloads.io.loads.nastran import MAX_ID, case_labels, prepare_nastran, write_nastran
 from slingloads.io.study import read_study
 from slingloads.models.airframe import MassItems
 
@@ -70,7 +70,7 @@ def example():
     inertia = trace * np.eye(3) - second  # a body's tensor: the triangle inequality holds
     items = MassItems(items.ids, items.mass, items.position, inertia, items.description)
     listed = (ListedCase("vérification-1", "AZ090", "NONE", False, "accented id"),
-              ListedCase("L" * 60, "TOW", "A+B+", True, "a sixty-character id"),
+              ListedCase("L" * 60, "TOW", "TRIM", True, "a sixty-character id"),
               ListedCase("cost $5", "VERTICAL", "CENTRE", True, "an id with a dollar"))
     study = replace(study, airframe=replace(study.airframe, mass_items=items), listed=listed)
     return study.run()
@@ -113,13 +113,14 @@ class Deck:
         return sorted(k for k in self.model.case_control_deck.subcases if k > 0)
 
     def loads(self, subcase):
-        """``{role: (positions, forces, moments)}``, role ``applied``, ``gravity`` or
-        ``inertia`` (by the documented set numbering), summed over the LOAD combination."""
+        """``{role: (positions, forces, moments)}``, role ``applied``, ``gravity`` (the shared
+        set, or the case's own) or ``inertia`` (by the documented set numbering), summed over
+        the LOAD combination."""
         sc = self.model.case_control_deck.subcases[subcase]
         combination = self.model.load_combinations[sc.get_parameter("LOAD")[0]][0]
         out = {role: ([], [], []) for role in ("applied", "gravity", "inertia")}
         for scale, sid in zip(combination.scale_factors, combination.load_ids, strict=True):
-            role = ("gravity" if sid == self.base + 1 else
+            role = ("gravity" if sid in (self.base + 1, self.base + 10 * subcase + 5) else
                     "applied" if sid == self.base + 10 * subcase + 1 else "inertia")
             for card in self.model.loads[sid]:
                 self._card(card, combination.scale * scale, out[role])
@@ -257,6 +258,42 @@ def test_applied_gravity_and_inertia_balance(decks, request, units, axes, offset
             total_f, total_m = total_f + f, total_m + m
         assert np.abs(total_f).max() <= TOLERANCE * scale, (s, total_f, scale)
         assert np.abs(total_m).max() <= TOLERANCE * scale * deck.size, (s, total_m)
+
+
+def upward_vertical(pitch, roll):
+    """Earth's upward vertical in airframe axes (x aft, y right, z up) of a body pitched nose
+    up by ``pitch`` and rolled right side down by ``roll`` [rad], by hand: the aft axis dips
+    by the pitch, the right axis by the roll (docs/conventions.md)."""
+    return np.array([-np.sin(pitch), -np.sin(roll) * np.cos(pitch),
+                     np.cos(roll) * np.cos(pitch)])
+
+
+@pytest.mark.parametrize(("units", "axes", "offset", "hook_at"), CONFIGS)
+def test_each_subcase_weighs_at_its_own_attitude(example, decks, request, units, axes, offset,
+                                                 hook_at):
+    """The read-back gravity of every subcase (GRAV on the CONM2 masses) is the weight
+    ``-M g0 k`` along that case's vertical, mapped by R and converted by pint, to 1e-9: the
+    study's attitude for every case but the towed one, whose k is rebuilt by hand from its
+    trimmed pitch and roll on the report's towed table; that one differs from the shared
+    gravity (a deck with one gravity for all would fail here)."""
+    _, deck = decks[request.node.callspec.id]
+    rotation, _ = project_axes(axes, offset, units)
+    study = example.study
+    weight = study.airframe.mass_items.total_mass * G0 * factor("force", units)
+    towed = example.towed_table().set_index("case")
+    assert len(towed) >= 1
+    shared = -weight * upward_vertical(study.attitude_used.pitch, study.attitude_used.roll)
+    for i, s in enumerate(deck.subcases):
+        case = example.cases["case"].iloc[i]
+        if case in towed.index:
+            row = towed.loc[case]
+            expected = -weight * upward_vertical(np.radians(row["trim pitch [deg]"]),
+                                                 np.radians(row["trim roll [deg]"]))
+            assert np.abs(expected - shared).max() > 0.01 * weight
+        else:
+            expected = shared
+        force, _ = deck.resultant(deck.loads(s)["gravity"], deck.cg)
+        assert_allclose(force, rotation @ expected, rtol=0, atol=TOLERANCE * weight)
 
 
 def test_inrel_deck_gives_the_analysis_accelerations(example, tmp_path):
@@ -499,7 +536,7 @@ def test_bad_options_are_refused(example, tmp_path):
              ({"first_grid_id": 0}, "first_grid_id must be a whole number"),
              ({"first_grid_id": 2.5}, "first_grid_id must be a whole number"),
              ({"first_grid_id": 99_999_990}, "first_grid_id: the ids of"),
-             ({"load_id_base": 99_999_000}, "load_id_base: the ids of"),
+             ({"load_id_base": MAX_ID - 10 * len(example.cases)}, "load_id_base: the ids of"),
              ({"first_subcase": 99_999_950}, "first_subcase: the ids of"),
              ({"max_case_points": 1000}, "too many load cases")]
     for options, fragment in cases:

@@ -46,16 +46,20 @@ def test_one_call_runs_what_the_workbook_asks_for(results):
 
 
 def test_results_are_those_of_each_analysis_alone(results):
-    """Running the study is running each analysis on its inputs, with the one hand-off the
+    """Running the study is running each analysis on its inputs, with the two hand-offs the
     example has (the lateral study's recommended angle, 33.2 deg, above the Study's 30 deg,
-    on the lateral hook directions): the loads equal those of the LoadsStudy read from the
-    same workbook with that lateral angle, run on its own (docs/api.md), to round-off."""
+    on the lateral hook directions; the multibody model's system, which flies the loads'
+    parachute, for the towed case's trim): the loads equal those of the LoadsStudy read from
+    the same workbook with that lateral angle and that towed system, run on its own
+    (docs/api.md), to round-off."""
     from dataclasses import replace
 
     loads = sl.read_study(EXAMPLE, only=["loads"]).inputs.loads
     angle = results.lateral.recommended_angle
     assert angle > loads.hook.lateral
-    alone = replace(loads, hook=replace(loads.hook, lateral_angle=angle)).run()
+    system = sl.read_study(EXAMPLE, only=["multibody"]).inputs.multibody.system
+    alone = replace(loads, hook=replace(loads.hook, lateral_angle=angle),
+                    towed_system=system).run()
     np.testing.assert_allclose(results.loads.loads, alone.loads, rtol=1e-12, atol=1e-9)
     assert results.loads_hook_angle.used == angle
 

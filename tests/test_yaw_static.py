@@ -146,3 +146,66 @@ def test_bad_static_input():
         neutral_area(m, fit_range=(0.2, -0.2))
     with pytest.raises(InputError, match="beta = 70 deg is outside"):
         m.static_moments(np.radians(70.0))
+
+
+def test_neutral_area_about_a_tilted_axis_by_hand():
+    """Moments about the suspension axis a = (sin t, 0, cos t), t = 20 deg, through the hub
+    (0, 0, 1), worked by hand: the fuselage's airframe moment q S L (-Cl, Cm, -Cn) gives
+    N = -a . M = q S L (a_x Cl_b + a_z Cn_b) beta; the fin (cp 5 m aft of the hub, level with
+    it) and the parachute (6 m aft, 0.5 m above) have the arms dx = a_z r_x - a_x r_z, so
+    A = -(S L (sin t Cl_b + cos t Cn_b) - S_f eta CY_b 5 cos t) / (eta_w CD (6 cos t
+    - 0.5 sin t)) = 8.7422 / 5.1938 = 1.6832 m^2 with Cl_b = -0.3, Cn_b = -0.4, S L = 33,
+    S_f eta CY_b = -1.5; and about airframe z (t = 0) the Cl term drops out (A = 1.0 m^2,
+    test_neutral_area_by_hand)."""
+    t = np.radians(20.0)
+    base = linear_model()
+    table = base.fuselage.table
+    coeffs = dict(table.coefficients)
+    coeffs["Cl"] = -0.3 * np.tile(table.beta, (table.alpha.size, 1))
+    fus = FuselageAero(Table2D(table.alpha, table.beta, coeffs), 3.0, 11.0, np.zeros(3))
+    axis = np.array([np.sin(t), 0.0, np.cos(t)])
+    model = YawModel(fus, base.fin, base.hardpoints, 9000.0, base.condition, base.parachute,
+                     axis=axis)
+    expected = -(33 * (np.sin(t) * -0.3 + np.cos(t) * -0.4) - (-1.5) * 5 * np.cos(t)) / (
+        0.95 * (6 * np.cos(t) - 0.5 * np.sin(t)))
+    assert expected == pytest.approx(1.6832, abs=1e-4)
+    assert neutral_area(model).area == pytest.approx(expected, rel=1e-9)
+    assert model.chute_arm[0] == pytest.approx(6 * np.cos(t) - 0.5 * np.sin(t), rel=1e-12)
+    assert np.degrees(model.axis_tilt) == pytest.approx(20.0, rel=1e-12)
+    level = YawModel(fus, base.fin, base.hardpoints, 9000.0, base.condition, base.parachute)
+    assert neutral_area(level).area == pytest.approx(1.0, rel=1e-9)
+
+
+def test_a_suspension_axis_must_point_up():
+    """An axis without an upward component (or not a finite 3-vector) is refused, echoing it."""
+    base = linear_model()
+    for bad in ([1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [np.nan, 0.0, 1.0], [0.0, 1.0]):
+        with pytest.raises(InputError, match="suspension axis"):
+            YawModel(base.fuselage, None, base.hardpoints, 9000.0, axis=bad)
+
+
+def test_yaw_inertia_about_a_tilted_line_is_the_sum_over_point_masses():
+    """hanging_yaw_inertia about a line through the hub that misses the CG equals the direct
+    sum m_i |r_i - (r_i . a) a|^2 over a cloud of point masses (r_i from the hub): the
+    parallel-axis term is counted; about the hub-CG line no mass is needed."""
+    from slingloads.models.airframe import hanging_yaw_inertia
+
+    rng = np.random.default_rng(7)
+    masses = rng.uniform(10.0, 100.0, 12)
+    points = rng.normal(0.0, 1.5, (12, 3))
+    cg = masses @ points / masses.sum()
+    d = points - cg
+    inertia_cg = np.einsum("i,ijk->jk", masses, np.einsum("ij,ij->i", d, d)[:, None, None]
+                           * np.eye(3) - np.einsum("ij,ik->ijk", d, d))
+    hub = cg + np.array([0.4, 0.1, 1.2])
+    axis = np.array([0.3, -0.05, 0.95])
+    a = axis / np.linalg.norm(axis)
+    rel = points - hub
+    direct = float(masses @ np.sum((rel - np.outer(rel @ a, a)) ** 2, axis=1))
+    got = hanging_yaw_inertia(inertia_cg, cg, hub, axis, masses.sum())
+    assert got == pytest.approx(direct, rel=1e-12)
+    with pytest.raises(InputError, match="give the mass"):
+        hanging_yaw_inertia(inertia_cg, cg, hub, axis)
+    k = (hub - cg) / np.linalg.norm(hub - cg)
+    on_line = float(masses @ np.sum((rel - np.outer(rel @ k, k)) ** 2, axis=1))
+    assert hanging_yaw_inertia(inertia_cg, cg, hub) == pytest.approx(on_line, rel=1e-12)

@@ -9,7 +9,10 @@ What a stress team needs to apply the loads analysis's cases to its own finite-e
 * per case, the **applied** forces and moments at the load points (hook, fuselage
   aerodynamics, fin, parachute; gravity is not among them);
 * the **gravity** vector, along the attitude's downward vertical
-  (:mod:`slingloads.models.attitude`), and per case the **rigid-body accelerations** of the
+  (:mod:`slingloads.models.attitude`), and per case its own gravity (the same vector, except
+  in a towed case, which flies its trimmed attitude:
+  :meth:`slingloads.analyses.loads.LoadsStudy.case_verticals`); and per case the
+  **rigid-body accelerations** of the
   inertia relief (:mod:`slingloads.analyses.inertia_relief`): the CG's linear acceleration
   and the angular acceleration.
 
@@ -31,6 +34,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from slingloads.constants import G0
 from slingloads.errors import InputError
 
 #: How far R R^T may depart from the identity (and det R from 1) for R to count as a rotation.
@@ -241,7 +245,10 @@ class PointLoadCases:
     inertias : ndarray, shape (n, 3, 3)
         Own inertia tensor of each item about its own CG. [kg m^2]
     gravity : ndarray, shape (3,)
-        Gravitational acceleration, ``-g0 k``. [m/s^2]
+        Gravitational acceleration of the study's attitude, ``-g0 k``. [m/s^2]
+    case_gravity : ndarray, shape (c, 3)
+        Gravitational acceleration of each case: ``gravity``, or that of the trimmed attitude
+        of a towed case. [m/s^2]
     linear_acceleration, angular_acceleration : ndarray, shape (c, 3)
         Inertia-relief acceleration of the CG and angular acceleration. [m/s^2], [rad/s^2]
     cg : ndarray, shape (3,)
@@ -265,6 +272,7 @@ class PointLoadCases:
     mass_positions: np.ndarray
     inertias: np.ndarray
     gravity: np.ndarray
+    case_gravity: np.ndarray
     linear_acceleration: np.ndarray
     angular_acceleration: np.ndarray
     cg: np.ndarray
@@ -320,6 +328,7 @@ class PointLoadCases:
             mass_ids=tuple(items.ids), mass_descriptions=tuple(items.description),
             masses=items.mass.copy(), mass_positions=items.position.copy(),
             inertias=items.inertia.copy(), gravity=study.attitude_used.gravity,
+            case_gravity=-G0 * study.case_verticals(cases),
             linear_acceleration=np.asarray(result.linear_acceleration, float),
             angular_acceleration=np.asarray(result.angular_acceleration, float),
             cg=items.cg, hook_at=hook_at)
@@ -356,6 +365,7 @@ class PointLoadCases:
             forces=axes.vectors(self.forces), moments=axes.vectors(self.moments),
             mass_positions=axes.points(self.mass_positions),
             inertias=axes.tensors(self.inertias), gravity=axes.vectors(self.gravity),
+            case_gravity=axes.vectors(self.case_gravity),
             linear_acceleration=axes.vectors(self.linear_acceleration),
             angular_acceleration=axes.vectors(self.angular_acceleration),
             cg=axes.points(self.cg), axes=axes)

@@ -15,6 +15,14 @@ combines, in airframe axes:
   cable: vertical component ``nz x weight``, horizontal component balancing the aerodynamic and
   parachute forces (no fore-and-aft or lateral acceleration); shared among the mast feet by the
   rigid-body weighted rule (:mod:`slingloads.models.load_sharing`);
+* in a towed case the airframe flies at its **trimmed attitude** (aerodynamic point ``TRIM``):
+  the pitch and roll at which weight, aerodynamic and parachute moments balance about the hub,
+  at the loads' airspeed, with or without the parachute
+  (:func:`slingloads.analyses.towed_attitude.towed_attitude`, the attitude the parachute
+  sizing and the multibody model use); its earth vertical replaces the study's attitude in
+  that case, and its angle of attack and sideslip are the case's. A trim outside the
+  aerodynamic envelope's range is flagged (:meth:`LoadsResult.towed_findings`); a condition
+  without trim has no towed case, and the finding says why;
 * the fuselage aerodynamic load at one point of the (alpha, beta) envelope, shared along the
   loads reference axis by the same rule so that its resultant equals the tabulated one, and
   the fin's side force at its centre of pressure;
@@ -47,9 +55,9 @@ from slingloads.analyses.hook_loads import (
     hook_directions,
     horizontal_basis,
 )
-from slingloads.analyses.inertia_relief import gravity_forces
 from slingloads.analyses.sfbm import COMPONENTS, free_free_internal_loads
 from slingloads.checks import frozen
+from slingloads.constants import G0
 from slingloads.errors import ClosureError, InputError
 from slingloads.models.aerodynamics import airflow_direction
 from slingloads.models.airframe import Airframe
@@ -63,6 +71,8 @@ CLOSURE_TOLERANCE = 1e-8
 CHUTE_LINE_DIRECTIONS = ("relative wind", "fuselage axis")
 #: Aerodynamic point id of a case without aerodynamic load.
 NO_AERO = "NONE"
+#: Aerodynamic point id of a towed case: the trimmed attitude's angle of attack and sideslip.
+TRIM_AERO = "TRIM"
 
 
 @dataclass(frozen=True)
@@ -227,6 +237,12 @@ class LoadsStudy:
     name : str
     dynamics : DynamicsCases, optional
         Cases that come from the multibody dynamics (the campaign's hand-off).
+    towed_system : SlingSystem, optional
+        The towed system whose trim gives the towed cases' attitude (the multibody model's);
+        None assembles one from the airframe, fuselage, fin and parachute
+        (:func:`slingloads.analyses.towed_attitude.towed_system`).
+    towed_source : str
+        Where ``towed_system`` comes from, in words (shown on the reports).
     """
 
     airframe: Airframe
@@ -244,6 +260,8 @@ class LoadsStudy:
     ultimate_factor: float = 1.5
     name: str = "study"
     dynamics: DynamicsCases | None = None
+    towed_system: object | None = None
+    towed_source: str = ""
 
     def __post_init__(self):
         if self.dynamics is not None:
@@ -352,6 +370,35 @@ class LoadsStudy:
         """Earth's upward vertical in airframe axes, unit vector. [-]"""
         return self.attitude_used.vertical
 
+    @cached_property
+    def towed_trims(self):
+        """The trimmed attitude of each parachute state of the towed cases, {flown: TowedAttitude}
+        (:func:`~slingloads.analyses.towed_attitude.towed_attitude` at the loads' airspeed;
+        empty without towed cases or without fuselage table)."""
+        from slingloads.analyses.towed_attitude import towed_attitude, towed_system
+
+        wanted = self.hook.towed and self.generate or any(c.hook == TOWED for c in self.listed)
+        if not wanted or self.fuselage is None:
+            return {}
+        system, notes = self.towed_system, ()
+        if system is None:
+            system, notes = towed_system(self.airframe, self.fuselage, self.fin, self.parachute,
+                                         self.flight.eas, self.flight.density_altitude)
+        states = [True, False] if self.parachute is not None else [False]
+        return {c: towed_attitude(system, self.flight.eas, parachute=c, notes=notes)
+                for c in states}
+
+    def case_verticals(self, cases):
+        """Earth's upward vertical in airframe axes per case, shape (c, 3): the study's
+        attitude, or the trimmed attitude of a towed case's parachute state. [-]"""
+        out = np.tile(self.vertical, (len(cases), 1))
+        towed = (cases["hook"] == TOWED).to_numpy()
+        chute = cases["chute"].to_numpy(bool)
+        for state, trimmed in self.towed_trims.items():
+            if trimmed.converged:
+                out[towed & (chute == state)] = trimmed.vertical
+        return out
+
     def _chute_alpha(self, alpha, beta):
         if self.chute_line == "relative wind":
             return np.zeros_like(np.asarray(alpha, float))
@@ -388,8 +435,8 @@ class LoadsStudy:
                     for c, line in states(a):
                         rows.append(("", h, a, c, line, ""))
             if self.hook.towed:
-                rows += [("", TOWED, a, c, line, "") for a in aero_ids
-                         for c, line in states(a) if a != NO_AERO or c]
+                rows += [("", TOWED, TRIM_AERO, c, "", "")
+                         for c, trimmed in self.towed_trims.items() if trimmed.converged]
         rows += [(c.id, c.hook, c.aero, bool(c.chute), "", c.description)
                  for c in self.listed]
         frame = pd.DataFrame(rows, columns=["case", "hook", "aero", "chute", "chute line",
@@ -409,6 +456,10 @@ class LoadsStudy:
         else:
             frame["alpha [deg]"] = np.nan
             frame["beta [deg]"] = np.nan
+        for state, trimmed in self.towed_trims.items():
+            at = ((frame["aero"] == TRIM_AERO) & (frame["chute"] == state)).to_numpy()
+            frame.loc[at, "alpha [deg]"] = np.degrees(trimmed.alpha)
+            frame.loc[at, "beta [deg]"] = np.degrees(trimmed.beta)
         generated = frame["description"] == ""
         frame.loc[generated, "description"] = [
             _describe(r) for _, r in frame[generated].iterrows()]
@@ -423,6 +474,17 @@ class LoadsStudy:
         valid_hooks = set(hooks["hook"]) | {TOWED, NO_HOOK}
         valid_aero = set(aero_ids) | {NO_AERO}
         for c in self.listed:
+            if (c.hook == TOWED) != (c.aero == TRIM_AERO):
+                raise InputError(f"load case {c.id!r}: a towed case (hook {TOWED}) flies at "
+                                 f"the trimmed attitude, aerodynamic point {TRIM_AERO}, and "
+                                 f"only a towed case does", c.aero)
+            if c.hook == TOWED:
+                trimmed = self.towed_trims.get(bool(c.chute))
+                if trimmed is None or not trimmed.converged:
+                    why = "no fuselage table" if trimmed is None else trimmed.message
+                    raise InputError(f"load case {c.id!r}: no towed trim for it ({why})",
+                                     c.id)
+                continue
             if c.hook not in valid_hooks:
                 raise InputError(f"load case {c.id!r}: unknown hook direction; valid ids are "
                                  f"{sorted(valid_hooks)}", c.hook)
@@ -451,18 +513,24 @@ class LoadsStudy:
         loads = np.empty((count, len(stations), 6))
         residual, linear, angular, hub = (np.empty((count, 3 * k)) for k in (2, 1, 1, 1))
         scale = 0.0
-        # the applied loads (mass items included) one chunk of cases at a time
-        for first in range(0, max(count, 1), RUN_CHUNK):
-            part = slice(first, min(first + RUN_CHUNK, count))
-            positions, forces, moments = self.applied_loads(cases.iloc[part])
-            _, accel, residual[part] = free_free_internal_loads(
-                items, positions[n:], forces[:, n:], moments[:, n:], stations, self.vertical,
-                out=loads[part])
-            linear[part], angular[part] = accel.linear, accel.angular
-            hub[part] = forces[:, n:n + feet].sum(axis=1)
-            scale = max(scale, self._load_scale(forces))
-        accel = replace(accel, linear=linear, angular=angular)
-        cases = self._with_cable(cases, hub)
+        verticals = self.case_verticals(cases)
+        vertical_factor = np.empty(count)
+        # the applied loads (mass items included) one chunk of cases of one attitude at a time
+        for k in np.unique(verticals, axis=0):
+            rows = np.flatnonzero(np.all(verticals == k, axis=1))
+            for first in range(0, rows.size, RUN_CHUNK):
+                part = rows[first:first + RUN_CHUNK]
+                positions, forces, moments = self.applied_loads(cases.iloc[part])
+                block = np.empty((part.size,) + loads.shape[1:])
+                _, accel, residual[part] = free_free_internal_loads(
+                    items, positions[n:], forces[:, n:], moments[:, n:], stations, k,
+                    out=block)
+                loads[part] = block
+                linear[part], angular[part] = accel.linear, accel.angular
+                vertical_factor[part] = accel.vertical_load_factor
+                hub[part] = forces[:, n:n + feet].sum(axis=1)
+                scale = max(scale, self._load_scale(forces))
+        cases = self._with_cable(cases, hub, verticals)
         bad = np.abs(residual).max(axis=1) > CLOSURE_TOLERANCE * scale
         if check_closure and np.any(bad):
             i = int(np.argmax(bad))
@@ -473,19 +541,23 @@ class LoadsStudy:
             raise ClosureError(f"case {cases['case'].iloc[i]}: free-free residual "
                                f"{np.abs(residual[i]).max():.3g} exceeds the tolerance "
                                f"{CLOSURE_TOLERANCE * scale:.3g}{hint}")
-        return LoadsResult(self, cases, loads, accel.linear, accel.angular,
-                           accel.load_factor, residual, scale, accel.vertical_load_factor)
+        load_factor = (linear + G0 * verticals) / G0  # (a - g) / g0 with g = -g0 k per case
+        return LoadsResult(self, cases, loads, linear, angular, load_factor, residual, scale,
+                           vertical_factor)
 
-    def _with_cable(self, cases, hub_force):
-        """The case matrix with the cable's direction per case and whether it lies inside the
-        hook cone (the cone's inclination at the cable's azimuth; towed cases are judged at
-        the larger of their angle at Nz and at 1 g)."""
+    def _with_cable(self, cases, hub_force, verticals):
+        """The case matrix with the cable's direction per case (from the case's own vertical)
+        and whether it lies inside the hook cone (the cone's inclination at the cable's
+        azimuth; towed cases are judged at the larger of their angle at Nz and at 1 g)."""
         out = cases.copy()
-        angle, azimuth = cable_geometry(hub_force, self.vertical)
+        angle, azimuth = np.empty(len(cases)), np.empty(len(cases))
+        for k in np.unique(verticals, axis=0):
+            rows = np.all(verticals == k, axis=1)
+            angle[rows], azimuth[rows] = cable_geometry(hub_force[rows], k)
         on = (cases["hook"] != NO_HOOK).to_numpy()
         towed = (cases["hook"] == TOWED).to_numpy()
         weight = self.airframe.mass_items.weight
-        vertical = hub_force @ self.vertical
+        vertical = np.einsum("ij,ij->i", hub_force, verticals)
         horizontal = np.sqrt(np.maximum((hub_force**2).sum(axis=1) - vertical**2, 0.0))
         at_1g = np.where(towed, np.arctan2(horizontal, weight), np.nan)
         judged = np.where(towed, np.maximum(angle, np.nan_to_num(at_1g)), angle)
@@ -526,7 +598,9 @@ class LoadsStudy:
         c = len(cases)
         forces = np.zeros((c, len(positions), 3))
         moments = np.zeros_like(forces)
-        forces[:, : len(items.mass), :] = gravity_forces(items, self.vertical)
+        verticals = self.case_verticals(cases)
+        forces[:, : len(items.mass), :] = (-G0 * items.mass[None, :, None]
+                                           * verticals[:, None, :])
         start = len(items.mass)
         k = len(hp.mast_feet)
         feet = slice(start, start + k)
@@ -589,8 +663,8 @@ class LoadsStudy:
         force = np.zeros((len(cases), 3))
         force[listed] = weight * hooks.loc[hook[listed], ["ux", "uy", "uz"]].to_numpy()
         towed = hook == TOWED
-        k = self.vertical
-        horizontal = external[towed] - np.outer(external[towed] @ k, k)
+        k = self.case_verticals(cases)[towed]
+        horizontal = external[towed] - np.einsum("ij,ij->i", external[towed], k)[:, None] * k
         force[towed] = weight * k - horizontal
         return force
 
@@ -623,8 +697,8 @@ def _describe(row):
     if row["hook"] == NO_HOOK:
         hook = "off"
     elif row["hook"] == TOWED:
-        hook = ("along the trimmed cable (towed-flight equilibrium: Nz x weight vertical, "
-                "horizontal balancing aerodynamics and parachute)")
+        hook = ("along the trimmed cable (towed-flight equilibrium at the trimmed attitude: "
+                "Nz x weight vertical, horizontal balancing aerodynamics and parachute)")
     else:
         hook = describe_direction(row["azimuth [deg]"], row["inclination [deg]"])
     parts = [f"hook {hook}"]
@@ -710,13 +784,60 @@ class LoadsResult:
 
     def towed_table(self):
         """The towed-flight equilibrium cases: aerodynamic point, parachute, the trimmed
-        cable's angle from the vertical (at Nz and at 1 g) and azimuth, the cone's
-        inclination there and whether the cable lies inside the hook cone."""
+        attitude (pitch, roll; alpha, beta) and whether it lies inside the aerodynamic
+        envelope, the trimmed cable's angle from the vertical (at Nz and at 1 g) and
+        azimuth, the cone's inclination there and whether the cable lies inside the hook
+        cone."""
         columns = ["case", "aero", "alpha [deg]", "beta [deg]", "chute",
                    "cable angle from vertical [deg]", "cable angle at 1 g [deg]",
                    "cable azimuth [deg]", "cone angle at that azimuth [deg]",
                    "inside hook cone"]
-        return self.cases.loc[self.cases["hook"] == TOWED, columns].reset_index(drop=True)
+        out = self.cases.loc[self.cases["hook"] == TOWED, columns].reset_index(drop=True)
+        trims = self.study.towed_trims
+        pitch, roll, inside = [], [], []
+        for chute in out["chute"]:
+            trimmed = trims[bool(chute)]
+            pitch.append(np.degrees(trimmed.pitch))
+            roll.append(np.degrees(trimmed.roll))
+            inside.append("OUTSIDE" if self._outside(trimmed) else "yes")
+        out.insert(2, "trim pitch [deg]", pitch)
+        out.insert(3, "trim roll [deg]", roll)
+        out.insert(6, "inside aero envelope", inside)
+        return out
+
+    def _outside(self, trimmed):
+        env = self.study.envelope
+        if env is None:
+            return ""
+        return trimmed.outside((env.alpha.min(), env.alpha.max()),
+                               (env.beta.min(), env.beta.max()))
+
+    def towed_findings(self):
+        """What the towed trims show, one line per parachute state that is not simply inside
+        the aerodynamic envelope: a trim outside the envelope's alpha / beta range (its
+        aerodynamic loads come from the tables beyond the points the envelope covers), or
+        no trim at all (no towed case, and why).
+
+        Returns
+        -------
+        list of str
+        """
+        out = []
+        kt = self.study.flight.eas / (1852.0 / 3600.0)
+        for chute, trimmed in self.study.towed_trims.items():
+            with_ = "with parachute" if chute else "without parachute"
+            out += [f"towed trim {with_}: {note}" for note in trimmed.notes]
+            if not trimmed.converged:
+                out.append(f"towed flight {with_} at {kt:.4g} KEAS: no trim ({trimmed.message})"
+                           f"; no towed case {with_}")
+                continue
+            why = self._outside(trimmed)
+            if why:
+                out.append(f"towed trim {with_} at {kt:.4g} KEAS (pitch "
+                           f"{np.degrees(trimmed.pitch):+.1f} deg) lies OUTSIDE the "
+                           f"aerodynamic envelope: {why}; its towed case is computed from the "
+                           "aerodynamic tables there, not from an envelope point")
+        return out
 
     def to_frame(self, ultimate=False):
         """Long SFBM table: ``case, station, x_m, Vx_N, Vy_N, Vz_N, Mx_Nm, My_Nm, Mz_Nm``."""

@@ -526,8 +526,14 @@ def yaw_inertia_about_hub(airframe):
     return hanging_yaw_inertia(items.inertia_about_cg, items.cg, airframe.hardpoints.hub)
 
 
-def hanging_yaw_inertia(inertia_about_cg, cg, hub):
-    """Yaw inertia of a body hung at ``hub`` about the vertical through it (the hub-CG line).
+def hanging_yaw_inertia(inertia_about_cg, cg, hub, axis=None, mass=None):
+    """Yaw inertia of a body hung at ``hub`` about a line through the hub: the hub-CG line
+    (the vertical at rest), or the line along ``axis`` (the suspension axis in towed flight).
+
+    .. math:: I = \\hat a^T I_{CG} \\hat a + m \\, |d - (d \\cdot \\hat a) \\hat a|^2,
+              \\qquad d = r_{CG} - r_{hub}
+
+    (parallel-axis theorem; the second term is zero on the hub-CG line).
 
     Parameters
     ----------
@@ -535,19 +541,35 @@ def hanging_yaw_inertia(inertia_about_cg, cg, hub):
         Inertia tensor about the CG. [kg m^2]
     cg, hub : array_like, shape (3,)
         [m]
+    axis : array_like, shape (3,), optional
+        Direction of the line (normalised); None is the hub-CG line. [-]
+    mass : float, optional
+        The body's mass, needed when the line misses the CG. [kg]
 
     Returns
     -------
     float
-        :math:`\\hat k^T I_{CG} \\hat k`, :math:`\\hat k` along hub - CG. [kg m^2]
+        [kg m^2]
     """
     d = np.asarray(hub, float) - np.asarray(cg, float)
     length = float(np.linalg.norm(d))
     if not length > 0:
         raise InputError("the rotor hub coincides with the CG: the body has no hanging "
                          "attitude [m]", length)
-    k = d / length
-    return float(k @ np.asarray(inertia_about_cg, float) @ k)
+    k = d / length if axis is None else np.asarray(axis, float)
+    norm = float(np.linalg.norm(k))
+    if not (np.all(np.isfinite(k)) and norm > 0):
+        raise InputError("the yaw axis must be a finite non-zero vector [-]", k.tolist())
+    k = k / norm
+    own = float(k @ np.asarray(inertia_about_cg, float) @ k)
+    offset = d - (d @ k) * k
+    if axis is None or not np.linalg.norm(offset) > 1e-12 * length:
+        return own
+    if mass is None:
+        raise InputError("the yaw axis misses the CG by "
+                         f"{np.linalg.norm(offset):.4g} m: give the mass for the parallel-axis "
+                         "term [m]", float(np.linalg.norm(offset)))
+    return own + float(mass) * float(offset @ offset)
 
 
 def hanging_roll_axis(airframe):

@@ -1,11 +1,19 @@
 """One-degree-of-freedom yaw model of the carried helicopter about its suspension axis.
 
-The helicopter hangs from its rotor hub; the suspension axis is the vertical through the hub
-(:attr:`Hardpoints.hub`). The only freedom is the yaw angle psi about that axis (the hub does
-not move, the airframe stays level at the trim angle of attack). Conventions, as in
-:mod:`slingloads.models.aerodynamics`: airframe axes x aft, y right, z up; psi and the yawing
-moment N positive **nose right** (a negative rotation about +z, so N = -M_z); sideslip beta
-positive with the wind from the right; directionally stable means dN/dbeta > 0.
+The helicopter hangs from its rotor hub; the suspension axis is the line through the hub
+(:attr:`Hardpoints.hub`) along :attr:`YawModel.axis`: the line from the hook through the hub
+(at rest the hub-CG line; in towed flight the trimmed cable's line,
+:attr:`slingloads.analyses.towed_attitude.TowedAttitude.axis`), airframe z when not given. The
+only freedom is the yaw angle psi about that axis (the hub does not move, the airframe stays at
+the trim angle of attack). Moments and inertia are both taken about it: a point r from the hub
+has the arms ``dx = (a x r)_y``, ``dy = -(a x r)_x`` (a the unit axis; ``dx = r_x, dy = r_y``
+for a = z), and a moment vector M contributes ``-a . M`` (nose right positive). The sideslip
+is taken to change one for one with psi (exact for a = z; about a tilted axis the rate is the
+tilt's cosine, which scales the stiffness but not the neutral area, where it is zero).
+Conventions, as in :mod:`slingloads.models.aerodynamics`: airframe axes x aft, y right, z
+up; psi and the yawing moment N positive **nose right** (a negative rotation about +a, so
+N = -M_z for a = z); sideslip beta positive with the wind from the right; directionally
+stable means dN/dbeta > 0.
 
 Kinematics. With a lateral gust v (air moving from right to left) at true airspeed V, the
 relative wind comes from gamma = atan2(v, V) to the right of the flight path at speed
@@ -106,6 +114,26 @@ YAW_SOLVER_DEFAULTS = {"t_end": 120.0, "step": 0.05, "output_interval": 0.1}
 #: Half-width of the sideslip interval searched for the yaw trim. [rad]
 TRIM_SEARCH = np.radians(20.0)
 
+
+def _unit_axis(axis):
+    """The suspension axis as a unit vector (airframe z for None), or an error."""
+    if axis is None:
+        return np.array([0.0, 0.0, 1.0])
+    a = np.asarray(axis, dtype=float).reshape(-1)
+    norm = float(np.linalg.norm(a)) if a.size == 3 and np.all(np.isfinite(a)) else 0.0
+    if not norm > 0 or not a[2] > 0:
+        raise InputError("the suspension axis must be a finite 3-vector pointing up from the "
+                         "hub towards the hook (z component > 0) [-]",
+                         a.tolist() if a.size <= 3 else a.size)
+    return a / norm
+
+
+def _arms(axis, r):
+    """Arms (dx, dy) about the suspension axis of a point r from the hub: a side force F_y
+    gives the moment a . (r x F) = dx F_y - dy F_x (module notes). [m]"""
+    c = np.cross(axis, np.asarray(r, float))
+    return float(c[1]), float(-c[0])
+
 @dataclass(frozen=True)
 class YawModel:
     """The carried helicopter's yaw about its suspension axis (module notes).
@@ -129,6 +157,11 @@ class YawModel:
         the area comes with each run. ``None`` with area 0 runs models no parachute.
     fin_rate_damping : bool
         Evaluate the fin at its local sideslip (yaw-rate damping); False uses the axis sideslip.
+    axis : array_like, shape (3,), optional
+        The suspension axis: direction from the hub towards the hook, airframe axes, pointing
+        up (z component > 0); normalised. None is airframe z. ``yaw_inertia`` must be about
+        the same line (:func:`slingloads.models.airframe.hanging_yaw_inertia` with ``axis``).
+        [-]
     """
 
     fuselage: FuselageAero | None
@@ -139,6 +172,7 @@ class YawModel:
         default_factory=lambda: FlightCondition(SIZING_SPEED))
     parachute: Parachute | None = None
     fin_rate_damping: bool = True
+    axis: np.ndarray | None = None
 
     def __post_init__(self):
         inertia = float(self.yaw_inertia)
@@ -154,31 +188,39 @@ class YawModel:
                              field="airspeed")
         object.__setattr__(self, "_half_rho", 0.5 * self.condition.density)
         object.__setattr__(self, "_tas", self.condition.tas)
+        axis = _unit_axis(self.axis)
+        object.__setattr__(self, "axis", axis)
         hub = self.hardpoints.hub
         alpha = self.condition.alpha
         if self.fuselage is not None:
             grid = self.fuselage.table.beta
             force, moment = self.fuselage.loads(np.full(grid.shape, alpha), grid, 1.0)
             arm = self.fuselage.moment_reference - hub
-            # N per unit q about the suspension axis: -(M_z + (r x F)_z). [m^3]
-            n_per_q = -(moment[:, 2] + arm[0] * force[:, 1] - arm[1] * force[:, 0])
+            # N per unit q about the suspension axis: -a . (M + r x F). [m^3]
+            n_per_q = -(moment + np.cross(arm, force)) @ axis
             object.__setattr__(self, "_fus", (grid, n_per_q, grid[0], grid[-1]))
         if self.fin is not None:
-            arm = self.fin.centre_of_pressure - hub
+            dx, dy = _arms(axis, self.fin.centre_of_pressure - hub)
             grid, cfy = self.fin.side_force_coefficients  # airframe y, whatever the axes
             k = self.fin.area * self.fin.efficiency * cfy
-            object.__setattr__(self, "_fin", (grid, k, arm[0], arm[1], grid[0], grid[-1]))
+            object.__setattr__(self, "_fin", (grid, k, dx, dy, grid[0], grid[-1]))
         if self.parachute is not None:
             if self.hardpoints.chute is None:
                 raise InputError("a parachute needs the attachment point Hardpoints.chute")
-            arm = self.hardpoints.chute - hub
+            dx, dy = _arms(axis, self.hardpoints.chute - hub)
             cd = float(self.parachute.effective_coefficient(0.0))
-            object.__setattr__(self, "_chute", (cd, arm[0], arm[1]))
+            object.__setattr__(self, "_chute", (cd, dx, dy))
 
     # ----------------------------------------------------------------------------- helpers
     @property
+    def axis_tilt(self):
+        """Angle between the suspension axis and airframe z. [rad]"""
+        return float(np.arccos(np.clip(self.axis[2], -1.0, 1.0)))
+
+    @property
     def chute_arm(self):
-        """Horizontal (dx, dy) of the parachute attachment from the suspension axis. [m]"""
+        """(dx, dy) of the parachute attachment from the suspension axis, in the plane
+        normal to it (module notes). [m]"""
         return None if self.parachute is None else self._chute[1:]
 
     @property

@@ -108,6 +108,7 @@ class ChuteSizingReport:
     study_area_runs: object = None
     decision: object = None
     axes_angle: float = float("nan")
+    towed: object = None
 
     @property
     def study_area_peak_sideslip(self):
@@ -170,6 +171,18 @@ def run(study):
         has ``field = "trim"``).
     """
     inputs = study.require(ANALYSIS)
+    towed = None
+    system = _towed_system(study)
+    if system is not None:
+        from dataclasses import replace
+
+        from slingloads.analyses.towed_attitude import towed_attitude
+
+        towed = towed_attitude(system, inputs.model.condition.eas)
+        if towed.converged:  # the attitude the loads' towed cases and the multibody fly
+            model = inputs.model
+            model = replace(model, condition=replace(model.condition, alpha=towed.alpha))
+            inputs = replace(inputs, model=model)
     with study.located(ANALYSIS):
         static = neutral_area(inputs.model, inputs.fit_range)
         line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
@@ -185,7 +198,22 @@ def run(study):
         recommended = sweep.smallest_stable_area if sweep is not None else 0.0
         decision = _decision(study, inputs, static, sweep) if sweep is not None else None
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
-                             decision, axes_angle(study.airframe))
+                             decision, axes_angle(study.airframe), towed)
+
+
+def _towed_system(study):
+    """The towed system whose trim gives the sizing's angle of attack: the multibody model's,
+    else one assembled from the loads' parts; None when the study has neither."""
+    multibody = getattr(study.inputs, "multibody", None)
+    if multibody is not None:
+        return multibody.system
+    loads = getattr(study.inputs, "loads", None)
+    if loads is None or loads.fuselage is None:
+        return None
+    from slingloads.analyses.towed_attitude import towed_system
+
+    return towed_system(loads.airframe, loads.fuselage, loads.fin, loads.parachute,
+                        loads.flight.eas, loads.flight.density_altitude)[0]
 
 
 def axes_angle(airframe):

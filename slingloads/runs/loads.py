@@ -115,7 +115,43 @@ def run(study):
     """
     study.require(ANALYSIS)
     with study.located(ANALYSIS):
-        return _finite(loads_study(study).run())
+        return _finite(with_towed_system(study, loads_study(study)).run())
+
+
+def with_towed_system(study, loads):
+    """``loads`` with the towed system whose trim gives its towed cases' attitude: the
+    multibody model's when the study has one flying the loads' parachute (the same area, or
+    neither has one), so that the loads, the sizing and the multibody model fly one attitude
+    per airspeed; otherwise the loads assemble one from their own parts (and say so).
+
+    Parameters
+    ----------
+    study : Study
+    loads : LoadsStudy
+
+    Returns
+    -------
+    LoadsStudy
+    """
+    from dataclasses import replace
+
+    system = towed_system_of(study)
+    if system is None or loads.towed_system is not None:
+        return loads
+    chute = system.parachute
+    same = ((chute is None and loads.parachute is None)
+            or (chute is not None and loads.parachute is not None
+                and np.isclose(chute.parachute.area, loads.parachute.area, rtol=1e-12)))
+    if not same:
+        return replace(loads, towed_source="a system assembled from the loads' parts (the "
+                       "multibody model flies another parachute area)")
+    return replace(loads, towed_system=system, towed_source="the multibody model's system")
+
+
+def towed_system_of(study):
+    """The multibody model's towed system of the study, or None without one."""
+    inputs = getattr(study.inputs, "multibody", None)
+    return None if inputs is None else inputs.system
 
 
 def _finite(result):

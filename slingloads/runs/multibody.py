@@ -6,7 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from slingloads.analyses.multibody import linearise, simulate, trim
+from slingloads.analyses.multibody import linearise, simulate
+from slingloads.analyses.towed_attitude import towed_attitude
 from slingloads.constants import KNOT
 from slingloads.models.multibody.system import SlingSystem
 
@@ -111,7 +112,7 @@ def run(study):
     """
     inputs = study.require(ANALYSIS)
     with study.located(ANALYSIS):
-        point = trim(inputs.system)
+        point = towed_attitude(inputs.system).trim  # the attitude the loads and sizing fly
         linear = linearise(point) if point.converged else None
         sim = simulate(inputs.system, inputs.manoeuvres, no_trim="report",
                        **inputs.settings)

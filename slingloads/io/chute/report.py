@@ -118,7 +118,13 @@ def summary_tables(result, units="SI"):
         ("density altitude", c.density_altitude, "altitude", "ISA"),
         ("air density", c.density, "density", ""),
         ("dynamic pressure q", c.dynamic_pressure, "pressure", "1/2 rho0 V_EAS^2"),
-        ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),
+        ("alpha trim", float(np.degrees(c.alpha)), "deg",
+         (f"towed trim at this airspeed with the Study's parachute (the attitude the loads' "
+          f"towed cases and the multibody model fly; pitch {np.degrees(result.towed.pitch):+.2f}"
+          " deg); the swept areas are sized at it"
+          if result.towed is not None and result.towed.converged else
+          "Study 'chute sizing alpha trim' (no towed trim: "
+          + (result.towed.message if result.towed is not None else "no towed system") + ")")),
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),
         ("moment axis against inertia axis", float(np.degrees(result.axes_angle)), "deg",

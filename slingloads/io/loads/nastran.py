@@ -11,7 +11,8 @@ Nastran input file (method, card choices and how to include it in a model: ``doc
 * a ``CONM2`` per mass item at its own grid (its own inertia, no offset);
 * per case a ``LOAD`` combination of ``FORCE`` and ``MOMENT`` cards (the applied loads;
   scale 1.0 and the vector's components), the shared ``GRAV`` of gravity along the
-  attitude's downward vertical, and, with ``inertia_relief="accelerations"``, the rigid-body
+  attitude's downward vertical (a towed case, which flies its own trimmed attitude, has its
+  own gravity ``GRAV`` in its place), and, with ``inertia_relief="accelerations"``, the rigid-body
   accelerations of the inertia relief as a ``GRAV`` (linear) and an ``RFORCE`` (angular,
   about the basic origin) with ``MOMENT`` cards for the items' own rotary inertia (which
   RFORCE does not load); with ``"inrel"``, ``PARAM,INREL,-2`` and no inertia cards: Nastran
@@ -59,9 +60,11 @@ LINE_LENGTH = 72
 #: Defaults of the identification numbers.
 DEFAULT_IDS = {"first_grid_id": 900_001, "first_element_id": 900_001,
                "load_id_base": 100_000, "first_subcase": 1}
-#: Load-set numbering: subcase s uses base + 10 s + offset; base + 1 is the gravity GRAV.
+#: Load-set numbering: subcase s uses base + 10 s + offset; base + 1 is the gravity GRAV
+#: shared by the cases at the study's attitude; "gravity" is a case's own gravity GRAV (a towed
+#: case at its trimmed attitude), which its LOAD takes in place of the shared one.
 SET_OFFSETS = {"LOAD": 0, "applied": 1, "linear inertia": 2, "angular inertia": 3,
-               "rotary inertia": 4}
+               "rotary inertia": 4, "gravity": 5}
 GRAVITY_SET = 1
 #: Loads below this fraction of their case's load scale (largest force, and that force times
 #: the size of the model for moments) are round-off, far below the ten digits of a field,
@@ -496,6 +499,7 @@ class NastranDeck:
              _vector(u(axes.offset, "length"))),
             ("attitude", self.attitude.describe()),
             (f"gravity in model axes [{u.labels['acceleration']}]", _vector(g)),
+            ("gravity of its own", self._own_gravity_text()),
             ("inertia relief", _RELIEF_TEXT[self.inertia_relief]),
             ("hook load applied at", loads.hook_at),
             ("grids", f"{self.ids['first_grid_id']} to {last_grid}: mass items, then rotor "
@@ -507,6 +511,22 @@ class NastranDeck:
                                             base=self.ids["load_id_base"])),
             ("subcases", f"{self.subcases[0]} to {self.subcases[-1]}, in case order"),
         ]
+
+    @cached_property
+    def own_gravity(self):
+        """True for each case whose gravity is not the shared one (a towed case at its
+        trimmed attitude), shape (c,)."""
+        loads = self.loads
+        return _norm(loads.case_gravity - loads.gravity) > ROUND_OFF * _norm(loads.gravity)
+
+    def _own_gravity_text(self):
+        own = np.flatnonzero(self.own_gravity)
+        if own.size == 0:
+            return "none: every subcase takes the shared gravity GRAV"
+        subcases = ", ".join(str(s) for s in self.subcases[own])
+        return (f"subcases {subcases} (towed cases at their trimmed attitude) take their own "
+                f"gravity GRAV (set base + 10 s + {SET_OFFSETS['gravity']}) in place of the "
+                "shared one")
 
     # --- the file ------------------------------------------------------------------------------
 
@@ -530,8 +550,9 @@ class NastranDeck:
             out += _comment(f"{item}: {setting}.")
         out += _comment("Each subcase's LOAD combines its applied FORCE and MOMENT cards "
                         f"(hook, aerodynamics, fin, parachute), the gravity GRAV "
-                        f"{self.gravity_set} acting on the CONM2 masses and, with inertia "
-                        "relief 'accelerations', its inertia cards.")
+                        f"{self.gravity_set} acting on the CONM2 masses (or the case's own "
+                        "gravity GRAV when it flies another attitude: a towed case) and, with "
+                        "inertia relief 'accelerations', its inertia cards.")
         out += "$\n" + _comment("SUBCASE TABLE: subcase, LOAD set, case id as in the LABEL, "
                                 "case id in full (non-ASCII escaped).")
         for s, load, label, case in zip(self.subcases, self.set_id("LOAD"), self.labels,
@@ -581,8 +602,9 @@ class NastranDeck:
         out += "".join(_cards(_CONM2_POINT if bare else _CONM2, row[:3] if bare else row)
                        for row, bare in zip(rows, point_mass, strict=True))
         g = u(loads.gravity, "acceleration")
-        out += _comment(f"Gravity, shared by every subcase: g0 = {u(G0, 'acceleration'):.10g} "
-                        f"{u.labels['acceleration']} along the attitude's downward vertical.")
+        out += _comment(f"Gravity, shared by every subcase at the study's attitude: g0 = "
+                        f"{u(G0, 'acceleration'):.10g} {u.labels['acceleration']} along the "
+                        "attitude's downward vertical.")
         out += _cards(_GRAV, _magnitude_direction(np.array([self.gravity_set]), g[None, :]))
         return out
 
@@ -613,6 +635,9 @@ class NastranDeck:
                 _MOMENT, self.set_id("applied", s), self.point_grids, u(moments, "moment"),
                 _norm(moments) > ROUND_OFF * (force * size)[:, None], start),
         }
+        own = self.own_gravity[cases]
+        blocks["gravity"] = _CaseCards(_GRAV, self.set_id("gravity", s),
+                                       u(loads.case_gravity[cases], "acceleration"), own, start)
         if self.inertia_relief == "accelerations":
             mass = loads.masses.sum()
             alpha = loads.angular_acceleration[cases]
@@ -641,8 +666,13 @@ class NastranDeck:
 
     def _case_comment(self, i):
         loads = self.loads
-        return _comment(f"---- SUBCASE {self.subcases[i]}: case {loads.case_ids[i]}: "
+        text = _comment(f"---- SUBCASE {self.subcases[i]}: case {loads.case_ids[i]}: "
                         f"{loads.descriptions[i]}")
+        if self.own_gravity[i]:
+            g = _clean(self.units(loads.case_gravity[i], "acceleration"))
+            text += _comment(f"own gravity (its trimmed attitude), model axes: ({g[0]:.6g}, "
+                             f"{g[1]:.6g}, {g[2]:.6g}) {self.units.labels['acceleration']}")
+        return text
 
     def _acceleration_comments(self, start, stop):
         """Per case: the inertia relief's CG and angular accelerations, two comment lines."""
@@ -660,7 +690,8 @@ class NastranDeck:
         parts = []
         if blocks["applied forces"].count(i) + blocks["applied moments"].count(i):
             parts.append(self.set_id("applied", s))
-        parts.append(self.gravity_set)
+        parts.append(self.set_id("gravity", s) if blocks["gravity"].count(i)
+                     else self.gravity_set)
         for kind in ("linear inertia", "angular inertia", "rotary inertia"):
             if kind in blocks and blocks[kind].count(i):
                 parts.append(self.set_id(kind, s))
@@ -679,7 +710,7 @@ _RELIEF_TEXT = {
 }
 _SETS_TEXT = ("{gravity} = gravity GRAV; subcase s: LOAD {base} + 10 s, applied FORCE and "
               "MOMENT {base} + 10 s + 1, linear inertia GRAV + 2, angular inertia RFORCE + 3, "
-              "rotary inertia MOMENT + 4")
+              "rotary inertia MOMENT + 4, own gravity GRAV + 5 (a case at another attitude)")
 
 
 def _vector(v):

@@ -25,6 +25,7 @@ from slingloads.analyses.hook_loads import (
 from slingloads.analyses.loads import (
     CHUTE_LINE_DIRECTIONS,
     NO_AERO,
+    TRIM_AERO,
     AeroEnvelope,
     ListedCase,
     LoadsStudy,
@@ -90,6 +91,10 @@ def read(reader, params, study):
             if point.casefold() == NO_AERO.casefold():
                 raise t.error("id", i, f"{NO_AERO!r} is reserved: in LoadCases, aero "
                                        f"{NO_AERO} means no aerodynamic load; choose another id")
+            if point.casefold() == TRIM_AERO.casefold():
+                raise t.error("id", i, f"{TRIM_AERO!r} is reserved: in LoadCases, aero "
+                                       f"{TRIM_AERO} means the trimmed attitude of a towed "
+                                       "case; choose another id")
         envelope = AeroEnvelope(tuple(t["id"]), t["alpha"], t["beta"])
         _check_envelope_in_tables(reader, t, fuselage, fin)
     elif fuselage is not None or fin is not None:
@@ -198,7 +203,7 @@ def _listed_cases(reader, params, hook, envelope, parachute, generate):
     with located(params, default="hook azimuths"):
         directions = list(hook_directions(hook)["hook"])
     valid_hooks = [*directions, TOWED, NO_HOOK]
-    valid_aero = [*(envelope.ids if envelope is not None else ()), NO_AERO]
+    valid_aero = [*(envelope.ids if envelope is not None else ()), NO_AERO, TRIM_AERO]
     n_generated = _generated_count(hook, envelope, parachute) if generate else 0
     generated = {f"LC{i + 1:04d}" for i in range(n_generated)}
     cases = []
@@ -211,6 +216,9 @@ def _listed_cases(reader, params, hook, envelope, parachute, generate):
         if case.hook not in valid_hooks:
             raise t.error("hook", i, f"unknown hook direction; valid ids are {valid_hooks} "
                           "(from 'hook azimuths' and 'hook vertical case')")
+        if (case.hook == TOWED) != (case.aero == TRIM_AERO):
+            raise t.error("aero", i, f"a towed case (hook {TOWED}) flies at the trimmed "
+                          f"attitude, aero {TRIM_AERO}, and only a towed case does")
         if case.aero not in valid_aero:
             raise t.error("aero", i, f"unknown aerodynamic point; valid ids are {valid_aero} "
                           "(the AeroEnvelope ids)")
@@ -227,9 +235,7 @@ def _generated_count(hook, envelope, parachute):
     directions = hook.n_azimuth + (1 if hook.include_vertical else 0)
     points = len(envelope.ids) if envelope is not None else 1
     states = 2 if parachute is not None else 1
-    towed = 0
-    if hook.towed:
-        towed = points * states - (1 if envelope is None and parachute is None else 0)
+    towed = states if hook.towed else 0  # at most one trim per parachute state
     return directions * points * states + towed
 
 

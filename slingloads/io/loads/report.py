@@ -477,11 +477,20 @@ def _outside_text(outside):
 
 def towed_note(result):
     """The towed-case verdict: how many trimmed cables lie outside the hook cone."""
+    findings = " ".join(result.towed_findings())
     if result.towed_table().empty:
-        return "No towed-flight equilibrium case (no aerodynamic point or parachute, or off)."
+        return ("No towed-flight equilibrium case (no fuselage table, or off). "
+                + findings).strip()
     outside = towed_outside(result)
-    rule = ("Cable angle from the vertical at Nz and at 1 g (the steady trail angle), judged "
-            "at the larger against the cone's inclination at the cable's azimuth.")
+    study = result.study
+    source = study.towed_source or "a system assembled from the loads' airframe, fuselage, "\
+        "fin and parachute"
+    rule = (f"Each towed case flies at its trimmed attitude (pitch and roll at which weight, "
+            f"aerodynamic and parachute moments balance about the hub; trim of {source} at "
+            f"the loads' airspeed; its vertical replaces the study's attitude in that case). "
+            "Cable angle from the vertical at Nz and at 1 g (the steady trail angle), judged "
+            "at the larger against the cone's inclination at the cable's azimuth."
+            + (f" {findings}" if findings else ""))
     if not outside:
         return f"{rule} Every trimmed cable lies inside the hook cone."
     return f"{rule} {_outside_text(outside)}"
@@ -890,6 +899,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     notes = [verdict, *([hook_handoff.describe()] if hook_handoff is not None else []),
              "Evidence: " + evidence,
              *(["FLAG: towed cables " + _outside_text(outside)] if outside else []),
+             *[f"FLAG: {line}" for line in result.towed_findings()],
              *exceedance_findings(result, findings.get("previous envelope source", "")),
              closure_line]
     summary = [
@@ -916,7 +926,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
                      "hook cone are taken about this vertical."),
         Section("Hook-load directions (CS-29.865)", hook_direction_table(result),
                 note=hook_direction_note(result)),
-        Section("Towed-flight equilibrium cases: trimmed cable angles",
+        Section("Towed-flight equilibrium cases: trimmed attitude and cable angles",
                 result.towed_table() if (result.cases["hook"] == "TOW").any() else None,
                 note=towed_note(result)),
         Section("Closure check (free-free equilibrium, SI as checked)", closure),

@@ -102,9 +102,11 @@ PARAMETERS = (
               "Include the hook load along the earth vertical (case VERTICAL).", "hook",
               former=("hook along mast axis",)),
     Parameter("towed equilibrium cases", FLAG, "", "yes",
-              "Add, per AeroEnvelope point with and without parachute, the towed-flight case "
-              "(hook TOW): cable vertical component Nz x weight, horizontal component "
-              "balancing aerodynamics and parachute; its angle is checked against the cone.",
+              "Add, with and without parachute, the towed-flight case (hook TOW, aero TRIM) at "
+              "the trimmed attitude (weight, aerodynamic and parachute moments balance about "
+              "the hub): cable vertical component Nz x weight, horizontal component balancing "
+              "aerodynamics and parachute; its angle is checked against the cone and a trim "
+              "outside the AeroEnvelope range is flagged.",
               "hook"),
     Parameter("generate case matrix", FLAG, "", "yes",
               "Generate hook direction x aero point x parachute on/off, then the towed "
@@ -176,7 +178,8 @@ SHEETS = (
                     "... (inclined from the vertical by 'hook angle from vertical' towards "
                     "azimuth 000 = aft, 090 = right), TOW (towed-flight equilibrium) or NONE (no "
                     "hook load); AXIAL is read as VERTICAL."),
-        Column("aero", TEXT, help="An AeroEnvelope id, or NONE (no aerodynamic load)."),
+        Column("aero", TEXT, help="An AeroEnvelope id, NONE (no aerodynamic load), or TRIM "
+                                  "(the trimmed attitude's: only, and always, with hook TOW)."),
         Column("chute", FLAG, help="Parachute drag on: yes or no."),
         Column("description", TEXT, required=False, default="",
                help="Free text printed beside the case on the LoadCases sheet of the report."),
