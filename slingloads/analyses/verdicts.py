@@ -456,8 +456,9 @@ def nearest_mode(period, modes, zeta=float("nan")):
     if not ok.any():
         return "", float("nan"), float("nan")
     distance = np.where(ok, np.abs(np.log(np.where(ok, periods, 1.0) / period)), np.inf)
-    near = np.abs(np.where(ok, periods, np.inf) - period) <= PERIOD_TOLERANCE * np.where(
-        ok, periods, np.inf)
+    with np.errstate(invalid="ignore"):  # a real root (period inf) is never near
+        near = ok & (np.abs(np.where(ok, periods, 0.0) - period)
+                     <= PERIOD_TOLERANCE * np.where(ok, periods, 0.0))
     if near.sum() > 1 and math.isfinite(zeta):
         gap = np.abs(np.asarray(modes["damping ratio [-]"], float) - zeta)
         k = int(np.argmin(np.where(near, gap, np.inf)))

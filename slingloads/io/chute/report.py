@@ -118,7 +118,9 @@ def summary_tables(result, units="SI"):
         ("density altitude", c.density_altitude, "altitude", "ISA"),
         ("air density", c.density, "density", ""),
         ("dynamic pressure q", c.dynamic_pressure, "pressure", "1/2 rho0 V_EAS^2"),
-        ("alpha trim", float(np.degrees(c.alpha)), "deg", ""),
+        ("alpha trim", float(np.degrees(c.alpha)), "deg",
+         "input (Study 'chute sizing alpha trim'), not trimmed: the Findings compare it with "
+         "the multibody trim"),
         ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
          f"source: {inp.inertia_source}"),
         ("moment axis against inertia axis", float(np.degrees(result.axes_angle)), "deg",
