@@ -68,6 +68,25 @@ def test_every_bad_cell_of_the_airframe_sheets(tmp_path):
     assert "checked once the Study sheet reads" in str(info.value)
 
 
+def test_texts_in_number_cells_of_five_sheets_are_named_together(tmp_path, capsys):
+    """A careless user's texts in number cells of an airframe sheet, an optional airframe
+    sheet and three analyses' sheets at once: the five cells are named in one refusal (they
+    used to be one per attempt: the airframe's error stopped the reading before the other
+    sheets' cells were read); exit 2; nothing written."""
+    edits = [("MassItems", "C3", "heavy"), ("FinAero", "B10", "n/a"),
+             ("LateralMotions", "C3", "fast"), ("ChuteWake", "B3", "x"),
+             ("MultibodyManoeuvres", "F3", "soon")]
+    path = _copy(tmp_path, edits, "five.xlsx")
+    with pytest.raises(InputErrors) as info:
+        read_study(path)
+    assert [(e.sheet, e.cell) for e in info.value.errors] == [(s, c) for s, c, _ in edits]
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert "5 errors in the input" in err and "nothing was written" in err
+    assert not out.exists()
+
+
 def test_one_error_is_reported_as_before(tmp_path):
     """A single bad cell gives a plain located InputError, not a list of one."""
     path = _copy(tmp_path, [("LateralMotions", "C2", "x")])

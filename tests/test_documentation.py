@@ -191,6 +191,36 @@ def test_readme_quotes_the_lateral_example(example_results):
     assert _agrees(tension, lateral.max_tension_ratio)
 
 
+def test_readme_quotes_the_campaign_example(example_campaign_run_report):
+    """The README's paragraph on the example's campaign (runs, areas, the 1.0 x verdict of the
+    gust at the lowest airspeed, the speed limits without parachute, HC2's verdict), against
+    the campaign report of ``slingloads run`` with the campaign on, read back from the xlsx."""
+    import pandas as pd
+
+    path = next(example_campaign_run_report.glob("*-campaign.xlsx"))
+    summary = pd.read_excel(path, "Summary", header=None)
+    items = {r[0]: r[1] for r in summary.itertuples(index=False) if isinstance(r[0], str)}
+    runs, factor, neutral, area, speed, verdict, limit, hc2 = _quoted(
+        r"(\d+) runs, smallest stable and recommended area (\d+\.\d) x the neutral "
+        r"(\d+\.\d+) m\^2 = (\d+\.\d+)\s+m\^2 \(at 1\.0 x the (\d+) KEAS gust response is "
+        r"(\w[\w ]*?):.*?speed limit (>= \d+ kt)\) and HC2 not even at\s+\d+ kt \(a ([\w ]+) of",
+        "README.md")
+    assert int(runs) == items["runs in the matrix"]
+    assert _agrees(neutral, items["neutral static area (1-DOF sizing)"])
+    assert _agrees(area, items["recommended area (least drag meeting the damping criterion)"])
+    assert _agrees(area, items["smallest area stable in every condition"])
+    assert _agrees(factor, items["recommended area (least drag meeting the damping criterion)"]
+                   / items["neutral static area (1-DOF sizing)"])
+    table = pd.read_excel(path, "NeutralArea")
+    gust = table[(table["model"] == "multibody") & (table["test"].str.startswith("gust"))
+                 & table["condition"].str.startswith(f"{speed} KEAS")]
+    assert len(gust) == 1 and gust["verdict"].iloc[0] == verdict
+    limits = {r[0]: (r[1], r[4]) for r in summary.itertuples(index=False)
+              if r[0] in ("HC1", "HC2")}
+    assert limits["HC1"][0].startswith(limit)
+    assert limits["HC2"][1] == hc2
+
+
 def _modules_with_examples():
     """The modules of slingloads whose source holds a ``>>>`` example, by dotted name."""
     package = ROOT / "slingloads"

@@ -205,12 +205,95 @@ def _check_run(folder, units):
             "neutral": abs(largest) <= 1e-6}[word]
     assert "parachute decision" in multibody
 
+    # the response damping: the mode named and the check beside it agree (multibody Metrics,
+    # transposed; campaign NoParachute and Metrics)
+    metrics = _parts(_sheet(reports["multibody"], "Metrics"), "metric")
+    metrics = metrics.set_index("metric").drop(columns="unit")
+    _check_response_damping(metrics.loc["response damping measured on mode"],
+                            metrics.loc["response damping check"])
+    for sheet, key in (("NoParachute", "helicopter"), ("Metrics", "run")):
+        table = _parts(_sheet(reports["campaign"], sheet), key)
+        if table is not None and "response damping check" in table:
+            _check_response_damping(table["response damping measured on mode"],
+                                    table["response damping check"],
+                                    table.get("yaw mode period [s]"))
+
+    # one attitude per flight condition: the 1-DOF sizing's alpha and the multibody trim's
+    attitude = f.loc["trimmed angle of attack of the parachute sizing's condition (1-DOF "
+                     "against multibody)"]
+    chute_items = _items(reports["chute"])
+    assert _same(_num(attitude["value"]), _num(chute_items["alpha trim"]))
+    trimmed = _items(reports["multibody"]).get("alpha")
+    if attitude["answer"].startswith(("one attitude", "NOT ONE")):
+        assert _same(_num(attitude["reference"]), _num(trimmed))
+        differ = abs(_num(attitude["value"]) - _num(trimmed)) > 1.0
+        assert attitude["answer"].startswith("NOT ONE ATTITUDE") == differ
+
+    # the hook angle the loads used, the same on the Dynamics sheet (the campaign's hand-off)
+    # and in the hand-off table, whose source is the Study when the campaign kept its angle
+    if "Dynamics" in pd.ExcelFile(reports["loads"]).sheet_names:
+        dynamics = _parts(_sheet(reports["loads"], "Dynamics"), "quantity").set_index(
+            "quantity")
+        lateral_used = _num(dynamics.loc["hook cone, lateral angle from the vertical",
+                                         "used in the loads"])
+        assert _same(lateral_used, angle)
+        hand = _num(dynamics.loc["hook cone, lateral angle from the vertical", "hand-entered"])
+        own = _section(_sheet(reports["loads"], "Summary"),
+                       "Lateral hook angle: the lateral study's hand-off to the loads")
+        if own is not None:
+            own = own.set_index("item").loc["lateral hook angle of the loads' own inputs"]
+            kept = _same(_num(own["value"]), hand)  # the campaign did not raise it
+            assert (own["note"] == "from the Study") == kept, own["note"]
+
     # the loads' exceedances
     over = f.loc["loads exceedances over the previous envelope"]
     if "EXCEED" in over["answer"]:
         assert _num(over["value"]) > 1.0
     elif over["answer"].startswith("none"):
         assert _num(over["value"]) <= 1.0
+
+
+def _parts(frame, first):
+    """Every table of a sheet (read with header=None) whose header row starts with the cell
+    ``first``, its parts joined side by side (a wide table is printed in parts of the same
+    rows, each repeating the key columns)."""
+    col = frame[0].astype(str)
+    out = []
+    for i in np.nonzero((col == first).to_numpy())[0]:
+        head = [c for c in frame.iloc[i] if isinstance(c, str)]
+        rows = []
+        for j in range(i + 1, len(frame)):
+            if pd.isna(frame.iloc[j, 0]):
+                break
+            rows.append(list(frame.iloc[j, :len(head)]))
+        out.append(pd.DataFrame(rows, columns=head))
+    if not out:
+        return None
+    joined = out[0]
+    for part in out[1:]:
+        new = [c for c in part.columns if c not in joined.columns]
+        joined = pd.concat([joined.reset_index(drop=True),
+                            part[new].reset_index(drop=True)], axis=1)
+    return joined
+
+
+def _check_response_damping(measured_on, check, yaw_period=None):
+    """The mode a response's damping was measured on and the check beside it agree: a named
+    mode has a period within 25 % of the response's and the check compares with that mode;
+    'none' goes with a check that says no mode matches; 'no linear mode to compare with'
+    never stands beside a listed yaw mode."""
+    for i, (on, words) in enumerate(zip(measured_on, check, strict=True)):
+        on = "" if pd.isna(on) else str(on)
+        words = "" if pd.isna(words) else str(words)
+        if on.startswith("none within"):
+            assert "matches no mode" in words, (on, words)
+        elif on:
+            name = on.split(" (")[0].replace(" of the trim at the ramp's final airspeed", "")
+            assert "matches no mode" not in words, (on, words)
+            assert f"the {name} mode" in words, (on, words)
+            assert "inf s" not in on, on
+        if yaw_period is not None and math.isfinite(_num(yaw_period[i])):
+            assert words != "no linear mode to compare with", (i, words)
 
 
 def test_example_with_campaign_reports_agree(example_campaign_run_report):

@@ -287,15 +287,16 @@ def test_output_folder_in_a_read_only_folder(small, tmp_path, capsys):
 
 
 @pytest.mark.parametrize("where, code, fragment", [
-    ("file", 1, "is an existing file"),
-    ("file/below", 1, "is a file"),
+    ("file", 2, "--out: the output folder is an existing file"),
+    ("file/below", 2, "--out: a part of the output path is a file"),
     ("sub", 2, "sub-folder"),
     ("/", 1, "mount point or the root folder"),
     ("x" * 300, 1, "too long"),
 ])
 def test_output_folders_that_cannot_be_used(small, tmp_path, capsys, where, code, fragment):
     """--out an existing file, a path under a file, a folder holding a sub-folder, the root
-    folder, a name too long for the file system: refused before anything is computed."""
+    folder, a name too long for the file system: refused before anything is computed (the
+    user's argument, exit 2; the environment's, exit 1: docs/inputs-and-outputs.md)."""
     (tmp_path / "file").write_text("not a folder")
     (tmp_path / "sub" / "inner").mkdir(parents=True)
     out = where if where == "/" else str(tmp_path / where)

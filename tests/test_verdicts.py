@@ -107,6 +107,29 @@ def test_worst_and_damping_check():
     assert vd.damping_check(0.2, 1.6, 0.2, 14.6, "yaw").startswith("period 1.6 s matches no")
 
 
+def test_the_mode_measured_on_and_its_check_agree():
+    """verdicts.response_mode against the rule stated in its docstring, on a hand-made modes
+    table: a response whose period is within 25 % of a mode's is measured on that mode and the
+    check compares with it; one whose period matches no mode names none (never the nearest
+    as the mode measured on) and the check says so; a real root (period inf) is never within
+    the tolerance of a measured period."""
+    import pandas as pd
+
+    modes = pd.DataFrame({"mode": ["yaw", "roll", "yaw 2"],
+                          "period [s]": [14.6, 1.44, np.inf],
+                          "damping ratio [-]": [0.155, 0.0014, 1.0]})
+    on, check = vd.response_mode(1.62, 0.0015, modes)
+    assert on.startswith("roll (1.44 s") and check.startswith("agrees with the roll mode")
+    on, check = vd.response_mode(2.08, 0.03, modes)
+    assert on.startswith("none within 25%") and "matches no mode" in check
+    on, check = vd.response_mode(14.5, 0.0005, modes)  # the real root's zeta 1 is not near
+    assert on.startswith("yaw (14.6 s") and check.startswith("differs from the yaw mode")
+    assert vd.nearest_mode(14.5, modes.iloc[[0, 2]], 1.0)[0] == "yaw"
+    assert vd.response_mode(np.nan, np.nan, modes) == (
+        "", "not measured (fewer than three peaks after the input)")
+    assert vd.response_mode(3.0, 0.1, None) == ("", "no linear mode to compare with")
+
+
 def test_eigenvalue_test_does_what_its_docstring_says():
     """LinearModel.stable: every real part below -1e-6 1/s (the documented tolerance); a real
     part of +1e-7 (within round-off of 0) is neutral, not stable, and +1e-3 unstable."""

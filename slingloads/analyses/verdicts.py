@@ -358,6 +358,51 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name):
             f"{DAMPING_TOLERANCE:g}: amplitude-dependent (nonlinear) or several modes")
 
 
+def response_mode(period, zeta, modes, whose=""):
+    """The mode a response's damping was measured on, and the check against it, in words:
+    the one place that names the mode (:func:`nearest_mode`) and judges the agreement
+    (:func:`damping_check`), so that the two statements cannot disagree. A mode whose period
+    is not within :data:`PERIOD_TOLERANCE` of the response's is never named as the mode
+    measured on ("none" with the nearest one).
+
+    Parameters
+    ----------
+    period : float
+        Period measured on the response. [s]
+    zeta : float
+        Damping ratio measured on the response (NaN: not measured). [-]
+    modes : pandas.DataFrame or None
+        The linear model's :meth:`LinearModel.modes_frame` (None: no model to compare with).
+    whose : str, optional
+        Which trim the modes are of, appended to the mode's name (e.g. " of the trim at the
+        ramp's final airspeed").
+
+    Returns
+    -------
+    tuple of (str, str)
+        (measured on mode, damping check).
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> modes = pd.DataFrame({"mode": ["yaw", "roll"], "period [s]": [14.6, 1.44],
+    ...                       "damping ratio [-]": [0.155, 0.0014]})
+    >>> response_mode(2.08, 0.03, modes)[0]
+    'none within 25% (nearest: roll, 1.44 s)'
+    >>> response_mode(1.62, 0.0015, modes)[0]
+    'roll (1.44 s, zeta 0.0014)'
+    """
+    name, mode_zeta, mode_period = nearest_mode(period, modes, zeta)
+    check = damping_check(zeta, period, mode_zeta, mode_period, name)
+    if not name or not (math.isfinite(zeta) and math.isfinite(period)):
+        return "", check
+    if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
+        return (f"none within {PERIOD_TOLERANCE:.0%} (nearest: {name}{whose}, "
+                f"{mode_period:.3g} s)", check)
+    label = f"{name}{whose} ({mode_period:.3g} s, zeta {mode_zeta:.3g})"
+    return label, check
+
+
 def slowest_period(modes, group="yaw"):
     """Period of the slowest oscillatory mode of a linear model in which ``group`` takes part
     (its angular amplitude at least half the largest group's in that mode).
@@ -411,8 +456,9 @@ def nearest_mode(period, modes, zeta=float("nan")):
     if not ok.any():
         return "", float("nan"), float("nan")
     distance = np.where(ok, np.abs(np.log(np.where(ok, periods, 1.0) / period)), np.inf)
-    near = np.abs(np.where(ok, periods, np.inf) - period) <= PERIOD_TOLERANCE * np.where(
-        ok, periods, np.inf)
+    with np.errstate(invalid="ignore"):  # a real root (period inf) is never near
+        near = ok & (np.abs(np.where(ok, periods, 0.0) - period)
+                     <= PERIOD_TOLERANCE * np.where(ok, periods, 0.0))
     if near.sum() > 1 and math.isfinite(zeta):
         gap = np.abs(np.asarray(modes["damping ratio [-]"], float) - zeta)
         k = int(np.argmin(np.where(near, gap, np.inf)))
@@ -426,4 +472,4 @@ __all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT"
            "EIGENVALUE_TOLERANCE",
            "INCONCLUSIVE", "LIMIT_CYCLE", "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE",
            "STATIC_DEPARTURE", "VERDICTS", "Envelope", "EnvelopeTest", "damping_check",
-           "envelope", "nearest_mode", "settling_time", "slowest_period", "worst"]
+           "envelope", "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst"]

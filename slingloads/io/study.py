@@ -116,16 +116,24 @@ def _build(reader, path, only, sha256, on_read=None):
     # the airframe, then each analysis. A step others need stops the reading when it fails.
     errors = ErrorCollector()
     params = errors.call(StudyParameters, reader, all_parameters())
-    for sheet in AIRFRAME_SHEETS.values():  # every cell of the required sheets, at once
-        if sheet.required:
+    for sheet in AIRFRAME_SHEETS.values():  # every cell of the airframe's sheets, at once
+        if sheet.required or reader.has_sheet(sheet.name):
             errors.call(reader.table, sheet)
     if params is None:
-        errors.raise_if_any(note="the other sheets are checked once the Study sheet reads")
+        errors.raise_if_any(note="the analyses' sheets are checked once the Study sheet reads")
     asked = [a.name for a in ANALYSES if errors.call(params, a.run_parameter)]
     if only is not None:
         asked = [a.name for a in ANALYSES if a.name in set(only)]
-    errors.raise_if_any(note="the sheets of the airframe and the analyses are checked once "
-                             "these read")
+    if errors:  # the reading stops here: first every cell of the asked analyses' table
+        # sheets present, so that a text in a number cell of several sheets is reported for
+        # all of them, not one sheet per attempt (else their readers check them below)
+        seen = set(AIRFRAME_SHEETS)
+        for sheet in (t for name in asked for t in _BY_NAME[name].modules().schema.SHEETS):
+            if sheet.name not in seen and reader.has_sheet(sheet.name):
+                seen.add(sheet.name)
+                errors.call(reader.table, sheet)
+    errors.raise_if_any(note="the airframe and the analyses are checked beyond their cells "
+                             "once these read")
     read = errors.call(read_airframe, reader, params)
     if read is None:
         errors.raise_if_any(note=f"the sheets of {', '.join(asked) or 'the analyses'} are "

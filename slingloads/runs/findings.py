@@ -38,6 +38,10 @@ SPEED_LIMIT = "speed limit without parachute"
 TENSION = "peak cable tension T/(m g) against Nz"
 EXCEEDANCE = "loads exceedances over the previous envelope"
 LINEAR = "linear stability of the towed system at its trim (multibody)"
+ATTITUDE = "trimmed angle of attack of the parachute sizing's condition (1-DOF against multibody)"
+#: Largest difference between the 1-DOF sizing's angle of attack and the multibody trim's at
+#: the same airspeed and density altitude for the two to count as one attitude. [deg]
+ATTITUDE_TOLERANCE = 1.0
 
 
 @dataclass(frozen=True)
@@ -110,7 +114,8 @@ def study_findings(results):
     Findings
     """
     return Findings((_hook_angle(results), *_parachute(results), *_speed_limits(results),
-                     _tension(results), _exceedance(results), _linear(results)))
+                     _tension(results), _exceedance(results), _linear(results),
+                     _attitude(results)))
 
 
 # ------------------------------------------------------------------------------- questions
@@ -293,3 +298,49 @@ def _linear(results):
               f"(eigenvalues only; parachute adequacy: see the parachute area)")
     return Finding(LINEAR, answer, largest, "1/s", -STABILITY_TOLERANCE,
                    "multibody, Summary and sheet Modes")
+
+
+def _attitude(results):
+    """The 1-DOF sizing's angle of attack against the multibody trim's at the
+    same airspeed and density altitude: one attitude per flight condition, or the finding
+    says they differ and by how much (and whether the trim lies outside the loads'
+    aerodynamic envelope)."""
+    chute, mb = results.chute_sizing, results.multibody
+    if chute is None or mb is None:
+        return Finding(ATTITUDE, NOT_RUN if chute is None else
+                       "not compared (no multibody run)", unit="deg",
+                       source="parachute sizing and multibody")
+    c = chute.inputs.model.condition
+    sizing = float(np.degrees(c.alpha))
+    system = mb.inputs.system
+    where = (f"parachute sizing, Summary 'alpha trim' (the towed trim, or the Study's 'chute "
+             f"sizing alpha trim' without one); "
+             f"multibody, Summary 'Trim at {system.airspeed / KNOT:.4g} KEAS' 'alpha'")
+    same = (abs(system.airspeed - c.eas) <= 1e-6 * max(1.0, c.eas)
+            and abs(system.density_altitude - c.density_altitude) <= 1e-3)
+    if not same:
+        return Finding(ATTITUDE, f"not compared: the sizing is at {c.eas / KNOT:.4g} KEAS, "
+                       f"{c.density_altitude:.4g} m, the multibody at "
+                       f"{system.airspeed / KNOT:.4g} KEAS, {system.density_altitude:.4g} m",
+                       sizing, "deg", math.nan, where)
+    if not mb.trim.converged:
+        return Finding(ATTITUDE, f"not compared: no multibody trim ({mb.trim.message})",
+                       sizing, "deg", math.nan, where)
+    trimmed = float(np.degrees(mb.trim.quantity("alpha")))
+    diff = sizing - trimmed
+    if abs(diff) <= ATTITUDE_TOLERANCE:
+        answer = (f"one attitude: 1-DOF alpha {sizing:.1f} deg, multibody trim "
+                  f"{trimmed:.1f} deg at {c.eas / KNOT:.4g} KEAS (within "
+                  f"{ATTITUDE_TOLERANCE:g} deg)")
+    else:
+        answer = (f"NOT ONE ATTITUDE: the 1-DOF sizing takes alpha {sizing:.1f} deg, the "
+                  f"multibody trims at {trimmed:.1f} deg at {c.eas / KNOT:.4g} "
+                  f"KEAS ({diff:+.1f} deg): the 1-DOF areas hold for the input attitude only")
+    loads = results.loads
+    envelope = None if loads is None else loads.study.envelope
+    if envelope is not None:
+        lo, hi = np.degrees(np.min(envelope.alpha)), np.degrees(np.max(envelope.alpha))
+        if not lo - 1e-9 <= trimmed <= hi + 1e-9:
+            answer += (f"; the trim lies outside the loads' aerodynamic envelope alpha "
+                       f"[{lo:.3g}, {hi:.3g}] deg")
+    return Finding(ATTITUDE, answer, sizing, "deg", trimmed, where)

@@ -56,7 +56,8 @@ def hook_angle_handoff(study, lateral):
     """The lateral study's hand-off to the loads: the loads' lateral hook cases at
     max(the loads' own lateral angle, the lateral study's recommended design angle)
     (:func:`slingloads.analyses.hook_angle.lateral_hook_handoff`). The loads' own angle is the
-    Study's, or the campaign hand-off's (``study.results.loads_handoff``) when there is one.
+    Study's, or the campaign hand-off's (``study.results.loads_handoff``) when that raised it
+    (its source is named "campaign hand-off" only then).
 
     Parameters
     ----------
@@ -78,7 +79,11 @@ def hook_angle_handoff(study, lateral):
     from slingloads.analyses.hook_angle import lateral_hook_handoff
 
     why = "" if np.isfinite(lateral.recommended_angle) else lateral.study.verdict()
-    source = "Study" if given is None else "campaign hand-off"
+    own = study.require(ANALYSIS).hook.lateral
+    # the campaign hand-off keeps the Study's angle unless the dynamics reach further: then
+    # the angle is the campaign's, else still the Study's (the Dynamics sheet says "kept")
+    source = ("Study" if given is None or np.isclose(base.hook.lateral, own, rtol=1e-12)
+              else "campaign hand-off")
     return lateral_hook_handoff(base, lateral.recommended_angle, why, source)
 
 

@@ -18,7 +18,13 @@ from .execution import (
     execute,
     make_executor,
 )
-from .handoff import HOOK_SOURCES, Handoff, loads_comparison, loads_from_dynamics
+from .handoff import (
+    HOOK_SOURCES,
+    Handoff,
+    comparison_as_run,
+    loads_comparison,
+    loads_from_dynamics,
+)
 from .keys import KeyMaker, canonical, code_digest
 from .loads_envelope import MARGIN, DynamicsEnvelope, dynamics_envelope
 from .matrix import (
@@ -65,7 +71,7 @@ from .stability_map import MapSettings, StabilityMap, stability_map
 
 __all__ = [
     "CARRIERS", "CONDITION_COLUMNS", "DEFAULT_FREE_CARRIER", "FACTORS", "HISTORY_LABELS",
-    "HOOK_SOURCES", "Handoff", "loads_comparison", "loads_from_dynamics",
+    "HOOK_SOURCES", "Handoff", "comparison_as_run", "loads_comparison", "loads_from_dynamics",
     "MANOEUVRES",
     "MARGIN", "MAX_HALF_TIME", "MIN_DAMPING", "RAMP_TARGETS", "ROW_FACTORS",
     "SCHEDULER_TIMEOUT", "YAW_SHARE",

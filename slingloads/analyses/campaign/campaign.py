@@ -32,7 +32,7 @@ from .loads_envelope import MARGIN, dynamics_envelope
 from .matrix import CONDITION_COLUMNS, MANOEUVRES, CampaignMatrix, Factors
 from .metrics import HISTORY_LABELS, ordered
 from .no_parachute import NoParachuteResult, NoParachuteStudy, ramp_verdict, speed_limits
-from .selection import SelectionCriteria, select_parachute
+from .selection import SelectionCriteria, condition_text, select_parachute
 from .sensitivity import carrier_comparison, sensitivity_tables
 from .setup import CampaignSetup, neutral_area_of, yaw_model_of
 from .stability_map import MapSettings, stability_map
@@ -304,7 +304,10 @@ def neutral_check(campaign, metrics):
            else tuple(float(b) for b in campaign.neutral_fit_range))
     runs = run_yaw(model, campaign.neutral.area, standard_gusts(),
                    SolverSettings(ONE_DOF_TIME, ONE_DOF_STEP), fit_range=fit).to_frame()
-    rows = [{"model": "1-DOF yaw", "condition": f"{speed:.4g} m/s EAS, {altitude:.4g} m",
+    from slingloads.constants import FOOT, KNOT
+
+    one_dof = f"{speed / KNOT:.0f} KEAS, density altitude {altitude / FOOT:.0f} ft"
+    rows = [{"model": "1-DOF yaw", "condition": one_dof,
              "test": f"lateral gust {g}", "verdict": v,
              "peak beta [deg]": b, "damping ratio [-]": z}
             for g, v, b, z in zip(runs["gust"], runs["verdict"], runs["peak beta [deg]"],
@@ -315,9 +318,7 @@ def neutral_check(campaign, metrics):
                "area [m^2]": campaign.neutral.area}
         point = trim(campaign.setup.system_for(row))
         verdict = linearise(point).verdict() if point.converged else "no trim"
-        text = (f"{cond['airspeed EAS [m/s]']:.4g} m/s EAS, {cond['mass case']}, "
-                f"{cond['density altitude [m]']:.4g} m, cable {cond['cable length [m]']:.4g} m, "
-                f"{cond['carrier']} carrier")
+        text = condition_text(cond)
         rows.append({"model": "multibody", "condition": text, "test": "eigenvalues",
                      "verdict": verdict})
         same = at_one

@@ -278,6 +278,46 @@ def loads_from_dynamics(study, envelope, hook_source="CS-29.865", chosen_area=No
     return Handoff(replace(study, **new), pd.DataFrame(_flag_lowered(rows)), envelope)
 
 
+#: The comparison's hook-cone rows and the :class:`HookCone` angle (rad) each reports.
+_HOOK_ROWS = {"hook cone, fore-and-aft angle from the vertical": "angle",
+              "hook cone, lateral angle from the vertical": "lateral"}
+
+
+def comparison_as_run(comparison, hook):
+    """The hand-off's comparison with its hook-cone rows' "used in the loads" taken from the
+    hook cone the loads were finally run with (``hook``): a later hand-off (the lateral
+    study's recommended design angle, :mod:`slingloads.analyses.hook_angle`) may raise an
+    angle after the campaign's, and the table must state the angle the loads used, not the
+    campaign's.
+
+    Parameters
+    ----------
+    comparison : pandas.DataFrame
+        :attr:`Handoff.comparison`.
+    hook : HookCone
+        The hook cone of the loads study that was run.
+
+    Returns
+    -------
+    pandas.DataFrame
+        A copy; a row whose angle was raised says so in its note.
+    """
+    table = comparison.copy()
+    for quantity, attribute in _HOOK_ROWS.items():
+        rows = np.nonzero((table["quantity"] == quantity).to_numpy())[0]
+        for i in rows:
+            used = float(np.degrees(getattr(hook, attribute)))
+            before = pd.to_numeric(pd.Series([table["used in the loads"].iloc[i]]),
+                                   errors="coerce").iloc[0]
+            if np.isfinite(before) and used > before * (1 + 1e-12):
+                note = str(table["note"].iloc[i] or "")
+                table.iloc[i, table.columns.get_loc("used in the loads")] = used
+                table.iloc[i, table.columns.get_loc("note")] = "; ".join(
+                    t for t in (note, f"raised from {before:.4g} deg by the lateral study's "
+                                      "recommended design angle") if t)
+    return table
+
+
 def loads_comparison(result):
     """Largest |limit load| of each component over the fuselage: the hand-entered cases
     against the cases from the dynamics (the ``source`` column of the case matrix).

@@ -112,12 +112,17 @@ def linear_metrics(trim_point, model):
     return out
 
 
-def response_metrics(run):
+def response_metrics(run, model=None):
     """Metrics of a run's response (module notes), and its histories.
 
     Parameters
     ----------
     run : RunResult
+    model : LinearModel or None, optional
+        The linear model of the run's condition (its system's trim). A wind ramp starts in
+        hover and ends at its system's airspeed: its response damping is then compared with
+        this model's modes (the ones the campaign's tables list beside it), not left
+        unchecked.
 
     Returns
     -------
@@ -128,6 +133,15 @@ def response_metrics(run):
     base = run.metrics()
     out = {k: v for k, v in base.items() if k not in _DROPPED}
     out["response verdict"] = base["verdict"]
+    ramp = getattr(getattr(run.manoeuvre, "wind", None), "ramp", None)
+    if (model is not None and run.linear_at_condition is None and ramp is not None
+            and abs(ramp.target - run.system.airspeed) <= 1e-9 * max(1.0, ramp.target)):
+        from slingloads.analyses.verdicts import response_mode
+
+        (out["response damping measured on mode"],
+         out["response damping check"]) = response_mode(
+            base["yaw period from response [s]"], base["yaw damping ratio from response [-]"],
+            model.modes_frame(), " of the trim at the ramp's final airspeed")
     h = run.histories()
     table = np.column_stack([h[key] if si else np.degrees(h[key])
                              for key, _, si in HISTORY_COLUMNS])

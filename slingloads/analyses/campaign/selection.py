@@ -98,7 +98,21 @@ def damped_runs(metrics, criteria):
             & (half <= criteria.max_half_time))
 
 
-def _condition_text(row):
+def condition_text(row):
+    """A campaign condition in words, the one spelling every report uses: airspeed in KEAS,
+    density altitude and cable length in ft (the units of the flight manual, in SI and US
+    reports alike), mass case and carrier.
+
+    Parameters
+    ----------
+    row : mapping
+        With ``airspeed EAS [m/s]``, ``mass case``, ``density altitude [m]``, ``cable length
+        [m]`` and ``carrier``.
+
+    Returns
+    -------
+    str
+    """
     from slingloads.constants import FOOT, KNOT
 
     return (f"{row['airspeed EAS [m/s]'] / KNOT:.0f} KEAS, mass case {row['mass case']}, "
@@ -114,7 +128,8 @@ class Selection:
     ----------
     criteria : SelectionCriteria
     by_area : pandas.DataFrame
-        One row per area factor: runs, stable runs, runs meeting the damping criterion, least
+        One row per area factor: runs, stable runs, stable runs meeting the damping
+        criterion (a run must be stable to count), least
         yaw damping, largest trimmed swing angle, verdicts.
     smallest_stable : float
         Area factor (NaN when no area is stable everywhere). [-]
@@ -154,7 +169,7 @@ def _per_area(metrics, criteria):
         "area [m^2]": g["area [m^2]"].first(),
         "runs": g.size(),
         "stable runs": g["_stable"].sum().astype(int),
-        "runs meeting the damping criterion": g["_damped"].sum().astype(int),
+        "stable runs meeting the damping criterion": g["_damped"].sum().astype(int),
         "least yaw-mode damping ratio [-]": g["_zeta"].min(),
         "longest yaw-mode time to half amplitude [s]": g[
             "yaw mode time to half amplitude [s]"].apply(
@@ -166,8 +181,8 @@ def _per_area(metrics, criteria):
         "no trim": g["trim converged"].apply(lambda v: int((~v.astype(bool)).sum())),
     })
     frame["stable in every condition"] = frame["stable runs"] == frame["runs"]
-    frame["meets the damping criterion everywhere"] = (
-        frame["runs meeting the damping criterion"] == frame["runs"])
+    frame["stable and meets the damping criterion everywhere"] = (
+        frame["stable runs meeting the damping criterion"] == frame["runs"])
     return frame.reset_index(), m
 
 
@@ -202,7 +217,7 @@ def _governing_stable(m, chosen):
     if failing.size:
         last = rows[(rows["area factor [-]"] == failing[-1]) & ~rows["_stable"]]
         deciding = ", ".join(f"{r['manoeuvre']} ({_why(r)})" for _, r in last.iterrows())
-    return {**row, "condition": _condition_text(row),
+    return {**row, "condition": condition_text(row),
             "needs area factor [-]": float(worst), "fails below with": deciding}
 
 
@@ -220,10 +235,10 @@ def _governing_recommended(m, chosen):
     k = at["_zeta"].idxmin()
     row = {c: at.loc[k, c] for c in cond}
     swing = at.loc[at["_swing"].idxmax()]
-    return {**row, "condition": _condition_text(row),
+    return {**row, "condition": condition_text(row),
             "least yaw-mode damping ratio [-]": float(at.loc[k, "_zeta"]),
             "with manoeuvre": at.loc[k, "manoeuvre"],
-            "largest swing condition": _condition_text(swing),
+            "largest swing condition": condition_text(swing),
             "largest trimmed swing angle [deg]": float(swing["_swing"])}
 
 
@@ -248,7 +263,7 @@ def select_parachute(metrics, criteria=None, neutral_area=1.0):
     by_area, m = _per_area(metrics, criteria)
     stable = by_area[by_area["stable in every condition"]]
     smallest = float(stable["area factor [-]"].min()) if len(stable) else np.nan
-    damped = by_area[by_area["meets the damping criterion everywhere"]]
+    damped = by_area[by_area["stable and meets the damping criterion everywhere"]]
     recommended = np.nan
     if len(damped):
         recommended = float(damped.sort_values(

@@ -69,9 +69,10 @@ def run_batch(jobs, settings, threads=None):
         if id(system) not in conditions:
             point = trim(system)
             model = linearise(point) if point.converged else None
-            conditions[id(system)] = linear_metrics(point, model)
-        metrics, histories = response_metrics(run)
-        out.append((key, {**conditions[id(system)], **metrics}, histories))
+            conditions[id(system)] = (linear_metrics(point, model), model)
+        condition, model = conditions[id(system)]
+        metrics, histories = response_metrics(run, model)
+        out.append((key, {**condition, **metrics}, histories))
     return out
 
 

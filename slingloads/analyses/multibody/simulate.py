@@ -302,13 +302,10 @@ class RunResult:
         period, zeta = float(m["yaw period"]), float(m["yaw damping ratio"])
         linear = self.linear_at_condition
         modes = linear.modes_frame() if linear is not None else None
-        name, mode_zeta, mode_period = vd.nearest_mode(period, modes, zeta)
         row["yaw period from response [s]"] = period
         row["yaw damping ratio from response [-]"] = zeta
-        row["response damping measured on mode"] = (
-            f"{name} ({mode_period:.3g} s, zeta {mode_zeta:.3g})" if name else "")
-        row["response damping check"] = vd.damping_check(zeta, period, mode_zeta,
-                                                         mode_period, name)
+        (row["response damping measured on mode"],
+         row["response damping check"]) = vd.response_mode(period, zeta, modes)
         row["settling time [s]"] = settling
         row["settling band [deg]"] = float(np.degrees(band))
         row["verdict"] = verdict

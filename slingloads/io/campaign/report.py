@@ -86,15 +86,15 @@ def _explained(frame):
 
 def in_units(frame, units):
     """A copy of ``frame`` with its SI columns (m/s, m, kg, N, m^2 in the header) in the
-    report units: kt, ft, lb, lbf, ft^2 for ``"US"``."""
+    report units: kt, ft, lb, lbf, ft^2 for ``"US"``; speeds (m/s) in kt in both unit systems
+    (every airspeed of the reports is in knots)."""
     check_units(units)
-    if units == "SI":
-        return frame.copy()
     out = frame.copy()
     renames = {}
     for column in out.columns:
         match = _HEADER.match(str(column))
-        if match and match.group("unit") in _US:
+        if match and match.group("unit") in _US and (units == "US"
+                                                     or match.group("unit") == "m/s"):
             factor, unit = _US[match.group("unit")]
             out[column] = pd.to_numeric(out[column], errors="coerce") * factor
             renames[column] = f"{match.group('name')} [{unit}]"

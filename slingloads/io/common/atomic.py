@@ -219,12 +219,17 @@ class AtomicOutputs:
                                       self.out_dir) from None
                 path = path.parent
                 continue
+            except NotADirectoryError:  # a file above: found and named on the way up
+                path = path.parent
+                continue
             except OSError as err:
                 raise _os_error(err, "cannot use the output folder", self.out_dir) from None
-            if not stat.S_ISDIR(info.st_mode):
-                what = ("the output folder is an existing file, not a folder" if path == real
-                        else f"a part of the output path is a file, not a folder: {path}")
-                raise OutputError(what, self.out_dir)
+            if not stat.S_ISDIR(info.st_mode):  # the user's --out, not the environment
+                what = ("--out: the output folder is an existing file, not a folder"
+                        if path == real else
+                        f"--out: a part of the output path is a file, not a folder ({path})")
+                raise InputError(what + "; give a folder (a missing one is created)",
+                                 str(self.out_dir))
             return path
 
     def _check_folder(self, real):

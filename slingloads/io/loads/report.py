@@ -1020,9 +1020,9 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
 def dynamics_sections(result, comparison, units="SI"):
     """The *Dynamics* sheet: what the campaign's dynamics changed in the cases, and the
     largest loads of the hand-entered cases against those of the cases from the dynamics."""
-    from slingloads.analyses.campaign import loads_comparison
+    from slingloads.analyses.campaign import comparison_as_run, loads_comparison
 
-    table = comparison.copy()
+    table = comparison_as_run(comparison, result.study.hook)
     if units == "US":
         for unit, kind in (("N", "force"), ("m^2", "area")):
             rows = table["unit"] == unit

@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.checks import non_negative, positive
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.hook_trajectory import HookTrajectory
 
@@ -163,7 +164,7 @@ class ForwardAcceleration(_Trajectory):
         return self.trajectory.command(t, v0)
 
     def describe(self):
-        return (f"forward acceleration to {self.target:.4g} m/s at "
+        return (f"forward acceleration to {self.target / KNOT:.4g} kt at "
                 f"{self.acceleration:.3g} m/s^2")
 
 
