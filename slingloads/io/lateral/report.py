@@ -22,7 +22,8 @@ report. :func:`write` publishes, all at once or not at all (:mod:`slingloads.io.
   recommended angle, when the recommended angle is below 90 deg).
 
 Lengths, forces, moments, masses, speeds and accelerations are in the report unit system
-(``--units``); angles in degrees; rope lengths are also given in ft.
+(``--units``); angles in degrees; rope lengths are also given in ft in SI reports (the
+paper's unit), in inches alone in US reports (one unit per quantity).
 """
 
 from __future__ import annotations
@@ -151,9 +152,11 @@ def summary_tables(result, units="SI"):
         ("  CG below hub", float(case["CG below hub [m]"]), "length",
          f"factor {case['CG below hub factor [-]']:.3g}"),
         ("  motion", result.motion_id(i), None, str(case["motion description"])),
+        # in SI the paper's feet beside the metres; in US units the report's inches alone
+        # (one unit per quantity: every rope and cable length of a US report is in inches)
         ("  rope length", float(case["rope length [m]"]), "length",
-         f"{case['rope length [m]'] / FOOT:.4g} ft, factor "
-         f"{case['rope length factor [-]']:.3g}"),
+         (f"{case['rope length [m]'] / FOOT:.4g} ft, " if units == "SI" else "")
+         + f"factor {case['rope length factor [-]']:.3g}"),
         ("  body", str(case["body"]), None, f"source: {inp.body_source}"),
         ("  time of the maximum", float(case["t at max |theta1 - theta2| [s]"]), "s", ""),
         ("  cable slack in that case", bool(case["slack [-]"]), None,
@@ -230,8 +233,9 @@ def runs_table(result, units="SI"):
     (Every variant: ``result.study.to_frame()``.)"""
     frame = result.study.case_frame()
     frame.insert(1, "motion id", [result.motion_id(int(c) - 1) for c in frame["case"]])
-    frame.insert(list(frame.columns).index("rope length [m]") + 1, "rope length [ft]",
-                 frame["rope length [m]"] / FOOT)
+    if units == "SI":  # the paper's feet beside the metres; a US report gives inches alone
+        frame.insert(list(frame.columns).index("rope length [m]") + 1, "rope length [ft]",
+                     frame["rope length [m]"] / FOOT)
     frame = convert_columns(frame, {
         "mass [kg]": ("mass", "mass"), "roll inertia [kg m^2]": ("roll inertia", "inertia"),
         "CG below hub [m]": ("CG below hub", "length"),
@@ -361,7 +365,8 @@ def _sheets(result, units, warnings=()):
                               "impulse of acceleration, of the size of the velocity jump)."),
                  Section("Bodies (mass cases)", bodies),
                  Section("Definition of every case (cable model: sheet Summary)", definition),
-                 Section("Results of every case", results)],
+                 # its own sheet: its own column widths, not the definition table's
+                 Section("Results of every case", results, sheet="Runs-ResultsEveryCase")],
         "Sensitivity": [
             Section("Sensitivity of the largest load angle and cable tension to the uncertain "
                     "inputs", note="Every case is run over the stated ranges of roll inertia, "
