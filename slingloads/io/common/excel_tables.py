@@ -13,6 +13,7 @@ its header row on every printed page; ratio cells above a threshold are filled r
 
 from __future__ import annotations
 
+import math
 import numbers
 import re
 import textwrap
@@ -419,14 +420,23 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     return names
 
 
+#: Width of a column whose width is not set (Excel's default, 8.43 characters). [px]
+_DEFAULT_COLUMN_PIXELS = 64
+
+
 def _note_box(ws, row, lines, columns, n_columns):
     """The note of a table sheet in a text box from ``row`` (0-based) down, inside the
     printed area; the cells stay the table's alone."""
+    # wide enough for its longest line (10 pt: about 6 px a character)
+    width = max(columns.pixels, 300, 6 * max((len(line) for line in lines), default=0))
     ws.insert_textbox(row, 0, "\n".join(lines), {
-        "width": max(columns.pixels, 300), "height": ROW_PIXELS * (len(lines) + 1),
+        "width": width, "height": ROW_PIXELS * (len(lines) + 1),
         "font": {"size": 10}, "line": {"none": True}, "fill": {"none": True},
         "object_position": 3})
-    ws.print_area(0, 0, row + len(lines) + 1, max(n_columns - 1, 0))
+    # the printed area as wide as the box: a box wider than a narrow table runs on over the
+    # empty columns after it (default width, 64 px), never cut at the table's edge
+    extra = max(0, math.ceil((width - columns.pixels) / _DEFAULT_COLUMN_PIXELS))
+    ws.print_area(0, 0, row + len(lines) + 1, max(n_columns - 1, 0) + extra)
 
 
 def _is_long(table, number_format):

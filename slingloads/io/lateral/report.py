@@ -264,7 +264,10 @@ def history_table(result, units="SI"):
 
 def modes_table(result, units="SI"):
     """Natural modes about the hanging equilibrium of every body x rope length."""
-    return convert_columns(result.modes, {"rope length [m]": ("rope length", "length")}, units)
+    modes = result.modes
+    if units != "SI":  # the paper's feet only beside metres: a US report gives inches alone
+        modes = modes.drop(columns=["rope length [ft]"], errors="ignore")
+    return convert_columns(modes, {"rope length [m]": ("rope length", "length")}, units)
 
 
 def comparison_station_table(comparison, units="SI"):
@@ -406,8 +409,8 @@ def _figures(result, units):
         plot_function("slingloads.io.lateral.plots", name)
         for name in ("plot_max_angle_vs_acceleration", "plot_sensitivity",
                      "plot_shear_at_angles", "plot_time_histories"))
-    figs = {"histories": (plot_time_histories, (result.critical_run,), {}),
-            "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {}),
+    figs = {"histories": (plot_time_histories, (result.critical_run,), {"units": units}),
+            "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {"units": units}),
             "sensitivity": (plot_sensitivity, (result.study,), {})}
     if result.comparison is not None:
         figs["shear"] = (plot_shear_at_angles, (result.comparison,), {"units": units})
