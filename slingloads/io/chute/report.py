@@ -308,9 +308,8 @@ def curve_rows(frame, column="beta [deg]"):
         return frame, ""
     # the rows the table has at whole multiples of the step (a table coarser than the step
     # in places gives fewer: "every 5 deg" would misstate it)
-    return frame[keep], (f"The rows at whole multiples of {CURVE_STEP:g} deg of sideslip "
-                         f"({int(keep.sum())} of {len(frame)} rows); the plot shows every "
-                         "point.")
+    return frame[keep], (f"Rows at multiples of {CURVE_STEP:g} deg of sideslip "
+                         f"({int(keep.sum())} of {len(frame)}); the plot shows every point.")
 
 
 def _decision_sentence(decision, units):

@@ -304,17 +304,20 @@ def history_sheet_table(result, units="SI"):
 
 
 def _split_runs(frame):
-    """The Runs table as (bodies, definition, results): the mass cases once, the motion and
-    rope of each case, then its metrics."""
+    """The Runs table as (bodies, motions, definition, results): the mass cases once, the
+    carrier motions' descriptions once (a wrapped sentence on every case widened the table
+    and doubled its rows), the motion and rope of each case, then its metrics."""
     metrics = [c for c in frame.columns if c.startswith(("max ", "min ", "t at ", "slack"))]
     keys = ["case", "motion id"]
     body = ["body", *(c for c in frame.columns if c.startswith(("mass [", "roll inertia [",
                                                                  "CG below hub [")))]
     bodies = frame[body].drop_duplicates("body").reset_index(drop=True)
-    dropped = {*metrics, *body[1:], "motion"} | {c for c in frame.columns
-                                                 if c.startswith("cable EA [")}
+    motions = (frame[["motion id", "motion description"]].drop_duplicates("motion id")
+               .reset_index(drop=True))
+    dropped = {*metrics, *body[1:], "motion", "motion description"} | {
+        c for c in frame.columns if c.startswith("cable EA [")}
     definition = frame[[c for c in frame.columns if c not in dropped]]
-    return bodies, definition, frame[keys + metrics]
+    return bodies, motions, definition, frame[keys + metrics]
 
 
 def _split_components(frame):
@@ -356,7 +359,7 @@ def _sheets(result, units, warnings=()):
         loads_sheet = ("The recommended angle is 90 deg or more: no hook-load cone can be "
                        "built; the hook cases were not re-run.")
     st = result.study
-    bodies, definition, results = _split_runs(runs_table(result, units))
+    bodies, motions, definition, results = _split_runs(runs_table(result, units))
     histories, interval = history_sheet_table(result, units)
     return {
         "Summary": summary,
@@ -367,6 +370,7 @@ def _sheets(result, units, warnings=()):
                               f"'{UNBOUNDED_STEP}', the hook's speed jumps at t = 0 (an "
                               "impulse of acceleration, of the size of the velocity jump)."),
                  Section("Bodies (mass cases)", bodies),
+                 Section("Carrier motions (LateralMotions sheet)", motions),
                  Section("Definition of every case (cable model: sheet Summary)", definition),
                  # its own sheet: its own column widths, not the definition table's
                  Section("Results of every case", results, sheet="Runs-ResultsEveryCase")],
