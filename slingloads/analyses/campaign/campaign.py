@@ -21,6 +21,7 @@ import pandas as pd
 
 from slingloads.analyses.chute_sizing import FIT_RANGE, run_yaw
 from slingloads.analyses.multibody import linearise, trim
+from slingloads.constants import FOOT, KNOT
 from slingloads.errors import InputError
 from slingloads.models.gusts import standard_gusts
 from slingloads.models.multibody.integrator import ATOL, RTOL
@@ -32,7 +33,7 @@ from .loads_envelope import MARGIN, dynamics_envelope
 from .matrix import CONDITION_COLUMNS, MANOEUVRES, CampaignMatrix, Factors
 from .metrics import HISTORY_LABELS, ordered
 from .no_parachute import NoParachuteResult, NoParachuteStudy, ramp_verdict, speed_limits
-from .selection import SelectionCriteria, select_parachute
+from .selection import SelectionCriteria, condition_text, select_parachute
 from .sensitivity import carrier_comparison, sensitivity_tables
 from .setup import CampaignSetup, neutral_area_of, yaw_model_of
 from .stability_map import MapSettings, stability_map
@@ -304,7 +305,10 @@ def neutral_check(campaign, metrics):
            else tuple(float(b) for b in campaign.neutral_fit_range))
     runs = run_yaw(model, campaign.neutral.area, standard_gusts(),
                    SolverSettings(ONE_DOF_TIME, ONE_DOF_STEP), fit_range=fit).to_frame()
-    rows = [{"model": "1-DOF yaw", "condition": f"{speed:.4g} m/s EAS, {altitude:.4g} m",
+    # conditions as the matrix states them (selection's words): KEAS, altitudes and cables in
+    # ft, in either unit system (a sentence in m/s and m read "135 ft/s EAS, 0 in" in US)
+    rows = [{"model": "1-DOF yaw",
+             "condition": f"{speed / KNOT:.0f} KEAS, density altitude {altitude / FOOT:.0f} ft",
              "test": f"lateral gust {g}", "verdict": v,
              "peak beta [deg]": b, "damping ratio [-]": z}
             for g, v, b, z in zip(runs["gust"], runs["verdict"], runs["peak beta [deg]"],
@@ -315,9 +319,7 @@ def neutral_check(campaign, metrics):
                "area [m^2]": campaign.neutral.area}
         point = trim(campaign.setup.system_for(row))
         verdict = linearise(point).verdict() if point.converged else "no trim"
-        text = (f"{cond['airspeed EAS [m/s]']:.4g} m/s EAS, {cond['mass case']}, "
-                f"{cond['density altitude [m]']:.4g} m, cable {cond['cable length [m]']:.4g} m, "
-                f"{cond['carrier']} carrier")
+        text = condition_text(cond)
         rows.append({"model": "multibody", "condition": text, "test": "eigenvalues",
                      "verdict": verdict})
         same = at_one

@@ -98,7 +98,9 @@ def damped_runs(metrics, criteria):
             & (half <= criteria.max_half_time))
 
 
-def _condition_text(row):
+def condition_text(row):
+    """A condition of the matrix in words, as the Study states it: KEAS, the mass case, the
+    density altitude and the cable in ft, the carrier (either unit system)."""
     from slingloads.constants import FOOT, KNOT
 
     return (f"{row['airspeed EAS [m/s]'] / KNOT:.0f} KEAS, mass case {row['mass case']}, "
@@ -202,7 +204,7 @@ def _governing_stable(m, chosen):
     if failing.size:
         last = rows[(rows["area factor [-]"] == failing[-1]) & ~rows["_stable"]]
         deciding = ", ".join(f"{r['manoeuvre']} ({_why(r)})" for _, r in last.iterrows())
-    return {**row, "condition": _condition_text(row),
+    return {**row, "condition": condition_text(row),
             "needs area factor [-]": float(worst), "fails below with": deciding}
 
 
@@ -220,10 +222,10 @@ def _governing_recommended(m, chosen):
     k = at["_zeta"].idxmin()
     row = {c: at.loc[k, c] for c in cond}
     swing = at.loc[at["_swing"].idxmax()]
-    return {**row, "condition": _condition_text(row),
+    return {**row, "condition": condition_text(row),
             "least yaw-mode damping ratio [-]": float(at.loc[k, "_zeta"]),
             "with manoeuvre": at.loc[k, "manoeuvre"],
-            "largest swing condition": _condition_text(swing),
+            "largest swing condition": condition_text(swing),
             "largest trimmed swing angle [deg]": float(swing["_swing"])}
 
 
