@@ -256,19 +256,21 @@ def test_very_stiff_adaptive_runs_are_refused_at_the_tolerance(tmp_path, capsys)
 
 
 def test_us_plots_convert_lengths_and_moments(result):
-    """--units US plots: wake distances in ft (1 ft = 0.3048 m) and yawing moments in
-    1000 lbf ft (1 lbf ft = 4.4482216152605 x 0.3048 N m), converted from the SI results."""
+    """--units US plots in the units of the US tables: wake distances in inches (1 in =
+    0.0254 m) and yawing moments in lbf in (1 lbf in = 4.4482216152605 x 0.0254 N m),
+    converted from the SI results (they were in ft and 1000 lbf ft beside tables in in and
+    lbf in)."""
     from slingloads.io.chute.plots import plot_static_moments, plot_wake
 
     wake = plot_wake(result.line, "US").axes[0]
-    assert "[ft]" in wake.get_xlabel()
+    assert "[in]" in wake.get_xlabel()
     np.testing.assert_allclose(wake.lines[0].get_xdata(),
-                               np.asarray(result.line.distance) / 0.3048, rtol=1e-12)
+                               np.asarray(result.line.distance) / 0.0254, rtol=1e-12)
     moments = plot_static_moments(result.static, "US").axes[0]
-    assert "[1000 lbf ft]" in moments.get_ylabel()
+    assert "[lbf in]" in moments.get_ylabel()
     first = next(iter(result.static.moments.values()))
     np.testing.assert_allclose(moments.lines[0].get_ydata(),
-                               first / (1000 * 4.4482216152605 * 0.3048), rtol=1e-12)
+                               first / (4.4482216152605 * 0.0254), rtol=1e-12)
 
 
 def test_rk4_grid_rule_located_at_the_output_interval(tmp_path, capsys):

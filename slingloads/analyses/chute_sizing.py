@@ -673,6 +673,7 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
               for zl, z, pl in zip(zeta_log.tolist(), zeta_lin.tolist(), period_lin.tolist(),
                                    strict=True)]
     reasons = []
+    k_round_off = 1e-9 * float(np.nanmax(np.abs(stiffness), initial=0.0))
     for j in range(runs):
         why = []
         if hist.left_table[j]:
@@ -687,8 +688,10 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
         if not why:
             why.append(env.reason(j))
             if not lin_stable[j]:
+                # at the neutral area k cancels to round-off of the sweep's stiffnesses: 0
+                k = stiffness[j] if abs(stiffness[j]) > k_round_off else 0.0
                 why.append(f"linear yaw mode (local slopes) not stable: k = "
-                           f"{stiffness[j]:.4g} N m/rad, c = {damping[j]:.4g} N m s/rad")
+                           f"{k:.4g} N m/rad, c = {damping[j]:.4g} N m s/rad")
         reasons.append("; ".join(why))
     labels = {id(g): (g.kind, g.label) for g in gusts}  # once per distinct gust
     return pd.DataFrame({

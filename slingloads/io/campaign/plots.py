@@ -1,7 +1,9 @@
 """Plots of the campaign (object API only: every function returns a new Figure).
 
-Angles in degrees; airspeeds in kt, areas in m^2 or ft^2 by the unit system asked for
-(``"SI"`` or ``"US"``). The histories come from the campaign result's store.
+Angles in degrees; airspeeds in kt; density altitudes and cable lengths in ft, as the
+campaign's matrix is defined (Study rows in ft, in both unit systems); areas, masses and
+accelerations in the unit system asked for (``"SI"``: m^2, kg, m/s^2; ``"US"``: ft^2, lb,
+ft/s^2). The histories come from the campaign result's store.
 """
 
 from __future__ import annotations
@@ -10,7 +12,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.analyses.verdicts import CONVERGENT, DIVERGENT, STATIC_DEPARTURE
-from slingloads.constants import FOOT, KNOT
+from slingloads.constants import FOOT, KNOT, POUND
 from slingloads.errors import InputError
 from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 
@@ -32,19 +34,25 @@ def _small(ax):
     ax.title.set_fontsize(9)
 
 
-def _condition(row, skip=(), neutral_area=None):
+def _mass(value, units):
+    """A mass [kg] in a title: in kg (SI) or lb (US), to the unit."""
+    return f"{value:.0f} kg" if units == "SI" else f"{value / POUND:.0f} lb"
+
+
+def _condition(row, skip=(), neutral_area=None, units="SI"):
     """The base condition of a run as a line of text: area, airspeed, mass, density altitude,
     cable and carrier (those of ``skip``, the factors a figure varies, left out)."""
+    scale, unit = _area(units)
     parts = []
     if "area factor [-]" not in skip and "area factor [-]" in row:
         area = row.get("area [m^2]", np.nan)
         parts.append(f"area {row['area factor [-]']:.3g} x neutral"
-                     + (f" ({area:.3g} m^2)" if np.isfinite(area) else ""))
+                     + (f" ({area * scale:.3g} {unit})" if np.isfinite(area) else ""))
     if "airspeed EAS [m/s]" not in skip and "airspeed EAS [m/s]" in row:
         parts.append(f"{row['airspeed EAS [m/s]'] / KNOT:.0f} KEAS")
     if "mass case" not in skip and "mass [kg]" in row:
-        parts.append(f"mass {row.get('mass case', '')} {row['mass [kg]']:.0f} kg".replace(
-            "  ", " "))
+        parts.append(f"mass {row.get('mass case', '')} {_mass(row['mass [kg]'], units)}"
+                     .replace("  ", " "))
     if "density altitude [m]" not in skip and "density altitude [m]" in row:
         parts.append(f"{row['density altitude [m]'] / FOOT:.0f} ft HD")
     if "cable length [m]" not in skip and "cable length [m]" in row:
@@ -70,8 +78,9 @@ def plot_selection(result, units="SI"):
     sel = result.selection
     by = sel.by_area
     f = by["area factor [-]"].to_numpy()
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 3.2)), left=0.5, right=0.1, bottom=0.5,
-                      top=0.35, wspace=0.45)
+    # room above for the figure title over the two-line panel title, below for one legend
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 3.6)), left=0.5, right=0.1, bottom=0.85,
+                      top=0.6, wspace=0.45)
     axes = fig.subplots(1, 3)
     axes[0].bar(f, by["runs"], width=0.08 * (np.ptp(f) or 1), color="0.85", label="runs")
     axes[0].bar(f, by["stable runs"], width=0.08 * (np.ptp(f) or 1), label="stable runs")
@@ -83,11 +92,14 @@ def plot_selection(result, units="SI"):
     axes[2].plot(f, by["largest trimmed swing angle [deg]"], "o-")
     axes[2].set(ylabel="swing angle [deg]", title="drag proxy: largest\ntrimmed swing angle")
     m = result.metrics
+    scale, unit = _area(units)
+    masses = (_values(m, "mass [kg]") + " kg" if units == "SI"
+              else _values(m, "mass [kg]", 1 / POUND) + " lb")
     fig.suptitle(f"over {_values(m, 'airspeed EAS [m/s]', 1 / KNOT)} KEAS, masses "
-                 f"{_values(m, 'mass [kg]')} kg, {_values(m, 'density altitude [m]', 1 / FOOT)}"
+                 f"{masses}, {_values(m, 'density altitude [m]', 1 / FOOT)}"
                  f" ft HD, cables {_values(m, 'cable length [m]', 1 / FOOT)} ft, carrier "
                  f"{'/'.join(dict.fromkeys(m['carrier']))}; neutral area "
-                 f"{result.neutral.area:.3g} m^2", fontsize=7, y=0.995)
+                 f"{result.neutral.area * scale:.3g} {unit}", fontsize=7, y=0.995)
     for ax in axes:
         ax.set_xlabel("area / neutral area [-]")
         ax.grid(True, alpha=0.4)
@@ -96,24 +108,34 @@ def plot_selection(result, units="SI"):
             if np.isfinite(value):
                 ax.axvline(value, color="g", ls=style, lw=1.2, label=label)
         _small(ax)
-        _legend(ax, fontsize=6)
+    # one legend for the three panels, below them (a legend per panel repeated the area
+    # lines three times, side by side over one another)
+    entries = {}
+    for ax in axes:
+        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
+            entries.setdefault(label, handle)
+    if entries:
+        fig.legend(list(entries.values()), list(entries), loc="lower center", ncol=5,
+                   fontsize=7)
     return fig
 
 
-def plot_sweep(result, runs, factor, title):
-    """Yaw and sideslip histories of runs that differ by one factor (paper figures 9-13)."""
+def plot_sweep(result, runs, factor, title, units="SI"):
+    """Yaw and sideslip histories of runs that differ by one factor (paper figures 9-13);
+    masses and areas of the legend and title in ``units``."""
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 5.0)), left=0.7, right=0.15, bottom=0.5,
                       top=0.4, hspace=0.1)
     axes = fig.subplots(2, 1, sharex=True)
     frame = result.metrics.set_index("run")
     for run in runs:
         h = result.history(run)
-        label = _label(frame.loc[run], factor)
+        label = _label(frame.loc[run], factor, units)
         axes[0].plot(h["time [s]"], h[YAW], lw=1.1, label=label)
         axes[1].plot(h["time [s]"], h[BETA], lw=1.1, label=label)
     base = frame.loc[runs[0]] if runs else {}
     axes[0].set(ylabel="yaw (heading) [deg]",
-                title=f"{title}\n{_condition(base, skip=(factor,))}" if runs else title)
+                title=f"{title}\n{_condition(base, skip=(factor,), units=units)}" if runs
+                else title)
     axes[1].set(ylabel="sideslip beta [deg]", xlabel="time [s]")
     for ax in axes:
         ax.grid(True, alpha=0.4)
@@ -122,7 +144,7 @@ def plot_sweep(result, runs, factor, title):
     return fig
 
 
-def _label(row, factor):
+def _label(row, factor, units="SI"):
     value = row[factor]
     if factor == "area factor [-]":
         return f"{value:.3g} x neutral area"
@@ -133,7 +155,7 @@ def _label(row, factor):
     if factor == "cable length [m]":
         return f"cable {value / FOOT:.0f} ft"
     if factor == "mass case":
-        return f"mass {value} ({row['mass [kg]']:.0f} kg)"
+        return f"mass {value} ({_mass(row['mass [kg]'], units)})"
     return f"carrier {value}"
 
 
@@ -192,13 +214,13 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
             _small(ax)
             _legend(ax, fontsize=6, loc="upper right")
     c = stability.condition
-    fig.suptitle(f"mass {c['mass case']} {c['mass [kg]']:.0f} kg, cable "
+    fig.suptitle(f"mass {c['mass case']} {_mass(c['mass [kg]'], units)}, cable "
                  f"{c['cable length [m]'] / FOOT:.0f} ft, carrier {c['carrier']}; neutral "
                  f"area {neutral_area * scale:.3g} {unit}", fontsize=8, y=0.995)
     return fig
 
 
-def plot_no_parachute(result):
+def plot_no_parachute(result, units="SI"):
     """Yaw and sideslip under the frontal wind ramps, each helicopter, without parachute
     (paper figures 16-18): one row per ramp target, the head wind (the ramp) on the right
     axis of the yaw panel and the ramp's end marked."""
@@ -238,9 +260,11 @@ def plot_no_parachute(result):
     for ax in axes.flat:
         _small(ax)
     system = next(iter(study.systems.values()))
+    rate = (f"{study.rate:g} m/s^2" if units == "SI"
+            else f"{study.rate / FOOT:.3g} ft/s^2")
     fig.suptitle(f"full tail, no parachute; cable {system.cable.length / FOOT:.0f} ft, "
                  f"{system.density_altitude / FOOT:.0f} ft HD, hovering carrier; ramp "
-                 f"{study.rate:g} m/s^2 from {study.onset:g} s", fontsize=8, y=0.999)
+                 f"{rate} from {study.onset:g} s", fontsize=8, y=0.999)
     return fig
 
 

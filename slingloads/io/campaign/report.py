@@ -227,12 +227,26 @@ def no_parachute_table(report, units):
     return npr.limits.drop(columns=["largest convergent ramp [m/s]"])
 
 
-def handoff_table(report):
-    """The envelope handed to the loads (angles in degrees, forces SI)."""
+def handoff_table(report, units="SI"):
+    """The envelope handed to the loads, angles in degrees, the line tension in the report's
+    force unit (one unit per quantity: lbf in a US report, as every force of it)."""
+    from slingloads.analyses.campaign.loads_envelope import QUANTITIES
+    from slingloads.io.common.report import in_report_units, report_unit
+    from slingloads.io.common.units import unit_label
+
     env = report.result.envelope
     if env is None:
         return None
-    return env.to_frame()
+    frame = env.to_frame()
+    values = ["reached min", "reached max", "with margin min", "with margin max"]
+    for quantity, _, _, kind in QUANTITIES:
+        if kind != "force":
+            continue
+        row = frame["quantity"] == quantity
+        frame.loc[row, values] = in_report_units(
+            frame.loc[row, values].to_numpy(float), "force", units)
+        frame.loc[row, "unit"] = unit_label(report_unit("force", units))
+    return frame
 
 
 def _parts(title, frame, keys):
@@ -262,7 +276,7 @@ def _sheets(report, units, warnings=(), decision=None):
     if limits is not None:
         summary.append(Section("Transport without parachute: largest convergent ramp",
                                limits))
-    handoff = handoff_table(report)
+    handoff = handoff_table(report, units)
     if handoff is not None:
         summary.append(Section(f"Dynamics handed to the loads: runs at "
                                f"{r.envelope.area_factor:g} x neutral area, margin "
@@ -328,7 +342,7 @@ def sweep_plots(result):
     return out
 
 
-def _locus(result):
+def _locus(result, units="SI"):
     """(loci, title) of the stability map's least-damped roots at its highest airspeed and
     first density altitude, or None without them."""
     loci = getattr(result.stability, "loci", None)
@@ -339,8 +353,10 @@ def _locus(result):
     sel = loci[np.isclose(loci["airspeed EAS [m/s]"], speed)
                & np.isclose(loci["density altitude [m]"], altitude)]
     c = result.stability.condition
+    mass = (f"{c['mass [kg]']:.0f} kg" if units == "SI"
+            else f"{c['mass [kg]'] / POUND:.0f} lb")
     title = (f"{speed / KNOT:.0f} KEAS, {altitude / FOOT:.0f} ft HD, mass {c['mass case']} "
-             f"{c['mass [kg]']:.0f} kg, cable {c['cable length [m]'] / FOOT:.0f} ft, carrier "
+             f"{mass}, cable {c['cable length [m]'] / FOOT:.0f} ft, carrier "
              f"{c['carrier']}:\nleast-damped roots, area {sel['area factor [-]'].min():.3g}-"
              f"{sel['area factor [-]'].max():.3g} x neutral")
     return (sel, title)
@@ -356,19 +372,20 @@ def _figures(report, units):
     r = report.result
     figs = {"selection": ("Parachute selection", (plot_selection, (r, units), {}))}
     for tag, runs, factor, title in sweep_plots(r):
-        figs[tag] = (f"Sensitivity, {title}", (plot_sweep, (r, runs, factor, title), {}))
+        figs[tag] = (f"Sensitivity, {title}", (plot_sweep, (r, runs, factor, title),
+                                               {"units": units}))
     if r.stability is not None:
         chosen = r.chosen_area_factor * r.neutral.area
         figs["stability-map"] = ("Stability map", (plot_stability_map,
                                                    (r.stability, r.neutral.area, units),
                                                    {"chosen_area": chosen}))
-        locus = _locus(r)
+        locus = _locus(r, units)
         if locus is not None:
             figs["root-locus"] = ("Root locus against the parachute area",
                                   (plot_root_locus, locus, {}))
     if r.no_parachute is not None:
         figs["no-parachute"] = ("Transport without parachute (paper figures 16-18)",
-                                (plot_no_parachute, (r,), {}))
+                                (plot_no_parachute, (r,), {"units": units}))
     if r.envelope is not None:
         figs["envelope"] = ("Angle envelope handed to the loads", (plot_envelope, (r,), {}))
     return figs

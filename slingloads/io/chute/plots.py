@@ -48,10 +48,12 @@ def plot_yaw_linearisation(result):
     return fig
 
 
-#: Units of the sizing plots: length, area, moment (pint strings) and their labels.
-PLOT_UNITS = {"SI": {"length": ("m", "m"), "area": ("m^2", "m^2"), "moment": ("kN*m", "kN m")},
-              "US": {"length": ("ft", "ft"), "area": ("ft^2", "ft^2"),
-                     "moment": ("kilolbf*ft", "1000 lbf ft")}}
+#: Units of the sizing plots: length, area, moment (pint strings) and their labels, those of
+#: the report's tables (one unit per quantity in a report: a line of 396 in in the tables is
+#: 396 in on the wake plot, a moment in lbf in is in lbf in on the moment plot).
+PLOT_UNITS = {"SI": {"length": ("m", "m"), "area": ("m^2", "m^2"), "moment": ("N*m", "N m")},
+              "US": {"length": ("in", "in"), "area": ("ft^2", "ft^2"),
+                     "moment": ("lbf*in", "lbf in")}}
 
 
 def _unit(units, kind):
@@ -69,7 +71,7 @@ def plot_static_moments(result, units="SI"):
     ----------
     result : NeutralAreaResult
     units : str
-        ``"SI"`` (kN m, m^2) or ``"US"`` (1000 lbf ft, ft^2).
+        ``"SI"`` (N m, m^2) or ``"US"`` (lbf in, ft^2), the tables' units.
     """
     moment, m_label = _unit(units, "moment")
     area, a_label = _unit(units, "area")
@@ -95,7 +97,7 @@ def plot_wake(result, units="SI"):
     ----------
     result : LineLengthResult
     units : str
-        ``"SI"`` (m) or ``"US"`` (ft).
+        ``"SI"`` (m) or ``"US"`` (in), the tables' units.
     """
     length, label = _unit(units, "length")
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.0)), left=0.8, bottom=0.5, top=0.35)

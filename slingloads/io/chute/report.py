@@ -312,8 +312,10 @@ def curve_rows(frame, column="beta [deg]"):
     keep = np.abs(values / CURVE_STEP - np.round(values / CURVE_STEP)) < 1e-6
     if keep.sum() < 2:
         return frame, ""
-    return frame[keep], (f"Every {CURVE_STEP:g} deg of sideslip ({int(keep.sum())} of "
-                         f"{len(frame)} rows); the plot shows every point.")
+    # the rows the table has at whole multiples of the step (a table coarser than the step
+    # in places gives fewer: "every 5 deg" would misstate it)
+    return frame[keep], (f"Rows at multiples of {CURVE_STEP:g} deg of sideslip "
+                         f"({int(keep.sum())} of {len(frame)}); the plot shows every point.")
 
 
 def _decision_sentence(decision, units):

@@ -20,6 +20,7 @@ References
 
 from __future__ import annotations
 
+import math
 import re
 
 #: Characters (UTF-16 code units) in a page header or footer, codes included [1]_.
@@ -31,6 +32,12 @@ MARGINS = (0.5, 0.5, 0.75, 0.75, 0.3, 0.3)
 #: Printable width and height of an A4 page inside :data:`MARGINS`, at 96 px per inch. [px]
 PRINTABLE = {"portrait": (round((8.27 - 1.0) * 96), round((11.69 - 1.5) * 96)),
              "landscape": (round((11.69 - 1.0) * 96), round((8.27 - 1.5) * 96))}
+#: Least scale, relative to the fit to the page width, a sheet is shrunk to so as to spare a
+#: nearly empty page (:func:`height_fit`; sections sheets: ``write_sections_sheet``). [-]
+MIN_EXTRA_SCALE = 0.85
+#: A page less full than this, other than the last of its sheet, is a sparse page; a last
+#: page less full than this is spared when a small shrink allows (:func:`height_fit`). [-]
+SPARSE_LAST = 0.35
 #: A literal ``&`` (doubled) before what XlsxWriter's ``set_header`` reads as an image code.
 _IMAGE_CODE = re.compile(r"&&(?=G|\[Picture\])")
 
@@ -47,22 +54,70 @@ def _escape(text, limit=80):
 def orientation_for(pixels, height=0.0):
     """The orientation of a sheet ``pixels`` wide and ``height`` high [px].
 
-    Portrait when the sheet fits the portrait width (8 % shrink allowed); portrait also for a
-    long sheet (more than a landscape page) that a fit-to-width shrink of at most 32 % puts on
-    a portrait page, since that prints it on fewer pages; else landscape.
+    Portrait when the sheet fits the portrait width (8 % shrink allowed). Portrait also when
+    a fit-to-width shrink of at most 32 % puts it on a portrait page and that prints it on
+    fewer pages than landscape (:func:`pages_for`, with a 10 % margin on the estimated
+    height), or when it is long (more than a landscape page); else landscape.
     """
     width, _ = PRINTABLE["portrait"]
     land_width, land_height = PRINTABLE["landscape"]
     if pixels <= 1.08 * width:
         return "portrait"
-    if pixels <= width / 0.68 and height * min(1.0, land_width / pixels) > 1.2 * land_height:
+    if pixels <= width / 0.68 and (
+            height * min(1.0, land_width / pixels) > 1.2 * land_height
+            or pages_for("portrait", pixels, 1.1 * height)
+            < pages_for("landscape", pixels, 1.1 * height)):
         return "portrait"
     return "landscape"
 
 
-def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info=None):
-    """Page setup of one sheet: A4, orientation from its width, fitted to the page width,
-    header rows repeated, page header and footer.
+def page_pixels(orientation, pixels):
+    """Printable height of a page in sheet pixels, after the fit-to-width shrink of a sheet
+    ``pixels`` wide. [px]"""
+    width, height = PRINTABLE[orientation]
+    return height / min(1.0, width / max(pixels, 1.0))
+
+
+def pages_for(orientation, pixels, height):
+    """Pages that ``height`` pixels of rows take, fitted to the page width (at least 1)."""
+    return max(1, math.ceil(height / page_pixels(orientation, pixels) - 1e-9))
+
+
+def height_fit(orientation, pixels, height):
+    """The page count a sheet of flowing rows (no manual page break) is fitted to, or 0 (no
+    limit on its height).
+
+    A sheet whose estimated last page would be under :data:`SPARSE_LAST` full is fitted to
+    one page fewer when that shrinks it by at most ``1 -`` :data:`MIN_EXTRA_SCALE` more than
+    the fit to width (the estimate taken 3 % high): a nearly empty last page is spared at a
+    small loss of size. Excel and LibreOffice then choose the scale that meets both the
+    width and the page count.
+
+    Parameters
+    ----------
+    orientation : str
+    pixels : float
+        Width of the sheet's used columns. [px]
+    height : float
+        Estimated height of its rows. [px]
+
+    Returns
+    -------
+    int
+    """
+    pages = 1.03 * height / page_pixels(orientation, pixels)
+    whole = math.ceil(pages - 1e-9)
+    if whole >= 2 and pages - (whole - 1) < SPARSE_LAST and (whole - 1) / pages >= \
+            MIN_EXTRA_SCALE:
+        return whole - 1
+    return 0
+
+
+def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info=None,
+                pages=0, scale=None, orientation=None):
+    """Page setup of one sheet: A4, orientation from its width, fitted to the page width
+    (and to ``pages`` pages high, or at a fixed ``scale``), header rows repeated, page header
+    and footer.
 
     Parameters
     ----------
@@ -78,16 +133,27 @@ def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info
     info : ReportInfo, optional
         Report title and input file (page header), run date, version and document number
         (footer).
+    pages : int
+        Pages high the sheet is fitted to (0: as many as it needs, :func:`height_fit`).
+    scale : int, optional
+        A fixed print scale [%] instead of the fit (a sheet with manual page breaks, which a
+        fit to a page count would drop): at most the fit to the page width.
+    orientation : str, optional
+        The orientation, when the caller has chosen it (:func:`orientation_for`).
 
     Returns
     -------
     str
         The orientation chosen.
     """
-    orientation = orientation_for(pixels, height)
+    orientation = orientation or orientation_for(pixels, height)
     ws.set_paper(PAPER_A4)
     _orient(ws, orientation)
-    ws.fit_to_pages(1, 0)  # 1 page wide, as many high as needed
+    if scale is not None:
+        width = PRINTABLE[orientation][0]
+        ws.set_print_scale(max(10, min(int(scale), math.floor(100 * min(1.0, width / pixels)))))
+    else:
+        ws.fit_to_pages(1, int(pages))  # 1 page wide, ``pages`` high (0: as many as needed)
     left, right, top, bottom, header, footer = MARGINS
     ws.set_margins(left=left, right=right, top=top, bottom=bottom)
     if title_rows:

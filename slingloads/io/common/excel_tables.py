@@ -13,6 +13,7 @@ its header row on every printed page; ratio cells above a threshold are filled r
 
 from __future__ import annotations
 
+import math
 import numbers
 import re
 import textwrap
@@ -53,7 +54,15 @@ from slingloads.io.common.excel_cells import (
     split_sheet_names,
     wrapped_lines,
 )
-from slingloads.io.common.excel_print import PRINTABLE, orientation_for, print_setup
+from slingloads.io.common.excel_print import (
+    MIN_EXTRA_SCALE,
+    PRINTABLE,
+    SPARSE_LAST,
+    height_fit,
+    orientation_for,
+    page_pixels,
+    print_setup,
+)
 from slingloads.io.common.formats import header_unit, unit_format, value_format
 from slingloads.io.common.units import report_text
 
@@ -394,10 +403,15 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
         ws.freeze_panes(_freeze(frame, 1))
         _set_widths(ws, columns)
         boxed = lines if k == len(parts) - 1 else []
-        print_setup(ws, pixels=columns.pixels,
-                    height=ROW_PIXELS * (stop - start + 1 + len(boxed) + bool(boxed)),
-                    title_rows=1, sheet_title=title if len(parts) == 1
-                    else f"{title}, part {k + 1} of {len(parts)}", info=info)
+        # rows with their wrapped lines, and the note under them
+        height = (_table_pixels(frame.iloc[start:stop], columns)
+                  + ROW_PIXELS * (len(boxed) + bool(boxed)))
+        orientation = orientation_for(columns.pixels, height)
+        print_setup(ws, pixels=columns.pixels, height=height, title_rows=1,
+                    sheet_title=title if len(parts) == 1
+                    else f"{title}, part {k + 1} of {len(parts)}", info=info,
+                    orientation=orientation,
+                    pages=height_fit(orientation, columns.pixels, height))
         _write_table(_SheetWriter(wb, ws, columns.widths), frame.iloc[start:stop], formats,
                      columns, highlight)
         if boxed:
@@ -406,14 +420,23 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     return names
 
 
+#: Width of a column whose width is not set (Excel's default, 8.43 characters). [px]
+_DEFAULT_COLUMN_PIXELS = 64
+
+
 def _note_box(ws, row, lines, columns, n_columns):
     """The note of a table sheet in a text box from ``row`` (0-based) down, inside the
     printed area; the cells stay the table's alone."""
+    # wide enough for its longest line (10 pt: about 6 px a character)
+    width = max(columns.pixels, 300, 6 * max((len(line) for line in lines), default=0))
     ws.insert_textbox(row, 0, "\n".join(lines), {
-        "width": max(columns.pixels, 300), "height": ROW_PIXELS * (len(lines) + 1),
+        "width": width, "height": ROW_PIXELS * (len(lines) + 1),
         "font": {"size": 10}, "line": {"none": True}, "fill": {"none": True},
         "object_position": 3})
-    ws.print_area(0, 0, row + len(lines) + 1, max(n_columns - 1, 0))
+    # the printed area as wide as the box: a box wider than a narrow table runs on over the
+    # empty columns after it (default width, 64 px), never cut at the table's edge
+    extra = max(0, math.ceil((width - columns.pixels) / _DEFAULT_COLUMN_PIXELS))
+    ws.print_area(0, 0, row + len(lines) + 1, max(n_columns - 1, 0) + extra)
 
 
 def _is_long(table, number_format):
@@ -421,7 +444,7 @@ def _is_long(table, number_format):
     formats = _number_formats(table.columns, number_format)
     own = _column_plan([table], formats_of=lambda f: formats)
     height = _table_pixels(table, own) + 2 * ROW_PIXELS
-    page = _page_pixels(orientation_for(own.pixels, height), own.pixels) * 0.95
+    page = page_pixels(orientation_for(own.pixels, height), own.pixels) * 0.95
     return height > page
 
 
@@ -526,10 +549,70 @@ def _table_pixels(frame, columns):
     return ROW_PIXELS * (header + lines)
 
 
-def _page_pixels(orientation, pixels):
-    """Printable height of a page in sheet pixels, after the fit-to-width shrink. [px]"""
-    width, height = PRINTABLE[orientation]
-    return height / min(1.0, width / max(pixels, 1.0))
+#: Print scales tried for a sheet of several blocks, relative to the fit to the page width,
+#: largest first (:func:`_page_plan`). [-]
+_SCALES = tuple(x for x in (1.0, 0.95, 0.9, 0.85) if x >= MIN_EXTRA_SCALE)
+
+
+def _paginate(needs, page):
+    """Pages of blocks ``needs`` high on pages ``page`` high [px]: a block that would
+    straddle a page break but fits on a page starts a new one; a longer block flows on.
+
+    Returns
+    -------
+    breaks : list of int
+        The blocks that start a new page.
+    fills : list of float
+        The fill of each page, 0 to 1.
+    """
+    breaks, fills, used = [], [], 0.0
+    for k, need in enumerate(needs):
+        if k and used and used + need > page and need <= page:
+            breaks.append(k)
+            fills.append(used / page)
+            used = 0.0
+        used += need
+        while used > page:
+            fills.append(1.0)
+            used -= page
+    fills.append(used / page)
+    return breaks, fills
+
+
+def _page_plan(needs, page):
+    """The page breaks of a sheet of blocks and its print scale relative to the fit to the
+    page width: of :data:`_SCALES`, the largest that prints the fewest pages with the fewest
+    pages under :data:`~slingloads.io.common.excel_print.SPARSE_LAST` full (its last page
+    aside).
+
+    Parameters
+    ----------
+    needs : sequence of float
+        Height of each block at the fit to the page width. [px]
+    page : float
+        Height of a page at that scale, less a margin. [px]
+
+    Returns
+    -------
+    breaks : list of int
+        The blocks that start a new page.
+    scale : float
+
+    Examples
+    --------
+    A small block and one of 80 % of a page: 2 pages at full size (the first 25 % full), one
+    page at 0.95.
+
+    >>> _page_plan([250, 800], 1000)
+    ([], 0.95)
+    """
+    best = None
+    for scale in _SCALES:
+        breaks, fills = _paginate(needs, page / scale)
+        key = (len(fills), sum(f < SPARSE_LAST for f in fills[:-1]))
+        if best is None or key < best[0]:
+            best = (key, breaks, scale)
+    return best[1], best[2]
 
 
 def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None,
@@ -538,9 +621,12 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
 
     A sheet whose only table is its last block has the rows down to the table's header
     frozen and repeated on every printed page (a report writes such a sheet as a table
-    sheet, :func:`sheet_blocks`). Otherwise the first row (the sheet's title) is frozen, no
-    row is repeated, and a block that would straddle a page break but fits on one page
-    starts on a new page; each table keeps its own alignment (numbers under their header).
+    sheet, :func:`sheet_blocks`), and is fitted to one page fewer when its last page would be
+    nearly empty (:func:`~slingloads.io.common.excel_print.height_fit`). Otherwise the first
+    row (the sheet's title) is frozen, no row is repeated, and a block that would straddle a
+    page break but fits on one page starts on a new page, at the print scale
+    (:func:`_page_plan`) that prints the sheet on the fewest pages with the fewest sparse
+    ones; each table keeps its own alignment (numbers under their header).
 
     Parameters
     ----------
@@ -585,23 +671,23 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     needs = [ROW_PIXELS * (bool(title) + len(lines) + (k > 0))
              + (_table_pixels(table, columns) if table is not None else 0)
              for k, (title, lines, table) in enumerate(blocks)]
-    orientation = print_setup(ws, pixels=columns.pixels, height=sum(needs),
-                              title_rows=title_rows, sheet_title=sheet_title, info=info)
-    page = _page_pixels(orientation, columns.pixels) * 0.95
-    repeated = ROW_PIXELS * (title_rows or 0)
+    height = sum(needs)
+    orientation = orientation_for(columns.pixels, height)
+    page = page_pixels(orientation, columns.pixels) * 0.95
+    if one_table:  # rows flow under the repeated header: fitted to a page count
+        breaks, scale = [], None
+        pages = height_fit(orientation, columns.pixels, height)
+    else:
+        breaks, scale = _page_plan(needs, page)
+        pages = 0
+    fit_width = min(1.0, PRINTABLE[orientation][0] / max(columns.pixels, 1.0))
+    print_setup(ws, pixels=columns.pixels, height=height, title_rows=title_rows,
+                sheet_title=sheet_title, info=info, orientation=orientation, pages=pages,
+                scale=None if scale in (None, 1.0) else 100 * fit_width * scale)
     writer = _SheetWriter(wb, ws, columns.widths)
-    top = 0  # pixels written when the current page began
-
-    def capacity(start):
-        return page - (repeated if start else 0)
-
-    for k, ((title, lines, table), need) in enumerate(zip(blocks, needs, strict=True)):
-        while writer.pixels - top > capacity(top):
-            top += capacity(top)
-        fits = writer.pixels - top + need <= capacity(top)
-        if not one_table and k and not fits and need <= capacity(1):
+    for k, (title, lines, table) in enumerate(blocks):
+        if k in breaks:
             writer.page_break()
-            top = writer.pixels
         if k:
             writer.blank()
         if title:

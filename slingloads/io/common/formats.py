@@ -68,7 +68,7 @@ UNIT_FORMATS = {
     "m^2": "0.000", "ft^2": "0.00", "kg/m^3": "0.0000", "slug/ft^3": "0.000000",
     # damping
     "N s/m": "#,##0.0", "lbf s/ft": "#,##0.0", "N m s/rad": "#,##0.0",
-    "lbf ft s/rad": "#,##0.0",
+    "lbf ft s/rad": "#,##0.0", "lbf in s/rad": "#,##0",
     # dimensionless
     "-": "0.000", "%": "0.0", "1/deg": "0.0000", "1/rad": "0.0000",
 }

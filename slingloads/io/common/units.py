@@ -58,7 +58,8 @@ REPORT_UNITS = {
         "altitude": "ft", "acceleration": "ft/s^2",
         "area": "ft^2", "density": "slug/ft^3", "time": "s", "frequency": "rad/s",
         "stiffness": "lbf/in", "linear damping": "lbf*s/ft",
-        "rotational damping": "lbf*ft*s/rad", "dimensionless": "",
+        # the moments' family (lbf in), as the parachute sizing's yaw damping
+        "rotational damping": "lbf*in*s/rad", "dimensionless": "",
     },
 }
 
@@ -68,7 +69,7 @@ UNIT_LABELS = {
     "lb*in^2": "lb in^2",
     "m/s^2": "m/s^2", "ft/s^2": "ft/s^2", "slug/ft^3": "slug/ft^3", "": "-",
     "N*s/m": "N s/m", "N*m*s/rad": "N m s/rad", "lbf*s/ft": "lbf s/ft",
-    "lbf*ft*s/rad": "lbf ft s/rad",
+    "lbf*ft*s/rad": "lbf ft s/rad", "lbf*in*s/rad": "lbf in s/rad",
 }
 
 
@@ -108,12 +109,14 @@ EXACT_FACTORS = {
     ("density", "slug/ft^3"): _SLUG / FOOT**3, ("stiffness", "lbf/in"): POUND_FORCE / INCH,
     ("linear damping", "lbf*s/ft"): POUND_FORCE / FOOT,
     ("rotational damping", "lbf*ft*s/rad"): POUND_FORCE * FOOT,
+    ("rotational damping", "lbf*in*s/rad"): POUND_FORCE * INCH,
 }
 
 
 #: SI units a sentence of a report may quote after a number, longest spelling first, and
 #: their quantity kind.
-_TEXT_UNITS = {"kg m^2": "inertia", "kg/m^3": "density", "m/s^3": "jerk",
+_TEXT_UNITS = {"N m s/rad": "rotational damping", "N m/rad": "rotational stiffness",
+               "kg m^2": "inertia", "kg/m^3": "density", "m/s^3": "jerk",
                "m/s^2": "acceleration", "m/s": "speed", "m^2": "area", "kN m": None,
                "N m": "moment", "kN": None, "kg": "mass", "m": "length", "N": "force"}
 #: A quoted number: with thousands separators (``443,995``) or without, whole, as the
@@ -137,6 +140,8 @@ def report_text(text, units):
     'quintic step 1.672 in over 0.5 s (peak 3.218 ft/s^2)'
     >>> report_text("load scale 443,995 N m; peak jerk <= 1.94 m/s^3", "US")
     'load scale 3,929,687 lbf in; peak jerk <= 6.365 ft/s^3'
+    >>> report_text("k = -15.2 N m/rad, c = 2,000 N m s/rad", "US")
+    'k = -134.5 lbf in/rad, c = 17,701 lbf in s/rad'
     """
     if units != "US" or not isinstance(text, str) or not any(c.isdigit() for c in text):
         return text
@@ -148,6 +153,8 @@ def report_text(text, units):
         number = float(match.group(1).replace(",", ""))
         if kind == "jerk":  # a rate of acceleration, in the acceleration's family
             return f"{_quoted_number(number / FOOT)} ft/s^3"
+        if kind == "rotational stiffness":  # a moment per radian, in the moments' unit
+            return f"{_quoted_number(number / (POUND_FORCE * INCH))} lbf in/rad"
         unit = REPORT_UNITS["US"][kind]
         value = number * si_factor(match.group(2).replace(" ", "*"), kind)
         return f"{_quoted_number(value / si_factor(unit, kind))} {unit_label(unit)}"

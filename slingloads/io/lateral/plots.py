@@ -20,7 +20,17 @@ from slingloads.io.common.figures import PAGE_WIDTH, cycle_colour, fix_margins
 _REG_STYLE = {"color": "tab:red", "linestyle": "--", "linewidth": 1.0}
 
 
-def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
+def _rope(length, units):
+    """A rope length in a title or legend: in m with the paper's feet beside (SI), in the
+    report's length unit alone in US units (every rope length of a US report in inches)."""
+    if units == "SI":
+        return f"rope {length:.3g} m ({length / FOOT:.0f} ft)"
+    from slingloads.io.common.report import in_report_units, report_unit
+
+    return f"rope {in_report_units(length, 'length', units):.4g} {report_unit('length', units)}"
+
+
+def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None, units="SI"):
     """Time histories of one run: angles, tension and hub load, carrier motion.
 
     Parameters
@@ -30,12 +40,18 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
         Angle drawn as the reference line (CS-29.865: 30 deg). [rad]
     title : str, optional
         Figure title (default: the body, rope length and motion).
+    units : str
+        Report unit system of the carrier's displacement and the title (``"SI"``, ``"US"``).
 
     Returns
     -------
     matplotlib.figure.Figure
-        Three axes: angles [deg] with +-30 deg lines; T/(m g) [-]; carrier S [m] and S'' [g].
+        Three axes: angles [deg] with +-30 deg lines; T/(m g) [-]; carrier S [m or in] and
+        S'' [g].
     """
+    from slingloads.io.common.report import in_report_units, labelled
+    from slingloads.io.common.units import report_text
+
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 7.6)), left=0.8, right=0.75, bottom=0.5,
                       top=0.55, hspace=0.12)
     ax_angle, ax_tension, ax_carrier = fig.subplots(3, 1, sharex=True)
@@ -65,8 +81,9 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
     ax_tension.legend(loc="upper right", fontsize=7, framealpha=0.85)
     ax_tension.grid(True, alpha=0.3)
 
-    ax_carrier.plot(t, run.carrier[0], color="tab:green", label="S")
-    ax_carrier.set_ylabel("carrier S [m]")
+    ax_carrier.plot(t, in_report_units(run.carrier[0], "length", units), color="tab:green",
+                    label="S")
+    ax_carrier.set_ylabel(labelled("carrier S", "length", units))
     ax_carrier.set_xlabel("t [s]")
     twin = ax_carrier.twinx()
     twin.plot(t, run.carrier[2] / G0, color="tab:olive", linestyle=":", label="S''")
@@ -75,8 +92,8 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None):
 
     if title is None:
         p = run.pendulum
-        title = (f"{p.body.name}, rope {p.rope_length:.3g} m "
-                 f"({p.rope_length / FOOT:.0f} ft): {run.motion.describe()}")
+        title = (f"{p.body.name}, {_rope(p.rope_length, units)}: "
+                 f"{report_text(run.motion.describe(), units)}")
     fig.suptitle("\n".join(textwrap.wrap(title, 90)), fontsize=10)
     return fig
 
@@ -86,7 +103,7 @@ _MOTION_STYLES = {"quintic_step": ("-", "o"), "cycloidal_step": ("-", "D"),
                   "constant_acceleration": ("--", "s"), "time_history": (":", "^")}
 
 
-def plot_max_angle_vs_acceleration(study, title=None):
+def plot_max_angle_vs_acceleration(study, title=None, units="SI"):
     """Largest load angle against the carrier's peak acceleration, one line per rope length
     and motion type.
 
@@ -100,6 +117,8 @@ def plot_max_angle_vs_acceleration(study, title=None):
     ----------
     study : slingloads.analyses.lateral.LateralStudy
     title : str, optional
+    units : str
+        Report unit system of the rope lengths in the legend (``"SI"``, ``"US"``).
 
     Returns
     -------
@@ -123,7 +142,7 @@ def plot_max_angle_vs_acceleration(study, title=None):
     # one legend entry per rope (colour) and per motion type (line style and marker)
     for length in lengths:
         ax.plot([], [], color=colours[length], lw=2,
-                label=f"rope {length:.3g} m ({length / FOOT:.0f} ft)")
+                label=_rope(length, units))
     for motion in sorted(envelope["motion"].unique()):
         style, marker = _MOTION_STYLES.get(motion, ("-.", "v"))
         ax.plot([], [], color="0.3", ls=style, marker=marker, ms=5,

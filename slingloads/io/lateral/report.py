@@ -22,7 +22,8 @@ report. :func:`write` publishes, all at once or not at all (:mod:`slingloads.io.
   recommended angle, when the recommended angle is below 90 deg).
 
 Lengths, forces, moments, masses, speeds and accelerations are in the report unit system
-(``--units``); angles in degrees; rope lengths are also given in ft.
+(``--units``); angles in degrees; rope lengths are also given in ft in SI reports (the
+paper's unit), in inches alone in US reports (one unit per quantity).
 """
 
 from __future__ import annotations
@@ -151,9 +152,11 @@ def summary_tables(result, units="SI"):
         ("  CG below hub", float(case["CG below hub [m]"]), "length",
          f"factor {case['CG below hub factor [-]']:.3g}"),
         ("  motion", result.motion_id(i), None, str(case["motion description"])),
+        # in SI the paper's feet beside the metres; in US units the report's inches alone
+        # (one unit per quantity: every rope and cable length of a US report is in inches)
         ("  rope length", float(case["rope length [m]"]), "length",
-         f"{case['rope length [m]'] / FOOT:.4g} ft, factor "
-         f"{case['rope length factor [-]']:.3g}"),
+         (f"{case['rope length [m]'] / FOOT:.4g} ft, " if units == "SI" else "")
+         + f"factor {case['rope length factor [-]']:.3g}"),
         ("  body", str(case["body"]), None, f"source: {inp.body_source}"),
         ("  time of the maximum", float(case["t at max |theta1 - theta2| [s]"]), "s", ""),
         ("  cable slack in that case", bool(case["slack [-]"]), None,
@@ -230,8 +233,9 @@ def runs_table(result, units="SI"):
     (Every variant: ``result.study.to_frame()``.)"""
     frame = result.study.case_frame()
     frame.insert(1, "motion id", [result.motion_id(int(c) - 1) for c in frame["case"]])
-    frame.insert(list(frame.columns).index("rope length [m]") + 1, "rope length [ft]",
-                 frame["rope length [m]"] / FOOT)
+    if units == "SI":  # the paper's feet beside the metres; a US report gives inches alone
+        frame.insert(list(frame.columns).index("rope length [m]") + 1, "rope length [ft]",
+                     frame["rope length [m]"] / FOOT)
     frame = convert_columns(frame, {
         "mass [kg]": ("mass", "mass"), "roll inertia [kg m^2]": ("roll inertia", "inertia"),
         "CG below hub [m]": ("CG below hub", "length"),
@@ -260,7 +264,10 @@ def history_table(result, units="SI"):
 
 def modes_table(result, units="SI"):
     """Natural modes about the hanging equilibrium of every body x rope length."""
-    return convert_columns(result.modes, {"rope length [m]": ("rope length", "length")}, units)
+    modes = result.modes
+    if units != "SI":  # the paper's feet only beside metres: a US report gives inches alone
+        modes = modes.drop(columns=["rope length [ft]"], errors="ignore")
+    return convert_columns(modes, {"rope length [m]": ("rope length", "length")}, units)
 
 
 def comparison_station_table(comparison, units="SI"):
@@ -297,17 +304,20 @@ def history_sheet_table(result, units="SI"):
 
 
 def _split_runs(frame):
-    """The Runs table as (bodies, definition, results): the mass cases once, the motion and
-    rope of each case, then its metrics."""
+    """The Runs table as (bodies, motions, definition, results): the mass cases once, the
+    carrier motions' descriptions once (a wrapped sentence on every case widened the table
+    and doubled its rows), the motion and rope of each case, then its metrics."""
     metrics = [c for c in frame.columns if c.startswith(("max ", "min ", "t at ", "slack"))]
     keys = ["case", "motion id"]
     body = ["body", *(c for c in frame.columns if c.startswith(("mass [", "roll inertia [",
                                                                  "CG below hub [")))]
     bodies = frame[body].drop_duplicates("body").reset_index(drop=True)
-    dropped = {*metrics, *body[1:], "motion"} | {c for c in frame.columns
-                                                 if c.startswith("cable EA [")}
+    motions = (frame[["motion id", "motion description"]].drop_duplicates("motion id")
+               .reset_index(drop=True))
+    dropped = {*metrics, *body[1:], "motion", "motion description"} | {
+        c for c in frame.columns if c.startswith("cable EA [")}
     definition = frame[[c for c in frame.columns if c not in dropped]]
-    return bodies, definition, frame[keys + metrics]
+    return bodies, motions, definition, frame[keys + metrics]
 
 
 def _split_components(frame):
@@ -349,7 +359,7 @@ def _sheets(result, units, warnings=()):
         loads_sheet = ("The recommended angle is 90 deg or more: no hook-load cone can be "
                        "built; the hook cases were not re-run.")
     st = result.study
-    bodies, definition, results = _split_runs(runs_table(result, units))
+    bodies, motions, definition, results = _split_runs(runs_table(result, units))
     histories, interval = history_sheet_table(result, units)
     return {
         "Summary": summary,
@@ -360,8 +370,10 @@ def _sheets(result, units, warnings=()):
                               f"'{UNBOUNDED_STEP}', the hook's speed jumps at t = 0 (an "
                               "impulse of acceleration, of the size of the velocity jump)."),
                  Section("Bodies (mass cases)", bodies),
+                 Section("Carrier motions (LateralMotions sheet)", motions),
                  Section("Definition of every case (cable model: sheet Summary)", definition),
-                 Section("Results of every case", results)],
+                 # its own sheet: its own column widths, not the definition table's
+                 Section("Results of every case", results, sheet="Runs-ResultsEveryCase")],
         "Sensitivity": [
             Section("Sensitivity of the largest load angle and cable tension to the uncertain "
                     "inputs", note="Every case is run over the stated ranges of roll inertia, "
@@ -401,8 +413,8 @@ def _figures(result, units):
         plot_function("slingloads.io.lateral.plots", name)
         for name in ("plot_max_angle_vs_acceleration", "plot_sensitivity",
                      "plot_shear_at_angles", "plot_time_histories"))
-    figs = {"histories": (plot_time_histories, (result.critical_run,), {}),
-            "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {}),
+    figs = {"histories": (plot_time_histories, (result.critical_run,), {"units": units}),
+            "max-angle": (plot_max_angle_vs_acceleration, (result.study,), {"units": units}),
             "sensitivity": (plot_sensitivity, (result.study,), {})}
     if result.comparison is not None:
         figs["shear"] = (plot_shear_at_angles, (result.comparison,), {"units": units})

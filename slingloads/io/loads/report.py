@@ -502,13 +502,14 @@ def closure_passes(result):
     return float(np.abs(result.residual).max()) <= CLOSURE_TOLERANCE * result.residual_scale
 
 
-def closure_table(result):
-    """Free-free closure check (SI, as applied by the analysis): the largest residual force
-    and moment over every case against the tolerance, and the verdict."""
+def closure_table(result, units="SI"):
+    """Free-free closure check: the largest residual force and moment over every case
+    against the tolerance, and the verdict, in report units (checked in SI; the LoadFactors
+    sheet gives the residuals in the same units)."""
     residual = np.abs(result.residual)
     tol = CLOSURE_TOLERANCE * result.residual_scale
     worst = int(np.argmax(residual.max(axis=1)))
-    return pd.DataFrame([
+    frame = pd.DataFrame([
         (f"tolerance: {CLOSURE_TOLERANCE:g} x load scale {result.residual_scale:,.0f} N m "
          "(largest force x max(1 m, airframe length))", tol, tol),
         ("largest |residual| over every case, at a cut aft of every load",
@@ -517,6 +518,9 @@ def closure_table(result):
          float(residual[worst, :3].max()), float(residual[worst, 3:].max())),
         ("result: " + ("PASS" if closure_passes(result) else "FAIL"), np.nan, np.nan),
     ], columns=["check", "force residual [N]", "moment residual [N m]"])
+    return convert_columns(frame, {"force residual [N]": ("force residual", "force"),
+                                   "moment residual [N m]": ("moment residual", "moment")},
+                           units)
 
 
 def governing_report_table(result, units="SI"):
@@ -891,7 +895,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     study = result.study
     verdict, evidence = hook_angle_finding(result, findings.get("lateral"),
                                            findings.get("hook angle justification", ""))
-    closure = closure_table(result)
+    closure = closure_table(result, units)
     closure_line = (f"Free-free closure: {'PASS' if closure_passes(result) else 'FAIL'} "
                     f"(largest residual against {CLOSURE_TOLERANCE:g} x the load scale).")
     outside = towed_outside(result)
@@ -929,7 +933,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         Section("Towed-flight equilibrium cases: trimmed attitude and cable angles",
                 result.towed_table() if (result.cases["hook"] == "TOW").any() else None,
                 note=towed_note(result)),
-        Section("Closure check (free-free equilibrium, SI as checked)", closure),
+        Section("Closure check (free-free equilibrium)", closure),
     ]
     tables = inputs_tables(result, units)
     total = float(in_report_units(study.airframe.mass_items.total_mass, "mass", units))

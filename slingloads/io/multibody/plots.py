@@ -4,9 +4,10 @@ No pyplot state is touched. Each plot of a model's objects (``plot_histories(sim
 has a twin drawn from plain data (``plot_history_panels(runs)``: names, arrays, tables,
 from :mod:`slingloads.io.multibody.figure_data`), which the report hands to the process that
 draws its figures: that process then needs neither the model's compiled code nor scipy, so
-it loads neither. Angles are shown in degrees; lengths of the views in the unit
-system asked for (``"SI"``: m, ``"US"``: ft). Earth axes of the simulation: X aft along the flight
-path (the carrier flies towards -X), Y right, Z up (``docs/multibody.md``).
+it loads neither. Angles are shown in degrees; lengths of the views in the report's length
+unit (``"SI"``: m, ``"US"``: in, as every length of a US report). Earth axes of the
+simulation: X aft along the flight path (the carrier flies towards -X), Y right, Z up
+(``docs/multibody.md``).
 """
 
 from __future__ import annotations
@@ -23,8 +24,9 @@ from slingloads.io.multibody.figure_data import (
     view_points,
 )
 
-#: Length unit of the views: (pint unit, label) per unit system.
-VIEW_UNITS = {"SI": ("m", "m"), "US": ("ft", "ft")}
+#: Length unit of the views: (pint unit, label) per unit system, the report tables' (a US
+#: report gives its cable length and positions in inches).
+VIEW_UNITS = {"SI": ("m", "m"), "US": ("in", "in")}
 _MAX_LEGEND = 24
 
 
@@ -129,7 +131,7 @@ def plot_views(system, states, outline, units="SI", title=None):
     outline : dict
         Airframe polylines (see :func:`system_points`). [m]
     units : str
-        ``"SI"`` (m) or ``"US"`` (ft).
+        ``"SI"`` (m) or ``"US"`` (in).
     title : str, optional
 
     Returns
