@@ -306,6 +306,7 @@ def integrator(rhs, project):
                 stage_flag = 0
                 phase = 1
             # ------------------------------------------------------------- one evaluation
+            # (the one call of the right-hand side: its equations are compiled in once)
             if phase == SAMPLE:
                 when = sample * interval
                 if sample == 0:
@@ -313,7 +314,7 @@ def integrator(rhs, project):
                         z[m] = x[m]
                 else:
                     dense(x, K, h, (when - t) / h, weights, acc, z)
-                f = rhs(SAMPLE, when, s, sample, z, args, dx)
+                state = z
             else:
                 if phase == 0:
                     for m in range(n):
@@ -322,7 +323,9 @@ def integrator(rhs, project):
                 else:
                     stage(x, h, K, phase, acc, y)
                     when = b if (last and C[phase] == 1.0) else t + C[phase] * h
-                f = rhs(phase, when, s, sample, y, args, dx)
+                state = y
+            f = rhs(phase, when, s, sample, state, args, dx)
+            if phase != SAMPLE:
                 for m in range(n):
                     K[phase, m] = dx[m]
             # ------------------------------------------------------------- what next
