@@ -286,6 +286,11 @@ def loads_comparison(result):
     -------
     pandas.DataFrame or None
         None when no case comes from the dynamics.
+
+    Parameters
+    ----------
+    result : LoadsResult
+        Internal loads of the hand-entered and the dynamics cases.
     """
     from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 
