@@ -25,7 +25,18 @@ MIN_BATCH = 20
 
 def history_rows(settings):
     """Rows of a run's histories under ``settings`` (``t_end``, ``output_interval`` [s]): the
-    samples at 0, interval, ..., t_end."""
+    samples at 0, interval, ..., t_end.
+
+    Parameters
+    ----------
+    settings : dict
+        The runs' settings (``t_end``, ``output_interval`` [s]).
+
+    Returns
+    -------
+    int
+        Samples.
+    """
     return int(round(float(settings["t_end"]) / float(settings["output_interval"]))) + 1
 
 
@@ -54,7 +65,18 @@ def worker_memory(settings=None):
     loaded libraries and kernels (:data:`~slingloads.limits.WORKER_BASE_MEMORY`), one chunk of
     drive tables (:data:`~slingloads.analyses.multibody.simulate.DRIVE_BUDGET`) and the
     samples of a batch (at most :data:`~slingloads.limits.BATCH_MEMORY`, :func:`batch_limit`).
-    [bytes]"""
+    [bytes]
+
+    Parameters
+    ----------
+    settings : dict, optional
+        The runs' settings (``t_end``, ``output_interval`` [s]); default the largest batch.
+
+    Returns
+    -------
+    int
+        [bytes]
+    """
     from slingloads.analyses.multibody.simulate import DRIVE_BUDGET
 
     batch = BATCH_MEMORY
@@ -75,7 +97,18 @@ def _sample_bytes(settings):
 
 def batch_limit(settings):
     """The most runs of a batch whose samples fit :data:`~slingloads.limits.BATCH_MEMORY`
-    (at least 1, at most :data:`MAX_BATCH`)."""
+    (at least 1, at most :data:`MAX_BATCH`).
+
+    Parameters
+    ----------
+    settings : dict
+        The runs' settings (``t_end``, ``output_interval`` [s]).
+
+    Returns
+    -------
+    int
+        Runs.
+    """
     return max(1, min(MAX_BATCH, BATCH_MEMORY // max(1, _sample_bytes(settings))))
 
 
@@ -88,6 +121,17 @@ def local_workers(requested, settings=None, cores=None, available=None):
     -------
     workers : int
     warning : str or None
+
+    Parameters
+    ----------
+    requested : int
+        Worker processes asked for.
+    settings : dict, optional
+        The runs' settings (``t_end``, ``output_interval`` [s]).
+    cores : int, optional
+        Cores available (default: those this process may use).
+    available : int, optional
+        Memory available (default: the system's). [bytes]
     """
     cores = _cpu_count() if cores is None else int(cores)
     available = _available_memory() if available is None else available
