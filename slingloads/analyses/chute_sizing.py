@@ -362,10 +362,6 @@ def linear_yaw(model, area, fit_range=FIT_RANGE, basis="fit"):
     ``q eta_w CD A dx_c``. Damping: fin ``-1/2 rho V S_f eta CY_beta dx_f^2`` and parachute
     ``1/2 rho V eta_w CD A dx_c^2`` (attachment-point velocity, Apollo legacy model).
 
-    Returns
-    -------
-    LinearYaw
-
     Parameters
     ----------
     model : YawModel
@@ -375,6 +371,10 @@ def linear_yaw(model, area, fit_range=FIT_RANGE, basis="fit"):
         Sideslip range of the fits. [rad]
     basis : str
         "fit" or "local".
+
+    Returns
+    -------
+    LinearYaw
     """
     area = float(area)
     if not np.isfinite(area) or area < 0:

@@ -682,14 +682,14 @@ def hanging_roll_axis(airframe):
     The body x axis with its component along the hanging vertical removed: the axis about
     which the hanging airframe rolls under a sideways motion of its carrier.
 
+    Parameters
+    ----------
+    airframe : Airframe
+
     Returns
     -------
     numpy.ndarray
         Unit vector, shape (3,). [-]
-
-    Parameters
-    ----------
-    airframe : Airframe
     """
     k = hanging_vertical(airframe)
     x = np.array([1.0, 0.0, 0.0]) - k[0] * k

@@ -282,15 +282,15 @@ def loads_comparison(result):
     """Largest |limit load| of each component over the fuselage: the hand-entered cases
     against the cases from the dynamics (the ``source`` column of the case matrix).
 
-    Returns
-    -------
-    pandas.DataFrame or None
-        None when no case comes from the dynamics.
-
     Parameters
     ----------
     result : LoadsResult
         Internal loads of the hand-entered and the dynamics cases.
+
+    Returns
+    -------
+    pandas.DataFrame or None
+        None when no case comes from the dynamics.
     """
     from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 

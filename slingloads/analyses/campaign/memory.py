@@ -117,11 +117,6 @@ def local_workers(requested, settings=None, cores=None, available=None):
     available (:func:`worker_memory` each, with the memory this process keeps), and a
     warning (None if none) when an explicit request is cut.
 
-    Returns
-    -------
-    workers : int
-    warning : str or None
-
     Parameters
     ----------
     requested : int
@@ -132,6 +127,11 @@ def local_workers(requested, settings=None, cores=None, available=None):
         Cores available (default: those this process may use).
     available : int, optional
         Memory available (default: the system's). [bytes]
+
+    Returns
+    -------
+    workers : int
+    warning : str or None
     """
     cores = _cpu_count() if cores is None else int(cores)
     available = _available_memory() if available is None else available

@@ -86,11 +86,6 @@ def yaw_model_of(system, airspeed=None, density_altitude=None):
 def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE):
     """Neutral yaw static stability area of a towed system (paper section 4.1).
 
-    Returns
-    -------
-    NeutralAreaResult
-        ``.area`` [m^2] (not positive when fuselage and fin are already stable).
-
     Parameters
     ----------
     system : SlingSystem
@@ -99,6 +94,11 @@ def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE):
         Equivalent airspeed (default the system's). [m/s]
     fit_range : (float, float)
         Sideslip range of the slope fits. [rad]
+
+    Returns
+    -------
+    NeutralAreaResult
+        ``.area`` [m^2] (not positive when fuselage and fin are already stable).
     """
     speed = system.airspeed if airspeed is None else airspeed
     if not speed > 0:
