@@ -38,21 +38,12 @@ there; a derivative outside the tables at a segment's start (after an input's ju
 run at once.
 """
 
-import hashlib
 import math
-import types
-from pathlib import Path
 
 import numba
 import numpy as np
 
-from slingloads.models.numba_cache import drop_stale_models_cache
-
-# the models' loops (integrator) are cached in this folder, with the models' functions in them
-drop_stale_models_cache(Path(__file__).resolve().parent)
-
 _jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
-_loop_jit = numba.njit(cache=True, fastmath=False, nogil=True)
 
 #: Nodes c_i of the seven stages (the seventh is the first of the next step). [-]
 C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
@@ -257,10 +248,9 @@ def integrator(rhs, project):
     run : numba dispatcher
         Compiled ``run(x, ends, segments, interval, n_out, fixed, rtol, atol, max_step,
         first_step, max_steps, stop, args) -> (status, flag, t, accepted, sampled)``,
-        compiled once per model and cached. It integrates state ``x`` (n,; updated in place
-        to the last accepted state) from t = 0 over ``segments`` segments ending at ``ends``
-        [s] (each from the previous one's end), sampling ``n_out`` samples every ``interval``
-        [s].
+        inlined into its caller. It integrates state ``x`` (n,; updated in place to the last
+        accepted state) from t = 0 over ``segments`` segments ending at ``ends`` [s] (each
+        from the previous one's end), sampling ``n_out`` samples every ``interval`` [s].
         ``fixed`` > 0: that fixed step [s], without error control (a stage outside the
         tables then stops the run at once); else adaptive: the local error estimate within
         ``atol + rtol max(|x|, |x_new|)`` (root mean square over the states, tolerances
@@ -274,153 +264,135 @@ def integrator(rhs, project):
         caller's to fill).
     """
 
-    # A copy of _loop whose globals name the model's functions: a function of its own, which
-    # numba caches (a closure over them would not be: its key changes from process to
-    # process), not inlined into the model's kernel (numba copies the whole IR of an inlined
-    # function once per block, which made the kernels slower to compile)
-    # named by the model's functions and their bytecode: an edited right-hand side outside this
-    # package (whose cache drop_stale_models_cache does not see) gets a loop of its own
-    digest = hashlib.sha256(rhs.py_func.__code__.co_code + project.py_func.__code__.co_code)
-    name = (f"_loop_{rhs.py_func.__module__.rsplit('.', 1)[-1]}_{rhs.py_func.__name__}_"
-            f"{digest.hexdigest()[:12]}")
-    code = _loop.__code__.replace(co_name=name, co_qualname=name)
-    scope = {**globals(), "_RHS": rhs, "_PROJECT": project}
-    return _loop_jit(types.FunctionType(code, scope, name))
-
-
-#: Placeholders of the model's right-hand side and projection in :func:`_loop` (each model's
-#: copy, made by :func:`integrator`, has its own).
-_RHS = _PROJECT = None
-
-
-def _loop(x, ends, segments, interval, n_out, fixed, rtol, atol, max_step, first_step,
-          max_steps, stop, args):
-    """The step loop of :func:`integrator` (its ``run``), with the model's right-hand side
-    ``_RHS`` and projection ``_PROJECT``."""
-    n = x.size
-    K = np.empty((7, n))
-    y = np.empty(n)
-    z = np.empty(n)
-    dx = np.empty(n)
-    acc = np.empty(n)
-    weights = np.empty(7)
-    snap = END_SNAP * interval
-    t = 0.0
-    t_new = 0.0
-    h = first_step
-    h_next = first_step
-    b = 0.0
-    s = 0
-    sample = 0
-    accepted = 0
-    tried = 0
-    rejected = False
-    last = False
-    stage_flag = 0
-    status = DONE
-    flag = 0
-    new_step = False
-    phase = SAMPLE
-    while True:
-        if new_step:  # --------------------------------------------- a trial step
-            new_step = False
-            if tried == max_steps or stop[0] != 0:  # over budget: the run ends
-                stop[0] = 1
-                status = OVER_BUDGET
-                break
-            tried += 1
-            h = min(h, max_step)
-            last = t + h >= b - snap
-            if last:
-                h = b - t
-            stage_flag = 0
-            phase = 1
-        # ------------------------------------------------------------- one evaluation
-        # (the one call of the right-hand side: its equations are compiled in once)
-        if phase == SAMPLE:
-            when = sample * interval
-            if sample == 0:
-                for m in range(n):
-                    z[m] = x[m]
+    @_jit
+    def run(x, ends, segments, interval, n_out, fixed, rtol, atol, max_step, first_step,
+            max_steps, stop, args):
+        n = x.size
+        K = np.empty((7, n))
+        y = np.empty(n)
+        z = np.empty(n)
+        dx = np.empty(n)
+        acc = np.empty(n)
+        weights = np.empty(7)
+        snap = END_SNAP * interval
+        t = 0.0
+        t_new = 0.0
+        h = first_step
+        h_next = first_step
+        b = 0.0
+        s = 0
+        sample = 0
+        accepted = 0
+        tried = 0
+        rejected = False
+        last = False
+        stage_flag = 0
+        status = DONE
+        flag = 0
+        new_step = False
+        phase = SAMPLE
+        while True:
+            if new_step:  # --------------------------------------------- a trial step
+                new_step = False
+                if tried == max_steps or stop[0] != 0:  # over budget: the run ends
+                    stop[0] = 1
+                    status = OVER_BUDGET
+                    break
+                tried += 1
+                h = min(h, max_step)
+                last = t + h >= b - snap
+                if last:
+                    h = b - t
+                stage_flag = 0
+                phase = 1
+            # ------------------------------------------------------------- one evaluation
+            # (the one call of the right-hand side: its equations are compiled in once)
+            if phase == SAMPLE:
+                when = sample * interval
+                if sample == 0:
+                    for m in range(n):
+                        z[m] = x[m]
+                else:
+                    dense(x, K, h, (when - t) / h, weights, acc, z)
+                state = z
             else:
-                dense(x, K, h, (when - t) / h, weights, acc, z)
-            state = z
-        else:
-            if phase == 0:
+                if phase == 0:
+                    for m in range(n):
+                        y[m] = x[m]
+                    when = t
+                else:
+                    stage(x, h, K, phase, acc, y)
+                    when = b if (last and C[phase] == 1.0) else t + C[phase] * h
+                state = y
+            f = rhs(phase, when, s, sample, state, args, dx)
+            if phase != SAMPLE:
                 for m in range(n):
-                    y[m] = x[m]
-                when = t
-            else:
-                stage(x, h, K, phase, acc, y)
-                when = b if (last and C[phase] == 1.0) else t + C[phase] * h
-            state = y
-        f = _RHS(phase, when, s, sample, state, args, dx)
-        if phase != SAMPLE:
-            for m in range(n):
-                K[phase, m] = dx[m]
-        # ------------------------------------------------------------- what next
-        if phase == SAMPLE:
-            sample += 1
-            if sample == 1:  # the initial state
-                if segments == 0:
+                    K[phase, m] = dx[m]
+            # ------------------------------------------------------------- what next
+            if phase == SAMPLE:
+                sample += 1
+                if sample == 1:  # the initial state
+                    if segments == 0:
+                        flag = f
+                        break
+                    b = ends[0]
+                    phase = 0
+                    continue
+                if sample < n_out and sample * interval <= t_new + snap:
+                    continue
+            elif phase == 0:
+                if f != 0:  # outside the tables at the segment's start: stop there
+                    status = LEFT
                     flag = f
                     break
-                b = ends[0]
-                phase = 0
-                continue
-            if sample < n_out and sample * interval <= t_new + snap:
-                continue
-        elif phase == 0:
-            if f != 0:  # outside the tables at the segment's start: stop there
-                status = LEFT
-                flag = f
-                break
-            new_step = True
-            continue
-        else:
-            stage_flag |= f
-            if phase < 6:
-                phase += 1
-                continue
-            # y, the last stage's argument, is the fifth-order solution
-            if stage_flag != 0:  # a stage left the tables: a shorter step, or stop
-                if fixed > 0.0 or h < 2.0 * SMALLEST_STEP:
-                    status = LEFT
-                    flag = stage_flag
-                    break
-                h *= 0.5
-                rejected = True
                 new_step = True
                 continue
-            if fixed > 0.0:
-                h_next = fixed
             else:
-                err = error_norm(x, y, K, h, rtol, atol, acc)
-                if err > 1.0:
-                    h *= shrink(err)
+                stage_flag |= f
+                if phase < 6:
+                    phase += 1
+                    continue
+                # y, the last stage's argument, is the fifth-order solution
+                if stage_flag != 0:  # a stage left the tables: a shorter step, or stop
+                    if fixed > 0.0 or h < 2.0 * SMALLEST_STEP:
+                        status = LEFT
+                        flag = stage_flag
+                        break
+                    h *= 0.5
                     rejected = True
                     new_step = True
                     continue
-                h_next = h * grow(err, rejected)
-                rejected = False
-            t_new = b if last else t + h
-            if sample < n_out and sample * interval <= t_new + snap:
-                phase = SAMPLE
-                continue
-        # ----------------------------------------------------------- step accepted
-        accepted += 1
-        t = t_new
-        for m in range(n):
-            x[m] = y[m]
-            K[0, m] = K[6, m]
-        _PROJECT(x)
-        h = h_next
-        if last:
-            s += 1
-            if s == segments:
-                break
-            b = ends[s]
-            phase = 0
-        else:
-            new_step = True
-    return status, flag, t, accepted, sample
+                if fixed > 0.0:
+                    h_next = fixed
+                else:
+                    err = error_norm(x, y, K, h, rtol, atol, acc)
+                    if err > 1.0:
+                        h *= shrink(err)
+                        rejected = True
+                        new_step = True
+                        continue
+                    h_next = h * grow(err, rejected)
+                    rejected = False
+                t_new = b if last else t + h
+                if sample < n_out and sample * interval <= t_new + snap:
+                    phase = SAMPLE
+                    continue
+            # ----------------------------------------------------------- step accepted
+            accepted += 1
+            t = t_new
+            for m in range(n):
+                x[m] = y[m]
+                K[0, m] = K[6, m]
+            project(x)
+            h = h_next
+            if last:
+                s += 1
+                if s == segments:
+                    break
+                b = ends[s]
+                phase = 0
+            else:
+                new_step = True
+        return status, flag, t, accepted, sample
+
+    return run

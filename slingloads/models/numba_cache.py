@@ -48,22 +48,3 @@ def drop_stale_cache(folder, also=()):
     except OSError:  # a read-only installation: numba then compiles in memory
         return False
     return True
-
-
-def drop_stale_models_cache(folder):
-    """:func:`drop_stale_cache` of the models' folder: its sources and those of its
-    ``multibody`` package, whose functions are compiled into the step loops cached in the
-    folder (:func:`slingloads.models.dormand_prince.integrator`).
-
-    Parameters
-    ----------
-    folder : path-like
-        The ``slingloads/models`` folder.
-
-    Returns
-    -------
-    bool
-        True if cache files were dropped (or there was no stamp yet).
-    """
-    folder = Path(folder)
-    return drop_stale_cache(folder, also=sorted((folder / "multibody").glob("*.py")))

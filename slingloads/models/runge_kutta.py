@@ -42,12 +42,12 @@ from pathlib import Path
 
 import numba
 
-from slingloads.models.numba_cache import drop_stale_models_cache
+from slingloads.models.numba_cache import drop_stale_cache
 
 # The compiled kernels of this package call functions of other modules (this step, the packed
 # layouts), which numba's check of a kernel's own source does not see: the package's cache is
 # dropped whenever one of its sources changes.
-drop_stale_models_cache(Path(__file__).resolve().parent)
+drop_stale_cache(Path(__file__).resolve().parent)
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
 
