@@ -270,7 +270,7 @@ def integrator(rhs, project):
         n = x.size
         K = np.empty((7, n))
         y = np.empty(n)
-        z = np.empty(n)
+        x_new = np.empty(n)
         dx = np.empty(n)
         acc = np.empty(n)
         weights = np.empty(7)
@@ -306,25 +306,22 @@ def integrator(rhs, project):
                 stage_flag = 0
                 phase = 1
             # ------------------------------------------------------------- one evaluation
-            # (the one call of the right-hand side: its equations are compiled in once)
+            # (the one call of the right-hand side, on y: its equations are compiled in once)
             if phase == SAMPLE:
                 when = sample * interval
                 if sample == 0:
                     for m in range(n):
-                        z[m] = x[m]
-                else:
-                    dense(x, K, h, (when - t) / h, weights, acc, z)
-                state = z
-            else:
-                if phase == 0:
-                    for m in range(n):
                         y[m] = x[m]
-                    when = t
                 else:
-                    stage(x, h, K, phase, acc, y)
-                    when = b if (last and C[phase] == 1.0) else t + C[phase] * h
-                state = y
-            f = rhs(phase, when, s, sample, state, args, dx)
+                    dense(x, K, h, (when - t) / h, weights, acc, y)
+            elif phase == 0:
+                for m in range(n):
+                    y[m] = x[m]
+                when = t
+            else:
+                stage(x, h, K, phase, acc, y)
+                when = b if (last and C[phase] == 1.0) else t + C[phase] * h
+            f = rhs(phase, when, s, sample, y, args, dx)
             if phase != SAMPLE:
                 for m in range(n):
                     K[phase, m] = dx[m]
@@ -353,6 +350,8 @@ def integrator(rhs, project):
                     phase += 1
                     continue
                 # y, the last stage's argument, is the fifth-order solution
+                for m in range(n):
+                    x_new[m] = y[m]
                 if stage_flag != 0:  # a stage left the tables: a shorter step, or stop
                     if fixed > 0.0 or h < 2.0 * SMALLEST_STEP:
                         status = LEFT
@@ -365,7 +364,7 @@ def integrator(rhs, project):
                 if fixed > 0.0:
                     h_next = fixed
                 else:
-                    err = error_norm(x, y, K, h, rtol, atol, acc)
+                    err = error_norm(x, x_new, K, h, rtol, atol, acc)
                     if err > 1.0:
                         h *= shrink(err)
                         rejected = True
@@ -381,7 +380,7 @@ def integrator(rhs, project):
             accepted += 1
             t = t_new
             for m in range(n):
-                x[m] = y[m]
+                x[m] = x_new[m]
                 K[0, m] = K[6, m]
             project(x)
             h = h_next
