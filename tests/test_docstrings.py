@@ -18,13 +18,7 @@ import slingloads
 
 ROOT = Path(slingloads.__file__).parent
 #: Modules whose docstring pass is still to come (relative to the package).
-PENDING = {
-    "models/airframe.py", "models/multibody/cable.py", "models/multibody/carrier.py",
-    "models/multibody/system.py", "analyses/chute_metrics.py", "analyses/chute_sizing.py",
-    "analyses/lateral.py", "analyses/loads.py", "analyses/multibody/manoeuvres.py",
-    "analyses/multibody/simulate.py", "analyses/multibody/trim.py",
-    *(f"analyses/campaign/{p.name}" for p in (ROOT / "analyses" / "campaign").glob("*.py")),
-}
+PENDING: set[str] = set()
 MODULES = sorted(str(p.relative_to(ROOT)) for folder in ("models", "analyses")
                  for p in (ROOT / folder).rglob("*.py"))
 

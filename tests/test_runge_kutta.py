@@ -71,7 +71,9 @@ def test_dormand_prince_step_error_norm_and_dense_output_are_scipys():
     err_ref = np.linalg.norm(K_ref.T @ RK45.E * h / scale) / np.sqrt(2)
     mid_ref = RkDenseOutput(0.0, h, y, K_ref.T @ RK45.P)(0.5 * h)
     assert_allclose(y_new, y_ref, rtol=1e-14)
-    assert_allclose(err, err_ref, rtol=1e-12)
+    # the estimate is a difference of two close solutions: summed in another order it
+    # differs by round-off magnified by the cancellation (about 1e4 here)
+    assert_allclose(err, err_ref, rtol=1e-10)
     assert_allclose(mid, mid_ref, rtol=1e-14)
 
 

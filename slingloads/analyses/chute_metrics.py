@@ -24,8 +24,24 @@ def history_metrics(t, beta, psi, rate, trim, onset, free, settle_fraction, peak
     settling time [s] (NaN if never or ``free`` is NaN), first and second refined positive
     yaw-rate peaks after ``free`` [rad/s] (-inf if missing), NaN (spare column).
 
-    ``t`` (n,) [s]; ``beta``, ``psi``, ``rate`` (runs, n); ``trim`` (runs,) the trim sideslip
-    [rad]; ``onset``, ``free`` (runs,) the gust's onset and the time it stops changing [s].
+    Parameters
+    ----------
+    t : ndarray, shape (n,)
+        Sample times. [s]
+    beta, psi : ndarray, shape (runs, n)
+        Sideslip and yaw. [rad]
+    rate : ndarray, shape (runs, n)
+        Yaw rate. [rad/s]
+    trim : ndarray, shape (runs,)
+        Trim sideslip. [rad]
+    onset, free : ndarray, shape (runs,)
+        The gust's onset and the time it stops changing (NaN: never). [s]
+    settle_fraction : float
+        Settling band, a fraction of the largest excursion of beta from trim. [-]
+    peak_threshold : float
+        Smallest yaw-rate peak counted. [rad/s]
+    out : ndarray, shape (runs, 8)
+        Receives the metrics.
     """
     runs, n = beta.shape
     for j in range(runs):

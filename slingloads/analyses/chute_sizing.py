@@ -91,7 +91,18 @@ class LinearisationResult:
 
     def slopes(self, basis="fit"):
         """(fuselage, fin) dCn/dbeta of ``basis``: "fit" (least squares over
-        ``fit_range``) or "local" (at zero sideslip, :func:`local_slope`). [1/rad]"""
+        ``fit_range``) or "local" (at zero sideslip, :func:`local_slope`). [1/rad]
+
+        Parameters
+        ----------
+        basis : str
+            "fit" or "local".
+
+        Returns
+        -------
+        fuselage, fin : float or None
+            dCn/dbeta (None without the component). [1/rad]
+        """
         if basis == "local":
             return self.fuselage_local_slope, self.fin_local_slope
         if basis == "fit":
@@ -100,7 +111,14 @@ class LinearisationResult:
                          "'fit', 'local'", basis)
 
     def to_frame(self):
-        """Slopes and intercepts, one row per component."""
+        """Slopes and intercepts, one row per component.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per component: fitted slope [1/rad and 1/deg], local slope at zero sideslip
+            [1/deg], Cn at zero sideslip [-] and the fit range [deg].
+        """
         rows = []
         for name, slope, icpt in (("fuselage", self.fuselage_slope, self.fuselage_intercept),
                                   ("fin", self.fin_slope, self.fin_intercept)):
@@ -117,7 +135,13 @@ class LinearisationResult:
         return pd.DataFrame(rows)
 
     def curves_frame(self):
-        """Table against fit along sideslip (the paper's figures 4 and 5)."""
+        """Table against fit along sideslip (the paper's figures 4 and 5).
+
+        Returns
+        -------
+        pandas.DataFrame
+            Sideslip [deg] and the tabulated and fitted Cn of the fuselage and the fin [-].
+        """
         frame = pd.DataFrame({"beta [deg]": _deg(self.beta)})
         if self.fuselage_cn is not None:
             frame["fuselage Cn table [-]"] = self.fuselage_cn
@@ -128,6 +152,13 @@ class LinearisationResult:
         return frame
 
     def frames(self):
+        """The tables of the result, by sheet name.
+
+        Returns
+        -------
+        dict of str to pandas.DataFrame
+            The slopes and the curves, by sheet name.
+        """
         return {"yaw linearisation": self.to_frame(), "yaw Cn curves": self.curves_frame()}
 
 
@@ -180,7 +211,22 @@ def local_slope(angle, values, what="aerodynamic"):
     within +-h of 0, h the larger distance from 0 to its nearest breakpoint on either side
     (the central difference of the interpolated table when the breakpoints are symmetric
     about 0). This is the derivative a small disturbance about beta = 0 sees, where the fit
-    over ``fit_range`` is a finite-amplitude average. [1/rad]"""
+    over ``fit_range`` is a finite-amplitude average. [1/rad]
+
+    Parameters
+    ----------
+    angle : array_like, shape (n,)
+        Sideslip breakpoints. [rad]
+    values : array_like, shape (n,)
+        Table values (units of the table).
+    what : str
+        Name of the table, for the message.
+
+    Returns
+    -------
+    float
+        Units of the table per rad.
+    """
     angle = np.asarray(angle, dtype=float)
     below, above = angle[angle < -1e-12], angle[angle > 1e-12]
     if below.size == 0 or above.size == 0:
@@ -250,13 +296,54 @@ class LinearYaw:
     condition = property(lambda self: _Tas(self.tas))
 
     def beta_range(self):
+        """Sideslip range of the linear model (a linear moment has no table to leave).
+
+        Returns
+        -------
+        (float, float)
+            (-pi/2, pi/2). [rad]
+        """
         return -np.pi / 2, np.pi / 2
 
     def relative_wind(self, gust):
+        """Wind angle and relative speed for a lateral gust.
+
+        Parameters
+        ----------
+        gust : array_like
+            Lateral gust velocity. [m/s]
+
+        Returns
+        -------
+        gamma : ndarray
+            Wind angle atan2(v, V). [rad]
+        v_rel : ndarray
+            Relative speed sqrt(V^2 + v^2). [m/s]
+        """
         v = np.asarray(gust, dtype=float)
         return np.arctan2(v, self.tas), np.hypot(self.tas, v)
 
     def derivatives(self, psi, rate, gamma, v_rel, area):
+        """State derivatives of the linear model (the protocol of :class:`YawModel`).
+
+        Parameters
+        ----------
+        psi, rate : array_like
+            Yaw [rad] and yaw rate [rad/s].
+        gamma, v_rel : array_like
+            Wind angle [rad] and relative speed [m/s] (:meth:`relative_wind`).
+        area : array_like
+            Parachute flat-plate area (its effect is in the stiffness and damping). [m^2]
+
+        Returns
+        -------
+        dpsi : ndarray
+            [rad/s]
+        drate : ndarray
+            (k (gamma - psi - beta_trim) - c r) / I. [rad/s^2]
+        outside : ndarray of bool
+            All False (no table to leave).
+        """
         acc = (self.stiffness * (gamma - psi - self.beta_trim) - self.damping * rate) / self.inertia
         return rate, acc, np.zeros(np.shape(acc), dtype=bool)
 
@@ -274,6 +361,16 @@ def linear_yaw(model, area, fit_range=FIT_RANGE, basis="fit"):
     parachute's from its drag at the attachment,
     ``q eta_w CD A dx_c``. Damping: fin ``-1/2 rho V S_f eta CY_beta dx_f^2`` and parachute
     ``1/2 rho V eta_w CD A dx_c^2`` (attachment-point velocity, Apollo legacy model).
+
+    Parameters
+    ----------
+    model : YawModel
+    area : float
+        Parachute flat-plate area, >= 0. [m^2]
+    fit_range : (float, float)
+        Sideslip range of the fits. [rad]
+    basis : str
+        "fit" or "local".
 
     Returns
     -------
@@ -355,7 +452,13 @@ class NeutralAreaResult:
         return self.area <= 0
 
     def to_frame(self):
-        """Breakdown: one row per contribution and their sum."""
+        """Breakdown: one row per contribution and their sum.
+
+        Returns
+        -------
+        pandas.DataFrame
+            dN/dbeta of each contribution and their total [N m/rad and N m/deg].
+        """
         rows = [{"component": k, "dN/dbeta [N m/rad]": v,
                  "dN/dbeta [N m/deg]": v * np.pi / 180} for k, v in self.derivatives.items()]
         total = sum(self.derivatives.values())
@@ -366,6 +469,14 @@ class NeutralAreaResult:
         return frame
 
     def summary_frame(self):
+        """The neutral area as one row.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row: neutral areas [m^2], basis, q [Pa], parachute arm [m], parachute dN/dbeta
+            per unit area [N m/rad/m^2], already stable.
+        """
         return pd.DataFrame([{"neutral area [m^2]": self.area,
                               "neutral area, fit slopes [m^2]": self.area_fit,
                               "neutral area, local slopes [m^2]": self.area_local,
@@ -375,12 +486,26 @@ class NeutralAreaResult:
                               "already stable": self.already_stable}])
 
     def curves_frame(self):
+        """The static yaw moments against sideslip.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Sideslip [deg] and the yaw moment of each contribution [N m].
+        """
         frame = pd.DataFrame({"beta [deg]": _deg(self.beta)})
         for k, v in self.moments.items():
             frame[f"N {k} [N m]"] = v
         return frame
 
     def frames(self):
+        """The tables of the result, by sheet name.
+
+        Returns
+        -------
+        dict of str to pandas.DataFrame
+            Summary, breakdown, moments and linearisation, by sheet name.
+        """
         return {"chute neutral area": self.summary_frame(),
                 "chute breakdown": self.to_frame(),
                 "chute static moments": self.curves_frame(),
@@ -462,7 +587,23 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None, basis="larger"):
 # ------------------------------------------------------------------------ line length
 @dataclass(frozen=True)
 class LineLengthResult:
-    """Parachute line length from the wake, and the carrier-cable check."""
+    """Parachute line length from the wake, and the carrier-cable check.
+
+    Parameters
+    ----------
+    line_length : float
+        Shortest line at which the wake ratio reaches ``target``. [m]
+    target : float
+        Dynamic-pressure ratio to reach. [-]
+    wake_source : str
+        Where the wake data come from.
+    distance : ndarray, shape (n,)
+        Distances behind the fuselage of the ratio curve. [m]
+    ratio : ndarray, shape (n,)
+        Wake dynamic-pressure ratio at ``distance``. [-]
+    cable : CableCheck or None
+        The carrier-cable check (None: no cable given).
+    """
 
     line_length: float
     target: float
@@ -472,6 +613,14 @@ class LineLengthResult:
     cable: object | None
 
     def to_frame(self):
+        """The line length and the cable check as one row.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row: line length [m], target q ratio [-], wake source and, with a cable, its
+            length and the required length [m] and the check.
+        """
         row = {"line length [m]": self.line_length, "target q ratio [-]": self.target,
                "wake source": self.wake_source}
         if self.cable is not None:
@@ -482,9 +631,23 @@ class LineLengthResult:
         return pd.DataFrame([row])
 
     def curve_frame(self):
+        """The wake's dynamic-pressure ratio against distance.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Distance [m] and q ratio [-].
+        """
         return pd.DataFrame({"distance [m]": self.distance, "q ratio [-]": self.ratio})
 
     def frames(self):
+        """The tables of the result, by sheet name.
+
+        Returns
+        -------
+        dict of str to pandas.DataFrame
+            The line length and the wake's ratio curve, by sheet name.
+        """
         return {"chute line": self.to_frame(), "wake q ratio": self.curve_frame()}
 
 
@@ -503,6 +666,10 @@ def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGI
         [-]
     distance : array_like, optional
         Distances for the ratio curve (default: the table, or up to 1.5 x the line). [m]
+
+    Returns
+    -------
+    LineLengthResult
     """
     length = wake.line_length(target)
     if distance is None:
@@ -523,6 +690,17 @@ def wake_ratio_at(wake, distance):
 
     The parachute's wake ratio carries the wake loss once (:mod:`slingloads.models.parachute`);
     this is the value the wake data give for it at the chosen line length.
+
+    Parameters
+    ----------
+    wake : TabulatedWake or BluffBodyWake
+    distance : float
+        Distance behind the fuselage. [m]
+
+    Returns
+    -------
+    float
+        q ratio, or NaN outside the wake data. [-]
     """
     lo, hi = wake.range if hasattr(wake, "range") else (wake.min_distance, np.inf)
     if not (np.isfinite(distance) and lo <= distance <= hi):
@@ -613,11 +791,28 @@ class YawRuns:
     settings: SolverSettings
 
     def to_frame(self):
-        """Metrics per run, unit-labelled columns."""
+        """Metrics per run, unit-labelled columns.
+
+        Returns
+        -------
+        pandas.DataFrame
+            :attr:`metrics` (a copy).
+        """
         return self.metrics.copy()
 
     def history_frame(self, runs=None):
-        """Wide table of sideslip and yaw [deg] against time for the chosen run indices."""
+        """Wide table of sideslip and yaw [deg] against time for the chosen run indices.
+
+        Parameters
+        ----------
+        runs : sequence of int, optional
+            Run indices (default all).
+
+        Returns
+        -------
+        pandas.DataFrame
+            Time [s], then sideslip and yaw [deg] of each run.
+        """
         runs = range(len(self.areas)) if runs is None else runs
         h = self.histories
         frame = pd.DataFrame({"time [s]": h.time})
@@ -628,6 +823,13 @@ class YawRuns:
         return frame
 
     def frames(self):
+        """The tables of the result, by sheet name.
+
+        Returns
+        -------
+        dict of str to pandas.DataFrame
+            Runs and histories, by sheet name.
+        """
         return {"yaw runs": self.to_frame(), "yaw histories": self.history_frame()}
 
 
@@ -805,7 +1007,19 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
 def gust_frame(gusts, tas):
     """The gust shapes as a table: shape, description, largest velocity [m/s], the sideslip
     angle atan(v/V) it makes at true airspeed ``tas`` [m/s], onset [s] and the time after
-    which it no longer changes [s] (NaN: never, as the harmonic gust)."""
+    which it no longer changes [s] (NaN: never, as the harmonic gust).
+
+    Parameters
+    ----------
+    gusts : sequence of gusts
+        Gust shapes (:mod:`slingloads.models.gusts`).
+    tas : float
+        True airspeed. [m/s]
+
+    Returns
+    -------
+    pandas.DataFrame
+    """
     return pd.DataFrame({
         "shape": [g.kind for g in gusts],
         "description": [g.label for g in gusts],
@@ -818,7 +1032,21 @@ def gust_frame(gusts, tas):
 
 @dataclass(frozen=True)
 class SweepResult:
-    """Sizing sweep: metrics against parachute area for each gust shape."""
+    """Sizing sweep: metrics against parachute area for each gust shape.
+
+    Parameters
+    ----------
+    static : NeutralAreaResult
+        The neutral area the sweep is scaled on.
+    factors : ndarray, shape (k,)
+        Swept areas over the neutral area. [-]
+    runs : YawRuns
+        The runs, every gust at every area.
+    gusts : tuple
+        The gust shapes (:mod:`slingloads.models.gusts`).
+    tas : float
+        True airspeed of the condition. [m/s]
+    """
 
     static: NeutralAreaResult
     factors: np.ndarray
@@ -827,6 +1055,13 @@ class SweepResult:
     tas: float = np.nan
 
     def to_frame(self):
+        """Metrics per run, with the area over the neutral area.
+
+        Returns
+        -------
+        pandas.DataFrame
+            :meth:`YawRuns.to_frame` with the area ratio [-].
+        """
         frame = self.runs.to_frame()
         frame.insert(1, "area / neutral area [-]", frame["area [m^2]"] / self.static.area)
         return frame
@@ -834,7 +1069,14 @@ class SweepResult:
     def by_area(self):
         """One row per swept area: every gust meets the criterion (verdict in
         :data:`~slingloads.analyses.verdicts.ACCEPTED`)?, the worst verdict, peak sideslip
-        and yaw over the gusts."""
+        and yaw over the gusts.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per area [m^2]: area ratio [-], all gusts stable, worst verdict, peak sideslip
+            and yaw [deg].
+        """
         frame = self.to_frame()
         grouped = frame.groupby("area [m^2]", sort=True)
         return pd.DataFrame({
@@ -857,7 +1099,18 @@ class SweepResult:
         return float(ok["area [m^2]"].min()) if len(ok) else float("nan")
 
     def history_frame(self, factors=(1.0, 1.5, 2.0)):
-        """Histories of the runs whose area ratio is nearest each of ``factors``."""
+        """Histories of the runs whose area ratio is nearest each of ``factors``.
+
+        Parameters
+        ----------
+        factors : sequence of float
+            Area ratios. [-]
+
+        Returns
+        -------
+        pandas.DataFrame
+            :meth:`YawRuns.history_frame` of those runs.
+        """
         ratio = self.runs.areas / self.static.area
         chosen = []
         for f in factors:
@@ -867,10 +1120,23 @@ class SweepResult:
 
     def gust_frame(self):
         """One row per gust shape: what it is, its largest velocity and the sideslip that
-        makes at the condition's true airspeed, when it starts and when it stops changing."""
+        makes at the condition's true airspeed, when it starts and when it stops changing.
+
+        Returns
+        -------
+        pandas.DataFrame
+            :func:`gust_frame` of the sweep's gusts.
+        """
         return gust_frame(self.gusts, self.tas)
 
     def frames(self):
+        """The tables of the result, by sheet name.
+
+        Returns
+        -------
+        dict of str to pandas.DataFrame
+            Neutral area, gusts, sweep and histories, by sheet name.
+        """
         return {**self.static.frames(), "chute gusts": self.gust_frame(),
                 "chute sweep": self.to_frame(), "chute histories": self.history_frame()}
 
@@ -913,7 +1179,18 @@ def sizing_sweep(model, factors=None, gusts=None, settings=None, fit_range=FIT_R
 
 
 def with_area(model, area):
-    """A copy of ``model`` whose parachute template has ``area`` (convenience for reports)."""
+    """A copy of ``model`` whose parachute template has ``area`` (convenience for reports).
+
+    Parameters
+    ----------
+    model : YawModel
+    area : float
+        Parachute flat-plate area. [m^2]
+
+    Returns
+    -------
+    YawModel
+    """
     return replace(model, parachute=replace(model.parachute, area=area))
 
 

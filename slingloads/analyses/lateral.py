@@ -127,7 +127,13 @@ class CarrierLimits:
         return self.gravity * self.roll_rate / np.cos(self.bank) ** 2
 
     def describe(self):
-        """The limits in words."""
+        """The limits in words.
+
+        Returns
+        -------
+        str
+            Bank [deg], peak acceleration [m/s^2 and g], roll rate [deg/s] and peak jerk [m/s^3].
+        """
         return (f"bank <= {np.degrees(self.bank):.3g} deg (peak S'' <= "
                 f"{self.acceleration:.3g} m/s^2 = {self.acceleration / self.gravity:.3g} g), "
                 f"roll rate <= {np.degrees(self.roll_rate):.3g} deg/s (peak jerk <= "
@@ -138,7 +144,18 @@ def peak_jerk(motion):
     """Largest |S'''| of a carrier motion [m/s^3]: inf for a motion whose acceleration jumps
     (constant acceleration, velocity step); 60 A/T^3 for a quintic step and (2 pi)^2 A/T^3 for
     a cycloidal one (the derivatives of their laws at the start); the largest slope of a
-    time history's piecewise-linear spline acceleration."""
+    time history's piecewise-linear spline acceleration.
+
+    Parameters
+    ----------
+    motion : carrier motion
+        A motion of :mod:`slingloads.models.carrier_motion`.
+
+    Returns
+    -------
+    float
+        [m/s^3]
+    """
     if isinstance(motion, (ConstantAcceleration, VelocityStep)):
         return np.inf
     if isinstance(motion, QuinticStep):
@@ -154,7 +171,20 @@ def peak_jerk(motion):
 
 def flyable(motion, limits=None):
     """'' if the carrier can fly ``motion`` within ``limits`` (:class:`CarrierLimits`), else
-    why, with the numbers."""
+    why, with the numbers.
+
+    Parameters
+    ----------
+    motion : carrier motion
+        A motion of :mod:`slingloads.models.carrier_motion`.
+    limits : CarrierLimits, optional
+        The carrier's limits (default :class:`CarrierLimits`).
+
+    Returns
+    -------
+    str
+        '' if flyable, else the limits passed with the numbers.
+    """
     limits = CarrierLimits() if limits is None else limits
     acc = float(getattr(motion, "peak_acceleration", np.nan))
     jerk = peak_jerk(motion)
@@ -275,7 +305,13 @@ class RunMetrics:
         return np.asarray(self.min_tension_ratio) <= 0
 
     def to_dict(self):
-        """Metrics with unit-labelled keys, angles in degrees."""
+        """Metrics with unit-labelled keys, angles in degrees.
+
+        Returns
+        -------
+        dict
+            The metrics by unit-labelled key (deg, s, -).
+        """
         return {
             "max |theta1 - theta2| [deg]": np.degrees(self.max_load_angle),
             "t at max |theta1 - theta2| [s]": self.t_max_load_angle,
@@ -298,6 +334,25 @@ class RunMetrics:
         (``rigid=True``) the angles count only until the tension first goes negative, after
         which that model is not valid. No peak is refined by a parabola across one of the
         ``breakpoints`` [s] (where S'' and so the tension jump).
+
+        Parameters
+        ----------
+        t : ndarray, shape (n,)
+            Sample times. [s]
+        angle : ndarray, shape (..., n)
+            theta1 - theta2. [rad]
+        rope_angle_ : ndarray, shape (..., n)
+            Rope angle theta1. [rad]
+        tension_ratio : ndarray, shape (..., n)
+            Cable tension over the load's weight, T / (m g). [-]
+        rigid : bool
+            The rigid rope (angles count only while it pulls).
+        breakpoints : sequence of float
+            Times at which S'' jumps. [s]
+
+        Returns
+        -------
+        RunMetrics
         """
         taut = np.asarray(tension_ratio) > 0
         if rigid:
@@ -323,6 +378,20 @@ def default_end_time(pendulums, motions, periods=3.0):
 
     Undamped, the two swing modes beat and the largest load angle may come several periods
     after the motion; lengthen the run (or add damping) to check that the maximum has settled.
+
+    Parameters
+    ----------
+    pendulums : sequence of LateralPendulum
+        The cases' pendulums.
+    motions : sequence of carrier motions
+        Their carrier motions (:mod:`slingloads.models.carrier_motion`).
+    periods : float
+        Periods of the slowest swing mode after the motion. [-]
+
+    Returns
+    -------
+    float
+        [s]
     """
     slowest = max(_swing_period(p) for p in pendulums)
     return max(m.end_time for m in motions) + periods * slowest
@@ -394,7 +463,14 @@ class LateralRun:
                                          self.motion.breakpoints)
 
     def to_frame(self):
-        """Time histories with unit-labelled columns (angles in degrees)."""
+        """Time histories with unit-labelled columns (angles in degrees).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per sample: time [s], carrier S [m], S' [m/s], S'' [m/s^2], angles [deg],
+            tension [N] and its factor T/(m g) [-], hub load [N], slack.
+        """
         fy, fz = self.hub_load
         frame = pd.DataFrame({
             "t [s]": self.t,
@@ -605,7 +681,20 @@ def sweep(pendulums, motions, *, solver=None):
 
 def sweep_settings(pendulums, motions, solver=None):
     """``solver`` with the sweep's automatic run length and RK4 step filled in where unset
-    (see :func:`sweep`)."""
+    (see :func:`sweep`).
+
+    Parameters
+    ----------
+    pendulums : sequence of LateralPendulum
+        The cases' pendulums.
+    motions : sequence of carrier motions
+        Their carrier motions (:mod:`slingloads.models.carrier_motion`).
+    solver : SolverSettings, optional
+
+    Returns
+    -------
+    SolverSettings
+    """
     solver = _settings(solver)
     if solver.t_end is None:
         solver = solver.with_defaults(t_end=default_end_time(pendulums, motions))
@@ -811,12 +900,29 @@ class ParameterRanges:
 
     @classmethod
     def nominal(cls):
-        """No variation: the nominal values alone."""
+        """No variation: the nominal values alone.
+
+        Returns
+        -------
+        ParameterRanges
+        """
         return cls((1.0, 1.0), (1.0, 1.0), (1.0, 1.0), 1)
 
     @classmethod
     def spread(cls, roll_inertia=0.2, cg_below_hub=0.2, rope_length=0.2, points=5):
-        """Symmetric ranges 1 -+ the given fractions (each in [0, 1))."""
+        """Symmetric ranges 1 -+ the given fractions (each in [0, 1)).
+
+        Parameters
+        ----------
+        roll_inertia, cg_below_hub, rope_length : float
+            Fractions of the nominal values, each in [0, 1). [-]
+        points : int
+            Factors per range.
+
+        Returns
+        -------
+        ParameterRanges
+        """
         ranges = []
         for name, f in (("roll inertia", roll_inertia), ("CG below hub", cg_below_hub),
                         ("rope length", rope_length)):
@@ -827,7 +933,13 @@ class ParameterRanges:
         return cls(*ranges, points)
 
     def factors(self):
-        """The factors of each range: three 1-D arrays, each with 1 among them. [-]"""
+        """The factors of each range: three 1-D arrays, each with 1 among them. [-]
+
+        Returns
+        -------
+        tuple of three ndarray
+            Roll-inertia, CG and rope-length factors. [-]
+        """
         out = []
         for lo, hi in (self.roll_inertia, self.cg_below_hub, self.rope_length):
             grid = np.linspace(lo, hi, self.points) if self.points > 1 else np.array([1.0])
@@ -835,7 +947,13 @@ class ParameterRanges:
         return tuple(out)
 
     def to_frame(self):
-        """The ranges, one row per parameter."""
+        """The ranges, one row per parameter.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Parameter, lowest and highest factor [-] and points.
+        """
         return pd.DataFrame({
             "parameter": list(self.NAMES),
             "lowest factor [-]": [r[0] for r in (self.roll_inertia, self.cg_below_hub,
@@ -1003,7 +1121,13 @@ class LateralStudy:
                     & (np.asarray(m.max_load_angle) < DOMAIN_ANGLE))
 
     def domain_notes(self):
-        """Why each case is outside the domain, with the time ('' inside). [str]"""
+        """Why each case is outside the domain, with the time ('' inside). [str]
+
+        Returns
+        -------
+        list of str
+            One note per case.
+        """
         m, d = self.metrics, np.degrees
         notes = []
         for k in range(len(self.pendulums)):
@@ -1028,7 +1152,13 @@ class LateralStudy:
 
     def flyable_notes(self):
         """Why each case's carrier motion is beyond :attr:`limits` ('' if flyable or not
-        checked). [str]"""
+        checked). [str]
+
+        Returns
+        -------
+        list of str
+            One note per case (:func:`flyable`).
+        """
         if self.limits is None:
             return [""] * len(self.motions)
         seen = {}
@@ -1127,7 +1257,12 @@ class LateralStudy:
     def caveats(self):
         """What limits the conclusion, in words ('' when nothing): cases outside the domain,
         carrier motions beyond the carrier's limits, cases loading the carrier sideways
-        beyond :data:`CARRIER_FORCE_LIMIT` of its weight."""
+        beyond :data:`CARRIER_FORCE_LIMIT` of its weight.
+
+        Returns
+        -------
+        str
+        """
         reg = np.degrees(self.regulatory_angle)
         n = len(self.pendulums)
         text = ""
@@ -1149,7 +1284,14 @@ class LateralStudy:
         return text
 
     def verdict(self):
-        """The study's conclusion on the 30 deg rule, in words."""
+        """The study's conclusion on the 30 deg rule, in words.
+
+        Returns
+        -------
+        str
+            The largest load angle and the recommended design angle against the regulatory one
+            [deg], with the caveats.
+        """
         found, rec = np.degrees(self.max_load_angle), np.degrees(self.recommended_angle)
         reg = np.degrees(self.regulatory_angle)
         caveats = self.caveats()
@@ -1185,7 +1327,13 @@ class LateralStudy:
                 f"motion set.")
 
     def to_frame(self):
-        """One row per case: inputs and metrics, unit-labelled columns."""
+        """One row per case: inputs and metrics, unit-labelled columns.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per case, units in the column labels (kg, kg m^2, m, s, deg, -).
+        """
         rows = []
         for p, m in zip(self.pendulums, self.motions, strict=True):
             rows.append({
@@ -1219,7 +1367,13 @@ class LateralStudy:
         with the nominal roll inertia, CG and rope, and beside them the largest load angle
         over the stated ranges among the cases inside the model's domain (NaN: none), the
         factors that gave it, the largest tension factor and the number of cases of the
-        ranges outside the domain."""
+        ranges outside the domain.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per nominal case, units in the column labels.
+        """
         frame = self.to_frame()
         per_pendulum = len(self.pendulums) // len({id(p) for p in self.pendulums})
         frame["motion number"] = np.arange(len(frame)) % per_pendulum
@@ -1244,7 +1398,13 @@ class LateralStudy:
         return out[["case", *[c for c in out.columns if c != "case"]]]
 
     def summary_frame(self):
-        """The largest load angle, its case, the margin and the recommended angle."""
+        """The largest load angle, its case, the margin and the recommended angle.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Item, value and unit (deg, m, -).
+        """
         case = self.critical_case
         items = [
             ("cases run", len(self.pendulums), "-"),
@@ -1289,6 +1449,12 @@ class LateralStudy:
         For each of roll inertia, CG below hub and rope length, and each of its factors:
         the maxima over bodies, ropes and motions with the two other parameters nominal
         ("one at a time") and over their whole ranges ("envelope").
+
+        Returns
+        -------
+        pandas.DataFrame
+            Parameter, factor [-], largest load angle [deg] and tension factor [-], one at a time
+            and over the envelope.
         """
         angle = np.degrees(self.metrics.max_load_angle)
         ratio = self.metrics.max_tension_ratio
@@ -1309,7 +1475,14 @@ class LateralStudy:
 
     def tension_frame(self):
         """Largest cable tension factor per carrier motion (over bodies, ropes and ranges)
-        against the hook load factor Nz, with the exceedance flagged."""
+        against the hook load factor Nz, with the exceedance flagged.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per carrier motion: largest and smallest T/(m g) [-], largest load angle [deg],
+            against the hook load factor [-].
+        """
         frame = self.to_frame()
         grouped = frame.groupby("motion description", sort=False)
         out = grouped.agg(**{
@@ -1324,14 +1497,25 @@ class LateralStudy:
 
     def envelope_frame(self):
         """Largest load angle per nominal rope length and peak carrier acceleration, over
-        the stated ranges. Velocity steps (no finite acceleration) are left out."""
+        the stated ranges. Velocity steps (no finite acceleration) are left out.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Nominal rope length [m], peak S'' [g] and largest load angle [deg].
+        """
         frame = self.to_frame()
         frame = frame[np.isfinite(frame["peak S'' [m/s^2]"])]
         return (frame.groupby(["nominal rope length [m]", "peak S'' [g]"], as_index=False)
                 ["max |theta1 - theta2| [deg]"].max())
 
     def frames(self):
-        """Sheet name -> DataFrame, for the Excel report."""
+        """Sheet name -> DataFrame, for the Excel report.
+
+        Returns
+        -------
+        dict of str to pandas.DataFrame
+        """
         return {"lateral summary": self.summary_frame(), "lateral runs": self.to_frame(),
                 "lateral cases": self.case_frame(), "lateral envelope": self.envelope_frame(),
                 "lateral sensitivity": self.sensitivity_frame(),

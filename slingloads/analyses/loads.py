@@ -108,7 +108,18 @@ class AeroEnvelope:
 
     @classmethod
     def corners_and_centre(cls, alpha_range, beta_range):
-        """The four corners and the centre of a rectangular envelope. [rad]"""
+        """The four corners and the centre of a rectangular envelope. [rad]
+
+        Parameters
+        ----------
+        alpha_range, beta_range : (float, float)
+            (lowest, highest) angle of attack and sideslip. [rad]
+
+        Returns
+        -------
+        AeroEnvelope
+            Points ``CENTRE``, ``A+B+``, ``A+B-``, ``A-B+``, ``A-B-``.
+        """
         (a0, a1), (b0, b1) = alpha_range, beta_range
         ids = ("CENTRE", "A+B+", "A+B-", "A-B+", "A-B-")
         return cls(ids, np.array([(a0 + a1) / 2, a1, a1, a0, a0]),
@@ -200,7 +211,12 @@ class DynamicsCases:
         object.__setattr__(self, "line_force", force)
 
     def directions(self):
-        """Unit line directions by id, airframe axes. [-]"""
+        """Unit line directions by id, airframe axes. [-]
+
+        Returns
+        -------
+        dict of str to ndarray, shape (3,)
+        """
         t, p = self.line_theta, self.line_psi
         e = np.column_stack([np.cos(t) * np.cos(p), np.sin(p), np.sin(t) * np.cos(p)])
         return dict(zip(self.line_ids, e, strict=True))
@@ -320,6 +336,10 @@ class LoadsStudy:
         include_vertical, towed : bool, optional
         cone : {"lateral directions", "elliptical"}, optional
 
+        Returns
+        -------
+        LoadsStudy
+
         Examples
         --------
         ``study.with_hook(nz=2.0, lateral_angle_deg=20)``
@@ -340,14 +360,46 @@ class LoadsStudy:
                        description=None):
         """A copy of the study with one mass item changed: ``mass`` [kg], ``position``
         (x, y, z) [m], ``inertia`` (3 x 3 about its own CG) [kg m^2], ``description``
-        (:meth:`MassItems.with_item <slingloads.models.airframe.MassItems.with_item>`)."""
+        (:meth:`MassItems.with_item <slingloads.models.airframe.MassItems.with_item>`).
+
+        Parameters
+        ----------
+        item_id : str
+            Id of an existing mass item.
+        mass : float, optional
+            New mass. [kg]
+        position : array_like, shape (3,), optional
+            New CG (x, y, z). [m]
+        inertia : array_like, shape (3, 3), optional
+            New own inertia about its CG. [kg m^2]
+        description : str, optional
+            New description.
+
+        Returns
+        -------
+        LoadsStudy
+        """
         return replace(self, airframe=self.airframe.with_mass_item(
             item_id, mass=mass, position=position, inertia=inertia, description=description))
 
     def with_station(self, station, x=None, *, station_id=None):
         """A copy of the study with one cut station (id or index) moved to ``x`` [m] or
         renamed (:meth:`Airframe.with_station
-        <slingloads.models.airframe.Airframe.with_station>`)."""
+        <slingloads.models.airframe.Airframe.with_station>`).
+
+        Parameters
+        ----------
+        station : str or int
+            Id or index of the station.
+        x : float, optional
+            Its new x. [m]
+        station_id : str, optional
+            Its new id.
+
+        Returns
+        -------
+        LoadsStudy
+        """
         return replace(self, airframe=self.airframe.with_station(station, x,
                                                                  station_id=station_id))
 
@@ -355,7 +407,27 @@ class LoadsStudy:
                         chute=None, mast_feet_ids=None):
         """A copy of the study with hardpoints changed: ``hub``, ``mast_feet``, ``chute``
         [m], ``mast_weights``, ``mast_axis`` [-] (:meth:`Airframe.with_hardpoints
-        <slingloads.models.airframe.Airframe.with_hardpoints>`)."""
+        <slingloads.models.airframe.Airframe.with_hardpoints>`).
+
+        Parameters
+        ----------
+        hub : array_like, shape (3,), optional
+            Rotor hub centre. [m]
+        mast_feet : array_like, shape (k, 3), optional
+            Mast attachment points. [m]
+        mast_weights : array_like, shape (k,), optional
+            Weights of the rigid-body share of the hub load among the feet. [-]
+        mast_axis : array_like, shape (3,), optional
+            Direction of the mast, from the deck towards the hub. [-]
+        chute : array_like, shape (3,), optional
+            Parachute attachment point. [m]
+        mast_feet_ids : sequence of str, optional
+            Ids of the mast feet.
+
+        Returns
+        -------
+        LoadsStudy
+        """
         return replace(self, airframe=self.airframe.with_hardpoints(
             hub=hub, mast_feet=mast_feet, mast_weights=mast_weights, mast_axis=mast_axis,
             chute=chute, mast_feet_ids=mast_feet_ids))
@@ -406,7 +478,14 @@ class LoadsStudy:
 
     def hook_table(self):
         """The hook-load directions about the attitude's vertical (see
-        :func:`~slingloads.analyses.hook_loads.hook_directions`)."""
+        :func:`~slingloads.analyses.hook_loads.hook_directions`).
+
+        Returns
+        -------
+        pandas.DataFrame
+            :func:`~slingloads.analyses.hook_loads.hook_directions`: one row per direction, its
+            azimuth and inclination [deg] and unit vector [-].
+        """
         return hook_directions(self.hook, self.vertical)
 
     def case_matrix(self):
@@ -416,6 +495,12 @@ class LoadsStudy:
         parachute on/off, then the towed-flight equilibrium cases (hook ``TOW``) per
         aerodynamic point with and without parachute (none without aerodynamic point and
         parachute: that is the vertical case), then the listed cases.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per case: id, hook direction, aerodynamic point, parachute, source, angles
+            [deg] (units in the column labels).
         """
         hooks = self.hook_table()
         aero_ids = list(self.envelope.ids) if self.envelope is not None else [NO_AERO]
@@ -498,6 +583,15 @@ class LoadsStudy:
     def run(self, check_closure=True):
         """Compute every case. Returns a :class:`LoadsResult`.
 
+        Parameters
+        ----------
+        check_closure : bool
+            Refuse a case whose free-free residual is over the tolerance.
+
+        Returns
+        -------
+        LoadsResult
+
         Raises
         ------
         ClosureError
@@ -576,6 +670,11 @@ class LoadsStudy:
 
     def applied_loads(self, cases):
         """Applied loads (gravity, hook, aerodynamics, parachute) at every load point.
+
+        Parameters
+        ----------
+        cases : pandas.DataFrame
+            Cases of :meth:`case_matrix`.
 
         Returns
         -------
@@ -770,7 +869,14 @@ class LoadsResult:
 
     def case_table(self):
         """Case matrix with the cable's direction and the inside-cone flag, load factors
-        (airframe axes and along the vertical), angular accelerations and closure residual."""
+        (airframe axes and along the vertical), angular accelerations and closure residual.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per case: the case matrix, load factors [-], angular accelerations [rad/s^2]
+            and the closure residual (units in the column labels).
+        """
         out = self.cases.copy()
         if self.vertical_load_factor is not None:
             out["n vertical [-]"] = self.vertical_load_factor
@@ -787,7 +893,13 @@ class LoadsResult:
         attitude (pitch, roll; alpha, beta) and whether it lies inside the aerodynamic
         envelope, the trimmed cable's angle from the vertical (at Nz and at 1 g) and
         azimuth, the cone's inclination there and whether the cable lies inside the hook
-        cone."""
+        cone.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per towed case, angles [deg].
+        """
         columns = ["case", "aero", "alpha [deg]", "beta [deg]", "chute",
                    "cable angle from vertical [deg]", "cable angle at 1 g [deg]",
                    "cable azimuth [deg]", "cone angle at that azimuth [deg]",
@@ -840,7 +952,18 @@ class LoadsResult:
         return out
 
     def to_frame(self, ultimate=False):
-        """Long SFBM table: ``case, station, x_m, Vx_N, Vy_N, Vz_N, Mx_Nm, My_Nm, Mz_Nm``."""
+        """Long SFBM table: ``case, station, x_m, Vx_N, Vy_N, Vz_N, Mx_Nm, My_Nm, Mz_Nm``.
+
+        Parameters
+        ----------
+        ultimate : bool
+            The ultimate loads (the ultimate factor x the limit loads) instead of the limit loads.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per case and station: x [m], shear forces [N] and moments [N m].
+        """
         loads = self.ultimate if ultimate else self.loads
         c, s, _ = loads.shape
         flat = loads.reshape(c * s, 6)
@@ -921,13 +1044,31 @@ class LoadsResult:
 
     def hull(self, station, pair=("Vy", "Mz")):
         """Convex hull of two components at a station (id or index): ``case`` and the two
-        components' columns (``Vy_N``, ``Mz_Nm``; SI; :func:`convex_hull`)."""
+        components' columns (``Vy_N``, ``Mz_Nm``; SI; :func:`convex_hull`).
+
+        Parameters
+        ----------
+        station : str or int
+            Id or index of a cut station.
+        pair : (str, str)
+            Two components of ``Vx, Vy, Vz, Mx, My, Mz``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Hull vertices (:func:`~slingloads.analyses.envelopes.convex_hull`; N, N m).
+        """
         index = self._station_index(station)
         return convex_hull(self.loads, self.case_ids, index, pair)
 
     def comparison(self):
         """Exceedance over the previous design envelope, or None if none was given (a copy of
-        the table, which is computed once: the report reads it three times)."""
+        the table, which is computed once: the report reads it three times).
+
+        Returns
+        -------
+        pandas.DataFrame or None
+        """
         return None if self._comparison is None else self._comparison.copy()
 
     @cached_property

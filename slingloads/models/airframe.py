@@ -133,6 +133,16 @@ class MassItems:
     def index(self, item_id):
         """Position of the item ``item_id`` in the arrays.
 
+        Parameters
+        ----------
+        item_id : str
+            Id of a mass item.
+
+        Returns
+        -------
+        int
+            Its row in ``mass``, ``position`` and ``inertia``.
+
         Raises
         ------
         InputError
@@ -186,7 +196,25 @@ class MassItems:
 
     def with_added(self, item_id, mass, position, inertia=None, description=""):
         """A copy with one more item (arguments as in :meth:`with_item`, [kg], [m],
-        [kg m^2]); the id must be new."""
+        [kg m^2]); the id must be new.
+
+        Parameters
+        ----------
+        item_id : str
+            Id of the new item (not already used).
+        mass : float
+            Its mass. [kg]
+        position : array_like, shape (3,)
+            Its CG (x, y, z). [m]
+        inertia : array_like, shape (3, 3), optional
+            Its own inertia about its CG (default zero: a point mass). [kg m^2]
+        description : str
+            Free text.
+
+        Returns
+        -------
+        MassItems
+        """
         own = np.zeros((3, 3)) if inertia is None else np.asarray(inertia, float)
         return MassItems((*self.ids, str(item_id)), np.r_[self.mass, float(mass)],
                          np.vstack([self.position, np.asarray(position, float).reshape(1, 3)]),
@@ -194,7 +222,17 @@ class MassItems:
                          (*self.description, str(description)))
 
     def without(self, item_id):
-        """A copy without the item ``item_id``."""
+        """A copy without the item ``item_id``.
+
+        Parameters
+        ----------
+        item_id : str
+            Id of an existing item.
+
+        Returns
+        -------
+        MassItems
+        """
         keep = np.arange(len(self.ids)) != self.index(item_id)
         return MassItems(tuple(np.asarray(self.ids, dtype=object)[keep]), self.mass[keep],
                          self.position[keep], self.inertia[keep],
@@ -224,7 +262,14 @@ class MassItems:
         return (self.inertia + parallel).sum(axis=0)
 
     def to_frame(self):
-        """Mass items as a DataFrame (SI)."""
+        """Mass items as a DataFrame (SI).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per item: id, description, mass [kg], CG x, y, z [m] and the six inertia
+            components [kg m^2].
+        """
         return pd.DataFrame({
             "id": self.ids, "description": self.description, "mass [kg]": self.mass,
             "x [m]": self.position[:, 0], "y [m]": self.position[:, 1],
@@ -292,6 +337,17 @@ def check_inside(mass_items, reference_axis, label, point):
 
     Inside means: x within the mass items' x range (where the beam exists), and a distance
     from the loads reference axis (y0, z0) [m] no larger than that x range (at least 1 m).
+
+    Parameters
+    ----------
+    mass_items : MassItems
+        The airframe's mass items (their x range is where the beam exists).
+    reference_axis : (float, float)
+        (y0, z0) of the loads reference axis. [m]
+    label : str
+        Name of the point, for the message.
+    point : array_like, shape (3,)
+        The point (x, y, z). [m]
     """
     point = np.asarray(point, dtype=float)
     x = mass_items.position[:, 0]
@@ -392,13 +448,41 @@ class Airframe:
                        description=None):
         """A copy with one mass item changed (:meth:`MassItems.with_item`: ``mass`` [kg],
         ``position`` [m], ``inertia`` [kg m^2], ``description``); the aerodynamic points
-        stay where they are."""
+        stay where they are.
+
+        Parameters
+        ----------
+        item_id : str
+            Id of an existing mass item.
+        mass : float, optional
+            New mass. [kg]
+        position : array_like, shape (3,), optional
+            New CG (x, y, z). [m]
+        inertia : array_like, shape (3, 3), optional
+            New own inertia about its CG. [kg m^2]
+        description : str, optional
+            New description.
+
+        Returns
+        -------
+        Airframe
+        """
         items = self.mass_items.with_item(item_id, mass=mass, position=position,
                                           inertia=inertia, description=description)
         return replace(self, mass_items=items)
 
     def station_index(self, station):
         """Position of a cut station given by id or index.
+
+        Parameters
+        ----------
+        station : str or int
+            Id or index of a cut station.
+
+        Returns
+        -------
+        int
+            Its index in ``stations``.
 
         Raises
         ------
@@ -427,6 +511,10 @@ class Airframe:
             Its new x. [m]
         station_id : str, optional
             Its new id.
+
+        Returns
+        -------
+        Airframe
         """
         i = self.station_index(station)
         x_all, ids = self.stations.copy(), list(self.station_ids)
@@ -437,14 +525,46 @@ class Airframe:
         return replace(self, stations=x_all, station_ids=tuple(ids))
 
     def with_stations(self, stations, station_ids=()):
-        """A copy with new cut stations [m] (ids default to ``FS<x in m>``)."""
+        """A copy with new cut stations [m] (ids default to ``FS<x in m>``).
+
+        Parameters
+        ----------
+        stations : array_like, shape (s,)
+            x of the cut stations. [m]
+        station_ids : sequence of str
+            Their ids (default ``FS<x in m>``).
+
+        Returns
+        -------
+        Airframe
+        """
         return replace(self, stations=stations, station_ids=tuple(station_ids))
 
     def with_hardpoints(self, *, hub=None, mast_feet=None, mast_weights=None, mast_axis=None,
                         chute=None, mast_feet_ids=None):
         """A copy with hardpoints changed (:class:`Hardpoints`: ``hub``, ``mast_feet``,
         ``chute`` [m]; ``mast_weights``, ``mast_axis`` [-]; ``mast_feet_ids``); what is not
-        given stays as it is. New mast feet drop the former weights and ids unless given."""
+        given stays as it is. New mast feet drop the former weights and ids unless given.
+
+        Parameters
+        ----------
+        hub : array_like, shape (3,), optional
+            Rotor hub centre. [m]
+        mast_feet : array_like, shape (k, 3), optional
+            Mast attachment points. [m]
+        mast_weights : array_like, shape (k,), optional
+            Weights of the rigid-body share of the hub load among the feet. [-]
+        mast_axis : array_like, shape (3,), optional
+            Direction of the mast, from the deck towards the hub. [-]
+        chute : array_like, shape (3,), optional
+            Parachute attachment point. [m]
+        mast_feet_ids : sequence of str, optional
+            Ids of the mast feet.
+
+        Returns
+        -------
+        Airframe
+        """
         hp = self.hardpoints
         changes = {k: v for k, v in (("hub", hub), ("mast_feet", mast_feet),
                                      ("mast_weights", mast_weights), ("mast_axis", mast_axis),
@@ -468,7 +588,13 @@ class Airframe:
             check_inside(self.mass_items, self.reference_axis, label, point)
 
     def station_points(self):
-        """Points of the reference axis at the cut stations, shape (s, 3). [m]"""
+        """Points of the reference axis at the cut stations, shape (s, 3). [m]
+
+        Returns
+        -------
+        ndarray, shape (s, 3)
+            (x, y0, z0) of each cut station. [m]
+        """
         y0, z0 = self.reference_axis
         return np.column_stack([self.stations, np.full(self.stations.shape, y0),
                                 np.full(self.stations.shape, z0)])
@@ -577,6 +703,10 @@ def hanging_roll_axis(airframe):
 
     The body x axis with its component along the hanging vertical removed: the axis about
     which the hanging airframe rolls under a sideways motion of its carrier.
+
+    Parameters
+    ----------
+    airframe : Airframe
 
     Returns
     -------

@@ -15,12 +15,27 @@ as compiled functions on a state of n elements and the stage derivatives ``K`` (
   rejection, at least a fifth);
 * :func:`dense`: the fourth-order dense output at a fraction theta of the step.
 
-The integrators of the multibody model (:mod:`slingloads.models.multibody.integrator`) and of
-the yaw sweep (:mod:`slingloads.models.yaw_batch`) are built on them; what differs between
-them is what their models need around a step (the segments between the inputs' jumps, the
-samples, what a run that leaves its tables does). The tableau is read by the compiled
+The step loop around them is written once too: :func:`integrator` takes a model's compiled
+right-hand side and returns the compiled loop that integrates one run with it (step-size
+control, accept or reject, the segments between the inputs' jumps, the samples from the dense
+output, a run that leaves its tables, a work budget). The multibody model
+(:mod:`slingloads.models.multibody.integrator`) and the yaw sweep
+(:mod:`slingloads.models.yaw_batch`) are built on it; what differs between them is their
+right-hand side and what they keep at the samples. The tableau is read by the compiled
 functions as constants, and the functions are inlined into the integrators at numba's level
-(``inline="always"``: no call, no reference counting of the arrays handed on).
+(``inline="always"``: no call, no reference counting of the arrays handed on); the machine code
+of each pairing is cached on disk (``cache=True``).
+
+The loop is the one of :func:`scipy.integrate.solve_ivp`'s ``RK45`` stepped segment by segment,
+each segment from the step the previous one ended with (``tests/test_dormand_prince.py``
+checks it against scipy's ``RK45`` class): the trial step is ``min(h, max_step)``; a step that
+reaches the segment's end ``b``, or ends within :data:`END_SNAP` output intervals before it,
+ends exactly at ``b`` (its last stages see the input just before ``b``); a step is rejected
+when its error norm exceeds 1 (the step then shrinks, :func:`shrink`) and the next one grows by
+:func:`grow`. Two rules are the models': a stage outside the model's tables (the right-hand
+side returns a nonzero flag) halves the step, and below :data:`SMALLEST_STEP` the run stops
+there; a derivative outside the tables at a segment's start (after an input's jump) stops the
+run at once.
 """
 
 import math
@@ -194,3 +209,189 @@ def dense(x, K, h, theta, weights, acc, out):
             acc[m] += K[i, m] * w
     for m in range(n):
         out[m] = x[m] + h * theta * acc[m]
+
+
+#: Smallest adaptive step of a run whose stages leave the model's tables, before it stops. [s]
+SMALLEST_STEP = 1e-6
+#: A step that ends within this fraction of the output interval before a segment's end is
+#: stretched to end at it; a sample within it of a step's end is taken from that step. [-]
+END_SNAP = 1e-9
+#: Phase of a right-hand side call at a sample (:func:`integrator`); 0 to 6 are the stages.
+SAMPLE = 7
+#: How a run ended (:func:`integrator`): at its end, outside the model's tables, over the
+#: budget of steps.
+DONE, LEFT, OVER_BUDGET = 0, 1, 2
+
+
+def integrator(rhs, project):
+    """The compiled Dormand-Prince step loop of one run, for the right-hand side ``rhs``.
+
+    Parameters
+    ----------
+    rhs : numba dispatcher
+        Compiled ``rhs(phase, t, s, k, y, args, dx) -> int``, best compiled with
+        ``inline="always"``. With ``phase`` 0 to 6 it writes into ``dx`` (n,) the derivative
+        at stage ``phase`` of a step in segment ``s``, state ``y`` (n,) at time ``t`` [s]
+        (phase 0: at the segment's start, once per segment; 6: at the fifth-order solution,
+        the next step's first derivative) and returns a flag, nonzero when ``y`` is outside
+        the model's tables. With ``phase`` :data:`SAMPLE` it is handed ``y``, the state at
+        sample ``k`` (time ``k interval``; sample 0 is the initial state, the others the dense
+        output), to keep what it needs; it returns a flag too (returned for a run of no
+        segment). ``args`` is the model's tuple, passed through untouched. The loop calls it
+        at one place only, so that the model's equations are compiled into it once.
+    project : numba dispatcher
+        Compiled ``project(x)``: what the model does to the state after every accepted step,
+        in place (a quaternion renormalised), or nothing.
+
+    Returns
+    -------
+    run : numba dispatcher
+        Compiled ``run(x, ends, segments, interval, n_out, fixed, rtol, atol, max_step,
+        first_step, max_steps, stop, args) -> (status, flag, t, accepted, sampled)``,
+        inlined into its caller. It integrates state ``x`` (n,; updated in place to the last
+        accepted state) from t = 0 over ``segments`` segments ending at ``ends`` [s] (each
+        from the previous one's end), sampling ``n_out`` samples every ``interval`` [s].
+        ``fixed`` > 0: that fixed step [s], without error control (a stage outside the
+        tables then stops the run at once); else adaptive: the local error estimate within
+        ``atol + rtol max(|x|, |x_new|)`` (root mean square over the states, tolerances
+        [-] and units of the states), steps at most ``max_step`` [s], the first
+        ``first_step`` [s]. A run that would try more than ``max_steps`` steps (accepted or
+        rejected), or finds ``stop[0]`` (int64 array shared by the runs) nonzero, sets
+        ``stop[0] = 1`` and ends. ``status`` is :data:`DONE`, :data:`LEFT` or
+        :data:`OVER_BUDGET`; ``flag`` the right-hand side's flag that stopped it (or that of
+        sample 0 for no segment); ``t`` the time reached [s] (where it stopped); ``accepted``
+        the steps accepted; ``sampled`` the samples handed to ``rhs`` (the rest are the
+        caller's to fill).
+    """
+
+    @_jit
+    def run(x, ends, segments, interval, n_out, fixed, rtol, atol, max_step, first_step,
+            max_steps, stop, args):
+        n = x.size
+        K = np.empty((7, n))
+        y = np.empty(n)
+        x_new = np.empty(n)
+        dx = np.empty(n)
+        acc = np.empty(n)
+        weights = np.empty(7)
+        snap = END_SNAP * interval
+        t = 0.0
+        t_new = 0.0
+        h = first_step
+        h_next = first_step
+        b = 0.0
+        s = 0
+        sample = 0
+        accepted = 0
+        tried = 0
+        rejected = False
+        last = False
+        stage_flag = 0
+        status = DONE
+        flag = 0
+        new_step = False
+        phase = SAMPLE
+        while True:
+            if new_step:  # --------------------------------------------- a trial step
+                new_step = False
+                if tried == max_steps or stop[0] != 0:  # over budget: the run ends
+                    stop[0] = 1
+                    status = OVER_BUDGET
+                    break
+                tried += 1
+                h = min(h, max_step)
+                last = t + h >= b - snap
+                if last:
+                    h = b - t
+                stage_flag = 0
+                phase = 1
+            # ------------------------------------------------------------- one evaluation
+            # (the one call of the right-hand side, on y: its equations are compiled in once)
+            if phase == SAMPLE:
+                when = sample * interval
+                if sample == 0:
+                    for m in range(n):
+                        y[m] = x[m]
+                else:
+                    dense(x, K, h, (when - t) / h, weights, acc, y)
+            elif phase == 0:
+                for m in range(n):
+                    y[m] = x[m]
+                when = t
+            else:
+                stage(x, h, K, phase, acc, y)
+                when = b if (last and C[phase] == 1.0) else t + C[phase] * h
+            f = rhs(phase, when, s, sample, y, args, dx)
+            if phase != SAMPLE:
+                for m in range(n):
+                    K[phase, m] = dx[m]
+            # ------------------------------------------------------------- what next
+            if phase == SAMPLE:
+                sample += 1
+                if sample == 1:  # the initial state
+                    if segments == 0:
+                        flag = f
+                        break
+                    b = ends[0]
+                    phase = 0
+                    continue
+                if sample < n_out and sample * interval <= t_new + snap:
+                    continue
+            elif phase == 0:
+                if f != 0:  # outside the tables at the segment's start: stop there
+                    status = LEFT
+                    flag = f
+                    break
+                new_step = True
+                continue
+            else:
+                stage_flag |= f
+                if phase < 6:
+                    phase += 1
+                    continue
+                # y, the last stage's argument, is the fifth-order solution
+                for m in range(n):
+                    x_new[m] = y[m]
+                if stage_flag != 0:  # a stage left the tables: a shorter step, or stop
+                    if fixed > 0.0 or h < 2.0 * SMALLEST_STEP:
+                        status = LEFT
+                        flag = stage_flag
+                        break
+                    h *= 0.5
+                    rejected = True
+                    new_step = True
+                    continue
+                if fixed > 0.0:
+                    h_next = fixed
+                else:
+                    err = error_norm(x, x_new, K, h, rtol, atol, acc)
+                    if err > 1.0:
+                        h *= shrink(err)
+                        rejected = True
+                        new_step = True
+                        continue
+                    h_next = h * grow(err, rejected)
+                    rejected = False
+                t_new = b if last else t + h
+                if sample < n_out and sample * interval <= t_new + snap:
+                    phase = SAMPLE
+                    continue
+            # ----------------------------------------------------------- step accepted
+            accepted += 1
+            t = t_new
+            for m in range(n):
+                x[m] = x_new[m]
+                K[0, m] = K[6, m]
+            project(x)
+            h = h_next
+            if last:
+                s += 1
+                if s == segments:
+                    break
+                b = ends[s]
+                phase = 0
+            else:
+                new_step = True
+        return status, flag, t, accepted, sample
+
+    return run

@@ -41,8 +41,7 @@ import math
 import numba
 import numpy as np
 
-from slingloads.models.dormand_prince import C as DP_C
-from slingloads.models.dormand_prince import dense, error_norm, grow, shrink, stage
+from slingloads.models.dormand_prince import LEFT, OVER_BUDGET, SAMPLE, integrator
 from slingloads.models.runge_kutta import rk4_stepper
 from slingloads.models.yaw_moments import INERTIA, TAS, make_yaw_moments
 
@@ -52,8 +51,6 @@ _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True
 
 #: Chunks of runs of the adaptive kernel, each run j in chunk j mod CHUNKS.
 CHUNKS = 64
-#: Smallest adaptive step before a run that leaves a table is stopped. [s]
-SMALLEST_STEP = 1e-6
 
 
 @_jit
@@ -271,6 +268,45 @@ def relative_wind(v, tas):
     return math.atan2(v, tas), math.sqrt(tas * tas + v * v)
 
 
+@_inline_jit
+def _dopri_rhs(phase, t, s, k, y, args, dx):
+    """The right-hand side of the Dormand-Prince loop (:func:`slingloads.models.dormand_prince.
+    integrator`), state ``y`` = (psi [rad], r [rad/s]) at time ``t`` [s] of segment ``s``;
+    at a sample, ``y`` is kept in the run's row of the histories. The gust is evaluated from
+    the segment's piece (:func:`gust_value`); on a steady piece the relative wind is computed
+    at the segment's start (phase 0) and kept in ``wind`` for its stages. Returns 1 outside a
+    table."""
+    (j, g, area, seg_piece, p_start, p_coef, h_off, h_count, harm, M, fus_x, fus_n, fus_s,
+     fin_x, fin_k, fin_s, lo, wind, out_psi, out_rate) = args
+    if phase == SAMPLE:
+        out_psi[j, k] = y[0]
+        out_rate[j, k] = y[1]
+        return 0
+    piece = seg_piece[g, s]
+    c0, c1, count = p_coef[g, piece, 0], p_coef[g, piece, 1], h_count[g, piece]
+    if c1 == 0.0 and count == 0:  # steady: the relative wind of the segment
+        if phase == 0:
+            wind[0], wind[1] = relative_wind(c0, M[TAS])
+        gamma, v_rel = wind[0], wind[1]
+    else:
+        gamma, v_rel = relative_wind(
+            gust_value(t, p_start[g, piece], c0, c1, p_coef[g, piece, 2], h_off[g, piece],
+                       count, harm), M[TAS])
+    rate_dot, outside = yaw_acceleration(y[0], y[1], gamma, v_rel, area, M, fus_x, fus_n,
+                                         fus_s, fin_x, fin_k, fin_s, lo)
+    dx[0] = y[1]
+    dx[1] = rate_dot
+    return 1 if outside else 0
+
+
+@_inline_jit
+def _no_projection(x):
+    """The yaw state needs nothing after a step."""
+
+
+_dopri_loop = integrator(_dopri_rhs, _no_projection)
+
+
 @_jit
 def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p_coef, h_off,
                h_count, harm, interval, rtol, atol, max_step, first_step, max_steps, stop, M,
@@ -278,97 +314,25 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
                steps):
     """Run ``j`` of :func:`dopri_batch` (same arguments)."""
     n_out = out_psi.shape[1]
-    tas = M[TAS]
-    K = np.empty((7, 2))
-    x = np.empty(2)
-    y = np.empty(2)
-    acc = np.empty(2)
-    sampled = np.empty(2)
-    weights = np.empty(7)
-    lo = np.zeros(2, dtype=np.int64)
     g = index[j]
-    area = areas[j]
+    x = np.empty(2)
     x[0], x[1] = psi0[j], rate0[j]
-    out_psi[j, 0], out_rate[j, 0] = x[0], x[1]
-    sample = 1
-    t = 0.0
-    h = first_step
-    gone = False
-    accepted = 0
-    tried = 0
-    rejected = False
-    for s in range(n_seg[g]):
-        b = seg_end[g, s]
-        k = seg_piece[g, s]
-        start, c0, c1, ref = p_start[g, k], p_coef[g, k, 0], p_coef[g, k, 1], p_coef[g, k, 2]
-        first, count = h_off[g, k], h_count[g, k]
-        steady = c1 == 0.0 and count == 0
-        gamma, v_rel = relative_wind(c0, tas)
-        if not steady:
-            gamma, v_rel = relative_wind(
-                gust_value(t, start, c0, c1, ref, first, count, harm), tas)
-        rate_dot, o = yaw_acceleration(x[0], x[1], gamma, v_rel, area, M, fus_x, fus_n, fus_s,
-                                       fin_x, fin_k, fin_s, lo)
-        K[0, 0], K[0, 1] = x[1], rate_dot
-        gone = o
-        while not gone and t < b:
-            if tried == max_steps or stop[0] != 0:  # over budget: the call is refused
-                stop[0] = 1
-                steps[j] = -1
-                return
-            tried += 1
-            h = min(h, max_step)
-            last = t + h >= b - 1e-12 * max(1.0, b)
-            if last:
-                h = b - t
-            # stages 2 to 7 (7: at the fifth-order solution, first same as last)
-            outside = False
-            for i in range(1, 7):
-                stage(x, h, K, i, acc, y)
-                if not steady:
-                    when = b if (last and DP_C[i] == 1.0) else t + DP_C[i] * h
-                    gamma, v_rel = relative_wind(
-                        gust_value(when, start, c0, c1, ref, first, count, harm), tas)
-                rate_dot, o = yaw_acceleration(y[0], y[1], gamma, v_rel, area, M, fus_x,
-                                               fus_n, fus_s, fin_x, fin_k, fin_s, lo)
-                K[i, 0], K[i, 1] = y[1], rate_dot
-                outside = outside or o
-            # y, the last stage's argument, is the solution
-            if outside:
-                if h < 2.0 * SMALLEST_STEP:
-                    gone = True
-                    break
-                h *= 0.5
-                rejected = True
-                continue
-            err = error_norm(x, y, K, h, rtol, atol, acc)
-            if err > 1.0:
-                h *= shrink(err)
-                rejected = True
-                continue
-            t_new = b if last else t + h
-            # dense output at the samples in (t, t_new]
-            while sample < n_out and sample * interval <= t_new + 1e-9 * interval:
-                dense(x, K, h, (sample * interval - t) / h, weights, acc, sampled)
-                out_psi[j, sample] = sampled[0]
-                out_rate[j, sample] = sampled[1]
-                sample += 1
-            accepted += 1
-            t = t_new
-            x[0], x[1] = y[0], y[1]
-            K[0, 0], K[0, 1] = K[6, 0], K[6, 1]
-            h *= grow(err, rejected)
-            rejected = False
-        if gone:
-            break
-    if gone:
+    args = (j, g, areas[j], seg_piece, p_start, p_coef, h_off, h_count, harm, M, fus_x, fus_n,
+            fus_s, fin_x, fin_k, fin_s, np.zeros(2, dtype=np.int64), np.empty(2), out_psi,
+            out_rate)
+    status, _, t, accepted, sample = _dopri_loop(x, seg_end[g], n_seg[g], interval, n_out, 0.0,
+                                                 rtol, atol, max_step, first_step, max_steps,
+                                                 stop, args)
+    if status == OVER_BUDGET:  # the call is refused
+        steps[j] = -1
+        return
+    if status == LEFT:  # frozen from then
         left[j] = True
         exit_time[j] = t
         x[1] = 0.0
-    while sample < n_out:
-        out_psi[j, sample] = x[0]
-        out_rate[j, sample] = x[1]
-        sample += 1
+    for k in range(sample, n_out):
+        out_psi[j, k] = x[0]
+        out_rate[j, k] = x[1]
     steps[j] = accepted
 
 
@@ -384,7 +348,8 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     segment s on piece ``seg_piece[g, s]`` of the gust; on a steady piece (c1 = 0, no terms)
     the relative wind is computed once for the segment. The local error estimate is kept within
     ``atol + rtol max(|y|, |y_new|)`` (root mean square over psi and r) and the step within
-    ``max_step``. A stage outside a table halves the step, and below :data:`SMALLEST_STEP` the
+    ``max_step``. A stage outside a table halves the step, and below
+    :data:`~slingloads.models.dormand_prince.SMALLEST_STEP` the
     run stops (its state frozen from then, its rate set to zero). A run that would try more than
     ``max_steps`` steps (accepted or rejected) sets ``stop[0]``, and every run then stops at once
     with ``steps[j] = -1``: the call is to be refused, its histories are not complete.

@@ -77,6 +77,19 @@ class RunSettings:
         object.__setattr__(self, "dt", dt)
 
     def as_dict(self, t_end=None):
+        """The settings as the keyword arguments of the runs.
+
+        Parameters
+        ----------
+        t_end : float, optional
+            Run length instead of the settings' own. [s]
+
+        Returns
+        -------
+        dict
+            ``t_end``, ``dt``, ``output_interval`` [s], ``rtol`` [-] and ``atol`` [SI], the keyword
+            arguments of the multibody runs.
+        """
         return {"t_end": self.t_end if t_end is None else float(t_end), "dt": self.dt,
                 "output_interval": self.output_interval, "rtol": self.rtol,
                 "atol": self.atol}
@@ -190,7 +203,20 @@ class Campaign:
 
     def run_jobs(self, keys):
         """(run ids, jobs) of the matrix: jobs (key, system, manoeuvre), one system object per
-        distinct area and condition, in matrix order."""
+        distinct area and condition, in matrix order.
+
+        Parameters
+        ----------
+        keys : KeyMaker
+            Keys of the runs (:class:`~.keys.KeyMaker`).
+
+        Returns
+        -------
+        ids : list of str
+            Run ids, in matrix order.
+        jobs : list of (str, SlingSystem, Manoeuvre)
+            Key, system and manoeuvre of each run.
+        """
         systems, manoeuvres, jobs, ids = {}, {}, [], []
         for _, row in self.matrix.frame.iterrows():
             cond = tuple(row[c] for c in ("area factor [-]", "airspeed EAS [m/s]", "mass case",
@@ -266,7 +292,18 @@ class CampaignResult:
 
     def history(self, run):
         """Time histories of one run (a matrix run id, or (helicopter, target [m/s]) of the
-        study without parachute), unit-labelled columns (angles in degrees)."""
+        study without parachute), unit-labelled columns (angles in degrees).
+
+        Parameters
+        ----------
+        run : str or (str, float)
+            A matrix run id, or (helicopter, target airspeed [m/s]) of the study without parachute.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per sample, units in the column labels (s, m, m/s, N, deg).
+        """
         key = self.keys.get(run)
         if key is None and self.no_parachute is not None:
             key = self.no_parachute.keys.get(run)
@@ -296,6 +333,18 @@ def neutral_check(campaign, metrics):
     30 ft/s lateral gusts (120 s, step 0.1 s); the multibody verdict of every condition of the
     matrix from its eigenvalues at exactly the neutral area, and from its runs when the matrix
     has factor 1.
+
+    Parameters
+    ----------
+    campaign : Campaign
+    metrics : pandas.DataFrame
+        The campaign's metrics, one row per run (units in the column labels).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per model, condition and test: verdict, peak sideslip [deg] and damping
+        ratio [-].
     """
     m = campaign.matrix
     speed = float(m.frame["airspeed EAS [m/s]"].max())
@@ -429,7 +478,28 @@ def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one
     """The parachute decision of a campaign (:func:`~slingloads.analyses.parachute_decision.
     decide`), with a 1-DOF sizing sweep if given; the 1-DOF verdicts at the chosen area from
     the campaign's yaw model at its highest airspeed (as :func:`neutral_check`) unless
-    ``one_dof`` is given."""
+    ``one_dof`` is given.
+
+    Parameters
+    ----------
+    campaign : Campaign
+    metrics : pandas.DataFrame
+        The campaign's metrics, one row per run (units in the column labels).
+    selection : Selection
+        The campaign's parachute selection.
+    sweep : SweepResult, optional
+        The 1-DOF sizing sweep.
+    static : NeutralAreaResult, optional
+        The neutral area (default the campaign's).
+    one_dof : callable, optional
+        ``one_dof(area)`` -> DataFrame of the 1-DOF runs at an area [m^2].
+    study_area : float, optional
+        The study's parachute area (default that of the campaign's system). [m^2]
+
+    Returns
+    -------
+    ParachuteDecision
+    """
     from slingloads.analyses.parachute_decision import decide
 
     from .selection import stable_runs

@@ -76,9 +76,30 @@ class MemoryStore:
         return len(self._records)
 
     def get(self, key):
+        """The record of run ``key``, or None.
+
+        Parameters
+        ----------
+        key : str
+            Key of a run.
+
+        Returns
+        -------
+        (dict, ndarray or None) or None
+            The run's record (metrics, histories), or None if it is not stored.
+        """
         return self._records.get(key)
 
     def put(self, key, record):
+        """Store the record of run ``key``.
+
+        Parameters
+        ----------
+        key : str
+            Key of a run.
+        record : (dict, ndarray)
+            Its metrics and histories (the histories dropped unless kept).
+        """
         metrics, histories = record
         self._records[key] = (metrics, histories if self.keep_histories else None)
 
@@ -94,6 +115,18 @@ def record_problem(record, rows=None):
     booleans or None holding at least :data:`REQUIRED_METRICS`; ``histories`` a float array
     of ``rows`` (if given) x ``len(HISTORY_LABELS)``. A store (the disk cache) checks what
     it reads with this, so that a damaged or foreign entry counts as missing.
+
+    Parameters
+    ----------
+    record : object
+        What a store read for a run.
+    rows : int, optional
+        Samples the histories must have.
+
+    Returns
+    -------
+    str or None
+        The problem, or None for a usable record.
     """
     import numpy as np
 
@@ -141,7 +174,13 @@ class _Executor:
 
 
 class InProcess(_Executor):
-    """The batches one after the other in this process (module notes)."""
+    """The batches one after the other in this process (module notes).
+
+    Parameters
+    ----------
+    threads : int, optional
+        Kernel threads of each batch (default: the cores).
+    """
 
     workers = 1
 
@@ -150,9 +189,27 @@ class InProcess(_Executor):
         self.warnings = []
 
     def describe(self):
+        """Where the batches run, in words for the report.
+
+        Returns
+        -------
+        str
+        """
         return "this process"
 
     def run(self, batches):
+        """Execute the batches one after the other.
+
+        Parameters
+        ----------
+        batches : iterable of (int, dict, list)
+            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`).
+
+        Returns
+        -------
+        iterator of (int, list)
+            (index, results of :func:`~.worker.run_batch`) of each batch as it finishes.
+        """
         for index, settings, jobs in batches:
             yield index, run_batch(jobs, settings, self.threads)
 
@@ -175,10 +232,28 @@ class LocalProcesses(_Executor):
         self.warnings = []
 
     def describe(self):
+        """Where the batches run, in words for the report.
+
+        Returns
+        -------
+        str
+        """
         return (f"{self.workers} local worker processes x {self.threads} kernel "
                 f"thread{'s' if self.threads > 1 else ''}")
 
     def run(self, batches):
+        """Execute the batches on the worker processes.
+
+        Parameters
+        ----------
+        batches : iterable of (int, dict, list)
+            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`).
+
+        Returns
+        -------
+        iterator of (int, list)
+            (index, results of :func:`~.worker.run_batch`) of each batch as it finishes.
+        """
         import multiprocessing
         from concurrent.futures import ProcessPoolExecutor, as_completed
         from concurrent.futures.process import BrokenProcessPool
@@ -335,6 +410,12 @@ class DaskCluster(_Executor):
         return self.client
 
     def describe(self):
+        """Where the batches run, in words for the report.
+
+        Returns
+        -------
+        str
+        """
         return f"Dask cluster at {self.address} ({self.workers} worker threads)"
 
     def _alive(self):
@@ -348,6 +429,18 @@ class DaskCluster(_Executor):
         return True
 
     def run(self, batches):
+        """Execute the batches on the cluster.
+
+        Parameters
+        ----------
+        batches : iterable of (int, dict, list)
+            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`).
+
+        Returns
+        -------
+        iterator of (int, list)
+            (index, results of :func:`~.worker.run_batch`) of each batch as it finishes.
+        """
         from concurrent.futures import CancelledError
 
         from distributed.client import _wait
@@ -423,6 +516,10 @@ def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=
         Runs to execute (for the default).
     settings : dict, optional
         The runs' settings (``t_end``, ``output_interval`` [s]), for the memory estimate.
+
+    Returns
+    -------
+    InProcess, LocalProcesses or DaskCluster
     """
     if scheduler:
         return DaskCluster(scheduler, timeout)
@@ -465,7 +562,22 @@ class ExecutionReport:
 def batch_size(missing, workers, settings=None):
     """Runs per batch: about four batches per worker (for balance and progress), at least
     :data:`MIN_BATCH` and at most :data:`MAX_BATCH`, and no more than fit the memory of a
-    batch (:func:`batch_limit` under ``settings``)."""
+    batch (:func:`batch_limit` under ``settings``).
+
+    Parameters
+    ----------
+    missing : int
+        Runs still to execute.
+    workers : int
+        Workers of the executor.
+    settings : dict, optional
+        The runs' settings (``t_end``, ``output_interval`` [s]).
+
+    Returns
+    -------
+    int
+        Runs per batch.
+    """
     if missing <= 0:
         return 1
     share = math.ceil(missing / (4 * max(1, workers)))

@@ -322,6 +322,11 @@ def loads_comparison(result):
     """Largest |limit load| of each component over the fuselage: the hand-entered cases
     against the cases from the dynamics (the ``source`` column of the case matrix).
 
+    Parameters
+    ----------
+    result : LoadsResult
+        Internal loads of the hand-entered and the dynamics cases.
+
     Returns
     -------
     pandas.DataFrame or None

@@ -44,6 +44,16 @@ def canonical(obj):
     """A JSON-able structure that identifies ``obj`` by value (floats exactly, arrays by
     digest). Dataclasses give their type name and fields.
 
+    Parameters
+    ----------
+    obj : object
+        None, bool, str, number, array, sequence, mapping or dataclass.
+
+    Returns
+    -------
+    object
+        Built of None, bool, str, int, lists and dicts (floats as their hex text).
+
     Raises
     ------
     InputError
@@ -72,7 +82,13 @@ def canonical(obj):
 
 @lru_cache(maxsize=1)
 def code_digest():
-    """SHA-256 of the package version and of the source files the results depend on."""
+    """SHA-256 of the package version and of the source files the results depend on.
+
+    Returns
+    -------
+    str
+        Hex digest.
+    """
     root = Path(slingloads.__file__).resolve().parent
     files = sorted((root / "models").rglob("*.py")) + sorted(
         (root / "analyses" / "multibody").rglob("*.py")) + [
@@ -87,7 +103,13 @@ def code_digest():
 
 
 class KeyMaker:
-    """Keys of runs; table digests are computed once per table object."""
+    """Keys of runs; table digests are computed once per table object.
+
+    Parameters
+    ----------
+    settings : mapping
+        The run settings the keys include (:meth:`~.campaign.RunSettings.as_dict`).
+    """
 
     def __init__(self, settings):
         self._settings = canonical(dict(settings))
@@ -103,7 +125,18 @@ class KeyMaker:
         return self._tables[key][0]
 
     def key(self, system, manoeuvre):
-        """SHA-256 (hex) of one run (module notes)."""
+        """SHA-256 (hex) of one run (module notes).
+
+        Parameters
+        ----------
+        system : SlingSystem
+        manoeuvre : Manoeuvre
+
+        Returns
+        -------
+        str
+            Hex digest.
+        """
         payload = {
             "code": code_digest(),
             "parameters": _array(system.parameters(locks=system.locks)),

@@ -88,19 +88,55 @@ class DynamicsEnvelope:
         """Parachute line load with the margin at dynamic pressure ``q`` [Pa] and area
         ``area`` [m^2]: margin x the largest line tension over q_EAS x area among the runs
         (:attr:`line_coefficient`) x q x area, so that a load taken at the loads' airspeed is
-        never the lower one of the campaign's airspeeds. [N]"""
+        never the lower one of the campaign's airspeeds. [N]
+
+        Parameters
+        ----------
+        q : float
+            Dynamic pressure. [Pa]
+        area : float
+            Parachute area. [m^2]
+
+        Returns
+        -------
+        float
+            Line load. [N]
+        """
         return self.margin * self.line_coefficient * float(q) * float(area)
 
     def mirrored(self, quantity):
         """(lower, upper) of an angle range with the margin, made symmetric about zero
         (-m, m), m the larger magnitude: a set of gusts from one side only says nothing of
-        the other, and the aircraft is taken as symmetric. Degrees."""
+        the other, and the aircraft is taken as symmetric. Degrees.
+
+        Parameters
+        ----------
+        quantity : str
+            A quantity of :data:`QUANTITIES` (``alpha``, ``beta``, ``line theta``, ...).
+
+        Returns
+        -------
+        (float, float)
+            (-m, m). [deg]
+        """
         lo, hi = self.bounds(quantity)
         m = max(abs(lo), abs(hi))
         return -m, m
 
     def bounds(self, quantity):
-        """(lower, upper) of a quantity with the margin (module notes); degrees for angles."""
+        """(lower, upper) of a quantity with the margin (module notes); degrees for angles.
+
+        Parameters
+        ----------
+        quantity : str
+            A quantity of :data:`QUANTITIES` (``alpha``, ``beta``, ``line theta``, ...).
+
+        Returns
+        -------
+        (float, float)
+            Lower and upper bound (lower None for a quantity with a maximum only): degrees
+            for angles, N for the line tension, - for tension / weight.
+        """
         kind = {q[0]: q[3] for q in QUANTITIES}[quantity]
         lo, hi = self.reached[quantity]
         k = self.margin
@@ -112,14 +148,28 @@ class DynamicsEnvelope:
 
     def aero_envelope(self):
         """Corners and centre of the alpha-beta envelope with the margin: (ids, alpha, beta)
-        [rad], ids ``DYN-CENTRE``, ``DYN-A+B+``...."""
+        [rad], ids ``DYN-CENTRE``, ``DYN-A+B+``....
+
+        Returns
+        -------
+        ids : tuple of str
+        alpha, beta : ndarray, shape (5,)
+            [rad]
+        """
         (a0, a1), (b0, b1) = (np.radians(self.bounds(q)) for q in ("alpha", "beta"))
         ids = ("DYN-CENTRE", "DYN-A+B+", "DYN-A+B-", "DYN-A-B+", "DYN-A-B-")
         return (ids, np.array([0.0, a1, a1, a0, a0]), np.array([0.0, b1, b0, b1, b0]))
 
     def line_directions(self):
         """Parachute line directions with the margin: the trailing direction and the four
-        corners of the (theta, psi) range, as (ids, theta, psi) [rad]."""
+        corners of the (theta, psi) range, as (ids, theta, psi) [rad].
+
+        Returns
+        -------
+        ids : tuple of str
+        theta, psi : ndarray, shape (5,)
+            [rad]
+        """
         (t0, t1), (p0, p1) = (np.radians(self.bounds(q)) for q in ("line theta", "line psi"))
         ids = ("LINE-AFT", "LINE-T+P+", "LINE-T+P-", "LINE-T-P+", "LINE-T-P-")
         return ids, np.array([0.0, t1, t1, t0, t0]), np.array([0.0, p1, p0, p1, p0])
@@ -151,7 +201,14 @@ class DynamicsEnvelope:
         return float(np.radians(max(abs(lo), abs(hi))))
 
     def to_frame(self):
-        """One row per quantity: as reached, with the margin, unit, and the runs."""
+        """One row per quantity: as reached, with the margin, unit, and the runs.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Quantity, reached lower and upper, with the margin, unit (deg or N) and the runs that
+            reached them.
+        """
         rows = []
         for quantity, _, upper, _kind in QUANTITIES:
             unit = upper.rsplit("[", 1)[1].rstrip("]")

@@ -80,6 +80,10 @@ class ManoeuvreKind:
             Equivalent airspeed of the run. [m/s]
         density_altitude : float
             [m]
+
+        Returns
+        -------
+        Manoeuvre
         """
         from slingloads.analyses.multibody.manoeuvres import Manoeuvre
 
@@ -268,6 +272,10 @@ class CampaignMatrix:
             [m^2]
         base_mass : float
             Mass of the default mass case (when ``factors.masses`` is empty). [kg]
+
+        Returns
+        -------
+        CampaignMatrix
         """
         if not isinstance(factors, Factors):
             raise InputError("from_factors needs a Factors object", type(factors).__name__)
@@ -294,6 +302,10 @@ class CampaignMatrix:
             The mass cases the rows name (default: one, "nominal", of ``base_mass``).
         base_mass : float, optional
             [kg]
+
+        Returns
+        -------
+        CampaignMatrix
         """
         area = _neutral(neutral_area)
         if not masses and base_mass is None:
@@ -315,7 +327,13 @@ class CampaignMatrix:
 
     def conditions(self):
         """The distinct operating conditions (columns :data:`CONDITION_COLUMNS` and the mass
-        of the mass case)."""
+        of the mass case).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per condition, units in the column labels.
+        """
         return self.frame[[*CONDITION_COLUMNS, "mass [kg]"]].drop_duplicates().reset_index(
             drop=True)
 

@@ -25,7 +25,18 @@ MIN_BATCH = 20
 
 def history_rows(settings):
     """Rows of a run's histories under ``settings`` (``t_end``, ``output_interval`` [s]): the
-    samples at 0, interval, ..., t_end."""
+    samples at 0, interval, ..., t_end.
+
+    Parameters
+    ----------
+    settings : dict
+        The runs' settings (``t_end``, ``output_interval`` [s]).
+
+    Returns
+    -------
+    int
+        Samples.
+    """
     return int(round(float(settings["t_end"]) / float(settings["output_interval"]))) + 1
 
 
@@ -54,7 +65,18 @@ def worker_memory(settings=None):
     loaded libraries and kernels (:data:`~slingloads.limits.WORKER_BASE_MEMORY`), one chunk of
     drive tables (:data:`~slingloads.analyses.multibody.simulate.DRIVE_BUDGET`) and the
     samples of a batch (at most :data:`~slingloads.limits.BATCH_MEMORY`, :func:`batch_limit`).
-    [bytes]"""
+    [bytes]
+
+    Parameters
+    ----------
+    settings : dict, optional
+        The runs' settings (``t_end``, ``output_interval`` [s]); default the largest batch.
+
+    Returns
+    -------
+    int
+        [bytes]
+    """
     from slingloads.analyses.multibody.simulate import DRIVE_BUDGET
 
     batch = BATCH_MEMORY
@@ -75,7 +97,18 @@ def _sample_bytes(settings):
 
 def batch_limit(settings):
     """The most runs of a batch whose samples fit :data:`~slingloads.limits.BATCH_MEMORY`
-    (at least 1, at most :data:`MAX_BATCH`)."""
+    (at least 1, at most :data:`MAX_BATCH`).
+
+    Parameters
+    ----------
+    settings : dict
+        The runs' settings (``t_end``, ``output_interval`` [s]).
+
+    Returns
+    -------
+    int
+        Runs.
+    """
     return max(1, min(MAX_BATCH, BATCH_MEMORY // max(1, _sample_bytes(settings))))
 
 
@@ -83,6 +116,17 @@ def local_workers(requested, settings=None, cores=None, available=None):
     """Worker processes to start: ``requested``, capped by the cores and by the memory
     available (:func:`worker_memory` each, with the memory this process keeps), and a
     warning (None if none) when an explicit request is cut.
+
+    Parameters
+    ----------
+    requested : int
+        Worker processes asked for.
+    settings : dict, optional
+        The runs' settings (``t_end``, ``output_interval`` [s]).
+    cores : int, optional
+        Cores available (default: those this process may use).
+    available : int, optional
+        Memory available (default: the system's). [bytes]
 
     Returns
     -------

@@ -171,7 +171,17 @@ def response_metrics(run, model=None):
 
 
 def ordered(record):
-    """A metrics dict with the keys of :data:`METRIC_ORDER` first (missing ones NaN)."""
+    """A metrics dict with the keys of :data:`METRIC_ORDER` first (missing ones NaN).
+
+    Parameters
+    ----------
+    record : dict
+        Metrics of a run (units in the keys).
+
+    Returns
+    -------
+    dict
+    """
     out = {k: record.get(k, np.nan) for k in METRIC_ORDER}
     out.update({k: v for k, v in record.items() if k not in out})
     return out

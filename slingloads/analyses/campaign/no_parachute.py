@@ -73,7 +73,22 @@ def sample_full_tail_system(name, cable_length=SAMPLE_CABLE, ea=SAMPLE_EA):
 
 def ramp_length(target, rate=RAMP_RATE, onset=RAMP_ONSET):
     """Run length that shows :data:`OBSERVE` s after a ramp to ``target`` [m/s] ends, rounded
-    up to a whole 10 s. [s]"""
+    up to a whole 10 s. [s]
+
+    Parameters
+    ----------
+    target : float
+        Ramp target. [m/s]
+    rate : float
+        Rate of rise of the wind. [m/s^2]
+    onset : float
+        Start of the ramp. [s]
+
+    Returns
+    -------
+    float
+        [s]
+    """
     return float(10.0 * np.ceil((onset + target / rate + OBSERVE) / 10.0))
 
 
@@ -126,11 +141,28 @@ class NoParachuteStudy:
 
     def run_length_of(self, target):
         """Length of the run of the ramp to ``target`` [m/s]: :data:`OBSERVE` s after it
-        ends, whatever the other ramps. [s]"""
+        ends, whatever the other ramps. [s]
+
+        Parameters
+        ----------
+        target : float
+            Ramp target. [m/s]
+
+        Returns
+        -------
+        float
+            [s]
+        """
         return ramp_length(target, self.rate, self.onset)
 
     def jobs(self):
-        """(name, target, system, manoeuvre) of every ramp."""
+        """(name, target, system, manoeuvre) of every ramp.
+
+        Returns
+        -------
+        list of (str, float, SlingSystem, Manoeuvre)
+            Helicopter name, ramp target [m/s], system and manoeuvre.
+        """
         from slingloads.analyses.multibody.manoeuvres import wind_ramp
 
         out = []
@@ -166,7 +198,19 @@ class NoParachuteResult:
 
 def ramp_verdict(response, linear):
     """Verdict of a ramp (module notes) from its response and linear verdicts: the response
-    verdict, "convergent" only with a stable linear verdict ("inconclusive" otherwise)."""
+    verdict, "convergent" only with a stable linear verdict ("inconclusive" otherwise).
+
+    Parameters
+    ----------
+    response : str
+        Verdict of the response (convergent, divergent, ...).
+    linear : str
+        Verdict of the eigenvalues at trim (stable, neutral, unstable, no trim).
+
+    Returns
+    -------
+    str
+    """
     if response == "convergent" and linear != "stable":
         return "inconclusive"
     return response
@@ -174,7 +218,18 @@ def ramp_verdict(response, linear):
 
 def speed_limits(runs):
     """Largest target of each helicopter whose run and every lower one converge (module
-    notes); ``runs`` has the columns helicopter, ramp target [m/s] and verdict."""
+    notes); ``runs`` has the columns helicopter, ramp target [m/s] and verdict.
+
+    Parameters
+    ----------
+    runs : pandas.DataFrame
+        The ramps: helicopter, ramp target [m/s], verdict.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per helicopter: the speed limit in words and the largest convergent ramp.
+    """
     rows = []
     for name, group in runs.groupby("helicopter", sort=False):
         group = group.sort_values("ramp target [m/s]")

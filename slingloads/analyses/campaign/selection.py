@@ -84,14 +84,36 @@ class SelectionCriteria:
 
 
 def stable_runs(metrics):
-    """Boolean Series: each run is stable (module notes)."""
+    """Boolean Series: each run is stable (module notes).
+
+    Parameters
+    ----------
+    metrics : pandas.DataFrame
+        The campaign's metrics, one row per run (units in the column labels).
+
+    Returns
+    -------
+    pandas.Series of bool
+    """
     return (metrics["trim converged"].astype(bool)
             & (metrics["linear verdict"] == "stable")
             & metrics["response verdict"].isin(STABLE_RESPONSES))
 
 
 def damped_runs(metrics, criteria):
-    """Boolean Series: each run is stable and meets the damping criterion."""
+    """Boolean Series: each run is stable and meets the damping criterion.
+
+    Parameters
+    ----------
+    metrics : pandas.DataFrame
+        The campaign's metrics, one row per run (units in the column labels).
+    criteria : SelectionCriteria
+        Least damping ratio [-] and longest time to half amplitude [s] of the yaw mode.
+
+    Returns
+    -------
+    pandas.Series of bool
+    """
     zeta = pd.to_numeric(metrics["yaw mode damping ratio [-]"], errors="coerce")
     half = pd.to_numeric(metrics["yaw mode time to half amplitude [s]"], errors="coerce")
     return (stable_runs(metrics) & (zeta >= criteria.min_damping)

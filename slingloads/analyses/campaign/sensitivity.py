@@ -56,7 +56,7 @@ def sensitivity_tables(metrics, selected_factor):
     ----------
     metrics : pandas.DataFrame
         The campaign's metrics.
-    selected_factor : float
+    selected_factor : float or None
         The selected area factor (NaN: the largest of the matrix). [-]
 
     Returns
@@ -83,7 +83,19 @@ def _chosen(metrics, selected_factor):
 
 
 def carrier_comparison(metrics):
-    """Runs that differ only by the carrier, paired, free minus frozen (None without both)."""
+    """Runs that differ only by the carrier, paired, free minus frozen (None without both).
+
+    Parameters
+    ----------
+    metrics : pandas.DataFrame
+        The campaign's metrics, one row per run (units in the column labels).
+
+    Returns
+    -------
+    pandas.DataFrame or None
+        Per pair: the runs and the yaw change, sideslip peak, swing at trim [deg], yaw damping
+        ratio and tension over weight [-] with each carrier and their difference.
+    """
     if set(metrics["carrier"]) != {"free", "frozen"}:
         return None
     keys = [c for c in ("area factor [-]", "airspeed EAS [m/s]", "mass case",
@@ -107,7 +119,20 @@ def carrier_comparison(metrics):
 
 
 def base_condition(matrix_frame, selected_factor):
-    """The base condition of the sensitivity plots (module notes), as a dict of factors."""
+    """The base condition of the sensitivity plots (module notes), as a dict of factors.
+
+    Parameters
+    ----------
+    matrix_frame : pandas.DataFrame
+        :attr:`CampaignMatrix.frame <slingloads.analyses.campaign.matrix.CampaignMatrix.frame>`.
+    selected_factor : float or None
+        Area factor of the selected parachute (None or NaN: the largest of the matrix). [-]
+
+    Returns
+    -------
+    dict
+        The factors of the base condition, by column of the matrix (units in the labels).
+    """
     m = matrix_frame
     chosen = _chosen(m, selected_factor)
     areas = np.sort(m["area factor [-]"].unique())
@@ -123,7 +148,24 @@ def base_condition(matrix_frame, selected_factor):
 
 def sweep_runs(matrix_frame, factor, base, manoeuvre):
     """Run ids varying ``factor`` (a column of :data:`FACTORS`) with every other factor at
-    ``base``, under ``manoeuvre``, in order of the factor's value (empty when none)."""
+    ``base``, under ``manoeuvre``, in order of the factor's value (empty when none).
+
+    Parameters
+    ----------
+    matrix_frame : pandas.DataFrame
+        :attr:`CampaignMatrix.frame <slingloads.analyses.campaign.matrix.CampaignMatrix.frame>`.
+    factor : str
+        A column of :data:`FACTORS`.
+    base : dict
+        The base condition (:func:`base_condition`).
+    manoeuvre : str
+        Name of the manoeuvre.
+
+    Returns
+    -------
+    list of str
+        Run ids.
+    """
     m = matrix_frame[matrix_frame["manoeuvre"] == manoeuvre]
     for column, value in base.items():
         if column == factor:

@@ -65,6 +65,10 @@ def yaw_model_of(system, airspeed=None, density_altitude=None):
         With a parachute.
     airspeed, density_altitude : float, optional
         Condition (default: the system's). [m/s], [m]
+
+    Returns
+    -------
+    YawModel
     """
     if system.parachute is None:
         raise InputError("the yaw model of a campaign needs a parachute")
@@ -81,6 +85,15 @@ def yaw_model_of(system, airspeed=None, density_altitude=None):
 
 def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE):
     """Neutral yaw static stability area of a towed system (paper section 4.1).
+
+    Parameters
+    ----------
+    system : SlingSystem
+        With a parachute.
+    airspeed : float, optional
+        Equivalent airspeed (default the system's). [m/s]
+    fit_range : (float, float)
+        Sideslip range of the slope fits. [rad]
 
     Returns
     -------
@@ -124,7 +137,18 @@ class CampaignSetup:
         return self.system.body.mass
 
     def system_for(self, row):
-        """The system of one run (a row of :attr:`CampaignMatrix.frame`)."""
+        """The system of one run (a row of :attr:`CampaignMatrix.frame`).
+
+        Parameters
+        ----------
+        row : mapping
+            A row of the campaign matrix (area [m^2], mass [kg], airspeed EAS [m/s], density
+            altitude [m], cable length [m], carrier).
+
+        Returns
+        -------
+        SlingSystem
+        """
         base = self.system
         holder = base.parachute
         chute = replace(holder, parachute=replace(holder.parachute,

@@ -115,7 +115,20 @@ class StabilityMap:
     loci: pd.DataFrame | None = None
 
     def grid(self, value="largest real part [1/s]", density_altitude=None):
-        """One quantity as a table: rows area factor, columns airspeed [m/s]."""
+        """One quantity as a table: rows area factor, columns airspeed [m/s].
+
+        Parameters
+        ----------
+        value : str
+            A column of the map's points (units in the label).
+        density_altitude : float, optional
+            Density altitude of the table (default the first). [m]
+
+        Returns
+        -------
+        pandas.DataFrame
+            Rows area factor [-], columns airspeed EAS [m/s].
+        """
         pts = self.points
         if density_altitude is None:
             density_altitude = pts["density altitude [m]"].iloc[0]

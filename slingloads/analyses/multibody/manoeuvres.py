@@ -46,6 +46,11 @@ def check_trajectory(trajectory):
     and ``describe()``; build one with
     :class:`~slingloads.models.hook_trajectory.HookTrajectory`.
 
+    Parameters
+    ----------
+    trajectory : object
+        The carrier trajectory of a manoeuvre.
+
     Raises
     ------
     InputError
@@ -158,6 +163,13 @@ class Manoeuvre:
         return max(ends)
 
     def describe(self):
+        """The manoeuvre in words, for the reports.
+
+        Returns
+        -------
+        str
+            The trajectory, the wind and the initial disturbance (deg, deg/s, m), in words.
+        """
         parts = [self.trajectory.describe(), self.wind.describe()]
         if self.disturbance:
             parts.append("initial " + ", ".join(
@@ -168,7 +180,20 @@ class Manoeuvre:
 
 
 def free_response(disturbance=None, name="free response"):
-    """Free response from an initial disturbance (default: 10 deg of yaw) at trim."""
+    """Free response from an initial disturbance (default: 10 deg of yaw) at trim.
+
+    Parameters
+    ----------
+    disturbance : dict, optional
+        Initial offsets (keys and units of :data:`DISTURBANCES`: rad, rad/s, m; default
+        :data:`DEFAULT_DISTURBANCE`, 10 deg of yaw).
+    name : str
+        Label of the manoeuvre.
+
+    Returns
+    -------
+    Manoeuvre
+    """
     return Manoeuvre(name, disturbance=dict(DEFAULT_DISTURBANCE if disturbance is None
                                             else disturbance))
 
@@ -187,6 +212,10 @@ def gust_response(kind="finite", amplitude=GUST_VELOCITY, onset=5.0, duration=10
         [s]
     direction : str or array_like
         See :data:`~slingloads.models.multibody.environment.GUST_DIRECTIONS`.
+
+    Returns
+    -------
+    Manoeuvre
     """
     gust = make_gust(kind, amplitude, onset, duration)
     label = name or f"{direction} gust {kind} {amplitude / 0.3048:+.0f} ft/s"
@@ -196,7 +225,29 @@ def gust_response(kind="finite", amplitude=GUST_VELOCITY, onset=5.0, duration=10
 def forward_acceleration(target_ias, density_altitude=0.0, acceleration=1.0, onset=5.0,
                          jerk_time=2.0, name=None, disturbance=None):
     """Forward acceleration from hover to ``target_ias`` (equivalent airspeed) [m/s], from
-    :data:`HOVER_SEED` unless another ``disturbance`` is given."""
+    :data:`HOVER_SEED` unless another ``disturbance`` is given.
+
+    Parameters
+    ----------
+    target_ias : float
+        Target equivalent airspeed. [m/s]
+    density_altitude : float
+        Density altitude, for the true airspeed the carrier reaches. [m]
+    acceleration : float
+        Peak forward acceleration. [m/s^2]
+    onset : float
+        Start of the acceleration. [s]
+    jerk_time : float
+        Rise and fall time of the acceleration. [s]
+    name : str, optional
+        Label of the manoeuvre (default from its inputs).
+    disturbance : dict, optional
+        Initial offsets (keys and units of :data:`DISTURBANCES`: rad, rad/s, m).
+
+    Returns
+    -------
+    Manoeuvre
+    """
     tas = float(true_airspeed(target_ias, density_altitude))
     label = name or f"accelerate to {target_ias / KNOT:.0f} KIAS"
     return Manoeuvre(label, trajectory=ForwardAcceleration(tas, acceleration, onset, jerk_time),
@@ -205,14 +256,44 @@ def forward_acceleration(target_ias, density_altitude=0.0, acceleration=1.0, ons
 
 def wind_ramp(target, rate=0.5, onset=5.0, name=None, disturbance=None):
     """Hovering carrier, head wind rising from 0 to ``target`` [m/s] at ``rate`` [m/s^2], from
-    :data:`HOVER_SEED` unless another ``disturbance`` is given."""
+    :data:`HOVER_SEED` unless another ``disturbance`` is given.
+
+    Parameters
+    ----------
+    target : float
+        Final head wind. [m/s]
+    rate : float
+        Rate of rise of the wind. [m/s^2]
+    onset : float
+        Start of the ramp. [s]
+    name : str, optional
+        Label of the manoeuvre (default from its inputs).
+    disturbance : dict, optional
+        Initial offsets (keys and units of :data:`DISTURBANCES`: rad, rad/s, m).
+
+    Returns
+    -------
+    Manoeuvre
+    """
     label = name or f"wind ramp to {target / KNOT:.0f} kt"
     return Manoeuvre(label, wind=Wind(ramp=WindRamp(target, rate, onset)),
                      disturbance=dict(HOVER_SEED if disturbance is None else disturbance))
 
 
 def paper_manoeuvres(density_altitude=0.0):
-    """The paper's manoeuvre list (sections 4.4 and 5.2)."""
+    """The paper's manoeuvre list (sections 4.4 and 5.2).
+
+    Parameters
+    ----------
+    density_altitude : float
+        Density altitude of the forward accelerations. [m]
+
+    Returns
+    -------
+    list of Manoeuvre
+        The free response, the +-30 ft/s lateral gusts of four shapes, the accelerations to
+        40, 60, 80, 100 KIAS and the wind ramps to 20, 30, 40, 60, 80 kt.
+    """
     out = [free_response()]
     for sign in (1.0, -1.0):
         for kind in ("step", "finite", "1-cosine", "continuous"):

@@ -234,7 +234,13 @@ class RunResult:
         return bool(self.flag) or not self.trim.converged
 
     def stop_reason(self):
-        """Why the run stopped ('' if it did not)."""
+        """Why the run stopped ('' if it did not).
+
+        Returns
+        -------
+        str
+            "no trim: ..." or "left the <tables> at t = <time> s", or ''.
+        """
         if not self.trim.converged:
             return f"no trim: {self.trim.message}"
         if self.flag:
@@ -243,7 +249,13 @@ class RunResult:
 
     def history_table(self):
         """Derived histories (n, len(HISTORY)) in the order of
-        :data:`~slingloads.models.multibody.response.HISTORY` (SI, angles in rad)."""
+        :data:`~slingloads.models.multibody.response.HISTORY` (SI, angles in rad).
+
+        Returns
+        -------
+        ndarray, shape (n, N_HISTORY)
+            SI, angles in rad.
+        """
         system = self.system
         table = np.empty((self.time.size, N_HISTORY))
         derive(self.time, self.states, self.info, float(system.weight),
@@ -252,13 +264,28 @@ class RunResult:
         return table
 
     def histories(self):
-        """Derived histories in SI (angles in rad) as a dict of arrays."""
+        """Derived histories in SI (angles in rad) as a dict of arrays.
+
+        Returns
+        -------
+        dict of str to ndarray, shape (n,)
+            The columns of :meth:`history_table` by the names of
+            :data:`~slingloads.models.multibody.response.HISTORY`.
+        """
         table = self.history_table()
         return {name: table[:, k] for k, name in enumerate(HISTORY)}
 
     def to_frame(self):
         """Time histories with unit-labelled columns (angles in degrees; body-axis hub load;
-        positions of the HC CG relative to the hook in earth axes)."""
+        positions of the HC CG relative to the hook in earth axes).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per sample, the columns of
+            :data:`HISTORY_COLUMNS` with their units in the
+            labels (s, m, m/s, N, deg).
+        """
         h = self.histories()
         data = {}
         for key, label, si in HISTORY_COLUMNS:
@@ -271,11 +298,24 @@ class RunResult:
     # ------------------------------------------------------------------------- metrics
     def measures(self):
         """The run's measures (:data:`~slingloads.models.multibody.response.MEASURES`; SI,
-        angles in rad), computed as soon as it was integrated."""
+        angles in rad), computed as soon as it was integrated.
+
+        Returns
+        -------
+        ndarray, shape (N_MEASURES,)
+            SI, angles in rad.
+        """
         return self.batch.measures[self.index]
 
     def metrics(self):
-        """Per-run metrics (SI, angles in degrees), see ``docs/multibody.md``."""
+        """Per-run metrics (SI, angles in degrees), see ``docs/multibody.md``.
+
+        Returns
+        -------
+        dict
+            Name, manoeuvre, trim and verdict, and the peaks, settling and damping measures,
+            their units in their labels.
+        """
         row = {"run": self.name, "manoeuvre": self.manoeuvre.describe(),
                "trim converged": self.trim.converged}
         if not self.trim.converged:
@@ -400,7 +440,12 @@ class Simulation:
     atol: float = ATOL
 
     def describe_integration(self):
-        """How the runs were integrated, in words."""
+        """How the runs were integrated, in words.
+
+        Returns
+        -------
+        str
+        """
         if self.dt is None:
             return (f"Dormand-Prince 5(4), adaptive step per run (rtol {self.rtol:g}, atol "
                     f"{self.atol:g}), split at the inputs' jumps")
@@ -413,15 +458,33 @@ class Simulation:
         raise KeyError(f"no run named {name!r}; runs are {[r.name for r in self.runs]}")
 
     def metrics_frame(self):
-        """One row of metrics per run."""
+        """One row of metrics per run.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The rows of :meth:`RunResult.metrics`, units in the column labels.
+        """
         return pd.DataFrame([run.metrics() for run in self.runs])
 
     def to_frame(self):
-        """Metrics per run (see :meth:`metrics_frame`)."""
+        """Metrics per run (see :meth:`metrics_frame`).
+
+        Returns
+        -------
+        pandas.DataFrame
+            :meth:`metrics_frame`.
+        """
         return self.metrics_frame()
 
     def histories_frame(self):
-        """All histories in long format, a ``run`` column first."""
+        """All histories in long format, a ``run`` column first.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The rows of every :meth:`RunResult.to_frame` after a ``run`` column.
+        """
         frames = []
         for run in self.runs:
             frame = run.to_frame()
@@ -574,7 +637,20 @@ SAMPLE_BYTES = 8 * (N_STATES + 9 + N_INFO + N_HISTORY)
 def drive_bytes(t_end, breakpoints=()):
     """Bytes of the drive tables of one run of ``t_end`` [s] (sampled every DRIVE_STEP, and
     at both ends of each segment between ``breakpoints``), counted twice: the run's table and
-    its copy in the chunk's stacked array."""
+    its copy in the chunk's stacked array.
+
+    Parameters
+    ----------
+    t_end : float
+        Run length. [s]
+    breakpoints : sequence of float
+        Times at which the run's inputs jump or kink. [s]
+
+    Returns
+    -------
+    int
+        Bytes.
+    """
     segments = 1 + len(tuple(breakpoints))
     rows = float(t_end) / DRIVE_STEP + 2 * segments + 1
     return int(2 * rows * 9 * 8)
@@ -582,7 +658,22 @@ def drive_bytes(t_end, breakpoints=()):
 
 def run_bytes(t_end, output_interval, breakpoints=()):
     """Memory one run needs while it is integrated and kept: its drive tables
-    (:func:`drive_bytes`) and its samples (:data:`SAMPLE_BYTES` each). [bytes]"""
+    (:func:`drive_bytes`) and its samples (:data:`SAMPLE_BYTES` each). [bytes]
+
+    Parameters
+    ----------
+    t_end : float
+        Run length. [s]
+    output_interval : float
+        Sampling interval. [s]
+    breakpoints : sequence of float
+        Times at which the run's inputs jump or kink. [s]
+
+    Returns
+    -------
+    int
+        Bytes.
+    """
     samples = int(round(float(t_end) / float(output_interval))) + 1
     return drive_bytes(t_end, breakpoints) + samples * SAMPLE_BYTES
 

@@ -49,18 +49,65 @@ _INFO = {name: i for i, name in enumerate(INFO)}
 
 
 def flag_text(flag):
-    """Readable list of the tables or limits in a flag of the equations."""
+    """Readable list of the tables or limits in a flag of the equations.
+
+    Parameters
+    ----------
+    flag : int
+        Flag of the equations (a sum of bits of
+        :data:`~slingloads.models.multibody.equations.FLAGS`).
+
+    Returns
+    -------
+    str
+        The tables or limits left, comma-separated ('' for 0).
+    """
     return ", ".join(text for bit, text in FLAGS.items() if int(flag) & bit)
 
 
 def steady_drive(wind, carrier_velocity):
-    """Drive vector of a steady flight: wind, no commanded acceleration, commanded velocity."""
+    """Drive vector of a steady flight: wind, no commanded acceleration, commanded velocity.
+
+    Parameters
+    ----------
+    wind : array_like, shape (3,)
+        Wind velocity, earth axes. [m/s]
+    carrier_velocity : array_like, shape (3,)
+        Carrier velocity, earth axes. [m/s]
+
+    Returns
+    -------
+    ndarray, shape (9,)
+        Wind [m/s], commanded acceleration (zero) [m/s^2], commanded velocity [m/s].
+    """
     return np.concatenate([np.asarray(wind, float), np.zeros(3),
                            np.asarray(carrier_velocity, float)])
 
 
 def evaluate_state(system, x, drive, parameters=None, tables=None):
-    """(derivative, info, flag) of the equations at state ``x`` with ``drive``."""
+    """(derivative, info, flag) of the equations at state ``x`` with ``drive``.
+
+    Parameters
+    ----------
+    system : SlingSystem
+    x : array_like, shape (N_STATES,)
+        State (SI: m, m/s, quaternion, rad/s, rad).
+    drive : array_like, shape (9,)
+        Wind [m/s], commanded acceleration [m/s^2] and velocity [m/s], earth axes.
+    parameters : ndarray, optional
+        Parameter vector (default ``system.parameters(locks=system.locks)``).
+    tables : tuple of ndarray, optional
+        Tables (default ``system.tables()``).
+
+    Returns
+    -------
+    dx : ndarray, shape (N_STATES,)
+        Derivative of the state (SI per second).
+    info : ndarray, shape (N_INFO,)
+        Reported quantities (:data:`~slingloads.models.multibody.equations.INFO`, SI).
+    flag : int
+        Tables or limits left (0: none; :func:`flag_text`).
+    """
     p = system.parameters(locks=system.locks) if parameters is None else parameters
     t = system.tables() if tables is None else tables
     dx, info = np.zeros(N_STATES), np.zeros(N_INFO)
@@ -103,7 +150,18 @@ class Trim:
             raise InputError(f"no trim at {self.airspeed:.4g} m/s EAS: {self.message}")
 
     def quantity(self, name):
-        """A reported quantity of :data:`INFO` at trim."""
+        """A reported quantity of :data:`INFO` at trim.
+
+        Parameters
+        ----------
+        name : str
+            A name of :data:`~slingloads.models.multibody.equations.INFO`.
+
+        Returns
+        -------
+        float
+            Its value at trim (SI: N, m, rad).
+        """
         return float(self.info[_INFO[name]])
 
     @property
@@ -134,7 +192,14 @@ class Trim:
         return float(theta), float(psi)
 
     def to_frame(self):
-        """The trim as a one-row DataFrame (angles in degrees)."""
+        """The trim as a one-row DataFrame (angles in degrees).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row: airspeed [m/s], convergence, swing, attitude and flow angles [deg], cable
+            tension [N] and its ratio to the weight [-], line angles [deg].
+        """
         yaw, pitch, roll = np.degrees(self.attitude)
         lon, lat = np.degrees(self.swing_angles)
         theta, psi = np.degrees(self.line_angles)
@@ -556,7 +621,14 @@ class LinearModel:
 
     def verdict(self):
         """"stable", "neutral" (some real parts within round-off of 0) or "unstable", with
-        the rule."""
+        the rule.
+
+        Returns
+        -------
+        str
+            "unstable" if a real part exceeds :data:`STABILITY_TOLERANCE` [1/s], "neutral" if one
+            is within it of zero, else "stable".
+        """
         re = self.eigenvalues.real
         if np.any(re > STABILITY_TOLERANCE):
             return "unstable"
@@ -565,11 +637,23 @@ class LinearModel:
         return "stable"
 
     def a_frame(self):
-        """The state matrix A as a DataFrame (rows: derivative of, columns: coordinate)."""
+        """The state matrix A as a DataFrame (rows: derivative of, columns: coordinate).
+
+        Returns
+        -------
+        pandas.DataFrame
+            A (n, n) [1/s], indexed and labelled by :attr:`names`.
+        """
         return pd.DataFrame(self.a, index=list(self.names), columns=list(self.names))
 
     def shares(self):
-        """Share of each motion of :data:`MOTIONS` in each mode's kinetic energy, (n, 8)."""
+        """Share of each motion of :data:`MOTIONS` in each mode's kinetic energy, (n, 8).
+
+        Returns
+        -------
+        ndarray, shape (n, len(MOTIONS))
+            Share of each motion in each mode's kinetic energy, rows summing to 1. [-]
+        """
         system = self.trim.system
         idx = {name: i for i, name in enumerate(self.names)}
         m = system.body.mass
@@ -599,7 +683,13 @@ class LinearModel:
     def angles(self):
         """Angular amplitude of each motion group in each mode, largest 1, shape (n, 4):
         longitudinal (cable swing or pitch), lateral (cable swing or roll), yaw, parachute line.
-        Swing angles are CG displacements over the cable span."""
+        Swing angles are CG displacements over the cable span.
+
+        Returns
+        -------
+        ndarray, shape (n, 4)
+            Amplitudes, the largest of each row 1. [-]
+        """
         idx = {name: i for i, name in enumerate(self.names)}
         span = self.trim.quantity("cable_span")
         out = np.zeros((self.eigenvalues.size, 4))
@@ -649,7 +739,14 @@ class LinearModel:
         """One row per mode (complex pairs once): eigenvalue, frequency, damping, name (unique:
         ``parachute 1``, ``parachute 2`` from the lowest frequency when two modes share one),
         the share of each motion in its kinetic energy and the angular amplitudes of the
-        groups."""
+        groups.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Sorted by natural frequency: real part [1/s], imaginary part and natural frequency
+            [rad/s], damping ratio [-], kind, stability, group amplitudes and energy shares [-].
+        """
         lam = self.eigenvalues
         keep = lam.imag >= -1e-12
         shares = self.shares()
@@ -687,13 +784,32 @@ class LinearModel:
         return frame
 
     def to_frame(self):
-        """The modes (see :meth:`modes_frame`)."""
+        """The modes (see :meth:`modes_frame`).
+
+        Returns
+        -------
+        pandas.DataFrame
+            :meth:`modes_frame`.
+        """
         return self.modes_frame()
 
     def mode_state(self, eigenvalue, amplitude=0.01):
         """Full state of the trim perturbed along the real part of the mode nearest to
         ``eigenvalue`` [1/s], scaled so that its largest angle or swing angle is ``amplitude``
-        [rad] (a free response that excites that mode alone, to linear order)."""
+        [rad] (a free response that excites that mode alone, to linear order).
+
+        Parameters
+        ----------
+        eigenvalue : complex
+            Eigenvalue near the mode. [1/s]
+        amplitude : float
+            Largest angle or swing angle of the perturbation. [rad]
+
+        Returns
+        -------
+        ndarray, shape (N_STATES,)
+            Full state (SI).
+        """
         k = int(np.argmin(np.abs(self.eigenvalues - eigenvalue)))
         vec = self.vectors[:, k]
         vec = vec * np.exp(-1j * np.angle(vec[np.argmax(np.abs(vec))]))
@@ -723,7 +839,22 @@ _FULL = {"Vc_X": 0, "Vc_Y": 1, "Vc_Z": 2, "p_X": 3, "p_Y": 4, "p_Z": 5, "v_X": 6
 
 def perturbed_states(trim_point, names, z):
     """Full states of the trim plus the perturbations ``z`` (m, n) in the coordinates
-    ``names``, shape (m, 20)."""
+    ``names``, shape (m, 20).
+
+    Parameters
+    ----------
+    trim_point : Trim
+    names : sequence of str
+        Coordinates of the linear model (:attr:`LinearModel.names`: positions [m], small
+        rotations ``phi_x``, ``phi_y``, ``phi_z`` and line angles [rad], and their rates).
+    z : array_like, shape (m, n)
+        Perturbations in those coordinates (SI).
+
+    Returns
+    -------
+    ndarray, shape (m, N_STATES)
+        Full states (SI; the quaternion rotated by the small rotation).
+    """
     return _perturbed(trim_point.state[None, :], names, z)[0]
 
 
@@ -741,13 +872,43 @@ def _perturbed(states, names, z):
 
 
 def perturbed_state(trim_point, names, z):
-    """Full state of the trim plus the perturbation ``z`` in the coordinates ``names``."""
+    """Full state of the trim plus the perturbation ``z`` in the coordinates ``names``.
+
+    Parameters
+    ----------
+    trim_point : Trim
+    names : sequence of str
+        Coordinates of the linear model (:attr:`LinearModel.names`: positions [m], small
+        rotations ``phi_x``, ``phi_y``, ``phi_z`` and line angles [rad], and their rates).
+    z : array_like, shape (n,)
+        Perturbation in those coordinates (SI).
+
+    Returns
+    -------
+    ndarray, shape (N_STATES,)
+        Full state (SI).
+    """
     return perturbed_states(trim_point, names, z)[0]
 
 
 def coordinate_rates(trim_point, names, dx):
     """Derivatives (m, 20) of the full state expressed in the coordinates ``names`` (the
-    small rotation's rate from the quaternion's: 2 conj(q_trim) (x) q')."""
+    small rotation's rate from the quaternion's: 2 conj(q_trim) (x) q').
+
+    Parameters
+    ----------
+    trim_point : Trim
+    names : sequence of str
+        Coordinates of the linear model (:attr:`LinearModel.names`: positions [m], small
+        rotations ``phi_x``, ``phi_y``, ``phi_z`` and line angles [rad], and their rates).
+    dx : array_like, shape (m, N_STATES)
+        Derivatives of full states (SI per second).
+
+    Returns
+    -------
+    ndarray, shape (m, n)
+        The derivatives in the coordinates ``names`` (SI per second).
+    """
     return _coordinate_rates(trim_point.state[None, 9:13], names,
                              np.atleast_2d(dx)[None])[0]
 
@@ -828,5 +989,16 @@ def fastest_rates(trim_points, *, step=1e-6):
 
 
 def attitude_matrix(state):
-    """R (body to earth) of a full state vector."""
+    """R (body to earth) of a full state vector.
+
+    Parameters
+    ----------
+    state : array_like, shape (N_STATES,)
+        Full state (quaternion in elements 9 to 12).
+
+    Returns
+    -------
+    ndarray, shape (3, 3)
+        Rotation matrix, body to earth. [-]
+    """
     return rotation_matrix(np.asarray(state, float)[9:13])

@@ -33,3 +33,6 @@ drop_stale_cache(_HERE, also=(_HERE.parent / "packed.py", _HERE.parent / "dorman
 jit = numba.njit(cache=True, fastmath=False, nogil=True, _nrt=False)
 #: Compile a kernel that allocates its own work arrays (reference counting on).
 jit_alloc = numba.njit(cache=True, fastmath=False, nogil=True)
+#: Compile a function to be inlined into its caller at numba's level (no call, no reference
+#: counting of the arrays handed on): the right-hand side of the integration loop.
+jit_inline = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")

@@ -90,27 +90,77 @@ class Cable:
         return self.ea / self.length
 
     def damping(self, hung_mass):
-        """Viscous coefficient: the one given, else c = 2 zeta sqrt(k m) for the hung mass
-        ``hung_mass`` [kg]. [N s/m]"""
+        """Viscous coefficient: the one given, else c = 2 zeta sqrt(k m) for the hung mass.
+
+        Parameters
+        ----------
+        hung_mass : float
+            Mass hung on the cable. [kg]
+
+        Returns
+        -------
+        float
+            Damping coefficient on the stretch rate. [N s/m]
+        """
         if self.damping_coefficient is not None:
             return self.damping_coefficient
         return 2.0 * self.damping_ratio * np.sqrt(self.stiffness * hung_mass)
 
     def damping_ratio_for(self, hung_mass):
-        """Damping ratio of the bounce of ``hung_mass`` [kg]: the one given, else
-        c / (2 sqrt(k m)). [-]"""
+        """Damping ratio of the bounce of the hung mass: the one given, else c / (2 sqrt(k m)).
+
+        Parameters
+        ----------
+        hung_mass : float
+            Mass hung on the cable. [kg]
+
+        Returns
+        -------
+        float
+            Damping ratio of the bounce mode. [-]
+        """
         if self.damping_coefficient is None:
             return self.damping_ratio
         return self.damping_coefficient / (2.0 * np.sqrt(self.stiffness * hung_mass))
 
     def static_stretch(self, weight):
-        """Stretch under a steady pull ``weight`` [N]: W L0 / EA. [m]"""
+        """Stretch under a steady pull: W L0 / EA.
+
+        Parameters
+        ----------
+        weight : float
+            Steady pull on the cable. [N]
+
+        Returns
+        -------
+        float
+            Stretch. [m]
+        """
         return weight / self.stiffness
 
 
 @jit
 def cable_tension(length, rate, unstretched, stiffness, damping):
-    """Tension [N] of the tension-only cable of current ``length`` [m], stretch ``rate`` [m/s]."""
+    """Tension of the tension-only cable (module notes; zero when slack, never pushing).
+
+    Parameters
+    ----------
+    length : float
+        Current hook-to-hub distance |d|. [m]
+    rate : float
+        Stretch rate d . d' / |d|. [m/s]
+    unstretched : float
+        Unstretched length L0. [m]
+    stiffness : float
+        Spring rate EA / L0. [N/m]
+    damping : float
+        Viscous coefficient on the stretch rate. [N s/m]
+
+    Returns
+    -------
+    float
+        Tension, >= 0. [N]
+    """
     if length <= unstretched:
         return 0.0
     tension = stiffness * (length - unstretched) + damping * rate

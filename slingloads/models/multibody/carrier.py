@@ -96,10 +96,32 @@ class SteadyFlight(_Trajectory):
     """Constant velocity at the system airspeed."""
 
     def command(self, t, v0):
+        """Commanded hook acceleration and velocity at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like, shape (n,)
+            Times. [s]
+        v0 : array_like, shape (3,)
+            Steady velocity of the system airspeed, earth axes. [m/s]
+
+        Returns
+        -------
+        acceleration : ndarray, shape (n, 3)
+            Earth axes. [m/s^2]
+        velocity : ndarray, shape (n, 3)
+            Earth axes. [m/s]
+        """
         t = np.asarray(t, float).reshape(-1)
         return np.zeros((t.size, 3)), np.tile(np.asarray(v0, float), (t.size, 1))
 
     def describe(self):
+        """What the carrier does, in words for the reports.
+
+        Returns
+        -------
+        str
+        """
         return "steady flight"
 
 
@@ -156,14 +178,49 @@ class ForwardAcceleration(_Trajectory):
         return self.breakpoints[-1]
 
     def forward(self, t):
-        """Forward acceleration [m/s^2] and speed [m/s] at times ``t`` [s]."""
+        """Forward acceleration and speed along the flight path at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like, shape (n,)
+            Times. [s]
+
+        Returns
+        -------
+        acceleration : ndarray, shape (n,)
+            Forward acceleration. [m/s^2]
+        speed : ndarray, shape (n,)
+            Forward speed. [m/s]
+        """
         _, v, a = self.trajectory.kinematics(np.asarray(t, float).reshape(-1))
         return -a[:, 0], -v[:, 0]
 
     def command(self, t, v0):
+        """Commanded hook acceleration and velocity at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like, shape (n,)
+            Times. [s]
+        v0 : array_like, shape (3,)
+            Steady velocity of the system airspeed, earth axes. [m/s]
+
+        Returns
+        -------
+        acceleration : ndarray, shape (n, 3)
+            Earth axes. [m/s^2]
+        velocity : ndarray, shape (n, 3)
+            Earth axes. [m/s]
+        """
         return self.trajectory.command(t, v0)
 
     def describe(self):
+        """What the carrier does, in words for the reports.
+
+        Returns
+        -------
+        str
+        """
         return (f"forward acceleration to {self.target / KNOT:.4g} kt at "
                 f"{self.acceleration:.3g} m/s^2")
 
@@ -201,7 +258,29 @@ class LateralHookMotion(_Trajectory):
         return self.trajectory.breakpoints
 
     def command(self, t, v0):
+        """Commanded hook acceleration and velocity at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like, shape (n,)
+            Times. [s]
+        v0 : array_like, shape (3,)
+            Steady velocity of the system airspeed, earth axes. [m/s]
+
+        Returns
+        -------
+        acceleration : ndarray, shape (n, 3)
+            Earth axes. [m/s^2]
+        velocity : ndarray, shape (n, 3)
+            Earth axes. [m/s]
+        """
         return self.trajectory.command(t, v0)
 
     def describe(self):
+        """What the carrier does, in words for the reports.
+
+        Returns
+        -------
+        str
+        """
         return f"lateral hook motion: {self.motion.describe()}"

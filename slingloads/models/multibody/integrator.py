@@ -16,17 +16,20 @@ as soon as the run is done, its histories are derived and measured
 nothing but the measures, never the reported quantities of every run.
 
 A run whose flow leaves a table (or its hinge range) stops: with the adaptive step, after the
-step has been halved down to :data:`SMALLEST_STEP` without staying inside; with a fixed step,
-at once. Its state is kept up to that time, the rest of its history is NaN, and the flag and
-the time are returned. The quaternion is renormalised after every step.
+step has been halved down to :data:`~slingloads.models.dormand_prince.SMALLEST_STEP`
+without staying inside; with a fixed step, or outside at a segment's start (after a jump of
+its input), at once. Its state is kept up to that time, the rest of its history is NaN, and
+the flag and the time are returned. The quaternion is renormalised after every step.
 
 One compiled kernel, :func:`dopri_runs`, integrates a block of runs. It is serial and releases
 the GIL (``nogil``), so :func:`integrate` spreads blocks of runs over a pool of threads: the
 same machine code serves a single run and a batch of thousands, and no parallel variant has to
-be compiled. The kernel calls the equations at a single place (a loop over the stages and the
-samples), which keeps the compiled code, and its one-time compilation, small. Each run is
-integrated on its own, whatever the runs beside it: a run integrated again alone gives the
-same numbers to the last bit.
+be compiled. The step loop is the one of every adaptive integrator of the package
+(:func:`slingloads.models.dormand_prince.integrator`), with this model's right-hand side; it
+calls the equations at a single place (over the stages and the samples), which keeps the
+compiled code, and its one-time compilation, small. Each run is integrated on its own,
+whatever the runs beside it: a run integrated again alone gives the same numbers to the last
+bit.
 
 References
 ----------
@@ -45,9 +48,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from slingloads.models.dormand_prince import C as _C
-from slingloads.models.dormand_prince import dense, error_norm, grow, shrink, stage
-from slingloads.models.multibody._jit import jit, jit_alloc
+from slingloads.models.dormand_prince import LEFT, SAMPLE, integrator
+from slingloads.models.multibody._jit import jit, jit_alloc, jit_inline
 from slingloads.models.multibody.equations import CARRIER_FREE, N_INFO, N_STATES, evaluate
 from slingloads.models.multibody.response import (
     N_HISTORY,
@@ -62,8 +64,9 @@ BLOCK = 16
 RTOL, ATOL = 1e-4, 1e-5
 #: Sampling step of the drive tables (finer where a segment is shorter). [s]
 DRIVE_STEP = 0.01
-#: Smallest adaptive step before a run that leaves a table is stopped. [s]
-SMALLEST_STEP = 1e-6
+#: Steps a run may try: no budget (the work of a multibody batch is bounded before it starts,
+#: :mod:`slingloads.analyses.multibody.simulate`).
+NO_BUDGET = 2 ** 62
 #: First trial step of a run. [s]
 FIRST_STEP = 0.01
 
@@ -105,6 +108,67 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
             p3 = 2.0 * p2 - p1
         out[c] = (p1 + 0.5 * w * (p2 - p0) + w2 * (p0 - 2.5 * p1 + 2.0 * p2 - 0.5 * p3)
                   + w3 * (1.5 * (p1 - p2) + 0.5 * (p3 - p0)))
+
+
+@jit_inline
+def _renormalise(x):
+    """The quaternion of state ``x`` (elements 9 to 12) scaled to unit length, in place."""
+    qn = math.sqrt(x[9] * x[9] + x[10] * x[10] + x[11] * x[11] + x[12] * x[12])
+    for m in range(9, 13):
+        x[m] /= qn
+
+
+@jit_inline
+def _rhs(phase, t, s, k, y, args, dx):
+    """The right-hand side of the Dormand-Prince loop (:func:`slingloads.models.dormand_prince.
+    integrator`): the equations (:func:`~slingloads.models.multibody.equations.evaluate`) at
+    state ``y`` and time ``t`` [s] of segment ``s``, the drive from the segment's table
+    (:func:`_drive_at`; on a segment whose channels are constant to the last bit, once at its
+    start, phase 0: the commanded velocity drives a free carrier only). At sample ``k`` the
+    state (its quaternion renormalised, for the dense output) is kept, and with ``report``
+    the reported quantities and derivatives there, with the drive at the sample. The
+    equations are called at this one place. Returns the table or limit left (0: none)."""
+    (pj, row, js, ji, report, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, nodes, fus_a,
+     fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v, out, info, rates, d,
+     steady_drive, steady, reported) = args
+    if phase == SAMPLE:
+        if k > 0:  # the dense output
+            _renormalise(y)
+        for m in range(y.size):
+            out[js, k, m] = y[m]
+        for c in range(9):
+            d[c] = nodes[row, k, c]
+        want = True
+        evaluating = report
+    else:
+        if phase == 0:
+            steady[0] = True
+            for c in range(9 if pj[CARRIER_FREE] > 0.0 else 6):
+                if vary[row, s, c] or bend[row, s, c] != 0.0:
+                    steady[0] = False
+            if steady[0]:
+                _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend,
+                          steady_drive)
+        if steady[0]:
+            for c in range(9):
+                d[c] = steady_drive[c]
+        else:
+            _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, d)
+        want = False
+        evaluating = True
+    f = 0
+    if evaluating:
+        f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v,
+                     dx, reported, want)
+    if phase == SAMPLE and report:
+        for m in range(y.size):
+            rates[ji, k, m] = dx[m]
+        for m in range(N_INFO):
+            info[ji, k, m] = reported[m]
+    return f
+
+
+_loop = integrator(_rhs, _renormalise)
 
 
 @jit_alloc
@@ -186,164 +250,30 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
     keep_states = out.shape[0] == runs
     keep_info = info.shape[0] == runs
     measuring = report and measures.shape[0] == runs
-    K = np.empty((7, n))
     x = np.empty(n)
-    x5 = np.empty(n)
-    y = np.empty(n)
-    dx = np.empty(n)
-    acc = np.empty(n)
-    weights = np.empty(7)
     d = np.empty(9)
     steady_drive = np.empty(9)
+    steady = np.zeros(1, dtype=np.bool_)
     reported = np.empty(N_INFO)
     hist = np.empty((n_out if measuring else 0, N_HISTORY))
     buf = np.empty((4, n_out if measuring else 0))
+    stop = np.zeros(1, dtype=np.int64)
+    first_step = fixed if fixed > 0.0 else min(FIRST_STEP, interval)
     for j in range(runs):
         row = profile[j]
-        pj = P[j]
         js = j if keep_states else 0
         ji = j if keep_info else 0
         for m in range(n):
             x[m] = x0[j, m]
-        segments = n_seg[row]
-        s = 0
-        t = 0.0
-        t_new = 0.0
-        h_try = fixed if fixed > 0.0 else min(FIRST_STEP, interval)
-        h = h_try
-        sample = 0
-        rejected = False
-        flag0 = 0
-        stage_flag = 0
-        steady = False
-        # phase 7: the next sample (dense output); 0: derivative at a segment's start;
-        # 1 to 6: the stages of a step (6: at the fifth-order solution, first same as last)
-        phase = 7
-        while True:
-            finish = False
-            # ------------------------------------------------------------- one evaluation
-            if phase == 7:
-                if sample == 0:
-                    for m in range(n):
-                        y[m] = x[m]
-                else:
-                    dense(x, K, h, (sample * interval - t) / h, weights, acc, y)
-                    qn = math.sqrt(y[9] * y[9] + y[10] * y[10] + y[11] * y[11]
-                                   + y[12] * y[12])
-                    for m in range(9, 13):
-                        y[m] /= qn
-                for m in range(n):
-                    out[js, sample, m] = y[m]
-                for c in range(9):
-                    d[c] = nodes[row, sample, c]
-                want = True
-                evaluating = report
-            else:
-                if phase == 0:
-                    for m in range(n):
-                        y[m] = x[m]
-                    when = t
-                    # a segment whose channels are constant to the last bit: its drive once
-                    # (the commanded velocity drives a free carrier only)
-                    steady = True
-                    for c in range(9 if pj[CARRIER_FREE] > 0.0 else 6):
-                        if vary[row, s, c] or bend[row, s, c] != 0.0:
-                            steady = False
-                    if steady:
-                        _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend,
-                                  steady_drive)
-                else:
-                    stage(x, h, K, phase, acc, y)
-                    when = t + _C[phase] * h
-                if steady:
-                    for c in range(9):
-                        d[c] = steady_drive[c]
-                else:
-                    _drive_at(when, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, d)
-                want = False
-                evaluating = True
-            f = 0
-            if evaluating:
-                f = evaluate(y, pj, d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
-                             cd_g, cd_v, dx, reported, want)
-            # ------------------------------------------------------------- what next
-            if phase == 7:
-                if report:
-                    for m in range(n):
-                        rates[ji, sample, m] = dx[m]
-                    for m in range(N_INFO):
-                        info[ji, sample, m] = reported[m]
-                if sample == 0:
-                    sample = 1
-                    if segments == 0:
-                        flags[j] = f
-                        break
-                    phase = 0
-                    continue
-                sample += 1
-                if not (sample < n_out and sample * interval <= t_new + 1e-9 * interval):
-                    finish = True
-            else:
-                for m in range(n):
-                    K[phase, m] = dx[m]
-                if phase == 0:
-                    flag0 = f
-                    stage_flag = f
-                    h = min(h_try, seg_b[row, s] - t)
-                    phase = 1
-                    continue
-                stage_flag |= f
-                if phase < 6:
-                    phase += 1
-                    continue
-                for m in range(n):
-                    x5[m] = y[m]
-                if stage_flag != 0:  # a stage left a table: shorter step, or stop
-                    if fixed > 0.0 or h < 2.0 * SMALLEST_STEP:
-                        flags[j] = stage_flag
-                        stop_time[j] = t
-                        break
-                    h *= 0.5
-                    h_try = h
-                    rejected = True
-                    stage_flag = flag0
-                    phase = 1
-                    continue
-                if fixed <= 0.0:
-                    err = error_norm(x, x5, K, h, rtol, atol, acc)
-                    if err > 1.0:
-                        h *= shrink(err)
-                        h_try = h
-                        rejected = True
-                        stage_flag = flag0
-                        phase = 1
-                        continue
-                    h_try = h * grow(err, rejected)
-                    rejected = False
-                flag0 = f  # K[6] is the next step's first derivative
-                t_new = t + h
-                if sample < n_out and sample * interval <= t_new + 1e-9 * interval:
-                    phase = 7
-                    continue
-                finish = True
-            # ------------------------------------------------------------- step accepted
-            if finish:
-                t = t_new
-                qn = math.sqrt(x5[9] * x5[9] + x5[10] * x5[10] + x5[11] * x5[11]
-                               + x5[12] * x5[12])
-                for m in range(n):
-                    x[m] = x5[m] / qn if 9 <= m < 13 else x5[m]
-                    K[0, m] = K[6, m]
-                stage_flag = flag0
-                if t >= seg_b[row, s] - 1e-9 * interval:
-                    s += 1
-                    if s == segments:
-                        break
-                    t = seg_a[row, s]
-                    phase = 0
-                else:
-                    h = min(h_try, seg_b[row, s] - t)
-                    phase = 1
+        args = (P[j], row, js, ji, report, seg_a, seg_h, seg_n, seg_off, vals, vary, bend,
+                nodes, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v, out,
+                info, rates, d, steady_drive, steady, reported)
+        status, flag, t, _, sample = _loop(x, seg_b[row], n_seg[row], interval, n_out, fixed,
+                                           rtol, atol, np.inf, first_step, NO_BUDGET, stop,
+                                           args)
+        flags[j] = flag
+        if status == LEFT:
+            stop_time[j] = t
         # the samples a stopped run did not reach
         for k in range(sample, n_out):
             for m in range(n):

@@ -215,19 +215,54 @@ class SlingSystem:
         return area
 
     def cable_check(self, margin=CABLE_MARGIN):
-        """The 20 % rule: carrier cable against the parachute line (None without parachute)."""
+        """The 20 % rule: carrier cable against the parachute line.
+
+        Parameters
+        ----------
+        margin : float
+            Required excess of the cable over the parachute line, as a fraction of the line
+            (default 0.20, the paper's 20 %). [-]
+
+        Returns
+        -------
+        CableCheck or None
+            :func:`~slingloads.models.wake.check_cable_length` of the cable and the parachute
+            line; None without a parachute.
+        """
         if self.parachute is None:
             return None
         return check_cable_length(self.cable.length, self.parachute.line_length, margin)
 
     def warnings(self, margin=CABLE_MARGIN):
         """Rules that are broken but do not prevent a run (the report shows them): the cable
-        shorter than (1 + ``margin``) x the parachute line."""
+        shorter than (1 + ``margin``) x the parachute line.
+
+        Parameters
+        ----------
+        margin : float
+            Required excess of the cable over the parachute line, as a fraction of the line
+            (default 0.20, the paper's 20 %). [-]
+
+        Returns
+        -------
+        list of str
+            One message per broken rule (empty when none is).
+        """
         check = self.cable_check(margin)
         return [] if check is None or check.ok else [check.message]
 
     def with_(self, **changes):
-        """A copy with fields replaced (validated again)."""
+        """A copy with fields replaced (validated again).
+
+        Parameters
+        ----------
+        **changes
+            Fields of :class:`SlingSystem` and their new values (units of the fields).
+
+        Returns
+        -------
+        SlingSystem
+        """
         return replace(self, **changes)
 
     # ------------------------------------------------------------------ for the equations
@@ -242,6 +277,11 @@ class SlingSystem:
         locks : (bool, bool, bool)
             Restrictions for verification: no CG acceleration, no roll/pitch acceleration, no
             yaw acceleration.
+
+        Returns
+        -------
+        ndarray, shape (N_PARAMETERS,)
+            Laid out by :data:`~slingloads.models.multibody.equations.LAYOUT` (SI units).
         """
         p = self._base_parameters.copy()
         if isinstance(self.carrier, FreeCarrier):
@@ -309,9 +349,16 @@ class SlingSystem:
         return p
 
     def tables(self):
-        """Aerodynamic tables for the equations: fuselage (alpha, beta, coefficients in the
-        table's declared frames, whose codes are parameters), fin, horizontal tail and
-        parachute CD (breakpoints, values), computed once per system."""
+        """Aerodynamic tables for the equations, computed once per system.
+
+        Returns
+        -------
+        tuple of ndarray
+            ``(fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v)``: fuselage alpha
+            and beta breakpoints [rad] and stacked coefficients [-] (in the table's declared
+            frames, whose codes are parameters), then the breakpoints [rad] and values [-] of
+            the fin, horizontal tail and parachute CD tables.
+        """
         return self._tables
 
     def _table_sources(self):
@@ -331,7 +378,13 @@ class SlingSystem:
         return sum(arrays, ())
 
     def table_key(self):
-        """Identity of the tables' contents (runs with the same key share one batch)."""
+        """Identity of the tables' contents (runs with the same key share one batch).
+
+        Returns
+        -------
+        str
+            A SHA-1 hex digest of the four tables.
+        """
         return self._table_key
 
     @cached_property
