@@ -461,8 +461,19 @@ class LoadsStudy:
                 for c in states}
 
     def case_verticals(self, cases):
-        """Earth's upward vertical in airframe axes per case, shape (c, 3): the study's
-        attitude, or the trimmed attitude of a towed case's parachute state. [-]"""
+        """Earth's upward vertical in airframe axes per case: the study's attitude, or the
+        trimmed attitude of a towed case's parachute state.
+
+        Parameters
+        ----------
+        cases : pandas.DataFrame
+            The load cases, with their ``hook`` and ``chute`` columns (:attr:`cases`).
+
+        Returns
+        -------
+        ndarray, shape (c, 3)
+            Unit vectors. [-]
+        """
         out = np.tile(self.vertical, (len(cases), 1))
         towed = (cases["hook"] == TOWED).to_numpy()
         chute = cases["chute"].to_numpy(bool)
