@@ -223,15 +223,17 @@ def _tension(results):
             candidates.append((float(ratio[k]), f"lateral study, Summary 'largest cable tension "
                                                 f"factor T/(m g)' (case {k + 1} on sheet Runs)"))
     if results.multibody is not None:
-        frame = results.multibody.to_frame()
-        values = pd.to_numeric(frame["tension / weight max [-]"], errors="coerce")
+        frame = results.multibody.to_frame()  # without a trim, the runs have no metrics
+        values = pd.to_numeric(frame.get("tension / weight max [-]", pd.Series(dtype=float)),
+                               errors="coerce")
         if values.notna().any():
             k = int(values.idxmax())
             candidates.append((float(values[k]), f"multibody, sheet Metrics 'tension / weight "
                                                  f"max' (run '{frame['run'][k]}')"))
     if results.campaign is not None:
         metrics = results.campaign.result.metrics
-        values = pd.to_numeric(metrics["tension / weight max [-]"], errors="coerce")
+        values = pd.to_numeric(metrics.get("tension / weight max [-]", pd.Series(dtype=float)),
+                               errors="coerce")
         if values.notna().any():
             k = int(values.idxmax())
             candidates.append((float(values[k]), f"campaign, sheet Metrics 'tension / weight "
