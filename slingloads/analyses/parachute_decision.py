@@ -232,8 +232,12 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
         g = selection.governing_recommended or selection.governing_stable or {}
         gov2 = str(g.get("condition", ""))
         if np.isfinite(a2) and selection.governing_stable:
-            gov2 = (f"{gov2} (least yaw damping); stability needs "
-                    f"{selection.governing_stable['needs area factor [-]']:.3g} x neutral at "
+            factor = selection.governing_stable['needs area factor [-]']
+            neutral = float(getattr(selection, "neutral_area", math.nan))
+            base = (f"the campaign's neutral area {neutral:.3g} m^2 (its base condition, "
+                    f"alpha 0) = {factor * neutral:.3g} m^2" if np.isfinite(neutral)
+                    else "the campaign's neutral area")
+            gov2 = (f"{gov2} (least yaw damping); stability needs {factor:.3g} x {base} at "
                     f"{selection.governing_stable['condition']}")
     ran1, ran2 = sweep is not None, selection is not None
     chosen, model, reason, governing = math.nan, "", "", ""
