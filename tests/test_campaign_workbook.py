@@ -371,3 +371,24 @@ def test_progress_bar_shows_runs_done_rate_and_time_left(tiny, tmp_path, capsys)
              if line.startswith("campaign runs")]
     assert lines and "2/3" in lines[0]
     assert "3/3" in lines[-1] and "run/s" in lines[-1] and "<" in lines[-1]
+
+
+def test_us_report_keeps_one_unit_per_quantity(tiny, tmp_path):
+    """--units US from the same cache: the loads hand-off's line tension in lbf (the SI
+    report's N / 4.4482216152605, 1 lbf = 0.45359237 kg x 9.80665 m/s^2 exactly), and the
+    1.0 x neutral verdicts' conditions in the matrix's words (KEAS, ft), with no SI speed or
+    length converted into '... ft/s EAS, 0 in'."""
+    path, out, cache = tiny
+    us = tmp_path / "us"
+    assert main(["campaign", str(path), "--out", str(us), "--cache", str(cache), "--units",
+                 "US", "--quiet"]) == 0
+    si_handoff = pd.read_excel(out / "tiny-campaign.xlsx", sheet_name="LoadsHandoff")
+    us_handoff = pd.read_excel(us / "tiny-campaign.xlsx", sheet_name="LoadsHandoff")
+    si_line = si_handoff.set_index("quantity").loc["line tension"]
+    us_line = us_handoff.set_index("quantity").loc["line tension"]
+    assert si_line["unit"] == "N" and us_line["unit"] == "lbf"
+    assert float(us_line["reached max"]) == pytest.approx(
+        float(si_line["reached max"]) / 4.4482216152605, rel=1e-12)
+    neutral = pd.read_excel(us / "tiny-campaign.xlsx", sheet_name="NeutralArea")
+    conditions = " ".join(neutral["condition"].astype(str))
+    assert "KEAS" in conditions and "ft/s EAS" not in conditions and " in," not in conditions

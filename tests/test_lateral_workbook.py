@@ -217,14 +217,48 @@ def test_nominal_report_reads_back_the_hook_cases(nominal):
 
 
 def test_us_report(tmp_path, nominal):
-    """--units US: forces in lbf (1 lbf = 0.45359237 kg x 9.80665 m/s^2 exactly)."""
+    """--units US: forces in lbf (1 lbf = 0.45359237 kg x 9.80665 m/s^2 exactly); every
+    rope length in inches alone (1 in = 0.0254 m exactly): the critical case's rope on the
+    Summary without a remark in ft, no rope length in ft on the Runs and Modes sheets (in SI
+    the paper's feet stay beside the metres)."""
     result, path = nominal
     source = path.parent.parent / "nominal.xlsx"
     assert main(["lateral", str(source), "--out", str(tmp_path), "--units", "US",
                  "--quiet"]) == 0
-    loads = _sheet(tmp_path / "nominal-lateral.xlsx", "LoadsAtAngle", "Envelope")
+    report = tmp_path / "nominal-lateral.xlsx"
+    loads = _sheet(report, "LoadsAtAngle", "Envelope")
     np.testing.assert_allclose(loads["max |Vy| at 30 deg [lbf]"].astype(float),
                                result.comparison.reference[:, 1] / POUND_FORCE, rtol=1e-12)
+    angle = _sheet(report, "Summary", "Design angle").set_index("item")
+    rope = angle.loc["  rope length"]
+    assert rope["unit"] == "in" and " ft" not in str(rope["note"])
+    assert float(rope["value"]) == pytest.approx(
+        float(result.study.critical_case["rope length [m]"]) / 0.0254, rel=1e-12)
+    runs = _sheet(report, "Runs", "Definition of every case")
+    modes = pd.read_excel(report, sheet_name="Modes", header=None)
+    headers = [str(h) for h in [*runs.columns, *modes.iloc[:4].to_numpy().ravel()]]
+    assert "rope length [in]" in headers
+    assert not [h for h in headers if "rope length" in h and "[ft]" in h]
+    si = _sheet(path, "Summary", "Design angle").set_index("item")
+    assert " ft, factor" in str(si.loc["  rope length", "note"])
+
+
+def test_us_plots_in_the_report_units(result):
+    """--units US figures of the lateral study: the carrier displacement in inches (1 in =
+    0.0254 m) and the rope length and motion in the title in inches and ft/s^2, no metre
+    left; the rope legend of the max-angle plot in inches."""
+    from slingloads.io.lateral.plots import plot_max_angle_vs_acceleration, plot_time_histories
+
+    fig = plot_time_histories(result.critical_run, units="US")
+    carrier = fig.axes[2]
+    assert carrier.get_ylabel() == "carrier S [in]"
+    np.testing.assert_allclose(carrier.lines[0].get_ydata(),
+                               result.critical_run.carrier[0] / 0.0254, rtol=1e-12)
+    title = fig._suptitle.get_text()
+    assert " in" in title and " m " not in title and "m/s" not in title
+    legend = plot_max_angle_vs_acceleration(result.study, units="US").legends[0]
+    ropes = [t.get_text() for t in legend.get_texts() if t.get_text().startswith("rope")]
+    assert ropes and all(r.endswith(" in") for r in ropes)
 
 
 @pytest.mark.parametrize("angle_deg", [10.0, 17.3, 25.0])

@@ -399,3 +399,16 @@ def test_canopy_table_must_pull_along_the_wind(small, tmp_path, capsys):
     _bad(small, tmp_path, capsys, {("Study", "parachute table axes"): "canopy",
                                    ("Study", "multibody canopy CD"): "sheet"}, "Study",
          "parachute table axes", "wind axes", "'canopy'", "extended")
+
+
+def test_us_views_in_the_tables_length_unit():
+    """The views of a US report in inches, the unit of its cable length and positions (1 in
+    = 0.0254 m exactly): a point 1 m aft and 2 m up is drawn at 39.37 in and 78.74 in."""
+    from slingloads.io.multibody.plots import plot_view_points
+
+    points = {"fuselage": np.array([[1.0, 0.0, 2.0], [2.0, 0.0, 2.0]])}
+    fig = plot_view_points([("trim", points)], "US")
+    side = fig.axes[0]
+    assert side.get_xlabel() == "X aft [in]" and side.get_ylabel() == "Z up [in]"
+    np.testing.assert_allclose(side.lines[0].get_xdata(), [1 / 0.0254, 2 / 0.0254])
+    np.testing.assert_allclose(side.lines[0].get_ydata(), [2 / 0.0254, 2 / 0.0254])
