@@ -54,9 +54,9 @@ class InputError(SlingloadsError, ValueError):
         """``(file, sheet, cell)``."""
         return self.file, self.sheet, self.cell
 
-    def _message(self):
+    def _message(self, with_file=True):
         where = []
-        if self.file:
+        if self.file and with_file:
             where.append(f"file {self.file!s}")
         if self.sheet:
             where.append(f"sheet {self.sheet!r}")
@@ -86,6 +86,8 @@ def plain(value):
 #: At most this many errors of one input are gathered and reported together; reading stops at
 #: the next one (the message says so).
 MAX_REPORTED_ERRORS = 25
+#: The message of several errors lists them up to about this length, then says how many more.
+MAX_MESSAGE_CHARS = 2400
 
 
 class InputErrors(InputError):
@@ -117,10 +119,20 @@ class InputErrors(InputError):
 
     def _message(self):
         n = len(self.errors)
-        head = (f"{n} errors in the input" if self.complete
-                else f"{n} errors in the input (reading stopped there)")
+        files = {err.file for err in self.errors}
+        one_file = len(files) == 1 and None not in files
+        where = f" of file {self.errors[0].file!s}" if one_file else ""
+        head = (f"{n} errors in the input{where}" if self.complete
+                else f"{n} errors in the input{where} (reading stopped there)")
         lines = [f"{head}:"]
-        lines += [f"  {i}. {err}" for i, err in enumerate(self.errors, start=1)]
+        size = len(head)
+        for i, err in enumerate(self.errors, start=1):
+            line = f"  {i}. {err._message(with_file=not one_file)}"
+            if size + len(line) > MAX_MESSAGE_CHARS and i > 1:
+                lines.append(f"  ... and {n - i + 1} more (fix these first)")
+                break
+            lines.append(line)
+            size += len(line) + 1
         if self.note:
             lines.append(f"  {self.note}")
         return "\n".join(lines)

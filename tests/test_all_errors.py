@@ -111,3 +111,39 @@ def test_reading_stops_at_the_limit(tmp_path):
         read_study(path)
     assert [e.cell for e in info.value.errors] == bad[:MAX_REPORTED_ERRORS]
     assert "reading stopped" in str(info.value)
+
+
+def test_a_deleted_header_row_is_one_error(tmp_path):
+    """A table whose header row was deleted (its first data row moved up into row 1) names
+    no column: one error at A1 saying so, with the sheet's columns, not one 'unknown column'
+    per number of the row."""
+    book = openpyxl.load_workbook(EXAMPLE)
+    book["Stations"].delete_rows(1)
+    path = tmp_path / "noheader.xlsx"
+    book.save(path)
+    with pytest.raises(InputError) as info:
+        read_study(path)
+    err = info.value
+    assert not isinstance(err, InputErrors)
+    assert (err.sheet, err.cell) == ("Stations", "A1")
+    assert "names none of the sheet's columns" in str(err) and "'x [m]'" in str(err)
+
+
+def test_the_message_of_many_errors_is_bounded(tmp_path):
+    """Every cell of MassItems made bad: the message names the file once (not on every line)
+    and stays within MAX_MESSAGE_CHARS plus its last lines, saying how many more there are."""
+    from slingloads.errors import MAX_MESSAGE_CHARS
+
+    book = openpyxl.load_workbook(EXAMPLE)
+    ws = book["MassItems"]
+    for r in range(2, ws.max_row + 1):
+        for col in "CDEFGHIJ":
+            ws[f"{col}{r}"] = "a rather long text where a number belongs"
+    path = tmp_path / "long.xlsx"
+    book.save(path)
+    with pytest.raises(InputErrors) as info:
+        read_study(path)
+    text = str(info.value)
+    assert text.count(str(path)) == 1
+    assert len(text) < MAX_MESSAGE_CHARS + 400
+    assert "more (fix these first)" in text or len(info.value.errors) * 80 < MAX_MESSAGE_CHARS

@@ -248,6 +248,12 @@ class WorkbookReader:
         header = rows[0][1]
         errors = ErrorCollector()  # every bad header, then every bad cell, at once
         found, named = self._columns(spec, header, errors)
+        if errors and not named:  # no header at all (deleted, or the data moved up): one error
+            first = header[min(header)]
+            raise self.error(f"row 1 names none of the sheet's columns (was the header row "
+                             f"deleted, or the table moved?); its columns are "
+                             f"{[c.header for c in spec.columns]}", echo(first), spec.name,
+                             cell_name(1, min(header)))
         last = max(header)
         records = rows[1:]
         for column in spec.columns:
