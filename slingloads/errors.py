@@ -121,7 +121,7 @@ class InputErrors(InputError):
         n = len(self.errors)
         files = {err.file for err in self.errors}
         one_file = len(files) == 1 and None not in files
-        where = f" of file {self.errors[0].file!s}" if one_file else ""
+        where = f" file {self.errors[0].file!s}" if one_file else ""
         head = (f"{n} errors in the input{where}" if self.complete
                 else f"{n} errors in the input{where} (reading stopped there)")
         lines = [f"{head}:"]
