@@ -110,3 +110,76 @@ def test_mode_names_are_unique(example_results):
     numbered), so that the report and the eigenvalue plot name each mode once."""
     names = list(example_results.multibody.linear.modes_frame()["mode"])
     assert len(names) == len(set(names)), names
+
+
+def _ramps_result(verdicts):
+    """A campaign result, made by hand, holding only what the no-parachute figure reads:
+    ramps to 20, 30 and 40 kt of HC1 and HC2 with the verdicts ``verdicts[(name, kt)]`` and
+    yaw and sideslip histories that oscillate over the whole of each panel (no legend finds
+    a clear place inside one)."""
+    from types import SimpleNamespace
+
+    import pandas as pd
+
+    from slingloads.analyses.campaign import NoParachuteResult
+    from slingloads.constants import FOOT, KNOT
+    from slingloads.io.campaign.plots import BETA, YAW
+
+    time = np.linspace(0.0, 100.0, 2001)
+    rows, keys, histories = [], {}, {}
+    for kt in (20, 30, 40):
+        for k, name in enumerate(("HC1", "HC2")):
+            target = kt * KNOT
+            key = f"{name}-{kt}"
+            rows.append({"helicopter": name, "ramp target [m/s]": target,
+                         "verdict": verdicts[(name, kt)]})
+            keys[(name, target)] = key
+            wave = 30.0 * np.sin(2.0 * np.pi * time / (1.7 + k))
+            histories[(name, target)] = pd.DataFrame({"time [s]": time, YAW: wave, BETA: -wave})
+    runs = pd.DataFrame(rows)
+    system = SimpleNamespace(cable=SimpleNamespace(length=60 * FOOT), density_altitude=0.0)
+    study = SimpleNamespace(onset=5.0, rate=0.5, run_length=100.0,
+                            systems={"HC1": system, "HC2": system})
+    return SimpleNamespace(no_parachute=NoParachuteResult(runs, runs.iloc[:0], keys),
+                           campaign=SimpleNamespace(no_parachute=study),
+                           history=histories.__getitem__)
+
+
+def test_no_parachute_legends_give_each_ramps_verdict():
+    """Each ramp's panel of the no-parachute figure has its own legend, readable on the saved
+    figure, whose entries carry that ramp's verdicts (HC2 is convergent at 20 kt, divergent
+    at 30 kt and a static departure at 40 kt; the reference is the runs table the figure is
+    made from): with the legends put where the report puts them, each names its ramp (its
+    panel, or the title of a legend under the figure) and no two legends overlap (their
+    boxes, matplotlib's window extents)."""
+    from matplotlib import pyplot as plt
+    from matplotlib import rc_context
+
+    from slingloads.io.campaign.plots import plot_no_parachute
+    from slingloads.io.common.figures import place_legends, report_style
+
+    verdicts = {("HC1", 20): "convergent", ("HC1", 30): "convergent",
+                ("HC1", 40): "divergent", ("HC2", 20): "convergent",
+                ("HC2", 30): "divergent", ("HC2", 40): "static departure"}
+    with rc_context(report_style()):
+        figure = plot_no_parachute(_ramps_result(verdicts))
+        place_legends(figure)
+        figure.canvas.draw()
+        renderer = figure.canvas.get_renderer()
+        legends = []  # (what names its ramp, texts, box)
+        for ax in figure.axes:
+            if ax.get_legend() is not None:
+                legends.append((ax.get_title(), ax.get_legend()))
+        legends += [(legend.get_title().get_text(), legend) for legend in figure.legends]
+        found = {}
+        for named, legend in legends:
+            kt = [k for k in (20, 30, 40) if f"to {k} kt" in named]
+            assert len(kt) == 1, named
+            found[kt[0]] = sorted(t.get_text() for t in legend.texts)
+        assert found == {kt: [f"HC1 ({verdicts[('HC1', kt)]})",
+                              f"HC2 ({verdicts[('HC2', kt)]})"] for kt in (20, 30, 40)}
+        boxes = [legend.get_window_extent(renderer) for _, legend in legends]
+        for i, a in enumerate(boxes):
+            for b in boxes[i + 1:]:
+                assert not a.overlaps(b), (a, b)
+    plt.close(figure)

@@ -23,7 +23,6 @@ from __future__ import annotations
 import math
 import numbers
 import re
-import textwrap
 
 import numpy as np
 import pandas as pd
@@ -82,6 +81,36 @@ _RED = {"bg_color": "#FFC7CE", "font_color": "#9C0006"}
 _CHAR_PIXELS = 6.3
 #: Pixels of a column per character of its stored width (a Calibri 11 digit).
 _DIGIT_PIXELS = 7
+#: Advance widths of the printable ASCII characters (space to ``~``) in Calibri 11, as
+#: Carlito (metric-compatible with Calibri, the font LibreOffice prints the reports in) gives
+#: them: font units of a 2048-unit em (the fonts' ``hmtx`` tables), regular and bold. A
+#: character outside this range counts as the widest of its table (a row too tall, never
+#: text hidden). [1/2048 em]
+_ADVANCE = {
+    False: (
+    463, 667, 821, 1020, 1038, 1464, 1397, 452, 621, 621, 1020, 1020, 511, 627, 517, 791,
+    1038, 1038, 1038, 1038, 1038, 1038, 1038, 1038, 1038, 1038, 548, 548, 1020, 1020, 1020,
+    949, 1831, 1185, 1114, 1092, 1260, 1000, 941, 1292, 1276, 516, 653, 1064, 861, 1751,
+    1322, 1356, 1058, 1378, 1112, 941, 998, 1314, 1162, 1822, 1063, 998, 959, 628, 791, 628,
+    1020, 1020, 596, 981, 1076, 866, 1076, 1019, 625, 964, 1076, 470, 490, 931, 470, 1636,
+    1076, 1080, 1076, 1076, 714, 801, 686, 1076, 925, 1464, 887, 927, 809, 644, 943, 644,
+    1020
+    ),
+    True: (
+    463, 667, 898, 1020, 1038, 1493, 1443, 478, 638, 638, 1020, 1020, 528, 627, 547, 880,
+    1038, 1038, 1038, 1038, 1038, 1038, 1038, 1038, 1038, 1038, 565, 565, 1020, 1020, 1020,
+    949, 1840, 1241, 1148, 1084, 1291, 999, 940, 1305, 1292, 546, 678, 1120, 866, 1790,
+    1349, 1385, 1090, 1405, 1153, 968, 1014, 1337, 1211, 1856, 1128, 1064, 979, 665, 880,
+    665, 1020, 1020, 615, 1011, 1099, 857, 1099, 1031, 648, 971, 1099, 503, 523, 983, 503,
+    1666, 1099, 1101, 1099, 1099, 728, 817, 710, 1099, 969, 1526, 941, 970, 814, 704, 973,
+    704, 1020
+    ),
+}
+#: Pixels per font unit of Calibri 11 at 96 dpi (11 pt = 14.67 px to the em). [px]
+_FONT_UNIT_PIXELS = 11 * 96 / 72 / 2048
+#: Pixels of a cell's width that its wrapped text does not use (its padding, with a margin:
+#: LibreOffice wraps a 285 px column at 283-286 px of Carlito text). [px]
+_CELL_PADDING = 8
 
 
 def _px(width):
@@ -168,11 +197,39 @@ def _plain(value):
     return str(value)
 
 
+def text_pixels(text, bold=False):
+    """Width of one line of ``text`` in Calibri 11 at 96 dpi, from the font's advance
+    widths (:data:`_ADVANCE`). [px]"""
+    table = _ADVANCE[bool(bold)]
+    widest = max(table)
+    units = sum(table[o - 32] if 32 <= o < 127 else widest for o in map(ord, str(text)))
+    return units * _FONT_UNIT_PIXELS
+
+
 def wrapped_lines(text, width, bold=False):
-    """Lines that ``text`` takes in a wrapped cell ``width`` characters wide (a cautious
-    estimate: a row too tall wastes a little paper, a row too short hides text)."""
-    chars = max(4, int((_px(width) - 8) / (_CHAR_PIXELS * (1.2 if bold else 1.0))))
-    return sum(max(1, len(textwrap.wrap(part, chars))) for part in str(text).split("\n"))
+    """Lines that ``text`` takes in a wrapped cell ``width`` characters wide, as Excel and
+    LibreOffice wrap it: words laid greedily on lines as wide as the cell less its padding,
+    measured with the font's advance widths (:func:`text_pixels`); a word wider than a line
+    broken across lines. A cautious estimate (a row too tall wastes a little paper, a row too
+    short hides text): it breaks only at spaces, where the spreadsheets also break after a
+    hyphen, so that none of its lines holds more than theirs."""
+    room = max(_px(width) - _CELL_PADDING, 4 * _DIGIT_PIXELS)
+    space = text_pixels(" ", bold)
+    count = 0
+    for part in str(text).split("\n"):
+        lines, used = 1, 0.0
+        for word in part.split():
+            wide = text_pixels(word, bold)
+            if used and used + space + wide <= room:
+                used += space + wide
+                continue
+            if used:
+                lines += 1
+            extra = max(0, math.ceil(wide / room) - 1)  # a long word broken by character
+            lines += extra
+            used = wide - extra * room
+        count += lines
+    return count
 
 
 class _Workbook(xlsxwriter.Workbook):

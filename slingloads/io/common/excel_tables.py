@@ -225,6 +225,33 @@ def _column_plan(tables, notes=(), formats_of=None):
     return _Columns(widths, wrapped)
 
 
+#: Width a wrapped text column may grow to on a table sheet (:func:`_wider_text`).
+#: [characters]
+WIDE_TEXT_WIDTH = 60
+#: Least fit-to-width print scale a wider text column may bring a table sheet to. [-]
+_WIDE_TEXT_SCALE = 0.55
+
+
+def _wider_text(frame, columns):
+    """The column plan of a table sheet with its wrapped text columns widened to
+    :data:`WIDE_TEXT_WIDTH` when that prints it on at least 20 % fewer pages (rows of fewer
+    lines outweighing the smaller fit-to-width scale), and the print scale stays at least
+    :data:`_WIDE_TEXT_SCALE`; the plan unchanged otherwise."""
+    if not columns.wrapped:
+        return columns
+    wide = _Columns({j: (WIDE_TEXT_WIDTH if j in columns.wrapped else w)
+                     for j, w in columns.widths.items()}, set(columns.wrapped))
+
+    def pages(plan):
+        height = _table_pixels(frame, plan)
+        return height / page_pixels(orientation_for(plan.pixels, height), plan.pixels)
+
+    width = PRINTABLE["landscape"][0]
+    if width / wide.pixels < _WIDE_TEXT_SCALE or pages(wide) > 0.8 * pages(columns):
+        return columns
+    return wide
+
+
 def _set_widths(ws, columns):
     """Set the column widths of the plan [characters], stored as they are.
 
@@ -393,7 +420,7 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     """
     _check_highlight([frame], highlight, name)
     formats = _number_formats(frame.columns, number_format)
-    columns = _column_plan([frame], formats_of=lambda f: formats)
+    columns = _wider_text(frame, _column_plan([frame], formats_of=lambda f: formats))
     title = frame_title(frame, name)
     names = []
     parts = split_sheet_names(name, len(frame), max_rows)

@@ -363,9 +363,11 @@ def legend_hides_data(ax, legend, renderer):
 def place_legends(figure):
     """Put every legend of ``figure`` where it hides no data: its own place when clear,
     else the first clear place of :data:`LEGEND_PLACES`, else under the whole figure, below
-    its axes' column (outside every panel, so that it covers no neighbour either). Returns
-    True when a legend went outside (the figure is then saved with a tight bounding box, so
-    that it shows)."""
+    its axes' column (outside every panel, so that it covers no neighbour either). Legends
+    that go under the figure are stacked, one under the other in the order of their axes,
+    never drawn over each other; when there are several, each is titled with its panel's
+    title (which panel its entries belong to). Returns True when a legend went outside (the
+    figure is then saved with a tight bounding box, so that it shows)."""
     axes = [ax for ax in figure.axes if ax.get_legend() is not None]
     if not axes:
         return False
@@ -375,7 +377,7 @@ def place_legends(figure):
         FigureCanvasAgg(figure)
     renderer = figure.canvas.get_renderer()
     figure.draw_without_rendering()
-    outside = False
+    outside = []
     for ax in axes:
         legend = ax.get_legend()
         if not legend_hides_data(ax, legend, renderer):
@@ -385,15 +387,22 @@ def place_legends(figure):
             if not legend_hides_data(ax, legend, renderer):
                 break
         else:
-            handles, labels = legend.legend_handles, [t.get_text() for t in legend.texts]
-            size = legend.texts[0].get_fontsize() if legend.texts else None
-            legend.remove()
-            box = ax.get_position()
-            figure.legend(handles, labels, loc="upper center", fontsize=size,
-                          bbox_to_anchor=(0.5 * (box.x0 + box.x1), 0.0),
-                          ncols=min(len(labels), 3))
-            outside = True
-    return outside
+            outside.append(ax)
+    below = {}  # column centre (figure fraction) -> top of the next legend under it
+    for ax in outside:
+        legend = ax.get_legend()
+        handles, labels = legend.legend_handles, [t.get_text() for t in legend.texts]
+        size = legend.texts[0].get_fontsize() if legend.texts else None
+        legend.remove()
+        box = ax.get_position()
+        x = round(0.5 * (box.x0 + box.x1), 6)
+        title = ax.get_title() if len(outside) > 1 else None
+        made = figure.legend(handles, labels, loc="upper center", fontsize=size,
+                             bbox_to_anchor=(x, below.get(x, 0.0)),
+                             ncols=min(len(labels), 3), title=title or None,
+                             title_fontsize=size)
+        below[x] = made.get_window_extent(renderer).y0 / figure.bbox.height
+    return bool(outside)
 
 
 def _plain_text(figure):
