@@ -234,8 +234,10 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
         if np.isfinite(a2) and selection.governing_stable:
             factor = selection.governing_stable['needs area factor [-]']
             neutral = float(getattr(selection, "neutral_area", math.nan))
-            base = (f"the campaign's neutral area {neutral:.3g} m^2 (its base condition, "
-                    f"alpha 0) = {factor * neutral:.3g} m^2" if np.isfinite(neutral)
+            where = str(getattr(selection, "neutral_condition", "") or "")
+            where = f" ({where})" if where else ""
+            base = (f"the campaign's neutral area {neutral:.3g} m^2{where} = "
+                    f"{factor * neutral:.3g} m^2" if np.isfinite(neutral)
                     else "the campaign's neutral area")
             gov2 = (f"{gov2} (least yaw damping); stability needs {factor:.3g} x {base} at "
                     f"{selection.governing_stable['condition']}")

@@ -65,6 +65,8 @@ from .setup import (
     CampaignSetup,
     neutral_area_of,
     scaled_body,
+    towed_trim_of,
+    trim_text,
     yaw_model_of,
 )
 from .stability_map import MapSettings, StabilityMap, stability_map
@@ -82,5 +84,6 @@ __all__ = [
     "carrier_comparison", "code_digest", "damped_runs", "dynamics_envelope", "execute",
     "make_executor", "neutral_area_of", "neutral_check", "run_campaign",
     "sample_full_tail_system", "scaled_body", "select_parachute", "sensitivity_tables",
-    "speed_limits", "stability_map", "stable_runs", "sweep_runs", "yaw_model_of",
+    "speed_limits", "stability_map", "stable_runs", "sweep_runs", "towed_trim_of", "trim_text",
+    "yaw_model_of",
 ]

@@ -35,7 +35,7 @@ from .metrics import HISTORY_LABELS, ordered
 from .no_parachute import NoParachuteResult, NoParachuteStudy, ramp_verdict, speed_limits
 from .selection import SelectionCriteria, condition_text, select_parachute
 from .sensitivity import carrier_comparison, sensitivity_tables
-from .setup import CampaignSetup, neutral_area_of, yaw_model_of
+from .setup import CampaignSetup, neutral_area_of, towed_trim_of, trim_text, yaw_model_of
 from .stability_map import MapSettings, stability_map
 
 #: Run length and step of the 1-DOF check of the neutral area (the sizing's defaults). [s]
@@ -117,8 +117,9 @@ class Campaign:
         The parachute handed to the loads (default: the recommended, else the smallest
         stable). [-]
     neutral_airspeed : float, optional
-        Airspeed of the neutral-area sizing (default: the matrix's highest; the area does not
-        depend on it at zero angle of attack). [m/s]
+        Airspeed of the neutral-area sizing (default: the matrix's highest), at the system's
+        density altitude; the yaw model flies the towed trim's angle of attack there
+        (:func:`~.setup.yaw_model_of`). [m/s]
     name : str
     neutral_fit_range : tuple of float, optional
         Sideslip range of the least-squares linearisation of the neutral-area sizing (default
@@ -130,6 +131,8 @@ class Campaign:
     ----------
     neutral : NeutralAreaResult
         The neutral static area sizing the area factors multiply (computed on construction).
+    neutral_trim : TowedAttitude
+        The towed trim it is read at (alpha 0 when not converged: :attr:`neutral_condition`).
     matrix : CampaignMatrix
         The runs.
     """
@@ -173,7 +176,9 @@ class Campaign:
         speed = self.neutral_airspeed or float(np.max(np.asarray(speeds, float)))
         fit = FIT_RANGE if self.neutral_fit_range is None else tuple(
             float(b) for b in self.neutral_fit_range)
-        neutral = neutral_area_of(self.setup.system, speed, fit)
+        towed = towed_trim_of(self.setup.system, speed)
+        object.__setattr__(self, "neutral_trim", towed)
+        neutral = neutral_area_of(self.setup.system, speed, fit, towed=towed)
         if neutral.already_stable:
             raise InputError("fuselage and fin are already statically stable in yaw (neutral "
                              "parachute area not positive): there is no parachute to size",
@@ -195,6 +200,12 @@ class Campaign:
             row = first.copy()
             row["cable length [m]"] = length
             self.setup.system_for(row)
+
+    @property
+    def neutral_condition(self):
+        """Where the neutral area is read, in words: the towed trim's angle of attack, or
+        alpha 0 and why (no trim found)."""
+        return trim_text(self.neutral_trim, self.setup.system.density_altitude)
 
     @property
     def size(self):
@@ -445,7 +456,8 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
         report = execute(groups, store, executor, size=batch_size, progress=progress)
     run_keys = dict(zip(ids, (j[0] for j in jobs), strict=True))
     metrics = _metrics_frame(campaign.matrix, run_keys, store, campaign.criteria)
-    selection = select_parachute(metrics, campaign.criteria, campaign.neutral.area)
+    selection = select_parachute(metrics, campaign.criteria, campaign.neutral.area,
+                                 campaign.neutral_condition)
     chosen = campaign.chosen_area_factor
     if chosen is None:
         chosen = (selection.recommended if np.isfinite(selection.recommended)

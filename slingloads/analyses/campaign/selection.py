@@ -161,6 +161,8 @@ class Selection:
         The governing condition's factors, its text and the deciding manoeuvre or value.
     neutral_area : float
         [m^2]
+    neutral_condition : str
+        Where the neutral area is read (the towed trim's angle of attack, or alpha 0 and why).
     """
 
     criteria: SelectionCriteria
@@ -170,6 +172,7 @@ class Selection:
     governing_stable: dict | None
     governing_recommended: dict | None
     neutral_area: float
+    neutral_condition: str = ""
 
     @property
     def smallest_stable_area(self):
@@ -264,7 +267,7 @@ def _governing_recommended(m, chosen):
             "largest trimmed swing angle [deg]": float(swing["_swing"])}
 
 
-def select_parachute(metrics, criteria=None, neutral_area=1.0):
+def select_parachute(metrics, criteria=None, neutral_area=1.0, neutral_condition=""):
     """Smallest stable and recommended parachute areas (module notes).
 
     Parameters
@@ -274,6 +277,8 @@ def select_parachute(metrics, criteria=None, neutral_area=1.0):
     criteria : SelectionCriteria, optional
     neutral_area : float
         [m^2]
+    neutral_condition : str
+        Where the neutral area is read (:attr:`Campaign.neutral_condition`).
 
     Returns
     -------
@@ -293,4 +298,4 @@ def select_parachute(metrics, criteria=None, neutral_area=1.0):
     governing = _governing_stable(m, smallest)
     return Selection(criteria, by_area, smallest, recommended, governing,
                      _governing_recommended(m, recommended) if np.isfinite(recommended)
-                     else None, float(neutral_area))
+                     else None, float(neutral_area), str(neutral_condition))

@@ -10,7 +10,12 @@ shares the base's aerodynamic tables, so that the runs batch together.
 The neutral static area is that of the parachute-sizing analysis
 (:func:`slingloads.analyses.chute_sizing.neutral_area`, paper section 4.1) on the base's own
 fuselage, fin, hardpoints and yaw inertia about the suspension axis:
-:func:`neutral_area_of`.
+:func:`neutral_area_of`. Its yaw model (:func:`yaw_model_of`) reads the fuselage tables at the
+towed trim's angle of attack at its condition (airspeed, density altitude; the system with its
+parachute), from :func:`slingloads.analyses.towed_attitude.towed_attitude`, the attitude the
+parachute sizing, the loads' towed cases and the multibody trim fly: the campaign's neutral area
+is then the sizing's at the same condition. Where no trim is found the model stays at alpha 0,
+and :func:`trim_text` says so (the campaign's Summary prints it beside the neutral area).
 """
 
 from __future__ import annotations
@@ -20,6 +25,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from slingloads.analyses.chute_sizing import FIT_RANGE, neutral_area
+from slingloads.analyses.towed_attitude import towed_attitude
+from slingloads.constants import FOOT, KNOT
 from slingloads.errors import InputError
 from slingloads.models.aerodynamics import Fin
 from slingloads.models.airframe import hanging_yaw_inertia
@@ -54,10 +61,51 @@ def scaled_body(body, mass):
     return RigidBody(mass, body.cg, body.inertia * (mass / body.mass), body.name)
 
 
-def yaw_model_of(system, airspeed=None, density_altitude=None):
+def towed_trim_of(system, airspeed=None, density_altitude=None):
+    """The towed trim of a system with its parachute at a condition (module notes).
+
+    Parameters
+    ----------
+    system : SlingSystem
+    airspeed, density_altitude : float, optional
+        Condition (default: the system's). [m/s], [m]
+
+    Returns
+    -------
+    TowedAttitude
+        :func:`~slingloads.analyses.towed_attitude.towed_attitude` of the system (converged
+        or with the trim's reason).
+    """
+    if density_altitude is not None and float(density_altitude) != system.density_altitude:
+        system = system.with_(density_altitude=float(density_altitude))
+    return towed_attitude(system, airspeed)
+
+
+def trim_text(towed, density_altitude):
+    """The condition of a yaw model in words: the trim's angle of attack, or alpha 0 and why.
+
+    Parameters
+    ----------
+    towed : TowedAttitude
+    density_altitude : float
+        [m]
+
+    Returns
+    -------
+    str
+    """
+    where = (f"{towed.airspeed / KNOT:.0f} KEAS, density altitude "
+             f"{density_altitude / FOOT:.0f} ft")
+    if towed.converged:
+        return f"at the towed trim, alpha {np.degrees(towed.alpha):.3g} deg ({where})"
+    return f"at alpha 0: no towed trim at {where} ({towed.message})"
+
+
+def yaw_model_of(system, airspeed=None, density_altitude=None, towed=None):
     """The 1-DOF yaw model (:class:`~slingloads.models.yaw_dynamics.YawModel`) of a towed
     system: its fuselage, fin, hardpoints, parachute and yaw inertia about the vertical through
-    the hub of the hanging body (:func:`~slingloads.models.airframe.hanging_yaw_inertia`).
+    the hub of the hanging body (:func:`~slingloads.models.airframe.hanging_yaw_inertia`), at
+    the towed trim's angle of attack (:func:`towed_trim_of`; alpha 0 when no trim is found).
 
     Parameters
     ----------
@@ -65,6 +113,8 @@ def yaw_model_of(system, airspeed=None, density_altitude=None):
         With a parachute.
     airspeed, density_altitude : float, optional
         Condition (default: the system's). [m/s], [m]
+    towed : TowedAttitude, optional
+        The trim at that condition (default: :func:`towed_trim_of`).
 
     Returns
     -------
@@ -79,12 +129,16 @@ def yaw_model_of(system, airspeed=None, density_altitude=None):
     inertia = hanging_yaw_inertia(body.inertia, body.cg, system.hardpoints.hub)
     speed = system.airspeed if airspeed is None else airspeed
     altitude = system.density_altitude if density_altitude is None else density_altitude
+    if towed is None:
+        towed = towed_trim_of(system, speed, altitude)
+    alpha = towed.alpha if towed.converged else 0.0
     return YawModel(system.fuselage, fin, system.hardpoints, inertia,
-                    FlightCondition(speed, altitude), system.parachute.parachute)
+                    FlightCondition(speed, altitude, alpha), system.parachute.parachute)
 
 
-def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE):
-    """Neutral yaw static stability area of a towed system (paper section 4.1).
+def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE, towed=None):
+    """Neutral yaw static stability area of a towed system (paper section 4.1), at the towed
+    trim's angle of attack (:func:`yaw_model_of`).
 
     Parameters
     ----------
@@ -94,6 +148,8 @@ def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE):
         Equivalent airspeed (default the system's). [m/s]
     fit_range : (float, float)
         Sideslip range of the slope fits. [rad]
+    towed : TowedAttitude, optional
+        The trim at that airspeed (default: :func:`towed_trim_of`).
 
     Returns
     -------
@@ -103,7 +159,7 @@ def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE):
     speed = system.airspeed if airspeed is None else airspeed
     if not speed > 0:
         raise InputError("the neutral area needs an airspeed > 0 [m/s]", speed)
-    return neutral_area(yaw_model_of(system, speed), fit_range)
+    return neutral_area(yaw_model_of(system, speed, towed=towed), fit_range)
 
 
 @dataclass(frozen=True, eq=False)

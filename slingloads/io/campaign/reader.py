@@ -129,8 +129,8 @@ def list_parameter(params, name):
 
 
 def read_system(reader, params, study):
-    """The towed system of the workbook (module notes), with a parachute of area 1 m^2 (each
-    run replaces it) and the first listed cable length.
+    """The towed system of the workbook (module notes), with the parachute area the study flies
+    (:func:`base_parachute_area`; each run replaces it) and the first listed cable length.
 
     Returns
     -------
@@ -150,7 +150,7 @@ def read_system(reader, params, study):
     if fuselage is None and fin is None:
         raise reader.error("the campaign needs a FuselageAero or a FinAero sheet",
                            sheet="FuselageAero")
-    chute = read_parachute(reader, params, 1.0)
+    chute = read_parachute(reader, params, base_parachute_area(params))
     if not reader.has_sheet("ParachuteCD"):
         chute = replace(chute, cd=extended_cd_table())
     with located(params, default="campaign canopy mass"):
@@ -172,6 +172,19 @@ def read_system(reader, params, study):
     with located(params, default="campaign cable lengths"):
         return SlingSystem(body, airframe.hardpoints, cable, fuselage, surfaces, holder,
                            name=str(params("study name")))
+
+
+def base_parachute_area(params):
+    """The parachute area of the campaign's base system: the one its towed trim (the attitude
+    of the campaign's 1-DOF yaw model and neutral area) is flown with. The multibody model's
+    ('multibody parachute area', else the Study's 'parachute area'), as the parachute sizing's
+    trim flies it, so that both analyses read the neutral area at one attitude; 1 m^2 when
+    neither is given (the campaign's Summary states the area beside the neutral area). [m^2]"""
+    for name in ("multibody parachute area", "parachute area"):
+        area = params.positive(name, allow_zero=True)
+        if area > 0:
+            return float(area)
+    return 1.0
 
 
 def _masses(reader):

@@ -188,7 +188,7 @@ def selection_table(report, units):
 
     rows = [
         ("neutral static area (1-DOF sizing)", a_neutral, unit,
-         "total dN/dbeta = 0 (paper 4.1)"),
+         f"total dN/dbeta = 0 (paper 4.1), {r.campaign.neutral_condition}"),
         ("smallest area stable in every condition", area(sel.smallest_stable), unit,
          f"{sel.smallest_stable:.3g} x neutral" if np.isfinite(sel.smallest_stable)
          else "no area of the matrix is stable in every condition"),
