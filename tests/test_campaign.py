@@ -482,3 +482,66 @@ def test_sensitivity_tables_and_carrier_pairs_against_a_hand_built_table():
     pairs = carrier_comparison(frame)
     assert len(pairs) == 4
     assert_allclose(pairs["yaw change free - frozen"], 1.0)
+
+
+# ------------------------------------------------------- neutral area at the towed trim
+def test_campaign_neutral_area_is_the_sizings_at_the_towed_trim():
+    """On the example, the campaign's neutral area (its base system, 80 KEAS) equals the
+    parachute sizing's (its own yaw model, at the towed trim's angle of attack of the
+    multibody system at its 80 KEAS) to round-off: both read the fuselage tables at the one
+    towed trim (-22.2 deg, docs/parachute-sizing.md), the campaign's trim equal to the
+    sizing's. The same model read at alpha 0 (the campaign before) gives a different area
+    (0.773 against 0.612 m^2), so the comparison can fail."""
+    from dataclasses import replace
+
+    from slingloads.analyses.campaign import neutral_area_of, yaw_model_of
+    from slingloads.analyses.chute_sizing import neutral_area
+    from slingloads.io.study import read_study
+    from slingloads.runs.chute_sizing import run
+
+    study = read_study(EXAMPLE, ["campaign", "chute sizing", "multibody"])
+    campaign = study.inputs.campaign.campaign
+    sizing = run(study)
+    assert sizing.towed.converged and campaign.neutral_trim.converged
+    assert campaign.neutral_trim.alpha == pytest.approx(sizing.towed.alpha, abs=1e-12)
+    assert np.degrees(sizing.towed.alpha) == pytest.approx(-22.15, abs=0.01)
+    assert campaign.neutral.area == pytest.approx(sizing.static.area, rel=1e-12)
+    assert campaign.neutral.area == pytest.approx(0.612, abs=5e-4)
+    assert campaign.neutral_condition.startswith("at the towed trim, alpha -22.2 deg (80 KEAS")
+    system, speed = campaign.setup.system, campaign.neutral_trim.airspeed
+    model = yaw_model_of(system, speed)
+    level = replace(model, condition=replace(model.condition, alpha=0.0))
+    at_zero = neutral_area(level, campaign.neutral_fit_range).area
+    assert at_zero == pytest.approx(0.773, abs=5e-4)
+    assert neutral_area_of(system, speed, campaign.neutral_fit_range).area == pytest.approx(
+        sizing.static.area, rel=1e-12)
+
+
+def test_without_a_towed_trim_the_campaign_stays_at_alpha_0_and_says_so(monkeypatch):
+    """When no towed trim is found (a stand-in trim that did not converge), the campaign's
+    neutral area is that of the same yaw model at alpha 0 (built here directly), and its
+    condition text, printed beside the neutral area in the Summary and the decision, says
+    alpha 0 and why."""
+    from types import SimpleNamespace
+
+    from slingloads.analyses.campaign import campaign as module
+    from slingloads.analyses.campaign import yaw_model_of
+    from slingloads.analyses.chute_sizing import FIT_RANGE, neutral_area
+    from slingloads.analyses.towed_attitude import TowedAttitude
+    from slingloads.models.yaw_dynamics import FlightCondition
+
+    failed = TowedAttitude(60 * KNOT, SimpleNamespace(converged=False,
+                                                      message="the fuselage table is left"),
+                           True)
+    monkeypatch.setattr(module, "towed_trim_of", lambda system, speed: failed)
+    campaign = tiny()
+    model = yaw_model_of(base_system(), 60 * KNOT, 0.0, towed=failed)
+    assert model.condition == FlightCondition(60 * KNOT, 0.0, 0.0)
+    assert campaign.neutral.area == pytest.approx(neutral_area(model, FIT_RANGE).area,
+                                                  rel=1e-12)
+    assert campaign.neutral_condition == ("at alpha 0: no towed trim at 60 KEAS, density "
+                                          "altitude 0 ft (the fuselage table is left)")
+    monkeypatch.undo()
+    trimmed = tiny()  # the real trim converges at 60 KEAS, 1.7 deg nose down
+    assert trimmed.neutral_condition.startswith("at the towed trim")
+    assert trimmed.neutral.area != pytest.approx(campaign.neutral.area, rel=1e-3)

@@ -116,3 +116,18 @@ def test_a_finding_is_reported_not_refused():
     found = Results(chute_sizing=sized, campaign=report).shortfalls()
     assert len(found) == 4 and found[0] == chute_shortfalls(sized)[0]
     assert EXIT_INCOMPLETE == 3
+
+
+def test_the_campaign_factor_names_where_its_neutral_area_is_read():
+    """The multibody proposal's reason multiplies the campaign's neutral area and says where it
+    is read (the selection's condition text: at the towed trim, or alpha 0 and why); worked by
+    hand: 1.5 x 0.6 m^2 = 0.9 m^2, and no "alpha 0" when the trim is used."""
+    governing = {"condition": "80 KEAS", "needs area factor [-]": 1.5}
+    where = "at the towed trim, alpha -22.2 deg (80 KEAS, density altitude 0 ft)"
+    chosen = SimpleNamespace(recommended_area=0.9, governing_recommended=governing,
+                             governing_stable=governing, neutral_area=0.6,
+                             neutral_condition=where)
+    d = decide(STATIC, Sweep([("convergent",) * 2] * 3), chosen, METRICS, STABLE, one_dof, 1.0)
+    assert d.deciding_model == MULTIBODY
+    assert f"1.5 x the campaign's neutral area 0.6 m^2 ({where}) = 0.9 m^2" in d.governing
+    assert "alpha 0" not in d.governing
