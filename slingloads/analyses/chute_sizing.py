@@ -35,6 +35,7 @@ from slingloads.models.yaw_dynamics import (
     integrate_dopri,
     integrate_reference,
     integrate_rk4,
+    relative_wind,
     yaw_solver_settings,
 )
 
@@ -320,8 +321,7 @@ class LinearYaw:
         v_rel : ndarray
             Relative speed sqrt(V^2 + v^2). [m/s]
         """
-        v = np.asarray(gust, dtype=float)
-        return np.arctan2(v, self.tas), np.hypot(self.tas, v)
+        return relative_wind(self.tas, gust)
 
     def derivatives(self, psi, rate, gamma, v_rel, area):
         """State derivatives of the linear model (the protocol of :class:`YawModel`).

@@ -134,6 +134,29 @@ def _arms(axis, r):
     c = np.cross(axis, np.asarray(r, float))
     return float(c[1]), float(-c[0])
 
+def relative_wind(tas, gust):
+    """Wind angle and relative speed of a lateral gust on a flight at true airspeed ``tas``:
+    the one definition for the yaw models (:class:`YawModel` and the linear model of
+    :mod:`slingloads.analyses.chute_sizing`).
+
+    Parameters
+    ----------
+    tas : float
+        True airspeed. [m/s]
+    gust : array_like
+        Lateral gust velocity. [m/s]
+
+    Returns
+    -------
+    gamma : ndarray
+        Wind angle atan2(v, V). [rad]
+    v_rel : ndarray
+        Relative speed sqrt(V^2 + v^2). [m/s]
+    """
+    v = np.asarray(gust, dtype=float)
+    return np.arctan2(v, tas), np.hypot(tas, v)
+
+
 @dataclass(frozen=True)
 class YawModel:
     """The carried helicopter's yaw about its suspension axis (module notes).
@@ -275,8 +298,7 @@ class YawModel:
         v_rel : ndarray
             Relative speed sqrt(V^2 + v^2). [m/s]
         """
-        v = np.asarray(gust, dtype=float)
-        return np.arctan2(v, self._tas), np.hypot(self._tas, v)
+        return relative_wind(self._tas, gust)
 
     # ----------------------------------------------------------------------------- moments
     def moments(self, beta, rate, v_rel, area):
