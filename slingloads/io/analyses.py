@@ -10,14 +10,13 @@ Each analysis has a folder ``slingloads/io/<folder>/`` with
   ``locate(err, study, context) -> InputError``, putting an error the analysis
   raised while running at the workbook cell its value came from
   (:meth:`slingloads.runs.study.Study.located`);
-* ``report.py``: ``write(result, out_dir, stem, units, study)``, publishing through
-  :mod:`slingloads.io.common.atomic` (the four dynamics reports through
-  :func:`slingloads.io.common.report.write_report`; the loads report also takes ``checks``,
-  the checks against the other analyses of the run: :mod:`slingloads.io.consistency`);
-  ``start_figures(result, units, study)`` (a started
-  :class:`~slingloads.io.common.figures.FigureRenderer`, then passed to ``write`` as
-  ``figures=``) so that the figures are drawn while the next analyses are computed;
-  ``OUTPUTS``, the names of its files;
+* ``report.py``: ``report_kind(study)``, what its report is made of
+  (:class:`~slingloads.io.common.report_writer.ReportKind`), whose figures
+  :func:`~slingloads.io.common.report_writer.start_figures` starts drawing while the next
+  analyses are computed; ``write(result, out_dir, stem, units, study)``, writing it through
+  :func:`~slingloads.io.common.report_writer.write_report` with those figures (``figures=``;
+  the loads report also takes ``checks``, the checks against the other analyses of the run:
+  :mod:`slingloads.io.consistency`); ``OUTPUTS``, the names of its files;
 * ``plots.py``: the figures of the report.
 
 Running an analysis is not here: :mod:`slingloads.runs` runs the analyses of a study, in
@@ -136,8 +135,11 @@ class Analysis:
     def start_figures(self, result, units, study):
         """Start drawing its report's figures in worker processes (so that they are drawn
         while the other analyses are computed): a context manager to leave once the report
-        is written."""
-        return self.modules().report.start_figures(result, units, study)
+        is written (:func:`~slingloads.io.common.report_writer.start_figures` of its report
+        module's ``report_kind(study)``)."""
+        from slingloads.io.common.report_writer import start_figures
+
+        return start_figures(self.modules().report.report_kind(study), result, units)
 
     def output_patterns(self, stem):
         """Regular expressions of the names of its report files for input ``stem`` (its

@@ -64,8 +64,8 @@ def publish_reports(results, outputs, stem, units="SI", names=None, figures=None
     names : iterable of str, optional
         Default: every analysis with a result.
     figures : dict, optional
-        Analysis name -> its figures already started (its report module's
-        ``start_figures``).
+        Analysis name -> its figures already started
+        (:meth:`~slingloads.io.analyses.Analysis.start_figures`).
     before, after : callable, optional
         Called as ``before(name)`` and ``after(name)`` around each report.
 

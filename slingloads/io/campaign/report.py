@@ -31,7 +31,7 @@ import pandas as pd
 from slingloads import __version__
 from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
 from slingloads.io.common.excel import Section
-from slingloads.io.common.figures import plot_function, start_drawing
+from slingloads.io.common.figures import plot_function
 from slingloads.io.common.ownership import PARQUET_KEY
 from slingloads.io.common.report import (
     check_units,
@@ -391,12 +391,6 @@ def _figures(report, units):
     return figs
 
 
-def start_figures(report, units, study):
-    """Start drawing the campaign report's figures (while the other analyses run)."""
-    return start_drawing({tag: job for tag, (_, job) in _figures(report, units).items()},
-                         _PNG_DPI)
-
-
 def write_histories(result, path):
     """Every stored history as one Parquet file (SI, angles in degrees), ``run`` first, with
     slingloads' mark in its key-value metadata (``PARQUET_KEY`` = the version:
@@ -461,7 +455,9 @@ def _titles(report):
     return {tag: title for tag, (title, _) in _figures(report, "SI").items()}
 
 
-def _write_histories(report, path):
+def _write_histories(report, units, path, info):
+    """``<stem>-campaign-histories.parquet`` (:func:`write_histories`: SI, whatever
+    ``units``; ``info`` unused)."""
     write_histories(report.result, path)
 
 
@@ -469,6 +465,14 @@ def _write_histories(report, path):
 REPORT = ReportKind(tag="campaign", title=TITLE, description=DESCRIPTION,
                     conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_jobs,
                     titles=_titles, files={"histories.parquet": _write_histories})
+
+
+def report_kind(study):
+    """The campaign report of ``study``: :data:`REPORT` with the study's parachute
+    decision."""
+    from slingloads.io.common.decision import with_decision
+
+    return with_decision(REPORT, study)
 
 
 def write(report, out_dir, stem, units, study, figures=None, findings=None):
@@ -485,7 +489,8 @@ def write(report, out_dir, stem, units, study, figures=None, findings=None):
     study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
-        Already drawing the figures (:func:`start_figures`); default: drawn now.
+        Already drawing the figures (:func:`~slingloads.io.common.report_writer.
+        start_figures` of :func:`report_kind`); default: drawn now.
     findings : Findings, optional
         The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
         default: those of ``study.results``.
@@ -494,7 +499,5 @@ def write(report, out_dir, stem, units, study, figures=None, findings=None):
     -------
     list of pathlib.Path
     """
-    from slingloads.io.common.decision import with_decision
-
-    return write_report(with_decision(REPORT, study), report, out_dir, stem, units, study,
+    return write_report(report_kind(study), report, out_dir, stem, units, study,
                         figures, findings=findings)

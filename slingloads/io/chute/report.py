@@ -32,10 +32,7 @@ from slingloads.constants import FOOT, POUND_FORCE
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.decision import decision_section, with_decision
 from slingloads.io.common.excel import Section
-from slingloads.io.common.figures import (
-    plot_function,
-    start_drawing,
-)
+from slingloads.io.common.figures import plot_function
 from slingloads.io.common.report import (
     convert_columns,
     report_unit,
@@ -429,15 +426,6 @@ def _figures(result, units="SI"):
     return figs
 
 
-def start_figures(result, units, study):
-    """Start drawing the sizing report's figures (while the other analyses run), and its CSV
-    file after them."""
-    renderer = start_drawing(_figures(result, units), _PNG_DPI)
-    if result.sweep is not None:
-        renderer.later("histories.csv", histories_csv, result)
-    return renderer
-
-
 def histories_csv(result):
     """The bytes of ``<stem>-chute-histories.csv`` (:func:`history_csv_frame`)."""
     return csv_bytes(history_csv_frame(result))
@@ -458,6 +446,11 @@ REPORT = ReportKind(tag="chute", title=TITLE, description=DESCRIPTION,
                     titles=_titles, data={"histories.csv": _histories_csv_if_swept})
 
 
+def report_kind(study):
+    """The sizing report of ``study``: :data:`REPORT` with the study's parachute decision."""
+    return with_decision(REPORT, study)
+
+
 def write(result, out_dir, stem, units, study, figures=None, findings=None):
     """Write ``<stem>-chute.xlsx``, ``<stem>-chute-histories.csv`` and ``<stem>-chute-*.png``
     atomically (:func:`~slingloads.io.common.report_writer.write_report` of
@@ -473,7 +466,8 @@ def write(result, out_dir, stem, units, study, figures=None, findings=None):
     study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
-        Already drawing the figures (:func:`start_figures`); default: drawn now.
+        Already drawing the figures (:func:`~slingloads.io.common.report_writer.
+        start_figures` of :func:`report_kind`); default: drawn now.
     findings : Findings, optional
         The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
         default: those of ``study.results``.
@@ -482,5 +476,5 @@ def write(result, out_dir, stem, units, study, figures=None, findings=None):
     -------
     list of pathlib.Path
     """
-    return write_report(with_decision(REPORT, study), result, out_dir, stem, units, study,
+    return write_report(report_kind(study), result, out_dir, stem, units, study,
                         figures, findings=findings)

@@ -40,10 +40,7 @@ from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 from slingloads.constants import FOOT
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section
-from slingloads.io.common.figures import (
-    plot_function,
-    start_drawing,
-)
+from slingloads.io.common.figures import plot_function
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -421,14 +418,6 @@ def _figures(result, units):
     return figs
 
 
-def start_figures(result, units, study):
-    """Start drawing the lateral report's figures (while the other analyses run), and its
-    CSV file after them."""
-    renderer = start_drawing(_figures(result, units), _PNG_DPI)
-    renderer.later("histories.csv", histories_csv, result)
-    return renderer
-
-
 def histories_csv(result):
     """The bytes of ``<stem>-lateral-histories.csv``: every sample of the critical run, SI."""
     return csv_bytes(csv_frame(result.critical_run.to_frame()))
@@ -442,6 +431,11 @@ def _titles(result):
 REPORT = ReportKind(tag="lateral", title=TITLE, description=DESCRIPTION,
                     conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
                     titles=_titles, data={"histories.csv": histories_csv})
+
+
+def report_kind(study):
+    """The lateral report of ``study`` (:data:`REPORT`)."""
+    return REPORT
 
 
 def write(result, out_dir, stem, units, study, figures=None, findings=None):
@@ -459,7 +453,8 @@ def write(result, out_dir, stem, units, study, figures=None, findings=None):
     study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
-        Already drawing the figures (:func:`start_figures`); default: drawn now.
+        Already drawing the figures (:func:`~slingloads.io.common.report_writer.
+        start_figures` of :func:`report_kind`); default: drawn now.
     findings : Findings, optional
         The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
         default: those of ``study.results``.

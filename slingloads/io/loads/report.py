@@ -1,7 +1,10 @@
 """The loads report: a print-ready Excel workbook, CSV tables and PNG plots of a loads analysis.
 
-:func:`write_loads_outputs` writes, all at once or not at all
-(:mod:`slingloads.io.common.atomic`):
+The report is a :class:`~slingloads.io.common.report_writer.ReportKind` (:func:`loads_report`,
+:func:`report_kind` for a workbook's study) written by the one report writer,
+:func:`~slingloads.io.common.report_writer.write_report` (:func:`write` for a study,
+:func:`write_loads_outputs` from Python), all at once or not at all
+(:mod:`slingloads.io.common.atomic`), its files named ``<stem>-<name>`` (:data:`OUTPUTS`):
 
 * ``<stem>-loads.xlsx``, the report: *Cover* (identification, input file and its SHA-256,
   version, sheets, conventions), *Summary* (findings and flags: hook angle against
@@ -37,6 +40,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 from dataclasses import replace
+from functools import partial
 
 import numpy as np
 import pandas as pd
@@ -46,8 +50,8 @@ from slingloads.analyses.hook_loads import TOWED
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS, LOAD_COLUMNS
 from slingloads.errors import InputError
-from slingloads.io.common.atomic import atomic_outputs, check_outputs, safe_file_part
-from slingloads.io.common.cover import info_from_digest, input_digest, report_info
+from slingloads.io.common.atomic import safe_file_part
+from slingloads.io.common.cover import info_from_digest, input_digest
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.decision import decision_section
 from slingloads.io.common.excel import (
@@ -57,14 +61,7 @@ from slingloads.io.common.excel import (
     format_by_header,
     write_workbook,
 )
-from slingloads.io.common.figures import (
-    drawings,
-    plot_function,
-    png_bytes,
-    start_drawing,
-    task_result,
-)
-from slingloads.io.common.findings import with_findings
+from slingloads.io.common.figures import plot_function
 from slingloads.io.common.locate import located
 from slingloads.io.common.report import (
     check_units,
@@ -76,7 +73,7 @@ from slingloads.io.common.report import (
     report_value,
     warning_sections,
 )
-from slingloads.io.common.report_writer import protected_inputs, study_findings_of
+from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.common.units import unit_label
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.tags import COMPONENT_TAGS, COMPONENT_TITLES
@@ -90,6 +87,9 @@ PNG_COMPONENTS = COMPONENTS
 OUTPUTS = ("{stem}-loads.xlsx", "{stem}-sfbm.xlsx", "{stem}-sfbm.csv", "{stem}-envelope.csv",
            "{stem}-stations.png", *(f"{{stem}}-{COMPONENT_TAGS[n]}.png" for n in COMPONENTS),
            "{stem}-sfbm_all.png", "{stem}-hull_*.png", "{stem}-loads.bdf")
+
+#: Component pairs of the 2-D envelopes (hull tables and plots) unless the study names others.
+DEFAULT_HULL_PAIRS = (("Vy", "Mz"), ("Vz", "My"))
 
 #: Columns of the SFBM CSV file (SI, limit loads).
 SFBM_CSV_COLUMNS = ("case", "station", "x_m", "Vx_N", "Vy_N", "Vz_N", "Mx_Nm", "My_Nm",
@@ -701,11 +701,12 @@ def _default_hull_station(result, pair):
 
 
 def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
-                        hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None, *,
+                        hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None, *,
                         input_paths: Sequence = (), max_rows=EXCEL_MAX_ROWS, plots=True,
                         info=None, findings=None, sfbm_workbook=False, figures=None,
                         nastran=None, checks=None, dynamics=None, study_findings=None):
-    """Write the loads report (workbook, CSV tables, PNG plots) atomically.
+    """Write the loads report (workbook, CSV tables, PNG plots) atomically: the Python call
+    of :func:`~slingloads.io.common.report_writer.write_report` of :func:`loads_report`.
 
     Parameters
     ----------
@@ -742,7 +743,9 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         Also write ``<stem>-sfbm.xlsx``, every case at every station in report units (the
         CSV file always has them in SI).
     figures : FigureRenderer, optional
-        Already drawing this report's figures (:func:`start_figures`); default: drawn now.
+        Already drawing this report's figures
+        (:func:`~slingloads.io.common.report_writer.start_figures` of :func:`loads_report`
+        with the same hull pairs and stations); default: drawn now.
     nastran : dict or True, optional
         Also write ``<stem>-loads.bdf``, the load cases as a Nastran input file in the units
         ``units``, with these options of :func:`~slingloads.io.loads.nastran.prepare_nastran`
@@ -769,30 +772,21 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
         nothing is written then.
     """
     check_units(units)
-    jobs, titles, stations = figure_jobs(result, units, hull_pairs, hull_stations)
-    if not plots:
-        jobs, titles = {}, {}
-    tags = list(jobs)
-    names = [f"{stem}-loads.xlsx", *([f"{stem}-sfbm.xlsx"] if sfbm_workbook else []),
-             f"{stem}-sfbm.csv", f"{stem}-envelope.csv", *(f"{stem}-{tag}.png" for tag in tags)]
     deck = None
     if nastran is not None and nastran is not False:
         deck = prepare_nastran(result, units=units, inputs_digest=inputs_digest,
                                **({} if nastran is True else dict(nastran)))
-        names.append(f"{stem}-loads.bdf")
-    check_outputs(out_dir, names, input_paths)
+    kind = loads_report(hull_pairs, hull_stations, plots=plots, findings=findings,
+                        checks=checks, dynamics=dynamics, deck=deck,
+                        sfbm_workbook=sfbm_workbook, max_rows=max_rows)
     if info is None:
         info = info_from_digest(inputs_digest, title=TITLE, analysis=ANALYSIS,
                                 study=result.study.name, units=units, conventions=CONVENTIONS)
-    info = info.with_files(n for n in names if not n.endswith("-loads.xlsx"))
-
-    with drawings(jobs, figures) as pngs:  # drawn while the tables are built and written
-        return _publish(result, out_dir, stem, units, hull_pairs, stations, findings,
-                        input_paths, info, max_rows, sfbm_workbook, pngs, titles, deck,
-                        checks, dynamics, figures, study_findings)
+    return write_report(kind, result, out_dir, stem, units, figures=figures if plots else None,
+                        findings=study_findings, info=info, inputs=input_paths)
 
 
-def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_stations=None):
+def figure_jobs(result, units, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None):
     """The loads report's figures: ``({tag: (plot function, args, kwargs)}, {tag: title},
     stations of the hull tables)``, after checking the hull pairs and stations.
 
@@ -824,44 +818,6 @@ def figure_jobs(result, units, hull_pairs=(("Vy", "Mz"), ("Vz", "My")), hull_sta
             jobs[tag] = (plot_hull, (result, index, pair, units), {})
             titles[tag] = f"{pair[0]}-{pair[1]} LIMIT envelope at {result.station_ids[index]}"
     return jobs, titles, stations
-
-
-def _publish(result, out_dir, stem, units, hull_pairs, stations, findings, input_paths,
-             info, max_rows, sfbm_workbook, pngs, titles, deck=None, checks=None,
-             dynamics=None, figures=None, study_findings=None):
-    """Build the tables and publish every file of the loads report (the PNGs are awaited
-    when the Plots sheet is written; the CSV files are those the renderer ``figures`` made,
-    when it was started with them: :func:`start_figures`)."""
-    embedded = {titles[tag]: png for tag, png in pngs.items()}
-    sheets = _workbook_sheets(result, units, hull_pairs, stations, findings or {}, checks)
-    if deck is not None:
-        sheets["Nastran"] = nastran_sheet(deck)
-    highlight = {"Exceedance": Highlight([c for c in sheets_columns(sheets, "Exceedance")
-                                          if c.endswith("ratio [-]") or c == "worst [-]"]),
-                 "ExceedanceDetail": Highlight(["exceedance ratio [-]"], 1.0)}
-    if dynamics is not None:
-        sheets["Dynamics"] = dynamics_sections(result, dynamics, units)
-    sheets = with_findings(sheets, study_findings, units)
-    # the CSV files first: made here unless the helper has made them (it makes them only
-    # when no figure waits), while the helper goes on with the figures
-    csv_files = {name: task_result(figures, name, make, result)
-                 for name, make in CSV_FILES.items()}
-    with atomic_outputs(out_dir, inputs=input_paths) as out:
-        write_workbook(out.path(f"{stem}-loads.xlsx"), sheets, embedded,
-                       number_format=NUMBER_FORMATS, highlight=highlight, info=info,
-                       images_title=f"Plots of the LIMIT loads ({len(embedded)})")
-        if sfbm_workbook:
-            write_workbook(out.path(f"{stem}-sfbm.xlsx"), {"SFBM": sfbm_table(result, units)},
-                           max_rows=max_rows,
-                           info=replace(info, title=f"{TITLE}: SFBM of every case (data)",
-                                        files=()))
-        for name, data in csv_files.items():
-            out.path(f"{stem}-{name}").write_bytes(data)
-        for tag, png in pngs.items():
-            out.path(f"{stem}-{tag}.png").write_bytes(png_bytes(png))
-        if deck is not None:
-            deck.write(out.path(f"{stem}-loads.bdf"))
-    return out.written
 
 
 def envelope_csv_frame(result):
@@ -1048,16 +1004,6 @@ def dynamics_sections(result, comparison, units="SI"):
     return sections
 
 
-def start_figures(result, units, study):
-    """Start drawing the figures of the loads report of a workbook's study (worker processes
-    draw them while the other analyses run); pass the result to :func:`write`."""
-    jobs, _, _ = figure_jobs(result, units, study.report.hull_pairs, study.report.hull_stations)
-    renderer = start_drawing(jobs, _PNG_DPI)
-    for name, make in CSV_FILES.items():  # after the figures
-        renderer.later(name, make, result)
-    return renderer
-
-
 def sfbm_csv(result):
     """The bytes of ``<stem>-sfbm.csv``: every case at every station, SI LIMIT loads."""
     return csv_bytes(result.to_frame(), columns=SFBM_CSV_COLUMNS)
@@ -1072,35 +1018,117 @@ def envelope_csv(result):
 CSV_FILES = {"sfbm.csv": sfbm_csv, "envelope.csv": envelope_csv}
 
 
-def write(result, out_dir, stem, units, study, figures=None, checks=None, findings=None):
-    """Write the loads report of a study (:func:`write_loads_outputs`) into the run's outputs
-    ``out_dir``, with the study's identification, report options, warnings and findings
-    (the lateral study of the same run, when there is one, is the evidence on the hook
-    angle; the campaign's hand-off, when the loads took the dynamics' cases), and the
-    ``checks`` against the other analyses of the run (:mod:`slingloads.io.consistency`), and
-    the run's ``findings`` on the Findings sheet (default: those of ``study.results``)."""
-    info = report_info(study, title=TITLE, analysis=ANALYSIS, units=units,
-                       conventions=CONVENTIONS)
+def _sheets(result, units, warnings=(), *, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None,
+            findings=None, checks=None, dynamics=None, deck=None):
+    """The sheets of the loads workbook (:func:`_workbook_sheets`), with the *Nastran* sheet
+    of ``deck`` and the *Dynamics* sheet of the campaign's hand-off ``dynamics`` when
+    given; ``warnings`` on the Summary unless ``findings`` names its own."""
+    stations = list(hull_stations) if hull_stations is not None else list(result.station_ids)
+    sheets = _workbook_sheets(result, units, hull_pairs, stations,
+                              {"warnings": warnings, **(findings or {})}, checks)
+    if deck is not None:
+        sheets["Nastran"] = nastran_sheet(deck)
+    if dynamics is not None:
+        sheets["Dynamics"] = dynamics_sections(result, dynamics, units)
+    return sheets
+
+
+def _highlight(sheets):
+    """The ratios filled red: above 1 on the Exceedance sheets."""
+    return {"Exceedance": Highlight([c for c in sheets_columns(sheets, "Exceedance")
+                                     if c.endswith("ratio [-]") or c == "worst [-]"]),
+            "ExceedanceDetail": Highlight(["exceedance ratio [-]"], 1.0)}
+
+
+def _number_format(result):
+    return NUMBER_FORMATS
+
+
+def _figures(result, units, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None, plots=True):
+    """The figures to draw (:func:`figure_jobs`, which checks the hull pairs and stations;
+    none when ``plots`` is false)."""
+    jobs = figure_jobs(result, units, hull_pairs, hull_stations)[0]
+    return jobs if plots else {}
+
+
+def _titles(result, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None, plots=True):
+    return figure_jobs(result, "SI", hull_pairs, hull_stations)[1] if plots else {}
+
+
+def _write_sfbm(result, units, path, info, max_rows=EXCEL_MAX_ROWS):
+    """``<stem>-sfbm.xlsx``: the SFBM of every case at every station in report units, a data
+    workbook split past ``max_rows`` rows."""
+    write_workbook(path, {"SFBM": sfbm_table(result, units)}, max_rows=max_rows,
+                   info=replace(info, title=f"{TITLE}: SFBM of every case (data)", files=()))
+
+
+def _write_deck(deck, result, units, path, info):
+    """``<stem>-loads.bdf``: the Nastran input file ``deck``, prepared in ``units``."""
+    deck.write(path)
+
+
+#: The loads report with its default options (:func:`loads_report`): files named
+#: ``<stem>-<name>`` (:data:`OUTPUTS`).
+REPORT = ReportKind(tag="loads", prefix="", title=TITLE, description=ANALYSIS,
+                    conventions=CONVENTIONS, dpi=_PNG_DPI, sheets=_sheets, figures=_figures,
+                    titles=_titles, data=CSV_FILES, number_format=_number_format,
+                    highlight=_highlight, images_title="Plots of the LIMIT loads ({count})")
+
+
+def loads_report(hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None, *, plots=True,
+                 findings=None, checks=None, dynamics=None, deck=None, sfbm_workbook=False,
+                 max_rows=EXCEL_MAX_ROWS):
+    """The loads report (:data:`REPORT`, written by
+    :func:`~slingloads.io.common.report_writer.write_report`) with its options: those of
+    :func:`write_loads_outputs`, and ``deck``, the Nastran input file already prepared
+    (:func:`~slingloads.io.loads.nastran.prepare_nastran`), written as ``<stem>-loads.bdf``
+    with a *Nastran* sheet.
+
+    Returns
+    -------
+    ReportKind
+    """
+    hulls = {"hull_pairs": hull_pairs, "hull_stations": hull_stations}
+    return replace(
+        REPORT,
+        sheets=partial(_sheets, **hulls, findings=findings, checks=checks, dynamics=dynamics,
+                       deck=deck),
+        figures=partial(_figures, **hulls, plots=plots),
+        titles=partial(_titles, **hulls, plots=plots),
+        files={"sfbm.xlsx": partial(_write_sfbm, max_rows=max_rows)} if sfbm_workbook else {},
+        appendices={} if deck is None else {"loads.bdf": partial(_write_deck, deck)})
+
+
+def report_kind(study, checks=None, deck=None):
+    """The loads report of a workbook's study: its Study-sheet options, and the findings of
+    the other analyses of the run (the lateral study of the same run, when there is one, is
+    the evidence on the hook angle; the campaign's hand-off, when the loads took the
+    dynamics' cases); ``checks`` and ``deck`` as in :func:`loads_report`."""
     options, results = study.report, study.results
-    summary = {"lateral": results.lateral,
+    findings = {"lateral": results.lateral,
                 "hook angle handoff": results.loads_hook_angle,
                 "parachute decision": results.parachute_decision,
                 "hook angle justification": options.hook_angle_justification,
-                "previous envelope source": options.previous_envelope_source,
-                "warnings": list(study.source.warnings)}
-    nastran = None
-    if options.nastran:
-        nastran = {**options.nastran_settings, "locations": options.nastran_locations}
+                "previous envelope source": options.previous_envelope_source}
     handoff = results.loads_handoff
+    return loads_report(options.hull_pairs, options.hull_stations, findings=findings,
+                        checks=checks, dynamics=None if handoff is None else handoff.comparison,
+                        deck=deck, sfbm_workbook=options.sfbm_workbook)
+
+
+def write(result, out_dir, stem, units, study, figures=None, checks=None, findings=None):
+    """Write the loads report of a study into the run's outputs ``out_dir``
+    (:func:`~slingloads.io.common.report_writer.write_report` of :func:`report_kind`), with
+    the study's identification, report options, warnings and findings, the ``checks``
+    against the other analyses of the run (:mod:`slingloads.io.consistency`), the Nastran
+    input file when the study asks for it, and the run's ``findings`` on the Findings sheet
+    (default: those of ``study.results``)."""
+    options = study.report
     with located(study.path):
-        return write_loads_outputs(result, out_dir, stem, units=units,
-                                   inputs_digest=input_digest(study),
-                                   hull_pairs=options.hull_pairs,
-                                   hull_stations=options.hull_stations,
-                                   input_paths=protected_inputs(study), info=info,
-                                   findings=summary,
-                                   sfbm_workbook=options.sfbm_workbook,
-                                   figures=figures, nastran=nastran, checks=checks,
-                                   dynamics=None if handoff is None else handoff.comparison,
-                                   study_findings=(study_findings_of(study) if findings is None
-                                                   else findings))
+        deck = None
+        if options.nastran:
+            settings = {**options.nastran_settings, "locations": options.nastran_locations}
+            deck = prepare_nastran(result, units=units, inputs_digest=input_digest(study),
+                                   **settings)
+        return write_report(report_kind(study, checks, deck), result, out_dir, stem, units,
+                            study, figures, findings)

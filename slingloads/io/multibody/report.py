@@ -31,10 +31,7 @@ import pandas as pd
 from slingloads.constants import KNOT
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section
-from slingloads.io.common.figures import (
-    plot_function,
-    start_drawing,
-)
+from slingloads.io.common.figures import plot_function
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
     column_blocks,
@@ -334,14 +331,6 @@ def _figures(result, units="SI"):
     return figs
 
 
-def start_figures(result, units, study):
-    """Start drawing the multibody report's figures (while the other analyses run), and its
-    CSV file after them (from the table made here: the model's code stays here)."""
-    renderer = start_drawing(_figures(result, units), _PNG_DPI)
-    renderer.later("histories.csv", csv_bytes, csv_frame(history_table(result, "SI")))
-    return renderer
-
-
 def histories_csv(result):
     """The bytes of ``<stem>-multibody-histories.csv``: every stored sample, SI."""
     return csv_bytes(csv_frame(history_table(result, "SI")))
@@ -365,6 +354,14 @@ REPORT = ReportKind(tag="multibody", title=TITLE, description=DESCRIPTION,
                     warnings=_warnings, number_format=_matrix_formats)
 
 
+def report_kind(study):
+    """The multibody report of ``study``: :data:`REPORT` with the study's parachute
+    decision."""
+    from slingloads.io.common.decision import with_decision
+
+    return with_decision(REPORT, study)
+
+
 def write(result, out_dir, stem, units, study, figures=None, findings=None):
     """Write ``<stem>-multibody.xlsx``, ``-multibody-histories.csv`` and the PNG plots
     atomically (:func:`~slingloads.io.common.report_writer.write_report` of
@@ -380,7 +377,8 @@ def write(result, out_dir, stem, units, study, figures=None, findings=None):
     study : Study
         For the report's identification; its input file is never overwritten.
     figures : FigureRenderer, optional
-        Already drawing the figures (:func:`start_figures`); default: drawn now.
+        Already drawing the figures (:func:`~slingloads.io.common.report_writer.
+        start_figures` of :func:`report_kind`); default: drawn now.
     findings : Findings, optional
         The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
         default: those of ``study.results``.
@@ -389,7 +387,5 @@ def write(result, out_dir, stem, units, study, figures=None, findings=None):
     -------
     list of pathlib.Path
     """
-    from slingloads.io.common.decision import with_decision
-
-    return write_report(with_decision(REPORT, study), result, out_dir, stem, units, study,
+    return write_report(report_kind(study), result, out_dir, stem, units, study,
                         figures, findings=findings)
