@@ -25,7 +25,7 @@ from slingloads.errors import InputError
 from slingloads.io.common.atomic import TEMP_PREFIX, atomic_outputs
 from slingloads.io.common.excel import Highlight, Section, write_workbook
 from slingloads.io.common.ownership import MANIFEST_NAME
-from slingloads.io.loads import report as loads_report
+from slingloads.io.common import report_writer
 from slingloads.io.loads.report import (
     ENVELOPE_CSV_COLUMNS,
     SFBM_CSV_COLUMNS,
@@ -313,13 +313,13 @@ def test_atomic_failure_keeps_earlier_report(result, tmp_path, monkeypatch):
     first = write_loads_outputs(result, tmp_path, "demo", hull_pairs=(), plots=False)
     before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
     assert {p.name for p in first} | {MANIFEST_NAME} == set(before)
-    real = loads_report.write_workbook
+    real = report_writer.write_workbook
 
     def write_then_fail(path, *args, **kwargs):
         real(path, *args, **kwargs)
         raise OSError("disk full (simulated)")
 
-    monkeypatch.setattr(loads_report, "write_workbook", write_then_fail)
+    monkeypatch.setattr(report_writer, "write_workbook", write_then_fail)
     with pytest.raises(OSError, match="simulated"):
         write_loads_outputs(result, tmp_path, "demo", units="US", hull_pairs=(),
                             plots=False)

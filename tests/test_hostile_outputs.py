@@ -413,12 +413,12 @@ def test_a_full_disk_ends_in_exit_code_1(small, tmp_path, capsys, monkeypatch):
     cause, nothing published, no staging folder left."""
     import errno
 
-    from slingloads.io.loads import report
+    from slingloads.io.common import report_writer
 
     def full(*args, **kwargs):
         raise OSError(errno.ENOSPC, "No space left on device")
 
-    monkeypatch.setattr(report, "write_workbook", full)
+    monkeypatch.setattr(report_writer, "write_workbook", full)
     out = tmp_path / "reports"
     _refused(capsys, ["loads", str(small), "--out", str(out), "--quiet"], 1,
              "no space left on the device")
