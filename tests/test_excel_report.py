@@ -22,10 +22,10 @@ from openpyxl import load_workbook
 from slingloads.analyses.envelopes import bound_values
 from slingloads.analyses.loads import ListedCase, LoadsStudy
 from slingloads.errors import InputError
+from slingloads.io.common import report_writer
 from slingloads.io.common.atomic import TEMP_PREFIX, atomic_outputs
 from slingloads.io.common.excel import Highlight, Section, write_workbook
 from slingloads.io.common.ownership import MANIFEST_NAME
-from slingloads.io.common import report_writer
 from slingloads.io.loads.report import (
     ENVELOPE_CSV_COLUMNS,
     SFBM_CSV_COLUMNS,

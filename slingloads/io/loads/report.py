@@ -787,8 +787,8 @@ def write_loads_outputs(result, out_dir, stem, units="SI", inputs_digest=None,
 
 
 def figure_jobs(result, units, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None):
-    """The loads report's figures: ``({tag: (plot function, args, kwargs)}, {tag: title},
-    stations of the hull tables)``, after checking the hull pairs and stations.
+    """The loads report's figures: ``({tag: (plot function, args, kwargs)}, {tag: title})``,
+    after checking the hull pairs and stations.
 
     Default hull plots: one per pair at the station where its first component is largest.
     """
@@ -801,7 +801,7 @@ def figure_jobs(result, units, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None
             raise InputError("a hull pair needs two components", pair)
         for name in pair:
             component_index(name)
-    stations = list(hull_stations) if hull_stations is not None else list(result.station_ids)
+    stations = hull_table_stations(result, hull_stations)
     for station in stations:
         _station_index(result, station)
     jobs = {"stations": (plot_station_diagram, (result.study, units), {})}
@@ -817,7 +817,13 @@ def figure_jobs(result, units, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None
             tag = f"hull_{pair[0]}_{pair[1]}_{_safe(result.station_ids[index])}"
             jobs[tag] = (plot_hull, (result, index, pair, units), {})
             titles[tag] = f"{pair[0]}-{pair[1]} LIMIT envelope at {result.station_ids[index]}"
-    return jobs, titles, stations
+    return jobs, titles
+
+
+def hull_table_stations(result, hull_stations=None):
+    """The stations of the hull tables: ``hull_stations`` (ids or indices), else every cut
+    station."""
+    return list(hull_stations) if hull_stations is not None else list(result.station_ids)
 
 
 def envelope_csv_frame(result):
@@ -1023,8 +1029,8 @@ def _sheets(result, units, warnings=(), *, hull_pairs=DEFAULT_HULL_PAIRS, hull_s
     """The sheets of the loads workbook (:func:`_workbook_sheets`), with the *Nastran* sheet
     of ``deck`` and the *Dynamics* sheet of the campaign's hand-off ``dynamics`` when
     given; ``warnings`` on the Summary unless ``findings`` names its own."""
-    stations = list(hull_stations) if hull_stations is not None else list(result.station_ids)
-    sheets = _workbook_sheets(result, units, hull_pairs, stations,
+    sheets = _workbook_sheets(result, units, hull_pairs,
+                              hull_table_stations(result, hull_stations),
                               {"warnings": warnings, **(findings or {})}, checks)
     if deck is not None:
         sheets["Nastran"] = nastran_sheet(deck)
