@@ -446,7 +446,7 @@ class LateralRun:
     def roll(self):
         """Roll of the airframe in the product's attitude convention (aerospace Euler angle,
         right side down positive; ``docs/conventions.md`` section 8): ``-theta2``. [rad]"""
-        return -self.theta2
+        return 0.0 - self.theta2  # (a zero roll prints as 0, not -0)
 
     @property
     def load_angle(self):

@@ -329,7 +329,7 @@ class LinearModes:
         return pd.DataFrame({
             "mode": np.arange(1, self.omega.size + 1), "kind": list(self.kinds),
             "omega [rad/s]": self.omega, "f [Hz]": self.frequency, "period [s]": self.period,
-            "theta1 shape [-]": self.shapes[:, 0], "roll shape [-]": -self.shapes[:, 1],
+            "theta1 shape [-]": self.shapes[:, 0], "roll shape [-]": 0.0 - self.shapes[:, 1],
             "bounce shape [-]": self.shapes[:, 2],
         })
 
