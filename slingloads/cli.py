@@ -263,20 +263,68 @@ def _analyse(args):
     from slingloads.io.common.figures import helping
 
     gc.freeze()
-    # the process that draws the figures starts first: it loads matplotlib while the
-    # workbook is read, and draws each analysis's figures once it is computed
-    with helping():
-        return _run_analyses(args)
+    # the process that compiles the multibody kernels a fresh installation lacks starts
+    # first, then the one that draws the figures: it loads matplotlib while the workbook is
+    # read, and draws each analysis's figures once it is computed
+    with _BackgroundCompile(args.command) as compiling, helping():
+        return _run_analyses(args, compiling)
 
 
-def _run_analyses(args):
+class _BackgroundCompile:
+    """The multibody kernels compiled in a second process while the first analyses compute
+    (:func:`slingloads.runs.warmup.compile_part`; nothing to do once they are cached): on a
+    fresh installation they are the largest part of the first run, and the lateral study,
+    the parachute sizing and the reading need only the other core. An analysis that needs
+    them waits for that process (:meth:`wait_for`) rather than compiling them a second
+    time. The process writes only numba's cache; it is killed when the run ends (a kill
+    leaves no partial cache file: numba writes each one under a temporary name first)."""
+
+    #: The parts each analysis needs, by name.
+    NEEDS = {"loads": ("equations",), "multibody": ("equations", "integration"),
+             "campaign": ("equations", "integration")}
+    #: Commands that may run an analysis of :data:`NEEDS`.
+    COMMANDS = ("run", "loads", "simulate", "campaign")
+
+    def __init__(self, command):
+        self.command = command
+        self.helper = None
+        self.calls = {}
+
+    def __enter__(self):
+        from slingloads.io.common.helper import Helper, helper_processes
+
+        if self.command in self.COMMANDS and helper_processes() > 0:
+            from slingloads.runs.warmup import BACKGROUND, compile_part
+
+            self.helper = Helper(1).start()
+            self.calls = {part: self.helper.submit(compile_part, part) for part in BACKGROUND}
+        return self
+
+    def wait_for(self, name):
+        """Wait until the kernels analysis ``name`` needs are compiled (or their compiling
+        failed: the analysis then compiles them itself and says why if it cannot)."""
+        for part in self.NEEDS.get(name, ()):
+            call = self.calls.pop(part, None)
+            if call is not None:
+                try:
+                    call.result(take_back=False)
+                except Exception:  # noqa: BLE001, S110 - the analysis compiles them itself
+                    pass
+
+    def __exit__(self, exc_type, exc, tb):
+        if self.helper is not None:
+            self.helper.close(abort=True)
+        return False
+
+
+def _run_analyses(args, compiling=None):
     from slingloads.io.reports import prepare_outputs, publish_reports
     from slingloads.io.study import read_study
     from slingloads.runs.study import run_analysis, run_study
 
     show = not args.quiet
     with _progress(show) as bar:
-        first = _FirstComputed(args, _only(args))
+        first = _FirstComputed(args, _only(args), compiling)
         study = read_study(args.workbook, only=_only(args), on_read=first)
         gc.freeze()  # the libraries and the study live to the end of the run: see _analyse
         names = _selected(args, study)
@@ -300,6 +348,8 @@ def _run_analyses(args):
                 if name == first.name:  # computed while the workbook was read
                     result, figures[name] = first.outcome()
                     return result
+                if compiling is not None:
+                    compiling.wait_for(name)
                 return run_analysis(study, name)
 
             def computed(name, result):
@@ -369,8 +419,8 @@ class _FirstComputed:
     come in the same order as when everything is read first. Not with a campaign (it needs
     the command line's execution options, set after reading, and it feeds the loads)."""
 
-    def __init__(self, args, only):
-        self.args, self.only = args, only
+    def __init__(self, args, only, compiling=None):
+        self.args, self.only, self.compiling = args, only, compiling
         self.name = None
         self._outcome = None
 
@@ -383,6 +433,8 @@ class _FirstComputed:
         if not wanted or "campaign" in wanted or compute_order(wanted)[0] != name:
             return
         self.name = name
+        if self.compiling is not None:
+            self.compiling.wait_for(name)
         try:
             result = run_analysis(study, name)
             figures = _BY_NAME[name].start_figures(result, self.args.units, study)

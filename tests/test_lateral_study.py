@@ -169,7 +169,7 @@ def test_run_case_time_histories(point_mass_study):
     hub load m g along the mast at t = 0 (hanging at rest: statics)."""
     run = point_mass_study.run_case()
     frame = run.to_frame()
-    for column in ("t [s]", "theta1 [deg]", "theta2 [deg]", "theta1 - theta2 [deg]",
+    for column in ("t [s]", "theta1 [deg]", "roll [deg]", "theta1 - theta2 [deg]",
                    "T [N]", "T/(m g) [-]", "hub Fy [N]", "hub Fz [N]"):
         assert column in frame
     assert frame["hub Fz [N]"].iloc[0] == pytest.approx(POINT.mass * G0)

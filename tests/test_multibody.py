@@ -16,6 +16,7 @@ import pytest
 from numpy.testing import assert_allclose
 from scipy.integrate import solve_ivp
 
+from slingloads.analyses.lateral import simulate as lateral_simulate
 from slingloads.analyses.multibody import (
     Manoeuvre,
     free_response,
@@ -147,7 +148,8 @@ def test_lateral_plane_response_matches_the_pendulum():
     """A lateral quintic step of the hook in hover (no aerodynamics) keeps the motion in the
     lateral plane; hub position and airframe roll equal the lateral pendulum's elastic-cable
     equations integrated by solve_ivp (theta2 = -roll: the pendulum's angle is right-handed
-    about +x, the report's roll is right side down)."""
+    about +x, the report's roll is right side down), and the lateral study's own run of the
+    same body gives the same roll and lateral swing angle, in the same convention."""
     motion = QuinticStep(3.0, 4.0)
     system = bare_system()
     sim = simulate(system, Manoeuvre("step", trajectory=LateralHookMotion(motion)),
@@ -169,6 +171,15 @@ def test_lateral_plane_response_matches_the_pendulum():
     assert_allclose(d[:, 2], ref.y[1], atol=1e-5)
     assert_allclose(-roll, ref.y[2], atol=2e-5)
     assert_allclose(d[:, 0], 0.0, atol=1e-9)
+    # one attitude convention: the lateral study's run of the same body reports the same roll
+    # (right side down positive) and the same lateral swing, sign and value
+    lateral = lateral_simulate(pend, motion, solver=SolverSettings(
+        t_end=12.0, output_interval=0.05, method="DOP853", rtol=1e-10, atol=1e-12))
+    assert_allclose(lateral.t, run.time, atol=1e-9)
+    assert np.sign(lateral.roll[20]) == np.sign(roll[20]) != 0
+    assert_allclose(lateral.roll, roll, atol=2e-5)
+    assert_allclose(np.degrees(lateral.theta1), sim.runs[0].to_frame()["swing lateral [deg]"],
+                    atol=np.degrees(2e-5))
 
 
 def test_yaw_alone_matches_the_one_dof_model():

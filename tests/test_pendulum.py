@@ -382,3 +382,42 @@ def test_compiled_equations_are_the_numpy_equations(rigid, state, hook, body, ca
                                     **params)
     np.testing.assert_array_equal(dx, dx_ref[:, 0])
     assert tension == tension_ref[0]
+
+
+@pytest.mark.parametrize("cable_ea", [None, 5e6])
+def test_roll_follows_the_attitude_convention_small_angle_closed_form(cable_ea):
+    """The airframe's ``roll`` of a lateral run is the product's attitude angle (right side
+    down positive, docs/conventions.md section 8), checked against the small-angle
+    Lagrangian written here from scratch, M q'' + K q = -m (L, e) S'' with
+    M = m[[L^2, L e], [L e, e^2 + k^2]], K = diag(m g L, m g e) in the right-hand angles
+    q = (theta1, theta2) (L the statically stretched length m g L0 / EA + L0 for the elastic
+    cable), and roll = -theta2. A small hook step to the right first leaves the
+    hub behind (theta1 < 0) and pulls it right of the CG: the airframe rolls right side down
+    (roll > 0) while the rope leans left, and the columns of ``to_frame`` say so."""
+    from scipy.integrate import solve_ivp
+
+    body, length = UH60, 15.0
+    motion = QuinticStep(0.02, 3.0)  # 2 cm: the small-angle equations hold to ~1e-3
+    run = simulate(LateralPendulum(body, length, cable_ea), motion,
+                   solver=replace(TIGHT, t_end=4.0))
+    m, e, k2 = body.mass, body.cg_below_hub, body.roll_inertia / body.mass
+    if cable_ea:
+        length += m * G0 * length / cable_ea
+    mass = m * np.array([[length**2, length * e], [length * e, e**2 + k2]])
+    stiff = np.diag([m * G0 * length, m * G0 * e])
+    force = -m * np.array([length, e])
+
+    def rhs(t, x):
+        acc = motion.kinematics(t)[2]
+        return np.concatenate([x[2:], np.linalg.solve(mass, force * acc - stiff @ x[:2])])
+
+    ref = solve_ivp(rhs, (0.0, 4.0), np.zeros(4), t_eval=run.t, rtol=1e-11, atol=1e-14)
+    roll_ref = -ref.y[1]
+    scale = np.max(np.abs(roll_ref))
+    assert scale > 1e-5
+    assert_allclose(run.roll, roll_ref, atol=2e-3 * scale)
+    early = run.t <= 1.0
+    assert np.all(run.roll[early][1:] > 0) and np.all(run.theta1[early][1:] < 0)
+    frame = run.to_frame()
+    assert_allclose(frame["roll [deg]"], np.degrees(roll_ref), atol=np.degrees(2e-3 * scale))
+    assert "theta2 [deg]" not in frame

@@ -432,13 +432,21 @@ class LateralRun:
 
     @property
     def theta1(self):
-        """Rope angle from the vertical. [rad]"""
+        """Rope angle from the vertical, the pendulum's generalised coordinate: > 0 with the
+        hub to the right of the hook (the multibody model's lateral swing angle). [rad]"""
         return rope_angle(self.states, self.pendulum.rigid)
 
     @property
     def theta2(self):
-        """Airframe (mast) angle from the vertical. [rad]"""
+        """Airframe (mast) angle from the vertical, the pendulum's generalised coordinate:
+        a right-hand rotation about +x (aft), ``-roll``. [rad]"""
         return airframe_angle(self.states, self.pendulum.rigid)
+
+    @property
+    def roll(self):
+        """Roll of the airframe in the product's attitude convention (aerospace Euler angle,
+        right side down positive; ``docs/conventions.md`` section 8): ``-theta2``. [rad]"""
+        return 0.0 - self.theta2  # (a zero roll prints as 0, not -0)
 
     @property
     def load_angle(self):
@@ -468,8 +476,10 @@ class LateralRun:
         Returns
         -------
         pandas.DataFrame
-            One row per sample: time [s], carrier S [m], S' [m/s], S'' [m/s^2], angles [deg],
-            tension [N] and its factor T/(m g) [-], hub load [N], slack.
+            One row per sample: time [s], carrier S [m], S' [m/s], S'' [m/s^2], the rope
+            angle theta1 (hub right of the hook positive) [deg], the airframe's ``roll``
+            (right side down positive, ``-theta2``) [deg], the load angle theta1 - theta2
+            [deg], tension [N] and its factor T/(m g) [-], hub load [N], slack.
         """
         fy, fz = self.hub_load
         frame = pd.DataFrame({
@@ -477,7 +487,7 @@ class LateralRun:
             "S [m]": self.carrier[0], "S' [m/s]": self.carrier[1],
             "S'' [m/s^2]": self.carrier[2],
             "theta1 [deg]": np.degrees(self.theta1),
-            "theta2 [deg]": np.degrees(self.theta2),
+            "roll [deg]": np.degrees(self.roll),
             "theta1 - theta2 [deg]": np.degrees(self.load_angle),
             "T [N]": self.tension, "T/(m g) [-]": self.tension_ratio,
             "hub Fy [N]": fy, "hub Fz [N]": fz,

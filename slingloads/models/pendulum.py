@@ -13,7 +13,10 @@ Angles, both positive by the right-hand rule about +x (counter-clockwise in the 
   :math:`\\text{hook} + l(\\sin\\theta_1, -\\cos\\theta_1)`, so theta1 > 0 has the hub to the
   right of the hook.
 * ``theta2``: airframe (mast) angle from the vertical; the CG sits at
-  :math:`\\text{hub} + e(\\sin\\theta_2, -\\cos\\theta_2)`.
+  :math:`\\text{hub} + e(\\sin\\theta_2, -\\cos\\theta_2)`. The airframe's **roll** in the
+  product's attitude convention (aerospace Euler angle, right side down positive,
+  ``docs/conventions.md`` section 8) is ``-theta2``; results and reports give that roll,
+  theta1 and theta2 being the generalised coordinates of the equations.
 * ``theta1 - theta2``: the load angle, the angle of the cable force at the hub from the mast
   axis, the angle that CS-29.865 sets to at least 30 deg.
 
@@ -319,12 +322,14 @@ class LinearModes:
         Returns
         -------
         pandas.DataFrame
-            A row per mode: omega [rad/s], f [Hz], period [s], mode shapes [-].
+            A row per mode: omega [rad/s], f [Hz], period [s], mode shapes [-]: rope
+            angle theta1, the airframe's roll (right side down positive, ``-theta2``: the
+            product's attitude convention, ``docs/conventions.md`` section 8) and the bounce.
         """
         return pd.DataFrame({
             "mode": np.arange(1, self.omega.size + 1), "kind": list(self.kinds),
             "omega [rad/s]": self.omega, "f [Hz]": self.frequency, "period [s]": self.period,
-            "theta1 shape [-]": self.shapes[:, 0], "theta2 shape [-]": self.shapes[:, 1],
+            "theta1 shape [-]": self.shapes[:, 0], "roll shape [-]": 0.0 - self.shapes[:, 1],
             "bounce shape [-]": self.shapes[:, 2],
         })
 
@@ -527,7 +532,9 @@ def rope_angle(x, rigid):
 
 
 def airframe_angle(x, rigid):
-    """theta2, the airframe's roll angle, from a state array.
+    """theta2, the airframe's (mast's) angle, a right-hand rotation about +x, from a state
+    array; the airframe's roll in the product's convention (right side down positive) is
+    ``-theta2``.
 
     Parameters
     ----------

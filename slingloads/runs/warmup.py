@@ -64,9 +64,7 @@ def _chute():
         run_yaw(model, [1.0], [StepGust(5.0)], settings, integrator=integrator)
 
 
-def _multibody():
-    from slingloads.analyses.multibody import free_response, simulate, trim
-    from slingloads.analyses.multibody.trim import linearise
+def _sample_system():
     from slingloads.models.multibody import Cable, HingedParachute, RigidBody, SlingSystem
     from slingloads.models.parachute import Parachute, extended_cd_table
     from slingloads.models.sample_aircraft import (
@@ -77,14 +75,76 @@ def _multibody():
     )
 
     ref = sample_reference("HC1")
-    system = SlingSystem(RigidBody(ref.mass, np.zeros(3), np.diag([2500.0, 7000.0,
-                                                                   ref.yaw_inertia])),
-                         sample_hardpoints("HC1"), Cable(18.3, 5e6), sample_fuselage("HC1"),
-                         sample_surfaces("HC1"),
-                         HingedParachute(Parachute(1.1, extended_cd_table())), airspeed=40.0)
-    linearise(trim(system))
+    return SlingSystem(RigidBody(ref.mass, np.zeros(3), np.diag([2500.0, 7000.0,
+                                                                 ref.yaw_inertia])),
+                       sample_hardpoints("HC1"), Cable(18.3, 5e6), sample_fuselage("HC1"),
+                       sample_surfaces("HC1"),
+                       HingedParachute(Parachute(1.1, extended_cd_table())), airspeed=40.0)
+
+
+def _equations():
+    """The multibody equations alone: what a trim and a linearisation (the loads' towed
+    cases too) compile."""
+    from slingloads.analyses.multibody import trim
+    from slingloads.analyses.multibody.trim import linearise
+
+    linearise(trim(_sample_system()))
+
+
+def _integration():
+    """The multibody integration loop and the measures of its runs (the equations too)."""
+    from slingloads.analyses.multibody import free_response, simulate
+
+    system = _sample_system()
     simulate(system, free_response(), t_end=1.0)
     simulate(system, free_response(), t_end=1.0, dt=0.01)
+
+
+def _multibody():
+    _equations()
+    _integration()
+
+
+def _cached(dispatcher):
+    """True if numba's on-disk cache holds a compiled version of ``dispatcher`` for its
+    current source (numba's cache index; False where it cannot be read)."""
+    try:
+        return bool(dispatcher._cache._cache_file._load_index())
+    except Exception:  # noqa: BLE001 - no readable cache: compile
+        return False
+
+
+def _kernels(part):
+    if part == "equations":
+        from slingloads.models.multibody.integrator import _evaluate_states
+        return [_evaluate_states]
+    from slingloads.models.multibody.integrator import dopri_runs
+    return [dopri_runs]
+
+
+#: The parts of the multibody warm-up a run compiles in the background, in order.
+BACKGROUND = {"equations": _equations, "integration": _integration}
+
+
+def compile_part(part):
+    """Compile and cache one part of :data:`BACKGROUND` unless it is cached already (the
+    command line runs it in a second process while the first analyses compute, so that the
+    multibody kernels of a fresh installation compile on the machine's other core).
+
+    Parameters
+    ----------
+    part : str
+        ``"equations"`` or ``"integration"``.
+
+    Returns
+    -------
+    bool
+        True if it compiled anything.
+    """
+    if all(_cached(k) for k in _kernels(part)):
+        return False
+    BACKGROUND[part]()
+    return True
 
 
 #: The warm-up of each analysis, by name.

@@ -33,6 +33,11 @@ CONVENTIONS = (
     "Axes: x aft (fuselage station), y right (butt line), z up (water line), from the "
     "airframe datum. SI inside; this report in the units stated above (angles in degrees).",
     "Aerodynamic angles: alpha > 0 nose up, beta > 0 wind from the right; Cn > 0 nose right.",
+    "Attitude angles, in every report and analysis: aerospace (pilot's) Euler angles, yaw > 0 "
+    "nose right, pitch > 0 nose up, roll > 0 right side down (R = Rz(-yaw) Ry(pitch) "
+    "Rx(-roll) in the axes above; right-handed angles (rx, ry, rz) = (-roll, pitch, -yaw)); "
+    "body rates p, q, r right-handed about the body axes; cable swing angles > 0 with the hub "
+    "aft of / right of the hook.",
     "Full statement of the axes, signs and load definitions: docs/conventions.md of the "
     "slingloads version above.",
 )

@@ -129,13 +129,20 @@ class Helper:
             here, there = context.Pipe()
             process = context.Process(target=_serve, args=(there, os.getpid(), self._warm),
                                       daemon=True, name="slingloads-helper")
-            process.start()
-            there.close()
-            self._alive += 1
-            thread = threading.Thread(target=self._feed, args=(here,), daemon=True,
-                                      name="slingloads-helper-feed")
-            thread.start()
-            self._workers.append((process, here, thread))
+            # Ctrl-C is held back while the process forks: the new process starts with it
+            # blocked and ignores it before unblocking it (a Ctrl-C in between would end it
+            # with a traceback); this one receives a Ctrl-C held back once it is registered
+            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+            try:
+                process.start()
+                there.close()
+                self._alive += 1
+                thread = threading.Thread(target=self._feed, args=(here,), daemon=True,
+                                          name="slingloads-helper-feed")
+                thread.start()
+                self._workers.append((process, here, thread))
+            finally:
+                signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
         return self
 
     def __exit__(self, exc_type, exc, tb):
@@ -330,6 +337,7 @@ def _serve(conn, parent, warm):
     modules ``warm`` in order whenever no call is waiting."""
     _die_with_parent(parent)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # blocked by the fork
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     warm = list(warm)
     # importing makes little garbage, and what is loaded lives to the end: the collector is

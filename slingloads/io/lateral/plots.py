@@ -56,8 +56,8 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None, unit
                       top=0.55, hspace=0.12)
     ax_angle, ax_tension, ax_carrier = fig.subplots(3, 1, sharex=True)
     t = run.t
-    ax_angle.plot(t, np.degrees(run.theta1), label="rope angle theta1")
-    ax_angle.plot(t, np.degrees(run.theta2), label="airframe angle theta2")
+    ax_angle.plot(t, np.degrees(run.theta1), label="rope angle theta1 (hub right of hook +)")
+    ax_angle.plot(t, np.degrees(run.roll), label="airframe roll (right side down +)")
     ax_angle.plot(t, np.degrees(run.load_angle), color="black", linewidth=1.6,
                   label="load angle theta1 - theta2")
     reg = np.degrees(regulatory_angle)

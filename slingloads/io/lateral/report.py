@@ -79,13 +79,16 @@ TITLE = "Lateral-step pendulum report: design angle of the hook load"
 DESCRIPTION = (
     "How far the hook load departs from the mast axis when the carrier rotorcraft moves "
     "sideways: the carried helicopter swings on its cable (two-body pendulum: rope angle "
-    "theta1, airframe angle theta2) under every carrier motion x rope length x mass case of "
+    "theta1, airframe roll) under every carrier motion x rope length x mass case of "
     "the workbook. The largest load angle |theta1 - theta2| times a margin is the recommended "
     "design angle, set beside the 30 deg of CS 29.865(a); the CS 29.865 hook cases are re-run "
     "at that angle (LIMIT loads) to show what it changes. Method: docs/lateral-pendulum.md.")
 CONVENTIONS = (
-    "Angles from the mast (vertical at rest), positive rolling right; the load angle "
-    "theta1 - theta2 is the angle of the cable force at the hub from the mast axis.",
+    "Rope angle theta1 from the vertical, > 0 with the hub to the right of the hook (the "
+    "multibody model's lateral swing angle); airframe roll in the attitude convention below "
+    "(right side down > 0). The pendulum's coordinates theta1, theta2 are right-hand rotations "
+    "about +x (aft): theta2 = -roll. The load angle theta1 - theta2 (= theta1 + roll) is the "
+    "angle of the cable force at the hub from the mast axis.",
     "Carrier motion S: lateral hook displacement, + right. Loads on the LoadsAtAngle sheet are "
     "LIMIT loads (hook cases alone: Nz x weight on the cone, with inertia relief).",
 )
@@ -384,7 +387,8 @@ def _sheets(result, units, warnings=()):
                     st.tension_frame()),
             Section("Damping", _damping_table(st.damping, units))],
         "Modes": [Section("Natural frequencies and mode shapes about the hanging equilibrium "
-                          "(theta1 rope, theta2 airframe; docs/lateral-pendulum.md section 6)",
+                          "(shapes of the rope angle theta1, the airframe roll and the bounce; "
+                          "docs/lateral-pendulum.md section 6)",
                           modes_table(result, units))],
         "Histories": [Section("Critical case re-run with solve_ivp: "
                               f"{result.critical_run.motion.describe()}",

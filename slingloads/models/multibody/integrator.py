@@ -526,8 +526,35 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     return Integrated(states, info, flags, stop_time, measures if measuring else None)
 
 
+@jit_alloc
+def _evaluate_states(states, P, drives, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
+                     cd_g, cd_v, want, rates, info, flags):
+    """The equations (:func:`~slingloads.models.multibody.equations.evaluate`) at each row of
+    ``states`` (n, N) with parameters ``P`` (n, NP) and drive ``drives`` (n, 9): the
+    derivatives into ``rates`` (n, N), the reported quantities into ``info`` (n, N_INFO), the
+    flags into ``flags`` (n,). The equations as the integration loop calls them (``want`` a
+    run-time bool, so that one compiled ``evaluate`` serves both), without the loop: a trim
+    or a linearisation compiles the equations alone."""
+    n = states.shape[1]
+    y = np.empty(n)
+    d = np.empty(9)
+    dx = np.empty(n)
+    reported = np.empty(N_INFO)
+    for j in range(states.shape[0]):
+        for m in range(n):
+            y[m] = states[j, m]
+        for c in range(9):
+            d[c] = drives[j, c]
+        flags[j] = evaluate(y, P[j], d, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
+                            cd_g, cd_v, dx, reported, want)
+        for m in range(n):
+            rates[j, m] = dx[m]
+        for m in range(N_INFO):
+            info[j, m] = reported[m]
+
+
 def evaluate_many(states, P, drives, tables):
-    """The equations at many states at once (the integration kernel with no step).
+    """The equations at many states at once (the integration kernel's equations, no step).
 
     Parameters
     ----------
@@ -547,15 +574,9 @@ def evaluate_many(states, P, drives, tables):
     states = _plain(np.atleast_2d(states))
     n = states.shape[0]
     P = _plain(np.broadcast_to(P, (n, np.shape(P)[-1])))
-    nodes = _plain(np.broadcast_to(drives, (n, 9))[:, None, :])
-    none = np.zeros((n, 1))
-    rates = np.empty((n, 1, N_STATES))
-    info = np.empty((n, 1, N_INFO))
+    drives = _plain(np.broadcast_to(drives, (n, 9)))
+    rates = np.empty((n, N_STATES))
+    info = np.empty((n, N_INFO))
     flags = np.zeros(n, dtype=np.int64)
-    dopri_runs(states, P, none, none, none + 1.0, np.ones((n, 1), dtype=np.int64),
-               np.zeros((n, 1), dtype=np.int64), np.zeros(n, dtype=np.int64),
-               np.zeros((n, 2, 9)), np.zeros((n, 1, 9), bool), np.zeros((n, 1, 9)), nodes,
-               np.arange(n, dtype=np.int64), 1.0, 0.0, RTOL, ATOL, *tables,
-               True, np.empty((n, 1, N_STATES)), info, rates, flags, np.empty(n),
-               np.zeros(1), np.zeros((n, 9)), np.empty((0, N_MEASURES)))
-    return rates[:, 0], info[:, 0], flags
+    _evaluate_states(states, P, drives, *tables, True, rates, info, flags)
+    return rates, info, flags

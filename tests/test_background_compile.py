@@ -1,0 +1,44 @@
+"""The multibody kernels compiled in a second process during a run (cli._BackgroundCompile).
+
+Reference: numba's own cache index (is a compiled version of the kernel on disk for its
+current source?) and the operating system's view of the process (alive or not), not the
+code's account of itself. A command that runs no multibody kernel starts no process; an
+analysis that needs the kernels waits until they are on disk; the process never outlives the
+run's block.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from slingloads import cli
+from slingloads.models.multibody.integrator import _evaluate_states, dopri_runs
+from slingloads.runs.warmup import BACKGROUND, _cached
+
+
+@pytest.mark.parametrize("command", ["lateral", "chute", "template"])
+def test_commands_without_multibody_kernels_start_no_process(command, monkeypatch):
+    monkeypatch.setenv("SLINGLOADS_PLOT_WORKERS", "1")
+    with cli._BackgroundCompile(command) as compiling:
+        assert compiling.helper is None
+        compiling.wait_for("loads")  # nothing to wait for
+
+
+def test_no_process_where_helpers_are_off(monkeypatch):
+    monkeypatch.setenv("SLINGLOADS_PLOT_WORKERS", "0")
+    with cli._BackgroundCompile("run") as compiling:
+        assert compiling.helper is None and not compiling.calls
+
+
+def test_the_kernels_are_on_disk_when_an_analysis_goes_on_and_the_process_ends(monkeypatch):
+    monkeypatch.setenv("SLINGLOADS_PLOT_WORKERS", "1")
+    with cli._BackgroundCompile("run") as compiling:
+        assert set(compiling.calls) == set(BACKGROUND)
+        (process, _, _), = compiling.helper._workers
+        assert process.is_alive()
+        compiling.wait_for("loads")  # the equations only
+        assert _cached(_evaluate_states)
+        assert "integration" in compiling.calls
+        compiling.wait_for("multibody")
+        assert _cached(dopri_runs) and not compiling.calls
+    assert not process.is_alive()
