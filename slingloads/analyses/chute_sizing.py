@@ -270,6 +270,7 @@ class LinearYaw:
     parts: dict
     tas: float
     beta_trim: float = 0.0
+    weight_stiffness: float = 0.0
 
     @property
     def natural_frequency(self):
@@ -340,11 +341,15 @@ class LinearYaw:
         dpsi : ndarray
             [rad/s]
         drate : ndarray
-            (k (gamma - psi - beta_trim) - c r) / I. [rad/s^2]
+            ((k - k_w) (gamma - psi - beta_trim) - k_w (psi + beta_trim) - c r) / I, k_w
+            the weight's part of the stiffness (it turns with psi, not with the gust).
+            [rad/s^2]
         outside : ndarray of bool
             All False (no table to leave).
         """
-        acc = (self.stiffness * (gamma - psi - self.beta_trim) - self.damping * rate) / self.inertia
+        aero, weight = self.stiffness - self.weight_stiffness, self.weight_stiffness
+        acc = (aero * (gamma - psi - self.beta_trim) - weight * (psi + self.beta_trim)
+               - self.damping * rate) / self.inertia
         return rate, acc, np.zeros(np.shape(acc), dtype=bool)
 
 
@@ -397,9 +402,13 @@ def linear_yaw(model, area, fit_range=FIT_RANGE, basis="fit"):
         parts["parachute"] = (q * cd * area * dx, 0.5 * rho * v * cd * area * dx**2)
     elif area > 0:
         raise InputError("a parachute area was given but the model has no parachute", area)
+    weight = -model.weight_terms[1]  # N_w ~ W_c + W_s psi, psi = -beta at rest
+    if weight != 0.0:
+        parts["weight"] = (weight, 0.0)
     stiffness = sum(p[0] for p in parts.values())
     damping = sum(p[1] for p in parts.values())
-    return LinearYaw(model.yaw_inertia, stiffness, damping, parts, v)
+    return LinearYaw(model.yaw_inertia, stiffness, damping, parts, v,
+                     weight_stiffness=weight)
 
 
 # ---------------------------------------------------------------------- neutral area
@@ -577,7 +586,10 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None, basis="larger"):
     if model.fin is not None:
         moments["fin"] = n_fin
     moments["parachute"] = n_chute
-    moments["total"] = n_fus + n_fin + n_chute
+    n_weight = model.weight_moment(-beta_plot)  # at rest psi = -beta
+    if model.weight_terms != (0.0, 0.0):
+        moments["weight"] = n_weight
+    moments["total"] = n_fus + n_fin + n_chute + n_weight
     return NeutralAreaResult(float(area), derivs, float(per_area),
                              model.condition.dynamic_pressure, float(dx), beta_plot, moments,
                              yaw_linearisation(model, fit_range), float(areas["fit"]),

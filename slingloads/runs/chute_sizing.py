@@ -56,6 +56,9 @@ class ChuteSizingInputs:
         The Study's 'parachute area' (used by the loads; 0 if none). [m^2]
     study_line : float
         The Study's 'parachute line length'. [m]
+    yaw_axis : str
+        The axis of the yaw model's moments, inertia and weight
+        (:data:`slingloads.analyses.towed_attitude.YAW_AXES`).
     """
 
     model: YawModel
@@ -73,6 +76,7 @@ class ChuteSizingInputs:
     inertia_source: str
     study_area: float
     study_line: float
+    yaw_axis: str = "suspension"
 
 
 @dataclass(frozen=True)
@@ -95,9 +99,13 @@ class ChuteSizingReport:
         The parachute decision (:mod:`slingloads.analyses.parachute_decision`), with the
         campaign's selection when the campaign ran in the same study.
     axes_angle : float
-        Angle between the axis the yawing moments are taken about (airframe z through the
-        hub) and the axis of the yaw inertia (the hub-CG line, the hanging vertical); NaN
-        without mass items. [rad]
+        Angle between the yaw model's axis (moments, inertia and weight all about it) and
+        airframe z. [rad]
+    towed : TowedAttitude or None
+        The towed trim at the sizing airspeed (None without a towed system).
+    axis_text : str
+        The yaw model's axis in words (:func:`slingloads.analyses.towed_attitude.
+        yaw_model_about`).
     """
 
     inputs: ChuteSizingInputs
@@ -109,6 +117,7 @@ class ChuteSizingReport:
     decision: object = None
     axes_angle: float = float("nan")
     towed: object = None
+    axis_text: str = ""
 
     @property
     def study_area_peak_sideslip(self):
@@ -170,19 +179,26 @@ def run(study):
         (located where they came from: :meth:`Study.located`; a yaw trim that cannot be found
         has ``field = "trim"``).
     """
+    from dataclasses import replace
+
+    from slingloads.analyses.towed_attitude import towed_attitude, yaw_model_about
+
     inputs = study.require(ANALYSIS)
-    towed = None
+    towed = body = None
     system = _towed_system(study)
     if system is not None:
-        from dataclasses import replace
-
-        from slingloads.analyses.towed_attitude import towed_attitude
-
+        # the attitude the loads' towed cases and the multibody fly
         towed = towed_attitude(system, inputs.model.condition.eas)
-        if towed.converged:  # the attitude the loads' towed cases and the multibody fly
-            model = inputs.model
-            model = replace(model, condition=replace(model.condition, alpha=towed.alpha))
-            inputs = replace(inputs, model=model)
+        body = system.body
+    elif getattr(study.airframe, "mass_items", None) is not None:
+        from slingloads.models.multibody.rigid_body import RigidBody
+
+        body = RigidBody.from_mass_items(study.airframe.mass_items)
+    with study.located(ANALYSIS):
+        model, axis_text = yaw_model_about(
+            inputs.model, inputs.yaw_axis, towed, body,
+            inputs.model.yaw_inertia if inputs.inertia_source == "parameter" else None)
+    inputs = replace(inputs, model=model)
     with study.located(ANALYSIS):
         static = neutral_area(inputs.model, inputs.fit_range)
         line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
@@ -198,7 +214,7 @@ def run(study):
         recommended = sweep.smallest_stable_area if sweep is not None else 0.0
         decision = _decision(study, inputs, static, sweep) if sweep is not None else None
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
-                             decision, axes_angle(study.airframe), towed)
+                             decision, model.axis_tilt, towed, axis_text)
 
 
 def _towed_system(study):
@@ -214,28 +230,6 @@ def _towed_system(study):
 
     return towed_system(loads.airframe, loads.fuselage, loads.fin, loads.parachute,
                         loads.flight.eas, loads.flight.density_altitude)[0]
-
-
-def axes_angle(airframe):
-    """Angle between the axis the yawing moments are taken about (airframe z through the
-    hub) and the axis of the yaw inertia (the hub-CG line).
-
-    Parameters
-    ----------
-    airframe : Airframe or None
-        Its hub hardpoint and mass items' centre of gravity. [m]
-
-    Returns
-    -------
-    float
-        The angle; NaN without mass items or with the CG at the hub. [rad]
-    """
-    items = getattr(airframe, "mass_items", None)
-    if items is None:
-        return float("nan")
-    k = np.asarray(airframe.hardpoints.hub, float) - np.asarray(items.cg, float)
-    norm = np.linalg.norm(k)
-    return float(np.arccos(np.clip(k[2] / norm, -1.0, 1.0))) if norm > 0 else float("nan")
 
 
 def shortfalls(result):
