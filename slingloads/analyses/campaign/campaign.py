@@ -126,6 +126,10 @@ class Campaign:
         the parachute sizing's :data:`~slingloads.analyses.chute_sizing.FIT_RANGE`; a workbook
         passes its 'chute sizing linearisation range', so that both analyses size the same
         neutral area). [rad]
+    yaw_axis : {"suspension", "airframe z"}
+        The axis of the 1-DOF yaw model of the neutral area and the 1-DOF checks (default the
+        suspension axis; a workbook passes its 'chute sizing yaw axis', so that both analyses
+        take the same axis, :func:`~slingloads.analyses.towed_attitude.yaw_model_about`).
 
     Attributes
     ----------
@@ -149,6 +153,7 @@ class Campaign:
     neutral_airspeed: float | None = None
     name: str = "campaign"
     neutral_fit_range: tuple | None = None
+    yaw_axis: str = "suspension"
 
     def __post_init__(self):
         if not isinstance(self.setup, CampaignSetup):
@@ -178,7 +183,8 @@ class Campaign:
             float(b) for b in self.neutral_fit_range)
         towed = towed_trim_of(self.setup.system, speed)
         object.__setattr__(self, "neutral_trim", towed)
-        neutral = neutral_area_of(self.setup.system, speed, fit, towed=towed)
+        neutral = neutral_area_of(self.setup.system, speed, fit, towed=towed,
+                                  axis=self.yaw_axis)
         if neutral.already_stable:
             raise InputError("fuselage and fin are already statically stable in yaw (neutral "
                              "parachute area not positive): there is no parachute to size",
@@ -360,7 +366,7 @@ def neutral_check(campaign, metrics):
     m = campaign.matrix
     speed = float(m.frame["airspeed EAS [m/s]"].max())
     altitude = float(m.frame["density altitude [m]"].iloc[0])
-    model = yaw_model_of(campaign.setup.system, speed, altitude)
+    model = yaw_model_of(campaign.setup.system, speed, altitude, axis=campaign.yaw_axis)
     fit = (FIT_RANGE if campaign.neutral_fit_range is None
            else tuple(float(b) for b in campaign.neutral_fit_range))
     runs = run_yaw(model, campaign.neutral.area, standard_gusts(),
@@ -520,7 +526,7 @@ def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one
         m = campaign.matrix
         speed = float(m.frame["airspeed EAS [m/s]"].max())
         altitude = float(m.frame["density altitude [m]"].iloc[0])
-        model = yaw_model_of(campaign.setup.system, speed, altitude)
+        model = yaw_model_of(campaign.setup.system, speed, altitude, axis=campaign.yaw_axis)
         fit = (FIT_RANGE if campaign.neutral_fit_range is None
                else tuple(float(b) for b in campaign.neutral_fit_range))
 
