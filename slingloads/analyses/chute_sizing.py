@@ -1007,12 +1007,20 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     runs = max(areas.size, len(gust_list))
     areas = np.broadcast_to(areas, (runs,)).copy() if areas.size == 1 else areas
     gust_list = gust_list * runs if len(gust_list) == 1 else gust_list
-    # Trim: the static equilibrium nearest beta = 0 (per distinct area).
+    # Trim: the static equilibrium nearest beta = 0 (per distinct area); each run is judged
+    # about the equilibrium under the gust it ends in (a held gust moves it when the weight
+    # has a moment about the axis; the same as at rest otherwise).
     distinct, back = np.unique(areas, return_inverse=True)
     beta_trim = model.trim_betas(distinct)[back]
+    reference = beta_trim.copy()
+    if hasattr(model, "weight_terms") and model.weight_terms != (0.0, 0.0):
+        for j, g in enumerate(gust_list):
+            held = float(g.velocity(np.array([settings.t_end]))[0]) if g.end is not None else 0.0
+            if held != 0.0:
+                reference[j] = model.trim_betas([areas[j]], gust=held)[0]
     run = INTEGRATORS[integrator]
     hist = run(model, areas, gust_list, psi0=-beta_trim, rate0=0.0, settings=settings)
-    frame = _run_metrics(model, areas, gust_list, hist, beta_trim[:, None], fit_range, metrics)
+    frame = _run_metrics(model, areas, gust_list, hist, reference[:, None], fit_range, metrics)
     return YawRuns(areas, gust_list, hist, frame, float(np.max(np.abs(beta_trim))), settings)
 
 

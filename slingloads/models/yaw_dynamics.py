@@ -499,9 +499,9 @@ class YawModel:
         """
         return float(self.trim_betas([area], search)[0])
 
-    def trim_betas(self, areas, search=TRIM_SEARCH):
+    def trim_betas(self, areas, search=TRIM_SEARCH, gust=0.0):
         """:meth:`trim_beta` of several parachute areas at once (the moments on one
-        sideslip grid, the parachute's scaled by each area).
+        sideslip grid, the parachute's scaled by each area), at rest or under a held gust.
 
         Parameters
         ----------
@@ -509,6 +509,11 @@ class YawModel:
             Parachute flat-plate areas. [m^2]
         search : float
             Half-width of the sideslip interval searched. [rad]
+        gust : float
+            A held lateral gust (0: at rest). Under it the aerodynamic moments scale with the
+            relative speed squared and keep their zeros; the weight's moment, which turns with
+            the heading psi = gamma - beta and not with the wind, moves the equilibrium
+            (none without a weight). [m/s]
 
         Returns
         -------
@@ -518,11 +523,13 @@ class YawModel:
         areas = np.atleast_1d(np.asarray(areas, dtype=float))
         lo, hi = self.beta_range()
         grid = np.linspace(max(lo, -search), min(hi, search), 801)
-        n_fus, n_fin, _ = self.static_moments(grid, 0.0)
-        unit = self.static_moments(grid, 1.0)[2] if self.parachute is not None else 0.0
+        gamma, v_rel = (float(x) for x in self.relative_wind(float(gust)))
+        n_fus, n_fin, _, _ = self.moments(grid, 0.0, v_rel, 0.0)
+        unit = (self.moments(grid, 0.0, v_rel, 1.0)[2] if self.parachute is not None
+                else 0.0)
         if self.parachute is None and np.any(areas != 0):
             self.static_moments(grid, areas[areas != 0][0])  # refuses the area
-        total = (0 + n_fus + n_fin + self.weight_moment(-grid)) + areas[:, None] * unit
+        total = (0 + n_fus + n_fin + self.weight_moment(gamma - grid)) + areas[:, None] * unit
         total = np.broadcast_to(total, (areas.size, grid.size))
         b0, b1, n0, n1 = grid[:-1], grid[1:], total[:, :-1], total[:, 1:]
         change = np.sign(n0) != np.sign(n1)
