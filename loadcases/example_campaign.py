@@ -18,7 +18,7 @@ TABLES = {}
 
 PARAMETERS = {
     "run campaign": ("no", ""),
-    "campaign area factors": ("1.0, 1.4, 1.8", ""),
+    "campaign area factors": ("1.0, 2.0, 3.0", ""),
     "campaign airspeeds EAS": ("60, 80", "kt"),
     "campaign density altitudes": ("0", "ft"),
     "campaign cable lengths": ("60", "ft"),

@@ -179,11 +179,79 @@ def run(study):
         (located where they came from: :meth:`Study.located`; a yaw trim that cannot be found
         has ``field = "trim"``).
     """
+    inputs = study.require(ANALYSIS)
+    core = sizing_sweep_of(study)
+    inputs, static, sweep, towed, axis_text = (core.inputs, core.static, core.sweep,
+                                               core.towed, core.axis_text)
+    model = inputs.model
+    with study.located(ANALYSIS):
+        line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
+        at_study = None
+        if inputs.study_area > 0:
+            at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
+                               inputs.fit_range, inputs.metrics, inputs.integrator)
+        recommended = sweep.smallest_stable_area if sweep is not None else 0.0
+        decision = (_decision(study, inputs, static, sweep, axis_text) if sweep is not None
+                    else None)
+    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
+                             decision, model.axis_tilt, towed, axis_text)
+
+
+@dataclass(frozen=True, eq=False)
+class SizingSweep:
+    """The 1-DOF sizing's model about its yaw axis, neutral area and area sweep: computed once
+    per study (:func:`sizing_sweep_of`), ahead of the campaign when both run, so that the
+    campaign also runs the area the sizing proposes.
+
+    Attributes
+    ----------
+    inputs : ChuteSizingInputs
+        With the yaw model about its axis at the towed trim.
+    static : NeutralAreaResult
+    sweep : SweepResult or None
+        None when fuselage and fin are already stable.
+    towed : TowedAttitude or None
+    axis_text : str
+    given : ChuteSizingInputs
+        The inputs as the study gave them (the result is reused while they are the study's).
+    """
+
+    inputs: ChuteSizingInputs
+    static: object
+    sweep: object
+    towed: object
+    axis_text: str
+    given: object = None
+
+    @property
+    def proposed_area(self):
+        """The 1-DOF proposal: the smallest swept area stable under every gust (NaN when
+        none is; 0 when already stable). [m^2]"""
+        return float(self.sweep.smallest_stable_area) if self.sweep is not None else 0.0
+
+
+def sizing_sweep_of(study):
+    """The study's :class:`SizingSweep`, computed on the first call and kept in
+    ``study.results.sizing_sweep``.
+
+    Parameters
+    ----------
+    study : Study
+        With ``study.inputs.chute_sizing``.
+
+    Returns
+    -------
+    SizingSweep
+    """
     from dataclasses import replace
 
     from slingloads.analyses.towed_attitude import towed_attitude, yaw_model_about
 
     inputs = study.require(ANALYSIS)
+    kept = getattr(study.results, "sizing_sweep", None)
+    if kept is not None and kept.given is inputs:
+        return kept
+    given = inputs
     towed = body = None
     system = _towed_system(study)
     if system is not None:
@@ -198,23 +266,16 @@ def run(study):
         model, axis_text = yaw_model_about(
             inputs.model, inputs.yaw_axis, towed, body,
             inputs.model.yaw_inertia if inputs.inertia_source == "parameter" else None)
-    inputs = replace(inputs, model=model)
-    with study.located(ANALYSIS):
+        inputs = replace(inputs, model=model)
         static = neutral_area(inputs.model, inputs.fit_range)
-        line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
         sweep = None
         if not static.already_stable:
             sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
                                  inputs.fit_range, metrics=inputs.metrics, static=static,
                                  integrator=inputs.integrator)
-        at_study = None
-        if inputs.study_area > 0:
-            at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
-                               inputs.fit_range, inputs.metrics, inputs.integrator)
-        recommended = sweep.smallest_stable_area if sweep is not None else 0.0
-        decision = _decision(study, inputs, static, sweep) if sweep is not None else None
-    return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
-                             decision, model.axis_tilt, towed, axis_text)
+    core = SizingSweep(inputs, static, sweep, towed, axis_text, given)
+    study.results.sizing_sweep = core
+    return core
 
 
 def _towed_system(study):
@@ -254,7 +315,7 @@ def shortfalls(result):
     return out
 
 
-def _decision(study, inputs, static, sweep):
+def _decision(study, inputs, static, sweep, axis_text=""):
     """The parachute decision: the sizing's, with the campaign's selection when the campaign
     was computed in the same study (it is computed first, :data:`slingloads.runs.study.
     FEEDS`); kept in ``study.results.parachute_decision`` for every report that mentions the
@@ -267,12 +328,15 @@ def _decision(study, inputs, static, sweep):
                        inputs.metrics, inputs.integrator).to_frame()
 
     campaign = study.results.campaign
+    axis = f"'{inputs.yaw_axis}' ({axis_text})"
+    speed = inputs.model.condition.eas
     if campaign is not None:
         r = campaign.result
         decision = campaign_decision(r.campaign, r.metrics, r.selection, sweep, static,
-                                     one_dof, inputs.study_area)
+                                     one_dof, inputs.study_area, axis, speed)
     else:
-        decision = decide(static, sweep, one_dof=one_dof, study_area=inputs.study_area)
+        decision = decide(static, sweep, one_dof=one_dof, study_area=inputs.study_area,
+                          yaw_axis=axis, airspeed=speed)
     study.results.parachute_decision = decision
     return decision
 

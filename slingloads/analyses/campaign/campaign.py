@@ -492,7 +492,7 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
 
 
 def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one_dof=None,
-                      study_area=None):
+                      study_area=None, yaw_axis=None, airspeed=None):
     """The parachute decision of a campaign (:func:`~slingloads.analyses.parachute_decision.
     decide`), with a 1-DOF sizing sweep if given; the 1-DOF verdicts at the chosen area from
     the campaign's yaw model at its highest airspeed (as :func:`neutral_check`) unless
@@ -513,6 +513,10 @@ def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one
         ``one_dof(area)`` -> DataFrame of the 1-DOF runs at an area [m^2].
     study_area : float, optional
         The study's parachute area (default that of the campaign's system). [m^2]
+    yaw_axis : str, optional
+        The 1-DOF model's axis in words (default: the campaign's, :attr:`Campaign.yaw_axis`).
+    airspeed : float, optional
+        The 1-DOF model's airspeed (default the matrix's highest). [m/s]
 
     Returns
     -------
@@ -522,6 +526,10 @@ def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one
 
     from .selection import stable_runs
 
+    if airspeed is None:
+        airspeed = float(campaign.matrix.frame["airspeed EAS [m/s]"].max())
+    if yaw_axis is None:
+        yaw_axis = f"'{campaign.yaw_axis}' ({campaign.neutral_condition})"
     if one_dof is None:
         m = campaign.matrix
         speed = float(m.frame["airspeed EAS [m/s]"].max())
@@ -538,4 +546,4 @@ def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one
     area = (float(line.parachute.area) if line is not None else float("nan")
             ) if study_area is None else study_area
     return decide(campaign.neutral if static is None else static, sweep, selection, metrics,
-                  stable_runs(metrics).to_numpy(), one_dof, area)
+                  stable_runs(metrics).to_numpy(), one_dof, area, yaw_axis, airspeed)
