@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hostile import EXAMPLE
 from scipy.spatial.transform import Rotation
 
 from slingloads.analyses.chute_sizing import neutral_area, run_yaw
@@ -15,8 +16,6 @@ from slingloads.io.study import read_study
 from slingloads.models.gusts import standard_gusts
 from slingloads.models.integration import SolverSettings
 from slingloads.runs.chute_sizing import _towed_system
-
-from hostile import EXAMPLE
 
 HALF = np.radians(15.0)  # the example's linearisation range
 
@@ -139,7 +138,8 @@ def test_held_gust_is_judged_about_its_own_equilibrium(example):
     """With the weight's moment about the tilted axis, a held 30 ft/s gust moves the
     equilibrium off zero sideslip (the weight turns with the heading, not with the wind): the
     linear estimate beta = k_w gamma / k (from (k - k_w)(gamma - psi) - k_w psi = 0, k the
-    total stiffness, k_w the weight's, negative here) within 10 %; a run that settles there is convergent, not a static departure."""
+    total stiffness, k_w the weight's, negative here) within 10 %; a run that settles there
+    is convergent, not a static departure."""
     model, system, towed = example
     tilted, _ = yaw_model_about(model, "suspension", towed, system.body)
     area = 3.0 * neutral_area(tilted, (-HALF, HALF)).area

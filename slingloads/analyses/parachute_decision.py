@@ -73,8 +73,9 @@ class ParachuteDecision:
         Verdict over the campaign's runs at the 1-DOF proposal (the campaign runs it when
         the sizing runs too).
     damping : str
-        The yaw damping ratios of both models at the chosen area and one airspeed, compared
-        within :data:`DAMPING_TOLERANCE`, or why not.
+        The yaw damping ratios of both models at the chosen area (the 1-DOF proposal when no
+        area is chosen) and the 1-DOF model's airspeed, compared within
+        :data:`DAMPING_TOLERANCE`, or why not.
     """
 
     neutral_area_fit: float
@@ -348,8 +349,12 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
         flags = np.asarray(stable, bool) if stable is not None else None
         mb = multibody_verdict_at(metrics, chosen, flags)
         mb1 = multibody_verdict_at(metrics, a1, flags) if ran1 else "no 1-DOF sweep"
-    damping = (damping_comparison(runs, metrics if ran2 else None, chosen, airspeed)
-               if np.isfinite(airspeed) else "")
+    damping = ""
+    if np.isfinite(airspeed):  # at the chosen area, else at the 1-DOF proposal
+        compared = chosen if np.isfinite(chosen) else a1
+        if not np.isfinite(chosen) and np.isfinite(a1) and one_dof is not None:
+            runs = one_dof(a1)
+        damping = damping_comparison(runs, metrics if ran2 else None, compared, airspeed)
     return ParachuteDecision(
         float(static.area_fit), float(static.area_local), float(static.area),
         static.basis_text, float(a1), ran1, verdicts, float(a2), ran2, mb, float(chosen),
