@@ -7,8 +7,9 @@ stays a few seconds (the campaign's runs, stability map and seven plots add seve
 even with every run cached); ``slingloads campaign`` runs it whatever the switch says, and
 ``run campaign = yes`` chains it before the loads. Three parachute areas
 (1.0, 2.0 and 3.0 x the neutral area about the suspension axis; with the parachute sizing,
-the campaign also runs the sizing's proposed area), 60 and 80 KEAS, sea level, the 60 ft cable, the frozen
-carrier, the free response and the +30 ft/s gust (12 runs of 60 s); the transport without
+the campaign also runs the sizing's proposed area), 60 and 80 KEAS, sea level, the 60 ft
+cable, the frozen carrier, the free response and the +30 ft/s gust (12 runs of 60 s, 16 with
+the sizing's area); the transport without
 parachute of the GENERIC samples HC1 and HC2 under ramps to 20, 30 and 40 kt (the paper's
 figures 16 to 18). The paper's matrix (about 4,000 runs) is ``benchmarks/bench_campaign.py``.
 """
