@@ -285,8 +285,18 @@ class YawModel:
         return self._weight
 
     def weight_moment(self, psi):
-        """The weight's yawing moment about the suspension axis at yaw ``psi`` [rad], nose
-        right positive. [N m]"""
+        """The weight's yawing moment about the suspension axis, nose right positive.
+
+        Parameters
+        ----------
+        psi : array_like
+            Yaw, nose right positive. [rad]
+
+        Returns
+        -------
+        ndarray
+            [N m]
+        """
         return weight_moment(np.asarray(psi, dtype=float), self._arrays[0])
 
     @property

@@ -102,10 +102,23 @@ def make_yaw_moments(lookup):
 
 
 def weight_moment(psi, M):
-    """The weight's yawing moment about the suspension axis at yaw ``psi`` [rad] (nose right
-    positive): ``W_c cos(psi) + W_s sin(psi)`` with the model row's ``weight_c`` and
-    ``weight_s`` (:class:`slingloads.models.yaw_dynamics.YawModel`). Elementwise, for numpy and
-    compiled code. [N m]"""
+    """The weight's yawing moment about the suspension axis (nose right positive),
+    ``W_c cos(psi) + W_s sin(psi)`` with the model row's ``weight_c`` and ``weight_s``
+    (:class:`slingloads.models.yaw_dynamics.YawModel`). Elementwise, for numpy and compiled
+    code.
+
+    Parameters
+    ----------
+    psi : float or ndarray
+        Yaw, nose right positive. [rad]
+    M : ndarray, shape (N_MODEL,)
+        The model row (:data:`LAYOUT`).
+
+    Returns
+    -------
+    float or ndarray
+        [N m]
+    """
     return M[WEIGHT_C] * np.cos(psi) + M[WEIGHT_S] * np.sin(psi)
 
 
