@@ -116,9 +116,10 @@ def test_tilted_axis_neutral_area_against_a_hand_calculation(example):
 
 
 def test_weight_moment_against_an_independent_rotation(example):
-    """N_w(psi) = W_c cos(psi) + W_s sin(psi) against -a . (r x W_body(psi)), with the earth's
-    weight turned into airframe axes by scipy's rotation about a by +psi (nose right is a
-    negative rotation of the body about +a); zero about the vertical through the hub."""
+    """N_w(psi) = W_c (cos(psi) - 1) + W_s sin(psi) against -a . (r x W_body(psi)) less its
+    value at psi = 0 (the trim's), with the earth's weight turned into airframe axes by
+    scipy's rotation about a by +psi (nose right is a negative rotation of the body about +a);
+    zero about the vertical through the hub."""
     from dataclasses import replace
 
     model, system, towed = example
@@ -128,7 +129,8 @@ def test_weight_moment_against_an_independent_rotation(example):
     r = system.body.cg - model.hardpoints.hub
     for psi in np.radians([-60.0, -7.0, 0.0, 3.0, 45.0, 170.0]):
         w = Rotation.from_rotvec(psi * a).apply(w0)
-        assert tilted.weight_moment(psi) == pytest.approx(-a @ np.cross(r, w),
+        direct = -a @ np.cross(r, w) + a @ np.cross(r, w0)
+        assert tilted.weight_moment(psi) == pytest.approx(direct,
                                                           abs=1e-9 * np.linalg.norm(w0))
     vertical = replace(tilted, axis=np.asarray(towed.vertical, float))
     assert np.allclose(vertical.weight_terms, 0.0, atol=1e-9 * np.linalg.norm(w0))

@@ -18,6 +18,7 @@ positive; beta positive wind from the right; stable means dN/dbeta > 0.
 
 from __future__ import annotations
 
+import contextlib
 import math
 from dataclasses import dataclass, field, replace
 
@@ -1011,16 +1012,33 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     # about the equilibrium under the gust it ends in (a held gust moves it when the weight
     # has a moment about the axis; the same as at rest otherwise).
     distinct, back = np.unique(areas, return_inverse=True)
-    beta_trim = model.trim_betas(distinct)[back]
+    untrimmed = {}  # area -> why it has no static equilibrium (judged about beta 0)
+    try:
+        beta_trim = model.trim_betas(distinct)[back]
+    except InputError as err:
+        if err.field != "trim":
+            raise
+        found = np.zeros(distinct.size)
+        for i, a in enumerate(distinct):
+            try:
+                found[i] = model.trim_betas([a])[0]
+            except InputError as one:
+                untrimmed[float(a)] = str(one.args[0] if one.args else one)
+        beta_trim = found[back]
     reference = beta_trim.copy()
     if hasattr(model, "weight_terms") and model.weight_terms != (0.0, 0.0):
         for j, g in enumerate(gust_list):
             held = float(g.velocity(np.array([settings.t_end]))[0]) if g.end is not None else 0.0
-            if held != 0.0:
-                reference[j] = model.trim_betas([areas[j]], gust=held)[0]
+            if held != 0.0 and float(areas[j]) not in untrimmed:
+                with contextlib.suppress(InputError):  # none under the gust: judged at rest
+                    reference[j] = model.trim_betas([areas[j]], gust=held)[0]
     run = INTEGRATORS[integrator]
     hist = run(model, areas, gust_list, psi0=-beta_trim, rate0=0.0, settings=settings)
     frame = _run_metrics(model, areas, gust_list, hist, reference[:, None], fit_range, metrics)
+    for j, a in enumerate(areas):
+        if float(a) in untrimmed:
+            frame.loc[j, "verdict reason"] = (f"{untrimmed[float(a)]}: started and judged about "
+                                              f"beta 0; {frame.loc[j, 'verdict reason']}")
     return YawRuns(areas, gust_list, hist, frame, float(np.max(np.abs(beta_trim))), settings)
 
 

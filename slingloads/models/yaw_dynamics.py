@@ -43,10 +43,13 @@ Moments about the suspension axis:
 * weight (when given, :attr:`YawModel.weight`): yawing the body by psi turns the weight W,
   fixed in the earth, about the axis in airframe axes, ``W(psi) = W_par + W_perp cos(psi) +
   (a x W) sin(psi)``, so that with r_g the CG from the hub
-  ``N_w = -a . (r_g x W(psi)) = W_c cos(psi) + W_s sin(psi)``, ``W_c = -(a x r_g) . W``,
-  ``W_s = -(a x r_g) . (a x W)``: zero about the vertical through the hub (the hanging body
-  at rest), a stiffness ``-W_s = (r_g)_perp . W_perp`` about a tilted axis (the towed trim's
-  cable line, a few degrees from the vertical).
+  ``-a . (r_g x W(psi)) = W_c cos(psi) + W_s sin(psi)``, ``W_c = -(a x r_g) . W``,
+  ``W_s = -(a x r_g) . (a x W)``. The moment at psi = 0, ``W_c``, belongs to the trim (the
+  towed trim balances it with the aerodynamic and parachute moments at its own sideslip; zero
+  for a symmetric body), so the model takes its change, ``N_w = W_c (cos(psi) - 1) +
+  W_s sin(psi)``: zero about the vertical through the hub (the hanging body at rest), a
+  stiffness ``-W_s = (r_g)_perp . W_perp`` about a tilted axis (the towed trim's cable line,
+  a few degrees from the vertical).
 
 Equation of motion ``I psi'' = N_fus + N_fin + N_chute + N_w``, state ``(psi, r)``.
 
@@ -281,11 +284,13 @@ class YawModel:
     @property
     def weight_terms(self):
         """(W_c, W_s) of the weight's yawing moment about the suspension axis,
-        ``N_w = W_c cos(psi) + W_s sin(psi)`` (module notes; (0, 0) without a weight). [N m]"""
+        ``W_c cos(psi) + W_s sin(psi)``; the model takes its change from psi = 0,
+        :meth:`weight_moment` (module notes; (0, 0) without a weight). [N m]"""
         return self._weight
 
     def weight_moment(self, psi):
-        """The weight's yawing moment about the suspension axis, nose right positive.
+        """The change of the weight's yawing moment about the suspension axis from psi = 0,
+        nose right positive (module notes).
 
         Parameters
         ----------

@@ -27,7 +27,7 @@ LAYOUT = Layout((
     Field("fus_lo", "rad", "lower end of the fuselage table"),
     Field("fus_hi", "rad", "upper end of the fuselage table"),
     Field("tas", "m/s", "true airspeed"),
-    Field("weight_c", "N m", "weight's moment about the suspension axis at psi = 0"),
+    Field("weight_c", "N m", "weight's moment about the suspension axis at psi = 0 (the trim's)"),
     Field("weight_s", "N m", "weight's moment about the suspension axis, sin(psi) term"),
 ))
 HALF_RHO, INERTIA = LAYOUT["half_rho"], LAYOUT["inertia"]
@@ -102,10 +102,10 @@ def make_yaw_moments(lookup):
 
 
 def weight_moment(psi, M):
-    """The weight's yawing moment about the suspension axis (nose right positive),
-    ``W_c cos(psi) + W_s sin(psi)`` with the model row's ``weight_c`` and ``weight_s``
-    (:class:`slingloads.models.yaw_dynamics.YawModel`). Elementwise, for numpy and compiled
-    code.
+    """The change of the weight's yawing moment about the suspension axis from psi = 0 (nose
+    right positive), ``W_c (cos(psi) - 1) + W_s sin(psi)`` with the model row's ``weight_c``
+    and ``weight_s`` (:class:`slingloads.models.yaw_dynamics.YawModel`): the moment at psi = 0
+    belongs to the trim. Elementwise, for numpy and compiled code.
 
     Parameters
     ----------
@@ -119,7 +119,7 @@ def weight_moment(psi, M):
     float or ndarray
         [N m]
     """
-    return M[WEIGHT_C] * np.cos(psi) + M[WEIGHT_S] * np.sin(psi)
+    return M[WEIGHT_C] * (np.cos(psi) - 1.0) + M[WEIGHT_S] * np.sin(psi)
 
 
 def _numpy_lookup(x, xp, fp, slope, lo, k):
