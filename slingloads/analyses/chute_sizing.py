@@ -1023,6 +1023,13 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
             try:
                 found[i] = model.trim_betas([a])[0]
             except InputError as one:
+                # without a restoring stiffness (at or below the neutral area) there need be
+                # no equilibrium: a finding, run from beta 0; with one, the moment's offset
+                # is the input's (e.g. a hub off the plane of symmetry): refused
+                lin = linear_yaw(model, float(a), fit_range, "local")
+                scale = sum(abs(k) for k, _ in lin.parts.values())
+                if lin.stiffness > 1e-6 * scale:
+                    raise
                 untrimmed[float(a)] = str(one.args[0] if one.args else one)
         beta_trim = found[back]
     reference = beta_trim.copy()
