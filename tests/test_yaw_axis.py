@@ -157,3 +157,44 @@ def test_held_gust_is_judged_about_its_own_equilibrium(example):
                    SolverSettings(120.0, 0.1), (-HALF, HALF)).to_frame()
     assert runs["verdict"].iloc[0] == "convergent"
     assert runs["final beta [deg]"].iloc[0] == pytest.approx(np.degrees(beta), abs=0.05)
+
+
+def test_the_campaign_runs_the_sizings_proposed_area(tmp_path):
+    """With the sizing in the same run, a campaign whose factors lack the 1-DOF proposal (the
+    example's with factors 1.0 and 3.0) also runs it: the matrix gains the factor
+    proposal / neutral (2.2 on the example), the Summary says it was added, and the decision
+    gives the multibody verdict at that area from those runs (was 'not run at this area')."""
+    import openpyxl
+    import pandas as pd
+    from hostile import study_row
+
+    from slingloads.analyses.campaign.selection import stable_runs
+    from slingloads.analyses.parachute_decision import multibody_verdict_at
+
+    book = openpyxl.load_workbook(EXAMPLE)
+    for name, value in (("run campaign", "yes"), ("campaign area factors", "1.0, 3.0"),
+                        ("run lateral", "no"), ("run loads", "no")):
+        book["Study"][f"B{study_row(book, name)}"] = value
+    path = tmp_path / "added.xlsx"
+    book.save(path)
+    study = read_study(path)
+    results = study.run()
+    sizing, campaign = results.chute_sizing, results.campaign
+    proposal = sizing.sweep.smallest_stable_area
+    factor = proposal / campaign.result.campaign.neutral.area
+    assert factor == pytest.approx(2.2, rel=1e-9)
+    assert campaign.sizing_factor == pytest.approx(factor, rel=1e-12)
+    metrics = campaign.result.metrics
+    at = np.isclose(metrics["area [m^2]"], proposal, rtol=1e-6)
+    assert at.sum() == 4  # 2 airspeeds x 2 manoeuvres
+    decision = results.parachute_decision
+    assert decision.multibody_at_one_dof == multibody_verdict_at(
+        metrics, proposal, stable_runs(metrics).to_numpy())
+    assert decision.multibody_at_one_dof != "not run at this area"
+    from slingloads.io.reports import write_reports
+
+    write_reports(results, tmp_path / "out")
+    summary = pd.read_excel(next((tmp_path / "out").glob("*-campaign.xlsx")), "Summary",
+                            header=None)
+    row = summary[summary[0] == "area factors"].iloc[0]
+    assert "added: the parachute sizing's proposed area" in str(row[3])
