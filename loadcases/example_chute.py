@@ -61,6 +61,7 @@ PARAMETERS = {
     "chute sizing density altitude": (0, "ft"),
     "chute sizing alpha trim": (0, "deg"),
     "chute sizing linearisation range": (LINEARISATION_DEG, "deg"),
+    "chute sizing yaw axis": ("suspension", ""),
     "chute sizing yaw inertia source": ("mass items", ""),
     "chute sizing wake source": ("table", ""),
     "chute sizing target q ratio": (0.95, ""),
@@ -79,8 +80,8 @@ PARAMETERS = {
     "chute sizing sideslip limit": (20, "deg"),
     "chute sizing simulation time": (120, "s"),
     "chute sizing area factor min": (1.0, ""),
-    "chute sizing area factor max": (2.0, ""),
-    "chute sizing number of areas": (6, ""),
+    "chute sizing area factor max": (3.0, ""),
+    "chute sizing number of areas": (11, ""),
     "chute sizing recommended factor": (RECOMMENDED_FACTOR, ""),
 }
 

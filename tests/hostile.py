@@ -42,6 +42,9 @@ def small_workbook():
         ("chute sizing gust duration", 4.0, "s"),
         ("chute sizing gust shapes", "step, finite", None),
         ("chute sizing number of areas", 2, None),
+        # the paper's balance of Mz: fuselage and fin stable alone, no sweep (about the towed
+        # trim's cable line the weight's moment makes this small body need a parachute)
+        ("chute sizing yaw axis", "airframe z", None),
     ]
     alphas, betas = (-10.0, 0.0, 10.0), (-20.0, -10.0, 0.0, 10.0, 20.0)
     fuselage = [("alpha [deg]", "beta [deg]", "CD", "CY", "CL", "Cl", "Cm", "Cn")]

@@ -23,10 +23,10 @@ from slingloads.io.study import read_study
 from slingloads.runs.cache import RunCache
 
 #: A tiny campaign: 2 areas, 1 condition, 1 manoeuvre, 30 s runs; HC1 under one 20 kt ramp.
-#: Areas 1.4 and 1.8 x the neutral area at the 60 KEAS towed trim (0.669 m^2): 0.94 and
-#: 1.20 m^2, the smaller inconclusive within 30 s, the larger stable.
+#: Areas 2.25 and 2.9 x the neutral area about the suspension axis at the 60 KEAS towed trim
+#: (0.419 m^2): 0.94 and 1.21 m^2, the smaller inconclusive within 30 s, the larger stable.
 TINY = {"run loads": "no", "run lateral": "no", "run chute sizing": "no",
-        "run campaign": "yes", "campaign area factors": "1.4, 1.8",
+        "run campaign": "yes", "campaign area factors": "2.25, 2.9",
         "campaign airspeeds EAS": "60", "campaign density altitudes": "0",
         "campaign cable lengths": "60", "campaign carriers": "frozen",
         "campaign manoeuvres": "free response", "campaign run length": 30,
@@ -162,14 +162,14 @@ def test_summary_states_where_the_cache_is_and_what_it_counts(tiny):
 
 
 def test_edited_workbook_reruns_only_what_changed(tiny, tmp_path):
-    """Area factors 1.4, 1.8 -> 1.4, 1.6: the 1.4 run and the ramp are found (2), the 1.6
+    """Area factors 2.25, 2.9 -> 2.25, 2.6: the 2.25 run and the ramp are found (2), the 2.6
     run is computed (1). A new cable EA changes every run of the matrix and the ramp (the
     sample flown without parachute hangs on the same cable): 0 found, 3 computed."""
     import shutil
 
     cache = tmp_path / "cache"
     shutil.copytree(tiny[2], cache)
-    for edits, counts in (({"campaign area factors": "1.4, 1.6"}, (2, 1)),
+    for edits, counts in (({"campaign area factors": "2.25, 2.6"}, (2, 1)),
                           ({"campaign cable EA": 6e6}, (0, 3))):
         path = workbook(tmp_path / "edited.xlsx", edits)
         result = run_campaign(read_study(path).inputs.campaign.campaign,
@@ -264,8 +264,8 @@ def test_unknown_mass_case_in_listed_rows(tmp_path, capsys):
         runs = book.create_sheet("CampaignRuns")
         runs.append(["area factor [-]", "airspeed EAS [kt]", "mass case",
                      "density altitude [ft]", "cable length [ft]", "carrier", "manoeuvre"])
-        runs.append([1.4, 60, "maximum", 0, 60, "frozen", "free response"])
-        runs.append([1.4, 60, "heavy", 0, 60, "frozen", "free response"])
+        runs.append([2.25, 60, "maximum", 0, 60, "frozen", "free response"])
+        runs.append([2.25, 60, "heavy", 0, 60, "frozen", "free response"])
 
     _bad(tmp_path, capsys, {"campaign matrix": "listed rows"},
          ["sheet 'CampaignRuns', cell C3", "unknown mass case", "['maximum']", "heavy"],
@@ -362,11 +362,11 @@ def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsy
 
 def test_progress_bar_shows_runs_done_rate_and_time_left(tiny, tmp_path, capsys):
     """Without --quiet the campaign's bar (tqdm) counts the runs: it starts at the runs found
-    in the cache (area factors 1.4, 1.8 -> 1.4, 1.7 on the tiny campaign's cache: the 1.4 run
+    in the cache (area factors 2.25, 2.9 -> 2.25, 2.7 on the tiny campaign's cache: the 2.25 run
     and the ramp are found, 2 of 3) and ends at 3/3, with the rate (run/s) and the time left
     (tqdm's ``<`` remaining-time field) on the line."""
     _, _, cache = tiny
-    path = workbook(tmp_path / "bar.xlsx", {"campaign area factors": "1.4, 1.7"})
+    path = workbook(tmp_path / "bar.xlsx", {"campaign area factors": "2.25, 2.7"})
     assert main(["campaign", str(path), "--out", str(tmp_path / "out"), "--cache",
                  str(cache)]) == 0
     lines = [line for line in capsys.readouterr().err.replace("\r", "\n").splitlines()

@@ -64,17 +64,21 @@ def test_neutral_area_workbook_equals_api(study, result):
     d = items.position - cg
     inertia = float(np.sum(np.einsum("i,nij,j->n", k, items.inertia, k)
                            + items.mass * (np.sum(d * d, axis=1) - (d @ k) ** 2)))
+    # `slingloads chute` has no towed trim (no multibody, no loads): the suspension axis is
+    # the hub-CG line k, the body hanging at rest (no weight moment about the vertical)
     model = YawModel(fuselage, fin, frame.hardpoints, inertia, FlightCondition(80 * KNOT),
-                     Parachute(1.0))
+                     Parachute(1.0), axis=k)
     half = np.radians(15.0)                        # the example's linearisation range
     api = neutral_area(model, (-half, half))
     assert result.inputs.fit_range == pytest.approx((-half, half), rel=1e-12)
     assert result.inputs.model.yaw_inertia == pytest.approx(inertia, rel=1e-12)
     assert result.static.area == pytest.approx(api.area, rel=1e-9)
     assert result.static.area > 0
-    # the example's Study parachute area is 1.4 x the neutral area on the fitted slopes,
-    # rounded to 0.1 m^2
-    fit = neutral_area(model, (-half, half), basis="fit")
+    # the example's Study parachute area is 1.4 x the neutral area on the fitted slopes of the
+    # paper's balance of Mz (airframe z at alpha 0), rounded to 0.1 m^2
+    paper = YawModel(fuselage, fin, frame.hardpoints, inertia, FlightCondition(80 * KNOT),
+                     Parachute(1.0))
+    fit = neutral_area(paper, (-half, half), basis="fit")
     assert result.inputs.study_area == pytest.approx(round(1.4 * fit.area, 1), abs=1e-12)
     # its line length is the wake line rounded up to 0.1 m, and the 60 ft cable passes
     assert 0 <= result.inputs.study_line - result.line.line_length < 0.1 + 1e-12
@@ -91,14 +95,16 @@ def test_report_reads_back(run_dir, result):
     assert float(row[1]) == pytest.approx(result.static.area, rel=1e-12)
     assert row[2] == "m^2"
     rec = summary[summary[0] == "recommended area"].iloc[0]
-    assert float(rec[1]) == pytest.approx(1.4 * result.static.area, rel=1e-12)
+    assert float(rec[1]) == pytest.approx(result.sweep.smallest_stable_area, rel=1e-12)
+    axis = summary[summary[0] == "yaw axis"].iloc[0]
+    assert axis[1] == "'suspension'" and "hub-CG line" in axis[3]
     line = summary[summary[0] == "parachute line length (from the wake)"].iloc[0]
     assert float(line[1]) == pytest.approx(result.line.line_length, rel=1e-12)
     assert summary[summary[0] == "carrier cable check"].iloc[0][1] == "ok"
     # every run: a table sheet of its own (header in row 1, never repeated in the data)
     runs = pd.read_excel(run_dir / f"{STEM}-chute.xlsx", sheet_name="Sweep-EveryRun")
     api = result.sweep.to_frame()
-    assert len(runs) == len(api) == 30                # 6 areas x 5 gust shapes
+    assert len(runs) == len(api) == 55                # 11 areas x 5 gust shapes
     np.testing.assert_allclose(runs["peak beta [deg]"].astype(float), api["peak beta [deg]"],
                                rtol=1e-12)
     assert list(runs["verdict"]) == list(api["verdict"])
@@ -252,7 +258,7 @@ def test_very_stiff_adaptive_runs_are_refused_at_the_tolerance(tmp_path, capsys)
     name = "chute sizing yaw inertia"
     _bad(tmp_path, capsys, {("Study", "chute sizing yaw inertia source"): "parameter",
                             ("Study", name): 0.01}, "Study", "chute sizing reference rtol",
-         "too much work", "200,000 adaptive steps", "yaw inertia")
+         "too much work", "adaptive steps", "200,000 a run", "yaw inertia")
 
 
 def test_us_plots_convert_lengths_and_moments(result):

@@ -24,14 +24,27 @@ def results():
 
 
 def test_peak_sideslip_outside_the_envelope_is_a_warning(results):
-    """The example: at its Study 'parachute area' (0.9 m^2) the finite gust drives the
-    sideslip to about 17.7 deg, outside the loads' AeroEnvelope beta of +-15 deg: WARNING,
-    the value being the largest peak |beta| of the gust runs at that area."""
+    """The example: at its Study 'parachute area' (0.9 m^2, 3.1 x the neutral area about the
+    suspension axis) the gusts drive the sideslip to 12.5 deg at most (the step gust's wind
+    angle atan(9.144 / 41.16)), inside the loads' AeroEnvelope beta of +-15 deg: ok, the
+    value being the largest peak |beta| of the gust runs at that area. Against an envelope of
+    +-10 deg the same sizing is a WARNING naming the gust that gives the peak."""
     row = consistency_checks(results)["loads"].iloc[0]
     runs = results.chute_sizing.study_area_runs.to_frame()
     assert row["value"] == pytest.approx(runs["peak beta [deg]"].max(), rel=1e-12)
-    assert row["value"] > 15.0 and row["limit"] == pytest.approx(15.0)
-    assert row["status"] == "WARNING" and "finite gust" in row["note"]
+    assert row["value"] == pytest.approx(np.degrees(np.arctan2(30 * 0.3048, 80 * 0.514444)),
+                                         abs=0.05)
+    assert row["value"] < 15.0 and row["limit"] == pytest.approx(15.0)
+    assert row["status"] == "ok"
+    loads = results.loads
+    narrow = AeroEnvelope.corners_and_centre(np.radians([-10.0, 10.0]),
+                                             np.radians([-10.0, 10.0]))
+    narrower = replace(loads, study=replace(loads.study, envelope=narrow))
+    row = consistency_checks(Results(loads=narrower,
+                                     chute_sizing=results.chute_sizing))["loads"].iloc[0]
+    worst = str(runs["gust"].iloc[int(np.argmax(runs["peak beta [deg]"].to_numpy()))])
+    assert row["status"] == "WARNING" and row["limit"] == pytest.approx(10.0)
+    assert f"{worst} gust" in row["note"]
 
 
 def test_peak_sideslip_inside_a_wider_envelope_passes(results):
@@ -47,13 +60,15 @@ def test_peak_sideslip_inside_a_wider_envelope_passes(results):
 
 
 def test_run_report_carries_the_warning(example_run_report, example_loads_report):
-    """`slingloads run` with the loads and the sizing: the loads Summary shows the check and
-    the warning; `slingloads loads` alone has no such section."""
+    """`slingloads run` with the loads and the sizing: the loads Summary shows the check (on
+    the example inside the envelope: no warning); `slingloads loads` alone has no such
+    section."""
     summary = pd.read_excel(example_run_report / "example-light-twin-loads.xlsx",
                             sheet_name="Summary", header=None)
     text = " ".join(map(str, summary[0]))
     assert "Consistency with the other analyses of this run" in text
-    assert "WARNING: the parachute sizing's finite gust" in text
+    assert "parachute sizing peak sideslip within the loads' aerodynamic envelope" in text
+    assert "WARNING: the parachute sizing's" not in text
     alone = pd.read_excel(example_loads_report / "example-light-twin-loads.xlsx",
                           sheet_name="Summary", header=None)
     assert "Consistency" not in " ".join(map(str, alone[0]))

@@ -203,7 +203,7 @@ def test_readme_quotes_the_campaign_example(example_campaign_run_report):
     runs, factor, neutral, area, speed, verdict, limit, hc2 = _quoted(
         r"(\d+) runs, smallest stable and recommended area (\d+\.\d) x the neutral "
         r"(\d+\.\d+) m\^2 = (\d+\.\d+)\s+m\^2 \(at 1\.0 x the (\d+) KEAS gust response is "
-        r"(\w[\w ]*?):.*?speed limit (>= \d+ kt)\) and HC2 not even at\s+\d+ kt \(a ([\w ]+) of",
+        r"(\w[\w ()]*?):.*?speed limit (>= \d+ kt)\) and HC2 not even at\s+\d+ kt \(a ([\w ]+) of",
         "README.md")
     assert int(runs) == items["runs in the matrix"]
     assert _agrees(neutral, items["neutral static area (1-DOF sizing)"])

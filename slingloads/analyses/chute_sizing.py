@@ -18,6 +18,7 @@ positive; beta positive wind from the right; stable means dN/dbeta > 0.
 
 from __future__ import annotations
 
+import contextlib
 import math
 from dataclasses import dataclass, field, replace
 
@@ -270,6 +271,7 @@ class LinearYaw:
     parts: dict
     tas: float
     beta_trim: float = 0.0
+    weight_stiffness: float = 0.0
 
     @property
     def natural_frequency(self):
@@ -340,11 +342,15 @@ class LinearYaw:
         dpsi : ndarray
             [rad/s]
         drate : ndarray
-            (k (gamma - psi - beta_trim) - c r) / I. [rad/s^2]
+            ((k - k_w) (gamma - psi - beta_trim) - k_w (psi + beta_trim) - c r) / I, k_w
+            the weight's part of the stiffness (it turns with psi, not with the gust).
+            [rad/s^2]
         outside : ndarray of bool
             All False (no table to leave).
         """
-        acc = (self.stiffness * (gamma - psi - self.beta_trim) - self.damping * rate) / self.inertia
+        aero, weight = self.stiffness - self.weight_stiffness, self.weight_stiffness
+        acc = (aero * (gamma - psi - self.beta_trim) - weight * (psi + self.beta_trim)
+               - self.damping * rate) / self.inertia
         return rate, acc, np.zeros(np.shape(acc), dtype=bool)
 
 
@@ -397,9 +403,13 @@ def linear_yaw(model, area, fit_range=FIT_RANGE, basis="fit"):
         parts["parachute"] = (q * cd * area * dx, 0.5 * rho * v * cd * area * dx**2)
     elif area > 0:
         raise InputError("a parachute area was given but the model has no parachute", area)
+    weight = -model.weight_terms[1]  # N_w ~ W_c + W_s psi, psi = -beta at rest
+    if weight != 0.0:
+        parts["weight"] = (weight, 0.0)
     stiffness = sum(p[0] for p in parts.values())
     damping = sum(p[1] for p in parts.values())
-    return LinearYaw(model.yaw_inertia, stiffness, damping, parts, v)
+    return LinearYaw(model.yaw_inertia, stiffness, damping, parts, v,
+                     weight_stiffness=weight)
 
 
 # ---------------------------------------------------------------------- neutral area
@@ -577,7 +587,10 @@ def neutral_area(model, fit_range=FIT_RANGE, beta_plot=None, basis="larger"):
     if model.fin is not None:
         moments["fin"] = n_fin
     moments["parachute"] = n_chute
-    moments["total"] = n_fus + n_fin + n_chute
+    n_weight = model.weight_moment(-beta_plot)  # at rest psi = -beta
+    if model.weight_terms != (0.0, 0.0):
+        moments["weight"] = n_weight
+    moments["total"] = n_fus + n_fin + n_chute + n_weight
     return NeutralAreaResult(float(area), derivs, float(per_area),
                              model.condition.dynamic_pressure, float(dx), beta_plot, moments,
                              yaw_linearisation(model, fit_range), float(areas["fit"]),
@@ -995,12 +1008,44 @@ def run_yaw(model, areas, gusts, settings=None, fit_range=FIT_RANGE, metrics=Non
     runs = max(areas.size, len(gust_list))
     areas = np.broadcast_to(areas, (runs,)).copy() if areas.size == 1 else areas
     gust_list = gust_list * runs if len(gust_list) == 1 else gust_list
-    # Trim: the static equilibrium nearest beta = 0 (per distinct area).
+    # Trim: the static equilibrium nearest beta = 0 (per distinct area); each run is judged
+    # about the equilibrium under the gust it ends in (a held gust moves it when the weight
+    # has a moment about the axis; the same as at rest otherwise).
     distinct, back = np.unique(areas, return_inverse=True)
-    beta_trim = model.trim_betas(distinct)[back]
+    untrimmed = {}  # area -> why it has no static equilibrium (judged about beta 0)
+    try:
+        beta_trim = model.trim_betas(distinct)[back]
+    except InputError as err:
+        if err.field != "trim":
+            raise
+        found = np.zeros(distinct.size)
+        for i, a in enumerate(distinct):
+            try:
+                found[i] = model.trim_betas([a])[0]
+            except InputError as one:
+                # without a restoring stiffness (at or below the neutral area) there need be
+                # no equilibrium: a finding, run from beta 0; with one, the moment's offset
+                # is the input's (e.g. a hub off the plane of symmetry): refused
+                lin = linear_yaw(model, float(a), fit_range, "local")
+                scale = sum(abs(k) for k, _ in lin.parts.values())
+                if lin.stiffness > 1e-6 * scale:
+                    raise
+                untrimmed[float(a)] = str(one.args[0] if one.args else one)
+        beta_trim = found[back]
+    reference = beta_trim.copy()
+    if hasattr(model, "weight_terms") and model.weight_terms != (0.0, 0.0):
+        for j, g in enumerate(gust_list):
+            held = float(g.velocity(np.array([settings.t_end]))[0]) if g.end is not None else 0.0
+            if held != 0.0 and float(areas[j]) not in untrimmed:
+                with contextlib.suppress(InputError):  # none under the gust: judged at rest
+                    reference[j] = model.trim_betas([areas[j]], gust=held)[0]
     run = INTEGRATORS[integrator]
     hist = run(model, areas, gust_list, psi0=-beta_trim, rate0=0.0, settings=settings)
-    frame = _run_metrics(model, areas, gust_list, hist, beta_trim[:, None], fit_range, metrics)
+    frame = _run_metrics(model, areas, gust_list, hist, reference[:, None], fit_range, metrics)
+    for j, a in enumerate(areas):
+        if float(a) in untrimmed:
+            frame.loc[j, "verdict reason"] = (f"{untrimmed[float(a)]}: started and judged about "
+                                              f"beta 0; {frame.loc[j, 'verdict reason']}")
     return YawRuns(areas, gust_list, hist, frame, float(np.max(np.abs(beta_trim))), settings)
 
 

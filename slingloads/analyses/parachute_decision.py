@@ -67,6 +67,15 @@ class ParachuteDecision:
         The condition that governs the chosen area.
     study_area : float
         The Study's 'parachute area' (the loads' parachute). [m^2]
+    yaw_axis : str
+        The axis of the 1-DOF model's moments, inertia and weight, in words.
+    multibody_at_one_dof : str
+        Verdict over the campaign's runs at the 1-DOF proposal (the campaign runs it when
+        the sizing runs too).
+    damping : str
+        The yaw damping ratios of both models at the chosen area (the 1-DOF proposal when no
+        area is chosen) and the 1-DOF model's airspeed, compared within
+        :data:`DAMPING_TOLERANCE`, or why not.
     """
 
     neutral_area_fit: float
@@ -84,6 +93,9 @@ class ParachuteDecision:
     reason: str = ""
     governing: str = ""
     study_area: float = math.nan
+    yaw_axis: str = ""
+    multibody_at_one_dof: str = "not run"
+    damping: str = ""
 
     @property
     def found(self):
@@ -121,6 +133,8 @@ class ParachuteDecision:
             ("neutral area, least-squares slopes", self.neutral_area_fit, "m^2", ""),
             ("neutral area, local slopes at beta 0", self.neutral_area_local, "m^2", ""),
             ("neutral area used", self.neutral_area, "m^2", self.neutral_basis),
+            ("1-DOF yaw axis", self.yaw_axis or "-", "",
+             "yawing moments, yaw inertia and weight all about it"),
             ("1-DOF: smallest area stable under every gust", self.one_dof_area, "m^2",
              "not run" if not self.one_dof_ran else
              ("none in the sweep" if not np.isfinite(self.one_dof_area) else "")),
@@ -134,6 +148,9 @@ class ParachuteDecision:
             ("governing condition", self.governing or "-", "", ""),
             ("1-DOF verdict at the chosen area, per gust", one, "", ""),
             ("multibody verdict at the chosen area", self.multibody_verdict, "", ""),
+            ("multibody verdict at the 1-DOF area", self.multibody_at_one_dof, "",
+             "the campaign's runs at the 1-DOF proposal"),
+            ("yaw damping ratio, 1-DOF against multibody", self.damping or "-", "", ""),
             ("Study 'parachute area' (loads)", self.study_area, "m^2",
              self.study_area_verdict()),
         ]
@@ -198,8 +215,60 @@ def multibody_verdict_at(metrics, area, stable):
     return f"NOT stable: {total - ok} of {total} runs (worst response: {worst(list(verdicts))})"
 
 
+#: Largest difference between the 1-DOF and the multibody yaw damping ratios at one area and
+#: airspeed read as agreement. [-]
+DAMPING_TOLERANCE = 0.05
+
+
+def damping_comparison(runs, metrics, area, airspeed):
+    """The 1-DOF and multibody yaw damping ratios at one parachute area and airspeed, side
+    by side, within :data:`DAMPING_TOLERANCE` or with why they differ.
+
+    Parameters
+    ----------
+    runs : pandas.DataFrame or None
+        The 1-DOF runs at ``area`` (column ``damping ratio linear [-]``: its linear yaw mode,
+        local slopes).
+    metrics : pandas.DataFrame or None
+        The campaign's metrics (``area [m^2]``, ``airspeed EAS [m/s]``,
+        ``yaw mode damping ratio [-]``, ``yaw mode``).
+    area : float
+        [m^2]
+    airspeed : float
+        The 1-DOF model's equivalent airspeed. [m/s]
+
+    Returns
+    -------
+    str
+    """
+    from slingloads.constants import KNOT
+
+    if runs is None or not np.isfinite(area) or "damping ratio linear [-]" not in runs:
+        return "no 1-DOF run at the chosen area"
+    z1 = float(np.nanmin(runs["damping ratio linear [-]"].to_numpy(float)))
+    where = f"{area:.4g} m^2, {airspeed / KNOT:.0f} KEAS"
+    one = f"1-DOF {z1:.3g} (its yaw mode, hub fixed)"
+    if metrics is None or "yaw mode damping ratio [-]" not in metrics:
+        return f"at {where}: {one}; no campaign run to compare"
+    at = (np.isclose(metrics["area [m^2]"].to_numpy(float), area, rtol=1e-6)
+          & np.isclose(metrics["airspeed EAS [m/s]"].to_numpy(float), airspeed, rtol=1e-6))
+    zetas = metrics.loc[at, "yaw mode damping ratio [-]"].to_numpy(float)
+    if not np.isfinite(zetas).any():
+        return f"at {where}: {one}; no campaign run at this area and airspeed to compare"
+    k = int(np.nanargmin(zetas))
+    z2 = float(zetas[k])
+    mode = str(metrics.loc[at, "yaw mode"].iloc[k]) if "yaw mode" in metrics else "yaw mode"
+    text = (f"at {where}: {one}, multibody {z2:.3g} (least over {int(np.isfinite(zetas).sum())}"
+            f" runs, mode {mode}); difference {z1 - z2:+.3g}")
+    if abs(z1 - z2) <= DAMPING_TOLERANCE:
+        return f"{text}: agree within {DAMPING_TOLERANCE:g}"
+    return (f"{text}: differ by more than {DAMPING_TOLERANCE:g}: the multibody yaw mode "
+            "couples with the swing of the cable and the attitude, and its hub moves (the "
+            "inter-axis coupling the 1-DOF model lacks, paper 4.5)")
+
+
 def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_dof=None,
-           study_area=math.nan):
+           study_area=math.nan, yaw_axis="", airspeed=math.nan):
     """The parachute decision (module notes).
 
     Parameters
@@ -218,6 +287,10 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
         area (every gust shape), used for the verdicts at the chosen area.
     study_area : float
         [m^2]
+    yaw_axis : str
+        The 1-DOF model's axis in words.
+    airspeed : float
+        The 1-DOF model's equivalent airspeed (the damping comparison's). [m/s]
 
     Returns
     -------
@@ -266,20 +339,27 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
     elif ran2:
         chosen, model, governing = a2, MULTIBODY, gov2
         reason = "the only model run (no 1-DOF sweep)"
-    verdicts = {}
+    verdicts, runs = {}, None
     if one_dof is not None and np.isfinite(chosen):
         runs = one_dof(chosen)
         verdicts = dict(zip(runs["gust"].astype(str), runs["verdict"].astype(str),
                             strict=True))
-    mb = "not run"
+    mb = mb1 = "not run"
     if ran2:
-        mb = multibody_verdict_at(metrics, chosen, np.asarray(stable, bool)
-                                  if stable is not None else None)
+        flags = np.asarray(stable, bool) if stable is not None else None
+        mb = multibody_verdict_at(metrics, chosen, flags)
+        mb1 = multibody_verdict_at(metrics, a1, flags) if ran1 else "no 1-DOF sweep"
+    damping = ""
+    if np.isfinite(airspeed):  # at the chosen area, else at the 1-DOF proposal
+        compared = chosen if np.isfinite(chosen) else a1
+        if not np.isfinite(chosen) and np.isfinite(a1) and one_dof is not None:
+            runs = one_dof(a1)
+        damping = damping_comparison(runs, metrics if ran2 else None, compared, airspeed)
     return ParachuteDecision(
         float(static.area_fit), float(static.area_local), float(static.area),
         static.basis_text, float(a1), ran1, verdicts, float(a2), ran2, mb, float(chosen),
-        model, reason, governing, float(study_area))
+        model, reason, governing, float(study_area), str(yaw_axis), mb1, damping)
 
 
-__all__ = ["MULTIBODY", "ONE_DOF", "ParachuteDecision", "decide", "multibody_verdict_at",
-           "one_dof_proposal"]
+__all__ = ["DAMPING_TOLERANCE", "MULTIBODY", "ONE_DOF", "ParachuteDecision",
+           "damping_comparison", "decide", "multibody_verdict_at", "one_dof_proposal"]

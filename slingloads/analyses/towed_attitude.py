@@ -10,10 +10,10 @@ the analyses call for it:
 
 * the loads' towed-flight cases (hook id ``TOW``) take the trimmed attitude (earth vertical,
   angle of attack and sideslip) at the loads' airspeed, with and without parachute;
-* the one-degree yaw sizing takes the trimmed angle of attack at its airspeed (its suspension
-  axis, the line from the hub to the hook, is :attr:`TowedAttitude.axis`, which
-  :class:`~slingloads.models.yaw_dynamics.YawModel` can take as ``axis``; the sizing does not
-  yet yaw about it);
+* the one-degree yaw sizing and the campaign's 1-DOF checks take the trimmed angle of attack
+  at their airspeed and yaw about the suspension axis, the line from the hook through the hub
+  (:attr:`TowedAttitude.axis`), with the yaw inertia and the weight's moment about that same
+  line (:func:`yaw_model_about`);
 * the multibody analysis reports the same trim at its airspeed.
 
 When the study has no multibody system, :func:`towed_system` assembles one from the loads'
@@ -41,7 +41,9 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.multibody.trim import trim
+from slingloads.constants import G0
 from slingloads.errors import InputError
+from slingloads.models.airframe import hanging_yaw_inertia
 from slingloads.models.attitude import Attitude
 from slingloads.models.multibody.cable import Cable
 from slingloads.models.multibody.local_flow import LiftingSurface
@@ -274,3 +276,79 @@ def towed_system(airframe, fuselage, fin=None, parachute=None, airspeed=0.0,
                          airspeed=float(airspeed), density_altitude=float(density_altitude),
                          name="towed trim")
     return system, tuple(notes)
+
+
+#: Axes of the 1-DOF yaw model (:func:`yaw_model_about`): the suspension axis (default), or
+#: airframe z through the hub (the paper's balance of Mz, section 4.1).
+YAW_AXES = ("suspension", "airframe z")
+
+
+def yaw_model_about(model, axis="suspension", towed=None, body=None, inertia=None):
+    """The 1-DOF yaw model with its moments, inertia and weight about one axis through the hub.
+
+    * ``"suspension"``: the line from the hook through the hub. At a converged towed trim it
+      is :attr:`TowedAttitude.axis` (the cable's line), the model flies the trim's angle of
+      attack, and the weight ``-m g`` times the trim's vertical adds its moment about that
+      line (:class:`~slingloads.models.yaw_dynamics.YawModel`, ``weight``); without a trim it
+      is the hub-CG line, the vertical of the body hanging at rest (no weight moment about
+      it), at the model's own angle of attack.
+    * ``"airframe z"``: airframe z through the hub, aerodynamic moments alone (the paper's
+      balance of Mz, section 4.1), at the trim's angle of attack when there is one.
+
+    Parameters
+    ----------
+    model : YawModel
+        Fuselage, fin, hardpoints, parachute and condition (its axis, weight and, with
+        ``body``, inertia are replaced).
+    axis : {"suspension", "airframe z"}
+    towed : TowedAttitude, optional
+        The towed trim at the model's airspeed.
+    body : RigidBody, optional
+        Mass, CG and inertia about the CG; the yaw inertia is taken about the axis from it
+        (:func:`~slingloads.models.airframe.hanging_yaw_inertia`) unless ``inertia`` is given.
+        Without it, the suspension axis needs a trim and the weight is left out.
+    inertia : float, optional
+        A yaw inertia given by the user, taken as about the axis. [kg m^2]
+
+    Returns
+    -------
+    model : YawModel
+    text : str
+        The axis in words, for the reports.
+    """
+    from dataclasses import replace
+
+    if axis not in YAW_AXES:
+        raise InputError(f"{axis=!r} is not a valid yaw axis. Valid options are: "
+                         f"{', '.join(map(repr, YAW_AXES))}", axis, field="yaw axis")
+    trimmed = towed is not None and towed.converged
+    condition = model.condition
+    if trimmed:
+        condition = replace(condition, alpha=towed.alpha)
+    hub = np.asarray(model.hardpoints.hub, float)
+    weight = cg = None
+    if axis == "airframe z":
+        a = np.array([0.0, 0.0, 1.0])
+        text = "airframe z through the hub (the paper's balance of Mz; weight left out)"
+    elif trimmed:
+        a = np.asarray(towed.axis, float)
+        tilt = np.degrees(np.arccos(np.clip(a[2], -1.0, 1.0)))
+        text = (f"suspension axis at the towed trim: the cable's line through the hub, "
+                f"{tilt:.3g} deg from airframe z")
+        if body is not None:
+            weight, cg = -body.mass * G0 * np.asarray(towed.vertical, float), body.cg
+            text += ", weight included"
+    elif body is not None:
+        d = hub - np.asarray(body.cg, float)
+        a = d / np.linalg.norm(d)
+        tilt = np.degrees(np.arccos(np.clip(a[2], -1.0, 1.0)))
+        text = (f"suspension axis hanging at rest: the hub-CG line, {tilt:.3g} deg from "
+                "airframe z (no towed trim)")
+    else:
+        a = np.array([0.0, 0.0, 1.0])
+        text = "airframe z through the hub (no towed trim and no mass items for the hub-CG line)"
+    if inertia is None:
+        inertia = (model.yaw_inertia if body is None else
+                   hanging_yaw_inertia(body.inertia, body.cg, hub, a, body.mass))
+    return replace(model, condition=condition, axis=a, weight=weight, cg=cg,
+                   yaw_inertia=float(inertia)), text

@@ -43,7 +43,7 @@ import numpy as np
 
 from slingloads.models.dormand_prince import LEFT, OVER_BUDGET, SAMPLE, integrator
 from slingloads.models.runge_kutta import rk4_stepper
-from slingloads.models.yaw_moments import INERTIA, TAS, make_yaw_moments
+from slingloads.models.yaw_moments import INERTIA, TAS, make_yaw_moments, weight_moment
 
 _jit = numba.njit(cache=True, fastmath=False, nogil=True)
 _inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
@@ -105,6 +105,7 @@ def _lookup(x, xp, fp, slope, lo, k):
 
 # the moments, compiled from their one source in slingloads.models.yaw_dynamics
 _moments = _inline_jit(make_yaw_moments(_lookup))
+_weight = _inline_jit(weight_moment)
 
 
 @_jit
@@ -137,7 +138,7 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_
     """
     n_fus, n_fin, n_chute, inside = _moments(gamma - psi, rate, v_rel, area, M, fus_x, fus_n,
                                              fus_s, fin_x, fin_k, fin_s, lo)
-    return (n_fus + n_fin + n_chute) / M[INERTIA], not inside
+    return (n_fus + n_fin + n_chute + _weight(psi, M)) / M[INERTIA], not inside
 
 
 @_inline_jit

@@ -7,9 +7,13 @@ The helicopter hangs from its rotor hub; the suspension axis is the line through
 only freedom is the yaw angle psi about that axis (the hub does not move, the airframe stays at
 the trim angle of attack). Moments and inertia are both taken about it: a point r from the hub
 has the arms ``dx = (a x r)_y``, ``dy = -(a x r)_x`` (a the unit axis; ``dx = r_x, dy = r_y``
-for a = z), and a moment vector M contributes ``-a . M`` (nose right positive). The sideslip
-is taken to change one for one with psi (exact for a = z; about a tilted axis the rate is the
-tilt's cosine, which scales the stiffness but not the neutral area, where it is zero).
+for a = z), and a moment vector M contributes ``-a . M`` (nose right positive): the fuselage's
+``-a . M = q S L (a_x Cl + a_z Cn)`` in body-axes coefficients, plus its force's transfer. The
+sideslip is taken to change one for one with psi: yawing by psi turns the airflow d about a,
+so that exactly ``dbeta/dpsi = -(a x d)_y``, the sine of the angle between the axis and the
+airflow (cos(alpha) for a = z; 0.997 at the example's towed trim, whose cable line is nearly
+normal to the flow); the factor scales every aerodynamic stiffness alike and leaves the neutral
+area, where the total is zero, unchanged.
 Conventions, as in :mod:`slingloads.models.aerodynamics`: airframe axes x aft, y right, z
 up; psi and the yawing moment N positive **nose right** (a negative rotation about +a, so
 N = -M_z for a = z); sideslip beta positive with the wind from the right; directionally
@@ -36,7 +40,18 @@ Moments about the suspension axis:
   ``F = 1/2 rho eta_w CD A |u| u``, ``N_chute = -(dx_c F_y - dy_c F_x)``. Its dependence on r
   through u gives the drogue's damping as well as its stiffness.
 
-Equation of motion ``I psi'' = N_fus + N_fin + N_chute``, state ``(psi, r)``.
+* weight (when given, :attr:`YawModel.weight`): yawing the body by psi turns the weight W,
+  fixed in the earth, about the axis in airframe axes, ``W(psi) = W_par + W_perp cos(psi) +
+  (a x W) sin(psi)``, so that with r_g the CG from the hub
+  ``-a . (r_g x W(psi)) = W_c cos(psi) + W_s sin(psi)``, ``W_c = -(a x r_g) . W``,
+  ``W_s = -(a x r_g) . (a x W)``. The moment at psi = 0, ``W_c``, belongs to the trim (the
+  towed trim balances it with the aerodynamic and parachute moments at its own sideslip; zero
+  for a symmetric body), so the model takes its change, ``N_w = W_c (cos(psi) - 1) +
+  W_s sin(psi)``: zero about the vertical through the hub (the hanging body at rest), a
+  stiffness ``-W_s = (r_g)_perp . W_perp`` about a tilted axis (the towed trim's cable line,
+  a few degrees from the vertical).
+
+Equation of motion ``I psi'' = N_fus + N_fin + N_chute + N_w``, state ``(psi, r)``.
 
 Linearised about beta = 0, r = 0 (symmetric tables, dy = 0) the parachute contributes the
 stiffness ``dN/dbeta = q eta_w CD A dx_c`` and the damping ``-dN/dr = 1/2 rho V eta_w CD A
@@ -105,8 +120,11 @@ from slingloads.models.yaw_moments import (  # noqa: F401 (the model row, re-exp
     LAYOUT,
     N_MODEL,
     TAS,
+    WEIGHT_C,
+    WEIGHT_S,
     _numpy_moments,
     make_yaw_moments,
+    weight_moment,
 )
 
 #: Defaults of the yaw runs: 120 s at a 0.05 s RK4 step, stored every 0.1 s. [s]
@@ -133,6 +151,20 @@ def _arms(axis, r):
     gives the moment a . (r x F) = dx F_y - dy F_x (module notes). [m]"""
     c = np.cross(axis, np.asarray(r, float))
     return float(c[1]), float(-c[0])
+
+def _weight_terms(axis, weight, cg, hub):
+    """(W_c, W_s) of the weight's moment about the suspension axis (module notes). [N m]"""
+    if weight is None and cg is None:
+        return 0.0, 0.0
+    if weight is None or cg is None:
+        raise InputError("the yaw model's weight needs both the weight vector and the CG")
+    w = np.asarray(weight, dtype=float).reshape(-1)
+    r = np.asarray(cg, dtype=float).reshape(-1) - hub
+    if w.size != 3 or r.size != 3 or not (np.all(np.isfinite(w)) and np.all(np.isfinite(r))):
+        raise InputError("the yaw model's weight and CG must be finite 3-vectors [N], [m]")
+    c = np.cross(axis, r)
+    return float(-c @ w), float(-c @ np.cross(axis, w))
+
 
 def relative_wind(tas, gust):
     """Wind angle and relative speed of a lateral gust on a flight at true airspeed ``tas``:
@@ -185,6 +217,12 @@ class YawModel:
         up (z component > 0); normalised. None is airframe z. ``yaw_inertia`` must be about
         the same line (:func:`slingloads.models.airframe.hanging_yaw_inertia` with ``axis``).
         [-]
+    weight : array_like, shape (3,), optional
+        The weight vector at psi = 0 in airframe axes (m g times the earth's downward vertical
+        at the trim); with ``cg``. None leaves the weight out (the paper's balance of the
+        aerodynamic moments alone; exact when the axis is vertical). [N]
+    cg : array_like, shape (3,), optional
+        Centre of gravity, airframe axes (with ``weight``). [m]
     """
 
     fuselage: FuselageAero | None
@@ -196,6 +234,8 @@ class YawModel:
     parachute: Parachute | None = None
     fin_rate_damping: bool = True
     axis: np.ndarray | None = None
+    weight: np.ndarray | None = None
+    cg: np.ndarray | None = None
 
     def __post_init__(self):
         inertia = float(self.yaw_inertia)
@@ -233,12 +273,36 @@ class YawModel:
             dx, dy = _arms(axis, self.hardpoints.chute - hub)
             cd = float(self.parachute.effective_coefficient(0.0))
             object.__setattr__(self, "_chute", (cd, dx, dy))
+        object.__setattr__(self, "_weight", _weight_terms(axis, self.weight, self.cg, hub))
 
     # ----------------------------------------------------------------------------- helpers
     @property
     def axis_tilt(self):
         """Angle between the suspension axis and airframe z. [rad]"""
         return float(np.arccos(np.clip(self.axis[2], -1.0, 1.0)))
+
+    @property
+    def weight_terms(self):
+        """(W_c, W_s) of the weight's yawing moment about the suspension axis,
+        ``W_c cos(psi) + W_s sin(psi)``; the model takes its change from psi = 0,
+        :meth:`weight_moment` (module notes; (0, 0) without a weight). [N m]"""
+        return self._weight
+
+    def weight_moment(self, psi):
+        """The change of the weight's yawing moment about the suspension axis from psi = 0,
+        nose right positive (module notes).
+
+        Parameters
+        ----------
+        psi : array_like
+            Yaw, nose right positive. [rad]
+
+        Returns
+        -------
+        ndarray
+            [N m]
+        """
+        return weight_moment(np.asarray(psi, dtype=float), self._arrays[0])
 
     @property
     def chute_arm(self):
@@ -355,6 +419,7 @@ class YawModel:
         row = np.zeros(N_MODEL)
         row[HALF_RHO], row[INERTIA] = self._half_rho, self.yaw_inertia
         row[TAS] = self._tas
+        row[WEIGHT_C], row[WEIGHT_S] = self._weight
         none = np.zeros(2)
         fus_x = fus_n = fin_x = fin_k = none
         if self.fuselage is not None:
@@ -394,7 +459,8 @@ class YawModel:
             Where a table was read outside its range.
         """
         n_fus, n_fin, n_chute, outside = self.moments(gamma - psi, rate, v_rel, area)
-        return rate, (n_fus + n_fin + n_chute) / self.yaw_inertia, outside
+        n_weight = self.weight_moment(psi)
+        return rate, (n_fus + n_fin + n_chute + n_weight) / self.yaw_inertia, outside
 
     def static_moments(self, beta, area=0.0):
         """Moments at rest (r = 0, no gust) against sideslip.
@@ -448,9 +514,9 @@ class YawModel:
         """
         return float(self.trim_betas([area], search)[0])
 
-    def trim_betas(self, areas, search=TRIM_SEARCH):
+    def trim_betas(self, areas, search=TRIM_SEARCH, gust=0.0):
         """:meth:`trim_beta` of several parachute areas at once (the moments on one
-        sideslip grid, the parachute's scaled by each area).
+        sideslip grid, the parachute's scaled by each area), at rest or under a held gust.
 
         Parameters
         ----------
@@ -458,6 +524,11 @@ class YawModel:
             Parachute flat-plate areas. [m^2]
         search : float
             Half-width of the sideslip interval searched. [rad]
+        gust : float
+            A held lateral gust (0: at rest). Under it the aerodynamic moments scale with the
+            relative speed squared and keep their zeros; the weight's moment, which turns with
+            the heading psi = gamma - beta and not with the wind, moves the equilibrium
+            (none without a weight). [m/s]
 
         Returns
         -------
@@ -467,11 +538,13 @@ class YawModel:
         areas = np.atleast_1d(np.asarray(areas, dtype=float))
         lo, hi = self.beta_range()
         grid = np.linspace(max(lo, -search), min(hi, search), 801)
-        n_fus, n_fin, _ = self.static_moments(grid, 0.0)
-        unit = self.static_moments(grid, 1.0)[2] if self.parachute is not None else 0.0
+        gamma, v_rel = (float(x) for x in self.relative_wind(float(gust)))
+        n_fus, n_fin, _, _ = self.moments(grid, 0.0, v_rel, 0.0)
+        unit = (self.moments(grid, 0.0, v_rel, 1.0)[2] if self.parachute is not None
+                else 0.0)
         if self.parachute is None and np.any(areas != 0):
             self.static_moments(grid, areas[areas != 0][0])  # refuses the area
-        total = (0 + n_fus + n_fin) + areas[:, None] * unit
+        total = (0 + n_fus + n_fin + self.weight_moment(gamma - grid)) + areas[:, None] * unit
         total = np.broadcast_to(total, (areas.size, grid.size))
         b0, b1, n0, n1 = grid[:-1], grid[1:], total[:, :-1], total[:, 1:]
         change = np.sign(n0) != np.sign(n1)

@@ -27,6 +27,8 @@ LAYOUT = Layout((
     Field("fus_lo", "rad", "lower end of the fuselage table"),
     Field("fus_hi", "rad", "upper end of the fuselage table"),
     Field("tas", "m/s", "true airspeed"),
+    Field("weight_c", "N m", "weight's moment about the suspension axis at psi = 0 (the trim's)"),
+    Field("weight_s", "N m", "weight's moment about the suspension axis, sin(psi) term"),
 ))
 HALF_RHO, INERTIA = LAYOUT["half_rho"], LAYOUT["inertia"]
 HAS_FUS, HAS_FIN, FIN_LOCAL = LAYOUT["has_fus"], LAYOUT["has_fin"], LAYOUT["fin_local"]
@@ -35,6 +37,7 @@ FIN_DX, FIN_DY, FIN_LO, FIN_HI = (LAYOUT["fin_dx"], LAYOUT["fin_dy"], LAYOUT["fi
                                   LAYOUT["fin_hi"])
 CHUTE_CD, CHUTE_DX, CHUTE_DY = LAYOUT["chute_cd"], LAYOUT["chute_dx"], LAYOUT["chute_dy"]
 FUS_LO, FUS_HI, TAS = LAYOUT["fus_lo"], LAYOUT["fus_hi"], LAYOUT["tas"]
+WEIGHT_C, WEIGHT_S = LAYOUT["weight_c"], LAYOUT["weight_s"]
 #: Length of a model row.
 N_MODEL = len(LAYOUT)
 
@@ -96,6 +99,27 @@ def make_yaw_moments(lookup):
         return n_fus, n_fin, n_chute, inside
 
     return moments
+
+
+def weight_moment(psi, M):
+    """The change of the weight's yawing moment about the suspension axis from psi = 0 (nose
+    right positive), ``W_c (cos(psi) - 1) + W_s sin(psi)`` with the model row's ``weight_c``
+    and ``weight_s`` (:class:`slingloads.models.yaw_dynamics.YawModel`): the moment at psi = 0
+    belongs to the trim. Elementwise, for numpy and compiled code.
+
+    Parameters
+    ----------
+    psi : float or ndarray
+        Yaw, nose right positive. [rad]
+    M : ndarray, shape (N_MODEL,)
+        The model row (:data:`LAYOUT`).
+
+    Returns
+    -------
+    float or ndarray
+        [N m]
+    """
+    return M[WEIGHT_C] * (np.cos(psi) - 1.0) + M[WEIGHT_S] * np.sin(psi)
 
 
 def _numpy_lookup(x, xp, fp, slope, lo, k):

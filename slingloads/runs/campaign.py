@@ -49,11 +49,15 @@ class CampaignReport:
     result : CampaignResult
     cache : str
         Where the run cache is.
+    sizing_factor : float or None
+        The area factor added to the matrix from the 1-DOF sizing's proposed area (None: none
+        added). [-]
     """
 
     inputs: CampaignInputs
     result: object
     cache: str
+    sizing_factor: float | None = None
 
     def to_frame(self):
         """Every run of the campaign, one row each: its factors, then its metrics (units in
@@ -93,7 +97,7 @@ def run(study):
     scheduler = options.scheduler or inputs.scheduler
     workers = options.workers or inputs.workers
     timeout = options.timeout or inputs.timeout
-    campaign = inputs.campaign
+    campaign, added = _with_sizing_area(study, inputs.campaign)
     total = campaign.size + (len(campaign.no_parachute.jobs()) if campaign.no_parachute else 0)
     with study.located(ANALYSIS):
         store = RunCache(cache_dir)
@@ -109,7 +113,36 @@ def run(study):
     study.source.warnings.extend([*executor_warnings, *store.warnings])
     if result.decision is not None:  # the sizing, run after, decides with both models
         study.results.parachute_decision = result.decision
-    return CampaignReport(inputs, result, str(cache_dir))
+    if added is not None:
+        from dataclasses import replace
+
+        inputs = replace(inputs, campaign=campaign)
+    return CampaignReport(inputs, result, str(cache_dir), added)
+
+
+def _with_sizing_area(study, campaign):
+    """The campaign with the 1-DOF sizing's proposed area among its area factors, when the
+    study runs the sizing too (the sizing's sweep is computed first, and kept for it), so that
+    the parachute decision has a multibody verdict at that area; and the factor added (None
+    when the study has no sizing, the sizing proposes no area, the factor is already in the
+    matrix, or the matrix is listed row by row)."""
+    from dataclasses import replace
+
+    import numpy as np
+
+    from slingloads.runs.chute_sizing import sizing_sweep_of
+
+    if getattr(study.inputs, "chute_sizing", None) is None or campaign.rows is not None:
+        return campaign, None
+    area = sizing_sweep_of(study).proposed_area
+    if not (math.isfinite(area) and area > 0):
+        return campaign, None
+    factor = area / campaign.neutral.area
+    factors = tuple(float(f) for f in campaign.factors.area_factors)
+    if np.any(np.isclose(factors, factor, rtol=1e-9)):
+        return campaign, None
+    grown = replace(campaign.factors, area_factors=tuple(sorted((*factors, factor))))
+    return replace(campaign, factors=grown), factor
 
 
 def shortfalls(report):

@@ -56,6 +56,9 @@ class ChuteSizingInputs:
         The Study's 'parachute area' (used by the loads; 0 if none). [m^2]
     study_line : float
         The Study's 'parachute line length'. [m]
+    yaw_axis : str
+        The axis of the yaw model's moments, inertia and weight
+        (:data:`slingloads.analyses.towed_attitude.YAW_AXES`).
     """
 
     model: YawModel
@@ -73,6 +76,7 @@ class ChuteSizingInputs:
     inertia_source: str
     study_area: float
     study_line: float
+    yaw_axis: str = "suspension"
 
 
 @dataclass(frozen=True)
@@ -95,9 +99,13 @@ class ChuteSizingReport:
         The parachute decision (:mod:`slingloads.analyses.parachute_decision`), with the
         campaign's selection when the campaign ran in the same study.
     axes_angle : float
-        Angle between the axis the yawing moments are taken about (airframe z through the
-        hub) and the axis of the yaw inertia (the hub-CG line, the hanging vertical); NaN
-        without mass items. [rad]
+        Angle between the yaw model's axis (moments, inertia and weight all about it) and
+        airframe z. [rad]
+    towed : TowedAttitude or None
+        The towed trim at the sizing airspeed (None without a towed system).
+    axis_text : str
+        The yaw model's axis in words (:func:`slingloads.analyses.towed_attitude.
+        yaw_model_about`).
     """
 
     inputs: ChuteSizingInputs
@@ -109,6 +117,7 @@ class ChuteSizingReport:
     decision: object = None
     axes_angle: float = float("nan")
     towed: object = None
+    axis_text: str = ""
 
     @property
     def study_area_peak_sideslip(self):
@@ -171,34 +180,102 @@ def run(study):
         has ``field = "trim"``).
     """
     inputs = study.require(ANALYSIS)
-    towed = None
-    system = _towed_system(study)
-    if system is not None:
-        from dataclasses import replace
-
-        from slingloads.analyses.towed_attitude import towed_attitude
-
-        towed = towed_attitude(system, inputs.model.condition.eas)
-        if towed.converged:  # the attitude the loads' towed cases and the multibody fly
-            model = inputs.model
-            model = replace(model, condition=replace(model.condition, alpha=towed.alpha))
-            inputs = replace(inputs, model=model)
+    core = sizing_sweep_of(study)
+    inputs, static, sweep, towed, axis_text = (core.inputs, core.static, core.sweep,
+                                               core.towed, core.axis_text)
+    model = inputs.model
     with study.located(ANALYSIS):
-        static = neutral_area(inputs.model, inputs.fit_range)
         line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
-        sweep = None
-        if not static.already_stable:
-            sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
-                                 inputs.fit_range, metrics=inputs.metrics, static=static,
-                                 integrator=inputs.integrator)
         at_study = None
         if inputs.study_area > 0:
             at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,
                                inputs.fit_range, inputs.metrics, inputs.integrator)
         recommended = sweep.smallest_stable_area if sweep is not None else 0.0
-        decision = _decision(study, inputs, static, sweep) if sweep is not None else None
+        decision = (_decision(study, inputs, static, sweep, axis_text) if sweep is not None
+                    else None)
     return ChuteSizingReport(inputs, static, line, sweep, float(recommended), at_study,
-                             decision, axes_angle(study.airframe), towed)
+                             decision, model.axis_tilt, towed, axis_text)
+
+
+@dataclass(frozen=True, eq=False)
+class SizingSweep:
+    """The 1-DOF sizing's model about its yaw axis, neutral area and area sweep: computed once
+    per study (:func:`sizing_sweep_of`), ahead of the campaign when both run, so that the
+    campaign also runs the area the sizing proposes.
+
+    Attributes
+    ----------
+    inputs : ChuteSizingInputs
+        With the yaw model about its axis at the towed trim.
+    static : NeutralAreaResult
+    sweep : SweepResult or None
+        None when fuselage and fin are already stable.
+    towed : TowedAttitude or None
+    axis_text : str
+    given : ChuteSizingInputs
+        The inputs as the study gave them (the result is reused while they are the study's).
+    """
+
+    inputs: ChuteSizingInputs
+    static: object
+    sweep: object
+    towed: object
+    axis_text: str
+    given: object = None
+
+    @property
+    def proposed_area(self):
+        """The 1-DOF proposal: the smallest swept area stable under every gust (NaN when
+        none is; 0 when already stable). [m^2]"""
+        return float(self.sweep.smallest_stable_area) if self.sweep is not None else 0.0
+
+
+def sizing_sweep_of(study):
+    """The study's :class:`SizingSweep`, computed on the first call and kept in
+    ``study.results.sizing_sweep``.
+
+    Parameters
+    ----------
+    study : Study
+        With ``study.inputs.chute_sizing``.
+
+    Returns
+    -------
+    SizingSweep
+    """
+    from dataclasses import replace
+
+    from slingloads.analyses.towed_attitude import towed_attitude, yaw_model_about
+
+    inputs = study.require(ANALYSIS)
+    kept = getattr(study.results, "sizing_sweep", None)
+    if kept is not None and kept.given is inputs:
+        return kept
+    given = inputs
+    towed = body = None
+    system = _towed_system(study)
+    if system is not None:
+        # the attitude the loads' towed cases and the multibody fly
+        towed = towed_attitude(system, inputs.model.condition.eas)
+        body = system.body
+    elif getattr(study.airframe, "mass_items", None) is not None:
+        from slingloads.models.multibody.rigid_body import RigidBody
+
+        body = RigidBody.from_mass_items(study.airframe.mass_items)
+    with study.located(ANALYSIS):
+        model, axis_text = yaw_model_about(
+            inputs.model, inputs.yaw_axis, towed, body,
+            inputs.model.yaw_inertia if inputs.inertia_source == "parameter" else None)
+        inputs = replace(inputs, model=model)
+        static = neutral_area(inputs.model, inputs.fit_range)
+        sweep = None
+        if not static.already_stable:
+            sweep = sizing_sweep(inputs.model, inputs.factors, inputs.gusts, inputs.settings,
+                                 inputs.fit_range, metrics=inputs.metrics, static=static,
+                                 integrator=inputs.integrator)
+    core = SizingSweep(inputs, static, sweep, towed, axis_text, given)
+    study.results.sizing_sweep = core
+    return core
 
 
 def _towed_system(study):
@@ -214,28 +291,6 @@ def _towed_system(study):
 
     return towed_system(loads.airframe, loads.fuselage, loads.fin, loads.parachute,
                         loads.flight.eas, loads.flight.density_altitude)[0]
-
-
-def axes_angle(airframe):
-    """Angle between the axis the yawing moments are taken about (airframe z through the
-    hub) and the axis of the yaw inertia (the hub-CG line).
-
-    Parameters
-    ----------
-    airframe : Airframe or None
-        Its hub hardpoint and mass items' centre of gravity. [m]
-
-    Returns
-    -------
-    float
-        The angle; NaN without mass items or with the CG at the hub. [rad]
-    """
-    items = getattr(airframe, "mass_items", None)
-    if items is None:
-        return float("nan")
-    k = np.asarray(airframe.hardpoints.hub, float) - np.asarray(items.cg, float)
-    norm = np.linalg.norm(k)
-    return float(np.arccos(np.clip(k[2] / norm, -1.0, 1.0))) if norm > 0 else float("nan")
 
 
 def shortfalls(result):
@@ -260,7 +315,7 @@ def shortfalls(result):
     return out
 
 
-def _decision(study, inputs, static, sweep):
+def _decision(study, inputs, static, sweep, axis_text=""):
     """The parachute decision: the sizing's, with the campaign's selection when the campaign
     was computed in the same study (it is computed first, :data:`slingloads.runs.study.
     FEEDS`); kept in ``study.results.parachute_decision`` for every report that mentions the
@@ -273,12 +328,15 @@ def _decision(study, inputs, static, sweep):
                        inputs.metrics, inputs.integrator).to_frame()
 
     campaign = study.results.campaign
+    axis = f"'{inputs.yaw_axis}' ({axis_text})"
+    speed = inputs.model.condition.eas
     if campaign is not None:
         r = campaign.result
         decision = campaign_decision(r.campaign, r.metrics, r.selection, sweep, static,
-                                     one_dof, inputs.study_area)
+                                     one_dof, inputs.study_area, axis, speed)
     else:
-        decision = decide(static, sweep, one_dof=one_dof, study_area=inputs.study_area)
+        decision = decide(static, sweep, one_dof=one_dof, study_area=inputs.study_area,
+                          yaw_axis=axis, airspeed=speed)
     study.results.parachute_decision = decision
     return decision
 

@@ -233,6 +233,10 @@ class Results:
         The one parachute decision of the study (made by the sizing, with the campaign's
         selection when the campaign ran too): every report that mentions the parachute
         shows it.
+    sizing_sweep : SizingSweep or None
+        The 1-DOF sizing's yaw model, neutral area and sweep, computed ahead of the campaign
+        when both run (the campaign then also runs the sizing's proposed area), and reused by
+        the sizing (:func:`slingloads.runs.chute_sizing.sizing_sweep_of`).
     study : Study
         The study these are the results of.
     """
@@ -245,6 +249,7 @@ class Results:
     multibody: MultibodyReport | None = None
     campaign: CampaignReport | None = None
     parachute_decision: ParachuteDecision | None = None
+    sizing_sweep: object = None
     #: The study these are the results of (set by :func:`run_study`).
     study: Study | None = field(default=None, repr=False, compare=False)
 
@@ -416,6 +421,7 @@ def run_study(study, names, *, before=None, after=None, run=run_analysis):
     Results
     """
     study.results.study = study
+    study.results.sizing_sweep = None  # computed afresh by this run
     for name in compute_order(names):
         if before is not None:
             before(name)

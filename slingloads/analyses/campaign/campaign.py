@@ -126,6 +126,10 @@ class Campaign:
         the parachute sizing's :data:`~slingloads.analyses.chute_sizing.FIT_RANGE`; a workbook
         passes its 'chute sizing linearisation range', so that both analyses size the same
         neutral area). [rad]
+    yaw_axis : {"suspension", "airframe z"}
+        The axis of the 1-DOF yaw model of the neutral area and the 1-DOF checks (default the
+        suspension axis; a workbook passes its 'chute sizing yaw axis', so that both analyses
+        take the same axis, :func:`~slingloads.analyses.towed_attitude.yaw_model_about`).
 
     Attributes
     ----------
@@ -149,6 +153,7 @@ class Campaign:
     neutral_airspeed: float | None = None
     name: str = "campaign"
     neutral_fit_range: tuple | None = None
+    yaw_axis: str = "suspension"
 
     def __post_init__(self):
         if not isinstance(self.setup, CampaignSetup):
@@ -178,7 +183,8 @@ class Campaign:
             float(b) for b in self.neutral_fit_range)
         towed = towed_trim_of(self.setup.system, speed)
         object.__setattr__(self, "neutral_trim", towed)
-        neutral = neutral_area_of(self.setup.system, speed, fit, towed=towed)
+        neutral = neutral_area_of(self.setup.system, speed, fit, towed=towed,
+                                  axis=self.yaw_axis)
         if neutral.already_stable:
             raise InputError("fuselage and fin are already statically stable in yaw (neutral "
                              "parachute area not positive): there is no parachute to size",
@@ -360,7 +366,7 @@ def neutral_check(campaign, metrics):
     m = campaign.matrix
     speed = float(m.frame["airspeed EAS [m/s]"].max())
     altitude = float(m.frame["density altitude [m]"].iloc[0])
-    model = yaw_model_of(campaign.setup.system, speed, altitude)
+    model = yaw_model_of(campaign.setup.system, speed, altitude, axis=campaign.yaw_axis)
     fit = (FIT_RANGE if campaign.neutral_fit_range is None
            else tuple(float(b) for b in campaign.neutral_fit_range))
     runs = run_yaw(model, campaign.neutral.area, standard_gusts(),
@@ -486,7 +492,7 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
 
 
 def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one_dof=None,
-                      study_area=None):
+                      study_area=None, yaw_axis=None, airspeed=None):
     """The parachute decision of a campaign (:func:`~slingloads.analyses.parachute_decision.
     decide`), with a 1-DOF sizing sweep if given; the 1-DOF verdicts at the chosen area from
     the campaign's yaw model at its highest airspeed (as :func:`neutral_check`) unless
@@ -507,6 +513,10 @@ def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one
         ``one_dof(area)`` -> DataFrame of the 1-DOF runs at an area [m^2].
     study_area : float, optional
         The study's parachute area (default that of the campaign's system). [m^2]
+    yaw_axis : str, optional
+        The 1-DOF model's axis in words (default: the campaign's, :attr:`Campaign.yaw_axis`).
+    airspeed : float, optional
+        The 1-DOF model's airspeed (default the matrix's highest). [m/s]
 
     Returns
     -------
@@ -516,11 +526,15 @@ def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one
 
     from .selection import stable_runs
 
+    if airspeed is None:
+        airspeed = float(campaign.matrix.frame["airspeed EAS [m/s]"].max())
+    if yaw_axis is None:
+        yaw_axis = f"'{campaign.yaw_axis}' ({campaign.neutral_condition})"
     if one_dof is None:
         m = campaign.matrix
         speed = float(m.frame["airspeed EAS [m/s]"].max())
         altitude = float(m.frame["density altitude [m]"].iloc[0])
-        model = yaw_model_of(campaign.setup.system, speed, altitude)
+        model = yaw_model_of(campaign.setup.system, speed, altitude, axis=campaign.yaw_axis)
         fit = (FIT_RANGE if campaign.neutral_fit_range is None
                else tuple(float(b) for b in campaign.neutral_fit_range))
 
@@ -532,4 +546,4 @@ def campaign_decision(campaign, metrics, selection, sweep=None, static=None, one
     area = (float(line.parachute.area) if line is not None else float("nan")
             ) if study_area is None else study_area
     return decide(campaign.neutral if static is None else static, sweep, selection, metrics,
-                  stable_runs(metrics).to_numpy(), one_dof, area)
+                  stable_runs(metrics).to_numpy(), one_dof, area, yaw_axis, airspeed)

@@ -9,8 +9,9 @@ shares the base's aerodynamic tables, so that the runs batch together.
 
 The neutral static area is that of the parachute-sizing analysis
 (:func:`slingloads.analyses.chute_sizing.neutral_area`, paper section 4.1) on the base's own
-fuselage, fin, hardpoints and yaw inertia about the suspension axis:
-:func:`neutral_area_of`. Its yaw model (:func:`yaw_model_of`) reads the fuselage tables at the
+fuselage, fin, hardpoints, yaw inertia and weight about the suspension axis (the trim's cable
+line through the hub): :func:`neutral_area_of`. Its yaw model (:func:`yaw_model_of`) reads the
+fuselage tables at the
 towed trim's angle of attack at its condition (airspeed, density altitude; the system with its
 parachute), from :func:`slingloads.analyses.towed_attitude.towed_attitude`, the attitude the
 parachute sizing, the loads' towed cases and the multibody trim fly: the campaign's neutral area
@@ -25,7 +26,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from slingloads.analyses.chute_sizing import FIT_RANGE, neutral_area
-from slingloads.analyses.towed_attitude import towed_attitude
+from slingloads.analyses.towed_attitude import towed_attitude, yaw_model_about
 from slingloads.constants import FOOT, KNOT
 from slingloads.errors import InputError
 from slingloads.models.aerodynamics import Fin
@@ -101,11 +102,14 @@ def trim_text(towed, density_altitude):
     return f"at alpha 0: no towed trim at {where} ({towed.message})"
 
 
-def yaw_model_of(system, airspeed=None, density_altitude=None, towed=None):
+def yaw_model_of(system, airspeed=None, density_altitude=None, towed=None,
+                 axis="suspension"):
     """The 1-DOF yaw model (:class:`~slingloads.models.yaw_dynamics.YawModel`) of a towed
-    system: its fuselage, fin, hardpoints, parachute and yaw inertia about the vertical through
-    the hub of the hanging body (:func:`~slingloads.models.airframe.hanging_yaw_inertia`), at
-    the towed trim's angle of attack (:func:`towed_trim_of`; alpha 0 when no trim is found).
+    system: its fuselage, fin, hardpoints and parachute at the towed trim's angle of attack
+    (:func:`towed_trim_of`; alpha 0 when no trim is found), with its yawing moments, yaw
+    inertia and weight about one axis through the hub
+    (:func:`~slingloads.analyses.towed_attitude.yaw_model_about`: by default the suspension
+    axis, the trim's cable line), as the parachute sizing takes them.
 
     Parameters
     ----------
@@ -115,6 +119,8 @@ def yaw_model_of(system, airspeed=None, density_altitude=None, towed=None):
         Condition (default: the system's). [m/s], [m]
     towed : TowedAttitude, optional
         The trim at that condition (default: :func:`towed_trim_of`).
+    axis : {"suspension", "airframe z"}
+        The yaw model's axis (:data:`~slingloads.analyses.towed_attitude.YAW_AXES`).
 
     Returns
     -------
@@ -131,12 +137,13 @@ def yaw_model_of(system, airspeed=None, density_altitude=None, towed=None):
     altitude = system.density_altitude if density_altitude is None else density_altitude
     if towed is None:
         towed = towed_trim_of(system, speed, altitude)
-    alpha = towed.alpha if towed.converged else 0.0
-    return YawModel(system.fuselage, fin, system.hardpoints, inertia,
-                    FlightCondition(speed, altitude, alpha), system.parachute.parachute)
+    model = YawModel(system.fuselage, fin, system.hardpoints, inertia,
+                     FlightCondition(speed, altitude, 0.0), system.parachute.parachute)
+    return yaw_model_about(model, axis, towed, body)[0]
 
 
-def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE, towed=None):
+def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE, towed=None,
+                    axis="suspension"):
     """Neutral yaw static stability area of a towed system (paper section 4.1), at the towed
     trim's angle of attack (:func:`yaw_model_of`).
 
@@ -150,6 +157,8 @@ def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE, towed=None):
         Sideslip range of the slope fits. [rad]
     towed : TowedAttitude, optional
         The trim at that airspeed (default: :func:`towed_trim_of`).
+    axis : {"suspension", "airframe z"}
+        The yaw model's axis (:func:`yaw_model_of`).
 
     Returns
     -------
@@ -159,7 +168,7 @@ def neutral_area_of(system, airspeed=None, fit_range=FIT_RANGE, towed=None):
     speed = system.airspeed if airspeed is None else airspeed
     if not speed > 0:
         raise InputError("the neutral area needs an airspeed > 0 [m/s]", speed)
-    return neutral_area(yaw_model_of(system, speed, towed=towed), fit_range)
+    return neutral_area(yaw_model_of(system, speed, towed=towed, axis=axis), fit_range)
 
 
 @dataclass(frozen=True, eq=False)

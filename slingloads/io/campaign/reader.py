@@ -20,6 +20,7 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
+from slingloads.analyses.towed_attitude import YAW_AXES
 from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
@@ -330,7 +331,8 @@ def read(reader, params, study):
         campaign = Campaign(setup, factors, rows, settings, criteria, margin,
                             _map(factors, rows, n_areas, n_speeds), no_chute,
                             chosen or None, name=str(params("study name")),
-                            neutral_fit_range=_sizing_fit_range(params))
+                            neutral_fit_range=_sizing_fit_range(params),
+                            yaw_axis=params.choice("chute sizing yaw axis", YAW_AXES))
     listed = sorted(float(f) for f in campaign.matrix.frame["area factor [-]"].unique())
     if chosen and not np.any(np.isclose(listed, chosen)):
         raise params.error("campaign chosen area factor", "the chosen area factor must be one "
@@ -355,7 +357,8 @@ def _check_needs_parachute(params, system, rows, factors):
 
     speeds = rows["airspeed EAS [m/s]"] if rows is not None else factors.airspeeds
     with located(params, default="fin area"):
-        neutral = neutral_area_of(system, float(np.max(np.asarray(speeds, float))))
+        neutral = neutral_area_of(system, float(np.max(np.asarray(speeds, float))),
+                                  axis=params.choice("chute sizing yaw axis", YAW_AXES))
     if neutral.already_stable:
         raise params.error("fin area", "fuselage and fin are already statically stable in yaw "
                            f"(neutral parachute area {neutral.area:.4g} m^2, not positive): "

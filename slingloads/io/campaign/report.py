@@ -137,7 +137,10 @@ def definition_table(report, units):
     rows = [
         ("runs in the matrix", len(frame), "-", "full factorial" if c.rows is None
          else "listed rows"),
-        ("area factors", *listing("area factor [-]"), "x neutral static area"),
+        ("area factors", *listing("area factor [-]"),
+         "x neutral static area" + (
+             f"; {report.sizing_factor:.4g} added: the parachute sizing's proposed area"
+             if getattr(report, "sizing_factor", None) is not None else "")),
         ("airspeeds EAS", *listing("airspeed EAS [m/s]", lambda v: _speed(v, units)), ""),
         ("mass cases", masses, "lb" if units == "US" else "kg", "inertia scaled with mass"),
         ("density altitudes", *listing("density altitude [m]",

@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from slingloads.analyses.chute_sizing import MetricSettings
+from slingloads.analyses.towed_attitude import YAW_AXES
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME_SHEETS
 from slingloads.io.chute.schema import (
@@ -97,6 +98,7 @@ def read(reader, params, study):
                          f"({hp_t.cell('x', hub_row)})")
     parachute = read_parachute(reader, params, 1.0)
     # ---- yaw inertia
+    yaw_axis = params.choice("chute sizing yaw axis", YAW_AXES)
     source = params.choice("chute sizing yaw inertia source", INERTIA_SOURCES)
     given = params("chute sizing yaw inertia")
     if source == "parameter":
@@ -187,7 +189,7 @@ def read(reader, params, study):
         factors=np.linspace(fmin, fmax, int(count)),
         recommended_factor=recommended, integrator=integrator, inertia_source=source,
         study_area=float(params("parachute area")),
-        study_line=float(params("parachute line length")))
+        study_line=float(params("parachute line length")), yaw_axis=yaw_axis)
 
 
 def _whole_multiple(value, unit):

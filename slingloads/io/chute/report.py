@@ -122,12 +122,14 @@ def summary_tables(result, units="SI"):
           if result.towed is not None and result.towed.converged else
           "Study 'chute sizing alpha trim' (no towed trim: "
           + (result.towed.message if result.towed is not None else "no towed system") + ")")),
-        ("yaw inertia about the hub axis", m.yaw_inertia, "inertia",
-         f"source: {inp.inertia_source}"),
-        ("moment axis against inertia axis", float(np.degrees(result.axes_angle)), "deg",
-         "yawing moments about airframe z through the hub, yaw inertia about the hub-CG "
-         "line (hanging vertical): not yet one axis; the sizing is exact only when this is "
-         "small" if np.isfinite(result.axes_angle) else "inertia given as a parameter"),
+        ("yaw axis", f"'{inp.yaw_axis}'", None,
+         f"{result.axis_text}: yawing moments, yaw inertia and weight all about it"),
+        ("yaw axis from airframe z", float(np.degrees(result.axes_angle)), "deg",
+         "the one axis of the 1-DOF model"),
+        ("yaw inertia about the yaw axis", m.yaw_inertia, "inertia",
+         f"source: {inp.inertia_source}" + (" (taken as about the yaw axis)"
+                                            if inp.inertia_source == "parameter" else "")),
+
         ("linearisation range", float(np.degrees(inp.fit_range[1])), "deg",
          "fit over +- this; a run leaving it is outside the domain"),
         ("sideslip limit", float(np.degrees(inp.metrics.sideslip_limit)), "deg",
@@ -138,7 +140,8 @@ def summary_tables(result, units="SI"):
          "carries the wake loss, counted once"),
         ("parachute CD x wake ratio", float(m.chute_drag_coefficient), "-",
          "the one factor of the drag (paper: 0.95)"),
-        ("parachute arm aft of the hub axis", float(m.chute_arm[0]), "length", ""),
+        ("parachute arm aft of the yaw axis", float(m.chute_arm[0]), "length",
+         "normal to the axis"),
     ], units)
     sweep_rows = []
     if result.sweep is not None:

@@ -60,10 +60,15 @@ PARAMETERS = (
               "paper figures 4-5), > 0.", _S,
               Bounds(0, 90, lo_open=True, hi_open=True, unit="deg")),
     Parameter("chute sizing yaw inertia source", TEXT, "", "mass items",
-              "'mass items': yaw inertia about the vertical through the hub computed from "
-              "MassItems, hanging with the CG under the hub; 'parameter': 'chute sizing yaw "
-              "inertia'.",
+              "'mass items': yaw inertia about the yaw axis ('chute sizing yaw axis') "
+              "computed from MassItems (parallel-axis term where the axis misses the CG); "
+              "'parameter': 'chute sizing yaw inertia'.",
               _S),
+    Parameter("chute sizing yaw axis", TEXT, "", "suspension",
+              "Axis of the 1-DOF yaw model, through the hub, about which its yawing moments, "
+              "yaw inertia and weight are all taken: 'suspension' (the line from the hook "
+              "through the hub: the towed trim's cable line, or the hub-CG line without a "
+              "trim) or 'airframe z' (the paper's balance of Mz, weight left out).", _S),
     Parameter("chute sizing yaw inertia", "inertia", "kg m^2", 0.0,
               "Yaw inertia about the suspension axis, used (and then > 0) only with the "
               "source 'parameter'; leave 0 with 'mass items'.", _S),
