@@ -56,8 +56,10 @@ from slingloads.io.common.excel_cells import (
 )
 from slingloads.io.common.excel_print import (
     MIN_EXTRA_SCALE,
+    MIN_PRINT_SCALE,
     PRINTABLE,
     SPARSE_LAST,
+    column_pages,
     height_fit,
     orientation_for,
     page_pixels,
@@ -119,6 +121,14 @@ class _Columns:
     @property
     def pixels(self):
         return sum(_px(w) for w in self.widths.values())
+
+    def print_blocks(self, orientation):
+        """``(scale, column breaks)`` of the sheet printed in ``orientation``: fitted to the
+        page width, or in blocks of columns repeating the first (the row's id) when that
+        fit is below the least print scale
+        (:func:`~slingloads.io.common.excel_print.column_pages`)."""
+        return column_pages([_px(self.widths.get(j, 8.43))
+                             for j in range(max(self.widths, default=-1) + 1)], orientation)
 
 
 def _number_formats(columns, number_format):
@@ -434,11 +444,15 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
         height = (_table_pixels(frame.iloc[start:stop], columns)
                   + ROW_PIXELS * (len(boxed) + bool(boxed)))
         orientation = orientation_for(columns.pixels, height)
+        scale, column_breaks = columns.print_blocks(orientation)
         print_setup(ws, pixels=columns.pixels, height=height, title_rows=1,
                     sheet_title=title if len(parts) == 1
                     else f"{title}, part {k + 1} of {len(parts)}", info=info,
                     orientation=orientation,
-                    pages=height_fit(orientation, columns.pixels, height))
+                    pages=0 if column_breaks else height_fit(orientation, columns.pixels,
+                                                             height),
+                    scale=100 * scale if column_breaks else None,
+                    column_breaks=column_breaks, key_columns=1)
         _write_table(_SheetWriter(wb, ws, columns.widths), frame.iloc[start:stop], formats,
                      columns, highlight)
         if boxed:
@@ -606,7 +620,7 @@ def _paginate(needs, page):
     return breaks, fills
 
 
-def _page_plan(needs, page):
+def _page_plan(needs, page, fit=1.0):
     """The page breaks of a sheet of blocks and its print scale relative to the fit to the
     page width: of :data:`_SCALES`, the largest that prints the fewest pages with the fewest
     pages under :data:`~slingloads.io.common.excel_print.SPARSE_LAST` full (its last page
@@ -618,6 +632,9 @@ def _page_plan(needs, page):
         Height of each block at the fit to the page width. [px]
     page : float
         Height of a page at that scale, less a margin. [px]
+    fit : float
+        The fit to the page width: no scale takes the print below
+        :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`. [-]
 
     Returns
     -------
@@ -634,7 +651,7 @@ def _page_plan(needs, page):
     ([], 0.95)
     """
     best = None
-    for scale in _SCALES:
+    for scale in [s for s in _SCALES if s == 1.0 or fit * s >= MIN_PRINT_SCALE]:
         breaks, fills = _paginate(needs, page / scale)
         key = (len(fills), sum(f < SPARSE_LAST for f in fills[:-1]))
         if best is None or key < best[0]:
@@ -700,17 +717,22 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
              for k, (title, lines, table) in enumerate(blocks)]
     height = sum(needs)
     orientation = orientation_for(columns.pixels, height)
-    page = page_pixels(orientation, columns.pixels) * 0.95
-    if one_table:  # rows flow under the repeated header: fitted to a page count
-        breaks, scale = [], None
+    # too wide for a readable fit: blocks of columns, the first column (ids) on each
+    fit_width, column_breaks = columns.print_blocks(orientation)
+    page = PRINTABLE[orientation][1] / fit_width * 0.95
+    if one_table and not column_breaks:  # rows flow under the repeated header: fitted to a
+        breaks, scale = [], None        # page count
         pages = height_fit(orientation, columns.pixels, height)
+    elif one_table:
+        breaks, scale, pages = [], 1.0, 0
     else:
-        breaks, scale = _page_plan(needs, page)
+        breaks, scale = _page_plan(needs, page, fit_width)
         pages = 0
-    fit_width = min(1.0, PRINTABLE[orientation][0] / max(columns.pixels, 1.0))
     print_setup(ws, pixels=columns.pixels, height=height, title_rows=title_rows,
                 sheet_title=sheet_title, info=info, orientation=orientation, pages=pages,
-                scale=None if scale in (None, 1.0) else 100 * fit_width * scale)
+                scale=(100 * fit_width * scale if column_breaks
+                       else None if scale in (None, 1.0) else 100 * fit_width * scale),
+                column_breaks=column_breaks, key_columns=1)
     writer = _SheetWriter(wb, ws, columns.widths)
     for k, (title, lines, table) in enumerate(blocks):
         if k in breaks:
