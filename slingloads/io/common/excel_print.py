@@ -59,15 +59,15 @@ def orientation_for(pixels, height=0.0):
     """The orientation of a sheet ``pixels`` wide and ``height`` high [px].
 
     Portrait when the sheet fits the portrait width (8 % shrink allowed). Portrait also when
-    a fit-to-width shrink of at most 32 % puts it on a portrait page and that prints it on
-    fewer pages than landscape (:func:`pages_for`, with a 10 % margin on the estimated
-    height), or when it is long (more than a landscape page); else landscape.
+    a fit-to-width shrink to no less than :data:`MIN_PRINT_SCALE` puts it on a portrait page
+    and that prints it on fewer pages than landscape (:func:`pages_for`, with a 10 % margin on
+    the estimated height), or when it is long (more than a landscape page); else landscape.
     """
     width, _ = PRINTABLE["portrait"]
     land_width, land_height = PRINTABLE["landscape"]
     if pixels <= 1.08 * width:
         return "portrait"
-    if pixels <= width / 0.68 and (
+    if pixels <= width / MIN_PRINT_SCALE and (
             height * min(1.0, land_width / pixels) > 1.2 * land_height
             or pages_for("portrait", pixels, 1.1 * height)
             < pages_for("landscape", pixels, 1.1 * height)):

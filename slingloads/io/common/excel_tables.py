@@ -239,7 +239,7 @@ def _column_plan(tables, notes=(), formats_of=None):
 #: [characters]
 WIDE_TEXT_WIDTH = 60
 #: Least fit-to-width print scale a wider text column may bring a table sheet to. [-]
-_WIDE_TEXT_SCALE = 0.55
+_WIDE_TEXT_SCALE = MIN_PRINT_SCALE
 
 
 def _wider_text(frame, columns):
@@ -260,6 +260,23 @@ def _wider_text(frame, columns):
     if width / wide.pixels < _WIDE_TEXT_SCALE or pages(wide) > 0.8 * pages(columns):
         return columns
     return wide
+
+
+def _in_blocks(frame, columns):
+    """The column plan of a table sheet that prints in blocks of columns
+    (:meth:`_Columns.print_blocks`) with its wrapped text columns as wide as their longest
+    text, up to a block's width: a row of the other blocks is then one line high, not as
+    many lines as its text wraps to; the plan unchanged when the table fits the width."""
+    orientation = orientation_for(columns.pixels)
+    if not columns.wrapped or not columns.print_blocks(orientation)[1]:
+        return columns
+    room = 0.9 * PRINTABLE[orientation][0] / MIN_PRINT_SCALE - _px(columns.widths.get(0, 0))
+    widths = dict(columns.widths)
+    for j in columns.wrapped:
+        longest = frame.iloc[:, j].astype(str).str.len().max()
+        widths[j] = max(widths[j], min(int(longest) + 1, int((room - 5) / 7)))
+    return _Columns(widths, {j for j in columns.wrapped
+                             if frame.iloc[:, j].astype(str).str.len().max() > widths[j]})
 
 
 def _set_widths(ws, columns):
@@ -430,7 +447,8 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     """
     _check_highlight([frame], highlight, name)
     formats = _number_formats(frame.columns, number_format)
-    columns = _wider_text(frame, _column_plan([frame], formats_of=lambda f: formats))
+    columns = _in_blocks(frame, _wider_text(frame, _column_plan([frame],
+                                                                formats_of=lambda f: formats)))
     title = frame_title(frame, name)
     names = []
     parts = split_sheet_names(name, len(frame), max_rows)
@@ -659,6 +677,63 @@ def _page_plan(needs, page, fit=1.0):
     return best[1], best[2]
 
 
+#: Columns of a table that is never split into column blocks (item, value, unit, note).
+_NARROW_COLUMNS = 4
+
+
+def _narrow(sections, number_format=None):
+    """The sections of a sheet of several tables with each table too wide for a landscape
+    page at :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE` split into column
+    blocks one under another (a heading, then ``part k of n``, each block with the table's
+    first column, the row's id): one narrow sheet, not a sheet shrunk or split across pages
+    for one wide table. A sheet of one table is left as it is (it prints in blocks of
+    columns, its cells one table that a program reads)."""
+    if sum(s.table is not None for s in sections) < 2:
+        return sections
+    room = 0.95 * PRINTABLE["landscape"][0] / MIN_PRINT_SCALE  # 5 %: the notes' widths
+
+    def widths_of(table):
+        own = _column_plan([table], formats_of=lambda f: _number_formats(f.columns,
+                                                                          number_format))
+        return [_px(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
+
+    # the columns of the narrow tables (item, value, unit, note) are the sheet's anyway:
+    # a wide table's block is as wide as its columns there and theirs
+    narrow = [widths_of(s.table) for s in sections
+              if s.table is not None and s.table.shape[1] <= _NARROW_COLUMNS]
+    base = [max((w[k] for w in narrow if k < len(w)), default=0.0)
+            for k in range(max((len(w) for w in narrow), default=0))]
+
+    def at(k, width):
+        return max(width, base[k]) if k < len(base) else width
+
+    out = []
+    for s in sections:
+        table = s.table
+        if table is None or table.shape[1] <= _NARROW_COLUMNS:
+            out.append(s)
+            continue
+        widths = widths_of(table)
+        if sum(at(k, w) for k, w in enumerate(widths)) <= room:
+            out.append(s)
+            continue
+        blocks, current, used = [], [], at(0, widths[0])
+        for j in range(1, table.shape[1]):
+            step = at(len(current) + 1, widths[j])
+            if current and used + step > room:
+                blocks.append(current)
+                current, used = [], at(0, widths[0])
+                step = at(1, widths[j])
+            current.append(j)
+            used += step
+        blocks.append(current)
+        out.append(Section(s.title, note=s.note, sheet=s.sheet))
+        out += [Section(f"{s.title}, part {k + 1} of {len(blocks)}",
+                        table.iloc[:, [0, *block]])
+                for k, block in enumerate(blocks)]
+    return out
+
+
 def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None,
                          info=None):
     """Write titled blocks (notes and tables) one under another on one sheet.
@@ -690,6 +765,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
         ``[name]``.
     """
     ws = wb.add_worksheet(check_sheet_name(name))
+    sections = _narrow(sections, number_format)
     tables = [s.table for s in sections if s.table is not None]
     _check_highlight(tables, highlight, name)
     columns = _column_plan(tables, [s.note for s in sections],
