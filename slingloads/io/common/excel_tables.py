@@ -127,7 +127,8 @@ class _Columns:
         page width, or in blocks of columns repeating the first (the row's id) when that
         fit is below the least print scale
         (:func:`~slingloads.io.common.excel_print.column_pages`)."""
-        return column_pages([_px(self.widths.get(j, 8.43))
+        # a column w characters wide shows 7 w px (_set_widths)
+        return column_pages([_DIGIT_PIXELS * self.widths.get(j, 8.43)
                              for j in range(max(self.widths, default=-1) + 1)], orientation)
 
 
@@ -682,12 +683,13 @@ _NARROW_COLUMNS = 4
 
 
 def _narrow(sections, number_format=None):
-    """The sections of a sheet of several tables with each table too wide for a landscape
-    page at :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE` split into column
+    """The sections of a sheet of several tables with its wide tables split into column
     blocks one under another (a heading, then ``part k of n``, each block with the table's
-    first column, the row's id): one narrow sheet, not a sheet shrunk or split across pages
-    for one wide table. A sheet of one table is left as it is (it prints in blocks of
-    columns, its cells one table that a program reads)."""
+    first column, the row's id), so that the sheet (whose columns are as wide as the widest
+    cell of any of its tables at that position) prints on a landscape page at no less than
+    :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`: one narrow sheet, not a sheet
+    shrunk or cut across pages. A sheet of one table is left as it is (it prints in blocks of
+    columns, its cells one table that a program reads); so is a sheet that fits."""
     if sum(s.table is not None for s in sections) < 2:
         return sections
     room = 0.95 * PRINTABLE["landscape"][0] / MIN_PRINT_SCALE  # 5 %: the notes' widths
@@ -697,40 +699,47 @@ def _narrow(sections, number_format=None):
                                                                           number_format))
         return [_px(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
 
-    # the columns of the narrow tables (item, value, unit, note) are the sheet's anyway:
-    # a wide table's block is as wide as its columns there and theirs
-    narrow = [widths_of(s.table) for s in sections
-              if s.table is not None and s.table.shape[1] <= _NARROW_COLUMNS]
-    base = [max((w[k] for w in narrow if k < len(w)), default=0.0)
-            for k in range(max((len(w) for w in narrow), default=0))]
+    def union(rows):
+        return [max((w[k] for w in rows if k < len(w)), default=0.0)
+                for k in range(max((len(w) for w in rows), default=0))]
 
-    def at(k, width):
-        return max(width, base[k]) if k < len(base) else width
+    tables = {k: widths_of(s.table) for k, s in enumerate(sections) if s.table is not None}
+    if sum(union(list(tables.values()))) <= room:
+        return sections
+    # the narrow tables (item, value, unit, note) keep their columns; each wide table is cut
+    # in blocks that fit beside the columns of every other block (three passes settle it)
+    narrow = [w for w in tables.values() if len(w) <= _NARROW_COLUMNS]
+    wide = [k for k, w in tables.items() if len(w) > _NARROW_COLUMNS]
+    plan = {k: [list(range(1, len(tables[k])))] for k in wide}
+    for _ in range(3):
+        others = union(narrow + [[tables[k][0]] + [tables[k][j] for j in block]
+                                 for k in wide for block in plan[k]])
+        for k in wide:
+            widths = tables[k]
 
+            def at(position, width, others=others):
+                return max(width, others[position]) if position < len(others) else width
+
+            blocks, current, used = [], [], at(0, widths[0])
+            for j in range(1, len(widths)):
+                step = at(len(current) + 1, widths[j])
+                if current and used + step > room:
+                    blocks.append(current)
+                    current, used = [], at(0, widths[0])
+                    step = at(1, widths[j])
+                current.append(j)
+                used += step
+            blocks.append(current)
+            plan[k] = blocks
     out = []
-    for s in sections:
-        table = s.table
-        if table is None or table.shape[1] <= _NARROW_COLUMNS:
+    for k, s in enumerate(sections):
+        if k not in plan or len(plan[k]) == 1:
             out.append(s)
             continue
-        widths = widths_of(table)
-        if sum(at(k, w) for k, w in enumerate(widths)) <= room:
-            out.append(s)
-            continue
-        blocks, current, used = [], [], at(0, widths[0])
-        for j in range(1, table.shape[1]):
-            step = at(len(current) + 1, widths[j])
-            if current and used + step > room:
-                blocks.append(current)
-                current, used = [], at(0, widths[0])
-                step = at(1, widths[j])
-            current.append(j)
-            used += step
-        blocks.append(current)
         out.append(Section(s.title, note=s.note, sheet=s.sheet))
-        out += [Section(f"{s.title}, part {k + 1} of {len(blocks)}",
-                        table.iloc[:, [0, *block]])
-                for k, block in enumerate(blocks)]
+        out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}",
+                        s.table.iloc[:, [0, *block]])
+                for m, block in enumerate(plan[k])]
     return out
 
 
@@ -793,8 +802,13 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
              for k, (title, lines, table) in enumerate(blocks)]
     height = sum(needs)
     orientation = orientation_for(columns.pixels, height)
-    # too wide for a readable fit: blocks of columns, the first column (ids) on each
+    # a table too wide for a readable fit: blocks of columns, the first column (ids) on
+    # each; a sheet of several tables has its wide tables in blocks already (_narrow), one
+    # under another (a column break would cut the others' columns apart)
     fit_width, column_breaks = columns.print_blocks(orientation)
+    if not one_table:
+        fit_width, column_breaks = min(1.0, PRINTABLE[orientation][0]
+                                       / max(columns.pixels, 1.0)), []
     page = PRINTABLE[orientation][1] / fit_width * 0.95
     if one_table and not column_breaks:  # rows flow under the repeated header: fitted to a
         breaks, scale = [], None        # page count
