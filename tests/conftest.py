@@ -11,7 +11,8 @@
 * The example workbook, its study read once for the session, its results (every analysis)
   computed once, its reports made once for the session (``slingloads loads`` and
   ``slingloads run``, also with the campaign on; the US reports written from those
-  results), and the check of a broken
+  results), the second example's (US twin) reports in US units and in SI, and the check of
+  a broken
   copy of a workbook (exit code 2, the message located at the cell, nothing written).
 """
 
@@ -105,6 +106,23 @@ def example_campaign_run_report(tmp_path_factory):
     out = root / "out"
     assert main(["run", str(path), "--out", str(out), "--quiet"]) == 0
     return out
+
+
+#: The second example: a GENERIC 4.9 t twin in US units, with the campaign on.
+US_TWIN = Path(__file__).resolve().parents[1] / "loadcases" / "example-us-twin.xlsx"
+
+
+@pytest.fixture(scope="session", params=["US", "SI"])
+def us_twin_reports(request, tmp_path_factory):
+    """(units, folder) of ``slingloads run`` on the second example in US units and in SI,
+    made once for the session (exit 3: its campaign finds no parachute area stable in every
+    condition, a finding; every report is written): to be read, not changed."""
+    from slingloads.cli import main
+
+    out = tmp_path_factory.mktemp(f"us-twin-{request.param}") / "out"
+    assert main(["run", str(US_TWIN), "--out", str(out), "--units", request.param,
+                 "--quiet"]) == 3
+    return request.param, out
 
 
 @pytest.fixture(scope="session")

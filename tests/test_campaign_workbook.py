@@ -378,8 +378,9 @@ def test_progress_bar_shows_runs_done_rate_and_time_left(tiny, tmp_path, capsys)
 def test_us_report_keeps_one_unit_per_quantity(tiny, tmp_path):
     """--units US from the same cache: the loads hand-off's line tension in lbf (the SI
     report's N / 4.4482216152605, 1 lbf = 0.45359237 kg x 9.80665 m/s^2 exactly), and the
-    1.0 x neutral verdicts' conditions in the matrix's words (KEAS, ft), with no SI speed or
-    length converted into '... ft/s EAS, 0 in'."""
+    1.0 x neutral verdicts' conditions in the report's units (KEAS; the density altitude in
+    ft, the cable in in as every length of a US report: 60 ft = 720 in exactly), with no
+    airspeed in ft/s and no altitude in inches ('density altitude 0 in')."""
     path, out, cache = tiny
     us = tmp_path / "us"
     assert main(["campaign", str(path), "--out", str(us), "--cache", str(cache), "--units",
@@ -393,4 +394,6 @@ def test_us_report_keeps_one_unit_per_quantity(tiny, tmp_path):
         float(si_line["reached max"]) / 4.4482216152605, rel=1e-12)
     neutral = pd.read_excel(us / "tiny-campaign.xlsx", sheet_name="NeutralArea")
     conditions = " ".join(neutral["condition"].astype(str))
-    assert "KEAS" in conditions and "ft/s EAS" not in conditions and " in," not in conditions
+    assert "KEAS" in conditions and "ft/s EAS" not in conditions
+    assert "density altitude 0 ft" in conditions and "altitude 0 in" not in conditions
+    assert "cable 720 in," in conditions and "cable 60 ft" not in conditions

@@ -80,7 +80,8 @@ def test_every_colour_scale_says_quantity_unit_and_sign(campaign_figures):
 
 def test_stability_map_panels_are_titled_by_what_they_show(campaign_figures):
     """The two rows of the stability map (damping ratio, real part) at one altitude carry
-    different titles, each with the base condition."""
+    different titles, each with the base condition, its density altitude in the report's
+    unit (m in this SI report: never ft, one unit per quantity)."""
     from matplotlib import pyplot as plt
 
     _, (func, args, kwargs) = campaign_figures["stability-map"]
@@ -88,7 +89,7 @@ def test_stability_map_panels_are_titled_by_what_they_show(campaign_figures):
     titles = [ax.get_title() for ax in figure.axes if ax.get_title()]
     plt.close(figure)
     assert len(titles) == len(set(titles)) == 2, titles
-    assert all("ft density altitude" in t for t in titles)
+    assert all(re.search(r"\d m density altitude", t) and " ft" not in t for t in titles)
 
 
 def _model(p_y, phi_z):

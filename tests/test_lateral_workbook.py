@@ -219,8 +219,8 @@ def test_nominal_report_reads_back_the_hook_cases(nominal):
 def test_us_report(tmp_path, nominal):
     """--units US: forces in lbf (1 lbf = 0.45359237 kg x 9.80665 m/s^2 exactly); every
     rope length in inches alone (1 in = 0.0254 m exactly): the critical case's rope on the
-    Summary without a remark in ft, no rope length in ft on the Runs and Modes sheets (in SI
-    the paper's feet stay beside the metres)."""
+    Summary without a remark in ft, no rope length in ft on the Runs and Modes sheets (nor
+    in SI: one unit per quantity in each report, m in SI)."""
     result, path = nominal
     source = path.parent.parent / "nominal.xlsx"
     assert main(["lateral", str(source), "--out", str(tmp_path), "--units", "US",
@@ -240,7 +240,8 @@ def test_us_report(tmp_path, nominal):
     assert "rope length [in]" in headers
     assert not [h for h in headers if "rope length" in h and "[ft]" in h]
     si = _sheet(path, "Summary", "Design angle").set_index("item")
-    assert " ft, factor" in str(si.loc["  rope length", "note"])
+    assert si.loc["  rope length", "unit"] == "m" and " ft" not in str(
+        si.loc["  rope length", "note"])
 
 
 def test_us_plots_in_the_report_units(result):

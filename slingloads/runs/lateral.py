@@ -17,7 +17,6 @@ import pandas as pd
 from slingloads.analyses.hook_angle import HookAngleComparison, hook_angle_comparison
 from slingloads.analyses.lateral import CarrierLimits, ParameterRanges, lateral_study
 from slingloads.analyses.lateral_damping import LateralDamping
-from slingloads.constants import FOOT
 from slingloads.models.integration import SolverSettings
 
 ANALYSIS = "lateral"
@@ -155,6 +154,5 @@ def _modes(result):
         frame = p.linear_modes().to_frame()
         frame.insert(0, "body", p.body.name)
         frame.insert(1, "rope length [m]", p.rope_length)
-        frame.insert(2, "rope length [ft]", p.rope_length / FOOT)
         frames.append(frame)
     return pd.concat(frames, ignore_index=True)

@@ -21,7 +21,7 @@ import pandas as pd
 
 from slingloads.analyses.chute_sizing import FIT_RANGE, run_yaw
 from slingloads.analyses.multibody import linearise, trim
-from slingloads.constants import FOOT, KNOT
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.gusts import standard_gusts
 from slingloads.models.multibody.integrator import ATOL, RTOL
@@ -371,7 +371,7 @@ def neutral_check(campaign, metrics):
            else tuple(float(b) for b in campaign.neutral_fit_range))
     runs = run_yaw(model, campaign.neutral.area, standard_gusts(),
                    SolverSettings(ONE_DOF_TIME, ONE_DOF_STEP), fit_range=fit).to_frame()
-    one_dof = f"{speed / KNOT:.0f} KEAS, density altitude {altitude / FOOT:.0f} ft"
+    one_dof = f"{speed / KNOT:.0f} KEAS, density altitude {altitude:.0f} m"
     rows = [{"model": "1-DOF yaw", "condition": one_dof,
              "test": f"lateral gust {g}", "verdict": v,
              "peak beta [deg]": b, "damping ratio [-]": z}

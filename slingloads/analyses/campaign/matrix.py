@@ -108,8 +108,9 @@ class ManoeuvreKind:
 #: The manoeuvres of the campaign (paper section 4.4), by name.
 MANOEUVRES = {m.name: m for m in (
     ManoeuvreKind("free response", "free response from 10 deg of yaw at trim"),
-    ManoeuvreKind("gust +30 ft/s", "lateral 10 s gust of +30 ft/s (from the right) at 5 s"),
-    ManoeuvreKind("gust -30 ft/s", "lateral 10 s gust of -30 ft/s (from the left) at 5 s"),
+    # descriptions in SI (a US report quotes the gust in ft/s: 9.144 m/s = 30 ft/s exactly)
+    ManoeuvreKind("gust +30 ft/s", "lateral 10 s gust of +9.144 m/s (from the right) at 5 s"),
+    ManoeuvreKind("gust -30 ft/s", "lateral 10 s gust of -9.144 m/s (from the left) at 5 s"),
     ManoeuvreKind("acceleration", "forward acceleration from hover to the run's airspeed, "
                                   "1.5 m/s^2 peak, 2 s jerk, from 5 s (2 deg yaw seed)"),
 )}

@@ -122,8 +122,9 @@ def damped_runs(metrics, criteria):
 
 def condition_text(row):
     """A campaign condition in words, the one spelling every report uses: airspeed in KEAS,
-    density altitude and cable length in ft (the units of the flight manual, in SI and US
-    reports alike), mass case and carrier.
+    density altitude and cable length in SI (m; a US report quotes them in ft and in, as
+    every altitude and length of it: :func:`slingloads.io.common.units.report_text`), mass
+    case and carrier.
 
     Parameters
     ----------
@@ -135,11 +136,11 @@ def condition_text(row):
     -------
     str
     """
-    from slingloads.constants import FOOT, KNOT
+    from slingloads.constants import KNOT
 
     return (f"{row['airspeed EAS [m/s]'] / KNOT:.0f} KEAS, mass case {row['mass case']}, "
-            f"density altitude {row['density altitude [m]'] / FOOT:.0f} ft, cable "
-            f"{row['cable length [m]'] / FOOT:.0f} ft, carrier {row['carrier']}")
+            f"density altitude {row['density altitude [m]']:.0f} m, cable "
+            f"{row['cable length [m]']:.5g} m, carrier {row['carrier']}")
 
 
 @dataclass(frozen=True, eq=False)

@@ -27,7 +27,7 @@ import numpy as np
 
 from slingloads.analyses.chute_sizing import FIT_RANGE, neutral_area
 from slingloads.analyses.towed_attitude import towed_attitude, yaw_model_about
-from slingloads.constants import FOOT, KNOT
+from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.aerodynamics import Fin
 from slingloads.models.airframe import hanging_yaw_inertia
@@ -96,7 +96,7 @@ def trim_text(towed, density_altitude):
     str
     """
     where = (f"{towed.airspeed / KNOT:.0f} KEAS, density altitude "
-             f"{density_altitude / FOOT:.0f} ft")
+             f"{density_altitude:.0f} m")  # SI: a US report quotes it in ft (report_text)
     if towed.converged:
         return f"at the towed trim, alpha {np.degrees(towed.alpha):.3g} deg ({where})"
     return f"at alpha 0: no towed trim at {where} ({towed.message})"

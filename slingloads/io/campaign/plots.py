@@ -1,9 +1,10 @@
 """Plots of the campaign (object API only: every function returns a new Figure).
 
-Angles in degrees; airspeeds in kt; density altitudes and cable lengths in ft, as the
-campaign's matrix is defined (Study rows in ft, in both unit systems); areas, masses and
-accelerations in the unit system asked for (``"SI"``: m^2, kg, m/s^2; ``"US"``: ft^2, lb,
-ft/s^2). The histories come from the campaign result's store.
+Angles in degrees; airspeeds in kt (both unit systems); density altitudes, cable lengths,
+areas, masses and accelerations in the unit system asked for (``"SI"``: m, m, m^2, kg,
+m/s^2; ``"US"``: ft, in, ft^2, lb, ft/s^2), as every report writes each quantity
+(:func:`~slingloads.io.common.report.quantity_text`). The histories come from the campaign
+result's store.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from slingloads.analyses.verdicts import CONVERGENT, DIVERGENT, STATIC_DEPARTURE
 from slingloads.constants import FOOT, KNOT, POUND
 from slingloads.errors import InputError
 from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
+from slingloads.io.common.report import quantity_text
 
 YAW = "yaw (heading from flight path) [deg]"
 BETA = "beta [deg]"
@@ -36,7 +38,8 @@ def _small(ax):
 
 def _mass(value, units):
     """A mass [kg] in a title: in kg (SI) or lb (US), to the unit."""
-    return f"{value:.0f} kg" if units == "SI" else f"{value / POUND:.0f} lb"
+    return quantity_text(round(value) if units == "SI" else round(value / POUND) * POUND,
+                         "mass", units, digits=12)
 
 
 def _condition(row, skip=(), neutral_area=None, units="SI"):
@@ -54,9 +57,9 @@ def _condition(row, skip=(), neutral_area=None, units="SI"):
         parts.append(f"mass {row.get('mass case', '')} {_mass(row['mass [kg]'], units)}"
                      .replace("  ", " "))
     if "density altitude [m]" not in skip and "density altitude [m]" in row:
-        parts.append(f"{row['density altitude [m]'] / FOOT:.0f} ft HD")
+        parts.append(f"{quantity_text(row['density altitude [m]'], 'altitude', units)} HD")
     if "cable length [m]" not in skip and "cable length [m]" in row:
-        parts.append(f"cable {row['cable length [m]'] / FOOT:.0f} ft")
+        parts.append(f"cable {quantity_text(row['cable length [m]'], 'length', units)}")
     if "carrier" not in skip and "carrier" in row:
         parts.append(f"carrier {row['carrier']}")
     return ", ".join(parts)
@@ -64,6 +67,13 @@ def _condition(row, skip=(), neutral_area=None, units="SI"):
 
 def _values(frame, column, scale=1.0, fmt="{:.0f}"):
     return "/".join(fmt.format(v * scale) for v in sorted(frame[column].unique()))
+
+
+def _quantities(frame, column, kind, units):
+    """The distinct SI values of ``column`` in report units: ``0/1,524 m``, ``720/1,200 in``."""
+    values = [quantity_text(v, kind, units) for v in sorted(frame[column].unique())]
+    unit = values[0].rsplit(" ", 1)[1] if values else ""
+    return "/".join(v.rsplit(" ", 1)[0] for v in values) + f" {unit}"
 
 
 def _area(units):
@@ -96,8 +106,8 @@ def plot_selection(result, units="SI"):
     masses = (_values(m, "mass [kg]") + " kg" if units == "SI"
               else _values(m, "mass [kg]", 1 / POUND) + " lb")
     fig.suptitle(f"over {_values(m, 'airspeed EAS [m/s]', 1 / KNOT)} KEAS, masses "
-                 f"{masses}, {_values(m, 'density altitude [m]', 1 / FOOT)}"
-                 f" ft HD, cables {_values(m, 'cable length [m]', 1 / FOOT)} ft, carrier "
+                 f"{masses}, {_quantities(m, 'density altitude [m]', 'altitude', units)}"
+                 f" HD, cables {_quantities(m, 'cable length [m]', 'length', units)}, carrier "
                  f"{'/'.join(dict.fromkeys(m['carrier']))}; neutral area "
                  f"{result.neutral.area * scale:.3g} {unit}", fontsize=7, y=0.995)
     for ax in axes:
@@ -151,9 +161,9 @@ def _label(row, factor, units="SI"):
     if factor == "airspeed EAS [m/s]":
         return f"{value / KNOT:.0f} KEAS"
     if factor == "density altitude [m]":
-        return f"{value / FOOT:.0f} ft density altitude"
+        return f"{quantity_text(value, 'altitude', units)} density altitude"
     if factor == "cable length [m]":
-        return f"cable {value / FOOT:.0f} ft"
+        return f"cable {quantity_text(value, 'length', units)}"
     if factor == "mass case":
         return f"mass {value} ({_mass(row['mass [kg]'], units)})"
     return f"carrier {value}"
@@ -210,12 +220,13 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
             what = ("yaw-mode damping ratio" if column.startswith("yaw")
                     else "largest real part")
             ax.set(xlabel="airspeed [KEAS]", ylabel=f"parachute area [{unit}]",
-                   title=f"{what}, {h / FOOT:.0f} ft density altitude")
+                   title=f"{what}, {quantity_text(h, 'altitude', units)} density altitude")
             _small(ax)
             _legend(ax, fontsize=6, loc="upper right")
     c = stability.condition
     fig.suptitle(f"mass {c['mass case']} {_mass(c['mass [kg]'], units)}, cable "
-                 f"{c['cable length [m]'] / FOOT:.0f} ft, carrier {c['carrier']}; neutral "
+                 f"{quantity_text(c['cable length [m]'], 'length', units)}, carrier "
+                 f"{c['carrier']}; neutral "
                  f"area {neutral_area * scale:.3g} {unit}", fontsize=8, y=0.995)
     return fig
 
@@ -262,8 +273,10 @@ def plot_no_parachute(result, units="SI"):
     system = next(iter(study.systems.values()))
     rate = (f"{study.rate:g} m/s^2" if units == "SI"
             else f"{study.rate / FOOT:.3g} ft/s^2")
-    fig.suptitle(f"full tail, no parachute; cable {system.cable.length / FOOT:.0f} ft, "
-                 f"{system.density_altitude / FOOT:.0f} ft HD, hovering carrier; ramp "
+    fig.suptitle(f"full tail, no parachute; cable "
+                 f"{quantity_text(system.cable.length, 'length', units)}, "
+                 f"{quantity_text(system.density_altitude, 'altitude', units)} HD, hovering "
+                 f"carrier; ramp "
                  f"{rate} from {study.onset:g} s", fontsize=8, y=0.999)
     return fig
 

@@ -29,7 +29,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads import __version__
-from slingloads.constants import FOOT, KNOT, POUND, POUND_FORCE
+from slingloads.constants import KNOT, POUND
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
 from slingloads.io.common.ownership import PARQUET_KEY
@@ -37,9 +37,15 @@ from slingloads.io.common.report import (
     check_units,
     column_blocks,
     explain_infinite,
+    in_report_units,
+    labelled,
+    quantity_text,
+    report_unit,
+    report_value,
     warning_sections,
 )
 from slingloads.io.common.report_writer import ReportKind, write_report
+from slingloads.io.common.units import unit_label
 from slingloads.runs.cache import where_stated
 
 ANALYSIS = "campaign"
@@ -65,9 +71,9 @@ CONVENTIONS = (
     "not loads; the loads report states LIMIT or ULTIMATE. Definitions: docs/campaign.md, "
     "docs/multibody.md.",
 )
-#: US conversions of the report, by the SI unit in a header: (factor from SI, unit).
-_US = {"m/s": (1.0 / KNOT, "kt"), "m": (1.0 / FOOT, "ft"), "kg": (1.0 / POUND, "lb"),
-       "N": (1.0 / POUND_FORCE, "lbf"), "m^2": (1.0 / FOOT**2, "ft^2")}
+#: The quantity of a header's SI unit (a length whose name says altitude is an altitude;
+#: every speed of the campaign's tables is an airspeed, in kt in both unit systems).
+_KINDS = {"m/s": "airspeed", "m": "length", "kg": "mass", "N": "force", "m^2": "area"}
 _HEADER = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
 
 
@@ -84,20 +90,30 @@ def _explained(frame):
     return frame
 
 
+def _kind(column):
+    """The quantity kind of an SI column ``name [unit]`` of the campaign's tables, or None."""
+    match = _HEADER.match(str(column))
+    if not match or match.group("unit") not in _KINDS:
+        return None
+    kind = _KINDS[match.group("unit")]
+    return "altitude" if kind == "length" and "altitude" in match.group("name") else kind
+
+
 def in_units(frame, units):
     """A copy of ``frame`` with its SI columns (m/s, m, kg, N, m^2 in the header) in the
-    report units: kt, ft, lb, lbf, ft^2 for ``"US"``; speeds (m/s) in kt in both unit systems
-    (every airspeed of the reports is in knots)."""
+    report units, as every report writes each quantity (:data:`REPORT_UNITS`): airspeeds
+    (m/s) in kt in both unit systems; in US units density altitudes in ft, lengths in in,
+    masses in lb, forces in lbf, areas in ft^2."""
     check_units(units)
     out = frame.copy()
     renames = {}
     for column in out.columns:
-        match = _HEADER.match(str(column))
-        if match and match.group("unit") in _US and (units == "US"
-                                                     or match.group("unit") == "m/s"):
-            factor, unit = _US[match.group("unit")]
-            out[column] = pd.to_numeric(out[column], errors="coerce") * factor
-            renames[column] = f"{match.group('name')} [{unit}]"
+        kind = _kind(column)
+        if kind is None:
+            continue
+        out[column] = in_report_units(pd.to_numeric(out[column], errors="coerce")
+                                      .to_numpy(float), kind, units)
+        renames[column] = labelled(_HEADER.match(str(column)).group("name"), kind, units)
     return out.rename(columns=renames)
 
 
@@ -106,16 +122,14 @@ def _items(rows):
     return pd.DataFrame(rows, columns=["item", "value", "unit", "note"])
 
 
-def _speed(v, units):
-    return v / KNOT, "kt"  # an airspeed: in knots in both unit systems
+def _in(kind):
+    """``value -> (value in report units, unit)`` of a quantity ``kind``, for listings."""
+    return lambda v, units: (report_value(v, kind, units),
+                             unit_label(report_unit(kind, units)))
 
 
-def _length(v, units, ft=True):
-    return (v / FOOT, "ft") if units == "US" and ft else (v, "m")
-
-
-def _area(v, units):
-    return (v / FOOT**2, "ft^2") if units == "US" else (v, "m^2")
+_speed, _length, _altitude, _area = (_in(k) for k in ("airspeed", "length", "altitude",
+                                                       "area"))
 
 
 def definition_table(report, units):
@@ -144,7 +158,7 @@ def definition_table(report, units):
         ("airspeeds EAS", *listing("airspeed EAS [m/s]", lambda v: _speed(v, units)), ""),
         ("mass cases", masses, "lb" if units == "US" else "kg", "inertia scaled with mass"),
         ("density altitudes", *listing("density altitude [m]",
-                                       lambda v: _length(v, units)), "ISA"),
+                                       lambda v: _altitude(v, units)), "ISA"),
         ("cable lengths", *listing("cable length [m]", lambda v: _length(v, units)), ""),
         ("carriers", *listing("carrier"), ""),
         ("manoeuvres", *listing("manoeuvre"), ""),
@@ -214,7 +228,7 @@ def selection_table(report, units):
     multi = check[(check["model"] == "multibody") & (check["test"] == "eigenvalues")]
     rows += [
         ("1.0 x neutral area, 1-DOF yaw model", ", ".join(sorted(set(one["verdict"]))), "",
-         "standard 30 ft/s lateral gusts"),
+         "standard 9.144 m/s lateral gusts (CS 29.341)"),
         ("1.0 x neutral area, multibody eigenvalues",
          f"stable in {(multi['verdict'] == 'stable').sum()} of {len(multi)} conditions", "",
          ", ".join(f"{v}: {n}" for v, n in multi["verdict"].value_counts().items())),
@@ -356,10 +370,10 @@ def _locus(result, units="SI"):
     sel = loci[np.isclose(loci["airspeed EAS [m/s]"], speed)
                & np.isclose(loci["density altitude [m]"], altitude)]
     c = result.stability.condition
-    mass = (f"{c['mass [kg]']:.0f} kg" if units == "SI"
-            else f"{c['mass [kg]'] / POUND:.0f} lb")
-    title = (f"{speed / KNOT:.0f} KEAS, {altitude / FOOT:.0f} ft HD, mass {c['mass case']} "
-             f"{mass}, cable {c['cable length [m]'] / FOOT:.0f} ft, carrier "
+    mass = quantity_text(c["mass [kg]"], "mass", units)
+    title = (f"{speed / KNOT:.0f} KEAS, {quantity_text(altitude, 'altitude', units)} HD, "
+             f"mass {c['mass case']} {mass}, cable "
+             f"{quantity_text(c['cable length [m]'], 'length', units)}, carrier "
              f"{c['carrier']}:\nleast-damped roots, area {sel['area factor [-]'].min():.3g}-"
              f"{sel['area factor [-]'].max():.3g} x neutral")
     return (sel, title)

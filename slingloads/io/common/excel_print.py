@@ -38,6 +38,10 @@ MIN_EXTRA_SCALE = 0.85
 #: A page less full than this, other than the last of its sheet, is a sparse page; a last
 #: page less full than this is spared when a small shrink allows (:func:`height_fit`). [-]
 SPARSE_LAST = 0.35
+#: Least print scale of a sheet [-]: a table wider than the page at this scale prints in
+#: blocks of columns, page after page, each repeating the table's key column (the row's id)
+#: (:func:`column_pages`), never shrunk below it to fit the width.
+MIN_PRINT_SCALE = 0.70
 #: A literal ``&`` (doubled) before what XlsxWriter's ``set_header`` reads as an image code.
 _IMAGE_CODE = re.compile(r"&&(?=G|\[Picture\])")
 
@@ -55,20 +59,83 @@ def orientation_for(pixels, height=0.0):
     """The orientation of a sheet ``pixels`` wide and ``height`` high [px].
 
     Portrait when the sheet fits the portrait width (8 % shrink allowed). Portrait also when
-    a fit-to-width shrink of at most 32 % puts it on a portrait page and that prints it on
-    fewer pages than landscape (:func:`pages_for`, with a 10 % margin on the estimated
-    height), or when it is long (more than a landscape page); else landscape.
+    a fit-to-width shrink to no less than :data:`MIN_PRINT_SCALE` puts it on a portrait page
+    and that prints it on fewer pages than landscape (:func:`pages_for`, with a 10 % margin on
+    the estimated height), or when it is long (more than a landscape page); else landscape.
     """
     width, _ = PRINTABLE["portrait"]
     land_width, land_height = PRINTABLE["landscape"]
     if pixels <= 1.08 * width:
         return "portrait"
-    if pixels <= width / 0.68 and (
+    if pixels <= width / MIN_PRINT_SCALE and (
             height * min(1.0, land_width / pixels) > 1.2 * land_height
             or pages_for("portrait", pixels, 1.1 * height)
             < pages_for("landscape", pixels, 1.1 * height)):
         return "portrait"
     return "landscape"
+
+
+def column_pages(widths, orientation, keys=1):
+    """The print scale and the column page breaks of a sheet whose columns are ``widths``
+    px wide: fitted to the page width when that is at least :data:`MIN_PRINT_SCALE`; else in
+    blocks of columns, each as wide as a page at that scale with the ``keys`` first columns
+    (repeated on every page), printed at the largest scale (at most 1) that fits the widest
+    block.
+
+    Parameters
+    ----------
+    widths : sequence of float
+        Width of each column, in order. [px]
+    orientation : str
+    keys : int
+        Columns printed at the left of every block.
+
+    Returns
+    -------
+    scale : float
+        [-]
+    starts : list of int
+        Index of the first column of each block after the first (none: one block).
+
+    Examples
+    --------
+    Ten columns of 200 px on a landscape page (1026 px): 0.51 x to fit, so two blocks, the
+    key and five columns (1200 px) then the key and four, printed at 0.855 x.
+
+    >>> scale, starts = column_pages([200] * 10, "landscape")
+    >>> round(scale, 3), starts
+    (0.855, [6])
+    """
+    width = PRINTABLE[orientation][0]
+    widths = [float(w) for w in widths]
+    fit = min(1.0, width / max(sum(widths), 1.0))
+    keys = min(int(keys), len(widths))
+    if fit >= MIN_PRINT_SCALE or len(widths) <= keys + 1:
+        return fit, []
+    key = sum(widths[:keys])
+
+    def blocks(room):
+        starts, used, widest = [], key, key
+        for j in range(keys, len(widths)):
+            if used > key and used + widths[j] > room:
+                starts.append(j)
+                used = key
+            used += widths[j]
+            widest = max(widest, used)
+        return starts, widest
+
+    # as few blocks as at the least scale, made as even as they can be (the narrowest room
+    # that gives no more blocks: bisection on the room)
+    starts, widest = blocks(width / MIN_PRINT_SCALE)
+    low, high = key + max(widths[keys:]), width / MIN_PRINT_SCALE
+    for _ in range(40):
+        mid = 0.5 * (low + high)
+        if len(blocks(mid)[0]) <= len(starts):
+            high = mid
+        else:
+            low = mid
+    starts, widest = blocks(high)
+    return min(1.0, width / widest), starts
 
 
 def page_pixels(orientation, pixels):
@@ -89,8 +156,9 @@ def height_fit(orientation, pixels, height):
 
     A sheet whose estimated last page would be under :data:`SPARSE_LAST` full is fitted to
     one page fewer when that shrinks it by at most ``1 -`` :data:`MIN_EXTRA_SCALE` more than
-    the fit to width (the estimate taken 3 % high): a nearly empty last page is spared at a
-    small loss of size. Excel and LibreOffice then choose the scale that meets both the
+    the fit to width, and not below :data:`MIN_PRINT_SCALE` (the estimate taken 3 % high): a
+    nearly empty last page is spared at a small loss of size. Excel and LibreOffice then
+    choose the scale that meets both the
     width and the page count.
 
     Parameters
@@ -107,14 +175,15 @@ def height_fit(orientation, pixels, height):
     """
     pages = 1.03 * height / page_pixels(orientation, pixels)
     whole = math.ceil(pages - 1e-9)
+    fit = min(1.0, PRINTABLE[orientation][0] / max(pixels, 1.0))
     if whole >= 2 and pages - (whole - 1) < SPARSE_LAST and (whole - 1) / pages >= \
-            MIN_EXTRA_SCALE:
+            MIN_EXTRA_SCALE and fit * (whole - 1) / pages >= MIN_PRINT_SCALE:
         return whole - 1
     return 0
 
 
 def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info=None,
-                pages=0, scale=None, orientation=None):
+                pages=0, scale=None, orientation=None, column_breaks=(), key_columns=0):
     """Page setup of one sheet: A4, orientation from its width, fitted to the page width
     (and to ``pages`` pages high, or at a fixed ``scale``), header rows repeated, page header
     and footer.
@@ -140,6 +209,11 @@ def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info
         fit to a page count would drop): at most the fit to the page width.
     orientation : str, optional
         The orientation, when the caller has chosen it (:func:`orientation_for`).
+    column_breaks : sequence of int
+        Columns that start a new printed block (:func:`column_pages`); then ``scale`` is
+        the block's scale, not capped at the fit to the whole width.
+    key_columns : int
+        Columns printed at the left of every block.
 
     Returns
     -------
@@ -149,7 +223,12 @@ def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info
     orientation = orientation or orientation_for(pixels, height)
     ws.set_paper(PAPER_A4)
     _orient(ws, orientation)
-    if scale is not None:
+    if column_breaks:  # blocks of columns, down then over, the key columns on each
+        ws.set_print_scale(max(10, min(100, math.floor(scale))))
+        ws.set_v_pagebreaks(sorted(int(j) for j in column_breaks))
+        if key_columns:
+            ws.repeat_columns(0, int(key_columns) - 1)
+    elif scale is not None:
         width = PRINTABLE[orientation][0]
         ws.set_print_scale(max(10, min(int(scale), math.floor(100 * min(1.0, width / pixels)))))
     else:

@@ -56,8 +56,10 @@ from slingloads.io.common.excel_cells import (
 )
 from slingloads.io.common.excel_print import (
     MIN_EXTRA_SCALE,
+    MIN_PRINT_SCALE,
     PRINTABLE,
     SPARSE_LAST,
+    column_pages,
     height_fit,
     orientation_for,
     page_pixels,
@@ -119,6 +121,15 @@ class _Columns:
     @property
     def pixels(self):
         return sum(_px(w) for w in self.widths.values())
+
+    def print_blocks(self, orientation):
+        """``(scale, column breaks)`` of the sheet printed in ``orientation``: fitted to the
+        page width, or in blocks of columns repeating the first (the row's id) when that
+        fit is below the least print scale
+        (:func:`~slingloads.io.common.excel_print.column_pages`)."""
+        # a column w characters wide shows 7 w px (_set_widths)
+        return column_pages([_DIGIT_PIXELS * self.widths.get(j, 8.43)
+                             for j in range(max(self.widths, default=-1) + 1)], orientation)
 
 
 def _number_formats(columns, number_format):
@@ -229,7 +240,7 @@ def _column_plan(tables, notes=(), formats_of=None):
 #: [characters]
 WIDE_TEXT_WIDTH = 60
 #: Least fit-to-width print scale a wider text column may bring a table sheet to. [-]
-_WIDE_TEXT_SCALE = 0.55
+_WIDE_TEXT_SCALE = MIN_PRINT_SCALE
 
 
 def _wider_text(frame, columns):
@@ -250,6 +261,23 @@ def _wider_text(frame, columns):
     if width / wide.pixels < _WIDE_TEXT_SCALE or pages(wide) > 0.8 * pages(columns):
         return columns
     return wide
+
+
+def _in_blocks(frame, columns):
+    """The column plan of a table sheet that prints in blocks of columns
+    (:meth:`_Columns.print_blocks`) with its wrapped text columns as wide as their longest
+    text, up to a block's width: a row of the other blocks is then one line high, not as
+    many lines as its text wraps to; the plan unchanged when the table fits the width."""
+    orientation = orientation_for(columns.pixels)
+    if not columns.wrapped or not columns.print_blocks(orientation)[1]:
+        return columns
+    room = 0.9 * PRINTABLE[orientation][0] / MIN_PRINT_SCALE - _px(columns.widths.get(0, 0))
+    widths = dict(columns.widths)
+    for j in columns.wrapped:
+        longest = frame.iloc[:, j].astype(str).str.len().max()
+        widths[j] = max(widths[j], min(int(longest) + 1, int((room - 5) / 7)))
+    return _Columns(widths, {j for j in columns.wrapped
+                             if frame.iloc[:, j].astype(str).str.len().max() > widths[j]})
 
 
 def _set_widths(ws, columns):
@@ -420,7 +448,8 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     """
     _check_highlight([frame], highlight, name)
     formats = _number_formats(frame.columns, number_format)
-    columns = _wider_text(frame, _column_plan([frame], formats_of=lambda f: formats))
+    columns = _in_blocks(frame, _wider_text(frame, _column_plan([frame],
+                                                                formats_of=lambda f: formats)))
     title = frame_title(frame, name)
     names = []
     parts = split_sheet_names(name, len(frame), max_rows)
@@ -434,11 +463,15 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
         height = (_table_pixels(frame.iloc[start:stop], columns)
                   + ROW_PIXELS * (len(boxed) + bool(boxed)))
         orientation = orientation_for(columns.pixels, height)
+        scale, column_breaks = columns.print_blocks(orientation)
         print_setup(ws, pixels=columns.pixels, height=height, title_rows=1,
                     sheet_title=title if len(parts) == 1
                     else f"{title}, part {k + 1} of {len(parts)}", info=info,
                     orientation=orientation,
-                    pages=height_fit(orientation, columns.pixels, height))
+                    pages=0 if column_breaks else height_fit(orientation, columns.pixels,
+                                                             height),
+                    scale=100 * scale if column_breaks else None,
+                    column_breaks=column_breaks, key_columns=1)
         _write_table(_SheetWriter(wb, ws, columns.widths), frame.iloc[start:stop], formats,
                      columns, highlight)
         if boxed:
@@ -606,7 +639,7 @@ def _paginate(needs, page):
     return breaks, fills
 
 
-def _page_plan(needs, page):
+def _page_plan(needs, page, fit=1.0):
     """The page breaks of a sheet of blocks and its print scale relative to the fit to the
     page width: of :data:`_SCALES`, the largest that prints the fewest pages with the fewest
     pages under :data:`~slingloads.io.common.excel_print.SPARSE_LAST` full (its last page
@@ -618,6 +651,9 @@ def _page_plan(needs, page):
         Height of each block at the fit to the page width. [px]
     page : float
         Height of a page at that scale, less a margin. [px]
+    fit : float
+        The fit to the page width: no scale takes the print below
+        :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`. [-]
 
     Returns
     -------
@@ -634,12 +670,77 @@ def _page_plan(needs, page):
     ([], 0.95)
     """
     best = None
-    for scale in _SCALES:
+    for scale in [s for s in _SCALES if s == 1.0 or fit * s >= MIN_PRINT_SCALE]:
         breaks, fills = _paginate(needs, page / scale)
         key = (len(fills), sum(f < SPARSE_LAST for f in fills[:-1]))
         if best is None or key < best[0]:
             best = (key, breaks, scale)
     return best[1], best[2]
+
+
+#: Columns of a table that is never split into column blocks (item, value, unit, note).
+_NARROW_COLUMNS = 4
+
+
+def _narrow(sections, number_format=None):
+    """The sections of a sheet of several tables with its wide tables split into column
+    blocks one under another (a heading, then ``part k of n``, each block with the table's
+    first column, the row's id), so that the sheet (whose columns are as wide as the widest
+    cell of any of its tables at that position) prints on a landscape page at no less than
+    :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`: one narrow sheet, not a sheet
+    shrunk or cut across pages. A sheet of one table is left as it is (it prints in blocks of
+    columns, its cells one table that a program reads); so is a sheet that fits."""
+    if sum(s.table is not None for s in sections) < 2:
+        return sections
+    room = 0.95 * PRINTABLE["landscape"][0] / MIN_PRINT_SCALE  # 5 %: the notes' widths
+
+    def widths_of(table):
+        own = _column_plan([table], formats_of=lambda f: _number_formats(f.columns,
+                                                                          number_format))
+        return [_px(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
+
+    def union(rows):
+        return [max((w[k] for w in rows if k < len(w)), default=0.0)
+                for k in range(max((len(w) for w in rows), default=0))]
+
+    tables = {k: widths_of(s.table) for k, s in enumerate(sections) if s.table is not None}
+    if sum(union(list(tables.values()))) <= room:
+        return sections
+    # the narrow tables (item, value, unit, note) keep their columns; each wide table is cut
+    # in blocks that fit beside the columns of every other block (three passes settle it)
+    narrow = [w for w in tables.values() if len(w) <= _NARROW_COLUMNS]
+    wide = [k for k, w in tables.items() if len(w) > _NARROW_COLUMNS]
+    plan = {k: [list(range(1, len(tables[k])))] for k in wide}
+    for _ in range(3):
+        others = union(narrow + [[tables[k][0]] + [tables[k][j] for j in block]
+                                 for k in wide for block in plan[k]])
+        for k in wide:
+            widths = tables[k]
+
+            def at(position, width, others=others):
+                return max(width, others[position]) if position < len(others) else width
+
+            blocks, current, used = [], [], at(0, widths[0])
+            for j in range(1, len(widths)):
+                step = at(len(current) + 1, widths[j])
+                if current and used + step > room:
+                    blocks.append(current)
+                    current, used = [], at(0, widths[0])
+                    step = at(1, widths[j])
+                current.append(j)
+                used += step
+            blocks.append(current)
+            plan[k] = blocks
+    out = []
+    for k, s in enumerate(sections):
+        if k not in plan or len(plan[k]) == 1:
+            out.append(s)
+            continue
+        out.append(Section(s.title, note=s.note, sheet=s.sheet))
+        out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}",
+                        s.table.iloc[:, [0, *block]])
+                for m, block in enumerate(plan[k])]
+    return out
 
 
 def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None,
@@ -673,6 +774,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
         ``[name]``.
     """
     ws = wb.add_worksheet(check_sheet_name(name))
+    sections = _narrow(sections, number_format)
     tables = [s.table for s in sections if s.table is not None]
     _check_highlight(tables, highlight, name)
     columns = _column_plan(tables, [s.note for s in sections],
@@ -700,17 +802,27 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
              for k, (title, lines, table) in enumerate(blocks)]
     height = sum(needs)
     orientation = orientation_for(columns.pixels, height)
-    page = page_pixels(orientation, columns.pixels) * 0.95
-    if one_table:  # rows flow under the repeated header: fitted to a page count
-        breaks, scale = [], None
+    # a table too wide for a readable fit: blocks of columns, the first column (ids) on
+    # each; a sheet of several tables has its wide tables in blocks already (_narrow), one
+    # under another (a column break would cut the others' columns apart)
+    fit_width, column_breaks = columns.print_blocks(orientation)
+    if not one_table:
+        fit_width, column_breaks = min(1.0, PRINTABLE[orientation][0]
+                                       / max(columns.pixels, 1.0)), []
+    page = PRINTABLE[orientation][1] / fit_width * 0.95
+    if one_table and not column_breaks:  # rows flow under the repeated header: fitted to a
+        breaks, scale = [], None        # page count
         pages = height_fit(orientation, columns.pixels, height)
+    elif one_table:
+        breaks, scale, pages = [], 1.0, 0
     else:
-        breaks, scale = _page_plan(needs, page)
+        breaks, scale = _page_plan(needs, page, fit_width)
         pages = 0
-    fit_width = min(1.0, PRINTABLE[orientation][0] / max(columns.pixels, 1.0))
     print_setup(ws, pixels=columns.pixels, height=height, title_rows=title_rows,
                 sheet_title=sheet_title, info=info, orientation=orientation, pages=pages,
-                scale=None if scale in (None, 1.0) else 100 * fit_width * scale)
+                scale=(100 * fit_width * scale if column_breaks
+                       else None if scale in (None, 1.0) else 100 * fit_width * scale),
+                column_breaks=column_breaks, key_columns=1)
     writer = _SheetWriter(wb, ws, columns.widths)
     for k, (title, lines, table) in enumerate(blocks):
         if k in breaks:

@@ -67,6 +67,24 @@ def report_value(value, kind, units):
     return int(round(shown)) if kind in WHOLE_UNIT_KINDS else shown
 
 
+def quantity_text(value, kind, units, digits=4):
+    """One SI value of quantity ``kind`` written with its report unit, for a sentence or a
+    title: the one spelling of each quantity in both unit systems (an altitude to the whole
+    unit, in m or ft; a length in m or in; an airspeed in kt).
+
+    Examples
+    --------
+    >>> quantity_text(1524.0, "altitude", "US"), quantity_text(1524.0, "altitude", "SI")
+    ('5,000 ft', '1,524 m')
+    >>> quantity_text(18.288, "length", "US"), quantity_text(18.288, "length", "SI")
+    ('720 in', '18.29 m')
+    """
+    shown = report_value(value, kind, units)
+    unit = unit_label(report_unit(kind, units))
+    number = f"{shown:,d}" if isinstance(shown, int) else f"{shown:.{digits}g}"
+    return f"{number} {unit}"
+
+
 def plural(count, one, many):
     """``"1 body"``, ``"3 bodies"``: a count with its noun in the right number."""
     return f"{count} {one if count == 1 else many}"

@@ -125,6 +125,10 @@ _QUOTED = re.compile(r"(?<![\w.^/,])(-?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[
                      + "|".join(re.escape(u) for u in _TEXT_UNITS) + r")(?![\w^/])")
 
 
+#: The words that make a quoted length an altitude (``density altitude 1524 m``).
+_ALTITUDE = re.compile(r"altitude (?:of )?$")
+
+
 def _quoted_number(value):
     """A converted number in a sentence: 4 significant digits, whole above 1,000."""
     return f"{value:,.0f}" if abs(value) >= 1000 else f"{value:.4g}"
@@ -142,6 +146,8 @@ def report_text(text, units):
     'load scale 3,929,687 lbf in; peak jerk <= 6.365 ft/s^3'
     >>> report_text("k = -15.2 N m/rad, c = 2,000 N m s/rad", "US")
     'k = -134.5 lbf in/rad, c = 17,701 lbf in s/rad'
+    >>> report_text("density altitude 1524 m, cable 18.29 m", "US")
+    'density altitude 5,000 ft, cable 720.1 in'
     """
     if units != "US" or not isinstance(text, str) or not any(c.isdigit() for c in text):
         return text
@@ -151,6 +157,9 @@ def report_text(text, units):
         if kind is None:
             return match.group(0)
         number = float(match.group(1).replace(",", ""))
+        if kind == "length" and _ALTITUDE.search(text, 0, match.start()):
+            # an altitude is its own quantity (ft in US units, to the foot), never inches
+            return f"{number / FOOT:,.0f} ft"
         if kind == "jerk":  # a rate of acceleration, in the acceleration's family
             return f"{_quoted_number(number / FOOT)} ft/s^3"
         if kind == "rotational stiffness":  # a moment per radian, in the moments' unit

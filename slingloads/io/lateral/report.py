@@ -37,7 +37,6 @@ from slingloads.analyses.hook_angle import (
 )
 from slingloads.analyses.lateral import CARRIER_FORCE_LIMIT
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
-from slingloads.constants import FOOT
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
@@ -152,11 +151,9 @@ def summary_tables(result, units="SI"):
         ("  CG below hub", float(case["CG below hub [m]"]), "length",
          f"factor {case['CG below hub factor [-]']:.3g}"),
         ("  motion", result.motion_id(i), None, str(case["motion description"])),
-        # in SI the paper's feet beside the metres; in US units the report's inches alone
-        # (one unit per quantity: every rope and cable length of a US report is in inches)
+        # one unit per quantity: every rope and cable length in m (SI) or in (US)
         ("  rope length", float(case["rope length [m]"]), "length",
-         (f"{case['rope length [m]'] / FOOT:.4g} ft, " if units == "SI" else "")
-         + f"factor {case['rope length factor [-]']:.3g}"),
+         f"factor {case['rope length factor [-]']:.3g}"),
         ("  body", str(case["body"]), None, f"source: {inp.body_source}"),
         ("  time of the maximum", float(case["t at max |theta1 - theta2| [s]"]), "s", ""),
         ("  cable slack in that case", bool(case["slack [-]"]), None,
@@ -233,9 +230,6 @@ def runs_table(result, units="SI"):
     (Every variant: ``result.study.to_frame()``.)"""
     frame = result.study.case_frame()
     frame.insert(1, "motion id", [result.motion_id(int(c) - 1) for c in frame["case"]])
-    if units == "SI":  # the paper's feet beside the metres; a US report gives inches alone
-        frame.insert(list(frame.columns).index("rope length [m]") + 1, "rope length [ft]",
-                     frame["rope length [m]"] / FOOT)
     frame = convert_columns(frame, {
         "mass [kg]": ("mass", "mass"), "roll inertia [kg m^2]": ("roll inertia", "inertia"),
         "CG below hub [m]": ("CG below hub", "length"),
@@ -264,10 +258,7 @@ def history_table(result, units="SI"):
 
 def modes_table(result, units="SI"):
     """Natural modes about the hanging equilibrium of every body x rope length."""
-    modes = result.modes
-    if units != "SI":  # the paper's feet only beside metres: a US report gives inches alone
-        modes = modes.drop(columns=["rope length [ft]"], errors="ignore")
-    return convert_columns(modes, {"rope length [m]": ("rope length", "length")}, units)
+    return convert_columns(result.modes, {"rope length [m]": ("rope length", "length")}, units)
 
 
 def comparison_station_table(comparison, units="SI"):

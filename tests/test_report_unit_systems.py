@@ -1,0 +1,111 @@
+"""One unit system per report: no text cell of any report of the example (SI) or of the
+second example (the US twin, in US units and in SI) quotes a unit of the other system, and
+a US report writes every length in inches and only altitudes in feet
+(docs/reports.md, "One unit per quantity"). The reference is the cells as the file format
+reads them back (openpyxl), against the unit table of the documentation, not the writer's
+own conversion tables.
+
+Names the user wrote (the multibody manoeuvres' names, the campaign's manoeuvre vocabulary
+``gust +30 ft/s``) are printed as written and left out of the scan."""
+
+from __future__ import annotations
+
+import re
+
+import openpyxl
+import pytest
+
+#: Units of each system, as the reports spell them (docs/reports.md).
+US_UNITS = r"(?:ft\^2|ft/s\^2|ft/s|ft|in|lbf in|lbf ft|lbf|lb in\^2|lb|slug ft\^2|slug/ft\^3|slug)"
+SI_UNITS = r"(?:m\^2|m/s\^2|m/s|m|mm|km|kN m|kN|N m|N|kg m\^2|kg/m\^3|kg|Pa)"
+
+
+def _quoted(units):
+    """A unit quoted after a number (``60 ft``), in a header's brackets (``[ft]``) or alone
+    in a cell (a ``unit`` column)."""
+    return re.compile(rf"(?:\d\s?{units}(?![\w^/])|\[{units}\]|^{units}$)")
+
+
+FOREIGN = {"SI": _quoted(US_UNITS), "US": _quoted(SI_UNITS)}
+#: A length in feet: quoted after a number or in a header; an altitude is the one quantity
+#: a US report writes in ft (its word before it, or "HD" after it).
+FEET = re.compile(r"(?P<before>[\w ]{0,30}?)(?:\d\s?ft|\[ft\])(?![\w^/])(?P<after> HD)?")
+
+
+def _user_names(book):
+    """Names the user wrote that a report prints as written: the multibody manoeuvres' names
+    and the campaign's manoeuvre vocabulary."""
+    from slingloads.analyses.campaign.matrix import MANOEUVRES
+
+    names = set(MANOEUVRES)
+    wb = openpyxl.load_workbook(book, read_only=True)
+    if "MultibodyManoeuvres" in wb.sheetnames:
+        rows = wb["MultibodyManoeuvres"].iter_rows(values_only=True)
+        header = [str(h).split(" [")[0] for h in next(rows)]
+        if "name" in header:
+            k = header.index("name")
+            names |= {str(r[k]) for r in rows if r[k]}
+    return sorted(names, key=len, reverse=True)
+
+
+def _texts(folder):
+    """(workbook, sheet, text) of every text cell of every report in ``folder``."""
+    books = sorted(folder.glob("*.xlsx"))
+    assert len(books) >= 4, books
+    for book in books:
+        wb = openpyxl.load_workbook(book, read_only=True)
+        for ws in wb.worksheets:
+            for row in ws.iter_rows(values_only=True):
+                for value in row:
+                    if isinstance(value, str):
+                        yield book.name, ws.title, value
+
+
+def _faults(units, folder, source):
+    names = _user_names(source)
+    faults = []
+    for book, sheet, text in _texts(folder):
+        for name in names:
+            text = text.replace(name, "<name>")
+        match = FOREIGN[units].search(text)
+        if match:
+            faults.append((book, sheet, match.group(0), text[:120]))
+        if units == "US":
+            for feet in FEET.finditer(text):
+                if "altitude" not in feet.group("before") and not feet.group("after"):
+                    faults.append((book, sheet, "a length in ft", text[:120]))
+    return faults
+
+
+def test_the_examples_si_reports_quote_no_us_unit(example_run_report):
+    """The example's reports (SI): no ft, in, lb, lbf, slug in any text cell (a rope length
+    in metres alone, never in feet beside them)."""
+    from hostile import EXAMPLE
+
+    assert not _faults("SI", example_run_report, EXAMPLE)
+
+
+def test_the_us_twins_reports_keep_their_unit_system(us_twin_reports):
+    """The second example's reports in US units (no m, N, kg, Pa; every length in in, only
+    density altitudes in ft: the campaign's cable 60 ft is ``720 in`` as the multibody
+    report's cable) and in SI (the campaign's conditions, decision and plots' matrix in m:
+    no ``density altitude 0 ft, cable 60 ft``)."""
+    from conftest import US_TWIN
+
+    units, folder = us_twin_reports
+    assert not _faults(units, folder, US_TWIN)
+    texts = [t for _, _, t in _texts(folder) if "KEAS, mass case" in t]
+    assert texts  # the campaign's governing condition, quoted on the Summaries
+    cable = "cable 720 in" if units == "US" else "cable 18.288 m"
+    assert all(cable in t for t in texts), texts[:2]
+
+
+@pytest.mark.parametrize("units, cable, altitude", [("US", "720 in", "5,000 ft"),
+                                                     ("SI", "18.29 m", "1,524 m")])
+def test_one_spelling_per_quantity(units, cable, altitude):
+    """The helper every title uses: 60 ft = 18.288 m = 720 in exactly (1 ft = 0.3048 m);
+    5000 ft = 1524 m exactly, an altitude to the whole unit."""
+    from slingloads.io.common.report import quantity_text
+
+    assert quantity_text(60 * 0.3048, "length", units) == cable
+    assert quantity_text(5000 * 0.3048, "altitude", units) == altitude
