@@ -5,10 +5,21 @@ without rotating and the parachute line is still. The unknowns are the CG positi
 the hook (3), the attitude (yaw, pitch, roll) and, with a hinged parachute, the line angles
 (theta, psi); the equations are zero CG acceleration, zero angular acceleration and zero hinge
 accelerations, solved by :func:`scipy.optimize.root` from the hanging position (cable at the
-drag-over-weight angle, level attitude, line trailing). Below the aerodynamic cut-off (hover)
+drag-over-weight angle, level attitude, line trailing), or from a neighbouring trim
+(``start``: continuation over airspeed, area or mass). Below the aerodynamic cut-off (hover)
 the yaw is free and held at the guess. A trim whose equations cannot be met, that needs a
 slack cable or lies outside a table is reported as such (:attr:`Trim.converged` False and
 :attr:`Trim.message`), never as a number.
+
+**Branch.** The equations also hold on another branch: the helicopter upside down and tail
+first (Euler angles yaw 180, roll 180 deg: the mast pointing down, the hub below the CG, the
+flow from behind, the parachute line forward), an equilibrium of an inverted pendulum that no
+transport flies (unstable; on the sample HC1 at 100 KEAS the batched Newton iterations of
+:func:`trim_many` reached it from the hanging guess). A trim is accepted only on the physical
+branch, the one continuous with the hanging body in hover: the mast's upper half above the
+horizontal (body z axis with an upward earth component) and the heading within 90 deg of the
+guess (the flow from ahead); another equilibrium is refused with its reason and the next
+starting point tried.
 
 **Linearisation** about a trim: central differences of the compiled equations in the
 perturbation coordinates (carrier velocity when free, CG position and velocity, a small
@@ -300,7 +311,7 @@ class _TrimProblem:
     and hinges in g, angular in (m g 1 m) / I).
     """
 
-    def __init__(self, system, airspeed, wind, yaw_guess):
+    def __init__(self, system, airspeed, wind, yaw_guess, start=None):
         eas = system.airspeed if airspeed is None else float(airspeed)
         if not np.isfinite(eas) or eas < 0:
             raise InputError("trim airspeed must be >= 0 [m/s]", eas)
@@ -330,7 +341,8 @@ class _TrimProblem:
         guess += [pitch, roll]
         if self.hinged:
             guess += [self.x0[16], 0.0]
-        self.guess = np.array(guess)
+        self.hanging = np.array(guess)
+        self.guess = self.hanging if start is None else self.unknowns_of(start)
         g = sys_at.gravity
         self.scale = np.ones(N_STATES)
         self.scale[6:9] = self.scale[18:20] = g
@@ -338,18 +350,55 @@ class _TrimProblem:
         self.rows = ([6, 7, 8, 13, 14] + ([] if self.hover else [15])
                      + ([18, 19] if self.hinged else []))
 
+    def unknowns_of(self, start):
+        """The unknowns of a converged trim ``start`` (of a neighbouring system: another
+        airspeed, area or mass with the same layout), as this problem's starting guess: the
+        hub's place under the hook, the tension over this system's weight, the attitude and
+        the line angles."""
+        if not isinstance(start, Trim) or not start.converged:
+            raise InputError("a trim's start must be a converged Trim",
+                             getattr(start, "message", type(start).__name__))
+        start_hinged = (start.system.parachute is not None
+                        and start.system.parachute.kind == "hinged")
+        start_hover = start.system.true_airspeed < start.system.aero_cutoff
+        if (start_hinged, start_hover) != (self.hinged, self.hover):
+            raise InputError("a trim's start must have the same unknowns (parachute model, "
+                             "hover or not) as the trim", start.system.name)
+        d = start.info[_INFO["d_X"]:_INFO["d_Y"] + 1]
+        yaw, pitch, roll = start.attitude
+        u = [d[0], d[1], start.quantity("tension") / self.system.weight]
+        u += [] if self.hover else [yaw]
+        u += [pitch, roll]
+        if self.hinged:
+            u += list(start.state[16:18])
+        return np.array(u, float)
+
+    def branch_rule(self, x):
+        """'' on the physical branch (module notes), else why not."""
+        r = rotation_matrix(x[9:13])
+        if r[2, 2] <= 0.0:
+            return ("the equilibrium found is on another branch: the helicopter upside down "
+                    f"(mast {np.degrees(np.arccos(np.clip(r[2, 2], -1, 1))):.0f} deg from "
+                    "the vertical, the hub below the CG)")
+        yaw = float(euler_angles(x[9:13])[0])
+        if math.cos(yaw - self.yaw_guess) <= 0.0:
+            return ("the equilibrium found is on another branch: heading "
+                    f"{np.degrees(yaw):.0f} deg, more than 90 deg from the start "
+                    f"{np.degrees(self.yaw_guess):.0f} deg (tail first)")
+        return ""
+
     def pitch_scan_guess(self):
-        """A second starting point: the guess with the pitch (every PITCH_SCAN angle) whose
-        scaled residuals are least, the CG placed so that the hub stays where the guess put
-        it (span and swing kept) and a hinged line trailing at the same angle to the flight
-        path as in the first guess."""
+        """A second starting point: the hanging guess with the pitch (every PITCH_SCAN
+        angle) whose scaled residuals are least, the CG placed so that the hub stays where
+        the guess put it (span and swing kept) and a hinged line trailing at the same angle
+        to the flight path as in the hanging guess."""
         k = 3 if self.hover else 4
         pitches = np.radians(PITCH_SCAN)
-        u = np.tile(self.guess, (pitches.size, 1))
+        u = np.tile(self.hanging, (pitches.size, 1))
         for i, pitch in enumerate(pitches):  # (the hub stays where the guess put it)
             u[i, k] = pitch
             if self.hinged:
-                u[i, k + 2] = self.guess[k + 2] + pitch - self.guess[k]
+                u[i, k + 2] = self.hanging[k + 2] + pitch - self.hanging[k]
         states = self.states(u)
         rates, _, _ = evaluate_many(states, self.params, self.drive, self.tables)
         norms = np.linalg.norm(self.scaled(rates), axis=1)
@@ -397,6 +446,9 @@ class _TrimProblem:
             converged = False
             message = (f"the equilibrium equations cannot be met (largest scaled residual "
                        f"{res:.3g}; solver: {solver_message})")
+        elif self.branch_rule(x):
+            converged = False
+            message = self.branch_rule(x)
         elif flag:
             converged = False
             message = f"the only equilibrium found lies outside the {flag_text(flag)}"
@@ -450,7 +502,7 @@ def _solve_one(problem):
     return second if second.converged else found
 
 
-def trim(system, airspeed=None, *, wind=(0.0, 0.0, 0.0), yaw_guess=0.0):
+def trim(system, airspeed=None, *, wind=(0.0, 0.0, 0.0), yaw_guess=0.0, start=None):
     """Steady towed flight of ``system`` (module notes).
 
     Parameters
@@ -462,12 +514,16 @@ def trim(system, airspeed=None, *, wind=(0.0, 0.0, 0.0), yaw_guess=0.0):
         Steady wind, earth axes; the carrier flies at the airspeed relative to it. [m/s]
     yaw_guess : float
         Starting yaw of the search (and the yaw held in hover). [rad]
+    start : Trim, optional
+        A converged trim of a neighbouring system (another airspeed, area or mass, the same
+        parachute model) to start from instead of the hanging guess: continuation. Should
+        it fail, the pitch scan of the hanging guess is tried next, as without it.
 
     Returns
     -------
     Trim
     """
-    return _solve_one(_TrimProblem(system, airspeed, wind, yaw_guess))
+    return _solve_one(_TrimProblem(system, airspeed, wind, yaw_guess, start))
 
 
 #: Newton iterations of :func:`trim_many` before a trim falls back to :func:`trim`.
@@ -498,7 +554,10 @@ def trim_many(requests):
     for members in groups.values():
         solved = _newton([problems[k] for k in members])
         for k, u in zip(members, solved, strict=True):
-            results[k] = (problems[k].result(u, "Newton") if u is not None
+            found = problems[k].result(u, "Newton") if u is not None else None
+            # Newton's steps may cross to another branch or out of a table: then the hybrid
+            # method from the hanging guess and the pitch scan, as trim()
+            results[k] = (found if found is not None and found.converged
                           else _solve_one(problems[k]))
     return results
 
