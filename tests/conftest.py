@@ -6,7 +6,10 @@
   a cache folder of their own: numba writes each cache file atomically, but two processes
   compiling two signatures of one function at once may each rewrite the function's index with
   its own entry only (``numba.core.caching.IndexDataCacheFile.save``), so workers never share
-  one. The folders are kept in pytest's cache folder between runs (compiled once).
+  one. The folders are kept in pytest's cache folder between runs (compiled once). Before the
+  workers start, the controller compiles every kernel once into a seed folder copied into
+  each worker's (``slingloads compile``): a fresh checkout compiles them once, not once per
+  worker.
 * LibreOffice, when present, with one user profile for the session.
 * The example workbook, its study read once for the session, its results (every analysis)
   computed once, its reports made once for the session (``slingloads loads`` and
@@ -24,16 +27,42 @@ import pytest
 from hostile import EXAMPLE, refused_copy
 
 
+def _numba_folder(config, name):
+    if getattr(config, "cache", None) is not None:
+        return Path(config.cache.mkdir(f"numba-{name}"))
+    return Path(tempfile.gettempdir()) / f"slingloads-numba-{name}"
+
+
+def _seed_numba_caches(config):
+    """The controller of parallel workers compiles every kernel once (``slingloads compile``,
+    its two processes on the two cores) into a seed folder and copies it into each worker's
+    folder: the workers load the kernels instead of each compiling them all again."""
+    import shutil
+    import subprocess
+    import sys
+
+    workers = getattr(config.option, "numprocesses", None)
+    if not workers or "NUMBA_CACHE_DIR" in os.environ:
+        return
+    seed = _numba_folder(config, "seed")
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(seed)}
+    done = subprocess.run([sys.executable, "-m", "slingloads.cli", "compile"], env=env,
+                          capture_output=True, text=True)
+    if done.returncode != 0:  # each worker compiles what it needs; the tests say what fails
+        return
+    for k in range(int(workers)):
+        shutil.copytree(seed, _numba_folder(config, f"gw{k}"), dirs_exist_ok=True)
+
+
 def pytest_configure(config):
     worker = getattr(config, "workerinput", {}).get("workerid")
-    if worker is None or "NUMBA_CACHE_DIR" in os.environ:
+    if worker is None:
+        _seed_numba_caches(config)
         return  # one process: the package's own cache (as a user's runs)
-    if getattr(config, "cache", None) is not None:
-        folder = config.cache.mkdir(f"numba-{worker}")
-    else:
-        folder = Path(tempfile.gettempdir()) / f"slingloads-numba-{worker}"
-    os.environ["NUMBA_CACHE_DIR"] = str(folder)  # before numba is imported: read at import;
-    # the commands the tests start inherit it
+    if "NUMBA_CACHE_DIR" in os.environ:
+        return
+    # before numba is imported: read at import; the commands the tests start inherit it
+    os.environ["NUMBA_CACHE_DIR"] = str(_numba_folder(config, worker))
 
 
 @pytest.fixture(autouse=True, scope="session")
