@@ -63,6 +63,7 @@ def _remember_figures():
     from here (each of the many reports of the example draws the same figures). A figure is
     a function of these alone (its bytes are reproducible: ``tests/test_figures.py``); a plot
     function a test replaces has other code, hence another digest, and is drawn."""
+    import atexit
     import hashlib
     import pickle
     from importlib import import_module
@@ -71,6 +72,8 @@ def _remember_figures():
 
     draw = figures.draw_png
     folder = Path(tempfile.mkdtemp(prefix="slingloads-test-figures-"))
+    owner = os.getpid()
+    atexit.register(lambda: os.getpid() == owner and shutil.rmtree(folder, ignore_errors=True))
 
     def digest(func, args, kwargs, dpi):
         target = func
