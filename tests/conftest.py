@@ -20,6 +20,7 @@
 """
 
 import copy
+import shutil
 import os
 import tempfile
 from pathlib import Path
