@@ -20,8 +20,8 @@
 """
 
 import copy
-import shutil
 import os
+import shutil
 import tempfile
 from pathlib import Path
 
