@@ -6,7 +6,11 @@
   a cache folder of their own: numba writes each cache file atomically, but two processes
   compiling two signatures of one function at once may each rewrite the function's index with
   its own entry only (``numba.core.caching.IndexDataCacheFile.save``), so workers never share
-  one. The folders are kept in pytest's cache folder between runs (compiled once).
+  one. The folders are kept in pytest's cache folder between runs (compiled once). Before the
+  workers start, the controller compiles every kernel once into a seed folder copied into
+  each worker's (``slingloads compile``): a fresh checkout compiles them once, not once per
+  worker.
+* Each report figure drawn once per process and its helpers (:func:`_remember_figures`).
 * LibreOffice, when present, with one user profile for the session.
 * The example workbook, its study read once for the session, its results (every analysis)
   computed once, its reports made once for the session (``slingloads loads`` and
@@ -18,6 +22,7 @@
 
 import copy
 import os
+import shutil
 import tempfile
 from pathlib import Path
 
@@ -25,16 +30,96 @@ import pytest
 from hostile import EXAMPLE, refused_copy
 
 
+def _numba_folder(config, name):
+    if getattr(config, "cache", None) is not None:
+        return Path(config.cache.mkdir(f"numba-{name}"))
+    return Path(tempfile.gettempdir()) / f"slingloads-numba-{name}"
+
+
+def _seed_numba_caches(config):
+    """The controller of parallel workers compiles every kernel once (``slingloads compile``,
+    its two processes on the two cores) into a seed folder and copies it into each worker's
+    folder: the workers load the kernels instead of each compiling them all again."""
+    import shutil
+    import subprocess
+    import sys
+
+    workers = getattr(config.option, "numprocesses", None)
+    if not workers or "NUMBA_CACHE_DIR" in os.environ:
+        return
+    seed = _numba_folder(config, "seed")
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(seed)}
+    done = subprocess.run([sys.executable, "-m", "slingloads.cli", "compile"], env=env,
+                          capture_output=True, text=True)
+    if done.returncode != 0:  # each worker compiles what it needs; the tests say what fails
+        return
+    for k in range(int(workers)):
+        shutil.copytree(seed, _numba_folder(config, f"gw{k}"), dirs_exist_ok=True)
+
+
+def _remember_figures():
+    """Every report figure the session draws is drawn once: the PNG bytes of
+    :func:`slingloads.io.common.figures.draw_png` are kept on disk under a digest of what
+    makes them (the plot function's module, name and code, its arguments, the resolution)
+    and returned when the same figure is asked for again, here or in a helper process forked
+    from here (each of the many reports of the example draws the same figures). A figure is
+    a function of these alone (its bytes are reproducible: ``tests/test_figures.py``); a plot
+    function a test replaces has other code, hence another digest, and is drawn."""
+    import atexit
+    import hashlib
+    import pickle
+    from importlib import import_module
+
+    import slingloads.io.common.figures as figures
+
+    draw = figures.draw_png
+    folder = Path(tempfile.mkdtemp(prefix="slingloads-test-figures-"))
+    owner = os.getpid()
+    atexit.register(lambda: os.getpid() == owner and shutil.rmtree(folder, ignore_errors=True))
+
+    def digest(func, args, kwargs, dpi):
+        target = func
+        if isinstance(func, figures.PlotFunction):
+            target = getattr(import_module(func.module), func.name)
+        code = getattr(target, "__code__", None)
+        if code is None:
+            return None
+        name = f"{getattr(target, '__module__', '')}.{getattr(target, '__qualname__', '')}"
+        try:
+            blob = pickle.dumps((name, code.co_code, repr(code.co_consts), args, kwargs, dpi),
+                                protocol=5)
+        except Exception:  # not picklable: drawn, not remembered
+            return None
+        return hashlib.sha256(blob).hexdigest()
+
+    def draw_png(func, args, kwargs, dpi):
+        key = digest(func, args, kwargs, dpi)
+        path = folder / f"{key}.png" if key else None
+        if path is not None and path.is_file():
+            return path.read_bytes()
+        png = draw(func, args, kwargs, dpi)
+        if path is not None:
+            part = path.with_suffix(f".{os.getpid()}.part")
+            part.write_bytes(png)
+            os.replace(part, path)
+        return png
+
+    draw_png.__module__, draw_png.__qualname__ = draw.__module__, draw.__qualname__
+    draw_png.__doc__ = draw.__doc__
+    figures.draw_png = draw_png
+
+
 def pytest_configure(config):
     worker = getattr(config, "workerinput", {}).get("workerid")
-    if worker is None or "NUMBA_CACHE_DIR" in os.environ:
+    if worker is None:
+        _seed_numba_caches(config)
+        if not getattr(config.option, "numprocesses", None):
+            _remember_figures()
         return  # one process: the package's own cache (as a user's runs)
-    if getattr(config, "cache", None) is not None:
-        folder = config.cache.mkdir(f"numba-{worker}")
-    else:
-        folder = Path(tempfile.gettempdir()) / f"slingloads-numba-{worker}"
-    os.environ["NUMBA_CACHE_DIR"] = str(folder)  # before numba is imported: read at import;
-    # the commands the tests start inherit it
+    if "NUMBA_CACHE_DIR" not in os.environ:
+        # before numba is imported: read at import; the commands the tests start inherit it
+        os.environ["NUMBA_CACHE_DIR"] = str(_numba_folder(config, worker))
+    _remember_figures()
 
 
 @pytest.fixture(autouse=True, scope="session")

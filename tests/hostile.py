@@ -16,6 +16,37 @@ from openpyxl import Workbook
 #: The example workbook of the repository.
 EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twin.xlsx"
 
+#: Sideslip step of :func:`light_example`'s fuselage table (the example's is 2 deg). [deg]
+LIGHT_BETA_STEP = 10
+
+
+def light_example():
+    """The example workbook with its fuselage table thinned to every
+    :data:`LIGHT_BETA_STEP` deg of sideslip (same alpha and beta range, one row in five):
+    every sheet and Study row as in the example, read and saved in a fraction of the time.
+    The tests that edit one cell and expect it refused start from it; the tests of numbers
+    use :data:`EXAMPLE`. Made once per process."""
+    if not _LIGHT:
+        import tempfile
+
+        import openpyxl
+
+        book = openpyxl.load_workbook(EXAMPLE)
+        ws = book["FuselageAero"]
+        rows = list(ws.iter_rows(min_row=2, values_only=True))
+        ws.delete_rows(2, ws.max_row)
+        for row in rows:
+            if row[1] % LIGHT_BETA_STEP == 0:
+                ws.append(row)
+        folder = Path(tempfile.mkdtemp(prefix="slingloads-light-example-"))
+        path = folder / EXAMPLE.name
+        book.save(path)
+        _LIGHT.append(path)
+    return _LIGHT[0]
+
+
+_LIGHT = []
+
 
 def small_workbook():
     """``{sheet: [row 1, row 2, ...]}`` of a small valid workbook (every analysis)."""
@@ -209,8 +240,9 @@ def study_row(book, name):
     raise KeyError(name)
 
 
-def refused_copy(tmp_path, capsys, command, edits, sheet, cell, *fragments, base=EXAMPLE):
-    """Apply ``edits`` to a copy of the workbook ``base`` and run ``slingloads COMMAND`` on it:
+def refused_copy(tmp_path, capsys, command, edits, sheet, cell, *fragments, base=None):
+    """Apply ``edits`` to a copy of the workbook ``base`` (default: :func:`light_example`)
+    and run ``slingloads COMMAND`` on it:
     exit code 2, the message naming the file, ``sheet`` and ``cell`` (on the Study sheet a
     parameter's name stands for its value cell) and holding every fragment, no traceback,
     nothing written. ``edits`` is ``{(sheet, cell or Study parameter name): value}`` or a
@@ -219,7 +251,7 @@ def refused_copy(tmp_path, capsys, command, edits, sheet, cell, *fragments, base
 
     from slingloads.cli import main
 
-    book = openpyxl.load_workbook(base)
+    book = openpyxl.load_workbook(light_example() if base is None else base)
     if callable(edits):
         edits(book)
     else:

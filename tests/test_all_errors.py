@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import openpyxl
 import pytest
-from hostile import EXAMPLE
+from hostile import light_example
 
 from slingloads.cli import main
 from slingloads.errors import MAX_REPORTED_ERRORS, InputError, InputErrors
@@ -20,7 +20,7 @@ from slingloads.io.study import read_study
 
 
 def _copy(tmp_path, edits, name="many.xlsx"):
-    book = openpyxl.load_workbook(EXAMPLE)
+    book = openpyxl.load_workbook(light_example())
     for sheet, cell, value in edits:
         book[sheet][cell] = value
     path = tmp_path / name
@@ -51,7 +51,7 @@ def test_errors_in_three_analyses_are_named_together(tmp_path, capsys):
 def test_every_bad_cell_of_the_airframe_sheets(tmp_path):
     """Two bad cells of MassItems and one of Stations, besides a bad Study row: the four are
     named; the analyses' sheets are not checked, and the message says so."""
-    book = openpyxl.load_workbook(EXAMPLE)
+    book = openpyxl.load_workbook(light_example())
     book["MassItems"]["C2"] = "heavy"
     book["MassItems"]["D3"] = None
     book["Stations"]["B3"] = "x"
@@ -99,7 +99,7 @@ def test_one_error_is_reported_as_before(tmp_path):
 def test_reading_stops_at_the_limit(tmp_path):
     """More bad cells than the limit: exactly MAX_REPORTED_ERRORS are named, the first ones in
     the order of the sheet, and the message says reading stopped (bounded work and text)."""
-    book = openpyxl.load_workbook(EXAMPLE)
+    book = openpyxl.load_workbook(light_example())
     ws = book["MassItems"]
     bad = [f"{col}{r}" for r in range(2, ws.max_row + 1) for col in "CDEF"]  # mass, x, y, z
     assert len(bad) > MAX_REPORTED_ERRORS + 5, "the example has enough mass items"
@@ -117,7 +117,7 @@ def test_a_deleted_header_row_is_one_error(tmp_path):
     """A table whose header row was deleted (its first data row moved up into row 1) names
     no column: one error at A1 saying so, with the sheet's columns, not one 'unknown column'
     per number of the row."""
-    book = openpyxl.load_workbook(EXAMPLE)
+    book = openpyxl.load_workbook(light_example())
     book["Stations"].delete_rows(1)
     path = tmp_path / "noheader.xlsx"
     book.save(path)
@@ -134,7 +134,7 @@ def test_the_message_of_many_errors_is_bounded(tmp_path):
     and stays within MAX_MESSAGE_CHARS plus its last lines, saying how many more there are."""
     from slingloads.errors import MAX_MESSAGE_CHARS
 
-    book = openpyxl.load_workbook(EXAMPLE)
+    book = openpyxl.load_workbook(light_example())
     ws = book["MassItems"]
     for r in range(2, ws.max_row + 1):
         for col in "CDEFGHIJ":

@@ -14,7 +14,7 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from hostile import EXAMPLE, refused_copy, study_row
+from hostile import EXAMPLE, light_example, refused_copy, study_row
 
 from slingloads.analyses.chute_sizing import neutral_area
 from slingloads.cli import main
@@ -169,7 +169,7 @@ def test_negative_yaw_inertia(tmp_path, capsys):
 
 def test_non_monotonic_wake_table(tmp_path, capsys):
     """Rule: ChuteWake distances strictly increasing (A4 repeats A3)."""
-    book = openpyxl.load_workbook(EXAMPLE)
+    book = openpyxl.load_workbook(light_example())
     repeat = book["ChuteWake"]["A3"].value
     _bad(tmp_path, capsys, {("ChuteWake", "A4"): repeat}, "ChuteWake", "A4",
          "strictly increasing")

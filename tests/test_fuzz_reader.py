@@ -206,7 +206,7 @@ def check_outcome(book, path=FILE, reader=None):
     return study
 
 
-SETTINGS = settings(max_examples=1100, derandomize=True, deadline=None, database=None,
+SETTINGS = settings(max_examples=600, derandomize=True, deadline=None, database=None,
                     suppress_health_check=list(HealthCheck), print_blob=True)
 
 
@@ -214,18 +214,18 @@ SETTINGS = settings(max_examples=1100, derandomize=True, deadline=None, database
 @SETTINGS
 @given(edits())
 def test_reader_ends_in_a_study_or_a_located_error(edit_list):
-    """1,100 random edits of the small workbook (cells, headers, units, Study parameters,
+    """600 random edits of the small workbook (cells, headers, units, Study parameters,
     rows and sheets): reading gives a study or an InputError naming file, sheet and cell,
     and no numerical warning (an overflow would be a silent infinity or NaN)."""
     check_outcome(apply(edit_list))
 
 
 @pytest.mark.filterwarnings("error::RuntimeWarning")
-@settings(max_examples=500, derandomize=True, deadline=None, database=None,
+@settings(max_examples=300, derandomize=True, deadline=None, database=None,
           suppress_health_check=list(HealthCheck), print_blob=True)
 @given(edits(DYNAMICS))
 def test_dynamics_reader_ends_in_a_study_or_a_located_error(edit_list):
-    """500 random edits of the workbook of the multibody model and the campaign (their Study
+    """300 random edits of the workbook of the multibody model and the campaign (their Study
     rows, the comma-separated lists with their units, MultibodyManoeuvres, HTailAero,
     CampaignMasses, CampaignRuns): a study or an InputError naming file, sheet and cell."""
     check_outcome(apply(edit_list, DYNAMICS))

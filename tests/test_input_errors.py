@@ -14,7 +14,7 @@ import zipfile
 
 import openpyxl
 import pytest
-from hostile import EXAMPLE
+from hostile import EXAMPLE, light_example
 
 from slingloads.cli import main
 from slingloads.errors import InputError
@@ -23,12 +23,13 @@ from slingloads.io.study import read_study
 
 @pytest.fixture(scope="module")
 def example_book():
-    return openpyxl.load_workbook(EXAMPLE)
+    return openpyxl.load_workbook(light_example())
 
 
 def edited(tmp_path, example_book, edit, name="bad.xlsx"):
-    """Save a copy of the example with ``edit(workbook)`` applied; return its path."""
-    book = openpyxl.load_workbook(EXAMPLE)
+    """Save a copy of the example (:func:`hostile.light_example`: its fuselage table thinned)
+    with ``edit(workbook)`` applied; return its path."""
+    book = openpyxl.load_workbook(light_example())
     edit(book)
     path = tmp_path / name
     book.save(path)

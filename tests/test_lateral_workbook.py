@@ -20,7 +20,7 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from hostile import EXAMPLE, refused_copy
+from hostile import EXAMPLE, light_example, refused_copy
 
 from slingloads.analyses.hook_angle import hook_angle_comparison
 from slingloads.analyses.hook_loads import HookLoadOptions
@@ -469,7 +469,7 @@ def test_bad_damping_and_range_rows(tmp_path, capsys, name, value, fragments):
         rows = {row[0].value: row[0].row for row in book["Study"].iter_rows(min_row=2)}
         book["Study"][f"B{rows[name]}"] = value
 
-    book = openpyxl.load_workbook(EXAMPLE)
+    book = openpyxl.load_workbook(light_example())
     row = {r[0].value: r[0].row for r in book["Study"].iter_rows(min_row=2)}[name]
     _bad(tmp_path, capsys, edit, "Study", f"B{row}", *fragments)
 
