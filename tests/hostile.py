@@ -372,3 +372,60 @@ def processes_left(pgid):
         if int(fields[2]) == pgid and fields[0] not in ("Z", "X"):
             left.append(int(entry))
     return left
+
+
+def report_table(path, sheet, title):
+    """(the note under its title, the table) of the section whose title starts with ``title``
+    on a report's ``sheet``; a table too wide for the page is printed in blocks of columns
+    titled ``<title>, part k of n``, each with the first column repeated: the parts are
+    joined again on that column."""
+    import numpy as np
+    import pandas as pd
+
+    raw = pd.read_excel(path, sheet_name=sheet, header=None)
+    first = raw[0].astype(str)
+    start = int(np.nonzero(first.str.startswith(title).to_numpy())[0][0])
+    head = start + 1
+    while str(raw.iloc[head, 1]) == "nan":  # note lines
+        head += 1
+    lines = [str(raw.iloc[r, 0]) for r in range(start + 1, head)]
+    note = " ".join(lines[: lines.index("nan")] if "nan" in lines else lines)  # wrapped lines
+    title = first.iloc[start]
+    if first.iloc[head - 1] != f"{title}, part 1 of {first.iloc[head - 1].rsplit(' ', 1)[-1]}":
+        return note, _block(raw, head)
+    parts = int(first.iloc[head - 1].rsplit(" ", 1)[-1])
+    rows = [int(np.nonzero((first == f"{title}, part {k} of {parts}").to_numpy())[0][0]) + 1
+            for k in range(1, parts + 1)]
+    blocks = [_block(raw, r) for r in rows]
+    joined = blocks[0]
+    for more in blocks[1:]:
+        key = joined.columns[0]
+        assert list(more[key]) == list(joined[key]), (title, key)
+        joined = joined.merge(more, on=key, how="left", validate="one_to_one")
+    return note, joined
+
+
+def _block(raw, head):
+    """The rows under the header row ``head`` of a report table, to its first empty row,
+    with the header's columns (its empty columns dropped)."""
+    import numpy as np
+
+    block = raw.iloc[head + 1:].copy()
+    block.columns = raw.iloc[head]
+    block = block.loc[:, block.columns.notna()]
+    end = block.iloc[:, 0].isna().to_numpy()
+    return block.iloc[: int(np.argmax(end)) if end.any() else len(block)]
+
+
+def column_widths(ws):
+    """The stored width of each column of an openpyxl worksheet ``ws``, A to its last used
+    column, in Excel's character units (8.43 where none is stored). A writer stores one
+    ``<col min max>`` element for a run of equal columns, which openpyxl keeps under its
+    first letter only (``column_dimensions`` of another letter of the run is a new default
+    of 13): the runs are expanded here."""
+    widths = [8.43] * ws.max_column
+    for d in list(ws.column_dimensions.values()):
+        if d.width and d.min:
+            for c in range(d.min, min(d.max or d.min, ws.max_column) + 1):
+                widths[c - 1] = d.width
+    return widths

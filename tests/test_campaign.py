@@ -545,7 +545,7 @@ def test_without_a_towed_trim_the_campaign_stays_at_alpha_0_and_says_so(monkeypa
     assert campaign.neutral.area == pytest.approx(neutral_area(model, FIT_RANGE).area,
                                                   rel=1e-12)
     assert campaign.neutral_condition == ("at alpha 0: no towed trim at 60 KEAS, density "
-                                          "altitude 0 ft (the fuselage table is left)")
+                                          "altitude 0 m (the fuselage table is left)")
     monkeypatch.undo()
     trimmed = tiny()  # the real trim converges at 60 KEAS, 1.7 deg nose down
     assert trimmed.neutral_condition.startswith("at the towed trim")

@@ -15,7 +15,7 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from hostile import DEADLINE, EXAMPLE, study_row
+from hostile import DEADLINE, EXAMPLE, report_table, study_row
 
 from slingloads.analyses.campaign import HISTORY_LABELS, MemoryStore, run_campaign
 from slingloads.cli import main
@@ -321,9 +321,10 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
     assert set(cases["source"]) <= {"CS-29.865 direction", "towed equilibrium", "dynamics",
                                     "hand-listed"}
     assert cases.loc[cases["source"] == "dynamics", "aero"].str.startswith("DYN-").any()
+    _, handoff = report_table(out / "tiny-loads.xlsx", "Dynamics", "Hand-entered against")
+    rows = handoff.set_index("quantity")
+    assert rows.loc["hook cone, fore-and-aft angle from the vertical", "used in the loads"] == 30
     dynamics = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="Dynamics", header=None)
-    rows = dynamics.set_index(0)
-    assert rows.loc["hook cone, fore-and-aft angle from the vertical", 5] == 30
     assert "hand-entered cases" in set(dynamics[1])
     assert (out / "tiny-campaign.xlsx").exists()
 

@@ -13,7 +13,7 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from hostile import EXAMPLE
+from hostile import EXAMPLE, report_table
 
 from slingloads.errors import InputError
 from slingloads.io.study import read_study
@@ -215,17 +215,8 @@ def test_renamed_parameter_is_named(tmp_path):
 
 
 def summary_block(path, title):
-    """The table under the section ``title`` of the Summary sheet."""
-    raw = pd.read_excel(path, sheet_name="Summary", header=None)
-    start = int(np.nonzero(raw[0].astype(str).str.startswith(title).to_numpy())[0][0])
-    head = start + 1
-    while str(raw.iloc[head, 1]) == "nan":  # note lines
-        head += 1
-    block = raw.iloc[head + 1:].copy()
-    block.columns = raw.iloc[head]
-    end = block.iloc[:, 0].isna().to_numpy()
-    note = " ".join(str(raw.iloc[r, 0]) for r in range(start + 1, head))  # wrapped lines
-    return note, block.iloc[: int(np.argmax(end)) if end.any() else len(block)]
+    """The table under the section ``title`` of the Summary sheet (its printed parts joined)."""
+    return report_table(path, "Summary", title)
 
 
 def test_report_states_attitude_and_towed_cables(example_loads_report, example_loads):
