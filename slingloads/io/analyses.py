@@ -11,12 +11,13 @@ Each analysis has a folder ``slingloads/io/<folder>/`` with
   raised while running at the workbook cell its value came from
   (:meth:`slingloads.runs.study.Study.located`);
 * ``report.py``: ``report_kind(study)``, what its report is made of
-  (:class:`~slingloads.io.common.report_writer.ReportKind`), whose figures
+  (:class:`~slingloads.io.common.report_writer.ReportKind`; the loads report's also takes
+  ``checks``, the checks against the other analyses of the run:
+  :mod:`slingloads.io.consistency`), whose figures
   :func:`~slingloads.io.common.report_writer.start_figures` starts drawing while the next
-  analyses are computed; ``write(result, out_dir, stem, units, study)``, writing it through
-  :func:`~slingloads.io.common.report_writer.write_report` with those figures (``figures=``;
-  the loads report also takes ``checks``, the checks against the other analyses of the run:
-  :mod:`slingloads.io.consistency`); ``OUTPUTS``, the names of its files;
+  analyses are computed and which the one writer,
+  :func:`~slingloads.io.common.report_writer.write_report`, writes (:meth:`Analysis.write`);
+  ``OUTPUTS``, the names of its files;
 * ``plots.py``: the figures of the report.
 
 Running an analysis is not here: :mod:`slingloads.runs` runs the analyses of a study, in
@@ -154,14 +155,18 @@ class Analysis:
 
     def write(self, result, out_dir, stem, units, study, figures=None, checks=None,
               findings=None):
-        """Write its report into the run's outputs ``out_dir`` (with the figures started by
-        :meth:`start_figures`, if any); ``checks``, a DataFrame of checks against the other
+        """Write its report into the run's outputs ``out_dir``: the one report writer,
+        :func:`~slingloads.io.common.report_writer.write_report`, of its report module's
+        ``report_kind(study)``, with the figures started by :meth:`start_figures`, if any;
+        ``checks``, a DataFrame of checks against the other
         analyses of the run (:mod:`slingloads.io.consistency`), is passed to the reports that
         show them; ``findings``, the run's findings (:mod:`slingloads.runs.findings`), to
         every report (its Findings sheet)."""
-        extra = {} if checks is None else {"checks": checks}
-        return self.modules().report.write(result, out_dir, stem, units, study,
-                                           figures=figures, findings=findings, **extra)
+        from slingloads.io.common.report_writer import write_report
+
+        report = self.modules().report
+        kind = report.report_kind(study) if checks is None else report.report_kind(study, checks)
+        return write_report(kind, result, out_dir, stem, units, study, figures, findings)
 
 
 #: Every analysis, in the order they are read, run and written.

@@ -2,8 +2,8 @@
 
 The campaign is run by :func:`slingloads.runs.campaign.run` (on the executor the command line
 or the workbook asks for, with the run cache of :mod:`slingloads.runs.cache`); this module
-only writes its report. :func:`write` publishes, all at once or not at
-all (:mod:`slingloads.io.common.atomic`):
+only says what its report is made of (:func:`report_kind`), which the one report writer
+publishes all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-campaign.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*
   (identification, input file and its SHA-256, version, sheets, conventions), *Summary*
@@ -44,7 +44,7 @@ from slingloads.io.common.report import (
     report_value,
     warning_sections,
 )
-from slingloads.io.common.report_writer import ReportKind, write_report
+from slingloads.io.common.report_writer import ReportKind
 from slingloads.io.common.units import unit_label
 from slingloads.runs.cache import where_stated
 
@@ -490,31 +490,3 @@ def report_kind(study):
     from slingloads.io.common.decision import with_decision
 
     return with_decision(REPORT, study)
-
-
-def write(report, out_dir, stem, units, study, figures=None, findings=None):
-    """Write the campaign report (module notes) atomically
-    (:func:`~slingloads.io.common.report_writer.write_report` of :data:`REPORT`).
-
-    Parameters
-    ----------
-    report : CampaignReport
-    out_dir : path-like or AtomicOutputs
-    stem : str
-    units : str
-        ``"SI"`` or ``"US"``.
-    study : Study
-        For the report's identification; its input file is never overwritten.
-    figures : FigureRenderer, optional
-        Already drawing the figures (:func:`~slingloads.io.common.report_writer.
-        start_figures` of :func:`report_kind`); default: drawn now.
-    findings : Findings, optional
-        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
-        default: those of ``study.results``.
-
-    Returns
-    -------
-    list of pathlib.Path
-    """
-    return write_report(report_kind(study), report, out_dir, stem, units, study,
-                        figures, findings=findings)

@@ -3,8 +3,8 @@
 The sizing is run by :func:`slingloads.runs.chute_sizing.run` (linearisation of the fuselage
 and fin yawing moments, neutral static area with its breakdown, wake ratio and line length
 with the carrier-cable check, and the 1-DOF sweep of the parachute area over the gust
-shapes); this module only writes its report. :func:`write` publishes, all at once or not at all
-(:mod:`slingloads.io.common.atomic`):
+shapes); this module only says what its report is made of (:func:`report_kind`), which the
+one report writer publishes all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-chute.xlsx``, print-ready: sheets *Cover* (identification, input file and its
   SHA-256, version, sheets, conventions), *Summary* (condition, neutral area and its
@@ -40,7 +40,7 @@ from slingloads.io.common.report import (
     sample_rows,
     warning_sections,
 )
-from slingloads.io.common.report_writer import ReportKind, write_report
+from slingloads.io.common.report_writer import ReportKind
 from slingloads.io.common.units import unit_label
 
 ANALYSIS = "chute sizing"
@@ -452,32 +452,3 @@ REPORT = ReportKind(tag="chute", title=TITLE, description=DESCRIPTION,
 def report_kind(study):
     """The sizing report of ``study``: :data:`REPORT` with the study's parachute decision."""
     return with_decision(REPORT, study)
-
-
-def write(result, out_dir, stem, units, study, figures=None, findings=None):
-    """Write ``<stem>-chute.xlsx``, ``<stem>-chute-histories.csv`` and ``<stem>-chute-*.png``
-    atomically (:func:`~slingloads.io.common.report_writer.write_report` of
-    :data:`REPORT`).
-
-    Parameters
-    ----------
-    result : ChuteSizingReport
-    out_dir : path-like
-    stem : str
-    units : str
-        ``"SI"`` or ``"US"`` (lengths in in, areas in ft^2, speeds in kt, moments in lbf in).
-    study : Study
-        For the report's identification; its input file is never overwritten.
-    figures : FigureRenderer, optional
-        Already drawing the figures (:func:`~slingloads.io.common.report_writer.
-        start_figures` of :func:`report_kind`); default: drawn now.
-    findings : Findings, optional
-        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
-        default: those of ``study.results``.
-
-    Returns
-    -------
-    list of pathlib.Path
-    """
-    return write_report(report_kind(study), result, out_dir, stem, units, study,
-                        figures, findings=findings)

@@ -1,8 +1,9 @@
 """The lateral-step pendulum report: design angle, its effect on the hook loads, plots.
 
 The study is run by :func:`slingloads.runs.lateral.run` (the sweep, the critical case re-run,
-the natural modes and the hook cases at the recommended angle); this module only writes its
-report. :func:`write` publishes, all at once or not at all (:mod:`slingloads.io.common.atomic`):
+the natural modes and the hook cases at the recommended angle); this module only says what
+its report is made of (:func:`report_kind`), which the one report writer publishes all at
+once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-lateral.xlsx``, print-ready: sheets *Cover* (identification, input file and its
   SHA-256, version, sheets, conventions), *Summary* (largest load angle with nominal inputs
@@ -52,7 +53,7 @@ from slingloads.io.common.report import (
     sample_rows,
     warning_sections,
 )
-from slingloads.io.common.report_writer import ReportKind, write_report
+from slingloads.io.common.report_writer import ReportKind
 from slingloads.io.common.units import unit_label
 
 ANALYSIS = "lateral"
@@ -431,32 +432,3 @@ REPORT = ReportKind(tag="lateral", title=TITLE, description=DESCRIPTION,
 def report_kind(study):
     """The lateral report of ``study`` (:data:`REPORT`)."""
     return REPORT
-
-
-def write(result, out_dir, stem, units, study, figures=None, findings=None):
-    """Write ``<stem>-lateral.xlsx``, ``<stem>-lateral-histories.csv`` and
-    ``<stem>-lateral-*.png`` atomically (:func:`~slingloads.io.common.report_writer.
-    write_report` of :data:`REPORT`).
-
-    Parameters
-    ----------
-    result : LateralReport
-    out_dir : path-like
-    stem : str
-    units : str
-        ``"SI"`` or ``"US"`` (lengths in in, forces in lbf, moments in lbf in, masses in lb).
-    study : Study
-        For the report's identification; its input file is never overwritten.
-    figures : FigureRenderer, optional
-        Already drawing the figures (:func:`~slingloads.io.common.report_writer.
-        start_figures` of :func:`report_kind`); default: drawn now.
-    findings : Findings, optional
-        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
-        default: those of ``study.results``.
-
-    Returns
-    -------
-    list of pathlib.Path
-    """
-    return write_report(REPORT, result, out_dir, stem, units, study, figures,
-                        findings=findings)

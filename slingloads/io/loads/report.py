@@ -2,8 +2,9 @@
 
 The report is a :class:`~slingloads.io.common.report_writer.ReportKind` (:func:`loads_report`,
 :func:`report_kind` for a workbook's study) written by the one report writer,
-:func:`~slingloads.io.common.report_writer.write_report` (:func:`write` for a study,
-:func:`write_loads_outputs` from Python), all at once or not at all
+:func:`~slingloads.io.common.report_writer.write_report` (through the registry,
+:meth:`slingloads.io.analyses.Analysis.write`, for a study; :func:`write_loads_outputs` from
+Python), all at once or not at all
 (:mod:`slingloads.io.common.atomic`), its files named ``<stem>-<name>`` (:data:`OUTPUTS`):
 
 * ``<stem>-loads.xlsx``, the report: *Cover* (identification, input file and its SHA-256,
@@ -1105,11 +1106,41 @@ def loads_report(hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None, *, plots=Tru
         appendices={} if deck is None else {"loads.bdf": partial(_write_deck, deck)})
 
 
-def report_kind(study, checks=None, deck=None):
-    """The loads report of a workbook's study: its Study-sheet options, and the findings of
-    the other analyses of the run (the lateral study of the same run, when there is one, is
-    the evidence on the hook angle; the campaign's hand-off, when the loads took the
-    dynamics' cases); ``checks`` and ``deck`` as in :func:`loads_report`."""
+class _StudyDeck:
+    """The Nastran input file a workbook's study asks for, prepared once per result and unit
+    system (the *Nastran* sheet and ``<stem>-loads.bdf`` show the same deck); an error in
+    its settings is put at the Study-sheet cell it came from."""
+
+    def __init__(self, study):
+        self.study = study
+        self._made = {}
+
+    def __call__(self, result, units):
+        key = (id(result), units)
+        if key not in self._made:
+            options = self.study.report
+            settings = {**options.nastran_settings, "locations": options.nastran_locations}
+            with located(self.study.path):
+                # the result kept beside its deck, so that its id is not reused
+                self._made[key] = (result, prepare_nastran(
+                    result, units=units, inputs_digest=input_digest(self.study), **settings))
+        return self._made[key][1]
+
+
+def _sheets_with_deck(sheets, deck_of, result, units, warnings=()):
+    return sheets(result, units, warnings, deck=deck_of(result, units))
+
+
+def _write_study_deck(deck_of, result, units, path, info):
+    deck_of(result, units).write(path)
+
+
+def report_kind(study, checks=None):
+    """The loads report of a workbook's study: its Study-sheet options (the Nastran input
+    file when it asks for one, prepared from the result in the report's units), and the
+    findings of the other analyses of the run (the lateral study of the same run, when there
+    is one, is the evidence on the hook angle; the campaign's hand-off, when the loads took
+    the dynamics' cases); ``checks`` as in :func:`loads_report`."""
     options, results = study.report, study.results
     findings = {"lateral": results.lateral,
                 "hook angle handoff": results.loads_hook_angle,
@@ -1117,24 +1148,11 @@ def report_kind(study, checks=None, deck=None):
                 "hook angle justification": options.hook_angle_justification,
                 "previous envelope source": options.previous_envelope_source}
     handoff = results.loads_handoff
-    return loads_report(options.hull_pairs, options.hull_stations, findings=findings,
+    kind = loads_report(options.hull_pairs, options.hull_stations, findings=findings,
                         checks=checks, dynamics=None if handoff is None else handoff.comparison,
-                        deck=deck, sfbm_workbook=options.sfbm_workbook)
-
-
-def write(result, out_dir, stem, units, study, figures=None, checks=None, findings=None):
-    """Write the loads report of a study into the run's outputs ``out_dir``
-    (:func:`~slingloads.io.common.report_writer.write_report` of :func:`report_kind`), with
-    the study's identification, report options, warnings and findings, the ``checks``
-    against the other analyses of the run (:mod:`slingloads.io.consistency`), the Nastran
-    input file when the study asks for it, and the run's ``findings`` on the Findings sheet
-    (default: those of ``study.results``)."""
-    options = study.report
-    with located(study.path):
-        deck = None
-        if options.nastran:
-            settings = {**options.nastran_settings, "locations": options.nastran_locations}
-            deck = prepare_nastran(result, units=units, inputs_digest=input_digest(study),
-                                   **settings)
-        return write_report(report_kind(study, checks, deck), result, out_dir, stem, units,
-                            study, figures, findings)
+                        sfbm_workbook=options.sfbm_workbook)
+    if not options.nastran:
+        return kind
+    deck_of = _StudyDeck(study)
+    return replace(kind, sheets=partial(_sheets_with_deck, kind.sheets, deck_of),
+                   appendices={"loads.bdf": partial(_write_study_deck, deck_of)})

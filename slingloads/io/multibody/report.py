@@ -2,8 +2,8 @@
 
 The model is run by :func:`slingloads.runs.multibody.run` (the trim at its airspeed, the
 linear model about it and every manoeuvre, all runs integrated together); this module only
-writes its report. :func:`write` publishes, all at once or not at
-all (:mod:`slingloads.io.common.atomic`):
+says what its report is made of (:func:`report_kind`), which the one report writer publishes
+all at once or not at all (:mod:`slingloads.io.common.atomic`):
 
 * ``<stem>-multibody.xlsx``, print-ready (:mod:`slingloads.io.common.excel`): sheets *Cover*
   (identification, input file and its SHA-256, version, sheets, conventions), *Summary*
@@ -43,7 +43,7 @@ from slingloads.io.common.report import (
     split_unit,
     warning_sections,
 )
-from slingloads.io.common.report_writer import ReportKind, write_report
+from slingloads.io.common.report_writer import ReportKind
 from slingloads.io.common.units import unit_label
 from slingloads.io.multibody.figure_data import history_panels, view_points
 
@@ -360,32 +360,3 @@ def report_kind(study):
     from slingloads.io.common.decision import with_decision
 
     return with_decision(REPORT, study)
-
-
-def write(result, out_dir, stem, units, study, figures=None, findings=None):
-    """Write ``<stem>-multibody.xlsx``, ``-multibody-histories.csv`` and the PNG plots
-    atomically (:func:`~slingloads.io.common.report_writer.write_report` of
-    :data:`REPORT`).
-
-    Parameters
-    ----------
-    result : MultibodyReport
-    out_dir : path-like
-    stem : str
-    units : str
-        ``"SI"`` or ``"US"``.
-    study : Study
-        For the report's identification; its input file is never overwritten.
-    figures : FigureRenderer, optional
-        Already drawing the figures (:func:`~slingloads.io.common.report_writer.
-        start_figures` of :func:`report_kind`); default: drawn now.
-    findings : Findings, optional
-        The run's findings (:mod:`slingloads.runs.findings`) for the Findings sheet;
-        default: those of ``study.results``.
-
-    Returns
-    -------
-    list of pathlib.Path
-    """
-    return write_report(report_kind(study), result, out_dir, stem, units, study,
-                        figures, findings=findings)
