@@ -16,7 +16,8 @@ Reading a workbook:
   cell its value came from.
 
 Writing a report: :mod:`~slingloads.io.common.excel` (the workbook writer, with its parts
-``excel_cells``, ``excel_print``, ``excel_tables`` and ``excel_images``),
+``excel_cells``, ``excel_print``, ``excel_tables``, ``excel_sections`` and
+``excel_images``),
 :mod:`~slingloads.io.common.report`, :mod:`~slingloads.io.common.cover`,
 :mod:`~slingloads.io.common.formats`, :mod:`~slingloads.io.common.csvout`,
 :mod:`~slingloads.io.common.figures`; publishing the files:

@@ -36,8 +36,9 @@ conventions). A new report sheet therefore needs nothing but its DataFrame (or t
 
 The writer is in parts, each stating what it guarantees: the cells (limits, styles, values
 stored as what they are: :mod:`~slingloads.io.common.excel_cells`), the print setup
-(:mod:`~slingloads.io.common.excel_print`), the table and section sheets
-(:mod:`~slingloads.io.common.excel_tables`) and the plots sheet
+(:mod:`~slingloads.io.common.excel_print`), the table sheets
+(:mod:`~slingloads.io.common.excel_tables`), the sheets of sections
+(:mod:`~slingloads.io.common.excel_sections`) and the plots sheet
 (:mod:`~slingloads.io.common.excel_images`); this module puts a workbook together.
 
 The workbook is written with XlsxWriter, each cell format made once: in memory up to
@@ -80,6 +81,7 @@ from slingloads.io.common.excel_cells import (
 )
 from slingloads.io.common.excel_images import write_images_sheet
 from slingloads.io.common.excel_print import print_setup
+from slingloads.io.common.excel_sections import sheet_blocks, write_sections_sheet
 from slingloads.io.common.excel_tables import (
     Highlight,
     Section,
@@ -89,13 +91,11 @@ from slingloads.io.common.excel_tables import (
     _set_widths,
     format_by_header,
     frame_title,
-    sheet_blocks,
-    write_sections_sheet,
     write_table_sheets,
 )
 
 #: The writer's public names: a report needs this module only (the parts of the writer are in
-#: excel_cells, excel_print, excel_tables and excel_images).
+#: excel_cells, excel_print, excel_tables, excel_sections and excel_images).
 __all__ = ["EXCEL_MAX_ROWS", "IN_MEMORY_CELLS", "Highlight", "Section", "format_by_header",
            "mark_report", "write_cover_sheet", "write_workbook"]
 

@@ -6,9 +6,9 @@ Excel number format per unit, read from the column header or from the row's ``un
 beyond :data:`~slingloads.io.common.excel_cells.MAX_TEXT_WIDTH` characters), header cells
 bold and wrapped, notes wrapped to the table width; panes frozen below the header (and right
 of an id column); a table longer than a sheet is split over ``NAME_1``, ``NAME_2``... with its
-header repeated, never truncated; on a sheet of several sections a long table continues under
-its header row on every printed page; ratio cells above a threshold are filled red
-(:class:`Highlight`, conditional formatting), never the repeated headers.
+header repeated, never truncated; ratio cells above a threshold are filled red
+(:class:`Highlight`, conditional formatting), never the repeated headers. Sheets of several
+sections are laid out by :mod:`slingloads.io.common.excel_sections`.
 """
 
 from __future__ import annotations
@@ -37,7 +37,6 @@ from slingloads.io.common.excel_cells import (
     _ID_WIDTH,
     _LEFT,
     _RIGHT,
-    _TITLE_STYLE,
     _TOP,
     _WRAP,
     _WRAP_GENERAL,
@@ -50,15 +49,12 @@ from slingloads.io.common.excel_cells import (
     _px,
     _SheetWriter,
     _style,
-    check_sheet_name,
     split_sheet_names,
     wrapped_lines,
 )
 from slingloads.io.common.excel_print import (
-    MIN_EXTRA_SCALE,
     MIN_PRINT_SCALE,
     PRINTABLE,
-    SPARSE_LAST,
     column_pages,
     height_fit,
     orientation_for,
@@ -499,102 +495,6 @@ def _note_box(ws, row, lines, columns, n_columns):
     ws.print_area(0, 0, row + len(lines) + 1, max(n_columns - 1, 0) + extra)
 
 
-def _is_long(table, number_format):
-    """A table taller than a printed page with its title."""
-    formats = _number_formats(table.columns, number_format)
-    own = _column_plan([table], formats_of=lambda f: formats)
-    height = _table_pixels(table, own) + 2 * ROW_PIXELS
-    page = page_pixels(orientation_for(own.pixels, height), own.pixels) * 0.95
-    return height > page
-
-
-#: Words left out of a sheet name made from a title.
-_FILLER = frozenset({"a", "an", "and", "at", "by", "for", "in", "of", "on", "the", "to"})
-
-
-def _sheet_name_for(base, title, taken):
-    """A sheet name for a table of sheet ``base`` taken out to a sheet of its own: the base
-    and the first words of the table's title (``Runs-ResultsOfEveryCase``)."""
-    part = re.search(r"\bpart (\d+) of \d+", title)
-    if part:  # a block of a table split for print: "Histories part 2"
-        return _unique(f"{base} part {part.group(1)}", taken)
-    head = re.split(r"[:,;(=]", title)[0]
-    words = [w[:1].upper() + w[1:] for w in re.findall(r"[A-Za-z0-9]+", head)
-             if w.lower() not in _FILLER] or ["Table"]
-    out = f"{base}-"
-    for w in words:
-        if len(out) + len(w) > 31:
-            break
-        out += w
-    return _unique(out.rstrip("-"), taken)
-
-
-def _unique(name, taken):
-    """``name`` (at most 31 characters), or with a number when taken (case ignored)."""
-    name = candidate = name[:31]
-    k = 2
-    while candidate.lower() in taken:
-        candidate = f"{name[:28]}{k}"
-        k += 1
-    taken.add(candidate.lower())
-    return candidate
-
-
-def sheet_blocks(name, sections, number_format=None, taken=()):
-    """The sheets a list of sections is printed on, as (sheet name, content).
-
-    A section naming a ``sheet`` goes to that sheet; one whose table is taller than a page,
-    on a sheet of several tables, goes to a sheet of its own named after the base sheet and
-    the table's title (its header is then
-    repeated by the print setup on every page, never written into the data); when no table
-    is left on the base sheet, the first such table keeps the base name and the notes. A
-    sheet holding one table is a *table sheet*: a DataFrame whose ``attrs`` carry its
-    ``title`` and ``note`` (:func:`write_table_sheets`); any other is a list of sections
-    (:func:`write_sections_sheet`), whose tables each fit on one page.
-
-    Returns
-    -------
-    list of (str, DataFrame or list of Section)
-    """
-    sections = list(sections)
-    tables = [s for s in sections if s.table is not None]
-    taken = {t.lower() for t in taken} | {name.lower()}
-    long = [s for s in tables if s.sheet or (len(tables) > 1
-                                             and _is_long(s.table, number_format))]
-    rest = [s for s in sections if all(s is not x for x in long)]
-    if long and not any(s.table is not None for s in rest) and not long[0].sheet:
-        rest.append(long.pop(0))
-    out = [(name, rest)] if rest else []
-    for s in long:
-        own = s.sheet or _sheet_name_for(name, s.title, taken)
-        taken.add(check_sheet_name(own).lower())
-        out.append((own, [s]))
-    return [(n, secs if (frame := _as_table_sheet(secs)) is None else frame)
-            for n, secs in out]
-
-
-def _as_table_sheet(sections):
-    """The one table of ``sections`` with its title and note in ``attrs``, or None."""
-    tables = [s for s in sections if s.table is not None]
-    if len(tables) != 1:
-        return None
-    own = tables[0]
-    full = own.title or next((s.title for s in sections if s.title), "")
-    # the page header holds the title without its long bracketed remarks (so that a "part k
-    # of n" at its end shows; a short mark such as "(LIMIT)" stays); the text box under the
-    # table gives it whole
-    title = re.sub(r"\s*\([^()]{13,}\)", "", full)
-    text = [full] if title != full else []
-    for s in sections:
-        if s.title and s.title != full:
-            text.append(s.title)
-        if s.note:
-            text.append(s.note)
-    frame = own.table.copy(deep=False)
-    frame.attrs = {**own.table.attrs, "title": title, "note": "\n".join(text)}
-    return frame
-
-
 def _table_pixels(frame, columns):
     """Estimated printed height of a table with its header row. [px]"""
     header = max(wrapped_lines(c, columns.widths.get(j, 10), bold=True)
@@ -607,240 +507,6 @@ def _table_pixels(frame, columns):
                 else 0)
             lines += int(extra.sum())
     return ROW_PIXELS * (header + lines)
-
-
-#: Print scales tried for a sheet of several blocks, relative to the fit to the page width,
-#: largest first (:func:`_page_plan`). [-]
-_SCALES = tuple(x for x in (1.0, 0.95, 0.9, 0.85) if x >= MIN_EXTRA_SCALE)
-
-
-def _paginate(needs, page):
-    """Pages of blocks ``needs`` high on pages ``page`` high [px]: a block that would
-    straddle a page break but fits on a page starts a new one; a longer block flows on.
-
-    Returns
-    -------
-    breaks : list of int
-        The blocks that start a new page.
-    fills : list of float
-        The fill of each page, 0 to 1.
-    """
-    breaks, fills, used = [], [], 0.0
-    for k, need in enumerate(needs):
-        if k and used and used + need > page and need <= page:
-            breaks.append(k)
-            fills.append(used / page)
-            used = 0.0
-        used += need
-        while used > page:
-            fills.append(1.0)
-            used -= page
-    fills.append(used / page)
-    return breaks, fills
-
-
-def _page_plan(needs, page, fit=1.0):
-    """The page breaks of a sheet of blocks and its print scale relative to the fit to the
-    page width: of :data:`_SCALES`, the largest that prints the fewest pages with the fewest
-    pages under :data:`~slingloads.io.common.excel_print.SPARSE_LAST` full (its last page
-    aside).
-
-    Parameters
-    ----------
-    needs : sequence of float
-        Height of each block at the fit to the page width. [px]
-    page : float
-        Height of a page at that scale, less a margin. [px]
-    fit : float
-        The fit to the page width: no scale takes the print below
-        :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`. [-]
-
-    Returns
-    -------
-    breaks : list of int
-        The blocks that start a new page.
-    scale : float
-
-    Examples
-    --------
-    A small block and one of 80 % of a page: 2 pages at full size (the first 25 % full), one
-    page at 0.95.
-
-    >>> _page_plan([250, 800], 1000)
-    ([], 0.95)
-    """
-    best = None
-    for scale in [s for s in _SCALES if s == 1.0 or fit * s >= MIN_PRINT_SCALE]:
-        breaks, fills = _paginate(needs, page / scale)
-        key = (len(fills), sum(f < SPARSE_LAST for f in fills[:-1]))
-        if best is None or key < best[0]:
-            best = (key, breaks, scale)
-    return best[1], best[2]
-
-
-#: Columns of a table that is never split into column blocks (item, value, unit, note).
-_NARROW_COLUMNS = 4
-
-
-def _narrow(sections, number_format=None):
-    """The sections of a sheet of several tables with its wide tables split into column
-    blocks one under another (a heading, then ``part k of n``, each block with the table's
-    first column, the row's id), so that the sheet (whose columns are as wide as the widest
-    cell of any of its tables at that position) prints on a landscape page at no less than
-    :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`: one narrow sheet, not a sheet
-    shrunk or cut across pages. A sheet of one table is left as it is (it prints in blocks of
-    columns, its cells one table that a program reads); so is a sheet that fits."""
-    if sum(s.table is not None for s in sections) < 2:
-        return sections
-    room = 0.95 * PRINTABLE["landscape"][0] / MIN_PRINT_SCALE  # 5 %: the notes' widths
-
-    def widths_of(table):
-        own = _column_plan([table], formats_of=lambda f: _number_formats(f.columns,
-                                                                          number_format))
-        return [_px(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
-
-    def union(rows):
-        return [max((w[k] for w in rows if k < len(w)), default=0.0)
-                for k in range(max((len(w) for w in rows), default=0))]
-
-    tables = {k: widths_of(s.table) for k, s in enumerate(sections) if s.table is not None}
-    if sum(union(list(tables.values()))) <= room:
-        return sections
-    # the narrow tables (item, value, unit, note) keep their columns; each wide table is cut
-    # in blocks that fit beside the columns of every other block (three passes settle it)
-    narrow = [w for w in tables.values() if len(w) <= _NARROW_COLUMNS]
-    wide = [k for k, w in tables.items() if len(w) > _NARROW_COLUMNS]
-    plan = {k: [list(range(1, len(tables[k])))] for k in wide}
-    for _ in range(3):
-        others = union(narrow + [[tables[k][0]] + [tables[k][j] for j in block]
-                                 for k in wide for block in plan[k]])
-        for k in wide:
-            widths = tables[k]
-
-            def at(position, width, others=others):
-                return max(width, others[position]) if position < len(others) else width
-
-            blocks, current, used = [], [], at(0, widths[0])
-            for j in range(1, len(widths)):
-                step = at(len(current) + 1, widths[j])
-                if current and used + step > room:
-                    blocks.append(current)
-                    current, used = [], at(0, widths[0])
-                    step = at(1, widths[j])
-                current.append(j)
-                used += step
-            blocks.append(current)
-            plan[k] = blocks
-    out = []
-    for k, s in enumerate(sections):
-        if k not in plan or len(plan[k]) == 1:
-            out.append(s)
-            continue
-        out.append(Section(s.title, note=s.note, sheet=s.sheet))
-        out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}",
-                        s.table.iloc[:, [0, *block]])
-                for m, block in enumerate(plan[k])]
-    return out
-
-
-def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None,
-                         info=None):
-    """Write titled blocks (notes and tables) one under another on one sheet.
-
-    A sheet whose only table is its last block has the rows down to the table's header
-    frozen and repeated on every printed page (a report writes such a sheet as a table
-    sheet, :func:`sheet_blocks`), and is fitted to one page fewer when its last page would be
-    nearly empty (:func:`~slingloads.io.common.excel_print.height_fit`). Otherwise the first
-    row (the sheet's title) is frozen, no row is repeated, and a block that would straddle a
-    page break but fits on one page starts on a new page, at the print scale
-    (:func:`_page_plan`) that prints the sheet on the fewest pages with the fewest sparse
-    ones; each table keeps its own alignment (numbers under their header).
-
-    Parameters
-    ----------
-    wb : _Workbook
-        The workbook being written.
-    name : str
-        Sheet name.
-    sections : sequence of Section
-    number_format, highlight
-        As in :func:`write_table_sheets`, applied to every table of the sheet.
-    info : ReportInfo, optional
-        Page header and footer.
-
-    Returns
-    -------
-    list of str
-        ``[name]``.
-    """
-    ws = wb.add_worksheet(check_sheet_name(name))
-    sections = _narrow(sections, number_format)
-    tables = [s.table for s in sections if s.table is not None]
-    _check_highlight(tables, highlight, name)
-    columns = _column_plan(tables, [s.note for s in sections],
-                           formats_of=lambda f: _number_formats(f.columns, number_format))
-    _set_widths(ws, columns)
-    blocks = [(s.title, _note_lines(report_text(s.note, wb.units), columns) if s.note else [],
-               s.table)
-              for s in sections]
-    one_table = len(tables) == 1 and sections[-1].table is not None
-    if one_table:
-        header_row = sum(bool(t) + len(n) + (k > 0) for k, (t, n, _) in enumerate(blocks)) + 1
-        ws.freeze_panes(_freeze(tables[0], header_row))
-        title_rows = header_row
-    else:  # the first row is the sheet's title when the first block has no table; the
-        # page header names it, and no row is repeated: only a table sheet repeats its header
-        if bool(blocks) and bool(blocks[0][0]) and blocks[0][2] is None:
-            ws.freeze_panes("A2")
-        title_rows = None
-    # the page header names the content, never the raw sheet name: a title, else the note's
-    # first line
-    sheet_title = next((s.title for s in sections if s.title),
-                       next((s.note.splitlines()[0] for s in sections if s.note), name))
-    needs = [ROW_PIXELS * (bool(title) + len(lines) + (k > 0))
-             + (_table_pixels(table, columns) if table is not None else 0)
-             for k, (title, lines, table) in enumerate(blocks)]
-    height = sum(needs)
-    orientation = orientation_for(columns.pixels, height)
-    # a table too wide for a readable fit: blocks of columns, the first column (ids) on
-    # each; a sheet of several tables has its wide tables in blocks already (_narrow), one
-    # under another (a column break would cut the others' columns apart)
-    fit_width, column_breaks = columns.print_blocks(orientation)
-    if not one_table:
-        fit_width, column_breaks = min(1.0, PRINTABLE[orientation][0]
-                                       / max(columns.pixels, 1.0)), []
-    page = PRINTABLE[orientation][1] / fit_width * 0.95
-    if one_table and not column_breaks:  # rows flow under the repeated header: fitted to a
-        breaks, scale = [], None        # page count
-        pages = height_fit(orientation, columns.pixels, height)
-    elif one_table:
-        breaks, scale, pages = [], 1.0, 0
-    else:
-        breaks, scale = _page_plan(needs, page, fit_width)
-        pages = 0
-    print_setup(ws, pixels=columns.pixels, height=height, title_rows=title_rows,
-                sheet_title=sheet_title, info=info, orientation=orientation, pages=pages,
-                scale=(100 * fit_width * scale if column_breaks
-                       else None if scale in (None, 1.0) else 100 * fit_width * scale),
-                column_breaks=column_breaks, key_columns=1)
-    writer = _SheetWriter(wb, ws, columns.widths)
-    for k, (title, lines, table) in enumerate(blocks):
-        if k in breaks:
-            writer.page_break()
-        if k:
-            writer.blank()
-        if title:
-            writer.append([title], _TITLE_STYLE)
-        for line in lines:
-            writer.append([line])
-        if table is not None:
-            formats = _number_formats(table.columns, number_format)
-            own = _column_plan([table], formats_of=lambda f, x=formats: x)
-            # the sheet's widths, this table's own alignment: a number sits under its header
-            _write_table(writer, table, formats, _Columns(columns.widths, own.wrapped),
-                         highlight)
-    writer.close()
-    return [name]
 
 
 def format_by_header(rules: Sequence[tuple[str, str]],
