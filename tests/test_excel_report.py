@@ -29,9 +29,9 @@ from slingloads.io.common.ownership import MANIFEST_NAME
 from slingloads.io.loads.report import (
     ENVELOPE_CSV_COLUMNS,
     SFBM_CSV_COLUMNS,
-    UNBOUNDED_RATIO,
     write_loads_outputs,
 )
+from slingloads.io.loads.tables import UNBOUNDED_RATIO
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
 
 INCH = 0.0254  # m, exact

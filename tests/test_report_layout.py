@@ -27,11 +27,9 @@ from slingloads.io.common.excel import Section, write_workbook
 from slingloads.io.common.figures import FigureRenderer
 from slingloads.io.common.formats import header_unit, unit_format, value_format
 from slingloads.io.common.report import csv_name, sample_rows
-from slingloads.io.loads.report import (
-    hook_angle_finding,
-    previous_station_status,
-    write_loads_outputs,
-)
+from slingloads.io.loads.report import write_loads_outputs
+from slingloads.io.loads.sheets import hook_angle_finding
+from slingloads.io.loads.tables import previous_station_status
 from slingloads.io.study import read_study
 from slingloads.io.template import write_input_workbook
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
