@@ -132,7 +132,7 @@ def _with_sizing_area(study, campaign):
 
     from slingloads.runs.chute_sizing import sizing_sweep_of
 
-    if getattr(study.inputs, "chute_sizing", None) is None or campaign.rows is not None:
+    if study.inputs.chute_sizing is None or campaign.rows is not None:
         return campaign, None
     area = sizing_sweep_of(study).proposed_area
     if not (math.isfinite(area) and area > 0):

@@ -248,7 +248,7 @@ def sizing_sweep_of(study):
     from slingloads.analyses.towed_attitude import towed_attitude, yaw_model_about
 
     inputs = study.require(ANALYSIS)
-    kept = getattr(study.results, "sizing_sweep", None)
+    kept = study.results.sizing_sweep
     if kept is not None and kept.given is inputs:
         return kept
     given = inputs
@@ -258,7 +258,7 @@ def sizing_sweep_of(study):
         # the attitude the loads' towed cases and the multibody fly
         towed = towed_attitude(system, inputs.model.condition.eas)
         body = system.body
-    elif getattr(study.airframe, "mass_items", None) is not None:
+    elif study.airframe is not None and study.airframe.mass_items is not None:
         from slingloads.models.multibody.rigid_body import RigidBody
 
         body = RigidBody.from_mass_items(study.airframe.mass_items)
@@ -281,10 +281,10 @@ def sizing_sweep_of(study):
 def _towed_system(study):
     """The towed system whose trim gives the sizing's angle of attack: the multibody model's,
     else one assembled from the loads' parts; None when the study has neither."""
-    multibody = getattr(study.inputs, "multibody", None)
+    multibody = study.inputs.multibody
     if multibody is not None:
         return multibody.system
-    loads = getattr(study.inputs, "loads", None)
+    loads = study.inputs.loads
     if loads is None or loads.fuselage is None:
         return None
     from slingloads.analyses.towed_attitude import towed_system

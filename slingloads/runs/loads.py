@@ -155,7 +155,7 @@ def with_towed_system(study, loads):
 
 def towed_system_of(study):
     """The multibody model's towed system of the study, or None without one."""
-    inputs = getattr(study.inputs, "multibody", None)
+    inputs = study.inputs.multibody
     return None if inputs is None else inputs.system
 
 

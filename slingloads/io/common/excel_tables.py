@@ -1,4 +1,4 @@
-"""Table sheets of a report workbook: DataFrames and titled sections written print-ready.
+"""Table sheets of a report workbook: DataFrames written print-ready, alone or in sections.
 
 What this module guarantees: a table's numbers are written at an engineering precision (an
 Excel number format per unit, read from the column header or from the row's ``unit`` column,
