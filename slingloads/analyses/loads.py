@@ -858,14 +858,17 @@ class LoadsResult:
 
     @property
     def case_ids(self):
+        """Ids of the load cases, in the order of the result's first axis (list of str)."""
         return self.cases["case"].tolist()
 
     @property
     def stations(self):
+        """Positions x of the cut stations, in the order of the result's second axis. [m]"""
         return self.study.airframe.stations
 
     @property
     def station_ids(self):
+        """Ids of the cut stations, in the order of :attr:`stations`."""
         return self.study.airframe.station_ids
 
     @property

@@ -113,6 +113,7 @@ class StepGust:
 
     @property
     def label(self):
+        """A short description for tables and legends (amplitude in m/s, times in s)."""
         return f"step {self.amplitude:.3g} m/s"
 
     def velocity(self, t):
@@ -156,14 +157,17 @@ class FiniteGust(StepGust):
 
     @property
     def breakpoints(self):
+        """Times at which it jumps or kinks. [s]"""
         return (self.onset, self.onset + self.duration)
 
     @property
     def end(self):
+        """Time after which the gust no longer changes (``None`` if it never stops). [s]"""
         return self.onset + self.duration
 
     @property
     def label(self):
+        """A short description for tables and legends (amplitude in m/s, times in s)."""
         return f"finite {self.amplitude:.3g} m/s, {self.duration:.3g} s"
 
     def velocity(self, t):
@@ -186,12 +190,23 @@ class FiniteGust(StepGust):
 
 @dataclass(frozen=True)
 class OneMinusCosineGust(FiniteGust):
-    """Discrete 1-cosine gust: v = A/2 (1 - cos(2 pi (t - onset) / duration)) over its duration."""
+    """Discrete 1-cosine gust: v = A/2 (1 - cos(2 pi (t - onset) / duration)) over its duration.
+
+    Parameters
+    ----------
+    amplitude : float
+        Peak lateral gust velocity A; negative for a gust from the left. [m/s]
+    onset : float
+        Start time, >= 0. [s]
+    duration : float
+        Length of the pulse, > 0. [s]
+    """
 
     kind = "1-cosine"
 
     @property
     def label(self):
+        """A short description for tables and legends (amplitude in m/s, times in s)."""
         return f"1-cosine {self.amplitude:.3g} m/s, {self.duration:.3g} s"
 
     def velocity(self, t):
@@ -250,15 +265,18 @@ class SustainedGust(StepGust):
 
     @property
     def breakpoints(self):
+        """Times at which it jumps or kinks. [s]"""
         return (self.onset, self.onset + self.rise_time) if self.rise_time > 0 else (
             self.onset,)
 
     @property
     def end(self):
+        """Time after which the gust no longer changes (``None`` if it never stops). [s]"""
         return self.onset + self.rise_time
 
     @property
     def label(self):
+        """A short description for tables and legends (amplitude in m/s, times in s)."""
         return (f"continuous {self.amplitude:.3g} m/s held, rise {self.rise_time:.3g} s")
 
     def velocity(self, t):
@@ -310,10 +328,12 @@ class HarmonicGust(StepGust):
 
     @property
     def end(self):
+        """Time after which the gust no longer changes (``None`` if it never stops). [s]"""
         return None
 
     @property
     def label(self):
+        """A short description for tables and legends (amplitude in m/s, times in s)."""
         return f"harmonic {self.amplitude:.3g} m/s, period {self.period:.3g} s"
 
     def velocity(self, t):
@@ -538,10 +558,12 @@ class DrydenTurbulence:
 
     @property
     def breakpoints(self):
+        """Times at which it jumps or kinks. [s]"""
         return (self.onset, self.end)
 
     @property
     def end(self):
+        """Time after which the gust no longer changes (``None`` if it never stops). [s]"""
         return self.onset + self.duration
 
     @cached_property
@@ -554,6 +576,7 @@ class DrydenTurbulence:
 
     @property
     def label(self):
+        """A short description for tables and legends (amplitude in m/s, times in s)."""
         return (f"turbulence sigma {self.intensity:.3g} m/s, L {self.scale_length:.3g} m, "
                 f"{self.duration:.3g} s, seed {self.seed}")
 
@@ -639,18 +662,22 @@ class TabulatedGust:
 
     @property
     def breakpoints(self):
+        """Times at which it jumps or kinks. [s]"""
         return (float(self.time[0]),)
 
     @property
     def end(self):
+        """Time after which the gust no longer changes (``None`` if it never stops). [s]"""
         return float(self.time[-1])
 
     @property
     def peak(self):
+        """Largest |v(t)| of the table. [m/s]"""
         return float(np.abs(self.velocity_table).max())
 
     @property
     def label(self):
+        """A short description for tables and legends (amplitude in m/s, times in s)."""
         return f"tabulated, peak {self.peak:.3g} m/s"
 
     def velocity(self, t):

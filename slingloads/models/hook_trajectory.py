@@ -127,14 +127,17 @@ class PiecewiseAcceleration(_Motion):
 
     @property
     def breakpoints(self):
+        """Times at which it jumps or kinks. [s]"""
         return tuple(float(v) for v in self.time)
 
     @property
     def end_time(self):
+        """Time of its last breakpoint, after which it no longer changes. [s]"""
         return float(self.time[-1])
 
     @property
     def peak_acceleration(self):
+        """Largest |acceleration| of the table. [m/s^2]"""
         return float(np.max(np.abs(self.acceleration)))
 
     def describe(self):

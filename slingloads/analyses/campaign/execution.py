@@ -272,6 +272,8 @@ class LocalProcesses(_Executor):
                               "short)") from None
 
     def close(self):
+        """Stop the worker processes once the runs handed to them have finished (cancelling those
+        not started); a second call does nothing."""
         if self._pool is not None:
             self._pool.shutdown(wait=True, cancel_futures=True)
             self._pool = None

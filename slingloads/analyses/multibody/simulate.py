@@ -226,6 +226,7 @@ class RunResult:
 
     @property
     def name(self):
+        """The name of the manoeuvre this run flew."""
         return self.manoeuvre.name
 
     @property

@@ -170,6 +170,7 @@ class ForwardAcceleration(_Trajectory):
 
     @property
     def breakpoints(self):
+        """Times at which it jumps or kinks. [s]"""
         return self.trajectory.breakpoints
 
     @property
@@ -255,6 +256,7 @@ class LateralHookMotion(_Trajectory):
 
     @property
     def breakpoints(self):
+        """Times at which it jumps or kinks. [s]"""
         return self.trajectory.breakpoints
 
     def command(self, t, v0):

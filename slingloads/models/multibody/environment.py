@@ -96,6 +96,7 @@ class WindRamp:
 
     @property
     def breakpoints(self):
+        """Times at which it jumps or kinks. [s]"""
         return (self.onset, self.end_time)
 
     def speed(self, t):
