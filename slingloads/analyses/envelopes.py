@@ -124,8 +124,11 @@ def convex_hull(loads, case_ids, station_index, pair):
     Parameters
     ----------
     loads : ndarray, shape (c, s, 6)
+        Internal loads of every case at every station (Vx, Vy, Vz, Mx, My, Mz). [N, N m]
     case_ids : sequence of str
+        Ids of the ``c`` cases.
     station_index : int
+        The station, 0 <= station_index < s.
     pair : tuple of str
         Component names, e.g. ``("Vy", "Mz")``.
 
@@ -216,8 +219,9 @@ def compare_with_previous(loads, stations, station_ids, previous):
     Parameters
     ----------
     loads : ndarray, shape (c, s, 6)
+        Internal loads of every case at every station (Vx, Vy, Vz, Mx, My, Mz). [N, N m]
     stations : ndarray, shape (s,)
-        [m]
+        Positions x of the cut stations. [m]
     station_ids : sequence of str
     previous : pandas.DataFrame
         Columns ``x [m]``, ``component``, ``min``, ``max`` (SI), one row per station and

@@ -249,7 +249,7 @@ class LoadsStudy:
     previous_envelope : pandas.DataFrame, optional
         Columns ``x [m]``, ``component``, ``min``, ``max`` (SI).
     ultimate_factor : float
-        Factor of safety (CS 29.303: 1.5).
+        Factor of safety (CS 29.303: 1.5), ultimate = factor x limit loads. [-]
     name : str
     dynamics : DynamicsCases, optional
         Cases that come from the multibody dynamics (the campaign's hand-off).
