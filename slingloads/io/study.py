@@ -59,7 +59,24 @@ class WorkbookSource(Source):
         critical case's rope length), else at the Study cell of the parameter its ``field``
         comes from (its schema's ``COMPUTE_FIELDS``), echoing that parameter's value as
         written with its unit (not the model's value); always naming the file
-        (:func:`slingloads.io.common.locate.find_place`)."""
+        (:func:`slingloads.io.common.locate.find_place`).
+
+        Parameters
+        ----------
+        study : Study
+            The study read from this workbook.
+        analysis : str
+            The analysis that raised ``err`` (a name of :data:`~slingloads.runs.study.
+            ANALYSES`).
+        err : InputError
+        context : object, optional
+            What the analysis was doing (:meth:`~slingloads.runs.study.Study.located`).
+
+        Returns
+        -------
+        InputError
+            ``err`` with its file, sheet and cell.
+        """
         entry = _BY_NAME[analysis]
         err = entry.locate(err, study, context)
         cells = StudyCells(self.path, self.cells, self.written, all_parameters(), sheet=None)
@@ -67,7 +84,17 @@ class WorkbookSource(Source):
 
 
 def file_digest(path):
-    """SHA-256 of a file, hex."""
+    """SHA-256 of a file, hex.
+
+    Parameters
+    ----------
+    path : path-like
+
+    Returns
+    -------
+    str
+        64 hexadecimal digits.
+    """
     h = hashlib.sha256()
     with open(path, "rb") as f:
         for chunk in iter(lambda: f.read(1 << 20), b""):
@@ -199,6 +226,11 @@ def run_workbook(path, only=None):
 
 def load_workbook_system(path):
     """The multibody inputs of the workbook at ``path`` (whatever its 'run multibody' says).
+
+    Parameters
+    ----------
+    path : path-like
+        The input workbook (``.xlsx``).
 
     Returns
     -------

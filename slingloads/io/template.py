@@ -84,6 +84,11 @@ def write_input_workbook(path, parameters=None, tables=None, notes=None, inputs=
         Lines added to the README sheet (sources and assumptions of the data).
     inputs : iterable of path-like
         Files that must not be overwritten.
+
+    Returns
+    -------
+    pathlib.Path
+        The workbook written.
     """
     from pathlib import Path
 

@@ -60,7 +60,17 @@ DECISION_FINDING = "parachute decision:"
 
 def compute_order(names):
     """``names`` in the order to compute them: an analysis that feeds others (its result is
-    their input, :data:`FEEDS`) before them, the rest in the order of :data:`ANALYSES`."""
+    their input, :data:`FEEDS`) before them, the rest in the order of :data:`ANALYSES`.
+
+    Parameters
+    ----------
+    names : iterable of str
+        Analyses (names of :data:`ANALYSES`).
+
+    Returns
+    -------
+    list of str
+    """
     names = set(names)
     names = [n for n in ANALYSES if n in names]
     feeders = [n for n in names if set(FEEDS.get(n, ())) & set(names)]
@@ -92,15 +102,44 @@ class Inputs:
     campaign: CampaignInputs | None = None
 
     def of(self, name):
-        """The inputs of analysis ``name`` (None if not given)."""
+        """The inputs of analysis ``name`` (None if not given).
+
+        Parameters
+        ----------
+        name : str
+            A name of :data:`ANALYSES`.
+
+        Returns
+        -------
+        object or None
+            Its field of this object (the types above).
+
+        Raises
+        ------
+        InputError
+            On an unknown name (the valid ones listed).
+        """
         return getattr(self, _field(name))
 
     def set(self, name, value):
-        """Keep ``value`` as the inputs of analysis ``name``."""
+        """Keep ``value`` as the inputs of analysis ``name``.
+
+        Parameters
+        ----------
+        name : str
+            A name of :data:`ANALYSES`.
+        value : object or None
+            Its inputs (the type of its field above).
+        """
         setattr(self, _field(name), value)
 
     def given(self):
-        """The analyses whose inputs are given, in the order of :data:`ANALYSES`."""
+        """The analyses whose inputs are given, in the order of :data:`ANALYSES`.
+
+        Returns
+        -------
+        tuple of str
+        """
         return tuple(n for n in ANALYSES if self.of(n) is not None)
 
 
@@ -203,8 +242,21 @@ class Source:
 
     def locate(self, study, analysis, err, context=None):
         """The error to raise for ``err``, raised while analysis ``analysis`` of ``study``
-        runs; here ``err`` itself (a workbook's source puts it at its cell). ``context``:
-        what the analysis was doing (see :meth:`Study.located`)."""
+        runs; here ``err`` itself (a workbook's source puts it at its cell).
+
+        Parameters
+        ----------
+        study : Study
+        analysis : str
+            The analysis that raised ``err`` (a name of :data:`ANALYSES`).
+        err : InputError
+        context : object, optional
+            What the analysis was doing (see :meth:`Study.located`).
+
+        Returns
+        -------
+        InputError
+        """
         return err
 
 
@@ -254,22 +306,52 @@ class Results:
     study: Study | None = field(default=None, repr=False, compare=False)
 
     def of(self, name):
-        """The result of analysis ``name`` (None if not run)."""
+        """The result of analysis ``name`` (None if not run).
+
+        Parameters
+        ----------
+        name : str
+            A name of :data:`ANALYSES`.
+
+        Returns
+        -------
+        object or None
+            Its field of this object (the types above).
+        """
         return getattr(self, _field(name))
 
     def set(self, name, result):
-        """Keep ``result`` as that of analysis ``name``."""
+        """Keep ``result`` as that of analysis ``name``.
+
+        Parameters
+        ----------
+        name : str
+            A name of :data:`ANALYSES`.
+        result : object or None
+            Its result (the type of its field above).
+        """
         setattr(self, _field(name), result)
 
     def computed(self):
-        """The analyses with a result, in the order of :data:`ANALYSES`."""
+        """The analyses with a result, in the order of :data:`ANALYSES`.
+
+        Returns
+        -------
+        tuple of str
+        """
         return tuple(n for n in ANALYSES if self.of(n) is not None)
 
     def shortfalls(self):
         """What the analyses were asked for and could not compute, one line each: the
         multibody model without a trim (no linear modes, no stability verdict), no swept
         area stable under every gust, no campaign area stable everywhere (and so no dynamics'
-        cases for the loads), no area meeting every criterion of the parachute decision."""
+        cases for the loads), no area meeting every criterion of the parachute decision.
+
+        Returns
+        -------
+        list of str
+            Empty when every analysis computed what it was asked for.
+        """
         out = []
         if self.multibody is not None:
             from slingloads.runs.multibody import shortfalls
@@ -332,6 +414,16 @@ class Study:
     def require(self, name):
         """The inputs of analysis ``name``.
 
+        Parameters
+        ----------
+        name : str
+            A name of :data:`ANALYSES`.
+
+        Returns
+        -------
+        object
+            Its inputs (:class:`Inputs` lists the types).
+
         Raises
         ------
         InputError
@@ -346,8 +438,21 @@ class Study:
     @contextlib.contextmanager
     def located(self, analysis, context=None):
         """Locate an :class:`InputError` raised inside, by analysis ``analysis``, where its
-        value came from (:meth:`Source.locate`); ``context``, what the analysis was doing when
-        that needs saying (the lateral study's critical case: its sweep)."""
+        value came from (:meth:`Source.locate`).
+
+        Parameters
+        ----------
+        analysis : str
+            The analysis run inside the block (a name of :data:`ANALYSES`).
+        context : object, optional
+            What the analysis was doing, when that needs saying (the lateral study's
+            critical case: its sweep).
+
+        Returns
+        -------
+        context manager
+            Raises the located :class:`InputError` in place of the one raised inside.
+        """
         try:
             yield
         except InputError as err:
@@ -356,6 +461,12 @@ class Study:
     def run(self, only=None):
         """Run the analyses the study asks for (or ``only`` these), in order
         (:func:`compute_order`), each after those that feed it.
+
+        Parameters
+        ----------
+        only : iterable of str, optional
+            The analyses to run (names of :data:`ANALYSES`; default: those it asks for,
+            :attr:`asked`).
 
         Returns
         -------
@@ -366,7 +477,19 @@ class Study:
 
 
 def run_one(study, name):
-    """Run analysis ``name`` of ``study`` alone (its module's ``run(study) -> result``)."""
+    """Run analysis ``name`` of ``study`` alone (its module's ``run(study) -> result``).
+
+    Parameters
+    ----------
+    study : Study
+    name : str
+        A name of :data:`ANALYSES`.
+
+    Returns
+    -------
+    object
+        Its result (:class:`Results` lists the types).
+    """
     if name == "loads":
         from slingloads.runs.loads import run
     elif name == "lateral":
@@ -387,6 +510,12 @@ def run_analysis(study, name):
     campaign's dynamics to the loads, when the study asks for it; the lateral study's
     recommended design angle to the loads' lateral hook cases, when it ran), and keep its
     result in ``study.results``.
+
+    Parameters
+    ----------
+    study : Study
+    name : str
+        A name of :data:`ANALYSES`.
 
     Returns
     -------
