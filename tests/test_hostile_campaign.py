@@ -611,3 +611,64 @@ def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identica
     assert resumed.execution.cached >= 2
     assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
     pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+
+
+def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(dyn, tmp_path):
+    """The one worker of a local Dask cluster (threads, loopback TCP) closed after the
+    second of 8 one-run batches: the scheduler still answers but has no worker, so the
+    batches would wait for one for ever; the campaign ends within the 1 s time-out (plus
+    the worker's own shutting down) with an environment error, and the resume on the same
+    cache finds the runs stored before and gives the metrics of an uninterrupted run."""
+    import contextlib
+
+    distributed = pytest.importorskip("distributed")
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    try:
+        executor = DaskCluster(cluster.scheduler_address, 1.0)
+        times = {}
+
+        def progress(done, total):
+            if done == 2:
+                times["killed"] = time.monotonic()
+                for address in list(cluster.scheduler.workers):
+                    cluster.sync(cluster.scheduler.remove_worker, address, stimulus_id="kill",
+                                 close=True)
+
+        with pytest.raises(OutputError, match="no worker left"):
+            run_campaign(campaign, executor=executor, store=RunCache(tmp_path / "cache"),
+                         batch_size=1, progress=progress)
+        assert time.monotonic() - times["killed"] < 5.0
+    finally:
+        with contextlib.suppress(TimeoutError, OSError):
+            cluster.close(timeout=2)
+    resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
+    assert resumed.execution.cached >= 2
+    assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
+def test_a_fall_back_mid_campaign_still_reads_the_runs_found_before(tmp_path):
+    """Two runs: one stored, the other's shard folder a named pipe (so its entry cannot be
+    read nor written). The first is found, the second computed and kept in memory when the
+    cache falls back; both are then read back (the first from disk, as found), where the
+    first used to come back as None once the cache had fallen back (TypeError in the
+    campaign)."""
+    store = RunCache(tmp_path / "cache")
+    found, other = "ab" + "1" * 62, "cd" + "2" * 62
+    record = _record()
+    store.put(found, record)
+    os.mkfifo(store._path(other).parent)
+    again = RunCache(tmp_path / "cache")
+    for key in (found, other):
+        again.expect(key, ROWS)
+    assert found in again and other not in again
+    again.put(other, _record(seed=1))
+    assert not again.usable
+    metrics, histories = again.get(found)
+    assert metrics == record[0] and np.array_equal(histories, record[1])
+    assert again.get(other) is not None

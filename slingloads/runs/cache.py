@@ -244,8 +244,8 @@ class RunCache:
         """
         if key in self._memory:
             return self._memory[key]
-        if not self.usable:
-            return None
+        if not self.usable and key not in self._valid:
+            return None  # (an entry found usable before the fall-back is still read)
         record = self._read(key)
         if record is None and key in self._valid:
             raise OutputError("a run of the cache changed while the campaign ran (another "
