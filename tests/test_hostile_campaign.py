@@ -672,3 +672,16 @@ def test_a_fall_back_mid_campaign_still_reads_the_runs_found_before(tmp_path):
     metrics, histories = again.get(found)
     assert metrics == record[0] and np.array_equal(histories, record[1])
     assert again.get(other) is not None
+
+
+def test_the_campaign_command_names_an_output_loop_so(dyn, tmp_path, capsys):
+    """--out a link to itself on the campaign command (whose cache is checked to lie
+    outside --out first): the message says symbolic-link loop and names --out, not the
+    cache ('cannot be resolved (RuntimeError)' before); nothing is written."""
+    loop = tmp_path / "loop"
+    loop.symlink_to(loop)
+    code = main(["campaign", str(dyn), "--out", str(loop), "--cache", str(tmp_path / "c"),
+                 "--quiet"])
+    err = capsys.readouterr().err
+    assert code != 0 and "symbolic-link loop" in err and str(loop) in err, err
+    assert "cannot be resolved" not in err and not (tmp_path / "c").exists()

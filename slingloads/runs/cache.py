@@ -410,9 +410,10 @@ def check_outside(cache_dir, out_dir):
     try:
         cache = Path(cache_dir).resolve()
         out = Path(out_dir).resolve()
-    except (OSError, RuntimeError) as err:  # a symbolic-link loop, a name too long
-        raise OutputError(f"the run cache or output folder cannot be resolved "
-                          f"({type(err).__name__})", cache_dir) from None
+    except (OSError, RuntimeError):  # a symbolic-link loop, a name too long
+        # neither can then hold the other: the output folder's own check names what is
+        # wrong with it, and a cache that cannot be used is a warning (module notes)
+        return
     if cache == out or out in cache.parents:
         raise InputError("the run cache must lie outside the output folder, which is replaced "
                          "as a whole when the reports are published; choose another --cache",
