@@ -175,7 +175,7 @@ MAX_WORKERS = 64
 #: command stays under 1 GB (docs/inputs-and-outputs.md, "Memory"). [bytes]
 MEMORY_BUDGET = 512 * 2**20
 #: Samples of the runs of one campaign batch (the batch is cut to fit). [bytes]
-BATCH_MEMORY = 128 * 2**20
+BATCH_MEMORY = 64 * 2**20
 #: A worker process with the libraries and compiled kernels loaded (measured about
 #: 290 MB). [bytes]
 WORKER_BASE_MEMORY = 300 * 2**20

@@ -333,8 +333,9 @@ def test_interrupted_writes_are_removed_by_the_next_run(tmp_path):
 @pytest.mark.parametrize("layout", ["file", "runs is a file", "read-only"])
 def test_an_unusable_cache_location_falls_back_to_memory(tmp_path, layout):
     """A cache that is a file, whose ``runs`` is a file, or that is read-only: the store
-    keeps the runs in memory (put then get gives them back), with one warning naming the
-    folder; nothing raises."""
+    keeps the runs in a temporary folder of its own (put then get gives them back, equal),
+    removed when the store is collected, with one warning naming the folder; nothing
+    raises."""
     folder = tmp_path / "cache"
     if layout == "file":
         folder.write_text("x")
@@ -349,10 +350,18 @@ def test_an_unusable_cache_location_falls_back_to_memory(tmp_path, layout):
         if layout == "read-only" and os.access(folder, os.W_OK):  # pragma: no cover - root
             pytest.skip("permissions do not bind this user")
         record = _record()
+        store.expect(KEY, ROWS)
         store.put(KEY, record)
-        assert KEY in store and store.get(KEY)[1] is record[1]
+        metrics, histories = store.get(KEY)
+        assert KEY in store and metrics == record[0] and np.array_equal(histories, record[1])
         assert len(store.warnings) == 1 and str(folder) in store.warnings[0]
         assert "runs without it" in store.warnings[0]
+        spill = store._spill_path(KEY)
+        assert spill.is_file() and folder not in spill.parents and not store._memory
+        del store
+        import gc
+        gc.collect()
+        assert not spill.parent.exists()
     finally:
         folder.chmod(0o700) if folder.is_dir() else None
 
@@ -412,14 +421,15 @@ def test_memory_estimates_by_hand():
     assert SAMPLE_BYTES == 85 * 8
     assert run_bytes(3600.0, 1.0) == 2 * 360_003 * 72 + 3601 * 680
     # a batch of runs of 3,600 s sampled every 0.1 s: 36,001 x (680 + 208) bytes a run,
-    # so 4 fit in 128 MB
-    assert batch_limit({"t_end": 3600.0, "output_interval": 0.1}) == 4
+    # so 2 fit in BATCH_MEMORY's 64 MiB (67,108,864 / 31,968,888 = 2.1)
+    assert batch_limit({"t_end": 3600.0, "output_interval": 0.1}) == 2
 
 
 def test_workers_are_capped_by_cores_and_memory_with_a_warning():
     """16 workers asked for on 2 cores: 2 started, the warning gives the request, the cores
     and the estimate; with 1 GB available only 1 fits beside this process (each about
-    300 + 128 + 128 MB); a request within both is left alone, silently."""
+    300 MB of libraries, 128 MB of drive tables, 64 MB of a batch's samples); a request
+    within both is left alone, silently."""
     workers, warning = local_workers(16, {"t_end": 60.0, "output_interval": 0.1}, cores=2,
                                      available=64 * 2**30)
     assert workers == 2 and "16 local workers were asked for, 2 started" in warning
