@@ -695,3 +695,48 @@ def test_the_campaign_command_names_an_output_loop_so(dyn, tmp_path, capsys):
     err = capsys.readouterr().err
     assert code != 0 and "symbolic-link loop" in err and str(loop) in err, err
     assert "cannot be resolved" not in err and not (tmp_path / "c").exists()
+
+
+@pytest.mark.parametrize("moment", ["early", "storing"])
+def test_a_client_killed_outright_resumes_to_identical_results(dyn, tmp_path, moment):
+    """The campaign command killed outright (SIGKILL to its process group, so no clean-up
+    runs): early, at a seeded random time within its first 2 s (reading, compiling or
+    computing, before any run is stored), or as soon as its first run is in the cache
+    (while the others are being written). The earlier report in --out stays byte
+    for byte; the resume on the same cache leaves no temporary file and gives the metrics
+    and histories of an uninterrupted run (each run is integrated on its own)."""
+    import signal
+
+    from hostile import command, publish_earlier, wait_until
+
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    out = tmp_path / "out"
+    publish_earlier(out, {"dyn-campaign.xlsx": b"an earlier report"})
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    rng = random.Random(5)
+    folder = tmp_path / "c" / "campaign"  # $SLINGLOADS_CACHE/campaign
+    proc = command("campaign", dyn, out, start_new_session=True,
+                   env={"SLINGLOADS_PLOT_WORKERS": "0", "SLINGLOADS_CACHE": str(tmp_path / "c")})
+    try:
+        def stored():
+            return any(not p.name.startswith(".") for p in folder.rglob("*.parquet"))
+
+        if moment == "early":  # reading, compiling or computing: before the batch returns
+            time.sleep(rng.uniform(0.2, 2.0))
+        else:
+            wait_until(stored, proc, "the first stored run")
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait(30)
+    finally:
+        if proc.poll() is None:  # pragma: no cover
+            os.killpg(proc.pid, signal.SIGKILL)
+        proc.stderr.close()
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    resumed = run_campaign(campaign, store=RunCache(folder))
+    assert not list(folder.rglob(".part-*"))
+    assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+    assert resumed.execution.cached >= (1 if moment == "storing" else 0)
+    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+    for run in fresh.metrics["run"]:
+        pd.testing.assert_frame_equal(resumed.history(run), fresh.history(run))
