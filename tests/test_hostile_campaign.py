@@ -439,6 +439,17 @@ def test_workers_are_capped_by_cores_and_memory_with_a_warning():
     assert local_workers(2, None, cores=8, available=64 * 2**30) == (2, None)
 
 
+def test_local_workers_are_capped_by_the_command_budget():
+    """8 cores and 64 GB: 8 workers asked for, 2 started, the most whose own memory (256 MiB
+    each, measured 243) fits the 1 GiB budget beside the command's 512 MiB ((1024 - 512) /
+    256 = 2), with a warning naming the budget; the default on 8 cores is cut the same way."""
+    from slingloads.analyses.campaign.memory import budget_workers
+
+    assert budget_workers() == (1024 - 512) // 256 == 2
+    workers, warning = local_workers(8, None, cores=8, available=64 * 2**30)
+    assert workers == 2 and "budget of 1 GB allows 2" in warning and "--scheduler" in warning
+
+
 def test_drive_tables_are_tabulated_a_chunk_at_a_time(monkeypatch):
     """16 runs of 3,600 s (each its own gust, so 16 distinct drive tables of 26 MB: 0.8 GB
     and their stacked copy at once before): integrated in chunks whose tables and copies stay

@@ -528,8 +528,9 @@ def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=
     workers : int, optional
         Local worker processes (default: one per core, or this process alone for fewer than
         :data:`MAX_BATCH` runs, where starting processes would cost more than it saves);
-        capped by the cores and the memory available (:func:`local_workers`: an explicit
-        larger request is cut, with a warning in the executor's ``warnings``).
+        capped by the cores, the memory available and a command's budget
+        (:func:`local_workers`: an explicit larger request is cut, with a warning in the
+        executor's ``warnings``).
     timeout : float
         Scheduler time-out. [s]
     runs : int, optional
