@@ -108,6 +108,34 @@ def test_a_named_pipe_in_the_cache_counts_as_missing(tmp_path):
     assert str(path) in store.warnings[0] and "named pipe" in store.warnings[0]
 
 
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
+def test_input_files_that_are_named_pipes_are_refused_not_waited_on(tmp_path):
+    """The input workbook, or the CSV file a LateralMotions cell names, a FIFO (or a link to
+    one): refused at once as not a regular file (a plain open would wait for a writer); and
+    the opening that follows the check (slingloads.safeopen, following links for inputs)
+    never blocks either, should a pipe be swapped in after it."""
+    from hostile import save_xlsx, small_workbook
+
+    from slingloads.safeopen import NotRegularFile, open_regular
+
+    book = tmp_path / "book.xlsx"
+    os.mkfifo(book)
+    finished, value = _within(10, lambda: read_study(book))
+    assert finished and isinstance(value, InputError) and "not a regular file" in str(value)
+    sheets = small_workbook()
+    sheets["LateralMotions"][2][4] = "pipe.csv"
+    os.mkfifo(tmp_path / "pipe.csv")
+    path = save_xlsx(sheets, tmp_path / "csv.xlsx")
+    finished, value = _within(10, lambda: read_study(path, only=("lateral",)))
+    assert finished and isinstance(value, InputError), value
+    assert "not a regular file" in str(value) and "cell E3" in str(value), value
+    (tmp_path / "link.csv").symlink_to(tmp_path / "pipe.csv")
+    for name in ("pipe.csv", "link.csv"):
+        finished, value = _within(10, lambda name=name: open_regular(tmp_path / name,
+                                                                     follow_links=True))
+        assert finished and isinstance(value, NotRegularFile) and "named pipe" in str(value)
+
+
 def test_output_folder_that_is_a_symbolic_link_loop_is_named_so(tmp_path, capsys):
     """--out a link to itself (ELOOP): the message says loop, not broken link."""
     loop = tmp_path / "loop"
@@ -116,9 +144,19 @@ def test_output_folder_that_is_a_symbolic_link_loop_is_named_so(tmp_path, capsys
         AtomicOutputs(loop).check()
 
 
+def _drip(conn):
+    try:
+        while True:
+            conn.sendall(b"\x00")
+            time.sleep(0.2)
+    except OSError:
+        pass
+
+
 def _server(kind):
     """A fake scheduler on 127.0.0.1: 'dead' (nothing listens), 'silent' (accepts, never
-    answers) or 'garbage' (accepts and sends bytes that are no Dask message)."""
+    answers), 'garbage' (accepts and sends bytes that are no Dask message) or 'drip'
+    (accepts and sends a byte every 0.2 s, never a whole message)."""
     listener = socket.socket()
     listener.bind(("127.0.0.1", 0))
     listener.listen(8)
@@ -140,6 +178,8 @@ def _server(kind):
                     conn.sendall(b"HTTP/1.1 400 Bad Request\r\n\r\n" + bytes(range(256)) * 16)
                 except OSError:
                     pass
+            if kind == "drip":  # a byte now and then, never a whole message
+                threading.Thread(target=_drip, args=(conn,), daemon=True).start()
 
     threading.Thread(target=serve, daemon=True).start()
 
@@ -154,6 +194,7 @@ def _server(kind):
     ("dead", "could not reach the Dask scheduler within 1 s"),
     ("silent", "could not reach the Dask scheduler within 1 s"),
     ("garbage", "does not answer as a Dask scheduler"),
+    ("drip", "could not reach the Dask scheduler within 1 s"),
 ])
 def test_a_dead_silent_or_garbage_scheduler_is_refused_within_its_time_out(kind, fragment):
     """--scheduler-timeout 1 s: the executor is refused within the time-out plus 1.5 s of
