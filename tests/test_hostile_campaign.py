@@ -620,7 +620,7 @@ def test_a_killed_worker_process_leaves_the_cache_and_out_intact(dyn, tmp_path, 
     """A local worker process killed (it exits at once in its first batch, as a killed
     process does): the campaign ends with a clear error (exit 1, no traceback), nothing is
     published (the earlier report in --out stays, byte for byte) and no temporary file is
-    left in the cache (the resume itself: the test above)."""
+    left in the cache; the resume on that cache equals an uninterrupted run."""
     from hostile import publish_earlier
 
     out, folder = tmp_path / "out", tmp_path / "cache"
@@ -637,6 +637,10 @@ def test_a_killed_worker_process_leaves_the_cache_and_out_intact(dyn, tmp_path, 
     assert "worker process ended abruptly" in err
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
     assert not list(folder.rglob(".part-*"))
+    campaign = read_study(dyn).inputs.campaign.campaign
+    resumed = run_campaign(campaign, store=RunCache(folder))
+    pd.testing.assert_frame_equal(resumed.metrics,
+                                  run_campaign(campaign, store=MemoryStore()).metrics)
 
 
 def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identical(dyn,
