@@ -168,7 +168,8 @@ MAX_CAMPAIGN_SAMPLES = 3_000_000
 #: and an eigenanalysis each, about 20 ms).
 MAX_MAP_POINTS = 2_000
 #: Local worker processes of a campaign that may be asked for (each holds the compiled
-#: kernel; the processes started are also capped by the cores and the memory available).
+#: kernel; the processes started are also capped by the cores, the memory available and
+#: COMMAND_MEMORY).
 MAX_WORKERS = 64
 #: Memory budget of the arrays of one computation: a batch of runs' samples, or all the runs
 #: of the multibody model, or one campaign run. With the loaded libraries (about 300 MB) a
