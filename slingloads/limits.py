@@ -168,17 +168,29 @@ MAX_CAMPAIGN_SAMPLES = 3_000_000
 #: and an eigenanalysis each, about 20 ms).
 MAX_MAP_POINTS = 2_000
 #: Local worker processes of a campaign that may be asked for (each holds the compiled
-#: kernel; the processes started are also capped by the cores and the memory available).
+#: kernel; the processes started are also capped by the cores, the memory available and
+#: COMMAND_MEMORY).
 MAX_WORKERS = 64
 #: Memory budget of the arrays of one computation: a batch of runs' samples, or all the runs
 #: of the multibody model, or one campaign run. With the loaded libraries (about 300 MB) a
 #: command stays under 1 GB (docs/inputs-and-outputs.md, "Memory"). [bytes]
 MEMORY_BUDGET = 512 * 2**20
 #: Samples of the runs of one campaign batch (the batch is cut to fit). [bytes]
-BATCH_MEMORY = 128 * 2**20
+BATCH_MEMORY = 64 * 2**20
 #: A worker process with the libraries and compiled kernels loaded (measured about
 #: 290 MB). [bytes]
 WORKER_BASE_MEMORY = 300 * 2**20
+#: Memory budget of a command, all its processes together (docs/inputs-and-outputs.md,
+#: "Memory"). [bytes]
+COMMAND_MEMORY = 2**30
+#: A command's own process and its helper, as the budget of local workers counts them (the
+#: 864 runs of 3,600 s measured at most about 420 MiB beside two workers). [bytes]
+COMMAND_OWN_MEMORY = 512 * 2**20
+#: A local worker process's own memory beside the libraries it shares with the command's
+#: process (measured at most 243 MiB, a batch and a chunk of drive tables at their largest):
+#: so (COMMAND_MEMORY - COMMAND_OWN_MEMORY) / WORKER_OWN_MEMORY = 2 local workers at most.
+#: [bytes]
+WORKER_OWN_MEMORY = 256 * 2**20
 #: Longest time the campaign waits for a scheduler. [s]
 MAX_SCHEDULER_TIMEOUT = 600.0
 

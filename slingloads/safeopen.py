@@ -10,7 +10,9 @@ already handle unreadable files handle these too.
 
 Used for the files slingloads reads from places it does not own: the output folder's
 manifest and marks (:mod:`slingloads.io.common.ownership`) and the run cache
-(:mod:`slingloads.runs.cache`).
+(:mod:`slingloads.runs.cache`); and, following a symbolic link (``follow_links``: a user may
+link an input), for the input workbook and the CSV files it names, so that a file swapped
+for a pipe after its first check still cannot block.
 """
 
 from __future__ import annotations
@@ -36,7 +38,7 @@ def kind_of(mode):
     return "a regular file" if stat.S_ISREG(mode) else "a special file"
 
 
-def open_regular(path, max_bytes=None):
+def open_regular(path, max_bytes=None, follow_links=False):
     """Open the regular file ``path`` for reading in binary, without blocking on a pipe or
     following a symbolic link (module notes).
 
@@ -45,6 +47,9 @@ def open_regular(path, max_bytes=None):
     path : path-like
     max_bytes : int, optional
         Largest size accepted. [bytes]
+    follow_links : bool, optional
+        Open what a symbolic link points to (still checked to be a regular file); default
+        False: a link is refused.
 
     Returns
     -------
@@ -60,12 +65,14 @@ def open_regular(path, max_bytes=None):
     OSError
         If it cannot be opened (permission...).
     """
-    flags = (os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
+    nofollow = 0 if follow_links else getattr(os, "O_NOFOLLOW", 0)
+    flags = (os.O_RDONLY | nofollow | getattr(os, "O_NONBLOCK", 0)
              | getattr(os, "O_CLOEXEC", 0) | getattr(os, "O_BINARY", 0))
     try:
         fd = os.open(path, flags)
     except OSError as err:
-        if err.errno == errno.ELOOP or (err.errno == errno.EMLINK and os.path.islink(path)):
+        if not follow_links and (err.errno == errno.ELOOP
+                                 or (err.errno == errno.EMLINK and os.path.islink(path))):
             raise NotRegularFile(errno.ELOOP, "a symbolic link, which is not followed",
                                  str(path)) from None
         raise

@@ -108,6 +108,34 @@ def test_a_named_pipe_in_the_cache_counts_as_missing(tmp_path):
     assert str(path) in store.warnings[0] and "named pipe" in store.warnings[0]
 
 
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
+def test_input_files_that_are_named_pipes_are_refused_not_waited_on(tmp_path):
+    """The input workbook, or the CSV file a LateralMotions cell names, a FIFO (or a link to
+    one): refused at once as not a regular file (a plain open would wait for a writer); and
+    the opening that follows the check (slingloads.safeopen, following links for inputs)
+    never blocks either, should a pipe be swapped in after it."""
+    from hostile import save_xlsx, small_workbook
+
+    from slingloads.safeopen import NotRegularFile, open_regular
+
+    book = tmp_path / "book.xlsx"
+    os.mkfifo(book)
+    finished, value = _within(10, lambda: read_study(book))
+    assert finished and isinstance(value, InputError) and "not a regular file" in str(value)
+    sheets = small_workbook()
+    sheets["LateralMotions"][2][4] = "pipe.csv"
+    os.mkfifo(tmp_path / "pipe.csv")
+    path = save_xlsx(sheets, tmp_path / "csv.xlsx")
+    finished, value = _within(10, lambda: read_study(path, only=("lateral",)))
+    assert finished and isinstance(value, InputError), value
+    assert "not a regular file" in str(value) and "cell E3" in str(value), value
+    (tmp_path / "link.csv").symlink_to(tmp_path / "pipe.csv")
+    for name in ("pipe.csv", "link.csv"):
+        finished, value = _within(10, lambda name=name: open_regular(tmp_path / name,
+                                                                     follow_links=True))
+        assert finished and isinstance(value, NotRegularFile) and "named pipe" in str(value)
+
+
 def test_output_folder_that_is_a_symbolic_link_loop_is_named_so(tmp_path, capsys):
     """--out a link to itself (ELOOP): the message says loop, not broken link."""
     loop = tmp_path / "loop"
@@ -116,9 +144,19 @@ def test_output_folder_that_is_a_symbolic_link_loop_is_named_so(tmp_path, capsys
         AtomicOutputs(loop).check()
 
 
+def _drip(conn):
+    try:
+        while True:
+            conn.sendall(b"\x00")
+            time.sleep(0.2)
+    except OSError:
+        pass
+
+
 def _server(kind):
     """A fake scheduler on 127.0.0.1: 'dead' (nothing listens), 'silent' (accepts, never
-    answers) or 'garbage' (accepts and sends bytes that are no Dask message)."""
+    answers), 'garbage' (accepts and sends bytes that are no Dask message) or 'drip'
+    (accepts and sends a byte every 0.2 s, never a whole message)."""
     listener = socket.socket()
     listener.bind(("127.0.0.1", 0))
     listener.listen(8)
@@ -140,6 +178,8 @@ def _server(kind):
                     conn.sendall(b"HTTP/1.1 400 Bad Request\r\n\r\n" + bytes(range(256)) * 16)
                 except OSError:
                     pass
+            if kind == "drip":  # a byte now and then, never a whole message
+                threading.Thread(target=_drip, args=(conn,), daemon=True).start()
 
     threading.Thread(target=serve, daemon=True).start()
 
@@ -154,6 +194,7 @@ def _server(kind):
     ("dead", "could not reach the Dask scheduler within 1 s"),
     ("silent", "could not reach the Dask scheduler within 1 s"),
     ("garbage", "does not answer as a Dask scheduler"),
+    ("drip", "could not reach the Dask scheduler within 1 s"),
 ])
 def test_a_dead_silent_or_garbage_scheduler_is_refused_within_its_time_out(kind, fragment):
     """--scheduler-timeout 1 s: the executor is refused within the time-out plus 1.5 s of
@@ -333,8 +374,9 @@ def test_interrupted_writes_are_removed_by_the_next_run(tmp_path):
 @pytest.mark.parametrize("layout", ["file", "runs is a file", "read-only"])
 def test_an_unusable_cache_location_falls_back_to_memory(tmp_path, layout):
     """A cache that is a file, whose ``runs`` is a file, or that is read-only: the store
-    keeps the runs in memory (put then get gives them back), with one warning naming the
-    folder; nothing raises."""
+    keeps the runs in a temporary folder of its own (put then get gives them back, equal),
+    removed when the store is collected, with one warning naming the folder; nothing
+    raises."""
     folder = tmp_path / "cache"
     if layout == "file":
         folder.write_text("x")
@@ -349,10 +391,18 @@ def test_an_unusable_cache_location_falls_back_to_memory(tmp_path, layout):
         if layout == "read-only" and os.access(folder, os.W_OK):  # pragma: no cover - root
             pytest.skip("permissions do not bind this user")
         record = _record()
+        store.expect(KEY, ROWS)
         store.put(KEY, record)
-        assert KEY in store and store.get(KEY)[1] is record[1]
+        metrics, histories = store.get(KEY)
+        assert KEY in store and metrics == record[0] and np.array_equal(histories, record[1])
         assert len(store.warnings) == 1 and str(folder) in store.warnings[0]
         assert "runs without it" in store.warnings[0]
+        spill = store._spill_path(KEY)
+        assert spill.is_file() and folder not in spill.parents and not store._memory
+        del store
+        import gc
+        gc.collect()
+        assert not spill.parent.exists()
     finally:
         folder.chmod(0o700) if folder.is_dir() else None
 
@@ -412,14 +462,15 @@ def test_memory_estimates_by_hand():
     assert SAMPLE_BYTES == 85 * 8
     assert run_bytes(3600.0, 1.0) == 2 * 360_003 * 72 + 3601 * 680
     # a batch of runs of 3,600 s sampled every 0.1 s: 36,001 x (680 + 208) bytes a run,
-    # so 4 fit in 128 MB
-    assert batch_limit({"t_end": 3600.0, "output_interval": 0.1}) == 4
+    # so 2 fit in BATCH_MEMORY's 64 MiB (67,108,864 / 31,968,888 = 2.1)
+    assert batch_limit({"t_end": 3600.0, "output_interval": 0.1}) == 2
 
 
 def test_workers_are_capped_by_cores_and_memory_with_a_warning():
     """16 workers asked for on 2 cores: 2 started, the warning gives the request, the cores
     and the estimate; with 1 GB available only 1 fits beside this process (each about
-    300 + 128 + 128 MB); a request within both is left alone, silently."""
+    300 MB of libraries, 128 MB of drive tables, 64 MB of a batch's samples); a request
+    within both is left alone, silently."""
     workers, warning = local_workers(16, {"t_end": 60.0, "output_interval": 0.1}, cores=2,
                                      available=64 * 2**30)
     assert workers == 2 and "16 local workers were asked for, 2 started" in warning
@@ -427,6 +478,17 @@ def test_workers_are_capped_by_cores_and_memory_with_a_warning():
     workers, warning = local_workers(2, None, cores=8, available=2**30)
     assert workers == 1 and "memory available" in warning
     assert local_workers(2, None, cores=8, available=64 * 2**30) == (2, None)
+
+
+def test_local_workers_are_capped_by_the_command_budget():
+    """8 cores and 64 GB: 8 workers asked for, 2 started, the most whose own memory (256 MiB
+    each, measured 243) fits the 1 GiB budget beside the command's 512 MiB ((1024 - 512) /
+    256 = 2), with a warning naming the budget; the default on 8 cores is cut the same way."""
+    from slingloads.analyses.campaign.memory import budget_workers
+
+    assert budget_workers() == (1024 - 512) // 256 == 2
+    workers, warning = local_workers(8, None, cores=8, available=64 * 2**30)
+    assert workers == 2 and "budget of 1 GB allows 2" in warning and "--scheduler" in warning
 
 
 def test_drive_tables_are_tabulated_a_chunk_at_a_time(monkeypatch):
@@ -558,7 +620,7 @@ def test_a_killed_worker_process_leaves_the_cache_and_out_intact(dyn, tmp_path, 
     """A local worker process killed (it exits at once in its first batch, as a killed
     process does): the campaign ends with a clear error (exit 1, no traceback), nothing is
     published (the earlier report in --out stays, byte for byte) and no temporary file is
-    left in the cache (the resume itself: the test above)."""
+    left in the cache; the resume on that cache equals an uninterrupted run."""
     from hostile import publish_earlier
 
     out, folder = tmp_path / "out", tmp_path / "cache"
@@ -575,6 +637,10 @@ def test_a_killed_worker_process_leaves_the_cache_and_out_intact(dyn, tmp_path, 
     assert "worker process ended abruptly" in err
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
     assert not list(folder.rglob(".part-*"))
+    campaign = read_study(dyn).inputs.campaign.campaign
+    resumed = run_campaign(campaign, store=RunCache(folder))
+    pd.testing.assert_frame_equal(resumed.metrics,
+                                  run_campaign(campaign, store=MemoryStore()).metrics)
 
 
 def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identical(dyn,
@@ -611,3 +677,122 @@ def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identica
     assert resumed.execution.cached >= 2
     assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
     pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+
+
+def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(dyn, tmp_path):
+    """The one worker of a local Dask cluster (threads, loopback TCP) closed after the
+    second of 8 one-run batches: the scheduler still answers but has no worker, so the
+    batches would wait for one for ever; the campaign ends within the 1 s time-out (plus
+    the worker's own shutting down) with an environment error, and the resume on the same
+    cache finds the runs stored before and gives the metrics of an uninterrupted run."""
+    import contextlib
+
+    distributed = pytest.importorskip("distributed")
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    try:
+        executor = DaskCluster(cluster.scheduler_address, 1.0)
+        times = {}
+
+        def progress(done, total):
+            if done == 2:
+                times["killed"] = time.monotonic()
+                for address in list(cluster.scheduler.workers):
+                    cluster.sync(cluster.scheduler.remove_worker, address, stimulus_id="kill",
+                                 close=True)
+
+        with pytest.raises(OutputError, match="no worker left"):
+            run_campaign(campaign, executor=executor, store=RunCache(tmp_path / "cache"),
+                         batch_size=1, progress=progress)
+        assert time.monotonic() - times["killed"] < 5.0
+    finally:
+        with contextlib.suppress(TimeoutError, OSError):
+            cluster.close(timeout=2)
+    resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
+    assert resumed.execution.cached >= 2
+    assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
+def test_a_fall_back_mid_campaign_still_reads_the_runs_found_before(tmp_path):
+    """Two runs: one stored, the other's shard folder a named pipe (so its entry cannot be
+    read nor written). The first is found, the second computed and kept in memory when the
+    cache falls back; both are then read back (the first from disk, as found), where the
+    first used to come back as None once the cache had fallen back (TypeError in the
+    campaign)."""
+    store = RunCache(tmp_path / "cache")
+    found, other = "ab" + "1" * 62, "cd" + "2" * 62
+    record = _record()
+    store.put(found, record)
+    os.mkfifo(store._path(other).parent)
+    again = RunCache(tmp_path / "cache")
+    for key in (found, other):
+        again.expect(key, ROWS)
+    assert found in again and other not in again
+    again.put(other, _record(seed=1))
+    assert not again.usable
+    metrics, histories = again.get(found)
+    assert metrics == record[0] and np.array_equal(histories, record[1])
+    assert again.get(other) is not None
+
+
+def test_the_campaign_command_names_an_output_loop_so(dyn, tmp_path, capsys):
+    """--out a link to itself on the campaign command (whose cache is checked to lie
+    outside --out first): the message says symbolic-link loop and names --out, not the
+    cache ('cannot be resolved (RuntimeError)' before); nothing is written."""
+    loop = tmp_path / "loop"
+    loop.symlink_to(loop)
+    code = main(["campaign", str(dyn), "--out", str(loop), "--cache", str(tmp_path / "c"),
+                 "--quiet"])
+    err = capsys.readouterr().err
+    assert code != 0 and "symbolic-link loop" in err and str(loop) in err, err
+    assert "cannot be resolved" not in err and not (tmp_path / "c").exists()
+
+
+@pytest.mark.parametrize("moment", ["early", "storing"])
+def test_a_client_killed_outright_resumes_to_identical_results(dyn, tmp_path, moment):
+    """The campaign command killed outright (SIGKILL to its process group, so no clean-up
+    runs): early, at a seeded random time within its first 2 s (reading, compiling or
+    computing, before any run is stored), or as soon as its first run is in the cache
+    (while the others are being written). The earlier report in --out stays byte
+    for byte; the resume on the same cache leaves no temporary file and gives the metrics
+    and histories of an uninterrupted run (each run is integrated on its own)."""
+    import signal
+
+    from hostile import command, publish_earlier, wait_until
+
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    out = tmp_path / "out"
+    publish_earlier(out, {"dyn-campaign.xlsx": b"an earlier report"})
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    rng = random.Random(5)
+    folder = tmp_path / "c" / "campaign"  # $SLINGLOADS_CACHE/campaign
+    proc = command("campaign", dyn, out, start_new_session=True,
+                   env={"SLINGLOADS_PLOT_WORKERS": "0", "SLINGLOADS_CACHE": str(tmp_path / "c")})
+    try:
+        def stored():
+            return any(not p.name.startswith(".") for p in folder.rglob("*.parquet"))
+
+        if moment == "early":  # reading, compiling or computing: before the batch returns
+            time.sleep(rng.uniform(0.2, 2.0))
+        else:
+            wait_until(stored, proc, "the first stored run")
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait(30)
+    finally:
+        if proc.poll() is None:  # pragma: no cover
+            os.killpg(proc.pid, signal.SIGKILL)
+        proc.stderr.close()
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    resumed = run_campaign(campaign, store=RunCache(folder))
+    assert not list(folder.rglob(".part-*"))
+    assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+    assert resumed.execution.cached >= (1 if moment == "storing" else 0)
+    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+    for run in fresh.metrics["run"]:
+        pd.testing.assert_frame_equal(resumed.history(run), fresh.history(run))

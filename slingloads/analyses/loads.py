@@ -59,6 +59,7 @@ from slingloads.analyses.sfbm import COMPONENTS, free_free_internal_loads
 from slingloads.checks import frozen
 from slingloads.constants import G0
 from slingloads.errors import ClosureError, InputError
+from slingloads.ids import first_duplicate
 from slingloads.models.aerodynamics import airflow_direction
 from slingloads.models.airframe import Airframe
 from slingloads.models.attitude import resolve_attitude
@@ -564,9 +565,10 @@ class LoadsStudy:
         return frame
 
     def _check_listed(self, frame, hooks, aero_ids):
-        dup = frame["case"].duplicated()
-        if dup.any():
-            raise InputError("load case ids must be unique", frame["case"][dup].iloc[0])
+        twice = first_duplicate(list(frame["case"]))
+        if twice is not None:
+            raise InputError("load case ids must be unique (compared with case ignored)",
+                             frame["case"].iloc[twice[1]])
         valid_hooks = set(hooks["hook"]) | {TOWED, NO_HOOK}
         valid_aero = set(aero_ids) | {NO_AERO}
         for c in self.listed:

@@ -17,6 +17,7 @@ from slingloads.io.common.locate import StudyCells, find_place, place_error
 from slingloads.io.common.parameters import StudyParameters
 from slingloads.io.common.workbook import WorkbookReader
 from slingloads.runs.study import Source, Study
+from slingloads.safeopen import open_regular
 
 AIRFRAME_SHEETS = {s.name: s for s in SHEETS}
 _BY_NAME = {a.name: a for a in ANALYSES}
@@ -96,7 +97,7 @@ def file_digest(path):
         64 hexadecimal digits.
     """
     h = hashlib.sha256()
-    with open(path, "rb") as f:
+    with open_regular(path, follow_links=True) as f:
         for chunk in iter(lambda: f.read(1 << 20), b""):
             h.update(chunk)
     return h.hexdigest()

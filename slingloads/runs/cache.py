@@ -27,7 +27,10 @@ its metrics as JSON in the file's metadata.
   files of processes that are gone are removed when the next campaign opens the cache;
 * a cache location that cannot be used (a file in the way, a read-only folder, a ``runs``
   that is not a folder, a write that fails) does not stop the campaign: it runs without the
-  cache (the runs kept in memory for this report), with a warning naming the folder.
+  cache, with a warning naming the folder; the runs of this report are then kept in a
+  temporary folder of this process, removed when it ends (so that the histories, up to
+  :data:`~slingloads.limits.MAX_CAMPAIGN_SAMPLES` rows, are not all held in memory at once),
+  or in memory where no temporary folder can be made either.
 
 The cache lives **outside** the output folder: the reports are published by replacing that
 folder as a whole, so a cache inside it would be lost at every run. It is shared by the
@@ -161,6 +164,9 @@ class RunCache:
         self._valid = set()
         self._memory = {}
         self._warned = set()
+        self._spill = None  # the temporary folder of a cache fallen back (module notes)
+        self._spill_ok = True
+        self._spilled = set()
         reason = location_problem(self.directory)
         if reason is not None:
             self._give_up(reason)
@@ -169,12 +175,19 @@ class RunCache:
 
     # ---- the location -----------------------------------------------------------------
     def _give_up(self, reason):
-        """Fall back to memory for the rest of this campaign (module notes)."""
+        """Fall back to a temporary folder (else memory) for the rest of this campaign
+        (module notes)."""
         if self.usable:
             self.usable = False
             self.warnings.append(f"the run cache {self.directory} cannot be used ({reason}): "
                                  "the campaign runs without it (nothing is stored for a "
                                  "later run)")
+            import tempfile
+
+            try:  # removed when this object is collected, or at the latest at exit
+                self._spill = tempfile.TemporaryDirectory(prefix="slingloads-runs-")
+            except OSError:
+                self._spill = None
 
     def _sweep(self):
         """Remove the temporary files that killed writers left (module notes)."""
@@ -216,7 +229,7 @@ class RunCache:
 
     def __contains__(self, key):
         """True when the run's entry is there and usable (module notes)."""
-        if key in self._memory or key in self._valid:
+        if key in self._memory or key in self._valid or key in self._spilled:
             return True
         if not self.usable:
             return False
@@ -229,9 +242,9 @@ class RunCache:
         root = self.directory / "runs"
         try:
             return (sum(1 for _ in root.glob("*/*.parquet")) if root.is_dir() else 0) + len(
-                self._memory)
+                self._memory) + len(self._spilled)
         except OSError:
-            return len(self._memory)
+            return len(self._memory) + len(self._spilled)
 
     def get(self, key):
         """(metrics, histories) of a stored run, or None (absent or unusable: module notes).
@@ -244,8 +257,10 @@ class RunCache:
         """
         if key in self._memory:
             return self._memory[key]
-        if not self.usable:
-            return None
+        if key in self._spilled:
+            return self._load(self._spill_path(key), self._rows.get(key))
+        if not self.usable and key not in self._valid:
+            return None  # (an entry found usable before the fall-back is still read)
         record = self._read(key)
         if record is None and key in self._valid:
             raise OutputError("a run of the cache changed while the campaign ran (another "
@@ -327,18 +342,32 @@ class RunCache:
         """Store a run (atomically: temporary file, then rename); kept in memory, with a
         warning, if the cache cannot be written (module notes)."""
         if not self.usable:
-            self._memory[key] = record
+            self._keep(key, record)
             return
         try:
             self._write(key, record)
         except OSError as err:
             self._give_up(f"{type(err).__name__}: {err.strerror or err}")
-            self._memory[key] = record
+            self._keep(key, record)
             return
         self._valid.add(key)
         self.written += 1
 
-    def _write(self, key, record):
+    def _spill_path(self, key):
+        return Path(self._spill.name) / f"{key}.parquet"
+
+    def _keep(self, key, record):
+        """A run of a cache fallen back: in the temporary folder, else in memory."""
+        if self._spill is not None and self._spill_ok:
+            try:
+                self._write(key, record, self._spill_path(key))
+                self._spilled.add(key)
+                return
+            except OSError:
+                self._spill_ok = False
+        self._memory[key] = record
+
+    def _write(self, key, record, path=None):
         import pyarrow as pa
         import pyarrow.parquet as pq
 
@@ -348,7 +377,7 @@ class RunCache:
                   for j in range(len(HISTORY_LABELS))]
         table = pa.Table.from_arrays(arrays, names=list(HISTORY_LABELS))
         table = table.replace_schema_metadata({METRICS_KEY: text.encode()})
-        path = self._path(key)
+        path = self._path(key) if path is None else path
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.parent / (f"{_PART}{_host_tag()}-{os.getpid()}-"
                              f"{os.urandom(6).hex()}.parquet")
@@ -410,9 +439,10 @@ def check_outside(cache_dir, out_dir):
     try:
         cache = Path(cache_dir).resolve()
         out = Path(out_dir).resolve()
-    except (OSError, RuntimeError) as err:  # a symbolic-link loop, a name too long
-        raise OutputError(f"the run cache or output folder cannot be resolved "
-                          f"({type(err).__name__})", cache_dir) from None
+    except (OSError, RuntimeError):  # a symbolic-link loop, a name too long
+        # neither can then hold the other: the output folder's own check names what is
+        # wrong with it, and a cache that cannot be used is a warning (module notes)
+        return
     if cache == out or out in cache.parents:
         raise InputError("the run cache must lie outside the output folder, which is replaced "
                          "as a whole when the reports are published; choose another --cache",

@@ -264,7 +264,11 @@ class LocalProcesses(_Executor):
                    for index, settings, jobs in batches}
         try:
             for future in as_completed(futures):
-                yield futures[future], future.result()
+                # dropped once handed on: a finished future holds its batch's records, and
+                # all of them kept would hold every run's histories at once
+                index = futures.pop(future)
+                yield index, future.result()
+                del future
         except BrokenProcessPool:
             raise OutputError("a local worker process ended abruptly (killed, or out of "
                               "memory); the runs finished before are stored: run the same "
@@ -422,13 +426,31 @@ class DaskCluster(_Executor):
 
     def _alive(self):
         """True if the scheduler answers a liveness request within the time-out."""
+        return self._identity() is not None
+
+    def _identity(self):
+        """The scheduler's answer to a liveness request within the time-out (its identity:
+        ``workers`` among others), or None."""
         if self.client is None or self.client.status != "running":
-            return False
+            return None
         try:
-            self.client.sync(self.client.scheduler.identity, callback_timeout=self.timeout)
+            return self.client.sync(self.client.scheduler.identity,
+                                    callback_timeout=self.timeout)
         except Exception:  # noqa: BLE001 - any failure is a scheduler gone silent
-            return False
-        return True
+            return None
+
+    def _check_progress(self):
+        """Raise if nothing can finish: the scheduler silent, or left without a worker (its
+        batches would wait for one for ever), after ``timeout`` seconds without a result."""
+        identity = self._identity()
+        if identity is None:
+            raise OutputError(f"the Dask scheduler stopped answering (no answer within "
+                              f"{self.timeout:g} s); the finished runs are stored: run again "
+                              "to resume", self.address)
+        if not identity.get("workers"):
+            raise OutputError(f"the Dask scheduler has no worker left (none for "
+                              f"{self.timeout:g} s: killed, or lost); the finished runs are "
+                              "stored: run again to resume", self.address)
 
     def run(self, batches):
         """Execute the batches on the cluster.
@@ -461,12 +483,13 @@ class DaskCluster(_Executor):
                     pending = set(pending)
                 except TimeoutError:
                     finished = set()
-                if not finished and not self._alive():
-                    raise OutputError(f"the Dask scheduler stopped answering (no answer "
-                                      f"within {self.timeout:g} s); the finished runs are "
-                                      "stored: run again to resume", self.address)
+                if not finished:
+                    self._check_progress()
                 for future in finished:
-                    yield futures[future], self._result(future)
+                    # forgotten once fetched (the cluster may free the batch's records)
+                    index = futures.pop(future)
+                    yield index, self._result(future)
+                    future.release()
         except OutputError:
             raise
         except (CancelledError, OSError) as err:  # the scheduler lost: futures cancelled
@@ -485,10 +508,7 @@ class DaskCluster(_Executor):
             try:
                 return future.result(timeout=self.timeout)
             except TimeoutError:
-                if not self._alive():
-                    raise OutputError(f"the Dask scheduler stopped answering (no answer "
-                                      f"within {self.timeout:g} s); the finished runs are "
-                                      "stored: run again to resume", self.address) from None
+                self._check_progress()
 
     def close(self):
         """Close the client, waiting at most the time-out (a dead scheduler is not waited
@@ -510,8 +530,9 @@ def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=
     workers : int, optional
         Local worker processes (default: one per core, or this process alone for fewer than
         :data:`MAX_BATCH` runs, where starting processes would cost more than it saves);
-        capped by the cores and the memory available (:func:`local_workers`: an explicit
-        larger request is cut, with a warning in the executor's ``warnings``).
+        capped by the cores, the memory available and a command's budget
+        (:func:`local_workers`: an explicit larger request is cut, with a warning in the
+        executor's ``warnings``).
     timeout : float
         Scheduler time-out. [s]
     runs : int, optional

@@ -2,9 +2,10 @@
 run settings before anything runs.
 
 Guarantees: a batch holds at most :data:`~slingloads.limits.BATCH_MEMORY` of samples
-(:func:`batch_limit`); the local workers started are the number asked for capped by the cores
-and by the memory available, each counted at :func:`worker_memory` (an explicit larger request
-is cut with a warning that gives the estimate: :func:`local_workers`). The estimate, 8 bytes a
+(:func:`batch_limit`); the local workers started are the number asked for capped by the cores,
+by the memory available, each counted at :func:`worker_memory`, and by a command's budget
+(:func:`budget_workers`; an explicit larger request is cut with a warning that gives the
+estimate: :func:`local_workers`). The estimate, 8 bytes a
 number: a worker's libraries and kernels (:data:`~slingloads.limits.WORKER_BASE_MEMORY`), one
 chunk of drive tables (``DRIVE_BUDGET`` of the multibody model) and a batch's samples (states,
 drive, reported quantities and histories, and the histories once more as the record handed
@@ -15,7 +16,13 @@ from __future__ import annotations
 
 import os
 
-from slingloads.limits import BATCH_MEMORY, WORKER_BASE_MEMORY
+from slingloads.limits import (
+    BATCH_MEMORY,
+    COMMAND_MEMORY,
+    COMMAND_OWN_MEMORY,
+    WORKER_BASE_MEMORY,
+    WORKER_OWN_MEMORY,
+)
 
 #: Largest batch sent to a worker (runs).
 MAX_BATCH = 100
@@ -112,10 +119,25 @@ def batch_limit(settings):
     return max(1, min(MAX_BATCH, BATCH_MEMORY // max(1, _sample_bytes(settings))))
 
 
+def budget_workers():
+    """The most local worker processes a command's memory budget allows:
+    (:data:`~slingloads.limits.COMMAND_MEMORY` - :data:`~slingloads.limits.COMMAND_OWN_MEMORY`)
+    / :data:`~slingloads.limits.WORKER_OWN_MEMORY` (each worker's own memory beside the
+    libraries it shares with the command's process), at least 1.
+
+    Returns
+    -------
+    int
+        Workers.
+    """
+    return max(1, (COMMAND_MEMORY - COMMAND_OWN_MEMORY) // WORKER_OWN_MEMORY)
+
+
 def local_workers(requested, settings=None, cores=None, available=None):
-    """Worker processes to start: ``requested``, capped by the cores and by the memory
-    available (:func:`worker_memory` each, with the memory this process keeps), and a
-    warning (None if none) when an explicit request is cut.
+    """Worker processes to start: ``requested``, capped by the cores, by the memory
+    available (:func:`worker_memory` each, with the memory this process keeps) and by a
+    command's memory budget (:func:`budget_workers`), and a warning (None if none) when an
+    explicit request is cut.
 
     Parameters
     ----------
@@ -138,7 +160,8 @@ def local_workers(requested, settings=None, cores=None, available=None):
     each = worker_memory(settings)
     by_memory = (max(1, int((available - WORKER_BASE_MEMORY) // each))
                  if available is not None else requested)
-    workers = max(1, min(int(requested), cores, by_memory))
+    by_budget = budget_workers()
+    workers = max(1, min(int(requested), cores, by_memory, by_budget))
     if workers >= requested:
         return workers, None
     why = []
@@ -146,6 +169,9 @@ def local_workers(requested, settings=None, cores=None, available=None):
         why.append(f"{cores} core{'s' if cores > 1 else ''}")
     if requested > by_memory and available is not None:
         why.append(f"{available / 2**20:,.0f} MB of memory available")
+    if requested > by_budget:
+        why.append(f"a command's budget of {COMMAND_MEMORY / 2**30:g} GB allows {by_budget} "
+                   "(a cluster, --scheduler, takes more)")
     return workers, (f"{requested} local workers were asked for, {workers} started: each "
                      f"needs about {each / 2**20:,.0f} MB (libraries, drive tables, a batch's "
                      f"samples) and this machine has {' and '.join(why)}")

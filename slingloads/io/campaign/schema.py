@@ -148,7 +148,8 @@ PARAMETERS = (
               "--scheduler overrides it.", _S),
     Parameter("campaign workers", INTEGER, "", 0,
               "Local worker processes; 0 = automatic (one per core, or this process for a "
-              "small campaign). The command line's --workers overrides it.",
+              "small campaign); at most 2 start (the cores, the memory and a command's "
+              "1 GB budget cap them). The command line's --workers overrides it.",
               _S, Bounds(0, MAX_WORKERS)),
     Parameter("campaign scheduler time-out", "time", "s", 10.0,
               "Time the scheduler has to answer before the campaign stops, > 0.",

@@ -25,6 +25,7 @@ from slingloads.io.common.units import si_factor
 from slingloads.io.common.values import echo, number_from_text
 from slingloads.io.common.xlsx_source import reason_of
 from slingloads.limits import MAX_CSV_BYTES, MAX_CSV_ROWS, MAX_MAGNITUDE, MAX_PATH_CHARS
+from slingloads.safeopen import open_regular
 
 
 def referenced_file(reader, text, sheet, cell, *, suffixes=(".csv",),
@@ -94,8 +95,8 @@ def csv_columns(reader, text, sheet, cell, columns, max_rows=MAX_CSV_ROWS):
     where = (sheet, cell)
     name = path.name
     try:
-        with open(path, encoding="utf-8-sig", newline="") as handle:
-            content = handle.read()
+        with open_regular(path, MAX_CSV_BYTES, follow_links=True) as handle:
+            content = handle.read().decode("utf-8-sig")
     except (OSError, UnicodeDecodeError) as err:
         raise reader.error(f"cannot read the CSV file {name!r} ({reason_of(err)})", text,
                            *where) from None

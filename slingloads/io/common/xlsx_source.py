@@ -45,6 +45,7 @@ from slingloads.limits import (
     MAX_WORKBOOK_BYTES,
     MAX_ZIP_MEMBERS,
 )
+from slingloads.safeopen import open_regular
 
 #: Excel's sheet size [rows, columns].
 EXCEL_ROWS, EXCEL_COLUMNS = 1_048_576, 16_384
@@ -148,11 +149,15 @@ class XlsxSource:
         from openpyxl import load_workbook
 
         self.error = error
+        self._stream = None
         try:
             with warnings.catch_warnings(), _no_dimension_scan():
                 warnings.simplefilter("ignore")  # unsupported extensions, data validation...
-                self.book = load_workbook(path, read_only=True, data_only=True)
+                self._stream = open_regular(path, follow_links=True)  # never a pipe
+                self.book = load_workbook(self._stream, read_only=True, data_only=True)
         except Exception as err:  # noqa: BLE001 - openpyxl raises many kinds on corrupt files
+            if self._stream is not None:
+                self._stream.close()
             root = err
             while root.__cause__ is not None or root.__context__ is not None:
                 root = root.__cause__ or root.__context__
@@ -254,6 +259,7 @@ class XlsxSource:
 
     def close(self):
         self.book.close()
+        self._stream.close()
 
 
 #: Column letters (upper case, as Excel writes them) -> column number, filled as met.
@@ -407,7 +413,7 @@ def check_file(path, file):
         raise InputError(f"workbook refused: {info.st_size:,} bytes, more than the "
                          f"{MAX_WORKBOOK_BYTES:,} accepted", file=file)
     try:
-        with open(path, "rb"):
+        with open_regular(path, follow_links=True):  # never blocks on a pipe swapped in
             pass
     except OSError as err:
         raise InputError(f"cannot read the input workbook ({reason_of(err)})", file,
@@ -419,7 +425,8 @@ def check_container(path, file):
     expands beyond its limit (zip bombs), or a worksheet declaring a document type or
     entities (XML bombs); nothing is decompressed but the worksheets' prologs."""
     try:
-        with zipfile.ZipFile(path) as archive:
+        with open_regular(path, follow_links=True) as stream, \
+                zipfile.ZipFile(stream) as archive:
             infos = archive.infolist()
             _check_sizes(infos, file)
             for info in infos:  # every worksheet, read or not: no DTD, no entities

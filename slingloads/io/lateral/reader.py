@@ -23,6 +23,7 @@ from slingloads.analyses.lateral_damping import (
     aerodynamic_damping,
 )
 from slingloads.errors import InputError
+from slingloads.ids import id_key
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
@@ -305,11 +306,13 @@ def _airframe_body(reader, study):
 
 def _histories(reader):
     t = reader.table(_SPEC["LateralHistory"])
-    rows = {}
-    for i, hid in enumerate(t["history id"]):
-        rows.setdefault(hid, []).append(i)
+    rows, names = {}, {}
+    for i, hid in enumerate(t["history id"]):  # one history per id, case ignored (ids)
+        rows.setdefault(id_key(hid), []).append(i)
+        names.setdefault(id_key(hid), hid)
     out = {}
-    for hid, idx in rows.items():
+    for key, idx in rows.items():
+        hid = names[key]
         time = t["t"][idx]
         if len(idx) < 2:
             raise reader.error("a time history needs at least two samples", hid, t.sheet,
@@ -324,7 +327,7 @@ def _histories(reader):
                               f"{MIN_SAMPLE_INTERVAL:g} s apart (previous sample at "
                               f"{t.cell('t', idx[k - 1])})")
         with located(t, default="t", index=idx[0]):
-            out[hid] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
+            out[key] = TimeHistory(time, t["S"][idx], name=f"history {hid!r}")
     return out
 
 
@@ -439,13 +442,14 @@ def _motions(reader, histories):
                 raise reader.error("a time history needs the column 'history' filled (a "
                                    "LateralHistory id or a CSV file)", None, t.sheet,
                                    t.cell("history", i) if t.has("history") else "A1")
-            if text in histories:
-                motion = histories[text]
+            if id_key(text) in histories:
+                motion = histories[id_key(text)]
             elif text.lower().endswith(".csv"):
                 motion = _csv_history(reader, text, t, i)
             else:
-                raise reader.error(f"unknown history; LateralHistory ids are "
-                                   f"{sorted(histories)} (or give a .csv file)", text,
+                known = sorted(h.name.removeprefix("history ") for h in histories.values())
+                raise reader.error(f"unknown history; LateralHistory ids are {known} (or "
+                                   "give a .csv file)", text,
                                    t.sheet, t.cell("history", i))
         motions.append(motion)
     return tuple(motions), tuple(t["id"])

@@ -29,7 +29,9 @@ import pandas as pd
 
 from slingloads.errors import InputError
 from slingloads.io.common.locate import located
+from slingloads.limits import MAX_CSV_BYTES
 from slingloads.models.hook_trajectory import HookTrajectory
+from slingloads.safeopen import open_regular
 
 #: The column sets a trajectory file may give, and the constructor each goes to.
 COLUMN_SETS = {("ax_mps2", "ay_mps2", "az_mps2"): "from_acceleration",
@@ -58,7 +60,8 @@ def read_trajectory_csv(path, *, from_hover=False):
     """
     path = Path(path)
     try:
-        frame = pd.read_csv(path)
+        with open_regular(path, MAX_CSV_BYTES, follow_links=True) as handle:
+            frame = pd.read_csv(handle)
     except (OSError, ValueError) as error:
         raise InputError(f"cannot read the trajectory file: {error}", file=str(path)) from None
     columns = [c.strip() for c in frame.columns]
