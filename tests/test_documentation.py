@@ -267,3 +267,132 @@ def test_docstring_examples_run(name, tmp_path, monkeypatch):
         runner.run(test, out=report.append)
     assert examples and not skipped, f"{name}: {examples} examples, {skipped} skipped"
     assert runner.failures == 0, "".join(report)
+
+
+# ------------------------------------------------------------ the README's table of output files
+def _outputs_table():
+    """The README's table of output files: [(file names as written, condition)]."""
+    lines = (ROOT / "README.md").read_text(encoding="utf-8").splitlines()
+    start = lines.index("| file | written when |") + 2
+    rows = []
+    for line in lines[start:]:
+        if not line.startswith("|"):
+            break
+        files, condition = line.strip("|").split(" | ", 1)
+        rows.append((re.findall(r"`((?:IN-|\.slingloads)[^`]+)`", files), condition))
+    assert rows
+    return rows
+
+
+def _pattern(name, stem="{stem}"):
+    """A file name of the table as a pattern of the report modules' OUTPUTS (its upper-case
+    placeholders as ``*``)."""
+    if not name.startswith("IN-"):  # the folder's own file
+        return name
+    name = name.replace("hull_A_B_STATION", "hull_*").replace("campaign-TAG", "campaign-*")
+    return stem + name[len("IN"):]
+
+
+def test_readme_outputs_table_lists_the_files_the_report_modules_name():
+    """The table names exactly the files the report modules publish (their ``OUTPUTS``, the
+    publisher's list; the legacy ``-sfbm_all.png`` of earlier versions, which a report only
+    removes, aside), each once."""
+    from slingloads.io.campaign.report import OUTPUTS as campaign
+    from slingloads.io.chute.report import OUTPUTS as chute
+    from slingloads.io.common.ownership import MANIFEST_NAME as MANIFEST
+    from slingloads.io.lateral.report import OUTPUTS as lateral
+    from slingloads.io.loads.report import OUTPUTS as loads
+    from slingloads.io.multibody.report import OUTPUTS as multibody
+
+    listed = [_pattern(name) for names, _ in _outputs_table() for name in names]
+    assert len(listed) == len(set(listed)), listed
+    assert MANIFEST in listed
+    listed.remove(MANIFEST)
+    code = set(loads + lateral + chute + multibody + campaign) - {"{stem}-sfbm_all.png"}
+    assert set(listed) == code
+
+
+def _quoted_flags(condition):
+    """The Study rows a condition asks to be yes: `run loads = yes`, Study row `X` = yes."""
+    return ([q.lower() for q in re.findall(r"`(run [a-z ]+) = yes`", condition)]
+            + [q.lower() for q in re.findall(r"`([^`]+)` = yes", condition)])
+
+
+def test_readme_outputs_table_names_study_rows_that_exist():
+    """Every Study row a condition of the table quotes (`run loads = yes`, `SFBM workbook`,
+    `hull pairs`...) is a parameter the workbook reader knows
+    (slingloads.io.analyses.all_parameters), and a row that switches a file on is a flag."""
+    from slingloads.io.analyses import all_parameters
+
+    known = all_parameters()
+    quoted = [q.split(" = ")[0].lower() for _, condition in _outputs_table()
+              for q in re.findall(r"`([^`]+)`", condition)
+              if not q.startswith(("slingloads ", "--")) and q != "run"]
+    assert {"run loads", "sfbm workbook", "nastran bulk data", "hull pairs"} <= set(quoted)
+    unknown = [q for q in quoted if q not in known]
+    assert not unknown, unknown
+    flags = [f for _, condition in _outputs_table() for f in _quoted_flags(condition)]
+    assert flags and all(known[f].kind == "flag" for f in flags), flags
+
+
+def _study_flags():
+    """The example's Study sheet: row name lower-cased -> yes/no, the default where the
+    sheet leaves a flag out (slingloads.io.analyses.all_parameters)."""
+    import openpyxl
+
+    from slingloads.io.analyses import all_parameters
+
+    flags = {name: p.default for name, p in all_parameters().items() if p.kind == "flag"}
+    book = openpyxl.load_workbook(EXAMPLE, read_only=True)
+    for row in book["Study"].iter_rows(min_row=2, values_only=True):
+        name = str(row[0]).strip().lower()
+        if name in flags and row[1] is not None:
+            flags[name] = row[1]
+    return {name: str(value).strip().lower() in ("yes", "true", "1")
+            for name, value in flags.items()}
+
+
+def test_readme_outputs_table_matches_what_the_example_writes(example_run_report,
+                                                              example_campaign_run_report,
+                                                              example_results):
+    """Every file the example's ``slingloads run`` writes (and with its campaign on) matches
+    exactly one name of the table; each row is written or not as its condition says, judged
+    from the example's Study sheet (the flags the row quotes) and from its results (a sweep,
+    a trim, the hook cases re-run at the recommended angle)."""
+    from fnmatch import fnmatch
+
+    table = _outputs_table()
+    flags = _study_flags()
+    assert not flags["run campaign"]  # the campaign run below turns it on
+    derived = {"sweeps areas": example_results.chute_sizing.sweep is not None,
+               "when it trims": bool(example_results.multibody.trim.converged),
+               "re-run at the recommended angle": example_results.lateral.comparison is not None}
+    for folder, campaign in ((example_run_report, False), (example_campaign_run_report, True)):
+        stem = next(folder.glob("*-loads.xlsx")).name[:-len("-loads.xlsx")]
+        written = sorted(p.name for p in folder.iterdir())
+        for name in written:
+            rows = [k for k, (names, _) in enumerate(table)
+                    if any(fnmatch(name, _pattern(n, stem)) for n in names)]
+            assert len(rows) == 1, (name, rows)
+        for names, condition in table:
+            expected = all(flags[f] or (campaign and f == "run campaign")
+                           for f in _quoted_flags(condition))
+            expected &= all(value for words, value in derived.items() if words in condition)
+            present = [any(fnmatch(w, _pattern(n, stem)) for w in written) for n in names]
+            assert present == [expected] * len(names), (names, condition, campaign)
+
+
+# ------------------------------------------------------------ timing claims cite their script
+def test_timing_claims_cite_scripts_that_exist():
+    """Timings cannot be checked by a timed test: the pages state them as measured, with the
+    date, and name the script that measures them; every benchmarks/ script a page names
+    exists, and the README's compile and first-run times name theirs beside a date."""
+    pages = ["README.md", *(f"docs/{p.name}" for p in (ROOT / "docs").glob("*.md"))]
+    for page in pages:
+        for script in re.findall(r"(?:benchmarks/)?(bench_\w+\.py|paper_comparison\.py)",
+                                 _text(page)):
+            assert (ROOT / "benchmarks" / script).is_file(), (page, script)
+    readme = _text("README.md")
+    assert re.search(r"Times measured on \d{4}-\d\d-\d\d on the 2-core", readme)
+    for script in ("bench_compile.py", "bench_first_run.py"):
+        assert f"benchmarks/{script}" in readme, script
