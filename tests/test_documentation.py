@@ -396,3 +396,147 @@ def test_timing_claims_cite_scripts_that_exist():
     assert re.search(r"Times measured on \d{4}-\d\d-\d\d on the 2-core", readme)
     for script in ("bench_compile.py", "bench_first_run.py"):
         assert f"benchmarks/{script}" in readme, script
+
+
+# ------------------------------------------------- more figures quoted from the example's run
+def _deg(x):
+    import numpy as np
+
+    return float(np.degrees(x))
+
+
+def _hub_over_cg(r):
+    """(aft, above) of the hub from the CG of the example's mass items. [m]"""
+    d = r.study.airframe.hardpoints.hub - r.study.airframe.mass_items.cg
+    return d[0], d[2]
+
+
+def _towed_case(r):
+    return r.loads.towed_table().iloc[0]
+
+
+def _lateral_critical(r):
+    return r.lateral.study.critical_case
+
+
+def _lateral_nominal(r):
+    frame = r.lateral.study.to_frame()
+    return frame[frame["nominal [-]"]].iloc[0]
+
+
+def _gust(r):
+    frame = r.multibody.to_frame().set_index("run")
+    return frame.loc[next(k for k in frame.index if "gust" in k)]
+
+
+#: (page, pattern, the values its groups quote, from the example's results): each group is
+#: compared at the digits it is written with (:func:`_agrees`), a text group exactly.
+QUOTES = {
+    "README mass": ("README.md", r"a generic light twin of about (\d+\.\d) t",
+                    lambda r: [r.study.airframe.mass_items.mass.sum() / 1000]),
+    "README findings hook angle": (
+        "README.md", r"which governs \(example: (\d+\.\d) deg\)",
+        lambda r: [_deg(r.lateral.study.recommended_angle)]),
+    "README lateral margin and critical case": (
+        "README.md", r"\(the (\d+\.\d+) g (cycloidal) sidestep in (\d+) s on the (\d+) ft rope\), "
+        r"recommended design angle (\d+\.\d) x (\d+\.\d) =",
+        lambda r: [_lateral_critical(r)["peak S'' [g]"], "cycloidal",
+                   _lateral_critical(r)["motion duration [s]"],
+                   _lateral_critical(r)["rope length [m]"] / 0.3048,
+                   r.lateral.study.margin, _deg(r.lateral.study.max_load_angle)]),
+    "README sizing condition": (
+        "README.md", r"at the towed trim's angle of attack (-\d+\.\d) deg at (\d+) KEAS",
+        lambda r: [_deg(r.chute_sizing.towed.alpha), r.chute_sizing.towed.airspeed / 0.514444]),
+    "README sizing areas": (
+        "README.md", r"\((\d+\.\d+) on the fitted slopes; .*? recommended (\d+\.\d+) m\^2 "
+        r"\((\d+\.\d) x neutral\), .*?\(Study `parachute area` (\d+\.\d) m\^2, .*? line "
+        r"(\d+\.\d+) m, (\d+) ft cable (passes)",
+        lambda r: [r.chute_sizing.static.area_fit, r.chute_sizing.recommended_area,
+                   r.chute_sizing.recommended_area / r.chute_sizing.static.area,
+                   r.chute_sizing.inputs.study_area, r.chute_sizing.line.line_length,
+                   r.chute_sizing.line.cable.cable_length / 0.3048,
+                   "passes" if r.chute_sizing.line.cable.ok else "fails"]),
+    "README sizing peak sideslip": (
+        "README.md", r"\(the example: (\d+\.\d) deg, within \+-(\d+) deg\)",
+        lambda r: [_deg(r.chute_sizing.study_area_peak_sideslip[0]),
+                   _deg(r.chute_sizing.inputs.fit_range[1])]),
+    "README multibody runs": (
+        "README.md", r"the (four) runs (converge), the 30 ft/s lateral gust turning the "
+        r"helicopter (\d+\.\d) deg with (\d+\.\d) deg of sideslip and (\d+\.\d) deg of lateral "
+        r"swing",
+        lambda r: ["four" if len(r.multibody.to_frame()) == 4 else "other",
+                   "converge" if (r.multibody.to_frame()["verdict"] == "convergent").all()
+                   else "not all", abs(_gust(r)["yaw change [deg]"]),
+                   abs(_gust(r)["beta peak [deg]"]), abs(_gust(r)["swing lateral peak [deg]"])]),
+    "sizing page peak sideslip": (
+        "docs/parachute-sizing.md", r"the (1-cosine) gust reaches (\d+\.\d) deg against "
+        r"\+-(\d+) deg",
+        lambda r: [r.chute_sizing.study_area_peak_sideslip[1],
+                   _deg(r.chute_sizing.study_area_peak_sideslip[0]),
+                   _deg(r.chute_sizing.inputs.fit_range[1])]),
+    "sizing page results": (
+        "docs/parachute-sizing.md", r"at the towed trim's angle of attack \((-\d+\.\d) deg at "
+        r"(\d+) KEAS, .*?through the hub, (\d+\.\d) deg from airframe z\), neutral area "
+        r"(\d+\.\d+) m\^2 on the local slopes at zero sideslip \((\d+\.\d+) m\^2 on the "
+        r"\+-15 deg least-squares slopes; .*? recommended (\d+\.\d+) m\^2 \((\d+\.\d) x "
+        r"neutral: .*? line (\d+\.\d+) m \(the wake's q ratio there is (\d+\.\d+), .*? cable "
+        r"(\d+\.\d+) m >= (\d+\.\d+) m required\. Yaw inertia about the suspension axis "
+        r"([\d,]+) kg m\^2",
+        lambda r: [_deg(r.chute_sizing.towed.alpha), r.chute_sizing.towed.airspeed / 0.514444,
+                   _deg(r.chute_sizing.axes_angle), r.chute_sizing.static.area_local,
+                   r.chute_sizing.static.area_fit, r.chute_sizing.recommended_area,
+                   r.chute_sizing.recommended_area / r.chute_sizing.static.area,
+                   r.chute_sizing.line.line_length, r.chute_sizing.line.target,
+                   r.chute_sizing.line.cable.cable_length, r.chute_sizing.line.cable.required,
+                   r.chute_sizing.inputs.model.yaw_inertia]),
+    "Nastran page attitudes": (
+        "docs/nastran.md", r"pitch (-\d+\.\d+) deg on the example\).*?\(the example's: pitch "
+        r"(-\d+\.\d) deg\)",
+        lambda r: [_deg(r.loads.attitude.pitch), _towed_case(r)["trim pitch [deg]"]]),
+    "loads page hanging attitude": (
+        "docs/loads-method.md", r"hub is (\d+\.\d+) m aft of the CG and (\d+\.\d+) m above it",
+        lambda r: list(_hub_over_cg(r))),
+    "loads page cases": (
+        "docs/loads-method.md", r"parachute on/off = (\d+) cases by default\).*?on the "
+        r"example one, `(LC\d+)`, with parachute.*?the towed case trims at pitch (-\d+\.\d) deg "
+        r"with the parachute at (\d+) KEAS",
+        lambda r: [int((r.loads.case_table()["hook"] != "TOW").sum()),
+                   _towed_case(r)["case"], _towed_case(r)["trim pitch [deg]"],
+                   r.loads.study.flight.eas / 0.514444]),
+    "conventions page hanging attitude": (
+        "docs/conventions.md", r"hub is (\d+\.\d+) m aft of and (\d+\.\d+) m above the CG: "
+        r"pitch (-\d+\.\d+)°",
+        lambda r: [*_hub_over_cg(r), _deg(r.loads.attitude.pitch)]),
+    "lateral page example": (
+        "docs/lateral-pendulum.md", r"level roll inertia, ([\d,]+) kg m\^2 .*?becomes "
+        r"([\d,]+) kg m\^2 about the fore-and-aft axis of the hanging airframe, with the CG "
+        r"(\d+\.\d+) m below the hub\. With the nominal inputs the largest load angle is "
+        r"(\d+\.\d) deg; over \+-20 % of roll inertia, CG and rope length \((\d+) runs of 60 "
+        r"s\) (\d+\.\d) deg, .*?; x (\d+\.\d) margin = (\d+\.\d) deg",
+        lambda r: [r.study.airframe.mass_items.inertia_about_cg[0, 0],
+                   _lateral_nominal(r)["roll inertia [kg m^2]"],
+                   _lateral_nominal(r)["CG below hub [m]"],
+                   _deg(r.lateral.study.nominal_max_load_angle),
+                   len(r.lateral.study.pendulums), _deg(r.lateral.study.max_load_angle),
+                   r.lateral.study.margin, _deg(r.lateral.study.recommended_angle)]),
+    "campaign page neutral area and line": (
+        "docs/campaign.md", r"the example's (\d+\.\d) m line.*?\(the example: (\d+\.\d+) m\^2 "
+        r"at (-\d+\.\d) deg, (\d+) KEAS",
+        lambda r: [r.chute_sizing.line.line_length, r.chute_sizing.static.area,
+                   _deg(r.chute_sizing.towed.alpha), r.chute_sizing.towed.airspeed / 0.514444]),
+}
+
+
+@pytest.mark.parametrize("name", sorted(QUOTES))
+def test_page_quotes_the_example(name, example_results):
+    """Each figure a page quotes from the example, re-derived from the session's run of the
+    example (every analysis) and compared at the digits the page writes it with."""
+    page, pattern, values = QUOTES[name]
+    quoted = _quoted(pattern, page)
+    derived = values(example_results)
+    assert len(quoted) == len(derived)
+    for k, (text, value) in enumerate(zip(quoted, derived, strict=True)):
+        if isinstance(value, str):
+            assert text == value, (name, k, text, value)
+        else:
+            assert _agrees(text, float(value)), (name, k, text, value)
