@@ -8,6 +8,7 @@ import re
 from pathlib import Path
 
 import matplotlib
+import numpy as np
 import pandas as pd
 import pytest
 from hostile import EXAMPLE
@@ -400,8 +401,6 @@ def test_timing_claims_cite_scripts_that_exist():
 
 # ------------------------------------------------- more figures quoted from the example's run
 def _deg(x):
-    import numpy as np
-
     return float(np.degrees(x))
 
 
@@ -519,6 +518,15 @@ QUOTES = {
                    _deg(r.lateral.study.nominal_max_load_angle),
                    len(r.lateral.study.pendulums), _deg(r.lateral.study.max_load_angle),
                    r.lateral.study.margin, _deg(r.lateral.study.recommended_angle)]),
+    "lateral page nominal reduction": (
+        "docs/lateral-pendulum.md", r"nominal inputs alone \(no spread\), (\d\.\d) x (\d+\.\d) = "
+        r"(\d+\.\d) deg gives 1 - 0\.354 / 0\.5 = (\d+\.\d) % less Y shear than 30 deg \(not the "
+        r"1 - sin \d+\.\d / sin 30 = (\d+) %",
+        lambda r: [r.lateral.study.margin, _deg(r.lateral.study.nominal_max_load_angle),
+                   r.lateral.study.margin * _deg(r.lateral.study.nominal_max_load_angle),
+                   100 * (1 - np.sin(np.radians(45))),
+                   100 * (1 - np.sin(r.lateral.study.margin
+                                     * r.lateral.study.nominal_max_load_angle) / 0.5)]),
     "campaign page neutral area and line": (
         "docs/campaign.md", r"the example's (\d+\.\d) m line.*?\(the example: (\d+\.\d+) m\^2 "
         r"at (-\d+\.\d) deg, (\d+) KEAS",
@@ -540,3 +548,48 @@ def test_page_quotes_the_example(name, example_results):
             assert text == value, (name, k, text, value)
         else:
             assert _agrees(text, float(value)), (name, k, text, value)
+
+
+def test_readme_quotes_the_campaign_decision(example_campaign_run_report):
+    """The rest of the README's paragraph on the example's campaign (factors, the towed trim
+    it reads the neutral area at, the 1-DOF proposal, the multibody verdict at the chosen
+    area, the Study's area against it, the two models' damping ratios and the criterion,
+    HC2's lowest ramp), against the Summary of the campaign report of ``slingloads run``
+    with the campaign on."""
+    path = next(example_campaign_run_report.glob("*-campaign.xlsx"))
+    summary = pd.read_excel(path, "Summary", header=None)
+    rows = {r[0]: r for r in summary.itertuples(index=False) if isinstance(r[0], str)}
+    (f1, f2, f3, alpha, speed, one_dof, verdict, ratio, chosen, zeta1, zetam,
+     criterion, hc2) = _quoted(
+        r"its factors (\d\.\d), (\d\.\d) and (\d\.\d), .*? the towed trim, (-\d+\.\d) deg at "
+        r"(\d+) KEAS, about the suspension axis, .*? the 1-DOF sizing's (\d\.\d+) m\^2, .*?the "
+        r"multibody verdict at it: ([\w ]+); the Study's [\d.]+ m\^2 is (\d\.\d+) x it\)\. The "
+        r"two models' yaw damping ratios at (\d\.\d+) m\^2 and 80 KEAS, side by side in the "
+        r"decision: 1-DOF (\d\.\d+) \(hub fixed\), multibody (\d\.\d+) .*?more than the stated "
+        r"(\d\.\d+) apart: .*? HC2 not even at (\d+) kt", "README.md")
+    factors = [float(f) for f in rows["area factors"][1].split(",")]
+    assert [float(f1), float(f2), float(f3)] == factors
+    note = rows["neutral static area (1-DOF sizing)"][3]
+    towed = re.search(r"alpha (-\d+\.\d+) deg \((\d+) KEAS", note)
+    assert _agrees(alpha, float(towed.group(1))) and speed == towed.group(2)
+    assert _agrees(one_dof, rows["1-DOF: smallest area stable under every gust"][1])
+    assert verdict == rows["multibody verdict at the chosen area"][1]
+    study_note = rows["Study 'parachute area' (loads)"][3]
+    assert f"({ratio} x)" in study_note
+    assert _agrees(chosen, rows["chosen area"][1])
+    damping = rows["yaw damping ratio, 1-DOF against multibody"][1]
+    found = re.search(r"1-DOF (\d\.\d+) .*?multibody (\d\.\d+)", damping)
+    assert _agrees(zeta1, float(found.group(1))) and _agrees(zetam, float(found.group(2)))
+    assert _agrees(criterion, rows["damping criterion: least yaw-mode damping ratio"][1])
+    assert abs(float(found.group(1)) - float(found.group(2))) > float(criterion)
+    assert int(hc2) == rows["HC2"][3] and "none" in rows["HC2"][1]
+
+
+def test_readme_quotes_the_us_twin_mass():
+    """The README's mass of the second example (US units), from its workbook's mass items
+    read by the product's reader (the loads' inputs alone: no analysis run)."""
+    import slingloads as sl
+
+    (mass,) = _quoted(r"a GENERIC (\d+\.\d) t twin in US units", "README.md")
+    study = sl.read_study(ROOT / "loadcases" / "example-us-twin.xlsx", only=["loads"])
+    assert _agrees(mass, study.airframe.mass_items.mass.sum() / 1000)
