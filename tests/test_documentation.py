@@ -428,6 +428,18 @@ def _gust(r):
     return frame.loc[next(k for k in frame.index if "gust" in k)]
 
 
+def _neutral_about_airframe_z(r):
+    """The sizing's neutral area with its yaw axis airframe z ('chute sizing yaw axis' =
+    airframe z) at the same towed trim, by the functions the run calls. [m^2]"""
+    from slingloads.analyses.chute_sizing import neutral_area
+    from slingloads.analyses.towed_attitude import yaw_model_about
+
+    sizing = r.chute_sizing
+    model, _ = yaw_model_about(sizing.inputs.model, "airframe z", sizing.towed,
+                               sizing.towed.trim.system.body)
+    return neutral_area(model, sizing.inputs.fit_range).area
+
+
 #: (page, pattern, the values its groups quote, from the example's results): each group is
 #: compared at the digits it is written with (:func:`_agrees`), a text group exactly.
 QUOTES = {
@@ -488,6 +500,15 @@ QUOTES = {
                    r.chute_sizing.line.line_length, r.chute_sizing.line.target,
                    r.chute_sizing.line.cable.cable_length, r.chute_sizing.line.cable.required,
                    r.chute_sizing.inputs.model.yaw_inertia]),
+    "README neutral area about airframe z": (
+        "README.md", r"about airframe z, the paper's balance of Mz, it would be (\d\.\d+)\)",
+        lambda r: [_neutral_about_airframe_z(r)]),
+    "sizing page airframe z and the Study's area": (
+        "docs/parachute-sizing.md", r"the same aircraft's neutral area is (\d\.\d+) m\^2: .*?"
+        r"rounded to 0\.1 m\^2: (\d\.\d) m\^2, (\d\.\d) x the neutral area about the "
+        r"suspension axis",
+        lambda r: [_neutral_about_airframe_z(r), r.chute_sizing.inputs.study_area,
+                   r.chute_sizing.inputs.study_area / r.chute_sizing.static.area]),
     "Nastran page attitudes": (
         "docs/nastran.md", r"pitch (-\d+\.\d+) deg on the example\).*?\(the example's: pitch "
         r"(-\d+\.\d) deg\)",
