@@ -440,6 +440,24 @@ def _neutral_about_airframe_z(r):
     return neutral_area(model, sizing.inputs.fit_range).area
 
 
+def _trimmed_pitch(r, keas):
+    """The pitch of the example's multibody system trimmed at ``keas`` KEAS, or None. [deg]"""
+    from slingloads.analyses.multibody import trim
+    from slingloads.constants import KNOT
+
+    point = trim(r.multibody.inputs.system.with_(airspeed=keas * KNOT))
+    return point.to_frame().iloc[0]["pitch [deg]"] if point.converged else None
+
+
+def _last_trim(r):
+    """The airspeed above which the example's system no longer trims, to the nearest 5 kt
+    (a page's "about"): the highest multiple of 5 KEAS from 100 with a trim. [kt]"""
+    keas = 100
+    while keas < 200 and _trimmed_pitch(r, keas + 5) is not None:
+        keas += 5
+    return keas
+
+
 #: (page, pattern, the values its groups quote, from the example's results): each group is
 #: compared at the digits it is written with (:func:`_agrees`), a text group exactly.
 QUOTES = {
@@ -509,6 +527,17 @@ QUOTES = {
         r"suspension axis",
         lambda r: [_neutral_about_airframe_z(r), r.chute_sizing.inputs.study_area,
                    r.chute_sizing.inputs.study_area / r.chute_sizing.static.area]),
+    "multibody page trims against airspeed": (
+        "docs/multibody.md", r"trims at (-\d+\.\d) deg of pitch at 60 KEAS, (-\d+\.\d) deg at 80, "
+        r"(-\d+\.\d) deg at 100 and (-\d+\.\d) deg at 120 KEAS; beyond about (\d+) KEAS",
+        lambda r: [*(_trimmed_pitch(r, v) for v in (60, 80, 100, 120)), _last_trim(r)]),
+    "README trim at 100 KEAS": (
+        "README.md", r"moment balance\): (-\d+\.\d) deg at 100 KEAS, and beyond about (\d+) KEAS",
+        lambda r: [_trimmed_pitch(r, 100), _last_trim(r)]),
+    "campaign page trim at 100 KEAS": (
+        "docs/campaign.md", r"at 100 KEAS the example's helicopter trims at (-\d+) deg of angle "
+        r"of attack, within the table's -40 deg; beyond about (\d+) KEAS",
+        lambda r: [_trimmed_pitch(r, 100), _last_trim(r)]),
     "Nastran page attitudes": (
         "docs/nastran.md", r"pitch (-\d+\.\d+) deg on the example\).*?\(the example's: pitch "
         r"(-\d+\.\d) deg\)",
