@@ -458,6 +458,16 @@ def _last_trim(r):
     return keas
 
 
+def _line_reach(r):
+    """(nearest, farthest) distance from the hub the example's parachute line reaches, by the
+    function the system's check calls (a cable in between is refused). [m]"""
+    from slingloads.models.multibody.parachute_line import line_reach
+
+    system = r.multibody.inputs.system
+    return line_reach(system.hardpoints.hub, system.hardpoints.chute,
+                      system.parachute.line_length)
+
+
 #: (page, pattern, the values its groups quote, from the example's results): each group is
 #: compared at the digits it is written with (:func:`_agrees`), a text group exactly.
 QUOTES = {
@@ -577,8 +587,15 @@ QUOTES = {
                    100 * (1 - np.sin(np.radians(45))),
                    100 * (1 - np.sin(r.lateral.study.margin
                                      * r.lateral.study.nominal_max_load_angle) / 0.5)]),
+    "campaign page cables refused": (
+        "docs/campaign.md", r"the example's (\d+\.\d) m line on its attachment (\d+\.\d) m aft of "
+        r"the hub, cables from (\d+\.\d) to (\d+\.\d) ft are refused",
+        lambda r: [r.multibody.inputs.system.parachute.line_length,
+                   (r.multibody.inputs.system.hardpoints.chute
+                    - r.multibody.inputs.system.hardpoints.hub)[0],
+                   *(d / 0.3048 for d in _line_reach(r))]),
     "campaign page neutral area and line": (
-        "docs/campaign.md", r"the example's (\d+\.\d) m line.*?\(the example: (\d+\.\d+) m\^2 "
+        "docs/campaign.md", r"the example's (\d+\.\d) m line on.*?\(the example: (\d+\.\d+) m\^2 "
         r"at (-\d+\.\d) deg, (\d+) KEAS",
         lambda r: [r.chute_sizing.line.line_length, r.chute_sizing.static.area,
                    _deg(r.chute_sizing.towed.alpha), r.chute_sizing.towed.airspeed / 0.514444]),
