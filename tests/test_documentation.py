@@ -541,6 +541,10 @@ QUOTES = {
         "docs/multibody.md", r"trims at (-\d+\.\d) deg of pitch at 60 KEAS, (-\d+\.\d) deg at 80, "
         r"(-\d+\.\d) deg at 100 and (-\d+\.\d) deg at 120 KEAS; beyond about (\d+) KEAS",
         lambda r: [*(_trimmed_pitch(r, v) for v in (60, 80, 100, 120)), _last_trim(r)]),
+    "multibody page hang": (
+        "docs/multibody.md", r"With the GENERIC data of the example \(CG (\d\.\d+) m ahead of the "
+        r"hub, (-\d+) deg in hover;",
+        lambda r: [_hub_over_cg(r)[0], _deg(r.loads.attitude.pitch)]),
     "README trim at 100 KEAS": (
         "README.md", r"moment balance\): (-\d+\.\d) deg at 100 KEAS, and beyond about (\d+) KEAS",
         lambda r: [_trimmed_pitch(r, 100), _last_trim(r)]),
