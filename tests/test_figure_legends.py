@@ -137,9 +137,11 @@ def _ramps_result(verdicts):
             wave = 30.0 * np.sin(2.0 * np.pi * time / (1.7 + k))
             histories[(name, target)] = pd.DataFrame({"time [s]": time, YAW: wave, BETA: -wave})
     runs = pd.DataFrame(rows)
-    system = SimpleNamespace(cable=SimpleNamespace(length=60 * FOOT), density_altitude=0.0)
+    system = SimpleNamespace(cable=SimpleNamespace(length=60 * FOOT), density_altitude=0.0,
+                             body=SimpleNamespace(mass=2900.0))
     study = SimpleNamespace(onset=5.0, rate=0.5, run_length=100.0,
-                            systems={"HC1": system, "HC2": system})
+                            systems={"HC1": system, "HC2": system},
+                            ramp_end=lambda target: 5.0 + target / 0.5)
     return SimpleNamespace(no_parachute=NoParachuteResult(runs, runs.iloc[:0], keys),
                            campaign=SimpleNamespace(no_parachute=study),
                            history=histories.__getitem__)
