@@ -320,20 +320,24 @@ def plot_no_parachute_gust(result, units="SI"):
                         f"{GUST_DELAY:g} s after each ramp's end")
 
 
-def plot_root_locus(loci, title=""):
-    """Root locus of the least-damped eigenvalues against the parachute area: complex plane,
-    colour the area factor; oscillatory roots (a complex pair, upper half shown) as circles,
-    real (aperiodic) roots as crosses.
+def plot_root_locus(loci, title="", chosen=None):
+    """Root locus of the least-damped eigenvalues against the parachute area: on the left the
+    complex plane, colour the area factor; on the right the real part against the area
+    factor, with 1.0 x neutral and the ``chosen`` area factor (when given) marked; in both,
+    oscillatory roots (a complex pair, upper half shown) as circles, real (aperiodic) roots
+    as crosses.
 
     Parameters
     ----------
     loci : pandas.DataFrame
         Columns "area factor [-]", "real [1/s]", "imag [rad/s]" (one row per root).
     title : str
+    chosen : float, optional
+        The chosen area factor. [-]
     """
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.2)), left=0.8, right=0.2, bottom=0.55,
-                      top=0.45)
-    ax = fig.subplots()
+                      top=0.6, wspace=0.7)
+    ax, against = fig.subplots(1, 2, width_ratios=(1.25, 1.0))
     f = loci["area factor [-]"].to_numpy(float)
     re, im = loci["real [1/s]"].to_numpy(float), loci["imag [rad/s]"].to_numpy(float)
     osc = np.abs(im) > 1e-6
@@ -346,10 +350,21 @@ def plot_root_locus(loci, title=""):
     bar.set_label(AREA_FACTOR_SCALE, fontsize=7)
     bar.ax.tick_params(labelsize=7)
     ax.axvline(0.0, color="r", lw=0.8)
-    ax.set(xlabel="real part [1/s]", ylabel="imaginary part [rad/s]", title=title)
-    ax.grid(True, alpha=0.4)
-    _small(ax)
-    _legend(ax, fontsize=6)
+    ax.set(xlabel="real part [1/s]", ylabel="imaginary part [rad/s]", title="complex plane")
+    against.scatter(f[osc], re[osc], marker="o", s=14, facecolors="none", edgecolors="C0",
+                    label="oscillatory")
+    against.scatter(f[~osc], re[~osc], marker="x", s=22, color="C3", label="real")
+    against.axhline(0.0, color="r", lw=0.8)
+    against.axvline(1.0, color="k", ls=":", lw=1.0, label="1.0 x neutral")
+    if chosen is not None and np.isfinite(chosen):
+        against.axvline(chosen, color="m", ls="--", lw=1.0, label=f"chosen {chosen:.3g} x")
+    against.set(xlabel=AREA_FACTOR_SCALE, ylabel="real part [1/s]",
+                title="real part against the area\n(> 0 divergent)")
+    for a in (ax, against):
+        a.grid(True, alpha=0.4)
+        _small(a)
+        _legend(a, fontsize=6)
+    fig.suptitle(title, fontsize=8, y=0.995)
     return fig
 
 

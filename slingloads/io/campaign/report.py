@@ -407,7 +407,8 @@ def _figures(report, units):
         locus = _locus(r, units)
         if locus is not None:
             figs["root-locus"] = ("Root locus against the parachute area",
-                                  (plot_root_locus, locus, {}))
+                                  (plot_root_locus, locus,
+                                   {"chosen": r.chosen_area_factor}))
     if r.no_parachute is not None:
         figs["no-parachute"] = ("Transport without parachute (paper figures 16-18)",
                                 (plot_no_parachute, (r,), {"units": units}))
