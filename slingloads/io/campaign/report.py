@@ -13,9 +13,11 @@ all (:mod:`slingloads.io.common.atomic`):
   a page), *Selection* (by area), *NeutralArea*, *Sensitivity*, *StabilityMap*, *NoParachute*,
   *LoadsHandoff* and *Plots*;
 * ``<stem>-campaign-<tag>.png``: selection, sensitivity to each factor (paper figures 9-13),
-  stability map, transport without parachute (figures 16-18), loads envelope;
+  stability map, root locus, transport without parachute (figures 16-18) and its ramps with a
+  gust, loads envelope;
 * ``<stem>-campaign-histories.parquet``: every stored history (SI, angles in degrees), a
-  ``run`` column first (matrix run ids; ``NP-<helicopter>-<target>kt`` without parachute).
+  ``run`` column first (matrix run ids; ``NP-<helicopter>-<target>kt`` without parachute,
+  ``NP-<helicopter>-<target>kt-gust`` its ramps with a gust).
 
 Speeds, lengths, masses, areas and forces are in the report unit system (``--units``: SI, or
 kt, ft, lb, ft^2, lbf); the Parquet file is SI.
