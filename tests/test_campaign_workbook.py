@@ -42,6 +42,9 @@ def base(tmp_path_factory):
     book = openpyxl.load_workbook(EXAMPLE)
     for name, value in TINY.items():
         book["Study"][f"B{study_row(book, name)}"] = value
+    # no ramps with a gust (their default 20, 30 kt would add 2 runs to every count below;
+    # tests/test_ramp_gust.py flies them)
+    book["Study"].append(["campaign no-parachute gust ramps", "none", "kt", ""])
     rows = list(book["FuselageAero"].iter_rows(values_only=True))
     keep = [rows[0]] + [r for r in rows[1:] if r[0] % 10 == 0 and r[1] % 4 == 0]
     index = book.sheetnames.index("FuselageAero")
@@ -398,3 +401,20 @@ def test_us_report_keeps_one_unit_per_quantity(tiny, tmp_path):
     assert "KEAS" in conditions and "ft/s EAS" not in conditions
     assert "density altitude 0 ft" in conditions and "altitude 0 in" not in conditions
     assert "cable 720 in," in conditions and "cable 60 ft" not in conditions
+
+
+def test_ramps_with_a_gust_read_from_the_study(tmp_path):
+    """'campaign no-parachute gust ramps' and 'campaign no-parachute gust' reach the study
+    in SI (20, 30 kt -> 10.29, 15.43 m/s; 15 ft/s -> 4.572 m/s); 'none' flies none."""
+    from slingloads.constants import FOOT, KNOT
+
+    def rows(book):
+        book["Study"][f"B{study_row(book, 'campaign no-parachute gust ramps')}"] = "30, 20"
+        book["Study"].append(["campaign no-parachute gust", 15, "ft/s", ""])
+
+    study = read_study(workbook(tmp_path / "gust.xlsx", extra=rows)
+                       ).inputs.campaign.campaign.no_parachute
+    np.testing.assert_allclose(study.gust_targets, (20 * KNOT, 30 * KNOT))
+    assert study.gust_speed == pytest.approx(15 * FOOT)
+    none = read_study(BASE[0]).inputs.campaign.campaign.no_parachute
+    assert none.gust_targets == () and none.gust_jobs() == []

@@ -137,9 +137,11 @@ def _ramps_result(verdicts):
             wave = 30.0 * np.sin(2.0 * np.pi * time / (1.7 + k))
             histories[(name, target)] = pd.DataFrame({"time [s]": time, YAW: wave, BETA: -wave})
     runs = pd.DataFrame(rows)
-    system = SimpleNamespace(cable=SimpleNamespace(length=60 * FOOT), density_altitude=0.0)
+    system = SimpleNamespace(cable=SimpleNamespace(length=60 * FOOT), density_altitude=0.0,
+                             body=SimpleNamespace(mass=2900.0))
     study = SimpleNamespace(onset=5.0, rate=0.5, run_length=100.0,
-                            systems={"HC1": system, "HC2": system})
+                            systems={"HC1": system, "HC2": system},
+                            ramp_end=lambda target: 5.0 + target / 0.5)
     return SimpleNamespace(no_parachute=NoParachuteResult(runs, runs.iloc[:0], keys),
                            campaign=SimpleNamespace(no_parachute=study),
                            history=histories.__getitem__)
@@ -183,3 +185,33 @@ def test_no_parachute_legends_give_each_ramps_verdict():
             for b in boxes[i + 1:]:
                 assert not a.overlaps(b), (a, b)
     plt.close(figure)
+
+
+def test_root_locus_tells_real_from_oscillatory_and_marks_neutral_and_chosen():
+    """The root locus against the area (campaign report): a real root crossing zero at
+    1.1 x and an oscillatory pair of the table it is drawn from appear in the right panel
+    (real part against the area factor) as crosses and circles at their own (area, real
+    part); the panel marks 1.0 x neutral and the chosen 1.4 x; the title is the caller's
+    base condition."""
+    import pandas as pd
+
+    from slingloads.io.campaign.plots import plot_root_locus
+
+    f = np.round(np.linspace(0.8, 1.6, 9), 3)
+    loci = pd.concat([
+        pd.DataFrame({"area factor [-]": f, "real [1/s]": 0.1 * (1.1 - f), "imag [rad/s]": 0.0}),
+        pd.DataFrame({"area factor [-]": f, "real [1/s]": -0.05, "imag [rad/s]": 0.7}),
+        pd.DataFrame({"area factor [-]": f, "real [1/s]": -0.05, "imag [rad/s]": -0.7})])
+    figure = plot_root_locus(loci, "100 KEAS, 0 m HD, mass maximum 2900 kg", chosen=1.4)
+    right = figure.axes[1]
+    points = {}
+    for collection in right.collections:
+        label = collection.get_label()
+        points[label] = np.asarray(collection.get_offsets())
+    np.testing.assert_allclose(points["real"], np.column_stack([f, 0.1 * (1.1 - f)]))
+    assert len(points["oscillatory"]) == 2 * len(f)
+    np.testing.assert_allclose(points["oscillatory"][:, 1], -0.05)
+    lines = {line.get_label(): line.get_xdata()[0] for line in right.get_lines()
+             if line.get_label() in ("1.0 x neutral", "chosen 1.4 x")}
+    assert lines == {"1.0 x neutral": 1.0, "chosen 1.4 x": 1.4}
+    assert figure._suptitle.get_text().startswith("100 KEAS")

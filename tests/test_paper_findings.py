@@ -164,3 +164,26 @@ def test_without_parachute_airspeed_matters_only_through_yaw_and_pendulum_coales
     hang = float(np.linalg.norm(sample_hardpoints("HC1").hub))   # hub above the CG
     pendulum = np.sqrt(G0 / (60 * FOOT + hang))
     assert abs(lam[50.0].imag) == pytest.approx(pendulum, rel=0.10)
+
+
+def test_chosen_area_is_stable_whatever_the_airspeed_altitude_and_mass():
+    """Paper s.4.5, figures 11-12 and conclusion 4 (airspeed, altitude, weight negligible
+    once the area is adequate), as the comparison finds them: at its chosen area, 1.2 x the
+    campaign's neutral area (about airframe z at the 80 KEAS towed trim, 0.543 m^2: 0.652
+    m^2), the towed system's eigenvalues are stable at 40 and 100 KEAS, at sea level and
+    10,000 ft, at the maximum and minimum mass (2,900 and 2,300 kg), on the 18 ft cable; and
+    1.0 x the +-10 deg fit area (0.490 m^2) is not, at 40 KEAS (the boundary, 1.145 x)."""
+    from slingloads.analyses.campaign import CampaignSetup
+    from slingloads.analyses.campaign.setup import neutral_area_of
+
+    neutral = neutral_area_of(towed(1.0), 80 * KNOT, axis="airframe z")
+    assert neutral.area == pytest.approx(0.543, abs=0.003)
+    setup = CampaignSetup(towed(1.0))
+    for v in (40.0, 100.0):
+        for h in (0.0, 10000 * FOOT):
+            for mass in (2900.0, 2300.0):
+                row = {"area [m^2]": 1.2 * 0.543, "carrier": "frozen", "mass [kg]": mass,
+                       "cable length [m]": 18 * FOOT, "airspeed EAS [m/s]": v * KNOT,
+                       "density altitude [m]": h, "run": "check"}
+                assert stable(setup.system_for(row)), (v, h, mass)
+    assert not stable(towed(0.490, airspeed=40 * KNOT))

@@ -98,7 +98,7 @@ def run(study):
     workers = options.workers or inputs.workers
     timeout = options.timeout or inputs.timeout
     campaign, added = _with_sizing_area(study, inputs.campaign)
-    total = campaign.size + (len(campaign.no_parachute.jobs()) if campaign.no_parachute else 0)
+    total = campaign.size + (campaign.no_parachute.size if campaign.no_parachute else 0)
     with study.located(ANALYSIS):
         store = RunCache(cache_dir)
         # the study's own scheduler (not the command line's): errors at its Study cell

@@ -38,6 +38,10 @@ from .matrix import (
 )
 from .metrics import HISTORY_LABELS, YAW_SHARE
 from .no_parachute import (
+    GUST_DELAY,
+    GUST_DURATION,
+    GUST_SPEED,
+    GUST_TARGETS,
     RAMP_TARGETS,
     NoParachuteResult,
     NoParachuteStudy,
@@ -75,6 +79,7 @@ __all__ = [
     "CARRIERS", "CONDITION_COLUMNS", "DEFAULT_FREE_CARRIER", "FACTORS", "HISTORY_LABELS",
     "HOOK_SOURCES", "Handoff", "comparison_as_run", "loads_comparison", "loads_from_dynamics",
     "MANOEUVRES",
+    "GUST_DELAY", "GUST_DURATION", "GUST_SPEED", "GUST_TARGETS",
     "MARGIN", "MAX_HALF_TIME", "MIN_DAMPING", "RAMP_TARGETS", "ROW_FACTORS",
     "SCHEDULER_TIMEOUT", "YAW_SHARE",
     "Campaign", "CampaignMatrix", "CampaignResult", "CampaignSetup", "DaskCluster",

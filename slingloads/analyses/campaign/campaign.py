@@ -309,12 +309,15 @@ class CampaignResult:
 
     def history(self, run):
         """Time histories of one run (a matrix run id, or (helicopter, target [m/s]) of the
-        study without parachute), unit-labelled columns (angles in degrees).
+        study without parachute, or (helicopter, target [m/s], "gust") of its ramps with a
+        gust), unit-labelled columns (angles in degrees).
 
         Parameters
         ----------
-        run : str or (str, float)
-            A matrix run id, or (helicopter, target airspeed [m/s]) of the study without parachute.
+        run : str or (str, float) or (str, float, "gust")
+            A matrix run id, or (helicopter, target airspeed [m/s]) of a ramp of the study
+            without parachute, or (helicopter, target airspeed [m/s], "gust") of its ramps
+            with a gust.
 
         Returns
         -------
@@ -323,7 +326,10 @@ class CampaignResult:
         """
         key = self.keys.get(run)
         if key is None and self.no_parachute is not None:
-            key = self.no_parachute.keys.get(run)
+            if isinstance(run, tuple) and len(run) == 3 and run[2] == "gust":
+                key = self.no_parachute.gust_keys.get(run[:2])
+            else:
+                key = self.no_parachute.keys.get(run)
         if key is None:
             raise InputError("unknown run", run)
         record = self.store.get(key)
@@ -449,11 +455,13 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
         # each ramp runs for its own length (its verdict must not depend on the others)
         study = campaign.no_parachute
         by_length = {}
-        for name, target, system, m in study.jobs():
-            ramp = campaign.settings.as_dict(study.run_length_of(target))
-            key = KeyMaker(ramp).key(system, m)
-            chute_jobs.append((name, target, key, system, m))
-            by_length.setdefault(ramp["t_end"], (ramp, []))[1].append((key, system, m))
+        for gust, listed, length in ((False, study.jobs(), study.run_length_of),
+                                     (True, study.gust_jobs(), study.gust_run_length_of)):
+            for name, target, system, m in listed:
+                ramp = campaign.settings.as_dict(length(target))
+                key = KeyMaker(ramp).key(system, m)
+                chute_jobs.append((name, target, key, system, m, gust))
+                by_length.setdefault(ramp["t_end"], (ramp, []))[1].append((key, system, m))
         groups += list(by_length.values())
     if executor is None:
         executor = make_executor(runs=len(jobs) + len(chute_jobs),
@@ -472,16 +480,17 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
                 if chosen is not None and np.isfinite(chosen) else None)
     no_chute = None
     if chute_jobs:
-        rows = []
-        for name, target, key, _, manoeuvre in chute_jobs:
+        rows = {False: [], True: []}
+        for name, target, key, _, manoeuvre, gust in chute_jobs:
             record = ordered(store.get(key)[0])
-            rows.append({"helicopter": name, "ramp target [m/s]": target,
-                         "manoeuvre": manoeuvre.name,
-                         "verdict": ramp_verdict(record["response verdict"],
-                                                 record["linear verdict"]), **record})
-        runs = pd.DataFrame(rows)
-        no_chute = NoParachuteResult(runs, speed_limits(runs),
-                                     {(n, t): k for n, t, k, _, _ in chute_jobs})
+            rows[gust].append({"helicopter": name, "ramp target [m/s]": target,
+                               "manoeuvre": manoeuvre.name,
+                               "verdict": ramp_verdict(record["response verdict"],
+                                                       record["linear verdict"]), **record})
+        runs = pd.DataFrame(rows[False])
+        no_chute = NoParachuteResult(
+            runs, speed_limits(runs), {(n, t): k for n, t, k, *_, g in chute_jobs if not g},
+            pd.DataFrame(rows[True]), {(n, t): k for n, t, k, *_, g in chute_jobs if g})
     stability = (stability_map(campaign.setup, campaign.neutral.area, _map_settings(campaign),
                                _map_row(campaign)) if campaign.stability is not None else None)
     return CampaignResult(

@@ -13,6 +13,17 @@ model); "static departure" when it settles off its trim heading (the helicopter 
 away from the flight path, a static divergence; the size in the reason); "limit cycle";
 "divergent"; "outside domain" (left a table, slack cable); "inconclusive".
 
+**Ramps with a gust.** A ramp alone shows whether the helicopter holds its heading, but not
+how well damped it is: a stable case rides the ramp with hardly a swing. Each target of
+``gust_targets`` (default 20 and 30 kt, the paper's limit) is flown again with a lateral gust
+of ``gust_speed`` (default 10 ft/s, a "finite" gust of :data:`GUST_DURATION` s) starting
+:data:`GUST_DELAY` s after its ramp ends, the run lasting :data:`OBSERVE` s after the gust
+ends: the response after the gust shows the damping (or its absence). 10 ft/s rather than the
+30 ft/s of the parachuted runs: at 20 kt a 30 ft/s side gust alone turns the relative wind by
+41 deg (10 ft/s: 16 deg), beyond the small-disturbance response these runs are to show. Their
+verdicts (the same rule, read after the gust) stand beside the ramps' and do not enter the
+speed limit, which is the paper's (ramps alone).
+
 **Speed limit** of a helicopter: the largest ramp target whose run, and the run of every lower
 target, is convergent (NaN when even the lowest is not); when every ramp tried is convergent,
 the limit is only known to be at least the highest target (``">= X"``).
@@ -40,6 +51,14 @@ OBSERVE = 60.0
 SAMPLE_CABLE = 60 * FOOT
 #: Default cable stiffness EA of the sample systems. [N]
 SAMPLE_EA = 5e6
+#: Default targets of the ramps flown again with a gust after the ramp (module notes). [m/s]
+GUST_TARGETS = tuple(v * KNOT for v in (20.0, 30.0))
+#: Default lateral gust of those runs (module notes: 10 ft/s). [m/s]
+GUST_SPEED = 10 * FOOT
+#: Duration of that gust (a "finite" gust, :func:`slingloads.models.gusts.make_gust`). [s]
+GUST_DURATION = 10.0
+#: Time from the ramp's end to the gust's start. [s]
+GUST_DELAY = 10.0
 
 
 def sample_full_tail_system(name, cable_length=SAMPLE_CABLE, ea=SAMPLE_EA):
@@ -106,12 +125,19 @@ class NoParachuteStudy:
         Ramp rate, > 0. [m/s^2]
     onset : float
         [s]
+    gust_targets : sequence of float
+        Ramp targets flown again with a lateral gust after the ramp, each > 0, or empty
+        (module notes; default :data:`GUST_TARGETS`, 20 and 30 kt). [m/s]
+    gust_speed : float
+        Speed of that gust, > 0 (default :data:`GUST_SPEED`, 10 ft/s). [m/s]
     """
 
     systems: dict = field(default_factory=dict)
     targets: tuple = RAMP_TARGETS
     rate: float = RAMP_RATE
     onset: float = RAMP_ONSET
+    gust_targets: tuple = GUST_TARGETS
+    gust_speed: float = GUST_SPEED
 
     def __post_init__(self):
         if not self.systems:
@@ -127,12 +153,26 @@ class NoParachuteStudy:
         if targets.size == 0 or np.any(~np.isfinite(targets) | (targets <= 0)):
             raise InputError("wind-ramp targets must be > 0 [m/s]", targets.tolist())
         object.__setattr__(self, "targets", tuple(np.unique(targets)))
+        gusts = np.atleast_1d(np.asarray(self.gust_targets, float))
+        if np.any(~np.isfinite(gusts) | (gusts <= 0)):
+            raise InputError("targets of the ramps with a gust must be > 0 [m/s]",
+                             gusts.tolist())
+        object.__setattr__(self, "gust_targets", tuple(np.unique(gusts)))
+        speed = float(self.gust_speed)
+        if not np.isfinite(speed) or speed <= 0:
+            raise InputError("the gust after the ramps must be > 0 [m/s]", speed)
+        object.__setattr__(self, "gust_speed", speed)
         for name, value in (("rate", self.rate), ("onset", self.onset)):
             value = float(value)
             if not np.isfinite(value) or value < 0 or (name == "rate" and value == 0):
                 raise InputError(f"wind-ramp {name} must be {'> 0' if name == 'rate' else '>= 0'}",
                                  value)
         object.__setattr__(self, "systems", dict(self.systems))
+
+    @property
+    def size(self):
+        """Runs of the study: the ramps and the ramps with a gust, of every helicopter."""
+        return len(self.systems) * (len(self.targets) + len(self.gust_targets))
 
     @property
     def run_length(self):
@@ -154,6 +194,76 @@ class NoParachuteStudy:
             [s]
         """
         return ramp_length(target, self.rate, self.onset)
+
+    def ramp_end(self, target):
+        """Time the ramp to ``target`` [m/s] ends. [s]
+
+        Parameters
+        ----------
+        target : float
+            Ramp target. [m/s]
+
+        Returns
+        -------
+        float
+            [s]
+        """
+        return self.onset + float(target) / self.rate
+
+    def gust_window(self, target):
+        """(start, end) of the gust after the ramp to ``target`` [m/s] (module notes). [s]
+
+        Parameters
+        ----------
+        target : float
+            Ramp target. [m/s]
+
+        Returns
+        -------
+        (float, float)
+            [s]
+        """
+        start = self.ramp_end(target) + GUST_DELAY
+        return start, start + GUST_DURATION
+
+    def gust_run_length_of(self, target):
+        """Length of the run of the ramp to ``target`` [m/s] with its gust: :data:`OBSERVE` s
+        after the gust ends, rounded up to a whole 10 s. [s]
+
+        Parameters
+        ----------
+        target : float
+            Ramp target. [m/s]
+
+        Returns
+        -------
+        float
+            [s]
+        """
+        return float(10.0 * np.ceil((self.gust_window(target)[1] + OBSERVE) / 10.0))
+
+    def gust_jobs(self):
+        """(name, target, system, manoeuvre) of every ramp with a gust (module notes).
+
+        Returns
+        -------
+        list of (str, float, SlingSystem, Manoeuvre)
+            Helicopter name, ramp target [m/s], system and manoeuvre.
+        """
+        from slingloads.analyses.multibody.manoeuvres import wind_ramp
+        from slingloads.models.gusts import make_gust
+
+        out = []
+        for name, system in self.systems.items():
+            for target in self.gust_targets:
+                start, _ = self.gust_window(target)
+                gust = make_gust("finite", self.gust_speed, start, GUST_DURATION)
+                manoeuvre = wind_ramp(
+                    target, self.rate, self.onset, gust=gust,
+                    name=f"wind ramp to {target / KNOT:.0f} kt, {self.gust_speed / FOOT:.0f} "
+                         f"ft/s lateral gust at {start:.0f} s")
+                out.append((name, target, system.with_(airspeed=target), manoeuvre))
+        return out
 
     def jobs(self):
         """(name, target, system, manoeuvre) of every ramp.
@@ -189,11 +299,18 @@ class NoParachuteResult:
         One row per helicopter: largest convergent target speed.
     keys : dict
         (helicopter, target) -> run key (histories in the store).
+    gust_runs : pandas.DataFrame
+        One row per (helicopter, target) of the ramps with a gust: verdict and response
+        metrics (empty without them).
+    gust_keys : dict
+        (helicopter, target) -> run key of the ramps with a gust.
     """
 
     runs: pd.DataFrame
     limits: pd.DataFrame
     keys: dict
+    gust_runs: pd.DataFrame = field(default_factory=pd.DataFrame)
+    gust_keys: dict = field(default_factory=dict)
 
 
 def ramp_verdict(response, linear):

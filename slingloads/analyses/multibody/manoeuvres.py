@@ -254,9 +254,11 @@ def forward_acceleration(target_ias, density_altitude=0.0, acceleration=1.0, ons
                      disturbance=dict(HOVER_SEED if disturbance is None else disturbance))
 
 
-def wind_ramp(target, rate=0.5, onset=5.0, name=None, disturbance=None):
+def wind_ramp(target, rate=0.5, onset=5.0, name=None, disturbance=None, gust=None,
+              direction="lateral"):
     """Hovering carrier, head wind rising from 0 to ``target`` [m/s] at ``rate`` [m/s^2], from
-    :data:`HOVER_SEED` unless another ``disturbance`` is given.
+    :data:`HOVER_SEED` unless another ``disturbance`` is given; with ``gust``, that gust on top
+    of the ramp (e.g. after the ramp's end, so that a stable case shows its damping).
 
     Parameters
     ----------
@@ -270,13 +272,19 @@ def wind_ramp(target, rate=0.5, onset=5.0, name=None, disturbance=None):
         Label of the manoeuvre (default from its inputs).
     disturbance : dict, optional
         Initial offsets (keys and units of :data:`DISTURBANCES`: rad, rad/s, m).
+    gust : gust of :mod:`slingloads.models.gusts`, optional
+        A gust added to the ramp's wind (:func:`~slingloads.models.gusts.make_gust`).
+    direction : str or array_like
+        Direction of the gust (see
+        :data:`~slingloads.models.multibody.environment.GUST_DIRECTIONS`).
 
     Returns
     -------
     Manoeuvre
     """
     label = name or f"wind ramp to {target / KNOT:.0f} kt"
-    return Manoeuvre(label, wind=Wind(ramp=WindRamp(target, rate, onset)),
+    return Manoeuvre(label, wind=Wind(ramp=WindRamp(target, rate, onset), gust=gust,
+                                      direction=direction),
                      disturbance=dict(HOVER_SEED if disturbance is None else disturbance))
 
 

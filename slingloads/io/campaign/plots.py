@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION
 from slingloads.analyses.verdicts import CONVERGENT, DIVERGENT, STATIC_DEPARTURE
 from slingloads.constants import FOOT, KNOT, POUND
 from slingloads.errors import InputError
@@ -231,38 +232,59 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
     return fig
 
 
-def plot_no_parachute(result, units="SI"):
-    """Yaw and sideslip under the frontal wind ramps, each helicopter, without parachute
-    (paper figures 16-18): one row per ramp target, the head wind (the ramp) on the right
-    axis of the yaw panel and the ramp's end marked."""
-    npr = result.no_parachute
+def _no_parachute_title(study, units, extra=""):
+    """The base condition of the study without parachute: helicopters and masses, cable,
+    density altitude, carrier, the ramp (and ``extra``)."""
+    systems = study.systems
+    system = next(iter(systems.values()))
+    masses = ", ".join(f"{name} {_mass(s.body.mass, units)}" for name, s in systems.items())
+    rate = (f"{study.rate:g} m/s^2" if units == "SI"
+            else f"{study.rate / FOOT:.3g} ft/s^2")
+    return (f"full tail, no parachute: {masses}; cable "
+            f"{quantity_text(system.cable.length, 'length', units)}, "
+            f"{quantity_text(system.density_altitude, 'altitude', units)} HD, hovering "
+            f"carrier; ramp {rate} from {study.onset:g} s{extra}")
+
+
+def _ramp_figure(result, runs, keys, windows, units, extra=""):
+    """Yaw and sideslip, one row per ramp target, of the runs ``runs`` (helicopter, ramp
+    target [m/s], verdict) whose histories are at ``keys`` ((helicopter, target) -> history
+    key of :meth:`CampaignResult.history`); the head wind on the right axis of the yaw
+    panel, the ramp's end dotted and, where ``windows`` gives one, the gust shaded."""
     study = result.campaign.no_parachute
-    runs = npr.runs
     targets = sorted(runs["ramp target [m/s]"].unique())
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.0 * len(targets) + 1.1)), left=0.7,
-                      right=0.15, bottom=0.5, top=0.5, wspace=0.6, hspace=0.45)
+                      right=0.15, bottom=0.5, top=0.6, wspace=0.6, hspace=0.6)
     axes = fig.subplots(len(targets), 2, squeeze=False, sharex=True)
     for i, target in enumerate(targets):
-        for name, t in npr.keys:
+        length = 0.0
+        for (name, t), key in keys.items():
             if t != target:
                 continue
-            h = result.history((name, t))
+            h = result.history(key)
+            length = max(length, float(h["time [s]"].iloc[-1]))
             verdict = runs[(runs["helicopter"] == name)
                            & (runs["ramp target [m/s]"] == t)]["verdict"].iloc[0]
             axes[i, 0].plot(h["time [s]"], h[YAW], label=f"{name} ({verdict})")
             axes[i, 1].plot(h["time [s]"], h[BETA], label=name)
-        end = study.onset + target / study.rate
+        end = study.ramp_end(target)
+        gust = windows(target)
         for ax in axes[i]:
             ax.axvline(end, color="0.4", ls=":", lw=1.0)
+            if gust is not None:
+                ax.axvspan(gust[0], gust[1], color="orange", alpha=0.15, lw=0)
         wind = axes[i, 0].twinx()
-        time = np.linspace(0.0, study.run_length, 200)
+        time = np.linspace(0.0, length or study.run_length, 200)
         wind.plot(time, np.clip((time - study.onset) * study.rate, 0.0, target) / KNOT,
                   color="0.6", lw=0.8, ls="--")
         wind.set_ylabel("head wind [kt]", fontsize=7, color="0.4")
         wind.tick_params(labelsize=6, colors="0.4")
-        axes[i, 0].set(ylabel="yaw [deg]", title=f"wind ramp to {target / KNOT:.0f} kt "
-                       f"(ends at {end:.0f} s, dotted)")
-        axes[i, 1].set(ylabel="beta [deg]", title=f"wind ramp to {target / KNOT:.0f} kt")
+        what = f"wind ramp to {target / KNOT:.0f} kt"
+        marks = f"ends at {end:.0f} s, dotted" + (
+            f"; gust {gust[0]:.0f}-{gust[1]:.0f} s, shaded" if gust is not None else "")
+        axes[i, 0].set(ylabel="yaw [deg]",
+                       title=f"{what}\n({marks})" if gust is not None else f"{what} ({marks})")
+        axes[i, 1].set(ylabel="beta [deg]", title=what)
         _legend(axes[i, 0], fontsize=6)
         for ax in axes[i]:
             ax.grid(True, alpha=0.4)
@@ -270,71 +292,52 @@ def plot_no_parachute(result, units="SI"):
         ax.set_xlabel("time [s]")
     for ax in axes.flat:
         _small(ax)
-    system = next(iter(study.systems.values()))
-    rate = (f"{study.rate:g} m/s^2" if units == "SI"
-            else f"{study.rate / FOOT:.3g} ft/s^2")
-    fig.suptitle(f"full tail, no parachute; cable "
-                 f"{quantity_text(system.cable.length, 'length', units)}, "
-                 f"{quantity_text(system.density_altitude, 'altitude', units)} HD, hovering "
-                 f"carrier; ramp "
-                 f"{rate} from {study.onset:g} s", fontsize=8, y=0.999)
+    fig.suptitle(_no_parachute_title(study, units, extra), fontsize=8, y=0.999)
     return fig
 
 
-def plot_ramp_gust(runs, ramp_end, gust, title=""):
-    """Yaw and sideslip of wind-ramp runs with a lateral gust after the ramp, so that a
-    stable helicopter shows its damping.
-
-    Parameters
-    ----------
-    runs : sequence of (str, pandas.DataFrame)
-        Label and time histories (campaign history columns).
-    ramp_end : float or sequence of float
-        Time(s) the ramps end. [s]
-    gust : (float, float)
-        Start and end of the gust. [s]
-    title : str
-    """
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.8)), left=0.7, right=0.7, bottom=0.5,
-                      top=0.75, hspace=0.12)
-    axes = fig.subplots(2, 1, sharex=True)
-    for label, h in runs:
-        axes[0].plot(h["time [s]"], h[YAW], lw=1.0, label=label)
-        axes[1].plot(h["time [s]"], h[BETA], lw=1.0, label=label)
-    for ax in axes:
-        for end in np.atleast_1d(ramp_end):
-            ax.axvline(end, color="0.4", ls=":", lw=1.0)
-        ax.axvspan(gust[0], gust[1], color="orange", alpha=0.15, lw=0)
-        ax.grid(True, alpha=0.4)
-        _small(ax)
-    if runs:
-        wind = axes[0].twinx()
-        h = runs[0][1]
-        wind.plot(h["time [s]"], h["airspeed [m/s]"] / KNOT, color="0.6", lw=0.8, ls="--")
-        wind.set_ylabel(f"airspeed, {runs[0][0]} [kt]", fontsize=7, color="0.4")
-        wind.tick_params(labelsize=6, colors="0.4")
-    axes[0].set(ylabel="yaw (heading) [deg]",
-                title=f"{title}\nramp ends dotted, gust shaded" if title else
-                "ramp ends dotted, gust shaded")
-    axes[1].set(ylabel="sideslip beta [deg]", xlabel="time [s]")
-    _legend(axes[0], fontsize=6, ncols=2)
-    return fig
+def plot_no_parachute(result, units="SI"):
+    """Yaw and sideslip under the frontal wind ramps, each helicopter, without parachute
+    (paper figures 16-18): one row per ramp target, the head wind (the ramp) on the right
+    axis of the yaw panel and the ramp's end marked; the base condition (masses, cable,
+    altitude, carrier, ramp) in the title."""
+    npr = result.no_parachute
+    return _ramp_figure(result, npr.runs, {k: k for k in npr.keys}, lambda target: None,
+                        units)
 
 
-def plot_root_locus(loci, title=""):
-    """Root locus of the least-damped eigenvalues against the parachute area: complex plane,
-    colour the area factor; oscillatory roots (a complex pair, upper half shown) as circles,
-    real (aperiodic) roots as crosses.
+def plot_no_parachute_gust(result, units="SI"):
+    """Yaw and sideslip of the ramps with a lateral gust after the ramp (a stable case shows
+    its damping), each helicopter, without parachute: one row per ramp target, the head
+    wind on the right axis, the ramp's end dotted, the gust shaded; the base condition and
+    the gust in the title."""
+    npr = result.no_parachute
+    study = result.campaign.no_parachute
+    speed = quantity_text(study.gust_speed, "speed", units, digits=3)
+    return _ramp_figure(result, npr.gust_runs, {k: (*k, "gust") for k in npr.gust_keys},
+                        study.gust_window, units,
+                        f";\n{GUST_DURATION:g} s lateral gust of {speed} "
+                        f"{GUST_DELAY:g} s after each ramp's end")
+
+
+def plot_root_locus(loci, title="", chosen=None):
+    """Root locus of the least-damped eigenvalues against the parachute area: on the left the
+    complex plane, colour the area factor; on the right the real part against the area
+    factor, with 1.0 x neutral and the ``chosen`` area factor (when given) marked; in both,
+    oscillatory roots (a complex pair, upper half shown) as circles, real (aperiodic) roots
+    as crosses.
 
     Parameters
     ----------
     loci : pandas.DataFrame
         Columns "area factor [-]", "real [1/s]", "imag [rad/s]" (one row per root).
     title : str
+    chosen : float, optional
+        The chosen area factor. [-]
     """
     fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 4.2)), left=0.8, right=0.2, bottom=0.55,
-                      top=0.45)
-    ax = fig.subplots()
+                      top=0.6, wspace=0.7)
+    ax, against = fig.subplots(1, 2, width_ratios=(1.25, 1.0))
     f = loci["area factor [-]"].to_numpy(float)
     re, im = loci["real [1/s]"].to_numpy(float), loci["imag [rad/s]"].to_numpy(float)
     osc = np.abs(im) > 1e-6
@@ -347,10 +350,21 @@ def plot_root_locus(loci, title=""):
     bar.set_label(AREA_FACTOR_SCALE, fontsize=7)
     bar.ax.tick_params(labelsize=7)
     ax.axvline(0.0, color="r", lw=0.8)
-    ax.set(xlabel="real part [1/s]", ylabel="imaginary part [rad/s]", title=title)
-    ax.grid(True, alpha=0.4)
-    _small(ax)
-    _legend(ax, fontsize=6)
+    ax.set(xlabel="real part [1/s]", ylabel="imaginary part [rad/s]", title="complex plane")
+    against.scatter(f[osc], re[osc], marker="o", s=14, facecolors="none", edgecolors="C0",
+                    label="oscillatory")
+    against.scatter(f[~osc], re[~osc], marker="x", s=22, color="C3", label="real")
+    against.axhline(0.0, color="r", lw=0.8)
+    against.axvline(1.0, color="k", ls=":", lw=1.0, label="1.0 x neutral")
+    if chosen is not None and np.isfinite(chosen):
+        against.axvline(chosen, color="m", ls="--", lw=1.0, label=f"chosen {chosen:.3g} x")
+    against.set(xlabel=AREA_FACTOR_SCALE, ylabel="real part [1/s]",
+                title="real part against the area\n(> 0 divergent)")
+    for a in (ax, against):
+        a.grid(True, alpha=0.4)
+        _small(a)
+        _legend(a, fontsize=6)
+    fig.suptitle(title, fontsize=8, y=0.995)
     return fig
 
 

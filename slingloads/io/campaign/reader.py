@@ -367,12 +367,23 @@ def _check_needs_parachute(params, system, rows, factors):
 
 
 def _no_parachute_runs(params):
-    """Runs of the study without parachute (helicopters x ramps), from the list cells."""
+    """Runs of the study without parachute (helicopters x (ramps + ramps with a gust)), from
+    the list cells."""
     helicopters = list_parameter(params, "campaign no-parachute helicopters")
     if [h.upper() for h in helicopters] == ["NONE"]:
         return 0
-    return len(set(h.upper() for h in helicopters)) * len(
-        list_parameter(params, "campaign no-parachute ramps"))
+    return len(set(h.upper() for h in helicopters)) * (
+        len(list_parameter(params, "campaign no-parachute ramps"))
+        + len(_gust_ramps(params)))
+
+
+def _gust_ramps(params):
+    """Targets of the ramps with a gust [m/s]: the list, or none ('none')."""
+    name = "campaign no-parachute gust ramps"
+    raw = params(name)
+    if str("" if raw is None else raw).strip().lower() == "none":
+        return []
+    return list_parameter(params, name)
 
 
 def _check_matrix_size(params, factors, masses, no_chute_runs):
@@ -428,9 +439,13 @@ def _no_parachute(params, system, study_type, sample):
             raise params.error(name, f"unknown helicopter; valid are {list(SAMPLE_HELICOPTERS)} "
                                "or 'none'", h)
     ramps = list_parameter(params, "campaign no-parachute ramps")
+    gust_ramps = _gust_ramps(params)
+    with located(params, default="campaign no-parachute gust"):
+        gust = params("campaign no-parachute gust")
     with located(params, default="campaign no-parachute ramps"):
         return study_type({h: sample(h, system.cable.length, system.cable.ea)
-                           for h in dict.fromkeys(helicopters)}, ramps)
+                           for h in dict.fromkeys(helicopters)}, ramps,
+                          gust_targets=tuple(gust_ramps), gust_speed=gust)
 
 
 def _in(params, name):

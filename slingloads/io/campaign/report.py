@@ -13,9 +13,11 @@ publishes all at once or not at all (:mod:`slingloads.io.common.atomic`):
   a page), *Selection* (by area), *NeutralArea*, *Sensitivity*, *StabilityMap*, *NoParachute*,
   *LoadsHandoff* and *Plots*;
 * ``<stem>-campaign-<tag>.png``: selection, sensitivity to each factor (paper figures 9-13),
-  stability map, transport without parachute (figures 16-18), loads envelope;
+  stability map, root locus, transport without parachute (figures 16-18) and its ramps with a
+  gust, loads envelope;
 * ``<stem>-campaign-histories.parquet``: every stored history (SI, angles in degrees), a
-  ``run`` column first (matrix run ids; ``NP-<helicopter>-<target>kt`` without parachute).
+  ``run`` column first (matrix run ids; ``NP-<helicopter>-<target>kt`` without parachute,
+  ``NP-<helicopter>-<target>kt-gust`` its ramps with a gust).
 
 Speeds, lengths, masses, areas and forces are in the report unit system (``--units``: SI, or
 kt, ft, lb, ft^2, lbf); the Parquet file is SI.
@@ -29,6 +31,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads import __version__
+from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION
 from slingloads.constants import KNOT, POUND
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
@@ -329,9 +332,16 @@ def _sheets(report, units, warnings=(), decision=None):
             *_parts("Every grid point", in_units(r.stability.points, units),
                     ["area factor [-]", "airspeed EAS [m/s]", "airspeed EAS [kt]"])]
     if r.no_parachute is not None:
+        keys = ["helicopter", "ramp target [m/s]", "ramp target [kt]"]
         sheets["NoParachute"] = _parts("Every ramp", in_units(r.no_parachute.runs, units),
-                                       ["helicopter", "ramp target [m/s]",
-                                        "ramp target [kt]"])
+                                       keys)
+        if not r.no_parachute.gust_runs.empty:
+            study = r.campaign.no_parachute
+            sheets["NoParachute"] += _parts(
+                f"Every ramp with a lateral gust ({GUST_DURATION:g} s of "
+                f"{quantity_text(study.gust_speed, 'speed', units, digits=3)}, "
+                f"{GUST_DELAY:g} s after the ramp's end; the verdict read after the gust)",
+                in_units(r.no_parachute.gust_runs, units), keys)
     sheets["LoadsHandoff"] = (
         [Section("Extremes of the chosen parachute's runs", handoff)] if handoff is not None
         else "no area is stable in every condition and none was chosen: nothing is handed to "
@@ -399,10 +409,16 @@ def _figures(report, units):
         locus = _locus(r, units)
         if locus is not None:
             figs["root-locus"] = ("Root locus against the parachute area",
-                                  (plot_root_locus, locus, {}))
+                                  (plot_root_locus, locus,
+                                   {"chosen": r.chosen_area_factor}))
     if r.no_parachute is not None:
         figs["no-parachute"] = ("Transport without parachute (paper figures 16-18)",
                                 (plot_no_parachute, (r,), {"units": units}))
+        if not r.no_parachute.gust_runs.empty:
+            figs["no-parachute-gust"] = (
+                "Transport without parachute: ramps with a gust after their end",
+                (plot_function("slingloads.io.campaign.plots", "plot_no_parachute_gust"),
+                 (r,), {"units": units}))
     if r.envelope is not None:
         figs["envelope"] = ("Angle envelope handed to the loads", (plot_envelope, (r,), {}))
     return figs
@@ -432,6 +448,8 @@ def write_histories(result, path):
     if result.no_parachute is not None:
         runs += [(f"NP-{name}-{target / KNOT:.0f}kt", key)
                  for (name, target), key in result.no_parachute.keys.items()]
+        runs += [(f"NP-{name}-{target / KNOT:.0f}kt-gust", key)
+                 for (name, target), key in result.no_parachute.gust_keys.items()]
     writer, count = None, 0
     try:
         for start in range(0, len(runs), 50):

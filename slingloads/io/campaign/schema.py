@@ -48,6 +48,7 @@ LISTS = {
     "campaign manoeuvres": TEXT,
     "campaign no-parachute ramps": "speed",
     "campaign no-parachute helicopters": TEXT,
+    "campaign no-parachute gust ramps": "speed",
 }
 #: Allowed range of each number of a list parameter (in the bounds' unit), checked at its
 #: cell with the value as written; a list holds at most MAX_LIST_ITEMS values.
@@ -57,6 +58,7 @@ LIST_BOUNDS = {
     "campaign density altitudes": ISA_ALTITUDE,
     "campaign cable lengths": CABLE_LENGTH,
     "campaign no-parachute ramps": Bounds(0, 200, lo_open=True, unit="kt"),
+    "campaign no-parachute gust ramps": Bounds(0, 200, lo_open=True, unit="kt"),
 }
 #: Valid values of 'campaign matrix'.
 MATRIX_KINDS = ("full factorial", "listed rows")
@@ -142,6 +144,14 @@ PARAMETERS = (
     Parameter("campaign no-parachute ramps", TEXT, "kt", "20, 30, 40, 60, 80",
               "Frontal wind-ramp targets, comma-separated, each > 0 (paper: 20 to 80 kt).",
               _S),
+    Parameter("campaign no-parachute gust ramps", TEXT, "kt", "20, 30",
+              "Ramp targets flown again with a lateral gust 10 s after the ramp ends, so that "
+              "a stable case shows its damping: comma-separated, each > 0, or 'none' "
+              "(default 20, 30 kt, the paper's limit).", _S),
+    Parameter("campaign no-parachute gust", "speed", "ft/s", 10.0,
+              "Lateral gust of the ramps with a gust, 10 s long, > 0 (10 ft/s: at 20 kt a "
+              "30 ft/s gust alone turns the relative wind by 41 deg).", _S,
+              Bounds(0, 100, lo_open=True, unit="ft/s")),
     Parameter("campaign scheduler", TEXT, "", "",
               "Address of a dask.distributed scheduler to run the batches on (e.g. "
               "tcp://10.0.0.5:8786); empty = local worker processes. The command line's "
