@@ -72,6 +72,11 @@ DAMPING_TOLERANCE = 0.05
 #: Largest relative difference between the period measured on a response and that of the
 #: mode named for it. [-]
 PERIOD_TOLERANCE = 0.25
+#: Share of a mode's largest angular amplitude above which the yaw takes part in it (the
+#: threshold at which a mode's name lists a second motion). [-]
+YAW_SHARE = 0.25
+#: Why a damping ratio could not be measured, when the caller does not say.
+NOT_MEASURED = "fewer than three peaks after the input"
 
 
 def worst(verdicts):
@@ -321,7 +326,7 @@ def settling_time(time, y, onset, reference, band):
     return out
 
 
-def damping_check(measured, period, mode_zeta, mode_period, mode_name):
+def damping_check(measured, period, mode_zeta, mode_period, mode_name, reason=NOT_MEASURED):
     """Whether a damping ratio measured on a response agrees with the linear mode it was
     measured on (:data:`DAMPING_TOLERANCE`, periods within :data:`PERIOD_TOLERANCE`), in
     words.
@@ -338,13 +343,15 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name):
         Period of the linear mode (NaN for a real root). [s]
     mode_name : str
         Name of the mode ("" when there is none).
+    reason : str, optional
+        Why the damping could not be measured (used when ``measured`` is NaN).
 
     Returns
     -------
     str
     """
     if not (math.isfinite(measured) and math.isfinite(period)):
-        return "not measured (fewer than three peaks after the input)"
+        return f"not measured ({reason})"
     if not mode_name:
         return "no linear mode to compare with"
     if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
@@ -358,7 +365,7 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name):
             f"{DAMPING_TOLERANCE:g}: amplitude-dependent (nonlinear) or several modes")
 
 
-def response_mode(period, zeta, modes, whose=""):
+def response_mode(period, zeta, modes, whose="", reason=NOT_MEASURED):
     """The mode a response's damping was measured on, and the check against it, in words:
     the one place that names the mode (:func:`nearest_mode`) and judges the agreement
     (:func:`damping_check`), so that the two statements cannot disagree. A mode whose period
@@ -376,6 +383,8 @@ def response_mode(period, zeta, modes, whose=""):
     whose : str, optional
         Which trim the modes are of, appended to the mode's name (e.g. " of the trim at the
         ramp's final airspeed").
+    reason : str, optional
+        Why the damping could not be measured (used when ``zeta`` is NaN).
 
     Returns
     -------
@@ -393,7 +402,9 @@ def response_mode(period, zeta, modes, whose=""):
     'roll (1.44 s, zeta 0.0014)'
     """
     name, mode_zeta, mode_period = nearest_mode(period, modes, zeta)
-    check = damping_check(zeta, period, mode_zeta, mode_period, name)
+    check = damping_check(zeta, period, mode_zeta, mode_period, name, reason)
+    if not math.isfinite(period) and modes is not None and len(modes) == 1:
+        check = f"not measured on the {modes['mode'].iloc[0]}{whose} mode ({reason})"
     if not name or not (math.isfinite(zeta) and math.isfinite(period)):
         return "", check
     if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
@@ -401,6 +412,33 @@ def response_mode(period, zeta, modes, whose=""):
                 f"{mode_period:.3g} s)", check)
     label = f"{name}{whose} ({mode_period:.3g} s, zeta {mode_zeta:.3g})"
     return label, check
+
+
+def yaw_mode(modes):
+    """The yaw mode of a linear model: the least damped of the modes in which the yaw takes
+    part (yaw amplitude at least :data:`YAW_SHARE` of the mode's largest angular amplitude).
+    The pendulum modes of cable and airframe are lightly damped whatever the parachute; the
+    yaw modes are those the parachute sizes, and the least damped of them is the one a
+    stability criterion reads.
+
+    Parameters
+    ----------
+    modes : pandas.DataFrame or None
+        A :meth:`LinearModel.modes_frame` (columns ``mode``, ``damping ratio [-]``,
+        ``yaw amplitude [-]``...).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Its row (one row), or no row when there is no such mode.
+    """
+    if modes is None or len(modes) == 0:
+        return modes
+    finite = modes[np.isfinite(modes["damping ratio [-]"])]  # a zero eigenvalue has none
+    yaw = finite[finite["yaw amplitude [-]"] >= YAW_SHARE]
+    if len(yaw) == 0:
+        return yaw
+    return yaw.loc[[yaw["damping ratio [-]"].idxmin()]]
 
 
 def slowest_period(modes, group="yaw"):
@@ -471,5 +509,6 @@ def nearest_mode(period, modes, zeta=float("nan")):
 __all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT",
            "EIGENVALUE_TOLERANCE",
            "INCONCLUSIVE", "LIMIT_CYCLE", "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE",
-           "STATIC_DEPARTURE", "VERDICTS", "Envelope", "EnvelopeTest", "damping_check",
-           "envelope", "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst"]
+           "STATIC_DEPARTURE", "VERDICTS", "YAW_SHARE", "Envelope", "EnvelopeTest", "damping_check",
+           "envelope", "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst",
+           "yaw_mode"]
