@@ -113,3 +113,38 @@ def test_example_free_response_agrees_with_the_yaw_eigenvalue(example_study):
     assert "yaw" in name
     assert row["response damping measured on mode"].startswith(name + " (")
     assert row["response damping check"].startswith(f"agrees with the {name} mode")
+
+
+def _run_like(time, yaw, input_end):
+    """What RunResult.response_damping reads of a run: its times, heading and input end."""
+    from types import SimpleNamespace
+
+    return SimpleNamespace(time=time, histories=lambda: {"yaw": yaw},
+                           manoeuvre=SimpleNamespace(input_end=input_end))
+
+
+def test_aperiodic_or_missing_yaw_mode_is_said():
+    """A yaw mode that is a real root (an unstable trim's, damping ratio -1, no period) is
+    named with its real part and the damping is 'not measured', never compared with another
+    mode or called 'no linear mode'; a model without a yaw mode says so."""
+    from slingloads.analyses.multibody.simulate import RunResult
+
+    modes = pd.DataFrame({"mode": ["yaw / lateral swing 1", "lateral swing"],
+                          "real [1/s]": [0.1228, -0.031], "period [s]": [np.inf, 8.96],
+                          "damping ratio [-]": [-1.0, 0.044],
+                          "yaw amplitude [-]": [0.915, 0.188]})
+    run = _run_like(T, HEADING, 0.0)
+    period, zeta, on, check = RunResult.response_damping(run, modes)
+    assert math.isnan(period) and math.isnan(zeta)
+    assert on == "yaw / lateral swing 1 (aperiodic, real part +0.123 1/s)"
+    assert check.startswith("not measured: the yaw / lateral swing 1 mode is aperiodic "
+                            "(a real root, unstable)")
+    no_yaw = modes.assign(**{"yaw amplitude [-]": [0.1, 0.1]})
+    assert RunResult.response_damping(run, no_yaw)[3].startswith("no yaw mode in the linear")
+    # without a model: the heading's largest component, compared with nothing
+    period, zeta, on, check = RunResult.response_damping(run, None)
+    assert period == pytest.approx(14.6, rel=1e-6) and on == ""
+    assert check == "no linear mode to compare with"
+    # a sustained input: nothing after it to measure
+    assert RunResult.response_damping(_run_like(T, HEADING, None), None)[3] == (
+        "not measured (the input lasts the whole run)")

@@ -61,6 +61,10 @@ INCONCLUSIVE = "inconclusive"
 #: The verdicts of a run, from the best to the worst.
 VERDICTS = (CONVERGENT, BOUNDED, STATIC_DEPARTURE, LIMIT_CYCLE, INCONCLUSIVE, DIVERGENT,
             OUTSIDE_DOMAIN)
+#: The verdicts of a linear model's eigenvalues (:data:`EIGENVALUE_TOLERANCE`): every real
+#: part below minus it, some within it of 0, some above it. A response is convergent or
+#: divergent; a linear model (a mode, a trim) is stable, neutral or unstable.
+STABLE, NEUTRAL, UNSTABLE = "stable", "neutral", "unstable"
 #: Verdicts that meet a stability criterion (``bounded`` only under a sustained input).
 ACCEPTED = (CONVERGENT, BOUNDED)
 #: A linear mode is stable when the real part of its eigenvalue is below minus this (a real
@@ -507,8 +511,8 @@ def nearest_mode(period, modes, zeta=float("nan")):
 
 
 __all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT",
-           "EIGENVALUE_TOLERANCE",
-           "INCONCLUSIVE", "LIMIT_CYCLE", "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE",
-           "STATIC_DEPARTURE", "VERDICTS", "YAW_SHARE", "Envelope", "EnvelopeTest", "damping_check",
-           "envelope", "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst",
+           "EIGENVALUE_TOLERANCE", "INCONCLUSIVE", "LIMIT_CYCLE", "NEUTRAL", "NOT_MEASURED",
+           "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE", "STABLE", "STATIC_DEPARTURE", "UNSTABLE",
+           "VERDICTS", "YAW_SHARE", "Envelope", "EnvelopeTest", "damping_check", "envelope",
+           "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst",
            "yaw_mode"]

@@ -377,10 +377,17 @@ class RunResult:
             Period [s], damping ratio [-], the mode measured on, the check against it.
         """
         target = vd.yaw_mode(modes)
-        period = (float(target["period [s]"].iloc[0])
-                  if target is not None and len(target) else None)
-        if modes is not None and period is None:
-            target = None
+        nan = float("nan")
+        if modes is not None and len(target) == 0:
+            return (nan, nan, "", f"no yaw mode in the linear model{whose} (no mode with a yaw "
+                    f"amplitude of {vd.YAW_SHARE:.0%} of its largest)")
+        period = float(target["period [s]"].iloc[0]) if target is not None else None
+        if period is not None and not math.isfinite(period):
+            name, real = str(target["mode"].iloc[0]), float(target["real [1/s]"].iloc[0])
+            return (nan, nan, f"{name}{whose} (aperiodic, real part {real:+.3g} 1/s)",
+                    f"not measured: the {name}{whose} mode is aperiodic (a real root, "
+                    f"{'unstable' if real > vd.EIGENVALUE_TOLERANCE else 'stable'}): it has "
+                    "no period or damping ratio to read on the response")
         ident = identify_mode(self.time, self.histories()["yaw"], self.manoeuvre.input_end
                               if self.manoeuvre.input_end is not None else self.time[-1],
                               period, vd.PERIOD_TOLERANCE)

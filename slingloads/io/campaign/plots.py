@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from slingloads.analyses.verdicts import CONVERGENT, DIVERGENT, STATIC_DEPARTURE
+from slingloads.analyses.verdicts import STABLE, UNSTABLE
 from slingloads.constants import FOOT, KNOT, POUND
 from slingloads.errors import InputError
 from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
@@ -170,11 +170,12 @@ def _label(row, factor, units="SI"):
 
 
 #: Colour-scale labels: the quantity, its unit and what its sign or range means, in the
-#: verdict words of :mod:`slingloads.analyses.verdicts`.
-DAMPING_SCALE = (f"yaw-mode damping ratio [-]\n> 0 {CONVERGENT}, < 0 {DIVERGENT}\n"
-                 f"(-1: a real root, {STATIC_DEPARTURE})")
-REAL_PART_SCALE = (f"largest real part of the eigenvalues [1/s]\n< 0 {CONVERGENT}, "
-                   f"> 0 {DIVERGENT}")
+#: linear model's verdict words (:data:`~slingloads.analyses.verdicts.STABLE`...: the tables'
+#: "linear verdict"; convergent and divergent name responses, not eigenvalues).
+DAMPING_SCALE = (f"yaw-mode damping ratio [-]\n> 0 {STABLE}, < 0 {UNSTABLE}\n"
+                 f"(-1: an {UNSTABLE} real root)")
+REAL_PART_SCALE = (f"largest real part of the eigenvalues [1/s]\n< 0 {STABLE}, "
+                   f"> 0 {UNSTABLE}")
 AREA_FACTOR_SCALE = "parachute area / neutral static area [-]"
 
 
@@ -186,7 +187,7 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
     scale, unit = _area(units)
     points = stability.points
     altitudes = sorted(points["density altitude [m]"].unique())
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.4)), left=0.7, right=0.1, bottom=0.5,
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.6)), left=0.7, right=0.1, bottom=0.8,
                       top=0.55, wspace=0.6, hspace=0.45)
     axes = fig.subplots(2, len(altitudes), squeeze=False)
     quantities = (("yaw mode damping ratio [-]", DAMPING_SCALE, "viridis"),
@@ -222,7 +223,10 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
             ax.set(xlabel="airspeed [KEAS]", ylabel=f"parachute area [{unit}]",
                    title=f"{what}, {quantity_text(h, 'altitude', units)} density altitude")
             _small(ax)
-            _legend(ax, fontsize=6, loc="upper right")
+    # one legend for every panel, below them: inside a panel it hides cells of the map
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    if handles:
+        fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=7, frameon=False)
     c = stability.condition
     fig.suptitle(f"mass {c['mass case']} {_mass(c['mass [kg]'], units)}, cable "
                  f"{quantity_text(c['cable length [m]'], 'length', units)}, carrier "

@@ -326,10 +326,11 @@ def _sheets(report, units, warnings=(), decision=None):
             Section("Stability map over parachute area x airspeed x density altitude"),
             Section("Minimum stable area by airspeed and density altitude",
                     in_units(r.stability.minimum, units)),
-            *_parts("Every grid point", in_units(r.stability.points, units),
+            *_parts("Every grid point", _explained(in_units(r.stability.points, units)),
                     ["area factor [-]", "airspeed EAS [m/s]", "airspeed EAS [kt]"])]
     if r.no_parachute is not None:
-        sheets["NoParachute"] = _parts("Every ramp", in_units(r.no_parachute.runs, units),
+        sheets["NoParachute"] = _parts("Every ramp",
+                                       _explained(in_units(r.no_parachute.runs, units)),
                                        ["helicopter", "ramp target [m/s]",
                                         "ramp target [kt]"])
     sheets["LoadsHandoff"] = (

@@ -90,12 +90,16 @@ CONVENTIONS = (
 # ------------------------------------------------------------------------------- tables
 def in_units(frame, units):
     """A copy of ``frame`` with its SI columns (``[m]``, ``[N]``, ``[m/s]``, ``[kg]``,
-    ``[m^2]``) in the report unit system."""
+    ``[m^2]``) in the report unit system; the airspeed and the carrier's speed (the flight
+    speed of the carrying helicopter) in kt in both systems, as every airspeed."""
     spec = {}
     for column in frame.columns:
         match = _HEADER_UNIT.match(str(column))
         if match and match.group("unit") in _KINDS:
-            spec[column] = (match.group("name"), _KINDS[match.group("unit")])
+            kind = _KINDS[match.group("unit")]
+            if kind == "speed" and "carrier speed" in match.group("name"):
+                kind = "airspeed"
+            spec[column] = (match.group("name"), kind)
     return convert_columns(frame, spec, units)
 
 

@@ -1,0 +1,133 @@
+"""Words and units of the dynamics reports (parachute sizing, multibody, campaign): one
+verdict vocabulary per kind of result, no abbreviation that reads as a unit, airspeeds in kt.
+
+References: the vocabularies of :mod:`slingloads.analyses.verdicts` (a response is
+convergent, divergent, a static departure...; a linear model is stable, neutral or unstable,
+the words :meth:`LinearModel.verdict` returns), the knot as 1852 m / 3600 s (its definition),
+and the reports' own text cells as openpyxl reads them back.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+#: "mm." (or "MM.", "m.m.") as an abbreviation (of "multibody model"...): it reads as
+#: millimetres. A length after a number ("4 mm.") is a unit, not an abbreviation.
+ABBREVIATION = re.compile(r"(?<!\d)(?<!\d )\b(?:mm|MM|m\.m)\.(?=[\s,;:)]|$)")
+#: Verdict words no report uses (the vocabulary of analyses/verdicts.py has one word per
+#: outcome): "departs" (a static departure or divergent), "undamped" (limit cycle...).
+STRAY_VERDICTS = re.compile(r"\b(?:departs|undamped)\b")
+
+
+def _sources():
+    for folder in ("slingloads", "docs"):
+        for path in sorted((ROOT / folder).rglob("*")):
+            if path.suffix in (".py", ".md"):
+                yield path
+    yield ROOT / "README.md"
+
+
+def test_no_abbreviation_reads_as_millimetres_in_code_or_documents():
+    """No text of the package or its documents abbreviates as 'mm.' (multibody model) or
+    'm.m.': a checker reads millimetres."""
+    found = [(p.relative_to(ROOT).as_posix(), n, line.strip()[:80])
+             for p in _sources()
+             for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
+             if ABBREVIATION.search(line)]
+    assert not found, found
+
+
+def test_the_examples_report_cells_use_whole_words(example_run_report):
+    """Every text cell of every report of the example: no 'mm.' abbreviation and no stray
+    verdict word ('departs', 'undamped')."""
+    import openpyxl
+
+    bad = []
+    for book in sorted(example_run_report.glob("*.xlsx")):
+        for ws in openpyxl.load_workbook(book, read_only=True).worksheets:
+            for row in ws.iter_rows(values_only=True):
+                for value in row:
+                    if isinstance(value, str) and (ABBREVIATION.search(value)
+                                                   or STRAY_VERDICTS.search(value)):
+                        bad.append((book.name, ws.title, value[:100]))
+    assert not bad, bad
+
+
+def test_figure_texts_use_whole_words(example_results):
+    """Every text of every figure of the example's parachute sizing and multibody reports
+    (titles, labels, legends, colour-bar labels): no 'mm.' abbreviation, no stray verdict
+    word."""
+    from matplotlib import pyplot as plt
+    from matplotlib import rc_context
+    from matplotlib.text import Text
+
+    from slingloads.io.chute.report import _figures as chute
+    from slingloads.io.common.figures import report_style
+    from slingloads.io.multibody.report import _figures as multibody
+
+    jobs = {**{f"chute {k}": v for k, v in chute(example_results.chute_sizing, "SI").items()},
+            **{f"multibody {k}": v
+               for k, v in multibody(example_results.multibody, "SI").items()}}
+    assert len(jobs) >= 5
+    bad = []
+    for tag, (func, args, kwargs) in jobs.items():
+        with rc_context(report_style()):
+            figure = func(*args, **kwargs)
+        for text in figure.findobj(Text):
+            words = text.get_text()
+            if ABBREVIATION.search(words) or STRAY_VERDICTS.search(words):
+                bad.append((tag, words))
+        plt.close(figure)
+    assert not bad, bad
+
+
+def test_eigenvalue_colour_scales_speak_the_linear_models_words():
+    """The stability map's colour scales read in the words of the linear model's verdict
+    (the tables' 'linear verdict': stable / unstable), not in the response verdicts
+    (convergent, divergent, static departure), which name responses."""
+    from slingloads.analyses import verdicts as vd
+    from slingloads.io.campaign.plots import DAMPING_SCALE, REAL_PART_SCALE
+
+    for label in (DAMPING_SCALE, REAL_PART_SCALE):
+        assert "> 0" in label and "< 0" in label and "[" in label  # sign and unit stated
+        assert vd.STABLE in label and vd.UNSTABLE in label
+        for word in (vd.CONVERGENT, vd.DIVERGENT, vd.STATIC_DEPARTURE):
+            assert word not in label, (word, label)
+    assert "< 0 stable" in REAL_PART_SCALE and "> 0 stable" in DAMPING_SCALE
+
+
+def test_linear_verdict_words_are_the_vocabularys():
+    """LinearModel.verdict() answers in verdicts.STABLE / NEUTRAL / UNSTABLE by the rule of
+    verdicts.EIGENVALUE_TOLERANCE (a real part of +1e-6 is neutral, not stable)."""
+    from types import SimpleNamespace
+
+    from slingloads.analyses import verdicts as vd
+    from slingloads.analyses.multibody.trim import LinearModel
+
+    def verdict(real):
+        return LinearModel.verdict(SimpleNamespace(eigenvalues=np.array([real, -1.0])))
+
+    tol = vd.EIGENVALUE_TOLERANCE
+    assert verdict(-2 * tol) == vd.STABLE
+    assert verdict(tol) == vd.NEUTRAL and verdict(-tol) == vd.NEUTRAL
+    assert verdict(2 * tol) == vd.UNSTABLE
+
+
+def test_carrier_speed_in_knots_in_both_unit_systems():
+    """The multibody report's carrier speed (the flight speed of the carrying helicopter) is
+    an airspeed-like quantity: in kt in SI and US reports, 41.156 m/s = 80.0 kt (1 kt =
+    1852/3600 m/s), like the airspeed beside it."""
+    from slingloads.io.multibody.report import in_units
+
+    frame = pd.DataFrame({"carrier speed end [m/s]": [80 * 1852 / 3600],
+                          "airspeed [m/s]": [30 * 1852 / 3600], "x [m]": [1.0]})
+    for units in ("SI", "US"):
+        out = in_units(frame, units)
+        assert out["carrier speed end [kt]"].iloc[0] == pytest.approx(80.0, rel=1e-12)
+        assert out["airspeed [kt]"].iloc[0] == pytest.approx(30.0, rel=1e-12)
