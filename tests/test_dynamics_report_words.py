@@ -131,3 +131,25 @@ def test_carrier_speed_in_knots_in_both_unit_systems():
         out = in_units(frame, units)
         assert out["carrier speed end [kt]"].iloc[0] == pytest.approx(80.0, rel=1e-12)
         assert out["airspeed [kt]"].iloc[0] == pytest.approx(30.0, rel=1e-12)
+
+
+def test_verdict_row_names_the_area_it_was_run_at():
+    """The sizing Summary's verdict 'at the paper's factor' names the swept area it was run
+    at: 1.4 x when the sweep has it, else the nearest swept factor (the US twin's sweep has
+    1.0, 1.5, 2.0 x: its row said '1.4 x' beside 'swept area 1.5 x neutral')."""
+    from slingloads.io.chute.report import factor_row_label
+
+    assert factor_row_label(1.4, 1.4) == "1-DOF verdict at the paper's factor (1.4 x neutral)"
+    assert factor_row_label(1.4, 1.5) == ("1-DOF verdict at 1.5 x neutral (the swept area "
+                                          "nearest the paper's 1.4 x)")
+
+
+def test_stability_map_draws_a_single_airspeed():
+    """A stability map of one airspeed (the US twin's campaign: 80 KEAS only) draws its cells:
+    each cell is centred on its grid point (edges midway between neighbours, a single point
+    +-5 % wide), so the map is never blank."""
+    from slingloads.io.campaign.plots import cell_edges
+
+    np.testing.assert_allclose(cell_edges([80.0]), [76.0, 84.0])
+    np.testing.assert_allclose(cell_edges([60.0, 70.0, 80.0]), [55, 65, 75, 85])
+    np.testing.assert_allclose(cell_edges([0.0]), [-0.5, 0.5])

@@ -179,6 +179,28 @@ REAL_PART_SCALE = (f"largest real part of the eigenvalues [1/s]\n< 0 {STABLE}, "
 AREA_FACTOR_SCALE = "parachute area / neutral static area [-]"
 
 
+def cell_edges(centres):
+    """Edges of the cells centred on sorted ``centres``: midway between neighbours, the end
+    cells as wide as their neighbour's half spacing; a single centre gets a cell of +-5 % of
+    its value (+-0.5 when it is 0).
+
+    Parameters
+    ----------
+    centres : array_like, shape (n,)
+        Increasing cell centres (any unit).
+
+    Returns
+    -------
+    ndarray, shape (n + 1,)
+    """
+    c = np.asarray(centres, float)
+    if c.size == 1:
+        half = 0.05 * abs(c[0]) or 0.5
+        return np.array([c[0] - half, c[0] + half])
+    mid = 0.5 * (c[1:] + c[:-1])
+    return np.concatenate([[c[0] - (mid[0] - c[0])], mid, [c[-1] + (c[-1] - mid[-1])]])
+
+
 def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
     """Yaw-mode damping ratio and largest real part over area x airspeed (one column per
     density altitude), with the minimum stable area per speed, the neutral static area
@@ -199,20 +221,24 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
             speeds = grid.columns.to_numpy() / KNOT
             areas = grid.index.to_numpy() * neutral_area * scale
             values = grid.to_numpy(float)
+            # cell edges (a single airspeed or area gets a cell of its own width: matplotlib's
+            # "nearest" shading draws nothing for a single column)
+            x_edges, y_edges = cell_edges(speeds), cell_edges(areas)
             if column.startswith("largest"):
                 bound = np.nanmax(np.abs(values)) if np.any(np.isfinite(values)) else 1.0
-                mesh = ax.pcolormesh(speeds, areas, values, shading="nearest", cmap=cmap,
+                mesh = ax.pcolormesh(x_edges, y_edges, values, shading="flat", cmap=cmap,
                                      vmin=-bound, vmax=bound)
             else:
-                mesh = ax.pcolormesh(speeds, areas, values, shading="nearest", cmap=cmap)
+                mesh = ax.pcolormesh(x_edges, y_edges, values, shading="flat", cmap=cmap)
             bar = fig.colorbar(mesh, ax=ax)
             bar.set_label(label, fontsize=7)
             bar.ax.tick_params(labelsize=7)
             minimum = stability.minimum[np.isclose(stability.minimum["density altitude [m]"],
                                                    h)]
-            ax.plot(minimum["airspeed EAS [m/s]"] / KNOT,
-                    minimum["minimum stable area [m^2]"] * scale, "k.-",
-                    label="minimum stable area")
+            least = minimum["minimum stable area [m^2]"].to_numpy(float) * scale
+            if np.isfinite(least).any():  # no line (and no legend entry) when none is stable
+                ax.plot(minimum["airspeed EAS [m/s]"] / KNOT, least, "k.-",
+                        label="minimum stable area")
             ax.axhline(neutral_area * scale, color="k", ls=":", lw=1.0,
                        label="1.0 x neutral static area")
             if chosen_area is not None and np.isfinite(chosen_area):

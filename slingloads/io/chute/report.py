@@ -104,6 +104,25 @@ def _items(rows, units):
     return pd.DataFrame(out, dtype=object)  # a count stays an int (written "15")
 
 
+def factor_row_label(paper_factor, swept_factor):
+    """Label of the 1-DOF verdict at the paper's factor: the factor the verdict was run at,
+    and, when the sweep has no area at the paper's, that it is the nearest swept one.
+
+    Parameters
+    ----------
+    paper_factor, swept_factor : float
+        The paper's factor and the swept area nearest it, x neutral area. [-]
+
+    Returns
+    -------
+    str
+    """
+    if abs(swept_factor - paper_factor) <= 1e-9 * paper_factor:
+        return f"1-DOF verdict at the paper's factor ({paper_factor:g} x neutral)"
+    return (f"1-DOF verdict at {swept_factor:.3g} x neutral (the swept area nearest the "
+            f"paper's {paper_factor:g} x)")
+
+
 def summary_tables(result, units="SI"):
     """The Summary's tables: condition, neutral area and recommendation, line and cable."""
     inp, static, line = result.inputs, result.static, result.line
@@ -155,7 +174,8 @@ def summary_tables(result, units="SI"):
              "convergent (bounded under the continuous gust), 1-DOF"
              if np.isfinite(rec) else
              "NONE: no swept area is convergent under every gust (1-DOF); widen the sweep"),
-            (f"1-DOF verdict at the paper's factor ({inp.recommended_factor:g} x neutral)",
+            # the row names the area it was run at: the swept area nearest the paper's factor
+            (factor_row_label(inp.recommended_factor, float(at["area / neutral area [-]"])),
              "stable for every gust" if at["all gusts stable"]
              else f"NOT stable for every gust (worst: {at['worst verdict']})", None,
              f"swept area {float(at['area / neutral area [-]']):.3g} x neutral"),
