@@ -156,3 +156,13 @@ def test_stability_map_draws_a_single_airspeed():
     np.testing.assert_allclose(cell_edges([80.0]), [76.0, 84.0])
     np.testing.assert_allclose(cell_edges([60.0, 70.0, 80.0]), [55, 65, 75, 85])
     np.testing.assert_allclose(cell_edges([0.0]), [-0.5, 0.5])
+
+
+def test_masses_in_titles_to_the_unit():
+    """A mass in a campaign title (root locus, stability map) is written to the unit in
+    both systems: the US twin's 4900.1 kg is 10803 lb (4900.1 / 0.45359237), never
+    '1.08e+04 lb'."""
+    from slingloads.io.campaign.report import mass_text
+
+    assert mass_text(4900.1, "US") == "10803 lb"
+    assert mass_text(2900.0, "SI") == "2900 kg"

@@ -37,9 +37,10 @@ def _small(ax):
 
 
 def _mass(value, units):
-    """A mass [kg] in a title: in kg (SI) or lb (US), to the unit."""
-    return quantity_text(round(value) if units == "SI" else round(value / POUND) * POUND,
-                         "mass", units, digits=12)
+    """A mass [kg] in a title: in kg (SI) or lb (US), to the unit (the report's words)."""
+    from slingloads.io.campaign.report import mass_text
+
+    return mass_text(value, units)
 
 
 def _condition(row, skip=(), neutral_area=None, units="SI"):

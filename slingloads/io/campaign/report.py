@@ -360,6 +360,13 @@ def sweep_plots(result):
     return out
 
 
+def mass_text(value, units):
+    """A mass [kg] in a title or a sentence: in kg (SI) or lb (US), to the unit (10803 lb,
+    never 1.08e+04 lb)."""
+    return quantity_text(round(value) if units == "SI" else round(value / POUND) * POUND,
+                         "mass", units, digits=12)
+
+
 def _locus(result, units="SI"):
     """(loci, title) of the stability map's least-damped roots at its highest airspeed and
     first density altitude, or None without them."""
@@ -371,7 +378,7 @@ def _locus(result, units="SI"):
     sel = loci[np.isclose(loci["airspeed EAS [m/s]"], speed)
                & np.isclose(loci["density altitude [m]"], altitude)]
     c = result.stability.condition
-    mass = quantity_text(c["mass [kg]"], "mass", units)
+    mass = mass_text(c["mass [kg]"], units)
     title = (f"{speed / KNOT:.0f} KEAS, {quantity_text(altitude, 'altitude', units)} HD, "
              f"mass {c['mass case']} {mass}, cable "
              f"{quantity_text(c['cable length [m]'], 'length', units)}, carrier "
