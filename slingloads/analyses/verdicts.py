@@ -408,7 +408,7 @@ def response_mode(period, zeta, modes, whose="", reason=NOT_MEASURED):
     name, mode_zeta, mode_period = nearest_mode(period, modes, zeta)
     check = damping_check(zeta, period, mode_zeta, mode_period, name, reason)
     if not math.isfinite(period) and modes is not None and len(modes) == 1:
-        check = f"not measured on the {modes['mode'].iloc[0]}{whose} mode ({reason})"
+        check = f"not measured on the {modes['mode'].iloc[0]} mode{whose} ({reason})"
     if not name or not (math.isfinite(zeta) and math.isfinite(period)):
         return "", check
     if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:

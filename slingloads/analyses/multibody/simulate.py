@@ -385,7 +385,7 @@ class RunResult:
         if period is not None and not math.isfinite(period):
             name, real = str(target["mode"].iloc[0]), float(target["real [1/s]"].iloc[0])
             return (nan, nan, f"{name}{whose} (aperiodic, real part {real:+.3g} 1/s)",
-                    f"not measured: the {name}{whose} mode is aperiodic (a real root, "
+                    f"not measured: the {name} mode{whose} is aperiodic (a real root, "
                     f"{'unstable' if real > vd.EIGENVALUE_TOLERANCE else 'stable'}): it has "
                     "no period or damping ratio to read on the response")
         ident = identify_mode(self.time, self.histories()["yaw"], self.manoeuvre.input_end
