@@ -166,3 +166,15 @@ def test_masses_in_titles_to_the_unit():
 
     assert mass_text(4900.1, "US") == "10803 lb"
     assert mass_text(2900.0, "SI") == "2900 kg"
+
+
+def test_cs29_gust_reads_30_ft_per_s_in_us_reports():
+    """The CS 29.341 gust (30 ft/s = 9.144 m/s exactly) is labelled so that a US report reads
+    '30 ft/s' (the sizing's gust labels said 'step 29.99 ft/s': 9.14 m/s rounded before the
+    conversion), and an SI report '9.144 m/s', as the campaign's 'standard 9.144 m/s'."""
+    from slingloads.io.common.units import report_text
+    from slingloads.models import gusts
+
+    for gust in (gusts.StepGust(), gusts.FiniteGust(duration=10.0), gusts.SustainedGust()):
+        assert "9.144 m/s" in gust.label
+        assert "30 ft/s" in report_text(gust.label, "US"), report_text(gust.label, "US")
