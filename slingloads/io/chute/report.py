@@ -268,7 +268,8 @@ def _cable_message(cable, units):
 def _run_label(result, j, units):
     runs = result.sweep.runs
     area, unit = _value(float(runs.areas[j]), "area", units)
-    return f"A={area:.4g} {unit} {runs.gusts[j].kind}"
+    # the precision of the areas in the report's tables (0.289 m^2, 18.12 ft^2)
+    return f"A={area:.{3 if units == 'SI' else 2}f} {unit} {runs.gusts[j].kind}"
 
 
 def history_table(result, units="SI", interval=None):
