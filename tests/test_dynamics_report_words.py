@@ -178,3 +178,15 @@ def test_cs29_gust_reads_30_ft_per_s_in_us_reports():
     for gust in (gusts.StepGust(), gusts.FiniteGust(duration=10.0), gusts.SustainedGust()):
         assert "9.144 m/s" in gust.label
         assert "30 ft/s" in report_text(gust.label, "US"), report_text(gust.label, "US")
+
+
+def test_history_headers_quote_the_sweep_tables_areas(example_results):
+    """The sizing Histories' column headers quote each run's area as the Sweep table prints
+    it (3 decimals in m^2): one precision per quantity in the report."""
+    from slingloads.io.chute.report import history_table
+
+    result = example_results.chute_sizing
+    areas = {f"{a:.3f}" for a in result.stability_by_area()["area [m^2]"]}
+    quoted = {m.group(1) for c in history_table(result, "SI").columns
+              if (m := re.search(r"A=(\S+) m\^2", c))}
+    assert quoted and quoted <= areas, (quoted, areas)
