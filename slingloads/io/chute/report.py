@@ -28,13 +28,14 @@ import pandas as pd
 from slingloads.analyses.chute_sizing import (
     wake_ratio_at,
 )
-from slingloads.constants import FOOT, POUND_FORCE
+from slingloads.constants import FOOT, KNOT, POUND_FORCE
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.decision import decision_section, with_decision
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
 from slingloads.io.common.report import (
     convert_columns,
+    quantity_text,
     report_unit,
     report_value,
     sample_rows,
@@ -431,6 +432,15 @@ def _sheets(result, units, warnings=(), decision=None):
     return sheets
 
 
+def condition_text(result, units="SI"):
+    """The sizing's flight condition, for the figures' titles: airspeed, density altitude
+    and the angle of attack the areas are sized at."""
+    c = result.inputs.model.condition
+    return (f"{c.ias / KNOT:.4g} KEAS, "
+            f"{quantity_text(c.density_altitude, 'altitude', units)} density altitude, "
+            f"alpha {np.degrees(c.alpha):.1f} deg")
+
+
 def _figures(result, units="SI"):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
     (plot_histories_by_gust, plot_static_moments, plot_sweep_metrics, plot_wake,
@@ -442,11 +452,14 @@ def _figures(result, units="SI"):
             "static-moments": (plot_static_moments, (result.static, units), {}),
             "wake": (plot_wake, (result.line, units), {})}
     if result.sweep is not None:
-        figs["sweep"] = (plot_sweep_metrics, (result.sweep, units), {})
+        condition = condition_text(result, units)
+        figs["sweep"] = (plot_sweep_metrics, (result.sweep, units),
+                         {"title": f"1-DOF parachute sizing sweep, {condition}\n(dotted: "
+                                   "neutral static area)"})
         figs["histories"] = (plot_histories_by_gust,
                              (result.sweep.runs, result.history_runs()),
                              {"title": "1-DOF yaw response to every gust shape (paper figure "
-                                       "7)", "units": units})
+                                       f"7)\n{condition}", "units": units})
     return figs
 
 
