@@ -178,6 +178,8 @@ class Envelope:
         Time observed after the input. [s]
     period : ndarray
         Period of the slowest relevant mode, NaN when not given. [s]
+    test : EnvelopeTest, optional
+        The test applied (its band and factors are quoted in the reasons).
     """
 
     verdict: np.ndarray
@@ -186,6 +188,7 @@ class Envelope:
     offset: np.ndarray
     window: np.ndarray
     period: np.ndarray
+    test: EnvelopeTest | None = None
 
     def reason(self, j, what="sideslip"):
         """Why run ``j`` got its envelope verdict, with its numbers.
@@ -214,6 +217,11 @@ class Envelope:
                         f"two halves, centred {off:+.3g} deg from trim): run longer")
             return f"too little time observed after the input ({w:.3g} s)"
         amp = f"{what} amplitude {a1:.3g} -> {a2:.3g} deg over the two halves"
+        if self.test is not None and v in (CONVERGENT, STATIC_DEPARTURE):
+            # which rule held: a response that grows inside the band has settled, not decayed
+            band = d(self.test.band)
+            amp += (f" (settled: within the {band:.3g} deg band)" if a2 <= band
+                    else f" (decaying: below {self.test.decay:g} x)")
         if v == STATIC_DEPARTURE:
             return f"{amp}; settles {off:+.3g} deg from trim (static departure)"
         return f"{amp}; centred {off:+.3g} deg from trim"
@@ -287,7 +295,7 @@ def envelope(time, y, start, reference, sustained, test=None, period=None):
         [short, grows, slow & ~centred, settles & off, settles, sustained],
         [INCONCLUSIVE, DIVERGENT, INCONCLUSIVE, STATIC_DEPARTURE, CONVERGENT, BOUNDED],
         default=LIMIT_CYCLE)
-    return Envelope(verdict.astype(object), a1, a2, offset, window, period)
+    return Envelope(verdict.astype(object), a1, a2, offset, window, period, test)
 
 
 def settling_time(time, y, onset, reference, band):
