@@ -41,6 +41,10 @@ SINGULAR_TOLERANCE = 1e-5
 MAX_COMPONENTS = 24
 #: Least number of samples for an identification. [-]
 MIN_SAMPLES = 20
+#: Most samples identified on (a longer record is averaged over blocks of consecutive
+#: samples and decimated: a moving average of a sum of exponentials is a sum of the same
+#: exponentials, so the roots are kept exactly, and the fast modes are attenuated). [-]
+MAX_SAMPLES = 800
 #: Least observed time, in periods of the identified component, for it to count. [-]
 MIN_PERIODS = 1.5
 #: Least amplitude of a component, as a fraction of the largest oscillatory one, for it to
@@ -94,12 +98,17 @@ def components(time, y):
     roots : ndarray of complex, shape (m,)
         Continuous-time roots :math:`s_i`. [1/s]
     residues : ndarray of complex, shape (m,)
-        :math:`h_i`, such that ``y(t) ~ sum h_i exp(s_i (t - t0))`` (the signal's unit).
+        :math:`h_i`, such that ``y(t) ~ sum h_i exp(s_i (t - t0))`` (the signal's unit; of
+        the block-averaged signal when the record is longer than :data:`MAX_SAMPLES`).
     """
     time = np.asarray(time, float)
     y = np.asarray(y, float)
-    n = y.size
     dt = float(time[1] - time[0])
+    step = -(-y.size // MAX_SAMPLES)
+    if step > 1:  # block average, then one sample per block (roots unchanged)
+        y = np.convolve(y, np.full(step, 1.0 / step), mode="valid")[::step]
+        dt *= step
+    n = y.size
     pencil = n // 3
     hankel = np.lib.stride_tricks.sliding_window_view(y, pencil + 1)
     _, sv, vh = np.linalg.svd(hankel, full_matrices=False)
