@@ -162,7 +162,7 @@ def test_masses_in_titles_to_the_unit():
     """A mass in a campaign title (root locus, stability map) is written to the unit in
     both systems: the US twin's 4900.1 kg is 10803 lb (4900.1 / 0.45359237), never
     '1.08e+04 lb'."""
-    from slingloads.io.campaign.report import mass_text
+    from slingloads.io.campaign.words import mass_text
 
     assert mass_text(4900.1, "US") == "10803 lb"
     assert mass_text(2900.0, "SI") == "2900 kg"

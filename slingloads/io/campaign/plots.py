@@ -15,6 +15,7 @@ from matplotlib.figure import Figure
 from slingloads.analyses.verdicts import STABLE, UNSTABLE
 from slingloads.constants import FOOT, KNOT, POUND
 from slingloads.errors import InputError
+from slingloads.io.campaign.words import mass_text
 from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 from slingloads.io.common.report import quantity_text
 
@@ -38,8 +39,6 @@ def _small(ax):
 
 def _mass(value, units):
     """A mass [kg] in a title: in kg (SI) or lb (US), to the unit (the report's words)."""
-    from slingloads.io.campaign.report import mass_text
-
     return mass_text(value, units)
 
 

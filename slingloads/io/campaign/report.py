@@ -30,6 +30,7 @@ import pandas as pd
 
 from slingloads import __version__
 from slingloads.constants import KNOT, POUND
+from slingloads.io.campaign.words import mass_text
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
 from slingloads.io.common.ownership import PARQUET_KEY
@@ -358,13 +359,6 @@ def sweep_plots(result):
             tag = "sensitivity-" + name.replace(" ", "-")
             out.append((tag, runs, factor, f"{name}: {choice[factor]}"))
     return out
-
-
-def mass_text(value, units):
-    """A mass [kg] in a title or a sentence: in kg (SI) or lb (US), to the unit (10803 lb,
-    never 1.08e+04 lb)."""
-    return quantity_text(round(value) if units == "SI" else round(value / POUND) * POUND,
-                         "mass", units, digits=12)
 
 
 def _locus(result, units="SI"):
