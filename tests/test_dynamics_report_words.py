@@ -190,3 +190,23 @@ def test_history_headers_quote_the_sweep_tables_areas(example_results):
     quoted = {m.group(1) for c in history_table(result, "SI").columns
               if (m := re.search(r"A=(\S+) m\^2", c))}
     assert quoted and quoted <= areas, (quoted, areas)
+
+
+def test_a_constant_metric_reads_as_its_value():
+    """A sweep metric equal at every area up to round-off (the US twin's peak sideslip,
+    12.5265803 deg for every area: the gust angle) is plotted on plain ticks over at least
+    1 deg, not in matplotlib's offset notation ('1e-11+1.25265803e1')."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from slingloads.io.chute.plots import readable_range
+
+    figure = Figure()
+    FigureCanvasAgg(figure)
+    ax = figure.subplots()
+    ax.plot([1.0, 2.0, 3.0], 12.5265803 + np.array([0.0, 1e-11, 1e-11]))
+    readable_range(ax)
+    figure.canvas.draw()  # the offset text is made when drawn
+    low, high = ax.get_ylim()
+    assert high - low >= 1.0 and low < 12.5265803 < high
+    assert ax.yaxis.get_major_formatter().get_offset() == ""

@@ -117,6 +117,17 @@ def plot_wake(result, units="SI"):
     return fig
 
 
+def readable_range(ax, least=1.0):
+    """Plain tick labels on ``ax``'s y axis, over at least ``least`` units: a metric that is
+    the same at every area (the peak sideslip of a gust, its angle) reads as its value, not
+    as matplotlib's offset notation of round-off ('1e-11+1.25265803e1')."""
+    ax.ticklabel_format(axis="y", style="plain", useOffset=False)
+    low, high = ax.get_ylim()
+    if high - low < least:
+        middle = 0.5 * (low + high)
+        ax.set_ylim(middle - 0.5 * least, middle + 0.5 * least)
+
+
 def plot_sweep_metrics(sweep, units="SI", title=None):
     """Peak sideslip, peak yaw, damping ratios and settling time against area, per gust shape.
 
@@ -148,6 +159,7 @@ def plot_sweep_metrics(sweep, units="SI", title=None):
         ax.set(xlabel=f"parachute flat-plate area [{a_label}]", ylabel=label)
         ax.axvline(sweep.static.area * area, color="0.5", ls=":", lw=1)
         ax.grid(True, alpha=0.4)
+        readable_range(ax)
     handles, labels = axes[2].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=len(labels), fontsize=8)
     fig.suptitle(title or "Parachute sizing sweep (dotted: neutral static area)", fontsize=10,
