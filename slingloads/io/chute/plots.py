@@ -117,15 +117,17 @@ def plot_wake(result, units="SI"):
     return fig
 
 
-def readable_range(ax, least=1.0):
-    """Plain tick labels on ``ax``'s y axis, over at least ``least`` units: a metric that is
-    the same at every area (the peak sideslip of a gust, its angle) reads as its value, not
-    as matplotlib's offset notation of round-off ('1e-11+1.25265803e1')."""
+def readable_range(ax):
+    """Plain tick labels on ``ax``'s y axis; a range of round-off only (a metric that is the
+    same at every area, e.g. the peak sideslip of a gust, its angle) widened to +-5 % of its
+    value (at least +-0.5), so that it reads as its value, not as matplotlib's offset
+    notation of round-off ('1e-11+1.25265803e1')."""
     ax.ticklabel_format(axis="y", style="plain", useOffset=False)
     low, high = ax.get_ylim()
-    if high - low < least:
-        middle = 0.5 * (low + high)
-        ax.set_ylim(middle - 0.5 * least, middle + 0.5 * least)
+    middle = 0.5 * (low + high)
+    if high - low <= 1e-6 * max(1.0, abs(middle)):
+        half = max(0.05 * abs(middle), 0.5)
+        ax.set_ylim(middle - half, middle + half)
 
 
 def plot_sweep_metrics(sweep, units="SI", title=None):
