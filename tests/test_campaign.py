@@ -269,8 +269,11 @@ def test_speed_limits_logic():
     assert limits.loc["HC2", "first non-convergent ramp [kt]"] == pytest.approx(30)
     assert limits.loc["HC2", "its verdict"] == "static departure"
     assert limits.loc["HC3", "its verdict"] == "limit cycle"
+    # the bracket the ramps tried give, never a bare number that reads as the limit itself
     assert list(limits["speed limit"]) == [
-        "30 kt", "20 kt", "none (the lowest ramp does not converge)",
+        ">= 30 kt and < 40 kt (the ramp to 40 kt: divergent)",
+        ">= 20 kt and < 30 kt (the ramp to 30 kt: static departure)",
+        "< 20 kt (the lowest ramp tried, to 20 kt: limit cycle)",
         ">= 40 kt (every ramp tried converges)"]
 
 

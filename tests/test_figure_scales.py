@@ -52,11 +52,13 @@ def _colour_bars(figure):
 def test_every_colour_scale_says_quantity_unit_and_sign(campaign_figures):
     """Each colour bar of the campaign's figures (stability map: damping ratio and real part;
     root locus: area factor) has a label with a unit in brackets; a scale running from
-    negative to positive values says which sign is convergent and which divergent."""
+    negative to positive values says which sign is stable and which unstable, in the linear
+    model's verdict words (the tables' 'linear verdict', LinearModel.verdict): the scales
+    show eigenvalues, not responses (convergent / divergent name a response)."""
     from matplotlib import pyplot as plt
     from matplotlib import rc_context
 
-    from slingloads.analyses.verdicts import CONVERGENT, DIVERGENT
+    from slingloads.analyses.verdicts import STABLE, UNSTABLE
     from slingloads.io.common.figures import report_style
 
     assert {"stability-map", "root-locus"} <= set(campaign_figures)
@@ -70,7 +72,7 @@ def test_every_colour_scale_says_quantity_unit_and_sign(campaign_figures):
             low, high = bar.mappable.get_clim()
             if not re.search(r"\[[^\]]+\]", label):
                 faults.append((tag, label, "no unit"))
-            if low < 0 < high and not (CONVERGENT in label and DIVERGENT in label
+            if low < 0 < high and not (STABLE in label and UNSTABLE in label
                                        and "<" in label and ">" in label):
                 faults.append((tag, label, "sign not explained"))
         plt.close(figure)

@@ -281,7 +281,7 @@ def _check_response_damping(measured_on, check, yaw_period=None):
     """The mode a response's damping was measured on and the check beside it agree: a named
     mode has a period within 25 % of the response's and the check compares with that mode;
     'none' goes with a check that says no mode matches; 'no linear mode to compare with'
-    never stands beside a listed yaw mode."""
+    never stands beside a listed yaw mode; the mode named is a yaw mode."""
     for i, (on, words) in enumerate(zip(measured_on, check, strict=True)):
         on = "" if pd.isna(on) else str(on)
         words = "" if pd.isna(words) else str(words)
@@ -292,6 +292,8 @@ def _check_response_damping(measured_on, check, yaw_period=None):
             assert "matches no mode" not in words, (on, words)
             assert f"the {name} mode" in words, (on, words)
             assert "inf s" not in on, on
+            # a "yaw" period and damping are measured on a yaw mode (not the roll's)
+            assert "yaw" in name, (on, words)
         if yaw_period is not None and math.isfinite(_num(yaw_period[i])):
             assert words != "no linear mode to compare with", (i, words)
 

@@ -89,7 +89,7 @@ def test_no_area_when_a_model_finds_none():
     assert not d.found and d.deciding_model == ONE_DOF
     from slingloads.analyses.parachute_decision import multibody_verdict_at
     text = multibody_verdict_at(METRICS, 1.2, STABLE)
-    assert text.startswith("NOT stable: 1 of 2 runs") and "limit cycle" in text
+    assert text.startswith("NOT stable: 1 of 2 runs fail") and "limit cycle" in text
 
 
 def test_a_finding_is_reported_not_refused():

@@ -167,3 +167,17 @@ def test_one_dof_verdicts_about_the_neutral_area():
     assert runs["verdict"][1] in ("static departure", "divergent", "outside domain")
     assert runs["verdict"][2] == "convergent"
     assert "neutral" not in set(runs["verdict"])
+
+
+def test_reason_says_which_rule_made_it_convergent():
+    """A response that grows inside the band (0.2 -> 0.43 deg, the example's head-wind ramp)
+    is convergent because it has settled within the 1 deg band, and its reason says so beside
+    the two amplitudes; one that decays from outside the band says it decays (envelope rule,
+    module notes)."""
+    t = np.linspace(0.0, 40.0, 4001)
+    growing = np.radians(0.2 + 0.23 * (t > 20)) * np.sin(2 * np.pi * t / 2.0)
+    decaying = np.radians(8.0) * np.exp(-0.05 * t) * np.sin(2 * np.pi * t / 2.0)
+    env = vd.envelope(t, np.vstack([growing, decaying]), 0.0, 0.0, False)
+    assert list(env.verdict) == [vd.CONVERGENT, vd.CONVERGENT]
+    assert "(settled: within the 1 deg band)" in env.reason(0)
+    assert "(decaying: below 0.9 x)" in env.reason(1)

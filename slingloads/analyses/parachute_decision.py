@@ -210,9 +210,10 @@ def multibody_verdict_at(metrics, area, stable):
     ok = int(np.count_nonzero(stable[at]))
     total = int(np.count_nonzero(at))
     if ok == total:
-        return f"stable in all {total} runs"
+        return f"stable in all {total} runs" if total > 1 else "stable in its 1 run"
     verdicts = metrics.loc[at, "response verdict"].astype(str)
-    return f"NOT stable: {total - ok} of {total} runs (worst response: {worst(list(verdicts))})"
+    return (f"NOT stable: {total - ok} of {total} {'runs fail' if total > 1 else 'run fails'} "
+            f"(worst response: {worst(list(verdicts))})")
 
 
 #: Largest difference between the 1-DOF and the multibody yaw damping ratios at one area and
@@ -258,8 +259,10 @@ def damping_comparison(runs, metrics, area, airspeed):
     k = int(np.nanargmin(zetas))
     z2 = float(zetas[k])
     mode = str(metrics.loc[at, "yaw mode"].iloc[k]) if "yaw mode" in metrics else "yaw mode"
-    text = (f"at {where}: {one}, multibody {z2:.3g} (least over {int(np.isfinite(zetas).sum())}"
-            f" runs, mode {mode}); difference {z1 - z2:+.3g}")
+    n = int(np.isfinite(zetas).sum())
+    over = f"least over {n} runs" if n > 1 else "its 1 run"
+    text = (f"at {where}: {one}, multibody {z2:.3g} ({over}, mode {mode}); difference "
+            f"{z1 - z2:+.3g}")
     if abs(z1 - z2) <= DAMPING_TOLERANCE:
         return f"{text}: agree within {DAMPING_TOLERANCE:g}"
     return (f"{text}: differ by more than {DAMPING_TOLERANCE:g}: the multibody yaw mode "

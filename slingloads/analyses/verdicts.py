@@ -61,6 +61,10 @@ INCONCLUSIVE = "inconclusive"
 #: The verdicts of a run, from the best to the worst.
 VERDICTS = (CONVERGENT, BOUNDED, STATIC_DEPARTURE, LIMIT_CYCLE, INCONCLUSIVE, DIVERGENT,
             OUTSIDE_DOMAIN)
+#: The verdicts of a linear model's eigenvalues (:data:`EIGENVALUE_TOLERANCE`): every real
+#: part below minus it, some within it of 0, some above it. A response is convergent or
+#: divergent; a linear model (a mode, a trim) is stable, neutral or unstable.
+STABLE, NEUTRAL, UNSTABLE = "stable", "neutral", "unstable"
 #: Verdicts that meet a stability criterion (``bounded`` only under a sustained input).
 ACCEPTED = (CONVERGENT, BOUNDED)
 #: A linear mode is stable when the real part of its eigenvalue is below minus this (a real
@@ -72,6 +76,11 @@ DAMPING_TOLERANCE = 0.05
 #: Largest relative difference between the period measured on a response and that of the
 #: mode named for it. [-]
 PERIOD_TOLERANCE = 0.25
+#: Share of a mode's largest angular amplitude above which the yaw takes part in it (the
+#: threshold at which a mode's name lists a second motion). [-]
+YAW_SHARE = 0.25
+#: Why a damping ratio could not be measured, when the caller does not say.
+NOT_MEASURED = "fewer than three peaks after the input"
 
 
 def worst(verdicts):
@@ -169,6 +178,8 @@ class Envelope:
         Time observed after the input. [s]
     period : ndarray
         Period of the slowest relevant mode, NaN when not given. [s]
+    test : EnvelopeTest, optional
+        The test applied (its band and factors are quoted in the reasons).
     """
 
     verdict: np.ndarray
@@ -177,6 +188,7 @@ class Envelope:
     offset: np.ndarray
     window: np.ndarray
     period: np.ndarray
+    test: EnvelopeTest | None = None
 
     def reason(self, j, what="sideslip"):
         """Why run ``j`` got its envelope verdict, with its numbers.
@@ -205,6 +217,11 @@ class Envelope:
                         f"two halves, centred {off:+.3g} deg from trim): run longer")
             return f"too little time observed after the input ({w:.3g} s)"
         amp = f"{what} amplitude {a1:.3g} -> {a2:.3g} deg over the two halves"
+        if self.test is not None and v in (CONVERGENT, STATIC_DEPARTURE):
+            # which rule held: a response that grows inside the band has settled, not decayed
+            band = d(self.test.band)
+            amp += (f" (settled: within the {band:.3g} deg band)" if a2 <= band
+                    else f" (decaying: below {self.test.decay:g} x)")
         if v == STATIC_DEPARTURE:
             return f"{amp}; settles {off:+.3g} deg from trim (static departure)"
         return f"{amp}; centred {off:+.3g} deg from trim"
@@ -278,7 +295,7 @@ def envelope(time, y, start, reference, sustained, test=None, period=None):
         [short, grows, slow & ~centred, settles & off, settles, sustained],
         [INCONCLUSIVE, DIVERGENT, INCONCLUSIVE, STATIC_DEPARTURE, CONVERGENT, BOUNDED],
         default=LIMIT_CYCLE)
-    return Envelope(verdict.astype(object), a1, a2, offset, window, period)
+    return Envelope(verdict.astype(object), a1, a2, offset, window, period, test)
 
 
 def settling_time(time, y, onset, reference, band):
@@ -321,7 +338,7 @@ def settling_time(time, y, onset, reference, band):
     return out
 
 
-def damping_check(measured, period, mode_zeta, mode_period, mode_name):
+def damping_check(measured, period, mode_zeta, mode_period, mode_name, reason=NOT_MEASURED):
     """Whether a damping ratio measured on a response agrees with the linear mode it was
     measured on (:data:`DAMPING_TOLERANCE`, periods within :data:`PERIOD_TOLERANCE`), in
     words.
@@ -338,13 +355,15 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name):
         Period of the linear mode (NaN for a real root). [s]
     mode_name : str
         Name of the mode ("" when there is none).
+    reason : str, optional
+        Why the damping could not be measured (used when ``measured`` is NaN).
 
     Returns
     -------
     str
     """
     if not (math.isfinite(measured) and math.isfinite(period)):
-        return "not measured (fewer than three peaks after the input)"
+        return f"not measured ({reason})"
     if not mode_name:
         return "no linear mode to compare with"
     if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
@@ -358,7 +377,7 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name):
             f"{DAMPING_TOLERANCE:g}: amplitude-dependent (nonlinear) or several modes")
 
 
-def response_mode(period, zeta, modes, whose=""):
+def response_mode(period, zeta, modes, whose="", reason=NOT_MEASURED):
     """The mode a response's damping was measured on, and the check against it, in words:
     the one place that names the mode (:func:`nearest_mode`) and judges the agreement
     (:func:`damping_check`), so that the two statements cannot disagree. A mode whose period
@@ -376,6 +395,8 @@ def response_mode(period, zeta, modes, whose=""):
     whose : str, optional
         Which trim the modes are of, appended to the mode's name (e.g. " of the trim at the
         ramp's final airspeed").
+    reason : str, optional
+        Why the damping could not be measured (used when ``zeta`` is NaN).
 
     Returns
     -------
@@ -393,7 +414,9 @@ def response_mode(period, zeta, modes, whose=""):
     'roll (1.44 s, zeta 0.0014)'
     """
     name, mode_zeta, mode_period = nearest_mode(period, modes, zeta)
-    check = damping_check(zeta, period, mode_zeta, mode_period, name)
+    check = damping_check(zeta, period, mode_zeta, mode_period, name, reason)
+    if not math.isfinite(period) and modes is not None and len(modes) == 1:
+        check = f"not measured on the {modes['mode'].iloc[0]} mode{whose} ({reason})"
     if not name or not (math.isfinite(zeta) and math.isfinite(period)):
         return "", check
     if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
@@ -401,6 +424,33 @@ def response_mode(period, zeta, modes, whose=""):
                 f"{mode_period:.3g} s)", check)
     label = f"{name}{whose} ({mode_period:.3g} s, zeta {mode_zeta:.3g})"
     return label, check
+
+
+def yaw_mode(modes):
+    """The yaw mode of a linear model: the least damped of the modes in which the yaw takes
+    part (yaw amplitude at least :data:`YAW_SHARE` of the mode's largest angular amplitude).
+    The pendulum modes of cable and airframe are lightly damped whatever the parachute; the
+    yaw modes are those the parachute sizes, and the least damped of them is the one a
+    stability criterion reads.
+
+    Parameters
+    ----------
+    modes : pandas.DataFrame or None
+        A :meth:`LinearModel.modes_frame` (columns ``mode``, ``damping ratio [-]``,
+        ``yaw amplitude [-]``...).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Its row (one row), or no row when there is no such mode.
+    """
+    if modes is None or len(modes) == 0:
+        return modes
+    finite = modes[np.isfinite(modes["damping ratio [-]"])]  # a zero eigenvalue has none
+    yaw = finite[finite["yaw amplitude [-]"] >= YAW_SHARE]
+    if len(yaw) == 0:
+        return yaw
+    return yaw.loc[[yaw["damping ratio [-]"].idxmin()]]
 
 
 def slowest_period(modes, group="yaw"):
@@ -469,7 +519,8 @@ def nearest_mode(period, modes, zeta=float("nan")):
 
 
 __all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT",
-           "EIGENVALUE_TOLERANCE",
-           "INCONCLUSIVE", "LIMIT_CYCLE", "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE",
-           "STATIC_DEPARTURE", "VERDICTS", "Envelope", "EnvelopeTest", "damping_check",
-           "envelope", "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst"]
+           "EIGENVALUE_TOLERANCE", "INCONCLUSIVE", "LIMIT_CYCLE", "NEUTRAL", "NOT_MEASURED",
+           "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE", "STABLE", "STATIC_DEPARTURE", "UNSTABLE",
+           "VERDICTS", "YAW_SHARE", "Envelope", "EnvelopeTest", "damping_check", "envelope",
+           "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst",
+           "yaw_mode"]

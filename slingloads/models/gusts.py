@@ -114,7 +114,7 @@ class StepGust:
     @property
     def label(self):
         """A short description for tables and legends (amplitude in m/s, times in s)."""
-        return f"step {self.amplitude:.3g} m/s"
+        return f"step {self.amplitude:.4g} m/s"
 
     def velocity(self, t):
         """Lateral gust velocity at times ``t``.
@@ -168,7 +168,7 @@ class FiniteGust(StepGust):
     @property
     def label(self):
         """A short description for tables and legends (amplitude in m/s, times in s)."""
-        return f"finite {self.amplitude:.3g} m/s, {self.duration:.3g} s"
+        return f"finite {self.amplitude:.4g} m/s, {self.duration:.3g} s"
 
     def velocity(self, t):
         """Lateral gust velocity at times ``t`` (the amplitude from the onset for ``duration``).
@@ -207,7 +207,7 @@ class OneMinusCosineGust(FiniteGust):
     @property
     def label(self):
         """A short description for tables and legends (amplitude in m/s, times in s)."""
-        return f"1-cosine {self.amplitude:.3g} m/s, {self.duration:.3g} s"
+        return f"1-cosine {self.amplitude:.4g} m/s, {self.duration:.3g} s"
 
     def velocity(self, t):
         """Lateral gust velocity at times ``t`` (a 1-cosine pulse from the onset).
@@ -277,7 +277,7 @@ class SustainedGust(StepGust):
     @property
     def label(self):
         """A short description for tables and legends (amplitude in m/s, times in s)."""
-        return (f"continuous {self.amplitude:.3g} m/s held, rise {self.rise_time:.3g} s")
+        return (f"continuous {self.amplitude:.4g} m/s held, rise {self.rise_time:.3g} s")
 
     def velocity(self, t):
         """Lateral gust velocity at times ``t`` (a half-cosine rise, then held).
@@ -334,7 +334,7 @@ class HarmonicGust(StepGust):
     @property
     def label(self):
         """A short description for tables and legends (amplitude in m/s, times in s)."""
-        return f"harmonic {self.amplitude:.3g} m/s, period {self.period:.3g} s"
+        return f"harmonic {self.amplitude:.4g} m/s, period {self.period:.3g} s"
 
     def velocity(self, t):
         """Lateral gust velocity at times ``t`` (a sine from the onset).
@@ -678,7 +678,7 @@ class TabulatedGust:
     @property
     def label(self):
         """A short description for tables and legends (amplitude in m/s, times in s)."""
-        return f"tabulated, peak {self.peak:.3g} m/s"
+        return f"tabulated, peak {self.peak:.4g} m/s"
 
     def velocity(self, t):
         """Lateral gust velocity at times ``t``: the table, linear between its points, zero

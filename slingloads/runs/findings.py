@@ -197,10 +197,7 @@ def _speed_limits(results):
     out = []
     for _, row in npr.limits.iterrows():
         limit = float(row["largest convergent ramp [m/s]"]) / KNOT
-        first = float(row["first non-convergent ramp [kt]"])
-        answer = str(row["speed limit"])
-        if row["its verdict"]:
-            answer += f" (at {first:.0f} kt: {row['its verdict']})"
+        answer = str(row["speed limit"])  # the bracket, with the first failing ramp's verdict
         out.append(Finding(f"{SPEED_LIMIT}, {row['helicopter']}", answer, limit, "kt", math.nan,
                            "campaign, Summary 'Transport without parachute' and sheet "
                            "NoParachute"))
@@ -297,7 +294,9 @@ def _linear(results):
     at = (" with the Study parachute" if getattr(mb.inputs.system, "parachute", None)
           is not None else " without parachute")
     answer = (f"{mb.linear.verdict()} at {mb.inputs.system.airspeed / KNOT:.4g} KEAS{at} "
-              f"(eigenvalues only; parachute adequacy: see the parachute area)")
+              f"(eigenvalues only: stable when every real part is below "
+              f"-{STABILITY_TOLERANCE:g} 1/s, the reference; parachute adequacy: see the "
+              f"parachute area)")
     return Finding(LINEAR, answer, largest, "1/s", -STABILITY_TOLERANCE,
                    "multibody, Summary and sheet Modes")
 

@@ -10,7 +10,8 @@ A run's result (histories and metrics) depends on
 * the run settings: length, step and sampling interval;
 * the code that turns those into results: the source of the physical models
   (``slingloads/models``), of the multibody analyses and of the campaign's per-run work
-  (metrics, batch worker, this module), and the package version.
+  (metrics, the verdicts and the modes identified on a response, batch worker, this module),
+  and the package version.
 
 So an edited input changes the key of exactly the runs it affects, and a new version of the
 physics invalidates every stored result. Names (the run id, the system's name) are not in the
@@ -92,7 +93,8 @@ def code_digest():
     root = Path(slingloads.__file__).resolve().parent
     files = sorted((root / "models").rglob("*.py")) + sorted(
         (root / "analyses" / "multibody").rglob("*.py")) + [
-        root / "analyses" / "campaign" / "metrics.py",
+        root / "analyses" / "campaign" / "metrics.py", root / "analyses" / "verdicts.py",
+        root / "analyses" / "response_modes.py",
         root / "analyses" / "campaign" / "worker.py", Path(__file__).resolve()]
     h = hashlib.sha256(slingloads.__version__.encode())
     h.update(str(RECORD_VERSION).encode())

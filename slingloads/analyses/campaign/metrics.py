@@ -13,7 +13,9 @@ Every run is measured three ways:
   but hardly decays). The pendulum modes of cable and airframe are lightly damped whatever the
   parachute; the yaw modes are those the parachute sizes;
 * **its response** (:meth:`RunResult.metrics <slingloads.analyses.multibody.RunResult.metrics>`):
-  peak and RMS yaw and sideslip, damping ratio and period from the yaw-rate peaks, settling
+  peak and RMS yaw and sideslip, damping ratio and period of the yaw mode identified on the
+  heading history (:meth:`RunResult.response_damping
+  <slingloads.analyses.multibody.RunResult.response_damping>`), settling
   time, tension extremes, slack, response verdict; and the extremes the structural loads take:
   angle of attack and sideslip, parachute line angles and tension, hub-load angle from the
   mast, and from the hanging vertical (hub above CG, the vertical of the loads' hanging
@@ -31,9 +33,7 @@ import numpy as np
 
 from slingloads.analyses.hook_loads import horizontal_basis
 from slingloads.analyses.multibody.simulate import HISTORY_COLUMNS
-
-#: Share of a mode's largest angular amplitude above which the yaw takes part in it. [-]
-YAW_SHARE = 0.25
+from slingloads.analyses.verdicts import YAW_SHARE, yaw_mode
 
 #: Labels of the stored histories, in order (SI; angles in degrees).
 HISTORY_LABELS = tuple(label for _, label, _ in HISTORY_COLUMNS)
@@ -101,7 +101,7 @@ def linear_metrics(trim_point, model):
     out["least damped mode"] = str(modes.loc[least, "mode"])
     yaw = modes[modes["yaw amplitude [-]"] >= YAW_SHARE]
     if len(yaw):
-        k = yaw["damping ratio [-]"].idxmin()
+        k = yaw_mode(modes).index[0]
         out["yaw mode"] = str(yaw.loc[k, "mode"])
         out["yaw mode damping ratio [-]"] = float(yaw.loc[k, "damping ratio [-]"])
         out["yaw mode real part [1/s]"] = float(yaw.loc[k, "real [1/s]"])
@@ -136,11 +136,9 @@ def response_metrics(run, model=None):
     ramp = getattr(getattr(run.manoeuvre, "wind", None), "ramp", None)
     if (model is not None and run.linear_at_condition is None and ramp is not None
             and abs(ramp.target - run.system.airspeed) <= 1e-9 * max(1.0, ramp.target)):
-        from slingloads.analyses.verdicts import response_mode
-
-        (out["response damping measured on mode"],
-         out["response damping check"]) = response_mode(
-            base["yaw period from response [s]"], base["yaw damping ratio from response [-]"],
+        (out["yaw period from response [s]"], out["yaw damping ratio from response [-]"],
+         out["response damping measured on mode"],
+         out["response damping check"]) = run.response_damping(
             model.modes_frame(), " of the trim at the ramp's final airspeed")
     h = run.histories()
     table = np.column_stack([h[key] if si else np.degrees(h[key])

@@ -25,8 +25,10 @@ verdicts (the same rule, read after the gust) stand beside the ramps' and do not
 speed limit, which is the paper's (ramps alone).
 
 **Speed limit** of a helicopter: the largest ramp target whose run, and the run of every lower
-target, is convergent (NaN when even the lowest is not); when every ramp tried is convergent,
-the limit is only known to be at least the highest target (``">= X"``).
+target, is convergent (NaN when even the lowest is not). It is stated as the bracket the ramps
+tried give: ``">= X kt and < Y kt"`` between the largest convergent target and the first that
+is not (with that one's verdict); ``">= X kt"`` when every ramp tried converges (the limit is
+only known to be at least the highest target); ``"< Y kt"`` when even the lowest does not.
 """
 
 from __future__ import annotations
@@ -357,10 +359,14 @@ def speed_limits(runs):
         beyond = group.iloc[first_bad] if first_bad < ok.size else None
         if beyond is None:
             text = f">= {limit / KNOT:.0f} kt (every ramp tried converges)"
-        elif np.isfinite(limit):
-            text = f"{limit / KNOT:.0f} kt"
         else:
-            text = "none (the lowest ramp does not converge)"
+            bad = beyond["ramp target [m/s]"] / KNOT
+            if np.isfinite(limit):
+                text = (f">= {limit / KNOT:.0f} kt and < {bad:.0f} kt (the ramp to {bad:.0f} "
+                        f"kt: {beyond['verdict']})")
+            else:
+                text = (f"< {bad:.0f} kt (the lowest ramp tried, to {bad:.0f} kt: "
+                        f"{beyond['verdict']})")
         rows.append({
             "helicopter": name, "speed limit": text,
             "largest convergent ramp [m/s]": limit,

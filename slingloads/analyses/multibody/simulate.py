@@ -29,6 +29,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses import verdicts as vd
+from slingloads.analyses.response_modes import identify_mode
 from slingloads.analyses.verdicts import EnvelopeTest
 from slingloads.errors import InputError
 from slingloads.limits import MAX_MULTIBODY_RUN_STEPS
@@ -340,13 +341,11 @@ class RunResult:
             row["line slack"] = bool(m["line tension min"] < 0)
             row["canopy alpha max [deg]"] = float(np.degrees(m["chute alpha max"]))
         verdict, reason, settling, band = self._response()
-        period, zeta = float(m["yaw period"]), float(m["yaw damping ratio"])
         linear = self.linear_at_condition
-        modes = linear.modes_frame() if linear is not None else None
-        row["yaw period from response [s]"] = period
-        row["yaw damping ratio from response [-]"] = zeta
-        (row["response damping measured on mode"],
-         row["response damping check"]) = vd.response_mode(period, zeta, modes)
+        (row["yaw period from response [s]"], row["yaw damping ratio from response [-]"],
+         row["response damping measured on mode"],
+         row["response damping check"]) = self.response_damping(
+            linear.modes_frame() if linear is not None else None)
         row["settling time [s]"] = settling
         row["settling band [deg]"] = float(np.degrees(band))
         row["verdict"] = verdict
@@ -355,6 +354,48 @@ class RunResult:
         row["stopped"] = self.stop_reason()
         row["carrier speed end [m/s]"] = float(m["carrier speed end"])
         return row
+
+    def response_damping(self, modes=None, whose=""):
+        """Period and damping ratio of the yaw mode measured on the heading history after the
+        input, the mode they were measured on and their check against its eigenvalue.
+
+        The components of the heading are identified by the matrix pencil method
+        (:func:`~slingloads.analyses.response_modes.identify_mode`) and the one within
+        :data:`~slingloads.analyses.verdicts.PERIOD_TOLERANCE` of the linear model's yaw mode
+        (:func:`~slingloads.analyses.verdicts.yaw_mode`) is read; without a linear model, the
+        heading's largest oscillatory component (named "no linear mode to compare with").
+
+        Parameters
+        ----------
+        modes : pandas.DataFrame or None, optional
+            The linear model's :meth:`LinearModel.modes_frame` to measure against.
+        whose : str, optional
+            Which trim the modes are of, appended to the mode's name.
+
+        Returns
+        -------
+        tuple of (float, float, str, str)
+            Period [s], damping ratio [-], the mode measured on, the check against it.
+        """
+        target = vd.yaw_mode(modes)
+        nan = float("nan")
+        if modes is not None and len(target) == 0:
+            return (nan, nan, "", f"no yaw mode in the linear model{whose} (no mode with a yaw "
+                    f"amplitude of {vd.YAW_SHARE:.0%} of its largest)")
+        period = float(target["period [s]"].iloc[0]) if target is not None else None
+        if period is not None and not math.isfinite(period):
+            name, real = str(target["mode"].iloc[0]), float(target["real [1/s]"].iloc[0])
+            return (nan, nan, f"{name}{whose} (aperiodic, real part {real:+.3g} 1/s)",
+                    f"not measured: the {name} mode{whose} is aperiodic (a real root, "
+                    f"{'unstable' if real > vd.EIGENVALUE_TOLERANCE else 'stable'}): it has "
+                    "no period or damping ratio to read on the response")
+        ident = identify_mode(self.time, self.histories()["yaw"], self.manoeuvre.input_end
+                              if self.manoeuvre.input_end is not None else self.time[-1],
+                              period, vd.PERIOD_TOLERANCE)
+        reason = (ident.reason if self.manoeuvre.input_end is not None
+                  else "the input lasts the whole run")
+        on, check = vd.response_mode(ident.period, ident.damping_ratio, target, whose, reason)
+        return ident.period, ident.damping_ratio, on, check
 
     @cached_property
     def linear(self):

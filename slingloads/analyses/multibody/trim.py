@@ -37,6 +37,7 @@ import pandas as pd
 from scipy.linalg import eig
 from scipy.optimize import root
 
+from slingloads.analyses import verdicts as vd
 from slingloads.errors import InputError
 from slingloads.models.multibody.carrier import FreeCarrier
 from slingloads.models.multibody.equations import FLAGS, INFO, N_INFO, N_STATES, evaluate
@@ -53,8 +54,9 @@ from slingloads.models.multibody.rigid_body import (
 
 #: Residual (scaled accelerations) below which a trim is accepted. [-]
 TRIM_TOLERANCE = 1e-9
-#: Real part [1/s] above which an eigenvalue counts as unstable (round-off allowance).
-STABILITY_TOLERANCE = 1e-6
+#: Real part [1/s] above which an eigenvalue counts as unstable (round-off allowance): the
+#: rule of every model (:data:`~slingloads.analyses.verdicts.EIGENVALUE_TOLERANCE`).
+STABILITY_TOLERANCE = vd.EIGENVALUE_TOLERANCE
 
 _INFO = {name: i for i, name in enumerate(INFO)}
 
@@ -690,10 +692,10 @@ class LinearModel:
         """
         re = self.eigenvalues.real
         if np.any(re > STABILITY_TOLERANCE):
-            return "unstable"
+            return vd.UNSTABLE
         if np.any(np.abs(re) <= STABILITY_TOLERANCE):
-            return "neutral"
-        return "stable"
+            return vd.NEUTRAL
+        return vd.STABLE
 
     def a_frame(self):
         """The state matrix A as a DataFrame (rows: derivative of, columns: coordinate).

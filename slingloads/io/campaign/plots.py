@@ -13,9 +13,10 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION
-from slingloads.analyses.verdicts import CONVERGENT, DIVERGENT, STATIC_DEPARTURE
+from slingloads.analyses.verdicts import STABLE, UNSTABLE
 from slingloads.constants import FOOT, KNOT, POUND
 from slingloads.errors import InputError
+from slingloads.io.campaign.words import mass_text
 from slingloads.io.common.figures import PAGE_WIDTH, fix_margins
 from slingloads.io.common.report import quantity_text
 
@@ -38,9 +39,8 @@ def _small(ax):
 
 
 def _mass(value, units):
-    """A mass [kg] in a title: in kg (SI) or lb (US), to the unit."""
-    return quantity_text(round(value) if units == "SI" else round(value / POUND) * POUND,
-                         "mass", units, digits=12)
+    """A mass [kg] in a title: in kg (SI) or lb (US), to the unit (the report's words)."""
+    return mass_text(value, units)
 
 
 def _condition(row, skip=(), neutral_area=None, units="SI"):
@@ -171,12 +171,35 @@ def _label(row, factor, units="SI"):
 
 
 #: Colour-scale labels: the quantity, its unit and what its sign or range means, in the
-#: verdict words of :mod:`slingloads.analyses.verdicts`.
-DAMPING_SCALE = (f"yaw-mode damping ratio [-]\n> 0 {CONVERGENT}, < 0 {DIVERGENT}\n"
-                 f"(-1: a real root, {STATIC_DEPARTURE})")
-REAL_PART_SCALE = (f"largest real part of the eigenvalues [1/s]\n< 0 {CONVERGENT}, "
-                   f"> 0 {DIVERGENT}")
+#: linear model's verdict words (:data:`~slingloads.analyses.verdicts.STABLE`...: the tables'
+#: "linear verdict"; convergent and divergent name responses, not eigenvalues).
+DAMPING_SCALE = (f"yaw-mode damping ratio [-]\n> 0 {STABLE}, < 0 {UNSTABLE}\n"
+                 f"(-1: an {UNSTABLE} real root)")
+REAL_PART_SCALE = (f"largest real part of the eigenvalues [1/s]\n< 0 {STABLE}, "
+                   f"> 0 {UNSTABLE}")
 AREA_FACTOR_SCALE = "parachute area / neutral static area [-]"
+
+
+def cell_edges(centres):
+    """Edges of the cells centred on sorted ``centres``: midway between neighbours, the end
+    cells as wide as their neighbour's half spacing; a single centre gets a cell of +-5 % of
+    its value (+-0.5 when it is 0).
+
+    Parameters
+    ----------
+    centres : array_like, shape (n,)
+        Increasing cell centres (any unit).
+
+    Returns
+    -------
+    ndarray, shape (n + 1,)
+    """
+    c = np.asarray(centres, float)
+    if c.size == 1:
+        half = 0.05 * abs(c[0]) or 0.5
+        return np.array([c[0] - half, c[0] + half])
+    mid = 0.5 * (c[1:] + c[:-1])
+    return np.concatenate([[c[0] - (mid[0] - c[0])], mid, [c[-1] + (c[-1] - mid[-1])]])
 
 
 def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
@@ -187,7 +210,7 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
     scale, unit = _area(units)
     points = stability.points
     altitudes = sorted(points["density altitude [m]"].unique())
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.4)), left=0.7, right=0.1, bottom=0.5,
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.6)), left=0.7, right=0.1, bottom=0.8,
                       top=0.55, wspace=0.6, hspace=0.45)
     axes = fig.subplots(2, len(altitudes), squeeze=False)
     quantities = (("yaw mode damping ratio [-]", DAMPING_SCALE, "viridis"),
@@ -199,20 +222,24 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
             speeds = grid.columns.to_numpy() / KNOT
             areas = grid.index.to_numpy() * neutral_area * scale
             values = grid.to_numpy(float)
+            # cell edges (a single airspeed or area gets a cell of its own width: matplotlib's
+            # "nearest" shading draws nothing for a single column)
+            x_edges, y_edges = cell_edges(speeds), cell_edges(areas)
             if column.startswith("largest"):
                 bound = np.nanmax(np.abs(values)) if np.any(np.isfinite(values)) else 1.0
-                mesh = ax.pcolormesh(speeds, areas, values, shading="nearest", cmap=cmap,
+                mesh = ax.pcolormesh(x_edges, y_edges, values, shading="flat", cmap=cmap,
                                      vmin=-bound, vmax=bound)
             else:
-                mesh = ax.pcolormesh(speeds, areas, values, shading="nearest", cmap=cmap)
+                mesh = ax.pcolormesh(x_edges, y_edges, values, shading="flat", cmap=cmap)
             bar = fig.colorbar(mesh, ax=ax)
             bar.set_label(label, fontsize=7)
             bar.ax.tick_params(labelsize=7)
             minimum = stability.minimum[np.isclose(stability.minimum["density altitude [m]"],
                                                    h)]
-            ax.plot(minimum["airspeed EAS [m/s]"] / KNOT,
-                    minimum["minimum stable area [m^2]"] * scale, "k.-",
-                    label="minimum stable area")
+            least = minimum["minimum stable area [m^2]"].to_numpy(float) * scale
+            if np.isfinite(least).any():  # no line (and no legend entry) when none is stable
+                ax.plot(minimum["airspeed EAS [m/s]"] / KNOT, least, "k.-",
+                        label="minimum stable area")
             ax.axhline(neutral_area * scale, color="k", ls=":", lw=1.0,
                        label="1.0 x neutral static area")
             if chosen_area is not None and np.isfinite(chosen_area):
@@ -223,7 +250,10 @@ def plot_stability_map(stability, neutral_area, units="SI", chosen_area=None):
             ax.set(xlabel="airspeed [KEAS]", ylabel=f"parachute area [{unit}]",
                    title=f"{what}, {quantity_text(h, 'altitude', units)} density altitude")
             _small(ax)
-            _legend(ax, fontsize=6, loc="upper right")
+    # one legend for every panel, below them: inside a panel it hides cells of the map
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    if handles:
+        fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=7, frameon=False)
     c = stability.condition
     fig.suptitle(f"mass {c['mass case']} {_mass(c['mass [kg]'], units)}, cable "
                  f"{quantity_text(c['cable length [m]'], 'length', units)}, carrier "

@@ -33,6 +33,7 @@ import pandas as pd
 from slingloads import __version__
 from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION
 from slingloads.constants import KNOT, POUND
+from slingloads.io.campaign.words import mass_text
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
 from slingloads.io.common.ownership import PARQUET_KEY
@@ -329,11 +330,11 @@ def _sheets(report, units, warnings=(), decision=None):
             Section("Stability map over parachute area x airspeed x density altitude"),
             Section("Minimum stable area by airspeed and density altitude",
                     in_units(r.stability.minimum, units)),
-            *_parts("Every grid point", in_units(r.stability.points, units),
+            *_parts("Every grid point", _explained(in_units(r.stability.points, units)),
                     ["area factor [-]", "airspeed EAS [m/s]", "airspeed EAS [kt]"])]
     if r.no_parachute is not None:
         keys = ["helicopter", "ramp target [m/s]", "ramp target [kt]"]
-        sheets["NoParachute"] = _parts("Every ramp", in_units(r.no_parachute.runs, units),
+        sheets["NoParachute"] = _parts("Every ramp", _explained(in_units(r.no_parachute.runs, units)),
                                        keys)
         if not r.no_parachute.gust_runs.empty:
             study = r.campaign.no_parachute
@@ -341,7 +342,7 @@ def _sheets(report, units, warnings=(), decision=None):
                 f"Every ramp with a lateral gust ({GUST_DURATION:g} s of "
                 f"{quantity_text(study.gust_speed, 'speed', units, digits=3)}, "
                 f"{GUST_DELAY:g} s after the ramp's end; the verdict read after the gust)",
-                in_units(r.no_parachute.gust_runs, units), keys)
+                _explained(in_units(r.no_parachute.gust_runs, units)), keys)
     sheets["LoadsHandoff"] = (
         [Section("Extremes of the chosen parachute's runs", handoff)] if handoff is not None
         else "no area is stable in every condition and none was chosen: nothing is handed to "
@@ -380,7 +381,7 @@ def _locus(result, units="SI"):
     sel = loci[np.isclose(loci["airspeed EAS [m/s]"], speed)
                & np.isclose(loci["density altitude [m]"], altitude)]
     c = result.stability.condition
-    mass = quantity_text(c["mass [kg]"], "mass", units)
+    mass = mass_text(c["mass [kg]"], units)
     title = (f"{speed / KNOT:.0f} KEAS, {quantity_text(altitude, 'altitude', units)} HD, "
              f"mass {c['mass case']} {mass}, cable "
              f"{quantity_text(c['cable length [m]'], 'length', units)}, carrier "

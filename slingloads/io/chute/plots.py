@@ -117,7 +117,20 @@ def plot_wake(result, units="SI"):
     return fig
 
 
-def plot_sweep_metrics(sweep, units="SI"):
+def readable_range(ax):
+    """Plain tick labels on ``ax``'s y axis; a range of round-off only (a metric that is the
+    same at every area, e.g. the peak sideslip of a gust, its angle) widened to +-5 % of its
+    value (at least +-0.5), so that it reads as its value, not as matplotlib's offset
+    notation of round-off ('1e-11+1.25265803e1')."""
+    ax.ticklabel_format(axis="y", style="plain", useOffset=False)
+    low, high = ax.get_ylim()
+    middle = 0.5 * (low + high)
+    if high - low <= 1e-6 * max(1.0, abs(middle)):
+        half = max(0.05 * abs(middle), 0.5)
+        ax.set_ylim(middle - half, middle + half)
+
+
+def plot_sweep_metrics(sweep, units="SI", title=None):
     """Peak sideslip, peak yaw, damping ratios and settling time against area, per gust shape.
 
     Parameters
@@ -125,12 +138,15 @@ def plot_sweep_metrics(sweep, units="SI"):
     sweep : SweepResult
     units : str
         ``"SI"`` (m^2) or ``"US"`` (ft^2).
+    title : str, optional
+        The figure's title (default: a generic one).
     """
     area, a_label = _unit(units, "area")
     frame = sweep.to_frame()
     frame["area [m^2]"] = frame["area [m^2]"] * area
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.0)), left=0.7, right=0.15, bottom=0.8,
-                      top=0.45, wspace=0.3, hspace=0.3)
+    lines = (title or "x").count("\n") + 1  # room for a title of several lines
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 6.0 + 0.2 * lines)), left=0.7, right=0.15,
+                      bottom=0.8, top=0.25 + 0.22 * lines, wspace=0.3, hspace=0.3)
     axes = fig.subplots(2, 2).ravel()
     columns = [("peak beta [deg]", "peak sideslip [deg]"), ("peak psi [deg]", "peak yaw [deg]"),
                ("damping ratio log decrement [-]", "damping ratio [-]"),
@@ -145,9 +161,11 @@ def plot_sweep_metrics(sweep, units="SI"):
         ax.set(xlabel=f"parachute flat-plate area [{a_label}]", ylabel=label)
         ax.axvline(sweep.static.area * area, color="0.5", ls=":", lw=1)
         ax.grid(True, alpha=0.4)
+        readable_range(ax)
     handles, labels = axes[2].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=len(labels), fontsize=8)
-    fig.suptitle("Parachute sizing sweep (dotted: neutral static area)")
+    fig.suptitle(title or "Parachute sizing sweep (dotted: neutral static area)", fontsize=10,
+                 y=0.995, va="top")
     return fig
 
 
@@ -205,8 +223,9 @@ def plot_histories_by_gust(runs, indices, title=None, units="SI"):
         raise InputError("no run to draw")
     cols = 2 if len(kinds) > 1 else 1
     rows = -(-len(kinds) // cols)
-    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.3 * rows + 1.2)), left=0.7, right=0.15,
-                      bottom=0.85, top=0.65, wspace=0.08, hspace=0.3)
+    lines = (title or "x").count("\n") + 1  # room for a title of several lines
+    fig = fix_margins(Figure(figsize=(PAGE_WIDTH, 2.3 * rows + 1.0 + 0.2 * lines)), left=0.7,
+                      right=0.15, bottom=0.85, top=0.45 + 0.2 * lines, wspace=0.08, hspace=0.3)
     axes = np.atleast_1d(fig.subplots(rows, cols, sharex=True, sharey=True, squeeze=False)
                          ).ravel()
     areas = sorted({float(runs.areas[j]) for j in indices})
@@ -230,5 +249,6 @@ def plot_histories_by_gust(runs, indices, title=None, units="SI"):
                 axes[0].plot([], [], color="0.3", lw=1.0, ls="--")[0]]
     labels += ["sideslip beta", "yaw psi"]
     fig.legend(handles, labels, loc="lower center", ncol=len(labels), fontsize=7)
-    fig.suptitle(title or "1-DOF yaw response to lateral gusts", fontsize=10)
+    fig.suptitle(title or "1-DOF yaw response to lateral gusts", fontsize=10, y=0.995,
+                 va="top")
     return fig

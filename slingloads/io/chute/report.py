@@ -28,13 +28,14 @@ import pandas as pd
 from slingloads.analyses.chute_sizing import (
     wake_ratio_at,
 )
-from slingloads.constants import FOOT, POUND_FORCE
+from slingloads.constants import FOOT, KNOT, POUND_FORCE
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.decision import decision_section, with_decision
 from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
 from slingloads.io.common.report import (
     convert_columns,
+    quantity_text,
     report_unit,
     report_value,
     sample_rows,
@@ -104,6 +105,25 @@ def _items(rows, units):
     return pd.DataFrame(out, dtype=object)  # a count stays an int (written "15")
 
 
+def factor_row_label(paper_factor, swept_factor):
+    """Label of the 1-DOF verdict at the paper's factor: the factor the verdict was run at,
+    and, when the sweep has no area at the paper's, that it is the nearest swept one.
+
+    Parameters
+    ----------
+    paper_factor, swept_factor : float
+        The paper's factor and the swept area nearest it, x neutral area. [-]
+
+    Returns
+    -------
+    str
+    """
+    if abs(swept_factor - paper_factor) <= 1e-9 * paper_factor:
+        return f"1-DOF verdict at the paper's factor ({paper_factor:g} x neutral)"
+    return (f"1-DOF verdict at {swept_factor:.3g} x neutral (the swept area nearest the "
+            f"paper's {paper_factor:g} x)")
+
+
 def summary_tables(result, units="SI"):
     """The Summary's tables: condition, neutral area and recommendation, line and cable."""
     inp, static, line = result.inputs, result.static, result.line
@@ -155,7 +175,8 @@ def summary_tables(result, units="SI"):
              "convergent (bounded under the continuous gust), 1-DOF"
              if np.isfinite(rec) else
              "NONE: no swept area is convergent under every gust (1-DOF); widen the sweep"),
-            (f"1-DOF verdict at the paper's factor ({inp.recommended_factor:g} x neutral)",
+            # the row names the area it was run at: the swept area nearest the paper's factor
+            (factor_row_label(inp.recommended_factor, float(at["area / neutral area [-]"])),
              "stable for every gust" if at["all gusts stable"]
              else f"NOT stable for every gust (worst: {at['worst verdict']})", None,
              f"swept area {float(at['area / neutral area [-]']):.3g} x neutral"),
@@ -248,7 +269,8 @@ def _cable_message(cable, units):
 def _run_label(result, j, units):
     runs = result.sweep.runs
     area, unit = _value(float(runs.areas[j]), "area", units)
-    return f"A={area:.4g} {unit} {runs.gusts[j].kind}"
+    # the precision of the areas in the report's tables (0.289 m^2, 18.12 ft^2)
+    return f"A={area:.{3 if units == 'SI' else 2}f} {unit} {runs.gusts[j].kind}"
 
 
 def history_table(result, units="SI", interval=None):
@@ -410,6 +432,15 @@ def _sheets(result, units, warnings=(), decision=None):
     return sheets
 
 
+def condition_text(result, units="SI"):
+    """The sizing's flight condition, for the figures' titles: airspeed, density altitude
+    and the angle of attack the areas are sized at."""
+    c = result.inputs.model.condition
+    return (f"{c.ias / KNOT:.4g} KEAS, "
+            f"{quantity_text(c.density_altitude, 'altitude', units)} density altitude, "
+            f"alpha {np.degrees(c.alpha):.1f} deg")
+
+
 def _figures(result, units="SI"):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``."""
     (plot_histories_by_gust, plot_static_moments, plot_sweep_metrics, plot_wake,
@@ -421,11 +452,14 @@ def _figures(result, units="SI"):
             "static-moments": (plot_static_moments, (result.static, units), {}),
             "wake": (plot_wake, (result.line, units), {})}
     if result.sweep is not None:
-        figs["sweep"] = (plot_sweep_metrics, (result.sweep, units), {})
+        condition = condition_text(result, units)
+        figs["sweep"] = (plot_sweep_metrics, (result.sweep, units),
+                         {"title": f"1-DOF parachute sizing sweep, {condition}\n(dotted: "
+                                   "neutral static area)"})
         figs["histories"] = (plot_histories_by_gust,
                              (result.sweep.runs, result.history_runs()),
                              {"title": "1-DOF yaw response to every gust shape (paper figure "
-                                       "7)", "units": units})
+                                       f"7)\n{condition}", "units": units})
     return figs
 
 

@@ -38,6 +38,7 @@ from slingloads.io.common.report import (
     convert_columns,
     csv_frame,
     explain_infinite,
+    quantity_text,
     report_unit,
     report_value,
     split_unit,
@@ -90,12 +91,16 @@ CONVENTIONS = (
 # ------------------------------------------------------------------------------- tables
 def in_units(frame, units):
     """A copy of ``frame`` with its SI columns (``[m]``, ``[N]``, ``[m/s]``, ``[kg]``,
-    ``[m^2]``) in the report unit system."""
+    ``[m^2]``) in the report unit system; the airspeed and the carrier's speed (the flight
+    speed of the carrying helicopter) in kt in both systems, as every airspeed."""
     spec = {}
     for column in frame.columns:
         match = _HEADER_UNIT.match(str(column))
         if match and match.group("unit") in _KINDS:
-            spec[column] = (match.group("name"), _KINDS[match.group("unit")])
+            kind = _KINDS[match.group("unit")]
+            if kind == "speed" and "carrier speed" in match.group("name"):
+                kind = "airspeed"
+            spec[column] = (match.group("name"), kind)
     return convert_columns(frame, spec, units)
 
 
@@ -303,6 +308,16 @@ def _sheets(result, units, warnings=(), decision=None):
     return sheets
 
 
+def condition_text(result, units="SI"):
+    """The base condition of the multibody runs, for the figures' titles: airspeed, density
+    altitude and the parachute (area in report units) or none."""
+    s = result.inputs.system
+    chute = (f"parachute {quantity_text(s.parachute.parachute.area, 'area', units)}"
+             if getattr(s, "parachute", None) is not None else "no parachute")
+    return (f"{s.airspeed / KNOT:.4g} KEAS, {quantity_text(s.density_altitude, 'altitude', units)}"
+            f" density altitude, {chute}")
+
+
 def _figures(result, units="SI"):
     """The figures to draw: ``{tag: (plot function, args, kwargs)}``, each plot's plain-data
     twin with its data (names, arrays, tables), so that the process that draws them loads
@@ -310,10 +325,14 @@ def _figures(result, units="SI"):
     plot_modes, plot_history_panels, plot_view_points = (  # matplotlib loads where drawn
         plot_function("slingloads.io.multibody.plots", name)
         for name in ("plot_modes", "plot_history_panels", "plot_view_points"))
-    figs = {"histories": (plot_history_panels, (history_panels(result.simulation),), {})}
+    condition = condition_text(result, units)
+    figs = {"histories": (plot_history_panels, (history_panels(result.simulation),),
+                          {"title": f"Multibody time histories, {condition}"})}
     if result.linear is not None:
-        figs["eigenvalues"] = (plot_modes, (result.linear.modes_frame(),
-                                            result.linear.verdict()), {})
+        verdict = result.linear.verdict()
+        figs["eigenvalues"] = (plot_modes, (result.linear.modes_frame(), verdict),
+                               {"title": f"Eigenvalues about the trim ({verdict}), "
+                                         f"{condition}"})
     states = []
     if result.trim.converged:
         states.append((f"trim at {result.inputs.system.airspeed / KNOT:.4g} KEAS",
@@ -326,7 +345,8 @@ def _figures(result, units="SI"):
     if states:
         figs["views"] = (plot_view_points, (view_points(result.inputs.system, states,
                                                         result.outline), units,
-                                            "The system at trim and at the largest excursion"),
+                                            "The system at trim and at the largest "
+                                            f"excursion, {condition}"),
                          {})
     return figs
 
