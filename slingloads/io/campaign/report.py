@@ -334,8 +334,8 @@ def _sheets(report, units, warnings=(), decision=None):
                     ["area factor [-]", "airspeed EAS [m/s]", "airspeed EAS [kt]"])]
     if r.no_parachute is not None:
         keys = ["helicopter", "ramp target [m/s]", "ramp target [kt]"]
-        sheets["NoParachute"] = _parts("Every ramp", _explained(in_units(r.no_parachute.runs, units)),
-                                       keys)
+        sheets["NoParachute"] = _parts(
+            "Every ramp", _explained(in_units(r.no_parachute.runs, units)), keys)
         if not r.no_parachute.gust_runs.empty:
             study = r.campaign.no_parachute
             sheets["NoParachute"] += _parts(
