@@ -156,10 +156,10 @@ def test_run_publishes_all_analyses_or_none(tmp_path, monkeypatch, capsys):
 
     from slingloads.io.chute import report
 
-    def failing_writer(result, out_dir, stem, units, study, figures=None, findings=None):
+    def failing_writer(*args, **kwargs):
         raise RuntimeError("disk full")
 
-    monkeypatch.setattr(report, "write", failing_writer)
+    monkeypatch.setattr(report, "report_kind", failing_writer)
     out = tmp_path / "reports"
     publish_earlier(out, {"example-light-twin-loads.xlsx": b"earlier"})
     manifest = (out / MANIFEST_NAME).read_bytes()

@@ -262,8 +262,8 @@ class NoParachuteStudy:
                 gust = make_gust("finite", self.gust_speed, start, GUST_DURATION)
                 manoeuvre = wind_ramp(
                     target, self.rate, self.onset, gust=gust,
-                    name=f"wind ramp to {target / KNOT:.0f} kt, {self.gust_speed / FOOT:.0f} "
-                         f"ft/s lateral gust at {start:.0f} s")
+                    name=f"wind ramp to {target / KNOT:.0f} kt, lateral gust of "
+                         f"{GUST_DURATION:g} s at {start:.0f} s")
                 out.append((name, target, system.with_(airspeed=target), manoeuvre))
         return out
 
