@@ -252,20 +252,14 @@ class NoParachuteStudy:
         list of (str, float, SlingSystem, Manoeuvre)
             Helicopter name, ramp target [m/s], system and manoeuvre.
         """
-        from slingloads.analyses.multibody.manoeuvres import wind_ramp
         from slingloads.models.gusts import make_gust
 
-        out = []
-        for name, system in self.systems.items():
-            for target in self.gust_targets:
-                start, _ = self.gust_window(target)
-                gust = make_gust("finite", self.gust_speed, start, GUST_DURATION)
-                manoeuvre = wind_ramp(
-                    target, self.rate, self.onset, gust=gust,
-                    name=f"wind ramp to {target / KNOT:.0f} kt, lateral gust of "
-                         f"{GUST_DURATION:g} s at {start:.0f} s")
-                out.append((name, target, system.with_(airspeed=target), manoeuvre))
-        return out
+        def gust(target):
+            start, _ = self.gust_window(target)
+            return (make_gust("finite", self.gust_speed, start, GUST_DURATION),
+                    f", lateral gust of {GUST_DURATION:g} s at {start:.0f} s")
+
+        return self._ramp_jobs(self.gust_targets, gust)
 
     def jobs(self):
         """(name, target, system, manoeuvre) of every ramp.
@@ -275,16 +269,21 @@ class NoParachuteStudy:
         list of (str, float, SlingSystem, Manoeuvre)
             Helicopter name, ramp target [m/s], system and manoeuvre.
         """
+        return self._ramp_jobs(self.targets, lambda target: (None, ""))
+
+    def _ramp_jobs(self, targets, gust):
+        """The ramps to ``targets`` [m/s] of every helicopter, each with ``gust(target)``'s
+        (gust or None, suffix of its name). The run starts in hover (the ramp's choice); the
+        system's airspeed is the ramp's final one, where its linear model is taken (sea-level
+        samples: EAS equals the wind's true speed)."""
         from slingloads.analyses.multibody.manoeuvres import wind_ramp
 
         out = []
         for name, system in self.systems.items():
-            for target in self.targets:
-                manoeuvre = wind_ramp(target, self.rate, self.onset,
-                                      name=f"wind ramp to {target / KNOT:.0f} kt")
-                # the run starts in hover (the ramp's choice); the system's airspeed is the
-                # ramp's final one, where its linear model is taken (sea-level samples: EAS
-                # equals the wind's true speed)
+            for target in targets:
+                shape, suffix = gust(target)
+                manoeuvre = wind_ramp(target, self.rate, self.onset, gust=shape,
+                                      name=f"wind ramp to {target / KNOT:.0f} kt{suffix}")
                 out.append((name, target, system.with_(airspeed=target), manoeuvre))
         return out
 
