@@ -127,8 +127,9 @@ class _Columns:
         page width, or in blocks of columns repeating the first (the row's id) when that
         fit is below the least print scale
         (:func:`~slingloads.io.common.excel_print.column_pages`)."""
-        # a column w characters wide shows 7 w px (_set_widths)
-        return column_pages([_DIGIT_PIXELS * self.widths.get(j, 8.43)
+        # a column stored w characters wide shows 7 w px in Excel (_set_widths) and 7 w + 5
+        # px in LibreOffice (88.8 px for w = 12, measured on its PDF export): the wider
+        return column_pages([_px(self.widths.get(j, 8.43))
                              for j in range(max(self.widths, default=-1) + 1)], orientation)
 
 

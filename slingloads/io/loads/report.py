@@ -280,11 +280,13 @@ def case_report_table(result, units="SI"):
 
 def case_report_tables(result, units="SI"):
     """The load-case table as two printed tables: (definition, load factors), both keyed by
-    ``case``; the first ends with the description."""
+    ``case``; the first gives each case's source and ends with its description, the second
+    only the case and its factors (narrow enough for a portrait page, twice the rows of a
+    landscape one)."""
     frame = case_report_table(result, units)
     factors = [c for c in frame.columns if _CASE_FACTORS.match(str(c))]
     return (frame[[c for c in frame.columns if c not in factors]],
-            frame[["case", "source", *factors]])
+            frame[["case", *factors]])
 
 
 def previous_station_status(result):
