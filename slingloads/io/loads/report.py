@@ -62,6 +62,7 @@ from slingloads.io.common.excel import (
     write_workbook,
 )
 from slingloads.io.common.figures import plot_function
+from slingloads.io.common.formats import header_unit
 from slingloads.io.common.locate import located
 from slingloads.io.common.report import (
     check_units,
@@ -477,9 +478,33 @@ def _outside_text(outside):
             "angle reached in towed flight; widen it or restrict the flight envelope.")
 
 
+def towed_summary_table(result):
+    """The towed-flight cases as the Summary prints them: one row per quantity of
+    :meth:`~slingloads.analyses.loads.LoadsResult.towed_table` (its name, its unit, empty
+    for a text), one column per towed case, so that the few towed cases print as one narrow
+    block beside the Summary's other tables; or None without a towed case."""
+    towed = result.towed_table()
+    if towed.empty:
+        return None
+    names, units = [], []
+    for column in towed.columns[1:]:
+        unit = header_unit(column)
+        names.append(str(column) if unit is None else str(column).rsplit(" [", 1)[0])
+        units.append("" if unit is None else unit)
+    out = pd.DataFrame({"quantity": names, "unit": units})
+    for k, case in enumerate(towed["case"]):
+        out[str(case)] = list(towed.iloc[k, 1:])
+    return out
+
+
+def _sentences(lines):
+    """``lines`` joined as sentences (a full stop after each that has none)."""
+    return " ".join(t if t.rstrip().endswith(".") else f"{t.rstrip()}." for t in lines)
+
+
 def towed_note(result):
     """The towed-case verdict: how many trimmed cables lie outside the hook cone."""
-    findings = " ".join(result.towed_findings())
+    findings = _sentences(result.towed_findings())
     if result.towed_table().empty:
         return ("No towed-flight equilibrium case (no fuselage table, or off). "
                 + findings).strip()
@@ -895,7 +920,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         Section("Hook-load directions (CS-29.865)", hook_direction_table(result),
                 note=hook_direction_note(result)),
         Section("Towed-flight equilibrium cases: trimmed attitude and cable angles",
-                result.towed_table() if (result.cases["hook"] == "TOW").any() else None,
+                towed_summary_table(result),
                 note=towed_note(result)),
         Section("Closure check (free-free equilibrium)", closure),
     ]
