@@ -133,3 +133,59 @@ def test_loadcases_say_where_each_case_comes_from(example_reports, example_resul
                     else "CS-29.865 direction")
         assert source == expected or source == "dynamics", (case, hook, source)
     assert {"towed equilibrium", "CS-29.865 direction"} <= set(cases["source"])
+
+
+# ----------------------------------------------------------------------------- precision
+_NUMBER = re.compile(r"(?<![\w.])-?\d[\d,]*(?:\.\d+)?(?![\w.]*\d)")
+
+
+def _decimals(number_format):
+    """Decimals of an Excel number format (``0.000`` -> 3, ``#,##0`` -> 0), or None."""
+    match = re.search(r"0(?:\.(0+))?(?:E|$|;)", number_format or "")
+    return None if match is None else len(match.group(1) or "")
+
+
+def _quoted_at_their_precision(book, sheet="Findings"):
+    """(row, quoted, as the value cell shows it) of every number in an answer that states
+    the row's value at another precision than the value cell's number format."""
+    ws = openpyxl.load_workbook(book)[sheet]
+    head = [c.value for c in ws[1]]
+    answer, value = head.index("answer"), head.index("value")
+    faults = []
+    for row in ws.iter_rows(min_row=2):
+        v, text = row[value].value, row[answer].value
+        places = _decimals(row[value].number_format)
+        if not isinstance(v, (int, float)) or not isinstance(text, str) or places is None:
+            continue
+        shown = f"{v:.{places}f}"
+        for quoted in _NUMBER.findall(text):
+            x = float(quoted.replace(",", ""))
+            if abs(x - v) <= 0.006 * abs(v) + 0.5 * 10 ** -places and \
+                    quoted.replace(",", "") != shown:
+                faults.append((row[0].value, quoted, shown))
+    return faults
+
+
+def test_findings_quote_each_value_at_its_cell_precision(example_reports, us_twin_reports):
+    """On the Findings sheet of every report of both examples, a number of an answer that
+    states the row's value is written as the value cell shows it (its Excel number format:
+    a factor [-] to 0.001, an angle to 0.1 deg), not at another precision (the peak tension
+    "2.16 <= Nz 2.5" beside 2.163 and 2.500, the exceedance ratio 7.1 and 7.10 beside
+    7.097)."""
+    for _, folder in (example_reports, us_twin_reports):
+        for book in _workbooks(folder):
+            if "Findings" in openpyxl.load_workbook(book, read_only=True).sheetnames:
+                assert not _quoted_at_their_precision(book), (book.name,
+                                                              _quoted_at_their_precision(book))
+
+
+def test_loads_summary_states_the_exceedance_ratio_as_its_findings(example_reports):
+    """The loads Summary's largest exceedance ratio is the Findings sheet's value, written
+    at the same precision (the ratio's 0.000)."""
+    _, folder = example_reports
+    book = next(folder.glob("*-loads.xlsx"))
+    findings = pd.read_excel(book, sheet_name="Findings")
+    row = findings[findings["question"].str.startswith("loads exceedances")].iloc[0]
+    summary = " ".join(str(v) for v in pd.read_excel(book, sheet_name="Summary",
+                                                     header=None)[0].dropna())
+    assert f"largest finite ratio {float(row['value']):.3f}" in summary

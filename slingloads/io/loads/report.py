@@ -703,7 +703,7 @@ def exceedance_findings(result, source=""):
     interpolated = sum(s == "INTERPOLATED" for s in status)
     lines = [f"{len(over)} of {len(comparison)} station x component entries exceed the "
              f"previous design envelope (largest finite ratio "
-             f"{np.nanmax(worst.to_numpy(float)) if worst.notna().any() else 0:.2f}); "
+             f"{np.nanmax(worst.to_numpy(float)) if worst.notna().any() else 0:.3f}); "
              f"components: {', '.join(sorted(set(over['component']))) or 'none'}. Sheets "
              "Exceedance and ExceedanceDetail."]
     if interpolated:
