@@ -189,3 +189,29 @@ def test_loads_summary_states_the_exceedance_ratio_as_its_findings(example_repor
     summary = " ".join(str(v) for v in pd.read_excel(book, sheet_name="Summary",
                                                      header=None)[0].dropna())
     assert f"largest finite ratio {float(row['value']):.3f}" in summary
+
+
+def _agrees(quoted, value):
+    """A number quoted in a sentence agrees with ``value`` when ``value`` rounds to it at
+    the quoted number's own last digit."""
+    text = quoted.replace(",", "")
+    places = len(text.split(".")[1]) if "." in text else 0
+    return abs(float(text) - value) <= 0.5 * 10 ** -places * (1 + 1e-9)
+
+
+def test_loads_summary_quotes_the_study_area_as_its_decision_table(example_reports,
+                                                                   us_twin_reports):
+    """The loads Summary's consistency note quotes the Study 'parachute area' as the
+    parachute decision table on the same sheet gives it (in US units 16.04 ft^2 beside
+    16.00 ft^2 before: the SI text rounded to 1.49 m^2, then converted)."""
+    for _, folder in (example_reports, us_twin_reports):
+        book = next(folder.glob("*-loads.xlsx"))
+        raw = pd.read_excel(book, sheet_name="Summary", header=None)
+        cells = [str(v) for v in raw.to_numpy().ravel() if isinstance(v, str)]
+        text = " ".join(cells)
+        quoted = re.search(r"Study 'parachute area' \(([\d.,]+) (?:m|ft)\^2\)", text)
+        row = raw[raw[0].astype(str).str.startswith("Study 'parachute area' (loads)")]
+        if quoted is None or row.empty:
+            continue
+        assert _agrees(quoted.group(1), float(row.iloc[0, 1])), (book.name, quoted.group(0),
+                                                                 row.iloc[0, 1])
