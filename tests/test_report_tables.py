@@ -215,3 +215,29 @@ def test_loads_summary_quotes_the_study_area_as_its_decision_table(example_repor
             continue
         assert _agrees(quoted.group(1), float(row.iloc[0, 1])), (book.name, quoted.group(0),
                                                                  row.iloc[0, 1])
+
+
+# ----------------------------------------------------------------------------- lateral
+def test_lateral_critical_case_is_the_one_the_runs_sheet_lists(example_reports,
+                                                               us_twin_reports):
+    """The case the lateral Summary (and the Findings sheet) names as producing the largest
+    load angle is a row of the Runs results, whose largest angle over the ranges is the
+    Summary's (before, the Summary named a variant run, 552 of 567, while the Runs sheet
+    lists the 21 nominal cases with their maxima over the ranges)."""
+    from hostile import report_table
+
+    for _, folder in (example_reports, us_twin_reports):
+        book = next(folder.glob("*-lateral.xlsx"))
+        _, angle = report_table(book, "Summary", "Design angle of the hook load")
+        items = angle.set_index("item")
+        case = int(items.loc["case producing it", "value"])
+        peak = float(items.loc["largest load angle |theta1 - theta2| over the stated ranges",
+                               "value"])
+        results = pd.read_excel(book, sheet_name="Runs-ResultsEveryCase")
+        row = results[results["case"] == case]
+        assert len(row) == 1, (book.name, case, list(results["case"]))
+        assert float(row["max |theta1 - theta2| over the ranges [deg]"].iloc[0]) == \
+            pytest.approx(peak, abs=0.05)
+        findings = pd.read_excel(book, sheet_name="Findings")
+        hook = findings[findings["question"].str.startswith("hook design angle")].iloc[0]
+        assert f"case {case} on sheet Runs" in hook["source"], hook["source"]

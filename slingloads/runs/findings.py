@@ -129,8 +129,9 @@ def _hook_angle(results):
         st = lateral.study
         k = int(st.critical_index)
         where = (f"lateral study, Summary 'recommended design angle' (margin {st.margin:g} x "
-                 f"largest load angle {np.degrees(st.max_load_angle):.4g} deg, case {k + 1} "
-                 f"on sheet Runs, motion {lateral.motion_id(k)})")
+                 f"largest load angle {np.degrees(st.max_load_angle):.4g} deg, case "
+                 f"{st.nominal_case(k)} on sheet Runs (run {k + 1}), motion "
+                 f"{lateral.motion_id(k)})")
     if loads is not None:
         used = float(np.degrees(loads.study.hook.lateral))
         study = used if handoff is None else float(np.degrees(handoff.loads_angle))
@@ -221,7 +222,8 @@ def _tension(results):
         if np.any(np.isfinite(ratio)):
             k = int(np.nanargmax(ratio))
             candidates.append((float(ratio[k]), f"lateral study, Summary 'largest cable tension "
-                                                f"factor T/(m g)' (case {k + 1} on sheet Runs)"))
+                                                f"factor T/(m g)' (case {st.nominal_case(k)} "
+                                                f"on sheet Runs, run {k + 1})"))
     if results.multibody is not None:
         frame = results.multibody.to_frame()  # without a trim, the runs have no metrics
         values = pd.to_numeric(frame.get("tension / weight max [-]", pd.Series(dtype=float)),
