@@ -127,10 +127,15 @@ class _Columns:
         page width, or in blocks of columns repeating the first (the row's id) when that
         fit is below the least print scale
         (:func:`~slingloads.io.common.excel_print.column_pages`)."""
-        # a column stored w characters wide shows 7 w px in Excel (_set_widths) and 7 w + 5
-        # px in LibreOffice (88.8 px for w = 12, measured on its PDF export): the wider
-        return column_pages([_px(self.widths.get(j, 8.43))
-                             for j in range(max(self.widths, default=-1) + 1)], orientation)
+        # a column stored w characters wide shows 7 w px in Excel (_set_widths), which the
+        # fit to the page width is judged by (the printing application scales it), and
+        # 7 w + 5 px in LibreOffice (88.8 px for w = 12, measured on its PDF export): blocks
+        # of columns are cut at the wider, so that no block spills a column onto a page
+        stored = [self.widths.get(j, 8.43) for j in range(max(self.widths, default=-1) + 1)]
+        fit, breaks = column_pages([_DIGIT_PIXELS * w for w in stored], orientation)
+        if not breaks:
+            return fit, breaks
+        return column_pages([_px(w) for w in stored], orientation)
 
 
 def _number_formats(columns, number_format):
@@ -689,7 +694,7 @@ def _page_plan(needs, page, fit=1.0):
 _NARROW_COLUMNS = 4
 #: Widths the text columns of a sheet of several tables may wrap at, widest first, so that
 #: its wide tables print whole (:func:`_narrow`). [characters]
-_TEXT_WIDTHS = (MAX_TEXT_WIDTH, 36, 32, 28, 24, 20)
+_TEXT_WIDTHS = (MAX_TEXT_WIDTH, 36, 32, 28, 24)
 
 
 def _narrow(sections, number_format=None):
