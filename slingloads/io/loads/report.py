@@ -1010,6 +1010,24 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     }
 
 
+_NUMBER = re.compile(r"(?<![\w.+-])-?\d+(?:\.\d+)?(?![\w.])")
+
+
+def _angle_text(value):
+    """An angle of the hand-off table [deg] at the report's 0.1 deg: a number rounded, every
+    number of a range written the same (``"theta -28.01 to -12.05"`` -> ``"theta -28.0 to
+    -12.1"``); a text without numbers unchanged.
+
+    Examples
+    --------
+    >>> _angle_text("hand points, and -32.42 to 0 (DYN-* points)")
+    'hand points, and -32.4 to 0.0 (DYN-* points)'
+    """
+    if isinstance(value, str):
+        return _NUMBER.sub(lambda m: f"{float(m.group(0)):.1f}", value)
+    return value
+
+
 def dynamics_sections(result, comparison, units="SI"):
     """The *Dynamics* sheet: what the campaign's dynamics changed in the cases, and the
     largest loads of the hand-entered cases against those of the cases from the dynamics."""
@@ -1025,6 +1043,11 @@ def dynamics_sections(result, comparison, units="SI"):
                 values = pd.to_numeric(table.loc[rows, column], errors="coerce")
                 table.loc[rows, column] = in_report_units(values.to_numpy(float), kind, units)
             table.loc[rows, "unit"] = label
+    columns = [c for c in ("hand-entered", "dynamics reached", "with margin",
+                           "used in the loads", "note") if c in table.columns]
+    degrees = table["unit"] == "deg"
+    for column in columns:  # an angle to 0.1 deg, in its ranges as in its numbers
+        table.loc[degrees, column] = table.loc[degrees, column].map(_angle_text)
     sections = [Section("Hand-entered against the dynamics (the campaign's hand-off)", table,
                         note=result.study.dynamics.note if result.study.dynamics else "")]
     loads = loads_comparison(result)
