@@ -1377,6 +1377,16 @@ class LateralStudy:
         which run ``index`` (0-based, of :attr:`pendulums`) is a variant over the stated
         ranges: the same body, nominal rope length and carrier motion.
 
+        Parameters
+        ----------
+        index : int
+            A run of the sweep, 0-based.
+
+        Returns
+        -------
+        int
+            Its nominal case, 1-based (the ``case`` of :meth:`case_frame`).
+
         Examples
         --------
         A nominal run is its own case: ``study.nominal_case(j) == j + 1`` where
