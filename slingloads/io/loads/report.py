@@ -14,9 +14,9 @@ The report is a :class:`~slingloads.io.common.report_writer.ReportKind` (:func:`
   cut stations, hardpoints), *LoadCases* (with each case's cable angle and inside-cone
   flag), *Envelope* (LIMIT max / min of each component at each station with its critical
   case), *Correlated* (LIMIT envelope with the correlated loads of the
-  critical case), *Exceedance* and *ExceedanceDetail* (ratio to the previous design
-  envelope, red above 1, interpolated previous values marked), *Ultimate* (ULTIMATE =
-  factor x LIMIT envelope), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
+  critical case), *Exceedance* and, with a previous envelope, *ExceedanceDetail* (ratio to
+  the previous design envelope, red above 1, interpolated previous values marked), *Ultimate*
+  (ULTIMATE = factor x LIMIT envelope), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
   system with the unit beside every value, each sheet and title saying LIMIT or ULTIMATE;
 * ``<stem>-sfbm.xlsx`` when asked for (Study 'SFBM workbook' = yes): the SFBM of every case
   at every station in report units (a data workbook, not for print, split as ``SFBM_1``,
@@ -971,8 +971,8 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
                     "envelope source')."))]
         detail = [Section("LIMIT loads over the previous design envelope: exceedance at every "
                           "station and component", comparison_report_table(result, units))]
-    else:
-        exceedance = detail = "no previous envelope given"
+    else:  # one page says so (the Summary too); the detail sheet would repeat it
+        exceedance, detail = "no previous envelope given", None
     ultimate = [
         Section(f"Envelope of ULTIMATE loads = {factor:g} x LIMIT loads",
                 note=f"Ultimate factor of safety {factor:g} (CS 29.303). Only this sheet holds "
@@ -997,7 +997,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         "aerodynamic point x parachute, cable angles, description", cases),
         Section(f"LIMIT load factors of the load cases ({len(cases)}), angular accelerations "
                 "and closure residuals", factors, sheet="LoadFactors")]
-    return {
+    sheets = {
         "Summary": summary,
         "Inputs": inputs,
         "LoadCases": cases_sheet,
@@ -1008,6 +1008,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         "Ultimate": ultimate,
         "Hulls": hulls,
     }
+    return {name: content for name, content in sheets.items() if content is not None}
 
 
 _NUMBER = re.compile(r"(?<![\w.+-])-?\d+(?:\.\d+)?(?![\w.])")
