@@ -377,8 +377,8 @@ def processes_left(pgid):
 def report_table(path, sheet, title):
     """(the note under its title, the table) of the section whose title starts with ``title``
     on a report's ``sheet``; a table too wide for the page is printed in blocks of columns
-    titled ``<title>, part k of n``, each with the first column repeated: the parts are
-    joined again on that column."""
+    titled ``<title>, part k of n``, each with the first column (and a ``unit`` column)
+    repeated: the parts are joined again on the first column."""
     import numpy as np
     import pandas as pd
 
@@ -401,7 +401,11 @@ def report_table(path, sheet, title):
     for more in blocks[1:]:
         key = joined.columns[0]
         assert list(more[key]) == list(joined[key]), (title, key)
-        joined = joined.merge(more, on=key, how="left", validate="one_to_one")
+        repeated = [c for c in more.columns if c != key and c in joined.columns]
+        for c in repeated:
+            assert list(more[c].astype(str)) == list(joined[c].astype(str)), (title, c)
+        joined = joined.merge(more.drop(columns=repeated), on=key, how="left",
+                              validate="one_to_one")
     return note, joined
 
 

@@ -9,6 +9,7 @@ sheet and cell in the message, and that nothing is written (no output folder, no
 
 from __future__ import annotations
 
+import re
 import time
 
 import numpy as np
@@ -329,6 +330,14 @@ def test_run_chains_the_campaign_then_the_loads(tiny, tmp_path):
     assert rows.loc["hook cone, fore-and-aft angle from the vertical", "used in the loads"] == 30
     dynamics = pd.read_excel(out / "tiny-loads.xlsx", sheet_name="Dynamics", header=None)
     assert "hand-entered cases" in set(dynamics[1])
+    # the hand-off table prints as one block (its notes wrap narrower), not in column parts
+    assert not dynamics[0].astype(str).str.contains(", part 1 of").any()
+    # an angle at one precision (0.1 deg) in its ranges as in its numbers
+    angles = rows[rows["unit"] == "deg"].drop(columns="unit")
+    texts = [v for v in angles.to_numpy().ravel() if isinstance(v, str)]
+    decimals = {len(n.split(".")[1]) if "." in n else 0
+                for t in texts for n in re.findall(r"(?<![\w.+-])-?\d+(?:\.\d+)?(?![\w.])", t)}
+    assert decimals <= {1}, (decimals, texts)
     assert (out / "tiny-campaign.xlsx").exists()
 
 

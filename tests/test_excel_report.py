@@ -305,6 +305,8 @@ def test_exceedance_sheet(result, reports, tmp_path):
     write_loads_outputs(bare, tmp_path, "bare", hull_pairs=(), plots=False)
     rows = _sheet_rows(tmp_path / "bare-loads.xlsx", "Exceedance")
     assert rows[0][0] == "no previous envelope given"
+    # said once: no ExceedanceDetail page repeating it
+    assert "ExceedanceDetail" not in load_workbook(tmp_path / "bare-loads.xlsx").sheetnames
 
 
 def test_atomic_failure_keeps_earlier_report(result, tmp_path, monkeypatch):

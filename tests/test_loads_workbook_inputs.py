@@ -230,10 +230,14 @@ def test_report_states_attitude_and_towed_cables(example_loads_report, example_l
         np.degrees(result.attitude.pitch), rel=1e-12)
     note, towed = summary_block(path, "Towed-flight equilibrium cases")
     api = result.towed_table()
-    assert list(towed["case"]) == list(api["case"]) and len(api) == 1  # no trim without chute
-    np.testing.assert_allclose(towed["cable angle from vertical [deg]"].astype(float),
-                               api["cable angle from vertical [deg]"], rtol=1e-12)
-    assert set(towed["inside hook cone"]) == {"yes"}
+    # one row per quantity, one column per towed case (a narrow block beside the others)
+    assert list(towed.columns[2:]) == list(api["case"]) and len(api) == 1  # none w/o chute
+    towed = towed.set_index("quantity")
+    assert towed.loc["cable angle from vertical", "unit"] == "deg"
+    np.testing.assert_allclose(
+        towed.loc["cable angle from vertical", list(api["case"])].astype(float),
+        api["cable angle from vertical [deg]"], rtol=1e-12)
+    assert set(towed.loc["inside hook cone", list(api["case"])]) == {"yes"}
     assert "inside the hook cone" in note
     raw = pd.read_excel(path, sheet_name="LoadCases", header=None)
     head = int(np.nonzero(raw.isin(["inside hook cone"]).any(axis=1).to_numpy())[0][0])

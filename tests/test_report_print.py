@@ -294,12 +294,13 @@ def _pages(pdf):
 
 def test_libreoffice_page_counts(printed):
     """Converted to A4 PDF by LibreOffice headless, the example's loads report prints in at
-    most 40 pages (its US twin too), the lateral report in at most 17 and the
+    most 37 pages (its US twin too), the lateral report in at most 17 and the
     parachute-sizing report in at most 27 (178, 79 and 108 pages before the print setup; 39,
     15 and 19 before the sheets of several tables were paginated at a chosen scale; 30, 14
     and 17 before no sheet printed below 70 %, 38, 16 and 20 after; the sizing 26 with its
-    sweep of 11 areas, 6 before)."""
-    limits = {"loads": 40, "us-loads": 40, "lateral": 17, "chute": 27}
+    sweep of 11 areas, 6 before; the loads 35 once its column blocks were measured as
+    LibreOffice prints them and its load factors fitted a portrait page)."""
+    limits = {"loads": 37, "us-loads": 37, "lateral": 17, "chute": 27}
     for report, limit in limits.items():
         assert 2 <= _pages(printed[report]) <= limit, (report, _pages(printed[report]))
 

@@ -8,7 +8,11 @@ The reference is the print setup as the file stores it (ECMA-376 ``pageSetup`` s
 fit to page, ``colBreaks``, the ``Print_Titles`` columns, the page margins) and Excel's
 column width rule (a stored width ``w``, its 5 px padding included, shows ``7 w`` px in
 Calibri 11, whose digit is 7 px wide: ECMA-376 part 1, 18.3.1.13), read with
-openpyxl, and A4 paper (8.27 x 11.69 in at 96 px per inch); not the writer's own plan."""
+openpyxl, and A4 paper (8.27 x 11.69 in at 96 px per inch); not the writer's own plan. A
+sheet printed in blocks of columns has each block within the page under LibreOffice's rule
+too, which shows a stored width ``w`` as ``7 w + 5`` px (88.8 px for ``w = 12``, measured on
+its PDF export of A4 pages): the wider of the two (a block that fits Excel's rule alone
+spills a column onto a page of its own there)."""
 
 from __future__ import annotations
 
@@ -18,11 +22,14 @@ from hostile import column_widths
 #: The least print scale of a sheet. [-]
 FLOOR = 0.70
 A4 = (8.27, 11.69)  # [in]
+#: What LibreOffice adds to a column's ``7 w`` px (a stored width of 12 prints 88.8 px). [px]
+LIBREOFFICE_PADDING = 5.0
 
 
-def _printed(ws):
-    """(scale, widest printed block [px at 100 %], printable width [px]) of a sheet."""
-    widths = [7 * w for w in column_widths(ws)]
+def _printed(ws, padding=0.0):
+    """(scale, widest printed block [px at 100 %], printable width [px]) of a sheet, a
+    stored width ``w`` shown ``7 w + padding`` px wide."""
+    widths = [7 * w + padding for w in column_widths(ws)]
     landscape = ws.page_setup.orientation == "landscape"
     paper_w, paper_h = A4[::-1] if landscape else A4
     m = ws.page_margins
@@ -65,6 +72,11 @@ def _faults(folder):
         blocks += bool(ws.col_breaks.brk)
         if scale < FLOOR - 0.005 or widest * scale > 1.01 * width:
             faults.append((book, ws.title, round(scale, 3), round(widest * scale), round(width)))
+        if ws.col_breaks.brk:  # LibreOffice's widths (a fitted sheet is fitted by it)
+            scale, widest, width = _printed(ws, padding=LIBREOFFICE_PADDING)
+            if widest * scale > 1.01 * width:
+                faults.append((book, ws.title, "LibreOffice", round(scale, 3),
+                               round(widest * scale), round(width)))
     return faults, blocks
 
 

@@ -133,3 +133,111 @@ def test_loadcases_say_where_each_case_comes_from(example_reports, example_resul
                     else "CS-29.865 direction")
         assert source == expected or source == "dynamics", (case, hook, source)
     assert {"towed equilibrium", "CS-29.865 direction"} <= set(cases["source"])
+
+
+# ----------------------------------------------------------------------------- precision
+_NUMBER = re.compile(r"(?<![\w.])-?\d[\d,]*(?:\.\d+)?(?![\w.]*\d)")
+
+
+def _decimals(number_format):
+    """Decimals of an Excel number format (``0.000`` -> 3, ``#,##0`` -> 0), or None."""
+    match = re.search(r"0(?:\.(0+))?(?:E|$|;)", number_format or "")
+    return None if match is None else len(match.group(1) or "")
+
+
+def _quoted_at_their_precision(book, sheet="Findings"):
+    """(row, quoted, as the value cell shows it) of every number in an answer that states
+    the row's value at another precision than the value cell's number format."""
+    ws = openpyxl.load_workbook(book)[sheet]
+    head = [c.value for c in ws[1]]
+    answer, value = head.index("answer"), head.index("value")
+    faults = []
+    for row in ws.iter_rows(min_row=2):
+        v, text = row[value].value, row[answer].value
+        places = _decimals(row[value].number_format)
+        if not isinstance(v, (int, float)) or not isinstance(text, str) or places is None:
+            continue
+        shown = f"{v:.{places}f}"
+        for quoted in _NUMBER.findall(text):
+            x = float(quoted.replace(",", ""))
+            if abs(x - v) <= 0.006 * abs(v) + 0.5 * 10 ** -places and \
+                    quoted.replace(",", "") != shown:
+                faults.append((row[0].value, quoted, shown))
+    return faults
+
+
+def test_findings_quote_each_value_at_its_cell_precision(example_reports, us_twin_reports):
+    """On the Findings sheet of every report of both examples, a number of an answer that
+    states the row's value is written as the value cell shows it (its Excel number format:
+    a factor [-] to 0.001, an angle to 0.1 deg), not at another precision (the peak tension
+    "2.16 <= Nz 2.5" beside 2.163 and 2.500, the exceedance ratio 7.1 and 7.10 beside
+    7.097)."""
+    for _, folder in (example_reports, us_twin_reports):
+        for book in _workbooks(folder):
+            if "Findings" in openpyxl.load_workbook(book, read_only=True).sheetnames:
+                assert not _quoted_at_their_precision(book), (book.name,
+                                                              _quoted_at_their_precision(book))
+
+
+def test_loads_summary_states_the_exceedance_ratio_as_its_findings(example_reports):
+    """The loads Summary's largest exceedance ratio is the Findings sheet's value, written
+    at the same precision (the ratio's 0.000)."""
+    _, folder = example_reports
+    book = next(folder.glob("*-loads.xlsx"))
+    findings = pd.read_excel(book, sheet_name="Findings")
+    row = findings[findings["question"].str.startswith("loads exceedances")].iloc[0]
+    summary = " ".join(str(v) for v in pd.read_excel(book, sheet_name="Summary",
+                                                     header=None)[0].dropna())
+    assert f"largest finite ratio {float(row['value']):.3f}" in summary
+
+
+def _agrees(quoted, value):
+    """A number quoted in a sentence agrees with ``value`` when ``value`` rounds to it at
+    the quoted number's own last digit."""
+    text = quoted.replace(",", "")
+    places = len(text.split(".")[1]) if "." in text else 0
+    return abs(float(text) - value) <= 0.5 * 10 ** -places * (1 + 1e-9)
+
+
+def test_loads_summary_quotes_the_study_area_as_its_decision_table(example_reports,
+                                                                   us_twin_reports):
+    """The loads Summary's consistency note quotes the Study 'parachute area' as the
+    parachute decision table on the same sheet gives it (in US units 16.04 ft^2 beside
+    16.00 ft^2 before: the SI text rounded to 1.49 m^2, then converted)."""
+    for _, folder in (example_reports, us_twin_reports):
+        book = next(folder.glob("*-loads.xlsx"))
+        raw = pd.read_excel(book, sheet_name="Summary", header=None)
+        cells = [str(v) for v in raw.to_numpy().ravel() if isinstance(v, str)]
+        text = " ".join(cells)
+        quoted = re.search(r"Study 'parachute area' \(([\d.,]+) (?:m|ft)\^2\)", text)
+        row = raw[raw[0].astype(str).str.startswith("Study 'parachute area' (loads)")]
+        if quoted is None or row.empty:
+            continue
+        assert _agrees(quoted.group(1), float(row.iloc[0, 1])), (book.name, quoted.group(0),
+                                                                 row.iloc[0, 1])
+
+
+# ----------------------------------------------------------------------------- lateral
+def test_lateral_critical_case_is_the_one_the_runs_sheet_lists(example_reports,
+                                                               us_twin_reports):
+    """The case the lateral Summary (and the Findings sheet) names as producing the largest
+    load angle is a row of the Runs results, whose largest angle over the ranges is the
+    Summary's (before, the Summary named a variant run, 552 of 567, while the Runs sheet
+    lists the 21 nominal cases with their maxima over the ranges)."""
+    from hostile import report_table
+
+    for _, folder in (example_reports, us_twin_reports):
+        book = next(folder.glob("*-lateral.xlsx"))
+        _, angle = report_table(book, "Summary", "Design angle of the hook load")
+        items = angle.set_index("item")
+        case = int(items.loc["case producing it", "value"])
+        peak = float(items.loc["largest load angle |theta1 - theta2| over the stated ranges",
+                               "value"])
+        results = pd.read_excel(book, sheet_name="Runs-ResultsEveryCase")
+        row = results[results["case"] == case]
+        assert len(row) == 1, (book.name, case, list(results["case"]))
+        assert float(row["max |theta1 - theta2| over the ranges [deg]"].iloc[0]) == \
+            pytest.approx(peak, abs=0.05)
+        findings = pd.read_excel(book, sheet_name="Findings")
+        hook = findings[findings["question"].str.startswith("hook design angle")].iloc[0]
+        assert f"case {case} on sheet Runs" in hook["source"], hook["source"]

@@ -1372,6 +1372,35 @@ class LateralStudy:
         frame["max lateral cable force / carrier weight [-]"] = self.carrier_force_ratio
         return frame
 
+    def nominal_case(self, index):
+        """The case number (1-based, as :meth:`case_frame` lists it) of the nominal case of
+        which run ``index`` (0-based, of :attr:`pendulums`) is a variant over the stated
+        ranges: the same body, nominal rope length and carrier motion.
+
+        Parameters
+        ----------
+        index : int
+            A run of the sweep, 0-based.
+
+        Returns
+        -------
+        int
+            Its nominal case, 1-based (the ``case`` of :meth:`case_frame`).
+
+        Examples
+        --------
+        A nominal run is its own case: ``study.nominal_case(j) == j + 1`` where
+        ``study.nominal[j]``.
+        """
+        per_pendulum = len(self.pendulums) // len({id(p) for p in self.pendulums})
+
+        def key(j):
+            return (self.pendulums[j].body.name, float(self.nominal_rope[j]),
+                    j % per_pendulum)
+
+        target = key(int(index))
+        return next(int(j) + 1 for j in np.flatnonzero(self.nominal) if key(j) == target)
+
     def case_frame(self):
         """One row per nominal case (body x rope length x motion): its inputs and metrics
         with the nominal roll inertia, CG and rope, and beside them the largest load angle

@@ -69,15 +69,15 @@ def sideslip_check(loads, chute):
     if peak <= limit * (1 + 1e-12):
         status = "ok"
         note = (f"the gusts of the parachute sizing at the Study 'parachute area' "
-                f"({area:.3g} m^2) stay within the envelope's sideslip range "
-                f"[{lo_deg:.3g}, {hi_deg:.3g}] deg")
+                f"({area:.3f} m^2) stay within the envelope's sideslip range "
+                f"[{lo_deg:.1f}, {hi_deg:.1f}] deg")
     else:
         status = "WARNING"
-        note = (f"the parachute sizing's {gust} gust drives the sideslip to {peak_deg:.3g} deg "
-                f"at the Study 'parachute area' ({area:.3g} m^2), outside the loads' "
-                f"aerodynamic envelope [{lo_deg:.3g}, {hi_deg:.3g}] deg: the aerodynamic and "
+        note = (f"the parachute sizing's {gust} gust drives the sideslip to {peak_deg:.1f} deg "
+                f"at the Study 'parachute area' ({area:.3f} m^2), outside the loads' "
+                f"aerodynamic envelope [{lo_deg:.1f}, {hi_deg:.1f}] deg: the aerodynamic and "
                 f"parachute loads of that flight are not enveloped. Widen the AeroEnvelope to "
-                f"+-{peak_deg:.3g} deg or enlarge the parachute.")
+                f"+-{peak_deg:.1f} deg or enlarge the parachute.")
     return {"check": "parachute sizing peak sideslip within the loads' aerodynamic envelope",
             "value": float(peak_deg), "limit": float(np.degrees(limit)), "unit": "deg",
             "status": status, "note": note}

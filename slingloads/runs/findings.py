@@ -129,8 +129,9 @@ def _hook_angle(results):
         st = lateral.study
         k = int(st.critical_index)
         where = (f"lateral study, Summary 'recommended design angle' (margin {st.margin:g} x "
-                 f"largest load angle {np.degrees(st.max_load_angle):.4g} deg, case {k + 1} "
-                 f"on sheet Runs, motion {lateral.motion_id(k)})")
+                 f"largest load angle {np.degrees(st.max_load_angle):.4g} deg, case "
+                 f"{st.nominal_case(k)} on sheet Runs (run {k + 1}), motion "
+                 f"{lateral.motion_id(k)})")
     if loads is not None:
         used = float(np.degrees(loads.study.hook.lateral))
         study = used if handoff is None else float(np.degrees(handoff.loads_angle))
@@ -218,7 +219,8 @@ def _tension(results):
         if np.any(np.isfinite(ratio)):
             k = int(np.nanargmax(ratio))
             candidates.append((float(ratio[k]), f"lateral study, Summary 'largest cable tension "
-                                                f"factor T/(m g)' (case {k + 1} on sheet Runs)"))
+                                                f"factor T/(m g)' (case {st.nominal_case(k)} "
+                                                f"on sheet Runs, run {k + 1})"))
     if results.multibody is not None:
         frame = results.multibody.to_frame()  # without a trim, the runs have no metrics
         values = pd.to_numeric(frame.get("tension / weight max [-]", pd.Series(dtype=float)),
@@ -239,13 +241,14 @@ def _tension(results):
         return Finding(TENSION, NOT_RUN, unit="-", reference=nz,
                        source="lateral study, multibody and campaign")
     value, source = max(candidates, key=lambda c: c[0])
-    others = ", ".join(f"{v:.3g} ({s.split(',')[0]})" for v, s in candidates if s != source)
+    # a factor [-] at the precision of its value cell (0.000), in the text as in the cells
+    others = ", ".join(f"{v:.3f} ({s.split(',')[0]})" for v, s in candidates if s != source)
     if not np.isfinite(nz):
-        answer = f"{value:.3g} (no Nz to compare with: loads not run)"
+        answer = f"{value:.3f} (no Nz to compare with: loads not run)"
     elif value <= nz:
-        answer = f"{value:.3g} <= Nz {nz:g}: Nz x weight covers the peak cable tension"
+        answer = f"{value:.3f} <= Nz {nz:.3f}: Nz x weight covers the peak cable tension"
     else:
-        answer = f"{value:.3g} > Nz {nz:g}: the peak cable tension EXCEEDS Nz x weight"
+        answer = f"{value:.3f} > Nz {nz:.3f}: the peak cable tension EXCEEDS Nz x weight"
     if others:
         source += f"; the largest, against {others}"
     return Finding(TENSION, answer, value, "-", nz, source)
@@ -272,11 +275,11 @@ def _exceedance(results):
         comparison["exceedance ratio"], errors="coerce"))))
     if len(over):
         answer = (f"{len(over)} of {len(comparison)} station x component entries EXCEED "
-                  f"(largest finite ratio {worst:.3g}, {at})")
+                  f"(largest finite ratio {worst:.3f}, {at})")
         if unbounded:
             answer += f"; {unbounded} where the previous envelope is 0"
     else:
-        answer = f"none of {len(comparison)} entries exceeds (largest ratio {worst:.3g}, {at})"
+        answer = f"none of {len(comparison)} entries exceeds (largest ratio {worst:.3f}, {at})"
     return Finding(EXCEEDANCE, answer, worst, "-", 1.0,
                    "loads, sheets Exceedance and ExceedanceDetail")
 

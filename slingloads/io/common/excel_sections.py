@@ -17,6 +17,7 @@ import re
 
 from slingloads.io.common.excel_cells import (
     _TITLE_STYLE,
+    MAX_TEXT_WIDTH,
     ROW_PIXELS,
     _px,
     _SheetWriter,
@@ -214,32 +215,52 @@ def _page_plan(needs, page, fit=1.0):
 
 #: Columns of a table that is never split into column blocks (item, value, unit, note).
 _NARROW_COLUMNS = 4
+#: Widths the text columns of a sheet of several tables may wrap at, widest first, so that
+#: its wide tables print whole (:func:`_narrow`). [characters]
+_TEXT_WIDTHS = (MAX_TEXT_WIDTH, 36, 32, 28, 24)
 
 
 def _narrow(sections, number_format=None):
-    """The sections of a sheet of several tables with its wide tables split into column
-    blocks one under another (a heading, then ``part k of n``, each block with the table's
-    first column, the row's id), so that the sheet (whose columns are as wide as the widest
-    cell of any of its tables at that position) prints on a landscape page at no less than
+    """The sections of a sheet of several tables, and the width its text columns wrap at,
+    so that the sheet (whose columns are as wide as the widest cell of any of its tables at
+    that position) prints on a landscape page at no less than
     :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`: one narrow sheet, not a sheet
-    shrunk or cut across pages. A sheet of one table is left as it is (it prints in blocks of
-    columns, its cells one table that a program reads); so is a sheet that fits."""
+    shrunk or cut across pages.
+
+    The text columns (notes, descriptions) wrap at the widest of :data:`_TEXT_WIDTHS` at
+    which every table fits beside the others (a row grows taller, a table stays one block
+    that a checker reads at once); only when none does are the wide tables split into column
+    blocks one under another (a heading, then ``part k of n``, each block with the table's
+    first column, the row's id, and its ``unit`` column, which gives the row's number
+    format). A sheet of one table is left as it is (it prints in blocks of columns, its
+    cells one table that a program reads); so is a sheet that fits.
+
+    Returns
+    -------
+    sections : list of Section
+    text_width : int
+        [characters]
+    """
     if sum(s.table is not None for s in sections) < 2:
-        return sections
+        return sections, MAX_TEXT_WIDTH
     room = 0.95 * PRINTABLE["landscape"][0] / MIN_PRINT_SCALE  # 5 %: the notes' widths
 
-    def widths_of(table):
+    def widths_of(table, text_width=MAX_TEXT_WIDTH):
         own = _column_plan([table], formats_of=lambda f: _number_formats(f.columns,
-                                                                          number_format))
+                                                                          number_format),
+                           text_width=text_width)
         return [_px(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
 
     def union(rows):
         return [max((w[k] for w in rows if k < len(w)), default=0.0)
                 for k in range(max((len(w) for w in rows), default=0))]
 
+    for text_width in _TEXT_WIDTHS:
+        tables = {k: widths_of(s.table, text_width)
+                  for k, s in enumerate(sections) if s.table is not None}
+        if sum(union(list(tables.values()))) <= room:
+            return sections, text_width
     tables = {k: widths_of(s.table) for k, s in enumerate(sections) if s.table is not None}
-    if sum(union(list(tables.values()))) <= room:
-        return sections
     # the narrow tables (item, value, unit, note) keep their columns; each wide table is cut
     # in blocks that fit beside the columns of every other block (three passes settle it)
     narrow = [w for w in tables.values() if len(w) <= _NARROW_COLUMNS]
@@ -271,10 +292,12 @@ def _narrow(sections, number_format=None):
             out.append(s)
             continue
         out.append(Section(s.title, note=s.note, sheet=s.sheet))
+        names = list(map(str, s.table.columns))
+        unit = [names.index("unit")] if "unit" in names[1:] else []
         out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}",
-                        s.table.iloc[:, [0, *block]])
+                        s.table.iloc[:, [0, *unit, *(j for j in block if j not in unit)]])
                 for m, block in enumerate(plan[k])]
-    return out
+    return out, MAX_TEXT_WIDTH
 
 
 def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None,
@@ -308,11 +331,12 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
         ``[name]``.
     """
     ws = wb.add_worksheet(check_sheet_name(name))
-    sections = _narrow(sections, number_format)
+    sections, text_width = _narrow(sections, number_format)
     tables = [s.table for s in sections if s.table is not None]
     _check_highlight(tables, highlight, name)
     columns = _column_plan(tables, [s.note for s in sections],
-                           formats_of=lambda f: _number_formats(f.columns, number_format))
+                           formats_of=lambda f: _number_formats(f.columns, number_format),
+                           text_width=text_width)
     _set_widths(ws, columns)
     blocks = [(s.title, _note_lines(report_text(s.note, wb.units), columns) if s.note else [],
                s.table)
@@ -369,7 +393,8 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
             writer.append([line])
         if table is not None:
             formats = _number_formats(table.columns, number_format)
-            own = _column_plan([table], formats_of=lambda f, x=formats: x)
+            own = _column_plan([table], formats_of=lambda f, x=formats: x,
+                               text_width=text_width)
             # the sheet's widths, this table's own alignment: a number sits under its header
             _write_table(writer, table, formats, _Columns(columns.widths, own.wrapped),
                          highlight)

@@ -123,9 +123,15 @@ class _Columns:
         page width, or in blocks of columns repeating the first (the row's id) when that
         fit is below the least print scale
         (:func:`~slingloads.io.common.excel_print.column_pages`)."""
-        # a column w characters wide shows 7 w px (_set_widths)
-        return column_pages([_DIGIT_PIXELS * self.widths.get(j, 8.43)
-                             for j in range(max(self.widths, default=-1) + 1)], orientation)
+        # a column stored w characters wide shows 7 w px in Excel (_set_widths), which the
+        # fit to the page width is judged by (the printing application scales it), and
+        # 7 w + 5 px in LibreOffice (88.8 px for w = 12, measured on its PDF export): blocks
+        # of columns are cut at the wider, so that no block spills a column onto a page
+        stored = [self.widths.get(j, 8.43) for j in range(max(self.widths, default=-1) + 1)]
+        fit, breaks = column_pages([_DIGIT_PIXELS * w for w in stored], orientation)
+        if not breaks:
+            return fit, breaks
+        return column_pages([_px(w) for w in stored], orientation)
 
 
 def _number_formats(columns, number_format):
@@ -202,8 +208,12 @@ def _number_width(series, number_format):
     return len(f"{-big:{sep}.{decimals}f}")
 
 
-def _column_plan(tables, notes=(), formats_of=None):
-    """Widths of the columns of every table of a sheet, and which columns wrap."""
+def _column_plan(tables, notes=(), formats_of=None, text_width=MAX_TEXT_WIDTH):
+    """Widths of the columns of every table of a sheet, and which columns wrap: a column
+    wider than :data:`~slingloads.io.common.excel_cells.MAX_TEXT_WIDTH` characters wraps at
+    that width, a column of text at ``text_width`` when that is narrower (a sheet of several
+    tables whose text columns wrap narrower so that its wide tables print whole,
+    :func:`_narrow`)."""
     widths, wrapped = {}, set()
     for frame in tables:
         formats = formats_of(frame) if formats_of else [None] * frame.shape[1]
@@ -223,10 +233,12 @@ def _column_plan(tables, notes=(), formats_of=None):
             text = not (pd.api.types.is_numeric_dtype(series.dtype) or explained
                         or pd.api.types.is_bool_dtype(series.dtype))
             width = max(data + text, int(1.1 * words) + 1, min(len(str(col)), 10), 4) + 2
-            if width > MAX_TEXT_WIDTH:
+            limit = min(text_width, MAX_TEXT_WIDTH) if text else MAX_TEXT_WIDTH
+            limit = max(limit, int(1.1 * words) + 3)  # never narrower than a header word
+            if width > limit:
                 wrapped.add(j)
-                width = MAX_TEXT_WIDTH
-            widths[j] = max(widths.get(j, 0), min(width, MAX_TEXT_WIDTH))
+                width = limit
+            widths[j] = max(widths.get(j, 0), min(width, limit))
     if not widths and notes:
         widths[0] = MAX_TEXT_WIDTH * 2
     return _Columns(widths, wrapped)

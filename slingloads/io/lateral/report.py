@@ -146,7 +146,9 @@ def summary_tables(result, units="SI"):
         ("largest load angle |theta1 - theta2| over the stated ranges",
          float(np.degrees(st.max_load_angle)), "deg",
          "angle of the cable force at the hub from the mast; the recommendation rests on it"),
-        ("case producing it", int(case["case"]), "-", "see the Runs sheet"),
+        ("case producing it", st.nominal_case(i), "-",
+         f"sheet Runs, at the factors below (run {int(case['case'])} of the "
+         f"{len(st.pendulums)})"),
         ("  roll inertia", float(case["roll inertia [kg m^2]"]), "inertia",
          f"factor {case['roll inertia factor [-]']:.3g}"),
         ("  CG below hub", float(case["CG below hub [m]"]), "length",

@@ -15,9 +15,9 @@ Python), all at once or not at all
   cut stations, hardpoints), *LoadCases* (with each case's cable angle and inside-cone
   flag), *Envelope* (LIMIT max / min of each component at each station with its critical
   case), *Correlated* (LIMIT envelope with the correlated loads of the
-  critical case), *Exceedance* and *ExceedanceDetail* (ratio to the previous design
-  envelope, red above 1, interpolated previous values marked), *Ultimate* (ULTIMATE =
-  factor x LIMIT envelope), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
+  critical case), *Exceedance* and, with a previous envelope, *ExceedanceDetail* (ratio to
+  the previous design envelope, red above 1, interpolated previous values marked), *Ultimate*
+  (ULTIMATE = factor x LIMIT envelope), *Hulls* (vertex tables) and *Plots*; all in the chosen unit
   system with the unit beside every value, each sheet and title saying LIMIT or ULTIMATE;
 * ``<stem>-sfbm.xlsx`` when asked for (Study 'SFBM workbook' = yes): the SFBM of every case
   at every station in report units (a data workbook, not for print, split as ``SFBM_1``,

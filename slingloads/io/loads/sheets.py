@@ -9,6 +9,8 @@ the report's order, made of the tables of :mod:`slingloads.io.loads.tables`.
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pandas as pd
 
@@ -45,6 +47,7 @@ from slingloads.io.loads.tables import (
     study_table,
     towed_note,
     towed_outside,
+    towed_summary_table,
 )
 
 #: Regulatory hook angle of CS 29.865(a): the off-axis hook loads are inclined 30 deg from
@@ -139,7 +142,7 @@ def exceedance_findings(result, source=""):
     interpolated = sum(s == "INTERPOLATED" for s in status)
     lines = [f"{len(over)} of {len(comparison)} station x component entries exceed the "
              f"previous design envelope (largest finite ratio "
-             f"{np.nanmax(worst.to_numpy(float)) if worst.notna().any() else 0:.2f}); "
+             f"{np.nanmax(worst.to_numpy(float)) if worst.notna().any() else 0:.3f}); "
              f"components: {', '.join(sorted(set(over['component']))) or 'none'}. Sheets "
              "Exceedance and ExceedanceDetail."]
     if interpolated:
@@ -214,7 +217,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         Section("Hook-load directions (CS-29.865)", hook_direction_table(result),
                 note=hook_direction_note(result)),
         Section("Towed-flight equilibrium cases: trimmed attitude and cable angles",
-                result.towed_table() if (result.cases["hook"] == "TOW").any() else None,
+                towed_summary_table(result),
                 note=towed_note(result)),
         Section("Closure check (free-free equilibrium)", closure),
     ]
@@ -265,8 +268,8 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
                     "envelope source')."))]
         detail = [Section("LIMIT loads over the previous design envelope: exceedance at every "
                           "station and component", comparison_report_table(result, units))]
-    else:
-        exceedance = detail = "no previous envelope given"
+    else:  # one page says so (the Summary too); the detail sheet would repeat it
+        exceedance, detail = "no previous envelope given", None
     ultimate = [
         Section(f"Envelope of ULTIMATE loads = {factor:g} x LIMIT loads",
                 note=f"Ultimate factor of safety {factor:g} (CS 29.303). Only this sheet holds "
@@ -291,7 +294,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         "aerodynamic point x parachute, cable angles, description", cases),
         Section(f"LIMIT load factors of the load cases ({len(cases)}), angular accelerations "
                 "and closure residuals", factors, sheet="LoadFactors")]
-    return {
+    sheets = {
         "Summary": summary,
         "Inputs": inputs,
         "LoadCases": cases_sheet,
@@ -302,6 +305,25 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
         "Ultimate": ultimate,
         "Hulls": hulls,
     }
+    return {name: content for name, content in sheets.items() if content is not None}
+
+
+_NUMBER = re.compile(r"(?<![\w.+-])-?\d+(?:\.\d+)?(?![\w.])")
+
+
+def _angle_text(value):
+    """An angle of the hand-off table [deg] at the report's 0.1 deg: a number rounded, every
+    number of a range written the same (``"theta -28.01 to -12.05"`` -> ``"theta -28.0 to
+    -12.1"``); a text without numbers unchanged.
+
+    Examples
+    --------
+    >>> _angle_text("hand points, and -32.42 to 0 (DYN-* points)")
+    'hand points, and -32.4 to 0.0 (DYN-* points)'
+    """
+    if isinstance(value, str):
+        return _NUMBER.sub(lambda m: f"{float(m.group(0)):.1f}", value)
+    return value
 
 
 
@@ -320,6 +342,11 @@ def dynamics_sections(result, comparison, units="SI"):
                 values = pd.to_numeric(table.loc[rows, column], errors="coerce")
                 table.loc[rows, column] = in_report_units(values.to_numpy(float), kind, units)
             table.loc[rows, "unit"] = label
+    columns = [c for c in ("hand-entered", "dynamics reached", "with margin",
+                           "used in the loads", "note") if c in table.columns]
+    degrees = table["unit"] == "deg"
+    for column in columns:  # an angle to 0.1 deg, in its ranges as in its numbers
+        table.loc[degrees, column] = table.loc[degrees, column].map(_angle_text)
     sections = [Section("Hand-entered against the dynamics (the campaign's hand-off)", table,
                         note=result.study.dynamics.note if result.study.dynamics else "")]
     loads = loads_comparison(result)

@@ -20,6 +20,7 @@ from slingloads.analyses.hook_loads import TOWED
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS, LOAD_COLUMNS
 from slingloads.errors import InputError
+from slingloads.io.common.formats import header_unit
 from slingloads.io.common.report import (
     check_units,
     convert_columns,
@@ -201,11 +202,13 @@ def case_report_table(result, units="SI"):
 
 def case_report_tables(result, units="SI"):
     """The load-case table as two printed tables: (definition, load factors), both keyed by
-    ``case``; the first ends with the description."""
+    ``case``; the first gives each case's source and ends with its description, the second
+    only the case and its factors (narrow enough for a portrait page, twice the rows of a
+    landscape one)."""
     frame = case_report_table(result, units)
     factors = [c for c in frame.columns if _CASE_FACTORS.match(str(c))]
     return (frame[[c for c in frame.columns if c not in factors]],
-            frame[["case", "source", *factors]])
+            frame[["case", *factors]])
 
 
 
@@ -409,9 +412,33 @@ def _outside_text(outside):
 
 
 
+def towed_summary_table(result):
+    """The towed-flight cases as the Summary prints them: one row per quantity of
+    :meth:`~slingloads.analyses.loads.LoadsResult.towed_table` (its name, its unit, empty
+    for a text), one column per towed case, so that the few towed cases print as one narrow
+    block beside the Summary's other tables; or None without a towed case."""
+    towed = result.towed_table()
+    if towed.empty:
+        return None
+    names, units = [], []
+    for column in towed.columns[1:]:
+        unit = header_unit(column)
+        names.append(str(column) if unit is None else str(column).rsplit(" [", 1)[0])
+        units.append("" if unit is None else unit)
+    out = pd.DataFrame({"quantity": names, "unit": units})
+    for k, case in enumerate(towed["case"]):
+        out[str(case)] = list(towed.iloc[k, 1:])
+    return out
+
+
+def _sentences(lines):
+    """``lines`` joined as sentences (a full stop after each that has none)."""
+    return " ".join(t if t.rstrip().endswith(".") else f"{t.rstrip()}." for t in lines)
+
+
 def towed_note(result):
     """The towed-case verdict: how many trimmed cables lie outside the hook cone."""
-    findings = " ".join(result.towed_findings())
+    findings = _sentences(result.towed_findings())
     if result.towed_table().empty:
         return ("No towed-flight equilibrium case (no fuselage table, or off). "
                 + findings).strip()
