@@ -12,6 +12,7 @@ References:
   at one airspeed they must agree to the trim's tolerance (1e-9 rad stated here).
 """
 
+import re
 from dataclasses import replace
 
 import numpy as np
@@ -57,3 +58,20 @@ def test_loads_sizing_and_multibody_fly_one_attitude_at_80_keas(example_study):
     assert np.degrees(pitch) < -10.0
     assert any("OUTSIDE the aerodynamic envelope" in line
                for line in loads.run().towed_findings())
+
+
+def test_towed_case_descriptions_give_the_trim_at_the_reports_precision(example_study):
+    """A towed case's description states the trimmed angle of attack and sideslip at the
+    reports' 0.1 deg (checked against the trim itself, rounded by hand), a round-off zero as
+    0.0: no ``1.48e-16`` in a description a checker reads."""
+    loads = with_towed_system(example_study, example_study.inputs.loads)
+    cases = loads.run().cases
+    towed = cases[cases["hook"] == "TOW"]
+    assert len(towed)
+    trim = loads.towed_trims[True]
+    with_chute = towed[towed["chute"].astype(bool)]
+    for text in towed["description"]:
+        assert not re.search(r"\de[-+]?\d", text), text
+    alpha = f"{round(float(np.degrees(trim.alpha)), 1) + 0.0:+.1f}"
+    assert any(f"alpha {alpha} deg" in text for text in with_chute["description"]), \
+        (alpha, list(with_chute["description"]))

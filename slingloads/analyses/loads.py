@@ -804,6 +804,12 @@ def _check_previous(frame):
             raise InputError(f"previous envelope {name}: min must not exceed max")
 
 
+def _angle(value):
+    """An angle of a case description [deg] at the reports' 0.1 deg, signed, a round-off
+    zero as 0.0 (``1.48e-16`` -> ``'+0.0'``, ``-22.23`` -> ``'-22.2'``)."""
+    return f"{round(float(value), 1) + 0.0:+.1f}"
+
+
 def _describe(row):
     """Readable text of one row of the case matrix (a pandas Series)."""
     if row["hook"] == NO_HOOK:
@@ -815,8 +821,8 @@ def _describe(row):
         hook = describe_direction(row["azimuth [deg]"], row["inclination [deg]"])
     parts = [f"hook {hook}"]
     if row["aero"] != NO_AERO:
-        parts.append(f"aero point {row['aero']} (alpha {row['alpha [deg]']:+g} deg, "
-                     f"beta {row['beta [deg]']:+g} deg)")
+        parts.append(f"aero point {row['aero']} (alpha {_angle(row['alpha [deg]'])} deg, "
+                     f"beta {_angle(row['beta [deg]'])} deg)")
     if row.get("chute line", ""):
         parts.append(f"parachute line load from the dynamics along {row['chute line']}")
     else:
