@@ -123,17 +123,27 @@ def test_linear_verdict_words_are_the_vocabularys():
 
 
 def test_carrier_speed_in_knots_in_both_unit_systems():
-    """The multibody report's carrier speed (the flight speed of the carrying helicopter) is
-    an airspeed-like quantity: in kt in SI and US reports, 41.156 m/s = 80.0 kt (1 kt =
-    1852/3600 m/s), like the airspeed beside it."""
-    from slingloads.io.multibody.report import in_units
+    """The reports' one SI-column conversion: the carrier speed (the flight speed of the
+    carrying helicopter) is an airspeed-like quantity, in kt in SI and US reports, 41.156 m/s
+    = 80.0 kt (1 kt = 1852/3600 m/s), like the airspeed beside it; another speed stays m/s or
+    ft/s (1 ft = 0.3048 m); a density altitude is in ft in US units, not in inches as a length
+    would be; the campaign's tables take every speed (ramp targets) as an airspeed."""
+    from slingloads.io.campaign.report import in_units
+    from slingloads.io.common.report import si_columns_in_units
 
     frame = pd.DataFrame({"carrier speed end [m/s]": [80 * 1852 / 3600],
-                          "airspeed [m/s]": [30 * 1852 / 3600], "x [m]": [1.0]})
+                          "airspeed [m/s]": [30 * 1852 / 3600], "x [m]": [1.0],
+                          "peak gust [m/s]": [3.048], "density altitude [m]": [304.8]})
     for units in ("SI", "US"):
-        out = in_units(frame, units)
+        out = si_columns_in_units(frame, units)
         assert out["carrier speed end [kt]"].iloc[0] == pytest.approx(80.0, rel=1e-12)
         assert out["airspeed [kt]"].iloc[0] == pytest.approx(30.0, rel=1e-12)
+    us = si_columns_in_units(frame, "US")
+    assert us["peak gust [ft/s]"].iloc[0] == pytest.approx(10.0, rel=1e-12)
+    assert us["density altitude [ft]"].iloc[0] == pytest.approx(1000.0, rel=1e-12)
+    assert us["x [in]"].iloc[0] == pytest.approx(1 / 0.0254, rel=1e-12)
+    ramps = in_units(pd.DataFrame({"ramp target [m/s]": [20 * 1852 / 3600]}), "US")
+    assert ramps["ramp target [kt]"].iloc[0] == pytest.approx(20.0, rel=1e-12)
 
 
 def test_verdict_row_names_the_area_it_was_run_at():

@@ -165,6 +165,33 @@ def test_a_helper_dies_with_its_parent():
     wait_until(lambda: _gone(helper), None, "the end of the helper")
 
 
+def test_a_helper_terminated_as_it_starts_ends_silently():
+    """A helper process sent SIGTERM the moment it is forked (as multiprocessing does to
+    daemonic children when the parent exits) ends by that signal without a traceback, though
+    the parent's SIGTERM handler raises an exception (the command's, which removes its staging
+    folder): the handler is not the helper's even before its first line runs (POSIX: a
+    blocked signal stays pending across fork until the child unblocks it)."""
+    code = ("import os, signal, sys\n"
+            "from slingloads.io.common.helper import Helper\n"
+            "def handler(signum, frame):\n"
+            "    raise SystemExit('parent handler ran')\n"
+            "signal.signal(signal.SIGTERM, handler)\n"
+            "codes = []\n"
+            "for _ in range(20):\n"
+            "    helper = Helper(1).start()\n"
+            "    process = helper._workers[0][0]\n"
+            "    os.kill(process.pid, signal.SIGTERM)\n"
+            "    process.join()\n"
+            "    codes.append(process.exitcode)\n"
+            "    helper.close()\n"
+            "print(codes, flush=True)\n")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=DEADLINE)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == str([-signal.SIGTERM] * 20)
+    assert "Traceback" not in proc.stderr and "parent handler" not in proc.stderr, proc.stderr
+
+
 @pytest.mark.parametrize("moment", ["reading", "publishing"])
 def test_ctrl_c_exits_130_writes_nothing_and_leaves_no_process(tmp_path, moment):
     """Ctrl-C (SIGINT to the command's process group, as a terminal sends it) while the

@@ -25,8 +25,6 @@ kt, ft, lb, ft^2, lbf); the Parquet file is SI.
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 import pandas as pd
 
@@ -38,14 +36,13 @@ from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
 from slingloads.io.common.ownership import PARQUET_KEY
 from slingloads.io.common.report import (
-    check_units,
     column_blocks,
     explain_infinite,
     in_report_units,
-    labelled,
     quantity_text,
     report_unit,
     report_value,
+    si_columns_in_units,
     warning_sections,
 )
 from slingloads.io.common.report_writer import ReportKind
@@ -77,8 +74,6 @@ CONVENTIONS = (
 )
 #: The quantity of a header's SI unit (a length whose name says altitude is an altitude;
 #: every speed of the campaign's tables is an airspeed, in kt in both unit systems).
-_KINDS = {"m/s": "airspeed", "m": "length", "kg": "mass", "N": "force", "m^2": "area"}
-_HEADER = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
 
 
 #: How the campaign's tables write the metrics that have no finite value.
@@ -94,31 +89,11 @@ def _explained(frame):
     return frame
 
 
-def _kind(column):
-    """The quantity kind of an SI column ``name [unit]`` of the campaign's tables, or None."""
-    match = _HEADER.match(str(column))
-    if not match or match.group("unit") not in _KINDS:
-        return None
-    kind = _KINDS[match.group("unit")]
-    return "altitude" if kind == "length" and "altitude" in match.group("name") else kind
-
-
 def in_units(frame, units):
-    """A copy of ``frame`` with its SI columns (m/s, m, kg, N, m^2 in the header) in the
-    report units, as every report writes each quantity (:data:`REPORT_UNITS`): airspeeds
-    (m/s) in kt in both unit systems; in US units density altitudes in ft, lengths in in,
-    masses in lb, forces in lbf, areas in ft^2."""
-    check_units(units)
-    out = frame.copy()
-    renames = {}
-    for column in out.columns:
-        kind = _kind(column)
-        if kind is None:
-            continue
-        out[column] = in_report_units(pd.to_numeric(out[column], errors="coerce")
-                                      .to_numpy(float), kind, units)
-        renames[column] = labelled(_HEADER.match(str(column)).group("name"), kind, units)
-    return out.rename(columns=renames)
+    """A copy of ``frame`` with its SI columns in the report units
+    (:func:`~slingloads.io.common.report.si_columns_in_units`): every speed of the campaign's
+    tables (airspeeds, ramp targets) is an airspeed, in kt in both unit systems."""
+    return si_columns_in_units(frame, units, airspeed=lambda name: True)
 
 
 # ------------------------------------------------------------------------------- tables
@@ -252,7 +227,7 @@ def handoff_table(report, units="SI"):
     """The envelope handed to the loads, angles in degrees, the line tension in the report's
     force unit (one unit per quantity: lbf in a US report, as every force of it)."""
     from slingloads.analyses.campaign.loads_envelope import QUANTITIES
-    from slingloads.io.common.report import in_report_units, report_unit
+    from slingloads.io.common.report import report_unit
     from slingloads.io.common.units import unit_label
 
     env = report.result.envelope

@@ -132,7 +132,9 @@ class Helper:
             # Ctrl-C is held back while the process forks: the new process starts with it
             # blocked and ignores it before unblocking it (a Ctrl-C in between would end it
             # with a traceback); this one receives a Ctrl-C held back once it is registered
-            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+            # (SIGTERM likewise: the new process takes the default action before unblocking
+            # it, so that a SIGTERM at once, as when this process exits, ends it silently)
+            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
             try:
                 process.start()
                 there.close()
@@ -335,10 +337,10 @@ def _warm(name):
 def _serve(conn, parent, warm):
     """Body of a helper process: run the calls received until told to stop, importing the
     modules ``warm`` in order whenever no call is waiting."""
-    _die_with_parent(parent)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # blocked by the fork
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # not the parent's handler (a traceback)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})  # the fork's
+    _die_with_parent(parent)
     warm = list(warm)
     # importing makes little garbage, and what is loaded lives to the end: the collector is
     # off while modules load before the first call, and told not to scan them again after

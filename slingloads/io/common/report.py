@@ -96,6 +96,50 @@ def labelled(name, kind, units):
     return f"{name} [{unit_label(report_unit(kind, units))}]"
 
 
+#: Quantity kind of an SI column by the unit in its header (``name [unit]``).
+_SI_KINDS = {"m/s": "speed", "m": "length", "kg": "mass", "N": "force", "m^2": "area"}
+_SI_HEADER = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
+
+
+def _is_airspeed(name):
+    """Whether a speed column ``name`` is an airspeed (the carrier's flight speed is one)."""
+    return "airspeed" in name or "carrier speed" in name
+
+
+def si_columns_in_units(frame, units, airspeed=_is_airspeed):
+    """A copy of ``frame`` with its SI columns (``[m/s]``, ``[m]``, ``[kg]``, ``[N]``,
+    ``[m^2]`` in the header) in the report units and relabelled, as every report writes each
+    quantity (:data:`~slingloads.io.common.units.REPORT_UNITS`).
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        Table with SI columns named ``name [unit]``; other columns are left as they are.
+    units : str
+        ``"SI"`` or ``"US"``.
+    airspeed : callable
+        ``name -> bool``: which speed columns are airspeeds, in kt in both unit systems
+        (default: a name with ``airspeed`` or ``carrier speed``); other speeds in m/s or
+        ft/s. A length named ``... altitude ...`` is a density altitude (m or ft).
+
+    Returns
+    -------
+    pandas.DataFrame
+    """
+    spec = {}
+    for column in frame.columns:
+        match = _SI_HEADER.match(str(column))
+        if not match or match.group("unit") not in _SI_KINDS:
+            continue
+        name, kind = match.group("name"), _SI_KINDS[match.group("unit")]
+        if kind == "speed" and airspeed(name):
+            kind = "airspeed"
+        elif kind == "length" and "altitude" in name:
+            kind = "altitude"
+        spec[column] = (name, kind)
+    return convert_columns(frame, spec, units)
+
+
 def convert_columns(frame, spec, units):
     """Convert SI columns of a DataFrame to report units and label them with the unit.
 

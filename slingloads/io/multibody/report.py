@@ -23,8 +23,6 @@ SI); angles in degrees.
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 import pandas as pd
 
@@ -35,12 +33,12 @@ from slingloads.io.common.figures import plot_function
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
     column_blocks,
-    convert_columns,
     csv_frame,
     explain_infinite,
     quantity_text,
     report_unit,
     report_value,
+    si_columns_in_units,
     split_unit,
     warning_sections,
 )
@@ -62,8 +60,6 @@ FIGURE_TITLES = {"histories": "Time histories: yaw, sideslip, cable swing, tensi
 #: Sampling of the Histories sheet (the CSV file keeps every stored sample). [s]
 HISTORY_INTERVAL = 2.0
 #: Quantity kind of the SI units that appear in the analysis' column headers.
-_KINDS = {"m": "length", "N": "force", "m/s": "speed", "kg": "mass", "m^2": "area"}
-_HEADER_UNIT = re.compile(r"^(?P<name>.*) \[(?P<unit>[^\]]+)\]$")
 
 #: Number format of the state matrix: scientific, an exact zero as ``0``.
 MATRIX_FORMAT = f"{SCIENTIFIC_FORMAT};-{SCIENTIFIC_FORMAT};0"
@@ -89,21 +85,6 @@ CONVENTIONS = (
 
 
 # ------------------------------------------------------------------------------- tables
-def in_units(frame, units):
-    """A copy of ``frame`` with its SI columns (``[m]``, ``[N]``, ``[m/s]``, ``[kg]``,
-    ``[m^2]``) in the report unit system; the airspeed and the carrier's speed (the flight
-    speed of the carrying helicopter) in kt in both systems, as every airspeed."""
-    spec = {}
-    for column in frame.columns:
-        match = _HEADER_UNIT.match(str(column))
-        if match and match.group("unit") in _KINDS:
-            kind = _KINDS[match.group("unit")]
-            if kind == "speed" and "carrier speed" in match.group("name"):
-                kind = "airspeed"
-            spec[column] = (match.group("name"), kind)
-    return convert_columns(frame, spec, units)
-
-
 def _row(item, value, kind, units, note=""):
     if kind is None:
         return {"item": item, "value": value, "unit": "", "note": note}
@@ -176,7 +157,7 @@ def trim_table(result, units="SI"):
     if "airspeed EAS [m/s]" in frame.columns:  # an airspeed: in knots in both unit systems
         frame["airspeed EAS [m/s]"] = frame["airspeed EAS [m/s]"] / KNOT
         frame = frame.rename(columns={"airspeed EAS [m/s]": "equivalent airspeed KEAS [kt]"})
-    row = in_units(frame, units).iloc[0]
+    row = si_columns_in_units(frame, units).iloc[0]
     names = [split_unit(column) for column in row.index]
     return pd.DataFrame({"item": [name for name, _ in names], "value": list(row.to_numpy()),
                          "unit": [unit for _, unit in names]})
@@ -229,12 +210,12 @@ def history_table(result, units="SI", interval=None):
         step = max(1, int(round(interval / every)))
         keep = np.round(frame["time [s]"].to_numpy() / every) % step
         frame = frame[keep == 0].reset_index(drop=True)
-    return in_units(frame, units)
+    return si_columns_in_units(frame, units)
 
 
 def metrics_table(result, units="SI"):
     """Every metric of every run: one row per metric (with its unit), one column per run."""
-    frame = in_units(result.simulation.metrics_frame(), units)
+    frame = si_columns_in_units(result.simulation.metrics_frame(), units)
     shown = [c for c in frame.columns if c not in ("run", "manoeuvre", "verdict rule")]
     names = [split_unit(column) for column in shown]
     out = pd.DataFrame({"metric": [name for name, _ in names],
