@@ -376,8 +376,9 @@ def test_ctrl_c_keeps_the_finished_runs_and_the_next_run_resumes(tmp_path, capsy
 def test_progress_bar_shows_runs_done_rate_and_time_left(tiny, tmp_path, capsys):
     """Without --quiet the campaign's bar (tqdm) counts the runs: it starts at the runs found
     in the cache (area factors 2.25, 2.9 -> 2.25, 2.7 on the tiny campaign's cache: the 2.25 run
-    and the ramp are found, 2 of 3) and ends at 3/3, with the rate (run/s) and the time left
-    (tqdm's ``<`` remaining-time field) on the line."""
+    and the ramp are found, 2 of 3) and ends at 3/3, with the rate (run/s, or s/run as tqdm
+    writes a rate under one run a second) and the time left (tqdm's ``<`` remaining-time
+    field) on the line."""
     _, _, cache = tiny
     path = workbook(tmp_path / "bar.xlsx", {"campaign area factors": "2.25, 2.7"})
     assert main(["campaign", str(path), "--out", str(tmp_path / "out"), "--cache",
