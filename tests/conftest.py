@@ -18,6 +18,8 @@
   results), the second example's (US twin) reports in US units and in SI, and the check of
   a broken
   copy of a workbook (exit code 2, the message located at the cell, nothing written).
+  Under parallel workers each of these is made by one worker for all of them
+  (:mod:`once`): the others read the folders it wrote, and its results from their pickle.
 """
 
 import copy
@@ -27,7 +29,8 @@ import tempfile
 from pathlib import Path
 
 import pytest
-from hostile import EXAMPLE, refused_copy
+from hostile import EXAMPLE, IDENT, IDENT_REPORTS, refused_copy, set_study
+from once import computed_once, made_once
 
 
 def _numba_folder(config, name):
@@ -153,9 +156,10 @@ def example_study(_example_study):
 def _report(tmp_path_factory, command):
     from slingloads.cli import main
 
-    out = tmp_path_factory.mktemp(f"example-{command}")
-    assert main([command, str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
-    return out
+    def make(out):
+        assert main([command, str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+
+    return made_once(tmp_path_factory, f"example-{command}", make)
 
 
 @pytest.fixture(scope="session")
@@ -181,16 +185,17 @@ def example_campaign_run_report(tmp_path_factory):
 
     from slingloads.cli import main
 
-    root = tmp_path_factory.mktemp("example-campaign-run")
-    book = openpyxl.load_workbook(EXAMPLE)
-    for row in book["Study"].iter_rows(min_row=2):
-        if str(row[0].value).strip().lower() == "run campaign":
-            row[1].value = "yes"
-    path = root / EXAMPLE.name
-    book.save(path)
-    out = root / "out"
-    assert main(["run", str(path), "--out", str(out), "--quiet"]) == 0
-    return out
+    def make(root):
+        book = openpyxl.load_workbook(EXAMPLE)
+        for row in book["Study"].iter_rows(min_row=2):
+            if str(row[0].value).strip().lower() == "run campaign":
+                row[1].value = "yes"
+        root.mkdir(parents=True)
+        path = root / EXAMPLE.name
+        book.save(path)
+        assert main(["run", str(path), "--out", str(root / "out"), "--quiet"]) == 0
+
+    return made_once(tmp_path_factory, "example-campaign-run", make) / "out"
 
 
 #: The second example: a GENERIC 4.9 t twin in US units, with the campaign on.
@@ -204,17 +209,20 @@ def us_twin_reports(request, tmp_path_factory):
     condition, a finding; every report is written): to be read, not changed."""
     from slingloads.cli import main
 
-    out = tmp_path_factory.mktemp(f"us-twin-{request.param}") / "out"
-    assert main(["run", str(US_TWIN), "--out", str(out), "--units", request.param,
-                 "--quiet"]) == 3
-    return request.param, out
+    def make(out):
+        assert main(["run", str(US_TWIN), "--out", str(out), "--units", request.param,
+                     "--quiet"]) == 3
+
+    return request.param, made_once(tmp_path_factory, f"us-twin-{request.param}", make)
 
 
 @pytest.fixture(scope="session")
-def example_results(_example_study):
+def example_results(_example_study, tmp_path_factory):
     """The example's study with every analysis it asks for run once for the session (its own
-    copy of the study; the results are to be read, not changed)."""
-    return copy.deepcopy(_example_study).run()
+    copy of the study; the results are to be read, not changed): run by one worker, the
+    others read its results back from their pickle."""
+    return computed_once(tmp_path_factory, "example-results",
+                         lambda: copy.deepcopy(_example_study).run())
 
 
 @pytest.fixture(scope="session", params=["SI", "US"])
@@ -225,9 +233,11 @@ def example_reports(request, example_results, tmp_path_factory):
         return "SI", request.getfixturevalue("example_run_report")
     import slingloads as sl
 
-    out = tmp_path_factory.mktemp(f"example-{request.param}")
-    sl.write_reports(example_results, out, request.param)
-    return request.param, out
+    def make(out):
+        out.mkdir(parents=True)
+        sl.write_reports(example_results, out, request.param)
+
+    return request.param, made_once(tmp_path_factory, f"example-{request.param}", make)
 
 
 @pytest.fixture(scope="session")
@@ -255,6 +265,111 @@ def libreoffice(tmp_path_factory):
         return Path(outdir)
 
     return convert
+
+
+@pytest.fixture(scope="session")
+def ident_workbook(tmp_path_factory):
+    """A copy of the example with the cover's free fields filled in (``hostile.IDENT``),
+    ``ident.xlsx``."""
+    import openpyxl
+
+    def make(folder):
+        book = openpyxl.load_workbook(EXAMPLE)
+        set_study(book, IDENT)
+        folder.mkdir(parents=True)
+        book.save(folder / "ident.xlsx")
+
+    return made_once(tmp_path_factory, "ident-in", make) / "ident.xlsx"
+
+
+@pytest.fixture(scope="session")
+def ident_run_report(ident_workbook, tmp_path_factory):
+    """The folder of ``slingloads run`` on ``ident_workbook``, made once for the session (to
+    be read, not changed)."""
+    from slingloads.cli import main
+
+    def make(out):
+        assert main(["run", str(ident_workbook), "--out", str(out), "--quiet"]) == 0
+
+    return made_once(tmp_path_factory, "ident-run", make)
+
+
+@pytest.fixture(scope="session")
+def ident_us_loads_report(ident_workbook, tmp_path_factory):
+    """The folder of ``slingloads loads --units US`` on ``ident_workbook``, made once for
+    the session (to be read, not changed)."""
+    from slingloads.cli import main
+
+    def make(out):
+        assert main(["loads", str(ident_workbook), "--out", str(out), "--units", "US",
+                     "--quiet"]) == 0
+
+    return made_once(tmp_path_factory, "ident-us-loads", make)
+
+
+@pytest.fixture(scope="session")
+def ident_campaign_report(ident_workbook, tmp_path_factory):
+    """(folder, workbook): the campaign report of ``ident_workbook`` with 'run campaign' =
+    yes (its small matrix), made once for the session with the session's run cache (shared
+    with the other campaign runs of the example): to be read, not changed."""
+    import openpyxl
+
+    from slingloads.cli import main
+
+    def make(root):
+        book = openpyxl.load_workbook(ident_workbook)
+        set_study(book, {"run campaign": "yes"})
+        root.mkdir(parents=True)
+        book.save(root / "ident.xlsx")
+        assert main(["campaign", str(root / "ident.xlsx"), "--out", str(root / "out"),
+                     "--quiet"]) == 0
+
+    root = made_once(tmp_path_factory, "ident-campaign", make)
+    return root / "out", root / "ident.xlsx"
+
+
+@pytest.fixture(scope="session")
+def printed_reports(ident_run_report, ident_campaign_report, ident_us_loads_report,
+                    libreoffice, tmp_path_factory):
+    """The ident copy's five reports and its US loads report converted to A4 PDF by
+    LibreOffice headless, in one call made once for the session: ``{report: PDF bytes}``
+    (``"us-loads"`` the US one); skipped where LibreOffice is absent."""
+    reports = (*IDENT_REPORTS, "multibody")
+
+    def make(out):
+        out.mkdir(parents=True)
+        us = out / "us-copy" / "ident-us-loads.xlsx"  # its own PDF name
+        us.parent.mkdir()
+        us.write_bytes((ident_us_loads_report / "ident-loads.xlsx").read_bytes())
+        libreoffice([*(ident_run_report / f"ident-{r}.xlsx" for r in reports),
+                     ident_campaign_report[0] / "ident-campaign.xlsx", us], "pdf", out)
+
+    out = made_once(tmp_path_factory, "ident-pdf", make)
+    return {r: (out / f"ident-{r}.pdf").read_bytes()
+            for r in (*reports, "campaign", "us-loads")}
+
+
+def _needs_calibri_metrics():
+    """Skip unless fontconfig resolves Calibri to Calibri or Carlito."""
+    if shutil.which("fc-match") is None:
+        pytest.skip("fontconfig (fc-match) not found: the font LibreOffice prints with is "
+                    "unknown")
+    import subprocess
+
+    font = subprocess.run(["fc-match", "Calibri"], capture_output=True, text=True).stdout
+    if not any(name in font for name in ("Calibri", "Carlito")):
+        pytest.skip(f"no font with Calibri's metrics (fc-match Calibri: {font.strip()}); "
+                    "install fonts-crosextra-carlito")
+
+
+@pytest.fixture(scope="session")
+def printed(request):
+    """``printed_reports``, skipped (before any conversion) where Calibri, the reports'
+    font, resolves to no metric-compatible font (Carlito, Debian's fonts-crosextra-carlito,
+    which .ci/run installs): page counts and fills hold for Calibri's metrics; a wider
+    substitute prints more pages."""
+    _needs_calibri_metrics()
+    return request.getfixturevalue("printed_reports")
 
 
 @pytest.fixture

@@ -19,6 +19,22 @@ EXAMPLE = Path(__file__).resolve().parents[1] / "loadcases" / "example-light-twi
 #: Sideslip step of :func:`light_example`'s fuselage table (the example's is 2 deg). [deg]
 LIGHT_BETA_STEP = 10
 
+#: Identification written into the session's copy of the example (Study sheet, free
+#: fields; ``ident_workbook`` in conftest.py) and the reports of its ``slingloads run``
+#: that print it on their cover.
+IDENT = {"author": "A. Author", "checker": "C. Checker & Co", "document number": "DOC-42 A"}
+IDENT_REPORTS = ("loads", "lateral", "chute")
+
+
+def set_study(book, values):
+    """Set Study parameters of an openpyxl workbook (adding rows that are absent)."""
+    ws = book["Study"]
+    rows = {str(r[0].value).lower(): r[0].row for r in ws.iter_rows(min_row=2) if r[0].value}
+    for name, value in values.items():
+        row = rows.get(name.lower()) or ws.max_row + 1
+        ws.cell(row, 1, name)
+        ws.cell(row, 2, value)
+
 
 def light_example():
     """The example workbook with its fuselage table thinned to every

@@ -15,6 +15,7 @@ import openpyxl
 import pandas as pd
 import pytest
 from hostile import EXAMPLE, light_example, refused_copy, study_row
+from once import made_once
 
 from slingloads.analyses.chute_sizing import neutral_area
 from slingloads.cli import main
@@ -43,9 +44,12 @@ def result(study):
 
 @pytest.fixture(scope="module")
 def run_dir(tmp_path_factory):
-    out = tmp_path_factory.mktemp("chute")
-    assert main(["chute", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
-    return out
+    """The folder of ``slingloads chute`` on the example, made once for the session's
+    workers (:func:`once.made_once`): to be read, not changed."""
+    def make(out):
+        assert main(["chute", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+
+    return made_once(tmp_path_factory, "example-chute-command", make)
 
 
 def test_neutral_area_workbook_equals_api(study, result):

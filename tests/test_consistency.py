@@ -11,6 +11,7 @@ import numpy as np
 import pandas as pd
 import pytest
 from hostile import EXAMPLE
+from once import computed_once
 
 from slingloads.analyses.loads import AeroEnvelope
 from slingloads.io.consistency import consistency_checks
@@ -19,8 +20,11 @@ from slingloads.runs.study import Results
 
 
 @pytest.fixture(scope="module")
-def results():
-    return read_study(EXAMPLE, only=["loads", "chute sizing"]).run()
+def results(tmp_path_factory):
+    """The example's loads and sizing, run once for the session's workers
+    (:func:`once.computed_once`): to be read, not changed."""
+    return computed_once(tmp_path_factory, "example-loads-and-sizing",
+                         lambda: read_study(EXAMPLE, only=["loads", "chute sizing"]).run())
 
 
 def test_peak_sideslip_outside_the_envelope_is_a_warning(results):

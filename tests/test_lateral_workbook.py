@@ -21,6 +21,7 @@ import openpyxl
 import pandas as pd
 import pytest
 from hostile import EXAMPLE, light_example, refused_copy
+from once import made_once
 
 from slingloads.analyses.hook_angle import hook_angle_comparison
 from slingloads.analyses.hook_loads import HookLoadOptions
@@ -78,9 +79,12 @@ def result(study):
 
 @pytest.fixture(scope="module")
 def run_dir(tmp_path_factory):
-    out = tmp_path_factory.mktemp("lateral")
-    assert main(["lateral", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
-    return out
+    """The folder of ``slingloads lateral`` on the example, made once for the session's
+    workers (:func:`once.made_once`): to be read, not changed."""
+    def make(out):
+        assert main(["lateral", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+
+    return made_once(tmp_path_factory, "example-lateral-command", make)
 
 
 def _sheet(path, name, title):

@@ -16,6 +16,7 @@ import openpyxl
 import pandas as pd
 import pytest
 from hostile import EXAMPLE, refused_copy, study_row
+from once import made_once
 
 from slingloads.analyses.multibody import (
     forward_acceleration,
@@ -63,9 +64,12 @@ def result(study):
 
 @pytest.fixture(scope="module")
 def run_dir(tmp_path_factory):
-    out = tmp_path_factory.mktemp("multibody")
-    assert main(["simulate", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
-    return out
+    """The folder of ``slingloads simulate`` on the example, made once for the session's
+    workers (:func:`once.made_once`): to be read, not changed."""
+    def make(out):
+        assert main(["simulate", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+
+    return made_once(tmp_path_factory, "example-simulate-command", make)
 
 
 @pytest.fixture(scope="module")

@@ -18,48 +18,30 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from hostile import EXAMPLE, column_widths
+from hostile import IDENT_REPORTS, column_widths
 
-from slingloads.cli import main
 from slingloads.io.study import file_digest
 
-REPORTS = ("loads", "lateral", "chute")
-#: Identification written into the copy of the example (Study sheet, free fields).
-IDENT = {"author": "A. Author", "checker": "C. Checker & Co", "document number": "DOC-42 A"}
+REPORTS = IDENT_REPORTS
+
+@pytest.fixture
+def workbook(ident_workbook):
+    return ident_workbook
 
 
-def _set_study(book, values):
-    """Set Study parameters of an openpyxl workbook (adding rows that are absent)."""
-    ws = book["Study"]
-    rows = {str(r[0].value).lower(): r[0].row for r in ws.iter_rows(min_row=2) if r[0].value}
-    for name, value in values.items():
-        row = rows.get(name.lower()) or ws.max_row + 1
-        ws.cell(row, 1, name)
-        ws.cell(row, 2, value)
+@pytest.fixture
+def run_dir(ident_run_report):
+    return ident_run_report
 
 
-@pytest.fixture(scope="module")
-def workbook(tmp_path_factory):
-    """A copy of the example with the cover's free fields filled in."""
-    book = openpyxl.load_workbook(EXAMPLE)
-    _set_study(book, IDENT)
-    path = tmp_path_factory.mktemp("in") / "ident.xlsx"
-    book.save(path)
-    return path
+@pytest.fixture
+def us_dir(ident_us_loads_report):
+    return ident_us_loads_report
 
 
-@pytest.fixture(scope="module")
-def run_dir(workbook, tmp_path_factory):
-    out = tmp_path_factory.mktemp("run")
-    assert main(["run", str(workbook), "--out", str(out), "--quiet"]) == 0
-    return out
-
-
-@pytest.fixture(scope="module")
-def us_dir(workbook, tmp_path_factory):
-    out = tmp_path_factory.mktemp("us")
-    assert main(["loads", str(workbook), "--out", str(out), "--units", "US", "--quiet"]) == 0
-    return out
+@pytest.fixture
+def campaign_dir(ident_campaign_report):
+    return ident_campaign_report
 
 
 def _fit(pages):
@@ -256,38 +238,6 @@ def test_flags_hook_angle_and_previous_source(run_dir):
     assert "ILLUSTRATIVE" in text and "build_example.py" in text
 
 
-@pytest.fixture(scope="module")
-def printed(run_dir, campaign_dir, us_dir, libreoffice, tmp_path_factory):
-    """The example's five reports and its US loads report converted to A4 PDF by
-    LibreOffice headless, in one call: ``{report: PDF bytes}`` (``"us-loads"`` the US one).
-    Skipped where Calibri, the reports' font, resolves to no metric-compatible font (Carlito,
-    Debian's fonts-crosextra-carlito, which .ci/run installs): the page counts and fills
-    below hold for Calibri's metrics; a wider substitute prints more pages."""
-    _needs_calibri_metrics()
-    reports = (*REPORTS, "multibody")
-    paths = [run_dir / f"ident-{r}.xlsx" for r in reports]
-    us = tmp_path_factory.mktemp("us-copy") / "ident-us-loads.xlsx"
-    us.write_bytes((us_dir / "ident-loads.xlsx").read_bytes())  # its own PDF name
-    out = libreoffice([*paths, campaign_dir[0] / "ident-campaign.xlsx", us], "pdf",
-                      tmp_path_factory.mktemp("pdf"))
-    return {r: (out / f"ident-{r}.pdf").read_bytes()
-            for r in (*reports, "campaign", "us-loads")}
-
-
-def _needs_calibri_metrics():
-    """Skip unless fontconfig resolves Calibri to Calibri or Carlito."""
-    import shutil
-    import subprocess
-
-    if shutil.which("fc-match") is None:
-        pytest.skip("fontconfig (fc-match) not found: the font LibreOffice prints with is "
-                    "unknown")
-    font = subprocess.run(["fc-match", "Calibri"], capture_output=True, text=True).stdout
-    if not any(name in font for name in ("Calibri", "Carlito")):
-        pytest.skip(f"no font with Calibri's metrics (fc-match Calibri: {font.strip()}); "
-                    "install fonts-crosextra-carlito")
-
-
 def _pages(pdf):
     return len(re.findall(rb"/Type\s*/Page(?![s\w])", pdf))
 
@@ -376,20 +326,6 @@ def test_example_envelope_matches_loads(run_dir):
 
 
 # ------------------------------------------------------------- multibody and campaign reports
-@pytest.fixture(scope="module")
-def campaign_dir(workbook, tmp_path_factory):
-    """The campaign report of the example with 'run campaign' = yes (its small matrix)."""
-    book = openpyxl.load_workbook(workbook)
-    _set_study(book, {"run campaign": "yes"})
-    root = tmp_path_factory.mktemp("campaign")
-    path = root / "ident.xlsx"
-    book.save(path)
-    out = root / "out"
-    # the session's run cache: shared with the other campaign runs of the example
-    assert main(["campaign", str(path), "--out", str(out), "--quiet"]) == 0
-    return out, path
-
-
 def _value_cells(ws):
     """Every numeric cell under a header that names a unit the format table knows, with its
     header."""
