@@ -181,3 +181,16 @@ def test_reason_says_which_rule_made_it_convergent():
     assert list(env.verdict) == [vd.CONVERGENT, vd.CONVERGENT]
     assert "(settled: within the 1 deg band)" in env.reason(0)
     assert "(decaying: below 0.9 x)" in env.reason(1)
+
+
+def test_reason_of_a_signal_without_trim_gives_no_offset():
+    """A signal tested without a trim value (the multibody's swing angles: reference NaN) is
+    judged on its amplitudes alone; its reason states them and no 'centred +nan deg from
+    trim' (a growing sine, 2 -> about 4.5 deg over the halves, is divergent by the envelope
+    rule)."""
+    t = np.linspace(0.0, 40.0, 4001)
+    growing = np.radians(2.0) * np.exp(0.04 * t) * np.sin(2 * np.pi * t / 2.0)
+    env = vd.envelope(t, growing[None, :], 0.0, np.nan, False)
+    assert env.verdict[0] == vd.DIVERGENT
+    text = env.reason(0, "lateral swing")
+    assert "nan" not in text and text.startswith("lateral swing amplitude"), text

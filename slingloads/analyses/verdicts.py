@@ -210,11 +210,12 @@ class Envelope:
         a1, a2, off = d(self.first[j]), d(self.second[j]), d(self.offset[j])
         if v == INCONCLUSIVE:
             w, period = float(self.window[j]), float(self.period[j])
+            centred = f", centred {off:+.3g} deg from trim" if np.isfinite(off) else ""
             if np.isfinite(a1) and np.isfinite(a2) and np.isfinite(period):
                 return (f"{w:.3g} s observed after the input, {w / period:.2g} periods of "
                         f"the slowest relevant mode ({period:.3g} s), and the {what} neither grows "
                         f"nor has settled about its trim ({a1:.3g} -> {a2:.3g} deg over the "
-                        f"two halves, centred {off:+.3g} deg from trim): run longer")
+                        f"two halves{centred}): run longer")
             return f"too little time observed after the input ({w:.3g} s)"
         amp = f"{what} amplitude {a1:.3g} -> {a2:.3g} deg over the two halves"
         if self.test is not None and v in (CONVERGENT, STATIC_DEPARTURE):
@@ -224,6 +225,8 @@ class Envelope:
                     else f" (decaying: below {self.test.decay:g} x)")
         if v == STATIC_DEPARTURE:
             return f"{amp}; settles {off:+.3g} deg from trim (static departure)"
+        if not np.isfinite(off):  # a signal tested without a trim value (a swing angle)
+            return amp
         return f"{amp}; centred {off:+.3g} deg from trim"
 
 
