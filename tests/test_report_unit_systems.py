@@ -11,6 +11,7 @@ Names the user wrote (the multibody manoeuvres' names, the campaign's manoeuvre 
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import openpyxl
 import pytest
@@ -109,3 +110,36 @@ def test_one_spelling_per_quantity(units, cable, altitude):
 
     assert quantity_text(60 * 0.3048, "length", units) == cable
     assert quantity_text(5000 * 0.3048, "altitude", units) == altitude
+
+
+_QUOTED_AREA = re.compile(r"(?<![\w.^/])(-?\d[\d,]*(?:\.(\d+))?) (m\^2|ft\^2)(?![\w^/])")
+
+
+def _quoted_areas(folder):
+    """(workbook, sheet, text, decimals, unit) of every area quoted in a text cell."""
+    found = []
+    for path in sorted(Path(folder).glob("*.xlsx")):
+        book = openpyxl.load_workbook(path, read_only=True)
+        for sheet in book.worksheets:
+            for row in sheet.iter_rows(values_only=True):
+                for value in row:
+                    if isinstance(value, str):
+                        found += [(path.name, sheet.title, value, len(m.group(2) or ""),
+                                   m.group(3)) for m in _QUOTED_AREA.finditer(value)]
+        book.close()
+    return found
+
+
+def test_areas_quoted_in_sentences_read_as_their_cells(example_campaign_run_report,
+                                                        us_twin_reports):
+    """An area quoted in a sentence (a note, a verdict, the decision's basis) is written at the
+    precision of an area's cell (formats.py: 0.000 m^2, 0.00 ft^2), in every report of the
+    example with its campaign and of the US twin in both unit systems: the decision's 'fit
+    0.1486 m^2' beside a cell of 0.149, or '27.18 ft^2' beside 27.17, cannot recur."""
+    units, twin = us_twin_reports
+    for folder, system in ((example_campaign_run_report, "SI"), (twin, units)):
+        areas = _quoted_areas(folder)
+        assert areas, folder
+        wrong = [a for a in areas if a[3] != {"m^2": 3, "ft^2": 2}[a[4]]
+                 or a[4] != {"SI": "m^2", "US": "ft^2"}[system]]
+        assert not wrong, wrong[:5]

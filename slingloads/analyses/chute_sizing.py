@@ -454,7 +454,7 @@ class NeutralAreaResult:
         lo, hi = (float(np.degrees(v)) for v in self.linearisation.fit_range)
         which = {"fit": f"least-squares slopes over [{lo:.3g}, {hi:.3g}] deg",
                  "local": "local slopes at zero sideslip"}[self.basis]
-        return f"{which} (fit {self.area_fit:.4g} m^2, local {self.area_local:.4g} m^2)"
+        return f"{which} (fit {self.area_fit:.6g} m^2, local {self.area_local:.6g} m^2)"
 
     @property
     def already_stable(self):

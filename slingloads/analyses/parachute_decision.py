@@ -182,7 +182,7 @@ def one_dof_proposal(sweep):
     what = ", ".join(f"{g} gust ({v})" for g, v in zip(failing["gust"], failing["verdict"],
                                                         strict=True))
     at = "" if np.isfinite(area) else " (and every larger swept area)"
-    return area, f"1-DOF at {last:.4g} m^2{at}: {what}"
+    return area, f"1-DOF at {last:.6g} m^2{at}: {what}"
 
 
 def multibody_verdict_at(metrics, area, stable):
@@ -247,7 +247,7 @@ def damping_comparison(runs, metrics, area, airspeed):
     if runs is None or not np.isfinite(area) or "damping ratio linear [-]" not in runs:
         return "no 1-DOF run at the chosen area"
     z1 = float(np.nanmin(runs["damping ratio linear [-]"].to_numpy(float)))
-    where = f"{area:.4g} m^2, {airspeed / KNOT:.0f} KEAS"
+    where = f"{area:.6g} m^2, {airspeed / KNOT:.0f} KEAS"
     one = f"1-DOF {z1:.3g} (its yaw mode, hub fixed)"
     if metrics is None or "yaw mode damping ratio [-]" not in metrics:
         return f"at {where}: {one}; no campaign run to compare"
@@ -312,8 +312,8 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
             neutral = float(getattr(selection, "neutral_area", math.nan))
             where = str(getattr(selection, "neutral_condition", "") or "")
             where = f" ({where})" if where else ""
-            base = (f"the campaign's neutral area {neutral:.3g} m^2{where} = "
-                    f"{factor * neutral:.3g} m^2" if np.isfinite(neutral)
+            base = (f"the campaign's neutral area {neutral:.6g} m^2{where} = "
+                    f"{factor * neutral:.6g} m^2" if np.isfinite(neutral)
                     else "the campaign's neutral area")
             gov2 = (f"{gov2} (least yaw damping); stability needs {factor:.3g} x {base} at "
                     f"{selection.governing_stable['condition']}")
@@ -335,7 +335,7 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
         else:
             chosen, model, governing = a1, ONE_DOF, gov1
             reason = (f"the larger proposal (both criteria must hold): the 1-DOF sweep needs "
-                      f"{a1:.4g} m^2, more than the campaign's {a2:.4g} m^2")
+                      f"{a1:.6g} m^2, more than the campaign's {a2:.6g} m^2")
     elif ran1:
         chosen, model, governing = a1, ONE_DOF, gov1
         reason = "the only model run (no multibody campaign)"

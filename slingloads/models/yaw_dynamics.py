@@ -557,7 +557,7 @@ class YawModel:
         found = np.isfinite(roots).any(axis=1)
         if not found.all():
             i, j = int(np.argmin(found)), int(np.argmin(np.abs(grid)))
-            area = f", parachute area {areas[i]:.4g} m^2" if areas[i] else ", no parachute"
+            area = f", parachute area {areas[i]:.6g} m^2" if areas[i] else ", no parachute"
             raise InputError(f"no yaw trim within +-{np.degrees(search):.3g} deg of sideslip: "
                              f"the yawing moment about the hub does not change sign "
                              f"({total[i, j]:.4g} N m at beta = {np.degrees(grid[j]):.3g} deg"

@@ -168,7 +168,7 @@ def _hook(study, env, source):
 def _parachute(study, env, chosen_area, source="study"):
     if study.parachute is None:
         return None, None, [{"quantity": "parachute", "unit": "", "hand-entered": "none",
-                             "dynamics reached": f"{env.area:.4g} m^2",
+                             "dynamics reached": f"{env.area:.6g} m^2",
                              "with margin": np.nan, "used in the loads": "none",
                              "note": "the loads study has no parachute ('parachute area' 0): "
                                      "no parachute case added"}]
@@ -191,15 +191,15 @@ def _parachute(study, env, chosen_area, source="study"):
     rows = [
         {"quantity": "parachute area", "unit": "m^2", "hand-entered": study.parachute.area,
          "dynamics reached": env.area, "with margin": np.nan, "used in the loads": area,
-         "note": (f"the Study's parachute kept (the campaign's chosen: {chosen:.4g} m^2, "
+         "note": (f"the Study's parachute kept (the campaign's chosen: {chosen:.6g} m^2, "
                   f"{env.area_factor:g} x neutral area)" if source == "study" else
                   f"the campaign's chosen parachute, {env.area_factor:g} x neutral area, in "
-                  f"place of the Study's {study.parachute.area:.4g} m^2")},
+                  f"place of the Study's {study.parachute.area:.6g} m^2")},
         {"quantity": "parachute load", "unit": "N", "hand-entered": drag(study.parachute),
          "dynamics reached": env.reached["line tension"][1], "with margin": env.chute_drag,
          "used in the loads": line,
          "note": f"on the LINE-* cases: the runs' largest line tension over q x area x "
-                 f"margin, at the loads' q {q:.4g} Pa and area {area:.4g} m^2 (the "
+                 f"margin, at the loads' q {q:.4g} Pa and area {area:.6g} m^2 (the "
                  f"campaign's own peak x margin: {env.chute_drag:.4g} N); hand-entered: the "
                  f"parachute model's drag at the loads' airspeed, on the 'parachute on' "
                  f"cases"},

@@ -347,8 +347,9 @@ def _decision_sentence(decision, units):
         return ""
     if not decision.found:
         return f" Chosen area (parachute decision): NONE, {decision.reason}."
-    area, unit = _value(decision.chosen_area, "area", units)
-    return (f" Chosen area (parachute decision, the same in every report): {area:.3g} {unit}, "
+    # areas quoted in SI, which the report writes at an area cell's precision in its units
+    return (f" Chosen area (parachute decision, the same in every report): "
+            f"{decision.chosen_area:.6g} m^2, "
             f"decided by the {decision.deciding_model}.")
 
 
@@ -357,15 +358,14 @@ def _summary_note(result, units, decision=None):
     static = result.static
     if static.already_stable:
         return "Fuselage and fin are already statically stable in yaw: no parachute needed."
-    area, unit = _value(static.area, "area", units)
-    rec, _ = _value(result.recommended_area, "area", units)
+    area, rec = static.area, result.recommended_area  # [m^2], converted as the report writes
     line, lunit = _value(result.line.line_length, "length", units)
     said = _decision_sentence(decision, units)
     if not np.isfinite(result.recommended_area):
-        return (f"Neutral static area {area:.3g} {unit}; NO swept area is stable under every "
+        return (f"Neutral static area {area:.6g} m^2; NO swept area is stable under every "
                 f"gust (1-DOF): no area recommended; parachute line {line:.4g} {lunit} from "
                 "the wake." + said)
-    return (f"Neutral static area {area:.3g} {unit}; 1-DOF recommended area {rec:.3g} {unit} "
+    return (f"Neutral static area {area:.6g} m^2; 1-DOF recommended area {rec:.6g} m^2 "
             f"({result.recommended_area / static.area:.3g} x neutral, the smallest swept area "
             f"stable under every gust); parachute line {line:.4g} {lunit} from the wake."
             + said)

@@ -134,9 +134,22 @@ def _quoted_number(value):
     return f"{value:,.0f}" if abs(value) >= 1000 else f"{value:.4g}"
 
 
+#: Decimals of an area in a report, in a sentence as in its cells (formats.py: ``0.000``
+#: m^2, ``0.00`` ft^2), so that an area quoted in a note reads as the cell beside it.
+_AREA_DECIMALS = {"SI": 3, "US": 2}
+#: A quoted area in m^2 (a plain number, as the analyses write it).
+_AREA = re.compile(r"(?<![\w.^/,])(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) ?m\^2(?![\w^/])")
+
+
+def _area_number(value, units):
+    return f"{value:,.{_AREA_DECIMALS[units]}f}"
+
+
 def report_text(text, units):
     """A sentence of a report with its quoted SI quantities (``"step 9.14 m/s"``) in the
-    report unit system (``"step 30 ft/s"`` in US units); unchanged in SI.
+    report unit system (``"step 30 ft/s"`` in US units); unchanged in SI but for the areas,
+    which a sentence quotes at the precision of an area's cell in both systems (the analyses
+    quote them with 6 significant digits so that the conversion does not round twice).
 
     Examples
     --------
@@ -146,11 +159,17 @@ def report_text(text, units):
     'load scale 3,929,687 lbf in; peak jerk <= 6.365 ft/s^3'
     >>> report_text("k = -15.2 N m/rad, c = 2,000 N m s/rad", "US")
     'k = -134.5 lbf in/rad, c = 17,701 lbf in s/rad'
+    >>> report_text("chosen 2.52453 m^2 (fit 0.148632 m^2)", "SI")
+    'chosen 2.525 m^2 (fit 0.149 m^2)'
+    >>> report_text("chosen 2.52453 m^2", "US")
+    'chosen 27.17 ft^2'
     >>> report_text("density altitude 1524 m, cable 18.29 m", "US")
     'density altitude 5,000 ft, cable 720.1 in'
     """
-    if units != "US" or not isinstance(text, str) or not any(c.isdigit() for c in text):
+    if not isinstance(text, str) or not any(c.isdigit() for c in text):
         return text
+    if units != "US":
+        return _AREA.sub(lambda m: f"{_area_number(float(m.group(1)), 'SI')} m^2", text)
 
     def convert(match):
         kind = _TEXT_UNITS[match.group(2)]
@@ -162,6 +181,8 @@ def report_text(text, units):
             return f"{number / FOOT:,.0f} ft"
         if kind == "jerk":  # a rate of acceleration, in the acceleration's family
             return f"{_quoted_number(number / FOOT)} ft/s^3"
+        if kind == "area":  # at the precision of an area's cell (0.00 ft^2)
+            return f"{_area_number(number / FOOT ** 2, 'US')} ft^2"
         if kind == "rotational stiffness":  # a moment per radian, in the moments' unit
             return f"{_quoted_number(number / (POUND_FORCE * INCH))} lbf in/rad"
         unit = REPORT_UNITS["US"][kind]
