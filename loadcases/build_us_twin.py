@@ -214,7 +214,9 @@ def parameters(chute_area, chute_line):
         "campaign run length": (20, "s"), "campaign output interval": (0.5, "s"),
         "campaign stability map areas": (2, ""), "campaign stability map airspeeds": (1, ""),
         "campaign no-parachute helicopters": ("HC2", ""),
-        "campaign no-parachute ramps": ("20", "kt"), "campaign loads margin": (1.25, ""),
+        "campaign no-parachute ramps": ("20", "kt"),
+        "campaign no-parachute gust ramps": ("20, 30", "kt"),
+        "campaign no-parachute gust": (10, "ft/s"), "campaign loads margin": (1.25, ""),
     }
 
 

@@ -31,6 +31,8 @@ PARAMETERS = {
     "campaign stability map airspeeds": (3, ""),
     "campaign no-parachute helicopters": ("HC1, HC2", ""),
     "campaign no-parachute ramps": ("20, 30, 40", "kt"),
+    "campaign no-parachute gust ramps": ("20, 30", "kt"),
+    "campaign no-parachute gust": (10, "ft/s"),
     "campaign loads margin": (1.25, ""),
 }
 
@@ -39,7 +41,9 @@ NOTES = [
     "parachute areas, 1.0, 2.2 (the parachute sizing's proposal) and 3.0 x neutral, x 2 "
     "airspeeds x 2 manoeuvres, 60 s runs) on the example's own airframe "
     "and tables, with the HC1 and HC2 GENERIC samples flown without parachute under wind "
-    "ramps to 20, 30 and 40 kt. OPT-IN: 'run campaign' is no, so that 'slingloads run' stays "
+    "ramps to 20, 30 and 40 kt, the 20 and 30 kt ramps flown again with a 10 ft/s lateral "
+    "gust 10 s after the ramp ends (the paper's limit; a stable case shows its damping). "
+    "OPT-IN: 'run campaign' is no, so that 'slingloads run' stays "
     "quick; run it with 'slingloads campaign', or set 'run campaign' to yes to chain it "
     "before the loads. Finished runs are cached outside the output folder "
     "(docs/campaign.md), so a second run reuses them.",
