@@ -30,6 +30,7 @@ from hostile import (
 from openpyxl import load_workbook
 
 from slingloads.cli import main
+from slingloads.errors import InputError
 from slingloads.io.common import atomic
 from slingloads.io.common.atomic import (
     PAUSE_VARIABLE,
@@ -437,3 +438,18 @@ def test_written_files_get_the_mode_of_the_umask(tmp_path):
         assert target.stat().st_mode & 0o777 == 0o644
     finally:
         os.umask(old)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no named pipes here")
+def test_a_pipe_of_another_name_in_the_output_folder_is_refused_before_any_work(tmp_path):
+    """A named pipe in the output folder under a name no output has would be carried over
+    into the new set at publishing, where opening it could block: the check made before any
+    work (AtomicOutputs.check, which every command calls first) refuses it, naming it (before,
+    it was refused only once every report was computed)."""
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "notes.txt").write_text("kept")
+    os.mkfifo(out / "a-pipe")
+    with pytest.raises(InputError, match="special file") as info:
+        AtomicOutputs(out).check([f"{STEM}-loads.xlsx"])
+    assert str(out / "a-pipe") in str(info.value)

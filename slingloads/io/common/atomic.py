@@ -96,6 +96,12 @@ from slingloads.io.common.swap import (  # noqa: F401 - re-exported
 )
 from slingloads.limits import MAX_OUTPUT_ENTRIES
 
+#: Why an output folder holding a pipe, socket or device is refused (before any work, and
+#: again at publishing should one appear meanwhile).
+_SPECIAL_FILE = ("the output folder holds a special file (pipe, socket or device), which the "
+                 "report set would carry over into its new folder: write the reports to a "
+                 "folder of their own")
+
 
 class AtomicOutputs:
     """Collects output files in a staging folder and publishes them all at once.
@@ -250,6 +256,8 @@ class AtomicOutputs:
                                  "it must hold files only; write the reports to a folder of "
                                  "their own (e.g. a new sub-folder)",
                                  str(Path(self.out_dir) / entry.name))
+            if not (entry.is_symlink() or entry.is_file(follow_symlinks=False)):
+                raise InputError(_SPECIAL_FILE, str(Path(self.out_dir) / entry.name))
         if count > MAX_OUTPUT_ENTRIES:
             raise InputError(f"the output folder holds more than {MAX_OUTPUT_ENTRIES:,} "
                              "entries: write the reports to a folder of their own",
@@ -456,9 +464,7 @@ class AtomicOutputs:
                 except OSError:
                     shutil.copy2(source, target, follow_symlinks=False)
             else:
-                raise InputError("the output folder holds a special file (pipe, socket or "
-                                 "device): write the reports to a folder of their own",
-                                 source)
+                raise InputError(_SPECIAL_FILE, source)
             carried.append(name)
         return carried
 
