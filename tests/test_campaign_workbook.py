@@ -45,7 +45,7 @@ def base(tmp_path_factory):
         book["Study"][f"B{study_row(book, name)}"] = value
     # no ramps with a gust (their default 20, 30 kt would add 2 runs to every count below;
     # tests/test_ramp_gust.py flies them)
-    book["Study"].append(["campaign no-parachute gust ramps", "none", "kt", ""])
+    book["Study"][f"B{study_row(book, 'campaign no-parachute gust ramps')}"] = "none"
     rows = list(book["FuselageAero"].iter_rows(values_only=True))
     keep = [rows[0]] + [r for r in rows[1:] if r[0] % 10 == 0 and r[1] % 4 == 0]
     index = book.sheetnames.index("FuselageAero")
@@ -421,7 +421,7 @@ def test_ramps_with_a_gust_read_from_the_study(tmp_path):
 
     def rows(book):
         book["Study"][f"B{study_row(book, 'campaign no-parachute gust ramps')}"] = "30, 20"
-        book["Study"].append(["campaign no-parachute gust", 15, "ft/s", ""])
+        book["Study"][f"B{study_row(book, 'campaign no-parachute gust')}"] = 15
 
     study = read_study(workbook(tmp_path / "gust.xlsx", extra=rows)
                        ).inputs.campaign.campaign.no_parachute

@@ -256,7 +256,8 @@ class AtomicOutputs:
                                  "it must hold files only; write the reports to a folder of "
                                  "their own (e.g. a new sub-folder)",
                                  str(Path(self.out_dir) / entry.name))
-            if not (entry.is_symlink() or entry.is_file(follow_symlinks=False)):
+            if not (entry.is_symlink() or entry.is_file(follow_symlinks=False)
+                    or entry.name.casefold() == MANIFEST_NAME.casefold()):  # its own check
                 raise InputError(_SPECIAL_FILE, str(Path(self.out_dir) / entry.name))
         if count > MAX_OUTPUT_ENTRIES:
             raise InputError(f"the output folder holds more than {MAX_OUTPUT_ENTRIES:,} "
