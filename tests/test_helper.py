@@ -151,6 +151,12 @@ def _gone(pid):
     return state in ("Z", "X")  # a zombie is dead, waiting to be reaped
 
 
+def _python(code):
+    """``code`` run by a fresh Python process (its output captured, within the deadline)."""
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=DEADLINE)
+
+
 def test_a_helper_dies_with_its_parent():
     """A parent killed outright (SIGKILL: no clean-up) takes its helper with it."""
     code = ("import os, signal, sys\n"
@@ -158,8 +164,7 @@ def test_a_helper_dies_with_its_parent():
             "helper = Helper(1).start()\n"
             "print(helper.submit(os.getpid).result(), flush=True)\n"
             "os.kill(os.getpid(), signal.SIGKILL)\n")
-    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          timeout=DEADLINE)
+    proc = _python(code)
     assert proc.returncode == -signal.SIGKILL
     helper = int(proc.stdout.split()[0])
     wait_until(lambda: _gone(helper), None, "the end of the helper")
@@ -185,8 +190,7 @@ def test_a_helper_terminated_as_it_starts_ends_silently():
             "    codes.append(process.exitcode)\n"
             "    helper.close()\n"
             "print(codes, flush=True)\n")
-    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          timeout=DEADLINE)
+    proc = _python(code)
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.strip() == str([-signal.SIGTERM] * 20)
     assert "Traceback" not in proc.stderr and "parent handler" not in proc.stderr, proc.stderr

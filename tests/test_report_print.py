@@ -22,27 +22,6 @@ from hostile import IDENT_REPORTS, column_widths
 
 from slingloads.io.study import file_digest
 
-REPORTS = IDENT_REPORTS
-
-@pytest.fixture
-def workbook(ident_workbook):
-    return ident_workbook
-
-
-@pytest.fixture
-def run_dir(ident_run_report):
-    return ident_run_report
-
-
-@pytest.fixture
-def us_dir(ident_us_loads_report):
-    return ident_us_loads_report
-
-
-@pytest.fixture
-def campaign_dir(ident_campaign_report):
-    return ident_campaign_report
-
 
 def _fit(pages):
     """A ``pageSetup`` ``fitToWidth`` or ``fitToHeight`` as printed: absent means 1 (ECMA-376
@@ -84,17 +63,17 @@ def _check_fit(ws, where):
         assert scale / 100 * block <= A4_WIDTH_PX[ws.page_setup.orientation] * 1.01, where
 
 
-def _book(run_dir, report):
-    return openpyxl.load_workbook(run_dir / f"ident-{report}.xlsx")
+def _book(ident_run_report, report):
+    return openpyxl.load_workbook(ident_run_report / f"ident-{report}.xlsx")
 
 
-def test_print_setup_on_every_sheet(run_dir):
+def test_print_setup_on_every_sheet(ident_run_report):
     """Every sheet of every report is set up for print: A4 (paperSize 9), an orientation,
     one page wide (:func:`_check_fit`), a page header naming the report and
     the input file, and a footer with the run date, 'page &P of &N' and the version; every
     table sheet has frozen panes and repeats its header rows on every page."""
-    for report in REPORTS:
-        book = _book(run_dir, report)
+    for report in IDENT_REPORTS:
+        book = _book(ident_run_report, report)
         assert book.sheetnames[0] == "Cover"
         for ws in book.worksheets:
             where = f"{report}:{ws.title}"
@@ -108,27 +87,27 @@ def test_print_setup_on_every_sheet(run_dir):
             assert "slingloads" in ws.oddFooter.right.text, where
             if ws.title not in ("Cover", "Plots") and ws.max_column > 1:
                 assert ws.freeze_panes is not None, where
-        loads_cases = _book(run_dir, "loads")["LoadCases"]
+        loads_cases = _book(ident_run_report, "loads")["LoadCases"]
         assert loads_cases.print_title_rows is not None
         assert re.fullmatch(r"\$?1:\$?\d+", loads_cases.print_title_rows.replace("'", ""))
 
 
-def test_cover(run_dir, workbook):
+def test_cover(ident_run_report, ident_workbook):
     """The cover gives the input file with its SHA-256 (recomputed here from the file), the
     free fields read from the Study sheet (an ampersand kept as typed), the version, the run
     date, every other sheet of the workbook, and the conventions with a reference to
     docs/conventions.md."""
-    for report in REPORTS:
-        ws = _book(run_dir, report)["Cover"]
+    for report in IDENT_REPORTS:
+        ws = _book(ident_run_report, report)["Cover"]
         rows = [[c.value for c in r] for r in ws.iter_rows()]
         table = {r[0]: r[1] for r in rows if r[0] is not None and len(r) > 1}
         assert table["input workbook"] == "ident.xlsx"
-        assert table["input SHA-256"] == file_digest(workbook)
+        assert table["input SHA-256"] == file_digest(ident_workbook)
         assert table["author"] == "A. Author" and table["checker"] == "C. Checker & Co"
         assert table["document number"] == "DOC-42 A"
         assert table["slingloads version"] and table["run date"]
         assert table["input modified"] != "unknown"
-        sheets = _book(run_dir, report).sheetnames[1:]
+        sheets = _book(ident_run_report, report).sheetnames[1:]
         assert set(sheets) <= set(table), report
         text = " ".join(str(v) for r in rows for v in r if v)
         assert "docs/conventions.md" in text and "x aft" in text
@@ -166,11 +145,11 @@ def _cells(ws, header):
     raise AssertionError(f"no column {header!r} on {ws.title}")
 
 
-def test_number_formats_per_quantity(run_dir, us_dir):
+def test_number_formats_per_quantity(ident_run_report, ident_us_loads_report):
     """Forces print to the unit (#,##0), lengths in m to the millimetre (0.000) and in inches
     to the hundredth (0.00), masses to 0.1 (#,##0.0), angles to 0.1 deg, counts without
     decimals; booleans are yes / no; the full double is kept behind the format."""
-    si = _book(run_dir, "loads")
+    si = _book(ident_run_report, "loads")
     assert {c.number_format for c in _cells(si["Envelope"], "Vy max [N]")} == {"#,##0"}
     assert {c.number_format for c in _cells(si["Envelope"], "x [m]")} == {"0.000"}
     summary = {r[0].value: r for r in si["Summary"].iter_rows() if r[0].value}
@@ -179,22 +158,22 @@ def test_number_formats_per_quantity(run_dir, us_dir):
     assert summary["hook cone angle from the vertical"][1].number_format == "0.0"
     assert summary["load cases"][1].number_format == "0"
     assert summary["parachute"][1].value == "yes"
-    us = openpyxl.load_workbook(us_dir / "ident-loads.xlsx")
+    us = openpyxl.load_workbook(ident_us_loads_report / "ident-loads.xlsx")
     assert {c.number_format for c in _cells(us["Envelope"], "x [in]")} == {"0.00"}
     assert {c.number_format for c in _cells(us["Envelope"], "Mz max [lbf in]")} == {"#,##0"}
     mass = {r[0].value: r for r in us["Summary"].iter_rows() if r[0].value}["aircraft mass"]
     assert mass[1].number_format == "#,##0.0" and mass[2].value == "lb"
     assert mass[1].value == pytest.approx(2900.0 / 0.45359237, rel=1e-3)  # not rounded
-    chute = _book(run_dir, "chute")
+    chute = _book(ident_run_report, "chute")
     stable = _cells(chute["Sweep"], "all gusts stable")
     assert {c.value for c in stable} <= {"yes", "no"}
 
 
-def test_limit_or_ultimate_on_every_loads_sheet_and_plot(run_dir):
+def test_limit_or_ultimate_on_every_loads_sheet_and_plot(ident_run_report):
     """Every sheet of the loads report says in its page header or its first rows whether it
     holds LIMIT or ULTIMATE loads, and only the Ultimate sheet says ULTIMATE; the plot titles
     say LIMIT."""
-    book = _book(run_dir, "loads")
+    book = _book(ident_run_report, "loads")
     for ws in book.worksheets:
         first = " ".join(str(c.value) for r in ws.iter_rows(max_row=3) for c in r if c.value)
         said = ws.oddHeader.center.text + " " + first
@@ -202,11 +181,11 @@ def test_limit_or_ultimate_on_every_loads_sheet_and_plot(run_dir):
         assert ("ULTIMATE" in ws.oddHeader.center.text) == (ws.title == "Ultimate"), ws.title
 
 
-def test_csv_headers_in_one_style(run_dir):
+def test_csv_headers_in_one_style(ident_run_report):
     """Every CSV file of the run has headers in the SFBM file's style: a name of letters,
     digits and underscores, a physical quantity ending in its SI unit (_m, _N, _Nm, _s,
     _deg, _m2...); the SFBM file keeps exactly its columns."""
-    files = sorted(run_dir.glob("*.csv"))
+    files = sorted(ident_run_report.glob("*.csv"))
     assert {f.name for f in files} == {"ident-sfbm.csv", "ident-envelope.csv",
                                        "ident-lateral-histories.csv",
                                        "ident-chute-histories.csv",
@@ -216,19 +195,19 @@ def test_csv_headers_in_one_style(run_dir):
         for name in header:
             assert re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name), (f.name, name)
             assert "[" not in name and " " not in name
-    sfbm = (run_dir / "ident-sfbm.csv").read_text().splitlines()[0]
+    sfbm = (ident_run_report / "ident-sfbm.csv").read_text().splitlines()[0]
     assert sfbm == "case,station,x_m,Vx_N,Vy_N,Vz_N,Mx_Nm,My_Nm,Mz_Nm"
-    lateral = pd.read_csv(run_dir / "ident-lateral-histories.csv", nrows=2)
+    lateral = pd.read_csv(ident_run_report / "ident-lateral-histories.csv", nrows=2)
     assert {"t_s", "S_m", "Sdot_mps", "Sddot_mps2", "theta1_deg", "T_N"} <= set(lateral)
 
 
-def test_flags_hook_angle_and_previous_source(run_dir):
+def test_flags_hook_angle_and_previous_source(ident_run_report):
     """The example's Study asks for 30 deg with the lateral study in the same run: the
     Summary quotes the lateral study as evidence and the Study's previous-envelope source.
     Over its stated ranges and flyable motions the lateral study finds 22.2 deg (recommended
     33.2 deg with the 1.5 margin), more than 30 deg, so the loads' lateral hook cases are run
     at 33.2 deg = max(30, 33.2) and the Summary says which governs (no FLAG to rerun)."""
-    ws = _book(run_dir, "loads")["Summary"]
+    ws = _book(ident_run_report, "loads")["Summary"]
     text = " ".join(str(c.value) for r in ws.iter_rows(max_row=15) for c in r if c.value)
     assert "Lateral-step pendulum study of this run" in text
     assert "recommended design angle" in text
@@ -315,11 +294,11 @@ def test_libreoffice_pages_are_full(printed, tmp_path):
     assert not sparse, sparse
 
 
-def test_example_envelope_matches_loads(run_dir):
+def test_example_envelope_matches_loads(ident_run_report):
     """The wide Envelope table holds, for every station, the largest and smallest Vz over
     every case of the SFBM CSV file, with the case that gives them."""
-    csv = pd.read_csv(run_dir / "ident-sfbm.csv")
-    ws = _book(run_dir, "loads")["Envelope"]
+    csv = pd.read_csv(ident_run_report / "ident-sfbm.csv")
+    ws = _book(ident_run_report, "loads")["Envelope"]
     got = [c.value for c in _cells(ws, "Vz max [N]")][:len(csv["station"].unique())]
     want = csv.groupby("station", sort=False)["Vz_N"].max().to_numpy()
     np.testing.assert_allclose(np.asarray(got, float), want, rtol=1e-12, atol=1e-9)
@@ -369,13 +348,13 @@ def _check_print_ready(book, input_path, where):
     assert not general, (where, general[:5])
 
 
-def test_multibody_report_print_ready(run_dir, workbook):
+def test_multibody_report_print_ready(ident_run_report, ident_workbook):
     """The multibody report has the cover, print setup, frozen panes and unit formats of the
     other reports; the state matrix is scientific with its round-off written as 0 (the trim
     is symmetric: entries of 1e-17 couple the lateral and longitudinal states); the trim
     reads yes / no; the wide Metrics table is one column per run."""
-    book = _book(run_dir, "multibody")
-    _check_print_ready(book, workbook, "multibody")
+    book = _book(ident_run_report, "multibody")
+    _check_print_ready(book, ident_workbook, "multibody")
     matrix = book["StateMatrix"]
     numbers = [c for r in matrix.iter_rows() for c in r if isinstance(c.value, float)]
     assert {c.number_format for c in numbers} == {"0.00E+00;-0.00E+00;0"}
@@ -390,10 +369,10 @@ def test_multibody_report_print_ready(run_dir, workbook):
     assert heads and metrics.max_column <= 12
 
 
-def test_campaign_report_print_ready(campaign_dir):
+def test_campaign_report_print_ready(ident_campaign_report):
     """The campaign report has the cover, print setup, frozen panes and unit formats of the
     other reports, and its wide tables print in blocks each starting with the run id."""
-    out, path = campaign_dir
+    out, path = ident_campaign_report
     book = openpyxl.load_workbook(out / "ident-campaign.xlsx")
     _check_print_ready(book, path, "campaign")
     blocks = [book[n] for n in book.sheetnames if n.startswith("Metrics")]

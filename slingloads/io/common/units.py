@@ -137,8 +137,6 @@ def _quoted_number(value):
 #: Decimals of an area in a report, in a sentence as in its cells (formats.py: ``0.000``
 #: m^2, ``0.00`` ft^2), so that an area quoted in a note reads as the cell beside it.
 _AREA_DECIMALS = {"SI": 3, "US": 2}
-#: A quoted area in m^2 (a plain number, as the analyses write it).
-_AREA = re.compile(r"(?<![\w.^/,])(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?) ?m\^2(?![\w^/])")
 
 
 def _area_number(value, units):
@@ -169,7 +167,8 @@ def report_text(text, units):
     if not isinstance(text, str) or not any(c.isdigit() for c in text):
         return text
     if units != "US":
-        return _AREA.sub(lambda m: f"{_area_number(float(m.group(1)), 'SI')} m^2", text)
+        return _QUOTED.sub(lambda m: (f"{_area_number(float(m.group(1).replace(',', '')), 'SI')}"
+                                      " m^2" if m.group(2) == "m^2" else m.group(0)), text)
 
     def convert(match):
         kind = _TEXT_UNITS[match.group(2)]
