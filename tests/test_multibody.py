@@ -110,7 +110,9 @@ def test_static_stretch_in_hover():
 def test_trim_swing_angle_of_a_drag_only_body():
     """A body with drag only (CD = 1 on 2 m^2, no side force, lift or moment) trails at
     atan(D / W). At 80 KEAS and 5000 ft density altitude q = 1/2 rho0 V_EAS^2 = 1037.5 Pa, so
-    D = 2074.9 N and the swing from the vertical is atan(2074.9 / (2900 g0)) = 4.173 deg."""
+    D = 2074.9 N and the swing from the vertical is atan(2074.9 / (2900 g0)) = 4.173 deg.
+    Without any moment every heading is an equilibrium (limit case): the trim is flagged
+    neutral in yaw, held at the start, and its message says so."""
     alpha, beta = np.radians([-40.0, 40.0]), np.radians([-180.0, 180.0])
     coeffs = {c: np.zeros((2, 2)) for c in FUSELAGE_COEFFICIENTS}
     coeffs["CD"] = np.ones((2, 2))
@@ -121,6 +123,8 @@ def test_trim_swing_angle_of_a_drag_only_body():
     assert tr.converged
     assert_allclose(np.tan(tr.swing_angle), drag / (MASS * G0), rtol=1e-8)
     assert_allclose(np.degrees(tr.swing_angle), 4.173, atol=1e-3)
+    assert tr.neutral == "yaw" and "nothing fixes the yaw" in tr.message
+    assert_allclose(tr.attitude[0], 0.0, atol=1e-9)
 
 
 # ------------------------------------------------------------------------ small oscillations

@@ -80,12 +80,16 @@ class TowedAttitude:
 
     @property
     def converged(self):
-        """True when a trim was found."""
-        return bool(self.trim.converged)
+        """True when a trim was found and it is isolated: an equilibrium that leaves an
+        unknown free (no yawing moment at all: every heading) fixes no attitude to load."""
+        return bool(self.trim.converged) and not self.trim.neutral
 
     @property
     def message(self):
         """"trimmed", or why there is no trim."""
+        if self.trim.converged and self.trim.neutral:
+            return (f"the equilibrium is not unique: nothing fixes the {self.trim.neutral} "
+                    "(no restoring moment: neutral), so no attitude is trimmed")
         return str(self.trim.message)
 
     def _angles(self):

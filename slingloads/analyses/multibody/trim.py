@@ -54,6 +54,10 @@ from slingloads.models.multibody.rigid_body import (
 
 #: Residual (scaled accelerations) below which a trim is accepted. [-]
 TRIM_TOLERANCE = 1e-9
+#: Smallest singular value of a trim's Jacobian, relative to its largest, at or below which
+#: the equilibrium is not isolated (a free unknown: round-off of the central differences,
+#: about 1e-9, not a weak stiffness: a parachute's yaw stiffness gives about 1e-2). [-]
+NEUTRAL_TOLERANCE = 1e-7
 #: Real part [1/s] above which an eigenvalue counts as unstable (round-off allowance): the
 #: rule of every model (:data:`~slingloads.analyses.verdicts.EIGENVALUE_TOLERANCE`).
 STABILITY_TOLERANCE = vd.EIGENVALUE_TOLERANCE
@@ -147,6 +151,10 @@ class Trim:
         Largest scaled acceleration left. [-]
     info : ndarray
         Reported quantities at trim (:data:`~slingloads.models.multibody.equations.INFO`).
+    neutral : str
+        The unknown the equilibrium leaves free ("yaw" for an airframe without any yawing
+        moment: an equilibrium at every heading), "" when it is isolated; a neutral trim
+        holds the free unknown where the search started.
     """
 
     system: object
@@ -157,6 +165,7 @@ class Trim:
     message: str
     residual: float
     info: np.ndarray
+    neutral: str = ""
 
     def _require(self):
         if not self.converged:
@@ -434,6 +443,40 @@ class _TrimProblem:
             x[16:18] = u[k + 2:k + 4]
         return x
 
+    def names(self):
+        """Names of the unknowns, in their order."""
+        angles = ["pitch", "roll"] if self.hover else ["yaw", "pitch", "roll"]
+        line = ["parachute line pitch", "parachute line yaw"] if self.hinged else []
+        return ["hub position x", "hub position y", "cable tension", *angles, *line]
+
+    def jacobian(self, u):
+        """Jacobian (n, n) of the scaled residuals at unknowns ``u``, by central
+        differences (steps 1e-7 of each unknown, at least 1e-7 absolute)."""
+        n = u.size
+        steps = np.diag(1e-7 * np.maximum(1.0, np.abs(u)))
+        rates, _, _ = evaluate_many(self.states(np.vstack([u + steps, u - steps])),
+                                    self.params, self.drive, self.tables)
+        scaled = self.scaled(rates)
+        return ((scaled[:n] - scaled[n:]) / (2.0 * np.diag(steps)[:, None])).T
+
+    def undetermined(self, u):
+        """The unknowns the equations leave free at ``u`` (their names, the angles first,
+        joined by "and"), or "" when the equilibrium is isolated: the Jacobian's smallest
+        singular value within round-off (:data:`NEUTRAL_TOLERANCE` of its largest) of zero,
+        the free unknowns the components of its singular vector of at least a tenth of its
+        largest. An airframe without any yawing moment (no fin, no parachute, a body of
+        revolution) has an equilibrium at every heading (with a side force in body axes, at
+        a lateral hub position of its own): no isolated trim."""
+        jac = self.jacobian(u)
+        if not np.all(np.isfinite(jac)):
+            return ""
+        _, sv, vt = np.linalg.svd(jac)
+        if sv[0] == 0.0 or sv[-1] > NEUTRAL_TOLERANCE * sv[0]:
+            return ""
+        weight = np.abs(vt[-1])
+        names = [n for n, w in zip(self.names(), weight, strict=True) if w >= 0.1 * weight.max()]
+        return " and ".join(sorted(names, key=lambda n: n.startswith(("hub", "cable"))))
+
     def scaled(self, rates):
         """Scaled residuals of state derivatives (m, 20) -> (m, n)."""
         return np.atleast_2d(rates)[:, self.rows] / self.scale[self.rows]
@@ -457,7 +500,12 @@ class _TrimProblem:
         elif info[_INFO["tension"]] <= 0:
             converged = False
             message = "the equilibrium found needs a slack cable"
-        return Trim(self.system, self.eas, x, self.drive, converged, message, res, info)
+        free = self.undetermined(u) if converged else ""
+        if free:
+            message = (f"trimmed, neutral: nothing fixes the {free} (no restoring force or "
+                       "moment), held where the search started")
+        return Trim(self.system, self.eas, x, self.drive, converged, message, res, info,
+                    free)
 
 
 def _cg_from_hub(u, quaternion, hub, length, stretch):
@@ -482,14 +530,7 @@ def _solve_one(problem):
                  False)
         return problem.scaled(dx)[0]
 
-    def jacobian(u):
-        n = u.size
-        steps = np.diag(1e-7 * np.maximum(1.0, np.abs(u)))
-        rates, _, _ = evaluate_many(problem.states(np.vstack([u + steps, u - steps])),
-                                    problem.params, problem.drive, problem.tables)
-        scaled = problem.scaled(rates)
-        return ((scaled[:n] - scaled[n:]) / (2.0 * np.diag(steps)[:, None])).T
-
+    jacobian = problem.jacobian
     solution = root(residual, problem.guess, jac=jacobian, method="hybr",
                     options={"xtol": 1e-13})
     found = problem.result(solution.x, solution.message)
