@@ -24,6 +24,7 @@ import importlib
 import os
 import random
 import socket
+import struct
 import threading
 import time
 import tracemalloc
@@ -155,8 +156,10 @@ def _drip(conn):
 
 def _server(kind):
     """A fake scheduler on 127.0.0.1: 'dead' (nothing listens), 'silent' (accepts, never
-    answers), 'garbage' (accepts and sends bytes that are no Dask message) or 'drip'
-    (accepts and sends a byte every 0.2 s, never a whole message)."""
+    answers), 'garbage' (accepts and sends bytes that are no Dask message), 'drip'
+    (accepts and sends a byte every 0.2 s, never a whole message) or 'huge' (accepts and
+    announces a message of 4 GiB, the 8-byte length prefix of Dask's TCP comm, then holds
+    the connection silent)."""
     listener = socket.socket()
     listener.bind(("127.0.0.1", 0))
     listener.listen(8)
@@ -180,6 +183,12 @@ def _server(kind):
                     pass
             if kind == "drip":  # a byte now and then, never a whole message
                 threading.Thread(target=_drip, args=(conn,), daemon=True).start()
+
+            if kind == "huge":  # a length prefix of 4 GiB, then nothing
+                try:
+                    conn.sendall(struct.pack("Q", 4 * 2**30))
+                except OSError:
+                    pass
 
     threading.Thread(target=serve, daemon=True).start()
 
@@ -211,6 +220,78 @@ def test_a_dead_silent_or_garbage_scheduler_is_refused_within_its_time_out(kind,
     assert finished and isinstance(value, InputError), value
     assert fragment in str(value) and str(port) in str(value)
     assert elapsed < 2.5, elapsed
+
+
+def test_a_scheduler_announcing_a_huge_message_is_refused_unread():
+    """A server announcing a 4 GiB message as its handshake: refused at once, the announced
+    size named, and nothing near it allocated (Python's allocation tracer, which numpy
+    reports its buffers to: distributed's comm allocated the announced size, 4 GiB, before
+    reading a byte of it)."""
+    pytest.importorskip("distributed")
+    port, stop = _server("huge")
+    tracemalloc.start()
+    try:
+        finished, value = _within(8, lambda: DaskCluster(f"tcp://127.0.0.1:{port}", 3.0))
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+        stop()
+    assert finished and isinstance(value, InputError), value
+    assert "does not answer as a Dask scheduler" in str(value), value
+    assert "4,294,967,296 bytes" in str(value) and str(port) in str(value)
+    assert peak < 64 * 2**20, peak
+
+
+def test_the_run_command_refuses_a_huge_announcement_with_nothing_written(dyn, tmp_path,
+                                                                          capsys):
+    """`slingloads run` with the campaign on and --scheduler at a server announcing 4 GiB:
+    exit 2 (input error), the address and the size in the message, no --out, no cache."""
+    pytest.importorskip("distributed")
+    port, stop = _server("huge")
+    out, cache = tmp_path / "out", tmp_path / "cache"
+    try:
+        code = main(["run", str(dyn), "--out", str(out), "--cache", str(cache), "--quiet",
+                     "--scheduler", f"tcp://127.0.0.1:{port}", "--scheduler-timeout", "3"])
+    finally:
+        stop()
+    err = capsys.readouterr().err
+    assert code == 2, err
+    assert f"127.0.0.1:{port}" in err and "4,294,967,296 bytes" in err, err
+    assert not out.exists() and not cache.exists()
+
+
+def test_the_first_exchange_speaks_the_wire_format_of_distributed():
+    """The hand-written handshake reader against distributed's own writer: a message that
+    ``distributed.comm.tcp`` frames (``to_frames`` and its length header) decodes to the
+    same mapping; a first frame longer than its message is refused."""
+    pytest.importorskip("distributed")
+    from distributed.comm.tcp import _add_frames_header
+    from distributed.comm.utils import to_frames
+
+    from slingloads.analyses.campaign import probe
+
+    message = {"compression": None, "python": (3, 11, 4), "pickle-protocol": 5,
+               "type": "Scheduler", "workers": {"tcp://10.0.0.1:1": {"nthreads": 4}}}
+    frames = asyncio_run(to_frames(message))
+    frames, _, _ = _add_frames_header(frames)
+    wire = b"".join(bytes(f) for f in frames)
+    a, b = socket.socketpair()
+    try:
+        a.sendall(wire)
+        got = probe._read(b, probe._Deadline(2.0))
+        a.sendall(struct.pack("QQQ", 16, 1, 10**6))
+        with pytest.raises(probe.NotAScheduler, match="first frame is longer"):
+            probe._read(b, probe._Deadline(2.0))
+    finally:
+        a.close()
+        b.close()
+    assert got == {**message, "workers": {"tcp://10.0.0.1:1": {"nthreads": 4}}}
+
+
+def asyncio_run(coroutine):
+    import asyncio
+
+    return asyncio.run(coroutine)
 
 
 def test_a_real_scheduler_is_accepted_and_a_stopped_one_is_noticed_in_time():

@@ -308,7 +308,8 @@ def _within(seconds, call, *args):
 
 async def _identity(address, timeout):
     """Connect to ``address``, exchange the comm handshake and ask the scheduler who it is,
-    all within ``timeout`` seconds; the reply, or an exception."""
+    all within ``timeout`` seconds, with ``distributed``'s own comm (for the protocols that
+    :mod:`.probe` does not speak); the reply, or an exception."""
     import asyncio
 
     from distributed.comm import connect
@@ -327,12 +328,21 @@ async def _identity(address, timeout):
 def _probe(address, timeout):
     """What is wrong with the scheduler at ``address``, in words, or None: it must answer the
     ``identity`` request as a Dask scheduler within ``timeout`` seconds (connection, handshake
-    and reply; a silent server is given up at the deadline, a garbage-speaking one at once)."""
+    and reply; a silent server is given up at the deadline, a garbage-speaking one at once).
+    Over tcp and tls the exchange is :func:`.probe.identity` (bounded memory: a message
+    announced longer than :data:`.probe.MAX_PROBE_MESSAGE` is refused unread)."""
     import asyncio
 
-    done, value = _within(timeout + 0.2, lambda: asyncio.run(_identity(address, timeout)))
+    from . import probe
+
+    if probe.split_address(address)[0] in probe.SPOKEN:
+        done, value = _within(timeout + 0.2, probe.identity, address, timeout)
+    else:
+        done, value = _within(timeout + 0.2, lambda: asyncio.run(_identity(address, timeout)))
     if not done or isinstance(value, (TimeoutError, asyncio.TimeoutError)):
         return f"no answer within {timeout:g} s"
+    if isinstance(value, probe.NotAScheduler):
+        return f"the server at this address does not answer as a Dask scheduler ({value})"
     if isinstance(value, OSError):
         return f"could not connect ({type(value).__name__}: {value})"
     if isinstance(value, BaseException):
