@@ -798,6 +798,106 @@ def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(d
     pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
 
 
+_RELEASE = threading.Event()
+_CALLS = []
+
+
+def _hung_after_one(jobs, settings, threads=None):
+    """run_batch as a worker that computes its first batch, then accepts the others and
+    never returns them (until the test releases it)."""
+    _CALLS.append(1)
+    if len(_CALLS) == 1:
+        return worker.run_batch(jobs, settings, threads)
+    _RELEASE.wait(30)
+    raise RuntimeError("released")
+
+
+def test_the_longest_a_batch_is_waited_for_by_hand():
+    """batch_seconds by hand: 20 runs of 60 s at a fixed 0.01 s are 120,000 run-steps, at
+    1e-4 s each 12 s; with the adaptive step the floor of 1e-3 s gives 1,200,000 run-steps,
+    less than the 3,000,000 the stiffness check lets a batch force: 300 s."""
+    assert execution.batch_seconds({"t_end": 60.0, "dt": 0.01}, 20) == pytest.approx(12.0)
+    assert execution.batch_seconds({"t_end": 60.0, "dt": None}, 20) == pytest.approx(300.0)
+    assert execution.batch_seconds({"t_end": 60.0, "dt": None}, 100) == pytest.approx(600.0)
+
+
+def test_a_worker_that_never_returns_a_batch_ends_the_campaign_in_its_bound(dyn, tmp_path,
+                                                                            monkeypatch):
+    """A local Dask cluster (worker threads, loopback TCP) whose worker computes the first
+    of 8 one-run batches and then holds the others for ever, while the scheduler answers
+    and shows the worker (so the liveness checks all pass): with the allowances of the
+    bound set to nothing (no start time, 1e-9 s a run-step), the campaign ends with an
+    environment error once no batch has come back for the 1 s time-out (where it used to wait
+    for ever), the first run stored; the resume on the same cache (in this process) finds it
+    and gives the metrics of an uninterrupted run."""
+    import contextlib
+
+    distributed = pytest.importorskip("distributed")
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    monkeypatch.setattr(execution, "WORKER_START_SECONDS", 0.0)
+    monkeypatch.setattr(execution, "RUN_STEP_SECONDS", 1e-9)
+    monkeypatch.setattr(execution, "run_batch", _hung_after_one)
+    _CALLS.clear()
+    _RELEASE.clear()
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    try:
+        executor = DaskCluster(cluster.scheduler_address, 1.0)
+        start = time.monotonic()
+        with pytest.raises(OutputError, match="no batch has come back") as caught:
+            run_campaign(campaign, executor=executor, store=RunCache(tmp_path / "cache"),
+                         batch_size=1)
+        elapsed = time.monotonic() - start
+    finally:
+        _RELEASE.set()
+        with contextlib.suppress(TimeoutError, OSError):
+            cluster.close(timeout=2)
+    assert "run again to resume" in str(caught.value) and executor.stall < 1.1
+    assert elapsed < 8.0, elapsed
+    assert not list((tmp_path / "cache").rglob(".part-*"))
+    monkeypatch.undo()
+    resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
+    assert resumed.execution.cached == 1
+    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+
+
+def test_the_campaign_command_with_a_hung_worker_exits_with_out_intact(dyn, tmp_path,
+                                                                       monkeypatch, capsys):
+    """The campaign command on a local cluster whose worker holds every batch (the bound's
+    allowances set to nothing, time-out 1 s): exit 1 (environment) with the message, the
+    earlier report in --out byte for byte, no temporary file in the cache."""
+    import contextlib
+
+    from hostile import publish_earlier
+
+    distributed = pytest.importorskip("distributed")
+    monkeypatch.setattr(execution, "WORKER_START_SECONDS", 0.0)
+    monkeypatch.setattr(execution, "RUN_STEP_SECONDS", 1e-9)
+    monkeypatch.setattr(execution, "run_batch", _hung_after_one)
+    _CALLS[:] = [1]  # every batch held
+    _RELEASE.clear()
+    out, cache = tmp_path / "out", tmp_path / "cache"
+    publish_earlier(out, {"dyn-campaign.xlsx": b"an earlier report"})
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    try:
+        code = main(["campaign", str(dyn), "--out", str(out), "--cache", str(cache),
+                     "--quiet", "--scheduler", cluster.scheduler_address,
+                     "--scheduler-timeout", "1"])
+    finally:
+        _RELEASE.set()
+        with contextlib.suppress(TimeoutError, OSError):
+            cluster.close(timeout=2)
+    err = capsys.readouterr().err
+    assert code == 1 and "no batch has come back from the Dask cluster" in err, err
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert not list(cache.rglob(".part-*")) and not list(cache.rglob("*.parquet"))
+
+
 @pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
 def test_a_fall_back_mid_campaign_still_reads_the_runs_found_before(tmp_path):
     """Two runs: one stored, the other's shard folder a named pipe (so its entry cannot be
