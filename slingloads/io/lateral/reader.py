@@ -61,6 +61,14 @@ from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 from slingloads.runs.lateral import LateralInputs
 
+#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
+#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
+CHOICES = {
+    "lateral cable model": CABLE_MODELS,
+    "lateral history method": SOLVER_METHODS,
+    "lateral damping source": DAMPING_SOURCES,
+}
+
 ANALYSIS = "lateral"
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
 #: Longest time history (LateralHistory id or CSV file). [s]
@@ -91,7 +99,7 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule.
     """
     margin = params("lateral design-angle margin")
-    model = params.choice("lateral cable model", CABLE_MODELS)
+    model = params.choice("lateral cable model", CHOICES)
     ea = params("lateral cable EA")
     if model == "elastic":
         cable_ea = params.positive("lateral cable EA")
@@ -107,7 +115,7 @@ def read(reader, params, study):
     if t_end > 0 and step > 0:
         params.check("lateral RK4 step", step < t_end,
                "'lateral RK4 step' must be shorter than 'lateral simulation time'")
-    method = params.choice("lateral history method", SOLVER_METHODS)
+    method = params.choice("lateral history method", CHOICES)
     rtol = params.positive("lateral history rtol")
     output = params.positive("lateral history output step")
     solver = SolverSettings(t_end=t_end if t_end > 0 else None,
@@ -138,7 +146,7 @@ def read(reader, params, study):
 def _damping(reader, params, study):
     """The damping of the 'lateral damping ...' rows, or derived from the aerodynamic
     tables at 'lateral airspeed EAS' (zero in hover)."""
-    source = params.choice("lateral damping source", DAMPING_SOURCES)
+    source = params.choice("lateral damping source", CHOICES)
     lateral = params.positive("lateral damping", allow_zero=True)
     roll = params.positive("lateral roll damping", allow_zero=True)
     speed = params.positive("lateral airspeed EAS", allow_zero=True)
