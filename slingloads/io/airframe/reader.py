@@ -17,7 +17,7 @@ from slingloads.io.airframe.schema import HARDPOINT_KINDS, PLATE_FORCE_COEFFICIE
 from slingloads.io.common.atomic import safe_file_part
 from slingloads.io.common.locate import Place, column_quantity, located, quantity, quantity_range
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.table import cell_name, check_unique
+from slingloads.io.common.table import cell_name
 from slingloads.limits import MAX_AIRFRAME_SIZE
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import (
@@ -65,7 +65,6 @@ def read_airframe(reader, params):
     """
     items, items_t = _mass_items(reader)
     stations = reader.table(_SPEC["Stations"])
-    check_unique(reader, stations, "id")
     _check_file_names(stations, "id", "station")
     x = stations["x"]
     for i in range(1, len(x)):
@@ -158,7 +157,6 @@ def _check_stations_span(reader, stations, items_t, hp_t, airframe):
 
 def _mass_items(reader):
     items_t = reader.table(_SPEC["MassItems"])
-    check_unique(reader, items_t, "id")
     masses = items_t["mass"]
     inertia = np.zeros((len(masses), 3, 3))
     present = []
@@ -224,7 +222,6 @@ def _check_extent(items_t, position):
 def _hardpoint_rows(reader, params, items_t, items, axis):
     """The Hardpoints table and its rows by kind: ``{kind: [(id, position, weight, row)]}``."""
     hp_t = reader.table(_SPEC["Hardpoints"])
-    check_unique(reader, hp_t, "id")
     points = {k: [] for k in HARDPOINT_KINDS}
     for i, kind in enumerate(hp_t["kind"]):
         k = kind.strip().lower()

@@ -21,7 +21,6 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.towed_attitude import YAW_AXES
-from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -205,7 +204,6 @@ def _masses(reader):
     for i in range(len(t)):
         with located(t, default="mass", index=i):
             out.append(MassCase(t["mass case"][i], t["mass"][i]))
-    check_unique(t, "mass case")
     return tuple(out)
 
 

@@ -29,7 +29,6 @@ from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
 from slingloads.io.common.referenced import csv_columns
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.table import check_unique
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
     MIN_ROLL_GYRATION,
@@ -269,7 +268,6 @@ def _bodies(reader, study):
     if not reader.has_sheet("LateralBodies"):
         return (_airframe_body(reader, study),), "MassItems"
     t = reader.table(_SPEC["LateralBodies"])
-    check_unique(reader, t, "id")
     bodies = []
     fields = {"roll_inertia": "roll inertia", "cg_below_hub": "CG below hub"}
     for i, name in enumerate(t["id"]):
@@ -379,7 +377,6 @@ def _motion_type(reader, t, i):
 
 def _motions(reader, histories):
     t = _require(reader, "LateralMotions")
-    check_unique(reader, t, "id")
 
     def number(column, i):
         return float(t[column][i]) if t.has(column) else np.nan

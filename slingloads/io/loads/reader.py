@@ -40,7 +40,6 @@ from slingloads.io.airframe.reader import (
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import Place, column_quantity, located, place_error
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.table import check_unique
 from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
 from slingloads.io.loads.schema import SHEETS
 from slingloads.limits import MAX_CASE_POINTS, MAX_LOAD_CASES, MAX_SFBM_ROWS
@@ -96,7 +95,6 @@ def read(reader, params, study):
         parachute = read_parachute(reader, params, chute_area, _PARACHUTE_PARAMETERS)
     if reader.has_sheet("AeroEnvelope"):
         t = reader.table(_SPEC["AeroEnvelope"])
-        check_unique(reader, t, "id")
         for i, point in enumerate(t["id"]):
             if point.casefold() == NO_AERO.casefold():
                 raise t.error("id", i, f"{NO_AERO!r} is reserved: in LoadCases, aero "
@@ -209,7 +207,6 @@ def _listed_cases(reader, params, hook, envelope, parachute, generate):
                                "matrix' is no and there is no LoadCases sheet")
         return ()
     t = reader.table(_SPEC["LoadCases"])
-    check_unique(reader, t, "id")
     with located(params, default="hook azimuths"):
         directions = list(hook_directions(hook)["hook"])
     valid_hooks = [*directions, TOWED, NO_HOOK]

@@ -22,7 +22,6 @@ from slingloads.analyses.multibody.manoeuvres import (
     Manoeuvre,
     paper_manoeuvres,
 )
-from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -312,7 +311,6 @@ def read_manoeuvres(reader, params, system, t_end):
         return tuple(paper_manoeuvres(system.density_altitude)), "the paper's list"
     t = reader.table(_SPEC["MultibodyManoeuvres"])
     rows = _Rows(reader, t)
-    check_unique(t, "name")
     out = []
     for i in range(len(t)):
         name = str(t["name"][i]).strip()
