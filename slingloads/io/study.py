@@ -8,6 +8,7 @@ import hashlib
 from dataclasses import dataclass, field
 
 from slingloads.errors import ErrorCollector
+from slingloads.io.airframe.reader import CHOICES as AIRFRAME_CHOICES
 from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
@@ -148,6 +149,8 @@ def _build(reader, path, only, sha256, on_read=None):
     params = errors.call(StudyParameters, reader, all_parameters(), errors)
     rows_read = not errors
     if params is not None:  # the rows every analysis checks on the Study sheet alone, run or not
+        for name, valid in AIRFRAME_CHOICES.items():
+            errors.call(params.choice, name, valid)
         for analysis in ANALYSES:
             analysis.check_rows(params, errors)
     for sheet in AIRFRAME_SHEETS.values():  # every cell of the airframe's sheets, at once

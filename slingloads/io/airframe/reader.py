@@ -32,6 +32,15 @@ from slingloads.models.airframe import Airframe, Hardpoints, MassItems
 from slingloads.models.multibody.parachute_line import line_reach
 from slingloads.models.parachute import PARACHUTE_AXES, PARACHUTE_CD_MAX, Parachute
 
+#: Valid values of each choice row of the airframe's Study rows (case ignored), checked
+#: with the other Study rows (:func:`slingloads.io.study.read_study`).
+CHOICES = {
+    "fuselage force axes": tuple(FORCE_AXES),
+    "fuselage moment axes": MOMENT_AXES,
+    "fin axes": FIN_AXES,
+    "parachute table axes": tuple(PARACHUTE_AXES),
+}
+
 _SPEC = {s.name: s for s in SHEETS}
 
 #: Study parameters of the parachute read with its CD table, by Parachute argument.
@@ -335,8 +344,8 @@ def read_fuselage_aero(reader, params, refs):
                            cell="B1")
     area = params.positive("fuselage reference area")
     length = params.positive("fuselage reference length")
-    force_axes = params.choice("fuselage force axes", tuple(FORCE_AXES))
-    moment_axes = params.choice("fuselage moment axes", MOMENT_AXES)
+    force_axes = params.choice("fuselage force axes", CHOICES)
+    moment_axes = params.choice("fuselage moment axes", CHOICES)
     columns = fuselage_columns(force_axes)
     _columns_match(reader, t, columns, ("CD", "CL", "CX", "CZ"),
                    f"'fuselage force axes' is {force_axes!r}")
@@ -481,7 +490,7 @@ def read_fin_aero(reader, params, refs):
                            sheet="Hardpoints", cell="B1")
     area = params.positive("fin area")
     eff = params("fin efficiency")
-    axes = params.choice("fin axes", FIN_AXES)
+    axes = params.choice("fin axes", CHOICES)
     with located(t):
         table = Table1D(t["beta"], {"CY": t["CY"]}, angle_name="beta", what="fin")
     with located(params, {"efficiency": "fin efficiency", "area": "fin area"},
@@ -543,7 +552,7 @@ def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
     -------
     Parachute
     """
-    axes = params.choice("parachute table axes", tuple(PARACHUTE_AXES))
+    axes = params.choice("parachute table axes", CHOICES)
     cd = read_parachute_cd(reader, axes)  # checked at its cells
     for name, arg in parameters.items():  # each with the default table: only its own error
         with located(params, default=name):
