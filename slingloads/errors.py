@@ -155,6 +155,7 @@ class ErrorCollector:
         self.errors = []
         self.limit = limit
         self._seen = set()
+        self._stop = None  # the error that stopped the reading, passed on through call()
 
     def __bool__(self):
         return bool(self.errors)
@@ -175,7 +176,8 @@ class ErrorCollector:
             self._seen.add(text)
             self.errors.append(one)
             if len(self.errors) > self.limit:
-                raise InputErrors(self.errors[:self.limit], complete=False)
+                self._stop = InputErrors(self.errors[:self.limit], complete=False)
+                raise self._stop
 
     def call(self, step, *args, **kwargs):
         """``step(*args, **kwargs)``, or None after gathering the :class:`InputError` it
@@ -183,6 +185,8 @@ class ErrorCollector:
         try:
             return step(*args, **kwargs)
         except InputError as err:
+            if err is self._stop:  # the limit reached within the step (a nested call)
+                raise
             self.add(err)
             return None
 

@@ -2,7 +2,9 @@
 surrounding spaces.
 
 Guarantees: every id column of every input sheet (loads cases and points, stations, mass items,
-hardpoints, lateral motions and mass cases, multibody manoeuvres, campaign mass cases) and the
+hardpoints, lateral motions and bodies, multibody manoeuvres, campaign mass cases: the ``ids``
+of each sheet's :class:`~slingloads.io.common.schema.TableSheet`, checked in one place, by the
+workbook reader as the sheet reads) and the
 names the campaign's Python API takes are checked with :func:`id_key`, so ``NOSE`` and
 ``nose``, ``max`` and ``MAX`` are one id everywhere: a report (and a case-insensitive file
 system holding file names made from ids) could not tell them apart. Numbers compare as numbers.

@@ -147,3 +147,55 @@ def test_the_message_of_many_errors_is_bounded(tmp_path):
     assert text.count(str(path)) == 1
     assert len(text) < MAX_MESSAGE_CHARS + 400
     assert "more (fix these first)" in text or len(info.value.errors) * 80 < MAX_MESSAGE_CHARS
+
+
+def test_rows_of_an_analysis_not_run_are_checked_with_the_others(tmp_path, capsys):
+    """'run campaign' = no and 'run lateral' = no: a campaign list with a text in it, a
+    lateral choice that is no choice and a bad campaign scheduler address are named with a
+    bad Study number of an analysis that runs, a bad airframe choice (read after the Study
+    sheet) and a bad cell of a sheet, in one refusal
+    (the rule of docs/inputs-and-outputs.md section 4: every mistake at once; a row of an
+    analysis not run is an input of the study all the same). The list used to be read only
+    when the campaign ran: alone it passed, beside another error it was not named."""
+    from hostile import study_row
+
+    book = openpyxl.load_workbook(light_example())
+    edits = {"run lateral": "no", "campaign no-parachute gust ramps": "20, fast",
+             "lateral cable model": "elastc", "multibody output interval": -1.0,
+             "campaign scheduler": "tcp://host:99999", "fin axes": "sideways"}
+    for name, value in edits.items():
+        book["Study"][f"B{study_row(book, name)}"] = value
+    book["MassItems"]["C2"] = "heavy"
+    path = tmp_path / "rows.xlsx"
+    book.save(path)
+    with pytest.raises(InputErrors) as info:
+        read_study(path)
+    cells = [(e.sheet, e.cell) for e in info.value.errors]
+    row = {name: f"B{study_row(book, name)}" for name in edits}
+    assert cells == [("Study", row["multibody output interval"]), ("Study", row["fin axes"]),
+                     ("Study", row["lateral cable model"]),
+                     ("Study", row["campaign no-parachute gust ramps"]),
+                     ("Study", row["campaign scheduler"]), ("MassItems", "C2")], cells
+    text = str(info.value)
+    for fragment in ("value 'fast'", "'elastc'", "port must be in [1, 65535]", "'heavy'",
+                     "'sideways'"):
+        assert fragment in text, text
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--quiet"]) == 2
+    assert "6 errors in the input" in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_bad_row_of_an_analysis_not_run_is_refused_alone(tmp_path):
+    """The campaign's gust-ramp list with a text in it, 'run campaign' = no, no other
+    mistake: refused at its cell (it used to pass unread)."""
+    from hostile import study_row
+
+    book = openpyxl.load_workbook(light_example())
+    cell = f"B{study_row(book, 'campaign no-parachute gust ramps')}"
+    book["Study"][cell] = "20, fast"
+    path = tmp_path / "one.xlsx"
+    book.save(path)
+    with pytest.raises(InputError) as info:
+        read_study(path)
+    assert (info.value.sheet, info.value.cell) == ("Study", cell)
+    assert "value 'fast'" in str(info.value)

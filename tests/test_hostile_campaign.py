@@ -24,6 +24,7 @@ import importlib
 import os
 import random
 import socket
+import struct
 import threading
 import time
 import tracemalloc
@@ -155,8 +156,10 @@ def _drip(conn):
 
 def _server(kind):
     """A fake scheduler on 127.0.0.1: 'dead' (nothing listens), 'silent' (accepts, never
-    answers), 'garbage' (accepts and sends bytes that are no Dask message) or 'drip'
-    (accepts and sends a byte every 0.2 s, never a whole message)."""
+    answers), 'garbage' (accepts and sends bytes that are no Dask message), 'drip'
+    (accepts and sends a byte every 0.2 s, never a whole message) or 'huge' (accepts and
+    announces a message of 4 GiB, the 8-byte length prefix of Dask's TCP comm, then holds
+    the connection silent)."""
     listener = socket.socket()
     listener.bind(("127.0.0.1", 0))
     listener.listen(8)
@@ -180,6 +183,12 @@ def _server(kind):
                     pass
             if kind == "drip":  # a byte now and then, never a whole message
                 threading.Thread(target=_drip, args=(conn,), daemon=True).start()
+
+            if kind == "huge":  # a length prefix of 4 GiB, then nothing
+                try:
+                    conn.sendall(struct.pack("Q", 4 * 2**30))
+                except OSError:
+                    pass
 
     threading.Thread(target=serve, daemon=True).start()
 
@@ -211,6 +220,78 @@ def test_a_dead_silent_or_garbage_scheduler_is_refused_within_its_time_out(kind,
     assert finished and isinstance(value, InputError), value
     assert fragment in str(value) and str(port) in str(value)
     assert elapsed < 2.5, elapsed
+
+
+def test_a_scheduler_announcing_a_huge_message_is_refused_unread():
+    """A server announcing a 4 GiB message as its handshake: refused at once, the announced
+    size named, and nothing near it allocated (Python's allocation tracer, which numpy
+    reports its buffers to: distributed's comm allocated the announced size, 4 GiB, before
+    reading a byte of it)."""
+    pytest.importorskip("distributed")
+    port, stop = _server("huge")
+    tracemalloc.start()
+    try:
+        finished, value = _within(8, lambda: DaskCluster(f"tcp://127.0.0.1:{port}", 3.0))
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+        stop()
+    assert finished and isinstance(value, InputError), value
+    assert "does not answer as a Dask scheduler" in str(value), value
+    assert "4,294,967,296 bytes" in str(value) and str(port) in str(value)
+    assert peak < 64 * 2**20, peak
+
+
+def test_the_run_command_refuses_a_huge_announcement_with_nothing_written(dyn, tmp_path,
+                                                                          capsys):
+    """`slingloads run` with the campaign on and --scheduler at a server announcing 4 GiB:
+    exit 2 (input error), the address and the size in the message, no --out, no cache."""
+    pytest.importorskip("distributed")
+    port, stop = _server("huge")
+    out, cache = tmp_path / "out", tmp_path / "cache"
+    try:
+        code = main(["run", str(dyn), "--out", str(out), "--cache", str(cache), "--quiet",
+                     "--scheduler", f"tcp://127.0.0.1:{port}", "--scheduler-timeout", "3"])
+    finally:
+        stop()
+    err = capsys.readouterr().err
+    assert code == 2, err
+    assert f"127.0.0.1:{port}" in err and "4,294,967,296 bytes" in err, err
+    assert not out.exists() and not cache.exists()
+
+
+def test_the_first_exchange_speaks_the_wire_format_of_distributed():
+    """The hand-written handshake reader against distributed's own writer: a message that
+    ``distributed.comm.tcp`` frames (``to_frames`` and its length header) decodes to the
+    same mapping; a first frame longer than its message is refused."""
+    pytest.importorskip("distributed")
+    from distributed.comm.tcp import _add_frames_header
+    from distributed.comm.utils import to_frames
+
+    from slingloads.analyses.campaign import probe
+
+    message = {"compression": None, "python": (3, 11, 4), "pickle-protocol": 5,
+               "type": "Scheduler", "workers": {"tcp://10.0.0.1:1": {"nthreads": 4}}}
+    frames = asyncio_run(to_frames(message))
+    frames, _, _ = _add_frames_header(frames)
+    wire = b"".join(bytes(f) for f in frames)
+    a, b = socket.socketpair()
+    try:
+        a.sendall(wire)
+        got = probe._read(b, probe._Deadline(2.0))
+        a.sendall(struct.pack("QQQ", 16, 1, 10**6))
+        with pytest.raises(probe.NotAScheduler, match="first frame is longer"):
+            probe._read(b, probe._Deadline(2.0))
+    finally:
+        a.close()
+        b.close()
+    assert got == {**message, "workers": {"tcp://10.0.0.1:1": {"nthreads": 4}}}
+
+
+def asyncio_run(coroutine):
+    import asyncio
+
+    return asyncio.run(coroutine)
 
 
 def test_a_real_scheduler_is_accepted_and_a_stopped_one_is_noticed_in_time():
@@ -715,6 +796,106 @@ def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(d
     assert resumed.execution.cached >= 2
     assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
     pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+
+
+_RELEASE = threading.Event()
+_CALLS = []
+
+
+def _hung_after_one(jobs, settings, threads=None):
+    """run_batch as a worker that computes its first batch, then accepts the others and
+    never returns them (until the test releases it)."""
+    _CALLS.append(1)
+    if len(_CALLS) == 1:
+        return worker.run_batch(jobs, settings, threads)
+    _RELEASE.wait(30)
+    raise RuntimeError("released")
+
+
+def test_the_longest_a_batch_is_waited_for_by_hand():
+    """batch_seconds by hand: 20 runs of 60 s at a fixed 0.01 s are 120,000 run-steps, at
+    1e-4 s each 12 s; with the adaptive step the floor of 1e-3 s gives 1,200,000 run-steps,
+    less than the 3,000,000 the stiffness check lets a batch force: 300 s."""
+    assert execution.batch_seconds({"t_end": 60.0, "dt": 0.01}, 20) == pytest.approx(12.0)
+    assert execution.batch_seconds({"t_end": 60.0, "dt": None}, 20) == pytest.approx(300.0)
+    assert execution.batch_seconds({"t_end": 60.0, "dt": None}, 100) == pytest.approx(600.0)
+
+
+def test_a_worker_that_never_returns_a_batch_ends_the_campaign_in_its_bound(dyn, tmp_path,
+                                                                            monkeypatch):
+    """A local Dask cluster (worker threads, loopback TCP) whose worker computes the first
+    of 8 one-run batches and then holds the others for ever, while the scheduler answers
+    and shows the worker (so the liveness checks all pass): with the allowances of the
+    bound set to nothing (no start time, 1e-9 s a run-step), the campaign ends with an
+    environment error once no batch has come back for the 1 s time-out (where it used to wait
+    for ever), the first run stored; the resume on the same cache (in this process) finds it
+    and gives the metrics of an uninterrupted run."""
+    import contextlib
+
+    distributed = pytest.importorskip("distributed")
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    monkeypatch.setattr(execution, "WORKER_START_SECONDS", 0.0)
+    monkeypatch.setattr(execution, "RUN_STEP_SECONDS", 1e-9)
+    monkeypatch.setattr(execution, "run_batch", _hung_after_one)
+    _CALLS.clear()
+    _RELEASE.clear()
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    try:
+        executor = DaskCluster(cluster.scheduler_address, 1.0)
+        start = time.monotonic()
+        with pytest.raises(OutputError, match="no batch has come back") as caught:
+            run_campaign(campaign, executor=executor, store=RunCache(tmp_path / "cache"),
+                         batch_size=1)
+        elapsed = time.monotonic() - start
+    finally:
+        _RELEASE.set()
+        with contextlib.suppress(TimeoutError, OSError):
+            cluster.close(timeout=2)
+    assert "run again to resume" in str(caught.value) and executor.stall < 1.1
+    assert elapsed < 8.0, elapsed
+    assert not list((tmp_path / "cache").rglob(".part-*"))
+    monkeypatch.undo()
+    resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
+    assert resumed.execution.cached == 1
+    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+
+
+def test_the_campaign_command_with_a_hung_worker_exits_with_out_intact(dyn, tmp_path,
+                                                                       monkeypatch, capsys):
+    """The campaign command on a local cluster whose worker holds every batch (the bound's
+    allowances set to nothing, time-out 1 s): exit 1 (environment) with the message, the
+    earlier report in --out byte for byte, no temporary file in the cache."""
+    import contextlib
+
+    from hostile import publish_earlier
+
+    distributed = pytest.importorskip("distributed")
+    monkeypatch.setattr(execution, "WORKER_START_SECONDS", 0.0)
+    monkeypatch.setattr(execution, "RUN_STEP_SECONDS", 1e-9)
+    monkeypatch.setattr(execution, "run_batch", _hung_after_one)
+    _CALLS[:] = [1]  # every batch held
+    _RELEASE.clear()
+    out, cache = tmp_path / "out", tmp_path / "cache"
+    publish_earlier(out, {"dyn-campaign.xlsx": b"an earlier report"})
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    cluster = distributed.LocalCluster(n_workers=1, processes=False, threads_per_worker=1,
+                                       dashboard_address=None, protocol="tcp",
+                                       host="127.0.0.1")
+    try:
+        code = main(["campaign", str(dyn), "--out", str(out), "--cache", str(cache),
+                     "--quiet", "--scheduler", cluster.scheduler_address,
+                     "--scheduler-timeout", "1"])
+    finally:
+        _RELEASE.set()
+        with contextlib.suppress(TimeoutError, OSError):
+            cluster.close(timeout=2)
+    err = capsys.readouterr().err
+    assert code == 1 and "no batch has come back from the Dask cluster" in err, err
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert not list(cache.rglob(".part-*")) and not list(cache.rglob("*.parquet"))
 
 
 @pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")

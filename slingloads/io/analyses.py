@@ -128,6 +128,18 @@ class Analysis:
         """Build its inputs from the workbook."""
         return self.modules().reader.read(reader, params, study)
 
+    def check_rows(self, params, errors):
+        """Check its Study rows whose rules need none of its sheets, whether it runs or not,
+        each row's error gathered in ``errors``: every choice row of its reader's ``CHOICES``
+        and the rows of its reader's ``ROW_CHECKS`` (row name -> ``check(params)``). A value
+        in the workbook is an input of the study even while its analysis is switched off:
+        it is refused now rather than when the analysis is switched on."""
+        reader = self.modules().reader
+        for name, valid in getattr(reader, "CHOICES", {}).items():
+            errors.call(params.choice, name, valid)
+        for check in getattr(reader, "ROW_CHECKS", {}).values():
+            errors.call(check, params)
+
     def locate(self, err, study, context=None):
         """``err``, raised while it ran on ``study``, put where its value came from (its
         reader's ``locate``)."""

@@ -8,6 +8,7 @@ import hashlib
 from dataclasses import dataclass, field
 
 from slingloads.errors import ErrorCollector
+from slingloads.io.airframe.reader import CHOICES as AIRFRAME_CHOICES
 from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
@@ -140,14 +141,22 @@ def read_study(path, only=None, *, reader=None, on_read=None):
 
 def _build(reader, path, only, sha256, on_read=None):
     # Independent steps are attempted one after another and their errors reported together
-    # (up to MAX_REPORTED_ERRORS): the Study sheet row by row, each table sheet cell by cell,
-    # the airframe, then each analysis. A step others need stops the reading when it fails.
+    # (up to MAX_REPORTED_ERRORS): the Study sheet row by row (with the checks of each
+    # analysis's rows that need none of its sheets, whether it runs or not), each table sheet
+    # cell by cell, the airframe, then each analysis. A step others need stops the reading
+    # when it fails.
     errors = ErrorCollector()
-    params = errors.call(StudyParameters, reader, all_parameters())
+    params = errors.call(StudyParameters, reader, all_parameters(), errors)
+    rows_read = not errors
+    if params is not None:  # the rows every analysis checks on the Study sheet alone, run or not
+        for name, valid in AIRFRAME_CHOICES.items():
+            errors.call(params.choice, name, valid)
+        for analysis in ANALYSES:
+            analysis.check_rows(params, errors)
     for sheet in AIRFRAME_SHEETS.values():  # every cell of the airframe's sheets, at once
         if sheet.required or reader.has_sheet(sheet.name):
             errors.call(reader.table, sheet)
-    if params is None:
+    if params is None or not rows_read:
         errors.raise_if_any(note="the analyses' sheets are checked once the Study sheet reads")
     asked = [a.name for a in ANALYSES if errors.call(params, a.run_parameter)]
     if only is not None:

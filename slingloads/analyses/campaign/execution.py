@@ -56,6 +56,46 @@ from .worker import run_batch
 
 #: Seconds the scheduler of a Dask cluster has to answer before the campaign gives up.
 SCHEDULER_TIMEOUT = 10.0
+#: Seconds a cluster's worker is allowed for a run-step of the compiled kernel when a batch
+#: is waited for: ten times the measured 10 us a run-step on two cores
+#: (:data:`~slingloads.limits.MAX_MULTIBODY_RUN_STEPS`), for a slower or busier machine. [s]
+RUN_STEP_SECONDS = 1e-4
+#: Shortest step counted for a run with the adaptive step (its steps are not known ahead):
+#: a tenth of the campaign's usual fixed step of 0.01 s. [s]
+ADAPTIVE_STEP_FLOOR = 1e-3
+#: Seconds allowed on top for a worker to load slingloads and compile or load its kernels
+#: (a fresh installation compiles them once, in about a minute of processor time). [s]
+WORKER_START_SECONDS = 300.0
+
+
+def batch_seconds(settings, runs):
+    """The longest a batch of ``runs`` runs under ``settings`` is expected to take on a
+    worker: its run-steps at :data:`RUN_STEP_SECONDS` each. The run-steps are runs x
+    (``t_end`` / ``dt``) with a fixed step; with the adaptive one (``dt`` None) the larger of
+    runs x (``t_end`` / :data:`ADAPTIVE_STEP_FLOOR`) and the
+    :data:`~slingloads.limits.MAX_MULTIBODY_RUN_STEPS` that the stiffness check of a batch
+    lets its fastest mode force. [s]
+
+    Parameters
+    ----------
+    settings : dict
+        ``t_end``, ``dt`` (None: adaptive) [s].
+    runs : int
+        Runs of the batch.
+
+    Returns
+    -------
+    float
+        [s]
+    """
+    from slingloads.limits import MAX_MULTIBODY_RUN_STEPS
+
+    t_end, dt = float(settings["t_end"]), settings.get("dt")
+    if dt is None:
+        steps = max(runs * t_end / ADAPTIVE_STEP_FLOOR, MAX_MULTIBODY_RUN_STEPS)
+    else:
+        steps = runs * t_end / float(dt)
+    return steps * RUN_STEP_SECONDS
 class MemoryStore:
     """Finished runs kept in memory.
 
@@ -308,7 +348,8 @@ def _within(seconds, call, *args):
 
 async def _identity(address, timeout):
     """Connect to ``address``, exchange the comm handshake and ask the scheduler who it is,
-    all within ``timeout`` seconds; the reply, or an exception."""
+    all within ``timeout`` seconds, with ``distributed``'s own comm (for the protocols that
+    :mod:`.probe` does not speak); the reply, or an exception."""
     import asyncio
 
     from distributed.comm import connect
@@ -327,12 +368,21 @@ async def _identity(address, timeout):
 def _probe(address, timeout):
     """What is wrong with the scheduler at ``address``, in words, or None: it must answer the
     ``identity`` request as a Dask scheduler within ``timeout`` seconds (connection, handshake
-    and reply; a silent server is given up at the deadline, a garbage-speaking one at once)."""
+    and reply; a silent server is given up at the deadline, a garbage-speaking one at once).
+    Over tcp and tls the exchange is :func:`.probe.identity` (bounded memory: a message
+    announced longer than :data:`.probe.MAX_PROBE_MESSAGE` is refused unread)."""
     import asyncio
 
-    done, value = _within(timeout + 0.2, lambda: asyncio.run(_identity(address, timeout)))
+    from . import probe
+
+    if probe.split_address(address)[0] in probe.SPOKEN:
+        done, value = _within(timeout + 0.2, probe.identity, address, timeout)
+    else:
+        done, value = _within(timeout + 0.2, lambda: asyncio.run(_identity(address, timeout)))
     if not done or isinstance(value, (TimeoutError, asyncio.TimeoutError)):
         return f"no answer within {timeout:g} s"
+    if isinstance(value, probe.NotAScheduler):
+        return f"the server at this address does not answer as a Dask scheduler ({value})"
     if isinstance(value, OSError):
         return f"could not connect ({type(value).__name__}: {value})"
     if isinstance(value, BaseException):
@@ -353,7 +403,9 @@ class DaskCluster(_Executor):
     first request (connection, handshake, identity) within it, then let the client connect
     and show a worker within it; while the batches run, a scheduler that stays silent
     for ``timeout`` seconds (no batch back, no answer to a liveness request) stops the
-    campaign; closing the client waits at most ``timeout`` seconds.
+    campaign; so does a batch that has not come back (:meth:`run`: a hung worker) within
+    ``timeout`` + :data:`WORKER_START_SECONDS` + the :func:`batch_seconds` of the longest
+    batch after the previous one; closing the client waits at most ``timeout`` seconds.
 
     Parameters
     ----------
@@ -378,6 +430,8 @@ class DaskCluster(_Executor):
             raise InputError("the scheduler time-out must be > 0 [s]", timeout)
         self.timeout = timeout
         self.client = None
+        #: Seconds without a batch back after which :meth:`run` gives up (set by it). [s]
+        self.stall = None
         start = time.monotonic()
         problem = _probe(self.address, timeout)
         if problem is not None and problem.startswith("the server"):
@@ -455,6 +509,12 @@ class DaskCluster(_Executor):
     def run(self, batches):
         """Execute the batches on the cluster.
 
+        A batch that does not come back is given up: when no batch has arrived for
+        ``timeout`` + :data:`WORKER_START_SECONDS` + the :func:`batch_seconds` of the
+        longest batch, the campaign stops with an :class:`~slingloads.errors.OutputError`
+        (the batches cancelled, the runs finished before stored), even while the scheduler
+        answers and shows workers (a worker that accepted a batch and hangs).
+
         Parameters
         ----------
         batches : iterable of (int, dict, list)
@@ -465,31 +525,37 @@ class DaskCluster(_Executor):
         iterator of (int, list)
             (index, results of :func:`~.worker.run_batch`) of each batch as it finishes.
         """
+        import time
         from concurrent.futures import CancelledError
 
         from distributed.client import _wait
 
-        futures = {}
+        futures, longest = {}, 0.0
         for index, settings, jobs in batches:
             future = self.client.submit(run_batch, jobs, settings, self.threads, pure=False)
             futures[future] = index
+            longest = max(longest, batch_seconds(settings, len(jobs)))
+        self.stall = self.timeout + WORKER_START_SECONDS + longest
         pending = set(futures)
         try:
+            last = time.monotonic()
             while pending:
+                wait = max(0.05, min(self.timeout, last + self.stall - time.monotonic()))
                 try:
                     finished, pending = self.client.sync(
-                        _wait, list(pending), timeout=self.timeout,
-                        return_when="FIRST_COMPLETED")
+                        _wait, list(pending), timeout=wait, return_when="FIRST_COMPLETED")
                     pending = set(pending)
                 except TimeoutError:
                     finished = set()
                 if not finished:
                     self._check_progress()
+                    self._check_stall(last)
                 for future in finished:
                     # forgotten once fetched (the cluster may free the batch's records)
                     index = futures.pop(future)
-                    yield index, self._result(future)
+                    yield index, self._result(future, last)
                     future.release()
+                    last = time.monotonic()
         except OutputError:
             raise
         except (CancelledError, OSError) as err:  # the scheduler lost: futures cancelled
@@ -497,18 +563,33 @@ class DaskCluster(_Executor):
                               "finished runs are stored: run again to resume",
                               self.address) from None
         finally:
-            if self.client is not None and self.client.status == "running":
-                for future in futures:
-                    future.cancel()
+            client = self.client
+            if futures and client is not None and client.status == "running":
+                _within(self.timeout, client.cancel, list(futures))
 
-    def _result(self, future):
+    def _check_stall(self, last):
+        """Raise if no batch has arrived for :attr:`stall` seconds since ``last``."""
+        import time
+
+        if time.monotonic() - last < self.stall:
+            return
+        raise OutputError(
+            f"no batch has come back from the Dask cluster for {self.stall:,.0f} s (the "
+            f"time-out of {self.timeout:g} s, {WORKER_START_SECONDS:g} s for a worker to "
+            "start and the longest a batch's run-steps should take): a worker holds a batch "
+            "and does not finish it (hung, or far slower than expected); the finished runs "
+            "are stored: run again to resume", self.address)
+
+    def _result(self, future, last):
         """A finished batch's records, fetched a time-out at a time while the scheduler
-        answers (a large batch may take longer to arrive; a silent scheduler stops it)."""
+        answers (a large batch may take longer to arrive; a silent scheduler stops it), and
+        given up :attr:`stall` seconds after ``last`` (the worker holding them hung)."""
         while True:
             try:
                 return future.result(timeout=self.timeout)
             except TimeoutError:
                 self._check_progress()
+                self._check_stall(last)
 
     def close(self):
         """Close the client, waiting at most the time-out (a dead scheduler is not waited

@@ -17,7 +17,7 @@ from slingloads.io.airframe.schema import HARDPOINT_KINDS, PLATE_FORCE_COEFFICIE
 from slingloads.io.common.atomic import safe_file_part
 from slingloads.io.common.locate import Place, column_quantity, located, quantity, quantity_range
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.table import cell_name, check_unique
+from slingloads.io.common.table import cell_name
 from slingloads.limits import MAX_AIRFRAME_SIZE
 from slingloads.models.aero_tables import Table1D, Table2D
 from slingloads.models.aerodynamics import (
@@ -31,6 +31,15 @@ from slingloads.models.aerodynamics import (
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
 from slingloads.models.multibody.parachute_line import line_reach
 from slingloads.models.parachute import PARACHUTE_AXES, PARACHUTE_CD_MAX, Parachute
+
+#: Valid values of each choice row of the airframe's Study rows (case ignored), checked
+#: with the other Study rows (:func:`slingloads.io.study.read_study`).
+CHOICES = {
+    "fuselage force axes": tuple(FORCE_AXES),
+    "fuselage moment axes": MOMENT_AXES,
+    "fin axes": FIN_AXES,
+    "parachute table axes": tuple(PARACHUTE_AXES),
+}
 
 _SPEC = {s.name: s for s in SHEETS}
 
@@ -65,7 +74,6 @@ def read_airframe(reader, params):
     """
     items, items_t = _mass_items(reader)
     stations = reader.table(_SPEC["Stations"])
-    check_unique(reader, stations, "id")
     _check_file_names(stations, "id", "station")
     x = stations["x"]
     for i in range(1, len(x)):
@@ -158,7 +166,6 @@ def _check_stations_span(reader, stations, items_t, hp_t, airframe):
 
 def _mass_items(reader):
     items_t = reader.table(_SPEC["MassItems"])
-    check_unique(reader, items_t, "id")
     masses = items_t["mass"]
     inertia = np.zeros((len(masses), 3, 3))
     present = []
@@ -224,7 +231,6 @@ def _check_extent(items_t, position):
 def _hardpoint_rows(reader, params, items_t, items, axis):
     """The Hardpoints table and its rows by kind: ``{kind: [(id, position, weight, row)]}``."""
     hp_t = reader.table(_SPEC["Hardpoints"])
-    check_unique(reader, hp_t, "id")
     points = {k: [] for k in HARDPOINT_KINDS}
     for i, kind in enumerate(hp_t["kind"]):
         k = kind.strip().lower()
@@ -338,8 +344,8 @@ def read_fuselage_aero(reader, params, refs):
                            cell="B1")
     area = params.positive("fuselage reference area")
     length = params.positive("fuselage reference length")
-    force_axes = params.choice("fuselage force axes", tuple(FORCE_AXES))
-    moment_axes = params.choice("fuselage moment axes", MOMENT_AXES)
+    force_axes = params.choice("fuselage force axes", CHOICES)
+    moment_axes = params.choice("fuselage moment axes", CHOICES)
     columns = fuselage_columns(force_axes)
     _columns_match(reader, t, columns, ("CD", "CL", "CX", "CZ"),
                    f"'fuselage force axes' is {force_axes!r}")
@@ -484,7 +490,7 @@ def read_fin_aero(reader, params, refs):
                            sheet="Hardpoints", cell="B1")
     area = params.positive("fin area")
     eff = params("fin efficiency")
-    axes = params.choice("fin axes", FIN_AXES)
+    axes = params.choice("fin axes", CHOICES)
     with located(t):
         table = Table1D(t["beta"], {"CY": t["CY"]}, angle_name="beta", what="fin")
     with located(params, {"efficiency": "fin efficiency", "area": "fin area"},
@@ -546,7 +552,7 @@ def read_parachute(reader, params, area, parameters=PARACHUTE_PARAMETERS):
     -------
     Parachute
     """
-    axes = params.choice("parachute table axes", tuple(PARACHUTE_AXES))
+    axes = params.choice("parachute table axes", CHOICES)
     cd = read_parachute_cd(reader, axes)  # checked at its cells
     for name, arg in parameters.items():  # each with the default table: only its own error
         with located(params, default=name):

@@ -140,7 +140,7 @@ SHEETS = (
        "configuration. " + _POSITION + f" Items must fit in a box of {MAX_AIRFRAME_SIZE:g} m; "
        "an item farther from the loads reference axis than the airframe is long is flagged on "
        "the reports' Summary.",
-       max_rows=MAX_MASS_ITEMS),
+       max_rows=MAX_MASS_ITEMS, ids=("id",)),
     TableSheet("Stations", (
         Column("id", TEXT, help="Station name printed on the reports, e.g. FS0161 (fuselage "
                                 "station 161 in); ids must stay distinct once made safe for "
@@ -152,7 +152,7 @@ SHEETS = (
                     "part. Within the x range of the mass items. Typical: 20 to 30 cuts from "
                     "nose to tail, 0.4 m apart.", bounds=COORDINATE),
     ), required=True, help="Cut stations where internal loads are reported.",
-       max_rows=MAX_STATIONS),
+       max_rows=MAX_STATIONS, ids=("id",)),
     TableSheet("Hardpoints", (
         Column("id", TEXT, help="Unique name, e.g. HUB, MAST_FL (mast foot front left)."),
         Column("kind", TEXT,
@@ -181,7 +181,7 @@ SHEETS = (
        "pressure (the multibody model's full-tail configuration). Every point but the "
        "aero_reference must lie within the airframe (x within the mass items' range, no "
        "farther from the loads reference axis than the airframe is long). " + _POSITION,
-       max_rows=MAX_STATIONS),
+       max_rows=MAX_STATIONS, ids=("id",)),
     TableSheet("AeroPoints", (
         Column("x", "length", "m",
                help="Point of the loads reference axis (y0, z0 of the Study sheet) that takes "

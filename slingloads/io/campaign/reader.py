@@ -21,7 +21,6 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.towed_attitude import YAW_AXES
-from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -50,6 +49,13 @@ from slingloads.limits import (
     MEMORY_BUDGET,
 )
 from slingloads.runs.campaign import SCHEDULER, CampaignInputs
+
+#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
+#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
+CHOICES = {
+    "campaign matrix": MATRIX_KINDS,
+    "campaign loads hook angle": HOOK_ANGLE_SOURCES,
+}
 
 ANALYSIS = "campaign"
 _SPEC = {s.name: s for s in SHEETS}
@@ -198,7 +204,6 @@ def _masses(reader):
     for i in range(len(t)):
         with located(t, default="mass", index=i):
             out.append(MassCase(t["mass case"][i], t["mass"][i]))
-    check_unique(t, "mass case")
     return tuple(out)
 
 
@@ -278,7 +283,7 @@ def read(reader, params, study):
             Factors(**{field: tuple(values)})  # each list checked at its own cell
         lists[field] = tuple(values)
     factors = Factors(masses=masses, **lists)
-    kind = params.choice("campaign matrix", MATRIX_KINDS)
+    kind = params.choice("campaign matrix", CHOICES)
     no_chute_runs = _no_parachute_runs(params)
     if kind == "full factorial":
         _check_matrix_size(params, factors, len(masses), no_chute_runs)
@@ -339,14 +344,11 @@ def read(reader, params, study):
                            f"of the matrix's area factors {listed}")
     workers = params("campaign workers")
     params.check("campaign workers", workers >= 0, "'campaign workers' must be >= 0")
-    scheduler = str(params("campaign scheduler") or "").strip()
-    if scheduler:
-        rule = address_rule(scheduler)
-        params.check("campaign scheduler", rule is None, f"'campaign scheduler': {rule}")
+    scheduler = _check_scheduler(params)
     return CampaignInputs(
         campaign, scheduler, workers or None,
         params.positive("campaign scheduler time-out"), params("campaign loads from dynamics"),
-        params.choice("campaign loads hook angle", HOOK_ANGLE_SOURCES),
+        params.choice("campaign loads hook angle", CHOICES),
         params.where("campaign scheduler"))
 
 
@@ -384,6 +386,41 @@ def _gust_ramps(params):
     if str("" if raw is None else raw).strip().lower() == "none":
         return []
     return list_parameter(params, name)
+
+
+def _check_scheduler(params):
+    """'campaign scheduler' is empty or a well-formed address."""
+    scheduler = str(params("campaign scheduler") or "").strip()
+    if scheduler:
+        rule = address_rule(scheduler)
+        params.check("campaign scheduler", rule is None, f"'campaign scheduler': {rule}")
+    return scheduler
+
+
+def _check_helicopters(params):
+    """'campaign no-parachute helicopters' is 'none' or a list of known sample helicopters."""
+    name = "campaign no-parachute helicopters"
+    helicopters = [h.upper() for h in list_parameter(params, name)]
+    if helicopters != ["NONE"]:
+        for h in helicopters:
+            if h not in SAMPLE_HELICOPTERS:
+                raise params.error(name, "unknown helicopter; valid are "
+                                   f"{list(SAMPLE_HELICOPTERS)} or 'none'", h)
+    return helicopters
+
+
+#: The campaign's Study rows whose rules need no sheet, checked for every workbook whether
+#: the campaign runs or not (:meth:`slingloads.io.analyses.Analysis.check_rows`), besides
+#: its CHOICES: the form of each list (its numbers within their bounds), the helicopters,
+#: the scheduler's address.
+ROW_CHECKS = {
+    **{name: (lambda params, name=name: list_parameter(params, name))
+       for name in LISTS if name not in ("campaign no-parachute gust ramps",
+                                         "campaign no-parachute helicopters")},
+    "campaign no-parachute gust ramps": lambda params: _gust_ramps(params),
+    "campaign no-parachute helicopters": _check_helicopters,
+    "campaign scheduler": _check_scheduler,
+}
 
 
 def _check_matrix_size(params, factors, masses, no_chute_runs):
@@ -430,14 +467,9 @@ def _check_work(params, runs, settings):
 
 def _no_parachute(params, system, study_type, sample):
     """The study without parachute of the Study rows, or None ('none')."""
-    name = "campaign no-parachute helicopters"
-    helicopters = [h.upper() for h in list_parameter(params, name)]
+    helicopters = _check_helicopters(params)
     if helicopters == ["NONE"]:
         return None
-    for h in helicopters:
-        if h not in SAMPLE_HELICOPTERS:
-            raise params.error(name, f"unknown helicopter; valid are {list(SAMPLE_HELICOPTERS)} "
-                               "or 'none'", h)
     ramps = list_parameter(params, "campaign no-parachute ramps")
     gust_ramps = _gust_ramps(params)
     with located(params, default="campaign no-parachute gust"):

@@ -174,7 +174,7 @@ SHEETS = (
                                           "3,000 kg for a light twin.",
                bounds=Bounds(0, 1e5, lo_open=True, unit="kg")),
     ), help="Optional: mass cases of the campaign (default: one, 'nominal', the mass items' "
-       "total).", max_rows=MAX_LIST_ITEMS),
+       "total).", max_rows=MAX_LIST_ITEMS, ids=("mass case",)),
     TableSheet("CampaignRuns", (
         Column("area factor", "dimensionless", help="Parachute area over the neutral area.",
                bounds=LIST_BOUNDS["campaign area factors"]),

@@ -41,6 +41,17 @@ from slingloads.models.wake import BluffBodyWake, TabulatedWake
 from slingloads.models.yaw_dynamics import YawModel
 from slingloads.runs.chute_sizing import ChuteSizingInputs
 
+#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
+#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
+CHOICES = {
+    "chute sizing yaw axis": YAW_AXES,
+    "chute sizing yaw inertia source": INERTIA_SOURCES,
+    "chute sizing wake source": WAKE_SOURCES,
+    "chute sizing integrator": INTEGRATORS,
+    "chute sizing reference method": SOLVE_IVP_METHODS,
+    "chute sizing turbulence severity": SEVERITIES,
+}
+
 ANALYSIS = "chute sizing"
 HARDPOINT_SHEETS = {s.name: s for s in _AIRFRAME_SHEETS}
 
@@ -98,8 +109,8 @@ def read(reader, params, study):
                          f"({hp_t.cell('x', hub_row)})")
     parachute = read_parachute(reader, params, 1.0)
     # ---- yaw inertia
-    yaw_axis = params.choice("chute sizing yaw axis", YAW_AXES)
-    source = params.choice("chute sizing yaw inertia source", INERTIA_SOURCES)
+    yaw_axis = params.choice("chute sizing yaw axis", CHOICES)
+    source = params.choice("chute sizing yaw inertia source", CHOICES)
     given = params("chute sizing yaw inertia")
     if source == "parameter":
         inertia = params.positive("chute sizing yaw inertia")
@@ -132,7 +143,7 @@ def read(reader, params, study):
     target = params("chute sizing target q ratio")
     params.check("chute sizing target q ratio", 0 < target <= 1,
            "'chute sizing target q ratio' must lie in (0, 1]")
-    wake_source = params.choice("chute sizing wake source", WAKE_SOURCES)
+    wake_source = params.choice("chute sizing wake source", CHOICES)
     if wake_source == "table":
         wake = _wake_table(reader, params, target)
     else:
@@ -156,8 +167,8 @@ def read(reader, params, study):
     t_end = params.positive("chute sizing simulation time")
     dt = params.positive("chute sizing time step")
     interval = params.positive("chute sizing output interval")
-    integrator = params.choice("chute sizing integrator", INTEGRATORS)
-    method = params.choice("chute sizing reference method", SOLVE_IVP_METHODS)
+    integrator = params.choice("chute sizing integrator", CHOICES)
+    method = params.choice("chute sizing reference method", CHOICES)
     rtol = params.positive("chute sizing reference rtol")
     shapes = [s for s in str(params("chute sizing gust shapes") or "").split(",") if s.strip()]
     _check_work(params, int(params("chute sizing number of areas")) * max(len(shapes), 1),
@@ -315,7 +326,7 @@ def _gusts(reader, params, model, t_end):
 
 def _turbulence(reader, params, model, onset, t_end):
     """The Dryden realisation of the 'chute sizing turbulence ...' rows."""
-    severity = params.choice("chute sizing turbulence severity", SEVERITIES)
+    severity = params.choice("chute sizing turbulence severity", CHOICES)
     length = params.positive("chute sizing turbulence duration")
     params.check("chute sizing turbulence duration", onset + length < t_end,
                  f"the turbulence must end (onset + duration) before the end of the "

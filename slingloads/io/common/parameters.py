@@ -49,14 +49,18 @@ class StudyParameters:
     specs : dict
         Every known :class:`~slingloads.io.common.schema.Parameter` by lower-case name.
 
+    errors : ErrorCollector, optional
+        Gathers the errors of the rows (then the rows that read are kept, the others count
+        as absent); without it the first reading error is raised, with every bad row.
+
     Calling it with a parameter name gives the value in SI (the default, converted, when the
     row is absent): ``params("fin area")``.
     """
 
-    def __init__(self, reader, specs):
+    def __init__(self, reader, specs, errors=None):
         self.reader = reader
         self.specs = specs
-        self.given = read_parameters(reader, specs)
+        self.given = read_parameters(reader, specs, errors=errors)
         #: Where an error about a parameter is located: ``located(params, default="fin area")``
         #: (:func:`slingloads.io.common.locate.located`).
         self.places = StudyCells(reader.file, {k: v.cell for k, v in self.given.items()},
@@ -110,7 +114,10 @@ class StudyParameters:
             raise self.error(name, rule)
 
     def choice(self, name, valid):
-        """The parameter's text as one of ``valid`` (case-insensitive), spelt as listed."""
+        """The parameter's text as one of ``valid`` (case-insensitive), spelt as listed;
+        ``valid`` may be a reader's ``CHOICES`` (valid values by row name)."""
+        if isinstance(valid, dict):
+            valid = valid[name]
         text = str(self(name) or "").strip()
         for v in valid:
             if v.lower() == text.lower():
@@ -131,13 +138,15 @@ class StudyParameters:
                         digits)
 
 
-def read_parameters(reader, known, sheet=STUDY_SHEET):
+def read_parameters(reader, known, sheet=STUDY_SHEET, errors=None):
     """Read the ``Study`` sheet of ``reader`` (a
     :class:`~slingloads.io.common.workbook.WorkbookReader`): ``{name: ParameterValue}`` for
     every row present.
 
     ``known`` gives every valid :class:`~slingloads.io.common.schema.Parameter` by
-    lower-case name (:func:`slingloads.io.analyses.all_parameters`).
+    lower-case name (:func:`slingloads.io.analyses.all_parameters`). The errors of the rows
+    go to ``errors`` (an :class:`~slingloads.errors.ErrorCollector`) if given, the rows that
+    read returned; else they are raised together.
     """
     rows = reader.rows(sheet, MAX_STUDY_ROWS)
     header = rows[0][1] if rows and rows[0][0] == 1 else {}
@@ -149,10 +158,12 @@ def read_parameters(reader, known, sheet=STUDY_SHEET):
                                f"unit' in row 1; column {col} should be {title!r}",
                                echo(got), sheet, cell_name(1, col))
     out = {}
-    errors = ErrorCollector()  # every bad row at once
+    own = errors is None
+    errors = ErrorCollector() if own else errors  # every bad row at once
     for r, row in rows[1:]:
         errors.call(_read_row, reader, known, sheet, header, out, r, row)
-    errors.raise_if_any()
+    if own:
+        errors.raise_if_any()
     return out
 
 

@@ -186,6 +186,9 @@ class TableSheet:
     """A sheet holding a table: header in row 1, one record per row below.
 
     ``max_rows`` bounds the data rows (:data:`slingloads.limits.MAX_TABLE_ROWS` by default).
+    ``ids`` names its id columns: each value unique, case and surrounding spaces ignored
+    (:mod:`slingloads.ids`), checked by the workbook reader as the sheet reads, for every
+    sheet alike.
     """
 
     name: str
@@ -193,6 +196,7 @@ class TableSheet:
     required: bool = False
     help: str = ""
     max_rows: int = MAX_TABLE_ROWS
+    ids: tuple = ()
 
 
 @dataclass(frozen=True)

@@ -5,8 +5,8 @@ What this module guarantees: a :class:`Table` knows, for every value it holds, t
 came from and the value and unit the user wrote there, so that any error about a value names
 that cell and echoes what is written in it, never an SI number the user did not type: the
 reader's own errors through :meth:`Table.error`, a model's through
-:func:`slingloads.io.common.locate.located`. :func:`check_unique` refuses a repeated id at its
-second cell.
+:func:`slingloads.io.common.locate.located`. (A repeated id is refused as the sheet reads:
+``ids`` of :class:`~slingloads.io.common.schema.TableSheet`.)
 """
 
 from __future__ import annotations
@@ -94,11 +94,3 @@ class Table:
         """Column ``name``'s header as written (with its unit, when it has one)."""
         unit = self.units.get(name)
         return f"{name} [{unit}]" if unit else name
-
-
-def check_unique(reader, table, column):
-    """Raise an InputError at the second occurrence of a value repeated in ``column``, case
-    ignored: the one rule of ids, :func:`slingloads.ids.check_unique`."""
-    from slingloads.ids import check_unique as unique
-
-    unique(table, column)

@@ -39,6 +39,7 @@ from pathlib import Path
 from openpyxl.utils import get_column_letter
 
 from slingloads.errors import ErrorCollector, InputError
+from slingloads.ids import check_unique
 from slingloads.io.common.locate import Place, located, place_error
 from slingloads.io.common.schema import FLAG, INTEGER, NOTE_COLUMNS, TEXT
 from slingloads.io.common.table import Table, cell_name
@@ -268,7 +269,11 @@ class WorkbookReader:
             raise self.error("sheet has no data rows below its header", sheet=spec.name,
                              cell="A2")
         units = {name: found[name][3] for name in found}
-        return Table(spec.name, values, cells, units, raw, self.file)
+        table = Table(spec.name, values, cells, units, raw, self.file)
+        for column in spec.ids:  # the one uniqueness rule of ids, for every sheet
+            if column in values:
+                check_unique(table, column)
+        return table
 
     def _records(self, spec, header, found, records):
         """``(values, raw, cells)`` of the table read record by record, cell by cell.

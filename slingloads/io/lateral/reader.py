@@ -29,7 +29,6 @@ from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
 from slingloads.io.common.referenced import csv_columns
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.table import check_unique
 from slingloads.io.lateral.schema import (
     CABLE_MODELS,
     MIN_ROLL_GYRATION,
@@ -61,6 +60,14 @@ from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 from slingloads.runs.lateral import LateralInputs
 
+#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
+#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
+CHOICES = {
+    "lateral cable model": CABLE_MODELS,
+    "lateral history method": SOLVER_METHODS,
+    "lateral damping source": DAMPING_SOURCES,
+}
+
 ANALYSIS = "lateral"
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
 #: Longest time history (LateralHistory id or CSV file). [s]
@@ -91,7 +98,7 @@ def read(reader, params, study):
         With the file, sheet, cell, value and rule.
     """
     margin = params("lateral design-angle margin")
-    model = params.choice("lateral cable model", CABLE_MODELS)
+    model = params.choice("lateral cable model", CHOICES)
     ea = params("lateral cable EA")
     if model == "elastic":
         cable_ea = params.positive("lateral cable EA")
@@ -107,7 +114,7 @@ def read(reader, params, study):
     if t_end > 0 and step > 0:
         params.check("lateral RK4 step", step < t_end,
                "'lateral RK4 step' must be shorter than 'lateral simulation time'")
-    method = params.choice("lateral history method", SOLVER_METHODS)
+    method = params.choice("lateral history method", CHOICES)
     rtol = params.positive("lateral history rtol")
     output = params.positive("lateral history output step")
     solver = SolverSettings(t_end=t_end if t_end > 0 else None,
@@ -138,7 +145,7 @@ def read(reader, params, study):
 def _damping(reader, params, study):
     """The damping of the 'lateral damping ...' rows, or derived from the aerodynamic
     tables at 'lateral airspeed EAS' (zero in hover)."""
-    source = params.choice("lateral damping source", DAMPING_SOURCES)
+    source = params.choice("lateral damping source", CHOICES)
     lateral = params.positive("lateral damping", allow_zero=True)
     roll = params.positive("lateral roll damping", allow_zero=True)
     speed = params.positive("lateral airspeed EAS", allow_zero=True)
@@ -261,7 +268,6 @@ def _bodies(reader, study):
     if not reader.has_sheet("LateralBodies"):
         return (_airframe_body(reader, study),), "MassItems"
     t = reader.table(_SPEC["LateralBodies"])
-    check_unique(reader, t, "id")
     bodies = []
     fields = {"roll_inertia": "roll inertia", "cg_below_hub": "CG below hub"}
     for i, name in enumerate(t["id"]):
@@ -371,7 +377,6 @@ def _motion_type(reader, t, i):
 
 def _motions(reader, histories):
     t = _require(reader, "LateralMotions")
-    check_unique(reader, t, "id")
 
     def number(column, i):
         return float(t[column][i]) if t.has(column) else np.nan

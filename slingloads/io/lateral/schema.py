@@ -167,7 +167,7 @@ SHEETS = (
     ), help="Carrier (hook) lateral motions to sweep, each starting from hover at rest "
        "(docs/lateral-pendulum.md section 5). Must cover the manoeuvres of the operation being "
        f"certified. At most {MAX_LATERAL_RUNS:,} runs (motions x ropes x bodies).",
-       max_rows=MAX_LATERAL_RUNS),
+       max_rows=MAX_LATERAL_RUNS, ids=("id",)),
     TableSheet("LateralHistory", (
         Column("history id", TEXT, help="Name referred to by LateralMotions 'history', e.g. "
                                         "REPOSITION."),
@@ -211,7 +211,7 @@ SHEETS = (
     ), help="Optional: mass-property cases (e.g. heaviest, lightest). Default: one body from "
        "MassItems, hanging with its CG under the hub: total mass, roll inertia about the "
        "CG around the horizontal fore-and-aft axis, CG distance below the hub.",
-       max_rows=MAX_LATERAL_RUNS),
+       max_rows=MAX_LATERAL_RUNS, ids=("id",)),
 )
 
 SECTION = Section("lateral", parameters=PARAMETERS, sheets=SHEETS)

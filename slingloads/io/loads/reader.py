@@ -40,7 +40,6 @@ from slingloads.io.airframe.reader import (
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import Place, column_quantity, located, place_error
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.common.table import check_unique
 from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
 from slingloads.io.loads.schema import SHEETS
 from slingloads.limits import MAX_CASE_POINTS, MAX_LOAD_CASES, MAX_SFBM_ROWS
@@ -48,6 +47,16 @@ from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attit
 from slingloads.models.flight import FlightCondition
 from slingloads.runs.loads import HANDOFF
 from slingloads.runs.study import ReportOptions
+
+#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
+#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
+CHOICES = {
+    "parachute line direction": CHUTE_LINE_DIRECTIONS,
+    "hook cone shape": CONE_SHAPES,
+    "attitude": (*ATTITUDE_SOURCES, "given"),
+    "nastran inertia relief": INERTIA_RELIEF,
+    "nastran hook load at": HOOK_POINTS,
+}
 
 _SPEC = {s.name: s for s in SHEETS}
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}
@@ -86,7 +95,6 @@ def read(reader, params, study):
         parachute = read_parachute(reader, params, chute_area, _PARACHUTE_PARAMETERS)
     if reader.has_sheet("AeroEnvelope"):
         t = reader.table(_SPEC["AeroEnvelope"])
-        check_unique(reader, t, "id")
         for i, point in enumerate(t["id"]):
             if point.casefold() == NO_AERO.casefold():
                 raise t.error("id", i, f"{NO_AERO!r} is reserved: in LoadCases, aero "
@@ -105,7 +113,7 @@ def read(reader, params, study):
     with located(params, {"eas": "airspeed EAS", "density_altitude": "density altitude"}):
         flight = FlightCondition(params("airspeed EAS"), params("density altitude"))
     attitude = _attitude(reader, params, airframe, refs)
-    line = params.choice("parachute line direction", CHUTE_LINE_DIRECTIONS)
+    line = params.choice("parachute line direction", CHOICES)
     generate = params("generate case matrix")
     listed = _listed_cases(reader, params, hook, envelope, parachute, generate)
     _check_case_count(reader, params, hook, airframe, envelope, parachute, generate, listed)
@@ -127,7 +135,7 @@ def _hook_options(reader, params):
     _nz_warning(reader, params, kwargs["nz"])
     if kwargs["lateral_angle"] == 0:
         kwargs["lateral_angle"] = None  # 0: the same as 'hook angle from vertical'
-    kwargs["cone"] = params.choice("hook cone shape", CONE_SHAPES)
+    kwargs["cone"] = params.choice("hook cone shape", CHOICES)
     for arg, name in names.items():
         with located(params, default=name):
             HookLoadOptions(**{arg: kwargs[arg]})
@@ -153,7 +161,7 @@ def _nz_warning(reader, params, nz):
 
 def _attitude(reader, params, airframe, refs):
     """'hanging', 'mast vertical' or the Attitude given by 'attitude pitch' and 'roll'."""
-    source = params.choice("attitude", (*ATTITUDE_SOURCES, "given"))
+    source = params.choice("attitude", CHOICES)
     angles = {name: params(name) for name in ("attitude pitch", "attitude roll")}
     if source != "given":
         for name, value in angles.items():
@@ -199,7 +207,6 @@ def _listed_cases(reader, params, hook, envelope, parachute, generate):
                                "matrix' is no and there is no LoadCases sheet")
         return ()
     t = reader.table(_SPEC["LoadCases"])
-    check_unique(reader, t, "id")
     with located(params, default="hook azimuths"):
         directions = list(hook_directions(hook)["hook"])
     valid_hooks = [*directions, TOWED, NO_HOOK]
@@ -348,8 +355,8 @@ def _nastran_options(params, study):
     ``nastran_settings`` (options of :func:`~slingloads.io.loads.nastran.prepare_nastran`)
     and ``nastran_locations`` (the cell of each option and of each listed case id, for the
     errors found when the file is laid out)."""
-    settings = {"inertia_relief": params.choice("nastran inertia relief", INERTIA_RELIEF),
-                "hook_at": params.choice("nastran hook load at", HOOK_POINTS),
+    settings = {"inertia_relief": params.choice("nastran inertia relief", CHOICES),
+                "hook_at": params.choice("nastran hook load at", CHOICES),
                 "axes": str(params("nastran model axes") or "").strip(),
                 "offset": tuple(float(params(f"nastran offset {a}")) for a in "xyz")}
     with located(params, default="nastran model axes"):

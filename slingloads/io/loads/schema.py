@@ -170,7 +170,7 @@ SHEETS = (
                help="Sideslip of the point, positive with the wind from the right. Typical: "
                     "-15 to +15 deg.", bounds=TABLE_ANGLE),
     ), help="Points of the angle-of-attack / sideslip envelope (corners and centre).",
-       max_rows=MAX_STATIONS),
+       max_rows=MAX_STATIONS, ids=("id",)),
     TableSheet("LoadCases", (
         Column("id", TEXT, help="Unique case id, printed on the reports, e.g. LC-SPECIAL-1."),
         Column("hook", TEXT,
@@ -185,7 +185,7 @@ SHEETS = (
                help="Free text printed beside the case on the LoadCases sheet of the report."),
     ), help="Optional: cases listed by hand (added to the generated matrix). In all, at most "
        f"{MAX_LOAD_CASES:,} cases, and at most {MAX_SFBM_ROWS:,} cases x cut stations.",
-       max_rows=MAX_LOAD_CASES),
+       max_rows=MAX_LOAD_CASES, ids=("id",)),
     TableSheet("PreviousEnvelope", (
         Column("x", "length", "m",
                help="Station of the previous envelope, x positive aft, strictly increasing. "

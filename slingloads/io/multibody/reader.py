@@ -22,7 +22,6 @@ from slingloads.analyses.multibody.manoeuvres import (
     Manoeuvre,
     paper_manoeuvres,
 )
-from slingloads.ids import check_unique
 from slingloads.io.airframe.reader import (
     parachute_reach_rule,
     read_fin_aero,
@@ -57,6 +56,16 @@ from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.multibody.system import SlingSystem
 from slingloads.models.parachute import extended_cd_table
 from slingloads.runs.multibody import MultibodyInputs
+
+#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
+#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
+CHOICES = {
+    "multibody configuration": CONFIGURATIONS,
+    "multibody tail": TAILS,
+    "multibody parachute model": PARACHUTE_MODELS,
+    "multibody canopy CD": CANOPY_TABLES,
+    "multibody carrier": CARRIERS,
+}
 
 ANALYSIS = "multibody"
 _SPEC = {s.name: s for s in SHEETS}
@@ -160,11 +169,11 @@ def read_system(reader, params, study):
         (spelt as in the schema) and ``margin`` [-].
     """
     file = reader.file
-    configuration = params.choice("multibody configuration", CONFIGURATIONS)
-    tail_choice = params.choice("multibody tail", TAILS)
-    parachute_model = params.choice("multibody parachute model", PARACHUTE_MODELS)
-    canopy_table = params.choice("multibody canopy CD", CANOPY_TABLES)
-    carrier_choice = params.choice("multibody carrier", CARRIERS)
+    configuration = params.choice("multibody configuration", CHOICES)
+    tail_choice = params.choice("multibody tail", CHOICES)
+    parachute_model = params.choice("multibody parachute model", CHOICES)
+    canopy_table = params.choice("multibody canopy CD", CHOICES)
+    carrier_choice = params.choice("multibody carrier", CHOICES)
     margin = params.positive("multibody cable margin", allow_zero=True)
     airspeed = params.positive("multibody airspeed EAS", allow_zero=True)
     altitude = params("multibody density altitude")
@@ -302,7 +311,6 @@ def read_manoeuvres(reader, params, system, t_end):
         return tuple(paper_manoeuvres(system.density_altitude)), "the paper's list"
     t = reader.table(_SPEC["MultibodyManoeuvres"])
     rows = _Rows(reader, t)
-    check_unique(t, "name")
     out = []
     for i in range(len(t)):
         name = str(t["name"][i]).strip()

@@ -195,7 +195,7 @@ SHEETS = (
        "2 deg yaw seed for the runs from hover, none for a gust). Without the sheet the "
        "paper's list is flown: free response, +-30 ft/s lateral gusts of four shapes, "
        "accelerations to 40/60/80/100 KIAS, wind ramps to 20/30/40/60/80 kt.",
-       max_rows=MAX_MULTIBODY_RUNS),
+       max_rows=MAX_MULTIBODY_RUNS, ids=("name",)),
     TableSheet("HTailAero", (
         Column("alpha", "angle", "deg",
                help="Local angle of attack of the horizontal tail, strictly increasing; it "
