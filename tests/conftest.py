@@ -170,10 +170,16 @@ def example_loads_report(tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
-def example_run_report(tmp_path_factory):
+def example_run_report(ident_workbook, tmp_path_factory):
     """The folder of ``slingloads run`` on the example (every analysis it asks for), made
-    once for the session (to be read, not changed)."""
-    return _report(tmp_path_factory, "run")
+    once for the session (to be read, not changed): run on ``ident_workbook``, the example
+    with its cover's free fields filled in, its name kept (the numbers are the example's)."""
+    from slingloads.cli import main
+
+    def make(out):
+        assert main(["run", str(ident_workbook), "--out", str(out), "--quiet"]) == 0
+
+    return made_once(tmp_path_factory, "example-run", make)
 
 
 @pytest.fixture(scope="session")
@@ -270,28 +276,23 @@ def libreoffice(tmp_path_factory):
 @pytest.fixture(scope="session")
 def ident_workbook(tmp_path_factory):
     """A copy of the example with the cover's free fields filled in (``hostile.IDENT``),
-    ``ident.xlsx``."""
+    under the example's name."""
     import openpyxl
 
     def make(folder):
         book = openpyxl.load_workbook(EXAMPLE)
         set_study(book, IDENT)
         folder.mkdir(parents=True)
-        book.save(folder / "ident.xlsx")
+        book.save(folder / EXAMPLE.name)
 
-    return made_once(tmp_path_factory, "ident-in", make) / "ident.xlsx"
+    return made_once(tmp_path_factory, "ident-in", make) / EXAMPLE.name
 
 
 @pytest.fixture(scope="session")
-def ident_run_report(ident_workbook, tmp_path_factory):
-    """The folder of ``slingloads run`` on ``ident_workbook``, made once for the session (to
-    be read, not changed)."""
-    from slingloads.cli import main
-
-    def make(out):
-        assert main(["run", str(ident_workbook), "--out", str(out), "--quiet"]) == 0
-
-    return made_once(tmp_path_factory, "ident-run", make)
+def ident_run_report(example_run_report):
+    """The folder of ``slingloads run`` on ``ident_workbook`` (the session's one run of the
+    example: :func:`example_run_report`)."""
+    return example_run_report
 
 
 @pytest.fixture(scope="session")
@@ -340,13 +341,14 @@ def printed_reports(ident_run_report, ident_campaign_report, ident_us_loads_repo
         out.mkdir(parents=True)
         us = out / "us-copy" / "ident-us-loads.xlsx"  # its own PDF name
         us.parent.mkdir()
-        us.write_bytes((ident_us_loads_report / "ident-loads.xlsx").read_bytes())
-        libreoffice([*(ident_run_report / f"ident-{r}.xlsx" for r in reports),
+        us.write_bytes((ident_us_loads_report / f"{EXAMPLE.stem}-loads.xlsx").read_bytes())
+        libreoffice([*(ident_run_report / f"{EXAMPLE.stem}-{r}.xlsx" for r in reports),
                      ident_campaign_report[0] / "ident-campaign.xlsx", us], "pdf", out)
 
     out = made_once(tmp_path_factory, "ident-pdf", make)
-    return {r: (out / f"ident-{r}.pdf").read_bytes()
-            for r in (*reports, "campaign", "us-loads")}
+    names = {r: f"{EXAMPLE.stem}-{r}" for r in reports}
+    names.update(campaign="ident-campaign", **{"us-loads": "ident-us-loads"})
+    return {r: (out / f"{name}.pdf").read_bytes() for r, name in names.items()}
 
 
 def _needs_calibri_metrics():

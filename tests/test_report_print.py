@@ -18,7 +18,7 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from hostile import IDENT_REPORTS, column_widths
+from hostile import EXAMPLE, IDENT_REPORTS, column_widths
 
 from slingloads.io.study import file_digest
 
@@ -64,7 +64,7 @@ def _check_fit(ws, where):
 
 
 def _book(ident_run_report, report):
-    return openpyxl.load_workbook(ident_run_report / f"ident-{report}.xlsx")
+    return openpyxl.load_workbook(ident_run_report / f"{EXAMPLE.stem}-{report}.xlsx")
 
 
 def test_print_setup_on_every_sheet(ident_run_report):
@@ -80,7 +80,7 @@ def test_print_setup_on_every_sheet(ident_run_report):
             assert ws.page_setup.paperSize == 9, where
             assert ws.page_setup.orientation in ("portrait", "landscape"), where
             _check_fit(ws, where)
-            assert ws.oddHeader.left.text and "ident.xlsx" in ws.oddHeader.right.text, where
+            assert ws.oddHeader.left.text and EXAMPLE.name in ws.oddHeader.right.text, where
             assert "DOC-42 A" in ws.oddHeader.right.text, where
             assert ws.oddFooter.center.text == "page &P of &N", where
             assert ws.oddFooter.left.text.startswith("run "), where
@@ -101,7 +101,7 @@ def test_cover(ident_run_report, ident_workbook):
         ws = _book(ident_run_report, report)["Cover"]
         rows = [[c.value for c in r] for r in ws.iter_rows()]
         table = {r[0]: r[1] for r in rows if r[0] is not None and len(r) > 1}
-        assert table["input workbook"] == "ident.xlsx"
+        assert table["input workbook"] == EXAMPLE.name
         assert table["input SHA-256"] == file_digest(ident_workbook)
         assert table["author"] == "A. Author" and table["checker"] == "C. Checker & Co"
         assert table["document number"] == "DOC-42 A"
@@ -158,7 +158,7 @@ def test_number_formats_per_quantity(ident_run_report, ident_us_loads_report):
     assert summary["hook cone angle from the vertical"][1].number_format == "0.0"
     assert summary["load cases"][1].number_format == "0"
     assert summary["parachute"][1].value == "yes"
-    us = openpyxl.load_workbook(ident_us_loads_report / "ident-loads.xlsx")
+    us = openpyxl.load_workbook(ident_us_loads_report / f"{EXAMPLE.stem}-loads.xlsx")
     assert {c.number_format for c in _cells(us["Envelope"], "x [in]")} == {"0.00"}
     assert {c.number_format for c in _cells(us["Envelope"], "Mz max [lbf in]")} == {"#,##0"}
     mass = {r[0].value: r for r in us["Summary"].iter_rows() if r[0].value}["aircraft mass"]
@@ -186,18 +186,16 @@ def test_csv_headers_in_one_style(ident_run_report):
     digits and underscores, a physical quantity ending in its SI unit (_m, _N, _Nm, _s,
     _deg, _m2...); the SFBM file keeps exactly its columns."""
     files = sorted(ident_run_report.glob("*.csv"))
-    assert {f.name for f in files} == {"ident-sfbm.csv", "ident-envelope.csv",
-                                       "ident-lateral-histories.csv",
-                                       "ident-chute-histories.csv",
-                                       "ident-multibody-histories.csv"}
+    assert {f.name for f in files} == {f"{EXAMPLE.stem}-{n}.csv" for n in (
+        "sfbm", "envelope", "lateral-histories", "chute-histories", "multibody-histories")}
     for f in files:
         header = f.read_text().splitlines()[0].split(",")
         for name in header:
             assert re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name), (f.name, name)
             assert "[" not in name and " " not in name
-    sfbm = (ident_run_report / "ident-sfbm.csv").read_text().splitlines()[0]
+    sfbm = (ident_run_report / f"{EXAMPLE.stem}-sfbm.csv").read_text().splitlines()[0]
     assert sfbm == "case,station,x_m,Vx_N,Vy_N,Vz_N,Mx_Nm,My_Nm,Mz_Nm"
-    lateral = pd.read_csv(ident_run_report / "ident-lateral-histories.csv", nrows=2)
+    lateral = pd.read_csv(ident_run_report / f"{EXAMPLE.stem}-lateral-histories.csv", nrows=2)
     assert {"t_s", "S_m", "Sdot_mps", "Sddot_mps2", "theta1_deg", "T_N"} <= set(lateral)
 
 
@@ -297,7 +295,7 @@ def test_libreoffice_pages_are_full(printed, tmp_path):
 def test_example_envelope_matches_loads(ident_run_report):
     """The wide Envelope table holds, for every station, the largest and smallest Vz over
     every case of the SFBM CSV file, with the case that gives them."""
-    csv = pd.read_csv(ident_run_report / "ident-sfbm.csv")
+    csv = pd.read_csv(ident_run_report / f"{EXAMPLE.stem}-sfbm.csv")
     ws = _book(ident_run_report, "loads")["Envelope"]
     got = [c.value for c in _cells(ws, "Vz max [N]")][:len(csv["station"].unique())]
     want = csv.groupby("station", sort=False)["Vz_N"].max().to_numpy()
