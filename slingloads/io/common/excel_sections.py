@@ -92,12 +92,15 @@ def _unique(name, taken):
 def sheet_blocks(name, sections, number_format=None, taken=()):
     """The sheets a list of sections is printed on, as (sheet name, content).
 
-    A section naming a ``sheet`` goes to that sheet; one whose table is taller than a page,
-    on a sheet of several tables, goes to a sheet of its own named after the base sheet and
-    the table's title (its header is then
-    repeated by the print setup on every page, never written into the data); when no table
-    is left on the base sheet, the first such table keeps the base name and the notes. A
-    sheet holding one table is a *table sheet*: a DataFrame whose ``attrs`` carry its
+    A section naming a ``sheet`` goes to that sheet; one whose table (without key columns)
+    is taller than a page, on a sheet of several tables, goes whole to a sheet of its own
+    named after the base sheet and the table's title (its header is then repeated by the
+    print setup on every page, never written into the data). The tables left that are too
+    wide for the page are then cut into blocks of columns (:func:`column_blocks`, the
+    table's keys first in each, titled ``part k of n``), and a table or block taller than a
+    page among others goes to a sheet of its own (``Base part k`` for a block). When no
+    table is left on the base sheet, the first such table keeps the base name and the notes.
+    A sheet holding one table is a *table sheet*: a DataFrame whose ``attrs`` carry its
     ``title`` and ``note`` (:func:`write_table_sheets`); any other is a list of sections
     (:func:`write_sections_sheet`), whose tables each fit on one page.
 
@@ -105,11 +108,15 @@ def sheet_blocks(name, sections, number_format=None, taken=()):
     -------
     list of (str, DataFrame or list of Section)
     """
-    sections = _cut(list(sections), number_format)
+    sections = list(sections)
+    tables = [s for s in sections if s.table is not None]
+    away = [s for s in tables if s.sheet or (not s.keys and len(tables) > 1
+                                             and _is_long(s.table, number_format))]
+    sections = _cut(sections, number_format, away)
     tables = [s for s in sections if s.table is not None]
     taken = {t.lower() for t in taken} | {name.lower()}
-    long = [s for s in tables if s.sheet or (len(tables) > 1
-                                             and _is_long(s.table, number_format))]
+    long = [s for s in tables if any(s is x for x in away) or s.sheet or (
+        len(tables) > 1 and _is_long(s.table, number_format))]
     rest = [s for s in sections if all(s is not x for x in long)]
     if long and not any(s.table is not None for s in rest) and not long[0].sheet:
         rest.append(long.pop(0))
@@ -340,18 +347,19 @@ def column_blocks(frame, keys=(), *, number_format=None, beside=()):
                                                       beside)]
 
 
-def _cut(sections, number_format=None):
+def _cut(sections, number_format=None, away=()):
     """The sections of a sheet with each table too wide for the page (beside the others of
     the sheet) cut by :func:`column_blocks`: a heading (its title and note), then the blocks
     titled ``part k of n``, each with the table's keys first.
 
-    Cut are the tables of the sheet (not one naming a sheet of its own) with key columns, or
-    with more than :data:`_NARROW_COLUMNS` columns on a sheet of several tables; each is cut
-    so that its blocks fit beside the columns of every other block and table on the sheet.
-    Left whole: a sheet whose tables fit once its text columns wrap narrower
-    (:func:`text_width_for`), and a sheet's one table without keys (it prints in pages of
-    columns, its cells one table that a program reads)."""
-    own = [k for k, s in enumerate(sections) if s.table is not None and not s.sheet]
+    Cut are the tables of the sheet (not those of ``away``, which go whole to sheets of
+    their own) with key columns, or with more than :data:`_NARROW_COLUMNS` columns on a sheet
+    of several tables; each is cut so that its blocks fit beside the columns of every other
+    block and table on the sheet. Left whole: a sheet whose tables fit once its text columns
+    wrap narrower (:func:`text_width_for`), and a sheet's one table without keys (it prints
+    in pages of columns, its cells one table that a program reads)."""
+    own = [k for k, s in enumerate(sections)
+           if s.table is not None and all(s is not x for x in away)]
     if not own or (len(own) == 1 and not sections[own[0]].keys):
         return sections
     if len(own) > 1 and _fitting_text_width([sections[k] for k in own], number_format):
