@@ -48,10 +48,11 @@ from slingloads.io.common.excel_tables import (
 from slingloads.io.common.units import report_text
 
 
-def _is_long(table, number_format):
-    """A table taller than a printed page with its title."""
+def _is_long(table, number_format, text_width=MAX_TEXT_WIDTH):
+    """A table taller than a printed page with its title, its text columns wrapped at
+    ``text_width`` characters."""
     formats = _number_formats(table.columns, number_format)
-    own = _column_plan([table], formats_of=lambda f: formats)
+    own = _column_plan([table], formats_of=lambda f: formats, text_width=text_width)
     height = _table_pixels(table, own) + 2 * ROW_PIXELS
     page = page_pixels(orientation_for(own.pixels, height), own.pixels) * 0.95
     return height > page
@@ -114,9 +115,11 @@ def sheet_blocks(name, sections, number_format=None, taken=()):
                                              and _is_long(s.table, number_format))]
     sections = _cut(sections, number_format, away)
     tables = [s for s in sections if s.table is not None]
+    kept = [s for s in sections if all(s is not x for x in away)]
+    text_width = text_width_for(kept, number_format)  # the narrowest the sheet may wrap at
     taken = {t.lower() for t in taken} | {name.lower()}
     long = [s for s in tables if any(s is x for x in away) or s.sheet or (
-        len(tables) > 1 and _is_long(s.table, number_format))]
+        len(tables) > 1 and _is_long(s.table, number_format, text_width))]
     rest = [s for s in sections if all(s is not x for x in long)]
     if long and not any(s.table is not None for s in rest) and not long[0].sheet:
         rest.append(long.pop(0))
@@ -158,7 +161,9 @@ _SCALES = tuple(x for x in (1.0, 0.95, 0.9, 0.85) if x >= MIN_EXTRA_SCALE)
 
 def _paginate(needs, page):
     """Pages of blocks ``needs`` high on pages ``page`` high [px]: a block that would
-    straddle a page break but fits on a page starts a new one; a longer block flows on.
+    straddle a page break but fits on a page starts a new one; a longer block flows on,
+    unless less than :data:`~slingloads.io.common.excel_print.SPARSE_LAST` of the page is
+    left (its title would end the page with little or none of its table under it).
 
     Returns
     -------
@@ -169,7 +174,8 @@ def _paginate(needs, page):
     """
     breaks, fills, used = [], [], 0.0
     for k, need in enumerate(needs):
-        if k and used and used + need > page and need <= page:
+        if k and used and used + need > page and (need <= page
+                                                  or page - used < SPARSE_LAST * page):
             breaks.append(k)
             fills.append(used / page)
             used = 0.0
@@ -317,14 +323,14 @@ def _blocks(widths, keys, beside=(), room=SHEET_PIXELS):
     return [[*keys, *block] for block in cut(high)]
 
 
-def column_blocks(frame, keys=(), *, number_format=None, beside=()):
+def column_blocks(frame, keys=(), *, number_format=None):
     """A table too wide for the page as the blocks of columns it prints in, each with the
-    key columns first: the one rule by which every report's wide table is cut.
+    key columns first: the one rule by which every report's wide table is cut
+    (:func:`sheet_blocks` applies it to the tables of a sheet together).
 
-    Every block, with the columns ``beside`` it on its sheet, fits a landscape A4 page at no
-    less than :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`
-    (:data:`SHEET_PIXELS`), its columns measured as the workbook writer sizes them and
-    LibreOffice prints them.
+    The blocks, one under another on a sheet, fit a landscape A4 page at no less than
+    :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE` (:data:`SHEET_PIXELS`), the
+    columns measured as the workbook writer sizes them and LibreOffice prints them.
 
     Parameters
     ----------
@@ -334,59 +340,85 @@ def column_blocks(frame, keys=(), *, number_format=None, beside=()):
         those ``frame`` lacks are left out; none: its first column and its ``unit`` column.
     number_format : mapping or callable, optional
         As in :func:`~slingloads.io.common.excel_tables.write_table_sheets`.
-    beside : sequence of float
-        Width of the sheet's columns at each position from the other tables on it. [px]
 
     Returns
     -------
     list of pandas.DataFrame
         The blocks, in the order of the columns; the table whole when it fits.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> wide = pd.DataFrame({"run": ["R1"], **{f"a long quantity {k} [deg]": [1.0]
+    ...                                       for k in range(20)}})
+    >>> [list(b.columns[:2]) for b in column_blocks(wide, ["run"])]
+    [['run', 'a long quantity 0 [deg]'], ['run', 'a long quantity 10 [deg]']]
     """
-    widths = _widths(frame, number_format)
-    return [frame.iloc[:, block] for block in _blocks(widths, _key_positions(frame, keys),
-                                                      beside)]
+    sections = _cut([Section(table=frame, keys=list(keys) or [str(frame.columns[0])])],
+                    number_format)
+    return [s.table for s in sections if s.table is not None]
 
 
 def _cut(sections, number_format=None, away=()):
     """The sections of a sheet with each table too wide for the page (beside the others of
-    the sheet) cut by :func:`column_blocks`: a heading (its title and note), then the blocks
-    titled ``part k of n``, each with the table's keys first.
+    the sheet) cut into blocks of columns: a heading (its title and note), then the blocks
+    titled ``part k of n``, each with the table's keys first (:func:`_key_positions`).
 
     Cut are the tables of the sheet (not those of ``away``, which go whole to sheets of
     their own) with key columns, or with more than :data:`_NARROW_COLUMNS` columns on a sheet
     of several tables; each is cut so that its blocks fit beside the columns of every other
-    block and table on the sheet. Left whole: a sheet whose tables fit once its text columns
-    wrap narrower (:func:`text_width_for`), and a sheet's one table without keys (it prints
-    in pages of columns, its cells one table that a program reads)."""
+    block and table on the sheet (:func:`_blocks`), with the sheet's text columns wrapped at
+    the width of :data:`_TEXT_WIDTHS` that prints the sheet on the least paper (its
+    estimated height, times its shrink to the page width), a block fitting the page alone
+    at full text width too (a long one prints on a table sheet of its own). Left whole: a
+    sheet whose tables fit once its text columns wrap narrower (:func:`text_width_for`), and
+    a sheet's one table without keys (it prints in pages of columns, its cells one table
+    that a program reads)."""
     own = [k for k, s in enumerate(sections)
            if s.table is not None and all(s is not x for x in away)]
     if not own or (len(own) == 1 and not sections[own[0]].keys):
         return sections
     if len(own) > 1 and _fitting_text_width([sections[k] for k in own], number_format):
         return sections
-    widths = {k: _widths(sections[k].table, number_format) for k in own}
     keys = {k: _key_positions(sections[k].table, sections[k].keys) for k in own}
-    wide = [k for k in own if sections[k].keys or len(widths[k]) > _NARROW_COLUMNS]
-    narrow = [widths[k] for k in own if k not in wide]
-    beside = _union(narrow)
-    while True:
-        # each table cut beside the columns of the others; while the blocks of all do not
-        # fit together, cut again beside the widest columns seen so far at each position:
-        # these only grow (to the widest columns at most), so this ends, with blocks that fit
-        plan = {k: _blocks(widths[k], keys[k], beside) for k in wide}
-        sheet = _union([*narrow, *([widths[k][j] for j in block]
-                                   for k in wide for block in plan[k])])
-        grown = _union([beside, sheet])
-        if sum(sheet) <= SHEET_PIXELS or grown == beside:
-            break
-        beside = grown
+    wide = [k for k in own if sections[k].keys or sections[k].table.shape[1] > _NARROW_COLUMNS]
+    full = {k: _widths(sections[k].table, number_format) for k in wide}
+
+    def plan_at(text_width):
+        widths = {k: _widths(sections[k].table, number_format, text_width) for k in own}
+        narrow = [widths[k] for k in own if k not in wide]
+        beside = _union(narrow)
+        while True:
+            # each table cut beside the columns of the others; while the blocks of all do
+            # not fit together, cut again beside the widest columns seen so far at each
+            # position: these only grow (to the widest columns at most), so this ends
+            plan = {k: _blocks(widths[k], keys[k], beside) for k in wide}
+            sheet = _union([*narrow, *([widths[k][j] for j in block]
+                                       for k in wide for block in plan[k])])
+            grown = _union([beside, sheet])
+            if sum(sheet) <= SHEET_PIXELS or grown == beside:
+                break
+            beside = grown
+        tables = [sections[k].table.iloc[:, block] for k in wide for block in plan[k]]
+        tables += [sections[k].table for k in own if k not in wide]
+        height = sum(_table_pixels(t, _column_plan([t], formats_of=lambda f: _number_formats(
+            f.columns, number_format), text_width=text_width)) + 2 * ROW_PIXELS
+            for t in tables)
+        whole = text_width == MAX_TEXT_WIDTH or all(
+            sum(full[k][j] for j in block) <= SHEET_PIXELS
+            for k in wide for block in plan[k] if len(block) > len(keys[k]) + 1)
+        paper = height * max(1.0, sum(sheet) / PRINTABLE["landscape"][0])
+        return (not whole, paper), plan
+
+    plan = min((plan_at(w) for w in _TEXT_WIDTHS), key=lambda c: c[0])[1]
     out = []
     for k, s in enumerate(sections):
         if k not in plan or len(plan[k]) == 1:
             out.append(s)
             continue
         out.append(Section(s.title, note=s.note))
-        out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}", s.table.iloc[:, block])
+        out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}".lstrip(", "),
+                        s.table.iloc[:, block])
                 for m, block in enumerate(plan[k])]
     return out
 
