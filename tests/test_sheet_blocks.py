@@ -1,7 +1,9 @@
 """A sheet of several tables prints each table as one block: its text columns (notes) wrap
 narrower, rows taller, so that a wide table beside them keeps all its columns together; a
 table cut into column parts (only when no narrower wrap lets it fit) keeps its ``unit``
-column in every part, so that each number keeps the format of its row's unit.
+column in every part, so that each number keeps the format of its row's unit; a table with
+key columns (a report's run, mode, metric and unit) is cut once, each block starting with its
+keys, as in the example's campaign and multibody reports.
 
 The reference is the written file read back with openpyxl and pandas (the stored column
 widths at 7 px per character unit, the Excel number format of each cell), against the A4

@@ -2,13 +2,15 @@
 
 What this module guarantees: a list of sections is printed on sheets that read on paper
 (:func:`sheet_blocks`): a table taller than a page goes to a sheet of its own named after its
-title, a table too wide for the page beside the others is cut in blocks of columns that each
-keep the row's id column; on a sheet of several sections (:func:`write_sections_sheet`) a
-block that would straddle a page break but fits on one page starts on a new page, at the
-print scale that prints the sheet on the fewest pages with the fewest nearly empty ones, and
-each table keeps its own alignment and number formats (:mod:`slingloads.io.common.
-excel_tables`); a sheet whose only table is its last block repeats the rows down to the
-table's header on every printed page.
+title, a table too wide for the page beside the others is cut once, by one rule
+(:func:`column_blocks`), in blocks of columns that each start with the table's key columns
+(the row's id) and fit a landscape page at no less than
+:data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`; on a sheet of several sections
+(:func:`write_sections_sheet`) a block that would straddle a page break but fits on one page
+starts on a new page, at the print scale that prints the sheet on the fewest pages with the
+fewest nearly empty ones, and each table keeps its own alignment and number formats
+(:mod:`slingloads.io.common.excel_tables`); a sheet whose only table is its last block
+repeats the rows down to the table's header on every printed page.
 """
 
 from __future__ import annotations
@@ -116,7 +118,7 @@ def sheet_blocks(name, sections, number_format=None, taken=()):
     sections = _cut(sections, number_format, away)
     tables = [s for s in sections if s.table is not None]
     kept = [s for s in sections if all(s is not x for x in away)]
-    text_width = text_width_for(kept, number_format)  # the narrowest the sheet may wrap at
+    text_width = _text_width_for(kept, number_format)  # the narrowest the sheet may wrap at
     taken = {t.lower() for t in taken} | {name.lower()}
     long = [s for s in tables if any(s is x for x in away) or s.sheet or (
         len(tables) > 1 and _is_long(s.table, number_format, text_width))]
@@ -230,7 +232,7 @@ def _page_plan(needs, page, fit=1.0):
 #: blocks (item, value, unit, note).
 _NARROW_COLUMNS = 4
 #: Widths the text columns of a sheet of several tables may wrap at, widest first, so that
-#: its wide tables print whole (:func:`text_width_for`). [characters]
+#: its wide tables print whole (:func:`_text_width_for`). [characters]
 _TEXT_WIDTHS = (MAX_TEXT_WIDTH, 36, 32, 28, 24)
 #: Widest the columns of a sheet may be, as LibreOffice prints them: a landscape page at
 #: :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`, less 5 % for the widths of its
@@ -263,7 +265,7 @@ def _fitting_text_width(sections, number_format=None):
     return None
 
 
-def text_width_for(sections, number_format=None):
+def _text_width_for(sections, number_format=None):
     """The width the text columns (notes, descriptions) of a sheet of several tables wrap
     at: the widest of :data:`_TEXT_WIDTHS` at which every table fits beside the others (a
     row grows taller, a table stays one block that a checker reads at once). A sheet of one
@@ -371,7 +373,7 @@ def _cut(sections, number_format=None, away=()):
     the width of :data:`_TEXT_WIDTHS` that prints the sheet on the least paper (its
     estimated height, times its shrink to the page width), a block fitting the page alone
     at full text width too (a long one prints on a table sheet of its own). Left whole: a
-    sheet whose tables fit once its text columns wrap narrower (:func:`text_width_for`), and
+    sheet whose tables fit once its text columns wrap narrower (:func:`_text_width_for`), and
     a sheet's one table without keys (it prints in pages of columns, its cells one table
     that a program reads)."""
     own = [k for k, s in enumerate(sections)
@@ -417,7 +419,7 @@ def _cut(sections, number_format=None, away=()):
             out.append(s)
             continue
         out.append(Section(s.title, note=s.note))
-        out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}".lstrip(", "),
+        out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}",
                         s.table.iloc[:, block])
                 for m, block in enumerate(plan[k])]
     return out
@@ -454,7 +456,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
         ``[name]``.
     """
     ws = wb.add_worksheet(check_sheet_name(name))
-    text_width = text_width_for(sections, number_format)
+    text_width = _text_width_for(sections, number_format)
     tables = [s.table for s in sections if s.table is not None]
     _check_highlight(tables, highlight, name)
     columns = _column_plan(tables, [s.note for s in sections],

@@ -219,7 +219,7 @@ def _column_plan(tables, notes=(), formats_of=None, text_width=MAX_TEXT_WIDTH):
     wider than :data:`~slingloads.io.common.excel_cells.MAX_TEXT_WIDTH` characters wraps at
     that width, a column of text at ``text_width`` when that is narrower (a sheet of several
     tables whose text columns wrap narrower so that its wide tables print whole,
-    :func:`~slingloads.io.common.excel_sections.text_width_for`)."""
+    :func:`~slingloads.io.common.excel_sections._text_width_for`)."""
     widths, wrapped = {}, set()
     for frame in tables:
         formats = formats_of(frame) if formats_of else [None] * frame.shape[1]
