@@ -85,7 +85,8 @@ class Section:
         The columns that say which row is which (run, mode, metric and unit): a table too
         wide for the page is printed in blocks of columns, each with these first
         (:func:`~slingloads.io.common.excel_sections.column_blocks`); empty: its first column
-        and its ``unit`` column. A table with keys is cut even alone on its sheet.
+        and its ``unit`` column. A table with keys is cut even alone on its sheet (not one
+        naming a sheet of its own).
     """
 
     title: str = ""
