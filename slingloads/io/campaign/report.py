@@ -36,7 +36,6 @@ from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
 from slingloads.io.common.ownership import PARQUET_KEY
 from slingloads.io.common.report import (
-    column_blocks,
     explain_infinite,
     in_report_units,
     quantity_text,
@@ -245,16 +244,6 @@ def handoff_table(report, units="SI"):
     return frame
 
 
-def _parts(title, frame, keys):
-    """Sections of a table printed in column blocks that fit a page (``keys`` first in
-    each): its title alone when it fits, else a heading then ``part k of n``."""
-    tables = column_blocks(frame, keys)
-    if len(tables) == 1:
-        return [Section(title, tables[0])]
-    return [Section(title), *(Section(f"{title}, part {k + 1} of {len(tables)}", table)
-                              for k, table in enumerate(tables))]
-
-
 def _sheets(report, units, warnings=(), decision=None):
     from slingloads.io.common.decision import decision_section
 
@@ -282,9 +271,10 @@ def _sheets(report, units, warnings=(), decision=None):
     results = r.metrics[["run", *(c for c in r.metrics.columns if c not in matrix.columns)]]
     sheets = {
         "Summary": summary,
-        "Matrix": _parts("The run matrix", in_units(r.campaign.matrix.frame, units), ["run"]),
-        "Metrics": _parts("Metrics of every run (its definition: sheet Matrix)",
-                          _explained(in_units(results, units)), ["run"]),
+        "Matrix": [Section("The run matrix", in_units(r.campaign.matrix.frame, units),
+                           keys=["run"])],
+        "Metrics": [Section("Metrics of every run (its definition: sheet Matrix)",
+                            _explained(in_units(results, units)), keys=["run"])],
         "Selection": [Section("By area factor",
                               _explained(in_units(r.selection.by_area, units)))],
         "NeutralArea": [Section("1.0 x neutral area: 1-DOF and multibody verdicts",
@@ -305,19 +295,19 @@ def _sheets(report, units, warnings=(), decision=None):
             Section("Stability map over parachute area x airspeed x density altitude"),
             Section("Minimum stable area by airspeed and density altitude",
                     in_units(r.stability.minimum, units)),
-            *_parts("Every grid point", _explained(in_units(r.stability.points, units)),
-                    ["area factor [-]", "airspeed EAS [m/s]", "airspeed EAS [kt]"])]
+            Section("Every grid point", _explained(in_units(r.stability.points, units)),
+                    keys=["area factor [-]", "airspeed EAS [m/s]", "airspeed EAS [kt]"])]
     if r.no_parachute is not None:
         keys = ["helicopter", "ramp target [m/s]", "ramp target [kt]"]
-        sheets["NoParachute"] = _parts(
-            "Every ramp", _explained(in_units(r.no_parachute.runs, units)), keys)
+        sheets["NoParachute"] = [Section(
+            "Every ramp", _explained(in_units(r.no_parachute.runs, units)), keys=keys)]
         if not r.no_parachute.gust_runs.empty:
             study = r.campaign.no_parachute
-            sheets["NoParachute"] += _parts(
+            sheets["NoParachute"].append(Section(
                 f"Every ramp with a lateral gust ({GUST_DURATION:g} s of "
                 f"{quantity_text(study.gust_speed, 'speed', units, digits=3)}, "
                 f"{GUST_DELAY:g} s after the ramp's end; the verdict read after the gust)",
-                _explained(in_units(r.no_parachute.gust_runs, units)), keys)
+                _explained(in_units(r.no_parachute.gust_runs, units)), keys=keys))
     sheets["LoadsHandoff"] = (
         [Section("Extremes of the chosen parachute's runs", handoff)] if handoff is not None
         else "no area is stable in every condition and none was chosen: nothing is handed to "

@@ -2,13 +2,15 @@
 
 What this module guarantees: a list of sections is printed on sheets that read on paper
 (:func:`sheet_blocks`): a table taller than a page goes to a sheet of its own named after its
-title, a table too wide for the page beside the others is cut in blocks of columns that each
-keep the row's id column; on a sheet of several sections (:func:`write_sections_sheet`) a
-block that would straddle a page break but fits on one page starts on a new page, at the
-print scale that prints the sheet on the fewest pages with the fewest nearly empty ones, and
-each table keeps its own alignment and number formats (:mod:`slingloads.io.common.
-excel_tables`); a sheet whose only table is its last block repeats the rows down to the
-table's header on every printed page.
+title, a table too wide for the page beside the others is cut once, by one rule
+(:func:`column_blocks`), in blocks of columns that each start with the table's key columns
+(the row's id) and fit a landscape page at no less than
+:data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`; on a sheet of several sections
+(:func:`write_sections_sheet`) a block that would straddle a page break but fits on one page
+starts on a new page, at the print scale that prints the sheet on the fewest pages with the
+fewest nearly empty ones, and each table keeps its own alignment and number formats
+(:mod:`slingloads.io.common.excel_tables`); a sheet whose only table is its last block
+repeats the rows down to the table's header on every printed page.
 """
 
 from __future__ import annotations
@@ -48,10 +50,11 @@ from slingloads.io.common.excel_tables import (
 from slingloads.io.common.units import report_text
 
 
-def _is_long(table, number_format):
-    """A table taller than a printed page with its title."""
+def _is_long(table, number_format, text_width=MAX_TEXT_WIDTH):
+    """A table taller than a printed page with its title, its text columns wrapped at
+    ``text_width`` characters."""
     formats = _number_formats(table.columns, number_format)
-    own = _column_plan([table], formats_of=lambda f: formats)
+    own = _column_plan([table], formats_of=lambda f: formats, text_width=text_width)
     height = _table_pixels(table, own) + 2 * ROW_PIXELS
     page = page_pixels(orientation_for(own.pixels, height), own.pixels) * 0.95
     return height > page
@@ -92,12 +95,15 @@ def _unique(name, taken):
 def sheet_blocks(name, sections, number_format=None, taken=()):
     """The sheets a list of sections is printed on, as (sheet name, content).
 
-    A section naming a ``sheet`` goes to that sheet; one whose table is taller than a page,
-    on a sheet of several tables, goes to a sheet of its own named after the base sheet and
-    the table's title (its header is then
-    repeated by the print setup on every page, never written into the data); when no table
-    is left on the base sheet, the first such table keeps the base name and the notes. A
-    sheet holding one table is a *table sheet*: a DataFrame whose ``attrs`` carry its
+    A section naming a ``sheet`` goes to that sheet; one whose table (without key columns)
+    is taller than a page, on a sheet of several tables, goes whole to a sheet of its own
+    named after the base sheet and the table's title (its header is then repeated by the
+    print setup on every page, never written into the data). The tables left that are too
+    wide for the page are then cut into blocks of columns (:func:`column_blocks`, the
+    table's keys first in each, titled ``part k of n``), and a table or block taller than a
+    page among others goes to a sheet of its own (``Base part k`` for a block). When no
+    table is left on the base sheet, the first such table keeps the base name and the notes.
+    A sheet holding one table is a *table sheet*: a DataFrame whose ``attrs`` carry its
     ``title`` and ``note`` (:func:`write_table_sheets`); any other is a list of sections
     (:func:`write_sections_sheet`), whose tables each fit on one page.
 
@@ -107,9 +113,15 @@ def sheet_blocks(name, sections, number_format=None, taken=()):
     """
     sections = list(sections)
     tables = [s for s in sections if s.table is not None]
-    taken = {t.lower() for t in taken} | {name.lower()}
-    long = [s for s in tables if s.sheet or (len(tables) > 1
+    away = [s for s in tables if s.sheet or (not s.keys and len(tables) > 1
                                              and _is_long(s.table, number_format))]
+    sections = _cut(sections, number_format, away)
+    tables = [s for s in sections if s.table is not None]
+    kept = [s for s in sections if all(s is not x for x in away)]
+    text_width = _text_width_for(kept, number_format)  # the narrowest the sheet may wrap at
+    taken = {t.lower() for t in taken} | {name.lower()}
+    long = [s for s in tables if any(s is x for x in away) or s.sheet or (
+        len(tables) > 1 and _is_long(s.table, number_format, text_width))]
     rest = [s for s in sections if all(s is not x for x in long)]
     if long and not any(s.table is not None for s in rest) and not long[0].sheet:
         rest.append(long.pop(0))
@@ -151,7 +163,9 @@ _SCALES = tuple(x for x in (1.0, 0.95, 0.9, 0.85) if x >= MIN_EXTRA_SCALE)
 
 def _paginate(needs, page):
     """Pages of blocks ``needs`` high on pages ``page`` high [px]: a block that would
-    straddle a page break but fits on a page starts a new one; a longer block flows on.
+    straddle a page break but fits on a page starts a new one; a longer block flows on,
+    unless less than :data:`~slingloads.io.common.excel_print.SPARSE_LAST` of the page is
+    left (its title would end the page with little or none of its table under it).
 
     Returns
     -------
@@ -162,7 +176,8 @@ def _paginate(needs, page):
     """
     breaks, fills, used = [], [], 0.0
     for k, need in enumerate(needs):
-        if k and used and used + need > page and need <= page:
+        if k and used and used + need > page and (need <= page
+                                                  or page - used < SPARSE_LAST * page):
             breaks.append(k)
             fills.append(used / page)
             used = 0.0
@@ -213,91 +228,201 @@ def _page_plan(needs, page, fit=1.0):
     return best[1], best[2]
 
 
-#: Columns of a table that is never split into column blocks (item, value, unit, note).
+#: Columns of a table that, without key columns of its own, is never split into column
+#: blocks (item, value, unit, note).
 _NARROW_COLUMNS = 4
 #: Widths the text columns of a sheet of several tables may wrap at, widest first, so that
-#: its wide tables print whole (:func:`_narrow`). [characters]
+#: its wide tables print whole (:func:`_text_width_for`). [characters]
 _TEXT_WIDTHS = (MAX_TEXT_WIDTH, 36, 32, 28, 24)
+#: Widest the columns of a sheet may be, as LibreOffice prints them: a landscape page at
+#: :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`, less 5 % for the widths of its
+#: notes. [px]
+SHEET_PIXELS = 0.95 * PRINTABLE["landscape"][0] / MIN_PRINT_SCALE
 
 
-def _narrow(sections, number_format=None):
-    """The sections of a sheet of several tables, and the width its text columns wrap at,
-    so that the sheet (whose columns are as wide as the widest cell of any of its tables at
-    that position) prints on a landscape page at no less than
-    :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE`: one narrow sheet, not a sheet
-    shrunk or cut across pages.
+def _widths(table, number_format=None, text_width=MAX_TEXT_WIDTH):
+    """The printed width of each column of ``table`` as the writer sizes it. [px]"""
+    own = _column_plan([table], formats_of=lambda f: _number_formats(f.columns, number_format),
+                       text_width=text_width)
+    return [_px(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
 
-    The text columns (notes, descriptions) wrap at the widest of :data:`_TEXT_WIDTHS` at
-    which every table fits beside the others (a row grows taller, a table stays one block
-    that a checker reads at once); only when none does are the wide tables split into column
-    blocks one under another (a heading, then ``part k of n``, each block with the table's
-    first column, the row's id, and its ``unit`` column, which gives the row's number
-    format). A sheet of one table is left as it is (it prints in blocks of columns, its
-    cells one table that a program reads); so is a sheet that fits.
+
+def _union(rows):
+    """The widths of the columns of a sheet holding tables whose columns are ``rows`` wide:
+    at each position the widest. [px]"""
+    return [max((w[k] for w in rows if k < len(w)), default=0.0)
+            for k in range(max((len(w) for w in rows), default=0))]
+
+
+def _fitting_text_width(sections, number_format=None):
+    """The widest of :data:`_TEXT_WIDTHS` at which the tables of ``sections`` fit beside one
+    another in :data:`SHEET_PIXELS`, or None."""
+    tables = [s.table for s in sections if s.table is not None]
+    for text_width in _TEXT_WIDTHS:
+        if sum(_union([_widths(t, number_format, text_width) for t in tables])) \
+                <= SHEET_PIXELS:
+            return text_width
+    return None
+
+
+def _text_width_for(sections, number_format=None):
+    """The width the text columns (notes, descriptions) of a sheet of several tables wrap
+    at: the widest of :data:`_TEXT_WIDTHS` at which every table fits beside the others (a
+    row grows taller, a table stays one block that a checker reads at once). A sheet of one
+    table, or one whose tables fit at none, wraps at
+    :data:`~slingloads.io.common.excel_cells.MAX_TEXT_WIDTH`. [characters]"""
+    if sum(s.table is not None for s in sections) < 2:
+        return MAX_TEXT_WIDTH
+    return _fitting_text_width(sections, number_format) or MAX_TEXT_WIDTH
+
+
+def _key_positions(table, keys):
+    """Positions of the key columns of ``table``: those of ``keys`` it has, else its first
+    column and its ``unit`` column (which gives the row's number format)."""
+    names = [str(c) for c in table.columns]
+    found = [names.index(str(k)) for k in keys if str(k) in names]
+    if found:
+        return list(dict.fromkeys(found))
+    return [0, *([names.index("unit")] if "unit" in names[1:] else [])]
+
+
+def _blocks(widths, keys, beside=(), room=SHEET_PIXELS):
+    """Column positions of each block of a table whose columns are ``widths`` px wide: the
+    ``keys`` then as many of the other columns, in order, as fit in ``room`` px, a column
+    taking at each position of the sheet the widest of itself and ``beside`` (the other
+    tables' columns there); as few blocks as that gives, made as even as they can be (the
+    narrowest room that gives no more blocks, by bisection). A column wider than the room
+    alone is a block with the keys."""
+    rest = [j for j in range(len(widths)) if j not in keys]
+
+    def at(position, width):
+        return max(width, beside[position]) if position < len(beside) else width
+
+    base = sum(at(p, widths[j]) for p, j in enumerate(keys))
+
+    def cut(space):
+        blocks, current, used = [], [], base
+        for j in rest:
+            step = at(len(keys) + len(current), widths[j])
+            if current and used + step > space:
+                blocks.append(current)
+                current, used = [], base
+                step = at(len(keys), widths[j])
+            current.append(j)
+            used += step
+        if current or not blocks:
+            blocks.append(current)
+        return blocks
+
+    count = len(cut(room))
+    low, high = base, room
+    for _ in range(40):
+        mid = 0.5 * (low + high)
+        if len(cut(mid)) <= count:
+            high = mid
+        else:
+            low = mid
+    return [[*keys, *block] for block in cut(high)]
+
+
+def column_blocks(frame, keys=(), *, number_format=None):
+    """A table too wide for the page as the blocks of columns it prints in, each with the
+    key columns first: the one rule by which every report's wide table is cut
+    (:func:`sheet_blocks` applies it to the tables of a sheet together).
+
+    The blocks, one under another on a sheet, fit a landscape A4 page at no less than
+    :data:`~slingloads.io.common.excel_print.MIN_PRINT_SCALE` (:data:`SHEET_PIXELS`), the
+    columns measured as the workbook writer sizes them and LibreOffice prints them.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+    keys : sequence of str
+        Columns repeated first in every block (the row's id: run, mode, metric and unit);
+        those ``frame`` lacks are left out; none: its first column and its ``unit`` column.
+    number_format : mapping or callable, optional
+        As in :func:`~slingloads.io.common.excel_tables.write_table_sheets`.
 
     Returns
     -------
-    sections : list of Section
-    text_width : int
-        [characters]
+    list of pandas.DataFrame
+        The blocks, in the order of the columns; the table whole when it fits.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> wide = pd.DataFrame({"run": ["R1"], **{f"a long quantity {k} [deg]": [1.0]
+    ...                                       for k in range(20)}})
+    >>> [list(b.columns[:2]) for b in column_blocks(wide, ["run"])]
+    [['run', 'a long quantity 0 [deg]'], ['run', 'a long quantity 10 [deg]']]
     """
-    if sum(s.table is not None for s in sections) < 2:
-        return sections, MAX_TEXT_WIDTH
-    room = 0.95 * PRINTABLE["landscape"][0] / MIN_PRINT_SCALE  # 5 %: the notes' widths
+    sections = _cut([Section(table=frame, keys=list(keys) or [str(frame.columns[0])])],
+                    number_format)
+    return [s.table for s in sections if s.table is not None]
 
-    def widths_of(table, text_width=MAX_TEXT_WIDTH):
-        own = _column_plan([table], formats_of=lambda f: _number_formats(f.columns,
-                                                                          number_format),
-                           text_width=text_width)
-        return [_px(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
 
-    def union(rows):
-        return [max((w[k] for w in rows if k < len(w)), default=0.0)
-                for k in range(max((len(w) for w in rows), default=0))]
+def _cut(sections, number_format=None, away=()):
+    """The sections of a sheet with each table too wide for the page (beside the others of
+    the sheet) cut into blocks of columns: a heading (its title and note), then the blocks
+    titled ``part k of n``, each with the table's keys first (:func:`_key_positions`).
 
-    for text_width in _TEXT_WIDTHS:
-        tables = {k: widths_of(s.table, text_width)
-                  for k, s in enumerate(sections) if s.table is not None}
-        if sum(union(list(tables.values()))) <= room:
-            return sections, text_width
-    tables = {k: widths_of(s.table) for k, s in enumerate(sections) if s.table is not None}
-    # the narrow tables (item, value, unit, note) keep their columns; each wide table is cut
-    # in blocks that fit beside the columns of every other block (three passes settle it)
-    narrow = [w for w in tables.values() if len(w) <= _NARROW_COLUMNS]
-    wide = [k for k, w in tables.items() if len(w) > _NARROW_COLUMNS]
-    plan = {k: [list(range(1, len(tables[k])))] for k in wide}
-    for _ in range(3):
-        others = union(narrow + [[tables[k][0]] + [tables[k][j] for j in block]
-                                 for k in wide for block in plan[k]])
-        for k in wide:
-            widths = tables[k]
+    Cut are the tables of the sheet (not those of ``away``, which go whole to sheets of
+    their own) with key columns, or with more than :data:`_NARROW_COLUMNS` columns on a sheet
+    of several tables; each is cut so that its blocks fit beside the columns of every other
+    block and table on the sheet (:func:`_blocks`), with the sheet's text columns wrapped at
+    the width of :data:`_TEXT_WIDTHS` that prints the sheet on the least paper (its
+    estimated height, times its shrink to the page width), a block fitting the page alone
+    at full text width too (a long one prints on a table sheet of its own). Left whole: a
+    sheet whose tables fit once its text columns wrap narrower (:func:`_text_width_for`), and
+    a sheet's one table without keys (it prints in pages of columns, its cells one table
+    that a program reads)."""
+    own = [k for k, s in enumerate(sections)
+           if s.table is not None and all(s is not x for x in away)]
+    if not own or (len(own) == 1 and not sections[own[0]].keys):
+        return sections
+    if len(own) > 1 and _fitting_text_width([sections[k] for k in own], number_format):
+        return sections
+    keys = {k: _key_positions(sections[k].table, sections[k].keys) for k in own}
+    wide = [k for k in own if sections[k].keys or sections[k].table.shape[1] > _NARROW_COLUMNS]
+    full = {k: _widths(sections[k].table, number_format) for k in wide}
 
-            def at(position, width, others=others):
-                return max(width, others[position]) if position < len(others) else width
+    def plan_at(text_width):
+        widths = {k: _widths(sections[k].table, number_format, text_width) for k in own}
+        narrow = [widths[k] for k in own if k not in wide]
+        beside = _union(narrow)
+        while True:
+            # each table cut beside the columns of the others; while the blocks of all do
+            # not fit together, cut again beside the widest columns seen so far at each
+            # position: these only grow (to the widest columns at most), so this ends
+            plan = {k: _blocks(widths[k], keys[k], beside) for k in wide}
+            sheet = _union([*narrow, *([widths[k][j] for j in block]
+                                       for k in wide for block in plan[k])])
+            grown = _union([beside, sheet])
+            if sum(sheet) <= SHEET_PIXELS or grown == beside:
+                break
+            beside = grown
+        tables = [sections[k].table.iloc[:, block] for k in wide for block in plan[k]]
+        tables += [sections[k].table for k in own if k not in wide]
+        height = sum(_table_pixels(t, _column_plan([t], formats_of=lambda f: _number_formats(
+            f.columns, number_format), text_width=text_width)) + 2 * ROW_PIXELS
+            for t in tables)
+        whole = text_width == MAX_TEXT_WIDTH or all(
+            sum(full[k][j] for j in block) <= SHEET_PIXELS
+            for k in wide for block in plan[k] if len(block) > len(keys[k]) + 1)
+        paper = height * max(1.0, sum(sheet) / PRINTABLE["landscape"][0])
+        return (not whole, paper), plan
 
-            blocks, current, used = [], [], at(0, widths[0])
-            for j in range(1, len(widths)):
-                step = at(len(current) + 1, widths[j])
-                if current and used + step > room:
-                    blocks.append(current)
-                    current, used = [], at(0, widths[0])
-                    step = at(1, widths[j])
-                current.append(j)
-                used += step
-            blocks.append(current)
-            plan[k] = blocks
+    plan = min((plan_at(w) for w in _TEXT_WIDTHS), key=lambda c: c[0])[1]
     out = []
     for k, s in enumerate(sections):
         if k not in plan or len(plan[k]) == 1:
             out.append(s)
             continue
-        out.append(Section(s.title, note=s.note, sheet=s.sheet))
-        names = list(map(str, s.table.columns))
-        unit = [names.index("unit")] if "unit" in names[1:] else []
+        out.append(Section(s.title, note=s.note))
         out += [Section(f"{s.title}, part {m + 1} of {len(plan[k])}",
-                        s.table.iloc[:, [0, *unit, *(j for j in block if j not in unit)]])
+                        s.table.iloc[:, block])
                 for m, block in enumerate(plan[k])]
-    return out, MAX_TEXT_WIDTH
+    return out
 
 
 def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=None,
@@ -331,7 +456,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
         ``[name]``.
     """
     ws = wb.add_worksheet(check_sheet_name(name))
-    sections, text_width = _narrow(sections, number_format)
+    text_width = _text_width_for(sections, number_format)
     tables = [s.table for s in sections if s.table is not None]
     _check_highlight(tables, highlight, name)
     columns = _column_plan(tables, [s.note for s in sections],
@@ -361,8 +486,8 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     height = sum(needs)
     orientation = orientation_for(columns.pixels, height)
     # a table too wide for a readable fit: blocks of columns, the first column (ids) on
-    # each; a sheet of several tables has its wide tables in blocks already (_narrow), one
-    # under another (a column break would cut the others' columns apart)
+    # each; a sheet of several tables has its wide tables in blocks already (sheet_blocks,
+    # column_blocks), one under another (a column break would cut the others' columns apart)
     fit_width, column_breaks = columns.print_blocks(orientation)
     if not one_table:
         fit_width, column_breaks = min(1.0, PRINTABLE[orientation][0]

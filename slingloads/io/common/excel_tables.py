@@ -81,12 +81,19 @@ class Section:
         The name of a sheet of its own for this section's table (a table sheet,
         :func:`sheet_blocks`); empty: on the sheet of its list, unless it is longer than a
         page among other tables.
+    keys : sequence of str
+        The columns that say which row is which (run, mode, metric and unit): a table too
+        wide for the page is printed in blocks of columns, each with these first
+        (:func:`~slingloads.io.common.excel_sections.column_blocks`); empty: its first column
+        and its ``unit`` column. A table with keys is cut even alone on its sheet (not one
+        naming a sheet of its own).
     """
 
     title: str = ""
     table: pd.DataFrame | None = None
     note: str = ""
     sheet: str = ""
+    keys: Sequence[str] = ()
 
 
 @dataclass
@@ -213,7 +220,7 @@ def _column_plan(tables, notes=(), formats_of=None, text_width=MAX_TEXT_WIDTH):
     wider than :data:`~slingloads.io.common.excel_cells.MAX_TEXT_WIDTH` characters wraps at
     that width, a column of text at ``text_width`` when that is narrower (a sheet of several
     tables whose text columns wrap narrower so that its wide tables print whole,
-    :func:`_narrow`)."""
+    :func:`~slingloads.io.common.excel_sections._text_width_for`)."""
     widths, wrapped = {}, set()
     for frame in tables:
         formats = formats_of(frame) if formats_of else [None] * frame.shape[1]

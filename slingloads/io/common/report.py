@@ -317,55 +317,6 @@ def sample_rows(frame, column, max_rows, steps=(0.01, 0.02, 0.05, 0.1, 0.2, 0.25
     return frame.iloc[index], step
 
 
-#: Characters of a table row that a landscape A4 page prints at a readable size. [-]
-PAGE_CHARACTERS = 150
-
-
-def _column_characters(frame, column):
-    """Characters a column takes in a report table (as the workbook writer sizes it: its
-    header wraps at words, text at 40 characters, a number takes about 8)."""
-    words = max((len(w) for w in str(column).split()), default=0)
-    series = frame[column]
-    if pd.api.types.is_numeric_dtype(series.dtype) and not pd.api.types.is_bool_dtype(
-            series.dtype):
-        data = 8
-    else:
-        data = min(int(series.astype(str).str.len().max()) if len(series) else 0, 40) + 1
-    return max(int(1.1 * words) + 1, data, 4) + 2
-
-
-def column_blocks(frame, keys, width=PAGE_CHARACTERS):
-    """A wide table as tables narrow enough to print, each with the key columns first.
-
-    Parameters
-    ----------
-    frame : pandas.DataFrame
-    keys : sequence of str
-        Columns repeated in every block (the row's id: run, case, mode).
-    width : int
-        Most characters of a block's row (see :data:`PAGE_CHARACTERS`).
-
-    Returns
-    -------
-    list of pandas.DataFrame
-        The blocks, in the order of the columns; one block when the table fits.
-    """
-    keys = [k for k in keys if k in frame.columns]
-    rest = [c for c in frame.columns if c not in keys]
-    base = sum(_column_characters(frame, k) for k in keys)
-    blocks, current, used = [], [], base
-    for column in rest:
-        size = _column_characters(frame, column)
-        if current and used + size > width:
-            blocks.append(current)
-            current, used = [], base
-        current.append(column)
-        used += size
-    if current or not blocks:
-        blocks.append(current)
-    return [frame[keys + block] for block in blocks]
-
-
 def split_unit(header):
     """``("name", "unit")`` of a unit-labelled header ``"name [unit]"``; ``(header, "")``
     when it has no unit."""

@@ -32,7 +32,6 @@ from slingloads.io.common.excel import Section
 from slingloads.io.common.figures import plot_function
 from slingloads.io.common.formats import ROUND_OFF, SCIENTIFIC_FORMAT
 from slingloads.io.common.report import (
-    column_blocks,
     csv_frame,
     explain_infinite,
     quantity_text,
@@ -248,14 +247,6 @@ def _warnings(result, warnings):
     return list(dict.fromkeys([*warnings, *result.inputs.warnings]))
 
 
-def _parts(title, tables, note=""):
-    """Sections of a table printed in column blocks: a heading, then ``part k of n``."""
-    if len(tables) == 1:
-        return [Section(title, tables[0], note=note)]
-    return [Section(title, note=note), *(Section(f"{title}, part {k + 1} of {len(tables)}",
-                                                 table) for k, table in enumerate(tables))]
-
-
 def _sheets(result, units, warnings=(), decision=None):
     from slingloads.io.common.decision import decision_section
 
@@ -268,8 +259,8 @@ def _sheets(result, units, warnings=(), decision=None):
                Section("System as flown", system_table(result, units))]
     sheets = {"Summary": summary}
     if result.linear is not None:
-        sheets["Modes"] = _parts("Modes of the linear model about the trim",
-                                 column_blocks(modes_table(result.linear), ["mode"]))
+        sheets["Modes"] = [Section("Modes of the linear model about the trim",
+                                   modes_table(result.linear), keys=["mode"])]
         sheets["StateMatrix"] = [Section(
             "State matrix A (dz/dt = A z), SI: positions m, velocities m/s, angles rad, rates "
             "rad/s; phi_x, phi_y, phi_z a small rotation in body axes",
@@ -278,14 +269,14 @@ def _sheets(result, units, warnings=(), decision=None):
                  "and written as 0.")]
     else:
         sheets["Modes"] = f"No linear model: {result.trim.message}"
-    sheets["Metrics"] = _parts(
+    sheets["Metrics"] = [Section(
         "Metrics of every run (one column per run; angles in degrees)",
-        column_blocks(metrics_table(result, units), ["metric", "unit"]),
-        note=f"Verdict rule: {verdict_rules(result)}")
-    sheets["Histories"] = _parts(
+        metrics_table(result, units), note=f"Verdict rule: {verdict_rules(result)}",
+        keys=["metric", "unit"])]
+    sheets["Histories"] = [Section(
         f"Every run every {HISTORY_INTERVAL:g} s (every stored sample: the "
         f"-multibody-histories.csv file, SI)",
-        column_blocks(history_table(result, units, HISTORY_INTERVAL), ["run", "time [s]"]))
+        history_table(result, units, HISTORY_INTERVAL), keys=["run", "time [s]"])]
     return sheets
 
 
