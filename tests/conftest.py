@@ -22,6 +22,8 @@
   (:mod:`once`): the others read the folders it wrote, and its results from their pickle.
 """
 
+import slingloads.blas_threads  # noqa: F401, I001 - first: one BLAS thread, as the command line
+
 import copy
 import os
 import shutil

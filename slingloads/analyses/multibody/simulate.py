@@ -316,8 +316,13 @@ class RunResult:
         -------
         dict
             Name, manoeuvre, trim and verdict, and the peaks, settling and damping measures,
-            their units in their labels.
+            their units in their labels (a new dict each call: computed once per run, as
+            the run does not change).
         """
+        return dict(self._metrics)
+
+    @cached_property
+    def _metrics(self):
         row = {"run": self.name, "manoeuvre": self.manoeuvre.describe(),
                "trim converged": self.trim.converged}
         if not self.trim.converged:
