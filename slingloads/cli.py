@@ -330,6 +330,10 @@ def _run_analyses(args, compiling=None):
     from slingloads.runs.study import run_analysis, run_study
 
     show = not args.quiet
+    # the campaign's options are checked before anything is read, whether or not the
+    # workbook runs the campaign (a bad value is refused, an unused one is warned about)
+    options = _run_options(args, show) if hasattr(args, "workers") else None
+    unused = []
     with _progress(show) as bar:
         first = _FirstComputed(args, _only(args), compiling)
         study = read_study(args.workbook, only=_only(args), on_read=first)
@@ -338,7 +342,14 @@ def _run_analyses(args, compiling=None):
         if getattr(args, "nastran", False):
             _ask_nastran(study, names)
         if "campaign" in names:
-            study.options = _run_options(args, show)
+            study.options = options
+        elif options is not None:
+            unused = [f"{flag} is not used: the workbook does not run the campaign (Study "
+                      "row 'run campaign')" for flag, value in (
+                          ("--scheduler", args.scheduler), ("--workers", args.workers),
+                          ("--cache", args.cache), ("--scheduler-timeout",
+                                                    args.scheduler_timeout))
+                      if value is not None]
         # `run` publishes the whole report of the input: it replaces the earlier files of
         # every analysis; a single-analysis command replaces those of its analysis only
         stem = Path(args.workbook).stem
@@ -378,7 +389,7 @@ def _run_analyses(args, compiling=None):
         bar.set_description("done")
     for path in written:
         print(f"wrote {path}")
-    for text in study.source.warnings:
+    for text in [*study.source.warnings, *unused]:
         print(f"slingloads: warning: {text}", file=sys.stderr)
     shortfalls = results.shortfalls()
     for text in shortfalls:

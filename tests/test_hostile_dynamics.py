@@ -205,22 +205,36 @@ def dynamics(tmp_path_factory):
     (["--scheduler-timeout", "nan"], 2, "--scheduler-timeout must be in (0, 600]"),
     (["--cache", "{out}"], 2, "outside the output folder"),
 ])
+@pytest.mark.parametrize("command", ["campaign", "run"])
 def test_campaign_options_are_checked_before_any_run(dynamics, tmp_path, capsys, options,
-                                                     code, fragment):
+                                                     code, fragment, command):
     """Careless or hostile execution options end with a one-line message, exit 2 (a refused
-    argument), nothing written, no traceback, before any run (no cache folder created). A
-    cache that cannot be used is no refusal: tests/test_hostile_campaign.py."""
+    argument), nothing written, no traceback, before any run (no cache folder created), by
+    ``campaign`` and by ``run`` alike. A cache that cannot be used is no refusal:
+    tests/test_hostile_campaign.py."""
     out = tmp_path / "out"
     afile = tmp_path / "afile"
     afile.write_text("x")
     options = [o.format(out=out, file=afile) for o in options]
-    argv = ["campaign", str(dynamics), "--out", str(out), "--quiet"]
+    argv = [command, str(dynamics), "--out", str(out), "--quiet"]
     if "--cache" not in options:
         argv += ["--cache", str(tmp_path / "cache")]
     assert main(argv + options) == code
     err = capsys.readouterr().err
     assert fragment in err and "Traceback" not in err and "nothing was written" in err
     assert not out.exists() and not (tmp_path / "cache").exists()
+
+
+def test_campaign_options_are_checked_when_the_workbook_does_not_run_it(tmp_path, capsys):
+    """The example does not run the campaign: ``run --workers -1`` is still a refused
+    argument (exit 2, nothing written), not an option silently ignored."""
+    from hostile import EXAMPLE
+
+    out = tmp_path / "out"
+    assert main(["run", str(EXAMPLE), "--out", str(out), "--quiet", "--workers", "-1"]) == 2
+    err = capsys.readouterr().err
+    assert "--workers must be in [1, 64]" in err and "value -1" in err
+    assert not out.exists()
 
 
 def test_an_output_folder_inside_the_run_cache_is_refused(dynamics, tmp_path, capsys):
