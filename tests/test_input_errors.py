@@ -227,6 +227,20 @@ def test_file_that_is_not_a_workbook(tmp_path):
     expect_error(path, "not a workbook")
 
 
+@pytest.mark.parametrize("content, words", [
+    # the OLE2 signature (MS-CFB 2.2: D0 CF 11 E0 A1 B1 1A E1) begins an encrypted .xlsx
+    (bytes.fromhex("d0cf11e0a1b11ae1") + bytes(504), "protected by a password"),
+    (b"", "the file is empty"),
+])
+def test_a_file_that_looks_like_a_workbook_says_what_it_is(tmp_path, content, words):
+    """Rule: the input is an .xlsx (zip) container; a file that is not says what it looks
+    like when it can tell: an encrypted workbook (Excel stores one with a password to open
+    in an OLE2 compound document) or an empty file."""
+    path = tmp_path / "locked.xlsx"
+    path.write_bytes(content)
+    expect_error(path, "not a workbook", words)
+
+
 def test_corrupt_workbook(tmp_path):
     """Rule: the workbook must be readable: a truncated file is refused."""
     path = tmp_path / "truncated.xlsx"

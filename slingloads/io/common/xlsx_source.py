@@ -439,7 +439,29 @@ def check_container(path, file):
     except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, ValueError, EOFError,
             NotImplementedError) as err:
         raise InputError(f"not a workbook: the file is not an .xlsx (zip) container "
-                         f"({str(err)[:200]})", file=file) from None
+                         f"({str(err)[:200]}){_what_it_is(path)}", file=file) from None
+
+
+#: First bytes of an OLE2 compound document: an old .xls, or an .xlsx that Excel encrypted
+#: (a workbook with a password to open is stored in one).
+_OLE2_SIGNATURE = bytes.fromhex("d0cf11e0a1b11ae1")
+
+
+def _what_it_is(path):
+    """What a file that is no zip container looks like it is, for the message ("" when it
+    cannot tell)."""
+    try:
+        with open_regular(path, follow_links=True) as stream:
+            head = stream.read(len(_OLE2_SIGNATURE))
+    except OSError:
+        return ""
+    if head == _OLE2_SIGNATURE:
+        return ("; it is an OLE2 compound document: a workbook protected by a password to "
+                "open (encrypted), or an .xls saved under the name .xlsx; remove the "
+                "password or save it as an Excel .xlsx workbook")
+    if not head:
+        return "; the file is empty"
+    return ""
 
 
 def _check_sizes(infos, file):
