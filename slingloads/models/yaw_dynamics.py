@@ -99,7 +99,7 @@ from slingloads.models.gusts import (
     SustainedGust,
     TabulatedGust,
 )
-from slingloads.models.integration import SolverSettings
+from slingloads.models.integration import solver_settings
 from slingloads.models.parachute import Parachute
 from slingloads.models.yaw_moments import (  # noqa: F401 (the model row, re-exported)
     CHUTE_CD,
@@ -610,10 +610,7 @@ def yaw_solver_settings(settings=None):
     InputError
         For something other than a SolverSettings, or a grid that does not fit.
     """
-    settings = SolverSettings() if settings is None else settings
-    if not isinstance(settings, SolverSettings):
-        raise InputError("solver settings must be a SolverSettings", type(settings).__name__)
-    settings = settings.with_defaults(**YAW_SOLVER_DEFAULTS)
+    settings = solver_settings(settings).with_defaults(**YAW_SOLVER_DEFAULTS)
     settings.fixed_grid()
     return settings
 

@@ -24,8 +24,8 @@ from slingloads.analyses.multibody import linearise, trim
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.gusts import standard_gusts
+from slingloads.models.integration import SolverSettings
 from slingloads.models.multibody.integrator import ATOL, RTOL
-from slingloads.models.yaw_dynamics import SolverSettings
 
 from .execution import MemoryStore, execute, make_executor
 from .keys import KeyMaker
