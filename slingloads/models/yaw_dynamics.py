@@ -122,8 +122,8 @@ from slingloads.models.yaw_moments import (  # noqa: F401 (the model row, re-exp
     TAS,
     WEIGHT_C,
     WEIGHT_S,
-    _numpy_moments,
     make_yaw_moments,
+    numpy_moments,
     weight_moment,
 )
 
@@ -394,7 +394,7 @@ class YawModel:
             raise InputError("a parachute area was given but the model has no parachute",
                              float(np.max(np.abs(area))))
         shape = np.broadcast_shapes(beta.shape, rate.shape, v_rel.shape)
-        n_fus, n_fin, n_chute, inside = _numpy_moments(beta, rate, v_rel, area, *self.arrays(),
+        n_fus, n_fin, n_chute, inside = numpy_moments(beta, rate, v_rel, area, *self.arrays(),
                                                        None)
         zero = np.zeros(shape)
         n_fus, n_fin = zero + n_fus, zero + n_fin
