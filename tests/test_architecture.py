@@ -248,12 +248,22 @@ def test_each_analysis_runs_from_one_table_of_modules():
     assert {m.__name__ for m in RUNS.values()} <= graph["slingloads.runs.registry"]
 
 
+def _private(name):
+    return name.startswith("_") and not name.startswith("__")
+
+
 def _private_imports(path):
     """``(line, module, name)`` of each ``from module import _name`` of ``path`` whose module
-    is another module of the package (relative imports resolved)."""
+    is another module of the package (relative imports resolved), and of each ``module._name``
+    read through a module of the package that ``path`` imports."""
     me = _module_name(path)
     package = me.split(".") if path.name == "__init__.py" else me.split(".")[:-1]
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    modules = {}  # local name -> module of the package it is bound to
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            modules.update({a.asname or a.name.partition(".")[0]: a.name for a in node.names
+                            if a.name.startswith("slingloads")})
         if not isinstance(node, ast.ImportFrom):
             continue
         if node.level:
@@ -264,16 +274,24 @@ def _private_imports(path):
         if not module.startswith("slingloads") or module == me:
             continue
         for alias in node.names:
-            if alias.name.startswith("_") and not alias.name.startswith("__"):
+            if _private(alias.name):
                 yield node.lineno, module, alias.name
+            elif _module_path(f"{module}.{alias.name}") is not None:
+                modules[alias.asname or alias.name] = f"{module}.{alias.name}"
+    for node in ast.walk(tree):
+        if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name)
+                and node.value.id in modules and _private(node.attr)
+                and modules[node.value.id] != me):
+            yield node.lineno, modules[node.value.id], node.attr
 
 
 def test_no_module_imports_a_private_name_of_another():
     """No module of the package imports an underscore name from another module (``from .x
-    import _helper``): a name another module needs is public (documented, no underscore) or
-    lives in the one module that owns the idea. No exception: the package roots' ``__init__``
-    modules import public names only too. (Third-party private names, such as openpyxl's,
-    are not the package's to fix and are not counted.)"""
+    import _helper``, or ``x._helper`` through an imported module): a name another module
+    needs is public (documented, no underscore) or lives in the one module that owns the
+    idea. No exception: the packages' ``__init__`` modules import public names only too.
+    (Third-party private names, such as openpyxl's, are not the package's to fix and are not
+    counted.)"""
     found = [f"{path.relative_to(PACKAGE)}:{line}: from {module} import {name}"
              for path in MODULES for line, module, name in _private_imports(path)]
     assert not found, "\n".join(found)
@@ -285,12 +303,15 @@ def test_the_private_import_check_finds_one(tmp_path, monkeypatch):
     folder = tmp_path / "slingloads" / "sub"
     folder.mkdir(parents=True)
     path = folder / "a.py"
+    (folder / "b.py").write_text("")
     path.write_text("from .b import _helper, public\nfrom slingloads.sub.b import _other\n"
-                    "from . import _shared\nfrom os import _exit\n")
+                    "from . import _shared\nfrom os import _exit\nfrom . import b\n"
+                    "b._hidden()\nb.public()\n")
     monkeypatch.setattr(f"{__name__}.PACKAGE", tmp_path / "slingloads")
-    assert list(_private_imports(path)) == [(1, "slingloads.sub.b", "_helper"),
-                                            (2, "slingloads.sub.b", "_other"),
-                                            (3, "slingloads.sub", "_shared")]
+    assert sorted(_private_imports(path)) == [(1, "slingloads.sub.b", "_helper"),
+                                              (2, "slingloads.sub.b", "_other"),
+                                              (3, "slingloads.sub", "_shared"),
+                                              (6, "slingloads.sub.b", "_hidden")]
 
 
 def test_the_cycle_check_finds_a_circle():
