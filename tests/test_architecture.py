@@ -314,6 +314,48 @@ def test_the_private_import_check_finds_one(tmp_path, monkeypatch):
                                               (6, "slingloads.sub.b", "_hidden")]
 
 
+#: Compiled kernels whose packed vectors are read by names generated from their tables
+#: (``STATES``, ``DRIVE``, ``INFO`` and the parameter ``LAYOUT`` of
+#: :mod:`slingloads.models.multibody.equations`): (module, function, the vectors' names).
+NAMED_INDEX_KERNELS = (
+    ("models/multibody/equations.py", "evaluate", ("x", "dx", "info", "drive", "P")),
+    ("models/multibody/integrator.py", "_renormalise", ("x",)),
+)
+
+
+def _literal_indices(tree, function, vectors):
+    """``name[line]`` of each subscript of one of ``vectors`` by an integer literal inside
+    ``function`` of ``tree``."""
+    found = []
+    for f in ast.walk(tree):
+        if isinstance(f, ast.FunctionDef) and f.name == function:
+            for node in ast.walk(f):
+                if (isinstance(node, ast.Subscript) and isinstance(node.value, ast.Name)
+                        and node.value.id in vectors and isinstance(node.slice, ast.Constant)
+                        and isinstance(node.slice.value, int)):
+                    found.append(f"{node.value.id}[{node.slice.value}]@{node.lineno}")
+    return found
+
+
+@pytest.mark.parametrize("file, function, vectors", NAMED_INDEX_KERNELS,
+                         ids=[f"{f}:{name}" for f, name, _ in NAMED_INDEX_KERNELS])
+def test_kernels_index_packed_vectors_by_name(file, function, vectors):
+    """The multibody kernel reads and writes its state, drive, reported quantities and
+    parameters at offsets named from one table each (``x[X_QUAT + 1]``, ``P[PULL]``), never
+    at a literal index (``x[10]``), so that a table and the kernel cannot disagree."""
+    tree = ast.parse((PACKAGE / file).read_text(encoding="utf-8"))
+    assert any(isinstance(f, ast.FunctionDef) and f.name == function for f in ast.walk(tree))
+    found = _literal_indices(tree, function, vectors)
+    assert not found, f"{file}:{function} indexes by literals: {found}"
+
+
+def test_the_literal_index_check_finds_one():
+    """The check above can fail: a literal index of a named vector is caught, a named offset
+    and another array's literal are not."""
+    tree = ast.parse("def f(x, e):\n    return x[9] + x[Q + 1] + e[0]\n")
+    assert _literal_indices(tree, "f", ("x",)) == ["x[9]@2"]
+
+
 def test_the_cycle_check_finds_a_circle():
     """The check above can fail: a made-up graph with a circle is caught."""
     assert _cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}}) == ["a", "b", "c", "a"]

@@ -50,7 +50,13 @@ import numpy as np
 
 from slingloads.models.dormand_prince import LEFT, SAMPLE, integrator
 from slingloads.models.multibody._jit import jit, jit_alloc, jit_inline
-from slingloads.models.multibody.equations import CARRIER_FREE, N_INFO, N_STATES, evaluate
+from slingloads.models.multibody.equations import (
+    CARRIER_FREE,
+    N_INFO,
+    N_STATES,
+    X_QUAT,
+    evaluate,
+)
 from slingloads.models.multibody.response import (
     N_HISTORY,
     N_MEASURES,
@@ -112,9 +118,11 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
 
 @jit_inline
 def _renormalise(x):
-    """The quaternion of state ``x`` (elements 9 to 12) scaled to unit length, in place."""
-    qn = math.sqrt(x[9] * x[9] + x[10] * x[10] + x[11] * x[11] + x[12] * x[12])
-    for m in range(9, 13):
+    """The quaternion of state ``x`` (its four elements from ``X_QUAT``) scaled to unit
+    length, in place."""
+    q0, q1, q2, q3 = x[X_QUAT], x[X_QUAT + 1], x[X_QUAT + 2], x[X_QUAT + 3]
+    qn = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+    for m in range(X_QUAT, X_QUAT + 4):
         x[m] /= qn
 
 
