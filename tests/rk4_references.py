@@ -14,13 +14,8 @@ from dataclasses import fields
 
 import numpy as np
 
-from slingloads.analyses.lateral import (
-    RunMetrics,
-    _refine,
-    _stack_parameters,
-    _time_nodes,
-    sweep_settings,
-)
+from slingloads.analyses.lateral import RunMetrics, refine_peak, sweep_settings
+from slingloads.analyses.lateral.batch import _stack_parameters, _time_nodes
 from slingloads.models.carrier_motion import MotionBatch
 from slingloads.models.pendulum import (
     elastic_cable_derivatives,
@@ -167,7 +162,7 @@ def _rk4_group(pendulums, motions, nodes, jumps, rigid):
             # parabola through the equally spaced samples at t - h, t, t + h, none of them
             # across a jump of S'' (the sample at a breakpoint is taken just after it)
             peak = (y1 >= y0) & (y1 >= y2) & ok0 & ok1 & ok2  # no parabola through a kink
-            value, offset = _refine(y0, y1, y2)
+            value, offset = refine_peak(y0, y1, y2)
             better = peak & (value > best)
             best = np.where(better, value, best)
             t_best = np.where(better, t + offset * h, t_best)

@@ -229,6 +229,133 @@ def test_no_import_by_name():
     assert not calls, calls
 
 
+def test_each_analysis_runs_from_one_table_of_modules():
+    """``run_one`` takes each analysis's runs module from one table of imported modules
+    (:data:`slingloads.runs.registry.RUNS`, no string, no if/elif chain): the table names
+    every analysis of ``ANALYSES`` in its order, each entry is the module
+    ``slingloads.runs.<name>`` with a ``run`` function, and the walk sees the study's import
+    of the registry and the registry's of each module, so the cycle check above covers
+    them."""
+    from slingloads.runs.registry import RUNS
+    from slingloads.runs.study import ANALYSES
+
+    assert tuple(RUNS) == ANALYSES
+    for name, module in RUNS.items():
+        assert module.__name__ == f"slingloads.runs.{name.replace(' ', '_')}"
+        assert callable(module.run)
+    graph = _graph()
+    assert "slingloads.runs.registry" in graph["slingloads.runs.study"]
+    assert {m.__name__ for m in RUNS.values()} <= graph["slingloads.runs.registry"]
+
+
+def _private(name):
+    return name.startswith("_") and not name.startswith("__")
+
+
+def _private_imports(path):
+    """``(line, module, name)`` of each ``from module import _name`` of ``path`` whose module
+    is another module of the package (relative imports resolved), and of each ``module._name``
+    read through a module of the package that ``path`` imports."""
+    me = _module_name(path)
+    package = me.split(".") if path.name == "__init__.py" else me.split(".")[:-1]
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    modules = {}  # local name -> module of the package it is bound to
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            modules.update({a.asname or a.name.partition(".")[0]: a.name for a in node.names
+                            if a.name.startswith("slingloads")})
+        if not isinstance(node, ast.ImportFrom):
+            continue
+        if node.level:
+            base = package[:len(package) - node.level + 1]
+            module = ".".join(base + ([node.module] if node.module else []))
+        else:
+            module = node.module
+        if not module.startswith("slingloads") or module == me:
+            continue
+        for alias in node.names:
+            if _private(alias.name):
+                yield node.lineno, module, alias.name
+            elif _module_path(f"{module}.{alias.name}") is not None:
+                modules[alias.asname or alias.name] = f"{module}.{alias.name}"
+    for node in ast.walk(tree):
+        if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name)
+                and node.value.id in modules and _private(node.attr)
+                and modules[node.value.id] != me):
+            yield node.lineno, modules[node.value.id], node.attr
+
+
+def test_no_module_imports_a_private_name_of_another():
+    """No module of the package imports an underscore name from another module (``from .x
+    import _helper``, or ``x._helper`` through an imported module): a name another module
+    needs is public (documented, no underscore) or lives in the one module that owns the
+    idea. No exception: the packages' ``__init__`` modules import public names only too.
+    (Third-party private names, such as openpyxl's, are not the package's to fix and are not
+    counted.)"""
+    found = [f"{path.relative_to(PACKAGE)}:{line}: from {module} import {name}"
+             for path in MODULES for line, module, name in _private_imports(path)]
+    assert not found, "\n".join(found)
+
+
+def test_the_private_import_check_finds_one(tmp_path, monkeypatch):
+    """The check above can fail: a made-up module of the package importing ``_helper`` from
+    a sibling, relatively and absolutely, is caught, and its own names are not."""
+    folder = tmp_path / "slingloads" / "sub"
+    folder.mkdir(parents=True)
+    path = folder / "a.py"
+    (folder / "b.py").write_text("")
+    path.write_text("from .b import _helper, public\nfrom slingloads.sub.b import _other\n"
+                    "from . import _shared\nfrom os import _exit\nfrom . import b\n"
+                    "b._hidden()\nb.public()\n")
+    monkeypatch.setattr(f"{__name__}.PACKAGE", tmp_path / "slingloads")
+    assert sorted(_private_imports(path)) == [(1, "slingloads.sub.b", "_helper"),
+                                              (2, "slingloads.sub.b", "_other"),
+                                              (3, "slingloads.sub", "_shared"),
+                                              (6, "slingloads.sub.b", "_hidden")]
+
+
+#: Compiled kernels whose packed vectors are read by names generated from their tables
+#: (``STATES``, ``DRIVE``, ``INFO`` and the parameter ``LAYOUT`` of
+#: :mod:`slingloads.models.multibody.equations`): (module, function, the vectors' names).
+NAMED_INDEX_KERNELS = (
+    ("models/multibody/equations.py", "evaluate", ("x", "dx", "info", "drive", "P")),
+    ("models/multibody/integrator.py", "_renormalise", ("x",)),
+)
+
+
+def _literal_indices(tree, function, vectors):
+    """``name[line]`` of each subscript of one of ``vectors`` by an integer literal inside
+    ``function`` of ``tree``."""
+    found = []
+    for f in ast.walk(tree):
+        if isinstance(f, ast.FunctionDef) and f.name == function:
+            for node in ast.walk(f):
+                if (isinstance(node, ast.Subscript) and isinstance(node.value, ast.Name)
+                        and node.value.id in vectors and isinstance(node.slice, ast.Constant)
+                        and isinstance(node.slice.value, int)):
+                    found.append(f"{node.value.id}[{node.slice.value}]@{node.lineno}")
+    return found
+
+
+@pytest.mark.parametrize("file, function, vectors", NAMED_INDEX_KERNELS,
+                         ids=[f"{f}:{name}" for f, name, _ in NAMED_INDEX_KERNELS])
+def test_kernels_index_packed_vectors_by_name(file, function, vectors):
+    """The multibody kernel reads and writes its state, drive, reported quantities and
+    parameters at offsets named from one table each (``x[X_QUAT + 1]``, ``P[PULL]``), never
+    at a literal index (``x[10]``), so that a table and the kernel cannot disagree."""
+    tree = ast.parse((PACKAGE / file).read_text(encoding="utf-8"))
+    assert any(isinstance(f, ast.FunctionDef) and f.name == function for f in ast.walk(tree))
+    found = _literal_indices(tree, function, vectors)
+    assert not found, f"{file}:{function} indexes by literals: {found}"
+
+
+def test_the_literal_index_check_finds_one():
+    """The check above can fail: a literal index of a named vector is caught, a named offset
+    and another array's literal are not."""
+    tree = ast.parse("def f(x, e):\n    return x[9] + x[Q + 1] + e[0]\n")
+    assert _literal_indices(tree, "f", ("x",)) == ["x[9]@2"]
+
+
 def test_the_cycle_check_finds_a_circle():
     """The check above can fail: a made-up graph with a circle is caught."""
     assert _cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}}) == ["a", "b", "c", "a"]

@@ -12,7 +12,7 @@ from __future__ import annotations
 import pytest
 
 from slingloads import cli
-from slingloads.models.multibody.integrator import _evaluate_states, dopri_runs
+from slingloads.models.multibody.integrator import dopri_runs, evaluate_states
 from slingloads.runs.warmup import BACKGROUND, _cached
 
 
@@ -37,7 +37,7 @@ def test_the_kernels_are_on_disk_when_an_analysis_goes_on_and_the_process_ends(m
         (process, _, _), = compiling.helper._workers
         assert process.is_alive()
         compiling.wait_for("loads")  # the equations only
-        assert _cached(_evaluate_states)
+        assert _cached(evaluate_states)
         assert "integration" in compiling.calls
         compiling.wait_for("multibody")
         assert _cached(dopri_runs) and not compiling.calls

@@ -1,4 +1,5 @@
-"""Every public function and class of the physics modules documents its inputs and outputs.
+"""Every public function and class of the physics modules and of the Python API (the run
+layer, reading a study and writing its reports) documents its inputs and outputs.
 
 Reference: the numpydoc standard (https://numpydoc.readthedocs.io/en/latest/format.html), as the
 style guide asks: a function that takes arguments has a ``Parameters`` section, one that returns
@@ -19,8 +20,11 @@ import slingloads
 ROOT = Path(slingloads.__file__).parent
 #: Modules whose docstring pass is still to come (relative to the package).
 PENDING: set[str] = set()
-MODULES = sorted(str(p.relative_to(ROOT)) for folder in ("models", "analyses")
-                 for p in (ROOT / folder).rglob("*.py"))
+#: The Python API beside the physics: the run layer (the typed Study, each analysis's
+#: ``run`` and result) and the calls that read a workbook into a Study and write its reports.
+API = ("io/study.py", "io/reports.py")
+MODULES = sorted([str(p.relative_to(ROOT)) for folder in ("models", "analyses", "runs")
+                  for p in (ROOT / folder).rglob("*.py")] + list(API))
 
 
 def _has(doc, *names):

@@ -188,7 +188,7 @@ def test_a_killed_run_leaves_the_previous_set_or_the_new_one(inputs, tmp_path):
 
     def state(folder, mode):
         if mode == "rename" and not folder.exists():
-            atomic._recover(folder.parent, folder.resolve())  # what every run does first
+            atomic.recover(folder.parent, folder.resolve())  # what every run does first
         got = _fingerprint(folder)
         _assert_manifest_lists_the_reports(folder)  # (it names the workbooks' digests)
         origin = _xlsx_origin(folder, digest["old"], digest["new"])

@@ -1030,7 +1030,7 @@ class LoadsResult:
         keep = np.ones(len(frame), bool)
         if station is not None:
             many = [station] if isinstance(station, (str, int, np.integer)) else station
-            ids = [self.station_ids[self._station_index(s)] for s in many]
+            ids = [self.station_ids[self.station_index(s)] for s in many]
             keep &= frame["station"].isin(ids).to_numpy()
         if component is not None:
             many = [component] if isinstance(component, str) else list(component)
@@ -1080,7 +1080,7 @@ class LoadsResult:
         pandas.DataFrame
             Hull vertices (:func:`~slingloads.analyses.envelopes.convex_hull`; N, N m).
         """
-        index = self._station_index(station)
+        index = self.station_index(station)
         return convex_hull(self.loads, self.case_ids, index, pair)
 
     def comparison(self):
@@ -1125,5 +1125,23 @@ class LoadsResult:
 
         return write_nastran(self, path, **options)
 
-    def _station_index(self, station):
+    def station_index(self, station):
+        """Position of a cut station given by id or index
+        (:meth:`slingloads.models.airframe.Airframe.station_index`).
+
+        Parameters
+        ----------
+        station : str or int
+            Id or index of a cut station.
+
+        Returns
+        -------
+        int
+            Its index in :attr:`stations` (the result's second axis).
+
+        Raises
+        ------
+        InputError
+            If there is no such station (the valid ids are listed).
+        """
         return self.study.airframe.station_index(station)

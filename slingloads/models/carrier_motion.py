@@ -21,7 +21,7 @@ Five kinds are offered, each named for its law:
   layer), interpolated by a natural cubic spline so that velocity and acceleration exist
   (:mod:`slingloads.models.cubic_spline`, scipy's ``CubicSpline`` computed with numpy).
 
-Every motion also has :meth:`~_Motion.kinematics_at`, the same numbers at one time in plain
+Every motion also has :meth:`~Motion.kinematics_at`, the same numbers at one time in plain
 Python floats. It exists for speed: the right-hand side of an adaptive solve
 (:func:`slingloads.analyses.lateral.simulate`) asks for the kinematics at one time thousands
 of times, and numpy on 0-d arrays costs 20 to 110 us a call where floats and :mod:`math`
@@ -29,7 +29,7 @@ take 0.3 to 5 us. It is exact, not an approximation: each kind evaluates its law
 same operations in the same order (the cycloid's law is written once for both, with
 ``xp=np`` or ``xp=math``; ``min(max(x, lo), hi)`` is np.clip's value, -0.0 and nan
 included; the spline's pieces are summed as scipy sums them), and math's sin and cos give
-the same doubles as numpy's, so it returns what :meth:`~_Motion.kinematics` returns for one
+the same doubles as numpy's, so it returns what :meth:`~Motion.kinematics` returns for one
 time to the last bit (tested in ``tests/test_carrier_motion.py``; for a whole array of times
 numpy computes some powers otherwise, within an ulp).
 
@@ -56,40 +56,95 @@ QUINTIC_PEAK = 10.0 / np.sqrt(3.0)
 CYCLOIDAL_PEAK = 2.0 * np.pi
 
 
-class _Motion:
-    """What every carrier motion offers; a motion defines ``_params()`` and a static
+class Motion:
+    """What every carrier motion offers: the hook's lateral displacement S(t), velocity S'(t)
+    and acceleration S''(t). A motion defines ``_params()`` and a static
     ``_kinematics(t, **params)`` (vectorised, used by :class:`MotionBatch`), or overrides
     :meth:`kinematics`, and overrides :meth:`kinematics_at` with its law in floats."""
 
     def kinematics(self, t):
-        """Displacement [m], velocity [m/s] and acceleration [m/s^2] at times ``t`` [s]."""
+        """Displacement, velocity and acceleration of the hook at times ``t``.
+
+        Parameters
+        ----------
+        t : float or array_like
+            Times from the start of the motion. [s]
+
+        Returns
+        -------
+        S, S', S'' : ndarray, shaped as ``t``
+            [m], [m/s], [m/s^2]
+        """
         return self._kinematics(np.asarray(t, dtype=float), **self._params())
 
     def kinematics_at(self, t):
-        """S [m], S' [m/s] and S'' [m/s^2] at one time ``t`` [s], as floats.
+        """S, S' and S'' at one time ``t``, as floats.
 
         The same numbers as :meth:`kinematics`; each kind of motion overrides this with its
         law in plain floats (see the module's notes), this generic form converts the array
         path's results.
+
+        Parameters
+        ----------
+        t : float
+            Time from the start of the motion. [s]
+
+        Returns
+        -------
+        S, S', S'' : float
+            [m], [m/s], [m/s^2]
         """
         s, v, a = self.kinematics(float(t))
         return float(s), float(v), float(a)
 
     def displacement(self, t):
-        """S(t). [m]"""
+        """S(t).
+
+        Parameters
+        ----------
+        t : float or array_like
+            [s]
+
+        Returns
+        -------
+        ndarray
+            [m]
+        """
         return self.kinematics(t)[0]
 
     def velocity(self, t):
-        """S'(t). [m/s]"""
+        """S'(t).
+
+        Parameters
+        ----------
+        t : float or array_like
+            [s]
+
+        Returns
+        -------
+        ndarray
+            [m/s]
+        """
         return self.kinematics(t)[1]
 
     def acceleration(self, t):
-        """S''(t). [m/s^2]"""
+        """S''(t).
+
+        Parameters
+        ----------
+        t : float or array_like
+            [s]
+
+        Returns
+        -------
+        ndarray
+            [m/s^2]
+        """
         return self.kinematics(t)[2]
 
 
 @dataclass(frozen=True)
-class _DisplacementStep(_Motion):
+class _DisplacementStep(Motion):
     """A displacement step of amplitude A completed in duration T along a fixed law
     S = A f(t/T), at rest at both ends; a subclass gives the law (:meth:`_law`), its peak
     acceleration over A/T^2 (``PEAK``) and its name."""
@@ -233,7 +288,7 @@ class CycloidalStep(_DisplacementStep):
 
 
 @dataclass(frozen=True)
-class ConstantAcceleration(_Motion):
+class ConstantAcceleration(Motion):
     """Hook accelerated at a constant rate, then holding its speed or stopping.
 
     ``then="hold"``: :math:`S'' = a` for :math:`0 \\le t < T`, then 0 (speed :math:`aT` kept).
@@ -340,7 +395,7 @@ class ConstantAcceleration(_Motion):
 
 
 @dataclass(frozen=True)
-class VelocityStep(_Motion):
+class VelocityStep(Motion):
     """Hook speed jumping from 0 to ``delta_v`` at t = 0: S(t) = dV t for t > 0.
 
     The acceleration is an impulse at t = 0; the models take it as a jump in the initial
@@ -442,7 +497,7 @@ class VelocityStep(_Motion):
 
 
 @dataclass(frozen=True, eq=False)
-class TimeHistory(_Motion):
+class TimeHistory(Motion):
     """Hook displacement given as samples, interpolated by a natural cubic spline.
 
     Times are taken relative to the first sample, which becomes t = 0 of a run. The hook is

@@ -39,7 +39,7 @@ import numpy as np
 
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
-from slingloads.models.carrier_motion import _Motion
+from slingloads.models.carrier_motion import Motion
 
 #: Ways of joining the acceleration between breakpoints.
 INTERPOLATIONS = ("linear", "previous")
@@ -64,7 +64,7 @@ def _times(time, what):
 
 
 @dataclass(frozen=True)
-class PiecewiseAcceleration(_Motion):
+class PiecewiseAcceleration(Motion):
     """Acceleration given at breakpoints along one direction, integrated exactly.
 
     Parameters
@@ -487,7 +487,7 @@ class HookTrajectory:
 
 
 @dataclass(frozen=True, eq=False)
-class _Projected(_Motion):
+class _Projected(Motion):
     """A hook trajectory's motion along one direction: a one-dimensional carrier motion."""
 
     trajectory: HookTrajectory
@@ -513,7 +513,7 @@ class _Projected(_Motion):
         return f"{self.trajectory.describe()} (its Y motion)"
 
 
-class _SplineMotion(_Motion):
+class _SplineMotion(Motion):
     """Displacement samples joined by a cubic spline starting at rest (one axis); the speed
     reached is kept after the last sample."""
 

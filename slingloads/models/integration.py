@@ -159,3 +159,28 @@ class SolverSettings:
         """
         n_steps, every = self.fixed_grid()
         return np.arange(n_steps // every + 1) * self.output_interval
+
+
+def solver_settings(solver):
+    """``solver`` checked, or the default :class:`SolverSettings` when it is None.
+
+    Parameters
+    ----------
+    solver : SolverSettings or None
+        The settings an analysis was given.
+
+    Returns
+    -------
+    SolverSettings
+        ``solver``, or ``SolverSettings()`` (every field at its default) for None.
+
+    Raises
+    ------
+    InputError
+        For anything other than a SolverSettings or None, naming its type.
+    """
+    if solver is None:
+        return SolverSettings()
+    if not isinstance(solver, SolverSettings):
+        raise InputError("solver settings must be a SolverSettings", type(solver).__name__)
+    return solver

@@ -108,7 +108,7 @@ class LateralPendulum:
     lateral_damping : float
         c, linear aerodynamic damping of the lateral velocity of the point of the mast
         ``damping_height`` above the CG, >= 0 (off by default; the parachute is taken to have
-        no influence; see :func:`slingloads.analyses.lateral.aerodynamic_damping`). [N s/m]
+        no influence; see :func:`slingloads.analyses.lateral_damping.aerodynamic_damping`). [N s/m]
     roll_damping : float
         c_r, linear aerodynamic damping of the airframe's roll rate, >= 0. [N m s/rad]
     damping_height : float

@@ -99,7 +99,7 @@ from slingloads.models.gusts import (
     SustainedGust,
     TabulatedGust,
 )
-from slingloads.models.integration import SolverSettings
+from slingloads.models.integration import solver_settings
 from slingloads.models.parachute import Parachute
 from slingloads.models.yaw_moments import (  # noqa: F401 (the model row, re-exported)
     CHUTE_CD,
@@ -122,8 +122,8 @@ from slingloads.models.yaw_moments import (  # noqa: F401 (the model row, re-exp
     TAS,
     WEIGHT_C,
     WEIGHT_S,
-    _numpy_moments,
     make_yaw_moments,
+    numpy_moments,
     weight_moment,
 )
 
@@ -394,7 +394,7 @@ class YawModel:
             raise InputError("a parachute area was given but the model has no parachute",
                              float(np.max(np.abs(area))))
         shape = np.broadcast_shapes(beta.shape, rate.shape, v_rel.shape)
-        n_fus, n_fin, n_chute, inside = _numpy_moments(beta, rate, v_rel, area, *self.arrays(),
+        n_fus, n_fin, n_chute, inside = numpy_moments(beta, rate, v_rel, area, *self.arrays(),
                                                        None)
         zero = np.zeros(shape)
         n_fus, n_fin = zero + n_fus, zero + n_fin
@@ -610,10 +610,7 @@ def yaw_solver_settings(settings=None):
     InputError
         For something other than a SolverSettings, or a grid that does not fit.
     """
-    settings = SolverSettings() if settings is None else settings
-    if not isinstance(settings, SolverSettings):
-        raise InputError("solver settings must be a SolverSettings", type(settings).__name__)
-    settings = settings.with_defaults(**YAW_SOLVER_DEFAULTS)
+    settings = solver_settings(settings).with_defaults(**YAW_SOLVER_DEFAULTS)
     settings.fixed_grid()
     return settings
 

@@ -127,4 +127,7 @@ def _numpy_lookup(x, xp, fp, slope, lo, k):
     return np.interp(x, xp, fp)
 
 
-_numpy_moments = make_yaw_moments(_numpy_lookup)
+#: :func:`make_yaw_moments` with numpy's interpolation: the moments of arrays of states, from
+#: the same source as the compiled batches' (used by
+#: :meth:`slingloads.models.yaw_dynamics.YawModel.moments`).
+numpy_moments = make_yaw_moments(_numpy_lookup)

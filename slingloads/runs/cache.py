@@ -75,7 +75,15 @@ _PART = ".part-"
 
 
 def default_cache_dir():
-    """The default cache folder (module notes)."""
+    """The default cache folder (module notes).
+
+    Returns
+    -------
+    pathlib.Path
+        ``campaign`` in ``$SLINGLOADS_CACHE`` when set, else in the user's cache folder
+        (``%LOCALAPPDATA%\\slingloads`` on Windows, ``$XDG_CACHE_HOME/slingloads`` or
+        ``~/.cache/slingloads`` elsewhere).
+    """
     if os.environ.get("SLINGLOADS_CACHE"):
         return Path(os.environ["SLINGLOADS_CACHE"]) / "campaign"
     if os.name == "nt" and os.environ.get("LOCALAPPDATA"):
@@ -224,7 +232,15 @@ class RunCache:
     # ---- reading ----------------------------------------------------------------------
     def expect(self, key, rows):
         """Tell the cache how many history rows the run ``key`` has: an entry of another
-        size is refused before it is read (module notes)."""
+        size is refused before it is read (module notes).
+
+        Parameters
+        ----------
+        key : str
+            The run's key (:class:`~slingloads.analyses.campaign.keys.KeyMaker`).
+        rows : int
+            Rows of its time histories. [-]
+        """
         self._rows[key] = int(rows)
 
     def __contains__(self, key):
@@ -248,6 +264,16 @@ class RunCache:
 
     def get(self, key):
         """(metrics, histories) of a stored run, or None (absent or unusable: module notes).
+
+        Parameters
+        ----------
+        key : str
+            The run's key.
+
+        Returns
+        -------
+        tuple or None
+            ``(metrics, histories)`` as :meth:`put` stored them, or None.
 
         Raises
         ------
@@ -340,7 +366,16 @@ class RunCache:
     # ---- writing ----------------------------------------------------------------------
     def put(self, key, record):
         """Store a run (atomically: temporary file, then rename); kept in memory, with a
-        warning, if the cache cannot be written (module notes)."""
+        warning, if the cache cannot be written (module notes).
+
+        Parameters
+        ----------
+        key : str
+            The run's key.
+        record : tuple
+            ``(metrics, histories)`` of the run: its metrics by name (floats, SI) and its
+            histories, an array of shape (rows, len(HISTORY_LABELS)) (SI).
+        """
         if not self.usable:
             self._keep(key, record)
             return
@@ -397,7 +432,18 @@ class _Unusable(ValueError):
 def location_problem(cache_dir):
     """Why the folder ``cache_dir`` cannot hold the run cache, in words, or None: a file in the
     way (the folder, its ``runs`` sub-folder or a part of its path), no write permission, a
-    name too long for the file system."""
+    name too long for the file system.
+
+    Parameters
+    ----------
+    cache_dir : path-like
+        The cache folder.
+
+    Returns
+    -------
+    str or None
+        The problem in words, or None when the folder can hold the cache.
+    """
     path = Path(cache_dir)
     try:
         for part in path.parts:
@@ -435,7 +481,18 @@ def location_problem(cache_dir):
 
 def check_outside(cache_dir, out_dir):
     """Refuse a cache inside the output folder (that folder is replaced as a whole), and an
-    output folder inside the cache (publishing would replace cached runs)."""
+    output folder inside the cache (publishing would replace cached runs).
+
+    Parameters
+    ----------
+    cache_dir, out_dir : path-like
+        The cache folder and the output folder.
+
+    Raises
+    ------
+    InputError
+        If one lies inside the other (or is the other), naming the folder to change.
+    """
     try:
         cache = Path(cache_dir).resolve()
         out = Path(out_dir).resolve()
@@ -456,5 +513,16 @@ def check_outside(cache_dir, out_dir):
 def check_writable(cache_dir):
     """Why the run cache at ``cache_dir`` cannot be used (:func:`location_problem`), or None.
     A cache that cannot be used is no reason to stop: the campaign runs without it, with a
-    warning (module notes)."""
+    warning (module notes).
+
+    Parameters
+    ----------
+    cache_dir : path-like
+        The cache folder.
+
+    Returns
+    -------
+    str or None
+        The problem in words, or None.
+    """
     return location_problem(cache_dir)

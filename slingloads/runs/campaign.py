@@ -61,7 +61,13 @@ class CampaignReport:
 
     def to_frame(self):
         """Every run of the campaign, one row each: its factors, then its metrics (units in
-        the headers; :attr:`~slingloads.analyses.campaign.CampaignResult.metrics`)."""
+        the headers; :attr:`~slingloads.analyses.campaign.CampaignResult.metrics`).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per run, units in the column labels.
+        """
         return self.result.metrics
 
 
@@ -77,6 +83,11 @@ def run(study):
     ``study.source.warnings``; the campaign's parachute decision is kept in
     ``study.results.parachute_decision`` (the sizing, when it runs after, replaces it with
     the decision of both models).
+
+    Parameters
+    ----------
+    study : Study
+        The study (:class:`~slingloads.runs.study.Study`) with campaign inputs.
 
     Returns
     -------

@@ -131,11 +131,24 @@ class ChuteSizingReport:
 
     def to_frame(self):
         """Every run of the area sweep, one row each (units in the headers); empty when
-        fuselage and fin are already stable (no sweep)."""
+        fuselage and fin are already stable (no sweep).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per run (area x gust), units in the column labels (m^2, deg, s).
+        """
         return self.sweep.to_frame() if self.sweep is not None else pd.DataFrame()
 
     def stability_by_area(self):
-        """One row per swept area: all gusts stable?, worst peak sideslip and yaw."""
+        """One row per swept area: all gusts stable?, worst peak sideslip and yaw.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per swept area [m^2]: stable under every gust, largest peak sideslip and
+            yaw [deg].
+        """
         if self.sweep is None:
             return pd.DataFrame()
         return self.sweep.by_area()
@@ -146,7 +159,14 @@ class ChuteSizingReport:
         return self.sweep.smallest_stable_area if self.sweep is not None else float("nan")
 
     def history_runs(self):
-        """Indices of the runs at the smallest, recommended and largest swept areas."""
+        """Indices of the runs at the smallest, recommended and largest swept areas.
+
+        Returns
+        -------
+        list of int
+            Indices (0-based, sorted) of the runs at the swept areas nearest the smallest,
+            the recommended and the largest factor.
+        """
         if self.sweep is None:
             return []
         ratio = self.sweep.runs.areas / self.static.area

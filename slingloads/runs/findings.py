@@ -94,7 +94,23 @@ class Findings:
                              for f in self.rows], columns=COLUMNS)
 
     def get(self, question):
-        """The finding whose question starts with ``question`` (the first one)."""
+        """The finding whose question starts with ``question`` (the first one).
+
+        Parameters
+        ----------
+        question : str
+            The start of the finding's question.
+
+        Returns
+        -------
+        Finding
+            The first finding whose question starts so.
+
+        Raises
+        ------
+        KeyError
+            If no finding's question starts so.
+        """
         for f in self.rows:
             if f.question.startswith(question):
                 return f

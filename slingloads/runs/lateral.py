@@ -98,11 +98,28 @@ class LateralReport:
 
     def to_frame(self):
         """Every case of the sweep, one row each: its definition and its metrics (SI, units
-        in the headers; :meth:`~slingloads.analyses.lateral.LateralStudy.to_frame`)."""
+        in the headers; :meth:`~slingloads.analyses.lateral.LateralStudy.to_frame`).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per case, units in the column labels (kg, kg m^2, m, s, deg, -).
+        """
         return self.study.to_frame()
 
     def motion_id(self, index):
-        """LateralMotions id of case ``index`` (0-based)."""
+        """LateralMotions id of case ``index`` (0-based).
+
+        Parameters
+        ----------
+        index : int
+            A case of the sweep, 0-based.
+
+        Returns
+        -------
+        str
+            The id of its carrier motion on the LateralMotions sheet.
+        """
         n = len(self.inputs.motions)
         return self.inputs.motion_ids[index % n]
 

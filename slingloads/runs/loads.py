@@ -89,7 +89,18 @@ def hook_angle_handoff(study, lateral):
 
 def loads_study(study):
     """The loads study that :func:`run` runs: the lateral hook-angle hand-off's when there is
-    one, else the campaign hand-off's, else the study's own."""
+    one, else the campaign hand-off's, else the study's own.
+
+    Parameters
+    ----------
+    study : Study
+        The study (:class:`~slingloads.runs.study.Study`).
+
+    Returns
+    -------
+    LoadsStudy
+        The loads study to run (:class:`~slingloads.analyses.loads.LoadsStudy`).
+    """
     results = study.results
     if results.loads_hook_angle is not None:
         return results.loads_hook_angle.study
@@ -154,7 +165,18 @@ def with_towed_system(study, loads):
 
 
 def towed_system_of(study):
-    """The multibody model's towed system of the study, or None without one."""
+    """The multibody model's towed system of the study, or None without one.
+
+    Parameters
+    ----------
+    study : Study
+        The study (:class:`~slingloads.runs.study.Study`).
+
+    Returns
+    -------
+    SlingSystem or None
+        The towed system (:class:`~slingloads.models.multibody.system.SlingSystem`).
+    """
     inputs = study.inputs.multibody
     return None if inputs is None else inputs.system
 

@@ -73,12 +73,25 @@ class MultibodyReport:
 
     def to_frame(self):
         """Every manoeuvre, one row each: its verdict and metrics (units in the headers;
-        :meth:`~slingloads.analyses.multibody.Simulation.metrics_frame`)."""
+        :meth:`~slingloads.analyses.multibody.Simulation.metrics_frame`).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per manoeuvre, units in the column labels.
+        """
         return self.simulation.metrics_frame()
 
     def largest_excursion(self):
         """(run, sample index, departure [rad]) of the largest angular departure from its
-        start (yaw, lateral or longitudinal cable swing) over all runs; None without runs."""
+        start (yaw, lateral or longitudinal cable swing) over all runs; None without runs.
+
+        Returns
+        -------
+        tuple or None
+            ``(run, sample index, departure)``: the run, the index of its sample [-] and the
+            departure [rad].
+        """
         best = None
         for run in self.simulation.runs:
             h = run.histories()
@@ -123,7 +136,18 @@ def shortfalls(result):
     """What the multibody model was asked for and could not compute, one line each: no trim
     at the system airspeed (then no linear model, no eigenvalue figure, no stability
     verdict), and the runs that could not start because their own trim failed. A run that
-    stops because it left a table is a result (its verdict says so), not a shortfall."""
+    stops because it left a table is a result (its verdict says so), not a shortfall.
+
+    Parameters
+    ----------
+    result : MultibodyReport
+        The multibody model's result.
+
+    Returns
+    -------
+    list of str
+        One line per shortfall; empty when none.
+    """
     out = []
     airspeed = result.inputs.system.airspeed / KNOT
     if not result.trim.converged:
@@ -141,7 +165,18 @@ def shortfalls(result):
 
 def airframe_outline(airframe):
     """Polylines of the airframe for the views: fuselage (foremost mass item, CG, aftmost
-    mass item) and mast (CG to hub), airframe axes. [m]"""
+    mass item) and mast (CG to hub), airframe axes. [m]
+
+    Parameters
+    ----------
+    airframe : Airframe
+        The airframe (:class:`~slingloads.models.airframe.Airframe`).
+
+    Returns
+    -------
+    dict of str to ndarray
+        Each polyline's points, shape (k, 3), airframe axes. [m]
+    """
     items = airframe.mass_items
     x = items.position[:, 0]
     nose, tail = items.position[int(np.argmin(x))], items.position[int(np.argmax(x))]

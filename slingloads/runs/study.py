@@ -353,18 +353,12 @@ class Results:
             Empty when every analysis computed what it was asked for.
         """
         out = []
-        if self.multibody is not None:
-            from slingloads.runs.multibody import shortfalls
+        for name in ("multibody", "chute sizing", "campaign"):
+            result = self.of(name)
+            if result is not None:
+                from slingloads.runs.registry import RUNS  # loaded by the run that made it
 
-            out += shortfalls(self.multibody)
-        if self.chute_sizing is not None:
-            from slingloads.runs.chute_sizing import shortfalls
-
-            out += shortfalls(self.chute_sizing)
-        if self.campaign is not None:
-            from slingloads.runs.campaign import shortfalls
-
-            out += [line for line in shortfalls(self.campaign) if line not in out]
+                out += [line for line in RUNS[name].shortfalls(result) if line not in out]
         if self.parachute_decision is not None:  # the study's one decision, said once
             out = [line for line in out if not line.startswith(DECISION_FINDING)]
             if not self.parachute_decision.found:
@@ -490,19 +484,11 @@ def run_one(study, name):
     object
         Its result (:class:`Results` lists the types).
     """
-    if name == "loads":
-        from slingloads.runs.loads import run
-    elif name == "lateral":
-        from slingloads.runs.lateral import run
-    elif name == "chute sizing":
-        from slingloads.runs.chute_sizing import run
-    elif name == "multibody":
-        from slingloads.runs.multibody import run
-    elif name == "campaign":
-        from slingloads.runs.campaign import run
-    else:
+    if name not in ANALYSES:
         raise InputError(f"unknown analysis; valid names are {list(ANALYSES)}", name)
-    return run(study)
+    from slingloads.runs.registry import RUNS  # the analyses load when one runs
+
+    return RUNS[name].run(study)
 
 
 def run_analysis(study, name):

@@ -116,8 +116,8 @@ def _cached(dispatcher):
 
 def _kernels(part):
     if part == "equations":
-        from slingloads.models.multibody.integrator import _evaluate_states
-        return [_evaluate_states]
+        from slingloads.models.multibody.integrator import evaluate_states
+        return [evaluate_states]
     from slingloads.models.multibody.integrator import dopri_runs
     return [dopri_runs]
 

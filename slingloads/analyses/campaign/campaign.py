@@ -24,8 +24,8 @@ from slingloads.analyses.multibody import linearise, trim
 from slingloads.constants import KNOT
 from slingloads.errors import InputError
 from slingloads.models.gusts import standard_gusts
+from slingloads.models.integration import SolverSettings
 from slingloads.models.multibody.integrator import ATOL, RTOL
-from slingloads.models.yaw_dynamics import SolverSettings
 
 from .execution import MemoryStore, execute, make_executor
 from .keys import KeyMaker
@@ -67,10 +67,10 @@ class RunSettings:
     atol: float = ATOL
 
     def __post_init__(self):
-        from slingloads.analyses.multibody.simulate import _check_settings
+        from slingloads.analyses.multibody.simulate import check_settings
 
         dt = None if self.dt is None else float(self.dt)
-        _check_settings(float(self.t_end), dt, float(self.output_interval), float(self.rtol),
+        check_settings(float(self.t_end), dt, float(self.output_interval), float(self.rtol),
                         float(self.atol))
         for name in ("t_end", "output_interval", "rtol", "atol"):
             object.__setattr__(self, name, float(getattr(self, name)))

@@ -46,8 +46,8 @@ from slingloads.errors import InputError, OutputError
 from .memory import (  # noqa: F401 - re-exported
     MAX_BATCH,
     MIN_BATCH,
-    _cpu_count,
     batch_limit,
+    cpu_count,
     history_rows,
     local_workers,
     worker_memory,
@@ -267,7 +267,7 @@ class LocalProcesses(_Executor):
         if isinstance(workers, bool) or int(workers) != workers or workers < 1:
             raise InputError("the number of workers must be a whole number >= 1", workers)
         self.workers = int(workers)
-        self.threads = max(1, _cpu_count() // self.workers)
+        self.threads = max(1, cpu_count() // self.workers)
         self._pool = None
         self.warnings = []
 
@@ -629,7 +629,7 @@ def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=
         return DaskCluster(scheduler, timeout)
     explicit = workers is not None
     if workers is None:
-        workers = 1 if runs is not None and runs < MAX_BATCH else _cpu_count()
+        workers = 1 if runs is not None and runs < MAX_BATCH else cpu_count()
     if isinstance(workers, bool) or int(workers) != workers or workers < 1:
         raise InputError("the number of workers must be a whole number >= 1", workers)
     workers, warning = local_workers(int(workers), settings)

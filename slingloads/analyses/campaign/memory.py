@@ -47,7 +47,14 @@ def history_rows(settings):
     return int(round(float(settings["t_end"]) / float(settings["output_interval"]))) + 1
 
 
-def _cpu_count():
+def cpu_count():
+    """The machine's cores, at least one (``os.cpu_count()`` may not know).
+
+    Returns
+    -------
+    int
+        Cores, >= 1. [-]
+    """
     return max(1, os.cpu_count() or 1)
 
 
@@ -155,7 +162,7 @@ def local_workers(requested, settings=None, cores=None, available=None):
     workers : int
     warning : str or None
     """
-    cores = _cpu_count() if cores is None else int(cores)
+    cores = cpu_count() if cores is None else int(cores)
     available = _available_memory() if available is None else available
     each = worker_memory(settings)
     by_memory = (max(1, int((available - WORKER_BASE_MEMORY) // each))

@@ -88,7 +88,31 @@ METRIC_LABELS = {"hub load angle": "hub load from mast"}
 _INFO = {name: i for i, name in enumerate(INFO)}
 
 
-def _check_settings(t_end, dt, output_interval, rtol, atol):
+def check_settings(t_end, dt, output_interval, rtol, atol):
+    """Check a simulation's settings and count its stored samples.
+
+    Parameters
+    ----------
+    t_end : float
+        Simulated time, > 0 and a whole multiple of ``output_interval``. [s]
+    dt : float or None
+        Fixed step, > 0 (None: the adaptive Dormand-Prince integrator). [s]
+    output_interval : float
+        Interval of the stored samples, > 0. [s]
+    rtol, atol : float
+        Tolerances of the adaptive integrator, > 0. [-], [state units]
+
+    Returns
+    -------
+    int
+        Stored samples, t_end / output_interval + 1. [-]
+
+    Raises
+    ------
+    InputError
+        For a setting that is not finite and > 0, or a run length that is not a whole
+        number of output intervals, naming the setting and its value.
+    """
     for name, value in (("t_end", t_end), ("output_interval", output_interval)):
         if not np.isfinite(value) or value <= 0:
             raise InputError(f"simulation {name} must be > 0 [s]", value)
@@ -622,7 +646,7 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
     """
     t_end, output_interval = float(t_end), float(output_interval)
     dt = None if dt is None else float(dt)
-    n_out = _check_settings(t_end, dt, output_interval, float(rtol), float(atol))
+    n_out = check_settings(t_end, dt, output_interval, float(rtol), float(atol))
     pairs = list(pairs)
     requests, keys = {}, []
     for system, manoeuvre in pairs:

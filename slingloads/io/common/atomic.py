@@ -67,11 +67,11 @@ from slingloads.errors import InputError, OutputError
 from slingloads.io.common.outguard import (  # noqa: F401 - re-exported
     EARLIER_FILE,
     SAME_NAME,
-    _os_error,
-    _same_file,
     check_not_input,
     check_outputs,
     check_replaceable,
+    os_error,
+    same_file,
 )
 from slingloads.io.common.outnames import output_pattern, safe_file_part  # noqa: F401
 from slingloads.io.common.ownership import (
@@ -84,15 +84,15 @@ from slingloads.io.common.swap import (  # noqa: F401 - re-exported
     STEP_VARIABLE,
     SWAP_VARIABLE,
     TEMP_PREFIX,
-    _exchange,
-    _is_current_folder,
-    _lock_folder,
-    _locked,
-    _name_max,
-    _pause,
-    _recover,
-    _stage_prefix,
-    _writable,
+    exchange_folders,
+    is_current_folder,
+    is_writable,
+    lock_folder,
+    longest_name,
+    pause_if_asked,
+    publishing_lock,
+    recover,
+    stage_prefix,
 )
 from slingloads.limits import MAX_OUTPUT_ENTRIES
 
@@ -159,7 +159,7 @@ class AtomicOutputs:
             raise OutputError("the output folder is a mount point or the root folder, which "
                               "cannot be replaced as a whole: write the reports to a "
                               "sub-folder of it", self.out_dir)
-        if _is_current_folder(real):
+        if is_current_folder(real):
             raise InputError("the output folder is the current folder: the report set is "
                              "published by replacing the output folder as a whole, which "
                              "would leave your shell in a removed folder; write to a "
@@ -167,15 +167,15 @@ class AtomicOutputs:
         existing = self._existing_ancestor(real)
         if existing == real:
             self._check_folder(real)
-        elif not _writable(existing):
+        elif not is_writable(existing):
             raise OutputError("cannot create the output folder: no write permission in "
                               f"{existing}", self.out_dir)
-        if existing in (real, parent) and not _writable(parent):
+        if existing in (real, parent) and not is_writable(parent):
             raise OutputError("cannot write beside the output folder (the report set is "
                               f"staged in its parent folder {parent} and swapped in): "
                               "permission denied; choose a folder whose parent you may "
                               "write to", self.out_dir)
-        name_max = _name_max(existing)
+        name_max = longest_name(existing)
         for name in names:
             if len(os.fsencode(name)) > name_max:
                 raise OutputError(f"an output file name is longer than the {name_max} bytes "
@@ -209,7 +209,7 @@ class AtomicOutputs:
         try:
             real = Path(os.path.realpath(text))
         except (OSError, ValueError) as err:
-            raise _os_error(err, "cannot resolve the output folder", self.out_dir) from None
+            raise os_error(err, "cannot resolve the output folder", self.out_dir) from None
         self._real = real
         return real
 
@@ -229,7 +229,7 @@ class AtomicOutputs:
                 path = path.parent
                 continue
             except OSError as err:
-                raise _os_error(err, "cannot use the output folder", self.out_dir) from None
+                raise os_error(err, "cannot use the output folder", self.out_dir) from None
             if not stat.S_ISDIR(info.st_mode):  # the user's --out, not the environment
                 what = ("--out: the output folder is an existing file, not a folder"
                         if path == real else
@@ -240,14 +240,14 @@ class AtomicOutputs:
 
     def _check_folder(self, real):
         """An existing output folder: writable, files only, not too many entries."""
-        if not _writable(real):
+        if not is_writable(real):
             raise OutputError("the output folder is read-only (no write permission)",
                               self.out_dir)
         count = 0
         try:
             entries = list(os.scandir(real))
         except OSError as err:
-            raise _os_error(err, "cannot list the output folder", self.out_dir) from None
+            raise os_error(err, "cannot list the output folder", self.out_dir) from None
         for entry in entries:
             count += 1
             if entry.is_dir(follow_symlinks=False):
@@ -282,7 +282,7 @@ class AtomicOutputs:
                                  "input is never overwritten): choose another output folder",
                                  str(source), file=str(source))
             for entry in entries:
-                if self._claims(entry.name) and _same_file(entry.path, source):
+                if self._claims(entry.name) and same_file(entry.path, source):
                     raise InputError("an output of this run would replace a file that is an "
                                      "input, the same file through a link (an input is never "
                                      "overwritten): choose another output folder",
@@ -314,15 +314,15 @@ class AtomicOutputs:
         self.check()
         parent = real.parent
         self._make_parents(parent)
-        with _locked(parent):
-            _recover(parent, real)
+        with publishing_lock(parent):
+            recover(parent, real)
             try:
-                self._stage = Path(tempfile.mkdtemp(prefix=_stage_prefix(real, "new"),
+                self._stage = Path(tempfile.mkdtemp(prefix=stage_prefix(real, "new"),
                                                     dir=parent))
             except OSError as err:
-                raise _os_error(err, "cannot create the staging folder beside the output "
+                raise os_error(err, "cannot create the staging folder beside the output "
                                 "folder", parent) from None
-            self._stage_fd = _lock_folder(self._stage)
+            self._stage_fd = lock_folder(self._stage)
         return self
 
     def _make_parents(self, parent):
@@ -337,7 +337,7 @@ class AtomicOutputs:
             except FileExistsError:
                 continue
             except OSError as err:
-                raise _os_error(err, "cannot create the output folder", path) from None
+                raise os_error(err, "cannot create the output folder", path) from None
             self._created.append(path)
 
     def __fspath__(self):
@@ -371,7 +371,7 @@ class AtomicOutputs:
         if not name or Path(name).name != name or name in (".", "..") or "\x00" in name:
             raise InputError("an output name must be a plain file name without a folder "
                              "part", name)
-        if len(os.fsencode(name)) > _name_max(self._stage):
+        if len(os.fsencode(name)) > longest_name(self._stage):
             raise OutputError("an output file name is too long for the file system: use a "
                               "shorter input file name", name[:60] + "...")
         if name.casefold() in self._folded:
@@ -393,9 +393,9 @@ class AtomicOutputs:
                 try:
                     self._publish()
                 except OSError as err:
-                    raise _os_error(err, "cannot publish the reports", self.out_dir) from None
+                    raise os_error(err, "cannot publish the reports", self.out_dir) from None
             elif isinstance(exc, OSError) and not isinstance(exc, OutputError):
-                raise _os_error(exc, "cannot write the reports", self.out_dir) from exc
+                raise os_error(exc, "cannot write the reports", self.out_dir) from exc
         finally:
             self._cleanup()
         return False
@@ -407,9 +407,9 @@ class AtomicOutputs:
         real = self._resolve()
         parent = real.parent
         written = {name: file_entry(self._stage / name) for name in self._names}
-        _pause()
-        with _locked(parent):
-            _recover(parent, real)
+        pause_if_asked()
+        with publishing_lock(parent):
+            recover(parent, real)
             if real.exists():
                 self._check_folder(real)
                 self._check_inputs(real)
@@ -417,10 +417,10 @@ class AtomicOutputs:
                 carried = self._carry_over(real)
                 kept = {n: manifest[n] for n in carried if n in manifest}
                 self._write_manifest({**kept, **written})
-                _pause()
+                pause_if_asked()
                 os.chmod(self._stage, stat.S_IMODE(os.stat(real).st_mode))
-                _exchange(self._stage, real)
-                _pause()
+                exchange_folders(self._stage, real)
+                pause_if_asked()
                 # the old set now lies under the staging name: a kill from here on leaves it
                 # to the next run's recovery
                 self._old = self._stage
@@ -547,12 +547,12 @@ def atomic_file(path, inputs=()):
         os.close(fd)
         os.chmod(tmp, new_file_mode())  # mkstemp's 0600 would hide the file from the group
     except OSError as err:
-        raise _os_error(err, "cannot write the file", path) from None
+        raise os_error(err, "cannot write the file", path) from None
     try:
         yield Path(tmp)
         os.replace(tmp, path)
     except OSError as err:
-        raise _os_error(err, "cannot write the file", path) from None
+        raise os_error(err, "cannot write the file", path) from None
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)

@@ -68,14 +68,14 @@ import pandas as pd
 
 from slingloads.errors import InputError
 from slingloads.io.common.excel_cells import (
-    _COVER_TITLE_FONT,
-    _HEADER_STYLE,
-    _TITLE_STYLE,
-    _WRAP,
+    COVER_TITLE_FONT,
     EXCEL_MAX_ROWS,
-    _SheetWriter,
-    _style,
-    _Workbook,
+    HEADER_STYLE,
+    TITLE_STYLE,
+    WRAP,
+    ReportWorkbook,
+    SheetWriter,
+    cell_style,
     check_sheet_name,
     split_sheet_names,
 )
@@ -85,12 +85,12 @@ from slingloads.io.common.excel_sections import sheet_blocks, write_sections_she
 from slingloads.io.common.excel_tables import (
     Highlight,
     Section,
-    _check_highlight,
-    _Columns,
-    _note_lines,
-    _set_widths,
+    TableColumns,
+    check_highlight,
     format_by_header,
     frame_title,
+    note_lines,
+    set_widths,
     write_table_sheets,
 )
 
@@ -217,7 +217,7 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
     # folder of their own, removed with whatever a workbook refused half-way leaves there
     with tempfile.TemporaryDirectory(prefix="slingloads-xlsx-",
                                      ignore_cleanup_errors=True) as tmp:
-        wb = _Workbook(path, stream=_table_cells(sheets) > IN_MEMORY_CELLS, tmpdir=tmp)
+        wb = ReportWorkbook(path, stream=_table_cells(sheets) > IN_MEMORY_CELLS, tmpdir=tmp)
         wb.units = "US" if info is not None and info.units.startswith("US") else "SI"
         wb.set_properties({"author": creator, **({"title": info.title} if info else {})})
         mark_report(wb)
@@ -232,7 +232,7 @@ def write_workbook(path, sheets, images=None, *, number_format=None,
             elif isinstance(content, str):
                 written += write_sections_sheet(wb, name, [Section(note=content)], info=info)
             else:
-                _check_highlight([s.table for s in content if s.table is not None],
+                check_highlight([s.table for s in content if s.table is not None],
                                  highlight.get(name), name)
                 for n, part in sheet_blocks(name, content, number_format, taken=written):
                     mark = _highlight_for(highlight.get(name), part)
@@ -265,21 +265,21 @@ def write_cover_sheet(wb, name, sections, info):
     """The cover: a large title, then the cover's sections (two-column tables and notes),
     on one portrait page."""
     ws = wb.add_worksheet(check_sheet_name(name))
-    columns = _Columns({0: 24, 1: 72}, {1})
-    _set_widths(ws, columns)
+    columns = TableColumns({0: 24, 1: 72}, {1})
+    set_widths(ws, columns)
     print_setup(ws, pixels=columns.pixels, sheet_title="Cover", info=info)
     ws.fit_to_pages(1, 1)  # a long list of sheets and files shrinks, never spills
-    writer = _SheetWriter(wb, ws, columns.widths)
-    writer.append([info.title], _style(_COVER_TITLE_FONT))
-    wrap = _style(None, None, _WRAP)
+    writer = SheetWriter(wb, ws, columns.widths)
+    writer.append([info.title], cell_style(COVER_TITLE_FONT))
+    wrap = cell_style(None, None, WRAP)
     for title, note, table in sections:
         writer.blank()
         if title:
-            writer.append([title], _TITLE_STYLE)
-        for line in _note_lines(note, columns) if note else []:
+            writer.append([title], TITLE_STYLE)
+        for line in note_lines(note, columns) if note else []:
             writer.append([line])
         if table is not None:
-            writer.append(list(table.columns), _HEADER_STYLE)
+            writer.append(list(table.columns), HEADER_STYLE)
             for row in table.itertuples(index=False, name=None):
                 writer.append(list(row), [None] + [wrap] * (len(row) - 1))
     return [name]

@@ -1,14 +1,14 @@
 """The cells of a report workbook: Excel's limits, cell styles, and values written as what
 they are.
 
-What this module guarantees: every value is stored faithfully (:func:`_plain`): a string as
+What this module guarantees: every value is stored faithfully (:func:`cell_value`): a string as
 text, never as a formula (a text that looks like XlsxWriter's rich-string markup is written
 as two runs, so that it too is escaped), NaN as an empty cell, +/-inf as the text
 :data:`INFINITE_TEXT`, booleans as ``yes``/``no``; a text Excel cannot store (a control
 character, more than :data:`EXCEL_MAX_CELL_CHARS` characters) or a row past
 :data:`EXCEL_MAX_ROWS` is refused with its sheet and cell, never truncated; a sheet name is one
 Excel accepts (:func:`check_sheet_name`); each cell format is made once per workbook
-(:class:`_Workbook`), and a row of wrapped text is as tall as its tallest cell.
+(:class:`ReportWorkbook`), and a row of wrapped text is as tall as its tallest cell.
 
 References
 ----------
@@ -58,29 +58,29 @@ def _props(**kwargs):
     return tuple(sorted(kwargs.items()))
 
 
-# Parts of a cell style: tuples of XlsxWriter format properties, combined by _style().
+# Parts of a cell style: tuples of XlsxWriter format properties, combined by cell_style().
 _TITLE_FONT = _props(font_name=_FONT, bold=True, font_size=12)
-_COVER_TITLE_FONT = _props(font_name=_FONT, bold=True, font_size=16)
-_HEADER_FONT = _props(font_name=_FONT, bold=True)
-_HEADER_FILL = _props(pattern=1, fg_color="#DDEBF7", bg_color="#DDEBF7")  # solid
-_HEADER_BORDER = _props(bottom=1)  # thin
-_HEADER_ALIGN = _props(text_wrap=True, valign="bottom")
-_HEADER_RIGHT = _props(text_wrap=True, valign="bottom", align="right")
-_HEADER_CENTER = _props(text_wrap=True, valign="bottom", align="center")
-_WRAP = _props(text_wrap=True, valign="top", align="left", indent=1)
-_WRAP_GENERAL = _props(text_wrap=True, valign="top")
-_TOP = _props(valign="top")
-_LEFT = _props(valign="top", align="left", indent=1)
-_RIGHT = _props(valign="top", align="right")
-_CENTER = _props(valign="top", align="center")
+COVER_TITLE_FONT = _props(font_name=_FONT, bold=True, font_size=16)
+HEADER_FONT = _props(font_name=_FONT, bold=True)
+HEADER_FILL = _props(pattern=1, fg_color="#DDEBF7", bg_color="#DDEBF7")  # solid
+HEADER_BORDER = _props(bottom=1)  # thin
+HEADER_ALIGN = _props(text_wrap=True, valign="bottom")
+HEADER_RIGHT = _props(text_wrap=True, valign="bottom", align="right")
+HEADER_CENTER = _props(text_wrap=True, valign="bottom", align="center")
+WRAP = _props(text_wrap=True, valign="top", align="left", indent=1)
+WRAP_GENERAL = _props(text_wrap=True, valign="top")
+TOP = _props(valign="top")
+LEFT = _props(valign="top", align="left", indent=1)
+RIGHT = _props(valign="top", align="right")
+CENTER = _props(valign="top", align="center")
 #: Longest text of a column of ids that is centred (case, station, yes/no).
-_ID_WIDTH = 10
+ID_WIDTH = 10
 #: The conditional format of a highlighted cell: red fill, dark red text.
 _RED = {"bg_color": "#FFC7CE", "font_color": "#9C0006"}
 #: Average width of a character of text in Calibri 11 (digits are 7 px). [px]
-_CHAR_PIXELS = 6.3
+CHAR_PIXELS = 6.3
 #: Pixels of a column per character of its stored width (a Calibri 11 digit).
-_DIGIT_PIXELS = 7
+DIGIT_PIXELS = 7
 #: Advance widths of the printable ASCII characters (space to ``~``) in Calibri 11, as
 #: Carlito (metric-compatible with Calibri, the font LibreOffice prints the reports in) gives
 #: them: font units of a 2048-unit em (the fonts' ``hmtx`` tables), regular and bold. A
@@ -113,7 +113,7 @@ _FONT_UNIT_PIXELS = 11 * 96 / 72 / 2048
 _CELL_PADDING = 8
 
 
-def _px(width):
+def column_pixels(width):
     """Pixels of a column ``width`` characters wide (Calibri 11: 7 px per digit + 5)."""
     return 7 * width + 5
 
@@ -166,7 +166,7 @@ def split_sheet_names(name, n_rows, max_rows=EXCEL_MAX_ROWS):
 INFINITE_TEXT = {True: "infinite", False: "-infinite"}
 
 
-def _plain(value):
+def cell_value(value):
     """A Python value the writer stores faithfully (numpy scalars unwrapped, NaN -> None,
     booleans -> ``yes``/``no``)."""
     kind = type(value)
@@ -193,7 +193,7 @@ def _plain(value):
     if isinstance(value, str):
         return value
     if isinstance(value, (list, tuple, np.ndarray)):
-        return ", ".join(str(_plain(v)) for v in value)
+        return ", ".join(str(cell_value(v)) for v in value)
     return str(value)
 
 
@@ -213,7 +213,7 @@ def wrapped_lines(text, width, bold=False):
     broken across lines. A cautious estimate (a row too tall wastes a little paper, a row too
     short hides text): it breaks only at spaces, where the spreadsheets also break after a
     hyphen, so that none of its lines holds more than theirs."""
-    room = max(_px(width) - _CELL_PADDING, 4 * _DIGIT_PIXELS)
+    room = max(column_pixels(width) - _CELL_PADDING, 4 * DIGIT_PIXELS)
     space = text_pixels(" ", bold)
     count = 0
     for part in str(text).split("\n"):
@@ -232,7 +232,7 @@ def wrapped_lines(text, width, bold=False):
     return count
 
 
-class _Workbook(xlsxwriter.Workbook):
+class ReportWorkbook(xlsxwriter.Workbook):
     """An XlsxWriter workbook that makes each cell format once.
 
     Parameters
@@ -259,7 +259,7 @@ class _Workbook(xlsxwriter.Workbook):
 
     def cell_format(self, style):
         """The XlsxWriter ``Format`` of a (font, number format, alignment, fill, border)
-        style (:func:`_style`), made on first use; None for a style of nothing."""
+        style (:func:`cell_style`), made on first use; None for a style of nothing."""
         try:
             return self._cell_formats[style]
         except KeyError:
@@ -307,17 +307,17 @@ def _bold(style):
     return style is not None and style[0] is not None and ("bold", True) in style[0]
 
 
-class _SheetWriter:
+class SheetWriter:
     """Writes rows into one sheet, one after the other, keeping track of the row number, of
     the height of the rows written and of the page breaks asked for.
 
-    Cell formats come from :meth:`_Workbook.cell_format`, one per style. A row with wrapped
+    Cell formats come from :meth:`ReportWorkbook.cell_format`, one per style. A row with wrapped
     text gets the height of its tallest wrapped cell (LibreOffice does not compute it when
     it opens the file).
 
     Parameters
     ----------
-    wb : _Workbook
+    wb : ReportWorkbook
     ws : xlsxwriter.worksheet.Worksheet
         A sheet of ``wb``.
     widths : dict of int to float, optional
@@ -356,7 +356,7 @@ class _SheetWriter:
                              "per cell", value[:40] + "...", **self._where(column))
 
     def write(self, values, formats, lines=1):
-        """Write one row of plain values (:func:`_plain`), one format (or None) each, of
+        """Write one row of plain values (:func:`cell_value`), one format (or None) each, of
         ``lines`` lines of text."""
         if self.row >= EXCEL_MAX_ROWS:
             raise InputError(f"a sheet has more than Excel's {EXCEL_MAX_ROWS} rows",
@@ -391,7 +391,7 @@ class _SheetWriter:
     def append(self, values, styles=None):
         """Append one row; ``styles`` is one (font, format, alignment, fill, border) tuple
         for every cell, or a list of them, or None."""
-        values = [_plain(v) for v in values]
+        values = [cell_value(v) for v in values]
         if styles is None or isinstance(styles, tuple):
             styles = [styles] * len(values)
         formats = [self.wb.cell_format(s if isinstance(v, (int, float)) else _text_style(s))
@@ -415,10 +415,12 @@ class _SheetWriter:
             self.ws.set_h_pagebreaks(self.breaks)
 
 
-def _style(font=None, number_format=None, alignment=None, fill=None, border=None):
+def cell_style(font=None, number_format=None, alignment=None, fill=None, border=None):
+    """A cell's style as the writer keys its formats: (font, number format, alignment,
+    fill, border), each a property dict or None."""
     return (font, number_format, alignment, fill, border)
 
 
-_PLAIN = _style(_props(font_name=_FONT))
-_TITLE_STYLE = _style(_TITLE_FONT)
-_HEADER_STYLE = _style(_HEADER_FONT, None, _HEADER_ALIGN, _HEADER_FILL, _HEADER_BORDER)
+_PLAIN = cell_style(_props(font_name=_FONT))
+TITLE_STYLE = cell_style(_TITLE_FONT)
+HEADER_STYLE = cell_style(HEADER_FONT, None, HEADER_ALIGN, HEADER_FILL, HEADER_BORDER)

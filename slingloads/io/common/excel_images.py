@@ -14,15 +14,15 @@ import textwrap
 
 from slingloads.errors import InputError
 from slingloads.io.common.excel_cells import (
-    _CHAR_PIXELS,
-    _TITLE_STYLE,
+    CHAR_PIXELS,
     ROW_PIXELS,
-    _px,
-    _SheetWriter,
+    TITLE_STYLE,
+    SheetWriter,
     check_sheet_name,
+    column_pixels,
 )
-from slingloads.io.common.excel_print import PRINTABLE, _orient, print_setup
-from slingloads.io.common.excel_tables import _Columns, _set_widths
+from slingloads.io.common.excel_print import PRINTABLE, orient, print_setup
+from slingloads.io.common.excel_tables import TableColumns, set_widths
 from slingloads.io.common.figures import collect_pngs, figure_png
 
 
@@ -91,7 +91,7 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
 
     Parameters
     ----------
-    wb : _Workbook
+    wb : ReportWorkbook
         The workbook being written.
     name : str
         Sheet name.
@@ -113,12 +113,12 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
     page_width, page_height = PRINTABLE[orientation]
     page_rows = page_height // ROW_PIXELS
     width = (page_width - 10 - 5) // 7
-    _set_widths(ws, _Columns({0: width}, set()))
-    pixels = _px(width)
+    set_widths(ws, TableColumns({0: width}, set()))
+    pixels = column_pixels(width)
     print_setup(ws, pixels=pixels if orientation == "portrait" else 2 * pixels,
                 sheet_title=title or f"Plots ({len(images)})", info=info)
-    _orient(ws, orientation)
-    writer = _SheetWriter(wb, ws)
+    orient(ws, orientation)
+    writer = SheetWriter(wb, ws)
     used = 0
     pngs = collect_pngs(images.values())  # drawn here when the helper is behind
     for k, (title, figure) in enumerate(zip(images, pngs, strict=True)):
@@ -126,15 +126,15 @@ def write_images_sheet(wb, name, images, *, info=None, orientation="portrait", t
         size = _png_geometry(png)[:2]
         w, h, rows = _image_box(*size, page_rows, pixels - 10)
         # a title wider than the page is cut when printed: wrapped (12 pt bold ~ 1.45 x)
-        lines = textwrap.wrap(str(title), max(20, int((pixels - 10) / (_CHAR_PIXELS * 1.45))))
+        lines = textwrap.wrap(str(title), max(20, int((pixels - 10) / (CHAR_PIXELS * 1.45))))
         lines = lines or [""]
         rows += len(lines) - 1
         if used and used + rows > page_rows:
             writer.page_break()
             used = 0
         for line in lines[:-1]:
-            writer.append([line], _TITLE_STYLE)
-        writer.append([lines[-1]], _TITLE_STYLE)
+            writer.append([line], TITLE_STYLE)
+        writer.append([lines[-1]], TITLE_STYLE)
         _insert_png(ws, writer.row, png, w, h, f"plot{k + 1}.png")
         writer.blank(rows - 1)
         used += rows

@@ -222,7 +222,7 @@ def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info
     """
     orientation = orientation or orientation_for(pixels, height)
     ws.set_paper(PAPER_A4)
-    _orient(ws, orientation)
+    orient(ws, orientation)
     if column_breaks:  # blocks of columns, down then over, the key columns on each
         ws.set_print_scale(max(10, min(100, math.floor(scale))))
         ws.set_v_pagebreaks(sorted(int(j) for j in column_breaks))
@@ -250,7 +250,7 @@ def print_setup(ws, *, pixels, height=0.0, title_rows=None, sheet_title="", info
     return orientation
 
 
-def _orient(ws, orientation):
+def orient(ws, orientation):
     """Print ``ws`` in ``orientation`` (``"portrait"`` or ``"landscape"``)."""
     if orientation == "portrait":
         ws.set_portrait()

@@ -18,12 +18,12 @@ from __future__ import annotations
 import re
 
 from slingloads.io.common.excel_cells import (
-    _TITLE_STYLE,
     MAX_TEXT_WIDTH,
     ROW_PIXELS,
-    _px,
-    _SheetWriter,
+    TITLE_STYLE,
+    SheetWriter,
     check_sheet_name,
+    column_pixels,
 )
 from slingloads.io.common.excel_print import (
     MIN_EXTRA_SCALE,
@@ -37,15 +37,15 @@ from slingloads.io.common.excel_print import (
 )
 from slingloads.io.common.excel_tables import (
     Section,
-    _check_highlight,
-    _column_plan,
-    _Columns,
-    _freeze,
-    _note_lines,
-    _number_formats,
-    _set_widths,
-    _table_pixels,
-    _write_table,
+    TableColumns,
+    check_highlight,
+    column_plan,
+    freeze,
+    note_lines,
+    number_formats,
+    set_widths,
+    table_pixels,
+    write_table,
 )
 from slingloads.io.common.units import report_text
 
@@ -53,9 +53,9 @@ from slingloads.io.common.units import report_text
 def _is_long(table, number_format, text_width=MAX_TEXT_WIDTH):
     """A table taller than a printed page with its title, its text columns wrapped at
     ``text_width`` characters."""
-    formats = _number_formats(table.columns, number_format)
-    own = _column_plan([table], formats_of=lambda f: formats, text_width=text_width)
-    height = _table_pixels(table, own) + 2 * ROW_PIXELS
+    formats = number_formats(table.columns, number_format)
+    own = column_plan([table], formats_of=lambda f: formats, text_width=text_width)
+    height = table_pixels(table, own) + 2 * ROW_PIXELS
     page = page_pixels(orientation_for(own.pixels, height), own.pixels) * 0.95
     return height > page
 
@@ -242,9 +242,9 @@ SHEET_PIXELS = 0.95 * PRINTABLE["landscape"][0] / MIN_PRINT_SCALE
 
 def _widths(table, number_format=None, text_width=MAX_TEXT_WIDTH):
     """The printed width of each column of ``table`` as the writer sizes it. [px]"""
-    own = _column_plan([table], formats_of=lambda f: _number_formats(f.columns, number_format),
+    own = column_plan([table], formats_of=lambda f: number_formats(f.columns, number_format),
                        text_width=text_width)
-    return [_px(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
+    return [column_pixels(own.widths.get(j, 8.43)) for j in range(table.shape[1])]
 
 
 def _union(rows):
@@ -403,7 +403,7 @@ def _cut(sections, number_format=None, away=()):
             beside = grown
         tables = [sections[k].table.iloc[:, block] for k in wide for block in plan[k]]
         tables += [sections[k].table for k in own if k not in wide]
-        height = sum(_table_pixels(t, _column_plan([t], formats_of=lambda f: _number_formats(
+        height = sum(table_pixels(t, column_plan([t], formats_of=lambda f: number_formats(
             f.columns, number_format), text_width=text_width)) + 2 * ROW_PIXELS
             for t in tables)
         whole = text_width == MAX_TEXT_WIDTH or all(
@@ -440,7 +440,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
 
     Parameters
     ----------
-    wb : _Workbook
+    wb : ReportWorkbook
         The workbook being written.
     name : str
         Sheet name.
@@ -458,18 +458,18 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     ws = wb.add_worksheet(check_sheet_name(name))
     text_width = _text_width_for(sections, number_format)
     tables = [s.table for s in sections if s.table is not None]
-    _check_highlight(tables, highlight, name)
-    columns = _column_plan(tables, [s.note for s in sections],
-                           formats_of=lambda f: _number_formats(f.columns, number_format),
+    check_highlight(tables, highlight, name)
+    columns = column_plan(tables, [s.note for s in sections],
+                           formats_of=lambda f: number_formats(f.columns, number_format),
                            text_width=text_width)
-    _set_widths(ws, columns)
-    blocks = [(s.title, _note_lines(report_text(s.note, wb.units), columns) if s.note else [],
+    set_widths(ws, columns)
+    blocks = [(s.title, note_lines(report_text(s.note, wb.units), columns) if s.note else [],
                s.table)
               for s in sections]
     one_table = len(tables) == 1 and sections[-1].table is not None
     if one_table:
         header_row = sum(bool(t) + len(n) + (k > 0) for k, (t, n, _) in enumerate(blocks)) + 1
-        ws.freeze_panes(_freeze(tables[0], header_row))
+        ws.freeze_panes(freeze(tables[0], header_row))
         title_rows = header_row
     else:  # the first row is the sheet's title when the first block has no table; the
         # page header names it, and no row is repeated: only a table sheet repeats its header
@@ -481,7 +481,7 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
     sheet_title = next((s.title for s in sections if s.title),
                        next((s.note.splitlines()[0] for s in sections if s.note), name))
     needs = [ROW_PIXELS * (bool(title) + len(lines) + (k > 0))
-             + (_table_pixels(table, columns) if table is not None else 0)
+             + (table_pixels(table, columns) if table is not None else 0)
              for k, (title, lines, table) in enumerate(blocks)]
     height = sum(needs)
     orientation = orientation_for(columns.pixels, height)
@@ -506,22 +506,22 @@ def write_sections_sheet(wb, name, sections, *, number_format=None, highlight=No
                 scale=(100 * fit_width * scale if column_breaks
                        else None if scale in (None, 1.0) else 100 * fit_width * scale),
                 column_breaks=column_breaks, key_columns=1)
-    writer = _SheetWriter(wb, ws, columns.widths)
+    writer = SheetWriter(wb, ws, columns.widths)
     for k, (title, lines, table) in enumerate(blocks):
         if k in breaks:
             writer.page_break()
         if k:
             writer.blank()
         if title:
-            writer.append([title], _TITLE_STYLE)
+            writer.append([title], TITLE_STYLE)
         for line in lines:
             writer.append([line])
         if table is not None:
-            formats = _number_formats(table.columns, number_format)
-            own = _column_plan([table], formats_of=lambda f, x=formats: x,
+            formats = number_formats(table.columns, number_format)
+            own = column_plan([table], formats_of=lambda f, x=formats: x,
                                text_width=text_width)
             # the sheet's widths, this table's own alignment: a number sits under its header
-            _write_table(writer, table, formats, _Columns(columns.widths, own.wrapped),
+            write_table(writer, table, formats, TableColumns(columns.widths, own.wrapped),
                          highlight)
     writer.close()
     return [name]

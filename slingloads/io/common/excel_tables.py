@@ -26,29 +26,29 @@ from xlsxwriter.utility import xl_col_to_name
 
 from slingloads.errors import InputError
 from slingloads.io.common.excel_cells import (
-    _CENTER,
-    _DIGIT_PIXELS,
-    _HEADER_ALIGN,
-    _HEADER_BORDER,
-    _HEADER_CENTER,
-    _HEADER_FILL,
-    _HEADER_FONT,
-    _HEADER_RIGHT,
-    _ID_WIDTH,
-    _LEFT,
-    _RIGHT,
-    _TOP,
-    _WRAP,
-    _WRAP_GENERAL,
+    CENTER,
+    DIGIT_PIXELS,
     EXCEL_MAX_COLUMNS,
     EXCEL_MAX_ROWS,
+    HEADER_ALIGN,
+    HEADER_BORDER,
+    HEADER_CENTER,
+    HEADER_FILL,
+    HEADER_FONT,
+    HEADER_RIGHT,
+    ID_WIDTH,
+    LEFT,
     MAX_NUMBER_WIDTH,
     MAX_TEXT_WIDTH,
+    RIGHT,
     ROW_PIXELS,
-    _plain,
-    _px,
-    _SheetWriter,
-    _style,
+    TOP,
+    WRAP,
+    WRAP_GENERAL,
+    SheetWriter,
+    cell_style,
+    cell_value,
+    column_pixels,
     split_sheet_names,
     wrapped_lines,
 )
@@ -115,7 +115,7 @@ class Highlight:
 
 # ----------------------------------------------------------------------------- column plan
 @dataclass
-class _Columns:
+class TableColumns:
     """Widths [characters] and wrapped columns of one sheet."""
 
     widths: dict
@@ -123,25 +123,25 @@ class _Columns:
 
     @property
     def pixels(self):
-        return sum(_px(w) for w in self.widths.values())
+        return sum(column_pixels(w) for w in self.widths.values())
 
     def print_blocks(self, orientation):
         """``(scale, column breaks)`` of the sheet printed in ``orientation``: fitted to the
         page width, or in blocks of columns repeating the first (the row's id) when that
         fit is below the least print scale
         (:func:`~slingloads.io.common.excel_print.column_pages`)."""
-        # a column stored w characters wide shows 7 w px in Excel (_set_widths), which the
+        # a column stored w characters wide shows 7 w px in Excel (set_widths), which the
         # fit to the page width is judged by (the printing application scales it), and
         # 7 w + 5 px in LibreOffice (88.8 px for w = 12, measured on its PDF export): blocks
         # of columns are cut at the wider, so that no block spills a column onto a page
         stored = [self.widths.get(j, 8.43) for j in range(max(self.widths, default=-1) + 1)]
-        fit, breaks = column_pages([_DIGIT_PIXELS * w for w in stored], orientation)
+        fit, breaks = column_pages([DIGIT_PIXELS * w for w in stored], orientation)
         if not breaks:
             return fit, breaks
-        return column_pages([_px(w) for w in stored], orientation)
+        return column_pages([column_pixels(w) for w in stored], orientation)
 
 
-def _number_formats(columns, number_format):
+def number_formats(columns, number_format):
     """The format of each column: the report's override, else from the header's unit."""
     out = []
     for c in columns:
@@ -194,7 +194,7 @@ def _text_width(series):
     """Characters of the longest line of text in ``series`` as written."""
     widest = 0
     for value in series:
-        shown = _plain(value)
+        shown = cell_value(value)
         if shown is not None:
             widest = max(widest, max(len(line) for line in str(shown).split("\n")))
     return widest
@@ -215,7 +215,7 @@ def _number_width(series, number_format):
     return len(f"{-big:{sep}.{decimals}f}")
 
 
-def _column_plan(tables, notes=(), formats_of=None, text_width=MAX_TEXT_WIDTH):
+def column_plan(tables, notes=(), formats_of=None, text_width=MAX_TEXT_WIDTH):
     """Widths of the columns of every table of a sheet, and which columns wrap: a column
     wider than :data:`~slingloads.io.common.excel_cells.MAX_TEXT_WIDTH` characters wraps at
     that width, a column of text at ``text_width`` when that is narrower (a sheet of several
@@ -248,7 +248,7 @@ def _column_plan(tables, notes=(), formats_of=None, text_width=MAX_TEXT_WIDTH):
             widths[j] = max(widths.get(j, 0), min(width, limit))
     if not widths and notes:
         widths[0] = MAX_TEXT_WIDTH * 2
-    return _Columns(widths, wrapped)
+    return TableColumns(widths, wrapped)
 
 
 #: Width a wrapped text column may grow to on a table sheet (:func:`_wider_text`).
@@ -265,11 +265,11 @@ def _wider_text(frame, columns):
     :data:`_WIDE_TEXT_SCALE`; the plan unchanged otherwise."""
     if not columns.wrapped:
         return columns
-    wide = _Columns({j: (WIDE_TEXT_WIDTH if j in columns.wrapped else w)
+    wide = TableColumns({j: (WIDE_TEXT_WIDTH if j in columns.wrapped else w)
                      for j, w in columns.widths.items()}, set(columns.wrapped))
 
     def pages(plan):
-        height = _table_pixels(frame, plan)
+        height = table_pixels(frame, plan)
         return height / page_pixels(orientation_for(plan.pixels, height), plan.pixels)
 
     width = PRINTABLE["landscape"][0]
@@ -280,22 +280,23 @@ def _wider_text(frame, columns):
 
 def _in_blocks(frame, columns):
     """The column plan of a table sheet that prints in blocks of columns
-    (:meth:`_Columns.print_blocks`) with its wrapped text columns as wide as their longest
+    (:meth:`TableColumns.print_blocks`) with its wrapped text columns as wide as their longest
     text, up to a block's width: a row of the other blocks is then one line high, not as
     many lines as its text wraps to; the plan unchanged when the table fits the width."""
     orientation = orientation_for(columns.pixels)
     if not columns.wrapped or not columns.print_blocks(orientation)[1]:
         return columns
-    room = 0.9 * PRINTABLE[orientation][0] / MIN_PRINT_SCALE - _px(columns.widths.get(0, 0))
+    room = (0.9 * PRINTABLE[orientation][0] / MIN_PRINT_SCALE
+            - column_pixels(columns.widths.get(0, 0)))
     widths = dict(columns.widths)
     for j in columns.wrapped:
         longest = frame.iloc[:, j].astype(str).str.len().max()
         widths[j] = max(widths[j], min(int(longest) + 1, int((room - 5) / 7)))
-    return _Columns(widths, {j for j in columns.wrapped
+    return TableColumns(widths, {j for j in columns.wrapped
                              if frame.iloc[:, j].astype(str).str.len().max() > widths[j]})
 
 
-def _set_widths(ws, columns):
+def set_widths(ws, columns):
     """Set the column widths of the plan [characters], stored as they are.
 
     A width stored as ``w`` characters shows 7 ``w`` px wide (Excel's rule for Calibri 11);
@@ -303,10 +304,10 @@ def _set_widths(ws, columns):
     cell padding (``w + 5/7`` stored).
     """
     for j, width in columns.widths.items():
-        ws.set_column_pixels(j, j, _DIGIT_PIXELS * width)
+        ws.set_column_pixels(j, j, DIGIT_PIXELS * width)
 
 
-def _note_lines(text, columns):
+def note_lines(text, columns):
     """A note split into lines that fit the sheet's width (about 1 character per 7 px)."""
     chars = max(60, min(int(columns.pixels / 7.5), 160))
     lines = []
@@ -315,7 +316,7 @@ def _note_lines(text, columns):
     return lines
 
 
-def _freeze(frame, header_row):
+def freeze(frame, header_row):
     """Freeze panes below ``header_row``, right of the first column when it holds text ids."""
     first = frame.iloc[:, 0] if frame.shape[1] > 1 else None
     ids = (first is not None and len(first) > 0 and _is_text(first)
@@ -340,7 +341,9 @@ def _highlight(writer, frame, first_row, last_row, highlight):
                         f'ISTEXT({top}))'})
 
 
-def _check_highlight(frames, highlight, sheet):
+def check_highlight(frames, highlight, sheet):
+    """Refuse a highlight whose columns are not among the columns of ``frames`` (an
+    :class:`InputError` naming the column, the valid ones and the ``sheet``)."""
     if highlight is None:
         return
     columns = {c for f in frames for c in f.columns}
@@ -359,27 +362,27 @@ def _alignments(frame, columns):
         values = list(series) if _is_text(series) else None
         texts = values is not None and all(isinstance(v, str) or v is None for v in values)
         if j in columns.wrapped:
-            cells.append(_WRAP if texts else _WRAP_GENERAL)  # numbers stay right-aligned
-            heads.append(_HEADER_ALIGN)
+            cells.append(WRAP if texts else WRAP_GENERAL)  # numbers stay right-aligned
+            heads.append(HEADER_ALIGN)
         elif pd.api.types.is_bool_dtype(series.dtype) or (
                 texts and values
-                and max(len(v) if isinstance(v, str) else 0 for v in values) <= _ID_WIDTH):
-            cells.append(_CENTER)
-            heads.append(_HEADER_CENTER)
+                and max(len(v) if isinstance(v, str) else 0 for v in values) <= ID_WIDTH):
+            cells.append(CENTER)
+            heads.append(HEADER_CENTER)
         elif (pd.api.types.is_numeric_dtype(series.dtype)
               or _explained_numbers(series, frame.columns[j])):
-            cells.append(_RIGHT)  # numbers, and the text of an infinite one
-            heads.append(_HEADER_RIGHT)
+            cells.append(RIGHT)  # numbers, and the text of an infinite one
+            heads.append(HEADER_RIGHT)
         elif texts:
-            cells.append(_LEFT)  # text: a little room from the number on its left
-            heads.append(_HEADER_ALIGN)
+            cells.append(LEFT)  # text: a little room from the number on its left
+            heads.append(HEADER_ALIGN)
         else:
-            cells.append(_TOP)  # mixed numbers and text: Excel's own alignment
-            heads.append(_HEADER_ALIGN)
+            cells.append(TOP)  # mixed numbers and text: Excel's own alignment
+            heads.append(HEADER_ALIGN)
     return cells, heads
 
 
-def _write_table(writer, frame, formats, columns, highlight):
+def write_table(writer, frame, formats, columns, highlight):
     """Header and rows of ``frame`` at the writer's current row (the header once: a page
     repeats it through the print setup, never through a row written into the data)."""
     names = [str(c) for c in frame.columns]
@@ -387,7 +390,7 @@ def _write_table(writer, frame, formats, columns, highlight):
         raise InputError(f"a table has more than Excel's {EXCEL_MAX_COLUMNS} columns",
                          len(names), sheet=writer.ws.name)
     cells, heads = _alignments(frame, columns)
-    header_styles = [_style(_HEADER_FONT, None, h, _HEADER_FILL, _HEADER_BORDER)
+    header_styles = [cell_style(HEADER_FONT, None, h, HEADER_FILL, HEADER_BORDER)
                      for h in heads]
     writer.append(names, header_styles)
     first = writer.row + 1
@@ -396,10 +399,10 @@ def _write_table(writer, frame, formats, columns, highlight):
     ratio = [header_unit(c) == "-" for c in names]
     wrapping = [j for j, a in enumerate(cells) if ("text_wrap", True) in a]
     cell_format = writer.wb.cell_format
-    texts = [cell_format(_style(None, None, a)) for a in cells]  # text: no number format
+    texts = [cell_format(cell_style(None, None, a)) for a in cells]  # text: no number format
     looks = [{} for _ in cells]  # per column: number format -> cell format
     for row in frame.itertuples(index=False, name=None):
-        values = [_plain(v) for v in row]
+        values = [cell_value(v) for v in row]
         fmts, small = formats, ratio
         if per_row:
             unit = row[unit_at]
@@ -415,7 +418,7 @@ def _write_table(writer, frame, formats, columns, highlight):
                     fmt = value_format(shown, fmt, small[j])
                 made = looks[j].get(fmt)
                 if made is None:
-                    made = looks[j][fmt] = cell_format(_style(None, fmt, cells[j]))
+                    made = looks[j][fmt] = cell_format(cell_style(None, fmt, cells[j]))
                 out[j] = made
         writer.write(values, out, writer.lines(values, wrapping))
     _highlight(writer, frame, first, writer.row, highlight)
@@ -435,7 +438,7 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
 
     Parameters
     ----------
-    wb : _Workbook
+    wb : ReportWorkbook
         The workbook being written.
     name : str
         Sheet name (base name when split).
@@ -461,21 +464,21 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
     list of str
         The sheet names written, in order.
     """
-    _check_highlight([frame], highlight, name)
-    formats = _number_formats(frame.columns, number_format)
-    columns = _in_blocks(frame, _wider_text(frame, _column_plan([frame],
+    check_highlight([frame], highlight, name)
+    formats = number_formats(frame.columns, number_format)
+    columns = _in_blocks(frame, _wider_text(frame, column_plan([frame],
                                                                 formats_of=lambda f: formats)))
     title = frame_title(frame, name)
     names = []
     parts = split_sheet_names(name, len(frame), max_rows)
-    lines = _note_lines(report_text(note, wb.units), columns) if note else []
+    lines = note_lines(report_text(note, wb.units), columns) if note else []
     for k, (sheet_name, start, stop) in enumerate(parts):
         ws = wb.add_worksheet(sheet_name)
-        ws.freeze_panes(_freeze(frame, 1))
-        _set_widths(ws, columns)
+        ws.freeze_panes(freeze(frame, 1))
+        set_widths(ws, columns)
         boxed = lines if k == len(parts) - 1 else []
         # rows with their wrapped lines, and the note under them
-        height = (_table_pixels(frame.iloc[start:stop], columns)
+        height = (table_pixels(frame.iloc[start:stop], columns)
                   + ROW_PIXELS * (len(boxed) + bool(boxed)))
         orientation = orientation_for(columns.pixels, height)
         scale, column_breaks = columns.print_blocks(orientation)
@@ -487,7 +490,7 @@ def write_table_sheets(wb, name, frame, *, number_format=None, highlight=None,
                                                              height),
                     scale=100 * scale if column_breaks else None,
                     column_breaks=column_breaks, key_columns=1)
-        _write_table(_SheetWriter(wb, ws, columns.widths), frame.iloc[start:stop], formats,
+        write_table(SheetWriter(wb, ws, columns.widths), frame.iloc[start:stop], formats,
                      columns, highlight)
         if boxed:
             _note_box(ws, stop - start + 2, boxed, columns, frame.shape[1])
@@ -514,7 +517,7 @@ def _note_box(ws, row, lines, columns, n_columns):
     ws.print_area(0, 0, row + len(lines) + 1, max(n_columns - 1, 0) + extra)
 
 
-def _table_pixels(frame, columns):
+def table_pixels(frame, columns):
     """Estimated printed height of a table with its header row. [px]"""
     header = max(wrapped_lines(c, columns.widths.get(j, 10), bold=True)
                  for j, c in enumerate(map(str, frame.columns))) if frame.shape[1] else 1

@@ -24,7 +24,7 @@ from slingloads.io.common.ownership import (
 )
 
 
-def _same_file(a, b):
+def same_file(a, b):
     """True if paths ``a`` and ``b`` name the same file: same resolved path, same file
     (hard or symbolic link), or same case-folded name in the same folder."""
     a, b = Path(a), Path(b)
@@ -62,7 +62,7 @@ def check_not_input(path, inputs):
         error names the input file.
     """
     for source in inputs:
-        if _same_file(path, source):
+        if same_file(path, source):
             raise InputError("refusing to write an output onto an input file (an input is "
                              "never overwritten); choose another output directory or stem",
                              str(path), file=str(source))
@@ -133,7 +133,7 @@ def check_replaceable(out_dir, clash_of):
     return manifest
 
 
-def _os_error(err, what, path):
+def os_error(err, what, path):
     """An OutputError from an OSError, with advice for the usual causes."""
     advice = {
         errno.EACCES: "permission denied: choose a folder you may write to",

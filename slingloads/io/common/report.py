@@ -3,6 +3,11 @@
 Values are SI inside slingloads; a report converts them to its unit system (``"SI"`` or
 ``"US"``, :data:`slingloads.io.common.units.REPORT_UNITS`) when it writes them, and labels
 every header and axis with the unit (``x [in]``, ``Vy [lbf]``, ``Mz [lbf in]``).
+
+What this module guarantees: a report value is converted from SI in one place, to a unit
+system the reports know (any other is refused, naming the valid ones); every converted
+column's header carries the unit it is now in; and an infinite value in the columns a
+report names is written as what it means (:func:`explain_infinite`), not as a bare ``inf``.
 """
 
 from __future__ import annotations

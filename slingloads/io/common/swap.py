@@ -1,9 +1,9 @@
 """The folder exchange under the publisher: locks, staging-folder names, the atomic exchange
 of two folders and the recovery of what killed runs left.
 
-Guarantees: :func:`_exchange` swaps two folders in one atomic step where the kernel allows
+Guarantees: :func:`exchange_folders` swaps two folders in one atomic step where the kernel allows
 (Linux ``renameat2(RENAME_EXCHANGE)``, macOS ``renamex_np(RENAME_SWAP)``), else by two
-renames whose interruption :func:`_recover` repairs (under the parent folder's lock, the
+renames whose interruption :func:`recover` repairs (under the parent folder's lock, the
 next run puts the complete new set, or else the old one, back in place and removes only the
 folders of dead runs: each live run holds a lock on its staging folder). Used by
 :mod:`slingloads.io.common.atomic`.
@@ -44,20 +44,21 @@ _STEPS = []
 _NAME_MAX = 255
 
 
-def _stage_prefix(real, kind):
+def stage_prefix(real, kind):
     """``.slingloads-<12 hex digits of the folder's name>.<kind>.``: short whatever the name."""
     tag = hashlib.sha256(os.fsencode(real.name)).hexdigest()[:12]
     return f"{TEMP_PREFIX}{tag}.{kind}."
 
 
-def _is_current_folder(real):
+def is_current_folder(real):
+    """True if ``real`` is the process's current folder (which cannot be exchanged)."""
     try:
         return os.path.samefile(real, os.getcwd())
     except (OSError, ValueError):  # no current folder, or the output folder is not there yet
         return False
 
 
-def _writable(folder):
+def is_writable(folder):
     """True if files may be created in ``folder``: permitted to this user, and not marked
     read-only by its mode (which is respected even by an administrator)."""
     try:
@@ -67,14 +68,16 @@ def _writable(folder):
     return os.access(folder, os.W_OK | os.X_OK) and bool(mode & 0o222)
 
 
-def _name_max(folder):
+def longest_name(folder):
+    """The longest file name ``folder``'s file system takes [characters] (255 where it
+    cannot be told)."""
     try:
         return int(os.pathconf(folder, "PC_NAME_MAX"))
     except (OSError, ValueError, AttributeError):
         return _NAME_MAX
 
 
-def _pause():
+def pause_if_asked():
     """Pause between publishing steps when asked (testing aid: see PAUSE_VARIABLE and
     STEP_VARIABLE)."""
     folder = os.environ.get(STEP_VARIABLE)
@@ -112,7 +115,7 @@ def _flock(folder, blocking):
 
 
 @contextmanager
-def _locked(folder):
+def publishing_lock(folder):
     """Hold an exclusive lock on ``folder`` (serialises the runs publishing beside it; where
     the folder cannot be locked, publishing goes on unserialised)."""
     fd, _ = _flock(folder, blocking=True)
@@ -123,7 +126,7 @@ def _locked(folder):
             os.close(fd)
 
 
-def _lock_folder(folder):
+def lock_folder(folder):
     """Open and lock a staging folder for the life of this run; the descriptor, or None."""
     return _flock(folder, blocking=False)[0]
 
@@ -136,7 +139,7 @@ def _owner_alive(folder):
     return fd is not None and not locked
 
 
-def _recover(parent, real):
+def recover(parent, real):
     """Repair what killed runs left beside the output folder ``real`` (under the lock).
 
     A ``.ready`` folder (a complete new set) or an ``.old`` folder (the previous set) found
@@ -144,7 +147,7 @@ def _recover(parent, real):
     fallback publishing: the new set is put in place (or else the old one back). Every other
     folder of dead runs is removed.
     """
-    prefix = _stage_prefix(real, "")[:-1]
+    prefix = stage_prefix(real, "")[:-1]
     try:
         leftovers = sorted(e.name for e in os.scandir(parent)
                            if e.name.startswith(prefix) and e.is_dir(follow_symlinks=False))
@@ -166,7 +169,7 @@ def _recover(parent, real):
         shutil.rmtree(path, ignore_errors=True)
 
 
-def _exchange(a, b):
+def exchange_folders(a, b):
     """Exchange two folders atomically, or by two renames where that is not possible."""
     if os.environ.get(SWAP_VARIABLE, "").lower() != "rename" and _atomic_exchange(a, b):
         return
@@ -179,7 +182,7 @@ def _exchange(a, b):
         os.rename(ready, a)  # back under the staging name, which the caller removes
         raise
     try:
-        _pause()
+        pause_if_asked()
         os.rename(ready, b)
     except BaseException:
         if not os.path.lexists(b):

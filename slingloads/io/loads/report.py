@@ -64,15 +64,14 @@ from slingloads.io.common.report import check_units
 from slingloads.io.common.report_writer import ReportKind, write_report
 from slingloads.io.loads.nastran import prepare_nastran
 from slingloads.io.loads.sheets import (
-    _workbook_sheets,
     dynamics_sections,
     nastran_sheet,
     sheets_columns,
+    workbook_sheets,
 )
 from slingloads.io.loads.tables import (
     DEFAULT_HULL_PAIRS,
     SFBM_CSV_COLUMNS,
-    _station_index,
     hull_table_stations,
     sfbm_table,
 )
@@ -242,7 +241,7 @@ def figure_jobs(result, units, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None
             component_index(name)
     stations = hull_table_stations(result, hull_stations)
     for station in stations:
-        _station_index(result, station)
+        result.station_index(station)
     jobs = {"stations": (plot_station_diagram, (result.study, units), {})}
     titles = {"stations": "Cut stations, mass items and hardpoints where the LIMIT loads enter "
                           "(side and top views)"}
@@ -252,7 +251,7 @@ def figure_jobs(result, units, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None
     for pair in hull_pairs:
         where = stations if hull_stations is not None else [_default_hull_station(result, pair)]
         for station in where:
-            index = _station_index(result, station)
+            index = result.station_index(station)
             tag = f"hull_{pair[0]}_{pair[1]}_{_safe(result.station_ids[index])}"
             jobs[tag] = (plot_hull, (result, index, pair, units), {})
             titles[tag] = f"{pair[0]}-{pair[1]} LIMIT envelope at {result.station_ids[index]}"
@@ -286,10 +285,10 @@ CSV_FILES = {"sfbm.csv": sfbm_csv, "envelope.csv": envelope_csv}
 
 def _sheets(result, units, warnings=(), *, hull_pairs=DEFAULT_HULL_PAIRS, hull_stations=None,
             findings=None, checks=None, dynamics=None, deck=None):
-    """The sheets of the loads workbook (:func:`_workbook_sheets`), with the *Nastran* sheet
+    """The sheets of the loads workbook (:func:`workbook_sheets`), with the *Nastran* sheet
     of ``deck`` and the *Dynamics* sheet of the campaign's hand-off ``dynamics`` when
     given; ``warnings`` on the Summary unless ``findings`` names its own."""
-    sheets = _workbook_sheets(result, units, hull_pairs,
+    sheets = workbook_sheets(result, units, hull_pairs,
                               hull_table_stations(result, hull_stations),
                               {"warnings": warnings, **(findings or {})}, checks)
     if deck is not None:

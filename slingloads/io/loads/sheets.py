@@ -27,8 +27,6 @@ from slingloads.io.common.units import unit_label
 from slingloads.io.loads.tables import (
     CASE_SOURCES,
     UNBOUNDED_RATIO,
-    _outside_text,
-    _unit,
     attitude_table,
     case_report_tables,
     closure_passes,
@@ -43,7 +41,9 @@ from slingloads.io.loads.tables import (
     hook_direction_table,
     hull_report_table,
     inputs_tables,
+    outside_text,
     previous_station_status,
+    report_unit_label,
     study_table,
     towed_note,
     towed_outside,
@@ -176,7 +176,7 @@ def nastran_sheet(deck):
 
 
 
-def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None):
+def workbook_sheets(result, units, hull_pairs, stations, findings, checks=None):
     """The sheets of the loads workbook, in order."""
     study = result.study
     verdict, evidence = hook_angle_finding(result, findings.get("lateral"),
@@ -188,7 +188,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
     hook_handoff = findings.get("hook angle handoff")
     notes = [verdict, *([hook_handoff.describe()] if hook_handoff is not None else []),
              "Evidence: " + evidence,
-             *(["FLAG: towed cables " + _outside_text(outside)] if outside else []),
+             *(["FLAG: towed cables " + outside_text(outside)] if outside else []),
              *[f"FLAG: {line}" for line in result.towed_findings()],
              *exceedance_findings(result, findings.get("previous envelope source", "")),
              closure_line]
@@ -229,7 +229,7 @@ def _workbook_sheets(result, units, hull_pairs, stations, findings, checks=None)
                      "sheets), in the report's units."),
         Section("Mass items (transport configuration)", tables["mass items"],
                 note=f"{len(tables['mass items'])} items, total {total:,.1f} "
-                     f"{_unit('mass', units)}."),
+                     f"{report_unit_label('mass', units)}."),
         Section("Cut stations", tables["stations"]),
         Section("Hardpoints (where external loads enter)", tables["hardpoints"],
                 note="Weight: share of the hub load taken by each mast foot in the "

@@ -19,7 +19,6 @@ from slingloads.analyses.envelopes import bound_values, component_index
 from slingloads.analyses.hook_loads import TOWED
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS, LOAD_COLUMNS
-from slingloads.errors import InputError
 from slingloads.io.common.formats import header_unit
 from slingloads.io.common.report import (
     check_units,
@@ -87,7 +86,9 @@ def _loads_spec(names=COMPONENTS):
 
 
 
-def _unit(kind, units):
+def report_unit_label(kind, units):
+    """The label of the report's unit of quantity ``kind`` in the ``units`` system
+    (``"SI"`` or ``"US"``), as the column headers print it."""
     return unit_label(report_unit(kind, units))
 
 
@@ -293,7 +294,7 @@ def hull_report_table(result, pair, stations, units="SI"):
     frames = []
     for station in stations:
         hull = result.hull(station, pair)
-        index = _station_index(result, station)
+        index = result.station_index(station)
         hull.insert(0, "vertex", np.arange(1, len(hull) + 1))
         hull.insert(0, "x_m", result.stations[index])
         hull.insert(0, "station", result.station_ids[index])
@@ -301,17 +302,6 @@ def hull_report_table(result, pair, stations, units="SI"):
     frame = pd.concat(frames, ignore_index=True)
     return convert_columns(frame, {"x_m": ("x", "length"), **_loads_spec(pair)}, units)
 
-
-
-def _station_index(result, station):
-    if isinstance(station, (int, np.integer)):
-        if not 0 <= int(station) < len(result.stations):
-            raise InputError("station index out of range", int(station))
-        return int(station)
-    ids = list(result.station_ids)
-    if str(station) not in ids:
-        raise InputError(f"unknown station; valid ids are {ids}", station)
-    return ids.index(str(station))
 
 
 
@@ -328,15 +318,15 @@ def study_table(result, units="SI"):
     rows = [
         ("study", study.name, ""),
         ("CSV files", "SI (m, N, N m), LIMIT loads", ""),
-        ("aircraft mass", conv(items.total_mass, "mass"), _unit("mass", units)),
-        ("CG x", conv(cg[0], "length"), _unit("length", units)),
-        ("CG y", conv(cg[1], "length"), _unit("length", units)),
-        ("CG z", conv(cg[2], "length"), _unit("length", units)),
+        ("aircraft mass", conv(items.total_mass, "mass"), report_unit_label("mass", units)),
+        ("CG x", conv(cg[0], "length"), report_unit_label("length", units)),
+        ("CG y", conv(cg[1], "length"), report_unit_label("length", units)),
+        ("CG z", conv(cg[2], "length"), report_unit_label("length", units)),
         ("equivalent airspeed KEAS", conv(study.flight.eas, "airspeed"),
-         _unit("airspeed", units)),
+         report_unit_label("airspeed", units)),
         ("density altitude", report_value(study.flight.density_altitude, "altitude", units),
-         _unit("altitude", units)),
-        ("air density", conv(study.flight.density, "density"), _unit("density", units)),
+         report_unit_label("altitude", units)),
+        ("air density", conv(study.flight.density, "density"), report_unit_label("density", units)),
         ("attitude (earth vertical in airframe axes)", result.attitude.describe(), ""),
         ("attitude pitch", float(np.degrees(result.attitude.pitch)), "deg"),
         ("attitude roll", float(np.degrees(result.attitude.roll)), "deg"),
@@ -405,7 +395,7 @@ def towed_outside(result):
 
 
 
-def _outside_text(outside):
+def outside_text(outside):
     """The finding on towed cables outside the hook cone ``outside`` (case ids)."""
     return (f"OUTSIDE THE HOOK CONE: {', '.join(outside)}: the cone does not cover the cable "
             "angle reached in towed flight; widen it or restrict the flight envelope.")
@@ -454,7 +444,7 @@ def towed_note(result):
             + (f" {findings}" if findings else ""))
     if not outside:
         return f"{rule} Every trimmed cable lies inside the hook cone."
-    return f"{rule} {_outside_text(outside)}"
+    return f"{rule} {outside_text(outside)}"
 
 
 
@@ -546,8 +536,8 @@ def inputs_tables(result, units="SI"):
         labelled("z", "length", units): length(points[:, 2]),
         "weight [-]": [r[3] for r in rows]})
     axis = pd.DataFrame([
-        ("loads reference axis y0", float(length(y0)), _unit("length", units)),
-        ("loads reference axis z0", float(length(z0)), _unit("length", units)),
+        ("loads reference axis y0", float(length(y0)), report_unit_label("length", units)),
+        ("loads reference axis z0", float(length(z0)), report_unit_label("length", units)),
         ("mast axis (unit vector) x", float(hp.mast_axis[0]), "-"),
         ("mast axis (unit vector) y", float(hp.mast_axis[1]), "-"),
         ("mast axis (unit vector) z", float(hp.mast_axis[2]), "-"),

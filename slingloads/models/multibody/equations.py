@@ -59,6 +59,13 @@ from slingloads.models.packed import BODY, EARTH, TENSOR, Field, Layout
 STATES = ("Vc_X", "Vc_Y", "Vc_Z", "p_X", "p_Y", "p_Z", "v_X", "v_Y", "v_Z",
           "q0", "q1", "q2", "q3", "p", "q", "r", "theta", "psi", "theta_dot", "psi_dot")
 N_STATES = len(STATES)
+#: Offsets of the state's parts in :data:`STATES` (the kernels index ``x[X_QUAT + 1]``, never
+#: a literal): carrier velocity, CG relative to the hook, CG velocity, attitude quaternion,
+#: body rates, parachute hinge angles and their rates.
+X_VC, X_REL, X_VEL = STATES.index("Vc_X"), STATES.index("p_X"), STATES.index("v_X")
+X_QUAT, X_RATE = STATES.index("q0"), STATES.index("p")
+X_THETA, X_PSI = STATES.index("theta"), STATES.index("psi")
+X_THETA_DOT, X_PSI_DOT = STATES.index("theta_dot"), STATES.index("psi_dot")
 
 #: The parameter vector of a run, one table (:mod:`slingloads.models.packed`): positions are
 #: from the CG in body axes; the packer (:class:`~slingloads.models.multibody.system.SlingSystem`)
@@ -142,6 +149,8 @@ FUSELAGE_FORCE_FRAME = LAYOUT["fuselage_force_frame"]
 FUSELAGE_MOMENT_FRAME = LAYOUT["fuselage_moment_frame"]
 DRIVE = ("wind_X", "wind_Y", "wind_Z", "accel_X", "accel_Y", "accel_Z", "cmd_X", "cmd_Y",
          "cmd_Z")
+#: Offsets of the drive's parts in :data:`DRIVE`: wind, commanded acceleration and velocity.
+D_WIND, D_ACCEL, D_CMD = DRIVE.index("wind_X"), DRIVE.index("accel_X"), DRIVE.index("cmd_X")
 
 #: Parachute models (``chute_mode``).
 CHUTE_NONE, CHUTE_HINGED, CHUTE_QUASI_STATIC = 0.0, 1.0, 2.0
@@ -152,6 +161,16 @@ INFO = ("tension", "cable_span", "d_X", "d_Y", "d_Z", "hub_x", "hub_y", "hub_z",
         "line_x", "line_y", "line_z", "thrust_X", "thrust_Y", "thrust_Z", "fus_fx", "fus_fy",
         "fus_fz", "fus_mx", "fus_my", "fus_mz", "chute_drag", "fin_force", "tail_force")
 N_INFO = len(INFO)
+#: Offsets of the reported quantities in :data:`INFO` (a vector's first component).
+INFO_TENSION, INFO_CABLE_SPAN, INFO_D = (INFO.index(n) for n in ("tension", "cable_span", "d_X"))
+INFO_HUB, INFO_ALPHA, INFO_BETA = (INFO.index(n) for n in ("hub_x", "alpha", "beta"))
+INFO_AIRSPEED, INFO_FIN_ANGLE, INFO_TAIL_ANGLE = (
+    INFO.index(n) for n in ("airspeed", "fin_angle", "tail_angle"))
+INFO_LINE_TENSION, INFO_CHUTE_ALPHA, INFO_LINE = (
+    INFO.index(n) for n in ("line_tension", "chute_alpha", "line_x"))
+INFO_THRUST, INFO_FUS_F, INFO_FUS_M = (INFO.index(n) for n in ("thrust_X", "fus_fx", "fus_mx"))
+INFO_CHUTE_DRAG, INFO_FIN_FORCE, INFO_TAIL_FORCE = (
+    INFO.index(n) for n in ("chute_drag", "fin_force", "tail_force"))
 
 #: Bits of the flag :func:`evaluate` returns: the table or limit a run left.
 FLAGS = {1: "fuselage table's alpha range", 32: "fuselage table's beta range",
@@ -215,12 +234,13 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
         The flag of :data:`FLAGS` (0 when every table was inside its range).
     """
     flag = 0
-    vc0, vc1, vc2 = x[0], x[1], x[2]
-    p0, p1, p2 = x[3], x[4], x[5]
-    v0, v1, v2 = x[6], x[7], x[8]
-    qn = math.sqrt(x[9] * x[9] + x[10] * x[10] + x[11] * x[11] + x[12] * x[12])
-    q0, q1, q2, q3 = x[9] / qn, x[10] / qn, x[11] / qn, x[12] / qn
-    wp, wq, wr = x[13], x[14], x[15]
+    vc0, vc1, vc2 = x[X_VC], x[X_VC + 1], x[X_VC + 2]
+    p0, p1, p2 = x[X_REL], x[X_REL + 1], x[X_REL + 2]
+    v0, v1, v2 = x[X_VEL], x[X_VEL + 1], x[X_VEL + 2]
+    q0, q1, q2, q3 = x[X_QUAT], x[X_QUAT + 1], x[X_QUAT + 2], x[X_QUAT + 3]
+    qn = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+    q0, q1, q2, q3 = q0 / qn, q1 / qn, q2 / qn, q3 / qn
+    wp, wq, wr = x[X_RATE], x[X_RATE + 1], x[X_RATE + 2]
     R = dcm(q0, q1, q2, q3)
     mass = P[MASS]
     half_rho = 0.5 * P[DENSITY]
@@ -228,7 +248,7 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     v_cut = P[V_CUT]
 
     # air velocity relative to the CG, body axes
-    ub = to_body(R, drive[0] - v0, drive[1] - v1, drive[2] - v2)
+    ub = to_body(R, drive[D_WIND] - v0, drive[D_WIND + 1] - v1, drive[D_WIND + 2] - v2)
     fx, fy, fz = 0.0, 0.0, 0.0
     mx, my, mz = 0.0, 0.0, 0.0
 
@@ -341,7 +361,7 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     wdx, wdy, wdz = w0[0], w0[1], w0[2]
     if mode == CHUTE_HINGED:
         mp, lp = P[CHUTE_MASS], P[CHUTE_LINE]
-        th, ps, thd, psd = x[16], x[17], x[18], x[19]
+        th, ps, thd, psd = x[X_THETA], x[X_PSI], x[X_THETA_DOT], x[X_PSI_DOT]
         e, et, ep = line_direction(th, ps)
         if abs(math.cos(ps)) < _HINGE_COS:
             flag |= 16
@@ -399,44 +419,55 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     pull0, pull1, pull2 = tension * d0 / span, tension * d1 / span, tension * d2 / span
     if P[CARRIER_FREE] > 0.0:
         mc, kv = P[CARRIER_MASS], P[CARRIER_GAIN]
-        dx[0] = drive[3] + kv * (drive[6] - vc0) + (pull0 - P[PULL]) / mc
-        dx[1] = drive[4] + kv * (drive[7] - vc1) + (pull1 - P[PULL + 1]) / mc
-        dx[2] = drive[5] + kv * (drive[8] - vc2) + (pull2 - P[PULL + 2]) / mc
+        dx[X_VC] = drive[D_ACCEL] + kv * (drive[D_CMD] - vc0) + (pull0 - P[PULL]) / mc
+        dx[X_VC + 1] = (drive[D_ACCEL + 1] + kv * (drive[D_CMD + 1] - vc1)
+                        + (pull1 - P[PULL + 1]) / mc)
+        dx[X_VC + 2] = (drive[D_ACCEL + 2] + kv * (drive[D_CMD + 2] - vc2)
+                        + (pull2 - P[PULL + 2]) / mc)
     else:
-        dx[0], dx[1], dx[2] = drive[3], drive[4], drive[5]
-    dx[3], dx[4], dx[5] = v0 - vc0, v1 - vc1, v2 - vc2
+        dx[X_VC], dx[X_VC + 1], dx[X_VC + 2] = (drive[D_ACCEL], drive[D_ACCEL + 1],
+                                                drive[D_ACCEL + 2])
+    dx[X_REL], dx[X_REL + 1], dx[X_REL + 2] = v0 - vc0, v1 - vc1, v2 - vc2
     ae = to_earth(R, abx, aby, abz)
-    dx[6], dx[7], dx[8] = ae[0], ae[1], ae[2]
+    dx[X_VEL], dx[X_VEL + 1], dx[X_VEL + 2] = ae[0], ae[1], ae[2]
     dq = quaternion_rate(q0, q1, q2, q3, wp, wq, wr)
-    dx[9], dx[10], dx[11], dx[12] = dq[0], dq[1], dq[2], dq[3]
-    dx[13], dx[14], dx[15] = wdx, wdy, wdz
+    for c in range(4):
+        dx[X_QUAT + c] = dq[c]
+    dx[X_RATE], dx[X_RATE + 1], dx[X_RATE + 2] = wdx, wdy, wdz
     if mode == CHUTE_HINGED:
-        dx[16], dx[17], dx[18], dx[19] = x[18], x[19], thdd, psdd
+        dx[X_THETA], dx[X_PSI] = x[X_THETA_DOT], x[X_PSI_DOT]
+        dx[X_THETA_DOT], dx[X_PSI_DOT] = thdd, psdd
     else:
-        dx[16], dx[17], dx[18], dx[19] = 0.0, 0.0, 0.0, 0.0
+        dx[X_THETA], dx[X_PSI], dx[X_THETA_DOT], dx[X_PSI_DOT] = 0.0, 0.0, 0.0, 0.0
 
     if want:
-        info[0] = tension
-        info[1] = span
-        info[2], info[3], info[4] = d0, d1, d2
-        info[5], info[6], info[7] = cb[0], cb[1], cb[2]
-        info[8], info[9], info[10] = alpha, beta, speed_ref
-        info[11], info[12] = fin_angle, tail_angle
-        info[13], info[14] = line_tension, chute_alpha
-        info[15], info[16], info[17] = lx, ly, lz
+        info[INFO_TENSION] = tension
+        info[INFO_CABLE_SPAN] = span
+        info[INFO_D], info[INFO_D + 1], info[INFO_D + 2] = d0, d1, d2
+        info[INFO_HUB], info[INFO_HUB + 1], info[INFO_HUB + 2] = cb[0], cb[1], cb[2]
+        info[INFO_ALPHA], info[INFO_BETA], info[INFO_AIRSPEED] = alpha, beta, speed_ref
+        info[INFO_FIN_ANGLE], info[INFO_TAIL_ANGLE] = fin_angle, tail_angle
+        info[INFO_LINE_TENSION], info[INFO_CHUTE_ALPHA] = line_tension, chute_alpha
+        info[INFO_LINE], info[INFO_LINE + 1], info[INFO_LINE + 2] = lx, ly, lz
         if P[CARRIER_FREE] > 0.0:
             mc, kv = P[CARRIER_MASS], P[CARRIER_GAIN]
-            uc0, uc1, uc2 = drive[0] - vc0, drive[1] - vc1, drive[2] - vc2
+            uc0 = drive[D_WIND] - vc0
+            uc1 = drive[D_WIND + 1] - vc1
+            uc2 = drive[D_WIND + 2] - vc2
             kd = (half_rho * P[CARRIER_DRAG_AREA]
                   * math.sqrt(uc0 * uc0 + uc1 * uc1 + uc2 * uc2))
-            info[18] = mc * (drive[3] + kv * (drive[6] - vc0)) - kd * uc0 - P[PULL]
-            info[19] = mc * (drive[4] + kv * (drive[7] - vc1)) - kd * uc1 - P[PULL + 1]
-            info[20] = mc * (drive[5] + kv * (drive[8] - vc2)) - kd * uc2 - P[PULL + 2] + mc * grav
+            info[INFO_THRUST] = (mc * (drive[D_ACCEL] + kv * (drive[D_CMD] - vc0)) - kd * uc0
+                                 - P[PULL])
+            info[INFO_THRUST + 1] = (mc * (drive[D_ACCEL + 1] + kv * (drive[D_CMD + 1] - vc1))
+                                     - kd * uc1 - P[PULL + 1])
+            info[INFO_THRUST + 2] = (mc * (drive[D_ACCEL + 2] + kv * (drive[D_CMD + 2] - vc2))
+                                     - kd * uc2 - P[PULL + 2] + mc * grav)
         else:
-            info[18], info[19], info[20] = np.nan, np.nan, np.nan
-        info[21], info[22], info[23] = ffx, ffy, ffz
-        info[24], info[25], info[26] = fmx, fmy, fmz
-        info[27] = chute_drag
-        info[28], info[29] = fin_force, tail_force
+            for c in range(3):
+                info[INFO_THRUST + c] = np.nan
+        info[INFO_FUS_F], info[INFO_FUS_F + 1], info[INFO_FUS_F + 2] = ffx, ffy, ffz
+        info[INFO_FUS_M], info[INFO_FUS_M + 1], info[INFO_FUS_M + 2] = fmx, fmy, fmz
+        info[INFO_CHUTE_DRAG] = chute_drag
+        info[INFO_FIN_FORCE], info[INFO_TAIL_FORCE] = fin_force, tail_force
     return flag
 

@@ -50,7 +50,13 @@ import numpy as np
 
 from slingloads.models.dormand_prince import LEFT, SAMPLE, integrator
 from slingloads.models.multibody._jit import jit, jit_alloc, jit_inline
-from slingloads.models.multibody.equations import CARRIER_FREE, N_INFO, N_STATES, evaluate
+from slingloads.models.multibody.equations import (
+    CARRIER_FREE,
+    N_INFO,
+    N_STATES,
+    X_QUAT,
+    evaluate,
+)
 from slingloads.models.multibody.response import (
     N_HISTORY,
     N_MEASURES,
@@ -112,9 +118,11 @@ def _drive_at(t, row, s, seg_a, seg_h, seg_n, seg_off, vals, vary, bend, out):
 
 @jit_inline
 def _renormalise(x):
-    """The quaternion of state ``x`` (elements 9 to 12) scaled to unit length, in place."""
-    qn = math.sqrt(x[9] * x[9] + x[10] * x[10] + x[11] * x[11] + x[12] * x[12])
-    for m in range(9, 13):
+    """The quaternion of state ``x`` (its four elements from ``X_QUAT``) scaled to unit
+    length, in place."""
+    q0, q1, q2, q3 = x[X_QUAT], x[X_QUAT + 1], x[X_QUAT + 2], x[X_QUAT + 3]
+    qn = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+    for m in range(X_QUAT, X_QUAT + 4):
         x[m] /= qn
 
 
@@ -527,14 +535,35 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
 
 
 @jit_alloc
-def _evaluate_states(states, P, drives, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
+def evaluate_states(states, P, drives, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v,
                      cd_g, cd_v, want, rates, info, flags):
     """The equations (:func:`~slingloads.models.multibody.equations.evaluate`) at each row of
     ``states`` (n, N) with parameters ``P`` (n, NP) and drive ``drives`` (n, 9): the
     derivatives into ``rates`` (n, N), the reported quantities into ``info`` (n, N_INFO), the
     flags into ``flags`` (n,). The equations as the integration loop calls them (``want`` a
     run-time bool, so that one compiled ``evaluate`` serves both), without the loop: a trim
-    or a linearisation compiles the equations alone."""
+    or a linearisation compiles the equations alone.
+
+    Parameters
+    ----------
+    states : ndarray, shape (n, N)
+        One state a row, in the layout of :mod:`slingloads.models.multibody.equations`.
+        [m, rad, m/s, rad/s]
+    P : ndarray, shape (n, NP)
+        The packed parameters of each row (:mod:`slingloads.models.multibody.layout`). [SI]
+    drives : ndarray, shape (n, 9)
+        The carrier's drive of each row, as ``evaluate`` takes it. [SI]
+    fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_g, cd_v : ndarray
+        The aerodynamic tables of :mod:`slingloads.models.multibody.lookup`. [-]
+    want : bool
+        Whether the reported quantities are computed.
+    rates : ndarray, shape (n, N)
+        Out: the derivatives of the states. [state units / s]
+    info : ndarray, shape (n, N_INFO)
+        Out: the reported quantities. [SI]
+    flags : ndarray, shape (n,)
+        Out: the flags ``evaluate`` returns for each row. [-]
+    """
     n = states.shape[1]
     y = np.empty(n)
     d = np.empty(9)
@@ -578,5 +607,5 @@ def evaluate_many(states, P, drives, tables):
     rates = np.empty((n, N_STATES))
     info = np.empty((n, N_INFO))
     flags = np.zeros(n, dtype=np.int64)
-    _evaluate_states(states, P, drives, *tables, True, rates, info, flags)
+    evaluate_states(states, P, drives, *tables, True, rates, info, flags)
     return rates, info, flags
