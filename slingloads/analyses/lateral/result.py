@@ -14,6 +14,7 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 import pandas as pd
@@ -159,10 +160,15 @@ class LateralStudy:
         list of str
             One note per case (:func:`flyable`).
         """
+        return list(self._flyable_notes)
+
+    @cached_property
+    def _flyable_notes(self):
+        """The notes of :meth:`flyable_notes`, judged once per study (each motion once)."""
         if self.limits is None:
-            return [""] * len(self.motions)
+            return ("",) * len(self.motions)
         seen = {}
-        return [seen.setdefault(id(m), flyable(m, self.limits)) for m in self.motions]
+        return tuple(seen.setdefault(id(m), flyable(m, self.limits)) for m in self.motions)
 
     @property
     def flyable(self):
