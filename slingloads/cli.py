@@ -83,8 +83,9 @@ def _parser():
         p.add_argument("--out", metavar="DIR", default="reports",
                        help="output folder (default: reports); the reports are published in "
                             "it all at once, replacing the earlier reports of this input")
-        p.add_argument("--units", choices=("SI", "US"), default="SI",
-                       help="units of the Excel report (CSV files are always SI)")
+        p.add_argument("--units", choices=("SI", "US"), default="SI", type=_unit_system,
+                       help="units of the Excel report, SI or US (case ignored; CSV files "
+                            "are always SI)")
         p.add_argument("--quiet", action="store_true", help="no progress bar")
         _debug_option(p)
         if name in ("run", "loads"):
@@ -94,6 +95,11 @@ def _parser():
         if name in ("run", "campaign"):
             _campaign_options(p)
     return parser
+
+
+def _unit_system(text):
+    """``--units``: SI or US, case and surrounding blanks ignored (``us`` is ``US``)."""
+    return str(text).strip().upper()
 
 
 def _campaign_options(p):

@@ -116,16 +116,25 @@ def test_every_command_has_help(command, capsys):
 
 def test_us_report(tmp_path):
     """--units US writes the report in in / lbf / lbf in: the envelope's Vy column equals the
-    SI value of the envelope CSV / 4.4482216152605, its x the CSV's x_m / 0.0254."""
+    SI value of the envelope CSV / 4.4482216152605, its x the CSV's x_m / 0.0254. The unit
+    system's name is read with its case ignored (``us``)."""
     src = tmp_path / "ex.xlsx"
     shutil.copy(EXAMPLE, src)
-    assert main(["loads", str(src), "--out", str(tmp_path), "--units", "US", "--quiet"]) == 0
+    assert main(["loads", str(src), "--out", str(tmp_path), "--units", "us", "--quiet"]) == 0
     sheet = _section_table(tmp_path / "ex-loads.xlsx", "Correlated")
     csv = pd.read_csv(tmp_path / "ex-envelope.csv")
     assert "Vy [lbf]" in sheet.columns and "x [in]" in sheet.columns
     np.testing.assert_allclose(sheet["Vy [lbf]"].to_numpy(float), csv["Vy_N"] / 4.4482216152605,
                                rtol=1e-9, atol=1e-6)
     np.testing.assert_allclose(sheet["x [in]"].to_numpy(float), csv["x_m"] / 0.0254, rtol=1e-12)
+
+
+def test_an_unknown_unit_system_is_refused(tmp_path, capsys):
+    """``--units metric``: a usage error (exit 2) naming the two systems, nothing written."""
+    with pytest.raises(SystemExit) as info:
+        main(["loads", str(EXAMPLE), "--out", str(tmp_path / "out"), "--units", "metric"])
+    assert info.value.code == 2
+    assert "'metric'" in capsys.readouterr().err and not (tmp_path / "out").exists()
 
 
 def test_hostile_text_from_the_workbook_stays_text(tmp_path):
