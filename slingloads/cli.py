@@ -83,7 +83,7 @@ def _parser():
         p.add_argument("--out", metavar="DIR", default="reports",
                        help="output folder (default: reports); the reports are published in "
                             "it all at once, replacing the earlier reports of this input")
-        p.add_argument("--units", choices=("SI", "US"), default="SI", type=_unit_system,
+        p.add_argument("--units", metavar="{SI,US}", default="SI", type=_unit_system,
                        help="units of the Excel report, SI or US (case ignored; CSV files "
                             "are always SI)")
         p.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -99,7 +99,10 @@ def _parser():
 
 def _unit_system(text):
     """``--units``: SI or US, case and surrounding blanks ignored (``us`` is ``US``)."""
-    return str(text).strip().upper()
+    system = str(text).strip().upper()
+    if system not in ("SI", "US"):
+        raise argparse.ArgumentTypeError(f"the unit system is SI or US: value {text!r}")
+    return system
 
 
 def _campaign_options(p):
