@@ -202,6 +202,9 @@ def dynamics(tmp_path_factory):
     (["--workers", str(10**12)], 2, f"[1, {MAX_WORKERS}]"),
     (["--scheduler", "not an address!"], 2, "not a scheduler address"),
     (["--scheduler", "tcp://host:99999"], 2, "port must be in [1, 65535]"),
+    # ws/ucx: distributed would read the first answer with no bound on memory
+    (["--scheduler", "ws://host:8786"], 2, "over tcp:// or tls:// only"),
+    (["--scheduler", "UCX://host:8786"], 2, "over tcp:// or tls:// only"),
     (["--scheduler-timeout", "nan"], 2, "--scheduler-timeout must be in (0, 600]"),
     (["--cache", "{out}"], 2, "outside the output folder"),
 ])

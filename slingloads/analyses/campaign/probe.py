@@ -21,7 +21,9 @@ Bounds: every step (name resolution, connection, each write and read) within wha
 :data:`MAX_PROBE_MESSAGE` is refused before a byte of it is read, and what is read grows
 with what arrives (never the announced size). Only ``tcp://`` (the default protocol) and
 ``tls://`` (the same framing inside TLS, with the client's Dask security settings) are spoken
-here; ws, wss and ucx addresses go to ``distributed``'s own connection under the same deadline.
+here, and the only protocols a scheduler address may name
+(:func:`slingloads.io.campaign.reader.address_rule` refuses ws, wss, ucx and inproc, whose
+first exchange would go to ``distributed``'s own reader, bounded in time but not in memory).
 
 Past this exchange the scheduler is trusted, as ``distributed`` trusts it (its messages may
 hold pickled objects): a server that answers the identity request as a Dask scheduler is

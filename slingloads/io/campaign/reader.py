@@ -62,7 +62,7 @@ _SPEC = {s.name: s for s in SHEETS}
 
 
 #: A Dask scheduler address: ``[protocol://]host[:port]``.
-_ADDRESS = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?(?:[A-Za-z0-9](?:[A-Za-z0-9.-]{0,252})"
+_ADDRESS = re.compile(r"^(?:(?:tcp|tls)://)?(?:[A-Za-z0-9](?:[A-Za-z0-9.-]{0,252})"
                       r"|\[[0-9A-Fa-f:.]{2,45}\])(?::(?P<port>[0-9]{1,5}))?$")
 
 
@@ -70,8 +70,13 @@ def address_rule(address):
     """The rule a scheduler address breaks, or None if it is well formed."""
     match = _ADDRESS.match(address)
     if match is None:
+        if re.match(r"^(?:ws|wss|ucx|inproc)://", address, re.I):
+            return ("a scheduler on the ws, wss, ucx or inproc protocol is not supported: "
+                    "slingloads reads the scheduler's first answer itself, in bounded time "
+                    "and memory, over tcp:// or tls:// only (start the scheduler with "
+                    "--protocol tcp)")
         return ("not a scheduler address; write [protocol://]host[:port], e.g. "
-                "tcp://10.0.0.5:8786 (protocols tcp, tls, ws, wss, ucx)")
+                "tcp://10.0.0.5:8786 (protocols tcp, tls)")
     port = match.group("port")
     if port is not None and not 1 <= int(port) <= 65535:
         return "the scheduler's port must be in [1, 65535]"
