@@ -41,7 +41,7 @@ def history_metrics(t, beta, psi, rate, trim, onset, free, settle_fraction, peak
     peak_threshold : float
         Smallest yaw-rate peak counted. [rad/s]
     out : ndarray, shape (runs, 8)
-        Receives the metrics.
+        Receives the metrics. [rad, rad/s, s: see above]
     """
     runs, n = beta.shape
     for j in range(runs):

@@ -220,14 +220,14 @@ def local_slope(angle, values, what="aerodynamic"):
     angle : array_like, shape (n,)
         Sideslip breakpoints. [rad]
     values : array_like, shape (n,)
-        Table values (units of the table).
+        Table values. [unit of the table]
     what : str
         Name of the table, for the message.
 
     Returns
     -------
     float
-        Units of the table per rad.
+        Slope. [unit of the table / rad]
     """
     angle = np.asarray(angle, dtype=float)
     below, above = angle[angle < -1e-12], angle[angle > 1e-12]
@@ -819,7 +819,7 @@ class YawRuns:
         Parameters
         ----------
         runs : sequence of int, optional
-            Run indices (default all).
+            Run indices (default all). [-]
 
         Returns
         -------

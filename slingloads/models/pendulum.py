@@ -204,6 +204,8 @@ class LateralPendulum:
         Returns
         -------
         ndarray, shape (4,) or (6,)
+            State: theta1, theta2 [rad] and their rates [rad/s] (rigid rope), or ry, rz [m], theta2
+            [rad] and their rates [m/s, m/s, rad/s] (elastic cable).
         """
         if self.rigid:
             return np.array([0.0, 0.0, -velocity_jump / self.rope_length, 0.0])
@@ -375,7 +377,7 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
     Returns
     -------
     dx : ndarray, shape (4, ...)
-        State derivative.
+        State derivative. [rad/s, rad/s, rad/s^2, rad/s^2]
     tension : ndarray
         Rope tension T, negative where the rope would go slack. [N]
     """
@@ -464,6 +466,7 @@ def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffne
     Returns
     -------
     dx : ndarray, shape (6, ...)
+        State derivative. [m/s, m/s, rad/s, m/s^2, m/s^2, rad/s^2]
     tension : ndarray
         Cable tension, >= 0. [N]
     """

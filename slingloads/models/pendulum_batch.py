@@ -74,7 +74,7 @@ def rigid_rope(x, s_vel, s_acc, p, dx):
     s_vel, s_acc : float
         Hook's lateral velocity [m/s] and acceleration [m/s^2].
     p : ndarray, shape (9,)
-        Parameter row (:data:`LAYOUT`).
+        Parameter row (:data:`LAYOUT`). [SI]
     dx : ndarray, shape (4,)
         Receives the state derivative. [state units / s]
 
@@ -100,7 +100,7 @@ def elastic_cable(x, s_vel, s_acc, p, dx):
     s_vel, s_acc : float
         Hook's lateral velocity [m/s] and acceleration [m/s^2].
     p : ndarray, shape (9,)
-        Parameter row (:data:`LAYOUT`).
+        Parameter row (:data:`LAYOUT`). [SI]
     dx : ndarray, shape (6,)
         Receives the state derivative. [state units / s]
 
@@ -166,10 +166,14 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
     ----------
     rigid : bool
     x0 : ndarray, shape (runs, states)
+        Initial states, as :func:`rigid_rope` or :func:`elastic_cable` takes them.
+        [rad, rad/s] or [m, rad, m/s, rad/s]
     P : ndarray, shape (runs, 9)
+        Parameter rows (:data:`LAYOUT`). [SI]
     drive : ndarray, shape (motions, nodes, 3, 2)
+        Hook velocity [m/s] and acceleration [m/s^2] at each step (module notes).
     profile : ndarray of int, shape (runs,)
-        Each run's row of ``drive``.
+        Each run's row of ``drive``. [-]
     nodes : ndarray, shape (nodes,)
         The time grid. [s]
     jumps : ndarray of bool, shape (nodes,)

@@ -64,20 +64,20 @@ def interp(x, xp, fp, slope, lo):
     Parameters
     ----------
     x : float
-        Where to interpolate (units of ``xp``).
+        Where to interpolate. [unit of ``xp``]
     xp, fp : ndarray, shape (n,)
-        Breakpoints (increasing) and values.
+        Breakpoints (increasing) and values. [any unit]
     slope : ndarray, shape (n - 1,)
-        Slopes of the segments (units of ``fp`` per unit of ``xp``).
+        Slopes of the segments. [unit of ``fp`` / unit of ``xp``]
     lo : int
-        Interval found last.
+        Interval found last. [-]
 
     Returns
     -------
     value : float
-        Units of ``fp``.
+        Interpolated value. [unit of ``fp``]
     lo : int
-        Interval used.
+        Interval used. [-]
     """
     n = xp.size
     if x != x:
@@ -123,11 +123,12 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_
     area : float
         Parachute flat-plate area. [m^2]
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`). [SI]
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
+        [rad], [m^3], [m^3/rad], [rad], [m^2], [m^2/rad]
     lo : ndarray of int64, shape (2,)
-        Fuselage and fin table intervals found last, updated.
+        Fuselage and fin table intervals found last, updated. [-]
 
     Returns
     -------
@@ -169,7 +170,7 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fu
     areas : ndarray, shape (runs,)
         Parachute flat-plate areas. [m^2]
     index : ndarray of int, shape (runs,)
-        Each run's distinct gust.
+        Each run's distinct gust. [-]
     wind : ndarray, shape (gusts, steps, 3, 2)
         Wind angle gamma [rad] and relative speed [m/s] of each distinct gust at the start,
         middle and end of every step.
@@ -178,14 +179,15 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fu
     stored : ndarray of bool, shape (steps + 1,)
         True at the output nodes.
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`). [SI]
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
+        [rad], [m^3], [m^3/rad], [rad], [m^2], [m^2/rad]
     out_psi, out_rate : ndarray, shape (runs, outputs)
         Receive the histories. [rad], [rad/s]
     left, exit_step : ndarray, shape (runs,)
         Receive whether and in which step a run left a table (its state is then frozen at
-        the start of that step, its rate set to zero).
+        the start of that step, its rate set to zero). [-]
     """
     runs = psi0.size
     n_steps = step.size
@@ -233,7 +235,7 @@ def gust_value(t, start, c0, c1, ref, first, count, harm):
     ref : float
         Time origin of the harmonic terms. [s]
     first, count : int
-        Rows of ``harm`` of the piece's harmonic terms.
+        Rows of ``harm`` of the piece's harmonic terms. [-], [count]
     harm : ndarray, shape (terms, 3)
         Amplitude [m/s], omega [rad/s], phase [rad].
 
@@ -362,19 +364,19 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     areas : ndarray, shape (runs,)
         Parachute flat-plate areas. [m^2]
     index : ndarray of int, shape (runs,)
-        Each run's distinct gust.
+        Each run's distinct gust. [-]
     seg_end : ndarray, shape (gusts, segments)
         Ends of the segments. [s]
     seg_piece : ndarray of int, shape (gusts, segments)
-        Piece of each segment.
+        Piece of each segment. [-]
     n_seg : ndarray of int, shape (gusts,)
-        Segments of each gust.
+        Segments of each gust. [count]
     p_start : ndarray, shape (gusts, pieces)
         Start of each piece. [s]
     p_coef : ndarray, shape (gusts, pieces, 3)
         c0 [m/s], c1 [m/s^2], ref [s] of each piece (:func:`gust_value`).
     h_off, h_count : ndarray of int, shape (gusts, pieces)
-        First row and number of the piece's harmonic terms in ``harm``.
+        First row and number of the piece's harmonic terms in ``harm``. [-], [count]
     harm : ndarray, shape (terms, 3)
         Amplitude [m/s], omega [rad/s], phase [rad] of the harmonic terms.
     interval : float
@@ -384,19 +386,20 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     max_step, first_step : float
         Largest step and first trial step. [s]
     max_steps : int
-        Steps a run may try.
+        Steps a run may try. [count]
     stop : ndarray of int64, shape (1,)
-        0 on entry; set to 1 when a run runs over ``max_steps``.
+        0 on entry; set to 1 when a run runs over ``max_steps``. [-]
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`). [SI]
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
+        [rad], [m^3], [m^3/rad], [rad], [m^2], [m^2/rad]
     out_psi, out_rate : ndarray, shape (runs, outputs)
         Receive the histories. [rad], [rad/s]
     left, exit_time : ndarray, shape (runs,)
         Receive whether and when [s] a run left a table.
     steps : ndarray of int, shape (runs,)
-        Receive the accepted steps of each run.
+        Receive the accepted steps of each run. [count]
     """
     # runs spread over the chunks (run j in chunk j mod CHUNKS): the chunks, shared out in
     # order among the threads, then carry like mixes of cheap and costly runs

@@ -135,7 +135,7 @@ class DynamicsEnvelope:
         -------
         (float, float)
             Lower and upper bound (lower None for a quantity with a maximum only): degrees
-            for angles, N for the line tension, - for tension / weight.
+            for angles, N for the line tension, - for tension / weight. [deg], [N] or [-]
         """
         kind = {q[0]: q[3] for q in QUANTITIES}[quantity]
         lo, hi = self.reached[quantity]

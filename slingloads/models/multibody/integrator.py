@@ -213,21 +213,22 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
     x0 : ndarray, shape (runs, N)
         Initial states. [SI]
     P : ndarray, shape (runs, NP)
-        Parameter vectors (:data:`~slingloads.models.multibody.equations.LAYOUT`).
+        Parameter vectors (:data:`~slingloads.models.multibody.equations.LAYOUT`). [SI]
     seg_a, seg_b, seg_h : ndarray, shape (profiles, S)
         Start, end and table step of each segment. [s]
     seg_n, seg_off : ndarray of int, shape (profiles, S)
-        Intervals and first row of each segment's table.
+        Intervals and first row of each segment's table. [count], [-]
     n_seg : ndarray of int, shape (profiles,)
-        Segments of each profile.
+        Segments of each profile. [count]
     vals : ndarray, shape (profiles, K, 9)
         Drive tables (wind [m/s], commanded acceleration [m/s^2] and velocity [m/s]).
     vary, bend : ndarray, shape (profiles, S, 9)
         Channels that vary over a segment; the rounding term of the others.
+        [-], [units of :data:`~slingloads.models.multibody.equations.DRIVE`]
     nodes : ndarray, shape (profiles, n_out, 9)
-        The drive at the samples.
+        The drive at the samples. [m/s, m/s^2, m/s]
     profile : ndarray of int, shape (runs,)
-        Drive profile of each run.
+        Drive profile of each run. [-]
     interval : float
         Sampling interval. [s]
     fixed : float
@@ -243,14 +244,15 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
         Evaluate the reported quantities at the samples.
     out, info, rates : ndarray
         Receive the states, reported quantities and derivatives at the samples (see above).
+        [SI, rad]
     flags, stop_time : ndarray, shape (runs,)
         Receive the flag and the time [s] of a run that stopped.
     time : ndarray, shape (n_out,)
         Sample times. [s]
     measured : ndarray, shape (runs, 9)
-        What the measures need (see above).
+        What the measures need (see above). [SI]
     measures : ndarray, shape (runs, N_MEASURES) or (0, N_MEASURES)
-        Receive each run's measures.
+        Receive each run's measures. [SI, rad, deg/s]
     """
     runs = x0.shape[0]
     n = x0.shape[1]
@@ -405,6 +407,7 @@ def worker_count():
     Returns
     -------
     int
+        Threads. [count]
     """
     try:
         return max(1, len(os.sched_getaffinity(0)))
@@ -422,9 +425,9 @@ def in_blocks(block, runs, workers=None):
     block : callable
         ``block(start)``, integrating runs ``start`` to ``start + BLOCK``.
     runs : int
-        Number of runs.
+        Number of runs. [count]
     workers : int, optional
-        Threads.
+        Threads. [count]
     """
     starts = range(0, runs, BLOCK)
     workers = min(worker_count() if workers is None else int(workers), len(starts))
@@ -468,25 +471,25 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     Parameters
     ----------
     x0 : ndarray, shape (runs, N)
-        Initial states.
+        Initial states. [m, m/s, -, rad/s, rad]
     P : ndarray, shape (runs, NP)
-        Parameter vectors.
+        Parameter vectors. [SI]
     drives : dict
         :func:`stack_drives` of the runs' drive profiles.
     profile : ndarray of int, shape (runs,)
-        Drive profile of each run.
+        Drive profile of each run. [-]
     interval : float
         Sampling interval of the histories. [s]
     n_out : int
-        Samples (the first at t = 0).
+        Samples (the first at t = 0). [count]
     tables : tuple of ndarray
-        :meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`.
+        :meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`. [rad, -]
     step : float, optional
         Fixed step [s]; default adaptive.
     rtol, atol : float
         Tolerances of the adaptive step (SI units of the states). [-], [SI]
     workers : int, optional
-        Threads (default :func:`worker_count`).
+        Threads (default :func:`worker_count`). [count]
     report : bool
         Also keep the reported quantities at the samples, evaluated during the integration
         (the same numbers as :func:`evaluate_many` gives afterwards at the sampled states and
@@ -494,7 +497,7 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     measured : ndarray, shape (runs, 9), optional
         With it, each run's measures are computed as soon as it is integrated, from its
         reported quantities evaluated at its samples (see :func:`dopri_runs` for the
-        columns).
+        columns). [SI]
     keep_states : bool
         Keep the sampled states of every run (else only the measures are kept).
 
@@ -588,17 +591,22 @@ def evaluate_many(states, P, drives, tables):
     Parameters
     ----------
     states : ndarray, shape (n, N)
+        States. [m, m/s, -, rad/s, rad]
     P : ndarray, shape (n, NP) or (NP,)
-        Parameter vectors (one for all).
+        Parameter vectors (one for all). [SI]
     drives : ndarray, shape (n, 9) or (9,)
-        Drive at each state (one for all).
+        Drive at each state (one for all). [m/s, m/s^2, m/s]
     tables : tuple of ndarray
+        :meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`. [rad, -]
 
     Returns
     -------
     rates : ndarray, shape (n, N)
+        Derivatives of the states. [m/s, m/s^2, 1/s, rad/s^2, rad/s]
     info : ndarray, shape (n, N_INFO)
+        Reported quantities (:data:`~slingloads.models.multibody.equations.INFO`). [SI]
     flags : ndarray of int, shape (n,)
+        Flags of :data:`~slingloads.models.multibody.equations.FLAGS`. [-]
     """
     states = _plain(np.atleast_2d(states))
     n = states.shape[0]

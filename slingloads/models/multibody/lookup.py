@@ -25,14 +25,14 @@ def cell(grid, x):
     Parameters
     ----------
     grid : ndarray, shape (n,)
-        Increasing breakpoints.
+        Increasing breakpoints. [any unit]
     x : float
-        Where to look (units of ``grid``).
+        Where to look. [unit of ``grid``]
 
     Returns
     -------
     i : int
-        grid[i] <= x <= grid[i + 1].
+        grid[i] <= x <= grid[i + 1]. [-]
     weight : float
         Weight of grid[i + 1]. [-]
     inside : bool
@@ -69,16 +69,16 @@ def interp1(grid, values, x):
     Parameters
     ----------
     grid : ndarray, shape (n,)
-        Increasing breakpoints.
+        Increasing breakpoints. [any unit]
     values : ndarray, shape (n,)
-        Values at the breakpoints.
+        Values at the breakpoints. [any unit]
     x : float
-        Where to interpolate (units of ``grid``).
+        Where to interpolate. [unit of ``grid``]
 
     Returns
     -------
     value : float
-        Units of ``values``.
+        Interpolated value. [unit of ``values``]
     inside : bool
         x lies in the grid.
     """
@@ -94,16 +94,16 @@ def bilinear(values, k, i, j, wa, wb):
     Parameters
     ----------
     values : ndarray, shape (n, na, nb)
-        Stacked tables.
+        Stacked tables. [any unit]
     k, i, j : int
-        Table and cell.
+        Table and cell. [-]
     wa, wb : float
         Weights of :func:`cell` along the two axes. [-]
 
     Returns
     -------
     float
-        Units of ``values``.
+        Interpolated value. [unit of ``values``]
     """
     v00 = values[k, i, j]
     v01 = values[k, i, j + 1]
@@ -128,7 +128,7 @@ def table_arrays(table, names):
     tuple of ndarray
         ``(angle, values)`` for a Table1D (values shape (n,) for one name), ``(alpha, beta,
         values)`` for a Table2D (values shape (len(names), na, nb)); a flat dummy table when
-        ``table`` is None.
+        ``table`` is None. [rad, -]
     """
     if table is None:
         return np.array([-np.pi, np.pi]), np.zeros(2)
