@@ -6,7 +6,8 @@ The equations of :func:`slingloads.models.pendulum.rigid_rope_derivatives` and
 :func:`~slingloads.models.pendulum.elastic_cable_equations`, so that the results are the
 numpy ones to the last bit), stepped by the RK4 step of
 :mod:`slingloads.models.runge_kutta` with the peak logic of
-:func:`slingloads.analyses.lateral.sweep`: each run on its own (runs in parallel over the
+:func:`slingloads.analyses.lateral.sweep` (a peak between samples refined by the one parabola
+of :mod:`slingloads.models.sampled_peak`): each run on its own (runs in parallel over the
 cores), every run on the shared time grid, the hook's velocity and acceleration read from a
 table per distinct motion. Compiled with `numba <https://numba.pydata.org>`_ (``cache=True``:
 the machine code is kept in this package's ``__pycache__`` after the first call; it is dropped
@@ -31,6 +32,7 @@ import numpy as np
 from slingloads.models.packed import Field, Layout
 from slingloads.models.pendulum import elastic_cable_equations, rigid_rope_equations
 from slingloads.models.runge_kutta import rk4_stepper
+from slingloads.models.sampled_peak import HALF_STEP, make_parabola_vertex
 
 #: A row of ``P``: the parameters of one run (:meth:`LateralPendulum.arrays
 #: <slingloads.models.pendulum.LateralPendulum.arrays>`).
@@ -61,6 +63,24 @@ _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True
 # the equations, compiled from their one source in slingloads.models.pendulum
 _rigid_rope = _inline_jit(rigid_rope_equations)
 _elastic_cable = _inline_jit(elastic_cable_equations)
+
+
+@_inline_jit
+def _select(condition, a, b):
+    """``a`` if ``condition``, else ``b`` (one sample)."""
+    return a if condition else b
+
+
+@_inline_jit
+def _bound(s):
+    """``s`` within [-1/2, 1/2] (one sample)."""
+    return min(max(s, -HALF_STEP), HALF_STEP)
+
+
+#: ``parabola_vertex(y0, y1, y2) -> (value, offset)`` of one sample, compiled from the one
+#: source of :func:`slingloads.models.sampled_peak.refine_peak`
+#: (:func:`~slingloads.models.sampled_peak.make_parabola_vertex`). [signal units], [steps]
+parabola_vertex = _inline_jit(make_parabola_vertex(_select, _bound))
 
 
 @_jit
@@ -219,11 +239,7 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
                 # parabola through the equally spaced samples at t - h, t, t + h
                 for s in range(N_SIGNALS):
                     if y1[s] >= y0[s] and y1[s] >= y2[s]:
-                        curvature = y0[s] - 2.0 * y1[s] + y2[s]
-                        offset = 0.0
-                        if curvature < 0:
-                            offset = min(max(0.5 * (y0[s] - y2[s]) / curvature, -0.5), 0.5)
-                        value = y1[s] - 0.25 * (y0[s] - y2[s]) * offset
+                        value, offset = parabola_vertex(y0[s], y1[s], y2[s])
                         if value > bj[s]:
                             bj[s] = value
                             tj[s] = t + offset * h
