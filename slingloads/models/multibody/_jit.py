@@ -19,6 +19,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numba
+import numpy as np
 
 from slingloads.models.numba_cache import drop_stale_cache
 
@@ -36,3 +37,29 @@ jit_alloc = numba.njit(cache=True, fastmath=False, nogil=True)
 #: Compile a function to be inlined into its caller at numba's level (no call, no reference
 #: counting of the arrays handed on): the right-hand side of the integration loop.
 jit_inline = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
+
+#: What the kernels ask of an array: C-contiguous, writeable and aligned (a read-only or
+#: non-contiguous array would compile the kernel, and the equations in it, a second time).
+KERNEL_ARRAY_FLAGS = ("C", "W", "A")
+
+
+def kernel_array(values, snapshot=False):
+    """``values`` as the kernels take an array: float64, C-contiguous, writeable, aligned.
+
+    Parameters
+    ----------
+    values : array_like
+        The values. [any unit]
+    snapshot : bool, optional
+        Always a copy (for arrays kept beside a digest of their values, which the caller's
+        later writes must not reach); by default a copy only when ``values`` is not such an
+        array already.
+
+    Returns
+    -------
+    ndarray
+        The values. [unit of ``values``]
+    """
+    if snapshot:
+        return np.array(values, dtype=np.float64, order="C", copy=True)
+    return np.require(values, np.float64, KERNEL_ARRAY_FLAGS)

@@ -49,7 +49,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.models.dormand_prince import LEFT, SAMPLE, integrator
-from slingloads.models.multibody._jit import jit, jit_alloc, jit_inline
+from slingloads.models.multibody._jit import (
+    KERNEL_ARRAY_FLAGS,
+    jit,
+    jit_alloc,
+    jit_inline,
+    kernel_array,
+)
 from slingloads.models.multibody.equations import (
     CARRIER_FREE,
     N_INFO,
@@ -391,16 +397,6 @@ def stack_drives(profiles):
     return out
 
 
-#: What the kernel's arrays must be: one compiled signature (a read-only or non-contiguous
-#: array would compile the kernel, and the equations in it, a second time).
-_KERNEL_ARRAYS = ("C", "W", "A")
-
-
-def _plain(values):
-    """A C-contiguous, writeable float64 array (a copy when needed)."""
-    return np.require(values, np.float64, _KERNEL_ARRAYS)
-
-
 def worker_count():
     """Threads used for a batch: the processors this process may run on.
 
@@ -511,11 +507,11 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     info = np.empty((runs, n_out, N_INFO)) if report else None
     rates = np.empty((runs, n_out, N_STATES)) if report else None
     measures = np.empty((runs, N_MEASURES)) if measuring else np.empty((0, N_MEASURES))
-    measured = _plain(np.zeros((runs, 9)) if measured is None else measured)
+    measured = kernel_array(np.zeros((runs, 9)) if measured is None else measured)
     flags = np.zeros(runs, dtype=np.int64)
     stop_time = np.full(runs, np.nan)
-    x0, P = _plain(x0), _plain(P)
-    profile = np.require(profile, np.int64, _KERNEL_ARRAYS)
+    x0, P = kernel_array(x0), kernel_array(P)
+    profile = np.require(profile, np.int64, KERNEL_ARRAY_FLAGS)
     fixed = 0.0 if step is None else float(step)
     time = np.arange(n_out) * float(interval)
     # what a block does not keep goes to work rows of one run, reused from run to run
@@ -608,10 +604,10 @@ def evaluate_many(states, P, drives, tables):
     flags : ndarray of int, shape (n,)
         Flags of :data:`~slingloads.models.multibody.equations.FLAGS`. [-]
     """
-    states = _plain(np.atleast_2d(states))
+    states = kernel_array(np.atleast_2d(states))
     n = states.shape[0]
-    P = _plain(np.broadcast_to(P, (n, np.shape(P)[-1])))
-    drives = _plain(np.broadcast_to(drives, (n, 9)))
+    P = kernel_array(np.broadcast_to(P, (n, np.shape(P)[-1])))
+    drives = kernel_array(np.broadcast_to(drives, (n, 9)))
     rates = np.empty((n, N_STATES))
     info = np.empty((n, N_INFO))
     flags = np.zeros(n, dtype=np.int64)

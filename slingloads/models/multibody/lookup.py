@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from slingloads.models.multibody._jit import jit
+from slingloads.models.multibody._jit import jit, kernel_array
 
 #: Round-off allowance at the ends of a table, relative to its span. [-]
 EDGE = 1e-9
@@ -132,14 +132,10 @@ def table_arrays(table, names):
     """
     if table is None:
         return np.array([-np.pi, np.pi]), np.zeros(2)
-    # writeable contiguous float64 copies: one compiled signature for every table
+    # copies in the kernels' form (one compiled signature for every table), kept with their
+    # digest (slingloads.models.multibody.system): a later write to the table must not reach
     if hasattr(table, "beta"):
         values = np.stack([table.coefficients[n] for n in names])
-        return (_plain(table.alpha), _plain(table.beta), _plain(values))
-    return _plain(table.angle), _plain(table.coefficients[names[0]])
-
-
-def _plain(values):
-    """A writeable, C-contiguous float64 copy (read-only arrays would compile the kernels a
-    second time)."""
-    return np.array(values, dtype=np.float64, order="C", copy=True)
+        return tuple(kernel_array(a, snapshot=True) for a in (table.alpha, table.beta, values))
+    return (kernel_array(table.angle, snapshot=True),
+            kernel_array(table.coefficients[names[0]], snapshot=True))
