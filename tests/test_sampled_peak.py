@@ -5,17 +5,18 @@ s = -1, 0, 1, gives y0 = a (1 + s_v)^2 + c, y1 = a s_v^2 + c, y2 = a (1 - s_v)^2
 y0 - 2 y1 + y2 = 2 a and y0 - y2 = 4 a s_v: the vertex is at s_v = (y0 - y2) / (2 (y0 - 2 y1 +
 y2)) and its value is c, whatever a; a vertex beyond half a step is kept at half a step, and
 samples that do not curve down give the middle one. The numpy form
-(:func:`slingloads.models.sampled_peak.refine_peak`) and the compiled form of the lateral
-kernel (:data:`slingloads.models.pendulum_batch.parabola_vertex`) are made from one source and
-must agree to the bit.
+(:func:`slingloads.models.sampled_peak.refine_peak`) and the compiled form of the
+kernels (:func:`slingloads.models.sampled_peak.compiled_parabola_vertex`) are made from one
+source and must agree to the bit.
 """
 
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from slingloads.models.pendulum_batch import parabola_vertex
-from slingloads.models.sampled_peak import refine_peak
+from slingloads.models.sampled_peak import compiled_parabola_vertex, refine_peak
+
+parabola_vertex = compiled_parabola_vertex()
 
 
 def _samples(a, s_v, c):

@@ -45,7 +45,7 @@ from slingloads.models.pendulum import (
     rigid_rope_equations,
 )
 from slingloads.models.runge_kutta import rk4_stepper
-from slingloads.models.sampled_peak import HALF_STEP, make_parabola_vertex
+from slingloads.models.sampled_peak import compiled_parabola_vertex
 
 #: A row of ``P``: the parameters of one run (:meth:`LateralPendulum.arrays
 #: <slingloads.models.pendulum.LateralPendulum.arrays>`).
@@ -87,23 +87,8 @@ _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True
 _rigid_rope = _inline_jit(rigid_rope_equations)
 _elastic_cable = _inline_jit(elastic_cable_equations)
 
-
-@_inline_jit
-def _select(condition, a, b):
-    """``a`` if ``condition``, else ``b`` (one sample)."""
-    return a if condition else b
-
-
-@_inline_jit
-def _bound(s):
-    """``s`` within [-1/2, 1/2] (one sample)."""
-    return min(max(s, -HALF_STEP), HALF_STEP)
-
-
-#: ``parabola_vertex(y0, y1, y2) -> (value, offset)`` of one sample, compiled from the one
-#: source of :func:`slingloads.models.sampled_peak.refine_peak`
-#: (:func:`~slingloads.models.sampled_peak.make_parabola_vertex`). [signal units], [steps]
-parabola_vertex = _inline_jit(make_parabola_vertex(_select, _bound))
+# the peak between samples, compiled from its one source in slingloads.models.sampled_peak
+_parabola_vertex = compiled_parabola_vertex()
 
 
 @_jit
@@ -264,7 +249,7 @@ def rk4_peaks(rigid, x0, P, drive, profile, nodes, jumps, best, t_best):
                 # parabola through the equally spaced samples at t - h, t, t + h
                 for s in range(N_SIGNALS):
                     if y1[s] >= y0[s] and y1[s] >= y2[s]:
-                        value, offset = parabola_vertex(y0[s], y1[s], y2[s])
+                        value, offset = _parabola_vertex(y0[s], y1[s], y2[s])
                         if value > bj[s]:
                             bj[s] = value
                             tj[s] = t + offset * h

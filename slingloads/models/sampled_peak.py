@@ -23,11 +23,16 @@ order h^3 times the signal's third derivative.
 
 The formula is written once, :func:`make_parabola_vertex`, and made twice from it: for numpy
 arrays (:func:`refine_peak`, element by element over arrays of any shape) and for one sample in
-compiled code (the lateral batch integrator compiles it with its selection and bounds,
-:mod:`slingloads.models.pendulum_batch`), so that the two give the same numbers to the bit.
+compiled code (:func:`compiled_parabola_vertex`, inlined into the kernels that refine peaks:
+the lateral batch integrator :mod:`slingloads.models.pendulum_batch`, the yaw-run metrics
+:mod:`slingloads.analyses.chute_metrics` and the multibody response measures
+:mod:`slingloads.models.multibody.response`), so that the two give the same numbers to the bit.
+numba is imported only when the compiled form is asked for.
 """
 
 from __future__ import annotations
+
+import functools
 
 import numpy as np
 
@@ -92,3 +97,29 @@ def refine_peak(y0, y1, y2):
     """
     return _refine(np.asarray(y0, dtype=float), np.asarray(y1, dtype=float),
                    np.asarray(y2, dtype=float))
+
+
+@functools.cache
+def compiled_parabola_vertex():
+    """The vertex of the parabola through three samples, compiled for one sample.
+
+    Returns
+    -------
+    numba dispatcher
+        ``vertex(y0, y1, y2) -> (value, offset)``, as :func:`refine_peak` gives for one sample
+        (the same bits), compiled with numba to be inlined into its caller
+        (``inline="always"``, cached on disk). [signal units], [steps]
+    """
+    import numba
+
+    inline_jit = numba.njit(cache=True, fastmath=False, nogil=True, inline="always")
+
+    @inline_jit
+    def select(condition, a, b):
+        return a if condition else b
+
+    @inline_jit
+    def bound(s):
+        return min(max(s, -HALF_STEP), HALF_STEP)
+
+    return inline_jit(make_parabola_vertex(select, bound))

@@ -9,8 +9,9 @@ the integration kernel allocates its work arrays once per block of runs.
 numba invalidates a cached function when its own source file changes, not when a function it
 calls from another module does. The kernels span several modules, so the cache files of this
 package are dropped whenever any of its sources, the packed layouts
-(:mod:`slingloads.models.packed`) or the Dormand-Prince pair
-(:mod:`slingloads.models.dormand_prince`) changes
+(:mod:`slingloads.models.packed`), the Dormand-Prince pair
+(:mod:`slingloads.models.dormand_prince`) or the peak between samples
+(:mod:`slingloads.models.sampled_peak`) changes
 (:func:`slingloads.models.numba_cache.drop_stale_cache`).
 """
 
@@ -25,7 +26,8 @@ from slingloads.models.numba_cache import drop_stale_cache
 
 _HERE = Path(__file__).resolve().parent
 
-drop_stale_cache(_HERE, also=(_HERE.parent / "packed.py", _HERE.parent / "dormand_prince.py"))
+drop_stale_cache(_HERE, also=(_HERE.parent / "packed.py", _HERE.parent / "dormand_prince.py",
+                             _HERE.parent / "sampled_peak.py"))
 
 #: Compile a scalar kernel that allocates nothing (cached on disk, releases the GIL so that
 #: several threads run it at once). numba's reference counting of arrays is off for it

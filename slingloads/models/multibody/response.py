@@ -26,6 +26,10 @@ import math
 import numpy as np
 
 from slingloads.models.multibody._jit import jit
+from slingloads.models.sampled_peak import compiled_parabola_vertex
+
+# the peak between samples, compiled from its one source in slingloads.models.sampled_peak
+_parabola_vertex = compiled_parabola_vertex()
 
 #: Derived histories, in the order of :func:`derive`'s columns (SI, angles in rad).
 HISTORY = ("time", "x", "y", "z", "yaw", "pitch", "roll", "yaw rate", "alpha", "beta",
@@ -213,10 +217,10 @@ def damping_from_peaks(time, y, start, buf):
         y0, y1, y2 = v[i - 1], v[i], v[i + 1]
         if not (y1 > y0 and y1 >= y2 and y1 > 0 and y1 > 0.02 * largest):
             continue
-        den = y0 - 2 * y1 + y2
-        shift = 0.5 * (y0 - y2) / den if den != 0 else 0.0
+        # y1 > y0 and y1 >= y2: the samples curve down, the vertex within half a step
+        value, shift = _parabola_vertex(y0, y1, y2)
         times[count] = t[i] + shift * h
-        values[count] = y1 - 0.25 * (y0 - y2) * shift
+        values[count] = value
         count += 1
     if count < 3:
         return np.nan, np.nan
