@@ -9,12 +9,13 @@ with :mod:`ast` (no import, so the compiled kernels are read too). The modules s
 documented (their functions are being reshaped elsewhere) are listed in ``PENDING``; the list
 only shrinks.
 
-Every numeric entry of those sections (its type names a float, an int, an ndarray, an array or
-a number) states its unit in brackets, pvlib style (``pressure : numeric ... [Pa]``). What is
-not a quantity says so in the same brackets, from a short list a reader can learn: ``[-]`` for
-a dimensionless number, an index, a flag or a seed, ``[count]`` for a number of things (runs,
-samples, workers). A mixed vector names its units in order (``[m, m/s, -, rad/s, rad]``) or the
-table that lays it out (``[SI]`` with the layout named in the text).
+Every numeric entry of those sections and of a class's ``Attributes`` (its type names a
+float, an int, an ndarray, an array or a number) states its unit in brackets, pvlib style
+(``pressure : numeric ... [Pa]``). What is not a quantity says so in the same brackets, from a
+short list a reader can learn: ``[-]`` for a dimensionless number, an index, a flag or a seed,
+``[count]`` for a number of things (runs, samples, workers). A mixed vector names its units in
+order (``[m, m/s, -, rad/s, rad]``) or the table that lays it out (``[SI]`` with the layout
+named in the text).
 """
 
 import ast
@@ -105,11 +106,11 @@ def _missing(path):
 
 
 #: A type that holds a number: float, int, complex, numeric, number, an array or an ndarray
-#: (``ndarray of bool`` and ``bool`` are flags, not numbers).
+#: (``bool`` and ``ndarray of bool`` are flags and ``ndarray of str`` text, not numbers).
 _NUMERIC = re.compile(r"\b(float|float64|int|int64|complex|numeric|number|ndarray|array|"
                       r"array_like)\b")
 #: A unit in brackets: ``[m/s]``, ``[-]``, ``[count]``; not an index (``x[0]``, ``[1]_``).
-_UNIT = re.compile(r"(?<![\w`\]\[])\[[^\]\s`][^\]]*\](?!_)")
+_UNIT = re.compile(r"(?<![\w`\]\[])\[[^\]\s][^\]]*\](?!_)")
 
 
 def _sections(doc):
@@ -137,16 +138,17 @@ def _entries(lines):
 
 
 def _is_numeric(kind):
-    if "bool" in kind and not re.search(r"float|numeric", kind):
+    if re.search(r"\bbool\b|array of str", kind) and not re.search(r"float|numeric", kind):
         return False
     return bool(_NUMERIC.search(kind))
 
 
 def _without_units(doc):
-    """The numeric Parameters, Returns and Yields entries of ``doc`` that state no unit."""
+    """The numeric Parameters, Attributes, Returns and Yields entries of ``doc`` that state no
+    unit."""
     sections = _sections(doc)
     out = []
-    for section in ("Parameters", "Returns", "Yields"):
+    for section in ("Parameters", "Attributes", "Returns", "Yields"):
         for head, text in _entries(sections.get(section, [])):
             name, colon, kind = head.partition(" : ")
             if not colon:  # a Returns entry may give the type alone
@@ -185,15 +187,19 @@ def test_the_unit_check_finds_a_missing_unit():
     doc = ("Doctored.\n\nParameters\n----------\nspeed : float\n    Airspeed.\n"
            "mass : float\n    Mass. [kg]\nx : ndarray, shape (4,)\n    State ``x[0]`` [1]_.\n"
            "runs : int\n    Runs. [count]\nk : int\n    Index. [-]\nn : int\n    Samples.\n"
-           "left : ndarray of bool\n    Flags.\nname : str\n    A name.\n\n"
+           "left : ndarray of bool\n    Flags.\nname : str\n    A name.\n"
+           "labels : ndarray of str\n    Names.\n\nAttributes\n----------\n"
+           "area : float\n    Area.\n\n"
            "Returns\n-------\nfloat\n    Tension.\ndx : ndarray\n    Rates. [m/s, rad/s]\n")
     assert _without_units(doc) == ["Parameters: speed : float",
                                    "Parameters: x : ndarray, shape (4,)",
-                                   "Parameters: n : int", "Returns: float"]
+                                   "Parameters: n : int", "Attributes: area : float",
+                                   "Returns: float"]
     assert _without_units(doc.replace("Airspeed.", "Airspeed. [m/s]")
                           .replace("Samples.", "Samples. [count]")
                           .replace("[1]_.", "[1]_. [m, m/s]")
-                          .replace("Tension.", "Tension. [N]")) == []
+                          .replace("Tension.", "Tension. [N]")
+                          .replace("Area.", "Area. [``unit``]")) == []
 
 
 @pytest.mark.parametrize("path", [m for m in MODULES if m not in PENDING])

@@ -76,6 +76,7 @@ class LinearisationResult:
     fuselage_slope, fin_slope : float or None
         Least-squares dCn/dbeta over ``fit_range``. [1/rad]
     fuselage_intercept, fin_intercept : float or None
+        Cn of the least-squares lines at zero sideslip. [-]
     fit_range : tuple of float
         [rad]
     """

@@ -63,7 +63,7 @@ class IdentifiedMode:
     damping_ratio : float
         NaN when none was identified. [-]
     amplitude : float
-        Initial amplitude of the component (the signal's unit), NaN when none.
+        Initial amplitude of the component (the signal's unit), NaN when none. [unit of the signal]
     reason : str
         "" when identified, else why not.
     components : tuple of tuple of float

@@ -160,7 +160,7 @@ class RunCache:
     warnings : list of str
         What the cache could not use (a damaged entry, an unusable folder), for the report.
     written : int
-        Runs stored on disk by this object.
+        Runs stored on disk by this object. [count]
     usable : bool
         False once the cache has fallen back to memory.
     """

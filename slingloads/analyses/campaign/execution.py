@@ -651,13 +651,14 @@ class ExecutionReport:
     Attributes
     ----------
     total, cached, computed : int
-        Runs in the campaign, found in the store, and run now (every group).
+        Runs in the campaign, found in the store, and run now (every group). [count]
     batches : int
+        Batches executed. [count]
     executor : str
     parts : tuple of (int, int, int)
         (total, cached, computed) of each group of runs, in the order given (a campaign: the
         matrix, then the runs without parachute), each run counted in the first group that
-        holds it.
+        holds it. [count]
     """
 
     total: int

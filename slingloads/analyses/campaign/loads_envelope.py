@@ -70,9 +70,9 @@ class DynamicsEnvelope:
     source : dict
         Quantity -> (run of the lower bound, run of the upper bound).
     runs : int
-        Runs the extremes are taken over.
+        Runs the extremes are taken over. [count]
     unstable_runs : int
-        Of them, runs that are not stable (their extremes are included).
+        Of them, runs that are not stable (their extremes are included). [count]
     """
 
     area_factor: float

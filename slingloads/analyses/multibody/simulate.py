@@ -214,14 +214,14 @@ class RunResult:
     time : ndarray, shape (n,)
         [s]
     flag : int
-        Table or limit left (0: none); see :func:`~.trim.flag_text`.
+        Table or limit left (0: none); see :func:`~.trim.flag_text`. [-]
     stop_time : float
         Time the run stopped (NaN if it ran to the end). [s]
     batch : object, optional
         The runs integrated with this one (their states, parameters, drives and measures),
         from which :attr:`states` and :attr:`info` come.
     index : int
-        This run's place in ``batch``.
+        This run's place in ``batch``. [-]
     """
 
     system: object

@@ -143,15 +143,15 @@ class Trim:
     airspeed : float
         Equivalent airspeed. [m/s]
     state : ndarray, shape (20,)
-        Full state of the equations at trim.
+        Full state of the equations at trim. [m, m/s, -, rad/s, rad]
     drive : ndarray, shape (9,)
-        Wind, commanded acceleration and velocity at trim.
+        Wind, commanded acceleration and velocity at trim. [m/s, m/s^2, m/s]
     converged : bool
     message : str
     residual : float
         Largest scaled acceleration left. [-]
     info : ndarray
-        Reported quantities at trim (:data:`~slingloads.models.multibody.equations.INFO`).
+        Reported quantities at trim (:data:`~slingloads.models.multibody.equations.INFO`). [SI]
     neutral : str
         The unknown the equilibrium leaves free ("yaw" for an airframe without any yawing
         moment: an equilibrium at every heading), "" when it is isolated; a neutral trim
@@ -706,7 +706,7 @@ class LinearModel:
     eigenvalues : ndarray, shape (n,)
         [1/s]
     vectors : ndarray, shape (n, n)
-        Right eigenvectors (columns).
+        Right eigenvectors (columns). [units of the coordinates]
     """
 
     trim: Trim

@@ -442,15 +442,15 @@ class Integrated:
     Attributes
     ----------
     states : ndarray, shape (runs, n_out, N), or None
-        States at the samples (NaN after a stop); None unless kept.
+        States at the samples (NaN after a stop); None unless kept. [m, m/s, -, rad/s, rad]
     info : ndarray, shape (runs, n_out, N_INFO), or None
-        Reported quantities at the samples, with ``report``.
+        Reported quantities at the samples, with ``report``. [SI]
     flags : ndarray of int, shape (runs,)
-        Table or limit each run left (0: none).
+        Table or limit each run left (0: none). [-]
     stop_time : ndarray, shape (runs,)
         When a run stopped (NaN if it did not). [s]
     measures : ndarray, shape (runs, N_MEASURES), or None
-        Each run's measures, when asked for.
+        Each run's measures, when asked for. [SI, rad, deg/s]
     """
 
     states: np.ndarray | None
