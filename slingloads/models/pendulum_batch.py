@@ -17,8 +17,8 @@ Parameter rows (``P``, one per run) are laid out by :data:`LAYOUT`
 (:mod:`slingloads.models.packed`).
 
 Drive tables (``drive``, shape (motions, nodes, 3, 2)): for the step starting at node i, the
-hook's (velocity [m/s], acceleration [m/s^2]) at its start (just after a jump there), middle
-and end (just before a jump there), as the RK4 step expects
+hook's (velocity [m/s], acceleration [m/s^2]) (channels :data:`DRIVE`) at its start (just
+after a jump there), middle and end (just before a jump there), as the RK4 step expects
 (:mod:`slingloads.models.runge_kutta`).
 """
 

@@ -190,9 +190,9 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fu
         Parachute flat-plate areas. [m^2]
     index : ndarray of int, shape (runs,)
         Each run's distinct gust. [-]
-    wind : ndarray, shape (gusts, steps, 3, 2)
-        Wind angle gamma [rad] and relative speed [m/s] of each distinct gust at the start,
-        middle and end of every step.
+    wind : ndarray, shape (gusts, steps, 3, N_WIND)
+        Wind angle gamma [rad] and relative speed [m/s] (channels :data:`WIND`) of each
+        distinct gust at the start, middle and end of every step.
     step : ndarray, shape (steps,)
         Step lengths. [s]
     stored : ndarray of bool, shape (steps + 1,)
@@ -258,7 +258,7 @@ def gust_value(t, start, c0, c1, ref, first, count, harm):
     first, count : int
         Rows of ``harm`` of the piece's harmonic terms. [-], [count]
     harm : ndarray, shape (terms, 3)
-        Amplitude [m/s], omega [rad/s], phase [rad].
+        Amplitude [m/s], omega [rad/s], phase [rad] (columns :data:`HARMONIC`).
 
     Returns
     -------
@@ -395,11 +395,13 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     p_start : ndarray, shape (gusts, pieces)
         Start of each piece. [s]
     p_coef : ndarray, shape (gusts, pieces, 3)
-        c0 [m/s], c1 [m/s^2], ref [s] of each piece (:func:`gust_value`).
+        c0 [m/s], c1 [m/s^2], ref [s] of each piece (columns :data:`PIECE`,
+        :func:`gust_value`).
     h_off, h_count : ndarray of int, shape (gusts, pieces)
         First row and number of the piece's harmonic terms in ``harm``. [-], [count]
     harm : ndarray, shape (terms, 3)
-        Amplitude [m/s], omega [rad/s], phase [rad] of the harmonic terms.
+        Amplitude [m/s], omega [rad/s], phase [rad] of the harmonic terms (columns
+        :data:`HARMONIC`).
     interval : float
         Output interval, from t = 0 (dense output). [s]
     rtol, atol : float
