@@ -316,33 +316,53 @@ def test_the_private_import_check_finds_one(tmp_path, monkeypatch):
 
 #: Compiled kernels whose packed vectors are read by names generated from their tables
 #: (``STATES``, ``DRIVE``, ``INFO`` and the parameter ``LAYOUT`` of
-#: :mod:`slingloads.models.multibody.equations`): (module, function, the vectors' names).
+#: :mod:`slingloads.models.multibody.equations`; ``RIGID_STATES`` and ``ELASTIC_STATES`` of
+#: :mod:`slingloads.models.pendulum`; ``DRIVE`` and ``SIGNALS`` of
+#: :mod:`slingloads.models.pendulum_batch`; ``STATES``, ``WIND``, ``PIECE`` and ``HARMONIC``
+#: of :mod:`slingloads.models.yaw_batch`): (module, function, the vectors' names).
 NAMED_INDEX_KERNELS = (
     ("models/multibody/equations.py", "evaluate", ("x", "dx", "info", "drive", "P")),
     ("models/multibody/integrator.py", "_renormalise", ("x",)),
+    ("models/pendulum.py", "rope_angle", ("x",)),
+    ("models/pendulum.py", "airframe_angle", ("x",)),
+    ("models/pendulum_batch.py", "rigid_rope", ("x", "dx", "p")),
+    ("models/pendulum_batch.py", "elastic_cable", ("x", "dx", "p")),
+    ("models/pendulum_batch.py", "_rhs", ("x", "dx", "drive")),
+    ("models/pendulum_batch.py", "_signals", ("x", "y")),
+    ("models/pendulum_batch.py", "rk4_peaks", ("x", "x0", "bj", "tj", "y0", "y1", "y2")),
+    ("models/yaw_batch.py", "_rhs", ("x", "dx", "wind")),
+    ("models/yaw_batch.py", "rk4_batch", ("x", "new")),
+    ("models/yaw_batch.py", "gust_value", ("harm",)),
+    ("models/yaw_batch.py", "_dopri_rhs", ("y", "dx", "wind", "p_coef")),
+    ("models/yaw_batch.py", "_dopri_run", ("x",)),
 )
 
 
 def _literal_indices(tree, function, vectors):
     """``name[line]`` of each subscript of one of ``vectors`` by an integer literal inside
-    ``function`` of ``tree``."""
+    ``function`` of ``tree``: the whole index (``x[9]``) or its last axis, the packed one
+    (``drive[i, stage, 0]``)."""
     found = []
     for f in ast.walk(tree):
         if isinstance(f, ast.FunctionDef) and f.name == function:
             for node in ast.walk(f):
-                if (isinstance(node, ast.Subscript) and isinstance(node.value, ast.Name)
-                        and node.value.id in vectors and isinstance(node.slice, ast.Constant)
-                        and isinstance(node.slice.value, int)):
-                    found.append(f"{node.value.id}[{node.slice.value}]@{node.lineno}")
+                if not (isinstance(node, ast.Subscript) and isinstance(node.value, ast.Name)
+                        and node.value.id in vectors):
+                    continue
+                last = node.slice.elts[-1] if isinstance(node.slice, ast.Tuple) else node.slice
+                if isinstance(last, ast.Constant) and isinstance(last.value, int):
+                    index = ast.unparse(node.slice).strip("()")
+                    found.append(f"{node.value.id}[{index}]@{node.lineno}")
     return found
 
 
 @pytest.mark.parametrize("file, function, vectors", NAMED_INDEX_KERNELS,
                          ids=[f"{f}:{name}" for f, name, _ in NAMED_INDEX_KERNELS])
 def test_kernels_index_packed_vectors_by_name(file, function, vectors):
-    """The multibody kernel reads and writes its state, drive, reported quantities and
-    parameters at offsets named from one table each (``x[X_QUAT + 1]``, ``P[PULL]``), never
-    at a literal index (``x[10]``), so that a table and the kernel cannot disagree."""
+    """The compiled kernels (multibody, lateral pendulum, yaw) read and write their states,
+    drives, reported quantities, signals and parameters at offsets named from one table each
+    (``x[X_QUAT + 1]``, ``P[PULL]``, ``drive[i, stage, D_VEL]``), never at a literal index
+    (``x[10]``), so that a table and the kernel cannot disagree."""
     tree = ast.parse((PACKAGE / file).read_text(encoding="utf-8"))
     assert any(isinstance(f, ast.FunctionDef) and f.name == function for f in ast.walk(tree))
     found = _literal_indices(tree, function, vectors)
@@ -352,8 +372,8 @@ def test_kernels_index_packed_vectors_by_name(file, function, vectors):
 def test_the_literal_index_check_finds_one():
     """The check above can fail: a literal index of a named vector is caught, a named offset
     and another array's literal are not."""
-    tree = ast.parse("def f(x, e):\n    return x[9] + x[Q + 1] + e[0]\n")
-    assert _literal_indices(tree, "f", ("x",)) == ["x[9]@2"]
+    tree = ast.parse("def f(x, e, d):\n    return x[9] + x[Q + 1] + e[0] + d[i, 1] + d[1, K]\n")
+    assert sorted(_literal_indices(tree, "f", ("x", "d"))) == ["d[i, 1]@2", "x[9]@2"]
 
 
 def test_the_cycle_check_finds_a_circle():

@@ -8,9 +8,18 @@ a value a ``Returns`` (or ``Yields``) section, a class that takes arguments a ``
 with :mod:`ast` (no import, so the compiled kernels are read too). The modules still to be
 documented (their functions are being reshaped elsewhere) are listed in ``PENDING``; the list
 only shrinks.
+
+Every numeric entry of those sections and of a class's ``Attributes`` (its type names a
+float, an int, an ndarray, an array or a number) states its unit in brackets, pvlib style
+(``pressure : numeric ... [Pa]``). What is not a quantity says so in the same brackets, from a
+short list a reader can learn: ``[-]`` for a dimensionless number, an index, a flag or a seed,
+``[count]`` for a number of things (runs, samples, workers). A mixed vector names its units in
+order (``[m, m/s, -, rad/s, rad]``) or the table that lays it out (``[SI]`` with the layout
+named in the text).
 """
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -94,6 +103,103 @@ def _missing(path):
                         and not _is_property(b)):
                     check(b, f"{node.name}.{b.name}", method=True)
     return out
+
+
+#: A type that holds a number: float, int, complex, numeric, number, an array or an ndarray
+#: (``bool`` and ``ndarray of bool`` are flags and ``ndarray of str`` text, not numbers).
+_NUMERIC = re.compile(r"\b(float|float64|int|int64|complex|numeric|number|ndarray|array|"
+                      r"array_like)\b")
+#: A unit in brackets: ``[m/s]``, ``[-]``, ``[count]``; not an index (``x[0]``, ``[1]_``).
+_UNIT = re.compile(r"(?<![\w`\]\[])\[[^\]\s][^\]]*\](?!_)")
+
+
+def _sections(doc):
+    """The lines of each numpydoc section of ``doc`` (a cleaned docstring), by heading."""
+    lines = doc.splitlines()
+    out, current = {}, None
+    for line, below in zip(lines, [*lines[1:], ""], strict=True):
+        if line.strip() and not line.startswith(" ") and below.strip() and set(
+                below.strip()) == {"-"}:
+            current = out.setdefault(line.strip(), [])
+        elif current is not None and not (line.strip() and set(line.strip()) == {"-"}):
+            current.append(line)
+    return out
+
+
+def _entries(lines):
+    """(heading line, description lines) of each entry of a section."""
+    entries = []
+    for line in lines:
+        if line.strip() and not line.startswith(" "):
+            entries.append((line.strip(), []))
+        elif entries:
+            entries[-1][1].append(line.strip())
+    return entries
+
+
+def _is_numeric(kind):
+    if re.search(r"\bbool\b|array of str", kind) and not re.search(r"float|numeric", kind):
+        return False
+    return bool(_NUMERIC.search(kind))
+
+
+def _without_units(doc):
+    """The numeric Parameters, Attributes, Returns and Yields entries of ``doc`` that state no
+    unit."""
+    sections = _sections(doc)
+    out = []
+    for section in ("Parameters", "Attributes", "Returns", "Yields"):
+        for head, text in _entries(sections.get(section, [])):
+            name, colon, kind = head.partition(" : ")
+            if not colon:  # a Returns entry may give the type alone
+                kind = head
+            if _is_numeric(kind) and not _UNIT.search(" ".join([head, *text])):
+                out.append(f"{section}: {head}")
+    return out
+
+
+def _public_docstrings(path):
+    """(name, docstring) of each public function, class and method of module ``path``."""
+    tree = ast.parse((ROOT / path).read_text())
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.ClassDef)) and not node.name.startswith("_"):
+            yield node.name, ast.get_docstring(node) or ""
+            if isinstance(node, ast.ClassDef):
+                for b in node.body:
+                    if isinstance(b, ast.FunctionDef) and not b.name.startswith("_"):
+                        yield f"{node.name}.{b.name}", ast.get_docstring(b) or ""
+
+
+@pytest.mark.parametrize("path", MODULES)
+def test_numeric_entries_state_their_units(path):
+    """Each number, array or numeric value a public function, method or class of the module
+    takes or returns states its unit in brackets (``[m/s]``; ``[-]`` for a dimensionless
+    number, an index, a flag or a seed; ``[count]`` for a number of things)."""
+    missing = [f"{name}: {entry}" for name, doc in _public_docstrings(path)
+               for entry in _without_units(doc)]
+    assert missing == []
+
+
+def test_the_unit_check_finds_a_missing_unit():
+    """The check above can fail: a doctored docstring whose float, int and array entries lack a
+    unit is caught entry by entry; a bracketed unit, ``[-]``, ``[count]``, a flag, a string and
+    an index in code (``x[0]``) or a reference (``[1]_``) are told apart."""
+    doc = ("Doctored.\n\nParameters\n----------\nspeed : float\n    Airspeed.\n"
+           "mass : float\n    Mass. [kg]\nx : ndarray, shape (4,)\n    State ``x[0]`` [1]_.\n"
+           "runs : int\n    Runs. [count]\nk : int\n    Index. [-]\nn : int\n    Samples.\n"
+           "left : ndarray of bool\n    Flags.\nname : str\n    A name.\n"
+           "labels : ndarray of str\n    Names.\n\nAttributes\n----------\n"
+           "area : float\n    Area.\n\n"
+           "Returns\n-------\nfloat\n    Tension.\ndx : ndarray\n    Rates. [m/s, rad/s]\n")
+    assert _without_units(doc) == ["Parameters: speed : float",
+                                   "Parameters: x : ndarray, shape (4,)",
+                                   "Parameters: n : int", "Attributes: area : float",
+                                   "Returns: float"]
+    assert _without_units(doc.replace("Airspeed.", "Airspeed. [m/s]")
+                          .replace("Samples.", "Samples. [count]")
+                          .replace("[1]_.", "[1]_. [m, m/s]")
+                          .replace("Tension.", "Tension. [N]")
+                          .replace("Area.", "Area. [``unit``]")) == []
 
 
 @pytest.mark.parametrize("path", [m for m in MODULES if m not in PENDING])

@@ -3,18 +3,29 @@
 The same quantities, defined the same way, as the vectorised numpy expressions they replace in
 :func:`slingloads.analyses.chute_sizing._run_metrics` (see there and :class:`YawRuns` for
 their meaning): peak |beta| and |psi|, sideslip range, settling time, and the two first
-positive yaw-rate peaks after the gust ends (refined by a parabola through the peak and its
-neighbours) for the logarithmic decrement. Compiled with `numba <https://numba.pydata.org>`_
-(``cache=True``), on one thread: a pass over the histories takes about a millisecond for 400
-runs, less than waking the other threads would cost.
+positive yaw-rate peaks after the gust ends (refined by the parabola through the peak and its
+neighbours, :mod:`slingloads.models.sampled_peak`) for the logarithmic decrement. Compiled
+with `numba <https://numba.pydata.org>`_ (``cache=True``), on one thread: a pass over the
+histories takes about a millisecond for 400 runs, less than waking the other threads would
+cost.
 """
 
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numba
 import numpy as np
+
+from slingloads.models.numba_cache import drop_stale_cache
+from slingloads.models.sampled_peak import compiled_parabola_vertex
+
+_HERE = Path(__file__).resolve()
+drop_stale_cache(_HERE.parent, also=(_HERE.parents[1] / "models" / "sampled_peak.py",))
+
+# the peak between samples, compiled from its one source in slingloads.models.sampled_peak
+_parabola_vertex = compiled_parabola_vertex()
 
 
 @numba.njit(cache=True, nogil=True)
@@ -41,7 +52,7 @@ def history_metrics(t, beta, psi, rate, trim, onset, free, settle_fraction, peak
     peak_threshold : float
         Smallest yaw-rate peak counted. [rad/s]
     out : ndarray, shape (runs, 8)
-        Receives the metrics.
+        Receives the metrics. [rad, rad/s, s: see above]
     """
     runs, n = beta.shape
     for j in range(runs):
@@ -73,10 +84,7 @@ def history_metrics(t, beta, psi, rate, trim, onset, free, settle_fraction, peak
             r = rate[j, k]
             if (r > rate[j, k - 1] and r >= rate[j, k + 1] and r > peak_threshold
                     and t[k] > free[j]):
-                curvature = rate[j, k - 1] - 2 * r + rate[j, k + 1]
-                refined = r
-                if curvature < 0:
-                    refined = r - (rate[j, k + 1] - rate[j, k - 1]) ** 2 / (8 * curvature)
+                refined, _ = _parabola_vertex(rate[j, k - 1], r, rate[j, k + 1])
                 found += 1
                 if found == 1:
                     p1 = refined

@@ -76,6 +76,7 @@ class LinearisationResult:
     fuselage_slope, fin_slope : float or None
         Least-squares dCn/dbeta over ``fit_range``. [1/rad]
     fuselage_intercept, fin_intercept : float or None
+        Cn of the least-squares lines at zero sideslip. [-]
     fit_range : tuple of float
         [rad]
     """
@@ -220,14 +221,14 @@ def local_slope(angle, values, what="aerodynamic"):
     angle : array_like, shape (n,)
         Sideslip breakpoints. [rad]
     values : array_like, shape (n,)
-        Table values (units of the table).
+        Table values. [unit of the table]
     what : str
         Name of the table, for the message.
 
     Returns
     -------
     float
-        Units of the table per rad.
+        Slope. [unit of the table / rad]
     """
     angle = np.asarray(angle, dtype=float)
     below, above = angle[angle < -1e-12], angle[angle > 1e-12]
@@ -819,7 +820,7 @@ class YawRuns:
         Parameters
         ----------
         runs : sequence of int, optional
-            Run indices (default all).
+            Run indices (default all). [-]
 
         Returns
         -------

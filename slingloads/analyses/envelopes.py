@@ -22,6 +22,7 @@ def component_index(name):
     Returns
     -------
     int
+        Index of the component in :data:`~slingloads.analyses.sfbm.COMPONENTS`. [-]
 
     Raises
     ------
@@ -128,7 +129,7 @@ def convex_hull(loads, case_ids, station_index, pair):
     case_ids : sequence of str
         Ids of the ``c`` cases.
     station_index : int
-        The station, 0 <= station_index < s.
+        The station, 0 <= station_index < s. [-]
     pair : tuple of str
         Component names, e.g. ``("Vy", "Mz")``.
 
@@ -166,13 +167,13 @@ def hull_vertices(points):
     ----------
     points : ndarray, shape (n, 2)
         Distinct points, n >= 1, of a size about 1 (the loads scaled by their largest
-        magnitude).
+        magnitude). [-]
 
     Returns
     -------
     ndarray of int
         The vertices; the two ends alone when every point is on one line (within
-        :data:`HULL_TOLERANCE`), the one point when n = 1.
+        :data:`HULL_TOLERANCE`), the one point when n = 1. [-]
     """
     order = np.lexsort((points[:, 1], points[:, 0]))
     start, end = int(order[0]), int(order[-1])

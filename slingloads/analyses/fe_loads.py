@@ -119,12 +119,12 @@ class ModelAxes:
         Parameters
         ----------
         vectors : array_like, shape (..., 3)
-            Project axes, any unit.
+            Project axes, any unit. [any unit]
 
         Returns
         -------
         ndarray, shape (..., 3)
-            The same unit.
+            Model components. [unit of ``vectors``]
         """
         return np.asarray(vectors, float) @ self.rotation.T
 
@@ -139,7 +139,7 @@ class ModelAxes:
         Returns
         -------
         ndarray, shape (..., 3, 3)
-            The same unit.
+            Model components. [unit of ``tensors``]
         """
         return self.rotation @ np.asarray(tensors, float) @ self.rotation.T
 

@@ -81,6 +81,7 @@ class HookLoadOptions:
         does not replace (fore and aft; CS 29.865: 30 deg), 0 <= angle < 90 deg. [rad]
     n_azimuth : int
         Number of off-vertical directions, evenly spread in azimuth (0 for the vertical alone).
+        [count]
     include_vertical : bool
         Include the direction along the earth vertical (id ``VERTICAL``).
     lateral_angle : float, optional

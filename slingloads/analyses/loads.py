@@ -217,6 +217,7 @@ class DynamicsCases:
         Returns
         -------
         dict of str to ndarray, shape (3,)
+            Unit vectors by case name. [-]
         """
         t, p = self.line_theta, self.line_psi
         e = np.column_stack([np.cos(t) * np.cos(p), np.sin(p), np.sin(t) * np.cos(p)])
@@ -334,6 +335,7 @@ class LoadsStudy:
         lateral_angle_deg : float, optional
             Inclination of the lateral directions, in [0, 90). [deg]
         n_azimuth : int, optional
+            Azimuths of the hook's load directions. [count]
         include_vertical, towed : bool, optional
         cone : {"lateral directions", "elliptical"}, optional
 
@@ -391,7 +393,7 @@ class LoadsStudy:
         Parameters
         ----------
         station : str or int
-            Id or index of the station.
+            Id or index of the station. [-]
         x : float, optional
             Its new x. [m]
         station_id : str, optional
@@ -1004,7 +1006,7 @@ class LoadsResult:
         Parameters
         ----------
         station : str or int or sequence of them, optional
-            Station id(s) or index(es) to keep (default: every station).
+            Station id(s) or index(es) to keep (default: every station). [-]
         component : str or sequence of str, optional
             Component(s) to keep, ``"Vx"`` ... ``"Mz"`` (default: all six).
         bound : {"max", "min"}, optional
@@ -1071,7 +1073,7 @@ class LoadsResult:
         Parameters
         ----------
         station : str or int
-            Id or index of a cut station.
+            Id or index of a cut station. [-]
         pair : (str, str)
             Two components of ``Vx, Vy, Vz, Mx, My, Mz``.
 
@@ -1132,12 +1134,12 @@ class LoadsResult:
         Parameters
         ----------
         station : str or int
-            Id or index of a cut station.
+            Id or index of a cut station. [-]
 
         Returns
         -------
         int
-            Its index in :attr:`stations` (the result's second axis).
+            Its index in :attr:`stations` (the result's second axis). [-]
 
         Raises
         ------

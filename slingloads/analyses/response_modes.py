@@ -63,7 +63,7 @@ class IdentifiedMode:
     damping_ratio : float
         NaN when none was identified. [-]
     amplitude : float
-        Initial amplitude of the component (the signal's unit), NaN when none.
+        Initial amplitude of the component (the signal's unit), NaN when none. [unit of the signal]
     reason : str
         "" when identified, else why not.
     components : tuple of tuple of float
@@ -91,7 +91,7 @@ def components(time, y):
     time : array_like, shape (n,)
         Uniform sample times. [s]
     y : array_like, shape (n,)
-        Finite samples (any unit).
+        Finite samples. [any unit]
 
     Returns
     -------
@@ -100,6 +100,7 @@ def components(time, y):
     residues : ndarray of complex, shape (m,)
         :math:`h_i`, such that ``y(t) ~ sum h_i exp(s_i (t - t0))`` (the signal's unit; of
         the block-averaged signal when the record is longer than :data:`MAX_SAMPLES`).
+        [unit of ``y``]
     """
     time = np.asarray(time, float)
     y = np.asarray(y, float)

@@ -188,7 +188,7 @@ def free_free_internal_loads(mass_items, positions, forces, moments, station_poi
         Earth's upward vertical in airframe axes, along which gravity acts downwards (the
         attitude's, :mod:`slingloads.models.attitude`). [-]
     out : ndarray, shape (c, s, 6), optional
-        C-contiguous float array to write the loads into (instead of a new one).
+        C-contiguous float array to write the loads into (instead of a new one). [N, N m]
 
     Returns
     -------

@@ -113,11 +113,11 @@ def free_free_rows(basis, forces, moments, has_moments, order, arm, count, x, ri
     forces, moments : ndarray, shape (c, p, 3)
         Applied forces [N] and moments [N m] (``moments`` unread unless ``has_moments``).
     order : ndarray, shape (p,)
-        The load points sorted by x.
+        The load points sorted by x. [-]
     arm : ndarray, shape (p, 3)
         Sorted load points relative to the axis point (0, y0, z0). [m]
     count : ndarray, shape (s + 1,)
-        Number of sorted load points forward of (or at) each cut.
+        Number of sorted load points forward of (or at) each cut. [count]
     x : ndarray, shape (s + 1,)
         x of each cut. [m]
     rigid : ndarray, shape (19,)

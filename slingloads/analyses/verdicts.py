@@ -196,7 +196,7 @@ class Envelope:
         Parameters
         ----------
         j : int
-            Index of the run.
+            Index of the run. [-]
         what : str
             The signal tested, as the sentence names it.
 

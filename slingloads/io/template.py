@@ -176,7 +176,7 @@ def _study_sheet(ws, parameters):
         for p in section.parameters:
             value, unit = parameters.get(p.name, (p.default, p.unit))
             _text(ws.cell(row, 1), p.name)
-            _text(ws.cell(row, 2), _plain(value))
+            _text(ws.cell(row, 2), _input_cell(value))
             _text(ws.cell(row, 3), unit)
             _text(ws.cell(row, 4), f"[{section.name}] {p.help}{_limit_text(p)}")
             row += 1
@@ -197,7 +197,7 @@ def _table_sheet(ws, spec, frame):
     if frame is not None:
         for r, values in enumerate(frame.itertuples(index=False), start=2):
             for col, value in enumerate(values, start=1):
-                _text(ws.cell(r, col), _plain(value))
+                _text(ws.cell(r, col), _input_cell(value))
     ws.freeze_panes = "A2"
 
 
@@ -235,11 +235,13 @@ def _limit_text(spec):
     return f" Allowed: {bounds.text(unit=unit if spec.kind != INTEGER else '')}."
 
 
-def _plain(value):
+def _input_cell(value):
+    """``value`` as an input workbook's cell holds it, as a user would type it: numpy numbers
+    as Python numbers, a flag as the sheets' ``yes``/``no``, anything else as it is (unlike the
+    report writer's :func:`~slingloads.io.common.excel_cells.cell_value`, which also writes NaN
+    as an empty cell and an infinity as text)."""
     if isinstance(value, (np.floating, np.integer)):
         return value.item()
-    if isinstance(value, np.bool_):
-        return "yes" if value else "no"
-    if isinstance(value, bool):
+    if isinstance(value, (bool, np.bool_)):
         return "yes" if value else "no"
     return value

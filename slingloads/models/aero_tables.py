@@ -66,7 +66,7 @@ class Table1D:
     angle : array_like, shape (n,)
         Strictly increasing breakpoints. [rad]
     coefficients : dict of str to array_like, shape (n,)
-        One array of dimensionless coefficients per name.
+        One array of dimensionless coefficients per name. [-]
     angle_name : str
         ``"alpha"`` or ``"beta"``, used in messages.
     what : str
@@ -145,7 +145,7 @@ class Table2D:
     beta : array_like, shape (nb,)
         Strictly increasing sideslip breakpoints. [rad]
     coefficients : dict of str to array_like, shape (na, nb)
-        Dimensionless coefficients on the grid.
+        Dimensionless coefficients on the grid. [-]
     what : str
         What the table describes, used in messages.
     """
@@ -297,17 +297,18 @@ def bilinear(x, y, values, xq, yq):
     Parameters
     ----------
     x : ndarray, shape (nx,)
-        Strictly increasing breakpoints, nx >= 2.
+        Strictly increasing breakpoints, nx >= 2. [any unit]
     y : ndarray, shape (ny,)
-        Strictly increasing breakpoints, ny >= 2.
+        Strictly increasing breakpoints, ny >= 2. [any unit]
     values : ndarray, shape (nx, ny)
+        Values on the grid. [any unit]
     xq, yq : ndarray
-        Query points, same shape, inside the grid.
+        Query points, same shape, inside the grid. [units of ``x``, ``y``]
 
     Returns
     -------
     ndarray
-        Interpolated values, the shape of ``xq``.
+        Interpolated values, the shape of ``xq``. [unit of ``values``]
     """
     i, t = _cell(x, xq)
     j, u = _cell(y, yq)

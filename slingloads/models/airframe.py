@@ -141,7 +141,7 @@ class MassItems:
         Returns
         -------
         int
-            Its row in ``mass``, ``position`` and ``inertia``.
+            Its row in ``mass``, ``position`` and ``inertia``. [-]
 
         Raises
         ------
@@ -477,12 +477,12 @@ class Airframe:
         Parameters
         ----------
         station : str or int
-            Id or index of a cut station.
+            Id or index of a cut station. [-]
 
         Returns
         -------
         int
-            Its index in ``stations``.
+            Its index in ``stations``. [-]
 
         Raises
         ------
@@ -506,7 +506,7 @@ class Airframe:
         Parameters
         ----------
         station : str or int
-            Id or index of the station.
+            Id or index of the station. [-]
         x : float, optional
             Its new x. [m]
         station_id : str, optional

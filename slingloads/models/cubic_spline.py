@@ -23,9 +23,9 @@ class PiecewiseCubic:
     ----------
     c : ndarray, shape (k, m)
         Coefficients of the m pieces, highest power first: piece i is
-        ``sum(c[j, i] * (x - x[i]) ** (k - 1 - j))``.
+        ``sum(c[j, i] * (x - x[i]) ** (k - 1 - j))``. [unit of y / unit of x^power]
     x : ndarray, shape (m + 1,)
-        Breakpoints, strictly increasing.
+        Breakpoints, strictly increasing. [any unit]
 
     Outside ``[x[0], x[-1]]`` the first and last pieces are extrapolated; at a breakpoint
     the piece that starts there is used (the last piece at ``x[-1]``).
@@ -52,7 +52,7 @@ class PiecewiseCubic:
         Parameters
         ----------
         nu : int
-            Order of the derivative, >= 1.
+            Order of the derivative, >= 1. [-]
 
         Returns
         -------
@@ -75,9 +75,9 @@ def natural_cubic_spline(x, y):
     Parameters
     ----------
     x : array_like, shape (n,)
-        Abscissae, strictly increasing (n >= 2; the caller checks).
+        Abscissae, strictly increasing (n >= 2; the caller checks). [any unit]
     y : array_like, shape (n,)
-        Values.
+        Values. [any unit]
 
     Returns
     -------

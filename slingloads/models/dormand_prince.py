@@ -83,15 +83,15 @@ def stage(x, h, K, i, acc, out):
     Parameters
     ----------
     x : ndarray, shape (n,)
-        State at the step's start.
+        State at the step's start. [units of the state]
     h : float
         Step. [s]
     K : ndarray, shape (7, n)
-        Stage derivatives, rows 0 to i - 1 filled.
+        Stage derivatives, rows 0 to i - 1 filled. [units of the state / s]
     i : int
-        Stage, 1 to 6 (6: the fifth-order solution).
+        Stage, 1 to 6 (6: the fifth-order solution). [-]
     acc, out : ndarray, shape (n,)
-        Work array; receives the argument.
+        Work array; receives the argument. [units of the state]
     """
     n = x.size
     for m in range(n):
@@ -111,15 +111,15 @@ def error_norm(x, x_new, K, h, rtol, atol, acc):
     Parameters
     ----------
     x, x_new : ndarray, shape (n,)
-        States at the step's start and end (fifth order).
+        States at the step's start and end (fifth order). [units of the state]
     K : ndarray, shape (7, n)
-        The seven stage derivatives.
+        The seven stage derivatives. [units of the state / s]
     h : float
         Step. [s]
     rtol, atol : float
         Relative [-] and absolute (units of the states) tolerances.
     acc : ndarray, shape (n,)
-        Work array.
+        Work array. [units of the state]
 
     Returns
     -------
@@ -186,17 +186,17 @@ def dense(x, K, h, theta, weights, acc, out):
     Parameters
     ----------
     x : ndarray, shape (n,)
-        State at the step's start.
+        State at the step's start. [units of the state]
     K : ndarray, shape (7, n)
-        The seven stage derivatives of the step.
+        The seven stage derivatives of the step. [units of the state / s]
     h : float
         Step. [s]
     theta : float
         Fraction of the step, 0 to 1. [-]
     weights : ndarray, shape (7,)
-        Work array.
+        Work array. [s]
     acc, out : ndarray, shape (n,)
-        Work array; receives the state.
+        Work array; receives the state. [units of the state]
     """
     n = x.size
     for i in range(7):

@@ -484,11 +484,11 @@ class DrydenTurbulence:
     duration : float
         > 0. [s]
     seed : int
-        Seed of the realisation (numpy ``default_rng``).
+        Seed of the realisation (numpy ``default_rng``). [-]
     components : int
-        Number of sinusoids, >= 16.
+        Number of sinusoids, >= 16. [count]
     band : (float, float)
-        Reduced-frequency range (x = L_v omega / V) covered, 0 < low < high.
+        Reduced-frequency range (x = L_v omega / V) covered, 0 < low < high. [-]
     """
 
     intensity: float

@@ -270,7 +270,7 @@ class HookTrajectory:
         motion : object
             A one-dimensional motion with ``kinematics(t)`` and ``describe()``.
         direction : str or array_like, shape (3,)
-            ``"X"``, ``"-X"``, ``"Y"``... or a vector (normalised), earth axes.
+            ``"X"``, ``"-X"``, ``"Y"``... or a vector (normalised), earth axes. [-]
         from_hover : bool
             The run starts trimmed in hover.
         name : str, optional

@@ -66,6 +66,7 @@ class SolverSettings:
         solve_ivp relative tolerance, > 0. [-]
     atol : float
         solve_ivp absolute tolerance, > 0 (in the units of the states: rad, m, rad/s, m/s).
+        [rad, m, rad/s, m/s]
     max_step : float
         Largest solve_ivp step, > 0 (inf: no limit). [s]
 
@@ -126,9 +127,9 @@ class SolverSettings:
         Returns
         -------
         n_steps : int
-            t_end / step.
+            t_end / step. [count]
         output_every : int
-            output_interval / step.
+            output_interval / step. [count]
 
         Raises
         ------

@@ -18,6 +18,10 @@ def drop_stale_cache(folder, also=()):
     """Delete the numba cache files of ``folder`` if its sources, or the files ``also`` that
     its kernels depend on, changed since the cache was made.
 
+    Each set ``also`` has its own stamp, so that two modules of one folder whose kernels
+    depend on different files each see their own change (and do not drop each other's cache
+    at every import).
+
     Parameters
     ----------
     folder : path-like
@@ -38,6 +42,9 @@ def drop_stale_cache(folder, also=()):
         digest.update(path.read_bytes())
     cache = folder / "__pycache__"
     stamp = cache / _STAMP
+    if also:
+        names = "\n".join(sorted(Path(a).name for a in also)).encode()
+        stamp = cache / f"kernel-sources-{hashlib.sha256(names).hexdigest()[:12]}.sha256"
     try:
         if stamp.exists() and stamp.read_text() == digest.hexdigest():
             return False

@@ -51,6 +51,13 @@ from slingloads.errors import InputError
 #: Names of the states of each cable model, in order.
 RIGID_STATES = ("theta1", "theta2", "theta1_dot", "theta2_dot")
 ELASTIC_STATES = ("ry", "rz", "theta2", "ry_dot", "rz_dot", "theta2_dot")
+#: Offsets of the rigid rope's states in :data:`RIGID_STATES` (code indexes ``x[R_THETA1]``,
+#: never ``x[0]``).
+R_THETA1, R_THETA2, R_THETA1_DOT, R_THETA2_DOT = (
+    RIGID_STATES.index(n) for n in ("theta1", "theta2", "theta1_dot", "theta2_dot"))
+#: Offsets of the elastic cable's states in :data:`ELASTIC_STATES`.
+E_RY, E_RZ, E_THETA2, E_RY_DOT, E_RZ_DOT, E_THETA2_DOT = (
+    ELASTIC_STATES.index(n) for n in ("ry", "rz", "theta2", "ry_dot", "rz_dot", "theta2_dot"))
 
 
 @dataclass(frozen=True)
@@ -204,6 +211,8 @@ class LateralPendulum:
         Returns
         -------
         ndarray, shape (4,) or (6,)
+            State: theta1, theta2 [rad] and their rates [rad/s] (rigid rope), or ry, rz [m], theta2
+            [rad] and their rates [m/s, m/s, rad/s] (elastic cable).
         """
         if self.rigid:
             return np.array([0.0, 0.0, -velocity_jump / self.rope_length, 0.0])
@@ -375,7 +384,7 @@ def rigid_rope_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffness=
     Returns
     -------
     dx : ndarray, shape (4, ...)
-        State derivative.
+        State derivative. [rad/s, rad/s, rad/s^2, rad/s^2]
     tension : ndarray
         Rope tension T, negative where the rope would go slack. [N]
     """
@@ -464,6 +473,7 @@ def elastic_cable_derivatives(x, s_vel, s_acc, mass, inertia, e, length, stiffne
     Returns
     -------
     dx : ndarray, shape (6, ...)
+        State derivative. [m/s, m/s, rad/s, m/s^2, m/s^2, rad/s^2]
     tension : ndarray
         Cable tension, >= 0. [N]
     """
@@ -528,7 +538,7 @@ def rope_angle(x, rigid):
         [rad]
     """
     x = np.asarray(x)
-    return x[0] if rigid else np.arctan2(x[0], -x[1])
+    return x[R_THETA1] if rigid else np.arctan2(x[E_RY], -x[E_RZ])
 
 
 def airframe_angle(x, rigid):
@@ -550,7 +560,7 @@ def airframe_angle(x, rigid):
         [rad]
     """
     x = np.asarray(x)
-    return x[1] if rigid else x[2]
+    return x[R_THETA2] if rigid else x[E_THETA2]
 
 
 def load_angle(theta1, theta2):

@@ -52,6 +52,24 @@ _parallel_jit = numba.njit(cache=True, fastmath=False, nogil=True, parallel=True
 #: Chunks of runs of the adaptive kernel, each run j in chunk j mod CHUNKS.
 CHUNKS = 64
 
+#: The state of a run, in order: yaw psi [rad] and yaw rate r [rad/s]; its offsets (the
+#: kernels index ``x[X_PSI]``, never ``x[0]``).
+STATES = ("psi", "rate")
+N_STATES = len(STATES)
+X_PSI, X_RATE = STATES.index("psi"), STATES.index("rate")
+#: Channels of the relative wind (the RK4 kernel's ``wind[..., channel]`` and the adaptive
+#: kernel's work pair): wind angle gamma [rad] and relative speed [m/s].
+WIND = ("gamma", "v_rel")
+N_WIND = len(WIND)
+W_GAMMA, W_V_REL = WIND.index("gamma"), WIND.index("v_rel")
+#: Columns of a gust piece's coefficients ``p_coef[g, piece]`` (:func:`gust_value`): c0 [m/s],
+#: c1 [m/s^2], ref [s].
+PIECE = ("c0", "c1", "ref")
+P_C0, P_C1, P_REF = (PIECE.index(n) for n in ("c0", "c1", "ref"))
+#: Columns of a harmonic term ``harm[k]``: amplitude [m/s], omega [rad/s], phase [rad].
+HARMONIC = ("amplitude", "omega", "phase")
+H_AMPLITUDE, H_OMEGA, H_PHASE = (HARMONIC.index(n) for n in ("amplitude", "omega", "phase"))
+
 
 @_jit
 def interp(x, xp, fp, slope, lo):
@@ -64,20 +82,20 @@ def interp(x, xp, fp, slope, lo):
     Parameters
     ----------
     x : float
-        Where to interpolate (units of ``xp``).
+        Where to interpolate. [unit of ``xp``]
     xp, fp : ndarray, shape (n,)
-        Breakpoints (increasing) and values.
+        Breakpoints (increasing) and values. [any unit]
     slope : ndarray, shape (n - 1,)
-        Slopes of the segments (units of ``fp`` per unit of ``xp``).
+        Slopes of the segments. [unit of ``fp`` / unit of ``xp``]
     lo : int
-        Interval found last.
+        Interval found last. [-]
 
     Returns
     -------
     value : float
-        Units of ``fp``.
+        Interpolated value. [unit of ``fp``]
     lo : int
-        Interval used.
+        Interval used. [-]
     """
     n = xp.size
     if x != x:
@@ -123,11 +141,12 @@ def yaw_acceleration(psi, rate, gamma, v_rel, area, M, fus_x, fus_n, fus_s, fin_
     area : float
         Parachute flat-plate area. [m^2]
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`). [SI]
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
+        [rad], [m^3], [m^3/rad], [rad], [m^2], [m^2/rad]
     lo : ndarray of int64, shape (2,)
-        Fuselage and fin table intervals found last, updated.
+        Fuselage and fin table intervals found last, updated. [-]
 
     Returns
     -------
@@ -147,10 +166,11 @@ def _rhs(x, wind, i, stage, args, dx):
     ``wind[i, stage]`` = (gamma [rad], relative speed [m/s]); ``args`` = (area, M, tables...,
     ``lo``: the table intervals found last, updated). Returns True outside a table."""
     area, M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo = args
-    acc, outside = yaw_acceleration(x[0], x[1], wind[i, stage, 0], wind[i, stage, 1], area, M,
-                                    fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo)
-    dx[0] = x[1]
-    dx[1] = acc
+    acc, outside = yaw_acceleration(x[X_PSI], x[X_RATE], wind[i, stage, W_GAMMA],
+                                    wind[i, stage, W_V_REL], area, M, fus_x, fus_n, fus_s,
+                                    fin_x, fin_k, fin_s, lo)
+    dx[X_PSI] = x[X_RATE]
+    dx[X_RATE] = acc
     return outside
 
 
@@ -169,35 +189,38 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fu
     areas : ndarray, shape (runs,)
         Parachute flat-plate areas. [m^2]
     index : ndarray of int, shape (runs,)
-        Each run's distinct gust.
-    wind : ndarray, shape (gusts, steps, 3, 2)
-        Wind angle gamma [rad] and relative speed [m/s] of each distinct gust at the start,
-        middle and end of every step.
+        Each run's distinct gust. [-]
+    wind : ndarray, shape (gusts, steps, 3, N_WIND)
+        Wind angle gamma [rad] and relative speed [m/s] (channels :data:`WIND`) of each
+        distinct gust at the start, middle and end of every step.
     step : ndarray, shape (steps,)
         Step lengths. [s]
     stored : ndarray of bool, shape (steps + 1,)
         True at the output nodes.
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`). [SI]
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
+        [rad], [m^3], [m^3/rad], [rad], [m^2], [m^2/rad]
     out_psi, out_rate : ndarray, shape (runs, outputs)
         Receive the histories. [rad], [rad/s]
     left, exit_step : ndarray, shape (runs,)
         Receive whether and in which step a run left a table (its state is then frozen at
-        the start of that step, its rate set to zero).
+        the start of that step, its rate set to zero). [-]
     """
     runs = psi0.size
     n_steps = step.size
     for j in numba.prange(runs):
-        x = np.empty(2)
-        new = np.empty(2)
-        k1, k2, k3, k4, tmp = np.empty(2), np.empty(2), np.empty(2), np.empty(2), np.empty(2)
+        x = np.empty(N_STATES)
+        new = np.empty(N_STATES)
+        k1, k2, k3, k4 = np.empty(N_STATES), np.empty(N_STATES), np.empty(N_STATES), np.empty(
+            N_STATES)
+        tmp = np.empty(N_STATES)
         lo = np.zeros(2, dtype=np.int64)
         w = wind[index[j]]
         args = (areas[j], M, fus_x, fus_n, fus_s, fin_x, fin_k, fin_s, lo)
-        x[0], x[1] = psi0[j], rate0[j]
-        out_psi[j, 0], out_rate[j, 0] = x[0], x[1]
+        x[X_PSI], x[X_RATE] = psi0[j], rate0[j]
+        out_psi[j, 0], out_rate[j, 0] = x[X_PSI], x[X_RATE]
         gone = False
         k_out = 1
         for i in range(n_steps):
@@ -208,12 +231,12 @@ def rk4_batch(psi0, rate0, areas, index, wind, step, stored, M, fus_x, fus_n, fu
                     gone = True
                     left[j] = True
                     exit_step[j] = i
-                    x[1] = 0.0
+                    x[X_RATE] = 0.0
                 else:
-                    x[0], x[1] = new[0], new[1]
+                    x[X_PSI], x[X_RATE] = new[X_PSI], new[X_RATE]
             if stored[i + 1]:
-                out_psi[j, k_out] = x[0]
-                out_rate[j, k_out] = x[1]
+                out_psi[j, k_out] = x[X_PSI]
+                out_rate[j, k_out] = x[X_RATE]
                 k_out += 1
 
 
@@ -233,9 +256,9 @@ def gust_value(t, start, c0, c1, ref, first, count, harm):
     ref : float
         Time origin of the harmonic terms. [s]
     first, count : int
-        Rows of ``harm`` of the piece's harmonic terms.
+        Rows of ``harm`` of the piece's harmonic terms. [-], [count]
     harm : ndarray, shape (terms, 3)
-        Amplitude [m/s], omega [rad/s], phase [rad].
+        Amplitude [m/s], omega [rad/s], phase [rad] (columns :data:`HARMONIC`).
 
     Returns
     -------
@@ -244,7 +267,7 @@ def gust_value(t, start, c0, c1, ref, first, count, harm):
     """
     v = c0 + c1 * (t - start)
     for k in range(first, first + count):
-        v += harm[k, 0] * math.cos(harm[k, 1] * (t - ref) + harm[k, 2])
+        v += harm[k, H_AMPLITUDE] * math.cos(harm[k, H_OMEGA] * (t - ref) + harm[k, H_PHASE])
     return v
 
 
@@ -280,23 +303,23 @@ def _dopri_rhs(phase, t, s, k, y, args, dx):
     (j, g, area, seg_piece, p_start, p_coef, h_off, h_count, harm, M, fus_x, fus_n, fus_s,
      fin_x, fin_k, fin_s, lo, wind, out_psi, out_rate) = args
     if phase == SAMPLE:
-        out_psi[j, k] = y[0]
-        out_rate[j, k] = y[1]
+        out_psi[j, k] = y[X_PSI]
+        out_rate[j, k] = y[X_RATE]
         return 0
     piece = seg_piece[g, s]
-    c0, c1, count = p_coef[g, piece, 0], p_coef[g, piece, 1], h_count[g, piece]
+    c0, c1, count = p_coef[g, piece, P_C0], p_coef[g, piece, P_C1], h_count[g, piece]
     if c1 == 0.0 and count == 0:  # steady: the relative wind of the segment
         if phase == 0:
-            wind[0], wind[1] = relative_wind(c0, M[TAS])
-        gamma, v_rel = wind[0], wind[1]
+            wind[W_GAMMA], wind[W_V_REL] = relative_wind(c0, M[TAS])
+        gamma, v_rel = wind[W_GAMMA], wind[W_V_REL]
     else:
         gamma, v_rel = relative_wind(
-            gust_value(t, p_start[g, piece], c0, c1, p_coef[g, piece, 2], h_off[g, piece],
+            gust_value(t, p_start[g, piece], c0, c1, p_coef[g, piece, P_REF], h_off[g, piece],
                        count, harm), M[TAS])
-    rate_dot, outside = yaw_acceleration(y[0], y[1], gamma, v_rel, area, M, fus_x, fus_n,
-                                         fus_s, fin_x, fin_k, fin_s, lo)
-    dx[0] = y[1]
-    dx[1] = rate_dot
+    rate_dot, outside = yaw_acceleration(y[X_PSI], y[X_RATE], gamma, v_rel, area, M, fus_x,
+                                         fus_n, fus_s, fin_x, fin_k, fin_s, lo)
+    dx[X_PSI] = y[X_RATE]
+    dx[X_RATE] = rate_dot
     return 1 if outside else 0
 
 
@@ -316,11 +339,11 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
     """Run ``j`` of :func:`dopri_batch` (same arguments)."""
     n_out = out_psi.shape[1]
     g = index[j]
-    x = np.empty(2)
-    x[0], x[1] = psi0[j], rate0[j]
+    x = np.empty(N_STATES)
+    x[X_PSI], x[X_RATE] = psi0[j], rate0[j]
     args = (j, g, areas[j], seg_piece, p_start, p_coef, h_off, h_count, harm, M, fus_x, fus_n,
-            fus_s, fin_x, fin_k, fin_s, np.zeros(2, dtype=np.int64), np.empty(2), out_psi,
-            out_rate)
+            fus_s, fin_x, fin_k, fin_s, np.zeros(2, dtype=np.int64), np.empty(N_WIND),
+            out_psi, out_rate)
     status, _, t, accepted, sample = _dopri_loop(x, seg_end[g], n_seg[g], interval, n_out, 0.0,
                                                  rtol, atol, max_step, first_step, max_steps,
                                                  stop, args)
@@ -330,10 +353,10 @@ def _dopri_run(j, psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start,
     if status == LEFT:  # frozen from then
         left[j] = True
         exit_time[j] = t
-        x[1] = 0.0
+        x[X_RATE] = 0.0
     for k in range(sample, n_out):
-        out_psi[j, k] = x[0]
-        out_rate[j, k] = x[1]
+        out_psi[j, k] = x[X_PSI]
+        out_rate[j, k] = x[X_RATE]
     steps[j] = accepted
 
 
@@ -362,21 +385,23 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     areas : ndarray, shape (runs,)
         Parachute flat-plate areas. [m^2]
     index : ndarray of int, shape (runs,)
-        Each run's distinct gust.
+        Each run's distinct gust. [-]
     seg_end : ndarray, shape (gusts, segments)
         Ends of the segments. [s]
     seg_piece : ndarray of int, shape (gusts, segments)
-        Piece of each segment.
+        Piece of each segment. [-]
     n_seg : ndarray of int, shape (gusts,)
-        Segments of each gust.
+        Segments of each gust. [count]
     p_start : ndarray, shape (gusts, pieces)
         Start of each piece. [s]
     p_coef : ndarray, shape (gusts, pieces, 3)
-        c0 [m/s], c1 [m/s^2], ref [s] of each piece (:func:`gust_value`).
+        c0 [m/s], c1 [m/s^2], ref [s] of each piece (columns :data:`PIECE`,
+        :func:`gust_value`).
     h_off, h_count : ndarray of int, shape (gusts, pieces)
-        First row and number of the piece's harmonic terms in ``harm``.
+        First row and number of the piece's harmonic terms in ``harm``. [-], [count]
     harm : ndarray, shape (terms, 3)
-        Amplitude [m/s], omega [rad/s], phase [rad] of the harmonic terms.
+        Amplitude [m/s], omega [rad/s], phase [rad] of the harmonic terms (columns
+        :data:`HARMONIC`).
     interval : float
         Output interval, from t = 0 (dense output). [s]
     rtol, atol : float
@@ -384,19 +409,20 @@ def dopri_batch(psi0, rate0, areas, index, seg_end, seg_piece, n_seg, p_start, p
     max_step, first_step : float
         Largest step and first trial step. [s]
     max_steps : int
-        Steps a run may try.
+        Steps a run may try. [count]
     stop : ndarray of int64, shape (1,)
-        0 on entry; set to 1 when a run runs over ``max_steps``.
+        0 on entry; set to 1 when a run runs over ``max_steps``. [-]
     M : ndarray, shape (N_MODEL,)
-        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`).
+        Model row (:data:`slingloads.models.yaw_dynamics.LAYOUT`). [SI]
     fus_x, fus_n, fus_s, fin_x, fin_k, fin_s : ndarray
         Fuselage and fin tables and the slopes of their segments (module notes).
+        [rad], [m^3], [m^3/rad], [rad], [m^2], [m^2/rad]
     out_psi, out_rate : ndarray, shape (runs, outputs)
         Receive the histories. [rad], [rad/s]
     left, exit_time : ndarray, shape (runs,)
         Receive whether and when [s] a run left a table.
     steps : ndarray of int, shape (runs,)
-        Receive the accepted steps of each run.
+        Receive the accepted steps of each run. [count]
     """
     # runs spread over the chunks (run j in chunk j mod CHUNKS): the chunks, shared out in
     # order among the threads, then carry like mixes of cheap and costly runs

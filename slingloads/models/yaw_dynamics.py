@@ -700,18 +700,17 @@ def integrate_rk4(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     times = settings.output_times()
     nodes, stored = _time_nodes(settings, unique)
     start, step = nodes[:-1], np.diff(nodes)
-    tables = []
-    # gust at the start (after a jump there), middle and end (just before a jump) of each step
-    for when in (start, start + 0.5 * step, nodes[1:] - 1e-9 * step):
+    # the relative wind (channels yaw_batch.WIND) of each distinct gust at the start (after a
+    # jump there), middle and end (just before a jump) of each step: (gusts, steps, 3, N_WIND)
+    wind = np.empty((len(unique), step.size, 3, yaw_batch.N_WIND))
+    for stage, when in enumerate((start, start + 0.5 * step, nodes[1:] - 1e-9 * step)):
         v = np.stack([g.velocity(when) for g in unique])  # (unique, steps)
         gamma, v_rel = model.relative_wind(v)
-        tables.append((gamma.T.copy(), v_rel.T.copy()))  # (steps, unique)
+        wind[:, :, stage, yaw_batch.W_GAMMA] = gamma
+        wind[:, :, stage, yaw_batch.W_V_REL] = v_rel
     out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))
     left = np.zeros(runs, dtype=bool)
     exit_step = np.zeros(runs, dtype=np.int64)
-    # (steps, gusts, 3, 2) -> (gusts, steps, 3, 2)
-    wind = np.stack([np.stack(pair, axis=-1) for pair in tables], axis=-2)
-    wind = np.ascontiguousarray(wind.transpose(1, 0, 2, 3))
     yaw_batch.rk4_batch(psi, rate, areas, index, wind, step, stored, *model.arrays(),
                         out_psi, out_rate, left, exit_step)
     exit_time = np.where(left, start[exit_step], np.nan)
@@ -776,17 +775,22 @@ def integrate_dopri(model, areas, gusts, psi0=0.0, rate0=0.0, settings=None):
     n_seg = np.array([len(e) for e, _ in segments], dtype=np.int64)
     width = max(len(p) for p in pieces)
     p_start = np.full((len(unique), width), np.inf)
-    p_coef = np.zeros((len(unique), width, 3))
+    p_coef = np.zeros((len(unique), width, len(yaw_batch.PIECE)))
     h_off = np.zeros((len(unique), width), dtype=np.int64)
     h_count = np.zeros((len(unique), width), dtype=np.int64)
-    harm = [np.zeros((0, 3))]
+    # the columns of the tables by their names (yaw_batch.PIECE, yaw_batch.HARMONIC)
+    piece_columns = [yaw_batch.P_C0, yaw_batch.P_C1, yaw_batch.P_REF]
+    term_columns = [yaw_batch.H_AMPLITUDE, yaw_batch.H_OMEGA, yaw_batch.H_PHASE]
+    harm = [np.zeros((0, len(yaw_batch.HARMONIC)))]
     rows = 0
     for g, gust_pieces in enumerate(pieces):
         for k, (start, c0, c1, ref, terms) in enumerate(gust_pieces):
             p_start[g, k] = start
-            p_coef[g, k] = c0, c1, ref
+            p_coef[g, k, piece_columns] = c0, c1, ref
             h_off[g, k], h_count[g, k] = rows, len(terms)
-            harm.append(np.asarray(terms, dtype=float).reshape(-1, 3))
+            block = np.empty((len(terms), len(yaw_batch.HARMONIC)))
+            block[:, term_columns] = np.asarray(terms, dtype=float).reshape(-1, 3)
+            harm.append(block)
             rows += len(terms)
     harm = np.ascontiguousarray(np.concatenate(harm))
     out_psi, out_rate = np.empty((runs, times.size)), np.empty((runs, times.size))

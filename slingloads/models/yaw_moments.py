@@ -112,7 +112,7 @@ def weight_moment(psi, M):
     psi : float or ndarray
         Yaw, nose right positive. [rad]
     M : ndarray, shape (N_MODEL,)
-        The model row (:data:`LAYOUT`).
+        The model row (:data:`LAYOUT`). [SI]
 
     Returns
     -------

@@ -124,7 +124,9 @@ def where_stated(cache_dir):
     return choice, why
 
 
-def _plain(value):
+def _json_scalar(value):
+    """A metric's value as JSON writes it: a numpy scalar as the Python one (``json`` knows no
+    ``numpy.int64`` nor ``numpy.bool_``), anything else as it is."""
     if isinstance(value, np.generic):
         return value.item()
     return value
@@ -158,7 +160,7 @@ class RunCache:
     warnings : list of str
         What the cache could not use (a damaged entry, an unusable folder), for the report.
     written : int
-        Runs stored on disk by this object.
+        Runs stored on disk by this object. [count]
     usable : bool
         False once the cache has fallen back to memory.
     """
@@ -407,7 +409,7 @@ class RunCache:
         import pyarrow.parquet as pq
 
         metrics, histories = record
-        text = json.dumps({k: _plain(v) for k, v in metrics.items()})
+        text = json.dumps({k: _json_scalar(v) for k, v in metrics.items()})
         arrays = [pa.array(np.ascontiguousarray(histories[:, j], dtype=float))
                   for j in range(len(HISTORY_LABELS))]
         table = pa.Table.from_arrays(arrays, names=list(HISTORY_LABELS))

@@ -20,7 +20,7 @@ class CampaignInputs:
     scheduler : str
         Dask scheduler address ('' for local execution).
     workers : int or None
-        Local worker processes (None: automatic).
+        Local worker processes (None: automatic). [count]
     timeout : float
         Scheduler time-out. [s]
     loads_from_dynamics : bool

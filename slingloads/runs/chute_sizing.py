@@ -165,7 +165,7 @@ class ChuteSizingReport:
         -------
         list of int
             Indices (0-based, sorted) of the runs at the swept areas nearest the smallest,
-            the recommended and the largest factor.
+            the recommended and the largest factor. [-]
         """
         if self.sweep is None:
             return []

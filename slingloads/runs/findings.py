@@ -54,11 +54,11 @@ class Finding:
     answer : str
         The verdict in words (``"not run"`` when no analysis answers it).
     value : float
-        The number the answer rests on (NaN when none), in ``unit``.
+        The number the answer rests on (NaN when none). [``unit``]
     unit : str
         ``"deg"``, ``"m^2"``, ``"kt"``, ``"-"`` or ``"1/s"``.
     reference : float
-        What the verdict compares ``value`` with, in ``unit`` (NaN when nothing).
+        What the verdict compares ``value`` with (NaN when nothing). [``unit``]
     source : str
         Analysis, report sheet, item and case it comes from.
     """

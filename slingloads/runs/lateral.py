@@ -113,7 +113,7 @@ class LateralReport:
         Parameters
         ----------
         index : int
-            A case of the sweep, 0-based.
+            A case of the sweep, 0-based. [-]
 
         Returns
         -------

@@ -153,7 +153,7 @@ class RunOptions:
     scheduler : str or None
         Address of a dask.distributed scheduler (``tcp://host:port``).
     workers : int or None
-        Local worker processes.
+        Local worker processes. [count]
     cache : pathlib.Path or None
         Folder of the run cache (default: :func:`slingloads.runs.cache.default_cache_dir`).
     timeout : float or None

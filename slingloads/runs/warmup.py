@@ -167,7 +167,7 @@ def compile_kernels(workers=2):
     Parameters
     ----------
     workers : int
-        1: all in this process; 2 (default): the multibody kernels in a second process.
+        1: all in this process; 2 (default): the multibody kernels in a second process. [count]
 
     Returns
     -------

@@ -439,6 +439,7 @@ def run_campaign(campaign, *, executor=None, store=None, progress=None, batch_si
     progress : callable, optional
         ``progress(done, total)``.
     batch_size : int, optional
+        Runs per batch (default :func:`~.execution.batch_size`). [count]
 
     Returns
     -------

@@ -81,7 +81,7 @@ def batch_seconds(settings, runs):
     settings : dict
         ``t_end``, ``dt`` (None: adaptive) [s].
     runs : int
-        Runs of the batch.
+        Runs of the batch. [count]
 
     Returns
     -------
@@ -127,6 +127,7 @@ class MemoryStore:
         -------
         (dict, ndarray or None) or None
             The run's record (metrics, histories), or None if it is not stored.
+            [SI, angles in degrees: :func:`~.metrics.response_metrics`]
         """
         return self._records.get(key)
 
@@ -139,6 +140,7 @@ class MemoryStore:
             Key of a run.
         record : (dict, ndarray)
             Its metrics and histories (the histories dropped unless kept).
+            [SI, angles in degrees: :func:`~.metrics.response_metrics`]
         """
         metrics, histories = record
         self._records[key] = (metrics, histories if self.keep_histories else None)
@@ -161,7 +163,7 @@ def record_problem(record, rows=None):
     record : object
         What a store read for a run.
     rows : int, optional
-        Samples the histories must have.
+        Samples the histories must have. [count]
 
     Returns
     -------
@@ -219,7 +221,7 @@ class InProcess(_Executor):
     Parameters
     ----------
     threads : int, optional
-        Kernel threads of each batch (default: the cores).
+        Kernel threads of each batch (default: the cores). [count]
     """
 
     workers = 1
@@ -243,12 +245,13 @@ class InProcess(_Executor):
         Parameters
         ----------
         batches : iterable of (int, dict, list)
-            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`).
+            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`). [-]
 
         Returns
         -------
         iterator of (int, list)
             (index, results of :func:`~.worker.run_batch`) of each batch as it finishes.
+            [as :func:`~.worker.run_batch`]
         """
         for index, settings, jobs in batches:
             yield index, run_batch(jobs, settings, self.threads)
@@ -260,7 +263,7 @@ class LocalProcesses(_Executor):
     Parameters
     ----------
     workers : int
-        >= 1.
+        >= 1. [count]
     """
 
     def __init__(self, workers):
@@ -287,12 +290,13 @@ class LocalProcesses(_Executor):
         Parameters
         ----------
         batches : iterable of (int, dict, list)
-            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`).
+            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`). [-]
 
         Returns
         -------
         iterator of (int, list)
             (index, results of :func:`~.worker.run_batch`) of each batch as it finishes.
+            [as :func:`~.worker.run_batch`]
         """
         import multiprocessing
         from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -518,12 +522,13 @@ class DaskCluster(_Executor):
         Parameters
         ----------
         batches : iterable of (int, dict, list)
-            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`).
+            (index, run settings, jobs) of each batch (:func:`~.worker.run_batch`). [-]
 
         Returns
         -------
         iterator of (int, list)
             (index, results of :func:`~.worker.run_batch`) of each batch as it finishes.
+            [as :func:`~.worker.run_batch`]
         """
         import time
         from concurrent.futures import CancelledError
@@ -613,11 +618,11 @@ def make_executor(scheduler=None, workers=None, timeout=SCHEDULER_TIMEOUT, runs=
         :data:`MAX_BATCH` runs, where starting processes would cost more than it saves);
         capped by the cores, the memory available and a command's budget
         (:func:`local_workers`: an explicit larger request is cut, with a warning in the
-        executor's ``warnings``).
+        executor's ``warnings``). [count]
     timeout : float
         Scheduler time-out. [s]
     runs : int, optional
-        Runs to execute (for the default).
+        Runs to execute (for the default). [count]
     settings : dict, optional
         The runs' settings (``t_end``, ``output_interval`` [s]), for the memory estimate.
 
@@ -646,13 +651,14 @@ class ExecutionReport:
     Attributes
     ----------
     total, cached, computed : int
-        Runs in the campaign, found in the store, and run now (every group).
+        Runs in the campaign, found in the store, and run now (every group). [count]
     batches : int
+        Batches executed. [count]
     executor : str
     parts : tuple of (int, int, int)
         (total, cached, computed) of each group of runs, in the order given (a campaign: the
         matrix, then the runs without parachute), each run counted in the first group that
-        holds it.
+        holds it. [count]
     """
 
     total: int
@@ -671,16 +677,16 @@ def batch_size(missing, workers, settings=None):
     Parameters
     ----------
     missing : int
-        Runs still to execute.
+        Runs still to execute. [count]
     workers : int
-        Workers of the executor.
+        Workers of the executor. [count]
     settings : dict, optional
         The runs' settings (``t_end``, ``output_interval`` [s]).
 
     Returns
     -------
     int
-        Runs per batch.
+        Runs per batch. [count]
     """
     if missing <= 0:
         return 1
@@ -702,7 +708,7 @@ def execute(groups, store, executor, *, size=None, progress=None):
     executor : InProcess, LocalProcesses or DaskCluster
         Not closed here.
     size : int, optional
-        Runs per batch (default :func:`batch_size`).
+        Runs per batch (default :func:`batch_size`). [count]
     progress : callable, optional
         ``progress(done, total)`` after the store is read and after every batch.
 

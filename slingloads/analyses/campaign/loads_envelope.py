@@ -70,9 +70,9 @@ class DynamicsEnvelope:
     source : dict
         Quantity -> (run of the lower bound, run of the upper bound).
     runs : int
-        Runs the extremes are taken over.
+        Runs the extremes are taken over. [count]
     unstable_runs : int
-        Of them, runs that are not stable (their extremes are included).
+        Of them, runs that are not stable (their extremes are included). [count]
     """
 
     area_factor: float
@@ -135,7 +135,7 @@ class DynamicsEnvelope:
         -------
         (float, float)
             Lower and upper bound (lower None for a quantity with a maximum only): degrees
-            for angles, N for the line tension, - for tension / weight.
+            for angles, N for the line tension, - for tension / weight. [deg], [N] or [-]
         """
         kind = {q[0]: q[3] for q in QUANTITIES}[quantity]
         lo, hi = self.reached[quantity]

@@ -42,7 +42,7 @@ def history_rows(settings):
     Returns
     -------
     int
-        Samples.
+        Samples. [count]
     """
     return int(round(float(settings["t_end"]) / float(settings["output_interval"]))) + 1
 
@@ -121,7 +121,7 @@ def batch_limit(settings):
     Returns
     -------
     int
-        Runs.
+        Runs. [count]
     """
     return max(1, min(MAX_BATCH, BATCH_MEMORY // max(1, _sample_bytes(settings))))
 
@@ -135,7 +135,7 @@ def budget_workers():
     Returns
     -------
     int
-        Workers.
+        Workers. [count]
     """
     return max(1, (COMMAND_MEMORY - COMMAND_OWN_MEMORY) // WORKER_OWN_MEMORY)
 
@@ -149,17 +149,18 @@ def local_workers(requested, settings=None, cores=None, available=None):
     Parameters
     ----------
     requested : int
-        Worker processes asked for.
+        Worker processes asked for. [count]
     settings : dict, optional
         The runs' settings (``t_end``, ``output_interval`` [s]).
     cores : int, optional
-        Cores available (default: those this process may use).
+        Cores available (default: those this process may use). [count]
     available : int, optional
         Memory available (default: the system's). [bytes]
 
     Returns
     -------
     workers : int
+        Worker processes. [count]
     warning : str or None
     """
     cores = cpu_count() if cores is None else int(cores)

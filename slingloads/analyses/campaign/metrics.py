@@ -129,6 +129,7 @@ def response_metrics(run, model=None):
     metrics : dict
     histories : ndarray, shape (samples, len(HISTORY_LABELS))
         SI, angles in degrees; NaN where the run had stopped or has no such quantity.
+        [SI, angles in deg]
     """
     base = run.metrics()
     out = {k: v for k, v in base.items() if k not in _DROPPED}

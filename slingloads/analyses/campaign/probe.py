@@ -55,11 +55,12 @@ def split_address(address, default_port=8786):
     ----------
     address : str
     default_port : int
-        Dask's scheduler port, used when none is written.
+        Dask's scheduler port, used when none is written. [-]
 
     Returns
     -------
     (str, str, int)
+        Protocol, host and port. [-]
     """
     protocol, _, rest = address.rpartition("://")
     protocol = protocol or "tcp"

@@ -44,12 +44,13 @@ def run_batch(jobs, settings, threads=None):
         ``t_end``, ``dt`` (None: adaptive), ``output_interval`` [s], and ``rtol``, ``atol``
         of the adaptive step.
     threads : int, optional
-        Threads of the compiled kernel (default: numba's current setting).
+        Threads of the compiled kernel (default: numba's current setting). [count]
 
     Returns
     -------
     list of (str, dict, ndarray)
         (key, metrics, histories) of each run, in the order of ``jobs``.
+        [SI, angles in deg: :func:`~.metrics.response_metrics`]
     """
     from slingloads.analyses.multibody import linearise, simulate_runs, trim
     from slingloads.models.multibody.integrator import ATOL, RTOL

@@ -50,7 +50,7 @@ from slingloads.analyses.lateral.carrier_limits import (
     flyable,
     peak_jerk,
 )
-from slingloads.analyses.lateral.metrics import RunMetrics, refine_peak
+from slingloads.analyses.lateral.metrics import RunMetrics
 from slingloads.analyses.lateral.ranges import ParameterRanges, airframe_body
 from slingloads.analyses.lateral.result import DOMAIN_ANGLE, REGULATORY_ANGLE, LateralStudy
 from slingloads.analyses.lateral.simulation import (
@@ -66,6 +66,7 @@ from slingloads.analyses.lateral.study import (
     acceleration_sweep,
     lateral_study,
 )
+from slingloads.models.sampled_peak import refine_peak
 
 __all__ = [
     "BANK_LIMIT", "CARRIER_FORCE_LIMIT", "DEFAULT_ACCELERATIONS", "DEFAULT_DURATIONS",

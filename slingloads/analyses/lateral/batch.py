@@ -148,7 +148,10 @@ def _time_nodes(t_end, n_steps, motions):
 
 def _drive_table(motions, nodes, jumps):
     """Hook (velocity, acceleration) of each motion at the start (just after a jump), middle
-    and end (just before a jump) of every step from each node: shape (motions, nodes, 3, 2)."""
+    and end (just before a jump) of every step from each node: shape (motions, nodes, 3, 2),
+    the channels :data:`slingloads.models.pendulum_batch.DRIVE`."""
+    from slingloads.models.pendulum_batch import D_ACC, D_VEL
+
     start = nodes
     step = np.diff(nodes)
     middle = np.append(nodes[:-1] + 0.5 * step, nodes[-1])
@@ -158,8 +161,8 @@ def _drive_table(motions, nodes, jumps):
     for k, motion in enumerate(motions):
         for stage, times in enumerate((start, middle, end)):
             _, v, a = motion.kinematics(times)
-            table[k, :, stage, 0] = v
-            table[k, :, stage, 1] = a
+            table[k, :, stage, D_VEL] = v
+            table[k, :, stage, D_ACC] = a
     return table
 
 
@@ -188,6 +191,9 @@ def _compiled_group(pendulums, motions, nodes, jumps, rigid):
         best[idx], t_best[idx] = b, tb
     best = np.where(np.isfinite(best), best, np.nan).T
     t_best = t_best.T
-    best[0] = np.minimum(best[0], np.pi)  # a parabola through the wrap at pi must not pass it
-    return RunMetrics(best[0], t_best[0], best[1], t_best[1], best[2], t_best[2], -best[3],
-                      best[4], t_best[4])
+    load, rope = pendulum_batch.S_LOAD_ANGLE, pendulum_batch.S_ROPE_ANGLE
+    tension, side = pendulum_batch.S_TENSION, pendulum_batch.S_SIDE_FORCE
+    best[load] = np.minimum(best[load], np.pi)  # a parabola through the wrap at pi: not past it
+    return RunMetrics(best[load], t_best[load], best[rope], t_best[rope], best[tension],
+                      t_best[tension], -best[pendulum_batch.S_MINUS_TENSION], best[side],
+                      t_best[side])

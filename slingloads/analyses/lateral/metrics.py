@@ -3,9 +3,9 @@
 A run's design quantities are peaks of sampled signals: the load angle theta1 - theta2 and
 the rope angle while the cable carries load, the tension factor T/(m g) and the cable's
 lateral pull on the hook. Each peak is refined by the parabola through the three samples
-around it (:func:`refine_peak`), except across a kink (the cable going slack, a jump of the
-hook's acceleration), where a parabola would overshoot. :class:`RunMetrics` holds them, for one
-run or as arrays over many.
+around it (:func:`~slingloads.models.sampled_peak.refine_peak`, the one the compiled sweep
+uses), except across a kink (the cable going slack, a jump of the hook's acceleration), where a
+parabola would overshoot. :class:`RunMetrics` holds them, for one run or as arrays over many.
 
 References
 ----------
@@ -20,30 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.models.pendulum import load_angle
-
-
-def refine_peak(y0, y1, y2):
-    """Vertex of the parabola through equally spaced samples (y0, y1, y2) around a peak y1.
-
-    Parameters
-    ----------
-    y0, y1, y2 : ndarray
-        Three successive samples of a signal, one step apart (any shape, broadcast
-        together). [signal units]
-
-    Returns
-    -------
-    value : ndarray
-        The parabola's vertex where it curves down (y0 - 2 y1 + y2 < 0), else y1. [signal
-        units]
-    offset : ndarray
-        Where the vertex lies, in steps from the middle sample, within [-1/2, 1/2] (0 where
-        the samples do not curve down). [-]
-    """
-    curvature = y0 - 2.0 * y1 + y2
-    safe = np.where(curvature < 0, curvature, -1.0)
-    offset = np.where(curvature < 0, np.clip(0.5 * (y0 - y2) / safe, -0.5, 0.5), 0.0)
-    return y1 - 0.25 * (y0 - y2) * offset, offset
+from slingloads.models.sampled_peak import refine_peak
 
 
 def _peak(t, y, valid=None, smooth=None):

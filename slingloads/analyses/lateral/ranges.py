@@ -119,7 +119,7 @@ class ParameterRanges:
         roll_inertia, cg_below_hub, rope_length : float
             Fractions of the nominal values, each in [0, 1). [-]
         points : int
-            Factors per range.
+            Factors per range. [count]
 
         Returns
         -------

@@ -376,12 +376,12 @@ class LateralStudy:
         Parameters
         ----------
         index : int
-            A run of the sweep, 0-based.
+            A run of the sweep, 0-based. [-]
 
         Returns
         -------
         int
-            Its nominal case, 1-based (the ``case`` of :meth:`case_frame`).
+            Its nominal case, 1-based (the ``case`` of :meth:`case_frame`). [-]
 
         Examples
         --------
@@ -564,7 +564,7 @@ class LateralStudy:
         Parameters
         ----------
         index : int, optional
-            0-based case index (the ``case`` column minus 1).
+            0-based case index (the ``case`` column minus 1). [-]
         solver : SolverSettings, optional
             solve_ivp settings (default the study's); the run length is the study's.
 

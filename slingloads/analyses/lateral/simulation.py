@@ -72,6 +72,7 @@ class LateralRun:
     motion : carrier motion
     t : ndarray, shape (n,) [s]
     states : ndarray, shape (states, n), see ``pendulum.state_names``
+        The states at the output times. [rad, rad/s] or [m, rad, m/s, rad/s]
     carrier : ndarray, shape (3, n): S [m], S' [m/s], S'' [m/s^2]
     tension : ndarray, shape (n,) [N]
     solver : SolverSettings

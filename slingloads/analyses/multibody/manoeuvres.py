@@ -110,6 +110,7 @@ class Manoeuvre:
         :func:`~slingloads.analyses.multibody.start.start_state`, or e.g.
         :meth:`~slingloads.analyses.multibody.LinearModel.mode_state`). The run still needs
         its trim: the carrier's steady velocity and cable pull are the trim's.
+        [m, m/s, -, rad/s, rad]
     """
 
     name: str
@@ -211,7 +212,7 @@ def gust_response(kind="finite", amplitude=GUST_VELOCITY, onset=5.0, duration=10
     onset, duration : float
         [s]
     direction : str or array_like
-        See :data:`~slingloads.models.multibody.environment.GUST_DIRECTIONS`.
+        See :data:`~slingloads.models.multibody.environment.GUST_DIRECTIONS`. [-]
 
     Returns
     -------
@@ -276,7 +277,7 @@ def wind_ramp(target, rate=0.5, onset=5.0, name=None, disturbance=None, gust=Non
         A gust added to the ramp's wind (:func:`~slingloads.models.gusts.make_gust`).
     direction : str or array_like
         Direction of the gust (see
-        :data:`~slingloads.models.multibody.environment.GUST_DIRECTIONS`).
+        :data:`~slingloads.models.multibody.environment.GUST_DIRECTIONS`). [-]
 
     Returns
     -------

@@ -134,7 +134,7 @@ def disturbed(state, disturbance, chute_kind="none"):
     Parameters
     ----------
     state : array_like, shape (20,)
-        The trim's state, or a start state (:func:`~.start.start_state`).
+        The trim's state, or a start state (:func:`~.start.start_state`). [m, m/s, -, rad/s, rad]
     disturbance : dict
         Keys of :data:`~.manoeuvres.DISTURBANCES`: yaw, pitch, roll [rad] added to the
         attitude's angles; yaw_rate [rad/s] added to the body rates, about the earth vertical
@@ -146,6 +146,7 @@ def disturbed(state, disturbance, chute_kind="none"):
     Returns
     -------
     numpy.ndarray, shape (20,)
+        The disturbed state. [m, m/s, -, rad/s, rad]
     """
     x = np.array(state, dtype=float)
     d = disturbance
@@ -213,14 +214,14 @@ class RunResult:
     time : ndarray, shape (n,)
         [s]
     flag : int
-        Table or limit left (0: none); see :func:`~.trim.flag_text`.
+        Table or limit left (0: none); see :func:`~.trim.flag_text`. [-]
     stop_time : float
         Time the run stopped (NaN if it ran to the end). [s]
     batch : object, optional
         The runs integrated with this one (their states, parameters, drives and measures),
         from which :attr:`states` and :attr:`info` come.
     index : int
-        This run's place in ``batch``.
+        This run's place in ``batch``. [-]
     """
 
     system: object
@@ -280,7 +281,7 @@ class RunResult:
         Returns
         -------
         ndarray, shape (n, N_HISTORY)
-            SI, angles in rad.
+            SI, angles in rad. [SI, rad]
         """
         system = self.system
         table = np.empty((self.time.size, N_HISTORY))
@@ -296,7 +297,7 @@ class RunResult:
         -------
         dict of str to ndarray, shape (n,)
             The columns of :meth:`history_table` by the names of
-            :data:`~slingloads.models.multibody.response.HISTORY`.
+            :data:`~slingloads.models.multibody.response.HISTORY`. [SI, rad]
         """
         table = self.history_table()
         return {name: table[:, k] for k, name in enumerate(HISTORY)}
@@ -329,7 +330,7 @@ class RunResult:
         Returns
         -------
         ndarray, shape (N_MEASURES,)
-            SI, angles in rad.
+            SI, angles in rad. [SI, rad]
         """
         return self.batch.measures[self.index]
 
@@ -629,7 +630,7 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         Check a fixed step against the fastest mode of every trim (and keep the linear
         models).
     workers : int, optional
-        Threads integrating the runs (default: every processor this process may use).
+        Threads integrating the runs (default: every processor this process may use). [count]
     keep_histories : bool
         Keep every run's sampled states (default). False keeps only what the metrics need
         (each run's measures, computed as soon as it is integrated): a run's states and
@@ -720,7 +721,7 @@ def drive_bytes(t_end, breakpoints=()):
     Returns
     -------
     int
-        Bytes.
+        Bytes. [B]
     """
     segments = 1 + len(tuple(breakpoints))
     rows = float(t_end) / DRIVE_STEP + 2 * segments + 1
@@ -743,7 +744,7 @@ def run_bytes(t_end, output_interval, breakpoints=()):
     Returns
     -------
     int
-        Bytes.
+        Bytes. [B]
     """
     samples = int(round(float(t_end) / float(output_interval))) + 1
     return drive_bytes(t_end, breakpoints) + samples * SAMPLE_BYTES

@@ -73,6 +73,7 @@ def start_state(system, *, hub=None, rope_angles=None, span=None, velocity=(0.0,
     -------
     numpy.ndarray, shape (20,)
         For ``Manoeuvre(start_state=...)``; :func:`state_table` names its values.
+        [m, m/s, -, rad/s, rad]
 
     Raises
     ------
@@ -123,6 +124,7 @@ def state_table(state):
     Parameters
     ----------
     state : array_like, shape (20,)
+        A full state of the equations. [m, m/s, -, rad/s, rad]
 
     Returns
     -------

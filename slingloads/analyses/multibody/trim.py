@@ -72,7 +72,7 @@ def flag_text(flag):
     ----------
     flag : int
         Flag of the equations (a sum of bits of
-        :data:`~slingloads.models.multibody.equations.FLAGS`).
+        :data:`~slingloads.models.multibody.equations.FLAGS`). [-]
 
     Returns
     -------
@@ -108,22 +108,23 @@ def evaluate_state(system, x, drive, parameters=None, tables=None):
     ----------
     system : SlingSystem
     x : array_like, shape (N_STATES,)
-        State (SI: m, m/s, quaternion, rad/s, rad).
+        State (:data:`~slingloads.models.multibody.equations.STATES`). [m, m/s, -, rad/s, rad]
     drive : array_like, shape (9,)
         Wind [m/s], commanded acceleration [m/s^2] and velocity [m/s], earth axes.
     parameters : ndarray, optional
         Parameter vector (default ``system.parameters(locks=system.locks)``).
+        [SI: :data:`~slingloads.models.multibody.equations.LAYOUT`]
     tables : tuple of ndarray, optional
-        Tables (default ``system.tables()``).
+        Tables (default ``system.tables()``). [rad, -]
 
     Returns
     -------
     dx : ndarray, shape (N_STATES,)
-        Derivative of the state (SI per second).
+        Derivative of the state. [m/s, m/s^2, 1/s, rad/s^2, rad/s]
     info : ndarray, shape (N_INFO,)
-        Reported quantities (:data:`~slingloads.models.multibody.equations.INFO`, SI).
+        Reported quantities (:data:`~slingloads.models.multibody.equations.INFO`). [SI]
     flag : int
-        Tables or limits left (0: none; :func:`flag_text`).
+        Tables or limits left (0: none; :func:`flag_text`). [-]
     """
     p = system.parameters(locks=system.locks) if parameters is None else parameters
     t = system.tables() if tables is None else tables
@@ -142,15 +143,15 @@ class Trim:
     airspeed : float
         Equivalent airspeed. [m/s]
     state : ndarray, shape (20,)
-        Full state of the equations at trim.
+        Full state of the equations at trim. [m, m/s, -, rad/s, rad]
     drive : ndarray, shape (9,)
-        Wind, commanded acceleration and velocity at trim.
+        Wind, commanded acceleration and velocity at trim. [m/s, m/s^2, m/s]
     converged : bool
     message : str
     residual : float
         Largest scaled acceleration left. [-]
     info : ndarray
-        Reported quantities at trim (:data:`~slingloads.models.multibody.equations.INFO`).
+        Reported quantities at trim (:data:`~slingloads.models.multibody.equations.INFO`). [SI]
     neutral : str
         The unknown the equilibrium leaves free ("yaw" for an airframe without any yawing
         moment: an equilibrium at every heading), "" when it is isolated; a neutral trim
@@ -182,7 +183,7 @@ class Trim:
         Returns
         -------
         float
-            Its value at trim (SI: N, m, rad).
+            Its value at trim. [N, m or rad]
         """
         return float(self.info[_INFO[name]])
 
@@ -705,7 +706,7 @@ class LinearModel:
     eigenvalues : ndarray, shape (n,)
         [1/s]
     vectors : ndarray, shape (n, n)
-        Right eigenvectors (columns).
+        Right eigenvectors (columns). [units of the coordinates]
     """
 
     trim: Trim
@@ -910,7 +911,7 @@ class LinearModel:
         Returns
         -------
         ndarray, shape (N_STATES,)
-            Full state (SI).
+            Full state. [m, m/s, -, rad/s, rad]
         """
         k = int(np.argmin(np.abs(self.eigenvalues - eigenvalue)))
         vec = self.vectors[:, k]
@@ -950,12 +951,12 @@ def perturbed_states(trim_point, names, z):
         Coordinates of the linear model (:attr:`LinearModel.names`: positions [m], small
         rotations ``phi_x``, ``phi_y``, ``phi_z`` and line angles [rad], and their rates).
     z : array_like, shape (m, n)
-        Perturbations in those coordinates (SI).
+        Perturbations in those coordinates. [m, m/s, rad, rad/s]
 
     Returns
     -------
     ndarray, shape (m, N_STATES)
-        Full states (SI; the quaternion rotated by the small rotation).
+        Full states (the quaternion rotated by the small rotation). [m, m/s, -, rad/s, rad]
     """
     return _perturbed(trim_point.state[None, :], names, z)[0]
 
@@ -983,12 +984,12 @@ def perturbed_state(trim_point, names, z):
         Coordinates of the linear model (:attr:`LinearModel.names`: positions [m], small
         rotations ``phi_x``, ``phi_y``, ``phi_z`` and line angles [rad], and their rates).
     z : array_like, shape (n,)
-        Perturbation in those coordinates (SI).
+        Perturbation in those coordinates. [m, m/s, rad, rad/s]
 
     Returns
     -------
     ndarray, shape (N_STATES,)
-        Full state (SI).
+        Full state. [m, m/s, -, rad/s, rad]
     """
     return perturbed_states(trim_point, names, z)[0]
 
@@ -1004,12 +1005,12 @@ def coordinate_rates(trim_point, names, dx):
         Coordinates of the linear model (:attr:`LinearModel.names`: positions [m], small
         rotations ``phi_x``, ``phi_y``, ``phi_z`` and line angles [rad], and their rates).
     dx : array_like, shape (m, N_STATES)
-        Derivatives of full states (SI per second).
+        Derivatives of full states. [m/s, m/s^2, 1/s, rad/s^2, rad/s]
 
     Returns
     -------
     ndarray, shape (m, n)
-        The derivatives in the coordinates ``names`` (SI per second).
+        The derivatives in the coordinates ``names``. [m/s, m/s^2, rad/s, rad/s^2]
     """
     return _coordinate_rates(trim_point.state[None, 9:13], names,
                              np.atleast_2d(dx)[None])[0]
@@ -1033,7 +1034,7 @@ def linearise(trim_point, *, step=1e-6):
     trim_point : Trim
         A converged trim.
     step : float
-        Central-difference step, in SI units of each coordinate.
+        Central-difference step in each coordinate. [m, m/s, rad, rad/s]
 
     Returns
     -------
@@ -1062,11 +1063,13 @@ def fastest_rates(trim_points, *, step=1e-6):
     ----------
     trim_points : sequence of Trim
     step : float
-        Central-difference step, in SI units of each coordinate (as :func:`linearise`).
+        Central-difference step in each coordinate (as :func:`linearise`).
+        [m, m/s, rad, rad/s]
 
     Returns
     -------
     ndarray, shape (len(trim_points),)
+        [1/s]
     """
     out = np.full(len(trim_points), np.nan)
     groups = {}
@@ -1096,7 +1099,7 @@ def attitude_matrix(state):
     Parameters
     ----------
     state : array_like, shape (N_STATES,)
-        Full state (quaternion in elements 9 to 12).
+        Full state (quaternion in elements 9 to 12). [m, m/s, -, rad/s, rad]
 
     Returns
     -------

@@ -39,7 +39,7 @@ def gust_direction(direction):
     Parameters
     ----------
     direction : str or array_like, shape (3,)
-        One of :data:`GUST_DIRECTIONS`, or a vector in earth axes (non-zero).
+        One of :data:`GUST_DIRECTIONS`, or a vector in earth axes (non-zero). [-]
 
     Returns
     -------
@@ -126,7 +126,7 @@ class Wind:
         Steady wind, earth axes. [m/s]
     gust : gust of :mod:`slingloads.models.gusts` or None
     direction : str or array_like
-        Direction of the gust (see :data:`GUST_DIRECTIONS`).
+        Direction of the gust (see :data:`GUST_DIRECTIONS`). [-]
     ramp : WindRamp or None
     """
 

@@ -212,7 +212,7 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     x : ndarray, shape (N_STATES,)
         State (:data:`STATES`). [m, m/s, -, rad/s, rad]
     P : ndarray, shape (N_PARAMETERS,)
-        Parameter vector (:data:`LAYOUT`).
+        Parameter vector (:data:`LAYOUT`). [SI]
     drive : ndarray, shape (9,)
         Wind [m/s], commanded carrier acceleration [m/s^2] and velocity [m/s], earth axes
         (:data:`DRIVE`).
@@ -224,14 +224,14 @@ def evaluate(x, P, drive, fus_a, fus_b, fus_c, fin_g, fin_v, tail_g, tail_v, cd_
     dx : ndarray, shape (N_STATES,)
         Receives the state derivative. [state units / s]
     info : ndarray, shape (N_INFO,)
-        Receives the reported quantities (:data:`INFO`, SI) when ``want``.
+        Receives the reported quantities (:data:`INFO`) when ``want``. [SI]
     want : bool
         Evaluate the reported quantities.
 
     Returns
     -------
     int
-        The flag of :data:`FLAGS` (0 when every table was inside its range).
+        The flag of :data:`FLAGS` (0 when every table was inside its range). [-]
     """
     flag = 0
     vc0, vc1, vc2 = x[X_VC], x[X_VC + 1], x[X_VC + 2]

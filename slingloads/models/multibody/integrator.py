@@ -49,7 +49,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from slingloads.models.dormand_prince import LEFT, SAMPLE, integrator
-from slingloads.models.multibody._jit import jit, jit_alloc, jit_inline
+from slingloads.models.multibody._jit import (
+    KERNEL_ARRAY_FLAGS,
+    jit,
+    jit_alloc,
+    jit_inline,
+    kernel_array,
+)
 from slingloads.models.multibody.equations import (
     CARRIER_FREE,
     N_INFO,
@@ -213,21 +219,22 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
     x0 : ndarray, shape (runs, N)
         Initial states. [SI]
     P : ndarray, shape (runs, NP)
-        Parameter vectors (:data:`~slingloads.models.multibody.equations.LAYOUT`).
+        Parameter vectors (:data:`~slingloads.models.multibody.equations.LAYOUT`). [SI]
     seg_a, seg_b, seg_h : ndarray, shape (profiles, S)
         Start, end and table step of each segment. [s]
     seg_n, seg_off : ndarray of int, shape (profiles, S)
-        Intervals and first row of each segment's table.
+        Intervals and first row of each segment's table. [count], [-]
     n_seg : ndarray of int, shape (profiles,)
-        Segments of each profile.
+        Segments of each profile. [count]
     vals : ndarray, shape (profiles, K, 9)
         Drive tables (wind [m/s], commanded acceleration [m/s^2] and velocity [m/s]).
     vary, bend : ndarray, shape (profiles, S, 9)
         Channels that vary over a segment; the rounding term of the others.
+        [-], [units of :data:`~slingloads.models.multibody.equations.DRIVE`]
     nodes : ndarray, shape (profiles, n_out, 9)
-        The drive at the samples.
+        The drive at the samples. [m/s, m/s^2, m/s]
     profile : ndarray of int, shape (runs,)
-        Drive profile of each run.
+        Drive profile of each run. [-]
     interval : float
         Sampling interval. [s]
     fixed : float
@@ -243,14 +250,15 @@ def dopri_runs(x0, P, seg_a, seg_b, seg_h, seg_n, seg_off, n_seg, vals, vary, be
         Evaluate the reported quantities at the samples.
     out, info, rates : ndarray
         Receive the states, reported quantities and derivatives at the samples (see above).
+        [SI, rad]
     flags, stop_time : ndarray, shape (runs,)
         Receive the flag and the time [s] of a run that stopped.
     time : ndarray, shape (n_out,)
         Sample times. [s]
     measured : ndarray, shape (runs, 9)
-        What the measures need (see above).
+        What the measures need (see above). [SI]
     measures : ndarray, shape (runs, N_MEASURES) or (0, N_MEASURES)
-        Receive each run's measures.
+        Receive each run's measures. [SI, rad, deg/s]
     """
     runs = x0.shape[0]
     n = x0.shape[1]
@@ -389,22 +397,13 @@ def stack_drives(profiles):
     return out
 
 
-#: What the kernel's arrays must be: one compiled signature (a read-only or non-contiguous
-#: array would compile the kernel, and the equations in it, a second time).
-_KERNEL_ARRAYS = ("C", "W", "A")
-
-
-def _plain(values):
-    """A C-contiguous, writeable float64 array (a copy when needed)."""
-    return np.require(values, np.float64, _KERNEL_ARRAYS)
-
-
 def worker_count():
     """Threads used for a batch: the processors this process may run on.
 
     Returns
     -------
     int
+        Threads. [count]
     """
     try:
         return max(1, len(os.sched_getaffinity(0)))
@@ -422,9 +421,9 @@ def in_blocks(block, runs, workers=None):
     block : callable
         ``block(start)``, integrating runs ``start`` to ``start + BLOCK``.
     runs : int
-        Number of runs.
+        Number of runs. [count]
     workers : int, optional
-        Threads.
+        Threads. [count]
     """
     starts = range(0, runs, BLOCK)
     workers = min(worker_count() if workers is None else int(workers), len(starts))
@@ -443,15 +442,15 @@ class Integrated:
     Attributes
     ----------
     states : ndarray, shape (runs, n_out, N), or None
-        States at the samples (NaN after a stop); None unless kept.
+        States at the samples (NaN after a stop); None unless kept. [m, m/s, -, rad/s, rad]
     info : ndarray, shape (runs, n_out, N_INFO), or None
-        Reported quantities at the samples, with ``report``.
+        Reported quantities at the samples, with ``report``. [SI]
     flags : ndarray of int, shape (runs,)
-        Table or limit each run left (0: none).
+        Table or limit each run left (0: none). [-]
     stop_time : ndarray, shape (runs,)
         When a run stopped (NaN if it did not). [s]
     measures : ndarray, shape (runs, N_MEASURES), or None
-        Each run's measures, when asked for.
+        Each run's measures, when asked for. [SI, rad, deg/s]
     """
 
     states: np.ndarray | None
@@ -468,25 +467,25 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     Parameters
     ----------
     x0 : ndarray, shape (runs, N)
-        Initial states.
+        Initial states. [m, m/s, -, rad/s, rad]
     P : ndarray, shape (runs, NP)
-        Parameter vectors.
+        Parameter vectors. [SI]
     drives : dict
         :func:`stack_drives` of the runs' drive profiles.
     profile : ndarray of int, shape (runs,)
-        Drive profile of each run.
+        Drive profile of each run. [-]
     interval : float
         Sampling interval of the histories. [s]
     n_out : int
-        Samples (the first at t = 0).
+        Samples (the first at t = 0). [count]
     tables : tuple of ndarray
-        :meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`.
+        :meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`. [rad, -]
     step : float, optional
         Fixed step [s]; default adaptive.
     rtol, atol : float
         Tolerances of the adaptive step (SI units of the states). [-], [SI]
     workers : int, optional
-        Threads (default :func:`worker_count`).
+        Threads (default :func:`worker_count`). [count]
     report : bool
         Also keep the reported quantities at the samples, evaluated during the integration
         (the same numbers as :func:`evaluate_many` gives afterwards at the sampled states and
@@ -494,7 +493,7 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     measured : ndarray, shape (runs, 9), optional
         With it, each run's measures are computed as soon as it is integrated, from its
         reported quantities evaluated at its samples (see :func:`dopri_runs` for the
-        columns).
+        columns). [SI]
     keep_states : bool
         Keep the sampled states of every run (else only the measures are kept).
 
@@ -508,11 +507,11 @@ def integrate(x0, P, drives, profile, interval, n_out, tables, *, step=None, rto
     info = np.empty((runs, n_out, N_INFO)) if report else None
     rates = np.empty((runs, n_out, N_STATES)) if report else None
     measures = np.empty((runs, N_MEASURES)) if measuring else np.empty((0, N_MEASURES))
-    measured = _plain(np.zeros((runs, 9)) if measured is None else measured)
+    measured = kernel_array(np.zeros((runs, 9)) if measured is None else measured)
     flags = np.zeros(runs, dtype=np.int64)
     stop_time = np.full(runs, np.nan)
-    x0, P = _plain(x0), _plain(P)
-    profile = np.require(profile, np.int64, _KERNEL_ARRAYS)
+    x0, P = kernel_array(x0), kernel_array(P)
+    profile = np.require(profile, np.int64, KERNEL_ARRAY_FLAGS)
     fixed = 0.0 if step is None else float(step)
     time = np.arange(n_out) * float(interval)
     # what a block does not keep goes to work rows of one run, reused from run to run
@@ -588,22 +587,27 @@ def evaluate_many(states, P, drives, tables):
     Parameters
     ----------
     states : ndarray, shape (n, N)
+        States. [m, m/s, -, rad/s, rad]
     P : ndarray, shape (n, NP) or (NP,)
-        Parameter vectors (one for all).
+        Parameter vectors (one for all). [SI]
     drives : ndarray, shape (n, 9) or (9,)
-        Drive at each state (one for all).
+        Drive at each state (one for all). [m/s, m/s^2, m/s]
     tables : tuple of ndarray
+        :meth:`SlingSystem.tables <slingloads.models.multibody.system.SlingSystem.tables>`. [rad, -]
 
     Returns
     -------
     rates : ndarray, shape (n, N)
+        Derivatives of the states. [m/s, m/s^2, 1/s, rad/s^2, rad/s]
     info : ndarray, shape (n, N_INFO)
+        Reported quantities (:data:`~slingloads.models.multibody.equations.INFO`). [SI]
     flags : ndarray of int, shape (n,)
+        Flags of :data:`~slingloads.models.multibody.equations.FLAGS`. [-]
     """
-    states = _plain(np.atleast_2d(states))
+    states = kernel_array(np.atleast_2d(states))
     n = states.shape[0]
-    P = _plain(np.broadcast_to(P, (n, np.shape(P)[-1])))
-    drives = _plain(np.broadcast_to(drives, (n, 9)))
+    P = kernel_array(np.broadcast_to(P, (n, np.shape(P)[-1])))
+    drives = kernel_array(np.broadcast_to(drives, (n, 9)))
     rates = np.empty((n, N_STATES))
     info = np.empty((n, N_INFO))
     flags = np.zeros(n, dtype=np.int64)

@@ -155,9 +155,9 @@ def frame_axis(frame, i, ca, sa, cb, sb):
     Parameters
     ----------
     frame : int
-        ``FRAME_CODES``: 0 body, 1 stability, 2 wind.
+        ``FRAME_CODES``: 0 body, 1 stability, 2 wind. [-]
     i : int
-        0 x, 1 y, 2 z.
+        0 x, 1 y, 2 z. [-]
     ca, sa, cb, sb : float
         cos and sin of alpha and beta. [-]
 
@@ -191,7 +191,7 @@ def to_airframe(frame, force, c0, c1, c2, ca, sa, cb, sb):
     Parameters
     ----------
     frame : int
-        ``FRAME_CODES``: 0 body, 1 stability, 2 wind.
+        ``FRAME_CODES``: 0 body, 1 stability, 2 wind. [-]
     force : bool
         Force coefficients (else moment coefficients).
     c0, c1, c2 : float
@@ -232,7 +232,7 @@ def fuselage_loads(u0, u1, u2, half_rho, area, length, alpha_grid, beta_grid, co
         Airspeed below which the loads are zero. [m/s]
     force_frame, moment_frame : int
         Frames of the force and moment coefficients (``FRAME_CODES``); the interpolated
-        coefficients are converted at the flow's alpha and beta.
+        coefficients are converted at the flow's alpha and beta. [-]
 
     Returns
     -------
@@ -276,9 +276,9 @@ def surface_force(u0, u1, u2, axis, sign, half_rho, area_eff, grid, values, v_cu
     u0, u1, u2 : float
         Air velocity relative to the centre of pressure, body axes. [m/s]
     axis : int
-        1 (normal along y, a fin) or 2 (along z, a horizontal tail).
+        1 (normal along y, a fin) or 2 (along z, a horizontal tail). [-]
     sign : float
-        -1 for a fin (beta = atan2(-u_y, u_x)), +1 for a tail (alpha = atan2(u_z, u_x)).
+        -1 for a fin (beta = atan2(-u_y, u_x)), +1 for a tail (alpha = atan2(u_z, u_x)). [-]
     half_rho : float
         [kg/m^3]
     area_eff : float

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from slingloads.models.multibody._jit import jit
+from slingloads.models.multibody._jit import jit, kernel_array
 
 #: Round-off allowance at the ends of a table, relative to its span. [-]
 EDGE = 1e-9
@@ -25,14 +25,14 @@ def cell(grid, x):
     Parameters
     ----------
     grid : ndarray, shape (n,)
-        Increasing breakpoints.
+        Increasing breakpoints. [any unit]
     x : float
-        Where to look (units of ``grid``).
+        Where to look. [unit of ``grid``]
 
     Returns
     -------
     i : int
-        grid[i] <= x <= grid[i + 1].
+        grid[i] <= x <= grid[i + 1]. [-]
     weight : float
         Weight of grid[i + 1]. [-]
     inside : bool
@@ -69,16 +69,16 @@ def interp1(grid, values, x):
     Parameters
     ----------
     grid : ndarray, shape (n,)
-        Increasing breakpoints.
+        Increasing breakpoints. [any unit]
     values : ndarray, shape (n,)
-        Values at the breakpoints.
+        Values at the breakpoints. [any unit]
     x : float
-        Where to interpolate (units of ``grid``).
+        Where to interpolate. [unit of ``grid``]
 
     Returns
     -------
     value : float
-        Units of ``values``.
+        Interpolated value. [unit of ``values``]
     inside : bool
         x lies in the grid.
     """
@@ -94,16 +94,16 @@ def bilinear(values, k, i, j, wa, wb):
     Parameters
     ----------
     values : ndarray, shape (n, na, nb)
-        Stacked tables.
+        Stacked tables. [any unit]
     k, i, j : int
-        Table and cell.
+        Table and cell. [-]
     wa, wb : float
         Weights of :func:`cell` along the two axes. [-]
 
     Returns
     -------
     float
-        Units of ``values``.
+        Interpolated value. [unit of ``values``]
     """
     v00 = values[k, i, j]
     v01 = values[k, i, j + 1]
@@ -128,18 +128,14 @@ def table_arrays(table, names):
     tuple of ndarray
         ``(angle, values)`` for a Table1D (values shape (n,) for one name), ``(alpha, beta,
         values)`` for a Table2D (values shape (len(names), na, nb)); a flat dummy table when
-        ``table`` is None.
+        ``table`` is None. [rad, -]
     """
     if table is None:
         return np.array([-np.pi, np.pi]), np.zeros(2)
-    # writeable contiguous float64 copies: one compiled signature for every table
+    # copies in the kernels' form (one compiled signature for every table), kept with their
+    # digest (slingloads.models.multibody.system): a later write to the table must not reach
     if hasattr(table, "beta"):
         values = np.stack([table.coefficients[n] for n in names])
-        return (_plain(table.alpha), _plain(table.beta), _plain(values))
-    return _plain(table.angle), _plain(table.coefficients[names[0]])
-
-
-def _plain(values):
-    """A writeable, C-contiguous float64 copy (read-only arrays would compile the kernels a
-    second time)."""
-    return np.array(values, dtype=np.float64, order="C", copy=True)
+        return tuple(kernel_array(a, snapshot=True) for a in (table.alpha, table.beta, values))
+    return (kernel_array(table.angle, snapshot=True),
+            kernel_array(table.coefficients[names[0]], snapshot=True))

@@ -26,6 +26,10 @@ import math
 import numpy as np
 
 from slingloads.models.multibody._jit import jit
+from slingloads.models.sampled_peak import compiled_parabola_vertex
+
+# the peak between samples, compiled from its one source in slingloads.models.sampled_peak
+_parabola_vertex = compiled_parabola_vertex()
 
 #: Derived histories, in the order of :func:`derive`'s columns (SI, angles in rad).
 HISTORY = ("time", "x", "y", "z", "yaw", "pitch", "roll", "yaw rate", "alpha", "beta",
@@ -67,11 +71,12 @@ def scratch(samples):
     Parameters
     ----------
     samples : int
-        Samples of a run.
+        Samples of a run. [count]
 
     Returns
     -------
     ndarray, shape (4, samples)
+        Work space. [-]
     """
     return np.empty((4, int(samples)))
 
@@ -90,7 +95,7 @@ def derive(time, states, info, weight, mast, chute, out):
     time : ndarray, shape (n,)
         Sampling times. [s]
     states, info : ndarray, shape (n, N), (n, N_INFO)
-        States and reported quantities at the samples (NaN after a stop).
+        States and reported quantities at the samples (NaN after a stop). [SI, rad]
     weight : float
         Weight of the hung system (the tension's reference). [N]
     mast : ndarray, shape (3,)
@@ -98,6 +103,7 @@ def derive(time, states, info, weight, mast, chute, out):
     chute : bool
         Whether there is a parachute (else its histories are NaN).
     out : ndarray, shape (n, N_HISTORY)
+        Receives the histories (:data:`HISTORIES`). [SI, rad]
     """
     n = time.shape[0]
     nan = np.nan
@@ -176,11 +182,11 @@ def damping_from_peaks(time, y, start, buf):
     time : ndarray, shape (n,)
         Sample times. [s]
     y : ndarray, shape (n,)
-        Signal (any unit).
+        Signal. [any unit]
     start : float
         Peaks from this time on. [s]
     buf : ndarray, shape (4, n)
-        Work space (:func:`scratch`).
+        Work space (:func:`scratch`). [-]
 
     Returns
     -------
@@ -211,10 +217,10 @@ def damping_from_peaks(time, y, start, buf):
         y0, y1, y2 = v[i - 1], v[i], v[i + 1]
         if not (y1 > y0 and y1 >= y2 and y1 > 0 and y1 > 0.02 * largest):
             continue
-        den = y0 - 2 * y1 + y2
-        shift = 0.5 * (y0 - y2) / den if den != 0 else 0.0
+        # y1 > y0 and y1 >= y2: the samples curve down, the vertex within half a step
+        value, shift = _parabola_vertex(y0, y1, y2)
         times[count] = t[i] + shift * h
-        values[count] = y1 - 0.25 * (y0 - y2) * shift
+        values[count] = value
         count += 1
     if count < 3:
         return np.nan, np.nan
@@ -240,7 +246,7 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
     time : ndarray, shape (n,)
         [s]
     hist : ndarray, shape (n, N_HISTORY)
-        :func:`derive`'s histories.
+        :func:`derive`'s histories. [SI, rad]
     start : float
         When the input starts (peaks and RMS values are taken from then on). [s]
     end : float
@@ -250,9 +256,9 @@ def measure(time, hist, start, end, verdict_start, band_floor, buf, out):
     band_floor : float
         Least half-width of the settling band. [rad]
     buf : ndarray
-        :func:`scratch`.
+        :func:`scratch`. [-]
     out : ndarray, shape (N_MEASURES,)
-        SI, angles in rad, the activity in deg/s.
+        SI, angles in rad, the activity in deg/s. [SI, rad, deg/s]
     """
     n = time.shape[0]
     for p in range(len(_PEAK_COLUMNS)):

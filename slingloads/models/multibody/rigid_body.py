@@ -36,12 +36,12 @@ def cross(a0, a1, a2, b0, b1, b2):
     Parameters
     ----------
     a0, a1, a2, b0, b1, b2 : float
-        Components of a and b (any units).
+        Components of a and b (any units). [any unit]
 
     Returns
     -------
     tuple of float
-        The three components of a x b (unit of a times unit of b).
+        The three components of a x b (unit of a times unit of b). [unit of a x unit of b]
     """
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
@@ -77,12 +77,12 @@ def to_earth(r, b0, b1, b2):
     r : tuple of float
         R row by row (:func:`dcm`). [-]
     b0, b1, b2 : float
-        Body components (any unit).
+        Body components. [any unit]
 
     Returns
     -------
     tuple of float
-        Earth components (same unit).
+        Earth components. [unit of the body components]
     """
     return (r[0] * b0 + r[1] * b1 + r[2] * b2, r[3] * b0 + r[4] * b1 + r[5] * b2,
             r[6] * b0 + r[7] * b1 + r[8] * b2)
@@ -97,12 +97,12 @@ def to_body(r, e0, e1, e2):
     r : tuple of float
         R row by row (:func:`dcm`). [-]
     e0, e1, e2 : float
-        Earth components (any unit).
+        Earth components. [any unit]
 
     Returns
     -------
     tuple of float
-        Body components (same unit).
+        Body components. [unit of the earth components]
     """
     return (r[0] * e0 + r[3] * e1 + r[6] * e2, r[1] * e0 + r[4] * e1 + r[7] * e2,
             r[2] * e0 + r[5] * e1 + r[8] * e2)

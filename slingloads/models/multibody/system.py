@@ -281,7 +281,7 @@ class SlingSystem:
         Returns
         -------
         ndarray, shape (N_PARAMETERS,)
-            Laid out by :data:`~slingloads.models.multibody.equations.LAYOUT` (SI units).
+            Laid out by :data:`~slingloads.models.multibody.equations.LAYOUT`. [SI]
         """
         p = self._base_parameters.copy()
         if isinstance(self.carrier, FreeCarrier):
