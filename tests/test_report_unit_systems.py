@@ -143,3 +143,49 @@ def test_areas_quoted_in_sentences_read_as_their_cells(example_campaign_run_repo
         wrong = [a for a in areas if a[3] != {"m^2": 3, "ft^2": 2}[a[4]]
                  or a[4] != {"SI": "m^2", "US": "ft^2"}[system]]
         assert not wrong, wrong[:5]
+
+
+#: A number quoted before "deg" in a sentence, a note or a column label.
+_QUOTED_ANGLE = re.compile(r"(?<![\w.^/])([+-]?\d+(?:\.\d+)?) ?deg\b")
+
+
+def _design_angles(folder):
+    """The angles a checker follows from report to report, as the cells hold them (to the
+    last bit): the Findings' hook design angle, and the lateral study's largest load angle
+    (its Summary)."""
+    import pandas as pd
+
+    loads = next(Path(folder).glob("*-loads.xlsx"))
+    findings = pd.read_excel(loads, sheet_name="Findings", header=None)
+    row = findings[findings[0].astype(str).str.startswith("hook design angle")].iloc[0]
+    angles = {"hook design angle": float(row[2])}
+    lateral = next(Path(folder).glob("*-lateral.xlsx"), None)
+    if lateral is not None:
+        summary = pd.read_excel(lateral, sheet_name="Summary", header=None)
+        hit = summary[summary[0].astype(str).str.startswith("largest load angle |theta1 - "
+                                                            "theta2| over the")]
+        angles["largest load angle"] = float(hit.iloc[0, 1])
+    return angles
+
+
+def test_design_angles_quoted_as_their_cells(example_campaign_run_report, us_twin_reports):
+    """The hook design angle and the lateral study's largest load angle, wherever a report
+    quotes them in words (the hook directions' note, a load case's description, a column
+    label of the hook cases, the Findings' source), read as their cells (0.1 deg, formats.py
+    'deg'), in every report of the example with its campaign and of the US twin: the
+    example's 33.2 deg in the cells, '33.24 deg' in the note beside them and '33.2361 deg' in
+    the load cases' descriptions cannot recur. Reference: the cell values read back; a
+    quoted number within 0.05 deg of an angle but written with more than one decimal is the
+    same angle at another precision."""
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        angles = _design_angles(folder)
+        wrong = []
+        for book, sheet, text in _texts(folder):
+            for match in _QUOTED_ANGLE.finditer(text):
+                number = match.group(1)
+                decimals = len(number.partition(".")[2])
+                for name, value in angles.items():
+                    if decimals > 1 and abs(float(number) - value) < 0.05:
+                        wrong.append((book, sheet, name, number, text[:100]))
+        assert not wrong, wrong[:5]

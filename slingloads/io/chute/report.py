@@ -28,6 +28,7 @@ import pandas as pd
 from slingloads.analyses.chute_sizing import (
     wake_ratio_at,
 )
+from slingloads.analyses.hook_loads import angle_words
 from slingloads.constants import FOOT, KNOT, POUND_FORCE
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.decision import decision_section, with_decision
@@ -137,7 +138,8 @@ def summary_tables(result, units="SI"):
         ("dynamic pressure q", c.dynamic_pressure, "pressure", "1/2 rho0 V_EAS^2"),
         ("alpha trim", float(np.degrees(c.alpha)), "deg",
          (f"towed trim at this airspeed with the Study's parachute (the attitude the loads' "
-          f"towed cases and the multibody model fly; pitch {np.degrees(result.towed.pitch):+.2f}"
+          f"towed cases and the multibody model fly; pitch "
+          f"{angle_words(np.degrees(result.towed.pitch))}"
           " deg); the swept areas are sized at it"
           if result.towed is not None and result.towed.converged else
           "Study 'chute sizing alpha trim' (no towed trim: "
