@@ -325,3 +325,45 @@ def test_findings_of_a_single_analysis_say_not_run(example_loads_report):
                  "answer"] == "not run"
     assert "the Study's (no lateral study run)" in f.loc[
         "hook design angle, lateral directions (from the vertical)", "answer"]
+
+
+def _every_run(path):
+    """The parachute sizing's 'Every run' table (its parts joined), from whichever sheet of
+    the report holds it."""
+    book = pd.ExcelFile(path)
+    for name in book.sheet_names:
+        frame = pd.read_excel(book, sheet_name=name, header=None)
+        for first in ("area [m^2]", "area [ft^2]"):
+            table = _parts(frame, first)
+            if table is not None and "beta offset from trim [deg]" in table:
+                return table
+    raise AssertionError(f"no 'Every run' table in {path.name}")
+
+
+def test_every_runs_final_sideslip_follows_its_trim_and_offset(example_campaign_run_report,
+                                                               us_twin_reports):
+    """The sizing's 'Every run' table states the trim each run is judged about, so that its
+    final beta and its offset from trim relate as the envelope test defines them: the final
+    sample and the second half's mean both lie in the second half's range, so |final beta -
+    (beta trim + offset)| <= 2 x the second half's amplitude (+ the cells' 0.1 deg
+    rounding), on every run of both examples. Without the trim column a step gust's final
+    beta -8.1 deg beside an offset 0.0 deg reads as a contradiction."""
+    for folder in (example_campaign_run_report, us_twin_reports[1]):
+        table = _every_run(_reports(folder)["chute"])
+        assert "beta trim [deg]" in table, list(table.columns)
+        rows = table[["final beta [deg]", "beta trim [deg]", "beta offset from trim [deg]",
+                      "beta amplitude second half [deg]"]].apply(pd.to_numeric,
+                                                                 errors="coerce").dropna()
+        assert len(rows) > 10
+        gap = (rows["final beta [deg]"] - rows["beta trim [deg]"]
+               - rows["beta offset from trim [deg]"]).abs()
+        assert (gap <= 2 * rows["beta amplitude second half [deg]"] + 0.15).all(), \
+            rows[gap > 2 * rows["beta amplitude second half [deg]"] + 0.15]
+        # a held gust moves the trim only when the weight has a moment: at least one run of
+        # the example is judged about a trim away from its final beta's zero
+        assert (rows["beta trim [deg]"].abs() > 0.5).any() or folder is not \
+            example_campaign_run_report
+        notes = " ".join(str(v) for sheet in pd.ExcelFile(_reports(folder)["chute"]).sheet_names
+                         for v in _sheet(_reports(folder)["chute"], sheet)[0].dropna())
+        assert "beta trim: the static equilibrium the run is judged about" in notes
+

@@ -779,8 +779,13 @@ class YawRuns:
     gusts : tuple
     histories : Histories
     metrics : pandas.DataFrame
-        One row per run: peak |beta| and |psi|; the sideslip's offset from trim and its
-        half amplitudes over the two halves of the envelope test; linear damping ratio
+        One row per run: peak |beta| and |psi|; final beta and psi (the last sample); the
+        trim the run is judged about ("beta trim": the static equilibrium at rest, or under
+        the gust still acting at the end of the run, which moves it when the weight has a
+        moment about the yaw axis); the sideslip's offset from that trim (the mean over the
+        second half of the envelope test's window, less the trim) and its half amplitudes
+        over the two halves (so that a final beta lies within twice the second half's
+        amplitude of trim + offset); linear damping ratio
         c / (2 sqrt(k I)) and natural frequency on the local slopes at zero sideslip (the
         yaw mode's eigenvalue); damping ratio from the logarithmic decrement of the first two
         positive yaw-rate peaks after the gust ends (NaN for continuous gusts or no
@@ -917,6 +922,7 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
         "peak psi [deg]": _deg(peak_psi),
         "final beta [deg]": _deg(hist.beta[:, -1]),
         "final psi [deg]": _deg(hist.psi[:, -1]),
+        "beta trim [deg]": _deg(trim),
         "beta offset from trim [deg]": _deg(env.offset),
         "beta amplitude first half [deg]": _deg(env.first),
         "beta amplitude second half [deg]": _deg(env.second),

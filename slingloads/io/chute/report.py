@@ -418,7 +418,15 @@ def _sheets(result, units, warnings=(), decision=None):
             Section("Gust shapes", convert_columns(result.sweep.gust_frame(), speed, units)),
             Section("Stability by area",
                     convert_columns(result.stability_by_area(), area, units)),
-            Section("Every run", convert_columns(result.sweep.to_frame(), area, units))]
+            Section("Every run", convert_columns(result.sweep.to_frame(), area, units),
+                    note="final beta, final psi: the last sample of the run. beta trim: the "
+                         "static equilibrium the run is judged about (at rest, or under the "
+                         "gust still acting at the end, step and continuous, which moves it "
+                         "when the weight has a moment about the yaw axis). beta offset from "
+                         "trim: the mean sideslip over the second half of the window after "
+                         "the gust, less beta trim (a run that settles off its trim is a "
+                         "static departure of that size). So final beta lies within twice "
+                         "the second half's amplitude of beta trim + offset.")]
         beta, psi, interval = history_tables(result, units)
         note = (f"Every {interval:g} s; every stored sample in the -chute-histories.csv file. "
                 "Columns: swept area and gust shape of each run.")
