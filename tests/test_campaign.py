@@ -479,6 +479,9 @@ def test_sensitivity_tables_and_carrier_pairs_against_a_hand_built_table():
     assert_allclose(area["largest yaw change [deg]"], [19.0, 23.0])
     speed = tables["airspeed"].set_index("airspeed EAS [m/s]")
     assert_array_equal(speed["runs"], [2, 2])
+    # the table says which runs it is taken over: those at the selected area factor
+    assert_allclose(speed["at area factor [-]"], 1.4)
+    assert "at area factor [-]" not in tables["parachute area"]
     assert_allclose(speed["largest yaw change [deg]"], [19.0, 23.0])
     carrier = tables["carrier"].set_index("carrier")
     assert_allclose(carrier.loc[["frozen", "free"], "largest yaw change [deg]"], [22.0, 23.0])

@@ -367,3 +367,20 @@ def test_every_runs_final_sideslip_follows_its_trim_and_offset(example_campaign_
                          for v in _sheet(_reports(folder)["chute"], sheet)[0].dropna())
         assert "beta trim: the static equilibrium the run is judged about" in notes
 
+
+def test_sensitivity_tables_say_which_runs_they_cover(example_campaign_run_report):
+    """The campaign's Sensitivity sheet: the airspeed table covers the runs at the selected
+    area factor only, and says so (its 'at area factor' column, the sheet's note); its runs
+    add up to the Matrix sheet's runs at that factor (the reference: the run matrix as
+    written), not to every run of the matrix as 'over every value of the others' alone would
+    read."""
+    path = _reports(example_campaign_run_report)["campaign"]
+    matrix = _parts(_sheet(path, "Matrix"), "run")
+    frame = _sheet(path, "Sensitivity")
+    speed = _parts(frame, "airspeed EAS [kt]")
+    assert speed is not None
+    factor = set(pd.to_numeric(speed["at area factor [-]"]))
+    assert len(factor) == 1
+    at = pd.to_numeric(matrix["area factor [-]"]) == pytest.approx(factor.pop())
+    assert pd.to_numeric(speed["runs"]).sum() == at.sum() < len(matrix)
+    assert "only the runs at the selected area factor" in _text(path, "Sensitivity")

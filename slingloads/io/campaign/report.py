@@ -288,7 +288,10 @@ def _sheets(report, units, warnings=(), decision=None):
     sheets["Sensitivity"] = ([Section("Sensitivity of the metrics to each factor of the "
                                       "matrix", note="Each row: the runs with that value "
                                       "of the factor, over every value of the others "
-                                      "(largest or least as the header says)."), *sens]
+                                      "(largest or least as the header says); for every "
+                                      "factor but the parachute area, only the runs at the "
+                                      "selected area factor (column 'at area factor'): the "
+                                      "area is fixed first, then the rest varies."), *sens]
                              if sens else "no factor varies")
     if r.stability is not None:
         sheets["StabilityMap"] = [
