@@ -128,7 +128,8 @@ class ParachuteDecision:
             Columns item, value, unit (areas in m^2), note.
         """
         one = ("; ".join(f"{g}: {v}" for g, v in self.one_dof_verdicts.items())
-               if self.one_dof_verdicts else ("not run" if not self.one_dof_ran else "-"))
+               if self.one_dof_verdicts else ("not run" if not self.one_dof_ran else
+                                              NO_AREA if not self.found else "-"))
         rows = [
             ("neutral area, least-squares slopes", self.neutral_area_fit, "m^2", ""),
             ("neutral area, local slopes at beta 0", self.neutral_area_local, "m^2", ""),
@@ -200,10 +201,13 @@ def multibody_verdict_at(metrics, area, stable):
     Returns
     -------
     str
-        "stable in all N runs", how many are not and the worst response, or "not run".
+        "stable in all N runs", how many are not and the worst response, "not run"
+        (no campaign), or :data:`NO_AREA` (no area to judge).
     """
-    if metrics is None or not np.isfinite(area):
+    if metrics is None:
         return "not run"
+    if not np.isfinite(area):
+        return NO_AREA
     at = np.isclose(metrics["area [m^2]"].to_numpy(float), area, rtol=1e-6)
     if not at.any():
         return "not run at this area"
@@ -212,9 +216,13 @@ def multibody_verdict_at(metrics, area, stable):
     if ok == total:
         return f"stable in all {total} runs" if total > 1 else "stable in its 1 run"
     verdicts = metrics.loc[at, "response verdict"].astype(str)
-    return (f"NOT stable: {total - ok} of {total} {'runs fail' if total > 1 else 'run fails'} "
+    return (f"NOT stable in every run: {total - ok} of {total} not shown stable "
             f"(worst response: {worst(list(verdicts))})")
 
+
+#: The verdict at an area that is not there (no area chosen, or none proposed): the
+#: analysis ran, it has nothing to judge (never "not run").
+NO_AREA = "none: no area to judge (none chosen or proposed)"
 
 #: Largest difference between the 1-DOF and the multibody yaw damping ratios at one area and
 #: airspeed read as agreement. [-]
@@ -364,5 +372,5 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
         model, reason, governing, float(study_area), str(yaw_axis), mb1, damping)
 
 
-__all__ = ["DAMPING_TOLERANCE", "MULTIBODY", "ONE_DOF", "ParachuteDecision",
+__all__ = ["DAMPING_TOLERANCE", "MULTIBODY", "NO_AREA", "ONE_DOF", "ParachuteDecision",
            "damping_comparison", "decide", "multibody_verdict_at", "one_dof_proposal"]
