@@ -189,3 +189,35 @@ def test_design_angles_quoted_as_their_cells(example_campaign_run_report, us_twi
                     if decimals > 1 and abs(float(number) - value) < 0.05:
                         wrong.append((book, sheet, name, number, text[:100]))
         assert not wrong, wrong[:5]
+
+
+def test_altitude_columns_to_the_whole_unit(example_campaign_run_report, us_twin_reports):
+    """Every column of every report whose header names an altitude (the campaign's matrix,
+    its stability map, the sweeps) writes it to the whole metre or foot, as every sentence
+    quotes it (docs/reports.md: an altitude to the whole unit): no 'density altitude 0.000'
+    in m nor '0.00' in ft beside 'density altitude 0 m' on the same page. Reference: the
+    cells' number formats as the file format reads them back (openpyxl)."""
+    _, twin = us_twin_reports
+    checked, wrong = 0, []
+    for folder in (example_campaign_run_report, twin):
+        for path in sorted(Path(folder).glob("*.xlsx")):
+            book = openpyxl.load_workbook(path, read_only=True)
+            for sheet in book.worksheets:
+                rows = list(sheet.iter_rows())
+                for i, row in enumerate(rows):
+                    for j, cell in enumerate(row):
+                        text = cell.value
+                        if not (isinstance(text, str) and re.search(r"altitude \[(m|ft)\]$",
+                                                                    text)):
+                            continue
+                        for below in rows[i + 1:]:
+                            value = below[j].value if j < len(below) else None
+                            if not isinstance(value, (int, float)) or isinstance(value, bool):
+                                break
+                            checked += 1
+                            if below[j].number_format not in ("#,##0", "0"):
+                                wrong.append((path.name, sheet.title, text,
+                                              below[j].number_format))
+            book.close()
+    assert checked > 10
+    assert not wrong, wrong[:5]

@@ -14,6 +14,7 @@ force, moment (US)                          lbf, lbf in, lbf ft    ``#,##0`` (2,
 force, moment (plots)                       kN, kN m, 1000 lbf ft  ``#,##0.00``
 length                                      m                      ``0.000`` (4.087)
 length                                      in, ft                 ``0.00`` (160.91)
+altitude (a header naming one)              m, ft                  ``#,##0`` (1,524)
 mass, inertia                               kg, lb, kg m^2, ...    ``#,##0.0``
 angle                                       deg                    ``0.0`` (30.0)
 angle                                       rad                    ``0.0000``
@@ -99,6 +100,26 @@ def unit_format(unit):
     if unit is None:
         return None
     return UNIT_FORMATS.get(str(unit).strip())
+
+
+#: Format of an altitude: to the whole metre or foot, as every sentence of a report quotes it
+#: (``report.quantity_text``), never to the millimetre of a length.
+ALTITUDE_FORMAT = "#,##0"
+
+
+def header_format(header):
+    """Excel number format of a column from its header: the unit's (:func:`unit_format`),
+    but an altitude (a header naming one, in m or ft) to the whole unit.
+
+    Examples
+    --------
+    >>> header_format("density altitude [m]"), header_format("cable length [m]")
+    ('#,##0', '0.000')
+    """
+    unit = header_unit(header)
+    if unit in ("m", "ft") and "altitude" in str(header).lower():
+        return ALTITUDE_FORMAT
+    return unit_format(unit)
 
 
 def _decimals(number_format):
