@@ -17,6 +17,7 @@ above Nz, a hook angle of 90 deg or more or below the Study's...).
 
 import math
 import re
+import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -354,7 +355,7 @@ def test_every_runs_final_sideslip_follows_its_trim_and_offset(example_campaign_
         rows = table[["final beta [deg]", "beta trim [deg]", "beta offset from trim [deg]",
                       "beta amplitude second half [deg]"]].apply(pd.to_numeric,
                                                                  errors="coerce").dropna()
-        assert len(rows) > 10
+        assert len(rows) >= 6  # the US twin sweeps 3 areas x 2 gusts
         gap = (rows["final beta [deg]"] - rows["beta trim [deg]"]
                - rows["beta offset from trim [deg]"]).abs()
         assert (gap <= 2 * rows["beta amplitude second half [deg]"] + 0.15).all(), \
@@ -363,9 +364,11 @@ def test_every_runs_final_sideslip_follows_its_trim_and_offset(example_campaign_
         # the example is judged about a trim away from its final beta's zero
         assert (rows["beta trim [deg]"].abs() > 0.5).any() or folder is not \
             example_campaign_run_report
-        notes = " ".join(str(v) for sheet in pd.ExcelFile(_reports(folder)["chute"]).sheet_names
-                         for v in _sheet(_reports(folder)["chute"], sheet)[0].dropna())
-        assert "beta trim: the static equilibrium the run is judged about" in notes
+        # the table's note, printed under it (a table sheet's text box: the workbook's XML)
+        with zipfile.ZipFile(_reports(folder)["chute"]) as book:
+            xml = " ".join(book.read(n).decode("utf-8", "replace") for n in book.namelist()
+                           if n.endswith(".xml"))
+        assert "beta trim: the static equilibrium the run is judged about" in xml
 
 
 def test_sensitivity_tables_say_which_runs_they_cover(example_campaign_run_report):
@@ -381,6 +384,6 @@ def test_sensitivity_tables_say_which_runs_they_cover(example_campaign_run_repor
     assert speed is not None
     factor = set(pd.to_numeric(speed["at area factor [-]"]))
     assert len(factor) == 1
-    at = pd.to_numeric(matrix["area factor [-]"]) == pytest.approx(factor.pop())
+    at = np.isclose(pd.to_numeric(matrix["area factor [-]"]), factor.pop())
     assert pd.to_numeric(speed["runs"]).sum() == at.sum() < len(matrix)
     assert "only the runs at the selected area factor" in _text(path, "Sensitivity")
