@@ -102,7 +102,7 @@ def test_the_us_twins_reports_keep_their_unit_system(us_twin_reports):
 
 
 @pytest.mark.parametrize("units, cable, altitude", [("US", "720 in", "5,000 ft"),
-                                                     ("SI", "18.29 m", "1,524 m")])
+                                                     ("SI", "18.288 m", "1,524 m")])
 def test_one_spelling_per_quantity(units, cable, altitude):
     """The helper every title uses: 60 ft = 18.288 m = 720 in exactly (1 ft = 0.3048 m);
     5000 ft = 1524 m exactly, an altitude to the whole unit."""
@@ -221,3 +221,36 @@ def test_altitude_columns_to_the_whole_unit(example_campaign_run_report, us_twin
             book.close()
     assert checked > 10
     assert not wrong, wrong[:5]
+
+
+_QUOTED_CABLE = re.compile(r"\bcable (?:length )?(\d[\d,]*(?:\.\d+)?) (m|in)(?![\w^/])")
+
+
+def test_cable_lengths_quoted_as_their_cells(example_campaign_run_report, us_twin_reports):
+    """The carrier cable quoted in a sentence (the campaign's conditions, its Summary's list,
+    the cable checks) is the number of the campaign matrix's cable-length cells at their
+    precision (formats.py: 0.000 m, 0.00 in; trailing zeros dropped), in every report of
+    both examples: the example's 60 ft = 18.288 m exactly, never '18.29 m' beside a cell of
+    18.288. Reference: the Matrix sheet's cells read back."""
+    import pandas as pd
+
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        campaign = next(Path(folder).glob("*-campaign.xlsx"))
+        matrix = pd.read_excel(campaign, sheet_name="Matrix", header=None)
+        head = matrix[matrix[0] == "run"].index[0]
+        columns = [str(c) for c in matrix.iloc[head]]
+        j = next(k for k, c in enumerate(columns) if c.startswith("cable length ["))
+        unit = columns[j].split("[")[1].rstrip("]")
+        decimals = {"m": 3, "in": 2}[unit]
+        cells = {round(float(v), decimals) for v in matrix.iloc[head + 1:, j].dropna()}
+        quoted = [(book, sheet, m.group(1), m.group(2), text[:80])
+                  for book, sheet, text in _texts(folder)
+                  for m in _QUOTED_CABLE.finditer(text)]
+        assert quoted
+        wrong = [q for q in quoted if q[3] != unit
+                 or float(q[2].replace(",", "")) not in cells]
+        assert not wrong, (cells, wrong[:5])
+        summary = pd.read_excel(campaign, sheet_name="Summary", header=None)
+        listed = summary[summary[0] == "cable lengths"].iloc[0, 1]
+        assert {float(v) for v in str(listed).split(", ")} == cells

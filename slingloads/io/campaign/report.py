@@ -137,7 +137,9 @@ def definition_table(report, units):
         ("mass cases", masses, "lb" if units == "US" else "kg", "inertia scaled with mass"),
         ("density altitudes", *listing("density altitude [m]",
                                        lambda v: _altitude(v, units)), "ISA"),
-        ("cable lengths", *listing("cable length [m]", lambda v: _length(v, units)), ""),
+        ("cable lengths", ", ".join(quantity_text(v, "length", units).rpartition(" ")[0]
+                                    for v in dict.fromkeys(frame["cable length [m]"])),
+         _length(1.0, units)[1], ""),
         ("carriers", *listing("carrier"), ""),
         ("manoeuvres", *listing("manoeuvre"), ""),
         ("run length", c.settings.t_end, "s", ""),

@@ -257,8 +257,7 @@ def _study_area_rows(result):
 def _cable_message(cable, units):
     """The check's message in report units."""
     def show(x):
-        v, u = _value(x, "length", units)
-        return f"{v:.4g} {u}"
+        return quantity_text(x, "length", units)
     if cable.ok:
         return (f"the cable is at least {cable.margin:.0%} longer than the parachute line "
                 f"{show(cable.line_length)}")
@@ -361,15 +360,15 @@ def _summary_note(result, units, decision=None):
     if static.already_stable:
         return "Fuselage and fin are already statically stable in yaw: no parachute needed."
     area, rec = static.area, result.recommended_area  # [m^2], converted as the report writes
-    line, lunit = _value(result.line.line_length, "length", units)
+    line = quantity_text(result.line.line_length, "length", units)
     said = _decision_sentence(decision, units)
     if not np.isfinite(result.recommended_area):
         return (f"Neutral static area {area:.6g} m^2; NO swept area is stable under every "
-                f"gust (1-DOF): no area recommended; parachute line {line:.4g} {lunit} from "
+                f"gust (1-DOF): no area recommended; parachute line {line} from "
                 "the wake." + said)
     return (f"Neutral static area {area:.6g} m^2; 1-DOF recommended area {rec:.6g} m^2 "
             f"({result.recommended_area / static.area:.3g} x neutral, the smallest swept area "
-            f"stable under every gust); parachute line {line:.4g} {lunit} from the wake."
+            f"stable under every gust); parachute line {line} from the wake."
             + said)
 
 

@@ -122,7 +122,7 @@ def header_format(header):
     return unit_format(unit)
 
 
-def _decimals(number_format):
+def format_decimals(number_format):
     """Decimals shown by a fixed-point format (``"0.000"`` -> 3)."""
     if "E" in number_format or "." not in number_format:
         return 0
@@ -153,6 +153,6 @@ def value_format(value, number_format, dimensionless=False):
     if isinstance(value, int):
         return "#,##0" if number_format.startswith("#,##") else INTEGER_FORMAT
     if dimensionless and abs(value) >= ROUND_OFF and "E" not in number_format:
-        if abs(value) < 0.5 * 10.0 ** -_decimals(number_format):
+        if abs(value) < 0.5 * 10.0 ** -format_decimals(number_format):
             return SCIENTIFIC_FORMAT
     return number_format
