@@ -302,6 +302,15 @@ def test_loads_envelope_against_the_histories(local):
         h["hub Fx [N]"] ** 2 + h["hub Fy [N]"] ** 2 + h["hub Fz [N]"] ** 2))).max()
     assert env.hook_angle == pytest.approx(np.radians(1.5 * total))
     assert env.runs == 2 and set(env.source["beta"]) <= set(runs)
+    # the table handed to the report says the rule beside each row, and its numbers follow it
+    # (an alpha range whose runs never reach 0 still ends at 0.0 with the margin: the note
+    # says why)
+    for _, row in env.to_frame().iterrows():
+        assert row["note"].startswith("x 1.5")
+        widened = "include 0" in row["note"]
+        assert widened == (row["quantity"] in ("alpha", "beta", "line theta", "line psi"))
+        hi = 1.5 * row["reached max"]
+        assert row["with margin max"] == pytest.approx(max(0.0, hi) if widened else hi)
 
 
 # -------------------------------------------------------------------------- bad input
