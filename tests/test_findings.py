@@ -387,3 +387,21 @@ def test_sensitivity_tables_say_which_runs_they_cover(example_campaign_run_repor
     at = np.isclose(pd.to_numeric(matrix["area factor [-]"]), factor.pop())
     assert pd.to_numeric(speed["runs"]).sum() == at.sum() < len(matrix)
     assert "only the runs at the selected area factor" in _text(path, "Sensitivity")
+
+
+def test_one_required_cable_length_for_one_parachute_line(example_campaign_run_report):
+    """The carrier-cable check is stated in the parachute sizing and in the multibody report:
+    both check the cable against the line flown (the Study's 10.1 m, the longer than the
+    wake's 10.058 m) with one margin, so both state one required length, (1 + 0.2) x 10.1 =
+    12.12 m (hand calculation), not 12.070 m in one report and 12.120 m in the other."""
+    reports = _reports(example_campaign_run_report)
+    chute = _items(reports["chute"])
+    wake, study = _num(chute["parachute line length (from the wake)"]), _num(
+        chute["Study 'parachute line length'"])
+    required = _num(chute["required cable length"])
+    assert required == pytest.approx(1.2 * max(wake, study), abs=5e-4)
+    assert required == pytest.approx(12.12, abs=5e-4)
+    multibody = _sheet(reports["multibody"], "Summary")
+    row = multibody[multibody[0] == "cable against the line"].iloc[0]
+    needs = re.search(r"needs >= ([\d.]+) m", " ".join(str(v) for v in row.dropna()))
+    assert needs and float(needs.group(1)) == pytest.approx(required, abs=5e-4)

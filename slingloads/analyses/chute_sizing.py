@@ -665,8 +665,12 @@ class LineLengthResult:
 
 
 def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGIN,
-                distance=None):
+                distance=None, flown_line=None):
     """Shortest parachute line at which the wake ratio reaches ``target``, and the cable check.
+
+    The cable is checked against the longer of that line and the line flown (the Study's,
+    which the loads and the multibody model use), so that this check and the multibody
+    system's state one required cable length for one parachute line.
 
     Parameters
     ----------
@@ -679,6 +683,8 @@ def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGI
         [-]
     distance : array_like, optional
         Distances for the ratio curve (default: the table, or up to 1.5 x the line). [m]
+    flown_line : float, optional
+        The parachute line flown (the Study's 'parachute line length'). [m]
 
     Returns
     -------
@@ -692,7 +698,8 @@ def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGI
             distance = np.linspace(wake.min_distance, max(1.5 * length, 2 * wake.min_distance),
                                    200)
     distance = np.asarray(distance, dtype=float)
-    cable = None if cable_length is None else check_cable_length(cable_length, length, margin)
+    checked = length if flown_line is None else max(float(length), float(flown_line))
+    cable = None if cable_length is None else check_cable_length(cable_length, checked, margin)
     return LineLengthResult(float(length), float(target), wake.source, distance,
                             np.asarray(wake(distance)), cable)
 

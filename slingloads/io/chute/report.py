@@ -219,7 +219,9 @@ def summary_tables(result, units="SI"):
     else:
         rows += [("carrier cable length", cable.cable_length, "length", ""),
                  ("required cable length", cable.required, "length",
-                  f"(1 + {cable.margin:g}) x line"),
+                  f"(1 + {cable.margin:g}) x line "
+                  f"{quantity_text(cable.line_length, 'length', units)} (the longer of the "
+                  "wake's and the Study's, the one flown)"),
                  ("carrier cable check", "ok" if cable.ok else "FAIL", None,
                   _cable_message(cable, units))]
     return {"condition": condition, "sizing": sizing, "breakdown": breakdown,
