@@ -254,3 +254,30 @@ def test_cable_lengths_quoted_as_their_cells(example_campaign_run_report, us_twi
         summary = pd.read_excel(campaign, sheet_name="Summary", header=None)
         listed = summary[summary[0] == "cable lengths"].iloc[0, 1]
         assert {float(v) for v in str(listed).split(", ")} == cells
+
+
+def test_campaign_definition_lists_its_matrix_cells(example_campaign_run_report,
+                                                    us_twin_reports):
+    """The campaign Summary's definition lists the matrix's area factors and masses as the
+    Matrix sheet's cells read (0.000 for a factor, 0.0 for a mass; trailing zeros of a
+    factor dropped), in both examples: the US twin's added sizing factor reads '1.5', never
+    the float '1.4999999999999996', and its mass '10,802.9' lb as its cells, not '10803'."""
+    import pandas as pd
+
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        campaign = next(Path(folder).glob("*-campaign.xlsx"))
+        matrix = pd.read_excel(campaign, sheet_name="Matrix", header=None)
+        head = matrix[matrix[0] == "run"].index[0]
+        table = matrix.iloc[head + 1:].set_axis([str(c) for c in matrix.iloc[head]], axis=1)
+        mass = next(c for c in table.columns if c.startswith("mass ["))
+        summary = pd.read_excel(campaign, sheet_name="Summary", header=None)
+        item = dict(zip(summary[0], summary[1], strict=False))
+        factors = [float(v) for v in str(item["area factors"]).split(", ")]
+        assert factors == list(dict.fromkeys(round(float(v), 3)
+                                             for v in table["area factor [-]"]))
+        assert all(len(str(v).partition(".")[2]) <= 3
+                   for v in str(item["area factors"]).split(", "))
+        masses = {float(m.replace(",", "")) for m in
+                  re.findall(r"(\d[\d,]*\.\d)", str(item["mass cases"]))}
+        assert masses == {round(float(v), 1) for v in table[mass]}

@@ -117,14 +117,17 @@ def definition_table(report, units):
     r = report.result
     ex = r.execution
 
+    def listed(v):  # a factor as its cell (0.000), trailing zeros dropped: never 1.4999...6
+        return f"{v:.3f}".rstrip("0").rstrip(".") if isinstance(v, float) else str(v)
+
     def listing(column, convert=None):
         values = list(dict.fromkeys(frame[column]))
         if convert is None:
-            return ", ".join(str(v) for v in values), ""
+            return ", ".join(dict.fromkeys(listed(v) for v in values)), ""
         shown = [convert(v)[0] for v in values]
         return ", ".join(f"{v:.4g}" for v in shown), convert(values[0])[1]
 
-    masses = ", ".join(f"{k} {(m / POUND if units == 'US' else m):.0f}"
+    masses = ", ".join(f"{k} {(m / POUND if units == 'US' else m):,.1f}"  # as its cells
                        for k, m in c.matrix.masses.items())
     rows = [
         ("runs in the matrix", len(frame), "-", "full factorial" if c.rows is None
