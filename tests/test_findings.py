@@ -349,7 +349,7 @@ def test_every_runs_final_sideslip_follows_its_trim_and_offset(example_campaign_
     (beta trim + offset)| <= 2 x the second half's amplitude (+ the cells' 0.1 deg
     rounding), on every run of both examples. Without the trim column a step gust's final
     beta -8.1 deg beside an offset 0.0 deg reads as a contradiction."""
-    for folder in (example_campaign_run_report, us_twin_reports[1]):
+    for folder in (example_campaign_run_report, us_twin_reports):  # this module's: a folder
         table = _every_run(_reports(folder)["chute"])
         assert "beta trim [deg]" in table, list(table.columns)
         rows = table[["final beta [deg]", "beta trim [deg]", "beta offset from trim [deg]",
