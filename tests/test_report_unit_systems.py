@@ -29,8 +29,9 @@ def _quoted(units):
 
 FOREIGN = {"SI": _quoted(US_UNITS), "US": _quoted(SI_UNITS)}
 #: A length in feet: quoted after a number or in a header; an altitude is the one quantity
-#: a US report writes in ft (its word before it, or "HD" after it).
-FEET = re.compile(r"(?P<before>[\w ]{0,30}?)(?:\d\s?ft|\[ft\])(?![\w^/])(?P<after> HD)?")
+#: a US report writes in ft (its word before it, or after it: "0 ft density altitude").
+FEET = re.compile(r"(?P<before>[\w ]{0,30}?)(?:\d\s?ft|\[ft\])(?![\w^/])"
+                  r"(?P<after> density altitude)?")
 
 
 def _user_names(book):

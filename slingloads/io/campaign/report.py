@@ -355,8 +355,8 @@ def _locus(result, units="SI"):
                & np.isclose(loci["density altitude [m]"], altitude)]
     c = result.stability.condition
     mass = mass_text(c["mass [kg]"], units)
-    title = (f"{speed / KNOT:.0f} KEAS, {quantity_text(altitude, 'altitude', units)} HD, "
-             f"mass {c['mass case']} {mass}, cable "
+    title = (f"{speed / KNOT:.0f} KEAS, {quantity_text(altitude, 'altitude', units)} density "
+             f"altitude, mass {c['mass case']} {mass}, cable "
              f"{quantity_text(c['cable length [m]'], 'length', units)}, carrier "
              f"{c['carrier']}:\nleast-damped roots, area {sel['area factor [-]'].min():.3g}-"
              f"{sel['area factor [-]'].max():.3g} x neutral")
