@@ -405,3 +405,18 @@ def test_one_required_cable_length_for_one_parachute_line(example_campaign_run_r
     row = multibody[multibody[0] == "cable against the line"].iloc[0]
     needs = re.search(r"needs >= ([\d.]+) m", " ".join(str(v) for v in row.dropna()))
     assert needs and float(needs.group(1)) == pytest.approx(required, abs=5e-4)
+
+
+def test_the_multibody_summary_quotes_the_findings_real_part(example_campaign_run_report,
+                                                              us_twin_reports):
+    """The multibody Summary's sentence on the linear stability quotes the largest real part
+    as the Findings' cell beside it reads (1/s to 0.0000, formats.py): the example's
+    -0.0062 1/s, never '-0.006195 1/s' in the sentence above a cell of -0.0062; and the US
+    twin's +0.1228. Reference: the Findings cell read back."""
+    for folder in (example_campaign_run_report, us_twin_reports):
+        path = _reports(folder)["multibody"]
+        cell = _num(_findings(path).loc["linear stability of the towed system at its trim "
+                                        "(multibody)", "value"])
+        said = re.search(r"largest real part (-?[\d.e+-]+) 1/s", _text(path))
+        assert said, _text(path)[:200]
+        assert said.group(1) == f"{cell:.4f}", (said.group(1), cell)
