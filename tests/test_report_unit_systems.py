@@ -282,3 +282,23 @@ def test_campaign_definition_lists_its_matrix_cells(example_campaign_run_report,
         masses = {float(m.replace(",", "")) for m in
                   re.findall(r"(\d[\d,]*\.\d)", str(item["mass cases"]))}
         assert masses == {round(float(v), 1) for v in table[mass]}
+
+
+#: A damping ratio quoted in words: a mode's "zeta 0.069", the decision's "1-DOF 0.160 (its
+#: yaw mode", "multibody 0.069 (least over", the selection's "yaw-mode damping 0.069".
+_QUOTED_RATIO = re.compile(r"(?:zeta|1-DOF|multibody|yaw-mode damping) (-?\d+\.(\d+))"
+                           r"(?= \(|,|\)| )")
+
+
+def test_damping_ratios_quoted_as_their_cells(example_campaign_run_report, us_twin_reports):
+    """A damping ratio quoted in a verdict, a check or the parachute decision is written at
+    the precision of a ratio's cell (formats.py '-': 0.000), in every report of both
+    examples: the example's 'zeta 0.0691' and 'multibody 0.0691' beside cells of 0.069, and
+    '1-DOF 0.16' beside 0.160, cannot recur."""
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        found = [(book, sheet, m.group(1), text[:90]) for book, sheet, text in _texts(folder)
+                 for m in _QUOTED_RATIO.finditer(text)]
+        assert found, folder
+        wrong = [f for f in found if len(f[2].partition(".")[2]) != 3]
+        assert not wrong, wrong[:5]

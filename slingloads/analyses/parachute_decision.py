@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.verdicts import ACCEPTED, worst
+from slingloads.analyses.verdicts import ACCEPTED, ratio_words, worst
 
 MULTIBODY = "multibody campaign"
 ONE_DOF = "1-DOF sizing"
@@ -256,7 +256,7 @@ def damping_comparison(runs, metrics, area, airspeed):
         return "no 1-DOF run at the chosen area"
     z1 = float(np.nanmin(runs["damping ratio linear [-]"].to_numpy(float)))
     where = f"{area:.6g} m^2, {airspeed / KNOT:.0f} KEAS"
-    one = f"1-DOF {z1:.3g} (its yaw mode, hub fixed)"
+    one = f"1-DOF {ratio_words(z1)} (its yaw mode, hub fixed)"
     if metrics is None or "yaw mode damping ratio [-]" not in metrics:
         return f"at {where}: {one}; no campaign run to compare"
     at = (np.isclose(metrics["area [m^2]"].to_numpy(float), area, rtol=1e-6)
@@ -269,8 +269,8 @@ def damping_comparison(runs, metrics, area, airspeed):
     mode = str(metrics.loc[at, "yaw mode"].iloc[k]) if "yaw mode" in metrics else "yaw mode"
     n = int(np.isfinite(zetas).sum())
     over = f"least over {n} runs" if n > 1 else "its 1 run"
-    text = (f"at {where}: {one}, multibody {z2:.3g} ({over}, mode {mode}); difference "
-            f"{z1 - z2:+.3g}")
+    text = (f"at {where}: {one}, multibody {ratio_words(z2)} ({over}, mode {mode}); "
+            f"difference {ratio_words(z1 - z2, sign=True)}")
     if abs(z1 - z2) <= DAMPING_TOLERANCE:
         return f"{text}: agree within {DAMPING_TOLERANCE:g}"
     return (f"{text}: differ by more than {DAMPING_TOLERANCE:g}: the multibody yaw mode "

@@ -374,9 +374,10 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name, reason=NO
                 f"{mode_name}, {mode_period:.3g} s): a mixed or nonlinear response")
     diff = measured - mode_zeta
     if abs(diff) <= DAMPING_TOLERANCE:
-        return (f"agrees with the {mode_name} mode (zeta {mode_zeta:.3g}, within "
+        return (f"agrees with the {mode_name} mode (zeta {ratio_words(mode_zeta)}, within "
                 f"{DAMPING_TOLERANCE:g})")
-    return (f"differs from the {mode_name} mode (zeta {mode_zeta:.3g}) by {diff:+.3g} > "
+    return (f"differs from the {mode_name} mode (zeta {ratio_words(mode_zeta)}) by "
+            f"{ratio_words(diff, sign=True)} > "
             f"{DAMPING_TOLERANCE:g}: amplitude-dependent (nonlinear) or several modes")
 
 
@@ -414,7 +415,7 @@ def response_mode(period, zeta, modes, whose="", reason=NOT_MEASURED):
     >>> response_mode(2.08, 0.03, modes)[0]
     'none within 25% (nearest: roll, 1.44 s)'
     >>> response_mode(1.62, 0.0015, modes)[0]
-    'roll (1.44 s, zeta 0.0014)'
+    'roll (1.44 s, zeta 0.001)'
     """
     name, mode_zeta, mode_period = nearest_mode(period, modes, zeta)
     check = damping_check(zeta, period, mode_zeta, mode_period, name, reason)
@@ -425,7 +426,7 @@ def response_mode(period, zeta, modes, whose="", reason=NOT_MEASURED):
     if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
         return (f"none within {PERIOD_TOLERANCE:.0%} (nearest: {name}{whose}, "
                 f"{mode_period:.3g} s)", check)
-    label = f"{name}{whose} ({mode_period:.3g} s, zeta {mode_zeta:.3g})"
+    label = f"{name}{whose} ({mode_period:.3g} s, zeta {ratio_words(mode_zeta)})"
     return label, check
 
 
@@ -521,9 +522,40 @@ def nearest_mode(period, modes, zeta=float("nan")):
             float(periods[k]))
 
 
+def ratio_words(value, sign=False):
+    """A damping ratio (or another ratio) for a sentence, at the precision of a ratio's cell
+    (0.000), so that a verdict's words and the cells beside it quote one number for one
+    damping ratio: 0.0691 reads "0.069" as its cell; a ratio too small for that precision
+    (below 0.0005, not zero) in the cells' scientific notation.
+
+    Parameters
+    ----------
+    value : float
+        [-]
+    sign : bool
+        Write the sign of a positive value too (a difference).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> ratio_words(0.0691), ratio_words(0.16), ratio_words(-0.181, sign=True)
+    ('0.069', '0.160', '-0.181')
+    >>> ratio_words(0.0913, sign=True), ratio_words(2.35e-05)
+    ('+0.091', '2.35E-05')
+    """
+    value = float(value)
+    plus = "+" if sign else ""
+    if value != 0.0 and abs(value) < 5e-4:
+        return f"{value:{plus}.2E}"
+    return f"{value:{plus}.3f}"
+
+
 __all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT",
            "EIGENVALUE_TOLERANCE", "INCONCLUSIVE", "LIMIT_CYCLE", "NEUTRAL", "NOT_MEASURED",
            "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE", "STABLE", "STATIC_DEPARTURE", "UNSTABLE",
            "VERDICTS", "YAW_SHARE", "Envelope", "EnvelopeTest", "damping_check", "envelope",
-           "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst",
-           "yaw_mode"]
+           "nearest_mode", "ratio_words", "response_mode", "settling_time", "slowest_period",
+           "worst", "yaw_mode"]

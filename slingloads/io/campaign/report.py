@@ -30,6 +30,7 @@ import pandas as pd
 
 from slingloads import __version__
 from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION
+from slingloads.analyses.verdicts import ratio_words
 from slingloads.constants import KNOT, POUND
 from slingloads.io.campaign.words import mass_text
 from slingloads.io.common.excel import Section
@@ -202,7 +203,7 @@ def selection_table(report, units):
     ]
     if gr is not None:
         rows += [("its governing condition (least yaw damping)", gr["condition"], "",
-                  f"yaw-mode damping {gr['least yaw-mode damping ratio [-]']:.3g} "
+                  f"yaw-mode damping {ratio_words(gr['least yaw-mode damping ratio [-]'])} "
                   f"({gr['with manoeuvre']})"),
                  ("its largest trimmed swing angle", gr["largest trimmed swing angle [deg]"],
                   "deg", gr["largest swing condition"])]
