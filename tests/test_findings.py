@@ -420,3 +420,19 @@ def test_the_multibody_summary_quotes_the_findings_real_part(example_campaign_ru
         said = re.search(r"largest real part (-?[\d.e+-]+) 1/s", _text(path))
         assert said, _text(path)[:200]
         assert said.group(1) == f"{cell:.4f}", (said.group(1), cell)
+
+
+def test_the_multibody_summary_cites_the_decisions_study_area_verdict(
+        example_campaign_run_report, us_twin_reports):
+    """The multibody Summary's sentence defers to the parachute decision and quotes its
+    verdict on the Study's parachute as the decision table's row states it (its note), in a
+    sentence that reads: the US twin's read 'Study parachute no area meets the criteria'.
+    Reference: the decision table of the same sheet read back."""
+    for folder in (example_campaign_run_report, us_twin_reports):
+        path = _reports(folder)["multibody"]
+        frame = _sheet(path, "Summary")
+        row = frame[frame[0] == "Study 'parachute area' (loads)"].iloc[0]
+        verdict = str(row.dropna().iloc[-1])
+        text = _text(path)
+        assert f"(its row \"Study 'parachute area' (loads)\"): {verdict}." in text, text[:600]
+        assert "Study parachute no area" not in text

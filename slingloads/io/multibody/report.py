@@ -200,8 +200,9 @@ def stability_text(result, decision=None):
             f"decay; it does not size the parachute.")
     if decision is not None:
         text += (" Whether the parachute is adequate (every gust shape of the 1-DOF model, "
-                 "the campaign's conditions) is the parachute decision's answer, table below: "
-                 f"Study parachute {decision.study_area_verdict()}.")
+                 "the campaign's conditions) is the parachute decision's answer, table below "
+                 "(its row \"Study 'parachute area' (loads)\"): "
+                 f"{decision.study_area_verdict()}.")
     return text
 
 
