@@ -302,3 +302,23 @@ def test_damping_ratios_quoted_as_their_cells(example_campaign_run_report, us_tw
         assert found, folder
         wrong = [f for f in found if len(f[2].partition(".")[2]) != 3]
         assert not wrong, wrong[:5]
+
+
+#: A mode's period quoted in words: the mode a response was measured on "(27.02 s, zeta",
+#: the inconclusive verdict's "slowest relevant mode (44.82 s)", a check's "nearest: yaw,
+#: 14.60 s".
+_QUOTED_PERIOD = re.compile(r"(?:\(|relevant mode \(|nearest: [^,]+, )(\d+\.?(\d*)) s(?:,|\))")
+
+
+def test_mode_periods_quoted_as_their_cells(example_campaign_run_report, us_twin_reports):
+    """A mode's period quoted in a verdict or a check is written at the precision of a
+    time's cell (formats.py 's': 0.00), in every report of both examples: the yaw mode's
+    'yaw / lateral swing (27 s, zeta 0.289)' beside a 'yaw mode period [s]' cell of 27.02,
+    and '(44.8 s)' beside 44.82, cannot recur."""
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        found = [(book, sheet, m.group(1), text[:90]) for book, sheet, text in _texts(folder)
+                 for m in _QUOTED_PERIOD.finditer(text)]
+        assert found, folder
+        wrong = [f for f in found if len(f[2].partition(".")[2]) != 2]
+        assert not wrong, wrong[:5]
