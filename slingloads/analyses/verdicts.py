@@ -529,6 +529,15 @@ def seconds_words(value):
     (0.00 s), so that a verdict's words and the period cells beside it quote one number:
     the yaw mode's 27.0185 s reads "27.02" as its cell, never "27".
 
+    Parameters
+    ----------
+    value : float
+        [s]
+
+    Returns
+    -------
+    str
+
     Examples
     --------
     >>> seconds_words(27.0185), seconds_words(8.08), seconds_words(44.8)

@@ -111,6 +111,16 @@ def header_format(header):
     """Excel number format of a column from its header: the unit's (:func:`unit_format`),
     but an altitude (a header naming one, in m or ft) to the whole unit.
 
+    Parameters
+    ----------
+    header : str
+        A column header, ``name [unit]``.
+
+    Returns
+    -------
+    str or None
+        The format (None: Excel's General).
+
     Examples
     --------
     >>> header_format("density altitude [m]"), header_format("cable length [m]")
