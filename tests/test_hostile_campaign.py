@@ -726,10 +726,11 @@ def test_a_killed_worker_process_leaves_the_cache_and_out_intact(dyn, tmp_path, 
 
 def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identical(dyn,
                                                                                   tmp_path):
-    """A local Dask scheduler (worker threads, loopback TCP) terminated after the second of
-    8 one-run batches: the campaign ends within the 1 s time-out with an environment error
-    (the runs finished before stored), and the resume, in this process on the same cache,
-    finds them and gives the metrics of an uninterrupted run."""
+    """A local Dask scheduler (worker threads, loopback TCP) terminated after a seeded
+    random number (1 to 6) of 8 one-run batches: the campaign ends within the 1 s time-out
+    with an environment error (the runs finished before stored), and the resume, in this
+    process on the same cache, finds them and gives the metrics and histories of an
+    uninterrupted run."""
     import contextlib
 
     distributed = pytest.importorskip("distributed")
@@ -740,9 +741,10 @@ def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identica
                                        host="127.0.0.1")
     try:
         executor = DaskCluster(cluster.scheduler_address, 1.0)
+        at = random.Random(7).randint(1, 6)
 
         def progress(done, total):
-            if done == 2:
+            if done == at:
                 with contextlib.suppress(OSError):
                     executor.client.sync(executor.client.scheduler.terminate)
 
@@ -755,17 +757,18 @@ def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identica
         with contextlib.suppress(TimeoutError, OSError):
             cluster.close(timeout=2)
     resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
-    assert resumed.execution.cached >= 2
+    assert resumed.execution.cached >= at
     assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
-    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+    _same_results(resumed, fresh)
 
 
 def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(dyn, tmp_path):
-    """The one worker of a local Dask cluster (threads, loopback TCP) closed after the
-    second of 8 one-run batches: the scheduler still answers but has no worker, so the
-    batches would wait for one for ever; the campaign ends within the 1 s time-out (plus
-    the worker's own shutting down) with an environment error, and the resume on the same
-    cache finds the runs stored before and gives the metrics of an uninterrupted run."""
+    """The one worker of a local Dask cluster (threads, loopback TCP) closed after a seeded
+    random number (1 to 6) of 8 one-run batches: the scheduler still answers but has no
+    worker, so the batches would wait for one for ever; the campaign ends within the 1 s
+    time-out (plus the worker's own shutting down) with an environment error, and the
+    resume on the same cache finds the runs stored before and gives the metrics and
+    histories of an uninterrupted run."""
     import contextlib
 
     distributed = pytest.importorskip("distributed")
@@ -777,9 +780,10 @@ def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(d
     try:
         executor = DaskCluster(cluster.scheduler_address, 1.0)
         times = {}
+        at = random.Random(11).randint(1, 6)
 
         def progress(done, total):
-            if done == 2:
+            if done == at:
                 times["killed"] = time.monotonic()
                 for address in list(cluster.scheduler.workers):
                     cluster.sync(cluster.scheduler.remove_worker, address, stimulus_id="kill",
@@ -793,9 +797,96 @@ def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(d
         with contextlib.suppress(TimeoutError, OSError):
             cluster.close(timeout=2)
     resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
-    assert resumed.execution.cached >= 2
+    assert resumed.execution.cached >= at
     assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+    _same_results(resumed, fresh)
+
+
+def _same_results(resumed, fresh):
+    """The metrics and every run's histories of ``resumed`` equal those of ``fresh``."""
     pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+    for run in fresh.metrics["run"]:
+        pd.testing.assert_frame_equal(resumed.history(run), fresh.history(run))
+
+
+def _spawned_workers():
+    """The live worker processes this process has started (``spawn``: their command line
+    runs ``multiprocessing.spawn``; the resource tracker is not one)."""
+    import psutil
+
+    workers = []
+    for child in psutil.Process().children():
+        try:
+            line = " ".join(child.cmdline())
+        except psutil.Error:
+            continue
+        if "spawn_main" in line and child.status() != psutil.STATUS_ZOMBIE:
+            workers.append(child)
+    return workers
+
+
+def test_local_workers_killed_at_seeded_random_moments_resume_identically(dyn, tmp_path):
+    """Two local worker processes running 8 one-run batches; one of them, drawn by a seeded
+    RNG, is killed outright (SIGKILL) at a seeded random moment: after 0 to 3 batches have
+    come back and a further 0 to 0.3 s (the workers may be starting, loading their kernels
+    or integrating). The campaign either ends with the environment error naming the lost
+    worker (the runs finished before stored) or, when the kill came after the last batch,
+    finishes; no temporary file is left in the cache; and the resume, in this process on
+    the same cache, finds the runs stored before and gives the metrics and histories of an
+    uninterrupted run (each run is integrated on its own, so the same numbers whatever
+    process or batch it falls in)."""
+    import signal
+
+    from slingloads.analyses.campaign.execution import LocalProcesses
+
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    rng = random.Random(21)
+    for trial in range(2):
+        after, delay, victim = rng.randint(0, 3), rng.uniform(0.0, 0.3), rng.randint(0, 1)
+        folder = tmp_path / f"cache{trial}"
+        killed, stop, started = [], threading.Event(), threading.Event()
+
+        def kill(victim=victim, delay=delay, killed=killed, stop=stop, started=started):
+            started.wait()
+            if stop.wait(delay):
+                return
+            while not stop.is_set():  # the workers may still be starting
+                workers = sorted(_spawned_workers(), key=lambda p: p.pid)
+                if workers:
+                    target = workers[min(victim, len(workers) - 1)]
+                    os.kill(target.pid, signal.SIGKILL)
+                    killed.append(target.pid)
+                    return
+                stop.wait(0.01)
+
+        def progress(done, total, after=after, started=started):
+            if done == after:
+                started.set()
+
+        killer = threading.Thread(target=kill, daemon=True)
+        killer.start()
+        executor = LocalProcesses(2)
+        try:
+            run_campaign(campaign, executor=executor, store=RunCache(folder), batch_size=1,
+                         progress=progress)
+            finished = True
+        except OutputError as err:
+            assert "local worker process ended abruptly" in str(err)
+            assert "run the same command again to resume" in str(err)
+            finished = False
+        finally:
+            stop.set()  # a kill not yet made is not made in the next trial
+            started.set()
+            killer.join()
+            executor.close()
+        assert finished or killed, (trial, after, delay)
+        assert not list(folder.rglob(".part-*"))
+        stored = len(list(folder.rglob("*.parquet")))
+        resumed = run_campaign(campaign, store=RunCache(folder), batch_size=1)
+        assert resumed.execution.cached == stored >= min(after, 8)
+        assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+        _same_results(resumed, fresh)
 
 
 _RELEASE = threading.Event()
