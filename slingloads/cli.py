@@ -276,8 +276,9 @@ class _BackgroundCompile:
     fresh installation they are the largest part of the first run, and the lateral study,
     the parachute sizing and the reading need only the other core. An analysis that needs
     them waits for that process (:meth:`wait_for`) rather than compiling them a second
-    time. The process writes only numba's cache; it is killed when the run ends (a kill
-    leaves no partial cache file: numba writes each one under a temporary name first)."""
+    time. The process writes only numba's cache; it is killed once every part has been
+    waited for, or when the run ends (a kill leaves no partial cache file: numba writes each
+    one under a temporary name first)."""
 
     #: The parts each analysis needs, by name.
     NEEDS = {"loads": ("equations",), "multibody": ("equations", "integration"),
@@ -310,6 +311,11 @@ class _BackgroundCompile:
                     call.result(take_back=False)
                 except Exception:  # noqa: BLE001, S110 - the analysis compiles them itself
                     pass
+        if not self.calls and self.helper is not None:
+            # every part compiled: the process (about 200 MB of loaded kernels) is not kept
+            # through the computation (docs/inputs-and-outputs.md, Memory)
+            self.helper.close(abort=True)
+            self.helper = None
 
     def __exit__(self, exc_type, exc, tb):
         if self.helper is not None:

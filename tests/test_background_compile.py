@@ -42,3 +42,15 @@ def test_the_kernels_are_on_disk_when_an_analysis_goes_on_and_the_process_ends(m
         compiling.wait_for("multibody")
         assert _cached(dopri_runs) and not compiling.calls
     assert not process.is_alive()
+
+
+def test_the_process_ends_once_every_part_is_waited_for(monkeypatch):
+    """The compiling process is not kept through the computation once its work is done (it
+    holds the loaded kernels, about 200 MB): after the analysis needing every part has
+    waited for them, the operating system shows it ended, within the run's block."""
+    monkeypatch.setenv("SLINGLOADS_PLOT_WORKERS", "1")
+    with cli._BackgroundCompile("campaign") as compiling:
+        (process, _, _), = compiling.helper._workers
+        compiling.wait_for("campaign")
+        assert not process.is_alive() and compiling.helper is None
+        compiling.wait_for("multibody")  # nothing left to wait for
