@@ -572,6 +572,44 @@ def test_local_workers_are_capped_by_the_command_budget():
     assert workers == 2 and "budget of 1 GB allows 2" in warning and "--scheduler" in warning
 
 
+def test_the_study_cell_asking_for_many_workers_is_cut_with_the_estimate(tmp_path,
+                                                                          monkeypatch):
+    """The Study cell 'campaign workers' = 16 (allowed up to 64; it used to start 16
+    processes of about 290 MB each on two cores): the campaign of that workbook is handed
+    local worker processes capped by the command's budget ((1 GiB - 512 MiB) / 256 MiB =
+    2) and the cores, and the study's warnings say so with the estimate of a worker
+    (libraries 300 MiB + drive tables 128 MiB + the largest batch's samples: 100 runs of 5 s
+    every 0.5 s, 11 samples of 888 bytes each, 1 MB). The runs themselves are not computed."""
+    from slingloads.analyses import campaign as campaign_package
+    from slingloads.runs import campaign as campaign_run
+
+    book = small_dynamics_workbook()
+    set_parameter(book, "run multibody", "no")
+    set_parameter(book, "campaign workers", 16)
+    study = read_study(save_xlsx(book, tmp_path / "w16.xlsx"))
+    assert study.inputs.campaign.workers == 16
+    handed = []
+
+    class Stop(Exception):
+        pass
+
+    def recorder(campaign, executor=None, store=None, progress=None):
+        handed.append(executor)
+        raise Stop
+
+    monkeypatch.setattr(campaign_package, "run_campaign", recorder)
+    monkeypatch.setenv("SLINGLOADS_CACHE", str(tmp_path / "cache"))
+    with pytest.raises(Stop):
+        campaign_run.run(study)
+    executor = handed[0]
+    expected = min(2, os.cpu_count() or 1)
+    assert getattr(executor, "workers", 1) == expected <= 2
+    warning, = executor.warnings
+    each = (300 + 128) * 2**20 + 100 * 11 * 888
+    assert f"16 local workers were asked for, {expected} started" in warning
+    assert f"each needs about {each / 2**20:,.0f} MB" in warning and "budget" in warning
+
+
 def test_drive_tables_are_tabulated_a_chunk_at_a_time(monkeypatch):
     """16 runs of 3,600 s (each its own gust, so 16 distinct drive tables of 26 MB: 0.8 GB
     and their stacked copy at once before): integrated in chunks whose tables and copies stay
