@@ -11,8 +11,9 @@ command; a case refused before it starts passes when its message names the cell 
 estimate. Run from the repository root::
 
     .venv/bin/python benchmarks/bench_memory.py            # the quick cases, about 2 minutes
-    .venv/bin/python benchmarks/bench_memory.py --full     # also the long campaign and
-                                                           # multibody runs (about 15 min)
+    .venv/bin/python benchmarks/bench_memory.py --full     # also the lateral sweep and the
+                                                           # long multibody and campaign
+                                                           # runs (about an hour)
     .venv/bin/python benchmarks/bench_memory.py --case multibody-long-run
 
 The last line printed is the largest peak (PSS) over the cases run, in MiB.
@@ -170,10 +171,10 @@ def loads_many_cases():
 QUICK = {
     "campaign-many-workers": campaign_many_workers,
     "campaign-one-long-run": campaign_one_long_run,
-    "lateral-long-histories": lateral_long_histories,
     "loads-many-cases": loads_many_cases,
 }
 FULL = {
+    "lateral-long-histories": lateral_long_histories,
     "multibody-fine-step": multibody_fine_step,
     "multibody-200-long-runs": multibody_many_long_runs,
     "multibody-100-long-runs": lambda: multibody_many_long_runs(100, 2.0),
