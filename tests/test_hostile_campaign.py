@@ -643,6 +643,32 @@ def test_drive_tables_are_tabulated_a_chunk_at_a_time(monkeypatch):
     assert peak < sim.DRIVE_BUDGET + 16 * 2**20, peak / 2**20
 
 
+def test_one_integrating_thread_tabulates_one_long_run_at_a_time(monkeypatch):
+    """A campaign worker process with one kernel thread (two local workers on two cores)
+    integrates one run at a time, so its chunk of drive tables is half of DRIVE_BUDGET:
+    runs of 3,600 s (2 x 360,003 rows x 72 bytes = 51.8 MB each) go one a chunk (two
+    would be 103.7 MB > 64 MiB), and two a chunk with two threads (<= 128 MiB)."""
+    from test_multibody_response import hc1_system
+
+    sim = importlib.import_module("slingloads.analyses.multibody.simulate")
+    from slingloads.analyses.multibody.manoeuvres import gust_response
+
+    assert sim.drive_budget(1) == 64 * 2**20 and sim.drive_budget(2) == 128 * 2**20
+    system = hc1_system()
+    pairs = [(system, gust_response("finite", onset=1.0 + 0.1 * k)) for k in range(4)]
+    chunks = []
+
+    def recorder(prepared, members, results, drives, time_, settings):
+        chunks.append(len(members))
+
+    monkeypatch.setattr(sim, "_integrate_group", recorder)
+    monkeypatch.setattr(sim, "Simulation", lambda *a: a)
+    for workers in (1, 2):
+        chunks.clear()
+        sim.simulate_runs(pairs, t_end=3600.0, output_interval=10.0, workers=workers)
+        assert chunks == [workers] * (4 // workers)
+
+
 def test_chunked_integration_is_bit_for_bit(monkeypatch):
     """Runs integrated one chunk each (DRIVE_BUDGET of 1 byte) give the same histories, to
     the last bit, as all in one chunk: each run is integrated on its own."""
