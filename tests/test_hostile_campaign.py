@@ -562,12 +562,12 @@ def test_workers_are_capped_by_cores_and_memory_with_a_warning():
 
 
 def test_local_workers_are_capped_by_the_command_budget():
-    """8 cores and 64 GB: 8 workers asked for, 2 started, the most whose own memory (256 MiB
-    each, measured 243) fits the 1 GiB budget beside the command's 512 MiB ((1024 - 512) /
-    256 = 2), with a warning naming the budget; the default on 8 cores is cut the same way."""
+    """8 cores and 64 GB: 8 workers asked for, 2 started, the most whose own memory (288 MiB
+    each, measured 284) fits the 1 GiB budget beside the command's 448 MiB ((1024 - 448) /
+    288 = 2), with a warning naming the budget; the default on 8 cores is cut the same way."""
     from slingloads.analyses.campaign.memory import budget_workers
 
-    assert budget_workers() == (1024 - 512) // 256 == 2
+    assert budget_workers() == (1024 - 448) // 288 == 2
     workers, warning = local_workers(8, None, cores=8, available=64 * 2**30)
     assert workers == 2 and "budget of 1 GB allows 2" in warning and "--scheduler" in warning
 
@@ -576,7 +576,7 @@ def test_the_study_cell_asking_for_many_workers_is_cut_with_the_estimate(tmp_pat
                                                                           monkeypatch):
     """The Study cell 'campaign workers' = 16 (allowed up to 64; it used to start 16
     processes of about 290 MB each on two cores): the campaign of that workbook is handed
-    local worker processes capped by the command's budget ((1 GiB - 512 MiB) / 256 MiB =
+    local worker processes capped by the command's budget ((1 GiB - 448 MiB) / 288 MiB =
     2) and the cores, and the study's warnings say so with the estimate of a worker
     (libraries 300 MiB + drive tables 128 MiB + the largest batch's samples: 100 runs of 5 s
     every 0.5 s, 11 samples of 888 bytes each, 1 MB). The runs themselves are not computed."""
