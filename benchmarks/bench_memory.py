@@ -10,7 +10,7 @@ machine gives the command). The budget (docs/inputs-and-outputs.md, section 9) i
 command; a case refused before it starts passes when its message names the cell and gives the
 estimate. Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_memory.py            # the quick cases, about 2 minutes
+    .venv/bin/python benchmarks/bench_memory.py            # the quick cases, 1 to 2 minutes
     .venv/bin/python benchmarks/bench_memory.py --full     # also the lateral sweep and the
                                                            # long multibody and campaign
                                                            # runs (about an hour)

@@ -301,6 +301,22 @@ class _BackgroundCompile:
             self.calls = {part: self.helper.submit(compile_part, part) for part in BACKGROUND}
         return self
 
+    def only_for(self, names):
+        """Drop the parts no analysis of ``names`` needs (a ``run`` whose workbook asks for
+        the loads but not the multibody model needs no integration kernel); the process
+        ends if none is left."""
+        needed = {part for name in names for part in self.NEEDS.get(name, ())}
+        for part in [p for p in self.calls if p not in needed]:
+            del self.calls[part]
+        self._close_when_done()
+
+    def _close_when_done(self):
+        if not self.calls and self.helper is not None:
+            # every part compiled: the process (about 200 MB of loaded kernels) is not kept
+            # through the computation (docs/inputs-and-outputs.md, Memory)
+            self.helper.close(abort=True)
+            self.helper = None
+
     def wait_for(self, name):
         """Wait until the kernels analysis ``name`` needs are compiled (or their compiling
         failed: the analysis then compiles them itself and says why if it cannot)."""
@@ -311,11 +327,7 @@ class _BackgroundCompile:
                     call.result(take_back=False)
                 except Exception:  # noqa: BLE001, S110 - the analysis compiles them itself
                     pass
-        if not self.calls and self.helper is not None:
-            # every part compiled: the process (about 200 MB of loaded kernels) is not kept
-            # through the computation (docs/inputs-and-outputs.md, Memory)
-            self.helper.close(abort=True)
-            self.helper = None
+        self._close_when_done()
 
     def __exit__(self, exc_type, exc, tb):
         if self.helper is not None:
@@ -334,6 +346,8 @@ def _run_analyses(args, compiling=None):
         study = read_study(args.workbook, only=_only(args), on_read=first)
         gc.freeze()  # the libraries and the study live to the end of the run: see _analyse
         names = _selected(args, study)
+        if compiling is not None:
+            compiling.only_for(names)
         if getattr(args, "nastran", False):
             _ask_nastran(study, names)
         if "campaign" in names:
