@@ -292,8 +292,9 @@ class _BackgroundCompile:
     fresh installation they are the largest part of the first run, and the lateral study,
     the parachute sizing and the reading need only the other core. An analysis that needs
     them waits for that process (:meth:`wait_for`) rather than compiling them a second
-    time. The process writes only numba's cache; it is killed when the run ends (a kill
-    leaves no partial cache file: numba writes each one under a temporary name first)."""
+    time. The process writes only numba's cache; it is killed once every part has been
+    waited for, or when the run ends (a kill leaves no partial cache file: numba writes each
+    one under a temporary name first)."""
 
     #: The parts each analysis needs, by name.
     NEEDS = {"loads": ("equations",), "multibody": ("equations", "integration"),
@@ -316,6 +317,22 @@ class _BackgroundCompile:
             self.calls = {part: self.helper.submit(compile_part, part) for part in BACKGROUND}
         return self
 
+    def only_for(self, names):
+        """Drop the parts no analysis of ``names`` needs (a ``run`` whose workbook asks for
+        the loads but not the multibody model needs no integration kernel); the process
+        ends if none is left."""
+        needed = {part for name in names for part in self.NEEDS.get(name, ())}
+        for part in [p for p in self.calls if p not in needed]:
+            del self.calls[part]
+        self._close_when_done()
+
+    def _close_when_done(self):
+        if not self.calls and self.helper is not None:
+            # every part compiled: the process (about 200 MB of loaded kernels) is not kept
+            # through the computation (docs/inputs-and-outputs.md, Memory)
+            self.helper.close(abort=True)
+            self.helper = None
+
     def wait_for(self, name):
         """Wait until the kernels analysis ``name`` needs are compiled (or their compiling
         failed: the analysis then compiles them itself and says why if it cannot)."""
@@ -326,6 +343,7 @@ class _BackgroundCompile:
                     call.result(take_back=False)
                 except Exception:  # noqa: BLE001, S110 - the analysis compiles them itself
                     pass
+        self._close_when_done()
 
     def __exit__(self, exc_type, exc, tb):
         if self.helper is not None:
@@ -348,6 +366,8 @@ def _run_analyses(args, compiling=None):
         study = read_study(args.workbook, only=_only(args), on_read=first)
         gc.freeze()  # the libraries and the study live to the end of the run: see _analyse
         names = _selected(args, study)
+        if compiling is not None:
+            compiling.only_for(names)
         if getattr(args, "nastran", False):
             _ask_nastran(study, names)
         if "campaign" in names:

@@ -184,13 +184,14 @@ WORKER_BASE_MEMORY = 300 * 2**20
 #: "Memory"). [bytes]
 COMMAND_MEMORY = 2**30
 #: A command's own process and its helper, as the budget of local workers counts them (the
-#: 864 runs of 3,600 s measured at most about 420 MiB beside two workers). [bytes]
-COMMAND_OWN_MEMORY = 512 * 2**20
+#: 864 runs of 3,600 s measured at most about 420 MiB beside two workers, proportional set
+#: sizes: benchmarks/bench_memory.py). [bytes]
+COMMAND_OWN_MEMORY = 448 * 2**20
 #: A local worker process's own memory beside the libraries it shares with the command's
-#: process (measured at most 243 MiB, a batch and a chunk of drive tables at their largest):
-#: so (COMMAND_MEMORY - COMMAND_OWN_MEMORY) / WORKER_OWN_MEMORY = 2 local workers at most.
-#: [bytes]
-WORKER_OWN_MEMORY = 256 * 2**20
+#: process (measured at most 284 MiB, proportional, a batch and a chunk of drive tables at
+#: their largest): so (COMMAND_MEMORY - COMMAND_OWN_MEMORY) / WORKER_OWN_MEMORY = 2 local
+#: workers at most. [bytes]
+WORKER_OWN_MEMORY = 288 * 2**20
 #: Longest time the campaign waits for a scheduler. [s]
 MAX_SCHEDULER_TIMEOUT = 600.0
 

@@ -42,3 +42,32 @@ def test_the_kernels_are_on_disk_when_an_analysis_goes_on_and_the_process_ends(m
         compiling.wait_for("multibody")
         assert _cached(dopri_runs) and not compiling.calls
     assert not process.is_alive()
+
+
+def test_the_process_ends_once_every_part_is_waited_for(monkeypatch):
+    """The compiling process is not kept through the computation once its work is done (it
+    holds the loaded kernels, about 200 MB): after the analysis needing every part has
+    waited for them, the operating system shows it ended, within the run's block."""
+    monkeypatch.setenv("SLINGLOADS_PLOT_WORKERS", "1")
+    with cli._BackgroundCompile("campaign") as compiling:
+        (process, _, _), = compiling.helper._workers
+        compiling.wait_for("campaign")
+        assert not process.is_alive() and compiling.helper is None
+        compiling.wait_for("multibody")  # nothing left to wait for
+
+
+def test_parts_no_selected_analysis_needs_are_dropped(monkeypatch):
+    """A `run` whose workbook asks for the lateral study only needs no kernel: the process
+    ends as soon as the analyses are known; one asking for the loads keeps the equations
+    only, and ends once the loads have waited for them (the operating system's view)."""
+    monkeypatch.setenv("SLINGLOADS_PLOT_WORKERS", "1")
+    with cli._BackgroundCompile("run") as compiling:
+        (process, _, _), = compiling.helper._workers
+        compiling.only_for(["lateral"])
+        assert not process.is_alive() and compiling.helper is None
+    with cli._BackgroundCompile("run") as compiling:
+        (process, _, _), = compiling.helper._workers
+        compiling.only_for(["loads", "lateral"])
+        assert set(compiling.calls) == {"equations"} and process.is_alive()
+        compiling.wait_for("loads")
+        assert not process.is_alive()

@@ -562,14 +562,52 @@ def test_workers_are_capped_by_cores_and_memory_with_a_warning():
 
 
 def test_local_workers_are_capped_by_the_command_budget():
-    """8 cores and 64 GB: 8 workers asked for, 2 started, the most whose own memory (256 MiB
-    each, measured 243) fits the 1 GiB budget beside the command's 512 MiB ((1024 - 512) /
-    256 = 2), with a warning naming the budget; the default on 8 cores is cut the same way."""
+    """8 cores and 64 GB: 8 workers asked for, 2 started, the most whose own memory (288 MiB
+    each, measured 284) fits the 1 GiB budget beside the command's 448 MiB ((1024 - 448) /
+    288 = 2), with a warning naming the budget; the default on 8 cores is cut the same way."""
     from slingloads.analyses.campaign.memory import budget_workers
 
-    assert budget_workers() == (1024 - 512) // 256 == 2
+    assert budget_workers() == (1024 - 448) // 288 == 2
     workers, warning = local_workers(8, None, cores=8, available=64 * 2**30)
     assert workers == 2 and "budget of 1 GB allows 2" in warning and "--scheduler" in warning
+
+
+def test_the_study_cell_asking_for_many_workers_is_cut_with_the_estimate(tmp_path,
+                                                                          monkeypatch):
+    """The Study cell 'campaign workers' = 16 (allowed up to 64; it used to start 16
+    processes of about 290 MB each on two cores): the campaign of that workbook is handed
+    local worker processes capped by the command's budget ((1 GiB - 448 MiB) / 288 MiB =
+    2) and the cores, and the study's warnings say so with the estimate of a worker
+    (libraries 300 MiB + drive tables 128 MiB + the largest batch's samples: 100 runs of 5 s
+    every 0.5 s, 11 samples of 888 bytes each, 1 MB). The runs themselves are not computed."""
+    from slingloads.analyses import campaign as campaign_package
+    from slingloads.runs import campaign as campaign_run
+
+    book = small_dynamics_workbook()
+    set_parameter(book, "run multibody", "no")
+    set_parameter(book, "campaign workers", 16)
+    study = read_study(save_xlsx(book, tmp_path / "w16.xlsx"))
+    assert study.inputs.campaign.workers == 16
+    handed = []
+
+    class Stop(Exception):
+        pass
+
+    def recorder(campaign, executor=None, store=None, progress=None):
+        handed.append(executor)
+        raise Stop
+
+    monkeypatch.setattr(campaign_package, "run_campaign", recorder)
+    monkeypatch.setenv("SLINGLOADS_CACHE", str(tmp_path / "cache"))
+    with pytest.raises(Stop):
+        campaign_run.run(study)
+    executor = handed[0]
+    expected = min(2, os.cpu_count() or 1)
+    assert getattr(executor, "workers", 1) == expected <= 2
+    warning, = executor.warnings
+    each = (300 + 128) * 2**20 + 100 * 11 * 888
+    assert f"16 local workers were asked for, {expected} started" in warning
+    assert f"each needs about {each / 2**20:,.0f} MB" in warning and "budget" in warning
 
 
 def test_drive_tables_are_tabulated_a_chunk_at_a_time(monkeypatch):
@@ -603,6 +641,32 @@ def test_drive_tables_are_tabulated_a_chunk_at_a_time(monkeypatch):
         tracemalloc.stop()
     assert sum(chunks) == 16 and max(chunks) < 16
     assert peak < sim.DRIVE_BUDGET + 16 * 2**20, peak / 2**20
+
+
+def test_one_integrating_thread_tabulates_one_long_run_at_a_time(monkeypatch):
+    """A campaign worker process with one kernel thread (two local workers on two cores)
+    integrates one run at a time, so its chunk of drive tables is half of DRIVE_BUDGET:
+    runs of 3,600 s (2 x 360,003 rows x 72 bytes = 51.8 MB each) go one a chunk (two
+    would be 103.7 MB > 64 MiB), and two a chunk with two threads (<= 128 MiB)."""
+    from test_multibody_response import hc1_system
+
+    sim = importlib.import_module("slingloads.analyses.multibody.simulate")
+    from slingloads.analyses.multibody.manoeuvres import gust_response
+
+    assert sim.drive_budget(1) == 64 * 2**20 and sim.drive_budget(2) == 128 * 2**20
+    system = hc1_system()
+    pairs = [(system, gust_response("finite", onset=1.0 + 0.1 * k)) for k in range(4)]
+    chunks = []
+
+    def recorder(prepared, members, results, drives, time_, settings):
+        chunks.append(len(members))
+
+    monkeypatch.setattr(sim, "_integrate_group", recorder)
+    monkeypatch.setattr(sim, "Simulation", lambda *a: a)
+    for workers in (1, 2):
+        chunks.clear()
+        sim.simulate_runs(pairs, t_end=3600.0, output_interval=10.0, workers=workers)
+        assert chunks == [workers] * (4 // workers)
 
 
 def test_chunked_integration_is_bit_for_bit(monkeypatch):
@@ -726,10 +790,11 @@ def test_a_killed_worker_process_leaves_the_cache_and_out_intact(dyn, tmp_path, 
 
 def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identical(dyn,
                                                                                   tmp_path):
-    """A local Dask scheduler (worker threads, loopback TCP) terminated after the second of
-    8 one-run batches: the campaign ends within the 1 s time-out with an environment error
-    (the runs finished before stored), and the resume, in this process on the same cache,
-    finds them and gives the metrics of an uninterrupted run."""
+    """A local Dask scheduler (worker threads, loopback TCP) terminated after a seeded
+    random number (1 to 6) of 8 one-run batches: the campaign ends within the 1 s time-out
+    with an environment error (the runs finished before stored), and the resume, in this
+    process on the same cache, finds them and gives the metrics and histories of an
+    uninterrupted run."""
     import contextlib
 
     distributed = pytest.importorskip("distributed")
@@ -740,9 +805,10 @@ def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identica
                                        host="127.0.0.1")
     try:
         executor = DaskCluster(cluster.scheduler_address, 1.0)
+        at = random.Random(7).randint(1, 6)
 
         def progress(done, total):
-            if done == 2:
+            if done == at:
                 with contextlib.suppress(OSError):
                     executor.client.sync(executor.client.scheduler.terminate)
 
@@ -755,17 +821,18 @@ def test_a_scheduler_killed_mid_campaign_ends_cleanly_and_the_resume_is_identica
         with contextlib.suppress(TimeoutError, OSError):
             cluster.close(timeout=2)
     resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
-    assert resumed.execution.cached >= 2
+    assert resumed.execution.cached >= at
     assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
-    pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+    _same_results(resumed, fresh)
 
 
 def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(dyn, tmp_path):
-    """The one worker of a local Dask cluster (threads, loopback TCP) closed after the
-    second of 8 one-run batches: the scheduler still answers but has no worker, so the
-    batches would wait for one for ever; the campaign ends within the 1 s time-out (plus
-    the worker's own shutting down) with an environment error, and the resume on the same
-    cache finds the runs stored before and gives the metrics of an uninterrupted run."""
+    """The one worker of a local Dask cluster (threads, loopback TCP) closed after a seeded
+    random number (1 to 6) of 8 one-run batches: the scheduler still answers but has no
+    worker, so the batches would wait for one for ever; the campaign ends within the 1 s
+    time-out (plus the worker's own shutting down) with an environment error, and the
+    resume on the same cache finds the runs stored before and gives the metrics and
+    histories of an uninterrupted run."""
     import contextlib
 
     distributed = pytest.importorskip("distributed")
@@ -777,9 +844,10 @@ def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(d
     try:
         executor = DaskCluster(cluster.scheduler_address, 1.0)
         times = {}
+        at = random.Random(11).randint(1, 6)
 
         def progress(done, total):
-            if done == 2:
+            if done == at:
                 times["killed"] = time.monotonic()
                 for address in list(cluster.scheduler.workers):
                     cluster.sync(cluster.scheduler.remove_worker, address, stimulus_id="kill",
@@ -793,9 +861,96 @@ def test_a_worker_killed_on_a_cluster_ends_cleanly_and_the_resume_is_identical(d
         with contextlib.suppress(TimeoutError, OSError):
             cluster.close(timeout=2)
     resumed = run_campaign(campaign, store=RunCache(tmp_path / "cache"))
-    assert resumed.execution.cached >= 2
+    assert resumed.execution.cached >= at
     assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+    _same_results(resumed, fresh)
+
+
+def _same_results(resumed, fresh):
+    """The metrics and every run's histories of ``resumed`` equal those of ``fresh``."""
     pd.testing.assert_frame_equal(resumed.metrics, fresh.metrics)
+    for run in fresh.metrics["run"]:
+        pd.testing.assert_frame_equal(resumed.history(run), fresh.history(run))
+
+
+def _spawned_workers():
+    """The live worker processes this process has started (``spawn``: their command line
+    runs ``multiprocessing.spawn``; the resource tracker is not one)."""
+    import psutil
+
+    workers = []
+    for child in psutil.Process().children():
+        try:
+            line = " ".join(child.cmdline())
+        except psutil.Error:
+            continue
+        if "spawn_main" in line and child.status() != psutil.STATUS_ZOMBIE:
+            workers.append(child)
+    return workers
+
+
+def test_local_workers_killed_at_seeded_random_moments_resume_identically(dyn, tmp_path):
+    """Two local worker processes running 8 one-run batches; one of them, drawn by a seeded
+    RNG, is killed outright (SIGKILL) at a seeded random moment: after 0 to 3 batches have
+    come back and a further 0 to 0.3 s (the workers may be starting, loading their kernels
+    or integrating). The campaign either ends with the environment error naming the lost
+    worker (the runs finished before stored) or, when the kill came after the last batch,
+    finishes; no temporary file is left in the cache; and the resume, in this process on
+    the same cache, finds the runs stored before and gives the metrics and histories of an
+    uninterrupted run (each run is integrated on its own, so the same numbers whatever
+    process or batch it falls in)."""
+    import signal
+
+    from slingloads.analyses.campaign.execution import LocalProcesses
+
+    campaign = read_study(dyn).inputs.campaign.campaign
+    fresh = run_campaign(campaign, store=MemoryStore())
+    rng = random.Random(21)
+    for trial in range(2):
+        after, delay, victim = rng.randint(0, 3), rng.uniform(0.0, 0.3), rng.randint(0, 1)
+        folder = tmp_path / f"cache{trial}"
+        killed, stop, started = [], threading.Event(), threading.Event()
+
+        def kill(victim=victim, delay=delay, killed=killed, stop=stop, started=started):
+            started.wait()
+            if stop.wait(delay):
+                return
+            while not stop.is_set():  # the workers may still be starting
+                workers = sorted(_spawned_workers(), key=lambda p: p.pid)
+                if workers:
+                    target = workers[min(victim, len(workers) - 1)]
+                    os.kill(target.pid, signal.SIGKILL)
+                    killed.append(target.pid)
+                    return
+                stop.wait(0.01)
+
+        def progress(done, total, after=after, started=started):
+            if done == after:
+                started.set()
+
+        killer = threading.Thread(target=kill, daemon=True)
+        killer.start()
+        executor = LocalProcesses(2)
+        try:
+            run_campaign(campaign, executor=executor, store=RunCache(folder), batch_size=1,
+                         progress=progress)
+            finished = True
+        except OutputError as err:
+            assert "local worker process ended abruptly" in str(err)
+            assert "run the same command again to resume" in str(err)
+            finished = False
+        finally:
+            stop.set()  # a kill not yet made is not made in the next trial
+            started.set()
+            killer.join()
+            executor.close()
+        assert finished or killed, (trial, after, delay)
+        assert not list(folder.rglob(".part-*"))
+        stored = len(list(folder.rglob("*.parquet")))
+        resumed = run_campaign(campaign, store=RunCache(folder), batch_size=1)
+        assert resumed.execution.cached == stored >= min(after, 8)
+        assert resumed.execution.cached + resumed.execution.computed == resumed.execution.total
+        _same_results(resumed, fresh)
 
 
 _RELEASE = threading.Event()

@@ -172,6 +172,18 @@ def test_multibody_work_is_bounded_before_the_trim(name, value, limit):
     assert err.value == value
 
 
+def test_multibody_steps_at_the_limit_are_counted_as_whole_steps():
+    """2 runs of 3,600 s at 0.0024 s are 2 x 1,500,000 = 3,000,000 steps, the limit itself:
+    accepted (the division gives 1,500,000.0000000002 a run, once refused as '3,000,000
+    steps, more than the 3,000,000 allowed'); at 0.0023 s (2 x 1,565,218) refused."""
+    book = _with("multibody simulation time", 3600.0, "s")
+    set_parameter(book, "multibody output interval", 1.0, "s")
+    set_parameter(book, "multibody time step", 0.0024, "s")
+    assert _read(book).inputs.multibody.settings["dt"] == 0.0024
+    set_parameter(book, "multibody time step", 0.0023, "s")
+    _refused(book, "too much work", "3,130,436 steps", f"{MAX_MULTIBODY_RUN_STEPS:,}")
+
+
 def test_an_adaptive_run_forced_to_tiny_steps_is_refused_at_the_simulation_time(
         tmp_path, capsys, monkeypatch):
     """The adaptive step cannot outrun the fastest linear mode (|lambda| dt <= 3.3 for the

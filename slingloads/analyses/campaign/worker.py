@@ -44,7 +44,8 @@ def run_batch(jobs, settings, threads=None):
         ``t_end``, ``dt`` (None: adaptive), ``output_interval`` [s], and ``rtol``, ``atol``
         of the adaptive step.
     threads : int, optional
-        Threads of the compiled kernel (default: numba's current setting). [count]
+        Threads of the compiled kernel and of the runs integrated side by side (default:
+        numba's current setting, and every processor this process may use). [count]
 
     Returns
     -------
@@ -63,7 +64,8 @@ def run_batch(jobs, settings, threads=None):
         sim = simulate_runs([(system, manoeuvre) for _, system, manoeuvre in jobs],
                             t_end=settings["t_end"], dt=settings["dt"],
                             output_interval=settings["output_interval"],
-                            rtol=settings.get("rtol", RTOL), atol=settings.get("atol", ATOL))
+                            rtol=settings.get("rtol", RTOL), atol=settings.get("atol", ATOL),
+                            workers=threads)
     conditions = {}
     out = []
     for (key, system, _), run in zip(jobs, sim.runs, strict=True):

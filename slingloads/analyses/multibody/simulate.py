@@ -691,7 +691,7 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
         # the drive tables of a few runs at a time (DRIVE_BUDGET): each chunk's are freed
         # before the next is tabulated, whatever the number of runs
         for chunk in _chunks(members, [drive_bytes(t_end, prepared[k][1].breakpoints)
-                                       for k in members], DRIVE_BUDGET):
+                                       for k in members], drive_budget(workers)):
             _integrate_group(prepared, chunk, results, _DriveTables(t_end, output_interval),
                              time, settings)
     return Simulation(results, linear, dt, float(rtol), float(atol))
@@ -701,6 +701,27 @@ def simulate_runs(pairs, *, t_end=T_END, dt=DT, output_interval=OUTPUT_INTERVAL,
 #: 26 MB, held twice while its chunk is stacked: two such runs per chunk, so that two cores
 #: integrate side by side). [bytes]
 DRIVE_BUDGET = 128 * 2**20
+def drive_budget(workers=None):
+    """Bytes of drive tables tabulated at once for ``workers`` integrating threads (default
+    every processor this process may use): :data:`DRIVE_BUDGET` for two threads or more,
+    half of it for one (a chunk holds the runs integrated side by side: one run of 3,600 s
+    for one thread, two for two). [bytes]
+
+    Parameters
+    ----------
+    workers : int, optional
+        Threads integrating the runs.
+
+    Returns
+    -------
+    int
+    """
+    from slingloads.models.multibody.integrator import worker_count
+
+    threads = worker_count() if workers is None else int(workers)
+    return DRIVE_BUDGET if threads >= 2 else DRIVE_BUDGET // 2
+
+
 #: Bytes a run keeps per stored sample: its states, the drive at the sample, and the reported
 #: quantities and histories evaluated from them when asked for. [bytes]
 SAMPLE_BYTES = 8 * (N_STATES + 9 + N_INFO + N_HISTORY)
