@@ -710,11 +710,12 @@ def drive_budget(workers=None):
     Parameters
     ----------
     workers : int, optional
-        Threads integrating the runs.
+        Threads integrating the runs. [count]
 
     Returns
     -------
     int
+        [bytes]
     """
     from slingloads.models.multibody.integrator import worker_count
 
