@@ -13,7 +13,7 @@ plot of the same quantities, and, where it is not reproduced, the linear analysi
 sensitivity runs that show which input or modelling term decides it.
 
 The sample aircraft are not tuned to any finding: every sensitivity below changes one term
-on a copy and says so. About 3-4 minutes on 2 cores by default (a reduced campaign matrix:
+on a copy and says so. About 2 minutes on 2 quiet cores by default (a reduced campaign matrix:
 two mass cases, two altitudes, two manoeuvres); ``--full`` flies the paper's whole matrix
 (3 masses, 3 altitudes, free response and +-30 ft/s gusts: 3,888 runs).
 
@@ -407,7 +407,7 @@ def study_one_dof(figs, out):
         "4.2", "s.4.2, fig 7",
         "1-DOF yaw model: the neutral FPA stabilises the 30 ft/s gust at 80 KIAS",
         "sufficient (converges with acceptable oscillations)",
-        " | ".join(lines),
+        ". ".join(lines),
         PARTLY if abs(hc1[1][2]) < 1.0 else NOT, name,
         "Decided by the neutral area's definition, not by the dynamics: with the +-10 deg "
         "least-squares area the local stiffness at beta = 0 is still negative (the fit "
@@ -841,7 +841,7 @@ def study_campaign(figs, out, workers):
         f"as a warning, not a refusal: the paper's own 18 ft cable meets it only with a line "
         f"under {18 * FOOT / 1.2:.1f} m); the parachute "
         f"line stayed aft of its attachment in every run (theta {th[0]:.0f} to {th[1]:.0f} "
-        f"deg, |psi| <= {ps:.0f} deg), the condition of the reach rule{left_text}",
+        f"deg, abs(psi) <= {ps:.0f} deg), the condition of the reach rule{left_text}",
         REPRODUCED if trimmed == len(m) and max(abs(th[0]), abs(th[1])) < 90 and ps < 90
         and not left.any() and out["full"] else PARTLY, "",
         ("" if out["full"] else "The default run flies two of the three mass cases and the "
@@ -1344,8 +1344,8 @@ def study_wake(figs, out):
 def study_sfbm(figs, out):
     """Section 6, figures 19-20: the loads studies of the example workbooks (GENERIC
     airframes: the light twin of the samples' 2.9 t, and a 4.9 t twin). X shear: the share
-    of the |Vx| envelope that the parachute's cases add at the stations aft of the mast;
-    Y shear: the cases that govern the |Vy| envelope, and the envelope with the lateral hook
+    of the abs(Vx) envelope that the parachute's cases add at the stations aft of the mast;
+    Y shear: the cases that govern the abs(Vy) envelope, and the envelope with the lateral hook
     directions at the lateral-step study's angle."""
     from slingloads.io.loads.plots import draw_sfbm
     from slingloads.io.study import read_study
@@ -1389,8 +1389,8 @@ def study_sfbm(figs, out):
         rigid = drag * m_fwd / items.mass.sum()
         deviation = max(deviation, float(np.max(np.abs(d_vx[aft] / rigid[aft] - 1.0))))
         for s in np.flatnonzero(aft):
-            rows.append({"airframe": label, "x [m]": x[s], "|Vx| envelope [N]": envelope(0)[s],
-                         "|Vx| without the parachute's cases [N]": envelope(0, ~chute)[s],
+            rows.append({"airframe": label, "x [m]": x[s], "abs(Vx) envelope [N]": envelope(0)[s],
+                         "abs(Vx) without the parachute's cases [N]": envelope(0, ~chute)[s],
                          "parachute share Vx [-]": share["Vx"][s],
                          "parachute share Vy [-]": share["Vy"][s],
                          "parachute share Vz [-]": share["Vz"][s],
@@ -1406,14 +1406,14 @@ def study_sfbm(figs, out):
                       "parachute drag D at the loads' q [N]": drag,
                       "stations": len(x), "aft of the mast": int(aft.sum()),
                       "Vy governed by": ", ".join(sorted(set(gov_y))),
-                      "|Vy| without the lateral directions / envelope [-]":
+                      "abs(Vy) without the lateral directions / envelope [-]":
                           f"{vy_no_lateral.min():.2f}-{vy_no_lateral.max():.2f}",
-                      f"|Vy| with the lateral directions at {lateral_deg:.0f} deg / envelope "
+                      f"abs(Vy) with the lateral directions at {lateral_deg:.0f} deg / envelope "
                       "[-]": f"{vy_reduced.min():.2f}-{vy_reduced.max():.2f}",
                       "Vy governed then by": ", ".join(sorted(set(hook[np.abs(
                           reduced.loads[:, :, 1]).argmax(axis=0)]))),
                       "Vx governed by (every station)": ", ".join(sorted(set(gov_x))),
-                      "largest |Vx| / largest |Vy| [-]": float(envelope(0).max()
+                      "largest abs(Vx) / largest abs(Vy) [-]": float(envelope(0).max()
                                                                / envelope(1).max())})
         for ax, k, title in ((ax_x[0, j], 0, "paper figure 19: longitudinal limit shear (X "
                               "shear)"), (ax_y[0, j], 1, "paper figure 20: lateral limit shear "
@@ -1449,15 +1449,15 @@ def study_sfbm(figs, out):
     last = t.groupby("airframe", sort=False).last()
     first = t.groupby("airframe", sort=False).first()
     c = out["sfbm cases"].set_index("airframe")
-    col_red = [k for k in c.columns if k.startswith("|Vy| with the lateral")][0]
+    col_red = [k for k in c.columns if k.startswith("abs(Vy) with the lateral")][0]
     project = "; ".join(
-        f"{a}: parachute share of the |Vx| envelope aft of the mast "
+        f"{a}: parachute share of the abs(Vx) envelope aft of the mast "
         f"{first.loc[a, 'parachute share Vx [-]']:.0%} at {first.loc[a, 'x [m]']:.1f} m to "
         f"{last.loc[a, 'parachute share Vx [-]']:.0%} at {last.loc[a, 'x [m]']:.1f} m "
         f"(Vy {last.loc[a, 'parachute share Vy [-]']:.0%}, Vz "
-        f"{last.loc[a, 'parachute share Vz [-]']:.0%} there); |Vy| governed at every station "
+        f"{last.loc[a, 'parachute share Vz [-]']:.0%} there); abs(Vy) governed at every station "
         f"by {c.loc[a, 'Vy governed by']} (the lateral 30 deg direction; without the lateral "
-        f"directions {c.loc[a, '|Vy| without the lateral directions / envelope [-]']} of it)"
+        f"directions {c.loc[a, 'abs(Vy) without the lateral directions / envelope [-]']} of it)"
         for a in c.index) + (". The paper's comparison with the airframe's earlier loads "
                              "('no concern' in X, Y 'more critical') is not compared: the "
                              "examples' earlier loads are invented")
@@ -1471,9 +1471,9 @@ def study_sfbm(figs, out):
         "Test, on the example workbooks' loads studies (GENERIC airframes, parachute 1.4 x "
         "the fitted neutral area as the paper's FPA + 40 %, 100 KEAS, Nz 2.5, the 30 deg "
         "cone, every case with and without the parachute): (a) the parachute's cases add at "
-        "least half of the |Vx| envelope at the station next to the parachute, and at every "
+        "least half of the abs(Vx) envelope at the station next to the parachute, and at every "
         "station aft of the mast a larger share of Vx than of Vy and Vz (its loads act "
-        "'primarily along X'); (b) the |Vy| envelope is governed at every station by the "
+        "'primarily along X'); (b) the abs(Vy) envelope is governed at every station by the "
         "lateral hook directions (azimuth 90 or 270 deg). Reproduced when both hold on both "
         f"airframes, partly when some do: {tests_text}. The parachute's part is the rigid "
         "body's: in a cone case its drag D is reacted by the acceleration D / m of the whole "
@@ -1483,14 +1483,14 @@ def study_sfbm(figs, out):
         "while the cone's X shear falls with the mass aft of the cut: the parachute "
         "dominates only near the tail. What is not reproduced: forward of that the cone's "
         "fore-and-aft directions (AZ000, AZ180) govern the X shear at every station, the "
-        "largest |Vx| " + ", ".join(f"{c.loc[a, 'largest |Vx| / largest |Vy| [-]']:.2f} x "
-                                   f"the largest |Vy| ({a})" for a in c.index)
+        "largest abs(Vx) " + ", ".join(f"{c.loc[a, 'largest abs(Vx) / largest abs(Vy) [-]']:.2f} x "
+                                   f"the largest abs(Vy) ({a})" for a in c.index)
         + " (the cone is 30 deg at every azimuth); whether they 'raise concerns' and the Y "
         "shear is 'more critical' is "
         "measured against the airframe's earlier design loads, which the examples' "
         "PreviousEnvelope sheets only invent, so that part is not compared. With the "
         f"lateral directions at {lateral_deg:.0f} deg (the lateral-step study's largest hub "
-        f"load angle, {worst:.1f} deg, rounded up; 6-lat) the |Vy| envelope falls to "
+        f"load angle, {worst:.1f} deg, rounded up; 6-lat) the abs(Vy) envelope falls to "
         + ", ".join(f"{c.loc[a, col_red]} ({a})" for a in c.index)
         + " of the 30 deg one, the diagonal directions (30 deg at 45 deg azimuths) then "
         "governing: the paper's 'unrealistic' Y shear of the cone, quantified.")]
@@ -1527,6 +1527,11 @@ def complete_definition(findings, out):
 
 
 # --------------------------------------------------------------------------- report
+def md_cell(text):
+    """``text`` for a Markdown table cell: a '|' in it would end the cell."""
+    return str(text).replace("|", "\\|")
+
+
 def md_table(frame, fmt=".4g", index=False):
     """A DataFrame as a Markdown table (numbers with ``fmt``)."""
     if index:
@@ -1537,9 +1542,9 @@ def md_table(frame, fmt=".4g", index=False):
     def cell(v):
         if isinstance(v, (float, np.floating)):
             return "nan" if not np.isfinite(v) else format(v, fmt)
-        return str(v)
+        return md_cell(v)
 
-    head = "| " + " | ".join(str(c) for c in frame.columns) + " |"
+    head = "| " + " | ".join(md_cell(c) for c in frame.columns) + " |"
     rule = "|" + "---|" * len(frame.columns)
     body = ["| " + " | ".join(cell(v) for v in row) + " |" for row in frame.itertuples(
         index=False)]
@@ -1617,8 +1622,9 @@ def markdown(findings, out, seconds):
     for f in findings:
         figs = ", ".join(f"[{x.strip()}](figures/paper/{x.strip()})"
                          for x in f.figure.split(",") if x.strip())
-        lines.append(f"| {f.key} | {f.where} | {f.finding} | {f.paper} | {f.project} | "
-                     f"**{f.verdict}** | {figs or '-'} |")
+        lines.append("| " + " | ".join(md_cell(c) for c in (
+            f.key, f.where, f.finding, f.paper, f.project, f"**{f.verdict}**", figs or "-"))
+            + " |")
     lines += ["", "## Why, where not reproduced", ""]
     for f in findings:
         if f.evidence:
@@ -1666,13 +1672,13 @@ def markdown(findings, out, seconds):
               "/ 1.2).", "",
               md_table(out["wake"], ".3g"), "",
               "### Shear envelopes of the example airframes (s.6, figs 19-20)", "",
-              "Per station aft of the rear mast feet: the |Vx| envelope over every case and "
+              "Per station aft of the rear mast feet: the abs(Vx) envelope over every case and "
               "over the cases without the parachute; the share of the envelope the "
               "parachute's cases add, 1 - (without) / (all), for Vx, Vy and Vz; the hook "
-              "direction of the case governing |Vx|; the parachute's own Vx in one pair "
+              "direction of the case governing abs(Vx); the parachute's own Vx in one pair "
               "(vertical hook, envelope centre, with minus without) beside the rigid-body "
               "value D m_fwd / m.", "",
-              md_table(out["sfbm"], ".3g"), "",
+              md_table(out["sfbm"], ".4g"), "",
               md_table(out["sfbm cases"], ".4g"), "",
               "## Figures", ""]
     for name in sorted({x.strip() for f in findings for x in f.figure.split(",")
