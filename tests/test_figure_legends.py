@@ -112,6 +112,45 @@ def test_mode_names_are_unique(example_results):
     assert len(names) == len(set(names)), names
 
 
+def _at_cell_precision(text, value):
+    """Whether ``text`` writes ``value`` as a cell of format 0.000 shows it (three decimals;
+    a ratio below 0.0005 in the cells' scientific notation, three significant digits)."""
+    if "E" in text:
+        return abs(value) < 5e-4 and float(text) == float(f"{value:.2E}")
+    return len(text.partition(".")[2]) == 3 and float(text) == round(float(value), 3)
+
+
+def test_eigenvalue_legend_quotes_the_modes_cells(example_results):
+    """Each mode's legend entry of the multibody eigenvalue figure, drawn through its plot
+    function as the report draws it, quotes its natural frequency and damping ratio at the
+    precision of the Modes sheet's cells (formats.py: rad/s and '-' at 0.000): never
+    'zeta 0.00142' beside a cell of 0.001. Reference: the model's modes table, rounded as
+    the cell format rounds."""
+    import re
+
+    from matplotlib import pyplot as plt
+    from matplotlib import rc_context
+
+    from slingloads.io.common.figures import report_style
+
+    func, args, kwargs = _jobs(example_results)["multibody eigenvalues"]
+    modes = example_results.multibody.linear.modes_frame().set_index("mode")
+    with rc_context(report_style()):
+        figure = func(*args, **kwargs)
+    texts = [t.get_text() for legend in figure.legends for t in legend.get_texts()]
+    plt.close(figure)
+    assert len(texts) == len(modes)
+    wrong = []
+    for text in texts:
+        found = re.fullmatch(r"(.+): (\S+) rad/s, zeta (\S+)", text)
+        assert found, text
+        row = modes.loc[found.group(1)]
+        if not (_at_cell_precision(found.group(2), row["natural frequency [rad/s]"])
+                and _at_cell_precision(found.group(3), row["damping ratio [-]"])):
+            wrong.append(text)
+    assert not wrong, wrong
+
+
 def _ramps_result(verdicts):
     """A campaign result, made by hand, holding only what the no-parachute figure reads:
     ramps to 20, 30 and 40 kt of HC1 and HC2 with the verdicts ``verdicts[(name, kt)]`` and

@@ -436,3 +436,45 @@ def test_the_multibody_summary_cites_the_decisions_study_area_verdict(
         text = _text(path)
         assert f"(its row \"Study 'parachute area' (loads)\"): {verdict}." in text, text[:600]
         assert "Study parachute no area" not in text
+
+
+def _minimum_stable_table(path):
+    """The StabilityMap sheet's 'Minimum stable area' table of a campaign report, its header
+    the first row under the title (and its note) that names the density altitude."""
+    frame = _sheet(path, "StabilityMap")
+    first = frame[0].astype(str)
+    start = int(np.nonzero(first.str.startswith("Minimum stable area").to_numpy())[0][0])
+    i = start + int(np.argmax(first.iloc[start:].str.startswith("density altitude")))
+    head = [str(c) for c in frame.iloc[i] if isinstance(c, str)]
+    table = frame.iloc[i + 1:, :len(head)].set_axis(head, axis=1)
+    return table.iloc[:int(np.argmax(table.iloc[:, 0].isna().to_numpy()))
+                      if table.iloc[:, 0].isna().any() else len(table)]
+
+
+def test_minimum_stable_area_names_its_basis(example_campaign_run_report, us_twin_reports):
+    """The stability map's minimum stable area (the example's 0.526-0.563 m^2) answers
+    another question than the campaign's chosen area (0.866 m^2): each row's note says it is
+    the eigenvalues' alone, and the note over the table that this is the linear model about
+    the trim and that the choice also needs the time-domain runs, quoting the Findings'
+    chosen area (its value cell at the area cells' precision, 0.000 m^2) when one is chosen;
+    the US twin, which chooses none, says so. Reference: the Findings' 'parachute area
+    (chosen)' row of the same report."""
+    for folder, units in ((example_campaign_run_report, "SI"), (us_twin_reports, "US")):
+        path = _reports(folder)["campaign"]
+        table = _minimum_stable_table(path)
+        assert len(table), path.name
+        assert all(str(note).startswith("eigenvalues only") for note in table["note"]), \
+            list(table["note"])
+        frame = _sheet(path, "StabilityMap")
+        first = frame[0].astype(str)
+        i = int(np.nonzero(first.str.startswith("Minimum stable area by").to_numpy())[0][0])
+        note = " ".join(first.iloc[i + 1:i + 4])
+        assert "eigenvalues only (linear model about the trim)" in note, note
+        assert "least-damped eigenvalue is stable" in note, note
+        assert "also needs every time-domain run" in note, note
+        chosen = _findings(path).loc["parachute area (chosen)"]
+        if units == "SI":
+            assert f"chosen {_num(chosen['value']):.3f} m^2" in note, note
+        else:
+            assert str(chosen["answer"]).startswith("NONE")
+            assert "none was chosen" in note, note

@@ -10,6 +10,7 @@ Names the user wrote (the multibody manoeuvres' names, the campaign's manoeuvre 
 
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
 
@@ -322,3 +323,53 @@ def test_mode_periods_quoted_as_their_cells(example_campaign_run_report, us_twin
         assert found, folder
         wrong = [f for f in found if len(f[2].partition(".")[2]) != 2]
         assert not wrong, wrong[:5]
+
+
+#: A length quoted in a sentence: a number, then m or in (not m/s, m^2, an altitude's ft).
+_QUOTED_LENGTH = re.compile(r"(?<![\w.^/,])(-?\d[\d,]*(?:\.(\d+))?) (m|in)(?![\w^/])")
+#: A lateral step of the lateral study's motions, as its description gives it.
+_STEP = re.compile(r"^(quintic|cycloidal) step (\d[\d,]*(?:\.\d+)?) (m|in) over")
+#: Peak acceleration of a unit step over a unit time: quintic (10 t^3 - 15 t^4 + 6 t^5, its
+#: peak at t = (3 - 3^0.5) / 6), cycloidal (t - sin(2 pi t) / (2 pi)). [-]
+_PEAK = {"quintic": 10.0 / math.sqrt(3.0), "cycloidal": 2.0 * math.pi}
+
+
+def test_lengths_quoted_at_their_cells_precision(example_campaign_run_report, us_twin_reports):
+    """Every length quoted in a text cell (a rope or cable length, a step, a lever arm),
+    altitudes aside, in every report of both examples (the example with its campaign, the
+    US twin in US and SI units), has at most the decimals of a length's cell (formats.py:
+    0.000 m, 0.00 in), and the lateral study's steps are quoted as their cells would write
+    them: the amplitude of a step of peak acceleration a over T s (its motion id,
+    ``QUI-0.2g-11s``) is a T^2 / 5.774 (quintic) or a T^2 / (2 pi) (cycloidal), closed
+    form, at that precision (the example's 80.906 m, never '80.91 m')."""
+    from slingloads.constants import G0, INCH
+
+    units, twin = us_twin_reports
+    decimals = {"m": 3, "in": 2}
+    checked, wrong = 0, []
+    for folder in (example_campaign_run_report, twin):
+        for book, sheet, text in _texts(folder):
+            for m in _QUOTED_LENGTH.finditer(text):
+                if "altitude" in text[max(0, m.start() - 20):m.start()]:
+                    continue
+                checked += 1
+                if len(m.group(2) or "") > decimals[m.group(3)]:
+                    wrong.append((book, sheet, m.group(0), text[:80]))
+        lateral = next(Path(folder).glob("*-lateral.xlsx"))
+        runs = openpyxl.load_workbook(lateral, read_only=True)["Runs"]
+        steps = 0
+        for row in runs.iter_rows(values_only=True):
+            found = _STEP.match(str(row[1])) if len(row) > 1 else None
+            ident = re.fullmatch(r"(?:QUI|CYC)-([\d.]+)g-([\d.]+)s", str(row[0]))
+            if not (found and ident):
+                continue
+            steps += 1
+            amplitude = (float(ident.group(1)) * G0 * float(ident.group(2)) ** 2
+                         / _PEAK[found.group(1)])
+            shown = amplitude / (INCH if found.group(3) == "in" else 1.0)
+            quoted = float(found.group(2).replace(",", ""))
+            if quoted != round(shown, decimals[found.group(3)]):
+                wrong.append((lateral.name, row[0], quoted, shown))
+        assert steps, lateral.name
+    assert checked > 20
+    assert not wrong, wrong[:6]

@@ -170,3 +170,45 @@ def test_example_reports_print_each_block_once_keys_first(example_campaign_run_r
                 width = sum(7 * w + 5 for w in column_widths(ws))
                 assert width * MIN_PRINT_SCALE <= PRINTABLE["landscape"][0], (ws.title, width)
     assert blocks >= 6  # the campaign's metrics and ramps, the multibody modes and histories
+
+
+#: A block's title: the table's title (its long bracketed remarks aside, as a page header
+#: gives it), the block's k and n.
+_PART_OF = re.compile(r"^(?P<table>.*), part (?P<k>\d+) of (?P<n>\d+)$", re.DOTALL)
+
+
+def _printed_parts(path):
+    """``{table title: [k, ...]}``: the blocks of each table cut in parts, in the order the
+    workbook prints them: its sheets in order (the cover, which lists them, aside), on each
+    its page header (a table sheet of one block) then its title cells by row."""
+    book = openpyxl.load_workbook(path)
+    order = {}
+    for ws in book.worksheets[1:]:
+        seen = []
+        for text in [ws.oddHeader.center.text or "", *(t for _, t in _part_titles(ws))]:
+            found = _PART_OF.match(text)
+            if found and found.groups() not in seen:  # a header repeats its first title
+                seen.append(found.groups())
+        for table, k, n in seen:
+            table = re.sub(r"\s*\([^()]{13,}\)", "", table)  # as a page header shortens it
+            order.setdefault((table, int(n)), []).append(int(k))
+    return order
+
+
+def test_parts_of_each_table_print_in_order(example_campaign_run_report, us_twin_reports):
+    """In every report of both examples (the example with its campaign, the US twin), the
+    blocks of a table cut in parts print as their titles number them: part 1, 2, ... n, each
+    once, in the workbook's sheet order and row order; a block too long for a sheet of
+    several tables takes every block of its table to sheets of their own, in order, never
+    itself alone after the rest ('Metrics part 4' after parts 5-9). Reference: the titles
+    and page headers read back with openpyxl."""
+    _, twin = us_twin_reports
+    tables, wrong = 0, []
+    for folder in (example_campaign_run_report, twin):
+        for path in sorted(folder.glob("*.xlsx")):
+            for (table, n), ks in _printed_parts(path).items():
+                tables += 1
+                if ks != list(range(1, n + 1)):
+                    wrong.append((path.name, table, ks))
+    assert tables >= 10
+    assert not wrong, wrong

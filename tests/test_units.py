@@ -82,4 +82,5 @@ def test_sentences_convert_whole_numbers_and_jerks():
     assert report_text(text, "US") == ("tolerance 1e-08 x load scale 3,929,687 lbf in; "
                                        "peak jerk <= 6.365 ft/s^3")
     assert report_text(text, "SI") == text
-    assert report_text("cable 1,234.5 m", "US") == f"cable {1234.5 / 0.0254:,.0f} in"
+    # a length at a length cell's precision (0.00 in): 1,234.5 / 0.0254 = 48,602.36 in
+    assert report_text("cable 1,234.5 m", "US") == f"cable {1234.5 / 0.0254:,.2f} in"

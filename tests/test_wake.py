@@ -59,7 +59,7 @@ def test_cable_rule():
     bad = check_cable_length(11.0, 10.0)
     assert not bad.ok
     assert bad.required == pytest.approx(12.0)
-    assert "too short" in bad.message and "12.000 m" in bad.message
+    assert "too short" in bad.message and "i.e. >= 12 m;" in bad.message
 
 
 def test_bad_wake_input():

@@ -186,7 +186,8 @@ class _DisplacementStep(Motion):
 
     def describe(self):
         """One-line description for tables."""
-        return (f"{self.law} step {self.amplitude:.4g} m over {self.duration:.4g} s "
+        # the amplitude to 6 digits: a report quotes it at a length cell's precision
+        return (f"{self.law} step {self.amplitude:.6g} m over {self.duration:.4g} s "
                 f"(peak {self.peak_acceleration:.4g} m/s^2)")
 
     def _params(self):

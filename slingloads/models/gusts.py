@@ -577,7 +577,7 @@ class DrydenTurbulence:
     @property
     def label(self):
         """A short description for tables and legends (amplitude in m/s, times in s)."""
-        return (f"turbulence sigma {self.intensity:.3g} m/s, L {self.scale_length:.3g} m, "
+        return (f"turbulence sigma {self.intensity:.3g} m/s, L {self.scale_length:.6g} m, "
                 f"{self.duration:.3g} s, seed {self.seed}")
 
     def spectrum(self, omega):

@@ -342,12 +342,13 @@ def check_cable_length(cable_length, line_length, margin=CABLE_MARGIN):
         raise InputError("cable margin must be >= 0", margin)
     required = (1.0 + margin) * line
     ok = cable >= required * (1 - 1e-12)
+    # lengths to 6 digits: a report quotes each at a length cell's precision
     if ok:
-        message = (f"carrier cable {cable:.3f} m is at least {margin:.0%} longer than the "
-                   f"parachute line {line:.3f} m (needs >= {required:.3f} m)")
+        message = (f"carrier cable {cable:.6g} m is at least {margin:.0%} longer than the "
+                   f"parachute line {line:.6g} m (needs >= {required:.6g} m)")
     else:
-        message = (f"carrier cable {cable:.3f} m is too short: it must be at least "
-                   f"{margin:.0%} longer than the parachute line {line:.3f} m, i.e. >= "
-                   f"{required:.3f} m; lengthen the cable by {required - cable:.3f} m or "
-                   f"shorten the line to <= {cable / (1 + margin):.3f} m")
+        message = (f"carrier cable {cable:.6g} m is too short: it must be at least "
+                   f"{margin:.0%} longer than the parachute line {line:.6g} m, i.e. >= "
+                   f"{required:.6g} m; lengthen the cable by {required - cable:.6g} m or "
+                   f"shorten the line to <= {cable / (1 + margin):.6g} m")
     return CableCheck(bool(ok), cable, line, required, margin, message)

@@ -303,7 +303,7 @@ def _sheets(report, units, warnings=(), decision=None):
         sheets["StabilityMap"] = [
             Section("Stability map over parachute area x airspeed x density altitude"),
             Section("Minimum stable area by airspeed and density altitude",
-                    in_units(r.stability.minimum, units)),
+                    _minimum_stable(r, units), note=minimum_stable_basis(r, units)),
             Section("Every grid point", _explained(in_units(r.stability.points, units)),
                     keys=["area factor [-]", "airspeed EAS [m/s]", "airspeed EAS [kt]"])]
     if r.no_parachute is not None:
@@ -322,6 +322,35 @@ def _sheets(report, units, warnings=(), decision=None):
         else "no area is stable in every condition and none was chosen: nothing is handed to "
              "the loads")
     return sheets
+
+
+#: The basis of the stability map's minimum stable area, in the note of each of its rows.
+EIGENVALUES_ONLY = "eigenvalues only"
+
+
+def minimum_stable_basis(result, units):
+    """The basis of the stability map's minimum stable area, for the note over its table:
+    the linear model about the trim (eigenvalues only), beside the campaign's chosen area,
+    which also needs the time-domain runs, so that a checker reads why the two differ."""
+    basis = ("Minimum stable area from the eigenvalues only (linear model about the trim): "
+             "the smallest area whose least-damped eigenvalue is stable.")
+    factor = result.chosen_area_factor
+    if factor is not None and np.isfinite(factor):
+        chosen = quantity_text(factor * result.neutral.area, "area", units)
+        return (f"{basis} The campaign's chosen {chosen} (sheet Selection) also needs every "
+                "time-domain run of the matrix stable.")
+    return (f"{basis} A campaign choice also needs every time-domain run of the matrix "
+            "stable; none was chosen (sheet Selection).")
+
+
+def _minimum_stable(result, units):
+    """The stability map's minimum stable areas, each row's note naming its basis
+    (:data:`EIGENVALUES_ONLY`, told in full by :func:`minimum_stable_basis`) before what
+    the map says of the row."""
+    frame = result.stability.minimum.copy()
+    frame["note"] = [f"{EIGENVALUES_ONLY}; {note}" if note else EIGENVALUES_ONLY
+                     for note in frame["note"].fillna("").astype(str)]
+    return in_units(frame, units)
 
 
 def sweep_plots(result):

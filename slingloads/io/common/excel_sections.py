@@ -101,8 +101,11 @@ def sheet_blocks(name, sections, number_format=None, taken=()):
     print setup on every page, never written into the data). The tables left that are too
     wide for the page are then cut into blocks of columns (:func:`column_blocks`, the
     table's keys first in each, titled ``part k of n``), and a table or block taller than a
-    page among others goes to a sheet of its own (``Base part k`` for a block). When no
-    table is left on the base sheet, the first such table keeps the base name and the notes.
+    page among others goes to a sheet of its own: a table after the base sheet's, a block
+    (``Base part k``) in its place, the sections after it continuing on the next sheet
+    (named after its first table), so that the blocks print as their ``k of n`` reads. When
+    no table is left on the base sheet, the first such table keeps the base name and the
+    notes.
     A sheet holding one table is a *table sheet*: a DataFrame whose ``attrs`` carry its
     ``title`` and ``note`` (:func:`write_table_sheets`); any other is a list of sections
     (:func:`write_sections_sheet`), whose tables each fit on one page.
@@ -122,16 +125,50 @@ def sheet_blocks(name, sections, number_format=None, taken=()):
     taken = {t.lower() for t in taken} | {name.lower()}
     long = [s for s in tables if any(s is x for x in away) or s.sheet or (
         len(tables) > 1 and _is_long(s.table, number_format, text_width))]
-    rest = [s for s in sections if all(s is not x for x in long)]
-    if long and not any(s.table is not None for s in rest) and not long[0].sheet:
-        rest.append(long.pop(0))
-    out = [(name, rest)] if rest else []
-    for s in long:
+    # a long table goes to a sheet of its own after the rest; a long block of a cut table
+    # to one in its place: the sections after it continue on the next sheet, so that the
+    # blocks print as their k of n reads (never one after the rest)
+    moved = [s for s in long if _whole_title(s.title) is None]
+    groups = [[]]
+    for s in sections:
+        if any(s is x for x in moved):
+            continue
+        if any(s is x for x in long):
+            groups += [[s], []]
+        else:
+            groups[-1].append(s)
+    groups = [g for g in groups if g]
+    for k in range(len(groups) - 1, 0, -1):  # notes alone join the sheet before them
+        if not any(x.table is not None for x in groups[k]):
+            groups[k - 1] += groups.pop(k)
+    if len(groups) > 1 and not any(x.table is not None for x in groups[0]):
+        groups[0] += groups.pop(1)  # the base sheet's notes stay with its first block
+    if moved and not any(x.table is not None for g in groups for x in g) \
+            and not moved[0].sheet:
+        groups = [[*(groups[0] if groups else []), moved.pop(0)]]
+    out = []
+    for k, group in enumerate(groups):
+        first = next(x for x in group if x.table is not None) if k else None
+        own = name if not k else first.sheet or _sheet_name_for(name, first.title, taken)
+        taken.add(check_sheet_name(own).lower())
+        if k and len([x for x in group if x.table is not None]) > 1 and group[0].table \
+                is not None:  # a sheet continuing a cut table: titled as its heading
+            group = [Section(f"{_whole_title(first.title) or first.title}, continued"),
+                     *group]
+        out.append((own, group))
+    for s in moved:
         own = s.sheet or _sheet_name_for(name, s.title, taken)
         taken.add(check_sheet_name(own).lower())
         out.append((own, [s]))
     return [(n, secs if (frame := _as_table_sheet(secs)) is None else frame)
             for n, secs in out]
+
+
+def _whole_title(title):
+    """The title of the table a block titled ``..., part k of n`` (:func:`_cut`) was cut
+    from, or None for a table left whole."""
+    found = re.fullmatch(r"(.*), part \d+ of \d+", title or "", flags=re.DOTALL)
+    return found.group(1) if found else None
 
 
 def _as_table_sheet(sections):

@@ -19,8 +19,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads.errors import InputError
-from slingloads.io.common.formats import format_decimals, unit_format
-from slingloads.io.common.units import REPORT_UNITS, from_si, unit_label
+from slingloads.io.common.units import REPORT_UNITS, cell_number, from_si, unit_label
 
 
 def check_units(units):
@@ -75,15 +74,15 @@ def report_value(value, kind, units):
 
 #: Kinds a sentence quotes at the precision of their cells (formats.py), trailing zeros
 #: dropped, so that a title or a note reads the number of the cell beside it: a cable of
-#: 18.288 m is "18.288 m" in both, never "18.29 m".
-CELL_PRECISION_KINDS = frozenset({"length"})
+#: 18.288 m is "18.288 m" in both, never "18.29 m"; an area of 0.866 m^2 "0.866 m^2".
+CELL_PRECISION_KINDS = frozenset({"length", "area"})
 
 
 def quantity_text(value, kind, units, digits=4):
     """One SI value of quantity ``kind`` written with its report unit, for a sentence or a
     title: the one spelling of each quantity in both unit systems (an altitude to the whole
-    unit, in m or ft; a length in m or in, at its cells' precision; an airspeed in kt; other
-    kinds to ``digits`` significant digits).
+    unit, in m or ft; a length in m or in and an area, at their cells' precision; an airspeed
+    in kt; other kinds to ``digits`` significant digits).
 
     Examples
     --------
@@ -99,8 +98,7 @@ def quantity_text(value, kind, units, digits=4):
     if isinstance(shown, int):
         number = f"{shown:,d}"
     elif kind in CELL_PRECISION_KINDS:
-        number = f"{shown:,.{format_decimals(unit_format(unit))}f}"
-        number = number.rstrip("0").rstrip(".") if "." in number else number
+        number = cell_number(shown, unit)
     else:
         number = f"{shown:.{digits}g}"
     return f"{number} {unit}"

@@ -19,6 +19,7 @@ import numpy as np
 
 from slingloads.constants import FOOT, G0, INCH, KNOT, POUND, POUND_FORCE
 from slingloads.errors import UnitError
+from slingloads.io.common.formats import format_decimals, unit_format
 from slingloads.limits import MAX_UNIT_CHARS
 
 #: Quantity kinds and their SI unit, as pint strings.
@@ -134,6 +135,34 @@ def _quoted_number(value):
     return f"{value:,.0f}" if abs(value) >= 1000 else f"{value:.4g}"
 
 
+def cell_number(value, unit):
+    """A number in ``unit`` (a report unit label) for a sentence, at the precision of that
+    unit's cells (formats.py), trailing zeros dropped: the one spelling of a length in a
+    sentence, so that it reads as the cell beside it.
+
+    Examples
+    --------
+    >>> cell_number(18.288, "m"), cell_number(80.9063, "m"), cell_number(3185.04, "in")
+    ('18.288', '80.906', '3,185.04')
+    >>> cell_number(720.0, "in"), cell_number(1.0, "m")
+    ('720', '1')
+    """
+    number = f"{float(value):,.{format_decimals(unit_format(unit) or '0.000')}f}"
+    return number.rstrip("0").rstrip(".") if "." in number else number
+
+
+def _length_text(match, number, unit, text):
+    """A length quoted in ``text`` (``number`` in ``unit``) at its cells' precision; an
+    altitude (``density altitude 0 m``) and a length too small for that precision as
+    written."""
+    if _ALTITUDE.search(text, 0, match.start()):
+        return None
+    decimals = format_decimals(unit_format(unit) or "0.000")
+    if number != 0.0 and abs(number) < 0.5 * 10.0 ** -decimals:
+        return None
+    return f"{cell_number(number, unit)} {unit}"
+
+
 #: Decimals of an area in a report, in a sentence as in its cells (formats.py: ``0.000``
 #: m^2, ``0.00`` ft^2), so that an area quoted in a note reads as the cell beside it.
 _AREA_DECIMALS = {"SI": 3, "US": 2}
@@ -145,14 +174,17 @@ def _area_number(value, units):
 
 def report_text(text, units):
     """A sentence of a report with its quoted SI quantities (``"step 9.14 m/s"``) in the
-    report unit system (``"step 30 ft/s"`` in US units); unchanged in SI but for the areas,
-    which a sentence quotes at the precision of an area's cell in both systems (the analyses
-    quote them with 6 significant digits so that the conversion does not round twice).
+    report unit system (``"step 30 ft/s"`` in US units); unchanged in SI but for the areas
+    and the lengths (not altitudes), which a sentence quotes at the precision of their cells
+    in both systems (the analyses quote them with 6 significant digits so that the
+    conversion does not round twice; :func:`cell_number`).
 
     Examples
     --------
     >>> report_text("quintic step 0.04246 m over 0.5 s (peak 0.9807 m/s^2)", "US")
-    'quintic step 1.672 in over 0.5 s (peak 3.218 ft/s^2)'
+    'quintic step 1.67 in over 0.5 s (peak 3.218 ft/s^2)'
+    >>> report_text("cycloidal step 80.9063 m over 12 s", "SI")
+    'cycloidal step 80.906 m over 12 s'
     >>> report_text("load scale 443,995 N m; peak jerk <= 1.94 m/s^3", "US")
     'load scale 3,929,687 lbf in; peak jerk <= 6.365 ft/s^3'
     >>> report_text("k = -15.2 N m/rad, c = 2,000 N m s/rad", "US")
@@ -162,13 +194,20 @@ def report_text(text, units):
     >>> report_text("chosen 2.52453 m^2", "US")
     'chosen 27.17 ft^2'
     >>> report_text("density altitude 1524 m, cable 18.29 m", "US")
-    'density altitude 5,000 ft, cable 720.1 in'
+    'density altitude 5,000 ft, cable 720.08 in'
     """
     if not isinstance(text, str) or not any(c.isdigit() for c in text):
         return text
     if units != "US":
-        return _QUOTED.sub(lambda m: (f"{_area_number(float(m.group(1).replace(',', '')), 'SI')}"
-                                      " m^2" if m.group(2) == "m^2" else m.group(0)), text)
+        def keep(m):
+            number = float(m.group(1).replace(",", ""))
+            if m.group(2) == "m^2":
+                return f"{_area_number(number, 'SI')} m^2"
+            if m.group(2) == "m":
+                return _length_text(m, number, "m", text) or m.group(0)
+            return m.group(0)
+
+        return _QUOTED.sub(keep, text)
 
     def convert(match):
         kind = _TEXT_UNITS[match.group(2)]
@@ -178,6 +217,9 @@ def report_text(text, units):
         if kind == "length" and _ALTITUDE.search(text, 0, match.start()):
             # an altitude is its own quantity (ft in US units, to the foot), never inches
             return f"{number / FOOT:,.0f} ft"
+        if kind == "length":  # at the precision of a length's cell (0.00 in)
+            inches = number / INCH
+            return _length_text(match, inches, "in", text) or f"{_quoted_number(inches)} in"
         if kind == "jerk":  # a rate of acceleration, in the acceleration's family
             return f"{_quoted_number(number / FOOT)} ft/s^3"
         if kind == "area":  # at the precision of an area's cell (0.00 ft^2)

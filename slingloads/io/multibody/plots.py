@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from slingloads.analyses.verdicts import ratio_words
 from slingloads.errors import InputError
 from slingloads.io.common.figures import PAGE_WIDTH, cycle_colour, fix_margins
 from slingloads.io.common.units import si_factor
@@ -69,7 +70,9 @@ def plot_history_panels(runs, title=None):
 def plot_eigenvalues(linear, title=None):
     """Eigenvalues of the linear model in the complex plane, every mode and the slow ones.
 
-    Each mode is listed in the legend with its natural frequency and damping ratio; the right
+    Each mode is listed in the legend with its natural frequency and damping ratio, at the
+    precision of the report's modes table (0.000 rad/s; a ratio by
+    :func:`~slingloads.analyses.verdicts.ratio_words`); the right
     panel zooms on the modes slower than 2 rad/s (swing, yaw, pitch).
 
     Parameters
@@ -93,8 +96,9 @@ def plot_modes(modes, verdict, title=None):
     every, slow = fig.subplots(1, 2)
     for k, row in modes.iterrows():
         re, im = row["real [1/s]"], row["imag [rad/s]"]
-        label = (f"{row['mode']}: {row['natural frequency [rad/s]']:.3g} rad/s, "
-                 f"zeta {row['damping ratio [-]']:.3g}")
+        # at the precision of the modes table's cells (0.000 rad/s, a ratio's 0.000)
+        label = (f"{row['mode']}: {row['natural frequency [rad/s]']:.3f} rad/s, "
+                 f"zeta {ratio_words(row['damping ratio [-]'])}")
         style = {"ls": "none", "marker": "xo+sd^v<>p"[k // 10 % 10], "ms": 8, "mew": 2,
                  "color": cycle_colour(k)}
         for ax in (every, slow):
