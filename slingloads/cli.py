@@ -479,7 +479,7 @@ class _FirstComputed:
 
 def _run_options(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
-    from slingloads.io.campaign.reader import address_rule
+    from slingloads.io.campaign.rows import address_rule
     from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
     from slingloads.runs.cache import check_outside, default_cache_dir
     from slingloads.runs.study import RunOptions
