@@ -1,12 +1,11 @@
 """The runs module of each analysis: one table, each module imported when its analysis runs.
 
 :data:`RUNS` maps each name of :data:`slingloads.runs.study.ANALYSES` to the function that
-imports the module that runs it (``run(study) -> result``; those that can fall short of what they were asked for also have
-``shortfalls(result) -> list of str``), imported by the function of its entry when it
-runs: running the structural loads does not load the multibody model, the parachute sizing
-or the campaign (numba, scipy.optimize, dask), and reading a workbook or printing ``--help``
-loads none of them. The registry imports no module that imports :mod:`slingloads.runs.study`,
-so the two make no circle.
+imports the module that runs it (``run(study) -> result``; those that can fall short of what
+they were asked for also have ``shortfalls(result) -> list of str``). Running the structural
+loads thus loads neither the parachute sizing nor the campaign (nor dask), and reading a
+workbook or printing ``--help`` loads no analysis. The registry imports no module that
+imports :mod:`slingloads.runs.study`, so the two make no circle.
 """
 
 from __future__ import annotations
