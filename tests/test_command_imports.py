@@ -19,7 +19,7 @@ from hostile import EXAMPLE
 
 #: What a workbook refused at its Study sheet must not load (nor start a helper process to
 #: load them).
-NOT_FOR_A_REFUSAL = ("numba", "matplotlib", "scipy.optimize", "dask", "distributed",
+NOT_FOR_A_REFUSAL = ("numba", "matplotlib", "scipy.optimize", "dask", "distributed", "pandas",
                      "slingloads.analyses.multibody", "slingloads.analyses.campaign",
                      "slingloads.analyses.chute_sizing", "slingloads.analyses.towed_attitude")
 #: What the structural loads alone must not load: the other analyses' models and readers
@@ -65,8 +65,8 @@ def _env(plot_workers):
 @pytest.mark.parametrize("command", ["loads", "run"])
 def test_a_workbook_refused_at_its_study_sheet_loads_no_model(tmp_path, command):
     """The example without its Study sheet is refused (exit 2) having loaded neither numba,
-    matplotlib, scipy.optimize, dask nor distributed (nor the multibody, campaign or sizing
-    analyses), and having started no helper process, though the helpers are on."""
+    matplotlib, scipy.optimize, dask, distributed nor pandas (nor the multibody, campaign or
+    sizing analyses), and having started no helper process, though the helpers are on."""
     import openpyxl
 
     book = openpyxl.load_workbook(EXAMPLE)

@@ -8,8 +8,6 @@ import hashlib
 from dataclasses import dataclass, field
 
 from slingloads.errors import ErrorCollector
-from slingloads.io.airframe.reader import CHOICES as AIRFRAME_CHOICES
-from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
 from slingloads.io.common.cover import IDENTIFICATION, now_stamp
@@ -155,6 +153,9 @@ def _build(reader, path, only, sha256, on_read=None, on_checked=None):
     params = errors.call(StudyParameters, reader, all_parameters(), errors)
     rows_read = not errors
     if params is not None:  # the rows every analysis checks on the Study sheet alone, run or not
+        # the airframe's models (pandas) load once the Study sheet is there
+        from slingloads.io.airframe.reader import CHOICES as AIRFRAME_CHOICES
+
         for name, valid in AIRFRAME_CHOICES.items():
             errors.call(params.choice, name, valid)
         for analysis in ANALYSES:
@@ -179,6 +180,8 @@ def _build(reader, path, only, sha256, on_read=None, on_checked=None):
                              "once these read")
     if on_checked is not None:
         on_checked(asked)
+    from slingloads.io.airframe.reader import read_airframe
+
     read = errors.call(read_airframe, reader, params)
     if read is None:
         errors.raise_if_any(note=f"the sheets of {', '.join(asked) or 'the analyses'} are "
