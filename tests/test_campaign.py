@@ -302,6 +302,15 @@ def test_loads_envelope_against_the_histories(local):
         h["hub Fx [N]"] ** 2 + h["hub Fy [N]"] ** 2 + h["hub Fz [N]"] ** 2))).max()
     assert env.hook_angle == pytest.approx(np.radians(1.5 * total))
     assert env.runs == 2 and set(env.source["beta"]) <= set(runs)
+    # the table handed to the report says the rule beside each row, and its numbers follow it
+    # (an alpha range whose runs never reach 0 still ends at 0.0 with the margin: the note
+    # says why)
+    for _, row in env.to_frame().iterrows():
+        assert row["note"].startswith("x 1.5")
+        widened = "include 0" in row["note"]
+        assert widened == (row["quantity"] in ("alpha", "beta", "line theta", "line psi"))
+        hi = 1.5 * row["reached max"]
+        assert row["with margin max"] == pytest.approx(max(0.0, hi) if widened else hi)
 
 
 # -------------------------------------------------------------------------- bad input
@@ -479,6 +488,9 @@ def test_sensitivity_tables_and_carrier_pairs_against_a_hand_built_table():
     assert_allclose(area["largest yaw change [deg]"], [19.0, 23.0])
     speed = tables["airspeed"].set_index("airspeed EAS [m/s]")
     assert_array_equal(speed["runs"], [2, 2])
+    # the table says which runs it is taken over: those at the selected area factor
+    assert_allclose(speed["at area factor [-]"], 1.4)
+    assert "at area factor [-]" not in tables["parachute area"]
     assert_allclose(speed["largest yaw change [deg]"], [19.0, 23.0])
     carrier = tables["carrier"].set_index("carrier")
     assert_allclose(carrier.loc[["frozen", "free"], "largest yaw change [deg]"], [22.0, 23.0])

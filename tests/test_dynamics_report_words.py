@@ -43,6 +43,23 @@ def test_no_abbreviation_reads_as_millimetres_in_code_or_documents():
     assert not found, found
 
 
+#: "HD" for a density altitude: the tables and every other report's titles say "density
+#: altitude"; one name per quantity.
+ALTITUDE_ABBREVIATION = re.compile(r"\bHD\b")
+
+
+def test_no_report_text_abbreviates_the_density_altitude():
+    """No title, label or sentence the package writes names the density altitude "HD" (the
+    campaign's figures said "0 m HD" where its tables, the multibody and the sizing figures
+    say "0 m density altitude"): the report writers' string literals are searched (the
+    figures' texts are made there; tests/test_ramp_gust.py reads one title back)."""
+    found = [(p.relative_to(ROOT).as_posix(), n, line.strip()[:80])
+             for p in sorted((ROOT / "slingloads").rglob("*.py"))
+             for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
+             if ALTITUDE_ABBREVIATION.search(line)]
+    assert not found, found
+
+
 def test_the_examples_report_cells_use_whole_words(example_run_report):
     """Every text cell of the example's dynamics reports (parachute sizing, multibody): no
     'mm.' abbreviation and no stray verdict word ('departs', 'undamped')."""

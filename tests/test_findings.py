@@ -17,6 +17,7 @@ above Nz, a hook angle of 90 deg or more or below the Study's...).
 
 import math
 import re
+import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -325,3 +326,113 @@ def test_findings_of_a_single_analysis_say_not_run(example_loads_report):
                  "answer"] == "not run"
     assert "the Study's (no lateral study run)" in f.loc[
         "hook design angle, lateral directions (from the vertical)", "answer"]
+
+
+def _every_run(path):
+    """The parachute sizing's 'Every run' table (its parts joined), from whichever sheet of
+    the report holds it."""
+    book = pd.ExcelFile(path)
+    for name in book.sheet_names:
+        frame = pd.read_excel(book, sheet_name=name, header=None)
+        for first in ("area [m^2]", "area [ft^2]"):
+            table = _parts(frame, first)
+            if table is not None and "beta offset from trim [deg]" in table:
+                return table
+    raise AssertionError(f"no 'Every run' table in {path.name}")
+
+
+def test_every_runs_final_sideslip_follows_its_trim_and_offset(example_campaign_run_report,
+                                                               us_twin_reports):
+    """The sizing's 'Every run' table states the trim each run is judged about, so that its
+    final beta and its offset from trim relate as the envelope test defines them: the final
+    sample and the second half's mean both lie in the second half's range, so |final beta -
+    (beta trim + offset)| <= 2 x the second half's amplitude (+ the cells' 0.1 deg
+    rounding), on every run of both examples. Without the trim column a step gust's final
+    beta -8.1 deg beside an offset 0.0 deg reads as a contradiction."""
+    for folder in (example_campaign_run_report, us_twin_reports):  # this module's: a folder
+        table = _every_run(_reports(folder)["chute"])
+        assert "beta trim [deg]" in table, list(table.columns)
+        rows = table[["final beta [deg]", "beta trim [deg]", "beta offset from trim [deg]",
+                      "beta amplitude second half [deg]"]].apply(pd.to_numeric,
+                                                                 errors="coerce").dropna()
+        assert len(rows) >= 6  # the US twin sweeps 3 areas x 2 gusts
+        gap = (rows["final beta [deg]"] - rows["beta trim [deg]"]
+               - rows["beta offset from trim [deg]"]).abs()
+        assert (gap <= 2 * rows["beta amplitude second half [deg]"] + 0.15).all(), \
+            rows[gap > 2 * rows["beta amplitude second half [deg]"] + 0.15]
+        # a held gust moves the trim only when the weight has a moment: at least one run of
+        # the example is judged about a trim away from its final beta's zero
+        assert (rows["beta trim [deg]"].abs() > 0.5).any() or folder is not \
+            example_campaign_run_report
+        # the table's note, printed under it (a table sheet's text box: the workbook's XML)
+        with zipfile.ZipFile(_reports(folder)["chute"]) as book:
+            xml = " ".join(book.read(n).decode("utf-8", "replace") for n in book.namelist()
+                           if n.endswith(".xml"))
+        assert "beta trim: the static equilibrium the run is judged about" in xml
+
+
+def test_sensitivity_tables_say_which_runs_they_cover(example_campaign_run_report):
+    """The campaign's Sensitivity sheet: the airspeed table covers the runs at the selected
+    area factor only, and says so (its 'at area factor' column, the sheet's note); its runs
+    add up to the Matrix sheet's runs at that factor (the reference: the run matrix as
+    written), not to every run of the matrix as 'over every value of the others' alone would
+    read."""
+    path = _reports(example_campaign_run_report)["campaign"]
+    matrix = _parts(_sheet(path, "Matrix"), "run")
+    frame = _sheet(path, "Sensitivity")
+    speed = _parts(frame, "airspeed EAS [kt]")
+    assert speed is not None
+    factor = set(pd.to_numeric(speed["at area factor [-]"]))
+    assert len(factor) == 1
+    at = np.isclose(pd.to_numeric(matrix["area factor [-]"]), factor.pop())
+    assert pd.to_numeric(speed["runs"]).sum() == at.sum() < len(matrix)
+    assert "only the runs at the selected area factor" in _text(path, "Sensitivity")
+
+
+def test_one_required_cable_length_for_one_parachute_line(example_campaign_run_report):
+    """The carrier-cable check is stated in the parachute sizing and in the multibody report:
+    both check the cable against the line flown (the Study's 10.1 m, the longer than the
+    wake's 10.058 m) with one margin, so both state one required length, (1 + 0.2) x 10.1 =
+    12.12 m (hand calculation), not 12.070 m in one report and 12.120 m in the other."""
+    reports = _reports(example_campaign_run_report)
+    chute = _items(reports["chute"])
+    wake, study = _num(chute["parachute line length (from the wake)"]), _num(
+        chute["Study 'parachute line length'"])
+    required = _num(chute["required cable length"])
+    assert required == pytest.approx(1.2 * max(wake, study), abs=5e-4)
+    assert required == pytest.approx(12.12, abs=5e-4)
+    multibody = _sheet(reports["multibody"], "Summary")
+    row = multibody[multibody[0] == "cable against the line"].iloc[0]
+    needs = re.search(r"needs >= ([\d.]+) m", " ".join(str(v) for v in row.dropna()))
+    assert needs and float(needs.group(1)) == pytest.approx(required, abs=5e-4)
+
+
+def test_the_multibody_summary_quotes_the_findings_real_part(example_campaign_run_report,
+                                                              us_twin_reports):
+    """The multibody Summary's sentence on the linear stability quotes the largest real part
+    as the Findings' cell beside it reads (1/s to 0.0000, formats.py): the example's
+    -0.0062 1/s, never '-0.006195 1/s' in the sentence above a cell of -0.0062; and the US
+    twin's +0.1228. Reference: the Findings cell read back."""
+    for folder in (example_campaign_run_report, us_twin_reports):
+        path = _reports(folder)["multibody"]
+        cell = _num(_findings(path).loc["linear stability of the towed system at its trim "
+                                        "(multibody)", "value"])
+        said = re.search(r"largest real part (-?[\d.e+-]+) 1/s", _text(path))
+        assert said, _text(path)[:200]
+        assert said.group(1) == f"{cell:.4f}", (said.group(1), cell)
+
+
+def test_the_multibody_summary_cites_the_decisions_study_area_verdict(
+        example_campaign_run_report, us_twin_reports):
+    """The multibody Summary's sentence defers to the parachute decision and quotes its
+    verdict on the Study's parachute as the decision table's row states it (its note), in a
+    sentence that reads: the US twin's read 'Study parachute no area meets the criteria'.
+    Reference: the decision table of the same sheet read back."""
+    for folder in (example_campaign_run_report, us_twin_reports):
+        path = _reports(folder)["multibody"]
+        frame = _sheet(path, "Summary")
+        row = frame[frame[0] == "Study 'parachute area' (loads)"].iloc[0]
+        verdict = str(row.dropna().iloc[-1])
+        text = _text(path)
+        assert f"(its row \"Study 'parachute area' (loads)\"): {verdict}." in text, text[:600]
+        assert "Study parachute no area" not in text

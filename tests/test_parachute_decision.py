@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from slingloads.analyses.parachute_decision import MULTIBODY, ONE_DOF, decide
+from slingloads.analyses.parachute_decision import MULTIBODY, NO_AREA, ONE_DOF, decide
 
 STATIC = SimpleNamespace(area=0.8, area_fit=0.7, area_local=0.8,
                          basis_text="local slopes at zero sideslip")
@@ -84,12 +84,17 @@ def test_no_area_when_a_model_finds_none():
     d = decide(STATIC, sweep, selection(math.nan), METRICS, STABLE, one_dof)
     assert not d.found and d.deciding_model == MULTIBODY
     assert "no area meets the criterion of the multibody campaign" in d.reason
+    # both models ran: at the chosen area there is nothing to judge, never "not run"
+    frame = d.to_frame().set_index("item")["value"]
+    assert frame["multibody verdict at the chosen area"] == NO_AREA
+    assert frame["1-DOF verdict at the chosen area, per gust"] == NO_AREA
     bad = Sweep([("divergent", "convergent")] * 3)
     d = decide(STATIC, bad)
     assert not d.found and d.deciding_model == ONE_DOF
     from slingloads.analyses.parachute_decision import multibody_verdict_at
     text = multibody_verdict_at(METRICS, 1.2, STABLE)
-    assert text.startswith("NOT stable: 1 of 2 runs fail") and "limit cycle" in text
+    assert text.startswith("NOT stable in every run: 1 of 2 not shown stable")
+    assert "limit cycle" in text
 
 
 def test_a_finding_is_reported_not_refused():

@@ -131,6 +131,6 @@ def test_gust_figure_marks_ramp_end_and_gust_and_states_the_condition(study, flo
     legend = fig.axes[0].get_legend()
     assert legend is not None and "HC1 (convergent)" in [x.get_text() for x in legend.texts]
     title = fig._suptitle.get_text()
-    for part in ("HC1 6393 lb", "720 in", "0 ft HD", "hovering carrier", "10 s lateral gust",
-                 "10 ft/s"):
+    for part in ("HC1 6393 lb", "720 in", "0 ft density altitude", "hovering carrier",
+                 "10 s lateral gust", "10 ft/s"):
         assert part in title, (part, title)

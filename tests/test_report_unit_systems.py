@@ -29,8 +29,9 @@ def _quoted(units):
 
 FOREIGN = {"SI": _quoted(US_UNITS), "US": _quoted(SI_UNITS)}
 #: A length in feet: quoted after a number or in a header; an altitude is the one quantity
-#: a US report writes in ft (its word before it, or "HD" after it).
-FEET = re.compile(r"(?P<before>[\w ]{0,30}?)(?:\d\s?ft|\[ft\])(?![\w^/])(?P<after> HD)?")
+#: a US report writes in ft (its word before it, or after it: "0 ft density altitude").
+FEET = re.compile(r"(?P<before>[\w ]{0,30}?)(?:\d\s?ft|\[ft\])(?![\w^/])"
+                  r"(?P<after> density altitude)?")
 
 
 def _user_names(book):
@@ -102,7 +103,7 @@ def test_the_us_twins_reports_keep_their_unit_system(us_twin_reports):
 
 
 @pytest.mark.parametrize("units, cable, altitude", [("US", "720 in", "5,000 ft"),
-                                                     ("SI", "18.29 m", "1,524 m")])
+                                                     ("SI", "18.288 m", "1,524 m")])
 def test_one_spelling_per_quantity(units, cable, altitude):
     """The helper every title uses: 60 ft = 18.288 m = 720 in exactly (1 ft = 0.3048 m);
     5000 ft = 1524 m exactly, an altitude to the whole unit."""
@@ -142,4 +143,182 @@ def test_areas_quoted_in_sentences_read_as_their_cells(example_campaign_run_repo
         assert areas, folder
         wrong = [a for a in areas if a[3] != {"m^2": 3, "ft^2": 2}[a[4]]
                  or a[4] != {"SI": "m^2", "US": "ft^2"}[system]]
+        assert not wrong, wrong[:5]
+
+
+#: A number quoted before "deg" in a sentence, a note or a column label.
+_QUOTED_ANGLE = re.compile(r"(?<![\w.^/])([+-]?\d+(?:\.\d+)?) ?deg\b")
+
+
+def _design_angles(folder):
+    """The angles a checker follows from report to report, as the cells hold them (to the
+    last bit): the Findings' hook design angle, and the lateral study's largest load angle
+    (its Summary)."""
+    import pandas as pd
+
+    loads = next(Path(folder).glob("*-loads.xlsx"))
+    findings = pd.read_excel(loads, sheet_name="Findings", header=None)
+    row = findings[findings[0].astype(str).str.startswith("hook design angle")].iloc[0]
+    angles = {"hook design angle": float(row[2])}
+    lateral = next(Path(folder).glob("*-lateral.xlsx"), None)
+    if lateral is not None:
+        summary = pd.read_excel(lateral, sheet_name="Summary", header=None)
+        hit = summary[summary[0].astype(str).str.startswith("largest load angle |theta1 - "
+                                                            "theta2| over the")]
+        angles["largest load angle"] = float(hit.iloc[0, 1])
+    return angles
+
+
+def test_design_angles_quoted_as_their_cells(example_campaign_run_report, us_twin_reports):
+    """The hook design angle and the lateral study's largest load angle, wherever a report
+    quotes them in words (the hook directions' note, a load case's description, a column
+    label of the hook cases, the Findings' source), read as their cells (0.1 deg, formats.py
+    'deg'), in every report of the example with its campaign and of the US twin: the
+    example's 33.2 deg in the cells, '33.24 deg' in the note beside them and '33.2361 deg' in
+    the load cases' descriptions cannot recur. Reference: the cell values read back; a
+    quoted number within 0.05 deg of an angle but written with more than one decimal is the
+    same angle at another precision."""
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        angles = _design_angles(folder)
+        wrong = []
+        for book, sheet, text in _texts(folder):
+            for match in _QUOTED_ANGLE.finditer(text):
+                number = match.group(1)
+                decimals = len(number.partition(".")[2])
+                for name, value in angles.items():
+                    if decimals > 1 and abs(float(number) - value) < 0.05:
+                        wrong.append((book, sheet, name, number, text[:100]))
+        assert not wrong, wrong[:5]
+
+
+def test_altitude_columns_to_the_whole_unit(example_campaign_run_report, us_twin_reports):
+    """Every column of every report whose header names an altitude (the campaign's matrix,
+    its stability map, the sweeps) writes it to the whole metre or foot, as every sentence
+    quotes it (docs/reports.md: an altitude to the whole unit): no 'density altitude 0.000'
+    in m nor '0.00' in ft beside 'density altitude 0 m' on the same page. Reference: the
+    cells' number formats as the file format reads them back (openpyxl)."""
+    _, twin = us_twin_reports
+    checked, wrong = 0, []
+    for folder in (example_campaign_run_report, twin):
+        for path in sorted(Path(folder).glob("*.xlsx")):
+            book = openpyxl.load_workbook(path, read_only=True)
+            for sheet in book.worksheets:
+                rows = list(sheet.iter_rows())
+                for i, row in enumerate(rows):
+                    for j, cell in enumerate(row):
+                        text = cell.value
+                        if not (isinstance(text, str) and re.search(r"altitude \[(m|ft)\]$",
+                                                                    text)):
+                            continue
+                        for below in rows[i + 1:]:
+                            value = below[j].value if j < len(below) else None
+                            if not isinstance(value, (int, float)) or isinstance(value, bool):
+                                break
+                            checked += 1
+                            if below[j].number_format not in ("#,##0", "0"):
+                                wrong.append((path.name, sheet.title, text,
+                                              below[j].number_format))
+            book.close()
+    assert checked > 10
+    assert not wrong, wrong[:5]
+
+
+_QUOTED_CABLE = re.compile(r"\bcable (?:length )?(\d[\d,]*(?:\.\d+)?) (m|in)(?![\w^/])")
+
+
+def test_cable_lengths_quoted_as_their_cells(example_campaign_run_report, us_twin_reports):
+    """The carrier cable quoted in a sentence (the campaign's conditions, its Summary's list,
+    the cable checks) is the number of the campaign matrix's cable-length cells at their
+    precision (formats.py: 0.000 m, 0.00 in; trailing zeros dropped), in every report of
+    both examples: the example's 60 ft = 18.288 m exactly, never '18.29 m' beside a cell of
+    18.288. Reference: the Matrix sheet's cells read back."""
+    import pandas as pd
+
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        campaign = next(Path(folder).glob("*-campaign.xlsx"))
+        matrix = pd.read_excel(campaign, sheet_name="Matrix", header=None)
+        head = matrix[matrix[0] == "run"].index[0]
+        columns = [str(c) for c in matrix.iloc[head]]
+        j = next(k for k, c in enumerate(columns) if c.startswith("cable length ["))
+        unit = columns[j].split("[")[1].rstrip("]")
+        decimals = {"m": 3, "in": 2}[unit]
+        cells = {round(float(v), decimals) for v in matrix.iloc[head + 1:, j].dropna()}
+        quoted = [(book, sheet, m.group(1), m.group(2), text[:80])
+                  for book, sheet, text in _texts(folder)
+                  for m in _QUOTED_CABLE.finditer(text)]
+        assert quoted
+        wrong = [q for q in quoted if q[3] != unit
+                 or float(q[2].replace(",", "")) not in cells]
+        assert not wrong, (cells, wrong[:5])
+        summary = pd.read_excel(campaign, sheet_name="Summary", header=None)
+        listed = summary[summary[0] == "cable lengths"].iloc[0, 1]
+        assert {float(v) for v in str(listed).split(", ")} == cells
+
+
+def test_campaign_definition_lists_its_matrix_cells(example_campaign_run_report,
+                                                    us_twin_reports):
+    """The campaign Summary's definition lists the matrix's area factors and masses as the
+    Matrix sheet's cells read (0.000 for a factor, 0.0 for a mass; trailing zeros of a
+    factor dropped), in both examples: the US twin's added sizing factor reads '1.5', never
+    the float '1.4999999999999996', and its mass '10,802.9' lb as its cells, not '10803'."""
+    import pandas as pd
+
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        campaign = next(Path(folder).glob("*-campaign.xlsx"))
+        matrix = pd.read_excel(campaign, sheet_name="Matrix", header=None)
+        head = matrix[matrix[0] == "run"].index[0]
+        table = matrix.iloc[head + 1:].set_axis([str(c) for c in matrix.iloc[head]], axis=1)
+        mass = next(c for c in table.columns if c.startswith("mass ["))
+        summary = pd.read_excel(campaign, sheet_name="Summary", header=None)
+        item = dict(zip(summary[0], summary[1], strict=False))
+        factors = [float(v) for v in str(item["area factors"]).split(", ")]
+        assert factors == list(dict.fromkeys(round(float(v), 3)
+                                             for v in table["area factor [-]"]))
+        assert all(len(str(v).partition(".")[2]) <= 3
+                   for v in str(item["area factors"]).split(", "))
+        masses = {float(m.replace(",", "")) for m in
+                  re.findall(r"(\d[\d,]*\.\d)", str(item["mass cases"]))}
+        assert masses == {round(float(v), 1) for v in table[mass]}
+
+
+#: A damping ratio quoted in words: a mode's "zeta 0.069", the decision's "1-DOF 0.160 (its
+#: yaw mode", "multibody 0.069 (least over", the selection's "yaw-mode damping 0.069".
+_QUOTED_RATIO = re.compile(r"(?:zeta|1-DOF|multibody|yaw-mode damping) (-?\d+\.(\d+))"
+                           r"(?= \(|,|\)| )")
+
+
+def test_damping_ratios_quoted_as_their_cells(example_campaign_run_report, us_twin_reports):
+    """A damping ratio quoted in a verdict, a check or the parachute decision is written at
+    the precision of a ratio's cell (formats.py '-': 0.000), in every report of both
+    examples: the example's 'zeta 0.0691' and 'multibody 0.0691' beside cells of 0.069, and
+    '1-DOF 0.16' beside 0.160, cannot recur."""
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        found = [(book, sheet, m.group(1), text[:90]) for book, sheet, text in _texts(folder)
+                 for m in _QUOTED_RATIO.finditer(text)]
+        assert found, folder
+        wrong = [f for f in found if len(f[2].partition(".")[2]) != 3]
+        assert not wrong, wrong[:5]
+
+
+#: A mode's period quoted in words: the mode a response was measured on "(27.02 s, zeta",
+#: the inconclusive verdict's "slowest relevant mode (44.82 s)", a check's "nearest: yaw,
+#: 14.60 s".
+_QUOTED_PERIOD = re.compile(r"(?:\(|relevant mode \(|nearest: [^,]+, )(\d+\.?(\d*)) s(?:,|\))")
+
+
+def test_mode_periods_quoted_as_their_cells(example_campaign_run_report, us_twin_reports):
+    """A mode's period quoted in a verdict or a check is written at the precision of a
+    time's cell (formats.py 's': 0.00), in every report of both examples: the yaw mode's
+    'yaw / lateral swing (27 s, zeta 0.289)' beside a 'yaw mode period [s]' cell of 27.02,
+    and '(44.8 s)' beside 44.82, cannot recur."""
+    _, twin = us_twin_reports
+    for folder in (example_campaign_run_report, twin):
+        found = [(book, sheet, m.group(1), text[:90]) for book, sheet, text in _texts(folder)
+                 for m in _QUOTED_PERIOD.finditer(text)]
+        assert found, folder
+        wrong = [f for f in found if len(f[2].partition(".")[2]) != 2]
         assert not wrong, wrong[:5]

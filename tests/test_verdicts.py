@@ -63,7 +63,7 @@ def test_a_window_shorter_than_the_slowest_mode_is_inconclusive():
     assert np.degrees(blind.offset[0]) == pytest.approx(10 * 3 / np.pi * np.exp(-0.1), abs=0.05)
     told = vd.envelope(t[short], swing[short], 0.0, 0.0, False, period=80.0)
     assert told.verdict[0] == "inconclusive"
-    assert "0.33 periods of the slowest relevant mode (80 s)" in told.reason(0)
+    assert "0.33 periods of the slowest relevant mode (80.00 s)" in told.reason(0)
     assert vd.envelope(t, swing, 0.0, 0.0, False, period=80.0).verdict[0] == "convergent"
     grows = A10 * np.exp(0.05 * t[short]) * np.sin(2 * np.pi / 4.0 * t[short])
     settled = 0.1 * A10 * np.exp(-0.5 * t[short]) * np.cos(2 * np.pi / 4.0 * t[short])
@@ -104,7 +104,7 @@ def test_worst_and_damping_check():
     assert vd.worst(["divergent", "outside domain"]) == "outside domain"
     assert vd.damping_check(0.21, 4.0, 0.2, 4.1, "yaw").startswith("agrees")
     assert vd.damping_check(0.31, 4.0, 0.2, 4.1, "yaw").startswith("differs")
-    assert vd.damping_check(0.2, 1.6, 0.2, 14.6, "yaw").startswith("period 1.6 s matches no")
+    assert vd.damping_check(0.2, 1.6, 0.2, 14.6, "yaw").startswith("period 1.60 s matches no")
 
 
 def test_the_mode_measured_on_and_its_check_agree():
@@ -123,7 +123,7 @@ def test_the_mode_measured_on_and_its_check_agree():
     on, check = vd.response_mode(2.08, 0.03, modes)
     assert on.startswith("none within 25%") and "matches no mode" in check
     on, check = vd.response_mode(14.5, 0.0005, modes)  # the real root's zeta 1 is not near
-    assert on.startswith("yaw (14.6 s") and check.startswith("differs from the yaw mode")
+    assert on.startswith("yaw (14.60 s") and check.startswith("differs from the yaw mode")
     assert vd.nearest_mode(14.5, modes.iloc[[0, 2]], 1.0)[0] == "yaw"
     assert vd.response_mode(np.nan, np.nan, modes) == (
         "", "not measured (fewer than three peaks after the input)")

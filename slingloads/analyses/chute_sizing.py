@@ -666,8 +666,12 @@ class LineLengthResult:
 
 
 def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGIN,
-                distance=None):
+                distance=None, flown_line=None):
     """Shortest parachute line at which the wake ratio reaches ``target``, and the cable check.
+
+    The cable is checked against the longer of that line and the line flown (the Study's,
+    which the loads and the multibody model use), so that this check and the multibody
+    system's state one required cable length for one parachute line.
 
     Parameters
     ----------
@@ -680,6 +684,8 @@ def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGI
         [-]
     distance : array_like, optional
         Distances for the ratio curve (default: the table, or up to 1.5 x the line). [m]
+    flown_line : float, optional
+        The parachute line flown (the Study's 'parachute line length'). [m]
 
     Returns
     -------
@@ -693,7 +699,8 @@ def line_length(wake, target=TARGET_RATIO, cable_length=None, margin=CABLE_MARGI
             distance = np.linspace(wake.min_distance, max(1.5 * length, 2 * wake.min_distance),
                                    200)
     distance = np.asarray(distance, dtype=float)
-    cable = None if cable_length is None else check_cable_length(cable_length, length, margin)
+    checked = length if flown_line is None else max(float(length), float(flown_line))
+    cable = None if cable_length is None else check_cable_length(cable_length, checked, margin)
     return LineLengthResult(float(length), float(target), wake.source, distance,
                             np.asarray(wake(distance)), cable)
 
@@ -780,8 +787,13 @@ class YawRuns:
     gusts : tuple
     histories : Histories
     metrics : pandas.DataFrame
-        One row per run: peak |beta| and |psi|; the sideslip's offset from trim and its
-        half amplitudes over the two halves of the envelope test; linear damping ratio
+        One row per run: peak |beta| and |psi|; final beta and psi (the last sample); the
+        trim the run is judged about ("beta trim": the static equilibrium at rest, or under
+        the gust still acting at the end of the run, which moves it when the weight has a
+        moment about the yaw axis); the sideslip's offset from that trim (the mean over the
+        second half of the envelope test's window, less the trim) and its half amplitudes
+        over the two halves (so that a final beta lies within twice the second half's
+        amplitude of trim + offset); linear damping ratio
         c / (2 sqrt(k I)) and natural frequency on the local slopes at zero sideslip (the
         yaw mode's eigenvalue); damping ratio from the logarithmic decrement of the first two
         positive yaw-rate peaks after the gust ends (NaN for continuous gusts or no
@@ -918,6 +930,7 @@ def _run_metrics(model, areas, gusts, hist, beta_trim, fit_range, metric):
         "peak psi [deg]": _deg(peak_psi),
         "final beta [deg]": _deg(hist.beta[:, -1]),
         "final psi [deg]": _deg(hist.psi[:, -1]),
+        "beta trim [deg]": _deg(trim),
         "beta offset from trim [deg]": _deg(env.offset),
         "beta amplitude first half [deg]": _deg(env.first),
         "beta amplitude second half [deg]": _deg(env.second),

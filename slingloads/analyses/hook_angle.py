@@ -16,7 +16,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.hook_loads import VERTICAL
+from slingloads.analyses.hook_loads import VERTICAL, angle_words
 from slingloads.analyses.lateral import REGULATORY_ANGLE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS
 
@@ -69,15 +69,16 @@ class HookAngleComparison:
         -------
         str
         """
-        ref, at = np.degrees(self.reference_angle), np.degrees(self.angle)
+        ref = angle_words(np.degrees(self.reference_angle))
+        at = angle_words(np.degrees(self.angle))
         if not self.reduced:
-            return (f"No hook direction is lateral: every direction kept {ref:.4g} deg (the "
+            return (f"No hook direction is lateral: every direction kept {ref} deg (the "
                     "lateral study justifies lateral directions only).")
         kept = [c for c in self.cases if c not in self.reduced and c != VERTICAL]
         how = ("pure lateral directions only" if self.cone == "lateral directions"
                else "elliptical cone between the fore-and-aft and the lateral angle")
-        return (f"Directions at {at:.4g} deg ({how}): {', '.join(self.reduced)}. Kept at "
-                f"{ref:.4g} deg (the lateral study gives no evidence for them): "
+        return (f"Directions at {at} deg ({how}): {', '.join(self.reduced)}. Kept at "
+                f"{ref} deg (the lateral study gives no evidence for them): "
                 f"{', '.join(kept) or 'none'}.")
 
     @property
@@ -98,8 +99,8 @@ class HookAngleComparison:
         -------
         tuple of str
         """
-        return (f"at {np.degrees(self.reference_angle):.4g} deg",
-                f"lateral at {np.degrees(self.angle):.4g} deg")
+        return (f"at {angle_words(np.degrees(self.reference_angle))} deg",
+                f"lateral at {angle_words(np.degrees(self.angle))} deg")
 
     def station_frame(self):
         """Per station: each component's envelope at both angles and the reduction, Y shear

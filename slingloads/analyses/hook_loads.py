@@ -258,6 +258,31 @@ def cable_geometry(force, vertical=(0.0, 0.0, 1.0)):
     return np.arctan2(horizontal, up), azimuth
 
 
+def angle_words(value_deg):
+    """An angle for a sentence, at the precision of an angle's cell (0.1 deg), so that a
+    sentence and the cells beside it quote one number for one angle: the hook design angle
+    33.2361 deg reads "33.2" in a load case's description, a note and a column label as in
+    the cells; a whole angle without its decimal ("30").
+
+    Parameters
+    ----------
+    value_deg : float
+        [deg]
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> angle_words(33.2361), angle_words(30.0), angle_words(-22.1537), angle_words(12.04)
+    ('33.2', '30', '-22.2', '12')
+    """
+    text = f"{float(value_deg):.1f}"
+    text = text[:-2] if text.endswith(".0") else text
+    return "0" if text == "-0" else text
+
+
 def describe_direction(azimuth_deg, inclination_deg):
     """Readable text for a hook direction ("30 deg from the vertical at azimuth 45 deg...").
 
@@ -277,5 +302,6 @@ def describe_direction(azimuth_deg, inclination_deg):
     names = ["aft", "aft-right", "right", "forward-right", "forward", "forward-left", "left",
              "aft-left"]
     sector = names[int(np.round(azimuth_deg / 45.0)) % 8]
-    return (f"{inclination_deg:g} deg from the vertical at azimuth {azimuth_deg:g} deg "
+    return (f"{angle_words(inclination_deg)} deg from the vertical at azimuth "
+            f"{angle_words(azimuth_deg)} deg "
             f"(towards {sector})")

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.verdicts import ACCEPTED, worst
+from slingloads.analyses.verdicts import ACCEPTED, ratio_words, worst
 
 MULTIBODY = "multibody campaign"
 ONE_DOF = "1-DOF sizing"
@@ -128,7 +128,8 @@ class ParachuteDecision:
             Columns item, value, unit (areas in m^2), note.
         """
         one = ("; ".join(f"{g}: {v}" for g, v in self.one_dof_verdicts.items())
-               if self.one_dof_verdicts else ("not run" if not self.one_dof_ran else "-"))
+               if self.one_dof_verdicts else ("not run" if not self.one_dof_ran else
+                                              NO_AREA if not self.found else "-"))
         rows = [
             ("neutral area, least-squares slopes", self.neutral_area_fit, "m^2", ""),
             ("neutral area, local slopes at beta 0", self.neutral_area_local, "m^2", ""),
@@ -200,10 +201,13 @@ def multibody_verdict_at(metrics, area, stable):
     Returns
     -------
     str
-        "stable in all N runs", how many are not and the worst response, or "not run".
+        "stable in all N runs", how many are not and the worst response, "not run"
+        (no campaign), or :data:`NO_AREA` (no area to judge).
     """
-    if metrics is None or not np.isfinite(area):
+    if metrics is None:
         return "not run"
+    if not np.isfinite(area):
+        return NO_AREA
     at = np.isclose(metrics["area [m^2]"].to_numpy(float), area, rtol=1e-6)
     if not at.any():
         return "not run at this area"
@@ -212,9 +216,13 @@ def multibody_verdict_at(metrics, area, stable):
     if ok == total:
         return f"stable in all {total} runs" if total > 1 else "stable in its 1 run"
     verdicts = metrics.loc[at, "response verdict"].astype(str)
-    return (f"NOT stable: {total - ok} of {total} {'runs fail' if total > 1 else 'run fails'} "
+    return (f"NOT stable in every run: {total - ok} of {total} not shown stable "
             f"(worst response: {worst(list(verdicts))})")
 
+
+#: The verdict at an area that is not there (no area chosen, or none proposed): the
+#: analysis ran, it has nothing to judge (never "not run").
+NO_AREA = "none: no area to judge (none chosen or proposed)"
 
 #: Largest difference between the 1-DOF and the multibody yaw damping ratios at one area and
 #: airspeed read as agreement. [-]
@@ -248,7 +256,7 @@ def damping_comparison(runs, metrics, area, airspeed):
         return "no 1-DOF run at the chosen area"
     z1 = float(np.nanmin(runs["damping ratio linear [-]"].to_numpy(float)))
     where = f"{area:.6g} m^2, {airspeed / KNOT:.0f} KEAS"
-    one = f"1-DOF {z1:.3g} (its yaw mode, hub fixed)"
+    one = f"1-DOF {ratio_words(z1)} (its yaw mode, hub fixed)"
     if metrics is None or "yaw mode damping ratio [-]" not in metrics:
         return f"at {where}: {one}; no campaign run to compare"
     at = (np.isclose(metrics["area [m^2]"].to_numpy(float), area, rtol=1e-6)
@@ -261,8 +269,8 @@ def damping_comparison(runs, metrics, area, airspeed):
     mode = str(metrics.loc[at, "yaw mode"].iloc[k]) if "yaw mode" in metrics else "yaw mode"
     n = int(np.isfinite(zetas).sum())
     over = f"least over {n} runs" if n > 1 else "its 1 run"
-    text = (f"at {where}: {one}, multibody {z2:.3g} ({over}, mode {mode}); difference "
-            f"{z1 - z2:+.3g}")
+    text = (f"at {where}: {one}, multibody {ratio_words(z2)} ({over}, mode {mode}); "
+            f"difference {ratio_words(z1 - z2, sign=True)}")
     if abs(z1 - z2) <= DAMPING_TOLERANCE:
         return f"{text}: agree within {DAMPING_TOLERANCE:g}"
     return (f"{text}: differ by more than {DAMPING_TOLERANCE:g}: the multibody yaw mode "
@@ -364,5 +372,5 @@ def decide(static, sweep=None, selection=None, metrics=None, stable=None, one_do
         model, reason, governing, float(study_area), str(yaw_axis), mb1, damping)
 
 
-__all__ = ["DAMPING_TOLERANCE", "MULTIBODY", "ONE_DOF", "ParachuteDecision",
+__all__ = ["DAMPING_TOLERANCE", "MULTIBODY", "NO_AREA", "ONE_DOF", "ParachuteDecision",
            "damping_comparison", "decide", "multibody_verdict_at", "one_dof_proposal"]

@@ -213,7 +213,8 @@ class Envelope:
             centred = f", centred {off:+.3g} deg from trim" if np.isfinite(off) else ""
             if np.isfinite(a1) and np.isfinite(a2) and np.isfinite(period):
                 return (f"{w:.3g} s observed after the input, {w / period:.2g} periods of "
-                        f"the slowest relevant mode ({period:.3g} s), and the {what} neither grows "
+                        f"the slowest relevant mode ({seconds_words(period)} s), and the "
+                        f"{what} neither grows "
                         f"nor has settled about its trim ({a1:.3g} -> {a2:.3g} deg over the "
                         f"two halves{centred}): run longer")
             return f"too little time observed after the input ({w:.3g} s)"
@@ -370,13 +371,15 @@ def damping_check(measured, period, mode_zeta, mode_period, mode_name, reason=NO
     if not mode_name:
         return "no linear mode to compare with"
     if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
-        return (f"period {period:.3g} s matches no mode within {PERIOD_TOLERANCE:.0%} (nearest: "
-                f"{mode_name}, {mode_period:.3g} s): a mixed or nonlinear response")
+        return (f"period {seconds_words(period)} s matches no mode within "
+                f"{PERIOD_TOLERANCE:.0%} (nearest: {mode_name}, {seconds_words(mode_period)} s): "
+                "a mixed or nonlinear response")
     diff = measured - mode_zeta
     if abs(diff) <= DAMPING_TOLERANCE:
-        return (f"agrees with the {mode_name} mode (zeta {mode_zeta:.3g}, within "
+        return (f"agrees with the {mode_name} mode (zeta {ratio_words(mode_zeta)}, within "
                 f"{DAMPING_TOLERANCE:g})")
-    return (f"differs from the {mode_name} mode (zeta {mode_zeta:.3g}) by {diff:+.3g} > "
+    return (f"differs from the {mode_name} mode (zeta {ratio_words(mode_zeta)}) by "
+            f"{ratio_words(diff, sign=True)} > "
             f"{DAMPING_TOLERANCE:g}: amplitude-dependent (nonlinear) or several modes")
 
 
@@ -414,7 +417,7 @@ def response_mode(period, zeta, modes, whose="", reason=NOT_MEASURED):
     >>> response_mode(2.08, 0.03, modes)[0]
     'none within 25% (nearest: roll, 1.44 s)'
     >>> response_mode(1.62, 0.0015, modes)[0]
-    'roll (1.44 s, zeta 0.0014)'
+    'roll (1.44 s, zeta 0.001)'
     """
     name, mode_zeta, mode_period = nearest_mode(period, modes, zeta)
     check = damping_check(zeta, period, mode_zeta, mode_period, name, reason)
@@ -424,8 +427,8 @@ def response_mode(period, zeta, modes, whose="", reason=NOT_MEASURED):
         return "", check
     if math.isfinite(mode_period) and abs(period - mode_period) > PERIOD_TOLERANCE * mode_period:
         return (f"none within {PERIOD_TOLERANCE:.0%} (nearest: {name}{whose}, "
-                f"{mode_period:.3g} s)", check)
-    label = f"{name}{whose} ({mode_period:.3g} s, zeta {mode_zeta:.3g})"
+                f"{seconds_words(mode_period)} s)", check)
+    label = f"{name}{whose} ({seconds_words(mode_period)} s, zeta {ratio_words(mode_zeta)})"
     return label, check
 
 
@@ -521,9 +524,62 @@ def nearest_mode(period, modes, zeta=float("nan")):
             float(periods[k]))
 
 
+def seconds_words(value):
+    """A mode's period (or another time) for a sentence, at the precision of a time's cell
+    (0.00 s), so that a verdict's words and the period cells beside it quote one number:
+    the yaw mode's 27.0185 s reads "27.02" as its cell, never "27".
+
+    Parameters
+    ----------
+    value : float
+        [s]
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> seconds_words(27.0185), seconds_words(8.08), seconds_words(44.8)
+    ('27.02', '8.08', '44.80')
+    """
+    return f"{float(value):.2f}"
+
+
+def ratio_words(value, sign=False):
+    """A damping ratio (or another ratio) for a sentence, at the precision of a ratio's cell
+    (0.000), so that a verdict's words and the cells beside it quote one number for one
+    damping ratio: 0.0691 reads "0.069" as its cell; a ratio too small for that precision
+    (below 0.0005, not zero) in the cells' scientific notation.
+
+    Parameters
+    ----------
+    value : float
+        [-]
+    sign : bool
+        Write the sign of a positive value too (a difference).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> ratio_words(0.0691), ratio_words(0.16), ratio_words(-0.181, sign=True)
+    ('0.069', '0.160', '-0.181')
+    >>> ratio_words(0.0913, sign=True), ratio_words(2.35e-05)
+    ('+0.091', '2.35E-05')
+    """
+    value = float(value)
+    plus = "+" if sign else ""
+    if value != 0.0 and abs(value) < 5e-4:
+        return f"{value:{plus}.2E}"
+    return f"{value:{plus}.3f}"
+
+
 __all__ = ["ACCEPTED", "BOUNDED", "CONVERGENT", "DAMPING_TOLERANCE", "DIVERGENT",
            "EIGENVALUE_TOLERANCE", "INCONCLUSIVE", "LIMIT_CYCLE", "NEUTRAL", "NOT_MEASURED",
            "OUTSIDE_DOMAIN", "PERIOD_TOLERANCE", "STABLE", "STATIC_DEPARTURE", "UNSTABLE",
            "VERDICTS", "YAW_SHARE", "Envelope", "EnvelopeTest", "damping_check", "envelope",
-           "nearest_mode", "response_mode", "settling_time", "slowest_period", "worst",
-           "yaw_mode"]
+           "nearest_mode", "ratio_words", "response_mode", "seconds_words", "settling_time",
+           "slowest_period", "worst", "yaw_mode"]

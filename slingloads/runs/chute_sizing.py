@@ -205,7 +205,8 @@ def run(study):
                                                core.towed, core.axis_text)
     model = inputs.model
     with study.located(ANALYSIS):
-        line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin)
+        line = line_length(inputs.wake, inputs.target, inputs.cable_length, inputs.margin,
+                           flown_line=inputs.study_line)
         at_study = None
         if inputs.study_area > 0:
             at_study = run_yaw(inputs.model, inputs.study_area, inputs.gusts, inputs.settings,

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from slingloads.analyses.hook_loads import angle_words
 from slingloads.constants import KNOT
 
 NOT_RUN = "not run"
@@ -145,7 +146,7 @@ def _hook_angle(results):
         st = lateral.study
         k = int(st.critical_index)
         where = (f"lateral study, Summary 'recommended design angle' (margin {st.margin:g} x "
-                 f"largest load angle {np.degrees(st.max_load_angle):.4g} deg, case "
+                 f"largest load angle {angle_words(np.degrees(st.max_load_angle))} deg, case "
                  f"{st.nominal_case(k)} on sheet Runs (run {k + 1}), motion "
                  f"{lateral.motion_id(k)})")
     if loads is not None:

@@ -37,6 +37,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import pandas as pd
 
+from slingloads.analyses.hook_loads import angle_words
 from slingloads.analyses.loads import AeroEnvelope, DynamicsCases, LoadsStudy
 from slingloads.errors import InputError
 
@@ -313,8 +314,8 @@ def comparison_as_run(comparison, hook):
                 note = str(table["note"].iloc[i] or "")
                 table.iloc[i, table.columns.get_loc("used in the loads")] = used
                 table.iloc[i, table.columns.get_loc("note")] = "; ".join(
-                    t for t in (note, f"raised from {before:.4g} deg by the lateral study's "
-                                      "recommended design angle") if t)
+                    t for t in (note, f"raised from {angle_words(before)} deg by the lateral "
+                                      "study's recommended design angle") if t)
     return table
 
 

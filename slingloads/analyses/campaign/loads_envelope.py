@@ -206,11 +206,15 @@ class DynamicsEnvelope:
         Returns
         -------
         pandas.DataFrame
-            Quantity, reached lower and upper, with the margin, unit (deg or N) and the runs that
-            reached them.
+            Quantity, reached lower and upper, with the margin, unit (deg or N), the runs that
+            reached them, and a note giving the rule that made the bounds with the margin
+            (module notes).
         """
+        k = self.margin
+        rules = {"angle range": f"x {k:g}, the range widened to include 0 (level, head-on)",
+                 "angle": f"x {k:g}", "force": f"x {k:g}", "factor": f"x {k:g}"}
         rows = []
-        for quantity, _, upper, _kind in QUANTITIES:
+        for quantity, _, upper, kind in QUANTITIES:
             unit = upper.rsplit("[", 1)[1].rstrip("]")
             lo, hi = self.reached[quantity]
             mlo, mhi = self.bounds(quantity)
@@ -219,7 +223,8 @@ class DynamicsEnvelope:
                          "reached min": np.nan if lo is None else lo, "reached max": hi,
                          "with margin min": np.nan if mlo is None else mlo,
                          "with margin max": mhi,
-                         "run of min": src[0] or "", "run of max": src[1]})
+                         "run of min": src[0] or "", "run of max": src[1],
+                         "note": rules[kind]})
         return pd.DataFrame(rows)
 
 

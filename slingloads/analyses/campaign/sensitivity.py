@@ -2,7 +2,8 @@
 
 **Tables.** For the parachute area: every run, grouped by area factor. For every other factor
 (airspeed, mass case, density altitude, cable length, carrier): the runs at the selected area
-(the paper fixes the area first, then varies the rest), grouped by that factor's value. Each
+(the paper fixes the area first, then varies the rest; column ``at area factor [-]``), grouped
+by that factor's value. Each
 group gives its number of runs and stable runs and the worst value of the key metrics over the
 other factors and the manoeuvres (largest peak yaw change, sideslip, RMS yaw, settling time,
 tension factor, hub-load angle, swing angle; least yaw-mode damping ratio).
@@ -72,7 +73,10 @@ def sensitivity_tables(metrics, selected_factor):
         if runs[column].nunique() < 2 and column != "area factor [-]":
             continue
         table = runs.groupby(column, sort=True)[list(runs.columns)].apply(_worst)
-        out[name] = table.reset_index()
+        table = table.reset_index()
+        if column != "area factor [-]":  # the runs it is taken over, in the table itself
+            table.insert(1, "at area factor [-]", chosen)
+        out[name] = table
     return out
 
 

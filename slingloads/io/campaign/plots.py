@@ -57,7 +57,8 @@ def _condition(row, skip=(), neutral_area=None, units="SI"):
         parts.append(f"mass {row.get('mass case', '')} {_mass(row['mass [kg]'], units)}"
                      .replace("  ", " "))
     if "density altitude [m]" not in skip and "density altitude [m]" in row:
-        parts.append(f"{quantity_text(row['density altitude [m]'], 'altitude', units)} HD")
+        altitude = quantity_text(row["density altitude [m]"], "altitude", units)
+        parts.append(f"{altitude} density altitude")
     if "cable length [m]" not in skip and "cable length [m]" in row:
         parts.append(f"cable {quantity_text(row['cable length [m]'], 'length', units)}")
     if "carrier" not in skip and "carrier" in row:
@@ -107,7 +108,8 @@ def plot_selection(result, units="SI"):
               else _values(m, "mass [kg]", 1 / POUND) + " lb")
     fig.suptitle(f"over {_values(m, 'airspeed EAS [m/s]', 1 / KNOT)} KEAS, masses "
                  f"{masses}, {_quantities(m, 'density altitude [m]', 'altitude', units)}"
-                 f" HD, cables {_quantities(m, 'cable length [m]', 'length', units)}, carrier "
+                 f" density altitude, cables "
+                 f"{_quantities(m, 'cable length [m]', 'length', units)}, carrier "
                  f"{'/'.join(dict.fromkeys(m['carrier']))}; neutral area "
                  f"{result.neutral.area * scale:.3g} {unit}", fontsize=7, y=0.995)
     for ax in axes:
@@ -271,8 +273,8 @@ def _no_parachute_title(study, units, extra=""):
             else f"{study.rate / FOOT:.3g} ft/s^2")
     return (f"full tail, no parachute: {masses}; cable "
             f"{quantity_text(system.cable.length, 'length', units)}, "
-            f"{quantity_text(system.density_altitude, 'altitude', units)} HD, hovering "
-            f"carrier; ramp {rate} from {study.onset:g} s{extra}")
+            f"{quantity_text(system.density_altitude, 'altitude', units)} density altitude, "
+            f"hovering carrier; ramp {rate} from {study.onset:g} s{extra}")
 
 
 def _ramp_figure(result, runs, keys, windows, units, extra=""):

@@ -29,6 +29,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads import __version__
+from slingloads.analyses.verdicts import ratio_words
 from slingloads.constants import KNOT, POUND
 from slingloads.io.campaign.words import mass_text
 from slingloads.io.common.excel import Section
@@ -115,14 +116,17 @@ def definition_table(report, units):
     r = report.result
     ex = r.execution
 
+    def listed(v):  # a factor as its cell (0.000), trailing zeros dropped: never 1.4999...6
+        return f"{v:.3f}".rstrip("0").rstrip(".") if isinstance(v, float) else str(v)
+
     def listing(column, convert=None):
         values = list(dict.fromkeys(frame[column]))
         if convert is None:
-            return ", ".join(str(v) for v in values), ""
+            return ", ".join(dict.fromkeys(listed(v) for v in values)), ""
         shown = [convert(v)[0] for v in values]
         return ", ".join(f"{v:.4g}" for v in shown), convert(values[0])[1]
 
-    masses = ", ".join(f"{k} {(m / POUND if units == 'US' else m):.0f}"
+    masses = ", ".join(f"{k} {(m / POUND if units == 'US' else m):,.1f}"  # as its cells
                        for k, m in c.matrix.masses.items())
     rows = [
         ("runs in the matrix", len(frame), "-", "full factorial" if c.rows is None
@@ -135,7 +139,9 @@ def definition_table(report, units):
         ("mass cases", masses, "lb" if units == "US" else "kg", "inertia scaled with mass"),
         ("density altitudes", *listing("density altitude [m]",
                                        lambda v: _altitude(v, units)), "ISA"),
-        ("cable lengths", *listing("cable length [m]", lambda v: _length(v, units)), ""),
+        ("cable lengths", ", ".join(quantity_text(v, "length", units).rpartition(" ")[0]
+                                    for v in dict.fromkeys(frame["cable length [m]"])),
+         _length(1.0, units)[1], ""),
         ("carriers", *listing("carrier"), ""),
         ("manoeuvres", *listing("manoeuvre"), ""),
         ("run length", c.settings.t_end, "s", ""),
@@ -197,7 +203,7 @@ def selection_table(report, units):
     ]
     if gr is not None:
         rows += [("its governing condition (least yaw damping)", gr["condition"], "",
-                  f"yaw-mode damping {gr['least yaw-mode damping ratio [-]']:.3g} "
+                  f"yaw-mode damping {ratio_words(gr['least yaw-mode damping ratio [-]'])} "
                   f"({gr['with manoeuvre']})"),
                  ("its largest trimmed swing angle", gr["largest trimmed swing angle [deg]"],
                   "deg", gr["largest swing condition"])]
@@ -291,7 +297,10 @@ def _sheets(report, units, warnings=(), decision=None):
     sheets["Sensitivity"] = ([Section("Sensitivity of the metrics to each factor of the "
                                       "matrix", note="Each row: the runs with that value "
                                       "of the factor, over every value of the others "
-                                      "(largest or least as the header says)."), *sens]
+                                      "(largest or least as the header says); for every "
+                                      "factor but the parachute area, only the runs at the "
+                                      "selected area factor (column 'at area factor'): the "
+                                      "area is fixed first, then the rest varies."), *sens]
                              if sens else "no factor varies")
     if r.stability is not None:
         sheets["StabilityMap"] = [
@@ -350,8 +359,8 @@ def _locus(result, units="SI"):
                & np.isclose(loci["density altitude [m]"], altitude)]
     c = result.stability.condition
     mass = mass_text(c["mass [kg]"], units)
-    title = (f"{speed / KNOT:.0f} KEAS, {quantity_text(altitude, 'altitude', units)} HD, "
-             f"mass {c['mass case']} {mass}, cable "
+    title = (f"{speed / KNOT:.0f} KEAS, {quantity_text(altitude, 'altitude', units)} density "
+             f"altitude, mass {c['mass case']} {mass}, cable "
              f"{quantity_text(c['cable length [m]'], 'length', units)}, carrier "
              f"{c['carrier']}:\nleast-damped roots, area {sel['area factor [-]'].min():.3g}-"
              f"{sel['area factor [-]'].max():.3g} x neutral")

@@ -28,6 +28,7 @@ import pandas as pd
 from slingloads.analyses.chute_sizing import (
     wake_ratio_at,
 )
+from slingloads.analyses.hook_loads import angle_words
 from slingloads.constants import FOOT, KNOT, POUND_FORCE
 from slingloads.io.common.csvout import csv_bytes
 from slingloads.io.common.decision import decision_section, with_decision
@@ -137,7 +138,8 @@ def summary_tables(result, units="SI"):
         ("dynamic pressure q", c.dynamic_pressure, "pressure", "1/2 rho0 V_EAS^2"),
         ("alpha trim", float(np.degrees(c.alpha)), "deg",
          (f"towed trim at this airspeed with the Study's parachute (the attitude the loads' "
-          f"towed cases and the multibody model fly; pitch {np.degrees(result.towed.pitch):+.2f}"
+          f"towed cases and the multibody model fly; pitch "
+          f"{angle_words(np.degrees(result.towed.pitch))}"
           " deg); the swept areas are sized at it"
           if result.towed is not None and result.towed.converged else
           "Study 'chute sizing alpha trim' (no towed trim: "
@@ -217,7 +219,9 @@ def summary_tables(result, units="SI"):
     else:
         rows += [("carrier cable length", cable.cable_length, "length", ""),
                  ("required cable length", cable.required, "length",
-                  f"(1 + {cable.margin:g}) x line"),
+                  f"(1 + {cable.margin:g}) x line "
+                  f"{quantity_text(cable.line_length, 'length', units)} (the longer of the "
+                  "wake's and the Study's, the one flown)"),
                  ("carrier cable check", "ok" if cable.ok else "FAIL", None,
                   _cable_message(cable, units))]
     return {"condition": condition, "sizing": sizing, "breakdown": breakdown,
@@ -255,8 +259,7 @@ def _study_area_rows(result):
 def _cable_message(cable, units):
     """The check's message in report units."""
     def show(x):
-        v, u = _value(x, "length", units)
-        return f"{v:.4g} {u}"
+        return quantity_text(x, "length", units)
     if cable.ok:
         return (f"the cable is at least {cable.margin:.0%} longer than the parachute line "
                 f"{show(cable.line_length)}")
@@ -359,15 +362,15 @@ def _summary_note(result, units, decision=None):
     if static.already_stable:
         return "Fuselage and fin are already statically stable in yaw: no parachute needed."
     area, rec = static.area, result.recommended_area  # [m^2], converted as the report writes
-    line, lunit = _value(result.line.line_length, "length", units)
+    line = quantity_text(result.line.line_length, "length", units)
     said = _decision_sentence(decision, units)
     if not np.isfinite(result.recommended_area):
         return (f"Neutral static area {area:.6g} m^2; NO swept area is stable under every "
-                f"gust (1-DOF): no area recommended; parachute line {line:.4g} {lunit} from "
+                f"gust (1-DOF): no area recommended; parachute line {line} from "
                 "the wake." + said)
     return (f"Neutral static area {area:.6g} m^2; 1-DOF recommended area {rec:.6g} m^2 "
             f"({result.recommended_area / static.area:.3g} x neutral, the smallest swept area "
-            f"stable under every gust); parachute line {line:.4g} {lunit} from the wake."
+            f"stable under every gust); parachute line {line} from the wake."
             + said)
 
 
@@ -416,7 +419,15 @@ def _sheets(result, units, warnings=(), decision=None):
             Section("Gust shapes", convert_columns(result.sweep.gust_frame(), speed, units)),
             Section("Stability by area",
                     convert_columns(result.stability_by_area(), area, units)),
-            Section("Every run", convert_columns(result.sweep.to_frame(), area, units))]
+            Section("Every run", convert_columns(result.sweep.to_frame(), area, units),
+                    note="final beta, final psi: the last sample of the run. beta trim: the "
+                         "static equilibrium the run is judged about (at rest, or under the "
+                         "gust still acting at the end, step and continuous, which moves it "
+                         "when the weight has a moment about the yaw axis). beta offset from "
+                         "trim: the mean sideslip over the second half of the window after "
+                         "the gust, less beta trim (a run that settles off its trim is a "
+                         "static departure of that size). So final beta lies within twice "
+                         "the second half's amplitude of beta trim + offset.")]
         beta, psi, interval = history_tables(result, units)
         note = (f"Every {interval:g} s; every stored sample in the -chute-histories.csv file. "
                 "Columns: swept area and gust shape of each run.")

@@ -61,7 +61,7 @@ from slingloads.io.common.excel_print import (
     page_pixels,
     print_setup,
 )
-from slingloads.io.common.formats import header_unit, unit_format, value_format
+from slingloads.io.common.formats import header_format, header_unit, unit_format, value_format
 from slingloads.io.common.units import report_text
 
 
@@ -150,7 +150,7 @@ def number_formats(columns, number_format):
             fmt = number_format.get(c)
         elif callable(number_format):
             fmt = number_format(str(c))
-        out.append(fmt if fmt is not None else unit_format(header_unit(c)))
+        out.append(fmt if fmt is not None else header_format(c))
     return out
 
 

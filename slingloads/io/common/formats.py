@@ -14,6 +14,7 @@ force, moment (US)                          lbf, lbf in, lbf ft    ``#,##0`` (2,
 force, moment (plots)                       kN, kN m, 1000 lbf ft  ``#,##0.00``
 length                                      m                      ``0.000`` (4.087)
 length                                      in, ft                 ``0.00`` (160.91)
+altitude (a header naming one)              m, ft                  ``#,##0`` (1,524)
 mass, inertia                               kg, lb, kg m^2, ...    ``#,##0.0``
 angle                                       deg                    ``0.0`` (30.0)
 angle                                       rad                    ``0.0000``
@@ -101,7 +102,37 @@ def unit_format(unit):
     return UNIT_FORMATS.get(str(unit).strip())
 
 
-def _decimals(number_format):
+#: Format of an altitude: to the whole metre or foot, as every sentence of a report quotes it
+#: (``report.quantity_text``), never to the millimetre of a length.
+ALTITUDE_FORMAT = "#,##0"
+
+
+def header_format(header):
+    """Excel number format of a column from its header: the unit's (:func:`unit_format`),
+    but an altitude (a header naming one, in m or ft) to the whole unit.
+
+    Parameters
+    ----------
+    header : str
+        A column header, ``name [unit]``.
+
+    Returns
+    -------
+    str or None
+        The format (None: Excel's General).
+
+    Examples
+    --------
+    >>> header_format("density altitude [m]"), header_format("cable length [m]")
+    ('#,##0', '0.000')
+    """
+    unit = header_unit(header)
+    if unit in ("m", "ft") and "altitude" in str(header).lower():
+        return ALTITUDE_FORMAT
+    return unit_format(unit)
+
+
+def format_decimals(number_format):
     """Decimals shown by a fixed-point format (``"0.000"`` -> 3)."""
     if "E" in number_format or "." not in number_format:
         return 0
@@ -132,6 +163,6 @@ def value_format(value, number_format, dimensionless=False):
     if isinstance(value, int):
         return "#,##0" if number_format.startswith("#,##") else INTEGER_FORMAT
     if dimensionless and abs(value) >= ROUND_OFF and "E" not in number_format:
-        if abs(value) < 0.5 * 10.0 ** -_decimals(number_format):
+        if abs(value) < 0.5 * 10.0 ** -format_decimals(number_format):
             return SCIENTIFIC_FORMAT
     return number_format

@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads.errors import InputError
+from slingloads.io.common.formats import format_decimals, unit_format
 from slingloads.io.common.units import REPORT_UNITS, from_si, unit_label
 
 
@@ -72,21 +73,36 @@ def report_value(value, kind, units):
     return int(round(shown)) if kind in WHOLE_UNIT_KINDS else shown
 
 
+#: Kinds a sentence quotes at the precision of their cells (formats.py), trailing zeros
+#: dropped, so that a title or a note reads the number of the cell beside it: a cable of
+#: 18.288 m is "18.288 m" in both, never "18.29 m".
+CELL_PRECISION_KINDS = frozenset({"length"})
+
+
 def quantity_text(value, kind, units, digits=4):
     """One SI value of quantity ``kind`` written with its report unit, for a sentence or a
     title: the one spelling of each quantity in both unit systems (an altitude to the whole
-    unit, in m or ft; a length in m or in; an airspeed in kt).
+    unit, in m or ft; a length in m or in, at its cells' precision; an airspeed in kt; other
+    kinds to ``digits`` significant digits).
 
     Examples
     --------
     >>> quantity_text(1524.0, "altitude", "US"), quantity_text(1524.0, "altitude", "SI")
     ('5,000 ft', '1,524 m')
     >>> quantity_text(18.288, "length", "US"), quantity_text(18.288, "length", "SI")
-    ('720 in', '18.29 m')
+    ('720 in', '18.288 m')
+    >>> quantity_text(10.0584, "length", "SI"), quantity_text(10.0584, "length", "US")
+    ('10.058 m', '396 in')
     """
     shown = report_value(value, kind, units)
     unit = unit_label(report_unit(kind, units))
-    number = f"{shown:,d}" if isinstance(shown, int) else f"{shown:.{digits}g}"
+    if isinstance(shown, int):
+        number = f"{shown:,d}"
+    elif kind in CELL_PRECISION_KINDS:
+        number = f"{shown:,.{format_decimals(unit_format(unit))}f}"
+        number = number.rstrip("0").rstrip(".") if "." in number else number
+    else:
+        number = f"{shown:.{digits}g}"
     return f"{number} {unit}"
 
 

@@ -13,6 +13,7 @@ import textwrap
 import numpy as np
 from matplotlib.figure import Figure
 
+from slingloads.analyses.hook_loads import angle_words
 from slingloads.analyses.lateral import REGULATORY_ANGLE
 from slingloads.constants import FOOT, G0
 from slingloads.io.common.figures import PAGE_WIDTH, cycle_colour, fix_margins
@@ -67,7 +68,8 @@ def plot_time_histories(run, regulatory_angle=REGULATORY_ANGLE, title=None, unit
     t_peak = float(metrics.t_max_load_angle)
     peak = np.degrees(np.interp(t_peak, t, run.load_angle))
     ax_angle.plot([t_peak], [peak], "o", color="black",
-                  label=f"max |theta1 - theta2| = {np.degrees(metrics.max_load_angle):.2f} deg")
+                  label="max |theta1 - theta2| = "
+                  f"{angle_words(np.degrees(metrics.max_load_angle))} deg")
     ax_angle.set_ylabel("angle [deg]")
     ax_angle.legend(loc="upper right", fontsize=7, ncol=2, framealpha=0.85)
     ax_angle.grid(True, alpha=0.3)
@@ -192,9 +194,9 @@ def plot_shear_at_angles(comparison, component="Vy", units="SI", title=None):
     ax = fig.subplots()
     ref, at = np.degrees(comparison.reference_angle), np.degrees(comparison.angle)
     ax.plot(x, in_report_units(comparison.reference[:, j], kind, units), color="tab:red",
-            marker=".", label=f"hook cone {ref:.4g} deg (CS-29.865)")
+            marker=".", label=f"hook cone {angle_words(ref)} deg (CS-29.865)")
     ax.plot(x, in_report_units(comparison.at_angle[:, j], kind, units), color="tab:green",
-            marker=".", label=f"hook cone {at:.4g} deg (recommended)")
+            marker=".", label=f"hook cone {angle_words(at)} deg (recommended)")
     big_ref, big_at = comparison.reference[:, j].max(), comparison.at_angle[:, j].max()
     if big_ref > 0:
         ax.plot([], [], " ", label=f"largest value: {100.0 * (big_at / big_ref - 1.0):+.1f} %")

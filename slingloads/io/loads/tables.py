@@ -16,7 +16,7 @@ import numpy as np
 import pandas as pd
 
 from slingloads.analyses.envelopes import bound_values, component_index
-from slingloads.analyses.hook_loads import TOWED
+from slingloads.analyses.hook_loads import TOWED, angle_words
 from slingloads.analyses.loads import CLOSURE_TOLERANCE
 from slingloads.analyses.sfbm import COMPONENT_KINDS, COMPONENTS, LOAD_COLUMNS
 from slingloads.io.common.formats import header_unit
@@ -374,15 +374,15 @@ def hook_direction_note(result):
     hook = result.study.hook
     table = result.study.hook_table()
     reduced = list(table.loc[table["reduced"], "hook"])
-    base = (f"Cone about the earth vertical of the attitude: {np.degrees(hook.angle):.4g} deg "
-            f"from the vertical")
+    base = ("Cone about the earth vertical of the attitude: "
+            f"{angle_words(np.degrees(hook.angle))} deg from the vertical")
     if not reduced:
         return base + " in every direction."
     where = ("at the pure lateral azimuths only" if hook.cone == "lateral directions"
              else "along an elliptical cone to the lateral angle")
     return (f"{base}, except {', '.join(reduced)} at the lateral angle "
-            f"{np.degrees(hook.lateral):.4g} deg ({where}; the lateral-step study justifies "
-            f"lateral directions only).")
+            f"{angle_words(np.degrees(hook.lateral))} deg ({where}; the lateral-step study "
+            "justifies lateral directions only).")
 
 
 

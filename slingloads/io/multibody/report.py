@@ -189,15 +189,20 @@ def stability_text(result, decision=None):
     worst = lam[np.argmax(lam.real)]
     chute = ("with the Study parachute" if getattr(result.inputs.system, "parachute", None)
              is not None else "without parachute")
+    # at the precision of the rate's cells (formats.py, 1/s: 0.0000), so that the sentence
+    # and the Findings' cell read one number; a real part too small for it (near the
+    # tolerance, where the verdict turns) keeps two significant digits
+    real = f"{worst.real:.4f}" if abs(worst.real) >= 5e-5 else f"{worst.real:.2g}"
     text = (f"Linear stability at the trim ({airspeed:.4g} KEAS, {chute}): "
-            f"{result.linear.verdict()} (largest real part {worst.real:.4g} 1/s; rule: stable "
+            f"{result.linear.verdict()} (largest real part {real} 1/s; rule: stable "
             f"when every real part is below -1e-6 1/s, neutral when some lie within +-1e-6, "
             f"unstable otherwise). This answers whether small motions about this one trim "
             f"decay; it does not size the parachute.")
     if decision is not None:
         text += (" Whether the parachute is adequate (every gust shape of the 1-DOF model, "
-                 "the campaign's conditions) is the parachute decision's answer, table below: "
-                 f"Study parachute {decision.study_area_verdict()}.")
+                 "the campaign's conditions) is the parachute decision's answer, table below "
+                 "(its row \"Study 'parachute area' (loads)\"): "
+                 f"{decision.study_area_verdict()}.")
     return text
 
 
