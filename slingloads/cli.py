@@ -276,14 +276,40 @@ def _analyse(args):
     collector is told not to scan it again (``gc.freeze``: each full collection would
     otherwise go through every object of pandas, scipy, numba and the study, a tenth of a
     second each time)."""
-    from slingloads.io.common.figures import helping
-
     gc.freeze()
-    # the process that compiles the multibody kernels a fresh installation lacks starts
-    # first, then the one that draws the figures: it loads matplotlib while the workbook is
-    # read, and draws each analysis's figures once it is computed
-    with _BackgroundCompile(args.command) as compiling, helping():
-        return _run_analyses(args, compiling)
+    with _Helpers(args.command) as helpers:
+        return _run_analyses(args, helpers)
+
+
+class _Helpers:
+    """The helper processes of a run, started once the workbook's Study sheet and the cells
+    of its table sheets read (``on_checked`` of :func:`~slingloads.io.study.read_study`,
+    :meth:`start`): a workbook refused before that starts none (each would load matplotlib,
+    or numba and the multibody kernels, for nothing). The process that compiles the
+    multibody kernels a fresh installation lacks starts first, when an analysis asked for
+    needs them (:class:`_BackgroundCompile`), then the one that draws the figures: it loads
+    matplotlib while the rest of the workbook is read, and draws each analysis's figures
+    once it is computed (:func:`~slingloads.io.common.figures.helping`). Both end with the
+    block."""
+
+    def __init__(self, command):
+        self.compiling = _BackgroundCompile(command)
+        self._stack = ExitStack()
+
+    def start(self, asked):
+        """Start the helpers of a run of the analyses ``asked`` (names)."""
+        from slingloads.io.common.figures import helping
+
+        gc.freeze()  # what is loaded so far is shared with the helpers, not copied
+        self.compiling.asked = tuple(asked)
+        self._stack.enter_context(self.compiling)
+        self._stack.enter_context(helping())
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, exc_type, exc, tb):
+        return self._stack.__exit__(exc_type, exc, tb)
 
 
 class _BackgroundCompile:
@@ -294,7 +320,8 @@ class _BackgroundCompile:
     them waits for that process (:meth:`wait_for`) rather than compiling them a second
     time. The process writes only numba's cache; it is killed once every part has been
     waited for, or when the run ends (a kill leaves no partial cache file: numba writes each
-    one under a temporary name first)."""
+    one under a temporary name first). Once the analyses of the run are known
+    (:attr:`asked`), the process starts only when one of them needs the kernels."""
 
     #: The parts each analysis needs, by name.
     NEEDS = {"loads": ("equations",), "multibody": ("equations", "integration"),
@@ -302,15 +329,18 @@ class _BackgroundCompile:
     #: Commands that may run an analysis of :data:`NEEDS`.
     COMMANDS = ("run", "loads", "simulate", "campaign")
 
-    def __init__(self, command):
+    def __init__(self, command, asked=None):
         self.command = command
+        #: The analyses of the run (names), None while unknown (then the command decides).
+        self.asked = asked
         self.helper = None
         self.calls = {}
 
     def __enter__(self):
         from slingloads.io.common.helper import Helper, helper_processes
 
-        if self.command in self.COMMANDS and helper_processes() > 0:
+        needed = self.asked is None or any(name in self.NEEDS for name in self.asked)
+        if self.command in self.COMMANDS and needed and helper_processes() > 0:
             from slingloads.runs.warmup import BACKGROUND, compile_part
 
             self.helper = Helper(1).start()
@@ -351,19 +381,21 @@ class _BackgroundCompile:
         return False
 
 
-def _run_analyses(args, compiling=None):
+def _run_analyses(args, helpers=None):
     from slingloads.io.reports import prepare_outputs, publish_reports
     from slingloads.io.study import read_study
     from slingloads.runs.study import run_analysis, run_study
 
     show = not args.quiet
+    compiling = None if helpers is None else helpers.compiling
     # the campaign's options are checked before anything is read, whether or not the
     # workbook runs the campaign (a bad value is refused, an unused one is warned about)
     options = _run_options(args, show) if hasattr(args, "workers") else None
     unused = []
     with _progress(show) as bar:
         first = _FirstComputed(args, _only(args), compiling)
-        study = read_study(args.workbook, only=_only(args), on_read=first)
+        study = read_study(args.workbook, only=_only(args), on_read=first,
+                           on_checked=None if helpers is None else helpers.start)
         gc.freeze()  # the libraries and the study live to the end of the run: see _analyse
         names = _selected(args, study)
         if compiling is not None:
@@ -499,7 +531,7 @@ class _FirstComputed:
 
 def _run_options(args, show):
     """The campaign's execution options from the command line (checked before any run)."""
-    from slingloads.io.campaign.reader import address_rule
+    from slingloads.io.campaign.rows import address_rule
     from slingloads.limits import MAX_SCHEDULER_TIMEOUT, MAX_WORKERS
     from slingloads.runs.cache import check_outside, default_cache_dir
     from slingloads.runs.study import RunOptions

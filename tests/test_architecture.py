@@ -230,22 +230,23 @@ def test_no_import_by_name():
 
 
 def test_each_analysis_runs_from_one_table_of_modules():
-    """``run_one`` takes each analysis's runs module from one table of imported modules
-    (:data:`slingloads.runs.registry.RUNS`, no string, no if/elif chain): the table names
-    every analysis of ``ANALYSES`` in its order, each entry is the module
-    ``slingloads.runs.<name>`` with a ``run`` function, and the walk sees the study's import
-    of the registry and the registry's of each module, so the cycle check above covers
-    them."""
+    """``run_one`` takes each analysis's runs module from one table
+    (:data:`slingloads.runs.registry.RUNS`, no string, no if/elif chain), each entry a
+    function that imports its module by a plain import: the table names every analysis of
+    ``ANALYSES`` in its order, each entry gives the module ``slingloads.runs.<name>`` with a
+    ``run`` function, and the walk sees the study's import of the registry and the
+    registry's of each module, so the cycle check above covers them."""
     from slingloads.runs.registry import RUNS
     from slingloads.runs.study import ANALYSES
 
     assert tuple(RUNS) == ANALYSES
-    for name, module in RUNS.items():
+    modules = {name: load() for name, load in RUNS.items()}
+    for name, module in modules.items():
         assert module.__name__ == f"slingloads.runs.{name.replace(' ', '_')}"
         assert callable(module.run)
     graph = _graph()
     assert "slingloads.runs.registry" in graph["slingloads.runs.study"]
-    assert {m.__name__ for m in RUNS.values()} <= graph["slingloads.runs.registry"]
+    assert {m.__name__ for m in modules.values()} <= graph["slingloads.runs.registry"]
 
 
 def _private(name):

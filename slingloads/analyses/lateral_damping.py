@@ -39,10 +39,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import pandas as pd
 
 from slingloads.errors import InputError
-from slingloads.models.aero_tables import linear_fit
 from slingloads.models.flight import FlightCondition
 
 #: Sideslip range of the least-squares slopes of the side force and rolling moment. [rad]
@@ -121,6 +119,8 @@ class LateralDamping:
             A row per damper and a ``total`` row: lateral damping [N s/m], below hub [m], roll
             damping [N m s/rad], source.
         """
+        import pandas as pd  # here: the study reader takes DAMPING_SOURCES alone
+
         rows = [{"component": name, "lateral damping [N s/m]": c, "below hub [m]": d,
                  "roll damping [N m s/rad]": np.nan} for name, c, d in self.parts]
         rows.append({"component": "total", "lateral damping [N s/m]": self.lateral,
@@ -185,6 +185,8 @@ def aerodynamic_damping(condition, hub, mast_axis, fuselage=None, fin=None,
         For a condition that is not a FlightCondition or a fit range with too few table
         points.
     """
+    from slingloads.models.aero_tables import linear_fit  # pandas: when a damping is made
+
     if not isinstance(condition, FlightCondition):
         raise InputError("the damping needs a FlightCondition", type(condition).__name__)
     if condition.hover:

@@ -50,6 +50,7 @@ from slingloads.models.multibody.local_flow import LiftingSurface
 from slingloads.models.multibody.parachute_line import QuasiStaticParachute, line_reach
 from slingloads.models.multibody.rigid_body import RigidBody, rotation_matrix
 from slingloads.models.multibody.system import SlingSystem
+from slingloads.models.yaw_dynamics import YAW_AXES
 
 #: Axial stiffness of the cable of :func:`towed_system` (practically rigid). [N]
 RIGID_EA = 1e11
@@ -280,11 +281,6 @@ def towed_system(airframe, fuselage, fin=None, parachute=None, airspeed=0.0,
                          airspeed=float(airspeed), density_altitude=float(density_altitude),
                          name="towed trim")
     return system, tuple(notes)
-
-
-#: Axes of the 1-DOF yaw model (:func:`yaw_model_about`): the suspension axis (default), or
-#: airframe z through the hub (the paper's balance of Mz, section 4.1).
-YAW_AXES = ("suspension", "airframe z")
 
 
 def yaw_model_about(model, axis="suspension", towed=None, body=None, inertia=None):

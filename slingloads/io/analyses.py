@@ -5,6 +5,9 @@ Each analysis has a folder ``slingloads/io/<folder>/`` with
 * ``schema.py``: ``SECTION``, its Study-sheet parameters and sheets
   (:mod:`slingloads.io.common.schema` types), and ``COMPUTE_FIELDS`` (model argument ->
   Study parameter: where an error the analysis raises on that argument is put);
+* ``rows.py``: ``CHOICES`` (row name -> valid values) and ``ROW_CHECKS`` (row name ->
+  ``check(params)``), its Study rows checked for every workbook whether it runs or not
+  (:meth:`Analysis.check_rows`), in a module that imports none of its models;
 * ``reader.py``: ``read(reader, params, study) -> inputs``, building the analysis's inputs
   (SI, the types of :mod:`slingloads.runs`) from the workbook, with located errors;
   ``locate(err, study, context) -> InputError``, putting an error the analysis
@@ -24,8 +27,10 @@ Running an analysis is not here: :mod:`slingloads.runs` runs the analyses of a s
 order, with their hand-offs. The study reader (:func:`slingloads.io.study.read_study`), the
 blank template (:mod:`slingloads.io.template`), the report writer
 (:mod:`slingloads.io.reports`) and the command line (:mod:`slingloads.cli`) all follow this
-list. Each analysis's modules are imported (by name, in :class:`Modules` functions) on first
-use, so listing the analyses costs nothing (``slingloads --help`` stays fast).
+list. Each analysis's modules are imported (by name, in the functions of its :class:`Modules`)
+on first use, each on its own, so listing the analyses costs nothing (``slingloads --help``
+stays fast) and reading a workbook imports the schema and the rows of every analysis but the
+reader and the report of those it runs only.
 """
 
 from __future__ import annotations
@@ -40,41 +45,160 @@ from slingloads.io.common.schema import FLAG, TEXT, Parameter, Section
 
 @dataclass(frozen=True)
 class Modules:
-    """The io modules of one analysis."""
+    """The io modules of one analysis, each imported on first use by the function given for
+    it (a study that does not run an analysis imports its schema and its rows only, which
+    import no numerical model).
 
-    schema: ModuleType
-    reader: ModuleType
-    report: ModuleType
+    Parameters
+    ----------
+    schema_module, rows_module, reader_module, report_module : callable
+        Each imports and returns the analysis's module of that name.
+    """
+
+    schema_module: Callable[[], ModuleType]
+    rows_module: Callable[[], ModuleType]
+    reader_module: Callable[[], ModuleType]
+    report_module: Callable[[], ModuleType]
+
+    @property
+    def schema(self):
+        """Its ``schema.py``."""
+        return self.schema_module()
+
+    @property
+    def rows(self):
+        """Its ``rows.py``: ``CHOICES`` and ``ROW_CHECKS``, checked for every workbook."""
+        return self.rows_module()
+
+    @property
+    def reader(self):
+        """Its ``reader.py`` (imports the analysis's models)."""
+        return self.reader_module()
+
+    @property
+    def report(self):
+        """Its ``report.py``."""
+        return self.report_module()
 
 
-def _loads():
-    from slingloads.io.loads import reader, report, schema
+def _loads_schema():
+    from slingloads.io.loads import schema
 
-    return Modules(schema, reader, report)
-
-
-def _lateral():
-    from slingloads.io.lateral import reader, report, schema
-
-    return Modules(schema, reader, report)
+    return schema
 
 
-def _chute():
-    from slingloads.io.chute import reader, report, schema
+def _loads_rows():
+    from slingloads.io.loads import rows
 
-    return Modules(schema, reader, report)
-
-
-def _multibody():
-    from slingloads.io.multibody import reader, report, schema
-
-    return Modules(schema, reader, report)
+    return rows
 
 
-def _campaign():
-    from slingloads.io.campaign import reader, report, schema
+def _loads_reader():
+    from slingloads.io.loads import reader
 
-    return Modules(schema, reader, report)
+    return reader
+
+
+def _loads_report():
+    from slingloads.io.loads import report
+
+    return report
+
+
+def _lateral_schema():
+    from slingloads.io.lateral import schema
+
+    return schema
+
+
+def _lateral_rows():
+    from slingloads.io.lateral import rows
+
+    return rows
+
+
+def _lateral_reader():
+    from slingloads.io.lateral import reader
+
+    return reader
+
+
+def _lateral_report():
+    from slingloads.io.lateral import report
+
+    return report
+
+
+def _chute_schema():
+    from slingloads.io.chute import schema
+
+    return schema
+
+
+def _chute_rows():
+    from slingloads.io.chute import rows
+
+    return rows
+
+
+def _chute_reader():
+    from slingloads.io.chute import reader
+
+    return reader
+
+
+def _chute_report():
+    from slingloads.io.chute import report
+
+    return report
+
+
+def _multibody_schema():
+    from slingloads.io.multibody import schema
+
+    return schema
+
+
+def _multibody_rows():
+    from slingloads.io.multibody import rows
+
+    return rows
+
+
+def _multibody_reader():
+    from slingloads.io.multibody import reader
+
+    return reader
+
+
+def _multibody_report():
+    from slingloads.io.multibody import report
+
+    return report
+
+
+def _campaign_schema():
+    from slingloads.io.campaign import schema
+
+    return schema
+
+
+def _campaign_rows():
+    from slingloads.io.campaign import rows
+
+    return rows
+
+
+def _campaign_reader():
+    from slingloads.io.campaign import reader
+
+    return reader
+
+
+def _campaign_report():
+    from slingloads.io.campaign import report
+
+    return report
 
 
 @dataclass(frozen=True)
@@ -88,8 +212,8 @@ class Analysis:
         :mod:`slingloads.runs`.
     subcommand : str
         Its command of ``slingloads``.
-    modules : callable
-        Imports and returns its :class:`Modules`.
+    io : Modules
+        Its io modules, each imported on first use.
     summary : str
         One line for ``slingloads --help``.
     run_help : str
@@ -103,11 +227,15 @@ class Analysis:
 
     name: str
     subcommand: str
-    modules: Callable[[], Modules]
+    io: Modules
     summary: str
     run_help: str
     run_default: str = "no"
     options: bool = False
+
+    def modules(self):
+        """Its :class:`Modules` (each imported when one of its attributes is read)."""
+        return self.io
 
     @property
     def run_parameter(self):
@@ -130,14 +258,16 @@ class Analysis:
 
     def check_rows(self, params, errors):
         """Check its Study rows whose rules need none of its sheets, whether it runs or not,
-        each row's error gathered in ``errors``: every choice row of its reader's ``CHOICES``
-        and the rows of its reader's ``ROW_CHECKS`` (row name -> ``check(params)``). A value
-        in the workbook is an input of the study even while its analysis is switched off:
-        it is refused now rather than when the analysis is switched on."""
-        reader = self.modules().reader
-        for name, valid in getattr(reader, "CHOICES", {}).items():
+        each row's error gathered in ``errors``: every choice row of its ``rows.py``'s
+        ``CHOICES`` and the rows of its ``ROW_CHECKS`` (row name -> ``check(params)``). A
+        value in the workbook is an input of the study even while its analysis is switched
+        off: it is refused now rather than when the analysis is switched on. Its rows module
+        imports no model of the analysis, so that the check costs nothing to a study that
+        does not run it."""
+        rows = self.modules().rows
+        for name, valid in getattr(rows, "CHOICES", {}).items():
             errors.call(params.choice, name, valid)
-        for check in getattr(reader, "ROW_CHECKS", {}).values():
+        for check in getattr(rows, "ROW_CHECKS", {}).values():
             errors.call(check, params)
 
     def locate(self, err, study, context=None):
@@ -183,18 +313,25 @@ class Analysis:
 
 #: Every analysis, in the order they are read, run and written.
 ANALYSES = (
-    Analysis("loads", "loads", _loads,
+    Analysis("loads", "loads",
+             Modules(_loads_schema, _loads_rows, _loads_reader, _loads_report),
              "structural loads only: CS-29.865 cases, inertia relief, SFBM, envelopes",
              "Run the structural loads analysis (SFBM).", "yes", options=True),
-    Analysis("lateral", "lateral", _lateral, "lateral-step pendulum study only",
+    Analysis("lateral", "lateral",
+             Modules(_lateral_schema, _lateral_rows, _lateral_reader, _lateral_report),
+             "lateral-step pendulum study only",
              "Run the lateral-step pendulum study (sheets Lateral*)."),
-    Analysis("chute sizing", "chute", _chute, "parachute sizing only",
+    Analysis("chute sizing", "chute",
+             Modules(_chute_schema, _chute_rows, _chute_reader, _chute_report),
+             "parachute sizing only",
              "Run the parachute sizing (sheets Chute*)."),
-    Analysis("multibody", "simulate", _multibody,
+    Analysis("multibody", "simulate",
+             Modules(_multibody_schema, _multibody_rows, _multibody_reader, _multibody_report),
              "multibody model only: trim, linear modes, manoeuvres",
              "Run the multibody model (Study rows 'multibody ...', sheets MultibodyManoeuvres, "
              "HTailAero)."),
-    Analysis("campaign", "campaign", _campaign,
+    Analysis("campaign", "campaign",
+             Modules(_campaign_schema, _campaign_rows, _campaign_reader, _campaign_report),
              "multibody campaign only: parachute selection over the operating envelope, "
              "sensitivity, stability maps, transport without parachute, loads hand-off",
              "Run the multibody campaign (Study rows 'campaign ...'); with 'run loads' the "

@@ -12,8 +12,6 @@ from pathlib import Path
 
 from slingloads.io.analyses import ANALYSES
 from slingloads.io.common.atomic import AtomicOutputs
-from slingloads.io.consistency import consistency_checks
-from slingloads.runs.findings import study_findings
 
 _BY_NAME = {a.name: a for a in ANALYSES}
 
@@ -77,6 +75,10 @@ def publish_reports(results, outputs, stem, units="SI", names=None, figures=None
     study = results.study
     names = results.computed() if names is None else list(names)
     figures = figures or {}
+    # imported here, when there are results to check (pandas): a refused workbook loads none
+    from slingloads.io.consistency import consistency_checks
+    from slingloads.runs.findings import study_findings
+
     checks = consistency_checks(results)
     findings = study_findings(results)  # once: the same Findings sheet in every report
     with outputs:

@@ -8,8 +8,6 @@ import hashlib
 from dataclasses import dataclass, field
 
 from slingloads.errors import ErrorCollector
-from slingloads.io.airframe.reader import CHOICES as AIRFRAME_CHOICES
-from slingloads.io.airframe.reader import read_airframe
 from slingloads.io.airframe.schema import SHEETS
 from slingloads.io.analyses import ANALYSES, all_parameters
 from slingloads.io.common.cover import IDENTIFICATION, now_stamp
@@ -104,7 +102,7 @@ def file_digest(path):
     return h.hexdigest()
 
 
-def read_study(path, only=None, *, reader=None, on_read=None):
+def read_study(path, only=None, *, reader=None, on_read=None, on_checked=None):
     """Read an input workbook and build every analysis it asks for.
 
     Parameters
@@ -120,6 +118,11 @@ def read_study(path, only=None, *, reader=None, on_read=None):
         Called as ``on_read(name, study)`` once the inputs and report options of analysis
         ``name`` are read, before the next analysis is read (the study is not complete yet:
         its ``input_files`` and ``warnings`` are filled in at the end).
+    on_checked : callable, optional
+        Called as ``on_checked(asked)`` once the Study sheet and the cells of the table
+        sheets read without error, with the names of the analyses to run, before the
+        airframe and the analyses are read (the command line starts its helper processes
+        there: a workbook refused before starts none).
 
     Returns
     -------
@@ -134,12 +137,13 @@ def read_study(path, only=None, *, reader=None, on_read=None):
     own = reader is None
     reader = WorkbookReader(path) if own else reader
     try:
-        return _build(reader, path, only, file_digest(path) if own else "", on_read)
+        return _build(reader, path, only, file_digest(path) if own else "", on_read,
+                      on_checked)
     finally:
         reader.close()
 
 
-def _build(reader, path, only, sha256, on_read=None):
+def _build(reader, path, only, sha256, on_read=None, on_checked=None):
     # Independent steps are attempted one after another and their errors reported together
     # (up to MAX_REPORTED_ERRORS): the Study sheet row by row (with the checks of each
     # analysis's rows that need none of its sheets, whether it runs or not), each table sheet
@@ -149,6 +153,9 @@ def _build(reader, path, only, sha256, on_read=None):
     params = errors.call(StudyParameters, reader, all_parameters(), errors)
     rows_read = not errors
     if params is not None:  # the rows every analysis checks on the Study sheet alone, run or not
+        # the airframe's models (pandas) load once the Study sheet is there
+        from slingloads.io.airframe.reader import CHOICES as AIRFRAME_CHOICES
+
         for name, valid in AIRFRAME_CHOICES.items():
             errors.call(params.choice, name, valid)
         for analysis in ANALYSES:
@@ -171,6 +178,10 @@ def _build(reader, path, only, sha256, on_read=None):
                 errors.call(reader.table, sheet)
     errors.raise_if_any(note="the airframe and the analyses are checked beyond their cells "
                              "once these read")
+    if on_checked is not None:
+        on_checked(asked)
+    from slingloads.io.airframe.reader import read_airframe
+
     read = errors.call(read_airframe, reader, params)
     if read is None:
         errors.raise_if_any(note=f"the sheets of {', '.join(asked) or 'the analyses'} are "

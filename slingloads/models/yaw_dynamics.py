@@ -127,6 +127,11 @@ from slingloads.models.yaw_moments import (  # noqa: F401 (the model row, re-exp
     weight_moment,
 )
 
+#: Axes of the 1-DOF yaw model about the hub
+#: (:func:`slingloads.analyses.towed_attitude.yaw_model_about`): the suspension axis (default),
+#: or airframe z through the hub (the paper's balance of Mz, section 4.1).
+YAW_AXES = ("suspension", "airframe z")
+
 #: Defaults of the yaw runs: 120 s at a 0.05 s RK4 step, stored every 0.1 s. [s]
 YAW_SOLVER_DEFAULTS = {"t_end": 120.0, "step": 0.05, "output_interval": 0.1}
 #: Half-width of the sideslip interval searched for the yaw trim. [rad]

@@ -53,8 +53,6 @@ from pathlib import Path
 
 import numpy as np
 
-from slingloads.analyses.campaign import HISTORY_LABELS
-from slingloads.analyses.campaign.execution import record_problem
 from slingloads.errors import InputError, OutputError
 from slingloads.limits import MAX_CAMPAIGN_SAMPLES
 from slingloads.safeopen import NotRegularFile, kind_of, open_regular
@@ -323,6 +321,9 @@ class RunCache:
         import pyarrow as pa
         import pyarrow.parquet as pq
 
+        from slingloads.analyses.campaign import HISTORY_LABELS  # the campaign's: when it runs
+        from slingloads.analyses.campaign.execution import record_problem
+
         width = len(HISTORY_LABELS)
         bound = rows if rows is not None else MAX_CAMPAIGN_SAMPLES
         data_bytes = bound * width * 8
@@ -407,6 +408,8 @@ class RunCache:
     def _write(self, key, record, path=None):
         import pyarrow as pa
         import pyarrow.parquet as pq
+
+        from slingloads.analyses.campaign import HISTORY_LABELS
 
         metrics, histories = record
         text = json.dumps({k: _json_scalar(v) for k, v in metrics.items()})

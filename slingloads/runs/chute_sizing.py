@@ -58,7 +58,7 @@ class ChuteSizingInputs:
         The Study's 'parachute line length'. [m]
     yaw_axis : str
         The axis of the yaw model's moments, inertia and weight
-        (:data:`slingloads.analyses.towed_attitude.YAW_AXES`).
+        (:data:`slingloads.models.yaw_dynamics.YAW_AXES`).
     """
 
     model: YawModel

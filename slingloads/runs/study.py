@@ -358,7 +358,7 @@ class Results:
             if result is not None:
                 from slingloads.runs.registry import RUNS  # loaded by the run that made it
 
-                out += [line for line in RUNS[name].shortfalls(result) if line not in out]
+                out += [line for line in RUNS[name]().shortfalls(result) if line not in out]
         if self.parachute_decision is not None:  # the study's one decision, said once
             out = [line for line in out if not line.startswith(DECISION_FINDING)]
             if not self.parachute_decision.found:
@@ -488,7 +488,7 @@ def run_one(study, name):
         raise InputError(f"unknown analysis; valid names are {list(ANALYSES)}", name)
     from slingloads.runs.registry import RUNS  # the analyses load when one runs
 
-    return RUNS[name].run(study)
+    return RUNS[name]().run(study)
 
 
 def run_analysis(study, name):

@@ -22,7 +22,7 @@ Bounds: every step (name resolution, connection, each write and read) within wha
 with what arrives (never the announced size). Only ``tcp://`` (the default protocol) and
 ``tls://`` (the same framing inside TLS, with the client's Dask security settings) are spoken
 here, and the only protocols a scheduler address may name
-(:func:`slingloads.io.campaign.reader.address_rule` refuses ws, wss, ucx and inproc, whose
+(:func:`slingloads.io.campaign.rows.address_rule` refuses ws, wss, ucx and inproc, whose
 first exchange would go to ``distributed``'s own reader, bounded in time but not in memory).
 
 Past this exchange the scheduler is trusted, as ``distributed`` trusts it (its messages may

@@ -120,7 +120,7 @@ def yaw_model_of(system, airspeed=None, density_altitude=None, towed=None,
     towed : TowedAttitude, optional
         The trim at that condition (default: :func:`towed_trim_of`).
     axis : {"suspension", "airframe z"}
-        The yaw model's axis (:data:`~slingloads.analyses.towed_attitude.YAW_AXES`).
+        The yaw model's axis (:data:`~slingloads.models.yaw_dynamics.YAW_AXES`).
 
     Returns
     -------

@@ -29,7 +29,6 @@ from slingloads.models.aerodynamics import (
     fuselage_columns,
 )
 from slingloads.models.airframe import Airframe, Hardpoints, MassItems
-from slingloads.models.multibody.parachute_line import line_reach
 from slingloads.models.parachute import PARACHUTE_AXES, PARACHUTE_CD_MAX, Parachute
 
 #: Valid values of each choice row of the airframe's Study rows (case ignored), checked
@@ -584,6 +583,8 @@ def parachute_reach_rule(reader, params, refs, hardpoints, line, cable, unit):
     unit : str
         Unit of the cable length as written.
     """
+    from slingloads.models.multibody.parachute_line import line_reach  # compiled: on use
+
     near, far = line_reach(hardpoints.hub, hardpoints.chute, line)
     if not near <= cable <= far:
         return None

@@ -12,7 +12,6 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION
 from slingloads.analyses.verdicts import STABLE, UNSTABLE
 from slingloads.constants import FOOT, KNOT, POUND
 from slingloads.errors import InputError
@@ -343,6 +342,8 @@ def plot_no_parachute_gust(result, units="SI"):
     its damping), each helicopter, without parachute: one row per ramp target, the head
     wind on the right axis, the ramp's end dotted, the gust shaded; the base condition and
     the gust in the title."""
+    from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION  # loaded with a result
+
     npr = result.no_parachute
     study = result.campaign.no_parachute
     speed = quantity_text(study.gust_speed, "speed", units, digits=3)

@@ -29,7 +29,6 @@ import numpy as np
 import pandas as pd
 
 from slingloads import __version__
-from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION
 from slingloads.analyses.verdicts import ratio_words
 from slingloads.constants import KNOT, POUND
 from slingloads.io.campaign.words import mass_text
@@ -47,7 +46,6 @@ from slingloads.io.common.report import (
 )
 from slingloads.io.common.report_writer import ReportKind
 from slingloads.io.common.units import unit_label
-from slingloads.runs.cache import where_stated
 
 ANALYSIS = "campaign"
 _PNG_DPI = 90
@@ -165,6 +163,8 @@ def definition_table(report, units):
 def _cache_rows(ex, cache):
     """Runs found in the cache and computed now: the matrix's, then those without parachute
     (each group counted on its own, so the matrix's rows never exceed its runs)."""
+    from slingloads.runs.cache import where_stated
+
     parts = ex.parts or ((ex.total, ex.cached, ex.computed),)
     rows = [("run cache folder", str(cache), "", where_stated(cache)[0]),
             ("runs found in the cache", parts[0][1], "-", "of this matrix"),
@@ -251,7 +251,10 @@ def handoff_table(report, units="SI"):
 
 
 def _sheets(report, units, warnings=(), decision=None):
+    # the campaign's modules load when its report is written, not when its files are named
+    from slingloads.analyses.campaign import GUST_DELAY, GUST_DURATION
     from slingloads.io.common.decision import decision_section
+    from slingloads.runs.cache import where_stated
 
     r = report.result
     decision = r.decision if decision is None else decision

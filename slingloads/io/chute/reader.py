@@ -14,16 +14,10 @@ from __future__ import annotations
 import numpy as np
 
 from slingloads.analyses.chute_sizing import MetricSettings
-from slingloads.analyses.towed_attitude import YAW_AXES
 from slingloads.io.airframe.reader import read_fin_aero, read_fuselage_aero, read_parachute
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME_SHEETS
-from slingloads.io.chute.schema import (
-    INERTIA_SOURCES,
-    INTEGRATORS,
-    SEVERITIES,
-    SHEETS,
-    WAKE_SOURCES,
-)
+from slingloads.io.chute.rows import CHOICES
+from slingloads.io.chute.schema import SHEETS
 from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
 from slingloads.io.common.schema import STUDY_SHEET
 from slingloads.limits import (
@@ -36,21 +30,10 @@ from slingloads.limits import (
 from slingloads.models.airframe import yaw_inertia_about_hub
 from slingloads.models.flight import FlightCondition
 from slingloads.models.gusts import GUST_SHAPES, DrydenTurbulence, make_gust
-from slingloads.models.integration import SOLVE_IVP_METHODS, SolverSettings
+from slingloads.models.integration import SolverSettings
 from slingloads.models.wake import BluffBodyWake, TabulatedWake
 from slingloads.models.yaw_dynamics import YawModel
 from slingloads.runs.chute_sizing import ChuteSizingInputs
-
-#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
-#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
-CHOICES = {
-    "chute sizing yaw axis": YAW_AXES,
-    "chute sizing yaw inertia source": INERTIA_SOURCES,
-    "chute sizing wake source": WAKE_SOURCES,
-    "chute sizing integrator": INTEGRATORS,
-    "chute sizing reference method": SOLVE_IVP_METHODS,
-    "chute sizing turbulence severity": SEVERITIES,
-}
 
 ANALYSIS = "chute sizing"
 HARDPOINT_SHEETS = {s.name: s for s in _AIRFRAME_SHEETS}

@@ -19,8 +19,6 @@ from datetime import datetime
 from functools import lru_cache
 from pathlib import Path
 
-import pandas as pd
-
 import slingloads
 
 #: Name of the cover sheet.
@@ -221,6 +219,8 @@ def cover_sections(info, sheets):
     -------
     list of (str, str, pandas.DataFrame or None)
     """
+    import pandas as pd  # here: the study reader takes the cover's fields, not its tables
+
     entry = pd.DataFrame([
         ("project", info.project),
         ("document number", info.document),

@@ -18,7 +18,6 @@ from openpyxl.utils import get_column_letter
 
 from slingloads.analyses.lateral import ParameterRanges, airframe_body
 from slingloads.analyses.lateral_damping import (
-    DAMPING_SOURCES,
     LateralDamping,
     aerodynamic_damping,
 )
@@ -29,13 +28,12 @@ from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import Place, column_quantity, find_place, located, place_error
 from slingloads.io.common.referenced import csv_columns
 from slingloads.io.common.schema import STUDY_SHEET
+from slingloads.io.lateral.rows import CHOICES
 from slingloads.io.lateral.schema import (
-    CABLE_MODELS,
     MIN_ROLL_GYRATION,
     MOTION_ALIASES,
     MOTION_TYPES,
     SHEETS,
-    SOLVER_METHODS,
     THEN,
 )
 from slingloads.io.loads import reader as loads_reader
@@ -59,14 +57,6 @@ from slingloads.models.flight import FlightCondition
 from slingloads.models.integration import SolverSettings
 from slingloads.models.pendulum import SlungBody
 from slingloads.runs.lateral import LateralInputs
-
-#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
-#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
-CHOICES = {
-    "lateral cable model": CABLE_MODELS,
-    "lateral history method": SOLVER_METHODS,
-    "lateral damping source": DAMPING_SOURCES,
-}
 
 ANALYSIS = "lateral"
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}

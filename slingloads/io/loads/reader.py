@@ -13,9 +13,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from slingloads.analyses.fe_loads import HOOK_POINTS, ModelAxes
+from slingloads.analyses.fe_loads import ModelAxes
 from slingloads.analyses.hook_loads import (
-    CONE_SHAPES,
     NO_HOOK,
     TOWED,
     HookLoadOptions,
@@ -23,7 +22,6 @@ from slingloads.analyses.hook_loads import (
     horizontal_basis,
 )
 from slingloads.analyses.loads import (
-    CHUTE_LINE_DIRECTIONS,
     NO_AERO,
     TRIM_AERO,
     AeroEnvelope,
@@ -40,23 +38,14 @@ from slingloads.io.airframe.reader import (
 from slingloads.io.airframe.schema import SHEETS as _AIRFRAME
 from slingloads.io.common.locate import Place, column_quantity, located, place_error
 from slingloads.io.common.schema import STUDY_SHEET
-from slingloads.io.loads.nastran import INERTIA_RELIEF, MAX_ID
+from slingloads.io.loads.nastran import MAX_ID
+from slingloads.io.loads.rows import CHOICES
 from slingloads.io.loads.schema import SHEETS
 from slingloads.limits import MAX_CASE_POINTS, MAX_LOAD_CASES, MAX_SFBM_ROWS
-from slingloads.models.attitude import ATTITUDE_SOURCES, Attitude, resolve_attitude
+from slingloads.models.attitude import Attitude, resolve_attitude
 from slingloads.models.flight import FlightCondition
 from slingloads.runs.loads import HANDOFF
 from slingloads.runs.study import ReportOptions
-
-#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
-#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
-CHOICES = {
-    "parachute line direction": CHUTE_LINE_DIRECTIONS,
-    "hook cone shape": CONE_SHAPES,
-    "attitude": (*ATTITUDE_SOURCES, "given"),
-    "nastran inertia relief": INERTIA_RELIEF,
-    "nastran hook load at": HOOK_POINTS,
-}
 
 _SPEC = {s.name: s for s in SHEETS}
 AIRFRAME_SHEETS = {s.name: s for s in _AIRFRAME}

@@ -32,16 +32,12 @@ from slingloads.io.airframe.reader import (
 from slingloads.io.common.locate import Place, located
 from slingloads.io.common.referenced import referenced_file
 from slingloads.io.common.schema import STUDY_SHEET
+from slingloads.io.multibody.rows import CHOICES
 from slingloads.io.multibody.schema import (
-    CANOPY_TABLES,
-    CARRIERS,
-    CONFIGURATIONS,
     DIRECTIONS,
     DISTURBANCE_COLUMNS,
     MANOEUVRE_KINDS,
-    PARACHUTE_MODELS,
     SHEETS,
-    TAILS,
 )
 from slingloads.io.multibody.trajectory import read_trajectory_csv
 from slingloads.limits import MAX_MULTIBODY_RUN_STEPS, MAX_MULTIBODY_SAMPLES, MEMORY_BUDGET
@@ -57,16 +53,6 @@ from slingloads.models.multibody.rigid_body import RigidBody
 from slingloads.models.multibody.system import SlingSystem
 from slingloads.models.parachute import extended_cd_table
 from slingloads.runs.multibody import MultibodyInputs
-
-#: Valid values of each choice row of this analysis's Study rows (case ignored), checked
-#: for every workbook, whether the analysis runs or not (:func:`check_rows`).
-CHOICES = {
-    "multibody configuration": CONFIGURATIONS,
-    "multibody tail": TAILS,
-    "multibody parachute model": PARACHUTE_MODELS,
-    "multibody canopy CD": CANOPY_TABLES,
-    "multibody carrier": CARRIERS,
-}
 
 ANALYSIS = "multibody"
 _SPEC = {s.name: s for s in SHEETS}
