@@ -513,21 +513,3 @@ def check_outside(cache_dir, out_dir):
         raise InputError("the output folder must lie outside the run cache (publishing the "
                          "reports would replace the cached runs in it); choose another --out "
                          "or --cache", str(out_dir))
-
-
-def check_writable(cache_dir):
-    """Why the run cache at ``cache_dir`` cannot be used (:func:`location_problem`), or None.
-    A cache that cannot be used is no reason to stop: the campaign runs without it, with a
-    warning (module notes).
-
-    Parameters
-    ----------
-    cache_dir : path-like
-        The cache folder.
-
-    Returns
-    -------
-    str or None
-        The problem in words, or None.
-    """
-    return location_problem(cache_dir)
